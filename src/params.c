@@ -1,0 +1,3 @@
+/* [placeholder until the core stage lands] */
+#include "swarp_internal.h"
+typedef int sw_params_placeholder;

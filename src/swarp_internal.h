@@ -1,0 +1,86 @@
+/* Internal helpers shared by the stages: small double-precision vector and
+ * matrix routines and argument checks.  Not installed, not exported. */
+#ifndef SWARP_INTERNAL_H
+#define SWARP_INTERNAL_H
+
+#include <math.h>
+#include <string.h>
+
+#include "shadowwarp.h"
+
+/* Every exported definition carries SWARP_API; the build defines
+ * SWARP_BUILDING so it expands to default visibility. */
+
+#define SWARP_PI 3.14159265358979323846
+
+/* ---- checks ------------------------------------------------------------ */
+static inline int sw_finite(double x) { return isfinite(x) != 0; }
+static inline int sw_finite3(const swarp_vec3* v) {
+    return sw_finite(v->x) && sw_finite(v->y) && sw_finite(v->z);
+}
+static inline int sw_reserved_zero(const uint32_t* r, size_t n) {
+    for (size_t i = 0; i < n; ++i)
+        if (r[i] != 0) return 0;
+    return 1;
+}
+
+/* ---- vec3 -------------------------------------------------------------- */
+static inline swarp_vec3 sw_v3(double x, double y, double z) {
+    swarp_vec3 v = {x, y, z};
+    return v;
+}
+static inline swarp_vec3 sw_add(swarp_vec3 a, swarp_vec3 b) { return sw_v3(a.x + b.x, a.y + b.y, a.z + b.z); }
+static inline swarp_vec3 sw_sub(swarp_vec3 a, swarp_vec3 b) { return sw_v3(a.x - b.x, a.y - b.y, a.z - b.z); }
+static inline swarp_vec3 sw_scale(swarp_vec3 a, double s) { return sw_v3(a.x * s, a.y * s, a.z * s); }
+static inline double sw_dot(swarp_vec3 a, swarp_vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+static inline swarp_vec3 sw_cross(swarp_vec3 a, swarp_vec3 b) {
+    return sw_v3(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x);
+}
+/* hypot-based length: no overflow for large-world coordinates */
+static inline double sw_len(swarp_vec3 a) { return hypot(hypot(a.x, a.y), a.z); }
+/* Returns 0 (and leaves *out alone) for a zero or non-finite vector. */
+static inline int sw_normalize(swarp_vec3 a, swarp_vec3* out) {
+    double l = sw_len(a);
+    if (!(l > 0.0) || !sw_finite(l)) return 0;
+    *out = sw_scale(a, 1.0 / l);
+    return 1;
+}
+
+/* ---- mat4 (column-major, m[c*4 + r]) ------------------------------------- */
+static inline double sw_at(const swarp_mat4* m, int r, int c) { return m->m[c * 4 + r]; }
+static inline void sw_set(swarp_mat4* m, int r, int c, double v) { m->m[c * 4 + r] = v; }
+static inline void sw_identity(swarp_mat4* m) {
+    memset(m, 0, sizeof *m);
+    m->m[0] = m->m[5] = m->m[10] = m->m[15] = 1.0;
+}
+static inline void sw_mul(const swarp_mat4* a, const swarp_mat4* b, swarp_mat4* r) {
+    swarp_mat4 t;
+    for (int c = 0; c < 4; ++c)
+        for (int rr = 0; rr < 4; ++rr) {
+            double s = 0.0;
+            for (int k = 0; k < 4; ++k) s += sw_at(a, rr, k) * sw_at(b, k, c);
+            t.m[c * 4 + rr] = s;
+        }
+    *r = t;
+}
+static inline swarp_vec4 sw_xform4(const swarp_mat4* m, swarp_vec4 p) {
+    swarp_vec4 o;
+    o.x = m->m[0] * p.x + m->m[4] * p.y + m->m[8] * p.z + m->m[12] * p.w;
+    o.y = m->m[1] * p.x + m->m[5] * p.y + m->m[9] * p.z + m->m[13] * p.w;
+    o.z = m->m[2] * p.x + m->m[6] * p.y + m->m[10] * p.z + m->m[14] * p.w;
+    o.w = m->m[3] * p.x + m->m[7] * p.y + m->m[11] * p.z + m->m[15] * p.w;
+    return o;
+}
+static inline swarp_vec4 sw_xform_point(const swarp_mat4* m, swarp_vec3 p) {
+    swarp_vec4 h = {p.x, p.y, p.z, 1.0};
+    return sw_xform4(m, h);
+}
+static inline int sw_mat_finite(const swarp_mat4* m) {
+    for (int i = 0; i < 16; ++i)
+        if (!sw_finite(m->m[i])) return 0;
+    return 1;
+}
+/* Gauss-Jordan with partial pivoting; returns 0 when singular. */
+int sw_invert(const swarp_mat4* a, swarp_mat4* out);
+
+#endif
