@@ -110,16 +110,17 @@ extern "C" {
     X(SWARP_ERR_ZERO_VECTOR, 9, "a direction vector has zero length")               \
     X(SWARP_ERR_RESERVED_NONZERO, 10, "a _reserved field is not zero")              \
     X(SWARP_ERR_DEGENERATE, 11, "degenerate configuration")                         \
-    X(SWARP_ERR_SPLIT_COUNT, 12, "split count m must be at least 1")                \
+    X(SWARP_ERR_SPLIT_COUNT, 12, "split count m is 0 (or above SWARP_SPLIT_MAX_COUNT for a split scheme)") \
     X(SWARP_ERR_UNKNOWN_ENUM, 13, "an enum value is not one of the documented ones")\
     X(SWARP_ERR_NOT_INCREASING, 14, "split distances must be strictly increasing")  \
     X(SWARP_ERR_SINGULAR, 15, "a matrix is singular or too ill-conditioned")        \
+    X(SWARP_ERR_OVERFLOW, 16, "the result does not fit a finite double (inputs too extreme)") \
     X(SWARP_INFO_WARP_UNIFORM, 1000,                                                \
       "warp faded to uniform (duelling frusta: light parallel to the view)")        \
     X(SWARP_INFO_GMNPR_ADJUSTED, 1001,                                              \
       "theta < phi: lambda_GMNPR uses the adjusted branch lambda_2* of eq. (7)")    \
     X(SWARP_INFO_GLPR_NO_SOLUTION, 1002,                                            \
-      "GLPR has no positive lambda here; the largest admissible value was written")
+      "GLPR has no positive lambda here (theta <= phi); lambda_GMNPR was written")
 
 /* >>> status: geometry (100..199, 1100..1199) */
 #define SWARP_STATUS_LIST_GEOMETRY(X)
@@ -253,40 +254,68 @@ SWARP_API swarp_status swarp_mat4_transform(const swarp_mat4* m, const swarp_vec
  * Naming: the warp parameter n (or n') is the distance from the projection
  * centre C of the warping frustum P to its near plane [RHS] §3.2.1.  n = n_e
  * (the eye's near distance, overhead light) is PSM; n -> inf is uniform.
+ *
+ * Huge values, one rule for every parameter below: the exactly degenerate
+ * input (z_1 == z_0, eta == -1, theta == 0) gives +INFINITY; a value that is
+ * finite in exact arithmetic but exceeds DBL_MAX is written as DBL_MAX.  Both
+ * come with SWARP_INFO_WARP_UNIFORM.  Angles are radians.
  */
 
 /** @brief LiSPSM n_opt, general form.  [RHS] (3.2) (from [WS06])
- *  n_opt = d / (sqrt(z_1/z_0) - 1).
- *  @param d   extent of the warping frustum P along light-space z (> 0)
- *  @param z_0 eye-space depth where the error peaks near (> 0)
- *  @param z_1 eye-space depth where the error peaks far (>= z_0)
- *  @param[out] out_n_opt  n_opt; +INFINITY when z_1 == z_0
- *  @return SWARP_OK; SWARP_INFO_WARP_UNIFORM when z_1 == z_0 (n_opt = inf);
+ *  n_opt = d / (sqrt(z_1/z_0) - 1), evaluated as
+ *  d (z_0 + sqrt(z_0 z_1)) / (z_1 - z_0) (no cancellation for z_1 ~ z_0).
+ *  For an overhead light (d = f - n, z_0 = n, z_1 = f) it is the n' that makes
+ *  Lloyd's m_z(n) = m_z(f) ([RHS] (2.4)); n_opt / d is [GMNPR]'s λ_LiSPSM(π/2).
+ *  @param[in] d   extent of the warping frustum P along light-space z (> 0),
+ *                 world units
+ *  @param[in] z_0 eye-space depth where the error peaks near (> 0)
+ *  @param[in] z_1 eye-space depth where the error peaks far (>= z_0)
+ *  @param[out] out_n_opt  n_opt, world units; +INFINITY when z_1 == z_0
+ *  @return SWARP_OK; SWARP_INFO_WARP_UNIFORM when z_1 == z_0 (n_opt = inf) or
+ *          the value overflows (DBL_MAX); SWARP_ERR_NULL_POINTER,
  *          SWARP_ERR_NON_FINITE, SWARP_ERR_OUT_OF_RANGE (d <= 0, z_0 <= 0,
- *          z_1 < z_0), SWARP_ERR_NULL_POINTER. */
+ *          z_1 < z_0). */
 SWARP_API swarp_status swarp_warp_nopt(double d, double z_0, double z_1, double* out_n_opt);
 
 /** @brief n_opt with pseudo-near and pseudo-far planes.  [RHS] (4.2)
  *  Read as n_opt = d/(z_1 - z_0) * (z_0 + sqrt((z_0 + n_p (z_1 - z_0))
  *  (z_1 - f_p (z_1 - z_0)))) (papers README); reduces to (3.2) at
- *  n_p = f_p = 0.
- *  @param n_p, f_p  in [0, 1], n_p + f_p < 1 (pseudo planes as fractions of
- *                   the depth range measured from near and from far)
- *  @return as swarp_warp_nopt; SWARP_ERR_OUT_OF_RANGE for n_p, f_p outside. */
+ *  n_p = f_p = 0.  For an overhead light (d = z_1 - z_0) it equalises m_z at
+ *  the pseudo-near depth z_0 + n_p (z_1 - z_0) and the pseudo-far depth
+ *  z_1 - f_p (z_1 - z_0).
+ *  @param[in] d, z_0, z_1  as swarp_warp_nopt
+ *  @param[in] n_p, f_p  in [0, 1], n_p + f_p < 1: the pseudo planes as
+ *                   fractions of the depth range measured from near and from
+ *                   far (NOT eye-space distances; compare swarp_split_pseudo)
+ *  @param[out] out_n_opt  n_opt, world units
+ *  @return as swarp_warp_nopt; SWARP_ERR_NON_FINITE / SWARP_ERR_OUT_OF_RANGE
+ *          for n_p, f_p. */
 SWARP_API swarp_status swarp_warp_nopt_pseudo(double d, double z_0, double z_1, double n_p,
                                               double f_p, double* out_n_opt);
 
 /** @brief Lloyd's warp strength η(γ, Θ).  [RHS] (3.3)
- *  @param gamma angle between light direction and view direction, radians,
+ *  Piecewise in γ with γ_a = Θ/3, γ_b = Θ, γ_c = Θ + 0.3 (π/2 - Θ),
+ *  η_b = -0.2, η_c = 0; continuous in γ.
+ *  @param[in] gamma angle between light direction and view direction, radians,
  *               in [0, pi/2] (callers fold γ > pi/2 to pi - γ)
- *  @param theta half the field of view Θ, radians, in (0, pi/2)
- *  @param[out] out_eta η in [-1, 0] */
+ *  @param[in] theta half the field of view Θ, radians, in (0, pi/2)
+ *  @param[out] out_eta η in [-1, 0]
+ *  @return SWARP_OK; SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
+ *          SWARP_ERR_FOV (theta), SWARP_ERR_OUT_OF_RANGE (gamma). */
 SWARP_API swarp_status swarp_warp_eta(double gamma, double theta, double* out_eta);
 
 /** @brief Width W_lz of the view frustum along the light-space z axis for a
  *  directional light.  [RHS] (3.5)
- *  @param gamma in [0, pi/2]; @param theta in (0, pi/2); @param n_e, f_e eye
- *  near/far (0 < n_e < f_e); @param W_e width of the near plane (> 0). */
+ *  W_lz = W_e cos γ + W_s sin(Θ + γ) + [γ <= Θ] W_s (1 - cos(Θ - γ)),
+ *  W_s = (f_e - n_e)/cos Θ.  Overhead light (γ = π/2): W_lz = f_e - n_e.
+ *  @param[in] gamma in [0, pi/2] radians; @param[in] theta Θ in (0, pi/2)
+ *  @param[in] n_e, f_e eye near/far (0 < n_e < f_e), world units
+ *  @param[in] W_e width of the eye's near plane (> 0), world units; in the
+ *             2D side view of [RHS] Fig. 3.7 this is 2 n_e tan Θ
+ *  @param[out] out_W_lz  W_lz, world units
+ *  @return SWARP_OK; SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
+ *          SWARP_ERR_NEAR_FAR, SWARP_ERR_FOV, SWARP_ERR_OUT_OF_RANGE (gamma,
+ *          W_e), SWARP_ERR_OVERFLOW. */
 SWARP_API swarp_status swarp_warp_wlz(double gamma, double theta, double n_e, double f_e,
                                       double W_e, double* out_W_lz);
 
@@ -294,43 +323,70 @@ SWARP_API swarp_status swarp_warp_wlz(double gamma, double theta, double n_e, do
  *  as η·sqrt(α) + 1 (papers README).  η = -1 gives +INFINITY with
  *  SWARP_INFO_WARP_UNIFORM; η = 0 gives W_lz/(sqrt(α) - 1) (n_opt);
  *  η = 1 gives W_lz/(α - 1) (PSM).
- *  @param eta in [-1, 1]; @param alpha f_e/n_e > 1; @param W_lz > 0. */
+ *  @param[in] eta in [-1, 1]; @param[in] alpha f_e/n_e > 1
+ *  @param[in] W_lz > 0, world units (swarp_warp_wlz)
+ *  @param[out] out_n  n_repar, world units (light space: the warp frustum's
+ *              depth is W_lz)
+ *  @return SWARP_OK; SWARP_INFO_WARP_UNIFORM (η = -1, or overflow: DBL_MAX);
+ *          SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
+ *          SWARP_ERR_OUT_OF_RANGE. */
 SWARP_API swarp_status swarp_warp_nrepar(double eta, double alpha, double W_lz, double* out_n);
 
 /*
  * [GMNPR] uses λ = P_n / (P_f - P_n): the warp parameter for a warping frustum
  * whose depth range is normalised to 1.  θ is the angle between light and
  * view direction (γ in [RHS]), φ the half field of view (Θ in [RHS]).
+ * Eq. (2) has two cases, θ in [φ, π/2] and θ in [0, φ]; they agree at θ = φ.
+ * Common checks: NaN/Inf -> SWARP_ERR_NON_FINITE; n <= 0 or f <= n ->
+ * SWARP_ERR_NEAR_FAR; φ outside (0, π/2) -> SWARP_ERR_FOV; θ or λ outside
+ * their domain -> SWARP_ERR_OUT_OF_RANGE; NULL output -> SWARP_ERR_NULL_POINTER.
  */
 
-/** @brief ψ(λ, θ) of [GMNPR] eq. (2). λ > 0, θ in (0, pi/2], φ in (0, pi/2),
- *  0 < n < f. */
+/** @brief ψ(λ, θ) of [GMNPR] eq. (2).  λ > 0, θ in (0, pi/2], φ in (0, pi/2),
+ *  0 < n < f.
+ *  @return SWARP_OK, the common checks, SWARP_ERR_OVERFLOW (λ or θ so small
+ *  that ψ exceeds DBL_MAX). */
 SWARP_API swarp_status swarp_gmnpr_psi(double lambda, double theta, double phi, double n,
                                        double f, double* out_psi);
 /** @brief φ(λ, θ) of [GMNPR] eq. (2) (the offset inside (z + φ)^2).  Named
- *  "offset" here to keep it apart from the half field of view φ. */
+ *  "offset" here to keep it apart from the half field of view φ.  Same domain
+ *  and statuses as swarp_gmnpr_psi. */
 SWARP_API swarp_status swarp_gmnpr_offset(double lambda, double theta, double phi, double n,
                                           double f, double* out_offset);
-/** @brief Aliasing function F(λ, θ, z) = ψ (z + φ(λ,θ))^2 / z.  [GMNPR] (2) */
+/** @brief Aliasing function F(λ, θ, z) = ψ (z + φ(λ,θ))^2 / z.  [GMNPR] (2)
+ *  @param[in] z eye-space depth in [n, f] (SWARP_ERR_OUT_OF_RANGE outside).
+ *  Other parameters and statuses as swarp_gmnpr_psi. */
 SWARP_API swarp_status swarp_gmnpr_F(double lambda, double theta, double phi, double n,
                                      double f, double z, double* out_F);
-/** @brief λ_1(θ) and λ_2(θ) of [GMNPR] (4), for analysis (λ_2 may be <= 0).
- *  θ in (0, pi/2]. */
+/** @brief λ_1(θ) and λ_2(θ) of [GMNPR] (4), for analysis (either may be <= 0
+ *  off its own case).  λ_1 is read with tanφ/tanθ (papers README).
+ *  θ in (0, pi/2]; both outputs required.
+ *  @return SWARP_OK, the common checks, SWARP_ERR_OVERFLOW. */
 SWARP_API swarp_status swarp_gmnpr_lambda12(double theta, double phi, double n, double f,
                                             double* out_lambda_1, double* out_lambda_2);
 /** @brief λ_GMNPR(θ) of [GMNPR] (8), with λ_2* of (7) for θ < φ.
- *  θ in [0, pi/2]; θ = 0 gives +INFINITY with SWARP_INFO_WARP_UNIFORM.
- *  @return SWARP_OK (θ >= φ), SWARP_INFO_GMNPR_ADJUSTED (0 < θ < φ), ... */
+ *  θ in [0, pi/2]; finite and positive for θ > 0, continuous at θ = φ,
+ *  growing without bound as θ -> 0; θ = 0 gives +INFINITY with
+ *  SWARP_INFO_WARP_UNIFORM (and θ so small that λ overflows gives DBL_MAX
+ *  with SWARP_INFO_WARP_UNIFORM).
+ *  @return SWARP_OK (θ >= φ), SWARP_INFO_GMNPR_ADJUSTED (0 < θ < φ),
+ *  SWARP_INFO_WARP_UNIFORM, the common checks. */
 SWARP_API swarp_status swarp_gmnpr_lambda(double theta, double phi, double n, double f,
                                           double* out_lambda);
-/** @brief λ_LiSPSM(θ) of [GMNPR] (9). θ in [0, pi/2]; θ = 0 gives +INFINITY
- *  with SWARP_INFO_WARP_UNIFORM. */
+/** @brief λ_LiSPSM(θ) of [GMNPR] (9): P_n = (n + sqrt(fn))/sin θ over the
+ *  normalised depth P_f - P_n.  θ in [0, pi/2]; θ = 0 gives +INFINITY with
+ *  SWARP_INFO_WARP_UNIFORM.  At θ = π/2 it equals n_opt/(f - n).
+ *  @return SWARP_OK, SWARP_INFO_WARP_UNIFORM, the common checks. */
 SWARP_API swarp_status swarp_gmnpr_lambda_lispsm(double theta, double phi, double n, double f,
                                                  double* out_lambda);
 /** @brief λ_GLPR: the λ that makes F(λ, θ, z) linear in z (GLPR, [GMNPR] §3,
- *  derived from (2): F linear in z <=> φ(λ, θ) = 0).  See docs/parameters.md
- *  for the derivation and for what is written where no positive solution
- *  exists (SWARP_INFO_GLPR_NO_SOLUTION). */
+ *  derived from (2): F linear in z <=> φ(λ, θ) = 0).  For θ > φ:
+ *  λ = n (1 - tanφ/tanθ) / (f - n + (f + n) tanφ/tanθ), which is n/(f - n)
+ *  (PSM) at θ = π/2.  For θ <= φ there is no positive solution: λ_GMNPR(θ) is
+ *  written instead with SWARP_INFO_GLPR_NO_SOLUTION (θ = 0: +INFINITY with
+ *  SWARP_INFO_WARP_UNIFORM).  Derivation in docs/parameters.md.
+ *  @return SWARP_OK, SWARP_INFO_GLPR_NO_SOLUTION, SWARP_INFO_WARP_UNIFORM,
+ *  the common checks. */
 SWARP_API swarp_status swarp_gmnpr_lambda_glpr(double theta, double phi, double n, double f,
                                                double* out_lambda);
 
@@ -338,10 +394,12 @@ SWARP_API swarp_status swarp_gmnpr_lambda_glpr(double theta, double phi, double 
 /* Core: Lloyd's error metric                    (src/error.c)              */
 /* ======================================================================== */
 
-/** Inputs of Lloyd's error metric [RHS] (2.3)-(2.8).  res_ix >= res_iy is the
- *  image resolution, res_s >= res_t the shadow-map resolution (texels);
- *  theta is Θ, half the field of view, radians in (0, pi/2).  near/far are
- *  the range [n, f] the curve refers to. */
+/** Inputs of Lloyd's error metric [RHS] (2.3)-(2.8).  res_ix x res_iy is the
+ *  image resolution (pixels; the paper has res_ix >= res_iy), res_s x res_t
+ *  the shadow-map resolution (texels); each must be finite and > 0
+ *  (SWARP_ERR_RESOLUTION).  theta is Θ, half the field of view, radians in
+ *  (0, pi/2) (SWARP_ERR_FOV).  near/far are the range [n, f] the curve refers
+ *  to (SWARP_ERR_NEAR_FAR unless 0 < near < far).  _reserved must be zero. */
 typedef struct swarp_error_config {
     double near;
     double far;
@@ -354,29 +412,49 @@ typedef struct swarp_error_config {
 } swarp_error_config;
 
 /** @brief m_x(z, n') [RHS] (2.3); n' = n gives (2.5) (PSM); n' = +INFINITY
- *  gives the closed-form uniform limit (2.7).  z in [near, far]; n' > 0. */
+ *  gives the closed-form uniform limit (2.7).
+ *  @param[in] cfg  see swarp_error_config
+ *  @param[in] z    eye-space depth in [near, far]
+ *  @param[in] n_prime  warp parameter n' in (0, +INFINITY] (+INFINITY =
+ *                  uniform), world units
+ *  @param[out] out_mx  m_x (dimensionless: screen pixels per shadow texel)
+ *  @return SWARP_OK; SWARP_ERR_NULL_POINTER, SWARP_ERR_RESERVED_NONZERO,
+ *          SWARP_ERR_NON_FINITE (NaN anywhere, n' = -inf), SWARP_ERR_FOV,
+ *          SWARP_ERR_RESOLUTION, SWARP_ERR_NEAR_FAR, SWARP_ERR_OUT_OF_RANGE
+ *          (z outside [near, far], n' <= 0), SWARP_ERR_OVERFLOW. */
 SWARP_API swarp_status swarp_error_mx(const swarp_error_config* cfg, double z, double n_prime,
                                       double* out_mx);
-/** @brief m_z(z, n') [RHS] (2.4); n' = n gives (2.6); n' = +INFINITY gives (2.8). */
+/** @brief m_z(z, n') [RHS] (2.4); n' = n gives (2.6); n' = +INFINITY gives
+ *  (2.8).  Parameters and statuses as swarp_error_mx. */
 SWARP_API swarp_status swarp_error_mz(const swarp_error_config* cfg, double z, double n_prime,
                                       double* out_mz);
-/** @brief Exact maxima of m_x and m_z over [near, far].  Both curves are
- *  convex in z (m_z ∝ a^2/z + 2a + z with a = n' - n), so the maximum is at
- *  an end point: no sampling.  Either output pointer may be NULL. */
+/** @brief Exact maxima of m_x and m_z over [near, far].  m_x ∝ 1 + a/z is
+ *  monotone and m_z ∝ a^2/z + 2a + z (a = n' - n) is convex in z, so the
+ *  maximum is at an end point: no sampling.  Either output pointer may be
+ *  NULL.  Statuses as swarp_error_mx (no z). */
 SWARP_API swarp_status swarp_error_max(const swarp_error_config* cfg, double n_prime,
                                        double* out_max_mx, double* out_max_mz);
 /** @brief The piecewise curve of a partitioned frustum ([RHS] Fig. 3.15, 3.18):
  *  split i covers [splits[i], splits[i+1]] with its own warp n_primes[i] and
- *  a full map of res_s x res_t.  splits has m + 1 strictly increasing entries
- *  (cfg->near/far are ignored).  Evaluates at each z[k] (a z on a border
- *  belongs to the split that starts there).  out_mx or out_mz may be NULL. */
+ *  a full map of res_s x res_t (the metric evaluated with n = splits[i],
+ *  f = splits[i+1]).  splits has m + 1 strictly increasing entries, the first
+ *  > 0 (cfg->near/far are ignored).  Evaluates at each z[k] in
+ *  [splits[0], splits[m]] (a z on a border belongs to the split that starts
+ *  there; splits[m] to the last split).  out_mx or out_mz may be NULL; z may
+ *  be NULL when count is 0.
+ *  @return SWARP_OK; SWARP_ERR_NULL_POINTER, SWARP_ERR_RESERVED_NONZERO,
+ *  SWARP_ERR_NON_FINITE, SWARP_ERR_FOV, SWARP_ERR_RESOLUTION,
+ *  SWARP_ERR_SPLIT_COUNT (m = 0), SWARP_ERR_NEAR_FAR (splits[0] <= 0),
+ *  SWARP_ERR_NOT_INCREASING, SWARP_ERR_OUT_OF_RANGE (a z outside, an
+ *  n' <= 0), SWARP_ERR_OVERFLOW.  On error no output is written. */
 SWARP_API swarp_status swarp_error_split_curve(const swarp_error_config* cfg,
                                                const double* splits,
                                                const double* n_primes, size_t m,
                                                const double* z, size_t count,
                                                double* out_mx, double* out_mz);
 /** @brief Exact per-split and overall maxima of the piecewise curve.
- *  out_split_max_mx/mz may be NULL or hold m values; out_max_mx/mz may be NULL. */
+ *  out_split_max_mx/mz may be NULL or hold m values; out_max_mx/mz may be NULL.
+ *  Statuses as swarp_error_split_curve. */
 SWARP_API swarp_status swarp_error_split_max(const swarp_error_config* cfg,
                                              const double* splits,
                                              const double* n_primes, size_t m,
@@ -387,23 +465,37 @@ SWARP_API swarp_status swarp_error_split_max(const swarp_error_config* cfg,
 /* ======================================================================== */
 /* Core: split schemes                           (src/split.c)              */
 /* ======================================================================== */
-/** Worst case: the schemes write m + 1 values. */
+/** Largest split count m the schemes accept; they write m + 1 values, so an
+ *  array of SWARP_SPLIT_MAX_COUNT + 1 doubles always suffices. */
 #define SWARP_SPLIT_MAX_COUNT 64
 
-/** @brief Uniform split scheme C_i = n + (f - n) i/m.  [RHS] (3.6)
- *  Writes m + 1 distances (C_0 = n, C_m = f) into out. */
+/*
+ * Every scheme writes the m + 1 distances C_0 = n < C_1 < ... < C_m = f
+ * (C_0 and C_m exactly n and f) into out[0..m] and m + 1 into *out_count.
+ * Statuses: SWARP_OK; SWARP_ERR_NULL_POINTER (out_count NULL, or out NULL
+ * with capacity > 0); SWARP_ERR_NON_FINITE; SWARP_ERR_NEAR_FAR (n <= 0,
+ * f <= n); SWARP_ERR_OUT_OF_RANGE (lambda outside [0, 1], pseudo planes
+ * outside); SWARP_ERR_SPLIT_COUNT (m = 0 or m > SWARP_SPLIT_MAX_COUNT);
+ * SWARP_ERR_CAPACITY (capacity < m + 1: *out_count = m + 1, out untouched;
+ * so out = NULL, capacity = 0 asks for the count); SWARP_ERR_DEGENERATE
+ * ([n, f] too narrow in double precision for m distinct distances).
+ */
+
+/** @brief Uniform split scheme C_i = n + (f - n) i/m.  [RHS] (3.6) */
 SWARP_API swarp_status swarp_split_uniform(double n, double f, uint32_t m, double* out,
                                            size_t capacity, size_t* out_count);
 /** @brief Logarithmic scheme C_i = n (f/n)^(i/m).  [RHS] (3.7) */
 SWARP_API swarp_status swarp_split_log(double n, double f, uint32_t m, double* out,
                                        size_t capacity, size_t* out_count);
-/** @brief Practical scheme, λ in [0, 1] (0 uniform, 1 logarithmic).  [RHS] (3.8) */
+/** @brief Practical scheme C_i = (1 - λ) C_i^uni + λ C_i^log, λ in [0, 1]
+ *  (0 uniform, 1 logarithmic; PSSM uses 0.5).  [RHS] (3.8) */
 SWARP_API swarp_status swarp_split_practical(double n, double f, double lambda, uint32_t m,
                                              double* out, size_t capacity,
                                              size_t* out_count);
 /** @brief Pseudo-near/far practical scheme.  [RHS] (4.1): the practical scheme
- *  over [n_p, f_p] (eye-space distances, n <= n_p < f_p <= f); C_0 = n and
- *  C_m = f are kept so the splits still cover the whole view. */
+ *  over [n_p, f_p] (EYE-SPACE distances, n <= n_p < f_p <= f) for
+ *  C_1..C_{m-1}; C_0 = n and C_m = f are kept so the splits still cover the
+ *  whole view.  n_p = n, f_p = f gives swarp_split_practical. */
 SWARP_API swarp_status swarp_split_pseudo(double n, double f, double n_p, double f_p,
                                           double lambda, uint32_t m, double* out,
                                           size_t capacity, size_t* out_count);
