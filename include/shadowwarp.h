@@ -142,6 +142,8 @@ extern "C" {
       "the light-image rectangle exceeds the allowed size (C approaches the line pi)") \
     X(SWARP_ERR_LIXEL_TWIST_LINE, 207,                                              \
       "the twist line projects to a point in the light image")                      \
+    X(SWARP_ERR_LIXEL_EMPTY, 208,                                                   \
+      "no ray of C hits the plane inside the viewer's frustum")                     \
     X(SWARP_INFO_LIXEL_ILL_CONDITIONED, 1200,                                       \
       "the five-point configuration is ill-conditioned; the matrix may be inaccurate") \
     X(SWARP_INFO_LIXEL_QUAD_ACROSS_INFINITY, 1201,                                  \
@@ -525,6 +527,15 @@ typedef struct swarp_lixel_restrict_options {
     double twist;     /**< 2D rotation (radians, counter-clockwise) applied before
                            the bounding box; see swarp_lixel_twist_for_line */
     uint32_t max_size;/**< largest width or height accepted (0 = 16384) */
+    /** Non-zero: keep only the rays that hit P inside the viewer's frustum
+     *  ([LIXEL] §3, C_floor "within the viewer's frustum"): C's image is
+     *  clipped to the viewer image [-1/2, view_width - 1/2] x
+     *  [-1/2, view_height - 1/2] first (on P the light image IS the viewer
+     *  image); rays of C with q <= 0 are then allowed (clipped away).
+     *  Needs M_l straight from swarp_lixel_matrix with g = view_width,
+     *  h = view_height.  0 = no clipping. */
+    uint32_t view_width;
+    uint32_t view_height;
     uint32_t _reserved0;
     uint32_t _reserved[4];
 } swarp_lixel_restrict_options;
@@ -546,7 +557,8 @@ typedef struct swarp_lixel_restrict_options {
  *         the translation (so x0, y0 tell where it was)
  *  @param[out] out_A_l the 2D affine map as a 4x4 (may be NULL)
  *  @param[out] out_M_l A_l · M_l: lixel (0, 0) is the lower-left of the rectangle
- *  @return SWARP_OK; SWARP_ERR_LIXEL_RAY_OUTSIDE (a vertex has q <= 0),
+ *  @return SWARP_OK; SWARP_ERR_LIXEL_RAY_OUTSIDE (a vertex has q <= 0,
+ *  without view clipping), SWARP_ERR_LIXEL_EMPTY (nothing of C in view),
  *  SWARP_ERR_LIXEL_RECT_TOO_LARGE, SWARP_ERR_OUT_OF_RANGE (scale < 0),
  *  SWARP_ERR_INVALID_ARGUMENT (n = 0), SWARP_ERR_RESERVED_NONZERO,
  *  SWARP_ERR_NON_FINITE, SWARP_ERR_NULL_POINTER. */

@@ -600,6 +600,364 @@ START_TEST(solve5_coplanar_and_ill_conditioned) {
 }
 END_TEST
 
+/* ---- Fig. 6: restriction, scale and twist -------------------------------- */
+static swarp_vec4 P4(v3 p, double w) { swarp_vec4 r = {p.x, p.y, p.z, w}; return r; }
+
+START_TEST(restrict_rectangle_encloses_and_is_tight) {
+    rng_state = 0x8EC7u;
+    int n_checked = 0;
+    for (int it = 0; it < 3000; ++it) {
+        config k = random_config(50.0);
+        swarp_mat4 Ml;
+        ck_assert(!swarp_status_is_error(swarp_lixel_matrix(&k.Mv, k.c.g, k.c.h, &k.light, &k.P, NULL, &Ml, NULL)));
+        /* C: a few visible points of P; their viewer pixels */
+        swarp_vec4 C[6];
+        double vx[6], vy[6];
+        int m = 0;
+        for (int tries = 0; tries < 60 && m < 6; ++tries) {
+            double x = rnd(0, k.c.g - 1), y = rnd(0, k.c.h - 1);
+            v3 X;
+            double t = cam_hit(&k.c, &k.P, x, y, &X);
+            if (!(t > k.c.near) || t > k.c.far) continue;
+            C[m] = P4(X, 1.0);
+            vx[m] = x, vy[m] = y;
+            ++m;
+        }
+        if (m < 3) continue;
+        swarp_lixel_restrict_options o;
+        memset(&o, 0, sizeof o);
+        int variant = it % 3; /* plain, scaled, twisted+scaled */
+        double sx = 1, sy = 1, tw = 0;
+        if (variant >= 1) sx = o.scale_x = rnd(0.2, 1.0), sy = o.scale_y = rnd(0.2, 1.0);
+        if (variant == 2) tw = o.twist = rnd(-M_PI, M_PI);
+        o.max_size = 1u << 20;
+        swarp_lixel_rect R;
+        swarp_mat4 A, Mr;
+        ck_assert_int_eq(swarp_lixel_restrict(&Ml, C, (size_t)m, &o, &R, &A, &Mr), SWARP_OK);
+        /* independent: the twisted/scaled viewer pixels of C (on P the light
+         * image IS the viewer image) */
+        double lo_x = INFINITY, hi_x = -INFINITY, lo_y = INFINITY, hi_y = -INFINITY;
+        for (int j = 0; j < m; ++j) {
+            double xt = sx * (cos(tw) * vx[j] - sin(tw) * vy[j]), yt = sy * (sin(tw) * vx[j] + cos(tw) * vy[j]);
+            lo_x = fmin(lo_x, xt), hi_x = fmax(hi_x, xt), lo_y = fmin(lo_y, yt), hi_y = fmax(hi_y, yt);
+            /* after A_l every vertex is inside [0, width-1] x [0, height-1] */
+            double x, y, z, q;
+            light_px(&Mr, V(C[j].x, C[j].y, C[j].z), &x, &y, &z, &q);
+            ck_assert_double_gt(q, 0);
+            ck_assert_double_ge(x, -1e-6);
+            ck_assert_double_ge(y, -1e-6);
+            ck_assert_double_le(x, R.width - 1 + 1e-6);
+            ck_assert_double_le(y, R.height - 1 + 1e-6);
+            ck_assert_double_eq_tol(x, xt - R.x0, 1e-6 * (R.width + 1));
+            ck_assert_double_eq_tol(y, yt - R.y0, 1e-6 * (R.height + 1));
+        }
+        /* smallest integer rectangle (skip values within 1e-6 of an integer) */
+        if (fabs(lo_x - round(lo_x)) > 1e-6) ck_assert_int_eq(R.x0, (int32_t)floor(lo_x));
+        if (fabs(hi_x - round(hi_x)) > 1e-6) ck_assert_int_eq(R.x1, (int32_t)ceil(hi_x));
+        if (fabs(lo_y - round(lo_y)) > 1e-6) ck_assert_int_eq(R.y0, (int32_t)floor(lo_y));
+        if (fabs(hi_y - round(hi_y)) > 1e-6) ck_assert_int_eq(R.y1, (int32_t)ceil(hi_y));
+        ck_assert_uint_eq(R.width, (uint32_t)(R.x1 - R.x0 + 1));
+        ck_assert_uint_eq(R.height, (uint32_t)(R.y1 - R.y0 + 1));
+        /* point light: the same rays as directions give the same rectangle */
+        if (k.light.type == SWARP_LIGHT_POINT) {
+            swarp_vec4 D[6];
+            for (int j = 0; j < m; ++j) D[j] = P4(sub(V(C[j].x, C[j].y, C[j].z), k.lpos), 0.0);
+            swarp_lixel_rect R2;
+            swarp_mat4 Mr2;
+            ck_assert_int_eq(swarp_lixel_restrict(&Ml, D, (size_t)m, &o, &R2, NULL, &Mr2), SWARP_OK);
+            ck_assert_int_eq(R2.x0, R.x0);
+            ck_assert_int_eq(R2.y1, R.y1);
+        }
+        ++n_checked;
+    }
+    ck_assert_int_gt(n_checked, 2000);
+}
+END_TEST
+
+START_TEST(restrict_bad_inputs) {
+    cam c = make_cam(V(0, 1.7, 0), V(0, -0.3, -1), V(0, 1, 0), 60 * M_PI / 180, 1.5, 0.1, 500, 960, 640);
+    swarp_mat4 Mv = cam_matrix(&c), Ml, out;
+    swarp_plane P = {0, 1, 0, 0};
+    swarp_light L = point_light(V(4, 6, -8));
+    ck_assert(!swarp_status_is_error(swarp_lixel_matrix(&Mv, 960, 640, &L, &P, NULL, &Ml, NULL)));
+    swarp_vec4 C[3] = {{0, 0, -5, 1}, {2, 0, -6, 1}, {0.5, 0, 30, 1}}; /* the last is behind the viewer */
+    swarp_lixel_rect R, Rs;
+    memset(&Rs, 0x5A, sizeof Rs);
+    R = Rs;
+    sentinel(&out);
+    ck_assert_int_eq(swarp_lixel_restrict(&Ml, C, 3, NULL, &R, NULL, &out), SWARP_ERR_LIXEL_RAY_OUTSIDE);
+    ck_assert(is_sentinel(&out));
+    ck_assert(memcmp(&R, &Rs, sizeof R) == 0);
+    /* a floor point near the line pi (view depth 1e-3): the rectangle
+     * explodes (footnote of §2) */
+    v3 f = unit(V(0, -0.3, -1));
+    v3 side = V(1000, 0, 0);
+    /* X = (1000, 0, z) with (X - eye).f = 1e-3 */
+    double zz = (1e-3 - dot(sub(side, c.eye), V(f.x, f.y, 0))) / f.z;
+    C[2] = P4(V(1000, 0, zz), 1.0);
+    swarp_lixel_restrict_options o;
+    memset(&o, 0, sizeof o);
+    o.max_size = 4096;
+    ck_assert_int_eq(swarp_lixel_restrict(&Ml, C, 3, &o, &R, NULL, &out), SWARP_ERR_LIXEL_RECT_TOO_LARGE);
+    ck_assert(is_sentinel(&out));
+    C[2] = P4(V(1, 0, -8), 1.0);
+    ck_assert_int_eq(swarp_lixel_restrict(&Ml, C, 0, NULL, &R, NULL, &out), SWARP_ERR_INVALID_ARGUMENT);
+    o.scale_x = -1;
+    ck_assert_int_eq(swarp_lixel_restrict(&Ml, C, 3, &o, &R, NULL, &out), SWARP_ERR_OUT_OF_RANGE);
+    o.scale_x = 0;
+    o._reserved[0] = 3;
+    ck_assert_int_eq(swarp_lixel_restrict(&Ml, C, 3, &o, &R, NULL, &out), SWARP_ERR_RESERVED_NONZERO);
+    C[1].y = NAN;
+    ck_assert_int_eq(swarp_lixel_restrict(&Ml, C, 3, NULL, &R, NULL, &out), SWARP_ERR_NON_FINITE);
+    ck_assert_int_eq(swarp_lixel_restrict(NULL, C, 3, NULL, &R, NULL, &out), SWARP_ERR_NULL_POINTER);
+    ck_assert(is_sentinel(&out));
+    double tw = 99;
+    swarp_vec3 a = {1, 0, -5}, b = {1, 0, -5}, below = {0, 0, -4};
+    ck_assert_int_eq(swarp_lixel_twist_for_line(&Ml, &a, &b, &below, &tw), SWARP_ERR_LIXEL_TWIST_LINE);
+    ck_assert_double_eq(tw, 99);
+}
+END_TEST
+
+/* Clipping C to the viewer's frustum ([LIXEL] §3): compared with brute
+ * force over sampled rays of C. */
+START_TEST(restrict_clipped_to_view_matches_sampling) {
+    rng_state = 0xC11Fu;
+    int n_done = 0;
+    for (int it = 0; it < 600; ++it) {
+        config k = random_config(50.0);
+        swarp_mat4 Ml;
+        ck_assert(!swarp_status_is_error(swarp_lixel_matrix(&k.Mv, k.c.g, k.c.h, &k.light, &k.P, NULL, &Ml, NULL)));
+        /* C: a quad of P around a visible point, partly out of view */
+        v3 X0;
+        if (!(cam_hit(&k.c, &k.P, rnd(0, k.c.g - 1), rnd(0, k.c.h - 1), &X0) > k.c.near)) continue;
+        v3 n = unit(V(k.P.a, k.P.b, k.P.c));
+        v3 e1 = unit(cross(n, fabs(n.x) < 0.9 ? V(1, 0, 0) : V(0, 1, 0))), e2 = cross(n, e1);
+        double r = rnd(0.5, 20);
+        swarp_vec4 C[4];
+        v3 Cw[4];
+        for (int j = 0; j < 4; ++j) {
+            double ang = j * M_PI / 2 + rnd(-0.3, 0.3);
+            Cw[j] = add(X0, add(mul(e1, r * cos(ang)), mul(e2, r * sin(ang))));
+            C[j] = P4(Cw[j], 1.0);
+        }
+        swarp_lixel_restrict_options o;
+        memset(&o, 0, sizeof o);
+        o.view_width = k.c.g, o.view_height = k.c.h, o.max_size = 1u << 20;
+        swarp_lixel_rect R;
+        swarp_mat4 Mr;
+        swarp_status st = swarp_lixel_restrict(&Ml, C, 4, &o, &R, NULL, &Mr);
+        ck_assert_msg(st == SWARP_OK, "%s", swarp_status_name(st));
+        /* brute force: points of the quad (bilinear samples are inside the
+         * convex quad), seen by the viewer, in front */
+        double lo_x = INFINITY, hi_x = -INFINITY, lo_y = INFINITY, hi_y = -INFINITY;
+        for (int a = 0; a <= 60; ++a)
+            for (int b = 0; b <= 60; ++b) {
+                double u = a / 60.0, v = b / 60.0;
+                v3 X = add(mul(add(mul(Cw[0], 1 - u), mul(Cw[1], u)), 1 - v), mul(add(mul(Cw[3], 1 - u), mul(Cw[2], u)), v));
+                if (dot(sub(X, k.c.eye), k.c.f) <= 0) continue;
+                double x, y;
+                cam_pixel(&k.c, X, &x, &y);
+                if (x < -0.5 || x > k.c.g - 0.5 || y < -0.5 || y > k.c.h - 0.5) continue;
+                lo_x = fmin(lo_x, x), hi_x = fmax(hi_x, x), lo_y = fmin(lo_y, y), hi_y = fmax(hi_y, y);
+            }
+        if (!(hi_x > lo_x)) continue;
+        ck_assert_double_le(R.x0, lo_x + 1e-6);
+        ck_assert_double_ge(R.x1, hi_x - 1e-6);
+        ck_assert_double_le(R.y0, lo_y + 1e-6);
+        ck_assert_double_ge(R.y1, hi_y - 1e-6);
+        /* and not larger than the view (plus rounding to lixel centres) */
+        ck_assert_int_ge(R.x0, -1);
+        ck_assert_int_le(R.x1, (int32_t)k.c.g);
+        ck_assert_int_ge(R.y0, -1);
+        ck_assert_int_le(R.y1, (int32_t)k.c.h);
+        /* tight up to the sampling gap */
+        double gap = 0.05 * (k.c.g + k.c.h);
+        ck_assert_double_ge(R.x0, lo_x - 1 - gap);
+        ck_assert_double_le(R.x1, hi_x + 1 + gap);
+        ++n_done;
+    }
+    ck_assert_int_gt(n_done, 300);
+}
+END_TEST
+
+/* ---- 'M_l = GLV GLP' ----------------------------------------------------- */
+START_TEST(factor_viewport_times_projection) {
+    rng_state = 0xFAC7u;
+    for (int it = 0; it < 2000; ++it) {
+        config k = random_config(50.0);
+        swarp_mat4 Ml;
+        swarp_lixel_info info;
+        ck_assert(!swarp_status_is_error(swarp_lixel_matrix(&k.Mv, k.c.g, k.c.h, &k.light, &k.P, NULL, &Ml, &info)));
+        uint32_t W = 1 + (uint32_t)rnd(0, 3000), H = 1 + (uint32_t)rnd(0, 3000);
+        swarp_depth_range dr = (it & 1) ? SWARP_DEPTH_ZERO_TO_ONE : SWARP_DEPTH_NEG_ONE_TO_ONE;
+        double f = (it % 4 < 2) ? 0.0 : rnd(0.05, 0.95);
+        double f_eff = f > 0 ? f : 0.5;
+        swarp_mat4 GLV, GLP;
+        ck_assert_int_eq(swarp_lixel_factor(&Ml, W, H, dr, f, &GLV, &GLP), SWARP_OK);
+        /* rows x, y, q of GLV GLP are those of M_l */
+        swarp_mat4 prod;
+        ck_assert_int_eq(swarp_mat4_mul(&GLV, &GLP, &prod), SWARP_OK);
+        for (int col = 0; col < 4; ++col)
+            for (int r = 0; r < 4; ++r)
+                if (r != 2) ck_assert_double_eq_tol(prod.m[col * 4 + r], Ml.m[col * 4 + r], 1e-12 * (W + H));
+        /* standard clipping: lixel x in [-1/2, W - 1/2] <=> |x_ndc| <= w */
+        double xl = rnd(-0.5, W - 0.5), yl = rnd(-0.5, H - 0.5);
+        double xn = (2 * xl + 1) / W - 1, yn = (2 * yl + 1) / H - 1;
+        ck_assert_double_le(fabs(xn), 1 + 1e-12);
+        ck_assert_double_le(fabs(yn), 1 + 1e-12);
+        /* GLV maps those NDC back to the lixel */
+        ck_assert_double_eq_tol(GLV.m[0] * xn + GLV.m[12], xl, 1e-9 * W);
+        ck_assert_double_eq_tol(GLV.m[5] * yn + GLV.m[13], yl, 1e-9 * H);
+        /* depth: p-hat on the near plane, P at the fraction f of the range */
+        double x, y, z, q;
+        light_px(&GLP, V(info.raised.x, info.raised.y, info.raised.z), &x, &y, &z, &q);
+        ck_assert_double_gt(q, 0);
+        ck_assert_double_eq_tol(z, dr == SWARP_DEPTH_ZERO_TO_ONE ? 0.0 : -1.0, 1e-7);
+        for (int s = 0; s < 4; ++s) {
+            v3 X;
+            double t = cam_hit(&k.c, &k.P, rnd(0, k.c.g - 1), rnd(0, k.c.h - 1), &X);
+            if (!(t > k.c.near) || t > k.c.far) continue;
+            light_px(&GLP, X, &x, &y, &z, &q);
+            ck_assert_double_gt(q, 0);
+            ck_assert_double_eq_tol(z, dr == SWARP_DEPTH_ZERO_TO_ONE ? f_eff : 2 * f_eff - 1, 1e-6);
+        }
+    }
+    swarp_mat4 I, a, b;
+    memset(&I, 0, sizeof I);
+    I.m[0] = I.m[5] = I.m[10] = I.m[15] = 1;
+    sentinel(&a);
+    sentinel(&b);
+    ck_assert_int_eq(swarp_lixel_factor(&I, 0, 4, SWARP_DEPTH_DEFAULT, 0, &a, &b), SWARP_ERR_RESOLUTION);
+    ck_assert_int_eq(swarp_lixel_factor(&I, 4, 4, (swarp_depth_range)9, 0, &a, &b), SWARP_ERR_UNKNOWN_ENUM);
+    ck_assert_int_eq(swarp_lixel_factor(&I, 4, 4, SWARP_DEPTH_DEFAULT, 1.0, &a, &b), SWARP_ERR_OUT_OF_RANGE);
+    ck_assert_int_eq(swarp_lixel_factor(&I, 4, 4, SWARP_DEPTH_DEFAULT, NAN, &a, &b), SWARP_ERR_NON_FINITE);
+    ck_assert_int_eq(swarp_lixel_factor(NULL, 4, 4, SWARP_DEPTH_DEFAULT, 0, &a, &b), SWARP_ERR_NULL_POINTER);
+    ck_assert(is_sentinel(&a) && is_sentinel(&b));
+}
+END_TEST
+
+/* ---- §3: floor, wall and fallback ---------------------------------------- */
+/* Room: floor y = 0, wall z = -10 facing +z; viewer and light in the room. */
+START_TEST(floor_wall_split_and_select) {
+    cam c = make_cam(V(1, 1.7, 4), V(-0.2, -0.35, -1), V(0, 1, 0), 60 * M_PI / 180, 1.5, 0.1, 100, 960, 640);
+    swarp_mat4 Mv = cam_matrix(&c);
+    swarp_plane floor_p = {0, 1, 0, 0}, wall_p = {0, 0, 1, 10};
+    v3 lp = V(-3, 6, 2);
+    swarp_light L = point_light(lp);
+    /* C_tot: rays toward a floor strip in front of the viewer and the wall top */
+    v3 corners[4] = {V(-8, 0, 3), V(8, 0, 3), V(8, 6, -10), V(-8, 6, -10)};
+    swarp_vec4 C_tot[4];
+    for (int i = 0; i < 4; ++i) C_tot[i] = P4(sub(corners[i], lp), 0.0);
+    swarp_vec4 Cf[5], Cw[5];
+    size_t nf = 0, nw = 0;
+    ck_assert_int_eq(swarp_lixel_split(&L, &floor_p, &wall_p, C_tot, 4, Cf, 1, &nf, Cw, 5, &nw), SWARP_ERR_CAPACITY);
+    ck_assert_uint_eq(nf, 4);
+    ck_assert_uint_eq(nw, 4);
+    ck_assert_int_eq(swarp_lixel_split(&L, &floor_p, &wall_p, C_tot, 4, Cf, 5, &nf, Cw, 5, &nw), SWARP_OK);
+    /* every floor ray hits the floor in front of the wall (z >= -10), every
+     * wall ray hits the wall above the floor (y >= 0) */
+    for (size_t j = 0; j < nf; ++j) {
+        double t = -lp.y / Cf[j].y;
+        ck_assert_double_gt(t, 0);
+        ck_assert_double_ge(lp.z + t * Cf[j].z, -10 - 1e-9);
+    }
+    for (size_t j = 0; j < nw; ++j) {
+        double t = (-10 - lp.z) / Cw[j].z;
+        ck_assert_double_gt(t, 0);
+        ck_assert_double_ge(lp.y + t * Cw[j].y, -1e-9);
+    }
+    /* the two maps, the floor's twisted so the floor/wall line is horizontal */
+    swarp_mat4 Mf, Mw, Mf_r, Mw_r, GLP[2], GLV;
+    ck_assert(!swarp_status_is_error(swarp_lixel_matrix(&Mv, 960, 640, &L, &floor_p, NULL, &Mf, NULL)));
+    ck_assert(!swarp_status_is_error(swarp_lixel_matrix(&Mv, 960, 640, &L, &wall_p, NULL, &Mw, NULL)));
+    swarp_vec3 a = {-5, 0, -10}, b = {5, 0, -10}, below = {0, 0, -5};
+    swarp_lixel_restrict_options o, ow;
+    memset(&o, 0, sizeof o);
+    ck_assert_int_eq(swarp_lixel_twist_for_line(&Mf, &a, &b, &below, &o.twist), SWARP_OK);
+    /* without view clipping C_floor reaches the line pi beside the viewer */
+    swarp_lixel_rect Rf, Rw;
+    ck_assert_int_eq(swarp_lixel_restrict(&Mf, Cf, nf, &o, &Rf, NULL, &Mf_r), SWARP_ERR_LIXEL_RECT_TOO_LARGE);
+    o.view_width = 960, o.view_height = 640;
+    ow = o;
+    ow.twist = 0;
+    ck_assert_int_eq(swarp_lixel_restrict(&Mf, Cf, nf, &o, &Rf, NULL, &Mf_r), SWARP_OK);
+    ck_assert_int_eq(swarp_lixel_restrict(&Mw, Cw, nw, &ow, &Rw, NULL, &Mw_r), SWARP_OK);
+    /* fewer lixels than the viewer's 960 x 640 for each plane */
+    ck_assert_uint_lt((uint64_t)Rw.width * Rw.height, 960u * 640u);
+    /* twisted: the line's image is horizontal, the floor below it */
+    double xa, ya, xb, yb, xc, yc, z, q;
+    light_px(&Mf_r, V(a.x, a.y, a.z), &xa, &ya, &z, &q);
+    light_px(&Mf_r, V(b.x, b.y, b.z), &xb, &yb, &z, &q);
+    light_px(&Mf_r, V(below.x, below.y, below.z), &xc, &yc, &z, &q);
+    ck_assert_double_eq_tol(ya, yb, 1e-9 * Rf.height);
+    ck_assert_double_lt(yc, ya);
+    /* the top of the floor map is the line (rounded up to a lixel centre) */
+    ck_assert_double_le(fabs(ya - (Rf.height - 1)), 1.0);
+    ck_assert_int_eq(swarp_lixel_factor(&Mf_r, Rf.width, Rf.height, SWARP_DEPTH_DEFAULT, 0, &GLV, &GLP[0]), SWARP_OK);
+    ck_assert_int_eq(swarp_lixel_factor(&Mw_r, Rw.width, Rw.height, SWARP_DEPTH_DEFAULT, 0, &GLV, &GLP[1]), SWARP_OK);
+    /* visible floor points in front of the wall use map 0, visible wall
+     * points well above the line map 1: sampled through viewer pixels */
+    rng_state = 0x5E1Eu;
+    int nfloor = 0, nwall = 0;
+    for (int s = 0; s < 4000; ++s) {
+        double x = rnd(0, 959), y = rnd(0, 639);
+        v3 Xf, Xw;
+        double tf = cam_hit(&c, &floor_p, x, y, &Xf), tw = cam_hit(&c, &wall_p, x, y, &Xw);
+        int on_floor = tf > 0 && (tw <= 0 || tf < tw);
+        v3 X = on_floor ? Xf : Xw;
+        /* inside C_tot's footprint only (x in [-8, 8] on both, floor z < 3, wall y < 6) */
+        if (fabs(X.x) > 7.5 || (on_floor && X.z > 2.5) || (!on_floor && (X.y > 5.5 || X.y < 0.3))) continue;
+        uint32_t idx = 99;
+        swarp_vec3 p = {X.x, X.y, X.z};
+        ck_assert_int_eq(swarp_lixel_select(GLP, 2, &p, &idx), SWARP_OK);
+        if (on_floor) {
+            ck_assert_uint_eq(idx, 0);
+            /* and there the floor map samples the viewer pixel exactly */
+            double xl, yl;
+            light_px(&Mf, X, &xl, &yl, &z, &q);
+            ck_assert_double_eq_tol(xl, x, 1e-9 * 960);
+            ++nfloor;
+        } else {
+            ck_assert_uint_eq(idx, 1);
+            ++nwall;
+        }
+    }
+    ck_assert_int_gt(nfloor, 100);
+    ck_assert_int_gt(nwall, 100);
+    /* behind the viewer: no plane map, the fallback */
+    swarp_vec3 behind = {1, 0.5, 9};
+    uint32_t idx = 99;
+    ck_assert_int_eq(swarp_lixel_select(GLP, 2, &behind, &idx), SWARP_OK);
+    ck_assert_uint_eq(idx, 2);
+    /* bad inputs */
+    ck_assert_int_eq(swarp_lixel_split(&L, &floor_p, &floor_p, C_tot, 4, Cf, 5, &nf, Cw, 5, &nw), SWARP_ERR_DEGENERATE);
+    swarp_light on_line = point_light(V(0, 0, -10));
+    ck_assert_int_eq(swarp_lixel_split(&on_line, &floor_p, &wall_p, C_tot, 4, Cf, 5, &nf, Cw, 5, &nw), SWARP_ERR_DEGENERATE);
+    swarp_light sun = dir_light(V(0.2, -1, -0.3));
+    ck_assert_int_eq(swarp_lixel_split(&sun, &floor_p, &wall_p, C_tot, 4, Cf, 5, &nf, Cw, 5, &nw), SWARP_ERR_INVALID_ARGUMENT);
+    ck_assert_int_eq(swarp_lixel_split(&L, &floor_p, &wall_p, C_tot, 2, Cf, 5, &nf, Cw, 5, &nw), SWARP_ERR_INVALID_ARGUMENT);
+    behind.x = NAN;
+    ck_assert_int_eq(swarp_lixel_select(GLP, 2, &behind, &idx), SWARP_ERR_NON_FINITE);
+    ck_assert_uint_eq(idx, 2);
+}
+END_TEST
+
+/* A directional light: the split works on world points. */
+START_TEST(split_directional_points) {
+    swarp_plane floor_p = {0, 1, 0, 0}, wall_p = {0, 0, 1, 10};
+    swarp_light sun = dir_light(V(0.2, -1, -0.5)); /* toward the wall */
+    swarp_vec4 C[4] = {{-5, 0, 0, 1}, {5, 0, 0, 1}, {5, 0, -20, 1}, {-5, 0, -20, 1}};
+    swarp_vec4 Cf[5], Cw[5];
+    size_t nf = 0, nw = 0;
+    ck_assert_int_eq(swarp_lixel_split(&sun, &floor_p, &wall_p, C, 4, Cf, 5, &nf, Cw, 5, &nw), SWARP_OK);
+    ck_assert_uint_eq(nf, 4);
+    ck_assert_uint_eq(nw, 4);
+    /* the cut on y = 0 is the line z = -10 itself */
+    for (size_t j = 0; j < nf; ++j) ck_assert_double_ge(Cf[j].z, -10 - 1e-12);
+    for (size_t j = 0; j < nw; ++j) ck_assert_double_le(Cw[j].z, -10 + 1e-12);
+}
+END_TEST
+
 /* @@MORE_TESTS@@ */
 
 static Suite* lixel_suite(void) {
@@ -615,6 +973,12 @@ static Suite* lixel_suite(void) {
     tcase_add_test(tc, degenerate_inputs_have_own_status);
     tcase_add_test(tc, solve5_recovers_a_known_matrix);
     tcase_add_test(tc, solve5_coplanar_and_ill_conditioned);
+    tcase_add_test(tc, restrict_rectangle_encloses_and_is_tight);
+    tcase_add_test(tc, restrict_bad_inputs);
+    tcase_add_test(tc, restrict_clipped_to_view_matches_sampling);
+    tcase_add_test(tc, factor_viewport_times_projection);
+    tcase_add_test(tc, floor_wall_split_and_select);
+    tcase_add_test(tc, split_directional_points);
     /* @@MORE_TCASES@@ */
     suite_add_tcase(s, tc);
     return s;
