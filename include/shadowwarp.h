@@ -127,7 +127,32 @@ extern "C" {
 /* <<< status: geometry */
 
 /* >>> status: lixel (200..299, 1200..1299) */
-#define SWARP_STATUS_LIST_LIXEL(X)
+#define SWARP_STATUS_LIST_LIXEL(X)                                                  \
+    X(SWARP_ERR_LIXEL_COPLANAR, 200,                                                \
+      "four of the five points are coplanar (or a point is zero): no unique matrix")\
+    X(SWARP_ERR_LIXEL_PLANE_THROUGH_EYE, 201,                                       \
+      "the plane of interest passes through the viewer's eye")                      \
+    X(SWARP_ERR_LIXEL_LIGHT_ON_PLANE, 202, "the point light lies on the plane of interest") \
+    X(SWARP_ERR_LIXEL_LIGHT_PARALLEL_PLANE, 203,                                    \
+      "the directional light is parallel to the plane of interest")                 \
+    X(SWARP_ERR_LIXEL_PLANE_NOT_VISIBLE, 204,                                       \
+      "no corner ray of the viewer hits the plane of interest in front of the eye") \
+    X(SWARP_ERR_LIXEL_RAY_OUTSIDE, 205,                                             \
+      "a ray of C is outside the light frustum of M_l (q <= 0)")                    \
+    X(SWARP_ERR_LIXEL_RECT_TOO_LARGE, 206,                                          \
+      "the light-image rectangle exceeds the allowed size (C approaches the line pi)") \
+    X(SWARP_ERR_LIXEL_TWIST_LINE, 207,                                              \
+      "the twist line projects to a point in the light image")                      \
+    X(SWARP_ERR_LIXEL_EMPTY, 208,                                                   \
+      "no ray of C hits the plane inside the viewer's frustum")                     \
+    X(SWARP_INFO_LIXEL_ILL_CONDITIONED, 1200,                                       \
+      "the five-point configuration is ill-conditioned; the matrix may be inaccurate") \
+    X(SWARP_INFO_LIXEL_QUAD_ACROSS_INFINITY, 1201,                                  \
+      "the quad Q straddles infinity (horizon visible); exact on the visible part") \
+    X(SWARP_INFO_LIXEL_PLANE_PARALLEL_VIEW, 1202,                                   \
+      "the plane of interest is parallel to the view direction (horizon through the centre)") \
+    X(SWARP_INFO_LIXEL_LIGHT_BEHIND_PLANE, 1203,                                    \
+      "light and viewer are on opposite sides of the plane of interest")
 /* <<< status: lixel */
 
 /* >>> status: filter (300..399, 1300..1399) */
@@ -504,6 +529,190 @@ SWARP_API swarp_status swarp_split_pseudo(double n, double f, double n_p, double
 /* <<< api: geometry */
 
 /* >>> api: lixel (src/lixel.c) */
+/*
+ * Plane-stabilised light matrices, [LIXEL] Chong & Gortler.  M_l maps world
+ * points to LIGHT-IMAGE coordinates [x_l q, y_l q, z_l q, q] where (x_l, y_l)
+ * are lixel coordinates (lixel centres at integers, like the viewer pixels
+ * (0,0) .. (g-1, h-1)).  On the plane of interest P every point has the same
+ * (x, y) in the viewer image (pixels) and in the light image (lixels).
+ * The viewer-image pixel of a clip-space point is
+ *   x_pix = (x_ndc + 1) g/2 - 1/2,  y_pix = (y_ndc + 1) h/2 - 1/2
+ * (pixel centres at integers, pixel 0 centred half a pixel inside the edge).
+ */
+
+/** Options of swarp_lixel_matrix (zero means default). */
+typedef struct swarp_lixel_options {
+    /** Where the raised point p^4-hat lies on the ray from the corner point
+     *  toward the light ([LIXEL] Fig. 2), as a fraction t in [0, 1):
+     *  point light p-hat = (1-t) p + t l; directional light p-hat =
+     *  p - t |p - eye| d/|d|.  0 = default 0.5.  It fixes the light-image
+     *  near plane (z = -1) only; (x, y) do not depend on it. */
+    double raise;
+    uint32_t _reserved[4];
+} swarp_lixel_options;
+
+/** Optional details of swarp_lixel_matrix. */
+typedef struct swarp_lixel_info {
+    swarp_vec4 corners[4];     /**< p^1..p^4 homogeneous (w <= 0: behind / at infinity) */
+    swarp_vec4 raised;         /**< p-hat, homogeneous, w = 1 */
+    uint32_t raised_index;     /**< which corner (0..3) was raised; 3 (= p^4) when in front */
+    uint32_t corners_in_front; /**< how many corner rays hit P in front of the eye */
+    double conditioning;       /**< swarp_lixel_solve5's measure, (0, 1] */
+    uint32_t _reserved[4];
+} swarp_lixel_info;
+
+/** @brief The 4x4 projective matrix fixed (up to scale) by five point
+ *  correspondences M src[i] ~ dst[i] (no four coplanar).  [LIXEL] §2, via
+ *  [Fau93]: both sets are mapped to the projective basis, in double, after a
+ *  similarity normalisation of each set, with partial pivoting.
+ *  @param[in] src five homogeneous points (w = 0 allowed: points at infinity)
+ *  @param[in] dst five homogeneous image points
+ *  @param[out] out_M the matrix, scaled so its largest |element| is 1
+ *  @param[out] out_conditioning may be NULL: the smallest |det| of four of
+ *         the five normalised points of either set, in [0, 1]; 0 = coplanar
+ *  @return SWARP_OK; SWARP_INFO_LIXEL_ILL_CONDITIONED (conditioning < 1e-6
+ *          or a constraint residual above 1e-9: the matrix is written);
+ *          SWARP_ERR_LIXEL_COPLANAR (conditioning < 1e-13), SWARP_ERR_NON_FINITE,
+ *          SWARP_ERR_NULL_POINTER. */
+SWARP_API swarp_status swarp_lixel_solve5(const swarp_vec4 src[5], const swarp_vec4 dst[5],
+                                          swarp_mat4* out_M, double* out_conditioning);
+
+/** @brief Plane-stabilised light matrix M_l.  [LIXEL] (1), (2), (7)-(10)
+ *  Rays through the corner pixels (2) hit P in p^1..p^4 (homogeneous, so a
+ *  quad across infinity, Fig. 5, is fine); a corner in front of the eye (p^4
+ *  when possible) is raised toward the light (Fig. 2); the light maps to
+ *  [0,0,1,0] (1), p^1..p^3 to their own pixel with z = 1, the raised point
+ *  with z = -1 ((7)-(10), (9) read as [(g-1)q, (h-1)q, 1q, q]).  The sign
+ *  of the matrix is chosen so that q > 0 exactly on the part of P in front
+ *  of the viewer (on P, q_l = c q_v with c > 0).
+ *  @param[in] M_v viewer view-projection (world -> clip, OpenGL style)
+ *  @param g, h viewer image width and height in pixels (>= 2)
+ *  @param[in] light point (position) or directional (direction of travel)
+ *  @param[in] plane the plane of interest P (normal non-zero)
+ *  @param[in] opt may be NULL (defaults)
+ *  @param[out] out_M_l world -> light image (lixels), largest |element| 1
+ *  @param[out] out_info may be NULL
+ *  @return SWARP_OK; informational SWARP_INFO_LIXEL_QUAD_ACROSS_INFINITY,
+ *  _PLANE_PARALLEL_VIEW, _LIGHT_BEHIND_PLANE, _ILL_CONDITIONED (most
+ *  important first: ill-conditioned, parallel, across infinity, behind);
+ *  errors SWARP_ERR_LIXEL_PLANE_THROUGH_EYE, _LIGHT_ON_PLANE,
+ *  _LIGHT_PARALLEL_PLANE, _PLANE_NOT_VISIBLE, SWARP_ERR_SINGULAR (M_v),
+ *  SWARP_ERR_RESOLUTION, SWARP_ERR_ZERO_VECTOR, SWARP_ERR_OUT_OF_RANGE
+ *  (raise), SWARP_ERR_UNKNOWN_ENUM, SWARP_ERR_RESERVED_NONZERO,
+ *  SWARP_ERR_NON_FINITE, SWARP_ERR_NULL_POINTER. */
+SWARP_API swarp_status swarp_lixel_matrix(const swarp_mat4* M_v, uint32_t g, uint32_t h,
+                                          const swarp_light* light, const swarp_plane* plane,
+                                          const swarp_lixel_options* opt, swarp_mat4* out_M_l,
+                                          swarp_lixel_info* out_info);
+
+/** Integer light-image rectangle [x0, x1] x [y0, y1] (lixel centres,
+ *  inclusive): width = x1 - x0 + 1 lixels. */
+typedef struct swarp_lixel_rect {
+    int32_t x0, y0, x1, y1;
+    uint32_t width, height;
+} swarp_lixel_rect;
+
+/** Options of swarp_lixel_restrict (zero means default). */
+typedef struct swarp_lixel_restrict_options {
+    double scale_x;   /**< lixels per pixel along light-image x (0 = 1; < 1: fewer lixels) */
+    double scale_y;   /**< lixels per pixel along y (0 = 1) */
+    double twist;     /**< 2D rotation (radians, counter-clockwise) applied before
+                           the bounding box; see swarp_lixel_twist_for_line */
+    uint32_t max_size;/**< largest width or height accepted (0 = 16384) */
+    /** Non-zero: keep only the rays that hit P inside the viewer's frustum
+     *  ([LIXEL] §3, C_floor "within the viewer's frustum"): C's image is
+     *  clipped to the viewer image [-1/2, view_width - 1/2] x
+     *  [-1/2, view_height - 1/2] first (on P the light image IS the viewer
+     *  image); rays of C with q <= 0 are then allowed (clipped away).
+     *  Needs M_l straight from swarp_lixel_matrix with g = view_width,
+     *  h = view_height.  0 = no clipping. */
+    uint32_t view_width;
+    uint32_t view_height;
+    uint32_t _reserved0;
+    uint32_t _reserved[4];
+} swarp_lixel_restrict_options;
+
+#define SWARP_LIXEL_DEFAULT_MAX_SIZE 16384u
+
+/** @brief Light-image restriction (Fig. 6): the smallest axis-aligned
+ *  rectangle with integer corners enclosing the light image of the convex set
+ *  of rays C, and M_l := A_l M_l where A_l = translate(-x0, -y0) ·
+ *  scale(scale_x, scale_y) · rotate(twist) (rows x, y only).  [LIXEL] §2
+ *  "Less of the plane".
+ *  @param[in] M_l from swarp_lixel_matrix
+ *  @param[in] C vertices of the convex polygon of rays: world points (w = 1,
+ *         any light) or directions from a point light (w = 0); any w != 0 is
+ *         divided out
+ *  @param n number of vertices (>= 1)
+ *  @param[in] opt may be NULL
+ *  @param[out] out_rect the rectangle in the twisted/scaled image BEFORE
+ *         the translation (so x0, y0 tell where it was)
+ *  @param[out] out_A_l the 2D affine map as a 4x4 (may be NULL)
+ *  @param[out] out_M_l A_l · M_l: lixel (0, 0) is the lower-left of the rectangle
+ *  @return SWARP_OK; SWARP_ERR_LIXEL_RAY_OUTSIDE (a vertex has q <= 0,
+ *  without view clipping), SWARP_ERR_LIXEL_EMPTY (nothing of C in view),
+ *  SWARP_ERR_LIXEL_RECT_TOO_LARGE, SWARP_ERR_OUT_OF_RANGE (scale < 0),
+ *  SWARP_ERR_INVALID_ARGUMENT (n = 0), SWARP_ERR_RESERVED_NONZERO,
+ *  SWARP_ERR_NON_FINITE, SWARP_ERR_NULL_POINTER. */
+SWARP_API swarp_status swarp_lixel_restrict(const swarp_mat4* M_l, const swarp_vec4* C, size_t n,
+                                            const swarp_lixel_restrict_options* opt,
+                                            swarp_lixel_rect* out_rect, swarp_mat4* out_A_l,
+                                            swarp_mat4* out_M_l);
+
+/** @brief Twist angle that makes the light image of the world line through a
+ *  and b horizontal, with the light image of `below` (a point on the side
+ *  that should stay inside, e.g. on the floor in front of the wall) at
+ *  smaller y.  [LIXEL] §3 (twist in A_floor).
+ *  @return SWARP_OK; SWARP_ERR_LIXEL_TWIST_LINE (the line images to a point
+ *  or a point has q <= 0), SWARP_ERR_NON_FINITE, SWARP_ERR_NULL_POINTER. */
+SWARP_API swarp_status swarp_lixel_twist_for_line(const swarp_mat4* M_l, const swarp_vec3* a,
+                                                  const swarp_vec3* b, const swarp_vec3* below,
+                                                  double* out_twist);
+
+/** @brief Factor M_l (after restriction, lixels 0..width-1 x 0..height-1)
+ *  into M_l' = GLV · GLP for standard clipping.  [LIXEL] §2 ('M_l = GLV GLP')
+ *  GLP is world -> clip (use it as the light's view-projection; w > 0 on
+ *  the wanted side); GLV is the viewport NDC -> lixels
+ *  (x = (x_ndc + 1) width/2 - 1/2) with depth passed through.  The depth
+ *  row is remapped affinely (allowed by the paper's footnote): the raised
+ *  point p-hat lands on the near plane (NDC -1, or 0) and P at the fraction
+ *  plane_depth of the depth range (default 0.5), so geometry slightly
+ *  behind P is not clipped.  (x, y, q) of M_l' equal those of M_l.
+ *  @param plane_depth in [0, 1): 0 = default 0.5
+ *  @return SWARP_OK; SWARP_ERR_RESOLUTION, SWARP_ERR_OUT_OF_RANGE,
+ *  SWARP_ERR_UNKNOWN_ENUM, SWARP_ERR_NON_FINITE, SWARP_ERR_NULL_POINTER. */
+SWARP_API swarp_status swarp_lixel_factor(const swarp_mat4* M_l, uint32_t width, uint32_t height,
+                                          swarp_depth_range depth_range, double plane_depth,
+                                          swarp_mat4* out_GLV, swarp_mat4* out_GLP);
+
+/** Worst case of swarp_lixel_split: each output has at most n + 1 vertices. */
+#define SWARP_LIXEL_SPLIT_MAX(n) ((n) + 1)
+
+/** @brief Split the convex polygon of rays C_tot by the floor/wall line
+ *  ([LIXEL] §3): C_floor holds the rays that hit the floor in front of the
+ *  wall (on the side its normal points to), C_wall the others (they hit the
+ *  wall above the line when the light is in the room).  The cut is the plane
+ *  through the light and the floor/wall line.  Vertices as in
+ *  swarp_lixel_restrict (all points or all directions).
+ *  @param[out] out_floor, out_wall capacity each; counts written (either
+ *         may be 0 when C_tot lies on one side)
+ *  @return SWARP_OK; SWARP_ERR_CAPACITY (needed counts written),
+ *  SWARP_ERR_DEGENERATE (floor parallel to wall, or light on the line),
+ *  SWARP_ERR_ZERO_VECTOR, SWARP_ERR_INVALID_ARGUMENT, SWARP_ERR_NON_FINITE,
+ *  SWARP_ERR_NULL_POINTER. */
+SWARP_API swarp_status swarp_lixel_split(const swarp_light* light, const swarp_plane* floor_plane,
+                                         const swarp_plane* wall_plane, const swarp_vec4* C_tot,
+                                         size_t n, swarp_vec4* out_floor, size_t floor_capacity,
+                                         size_t* out_floor_count, swarp_vec4* out_wall,
+                                         size_t wall_capacity, size_t* out_wall_count);
+
+/** @brief Which shadow map to use for a world point ([LIXEL] §3, the CPU
+ *  reference of the shader in docs/lixel.md): the first i whose clip matrix
+ *  GLP[i] puts p inside (w > 0, |x| <= w, |y| <= w), else count (the
+ *  conventional fallback map).
+ *  @return SWARP_OK; SWARP_ERR_NON_FINITE, SWARP_ERR_NULL_POINTER. */
+SWARP_API swarp_status swarp_lixel_select(const swarp_mat4* GLP, size_t count, const swarp_vec3* p,
+                                          uint32_t* out_index);
 /* <<< api: lixel */
 
 /* >>> api: filter (src/filter.c) */
