@@ -336,6 +336,30 @@ START_TEST(lvsm_exact_when_occluders_below_layer) {
 }
 END_TEST
 
+/* Every layer warp is monotone, so the layer's Chebyshev value is an upper
+ * bound of PCF ([VSM] §4: any monotone warp gives a bound), blended or not. */
+START_TEST(lvsm_upper_bound) {
+    uint64_t s = 42;
+    for (int k = 0; k < 3000; ++k) {
+        uint32_t N = 1 + (uint32_t)(sm_next(&s) % 6);
+        double splits[8];
+        random_splits(&s, splits, N);
+        double delta = urand(&s, 0.0, 0.09), band = urand(&s, 0.0, delta < 0.04 ? delta : 0.04);
+        int n = 1 + (int)(sm_next(&s) % 8);
+        double x[8], w[8], lm[16], v;
+        for (int i = 0; i < n; ++i) {
+            x[i] = urand(&s, splits[0], splits[N]);
+            w[i] = urand(&s, 0.05, 1.0);
+        }
+        layer_moments(x, w, n, splits, N, delta, lm);
+        double t = urand(&s, splits[0], splits[N]);
+        ck_assert_int_eq(swarp_lvsm_visibility(lm, splits, N, delta, band, t, 0.0, &v), SWARP_OK);
+        ck_assert(v >= 0.0 && v <= 1.0);
+        ck_assert_double_ge(v, pcf(x, w, n, t) - 1e-9);
+    }
+}
+END_TEST
+
 /* One layer reduces to plain VSM: Chebyshev is invariant under the affine
  * warp (4.2) when the variance floor is scaled with it. */
 START_TEST(lvsm_one_layer_is_vsm) {
@@ -982,6 +1006,7 @@ static Suite* filter_suite(void) {
     tcase_add_test(tc, lvsm_warp_and_intervals);
     tcase_add_test(tc, lvsm_layer_lookup);
     tcase_add_test(tc, lvsm_exact_when_occluders_below_layer);
+    tcase_add_test(tc, lvsm_upper_bound);
     tcase_add_test(tc, lvsm_one_layer_is_vsm);
     tcase_add_test(tc, lvsm_transition_band);
     tcase_add_test(tc, lloyd_converges_to_mixture_peaks);
