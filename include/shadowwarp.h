@@ -156,7 +156,26 @@ extern "C" {
 /* <<< status: lixel */
 
 /* >>> status: filter (300..399, 1300..1399) */
-#define SWARP_STATUS_LIST_FILTER(X)
+#define SWARP_STATUS_LIST_FILTER(X)                                                      \
+    X(SWARP_ERR_FILTER_LAYER_COUNT, 300,                                                 \
+      "LVSM layer count must be in 1..SWARP_LVSM_MAX_LAYERS")                            \
+    X(SWARP_ERR_FILTER_OVERLAP, 301,                                                     \
+      "LVSM overlap delta must be >= 0 and smaller than the thinnest layer")             \
+    X(SWARP_ERR_FILTER_BAND, 302,                                                        \
+      "LVSM transition band must lie in [0, delta] and below half the thinnest layer")   \
+    X(SWARP_ERR_FILTER_NO_SAMPLES, 303, "Lloyd relaxation needs at least one sample")    \
+    X(SWARP_ERR_FILTER_BLOCKER, 304,                                                     \
+      "PCSS blocker depth must be > 0 and not beyond the receiver")                      \
+    X(SWARP_ERR_FILTER_EXPONENT, 305,                                                    \
+      "EVSM exponent must be > 0 and keep e^(2c) finite in double")                      \
+    X(SWARP_INFO_FILTER_NOT_CONVERGED, 1300,                                             \
+      "Lloyd relaxation reached its iteration bound before converging; splits written")  \
+    X(SWARP_INFO_FILTER_NO_WEIGHT, 1301,                                                 \
+      "all Lloyd sample weights are zero: splits written unchanged")                     \
+    X(SWARP_INFO_FILTER_MSM_DEGENERATE, 1302,                                            \
+      "moment matrix singular (at most two distinct depths): exact discrete form used")  \
+    X(SWARP_INFO_FILTER_DEPTH_CLAMPED, 1303,                                             \
+      "depth outside [s_0, s_N]: the first or last layer was used")
 /* <<< status: filter */
 
 /* >>> status: splits (400..499, 1400..1499) */
@@ -716,6 +735,294 @@ SWARP_API swarp_status swarp_lixel_select(const swarp_mat4* GLP, size_t count, c
 /* <<< api: lixel */
 
 /* >>> api: filter (src/filter.c) */
+/*
+ * Filtered shadows: the maths an engine mirrors in its shaders (GLSL twins in
+ * docs/filtering.md).  Depths are light-space depths; "t" is the depth of the
+ * receiver being shaded, and visibility is the lit fraction P(X >= t) of the
+ * filter region (a texel at exactly the receiver depth counts as lit).
+ * Files: src/filter_vsm.c (VSM), filter_lvsm.c (layered VSM), filter_lloyd.c (its Lloyd
+ * layer placement), filter_evsm.c, filter_msm.c, filter_pcf.c (PCF and PCSS).
+ */
+
+/* ---- variance shadow maps                    (src/filter_vsm.c) -------- */
+
+/** @brief Moments of one depth sample, [VSM] (3.1): out = (x, x^2).
+ *  Filtering (averaging) these over a region gives M_1 = E[x], M_2 = E[x^2].
+ *  Also the moments of a warped depth: pass the warped value.
+ *  @param[in] x  depth (any finite value; VSMs usually store [0, 1])
+ *  @param[out] out_moments  (M_1, M_2)
+ *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE. */
+SWARP_API swarp_status swarp_vsm_moments(double x, double out_moments[2]);
+
+/** @brief Chebyshev's one-tailed bound p_max(t), [VSM] (3.2)-(3.3):
+ *  mu = M_1, sigma2 = max(M_2 - M_1^2, min_variance),
+ *  p_max = sigma2 / (sigma2 + (t - mu)^2) for t > mu, and 1 for t <= mu.
+ *  @param[in] moments  filtered (M_1, M_2), same depth units as t
+ *  @param[in] t  receiver depth
+ *  @param[in] min_variance  >= 0, depth units squared: the clamp that hides
+ *             rounding of M_2 - M_1^2 (it also makes flat lit regions stay lit)
+ *  @param[out] out_p_max  in [0, 1]: an upper bound of the lit fraction
+ *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
+ *          SWARP_ERR_OUT_OF_RANGE (min_variance < 0). */
+SWARP_API swarp_status swarp_vsm_chebyshev(const double moments[2], double t, double min_variance,
+                                           double* out_p_max);
+
+/** @brief Light-bleeding reduction by clamping ([VSM] §3.4, ref. [10] there),
+ *  a separate step after the bound: out = linstep(amount, 1, p) =
+ *  clamp((p - amount) / (1 - amount), 0, 1).  It darkens every penumbra: tails
+ *  of the bound below `amount` vanish, the rest is stretched to [0, 1].
+ *  @param[in] p  visibility in [0, 1]; @param[in] amount in [0, 1)
+ *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
+ *          SWARP_ERR_OUT_OF_RANGE. */
+SWARP_API swarp_status swarp_vsm_reduce_bleeding(double p, double amount, double* out_p);
+
+/* ---- layered VSM                             (src/filter_lvsm.c) ------- */
+
+/** Worst case layer count of the LVSM functions (splits hold N + 1 values). */
+#define SWARP_LVSM_MAX_LAYERS 64
+
+/** @brief Depth interval [p_i, q_i] of layer i with overlaps, [VSM] §4.1.1:
+ *  L_0 = [s_0, s_1 + delta], L_i = [s_i - delta, s_{i+1} + delta],
+ *  L_{N-1} = [s_{N-1} - delta, s_N] (layers counted from 0 here).
+ *  @param[in] splits  N + 1 strictly increasing split depths s_0..s_N
+ *  @param[in] n_layers N in 1..SWARP_LVSM_MAX_LAYERS; @param[in] i in 0..N-1
+ *  @param[in] delta  overlap, 0 <= delta < thinnest layer
+ *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
+ *          SWARP_ERR_FILTER_LAYER_COUNT, SWARP_ERR_OUT_OF_RANGE (i >= N),
+ *          SWARP_ERR_NOT_INCREASING, SWARP_ERR_FILTER_OVERLAP. */
+SWARP_API swarp_status swarp_lvsm_layer_interval(const double* splits, uint32_t n_layers,
+                                                 uint32_t i, double delta, double* out_p,
+                                                 double* out_q);
+
+/** @brief Layer warp phi_i(t), [VSM] (4.2): 0 for t <= p, (t - p)/(q - p)
+ *  inside, 1 for t >= q.
+ *  @param[in] p, q  layer interval, p < q
+ *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
+ *          SWARP_ERR_OUT_OF_RANGE (q <= p). */
+SWARP_API swarp_status swarp_lvsm_warp(double t, double p, double q, double* out_phi);
+
+/** @brief Moments of a warped depth for layer [p, q]: (phi, phi^2), [VSM]
+ *  (4.2) then (3.1).  Same statuses as swarp_lvsm_warp. */
+SWARP_API swarp_status swarp_lvsm_moments(double t, double p, double q, double out_moments[2]);
+
+/** @brief The layer holding depth t for the uniform scheme s_i = s_0 +
+ *  (s_N - s_0) i / N, in closed form ([VSM] §4.1.3).  A depth on a split
+ *  belongs to the layer that starts there; t outside [s_0, s_N] gives the
+ *  first/last layer and SWARP_INFO_FILTER_DEPTH_CLAMPED.
+ *  @return SWARP_OK, SWARP_INFO_FILTER_DEPTH_CLAMPED, SWARP_ERR_NULL_POINTER,
+ *          SWARP_ERR_NON_FINITE, SWARP_ERR_FILTER_LAYER_COUNT,
+ *          SWARP_ERR_NOT_INCREASING (s_N <= s_0). */
+SWARP_API swarp_status swarp_lvsm_layer_uniform(double t, double s_0, double s_N,
+                                                uint32_t n_layers, uint32_t* out_layer);
+
+/** @brief The layer holding depth t for given split points (binary search of
+ *  the monotonic split sequence, [VSM] §4.1.3).  Conventions and statuses as
+ *  swarp_lvsm_layer_uniform; splits must be strictly increasing. */
+SWARP_API swarp_status swarp_lvsm_layer_find(double t, const double* splits, uint32_t n_layers,
+                                             uint32_t* out_layer);
+
+/** @brief Transition band between adjacent layers ([VSM] §4.1.3): for t
+ *  within `band` of an inner split s_j the visibility is
+ *  (1 - w) V_{j-1} + w V_j with w = (t - (s_j - band)) / (2 band) rising
+ *  linearly across the band; elsewhere lo = hi = the layer of t and w = 0.
+ *  band = 0 switches blending off.
+ *  @param[in] band  half width, 0 <= band < half the thinnest layer
+ *  @param[out] out_layer_lo, out_layer_hi, out_w_hi
+ *  @return as swarp_lvsm_layer_find, plus SWARP_ERR_FILTER_BAND. */
+SWARP_API swarp_status swarp_lvsm_transition(double t, const double* splits, uint32_t n_layers,
+                                             double band, uint32_t* out_layer_lo,
+                                             uint32_t* out_layer_hi, double* out_w_hi);
+
+/** @brief Full LVSM shading of a receiver at depth t ([VSM] §4.1): pick the
+ *  layer (and its neighbour in a transition band), warp t with the layer's
+ *  overlapped interval (4.2), apply Chebyshev (3.3) to the layer's filtered
+ *  warped moments and blend.  The minimum variance is given in depth units
+ *  and scaled by 1/(q - p)^2 into each layer's warped space.
+ *  @param[in] layer_moments  2 N values: filtered (M_1, M_2) of layer i at
+ *             [2i], [2i+1], made with swarp_lvsm_moments and the intervals of
+ *             swarp_lvsm_layer_interval(splits, N, i, delta)
+ *  @param[in] band  transition half width, 0 <= band <= delta
+ *  @return SWARP_OK, SWARP_INFO_FILTER_DEPTH_CLAMPED, and the errors of the
+ *          functions above (SWARP_ERR_FILTER_BAND for band > delta). */
+SWARP_API swarp_status swarp_lvsm_visibility(const double* layer_moments, const double* splits,
+                                             uint32_t n_layers, double delta, double band,
+                                             double t, double min_variance,
+                                             double* out_visibility);
+
+/** @brief Second-occluder depth estimate mu + sigma ([VSM] §4.1.2), exact
+ *  (= max(a, b)) for two depths at coverage 1/2.  sigma2 < 0 (rounding of a
+ *  filtered VSM) counts as 0.
+ *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE. */
+SWARP_API swarp_status swarp_lvsm_second_occluder(double mu, double sigma2, double* out_depth);
+
+/** Options of swarp_lvsm_lloyd; zero means default. */
+typedef struct swarp_lloyd_options {
+    uint32_t max_iterations; /**< bound on relaxation steps; 0 = 100 */
+    uint32_t _pad0;          /**< must be 0 */
+    double weight_clamp_lo;  /**< weights are clamp(sigma2, lo, hi); 0 = no low clamp */
+    double weight_clamp_hi;  /**< 0 = no high clamp; else >= weight_clamp_lo */
+    double tolerance;        /**< converged when no split moves more than this
+                                  (depth units); 0 = 1e-9 (s_N - s_0) */
+    uint32_t _reserved[4];
+} swarp_lloyd_options;
+
+/** What swarp_lvsm_lloyd did. */
+typedef struct swarp_lloyd_report {
+    uint32_t iterations; /**< relaxation steps taken (teleports included) */
+    uint32_t teleports;  /**< empty clusters repaired by teleportation */
+    uint32_t converged;  /**< 1 if the last step moved no split more than tolerance */
+    uint32_t _pad0;
+    double max_shift;    /**< largest split movement in the last step */
+} swarp_lloyd_report;
+
+/** @brief Layer placement by weighted Lloyd relaxation, [VSM] §4.1.2: 1-D
+ *  weighted k-means whose K = N - 1 "means" are the inner split points
+ *  s_1..s_{N-1}.  Sample j has position mu_j + sigma_j (second-occluder
+ *  estimate, clamped to [s_0, s_N]) and weight clamp(sigma2_j, lo, hi); each
+ *  sample joins its nearest split point (ties to the lower one), each split
+ *  moves to the weighted mean of its samples.  Teleportation: a cluster with
+ *  zero total weight is removed (its two adjacent layers merge) and the
+ *  heaviest cluster is split in two at its weighted mean -/+ its weighted
+ *  standard deviation.  s_0 and s_N stay fixed; splits are kept strictly
+ *  increasing (minimum gap 1e-9 (s_N - s_0)).  Deterministic, no allocation.
+ *  @param[in] mu, sigma2  count samples of an unwarped VSM (e.g. 2x2 filtered)
+ *  @param[in] opt  may be NULL (all defaults)
+ *  @param[in] splits_in  N + 1 strictly increasing initial splits
+ *  @param[out] splits_out N + 1 relaxed splits (may alias splits_in)
+ *  @param[out] out_report may be NULL
+ *  @return SWARP_OK (converged), SWARP_INFO_FILTER_NOT_CONVERGED,
+ *          SWARP_INFO_FILTER_NO_WEIGHT, SWARP_ERR_NULL_POINTER,
+ *          SWARP_ERR_NON_FINITE, SWARP_ERR_FILTER_NO_SAMPLES,
+ *          SWARP_ERR_FILTER_LAYER_COUNT, SWARP_ERR_NOT_INCREASING,
+ *          SWARP_ERR_OUT_OF_RANGE (bad clamps or tolerance),
+ *          SWARP_ERR_RESERVED_NONZERO. */
+SWARP_API swarp_status swarp_lvsm_lloyd(const double* mu, const double* sigma2, size_t count,
+                                        const swarp_lloyd_options* opt,
+                                        const double* splits_in, uint32_t n_layers,
+                                        double* splits_out, swarp_lloyd_report* out_report);
+
+/* ---- exponential VSM                         (src/filter_evsm.c) ------- */
+
+/** Storage format of the moments in the texture. */
+typedef enum swarp_texel_format {
+    SWARP_TEXEL_DEFAULT = 0, /**< = SWARP_TEXEL_FP32 */
+    SWARP_TEXEL_FP16 = 1,    /**< IEEE binary16: 10 mantissa bits, max 65504 */
+    SWARP_TEXEL_FP32 = 2,    /**< IEEE binary32 */
+    SWARP_TEXEL_FORMAT_FORCE_I32 = 0x7FFFFFFF
+} swarp_texel_format;
+
+/** @brief Largest safe EVSM exponent c for a texel format ([VSM] §4.2): for
+ *  depths x in [0, 1] the largest moment is e^{2c}, so c = (ln F_max - m)/2
+ *  where F_max = (2 - 2^-p) 2^e_max is the format's largest finite value
+ *  (computed from p mantissa bits and e_max) and m = 4 u (u = 2^-(p+1), the
+ *  unit roundoff) leaves room for a few ulps of GPU exp() error.  Averaging
+ *  (filtering) never exceeds the largest texel, so filtered moments stay
+ *  finite too.  fp32 gives c ~ 44.36, fp16 c ~ 5.545.
+ *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_UNKNOWN_ENUM. */
+SWARP_API swarp_status swarp_evsm_max_exponent(swarp_texel_format format, double* out_c);
+
+/** @brief EVSM moments of depth x ([VSM] §4.2): positive warp e^{c_pos x}
+ *  and negative warp -e^{-c_neg x}, each with its square:
+ *  out = (e^{c_pos x}, e^{2 c_pos x}, -e^{-c_neg x}, e^{-2 c_neg x}).
+ *  @param[in] c_pos, c_neg  > 0 with e^{2c|x|} finite in double
+ *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
+ *          SWARP_ERR_FILTER_EXPONENT. */
+SWARP_API swarp_status swarp_evsm_moments(double x, double c_pos, double c_neg,
+                                          double out_moments[4]);
+
+/** @brief EVSM visibility ([VSM] §4.2): Chebyshev (3.3) on the positive and
+ *  on the negative warp, then the minimum of both upper bounds.  The minimum
+ *  variance is given in depth units and mapped into each warp by its
+ *  derivative at t: min_variance (c e^{+-c t})^2.
+ *  @param[in] moments  filtered moments laid out as swarp_evsm_moments
+ *  @return as swarp_evsm_moments, plus SWARP_ERR_OUT_OF_RANGE (min_variance < 0). */
+SWARP_API swarp_status swarp_evsm_visibility(const double moments[4], double t, double c_pos,
+                                             double c_neg, double min_variance,
+                                             double* out_visibility);
+
+/* ---- moment shadow maps                      (src/filter_msm.c) -------- */
+
+/** Moment bias Peters & Klein 2015 ("Moment Shadow Mapping", I3D) use for
+ *  moments stored with 16 bits each; double or fp32 storage tolerates less. */
+#define SWARP_MSM_ALPHA_DEFAULT 3.0e-5
+
+/** @brief The four power moments of a depth z in [0, 1]: (z, z^2, z^3, z^4)
+ *  (Peters & Klein 2015, §3; the optimised quantisation transform is a GPU
+ *  storage detail and not part of this).
+ *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
+ *          SWARP_ERR_OUT_OF_RANGE (z outside [0, 1]). */
+SWARP_API swarp_status swarp_msm_moments(double z, double out_b[4]);
+
+/** @brief Moment bias (Peters & Klein 2015, Algorithm 3 step 1):
+ *  b' = (1 - alpha) b + alpha (1/2, 1/2, 1/2, 1/2), a blend toward the
+ *  moments of half the mass at 0 and half at 1, which keeps the Hankel matrix
+ *  positive definite after quantisation.
+ *  @param[in] alpha in [0, 1]
+ *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
+ *          SWARP_ERR_OUT_OF_RANGE. */
+SWARP_API swarp_status swarp_msm_bias(const double b[4], double alpha, double out_b[4]);
+
+/** @brief Hamburger 4-moment shadow bound (Peters & Klein 2015, Algorithm 3):
+ *  solve B c = (1, z_f, z_f^2) with the Hankel matrix B of (1, b_1..b_4)
+ *  (Cholesky), take the roots z_2 <= z_3 of c_1 + c_2 z + c_3 z^2, and the
+ *  sharp lower bound G of the occluded fraction from the three-atom
+ *  distribution at (z_f, z_2, z_3).  Visibility = 1 - G, clamped to [0, 1].
+ *  When B is singular to rounding (one or two distinct depths, no bias) the
+ *  distribution is determined by its moments and the exact discrete answer
+ *  is returned with SWARP_INFO_FILTER_MSM_DEGENERATE.
+ *  @param[in] b  filtered (and usually biased) moments
+ *  @param[in] z_f  receiver depth
+ *  @return SWARP_OK, SWARP_INFO_FILTER_MSM_DEGENERATE, SWARP_ERR_NULL_POINTER,
+ *          SWARP_ERR_NON_FINITE, SWARP_ERR_OUT_OF_RANGE (b_2 < 0 or b_4 < 0:
+ *          not moments of any distribution). */
+SWARP_API swarp_status swarp_msm_visibility(const double b[4], double z_f,
+                                            double* out_visibility);
+
+/* ---- PCF and PCSS                            (src/filter_pcf.c) -------- */
+
+/** Worst case point count of swarp_pcf_poisson_disk. */
+#define SWARP_PCF_MAX_SAMPLES 256
+
+/** @brief Poisson-disk sample set in the unit disk for PCF ([RHS] §3.6,
+ *  after Fernando's PCSS), deterministic from a seed: Mitchell's best
+ *  candidate (each new point is the candidate farthest from the points so
+ *  far) with a splitmix64 generator.  Writes count points as x, y pairs.
+ *  @param[in] seed  any value; the same seed gives the same set everywhere
+ *  @param[in] count 1..SWARP_PCF_MAX_SAMPLES points
+ *  @param[in] candidates  candidates per point, 0 = 32
+ *  @param[out] out_xy  2 * count doubles; capacity counts POINTS
+ *  @param[out] out_count  count (or the needed count with SWARP_ERR_CAPACITY)
+ *  @param[out] out_min_distance  smallest pairwise distance (0 for count = 1)
+ *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_OUT_OF_RANGE,
+ *          SWARP_ERR_CAPACITY. */
+SWARP_API swarp_status swarp_pcf_poisson_disk(uint64_t seed, uint32_t count, uint32_t candidates,
+                                              double* out_xy, size_t capacity,
+                                              size_t* out_count, double* out_min_distance);
+
+/** @brief PCSS blocker-search width ([RHS] §3.6, Fernando 2005): by similar
+ *  triangles between the light of width w_light (measured on the light's
+ *  near plane, e.g. in shadow-map UV) and the receiver at depth d_r,
+ *  w_search = w_light (d_r - n_light) / d_r.
+ *  @param[in] n_light  light near-plane distance, 0 < n_light <= d_r
+ *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
+ *          SWARP_ERR_OUT_OF_RANGE. */
+SWARP_API swarp_status swarp_pcss_search_width(double w_light, double n_light, double d_r,
+                                               double* out_w_search);
+
+/** @brief PCSS penumbra width w = (d_r - d_b) w_light / d_b ([RHS] §3.6,
+ *  Fernando 2005), d_b the average blocker depth, d_r the receiver depth
+ *  (both distances from the light), in the units of w_light.
+ *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
+ *          SWARP_ERR_OUT_OF_RANGE (w_light < 0),
+ *          SWARP_ERR_FILTER_BLOCKER (d_b <= 0 or d_b > d_r). */
+SWARP_API swarp_status swarp_pcss_penumbra(double d_r, double d_b, double w_light,
+                                           double* out_w_penumbra);
+
+/** @brief PCSS filter width on the shadow map's near plane: the penumbra at
+ *  the receiver projected back, w_filter = w_penumbra n_light / d_r.
+ *  @return as swarp_pcss_search_width. */
+SWARP_API swarp_status swarp_pcss_filter_width(double w_penumbra, double n_light, double d_r,
+                                               double* out_w_filter);
 /* <<< api: filter */
 
 /* >>> api: splits (src/cascade.c stabilize.c bias.c atlas.c) */
