@@ -680,6 +680,51 @@ SWARP_API swarp_status swarp_bias_depth_per_world(const swarp_bias_map* map, con
 SWARP_API swarp_status swarp_bias_receiver_plane(const swarp_bias_map* map, const swarp_vec3* p,
                                                  const swarp_vec3* tangent_a,
                                                  const swarp_vec3* tangent_b, double out_grad[2]);
+
+/* ---- cascades: split selection and blending   (src/cascade.c)   [RHS] §3.3.3 */
+
+/** @brief Split selection by eye depth (PSSM, ZSXL06; [RHS] §3.3.3):
+ *  the i with splits[i] <= view_depth < splits[i+1] (a depth on a border
+ *  belongs to the split that starts there; the far end to the last split).
+ *  GLSL twin in docs/splits.md.
+ *  @param splits   m + 1 strictly increasing eye-space distances
+ *  @param m        split count (1..SWARP_SPLIT_MAX_COUNT)
+ *  @param view_depth  positive distance along the view direction
+ *  @param[out] out_index
+ *  @return SWARP_OK; SWARP_INFO_OUTSIDE_SPLITS (depth before the first or
+ *          after the last split: the nearest split is written);
+ *          SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE, SWARP_ERR_SPLIT_COUNT,
+ *          SWARP_ERR_NOT_INCREASING. */
+SWARP_API swarp_status swarp_cascade_select_depth(const double* splits, size_t m, double view_depth,
+                                                  uint32_t* out_index);
+
+/** @brief Split selection by best resolution (ZZB09; [RHS] §3.3.3): among
+ *  the splits whose map covers p (w > 0, |x|, |y| <= w, depth inside the clip
+ *  range) the one with the smallest world texel size L_texel at p (exact,
+ *  swarp_bias_texel_size; ties go to the lower index).  GLSL twin in
+ *  docs/splits.md.
+ *  @param maps  m split maps (world -> clip, resolution, depth range)
+ *  @param fallback_index  written with SWARP_INFO_OUTSIDE_SPLITS when no map
+ *                         covers p (pass the depth selection), < m
+ *  @param[out] out_index; @param[out] out_L_texel (may be NULL; the chosen
+ *  split's L_texel, 0 for the fallback)
+ *  @return SWARP_OK, SWARP_INFO_OUTSIDE_SPLITS, SWARP_ERR_NULL_POINTER,
+ *          SWARP_ERR_NON_FINITE, SWARP_ERR_SPLIT_COUNT, SWARP_ERR_OUT_OF_RANGE
+ *          (fallback_index >= m), and the map errors of swarp_bias_texel_size. */
+SWARP_API swarp_status swarp_cascade_select_best(const swarp_bias_map* maps, size_t m,
+                                                 const swarp_vec3* p, uint32_t fallback_index,
+                                                 uint32_t* out_index, double* out_L_texel);
+
+/** @brief Cascade blend weight in a transition band: the last `band` fraction
+ *  of each split's depth range (except the last split's) fades linearly into
+ *  the next split.  Writes the depth-selected split i and the weight w of
+ *  split i; the shader mixes shadow_i w + shadow_{i+1} (1 - w).  w = 1
+ *  outside the bands, w -> 0 at the border, so the result is continuous.
+ *  GLSL twin in docs/splits.md.
+ *  @param band  fraction of each split's length, in [0, 1) (0: hard switch)
+ *  @return as swarp_cascade_select_depth; SWARP_ERR_OUT_OF_RANGE for band. */
+SWARP_API swarp_status swarp_cascade_blend(const double* splits, size_t m, double view_depth,
+                                           double band, uint32_t* out_index, double* out_weight);
 /* <<< api: splits */
 
 /* >>> api: plan (src/plan.c) */

@@ -701,6 +701,146 @@ START_TEST(bias_bad_inputs) {
 }
 END_TEST
 
+
+/* ======================================================================= */
+/* Split selection and blending [RHS] §3.3.3                               */
+/* ======================================================================= */
+
+/* practical split scheme [RHS] (3.8), written here independently */
+static void practical(double n, double f, double lambda, int m, double* out) {
+    for (int i = 0; i <= m; ++i)
+        out[i] = (1 - lambda) * (n + (f - n) * i / m) + lambda * n * pow(f / n, (double)i / m);
+    out[0] = n;
+    out[m] = f;
+}
+
+START_TEST(select_best_never_worse_than_depth) {
+    rng_state = 31;
+    int overlap_points = 0, better = 0;
+    for (int it = 0; it < 60; ++it) {
+        const int m = 2 + (int)(rng_next() % 7);
+        const double n = rng_uniform(0.5, 2), f = n * rng_uniform(50, 500);
+        swarp_camera cam = make_camera(v3(rng_uniform(-1e3, 1e3), 20, rng_uniform(-1e3, 1e3)),
+                                       v3(rng_uniform(-1, 1), rng_uniform(-0.5, 0.1), rng_uniform(-1, 1)),
+                                       rng_uniform(0.5, 1.5), rng_uniform(1, 2), n, f);
+        /* include lights from behind the viewer (Fig. 3.13) */
+        swarp_vec3 light = it % 3 == 0 ? vadd(vnorm(cam.dir), vscale(rand_unit(), 0.2)) : rand_unit();
+        double splits[10];
+        practical(n, f, 0.5, m, splits);
+        swarp_bias_map maps[10];
+        swarp_stabilize_options o;
+        memset(&o, 0, sizeof o);
+        for (int i = 0; i < m; ++i) {
+            swarp_vec3 body[8];
+            corners(&cam, splits[i], splits[i + 1], body);
+            memset(&maps[i], 0, sizeof maps[i]);
+            maps[i].res_s = maps[i].res_t = 1024;
+            ck_assert_int_eq(swarp_stabilize_directional(&cam, splits[i], splits[i + 1], &light, body, 8,
+                                                         NULL, 1024, &o, &maps[i].world_to_clip, NULL),
+                             SWARP_OK);
+        }
+        swarp_vec3 fw = vnorm(cam.dir), r = vnorm(vcross(fw, cam.up)), u = vcross(r, fw);
+        for (int k = 0; k < 200; ++k) {
+            double z = n * pow(f / n, rng_uniform(0, 1));
+            double t = tan(cam.fovy / 2);
+            swarp_vec3 p = vadd(vadd(vadd(cam.eye, vscale(fw, z)), vscale(r, rng_uniform(-1, 1) * z * t * cam.aspect)),
+                                vscale(u, rng_uniform(-1, 1) * z * t));
+            uint32_t i_d, i_b;
+            swarp_status st = swarp_cascade_select_depth(splits, (size_t)m, z, &i_d);
+            ck_assert_int_eq(st, SWARP_OK);
+            ck_assert(splits[i_d] <= z && (z < splits[i_d + 1] || (int)i_d == m - 1));
+            double Lb, Ld;
+            st = swarp_cascade_select_best(maps, (size_t)m, &p, i_d, &i_b, &Lb);
+            ck_assert_int_eq(st, SWARP_OK); /* the depth split always covers p */
+            ck_assert_int_eq(swarp_bias_texel_size(&maps[i_d], &p, &Ld, NULL, NULL), SWARP_OK);
+            ck_assert(Lb <= Ld);
+            /* brute force: no covering split has a smaller texel */
+            int covering = 0;
+            for (int i = 0; i < m; ++i) {
+                double h[4];
+                xform(&maps[i].world_to_clip, p, h);
+                if (fabs(h[0]) <= h[3] && fabs(h[1]) <= h[3] && fabs(h[2]) <= h[3]) {
+                    double L;
+                    swarp_bias_texel_size(&maps[i], &p, &L, NULL, NULL);
+                    ck_assert(L >= Lb);
+                    ++covering;
+                }
+            }
+            if (covering > 1) ++overlap_points;
+            if (Lb < Ld) ++better;
+        }
+    }
+    ck_assert_int_gt(overlap_points, 100); /* the property was exercised */
+    ck_assert_int_gt(better, 10);          /* and best-resolution did win */
+}
+END_TEST
+
+START_TEST(blend_weight_continuous_and_banded) {
+    double splits[5] = {1, 4, 10, 30, 100};
+    const double band = 0.2;
+    for (int k = 0; k <= 20000; ++k) {
+        double z = 1 + 99.0 * k / 20000.0;
+        uint32_t i;
+        double w;
+        ck_assert_int_eq(swarp_cascade_blend(splits, 4, z, band, &i, &w), SWARP_OK);
+        ck_assert(w >= 0 && w <= 1);
+        double start = splits[i + 1] - band * (splits[i + 1] - splits[i]);
+        if (i == 3 || z <= start) ck_assert(w == 1.0);
+        else ck_assert_double_eq_tol(w, (splits[i + 1] - z) / (splits[i + 1] - start), 1e-12);
+    }
+    /* continuity of the mixed result across each border: just before, split i
+     * has weight ~0 (so i+1 has ~1); just after, split i+1 has weight 1 */
+    for (int b = 1; b < 4; ++b) {
+        uint32_t i;
+        double w;
+        swarp_cascade_blend(splits, 4, nextafter(splits[b], 0), band, &i, &w);
+        ck_assert_uint_eq(i, (uint32_t)b - 1);
+        ck_assert_double_eq_tol(w, 0, 1e-12);
+        swarp_cascade_blend(splits, 4, splits[b], band, &i, &w);
+        ck_assert_uint_eq(i, (uint32_t)b);
+        ck_assert(w == 1.0);
+    }
+    uint32_t i = 99;
+    double w = -1;
+    ck_assert_int_eq(swarp_cascade_blend(splits, 4, 150, band, &i, &w), SWARP_INFO_OUTSIDE_SPLITS);
+    ck_assert_uint_eq(i, 3);
+    ck_assert_int_eq(swarp_cascade_blend(splits, 4, 0.5, 0, &i, &w), SWARP_INFO_OUTSIDE_SPLITS);
+    ck_assert_uint_eq(i, 0);
+    ck_assert(w == 1.0);
+}
+END_TEST
+
+START_TEST(select_bad_inputs) {
+    double splits[5] = {1, 4, 10, 30, 100}, bad[3] = {1, 1, 2}, nan3[3] = {1, NAN, 3};
+    uint32_t i = 42;
+    double w = -3;
+    ck_assert_int_eq(swarp_cascade_select_depth(NULL, 4, 5, &i), SWARP_ERR_NULL_POINTER);
+    ck_assert_int_eq(swarp_cascade_select_depth(splits, 0, 5, &i), SWARP_ERR_SPLIT_COUNT);
+    ck_assert_int_eq(swarp_cascade_select_depth(bad, 2, 5, &i), SWARP_ERR_NOT_INCREASING);
+    ck_assert_int_eq(swarp_cascade_select_depth(nan3, 2, 5, &i), SWARP_ERR_NON_FINITE);
+    ck_assert_int_eq(swarp_cascade_select_depth(splits, 4, INFINITY, &i), SWARP_ERR_NON_FINITE);
+    ck_assert_int_eq(swarp_cascade_blend(splits, 4, 5, 1.0, &i, &w), SWARP_ERR_OUT_OF_RANGE);
+    ck_assert_int_eq(swarp_cascade_blend(splits, 4, 5, -0.1, &i, &w), SWARP_ERR_OUT_OF_RANGE);
+    ck_assert_int_eq(swarp_cascade_blend(splits, 4, 5, 0.1, &i, NULL), SWARP_ERR_NULL_POINTER);
+    swarp_bias_map maps[2];
+    memset(maps, 0, sizeof maps);
+    for (int k = 0; k < 2; ++k) {
+        maps[k].world_to_clip.m[0] = maps[k].world_to_clip.m[5] = maps[k].world_to_clip.m[10] = 1;
+        maps[k].world_to_clip.m[15] = 1;
+        maps[k].res_s = maps[k].res_t = 64;
+    }
+    swarp_vec3 p = v3(0, 0, 0), far = v3(5, 0, 0);
+    ck_assert_int_eq(swarp_cascade_select_best(maps, 2, &p, 2, &i, &w), SWARP_ERR_OUT_OF_RANGE);
+    ck_assert_int_eq(swarp_cascade_select_best(maps, 0, &p, 0, &i, &w), SWARP_ERR_SPLIT_COUNT);
+    maps[1]._reserved[0] = 1;
+    ck_assert_int_eq(swarp_cascade_select_best(maps, 2, &p, 0, &i, &w), SWARP_ERR_RESERVED_NONZERO);
+    ck_assert_int_eq(swarp_cascade_select_best(maps, 2, &far, 0, &i, &w), SWARP_ERR_RESERVED_NONZERO);
+    ck_assert(i == 42 && w == -3);
+    maps[1]._reserved[0] = 0;
+    ck_assert_int_eq(swarp_cascade_select_best(maps, 2, &far, 1, &i, &w), SWARP_INFO_OUTSIDE_SPLITS);
+    ck_assert_uint_eq(i, 1);
+}
+END_TEST
 /* ======================================================================= */
 
 static Suite* splits_suite(void) {
@@ -725,6 +865,11 @@ static Suite* splits_suite(void) {
     tcase_add_test(t, bias_normal_offset_and_slope);
     tcase_add_test(t, bias_receiver_plane_gradient);
     tcase_add_test(t, bias_bad_inputs);
+    suite_add_tcase(s, t);
+    t = tcase_create("select");
+    tcase_add_test(t, select_best_never_worse_than_depth);
+    tcase_add_test(t, blend_weight_continuous_and_banded);
+    tcase_add_test(t, select_bad_inputs);
     suite_add_tcase(s, t);
     return s;
 }
