@@ -179,7 +179,20 @@ extern "C" {
 /* <<< status: filter */
 
 /* >>> status: splits (400..499, 1400..1499) */
-#define SWARP_STATUS_LIST_SPLITS(X)
+#define SWARP_STATUS_LIST_SPLITS(X)                                                  \
+    X(SWARP_ERR_ATLAS_SPLITS, 400, "atlas layouts hold 1..16 splits")                 \
+    X(SWARP_ERR_STABILIZE_WARPED, 401,                                               \
+      "stabilisation is defined for uniform light-space aligned maps; a warp was requested") \
+    X(SWARP_ERR_STABILIZE_LIGHT, 402, "stabilisation needs a directional light")      \
+    X(SWARP_ERR_BEHIND_PROJECTION, 403,                                              \
+      "the point maps to w <= 0 (behind the centre of projection of the light matrix)") \
+    X(SWARP_ERR_SPLIT_EMPTY, 404, "a split frustum does not intersect the scene")    \
+    X(SWARP_INFO_LEVEL_ABOVE_RANGE, 1400,                                            \
+      "the body is larger than the reference size: quantised level above the level count") \
+    X(SWARP_INFO_OUTSIDE_SPLITS, 1401,                                               \
+      "the point lies in no split map; the split nearest in eye depth was chosen")   \
+    X(SWARP_INFO_BACKFACING, 1402,                                                   \
+      "the normal faces away from the light; N.L clamped to 0")
 /* <<< status: splits */
 
 /* >>> status: plan (500..599, 1500..1599) */
@@ -1026,6 +1039,300 @@ SWARP_API swarp_status swarp_pcss_filter_width(double w_penumbra, double n_light
 /* <<< api: filter */
 
 /* >>> api: splits (src/cascade.c stabilize.c bias.c atlas.c) */
+/*
+ * Splits, atlas, stabilisation and bias.  Guide: docs/splits.md.
+ */
+
+/* ---- texture atlas and filter kernel   (src/atlas.c)   [RHS] §3.3.5, (3.9) */
+
+/** Most splits an atlas layout holds ([RHS] Fig. 3.16c: a 4 x 4 grid). */
+#define SWARP_ATLAS_MAX_SPLITS 16
+
+/** Whole-atlas facts of a layout.  grid x grid tiles of tile_res x tile_res
+ *  texels; atlas_res = grid * tile_res; l_sc = 1/grid ([RHS] (3.9)). */
+typedef struct swarp_atlas_info {
+    uint32_t split_count; /**< m */
+    uint32_t grid;        /**< 1 (m = 1), 2 (m <= 4), 3 (m <= 9), 4 (m <= 16) */
+    double tile_res;      /**< texels per tile side */
+    double atlas_res;     /**< texels per atlas side */
+    double l_sc;          /**< [RHS] (3.9): 1, 1/2, 1/3, 1/4 */
+    uint32_t _reserved[4];
+} swarp_atlas_info;
+
+/** One split's place in the atlas.  Tiles are numbered row by row starting
+ *  at texture coordinate (0, 0) (x = i mod grid, y = i / grid), the order
+ *  of [RHS] Fig. 3.16.  viewport_* are glViewport()-style texel numbers.
+ *  clip_to_atlas maps the split's clip coordinates (x, y, z, w) to
+ *  homogeneous atlas coordinates (u w, v w, d w, w): after the divide u, v
+ *  are atlas texture coordinates in [u0, u0 + l_sc] x [v0, v0 + l_sc] and d
+ *  the window depth in [0, 1] (whatever the clip depth range). */
+typedef struct swarp_atlas_tile {
+    double viewport_x, viewport_y;          /**< lower-left texel */
+    double viewport_width, viewport_height; /**< texels */
+    swarp_mat4 clip_to_atlas;
+} swarp_atlas_tile;
+
+/** @brief Atlas layout for m splits ([RHS] §3.3.5, Fig. 3.16).
+ *  m = 1 uses the whole texture (grid 1, l_sc = 1); 2..4 a 2 x 2 grid,
+ *  5..9 a 3 x 3 grid, 10..16 a 4 x 4 grid.
+ *  @param m          number of splits, 1..SWARP_ATLAS_MAX_SPLITS
+ *  @param tile_res   texels per tile side (> 0, at most 2^24)
+ *  @param depth      clip depth convention of the split matrices
+ *  @param[out] out_info  layout facts (may be NULL)
+ *  @param[out] out_tiles m tiles; capacity >= m
+ *  @param[out] out_count m (also written with SWARP_ERR_CAPACITY)
+ *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_ATLAS_SPLITS,
+ *          SWARP_ERR_RESOLUTION, SWARP_ERR_UNKNOWN_ENUM, SWARP_ERR_CAPACITY. */
+SWARP_API swarp_status swarp_atlas_layout(uint32_t m, uint32_t tile_res, swarp_depth_range depth,
+                                          swarp_atlas_info* out_info, swarp_atlas_tile* out_tiles,
+                                          size_t capacity, size_t* out_count);
+
+/** @brief l_sc of [RHS] (3.9) for m splits: 1 (m = 1), 1/2, 1/3, 1/4. */
+SWARP_API swarp_status swarp_atlas_lsc(uint32_t m, double* out_l_sc);
+
+/** @brief PCF kernel scale of one split, [RHS] (3.9):
+ *  s_i = r_l l_sc (2/(max_x - min_x), 2/(max_y - min_y)).
+ *  min/max are the split's focus box in light space (the box of (3.1)), in
+ *  world units for a uniform map.  s_i is in the split's clip units scaled by
+ *  l_sc; s_i/2 is the extent of r_l in atlas texture coordinates, so a kernel
+ *  of s_i has the same world size r_l in every split.
+ *  @param r_l  kernel size in world units (>= 0)
+ *  @param m    split count (selects l_sc)
+ *  @param min_x, max_x, min_y, max_y  max > min
+ *  @param[out] out_s  s_i (x, y)
+ *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
+ *          SWARP_ERR_OUT_OF_RANGE (r_l < 0, max <= min), SWARP_ERR_ATLAS_SPLITS. */
+SWARP_API swarp_status swarp_atlas_kernel_scale(double r_l, uint32_t m, double min_x,
+                                                double max_x, double min_y, double max_y,
+                                                double out_s[2]);
+
+/* ---- flicker reduction                 (src/stabilize.c)   [RHS] §3.5 (ZZB09) */
+
+typedef enum swarp_stabilize_mode {
+    SWARP_STABILIZE_DEFAULT = 0, /**< = SWARP_STABILIZE_NONE */
+    SWARP_STABILIZE_NONE = 1,    /**< light-aligned focus on the body box, no snapping */
+    SWARP_STABILIZE_SPHERE = 2,  /**< exact solution: minimal sphere of the split frustum */
+    SWARP_STABILIZE_LEVELS = 3,  /**< approximate solution: quantised scale */
+    SWARP_STABILIZE_MODE_FORCE_I32 = 0x7FFFFFFF
+} swarp_stabilize_mode;
+
+/** Options of the stabilised light matrix.  Zero means default. */
+typedef struct swarp_stabilize_options {
+    swarp_stabilize_mode mode;
+    uint32_t levels;       /**< LEVELS: number of scale levels; 0 = 64 [RHS] §3.5 */
+    swarp_vec3 origin;     /**< world origin of snapping AND of the output matrix */
+    double level_max_size; /**< LEVELS: world size of level `levels`; 0 = diameter of
+                                the split frustum's minimal sphere */
+    swarp_depth_range depth;
+    uint32_t _reserved0;
+    uint32_t _reserved[4];
+} swarp_stabilize_options;
+
+/** What the stabiliser did. */
+typedef struct swarp_stabilize_report {
+    swarp_vec3 sphere_center;     /**< exact minimal enclosing sphere of the split frustum */
+    double sphere_radius;
+    double centroid_radius;       /**< sphere about the 8 corners' centroid */
+    double area_saved;            /**< 1 - (r_min / r_centroid)^2: map area the exact
+                                       sphere saves against the centroid sphere */
+    double texel_size_x;          /**< world size of one texel along light-space x */
+    double texel_size_y;
+    double offset_x, offset_y;    /**< light-space centre of the map relative to origin,
+                                       whole multiples of the texel size */
+    uint32_t level_x, level_y;    /**< LEVELS: quantised level (1..); else 0 */
+    uint32_t _reserved[4];
+} swarp_stabilize_report;
+
+/** @brief Exact minimal enclosing sphere of the split frustum [n_i, f_i] of a
+ *  camera (closed form: by the frustum's two mirror symmetries the centre
+ *  lies on the view axis at depth min(f_i, (n_i + f_i)(1 + k^2)/2), k^2 =
+ *  tan^2(fovy/2)(1 + aspect^2)), and the centroid sphere engines use.
+ *  [RHS] §3.5 exact solution (ZZB09).
+ *  @param cam      camera (near/far ignored; the split range is n_i, f_i)
+ *  @param n_i, f_i split range, 0 < n_i < f_i
+ *  @param[out] out_center world centre; @param[out] out_radius radius;
+ *  @param[out] out_centroid_radius may be NULL
+ *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
+ *          SWARP_ERR_NEAR_FAR, SWARP_ERR_FOV, SWARP_ERR_ZERO_VECTOR,
+ *          SWARP_ERR_OUT_OF_RANGE (aspect <= 0), SWARP_ERR_DEGENERATE (up
+ *          parallel to dir), SWARP_ERR_RESERVED_NONZERO. */
+SWARP_API swarp_status swarp_stabilize_sphere(const swarp_camera* cam, double n_i, double f_i,
+                                              swarp_vec3* out_center, double* out_radius,
+                                              double* out_centroid_radius);
+
+/** @brief Light-space basis of a directional light used by the stabiliser:
+ *  rows of out_view are u (right), v (up), w = -light direction, each unit;
+ *  out_view maps origin-relative world coordinates to light view space (a
+ *  right-handed view looking along the light).  It depends on the light
+ *  direction only, never on the camera, so texels keep their orientation.
+ *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
+ *          SWARP_ERR_ZERO_VECTOR. */
+SWARP_API swarp_status swarp_stabilize_light_view(const swarp_vec3* light_dir, swarp_mat4* out_view);
+
+/** @brief Stabilised (flicker-free) uniform light matrix of one split for a
+ *  directional light.  [RHS] §3.5 (ZZB09).
+ *  SPHERE: the map covers the split frustum's exact minimal sphere (constant
+ *  world size 2 r res/(res - 1)); LEVELS: the light-space box of body_points
+ *  with each axis' size rounded up to a multiple of level_max_size/levels;
+ *  NONE: that box unquantised and unsnapped.  SPHERE and LEVELS snap the
+ *  light-space map centre to whole texels relative to opt->origin, in double,
+ *  so a world point's texel coordinates change by whole numbers only and
+ *  jitter does not grow with the distance from the world origin.
+ *  Depth covers the sphere / body and, toward the light, the scene box.
+ *  out_matrix maps ORIGIN-RELATIVE world coordinates (p - origin) to clip
+ *  space (large-world rendering); for origin = 0 it is the ordinary matrix.
+ *  @param cam        camera; @param n_i, f_i split range (0 < n_i < f_i)
+ *  @param light_dir  direction the light travels (non-zero)
+ *  @param body_points world points of the split's body B_i (LEVELS, NONE:
+ *                     count >= 1 required; SPHERE: may be NULL, 0)
+ *  @param scene      scene box (may be NULL): extends depth toward the light
+ *  @param res        map resolution in texels (>= 2)
+ *  @param opt        options (may be NULL = defaults)
+ *  @param[out] out_matrix  the light matrix; @param[out] out_report may be NULL
+ *  @return SWARP_OK, SWARP_INFO_LEVEL_ABOVE_RANGE, SWARP_ERR_NULL_POINTER,
+ *          SWARP_ERR_NON_FINITE, SWARP_ERR_NEAR_FAR, SWARP_ERR_FOV,
+ *          SWARP_ERR_ZERO_VECTOR, SWARP_ERR_RESOLUTION, SWARP_ERR_UNKNOWN_ENUM,
+ *          SWARP_ERR_RESERVED_NONZERO, SWARP_ERR_OUT_OF_RANGE,
+ *          SWARP_ERR_DEGENERATE. */
+SWARP_API swarp_status swarp_stabilize_directional(const swarp_camera* cam, double n_i, double f_i,
+                                                   const swarp_vec3* light_dir,
+                                                   const swarp_vec3* body_points, size_t body_count,
+                                                   const swarp_aabb* scene, uint32_t res,
+                                                   const swarp_stabilize_options* opt,
+                                                   swarp_mat4* out_matrix,
+                                                   swarp_stabilize_report* out_report);
+
+/* ---- bias                               (src/bias.c)   [KOZ] §14.2.3 */
+
+/** A shadow map as the bias functions see it: the final world -> clip matrix
+ *  (uniform or warped, per split), its resolution and clip depth range.
+ *  "Depth units" below are WINDOW depth d in [0, 1] (the value stored in the
+ *  depth texture): d = (z_ndc + 1)/2 for [-1, 1], d = z_ndc for [0, 1]. */
+typedef struct swarp_bias_map {
+    swarp_mat4 world_to_clip;
+    double res_s;  /**< texels along clip x */
+    double res_t;  /**< texels along clip y */
+    swarp_depth_range depth;
+    uint32_t _reserved0;
+    uint32_t _reserved[4];
+} swarp_bias_map;
+
+/** @brief World-space size of the texel at p ([KOZ] §14.2.3): p is mapped to
+ *  the map, shifted by one texel along s (and t) at constant depth and
+ *  mapped back; the lengths of the world displacements are L_s and L_t.
+ *  Exact for warped maps at any point (finite one-texel step, no centre-of-
+ *  map approximation).  L_texel = max(L_s, L_t).
+ *  @param[out] out_L_texel, out_L_s, out_L_t (each may be NULL, not all)
+ *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
+ *          SWARP_ERR_RESOLUTION, SWARP_ERR_UNKNOWN_ENUM,
+ *          SWARP_ERR_RESERVED_NONZERO, SWARP_ERR_SINGULAR,
+ *          SWARP_ERR_BEHIND_PROJECTION. */
+SWARP_API swarp_status swarp_bias_texel_size(const swarp_bias_map* map, const swarp_vec3* p,
+                                             double* out_L_texel, double* out_L_s, double* out_L_t);
+
+/** @brief Unit vector from p toward the light (the L of [KOZ] §14.2.3):
+ *  -direction for a directional light, (position - p)/|.| for a point light. */
+SWARP_API swarp_status swarp_bias_to_light(const swarp_light* light, const swarp_vec3* p,
+                                           swarp_vec3* out_L);
+
+/** @brief [KOZ] §14.2.3 world-space bias: P_biased = P + L (a + b L_texel),
+ *  L the unit vector toward the light, L_texel from swarp_bias_texel_size.
+ *  The point moves toward the light by exactly a + b L_texel world units.
+ *  @param a  constant bias, world units; @param b  bias per texel size
+ *  (dimensionless); a + b L_texel must be >= 0 (else SWARP_ERR_OUT_OF_RANGE)
+ *  @param[out] out_p  biased point; @param[out] out_amount may be NULL
+ *  @return as swarp_bias_texel_size, plus SWARP_ERR_OUT_OF_RANGE,
+ *          SWARP_ERR_ZERO_VECTOR (point light at p). */
+SWARP_API swarp_status swarp_bias_kozlov(const swarp_bias_map* map, const swarp_light* light,
+                                         const swarp_vec3* p, double a, double b,
+                                         swarp_vec3* out_p, double* out_amount);
+
+/** @brief Normal-offset bias: P' = P + N k L_texel (1 - N.L), N the unit
+ *  normal, L the unit vector to the light, N.L clamped to [0, 1] (a back-
+ *  facing normal gives SWARP_INFO_BACKFACING and the full offset k L_texel).
+ *  @param k  offset in texels (>= 0)
+ *  @param[out] out_p; @param[out] out_amount offset length in world units
+ *  (may be NULL). */
+SWARP_API swarp_status swarp_bias_normal_offset(const swarp_bias_map* map, const swarp_light* light,
+                                                const swarp_vec3* p, const swarp_vec3* normal,
+                                                double k, swarp_vec3* out_p, double* out_amount);
+
+/** @brief Constant plus slope-scaled depth bias, given in WORLD units and
+ *  converted to the map's depth units at p:
+ *  world bias  = c + s L_texel tan(acos(N.L))  (tan clamped to 10; the depth
+ *  step of a receiver tilted by the angle between N and L across one texel),
+ *  depth bias  = window-depth difference between p and p moved by the world
+ *  bias toward the light (exact for warped maps; linear for uniform maps).
+ *  @param c  constant, world units (>= 0); @param s slope scale (>= 0)
+ *  @param[out] out_world_bias, out_depth_bias (either may be NULL, not both)
+ *  @return as swarp_bias_normal_offset. */
+SWARP_API swarp_status swarp_bias_slope_scaled(const swarp_bias_map* map, const swarp_light* light,
+                                               const swarp_vec3* p, const swarp_vec3* normal,
+                                               double c, double s, double* out_world_bias,
+                                               double* out_depth_bias);
+
+/** @brief Window depth per world unit toward the light at p: the factor that
+ *  turns a world-space bias into the depth units of this split's map (the
+ *  derivative of d along L at p).  Uniform maps: constant per split. */
+SWARP_API swarp_status swarp_bias_depth_per_world(const swarp_bias_map* map, const swarp_light* light,
+                                                  const swarp_vec3* p, double* out_depth_per_world);
+
+/** @brief Receiver-plane depth bias: the depth gradient (dd/ds, dd/dt) in
+ *  window depth per TEXEL of the receiver plane at p spanned by the world
+ *  tangents tangent_a, tangent_b (e.g. dFdx/dFdy of the world position, or
+ *  two edges of the triangle).  Exact derivative of the (possibly
+ *  projective) map at p.  A PCF tap offset by (ds, dt) texels compares
+ *  against d + dd/ds ds + dd/dt dt.  GLSL twin in docs/splits.md.
+ *  @return as swarp_bias_texel_size; SWARP_ERR_DEGENERATE when the plane is
+ *          seen edge-on by the light (its texel-space image is a line). */
+SWARP_API swarp_status swarp_bias_receiver_plane(const swarp_bias_map* map, const swarp_vec3* p,
+                                                 const swarp_vec3* tangent_a,
+                                                 const swarp_vec3* tangent_b, double out_grad[2]);
+
+/* ---- cascades: split selection and blending   (src/cascade.c)   [RHS] §3.3.3 */
+
+/** @brief Split selection by eye depth (PSSM, ZSXL06; [RHS] §3.3.3):
+ *  the i with splits[i] <= view_depth < splits[i+1] (a depth on a border
+ *  belongs to the split that starts there; the far end to the last split).
+ *  GLSL twin in docs/splits.md.
+ *  @param splits   m + 1 strictly increasing eye-space distances
+ *  @param m        split count (1..SWARP_SPLIT_MAX_COUNT)
+ *  @param view_depth  positive distance along the view direction
+ *  @param[out] out_index
+ *  @return SWARP_OK; SWARP_INFO_OUTSIDE_SPLITS (depth before the first or
+ *          after the last split: the nearest split is written);
+ *          SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE, SWARP_ERR_SPLIT_COUNT,
+ *          SWARP_ERR_NOT_INCREASING. */
+SWARP_API swarp_status swarp_cascade_select_depth(const double* splits, size_t m, double view_depth,
+                                                  uint32_t* out_index);
+
+/** @brief Split selection by best resolution (ZZB09; [RHS] §3.3.3): among
+ *  the splits whose map covers p (w > 0, |x|, |y| <= w, depth inside the clip
+ *  range) the one with the smallest world texel size L_texel at p (exact,
+ *  swarp_bias_texel_size; ties go to the lower index).  GLSL twin in
+ *  docs/splits.md.
+ *  @param maps  m split maps (world -> clip, resolution, depth range)
+ *  @param fallback_index  written with SWARP_INFO_OUTSIDE_SPLITS when no map
+ *                         covers p (pass the depth selection), < m
+ *  @param[out] out_index; @param[out] out_L_texel (may be NULL; the chosen
+ *  split's L_texel, 0 for the fallback)
+ *  @return SWARP_OK, SWARP_INFO_OUTSIDE_SPLITS, SWARP_ERR_NULL_POINTER,
+ *          SWARP_ERR_NON_FINITE, SWARP_ERR_SPLIT_COUNT, SWARP_ERR_OUT_OF_RANGE
+ *          (fallback_index >= m), and the map errors of swarp_bias_texel_size. */
+SWARP_API swarp_status swarp_cascade_select_best(const swarp_bias_map* maps, size_t m,
+                                                 const swarp_vec3* p, uint32_t fallback_index,
+                                                 uint32_t* out_index, double* out_L_texel);
+
+/** @brief Cascade blend weight in a transition band: the last `band` fraction
+ *  of each split's depth range (except the last split's) fades linearly into
+ *  the next split.  Writes the depth-selected split i and the weight w of
+ *  split i; the shader mixes shadow_i w + shadow_{i+1} (1 - w).  w = 1
+ *  outside the bands, w -> 0 at the border, so the result is continuous.
+ *  GLSL twin in docs/splits.md.
+ *  @param band  fraction of each split's length, in [0, 1) (0: hard switch)
+ *  @return as swarp_cascade_select_depth; SWARP_ERR_OUT_OF_RANGE for band. */
+SWARP_API swarp_status swarp_cascade_blend(const double* splits, size_t m, double view_depth,
+                                           double band, uint32_t* out_index, double* out_weight);
 /* <<< api: splits */
 
 /* >>> api: plan (src/plan.c) */
