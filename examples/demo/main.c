@@ -44,7 +44,7 @@ static void usage(void) {
         "  --splits K              maps for the pssm techniques (1..16, default 4)\n"
         "  --scheme S              practical[:LAMBDA] | uniform | log (default practical:0.5)\n"
         "  --filter F              none | pcf2 | pcf3 | pcf5 (default pcf3)\n"
-        "  --light-angle E[,A]     sun elevation E and azimuth A in degrees (default 40,30)\n"
+        "  --light-angle E[,A]     sun elevation E and azimuth A in degrees (default 35,115)\n"
         "  --light-dir X,Y,Z       direction the light travels (instead of --light-angle)\n"
         "  --camera P              default | measure | street | high | room\n"
         "  --frames N              fly N frames along the boulevard (prints progress)\n"
@@ -64,8 +64,8 @@ static int parse_options(int argc, char** argv, options* o) {
     o->scheme = DEMO_SCHEME_PRACTICAL;
     o->scheme_lambda = 0.5;
     o->filter = DEMO_FILTER_PCF3;
-    o->light_elev = 40;
-    o->light_azim = 30;
+    o->light_elev = 35;
+    o->light_azim = 115;
     o->camera = "default";
     o->w = 960;
     o->h = 540;
@@ -190,8 +190,8 @@ static int camera_preset(const char* name, int w, int h, swarp_camera* c) {
     c->near = 1;
     c->far = 800;
     if (!strcmp(name, "default")) {
-        c->eye = (swarp_vec3){8, 18, 395};
-        c->dir = (swarp_vec3){-0.02, -0.06, -1};
+        c->eye = (swarp_vec3){8, 28, 395};
+        c->dir = (swarp_vec3){-0.02, -0.11, -1};
     } else if (!strcmp(name, "measure")) {
         /* horizontal view, the setting of Lloyd's error model */
         c->eye = (swarp_vec3){0, 20, 390};
