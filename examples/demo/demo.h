@@ -22,6 +22,8 @@ typedef struct demo_measure_row {
     double z;                     /**< eye depth (bin centre, median of samples) */
     double mx, mz;                /**< measured screen pixels per texel (x, z) */
     double pred_mx, pred_mz;      /**< library's m_x, m_z at z (NAN if unavailable) */
+    double ratio_mx, ratio_mz;    /**< median of the per-sample measured/predicted */
+    int split;                    /**< the map the samples were shaded from */
     int samples;
 } demo_measure_row;
 

@@ -46,24 +46,28 @@ static int is_ground(const float* pos, int w, int x, int y) {
     return p[3] >= 0.0f && fabsf(p[1]) < 1e-3f;
 }
 
+typedef struct sample {
+    int key; /* depth bin * DEMO_MAX_SPLITS + split */
+    double z, mx, mz, pmx, pmz;
+} sample;
+
+static int cmp_sample(const void* a, const void* b) {
+    const sample* x = a;
+    const sample* y = b;
+    if (x->key != y->key) return x->key - y->key;
+    return (x->z > y->z) - (x->z < y->z);
+}
+
 int demo_measure(const demo_view* v, const demo_shadow* sh, int map_res, const float* tex,
                  const float* pos, demo_measure_row* rows, int cap) {
     int w = v->w, h = v->h;
-    enum { NB = 12 };
-    /* depth bins, logarithmic between near and far */
-    double* bz[NB];
-    double* bmx[NB];
-    double* bmz[NB];
-    int bn[NB];
-    for (int b = 0; b < NB; ++b) {
-        bz[b] = malloc(sizeof(double) * (size_t)h * 4);
-        bmx[b] = malloc(sizeof(double) * (size_t)h * 4);
-        bmz[b] = malloc(sizeof(double) * (size_t)h * 4);
-        bn[b] = 0;
-    }
+    enum { NB = 12, COLS = 4 };
+    sample* all = malloc(sizeof *all * (size_t)h * COLS);
+    if (!all) return 0;
+    int n_all = 0;
     double ln0 = log(sh->near), ln1 = log(sh->far);
-    /* the centre column and its neighbours (the view vector is the centre) */
-    for (int dx = -2; dx <= 1; ++dx) {
+    /* the centre columns (the view vector is the centre of the picture) */
+    for (int dx = -COLS / 2; dx < COLS / 2; ++dx) {
         int x = w / 2 + dx;
         for (int y = 0; y + 1 < h; ++y) {
             if (!is_ground(pos, w, x, y) || !is_ground(pos, w, x, y + 1) ||
@@ -83,36 +87,56 @@ int demo_measure(const demo_view* v, const demo_shadow* sh, int map_res, const f
             if (dst_z <= 0 || dst_x <= 0) continue;
             double z = 0.5 * ((double)t0[3] + t1[3]);
             if (z < sh->near || z > sh->far) continue;
-            /* texel footprint on the surface / pixel footprint of the model */
-            double mz = (dw_z / dst_z) / pixel_size(v, z);
-            double mx = (dw_x / dst_x) / pixel_size(v, z);
+            int split = (int)t0[2];
+            /* the sample must lie in the split the library's curve uses for
+             * its z (depth selection): skip the pixel pairs that straddle a
+             * border in depth */
+            if (split < 0 || split >= sh->count || z < sh->split[split] ||
+                z >= sh->split[split + 1])
+                continue;
             int b = (int)((log(z) - ln0) / (ln1 - ln0) * NB);
             if (b < 0 || b >= NB) continue;
-            bz[b][bn[b]] = z;
-            bmx[b][bn[b]] = mx;
-            bmz[b][bn[b]] = mz;
-            bn[b]++;
+            sample* q = &all[n_all++];
+            q->key = b * DEMO_MAX_SPLITS + split;
+            q->z = z;
+            /* texel footprint on the surface / pixel footprint of the model */
+            q->mz = (dw_z / dst_z) / pixel_size(v, z);
+            q->mx = (dw_x / dst_x) / pixel_size(v, z);
+            if (demo_predict(sh, v->cam.fovy, w, h, map_res, z, &q->pmx, &q->pmz))
+                q->pmx = q->pmz = NAN;
         }
     }
+    qsort(all, (size_t)n_all, sizeof *all, cmp_sample);
     int n = 0;
-    for (int b = 0; b < NB && n < cap; ++b) {
-        if (bn[b] < 4) continue;
-        demo_measure_row r;
-        r.samples = bn[b];
-        r.z = median(bz[b], bn[b]);
-        r.mx = median(bmx[b], bn[b]);
-        r.mz = median(bmz[b], bn[b]);
-        if (demo_predict(sh, v->cam.fovy, w, h, map_res, r.z, &r.pred_mx, &r.pred_mz)) {
-            r.pred_mx = NAN;
-            r.pred_mz = NAN;
+    double* tmp = malloc(sizeof(double) * (size_t)(n_all > 0 ? n_all : 1));
+    for (int i = 0; i < n_all && n < cap && tmp;) {
+        int j = i;
+        while (j < n_all && all[j].key == all[i].key) ++j;
+        int cnt = j - i;
+        if (cnt >= 4) {
+            demo_measure_row r;
+            r.samples = cnt;
+            for (int k = 0; k < cnt; ++k) tmp[k] = all[i + k].z;
+            r.z = median(tmp, cnt);
+            for (int k = 0; k < cnt; ++k) tmp[k] = all[i + k].mx;
+            r.mx = median(tmp, cnt);
+            for (int k = 0; k < cnt; ++k) tmp[k] = all[i + k].mz;
+            r.mz = median(tmp, cnt);
+            for (int k = 0; k < cnt; ++k) tmp[k] = all[i + k].pmx;
+            r.pred_mx = median(tmp, cnt);
+            for (int k = 0; k < cnt; ++k) tmp[k] = all[i + k].pmz;
+            r.pred_mz = median(tmp, cnt);
+            for (int k = 0; k < cnt; ++k) tmp[k] = all[i + k].mx / all[i + k].pmx;
+            r.ratio_mx = median(tmp, cnt);
+            for (int k = 0; k < cnt; ++k) tmp[k] = all[i + k].mz / all[i + k].pmz;
+            r.ratio_mz = median(tmp, cnt);
+            r.split = all[i].key % DEMO_MAX_SPLITS;
+            rows[n++] = r;
         }
-        rows[n++] = r;
+        i = j;
     }
-    for (int b = 0; b < NB; ++b) {
-        free(bz[b]);
-        free(bmx[b]);
-        free(bmz[b]);
-    }
+    free(tmp);
+    free(all);
     return n;
 }
 

@@ -123,6 +123,42 @@ static void temp_fit(const swarp_camera* cam, const swarp_light* light, const sw
     *out = m;
 }
 
+/* Split distances C_0..C_K over [near, far] from the library's schemes
+ * [RHS] (3.6)-(3.8). */
+static int split_distances(const demo_shadow_request* req, double near, double far, int k,
+                           double* out) {
+#ifdef DEMO_HAVE_ERROR_MODEL
+    size_t n = 0;
+    swarp_status st;
+    if (req->scheme == DEMO_SCHEME_UNIFORM)
+        st = swarp_split_uniform(near, far, (uint32_t)k, out, DEMO_MAX_SPLITS + 1, &n);
+    else if (req->scheme == DEMO_SCHEME_LOG)
+        st = swarp_split_log(near, far, (uint32_t)k, out, DEMO_MAX_SPLITS + 1, &n);
+    else
+        st = swarp_split_practical(near, far, req->scheme_lambda, (uint32_t)k, out,
+                                   DEMO_MAX_SPLITS + 1, &n);
+    if (swarp_status_is_error(st) || n != (size_t)k + 1) {
+        fprintf(stderr, "demo: split scheme: %s\n", swarp_status_string(st));
+        return -1;
+    }
+    return 0;
+#else
+    /* TEMPORARY until the core stage (swarp_split_*) is linked in */
+    for (int i = 0; i <= k; ++i) {
+        double t = (double)i / k;
+        double c_uni = near + (far - near) * t;
+        double c_log = near * pow(far / near, t);
+        double lambda = req->scheme == DEMO_SCHEME_UNIFORM ? 0.0
+                        : req->scheme == DEMO_SCHEME_LOG   ? 1.0
+                                                           : req->scheme_lambda;
+        out[i] = lambda * c_log + (1 - lambda) * c_uni;
+    }
+    out[0] = near;
+    out[k] = far;
+    return 0;
+#endif
+}
+
 int demo_shadow_setup(const swarp_camera* cam, const swarp_light* light,
                       const swarp_aabb* scene, const demo_shadow_request* req,
                       demo_shadow* out) {
@@ -137,19 +173,7 @@ int demo_shadow_setup(const swarp_camera* cam, const swarp_light* light,
     sh.far = cam->far;
     sh.count = req->technique == DEMO_TECH_PSSM ? req->splits : 1;
     if (sh.count < 1 || sh.count > DEMO_MAX_SPLITS) return -1;
-    /* TEMPORARY split distances ([RHS] (3.6)-(3.8)) until swarp_split_* is
-     * linked in. */
-    for (int i = 0; i <= sh.count; ++i) {
-        double t = (double)i / sh.count;
-        double c_uni = sh.near + (sh.far - sh.near) * t;
-        double c_log = sh.near * pow(sh.far / sh.near, t);
-        double lambda = req->scheme == DEMO_SCHEME_UNIFORM ? 0.0
-                        : req->scheme == DEMO_SCHEME_LOG   ? 1.0
-                                                           : req->scheme_lambda;
-        sh.split[i] = lambda * c_log + (1 - lambda) * c_uni;
-    }
-    sh.split[0] = sh.near;
-    sh.split[sh.count] = sh.far;
+    if (split_distances(req, sh.near, sh.far, sh.count, sh.split)) return -1;
     for (int i = 0; i < sh.count; ++i) {
         temp_fit(cam, light, scene, sh.split[i], sh.split[i + 1], &sh.light[i]);
         sh.n_prime[i] = INFINITY;
