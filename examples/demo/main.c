@@ -34,6 +34,8 @@ typedef struct options {
     const char* obj;
     const char* test;
     float blend, grid;
+    double path[6 * 256]; /**< --camera FILE: eye and dir per frame */
+    int path_count;
 } options;
 
 static void usage(void) {
@@ -46,7 +48,8 @@ static void usage(void) {
         "  --filter F              none | pcf2 | pcf3 | pcf5 (default pcf3)\n"
         "  --light-angle E[,A]     sun elevation E and azimuth A in degrees (default 35,115)\n"
         "  --light-dir X,Y,Z       direction the light travels (instead of --light-angle)\n"
-        "  --camera P              default | measure | street | high | room\n"
+        "  --camera P|FILE         default | measure | street | high | room, or a path file of\n"
+        "                          \"ex ey ez dx dy dz\" lines (one per frame)\n"
         "  --frames N              fly N frames along the boulevard (prints progress)\n"
         "  --size WxH              picture size (default 960x540)\n"
         "  --map RES               texels per map side (default 1024)\n"
@@ -181,6 +184,28 @@ static int parse_options(int argc, char** argv, options* o) {
     return 0;
 }
 
+/* --camera FILE: up to 256 lines "ex ey ez dx dy dz"; the first is the
+ * starting camera, --frames walks through them. */
+static int load_camera_path(options* o) {
+    FILE* f = fopen(o->camera, "r");
+    if (!f) return 0; /* not a file: a preset name */
+    char line[256];
+    o->path_count = 0;
+    while (o->path_count < 256 && fgets(line, sizeof line, f)) {
+        double* k = o->path + 6 * o->path_count;
+        if (line[0] == '#') continue;
+        if (sscanf(line, "%lf %lf %lf %lf %lf %lf", k, k + 1, k + 2, k + 3, k + 4, k + 5) == 6 &&
+            k[3] * k[3] + k[4] * k[4] + k[5] * k[5] > 0)
+            ++o->path_count;
+    }
+    fclose(f);
+    if (o->path_count == 0) {
+        fprintf(stderr, "demo: %s holds no \"ex ey ez dx dy dz\" line\n", o->camera);
+        return -1;
+    }
+    return 1;
+}
+
 /* Camera presets over the default scene (y up, ground at y = 0). */
 static int camera_preset(const char* name, int w, int h, swarp_camera* c) {
     memset(c, 0, sizeof *c);
@@ -209,10 +234,22 @@ static int camera_preset(const char* name, int w, int h, swarp_camera* c) {
         c->dir = (swarp_vec3){22, -7, -30};
         c->near = 0.5;
         c->far = 600;
+    } else if (!strcmp(name, "path")) {
+        /* a camera path file: presets' defaults, eye/dir set by the caller */
+        c->eye = (swarp_vec3){0, 20, 390};
+        c->dir = (swarp_vec3){0, 0, -1};
     } else {
         fprintf(stderr, "demo: unknown camera preset %s\n", name);
         return -1;
     }
+    return 0;
+}
+
+static int setup_camera(const options* o, swarp_camera* c) {
+    if (o->path_count == 0) return camera_preset(o->camera, o->w, o->h, c);
+    if (camera_preset("path", o->w, o->h, c)) return -1;
+    c->eye = (swarp_vec3){o->path[0], o->path[1], o->path[2]};
+    c->dir = (swarp_vec3){o->path[3], o->path[4], o->path[5]};
     return 0;
 }
 
@@ -508,7 +545,7 @@ static int run_gallery(const options* o, int single, double* out_min_nonblank) {
     memset(&v, 0, sizeof v);
     v.w = o->w;
     v.h = o->h;
-    if (camera_preset(o->camera, o->w, o->h, &v.cam)) return 2;
+    if (setup_camera(o, &v.cam)) return 2;
     light_from_options(o, &v.light);
     demo_view_update(&v);
     demo_scene scene;
@@ -558,7 +595,14 @@ static int run_gallery(const options* o, int single, double* out_min_nonblank) {
         }
         printf("%-14s done: %s/%s_*.png (matrices from %s)\n", res[n].label, o->out, res[n].label,
                res[n].source);
-        if (single) print_measure(&res[n]);
+        if (single) {
+            printf("  timing: setup %.2f us (median of 101 calls);", res[n].setup_us);
+            for (int k = 0; k < res[n].passes - 1; ++k)
+                printf(" shadow pass %d %.2f ms;", k, res[n].shadow_ms[k]);
+            printf(" main pass %.2f ms; %d passes, %.0f texels\n", res[n].main_ms, res[n].passes,
+                   res[n].texels);
+            print_measure(&res[n]);
+        }
         if (res[n].gl_errors) rc = 1;
         if (out_min_nonblank && res[n].min_nonblank < *out_min_nonblank)
             *out_min_nonblank = res[n].min_nonblank;
@@ -602,7 +646,7 @@ static int run_frames(const options* o) {
     memset(&v, 0, sizeof v);
     v.w = o->w;
     v.h = o->h;
-    if (camera_preset(o->camera, o->w, o->h, &v.cam)) return 2;
+    if (setup_camera(o, &v.cam)) return 2;
     light_from_options(o, &v.light);
     demo_scene scene;
     if (load_scene(o, &scene)) return 2;
@@ -620,10 +664,18 @@ static int run_frames(const options* o) {
     int t = o->technique < 0 ? DEMO_TECH_UNIFORM : o->technique;
     int rc = 0;
     for (int f = 0; f < o->frames; ++f) {
-        /* fly down the boulevard, turning slowly */
-        v.cam.eye.z -= 2.5;
-        double yaw = 0.15 * sin(0.05 * f);
-        v.cam.dir = (swarp_vec3){sin(yaw), -0.06, -cos(yaw)};
+        if (o->path_count > 0) {
+            /* a camera path file: one "ex ey ez dx dy dz" line per frame,
+             * looped */
+            const double* k = o->path + 6 * (f % o->path_count);
+            v.cam.eye = (swarp_vec3){k[0], k[1], k[2]};
+            v.cam.dir = (swarp_vec3){k[3], k[4], k[5]};
+        } else {
+            /* fly down the boulevard, turning slowly */
+            v.cam.eye.z -= 2.5;
+            double yaw = 0.15 * sin(0.05 * f);
+            v.cam.dir = (swarp_vec3){sin(yaw), -0.06, -cos(yaw)};
+        }
         demo_view_update(&v);
         tech_result res;
         if (run_technique(o, &r, &v, &scene.box, (demo_technique)t, o->splits, 0, &res)) {
@@ -873,6 +925,7 @@ static int test_images(const options* o) {
 int main(int argc, char** argv) {
     options o;
     if (parse_options(argc, argv, &o)) return 2;
+    if (load_camera_path(&o) < 0) return 2;
     if (o.test) {
         /* skip cleanly when OSMesa cannot give us a context */
         int maj, min;
