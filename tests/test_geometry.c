@@ -1,0 +1,312 @@
+/* Geometry stage: polyhedra, the body B [RHS] §3.1.1, focusing [RHS] (3.1),
+ * the LiSPSM warp [RHS] §3.2.1 / (3.2) / §4.1, PSM [KOZ] and the one call.
+ * Properties over seeded random configurations plus hand-made cases. */
+#include <check.h>
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "shadowwarp.h"
+
+#define PI 3.14159265358979323846
+#define DEG (PI / 180.0)
+
+/* ---- PRNG (splitmix64) ---------------------------------------------------- */
+typedef struct rng { uint64_t s; } rng;
+static uint64_t rng_next(rng* r) {
+    uint64_t z = (r->s += 0x9E3779B97F4A7C15ull);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    return z ^ (z >> 31);
+}
+static double rnd(rng* r, double a, double b) { return a + (b - a) * ((rng_next(r) >> 11) * 0x1.0p-53); }
+static swarp_vec3 v3(double x, double y, double z) {
+    swarp_vec3 v = {x, y, z};
+    return v;
+}
+static swarp_vec3 add(swarp_vec3 a, swarp_vec3 b) { return v3(a.x + b.x, a.y + b.y, a.z + b.z); }
+static swarp_vec3 sub(swarp_vec3 a, swarp_vec3 b) { return v3(a.x - b.x, a.y - b.y, a.z - b.z); }
+static swarp_vec3 scl(swarp_vec3 a, double s) { return v3(a.x * s, a.y * s, a.z * s); }
+static double dot(swarp_vec3 a, swarp_vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+static swarp_vec3 cross(swarp_vec3 a, swarp_vec3 b) {
+    return v3(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x);
+}
+static double len(swarp_vec3 a) { return sqrt(dot(a, a)); }
+static swarp_vec3 unit(swarp_vec3 a) { return scl(a, 1.0 / len(a)); }
+static swarp_vec3 rnd_unit(rng* r) {
+    for (;;) {
+        swarp_vec3 v = v3(rnd(r, -1, 1), rnd(r, -1, 1), rnd(r, -1, 1));
+        double l = len(v);
+        if (l > 0.1 && l <= 1.0) return scl(v, 1.0 / l);
+    }
+}
+
+/* clip coordinates of a world point (x/w, y/w, z/w, w) */
+static void clip(const swarp_mat4* m, swarp_vec3 p, double out[4]) {
+    double h[4];
+    for (int r = 0; r < 4; ++r) h[r] = m->m[r] * p.x + m->m[4 + r] * p.y + m->m[8 + r] * p.z + m->m[12 + r];
+    out[0] = h[0] / h[3];
+    out[1] = h[1] / h[3];
+    out[2] = h[2] / h[3];
+    out[3] = h[3];
+}
+
+/* Independent point-in-frustum: view depth in [near, far] and inside the
+ * side planes, computed from the camera directly (not from poly.c). */
+static int in_frustum(const swarp_camera* c, double near, double far, swarp_vec3 p, double tol) {
+    swarp_vec3 f = unit(c->dir), r = unit(cross(f, c->up)), u = cross(r, f);
+    swarp_vec3 q = sub(p, c->eye);
+    double z = dot(q, f), x = dot(q, r), y = dot(q, u);
+    double ty = tan(0.5 * c->fovy), tx = ty * c->aspect;
+    return z >= near - tol && z <= far + tol && fabs(x) <= tx * z + tol && fabs(y) <= ty * z + tol;
+}
+static int in_box(const swarp_aabb* b, swarp_vec3 p, double tol) {
+    return p.x >= b->min.x - tol && p.x <= b->max.x + tol && p.y >= b->min.y - tol && p.y <= b->max.y + tol &&
+           p.z >= b->min.z - tol && p.z <= b->max.z + tol;
+}
+/* a random point of the frustum [near, far] (uniform in the NDC-like box) */
+static swarp_vec3 rnd_in_frustum(rng* R, const swarp_camera* c, double near, double far) {
+    swarp_vec3 f = unit(c->dir), r = unit(cross(f, c->up)), u = cross(r, f);
+    double ty = tan(0.5 * c->fovy), tx = ty * c->aspect;
+    double z = rnd(R, near, far);
+    double x = rnd(R, -1, 1) * tx * z, y = rnd(R, -1, 1) * ty * z;
+    return add(c->eye, add(scl(f, z), add(scl(r, x), scl(u, y))));
+}
+
+typedef struct config {
+    swarp_camera cam;
+    swarp_light light;
+    swarp_aabb box;
+} config;
+
+static void dump_config(const config* c) {
+    fprintf(stderr,
+            "config: eye %.17g,%.17g,%.17g dir %.17g,%.17g,%.17g up %.17g,%.17g,%.17g fovy %.17g aspect %.17g "
+            "near %.17g far %.17g\n  light type %d dir %.17g,%.17g,%.17g pos %.17g,%.17g,%.17g cone %.17g\n"
+            "  box %.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n",
+            c->cam.eye.x, c->cam.eye.y, c->cam.eye.z, c->cam.dir.x, c->cam.dir.y, c->cam.dir.z, c->cam.up.x,
+            c->cam.up.y, c->cam.up.z, c->cam.fovy, c->cam.aspect, c->cam.near, c->cam.far, (int)c->light.type,
+            c->light.direction.x, c->light.direction.y, c->light.direction.z, c->light.position.x,
+            c->light.position.y, c->light.position.z, c->light.cone_angle, c->box.min.x, c->box.min.y,
+            c->box.min.z, c->box.max.x, c->box.max.y, c->box.max.z);
+}
+#define CHECK(cond, ...)                          \
+    do {                                          \
+        if (!(cond)) {                            \
+            dump_config(c);                       \
+            ck_assert_msg(cond, __VA_ARGS__);     \
+        }                                         \
+    } while (0)
+
+static void rnd_config(rng* R, config* c, double offset) {
+    memset(c, 0, sizeof *c);
+    swarp_vec3 ctr = v3(rnd(R, -50, 50) + offset, rnd(R, -50, 50), rnd(R, -50, 50) - offset);
+    swarp_vec3 he = v3(rnd(R, 1, 100), rnd(R, 1, 100), rnd(R, 1, 100));
+    if (rng_next(R) % 8 == 0) he.y = 0.0; /* flat scene box */
+    c->box.min = sub(ctr, he);
+    c->box.max = add(ctr, he);
+    c->cam.eye = add(ctr, v3(he.x * rnd(R, -1.5, 1.5), he.y * rnd(R, -1.5, 1.5) + rnd(R, -2, 2),
+                             he.z * rnd(R, -1.5, 1.5)));
+    swarp_vec3 to_ctr = sub(ctr, c->cam.eye);
+    /* mostly looking roughly toward the box, sometimes anywhere */
+    c->cam.dir = (rng_next(R) % 4 == 0) ? rnd_unit(R) : unit(add(unit(to_ctr), scl(rnd_unit(R), 0.7)));
+    do c->cam.up = rnd_unit(R);
+    while (len(cross(c->cam.up, c->cam.dir)) < 0.1);
+    c->cam.fovy = rnd(R, 20, 100) * DEG;
+    c->cam.aspect = rnd(R, 0.5, 2.5);
+    c->cam.near = rnd(R, 0.05, 2);
+    c->cam.far = c->cam.near * exp(rnd(R, log(10.0), log(2000.0)));
+    int kind = (int)(rng_next(R) % 4);
+    if (kind <= 1) {
+        c->light.type = SWARP_LIGHT_DIRECTIONAL;
+        c->light.direction = rnd_unit(R);
+    } else {
+        c->light.type = SWARP_LIGHT_POINT;
+        /* outside the box, so one perspective map can see B */
+        swarp_vec3 dirl = rnd_unit(R);
+        double rad = len(he) + 5.0 + rnd(R, 0, 200);
+        c->light.position = add(ctr, scl(dirl, rad));
+        if (kind == 3) {
+            c->light.cone_angle = rnd(R, 10, 80) * DEG;
+            c->light.direction = unit(add(scl(dirl, -1.0), scl(rnd_unit(R), 0.3)));
+        }
+    }
+}
+
+/* inside the spot cone (everything for directional and omni lights) */
+static int lit_by(const config* c, swarp_vec3 p) {
+    if (c->light.type != SWARP_LIGHT_POINT || c->light.cone_angle == 0) return 1;
+    swarp_vec3 a = unit(c->light.direction), q = sub(p, c->light.position);
+    return acos(fmin(1.0, dot(q, a) / len(q))) < c->light.cone_angle;
+}
+
+static const swarp_technique techniques[] = {SWARP_TECHNIQUE_UNIFORM, SWARP_TECHNIQUE_LISPSM,
+                                             SWARP_TECHNIQUE_PSM};
+#define N_TECHNIQUES 2
+
+static double box_scale(const swarp_aabb* b) {
+    double s = 0;
+    const double* p = &b->min.x;
+    for (int i = 0; i < 6; ++i) s = fmax(s, fabs(p[i]));
+    return s;
+}
+
+static int in_clip(const double c[4], swarp_depth_range dr, double tol) {
+    double zlo = dr == SWARP_DEPTH_ZERO_TO_ONE ? 0.0 : -1.0;
+    return c[3] > 0 && fabs(c[0]) <= 1 + tol && fabs(c[1]) <= 1 + tol && c[2] >= zlo - tol && c[2] <= 1 + tol;
+}
+
+/* stats shared by the random sweep */
+typedef struct sweep_stats {
+    long ok, empty, inside, total, extr_checked, cover_checked;
+} sweep_stats;
+
+/* Runs every property of the issue on one configuration and technique. */
+static void check_config(rng* R, const config* c, swarp_technique tech, swarp_depth_range dr, sweep_stats* st) {
+    swarp_setup_options o;
+    memset(&o, 0, sizeof o);
+    o.technique = tech;
+    o.depth_range = dr;
+    swarp_setup_result res;
+    swarp_vec3 pts[SWARP_BODY_MAX_POINTS];
+    size_t np = 0;
+    swarp_status s = swarp_setup(&c->cam, &c->light, &c->box, &o, &res, pts, SWARP_BODY_MAX_POINTS, &np);
+    st->total++;
+    double scale = fmax(box_scale(&c->box), len(c->cam.eye));
+    double tol = 1e-9 * fmax(scale, 1.0);
+    if (s == SWARP_ERR_BODY_EMPTY) {
+        st->empty++;
+        /* independent: no sampled point of V lies in S (and in the spot's
+         * cone L: a spot that lights nothing visible also has an empty B) */
+        for (int k = 0; k < 200; ++k) {
+            swarp_vec3 p = rnd_in_frustum(R, &c->cam, c->cam.near, c->cam.far);
+            int lit = 1;
+            if (c->light.type == SWARP_LIGHT_POINT && c->light.cone_angle > 0) {
+                swarp_vec3 a = unit(c->light.direction), q = sub(p, c->light.position);
+                lit = acos(fmin(1.0, dot(q, a) / len(q))) < c->light.cone_angle * 0.999;
+            }
+            CHECK(!(lit && in_box(&c->box, p, -tol)), "BODY_EMPTY but a lit point of V lies in S");
+        }
+        return;
+    }
+    if (s == SWARP_ERR_LIGHT_INSIDE_BODY) {
+        ck_assert_int_eq(c->light.type, SWARP_LIGHT_POINT);
+        st->inside++;
+        return;
+    }
+    CHECK(!swarp_status_is_error(s), "setup failed: %s", swarp_status_name(s));
+    st->ok++;
+    for (int i = 0; i < 16; ++i) ck_assert(isfinite(res.matrix.m[i]));
+    ck_assert(np >= 1 && np <= SWARP_BODY_MAX_POINTS);
+    /* B ⊆ S */
+    for (size_t i = 0; i < np; ++i) CHECK(in_box(&c->box, pts[i], tol), "B point outside S");
+    /* Clip-space tolerance: 1e-9, plus the rounding of evaluating a
+     * world-space matrix on world coordinates (|p| eps / extent of B), which
+     * no matrix can avoid for a tiny B far from the origin. */
+    double ext = 0;
+    for (size_t i = 1; i < np; ++i) ext = fmax(ext, len(sub(pts[i], pts[0])));
+    double ctol = 1e-9 + 64 * 2.2e-16 * scale / fmax(ext, 1e-300);
+    /* tightness: B touches the x and y bounds */
+    double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+    for (size_t i = 0; i < np; ++i) {
+        double cc[4];
+        clip(&res.matrix, pts[i], cc);
+        if (c->light.type == SWARP_LIGHT_POINT && cc[3] <= 0) continue;
+        for (int k = 0; k < 2; ++k) lo[k] = fmin(lo[k], cc[k]), hi[k] = fmax(hi[k], cc[k]);
+    }
+    if (s != SWARP_INFO_LIGHT_NEAR_CLIPPED)
+        for (int k = 0; k < 2; ++k) {
+            CHECK(fabs(lo[k] + 1) < ctol && fabs(hi[k] - 1) < ctol, "not tight: axis %d [%.17g, %.17g] %s tech %d", k,
+                          lo[k], hi[k], swarp_status_name(s), (int)tech);
+        }
+    /* coverage: vertices of H and random points of V ∩ S */
+    swarp_polyhedron H;
+    ck_assert_int_eq(swarp_body_h(&c->cam, c->cam.near, c->cam.far, &c->box, &H), SWARP_OK);
+    for (uint32_t i = 0; i < H.vertex_count; ++i) {
+        ck_assert(in_frustum(&c->cam, c->cam.near, c->cam.far, H.vertices[i], tol));
+        ck_assert(in_box(&c->box, H.vertices[i], tol));
+        if (!lit_by(c, H.vertices[i])) continue;
+        double cc[4];
+        clip(&res.matrix, H.vertices[i], cc);
+        CHECK(in_clip(cc, dr, ctol), "H vertex outside the map: %g %g %g w=%g (%s)", cc[0], cc[1], cc[2],
+                      cc[3], swarp_status_name(s));
+    }
+    int got = 0;
+    swarp_vec3 samples[24];
+    for (int k = 0; k < 400 && got < 24; ++k) {
+        swarp_vec3 p = rnd_in_frustum(R, &c->cam, c->cam.near, c->cam.far);
+        if (!in_box(&c->box, p, 0.0) || !lit_by(c, p)) continue;
+        samples[got++] = p;
+        double cc[4];
+        clip(&res.matrix, p, cc);
+        CHECK(in_clip(cc, dr, ctol), "point of V∩S outside the map: %g %g %g w=%g", cc[0], cc[1], cc[2],
+                      cc[3]);
+        st->cover_checked++;
+    }
+    /* extrusion: points of S between a point of H and the light are in B
+     * and in the map (the casters) */
+    for (int k = 0; k < got; ++k) {
+        swarp_vec3 h = samples[k];
+        swarp_vec3 toward;
+        double tmax;
+        if (c->light.type == SWARP_LIGHT_POINT) {
+            toward = sub(c->light.position, h);
+            tmax = 1.0;
+        } else {
+            toward = scl(unit(c->light.direction), -1.0);
+            tmax = 2.0 * len(sub(c->box.max, c->box.min));
+        }
+        for (int j = 0; j < 4; ++j) {
+            swarp_vec3 p = add(h, scl(toward, rnd(R, 0, tmax)));
+            if (!in_box(&c->box, p, 0.0)) continue;
+            if (c->light.type == SWARP_LIGHT_POINT && c->light.cone_angle > 0) {
+                swarp_vec3 a = unit(c->light.direction), q = sub(p, c->light.position);
+                double ang = acos(fmin(1.0, dot(q, a) / len(q)));
+                if (ang > c->light.cone_angle) continue; /* outside L */
+            }
+            double cc[4];
+            clip(&res.matrix, p, cc);
+            CHECK(in_clip(cc, dr, ctol), "caster between H and the light outside the map: %g %g %g (%s)",
+                          cc[0], cc[1], cc[2], swarp_status_name(s));
+            st->extr_checked++;
+        }
+    }
+}
+
+START_TEST(random_configurations_all_properties) {
+    rng R = {0x5EED0001ull + (uint64_t)_i};
+    sweep_stats st = {0};
+    int n = 1400;
+    for (int i = 0; i < n; ++i) {
+        config c;
+        rnd_config(&R, &c, (i % 10 == 0) ? 1e5 : 0.0);
+        for (int t = 0; t < N_TECHNIQUES; ++t)
+            check_config(&R, &c, techniques[t], (i & 1) ? SWARP_DEPTH_ZERO_TO_ONE : SWARP_DEPTH_NEG_ONE_TO_ONE, &st);
+    }
+    /* the sweep must exercise the properties, not skip them */
+    ck_assert_msg(st.ok > st.total / 2, "too few successful setups: %ld of %ld", st.ok, st.total);
+    ck_assert_msg(st.inside * 100 < st.total, "too many LIGHT_INSIDE_BODY: %ld", st.inside);
+    ck_assert(st.cover_checked > 10 * st.ok && st.extr_checked > st.ok);
+    fprintf(stderr, "sweep %d: %ld setups, %ld ok, %ld empty, %ld light inside, %ld coverage, %ld extrusion points\n",
+            _i, st.total, st.ok, st.empty, st.inside, st.cover_checked, st.extr_checked);
+}
+END_TEST
+
+Suite* geometry_suite(void) {
+    Suite* s = suite_create("geometry");
+    TCase* tc = tcase_create("properties");
+    tcase_set_timeout(tc, 600);
+    tcase_add_loop_test(tc, random_configurations_all_properties, 0, 4);
+    suite_add_tcase(s, tc);
+    return s;
+}
+
+int main(void) {
+    SRunner* sr = srunner_create(geometry_suite());
+    srunner_run_all(sr, CK_NORMAL);
+    int failed = srunner_ntests_failed(sr);
+    srunner_free(sr);
+    return failed ? EXIT_FAILURE : EXIT_SUCCESS;
+}
