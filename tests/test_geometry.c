@@ -144,7 +144,7 @@ static int lit_by(const config* c, swarp_vec3 p) {
 
 static const swarp_technique techniques[] = {SWARP_TECHNIQUE_UNIFORM, SWARP_TECHNIQUE_LISPSM,
                                              SWARP_TECHNIQUE_PSM};
-#define N_TECHNIQUES 2
+#define N_TECHNIQUES 3
 
 static double box_scale(const swarp_aabb* b) {
     double s = 0;
@@ -160,7 +160,7 @@ static int in_clip(const double c[4], swarp_depth_range dr, double tol) {
 
 /* stats shared by the random sweep */
 typedef struct sweep_stats {
-    long ok, empty, inside, total, extr_checked, cover_checked;
+    long ok, empty, inside, total, extr_checked, cover_checked, inverse;
 } sweep_stats;
 
 /* Runs every property of the issue on one configuration and technique. */
@@ -192,12 +192,13 @@ static void check_config(rng* R, const config* c, swarp_technique tech, swarp_de
         return;
     }
     if (s == SWARP_ERR_LIGHT_INSIDE_BODY) {
-        ck_assert_int_eq(c->light.type, SWARP_LIGHT_POINT);
+        CHECK(c->light.type == SWARP_LIGHT_POINT, "LIGHT_INSIDE_BODY for a directional light, tech %d", (int)tech);
         st->inside++;
         return;
     }
     CHECK(!swarp_status_is_error(s), "setup failed: %s", swarp_status_name(s));
     st->ok++;
+    if (s == SWARP_INFO_PSM_INVERSE) st->inverse++;
     for (int i = 0; i < 16; ++i) ck_assert(isfinite(res.matrix.m[i]));
     ck_assert(np >= 1 && np <= SWARP_BODY_MAX_POINTS);
     /* B ⊆ S */
@@ -209,10 +210,15 @@ static void check_config(rng* R, const config* c, swarp_technique tech, swarp_de
     for (size_t i = 1; i < np; ++i) ext = fmax(ext, len(sub(pts[i], pts[0])));
     double ctol = 1e-9 + 64 * 2.2e-16 * scale / fmax(ext, 1e-300);
     /* tightness: B touches the x and y bounds */
+    /* (PSM: unit cube clipping fits the receivers H, [KOZ] §14.2.2) */
+    swarp_polyhedron Ht;
+    ck_assert_int_eq(swarp_body_h(&c->cam, res.view_near, res.view_far, &c->box, &Ht), SWARP_OK);
+    const swarp_vec3* tp = tech == SWARP_TECHNIQUE_PSM ? Ht.vertices : pts;
+    size_t ntp = tech == SWARP_TECHNIQUE_PSM ? Ht.vertex_count : np;
     double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
-    for (size_t i = 0; i < np; ++i) {
+    for (size_t i = 0; i < ntp; ++i) {
         double cc[4];
-        clip(&res.matrix, pts[i], cc);
+        clip(&res.matrix, tp[i], cc);
         if (c->light.type == SWARP_LIGHT_POINT && cc[3] <= 0) continue;
         for (int k = 0; k < 2; ++k) lo[k] = fmin(lo[k], cc[k]), hi[k] = fmax(hi[k], cc[k]);
     }
@@ -249,6 +255,8 @@ static void check_config(rng* R, const config* c, swarp_technique tech, swarp_de
      * and in the map (the casters) */
     for (int k = 0; k < got; ++k) {
         swarp_vec3 h = samples[k];
+        double ch[4];
+        clip(&res.matrix, h, ch);
         swarp_vec3 toward;
         double tmax;
         if (c->light.type == SWARP_LIGHT_POINT) {
@@ -270,6 +278,10 @@ static void check_config(rng* R, const config* c, swarp_technique tech, swarp_de
             clip(&res.matrix, p, cc);
             CHECK(in_clip(cc, dr, ctol), "caster between H and the light outside the map: %g %g %g (%s)",
                           cc[0], cc[1], cc[2], swarp_status_name(s));
+            /* depth order: the caster is nearer the light than the receiver
+             * it shadows (for PSM with the light behind the camera too) */
+            CHECK(cc[2] <= ch[2] + ctol, "depth order wrong: caster %.17g receiver %.17g (%s, tech %d)", cc[2], ch[2],
+                  swarp_status_name(s), (int)tech);
             st->extr_checked++;
         }
     }
@@ -289,8 +301,9 @@ START_TEST(random_configurations_all_properties) {
     ck_assert_msg(st.ok > st.total / 2, "too few successful setups: %ld of %ld", st.ok, st.total);
     ck_assert_msg(st.inside * 100 < st.total, "too many LIGHT_INSIDE_BODY: %ld", st.inside);
     ck_assert(st.cover_checked > 10 * st.ok && st.extr_checked > st.ok);
-    fprintf(stderr, "sweep %d: %ld setups, %ld ok, %ld empty, %ld light inside, %ld coverage, %ld extrusion points\n",
-            _i, st.total, st.ok, st.empty, st.inside, st.cover_checked, st.extr_checked);
+    ck_assert_msg(st.inverse > 50, "the PSM inverse projection was hardly exercised: %ld", st.inverse);
+    fprintf(stderr, "sweep %d: %ld setups, %ld ok, %ld empty, %ld light inside, %ld coverage, %ld extrusion points, %ld PSM inverse\n",
+            _i, st.total, st.ok, st.empty, st.inside, st.cover_checked, st.extr_checked, st.inverse);
 }
 END_TEST
 
