@@ -58,7 +58,7 @@ static inline swarp_vec3 sw_project(const swarp_mat4* m, swarp_vec3 p) {
 /* PSM [KOZ] for the one call (src/psm.c); fills light_view, light_proj,
  * matrix, n_eye, n_light, gamma, light_near/far of res. */
 swarp_status sw_psm_setup(const swarp_camera* cam, const swarp_light* light, const swarp_vec3* B, size_t nb,
-                          const swarp_vec3* H, size_t nh, double near, double far,
+                          const swarp_polyhedron* B_poly, const swarp_vec3* H, size_t nh, double near, double far,
                           const swarp_setup_options* o, swarp_setup_result* res);
 
 #endif

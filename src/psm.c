@@ -122,7 +122,7 @@ static void sw_camera_matrix(const swarp_camera* cam, double near, double far, d
 }
 
 swarp_status sw_psm_setup(const swarp_camera* cam, const swarp_light* light, const swarp_vec3* B, size_t nb,
-                          const swarp_vec3* H, size_t nh, double near, double far,
+                          const swarp_polyhedron* B_poly, const swarp_vec3* H, size_t nh, double near, double far,
                           const swarp_setup_options* o, swarp_setup_result* res) {
     swarp_depth_range dr = o->depth_range == SWARP_DEPTH_DEFAULT ? SWARP_DEPTH_NEG_ONE_TO_ONE : o->depth_range;
     swarp_status info = SWARP_OK;
@@ -197,22 +197,48 @@ swarp_status sw_psm_setup(const swarp_camera* cam, const swarp_light* light, con
     sw_set(&Q, 3, 0, wa * a.x), sw_set(&Q, 3, 1, wa * a.y), sw_set(&Q, 3, 2, wa * a.z), sw_set(&Q, 3, 3, ww);
     swarp_mat4 QM;
     sw_mul(&Q, &Mc, &QM);
-    /* unit cube clipping: x, y over the receivers; depth over receivers and
-     * every caster of B that the light camera sees (w > 0) */
-    swarp_vec3 zp[2 * SWARP_BODY_MAX_POINTS];
-    size_t nz = 0;
+    /* unit cube clipping [KOZ] §14.2.2: x, y over the receivers H.  Depth:
+     * over H and the casters that can shadow them, i.e. B inside the light
+     * frustum over the receivers' window (its four side planes pulled back to
+     * world space; this also keeps w > 0).  Clipping B, rather than dropping
+     * points with w <= 0, keeps the depth range continuous as the light
+     * moves.  Without B's polyhedron (swarp_setup_points) the points of B
+     * with w > 0 are used. */
     for (size_t i = 0; i < nh; ++i) {
         swarp_vec4 h = sw_xform_point(&QM, H[i]);
         if (!(h.w > 0.0)) return SWARP_ERR_LIGHT_INSIDE_BODY;
-        zp[nz++] = H[i];
     }
-    if (!o->pancake)
-        for (size_t i = 0; i < nb && nz < 2 * SWARP_BODY_MAX_POINTS; ++i) {
-            swarp_vec4 h = sw_xform_point(&QM, B[i]);
-            if (h.w > 0.0) zp[nz++] = B[i];
-        }
     swarp_mat4 A;
-    swarp_status s = sw_focus_fit(&QM, H, nh, zp, nz, dr, &A);
+    swarp_status s = sw_focus_fit(&QM, H, nh, NULL, 0, dr, &A);
+    if (swarp_status_is_error(s)) return s;
+    swarp_vec3 zp[SWARP_BODY_MAX_POINTS + SWARP_POLY_MAX_VERTICES];
+    size_t nz = 0;
+    for (size_t i = 0; i < nh && nz < SWARP_BODY_MAX_POINTS; ++i) zp[nz++] = H[i];
+    if (!o->pancake) {
+        if (B_poly) {
+            swarp_mat4 F;
+            sw_mul(&A, &QM, &F);
+            swarp_polyhedron C = *B_poly;
+            for (int k = 0; k < 4 && C.vertex_count > 0; ++k) {
+                int row = k / 2;
+                double sg = (k & 1) ? -1.0 : 1.0; /* sg·(row) - w <= 0 */
+                swarp_vec3 n = sw_v3(sg * sw_at(&F, row, 0) - sw_at(&F, 3, 0), sg * sw_at(&F, row, 1) - sw_at(&F, 3, 1),
+                                     sg * sw_at(&F, row, 2) - sw_at(&F, 3, 2));
+                double d = sg * sw_at(&F, row, 3) - sw_at(&F, 3, 3);
+                if (sw_poly_clip(&C, n, d, &C) != SWARP_OK) break;
+            }
+            for (uint32_t i = 0; i < C.vertex_count; ++i) {
+                swarp_vec4 h = sw_xform_point(&QM, C.vertices[i]);
+                if (h.w > 0.0) zp[nz++] = C.vertices[i];
+            }
+        } else {
+            for (size_t i = 0; i < nb && nz < SWARP_BODY_MAX_POINTS + SWARP_POLY_MAX_VERTICES; ++i) {
+                swarp_vec4 h = sw_xform_point(&QM, B[i]);
+                if (h.w > 0.0) zp[nz++] = B[i];
+            }
+        }
+    }
+    s = sw_focus_fit(&QM, H, nh, zp, nz, dr, &A);
     if (swarp_status_is_error(s)) return s;
     if (s != SWARP_OK && info == SWARP_OK) info = s;
     swarp_mat4 Pc, Vinv, AQ;

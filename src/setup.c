@@ -80,7 +80,7 @@ static int sw_point_axis(const swarp_light* light, const swarp_vec3* pts, size_t
 
 /* Everything after B: light view, warp, fit, error model. */
 static swarp_status sw_setup_points(const swarp_camera* cam, const swarp_light* light, const swarp_vec3* B,
-                                    size_t nb, const swarp_vec3* H, size_t nh, double near, double far,
+                                    size_t nb, const swarp_polyhedron* B_poly, const swarp_vec3* H, size_t nh, double near, double far,
                                     const swarp_setup_options* o, swarp_setup_result* out) {
     swarp_status info = SWARP_OK, s;
     swarp_technique tech = o->technique == SWARP_TECHNIQUE_DEFAULT ? SWARP_TECHNIQUE_LISPSM : o->technique;
@@ -104,7 +104,7 @@ static swarp_status sw_setup_points(const swarp_camera* cam, const swarp_light* 
     res.view_far = far;
 
     if (tech == SWARP_TECHNIQUE_PSM) {
-        s = sw_psm_setup(cam, light, B, nb, H, nh, near, far, o, &res);
+        s = sw_psm_setup(cam, light, B, nb, B_poly, H, nh, near, far, o, &res);
         if (swarp_status_is_error(s)) return s;
         info = sw_info_merge(info, s);
     } else {
@@ -287,7 +287,7 @@ static swarp_status sw_setup_range(const swarp_camera* cam, const swarp_light* l
     s = sw_write_points(&B, out_points, capacity, out_count);
     if (s != SWARP_OK) return s;
     swarp_setup_result res;
-    swarp_status info = sw_setup_points(cam, light, B.vertices, B.vertex_count, H.vertices, H.vertex_count, near,
+    swarp_status info = sw_setup_points(cam, light, B.vertices, B.vertex_count, &B, H.vertices, H.vertex_count, near,
                                         far, o, &res);
     if (swarp_status_is_error(info)) return info;
     *out = res;
@@ -357,7 +357,7 @@ SWARP_API swarp_status swarp_setup_points(const swarp_camera* cam, const swarp_l
         for (size_t i = 0; i < receiver_count; ++i)
             if (!sw_finite3(&receivers[i])) return SWARP_ERR_NON_FINITE;
     swarp_setup_result res;
-    s = sw_setup_points(cam, light, points, count, receivers, receivers ? receiver_count : 0, near, far, &o, &res);
+    s = sw_setup_points(cam, light, points, count, NULL, receivers, receivers ? receiver_count : 0, near, far, &o, &res);
     if (swarp_status_is_error(s)) return s;
     *out = res;
     return s;

@@ -307,11 +307,185 @@ START_TEST(random_configurations_all_properties) {
 }
 END_TEST
 
+/* ---- model agreement: finite differences of the matrix vs [RHS] (2.3)-(2.8) */
+static swarp_camera overhead_camera(void) {
+    swarp_camera c;
+    memset(&c, 0, sizeof c);
+    c.eye = v3(0, 10, 0);
+    c.dir = v3(0, 0, -1);
+    c.up = v3(0, 1, 0);
+    c.fovy = 60 * DEG;
+    c.aspect = 1920.0 / 1080.0;
+    c.near = 1;
+    c.far = 100;
+    return c;
+}
+
+/* map position (texels) of a world point */
+static void texel(const swarp_mat4* m, swarp_vec3 p, double res, double out[2]) {
+    double c[4];
+    clip(m, p, c);
+    out[0] = 0.5 * res * c[0];
+    out[1] = 0.5 * res * c[1];
+}
+
+START_TEST(model_agreement_overhead) {
+    const swarp_technique techs[3] = {SWARP_TECHNIQUE_UNIFORM, SWARP_TECHNIQUE_LISPSM, SWARP_TECHNIQUE_PSM};
+    swarp_camera cam = overhead_camera();
+    swarp_light light;
+    memset(&light, 0, sizeof light);
+    light.type = SWARP_LIGHT_DIRECTIONAL;
+    light.direction = v3(0, -1, 0);
+    swarp_aabb box = {{-300, -100, -150}, {300, 100, 50}}; /* contains V: H = V */
+    const double res = 2048, sw = 1920, sh = 1080;
+    for (int t = 0; t < 3; ++t) {
+        swarp_setup_options o;
+        memset(&o, 0, sizeof o);
+        o.technique = techs[t];
+        o.map_width = o.map_height = (uint32_t)res;
+        o.screen_width = (uint32_t)sw;
+        o.screen_height = (uint32_t)sh;
+        swarp_setup_result r;
+        swarp_status s = swarp_setup(&cam, &light, &box, &o, &r, NULL, 0, NULL);
+        ck_assert_msg(!swarp_status_is_error(s), "%s", swarp_status_name(s));
+        ck_assert_double_eq_tol(r.view_near, 1.0, 1e-12);
+        ck_assert_double_eq_tol(r.view_far, 100.0, 1e-9);
+        if (techs[t] == SWARP_TECHNIQUE_LISPSM) ck_assert_double_eq_tol(r.n_eye, 1.0 + 10.0, 1e-9); /* n + sqrt(nf) */
+        if (techs[t] == SWARP_TECHNIQUE_PSM) ck_assert_double_eq_tol(r.n_eye, 1.0, 1e-12);
+        if (techs[t] == SWARP_TECHNIQUE_UNIFORM) ck_assert(isinf(r.n_eye));
+        swarp_error_config cfg;
+        memset(&cfg, 0, sizeof cfg);
+        cfg.near = r.view_near;
+        cfg.far = r.view_far;
+        cfg.theta = 0.5 * cam.fovy;
+        cfg.res_ix = sw;
+        cfg.res_iy = sh;
+        cfg.res_s = res;
+        cfg.res_t = res;
+        double worst = 0;
+        for (int k = 0; k <= 60; ++k) {
+            double z = 1.0 * pow(100.0, k / 60.0);
+            if (z > 99.9) z = 99.9;
+            if (z < 1.05) z = 1.05;
+            swarp_vec3 p = add(cam.eye, scl(cam.dir, z));
+            double h = 1e-4 * z;
+            double a[2], b[2];
+            /* along the view vector: m_z */
+            texel(&r.matrix, add(p, scl(cam.dir, -h)), res, a);
+            texel(&r.matrix, add(p, scl(cam.dir, h)), res, b);
+            double dt = hypot(b[0] - a[0], b[1] - a[1]) / (2 * h); /* texels per world unit */
+            double pixel_z = 2 * z * tan(cfg.theta) / sh;         /* world units per pixel */
+            double mz_meas = (1.0 / dt) / pixel_z;
+            double mz_model;
+            ck_assert_int_eq(swarp_error_mz(&cfg, z, r.n_eye, &mz_model), SWARP_OK);
+            /* across the view: m_x (camera right is world +x) */
+            texel(&r.matrix, add(p, v3(-h, 0, 0)), res, a);
+            texel(&r.matrix, add(p, v3(h, 0, 0)), res, b);
+            double dx = hypot(b[0] - a[0], b[1] - a[1]) / (2 * h);
+            double pixel_x = 2 * z * tan(cfg.theta) * cam.aspect / sw;
+            double mx_meas = (1.0 / dx) / pixel_x, mx_model;
+            ck_assert_int_eq(swarp_error_mx(&cfg, z, r.n_eye, &mx_model), SWARP_OK);
+            double ez = fabs(mz_meas / mz_model - 1), ex = fabs(mx_meas / mx_model - 1);
+            worst = fmax(worst, fmax(ez, ex));
+            ck_assert_msg(ez < 0.01, "tech %d z %g: m_z measured %.6g model %.6g", (int)techs[t], z, mz_meas, mz_model);
+            ck_assert_msg(ex < 0.01, "tech %d z %g: m_x measured %.6g model %.6g", (int)techs[t], z, mx_meas, mx_model);
+        }
+        /* the reported maxima are the model's maxima over [near, far] */
+        double mx_max, mz_max;
+        ck_assert_int_eq(swarp_error_max(&cfg, r.n_eye, &mx_max, &mz_max), SWARP_OK);
+        ck_assert_double_eq_tol(r.max_mx, mx_max, 1e-12 * mx_max);
+        ck_assert_double_eq_tol(r.max_mz, mz_max, 1e-12 * mz_max);
+        fprintf(stderr, "model agreement tech %d: worst relative deviation %.2e\n", (int)techs[t], worst);
+    }
+}
+END_TEST
+
+/* ---- continuity: the light rotates through the whole circle in the plane
+ * of the view direction and the camera's up vector, in 0.01° steps, through
+ * parallel (light from behind) and antiparallel (looking into the light). */
+static double mat_jump(const swarp_mat4* a, const swarp_mat4* b) {
+    double na = 0, nb = 0, d = 0;
+    for (int i = 0; i < 16; ++i) na += a->m[i] * a->m[i], nb += b->m[i] * b->m[i];
+    na = sqrt(na), nb = sqrt(nb);
+    for (int i = 0; i < 16; ++i) d = fmax(d, fabs(a->m[i] / na - b->m[i] / nb));
+    return d;
+}
+
+static swarp_vec3 rotation_light(swarp_vec3 f, swarp_vec3 u, double deg) {
+    double ang = deg * DEG;
+    /* 90°: light travels along the view (from behind the camera);
+     * 270°: light travels against the view (into the camera) */
+    return add(scl(u, -cos(ang)), scl(f, sin(ang)));
+}
+
+START_TEST(continuity_light_rotation) {
+    const swarp_technique techs[3] = {SWARP_TECHNIQUE_UNIFORM, SWARP_TECHNIQUE_LISPSM, SWARP_TECHNIQUE_PSM};
+    swarp_camera cam = overhead_camera();
+    cam.dir = unit(v3(0, -0.2, -1)); /* looking slightly down onto the scene */
+    swarp_aabb box = {{-300, -5, -150}, {300, 40, 50}};
+    swarp_light light;
+    memset(&light, 0, sizeof light);
+    light.type = SWARP_LIGHT_DIRECTIONAL;
+    swarp_vec3 f = unit(cam.dir), r = unit(cross(f, cam.up)), u = cross(r, f);
+    for (int t = 0; t < 3; ++t) {
+        swarp_setup_options o;
+        memset(&o, 0, sizeof o);
+        o.technique = techs[t];
+        swarp_setup_result prev, cur;
+        double worst = 0, worst_deg = 0, worst_refined = 0;
+        int have_prev = 0, parallel_seen = 0, uniform_seen = 0, refined = 0;
+        const int steps = 36000;
+        for (int k = 0; k <= steps; ++k) {
+            light.direction = rotation_light(f, u, k * 0.01);
+            swarp_status s = swarp_setup(&cam, &light, &box, &o, &cur, NULL, 0, NULL);
+            ck_assert_msg(!swarp_status_is_error(s), "tech %d at %.2f°: %s", (int)techs[t], k * 0.01,
+                          swarp_status_name(s));
+            for (int i = 0; i < 16; ++i) ck_assert(isfinite(cur.matrix.m[i]));
+            if (s == SWARP_INFO_LIGHT_PARALLEL || s == SWARP_INFO_WARP_UNIFORM) parallel_seen++;
+            if (techs[t] == SWARP_TECHNIQUE_LISPSM && isinf(cur.n_eye)) uniform_seen++;
+            if (have_prev) {
+                double j = mat_jump(&prev.matrix, &cur.matrix);
+                if (j > worst) worst = j, worst_deg = k * 0.01;
+                if (j > 0.01) {
+                    /* steep: refine the step 100 times.  A continuous change
+                     * shrinks with the step, a jump (flip) does not. */
+                    swarp_setup_result a = prev, b;
+                    double sub = 0;
+                    for (int m = 1; m <= 100; ++m) {
+                        light.direction = rotation_light(f, u, (k - 1) * 0.01 + m * 0.0001);
+                        ck_assert(!swarp_status_is_error(swarp_setup(&cam, &light, &box, &o, &b, NULL, 0, NULL)));
+                        sub = fmax(sub, mat_jump(&a.matrix, &b.matrix));
+                        a = b;
+                    }
+                    refined++;
+                    worst_refined = fmax(worst_refined, sub / j);
+                    ck_assert_msg(sub < 0.2 * j, "tech %d: change %g at %.2f° does not shrink when refined (%g)",
+                                  (int)techs[t], j, k * 0.01, sub);
+                }
+            }
+            prev = cur;
+            have_prev = 1;
+        }
+        fprintf(stderr,
+                "continuity tech %d: largest normalised change per 0.01° step %.3g at %.2f°; %d steep steps refined, "
+                "worst sub-step/step ratio %.3g\n",
+                (int)techs[t], worst, worst_deg, refined, worst_refined);
+        /* no flips: a flip changes normalised entries by O(1) */
+        ck_assert_msg(worst < 0.5, "tech %d: jump %g at %.2f°", (int)techs[t], worst, worst_deg);
+        if (techs[t] != SWARP_TECHNIQUE_PSM) ck_assert_msg(worst < 0.01, "tech %d: change %g", (int)techs[t], worst);
+        if (techs[t] != SWARP_TECHNIQUE_PSM) ck_assert(parallel_seen > 0);
+        if (techs[t] == SWARP_TECHNIQUE_LISPSM) ck_assert(uniform_seen > 0);
+    }
+}
+END_TEST
+
 Suite* geometry_suite(void) {
     Suite* s = suite_create("geometry");
     TCase* tc = tcase_create("properties");
     tcase_set_timeout(tc, 600);
     tcase_add_loop_test(tc, random_configurations_all_properties, 0, 4);
+    tcase_add_test(tc, model_agreement_overhead);
+    tcase_add_test(tc, continuity_light_rotation);
     suite_add_tcase(s, tc);
     return s;
 }
