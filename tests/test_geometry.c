@@ -164,11 +164,18 @@ typedef struct sweep_stats {
 } sweep_stats;
 
 /* Runs every property of the issue on one configuration and technique. */
-static void check_config(rng* R, const config* c, swarp_technique tech, swarp_depth_range dr, sweep_stats* st) {
+/* variant v picks the LiSPSM parameterisation and centre, pancaking and the
+ * PSM slide-back, so the sweep covers every option */
+static void check_config_v(rng* R, const config* c, swarp_technique tech, swarp_depth_range dr, sweep_stats* st,
+                           int v) {
     swarp_setup_options o;
     memset(&o, 0, sizeof o);
     o.technique = tech;
     o.depth_range = dr;
+    o.param = (swarp_warp_param)(v % 5); /* default, nopt, nrepar, gmnpr, pseudo */
+    if (o.param == SWARP_WARP_PARAM_PSEUDO) o.pseudo_near = 0.1, o.pseudo_far = 0.2;
+    o.center = (swarp_warp_center)((v / 5) % 3);
+    if (tech == SWARP_TECHNIQUE_PSM && v % 7 == 3) o.psm_slideback = 1;
     swarp_setup_result res;
     swarp_vec3 pts[SWARP_BODY_MAX_POINTS];
     size_t np = 0;
@@ -201,6 +208,9 @@ static void check_config(rng* R, const config* c, swarp_technique tech, swarp_de
     if (s == SWARP_INFO_PSM_INVERSE) st->inverse++;
     for (int i = 0; i < 16; ++i) ck_assert(isfinite(res.matrix.m[i]));
     ck_assert(np >= 1 && np <= SWARP_BODY_MAX_POINTS);
+    ck_assert(res.max_mx > 0 && isfinite(res.max_mx) && res.max_mz > 0 && isfinite(res.max_mz));
+    ck_assert(res.view_near >= c->cam.near && res.view_far <= c->cam.far && res.view_near < res.view_far);
+    ck_assert(res.n_eye > 0);
     /* B ⊆ S */
     for (size_t i = 0; i < np; ++i) CHECK(in_box(&c->box, pts[i], tol), "B point outside S");
     /* Clip-space tolerance: 1e-9, plus the rounding of evaluating a
@@ -287,6 +297,10 @@ static void check_config(rng* R, const config* c, swarp_technique tech, swarp_de
     }
 }
 
+static void check_config(rng* R, const config* c, swarp_technique tech, swarp_depth_range dr, sweep_stats* st) {
+    check_config_v(R, c, tech, dr, st, 0);
+}
+
 START_TEST(random_configurations_all_properties) {
     rng R = {0x5EED0001ull + (uint64_t)_i};
     sweep_stats st = {0};
@@ -295,7 +309,8 @@ START_TEST(random_configurations_all_properties) {
         config c;
         rnd_config(&R, &c, (i % 10 == 0) ? 1e5 : 0.0);
         for (int t = 0; t < N_TECHNIQUES; ++t)
-            check_config(&R, &c, techniques[t], (i & 1) ? SWARP_DEPTH_ZERO_TO_ONE : SWARP_DEPTH_NEG_ONE_TO_ONE, &st);
+            check_config_v(&R, &c, techniques[t], (i & 1) ? SWARP_DEPTH_ZERO_TO_ONE : SWARP_DEPTH_NEG_ONE_TO_ONE, &st,
+                           i);
     }
     /* the sweep must exercise the properties, not skip them */
     ck_assert_msg(st.ok > st.total / 2, "too few successful setups: %ld of %ld", st.ok, st.total);
@@ -479,6 +494,281 @@ START_TEST(continuity_light_rotation) {
 }
 END_TEST
 
+/* ---- hard cases --------------------------------------------------------- */
+static config base_config(void) {
+    config c;
+    memset(&c, 0, sizeof c);
+    c.cam = overhead_camera();
+    c.cam.dir = unit(v3(0, -0.3, -1));
+    c.light.type = SWARP_LIGHT_DIRECTIONAL;
+    c.light.direction = unit(v3(0.3, -1, 0.2));
+    c.box.min = v3(-200, -5, -300);
+    c.box.max = v3(200, 30, 60);
+    return c;
+}
+
+static void all_techniques_ok(const config* c, const char* what) {
+    rng R = {42};
+    sweep_stats st = {0};
+    for (int t = 0; t < 3; ++t)
+        for (int d = 1; d <= 2; ++d) check_config(&R, c, techniques[t], (swarp_depth_range)d, &st);
+    ck_assert_msg(st.ok == st.total, "%s: %ld of %ld setups failed", what, st.total - st.ok, st.total);
+}
+
+START_TEST(hard_far_near_ratio_and_tiny_near) {
+    config c = base_config();
+    c.cam.near = 1e-3;
+    c.cam.far = 1e3; /* f/n = 1e6 */
+    c.box.min = v3(-2000, -5, -2000);
+    c.box.max = v3(2000, 30, 2000);
+    all_techniques_ok(&c, "f/n = 1e6, near = 1e-3");
+    c.cam.near = 1e-3;
+    c.cam.far = 50;
+    all_techniques_ok(&c, "near = 1e-3");
+}
+END_TEST
+
+START_TEST(hard_large_world) {
+    for (int k = 0; k < 2; ++k) {
+        double off = k ? 1e6 : 1e5;
+        config c = base_config();
+        swarp_vec3 o = v3(off, 0.25 * off, -off);
+        c.cam.eye = add(c.cam.eye, o);
+        c.box.min = add(c.box.min, o);
+        c.box.max = add(c.box.max, o);
+        all_techniques_ok(&c, "offset world");
+        c.light.type = SWARP_LIGHT_POINT;
+        c.light.position = add(o, v3(50, 400, -100));
+        all_techniques_ok(&c, "offset world, point light");
+    }
+}
+END_TEST
+
+START_TEST(hard_flat_box) {
+    config c = base_config();
+    c.box.min.y = c.box.max.y = 0.0; /* zero height ground */
+    all_techniques_ok(&c, "flat box");
+    c.light.direction = v3(0, -1, 0);
+    all_techniques_ok(&c, "flat box, overhead light");
+    c.light.direction = v3(1, 0, 0); /* exactly grazing: B stays in the plane */
+    all_techniques_ok(&c, "flat box, grazing light");
+    /* the grazing B is the swept polygon: a ground point beyond H in the
+     * light's direction lies in B */
+    swarp_vec3 pts[SWARP_BODY_MAX_POINTS];
+    size_t np = 0;
+    ck_assert_int_eq(swarp_body_points(&c.cam, c.cam.near, c.cam.far, &c.light, &c.box, pts, SWARP_BODY_MAX_POINTS, &np),
+                     SWARP_OK);
+    double xmin = INFINITY;
+    for (size_t i = 0; i < np; ++i) {
+        ck_assert(fabs(pts[i].y) < 1e-9);
+        xmin = fmin(xmin, pts[i].x);
+    }
+    ck_assert_double_eq_tol(xmin, c.box.min.x, 1e-9); /* extruded to the box edge toward the light */
+    c.light.type = SWARP_LIGHT_POINT;
+    c.light.position = v3(-500, 0, -50); /* in the ground plane */
+    all_techniques_ok(&c, "flat box, point light in its plane");
+}
+END_TEST
+
+START_TEST(hard_camera_placement) {
+    config c = base_config();
+    /* inside the box */
+    all_techniques_ok(&c, "camera inside");
+    /* on the top face */
+    c.cam.eye.y = c.box.max.y;
+    all_techniques_ok(&c, "camera on a face");
+    /* outside, looking at it */
+    c.cam.eye = v3(0, 100, 200);
+    c.cam.far = 600;
+    c.cam.dir = unit(sub(v3(0, 0, -100), c.cam.eye));
+    all_techniques_ok(&c, "camera outside");
+    /* outside, looking away: H empty, its own status, outputs untouched */
+    c.cam.dir = scl(c.cam.dir, -1.0);
+    swarp_setup_result r, r0;
+    memset(&r, 0x5A, sizeof r);
+    r0 = r;
+    swarp_vec3 pts[4] = {{1, 2, 3}}, pts0[4];
+    memcpy(pts0, pts, sizeof pts);
+    size_t np = 77;
+    for (int t = 0; t < 3; ++t) {
+        swarp_setup_options o;
+        memset(&o, 0, sizeof o);
+        o.technique = techniques[t];
+        ck_assert_int_eq(swarp_setup(&c.cam, &c.light, &c.box, &o, &r, pts, 4, &np), SWARP_ERR_BODY_EMPTY);
+        ck_assert(memcmp(&r, &r0, sizeof r) == 0 && memcmp(pts, pts0, sizeof pts) == 0 && np == 77);
+    }
+    double n0 = -1, f0 = -1;
+    ck_assert_int_eq(swarp_body_adjusted_range(&c.cam, &c.box, &n0, &f0), SWARP_ERR_BODY_EMPTY);
+    ck_assert(n0 == -1 && f0 == -1);
+}
+END_TEST
+
+START_TEST(hard_light_parallel_antiparallel) {
+    config c = base_config();
+    c.light.direction = c.cam.dir; /* exactly parallel: from behind the camera */
+    all_techniques_ok(&c, "light parallel");
+    swarp_setup_options o;
+    memset(&o, 0, sizeof o);
+    o.technique = SWARP_TECHNIQUE_LISPSM;
+    swarp_setup_result r;
+    swarp_status s = swarp_setup(&c.cam, &c.light, &c.box, &o, &r, NULL, 0, NULL);
+    ck_assert_int_eq(s, SWARP_INFO_WARP_UNIFORM); /* the warp faded */
+    ck_assert(isinf(r.n_eye));
+    c.light.direction = scl(c.cam.dir, -1.0); /* antiparallel: duelling frusta */
+    all_techniques_ok(&c, "light antiparallel");
+    s = swarp_setup(&c.cam, &c.light, &c.box, &o, &r, NULL, 0, NULL);
+    ck_assert_int_eq(s, SWARP_INFO_WARP_UNIFORM);
+    /* the fade is continuous: n' grows without bound as γ -> 0 */
+    double prev = 0;
+    for (int k = 1; k <= 6; ++k) {
+        double g = pow(10.0, -k);
+        c.light.direction = unit(add(c.cam.dir, scl(v3(1, 0, 0), tan(g))));
+        ck_assert(!swarp_status_is_error(swarp_setup(&c.cam, &c.light, &c.box, &o, &r, NULL, 0, NULL)));
+        ck_assert_msg(r.n_eye >= prev, "gamma %g: n %g after %g", g, r.n_eye, prev);
+        prev = r.n_eye;
+    }
+    ck_assert(prev > 1e4);
+}
+END_TEST
+
+START_TEST(hard_point_light_positions) {
+    config c = base_config();
+    c.light.type = SWARP_LIGHT_POINT;
+    /* omni light inside the view frustum: one perspective map cannot see
+     * all around it: specific status, outputs untouched */
+    c.light.position = add(c.cam.eye, scl(c.cam.dir, 20));
+    swarp_setup_result r, r0;
+    memset(&r, 0x33, sizeof r);
+    r0 = r;
+    for (int t = 0; t < 3; ++t) {
+        swarp_setup_options o;
+        memset(&o, 0, sizeof o);
+        o.technique = techniques[t];
+        ck_assert_int_eq(swarp_setup(&c.cam, &c.light, &c.box, &o, &r, NULL, 0, NULL), SWARP_ERR_LIGHT_INSIDE_BODY);
+        ck_assert(memcmp(&r, &r0, sizeof r) == 0);
+    }
+    /* a spot inside the frustum pointing away from the camera: the spot's
+     * pyramid keeps B in front of it; the apex region is cut (info) */
+    c.light.cone_angle = 40 * DEG;
+    c.light.direction = c.cam.dir;
+    for (int t = 0; t < 2; ++t) {
+        swarp_setup_options o;
+        memset(&o, 0, sizeof o);
+        o.technique = techniques[t];
+        swarp_status s = swarp_setup(&c.cam, &c.light, &c.box, &o, &r, NULL, 0, NULL);
+        ck_assert_msg(s == SWARP_OK || s == SWARP_INFO_LIGHT_NEAR_CLIPPED || s == SWARP_INFO_LIGHT_PARALLEL ||
+                          s == SWARP_INFO_WARP_UNIFORM,
+                      "%s", swarp_status_name(s));
+        for (int i = 0; i < 16; ++i) ck_assert(isfinite(r.matrix.m[i]));
+    }
+    /* on the near plane (omni): the body surrounds the light's half space */
+    c.light.cone_angle = 0;
+    c.light.position = add(c.cam.eye, scl(c.cam.dir, c.cam.near));
+    for (int t = 0; t < 3; ++t) {
+        swarp_setup_options o;
+        memset(&o, 0, sizeof o);
+        o.technique = techniques[t];
+        swarp_status s = swarp_setup(&c.cam, &c.light, &c.box, &o, &r, NULL, 0, NULL);
+        ck_assert_msg(s == SWARP_ERR_LIGHT_INSIDE_BODY || !swarp_status_is_error(s), "%s", swarp_status_name(s));
+        if (!swarp_status_is_error(s))
+            for (int i = 0; i < 16; ++i) ck_assert(isfinite(r.matrix.m[i]));
+    }
+    /* above the scene: fine */
+    c.light.position = v3(10, 300, -50);
+    all_techniques_ok(&c, "point light above");
+}
+END_TEST
+
+START_TEST(hard_degenerate_box) {
+    config c = base_config();
+    swarp_setup_result r;
+    c.box.min = c.box.max = v3(0, 0, -10); /* zero-size box */
+    ck_assert_int_eq(swarp_setup(&c.cam, &c.light, &c.box, NULL, &r, NULL, 0, NULL), SWARP_ERR_BOX_DEGENERATE);
+    c.box.min = v3(0, 0, -10);
+    c.box.max = v3(0, 0, 10); /* a segment */
+    ck_assert_int_eq(swarp_setup(&c.cam, &c.light, &c.box, NULL, &r, NULL, 0, NULL), SWARP_ERR_BOX_DEGENERATE);
+    c.box.max = v3(-1, 5, 10); /* inverted */
+    ck_assert_int_eq(swarp_setup(&c.cam, &c.light, &c.box, NULL, &r, NULL, 0, NULL), SWARP_ERR_BOX_INVERTED);
+}
+END_TEST
+
+/* every double of the inputs, poisoned with NaN, +inf and -inf */
+START_TEST(bad_input_non_finite_and_null) {
+    const double poison[3] = {NAN, INFINITY, -INFINITY};
+    for (int pz = 0; pz < 3; ++pz) {
+        for (int which = 0; which < 3; ++which) {
+            config base = base_config();
+            base.light.type = SWARP_LIGHT_POINT;
+            base.light.position = v3(10, 300, -50);
+            base.light.cone_angle = 30 * DEG;
+            base.light.direction = v3(0, -1, 0);
+            size_t nfields = which == 0 ? 13 : (which == 1 ? 7 : 6);
+            for (size_t f = 0; f < nfields; ++f) {
+                config c = base;
+                double* d = which == 0 ? &c.cam.eye.x : (which == 1 ? &c.light.direction.x : &c.box.min.x);
+                d[f] = poison[pz];
+                swarp_setup_result r, r0;
+                memset(&r, 0x7E, sizeof r);
+                r0 = r;
+                swarp_vec3 pts[SWARP_BODY_MAX_POINTS];
+                memset(pts, 0x11, sizeof pts);
+                size_t np = 12345;
+                swarp_status s = swarp_setup(&c.cam, &c.light, &c.box, NULL, &r, pts, SWARP_BODY_MAX_POINTS, &np);
+                ck_assert_msg(s == SWARP_ERR_NON_FINITE, "field %zu of %d: %s", f, which, swarp_status_name(s));
+                ck_assert(memcmp(&r, &r0, sizeof r) == 0 && np == 12345);
+                for (size_t i = 0; i < SWARP_BODY_MAX_POINTS; ++i) ck_assert(pts[i].x == pts[0].x);
+            }
+        }
+    }
+    config c = base_config();
+    swarp_setup_result r;
+    ck_assert_int_eq(swarp_setup(NULL, &c.light, &c.box, NULL, &r, NULL, 0, NULL), SWARP_ERR_NULL_POINTER);
+    ck_assert_int_eq(swarp_setup(&c.cam, NULL, &c.box, NULL, &r, NULL, 0, NULL), SWARP_ERR_NULL_POINTER);
+    ck_assert_int_eq(swarp_setup(&c.cam, &c.light, NULL, NULL, &r, NULL, 0, NULL), SWARP_ERR_NULL_POINTER);
+    ck_assert_int_eq(swarp_setup(&c.cam, &c.light, &c.box, NULL, NULL, NULL, 0, NULL), SWARP_ERR_NULL_POINTER);
+    /* zero vectors, bad fov, bad near/far, bad enums, reserved fields */
+    config b = c;
+    b.light.direction = v3(0, 0, 0);
+    ck_assert_int_eq(swarp_setup(&b.cam, &b.light, &b.box, NULL, &r, NULL, 0, NULL), SWARP_ERR_ZERO_VECTOR);
+    b = c;
+    b.cam.dir = v3(0, 0, 0);
+    ck_assert_int_eq(swarp_setup(&b.cam, &b.light, &b.box, NULL, &r, NULL, 0, NULL), SWARP_ERR_ZERO_VECTOR);
+    b = c;
+    b.cam.up = b.cam.dir;
+    ck_assert_int_eq(swarp_setup(&b.cam, &b.light, &b.box, NULL, &r, NULL, 0, NULL), SWARP_ERR_DEGENERATE);
+    b = c;
+    b.cam.fovy = PI;
+    ck_assert_int_eq(swarp_setup(&b.cam, &b.light, &b.box, NULL, &r, NULL, 0, NULL), SWARP_ERR_FOV);
+    b = c;
+    b.cam.far = b.cam.near;
+    ck_assert_int_eq(swarp_setup(&b.cam, &b.light, &b.box, NULL, &r, NULL, 0, NULL), SWARP_ERR_NEAR_FAR);
+    b = c;
+    b.cam._reserved[2] = 1;
+    ck_assert_int_eq(swarp_setup(&b.cam, &b.light, &b.box, NULL, &r, NULL, 0, NULL), SWARP_ERR_RESERVED_NONZERO);
+    b = c;
+    b.light.type = (swarp_light_type)7;
+    ck_assert_int_eq(swarp_setup(&b.cam, &b.light, &b.box, NULL, &r, NULL, 0, NULL), SWARP_ERR_UNKNOWN_ENUM);
+    swarp_setup_options o;
+    memset(&o, 0, sizeof o);
+    o.technique = (swarp_technique)9;
+    ck_assert_int_eq(swarp_setup(&c.cam, &c.light, &c.box, &o, &r, NULL, 0, NULL), SWARP_ERR_UNKNOWN_ENUM);
+    memset(&o, 0, sizeof o);
+    o._reserved[3] = 1;
+    ck_assert_int_eq(swarp_setup(&c.cam, &c.light, &c.box, &o, &r, NULL, 0, NULL), SWARP_ERR_RESERVED_NONZERO);
+    memset(&o, 0, sizeof o);
+    o.param = SWARP_WARP_PARAM_USER;
+    o.n_user = -1;
+    ck_assert_int_eq(swarp_setup(&c.cam, &c.light, &c.box, &o, &r, NULL, 0, NULL), SWARP_ERR_OUT_OF_RANGE);
+    o.n_user = NAN;
+    ck_assert_int_eq(swarp_setup(&c.cam, &c.light, &c.box, &o, &r, NULL, 0, NULL), SWARP_ERR_NON_FINITE);
+    /* capacity: too small gives the needed count and leaves the rest alone */
+    swarp_vec3 pts[2];
+    size_t np = 0;
+    ck_assert_int_eq(swarp_setup(&c.cam, &c.light, &c.box, NULL, &r, pts, 2, &np), SWARP_ERR_CAPACITY);
+    ck_assert(np > 2 && np <= SWARP_BODY_MAX_POINTS);
+}
+END_TEST
+
 Suite* geometry_suite(void) {
     Suite* s = suite_create("geometry");
     TCase* tc = tcase_create("properties");
@@ -486,6 +776,14 @@ Suite* geometry_suite(void) {
     tcase_add_loop_test(tc, random_configurations_all_properties, 0, 4);
     tcase_add_test(tc, model_agreement_overhead);
     tcase_add_test(tc, continuity_light_rotation);
+    tcase_add_test(tc, hard_far_near_ratio_and_tiny_near);
+    tcase_add_test(tc, hard_large_world);
+    tcase_add_test(tc, hard_flat_box);
+    tcase_add_test(tc, hard_camera_placement);
+    tcase_add_test(tc, hard_light_parallel_antiparallel);
+    tcase_add_test(tc, hard_point_light_positions);
+    tcase_add_test(tc, hard_degenerate_box);
+    tcase_add_test(tc, bad_input_non_finite_and_null);
     suite_add_tcase(s, tc);
     return s;
 }
