@@ -769,6 +769,183 @@ START_TEST(bad_input_non_finite_and_null) {
 }
 END_TEST
 
+/* ---- polyhedra ------------------------------------------------------------ */
+static double plane_eval(const swarp_plane* p, swarp_vec3 v) { return p->a * v.x + p->b * v.y + p->c * v.z + p->d; }
+
+/* structural invariants: faces on their planes, planes outward (every vertex
+ * inside every plane), loops counter-clockwise, no near-duplicate vertices */
+static void check_poly_invariants(const swarp_polyhedron* P) {
+    double scale = 0;
+    for (uint32_t i = 0; i < P->vertex_count; ++i)
+        scale = fmax(scale, fmax(fabs(P->vertices[i].x), fmax(fabs(P->vertices[i].y), fabs(P->vertices[i].z))));
+    double tol = 1e-9 * fmax(scale, 1e-300);
+    for (uint32_t i = 0; i < P->vertex_count; ++i)
+        for (uint32_t j = i + 1; j < P->vertex_count; ++j)
+            ck_assert_msg(len(sub(P->vertices[i], P->vertices[j])) > SWARP_POLY_EPS_REL * scale, "near-duplicate");
+    for (uint32_t f = 0; f < P->face_count; ++f) {
+        const swarp_plane* pl = &P->planes[f];
+        ck_assert_double_eq_tol(sqrt(pl->a * pl->a + pl->b * pl->b + pl->c * pl->c), 1.0, 1e-12);
+        uint32_t n = P->face_vertex_count[f];
+        ck_assert(n >= 3);
+        swarp_vec3 nw = {0, 0, 0};
+        for (uint32_t k = 0; k < n; ++k) {
+            swarp_vec3 a = P->vertices[P->face_vertices[f][k]], b = P->vertices[P->face_vertices[f][(k + 1) % n]];
+            ck_assert(fabs(plane_eval(pl, a)) < tol);
+            nw = add(nw, cross(a, b));
+        }
+        ck_assert(dot(nw, v3(pl->a, pl->b, pl->c)) >= -tol * tol); /* CCW seen from outside */
+        for (uint32_t i = 0; i < P->vertex_count; ++i) ck_assert(plane_eval(pl, P->vertices[i]) < tol);
+    }
+}
+
+START_TEST(poly_clip_against_brute_force) {
+    rng R = {777};
+    for (int t = 0; t < 2000; ++t) {
+        swarp_vec3 c = v3(rnd(&R, -10, 10), rnd(&R, -10, 10), rnd(&R, -10, 10));
+        swarp_vec3 h = v3(rnd(&R, 0.1, 5), rnd(&R, 0.1, 5), rnd(&R, 0.1, 5));
+        swarp_aabb box = {sub(c, h), add(c, h)};
+        swarp_polyhedron P;
+        ck_assert_int_eq(swarp_poly_from_aabb(&box, &P), SWARP_OK);
+        ck_assert_int_eq(P.vertex_count, 8);
+        ck_assert_int_eq(P.face_count, 6);
+        check_poly_invariants(&P);
+        swarp_plane planes[4];
+        int np = 1 + (int)(rng_next(&R) % 4);
+        for (int k = 0; k < np; ++k) {
+            swarp_vec3 n = rnd_unit(&R);
+            swarp_vec3 q = add(c, v3(rnd(&R, -1, 1) * h.x, rnd(&R, -1, 1) * h.y, rnd(&R, -1, 1) * h.z));
+            planes[k] = (swarp_plane){n.x, n.y, n.z, -dot(n, q)};
+            ck_assert_int_eq(swarp_poly_clip(&P, &planes[k], &P), SWARP_OK); /* in place */
+            check_poly_invariants(&P);
+        }
+        /* brute force: a point of the box is in the result iff it satisfies
+         * the planes (away from the boundary) */
+        for (int m = 0; m < 50; ++m) {
+            swarp_vec3 p = add(c, v3(rnd(&R, -1, 1) * h.x, rnd(&R, -1, 1) * h.y, rnd(&R, -1, 1) * h.z));
+            double worst = -INFINITY;
+            for (int k = 0; k < np; ++k) worst = fmax(worst, plane_eval(&planes[k], p));
+            if (fabs(worst) < 1e-6) continue;
+            int inside = P.vertex_count > 0 && P.face_count > 0;
+            for (uint32_t f = 0; f < P.face_count && inside; ++f)
+                if (plane_eval(&P.planes[f], p) > 1e-9) inside = 0;
+            ck_assert_int_eq(inside, worst < 0);
+        }
+        /* every vertex of the result satisfies the planes and the box */
+        for (uint32_t i = 0; i < P.vertex_count; ++i) {
+            ck_assert(in_box(&box, P.vertices[i], 1e-9));
+            for (int k = 0; k < np; ++k) ck_assert(plane_eval(&planes[k], P.vertices[i]) < 1e-9);
+        }
+    }
+}
+END_TEST
+
+START_TEST(poly_camera_and_inverse_matrix_agree) {
+    rng R = {99};
+    for (int t = 0; t < 500; ++t) {
+        config c;
+        rnd_config(&R, &c, 0);
+        swarp_polyhedron A, B;
+        ck_assert_int_eq(swarp_poly_from_camera(&c.cam, &A), SWARP_OK);
+        check_poly_invariants(&A);
+        /* the inverse of an independently built GL view-projection */
+        swarp_vec3 f = unit(c.cam.dir), r = unit(cross(f, c.cam.up)), u = cross(r, f);
+        swarp_mat4 V = {{r.x, u.x, -f.x, 0, r.y, u.y, -f.y, 0, r.z, u.z, -f.z, 0, -dot(r, c.cam.eye), -dot(u, c.cam.eye),
+                         dot(f, c.cam.eye), 1}};
+        double ty = tan(0.5 * c.cam.fovy), n = c.cam.near, fa = c.cam.far;
+        swarp_mat4 P = {{1 / (ty * c.cam.aspect), 0, 0, 0, 0, 1 / ty, 0, 0, 0, 0, -(fa + n) / (fa - n), -1, 0, 0,
+                         -2 * fa * n / (fa - n), 0}};
+        swarp_mat4 VP, inv;
+        ck_assert_int_eq(swarp_mat4_mul(&P, &V, &VP), SWARP_OK);
+        ck_assert_int_eq(swarp_mat4_invert(&VP, &inv), SWARP_OK);
+        ck_assert_int_eq(swarp_poly_from_inverse_matrix(&inv, SWARP_DEPTH_NEG_ONE_TO_ONE, &B), SWARP_OK);
+        ck_assert_int_eq(A.vertex_count, 8);
+        ck_assert_int_eq(B.vertex_count, 8);
+        for (uint32_t i = 0; i < 8; ++i) {
+            double best = INFINITY;
+            for (uint32_t j = 0; j < 8; ++j) best = fmin(best, len(sub(A.vertices[i], B.vertices[j])));
+            ck_assert_msg(best < 1e-6 * fa, "corner %u off by %g", i, best);
+            ck_assert(in_frustum(&c.cam, n, fa, A.vertices[i], 1e-9 * fa));
+        }
+    }
+    swarp_polyhedron A;
+    swarp_plane zero = {0, 0, 0, 1}, nanp = {NAN, 0, 1, 0};
+    swarp_aabb box = {{0, 0, 0}, {1, 1, 1}};
+    ck_assert_int_eq(swarp_poly_from_aabb(&box, &A), SWARP_OK);
+    swarp_polyhedron A0 = A;
+    ck_assert_int_eq(swarp_poly_clip(&A, &zero, &A), SWARP_ERR_ZERO_VECTOR);
+    ck_assert_int_eq(swarp_poly_clip(&A, &nanp, &A), SWARP_ERR_NON_FINITE);
+    ck_assert_int_eq(swarp_poly_clip(NULL, &zero, &A), SWARP_ERR_NULL_POINTER);
+    ck_assert(memcmp(&A, &A0, sizeof A) == 0);
+    swarp_aabb inv = {{1, 0, 0}, {0, 1, 1}};
+    ck_assert_int_eq(swarp_poly_from_aabb(&inv, &A), SWARP_ERR_BOX_INVERTED);
+    ck_assert_int_eq(swarp_poly_clip_aabb(&A0, &inv, &A), SWARP_ERR_BOX_INVERTED);
+}
+END_TEST
+
+/* [RHS] §3.3.1: adjusted near/far = min/max view depth over V ∩ S */
+START_TEST(adjusted_range_brackets_samples) {
+    rng R = {2024};
+    int checked = 0;
+    for (int t = 0; t < 600; ++t) {
+        config c;
+        rnd_config(&R, &c, 0);
+        double n, f;
+        swarp_status s = swarp_body_adjusted_range(&c.cam, &c.box, &n, &f);
+        if (s == SWARP_ERR_BODY_EMPTY) continue;
+        ck_assert_int_eq(s, SWARP_OK);
+        ck_assert(n >= c.cam.near && f <= c.cam.far && n <= f);
+        swarp_vec3 v = unit(c.cam.dir);
+        double lo = INFINITY, hi = -INFINITY;
+        for (int k = 0; k < 3000; ++k) {
+            swarp_vec3 p = rnd_in_frustum(&R, &c.cam, c.cam.near, c.cam.far);
+            if (!in_box(&c.box, p, 0)) continue;
+            double z = dot(sub(p, c.cam.eye), v);
+            lo = fmin(lo, z), hi = fmax(hi, z);
+        }
+        if (!(lo <= hi)) continue;
+        double tol = 1e-9 * c.cam.far;
+        ck_assert(lo >= n - tol && hi <= f + tol);
+        checked++;
+    }
+    ck_assert(checked > 200);
+}
+END_TEST
+
+START_TEST(focus_fit_maps_to_the_cube) {
+    rng R = {31337};
+    for (int t = 0; t < 500; ++t) {
+        swarp_vec3 pts[20];
+        for (int i = 0; i < 20; ++i) pts[i] = v3(rnd(&R, -50, 50), rnd(&R, -50, 50), rnd(&R, -50, 50));
+        swarp_mat4 L = {{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1}};
+        L.m[3] = rnd(&R, -0.001, 0.001); /* a mild perspective, w stays > 0 */
+        L.m[7] = rnd(&R, -0.001, 0.001);
+        L.m[15] = 1.0;
+        for (int d = 1; d <= 2; ++d) {
+            swarp_mat4 A, AL;
+            ck_assert_int_eq(swarp_focus_fit(&L, pts, 20, NULL, 0, (swarp_depth_range)d, &A), SWARP_OK);
+            ck_assert_int_eq(swarp_mat4_mul(&A, &L, &AL), SWARP_OK);
+            double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+            for (int i = 0; i < 20; ++i) {
+                double cc[4];
+                clip(&AL, pts[i], cc);
+                for (int k = 0; k < 3; ++k) lo[k] = fmin(lo[k], cc[k]), hi[k] = fmax(hi[k], cc[k]);
+            }
+            ck_assert_double_eq_tol(lo[0], -1, 1e-12);
+            ck_assert_double_eq_tol(hi[0], 1, 1e-12);
+            ck_assert_double_eq_tol(lo[1], -1, 1e-12);
+            ck_assert_double_eq_tol(hi[1], 1, 1e-12);
+            ck_assert_double_eq_tol(lo[2], d == 2 ? 0 : -1, 1e-12);
+            ck_assert_double_eq_tol(hi[2], 1, 1e-12);
+        }
+    }
+    swarp_vec3 one = {1, 2, 3};
+    swarp_mat4 I = {{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1}}, A;
+    ck_assert_int_eq(swarp_focus_fit(&I, &one, 1, NULL, 0, SWARP_DEPTH_DEFAULT, &A), SWARP_INFO_FLAT_EXTENT);
+    for (int i = 0; i < 16; ++i) ck_assert(isfinite(A.m[i]));
+    ck_assert_int_eq(swarp_focus_fit(&I, &one, 1, NULL, 0, (swarp_depth_range)5, &A), SWARP_ERR_UNKNOWN_ENUM);
+}
+END_TEST
+
 Suite* geometry_suite(void) {
     Suite* s = suite_create("geometry");
     TCase* tc = tcase_create("properties");
@@ -784,6 +961,10 @@ Suite* geometry_suite(void) {
     tcase_add_test(tc, hard_point_light_positions);
     tcase_add_test(tc, hard_degenerate_box);
     tcase_add_test(tc, bad_input_non_finite_and_null);
+    tcase_add_test(tc, poly_clip_against_brute_force);
+    tcase_add_test(tc, poly_camera_and_inverse_matrix_agree);
+    tcase_add_test(tc, adjusted_range_brackets_samples);
+    tcase_add_test(tc, focus_fit_maps_to_the_cube);
     suite_add_tcase(s, tc);
     return s;
 }
