@@ -70,8 +70,8 @@ static swarp_status sw_poly_flat_from_loop(const swarp_vec3* pts, uint32_t n, sw
  * Point light: hull of the polygon and the point. */
 static swarp_status sw_flat_extend(const swarp_polyhedron* H, swarp_vec3 u, double T,
                                    const swarp_vec3* point, swarp_polyhedron* out) {
-    if (H->face_count == 0) { /* a point or nothing: sweep/hull of a point is a segment */
-        *out = *H;
+    if (H->face_count == 0) { /* a point or nothing: kept as it is */
+        sw_poly_copy(H, out);
         return SWARP_OK;
     }
     const uint8_t* loop = H->face_vertices[0];
@@ -83,7 +83,7 @@ static swarp_status sw_flat_extend(const swarp_polyhedron* H, swarp_vec3 u, doub
         swarp_vec3 a = H->vertices[loop[i]], b = H->vertices[loop[(i + 1) % k]];
         swarp_vec3 m = sw_cross(sw_sub(b, a), n); /* outward in-plane edge normal */
         if (point)
-            cls[i] = sw_dot(m, sw_sub(*point, a)) > eps * sw_len(m);
+            cls[i] = sw_dot(m, sw_sub(*point, a)) > eps * sw_glen(m);
         else
             cls[i] = sw_dot(m, u) > 0.0;
     }
@@ -124,7 +124,7 @@ static swarp_status sw_extend(const swarp_polyhedron* H, swarp_vec3 u, double T,
         any_front |= front[f];
     }
     if (!any_front) { /* apex inside H: the hull is H */
-        *out = *H;
+        sw_poly_copy(H, out);
         return SWARP_OK;
     }
     /* vertices: H's, then either the translated copies or the apex */
@@ -182,7 +182,7 @@ static swarp_status sw_extend(const swarp_polyhedron* H, swarp_vec3 u, double T,
                     nn = sw_cross(sw_sub(va, vb), dir); /* (a - b) x u: outward for CCW b->a->... */
                 }
                 swarp_vec3 nu = {0, 0, 1};
-                if (!sw_normalize(nn, &nu)) continue; /* edge parallel to u: zero-area side */
+                if (!sw_gnormalize(nn, &nu)) continue; /* edge parallel to u: zero-area side */
                 out->planes[tf] = (swarp_plane){nu.x, nu.y, nu.z, -sw_dot(nu, out->vertices[a])};
                 out->face_vertex_count[tf] = qn;
                 ++tf;
@@ -230,9 +230,9 @@ swarp_status sw_body_h(const swarp_camera* cam, double near, double far, const s
 /* The square pyramid L circumscribing the spot cone: 4 planes through l. */
 static swarp_status sw_clip_light_pyramid(swarp_polyhedron* B, const swarp_light* light) {
     swarp_vec3 a = {0, 0, 1}, e1 = {1, 0, 0}, e2;
-    sw_normalize(light->direction, &a);
+    sw_gnormalize(light->direction, &a);
     swarp_vec3 ref = fabs(a.x) < 0.6 ? sw_v3(1, 0, 0) : (fabs(a.y) < 0.6 ? sw_v3(0, 1, 0) : sw_v3(0, 0, 1));
-    sw_normalize(sw_cross(ref, a), &e1);
+    sw_gnormalize(sw_cross(ref, a), &e1);
     e2 = sw_cross(a, e1);
     double c = cos(light->cone_angle), s = sin(light->cone_angle);
     swarp_vec3 ns[4] = {sw_sub(sw_scale(e1, c), sw_scale(a, s)), sw_sub(sw_scale(e1, -c), sw_scale(a, s)),
@@ -257,10 +257,10 @@ swarp_status sw_body_from_h(const swarp_polyhedron* H, const swarp_light* light,
         if (light->type == SWARP_LIGHT_POINT) {
             const swarp_vec3* l = &light->position;
             double off = p.a * l->x + p.b * l->y + p.c * l->z + p.d;
-            flat = fabs(off) <= SW_BODY_VISIBLE_EPS_REL * fmax(sw_poly_scale(H), sw_len(*l));
+            flat = fabs(off) <= SW_BODY_VISIBLE_EPS_REL * sw_max(sw_poly_scale(H), sw_glen(*l));
         } else {
             swarp_vec3 dd = {0, -1, 0};
-            sw_normalize(light->direction, &dd);
+            sw_gnormalize(light->direction, &dd);
             flat = fabs(p.a * dd.x + p.b * dd.y + p.c * dd.z) <= 1e-15; /* exactly grazing */
         }
     }
@@ -268,7 +268,7 @@ swarp_status sw_body_from_h(const swarp_polyhedron* H, const swarp_light* light,
         swarp_vec3 l = light->position;
         s = flat ? sw_flat_extend(H, sw_v3(0, 0, 0), 0.0, &l, &M) : sw_extend(H, sw_v3(0, 0, 0), 0.0, &l, &M);
         if (s != SWARP_OK) return s;
-        sw_poly_finalize(&M);
+        sw_poly_finalize(&M, H->vertex_count);
         s = sw_poly_clip_box(&M, box, B);
         if (s != SWARP_OK) return s;
         if (light->cone_angle > 0.0) {
@@ -277,13 +277,13 @@ swarp_status sw_body_from_h(const swarp_polyhedron* H, const swarp_light* light,
         }
     } else {
         swarp_vec3 u = {0, 0, 1};
-        sw_normalize(sw_scale(light->direction, -1.0), &u);
+        sw_gnormalize(sw_scale(light->direction, -1.0), &u);
         /* T: longer than any path inside S */
-        double diag = sw_len(sw_sub(box->max, box->min));
+        double diag = sw_glen(sw_sub(box->max, box->min));
         double T = 2.0 * diag + 1e-300;
         s = flat ? sw_flat_extend(H, u, T, NULL, &M) : sw_extend(H, u, T, NULL, &M);
         if (s != SWARP_OK) return s;
-        sw_poly_finalize(&M);
+        sw_poly_finalize(&M, H->vertex_count);
         s = sw_poly_clip_box(&M, box, B);
         if (s != SWARP_OK) return s;
     }
@@ -361,7 +361,7 @@ SWARP_API swarp_status swarp_body_adjusted_range(const swarp_camera* cam, const 
     double mn, mx;
     sw_depth_range_of(&H, cam->eye, f, &mn, &mx);
     /* H ⊂ V: clamp rounding to the frustum's own range */
-    *out_near = fmax(mn, cam->near);
-    *out_far = fmin(fmax(mx, *out_near), cam->far);
+    *out_near = sw_max(mn, cam->near);
+    *out_far = sw_min(sw_max(mx, *out_near), cam->far);
     return SWARP_OK;
 }

@@ -25,7 +25,7 @@ static int sw_aligned_up(const swarp_camera* cam, swarp_vec3 a, swarp_vec3* up) 
     swarp_vec3 v, r, cu;
     sw_camera_basis(cam, &v, &r, &cu);
     swarp_vec3 v_perp = sw_sub(v, sw_scale(a, sw_dot(v, a)));
-    double s = sw_len(v_perp); /* sin γ */
+    double s = sw_glen(v_perp); /* sin γ */
     int blend = s < SWARP_FOCUS_BLEND_SIN;
     swarp_vec3 u = v_perp;
     if (blend) {
@@ -34,19 +34,19 @@ static int sw_aligned_up(const swarp_camera* cam, swarp_vec3 a, swarp_vec3* up) 
         swarp_vec3 r_perp = sw_sub(r, sw_scale(a, sw_dot(r, a)));
         u = sw_add(v_perp, sw_scale(r_perp, w));
     }
-    if (!sw_normalize(u, up)) {
+    if (!sw_gnormalize(u, up)) {
         /* the field's single zero (measure zero): any perpendicular works */
         swarp_vec3 ref = fabs(a.x) < 0.6 ? sw_v3(1, 0, 0) : sw_v3(0, 1, 0);
-        sw_normalize(sw_cross(a, ref), up);
+        sw_gnormalize(sw_cross(a, ref), up);
     }
     /* exact perpendicularity for the look-at */
-    sw_normalize(sw_sub(*up, sw_scale(a, sw_dot(*up, a))), up);
+    sw_gnormalize(sw_sub(*up, sw_scale(a, sw_dot(*up, a))), up);
     return blend;
 }
 
 swarp_status sw_light_view(const swarp_camera* cam, swarp_vec3 origin, swarp_vec3 forward, swarp_mat4* out) {
     swarp_vec3 a = {0, 0, -1}, up = {0, 1, 0};
-    if (!sw_normalize(forward, &a)) return SWARP_ERR_ZERO_VECTOR;
+    if (!sw_gnormalize(forward, &a)) return SWARP_ERR_ZERO_VECTOR;
     int blend = sw_aligned_up(cam, a, &up);
     sw_look_at(origin, a, up, out);
     return blend ? SWARP_INFO_LIGHT_PARALLEL : SWARP_OK;
@@ -70,7 +70,7 @@ SWARP_API swarp_status swarp_focus_light_view(const swarp_camera* cam, const swa
         } else {
             forward = sw_sub(cam->eye, light->position);
         }
-        if (!(sw_len(forward) > 0.0)) return SWARP_ERR_ZERO_VECTOR;
+        if (!(sw_glen(forward) > 0.0)) return SWARP_ERR_ZERO_VECTOR;
     } else {
         origin = cam->eye;
         forward = light->direction;

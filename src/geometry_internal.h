@@ -5,6 +5,23 @@
 
 #include "swarp_internal.h"
 
+/* Fast length for the hot paths: sqrt of the sum of squares, exact enough
+ * and safe up to |v| ~ 1e150; falls back to the overflow-proof hypot of
+ * swarp_internal.h outside that range. */
+static inline double sw_glen(swarp_vec3 a) {
+    double s = a.x * a.x + a.y * a.y + a.z * a.z;
+    if (s > 1e-290 && s < 1e290) return sqrt(s);
+    return sw_len(a);
+}
+static inline int sw_gnormalize(swarp_vec3 a, swarp_vec3* out) {
+    double l = sw_glen(a);
+    if (!(l > 0.0) || !sw_finite(l)) return 0;
+    *out = sw_scale(a, 1.0 / l);
+    return 1;
+}
+static inline double sw_max(double a, double b) { return a > b ? a : b; }
+static inline double sw_min(double a, double b) { return a < b ? a : b; }
+
 /* ---- argument checks shared by the geometry entry points ---------------- */
 swarp_status sw_check_camera_shape(const swarp_camera* cam);   /* all but near/far */
 swarp_status sw_check_camera(const swarp_camera* cam);         /* + near/far */
@@ -22,8 +39,12 @@ swarp_status sw_poly_clip(const swarp_polyhedron* in, swarp_vec3 n, double d,
 swarp_status sw_poly_clip_box(const swarp_polyhedron* in, const swarp_aabb* box,
                               swarp_polyhedron* out);
 double sw_poly_scale(const swarp_polyhedron* p);
-/* merge near-duplicate vertices, drop degenerate faces */
-void sw_poly_finalize(swarp_polyhedron* p);
+/* merge near-duplicate vertices (vertices from index first_new on are
+ * compared with all earlier ones; those before are known to be apart),
+ * drop degenerate faces and unreferenced vertices */
+void sw_poly_finalize(swarp_polyhedron* p, uint32_t first_new);
+/* copy only the used parts */
+void sw_poly_copy(const swarp_polyhedron* in, swarp_polyhedron* out);
 
 /* H = V ∩ S and B without argument checks. */
 swarp_status sw_body_h(const swarp_camera* cam, double near, double far, const swarp_aabb* box,

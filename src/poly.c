@@ -22,9 +22,9 @@ swarp_status sw_check_camera_shape(const swarp_camera* cam) {
     if (!(cam->fovy > 0.0 && cam->fovy < SWARP_PI)) return SWARP_ERR_FOV;
     if (!(cam->aspect > 0.0)) return SWARP_ERR_OUT_OF_RANGE;
     swarp_vec3 f, u;
-    if (!sw_normalize(cam->dir, &f) || !sw_normalize(cam->up, &u)) return SWARP_ERR_ZERO_VECTOR;
+    if (!sw_gnormalize(cam->dir, &f) || !sw_gnormalize(cam->up, &u)) return SWARP_ERR_ZERO_VECTOR;
     /* up must leave a usable right vector: sin(angle(dir, up)) >= 1e-9 */
-    if (!(sw_len(sw_cross(f, u)) >= 1e-9)) return SWARP_ERR_DEGENERATE;
+    if (!(sw_glen(sw_cross(f, u)) >= 1e-9)) return SWARP_ERR_DEGENERATE;
     return SWARP_OK;
 }
 
@@ -48,12 +48,12 @@ swarp_status sw_check_light(const swarp_light* light) {
             if (!(light->cone_angle > 0.0 && light->cone_angle < 0.5 * SWARP_PI)) return SWARP_ERR_OUT_OF_RANGE;
             if (!sw_finite3(&light->direction)) return SWARP_ERR_NON_FINITE;
             swarp_vec3 a;
-            if (!sw_normalize(light->direction, &a)) return SWARP_ERR_ZERO_VECTOR;
+            if (!sw_gnormalize(light->direction, &a)) return SWARP_ERR_ZERO_VECTOR;
         }
     } else {
         if (!sw_finite3(&light->direction)) return SWARP_ERR_NON_FINITE;
         swarp_vec3 a;
-        if (!sw_normalize(light->direction, &a)) return SWARP_ERR_ZERO_VECTOR;
+        if (!sw_gnormalize(light->direction, &a)) return SWARP_ERR_ZERO_VECTOR;
     }
     return SWARP_OK;
 }
@@ -69,8 +69,8 @@ swarp_status sw_check_box(const swarp_aabb* box) {
 
 void sw_camera_basis(const swarp_camera* cam, swarp_vec3* f, swarp_vec3* r, swarp_vec3* u) {
     swarp_vec3 ff = {0, 0, -1}, uu, rr = {1, 0, 0};
-    sw_normalize(cam->dir, &ff);
-    sw_normalize(sw_cross(ff, cam->up), &rr);
+    sw_gnormalize(cam->dir, &ff);
+    sw_gnormalize(sw_cross(ff, cam->up), &rr);
     uu = sw_cross(rr, ff);
     *f = ff;
     *r = rr;
@@ -86,8 +86,10 @@ double sw_poly_scale(const swarp_polyhedron* p) {
     double s = 0.0;
     for (uint32_t i = 0; i < p->vertex_count; ++i) {
         const swarp_vec3* v = &p->vertices[i];
-        double m = fmax(fabs(v->x), fmax(fabs(v->y), fabs(v->z)));
-        if (m > s) s = m;
+        double ax = fabs(v->x), ay = fabs(v->y), az = fabs(v->z);
+        if (ax > s) s = ax;
+        if (ay > s) s = ay;
+        if (az > s) s = az;
     }
     return s > 1e-300 ? s : 1e-300;
 }
@@ -110,11 +112,14 @@ static swarp_vec3 sw_newell(const swarp_vec3* v, const uint8_t* idx, uint32_t n)
 /* Merge vertices closer than eps, drop repeated indices in loops and faces
  * with fewer than 3 distinct vertices, drop unreferenced vertices when there
  * are faces.  Keeps the SWARP_POLY_EPS_REL promise after every operation. */
-void sw_poly_finalize(swarp_polyhedron* p) {
+void sw_poly_finalize(swarp_polyhedron* p, uint32_t first_new) {
     const double eps = SWARP_POLY_EPS_REL * sw_poly_scale(p);
     uint8_t remap[SWARP_POLY_MAX_VERTICES];
     uint32_t nv = 0;
-    for (uint32_t i = 0; i < p->vertex_count; ++i) {
+    if (first_new > p->vertex_count) first_new = p->vertex_count;
+    for (uint32_t i = 0; i < first_new; ++i) remap[i] = (uint8_t)i;
+    nv = first_new;
+    for (uint32_t i = first_new; i < p->vertex_count; ++i) {
         swarp_vec3 v = p->vertices[i];
         uint32_t j = 0;
         for (; j < nv; ++j) {
@@ -181,7 +186,7 @@ void sw_poly_from_corners(const swarp_vec3 c[8], swarp_polyhedron* out) {
         memcpy(loop, quads[f], 4);
         swarp_vec3 n = sw_newell(out->vertices, loop, 4);
         swarp_vec3 nu = {0, 0, 1};
-        if (!sw_normalize(n, &nu)) continue; /* collapsed face (flat box) */
+        if (!sw_gnormalize(n, &nu)) continue; /* collapsed face (flat box) */
         swarp_vec3 fc = sw_scale(sw_add(sw_add(c[loop[0]], c[loop[1]]), sw_add(c[loop[2]], c[loop[3]])), 0.25);
         if (sw_dot(nu, sw_sub(fc, centroid)) < 0.0) {
             nu = sw_scale(nu, -1.0);
@@ -198,7 +203,7 @@ void sw_poly_from_corners(const swarp_vec3 c[8], swarp_polyhedron* out) {
         ++nf;
     }
     out->face_count = nf;
-    sw_poly_finalize(out);
+    sw_poly_finalize(out, 0);
 }
 
 SWARP_API swarp_status swarp_poly_from_aabb(const swarp_aabb* box, swarp_polyhedron* out) {
@@ -272,7 +277,7 @@ SWARP_API swarp_status swarp_poly_from_inverse_matrix(const swarp_mat4* inv, swa
 /* ---- clipping -------------------------------------------------------------- */
 
 /* Copies only the used parts (the struct is 7 KiB, B uses a few hundred bytes). */
-static void sw_poly_copy(const swarp_polyhedron* in, swarp_polyhedron* out) {
+void sw_poly_copy(const swarp_polyhedron* in, swarp_polyhedron* out) {
     out->vertex_count = in->vertex_count;
     out->face_count = in->face_count;
     memcpy(out->vertices, in->vertices, in->vertex_count * sizeof(swarp_vec3));
@@ -292,7 +297,7 @@ static double sw_pseudo_angle(double x, double y) {
 /* Keeps n·x + d <= 0; n need not be unit.  in and out may alias. */
 swarp_status sw_poly_clip(const swarp_polyhedron* in, swarp_vec3 n_raw, double d_raw,
                           swarp_polyhedron* out) {
-    double len = sw_len(n_raw);
+    double len = sw_glen(n_raw);
     if (!(len > 0.0)) return SWARP_ERR_ZERO_VECTOR;
     swarp_vec3 n = sw_scale(n_raw, 1.0 / len);
     double d = d_raw / len;
@@ -305,7 +310,7 @@ swarp_status sw_poly_clip(const swarp_polyhedron* in, swarp_vec3 n_raw, double d
         return SWARP_OK;
     }
     /* tolerance for "on the plane": see SWARP_POLY_EPS_REL */
-    const double eps = SWARP_POLY_EPS_REL * fmax(sw_poly_scale(in), fabs(d));
+    const double eps = SWARP_POLY_EPS_REL * sw_max(sw_poly_scale(in), fabs(d));
     double dist[SWARP_POLY_MAX_VERTICES];
     signed char side[SWARP_POLY_MAX_VERTICES];
     int any_out = 0, any_in = 0;
@@ -339,6 +344,7 @@ swarp_status sw_poly_clip(const swarp_polyhedron* in, swarp_vec3 n_raw, double d
         }
     }
     /* intersection points, one per crossing edge (keyed by its end points) */
+    const uint32_t n_kept = tv;
     uint8_t edge_lo[SWARP_POLY_MAX_VERTICES], edge_hi[SWARP_POLY_MAX_VERTICES], edge_v[SWARP_POLY_MAX_VERTICES];
     uint32_t n_edges = 0;
     uint32_t tf = 0;
@@ -400,7 +406,7 @@ swarp_status sw_poly_clip(const swarp_polyhedron* in, swarp_vec3 n_raw, double d
         /* in-plane basis (e1, e2) with e1 x e2 = n */
         swarp_vec3 ref = fabs(n.x) < 0.6 ? sw_v3(1, 0, 0) : (fabs(n.y) < 0.6 ? sw_v3(0, 1, 0) : sw_v3(0, 0, 1));
         swarp_vec3 e1 = {1, 0, 0}, e2;
-        sw_normalize(sw_cross(ref, n), &e1);
+        sw_gnormalize(sw_cross(ref, n), &e1);
         e2 = sw_cross(n, e1);
         double key[SWARP_POLY_MAX_FACE_VERTICES];
         uint8_t idx[SWARP_POLY_MAX_FACE_VERTICES];
@@ -426,7 +432,7 @@ swarp_status sw_poly_clip(const swarp_polyhedron* in, swarp_vec3 n_raw, double d
     }
     t.vertex_count = tv;
     t.face_count = tf;
-    sw_poly_finalize(&t);
+    sw_poly_finalize(&t, n_kept);
     sw_poly_copy(&t, out);
     return SWARP_OK;
 }
@@ -466,7 +472,7 @@ SWARP_API swarp_status swarp_poly_clip(const swarp_polyhedron* in, const swarp_p
     swarp_status s = sw_poly_validate(in);
     if (s != SWARP_OK) return s;
     swarp_vec3 n = {plane->a, plane->b, plane->c};
-    if (!(sw_len(n) > 0.0)) return SWARP_ERR_ZERO_VECTOR;
+    if (!(sw_glen(n) > 0.0)) return SWARP_ERR_ZERO_VECTOR;
     /* compute into a local: outputs stay untouched on error */
     swarp_polyhedron t;
     s = sw_poly_clip(in, n, plane->d, &t);

@@ -52,14 +52,14 @@ static int sw_in_cap(const sw_cap* k, swarp_vec3 r) {
 }
 static sw_cap sw_cap2(swarp_vec3 a, swarp_vec3 b) {
     sw_cap k = {a, 1.0};
-    if (sw_normalize(sw_add(a, b), &k.c)) k.cosr = sw_dot(k.c, a);
+    if (sw_gnormalize(sw_add(a, b), &k.c)) k.cosr = sw_dot(k.c, a);
     else k.cosr = -1.0; /* antipodal: no cap smaller than a hemisphere */
     return k;
 }
 static sw_cap sw_cap3(swarp_vec3 a, swarp_vec3 b, swarp_vec3 c) {
     sw_cap k;
     swarp_vec3 n = sw_cross(sw_sub(b, a), sw_sub(c, a));
-    if (!sw_normalize(n, &k.c)) { /* on one great circle: the widest pair */
+    if (!sw_gnormalize(n, &k.c)) { /* on one great circle: the widest pair */
         sw_cap k1 = sw_cap2(a, b), k2 = sw_cap2(a, c), k3 = sw_cap2(b, c);
         k = k1;
         if (k2.cosr < k.cosr) k = k2;
@@ -91,14 +91,14 @@ static sw_cap sw_min_cap(const swarp_vec3* r, size_t n) {
 static swarp_vec3 sw_perp_ref(swarp_vec3 n) {
     swarp_vec3 x = sw_v3(1, 0, 0), y = sw_v3(0, 1, 0);
     swarp_vec3 px = sw_sub(x, sw_scale(n, n.x));
-    double s = sw_len(px);
+    double s = sw_glen(px);
     if (s < SWARP_FOCUS_BLEND_SIN) {
         double t = 1.0 - s / SWARP_FOCUS_BLEND_SIN;
         swarp_vec3 py = sw_sub(y, sw_scale(n, n.y));
         px = sw_add(px, sw_scale(py, SWARP_FOCUS_BLEND_WEIGHT * t * t));
     }
     swarp_vec3 b = {0, 0, 1};
-    if (!sw_normalize(px, &b)) sw_normalize(sw_cross(n, sw_v3(0, 0, 1)), &b);
+    if (!sw_gnormalize(px, &b)) sw_gnormalize(sw_cross(n, sw_v3(0, 0, 1)), &b);
     return b;
 }
 
@@ -135,7 +135,7 @@ swarp_status sw_psm_setup(const swarp_camera* cam, const swarp_light* light, con
     if (o->psm_slideback && delta == 0.0) {
         /* automatic: every point of B in front of the virtual camera */
         double zmin = INFINITY;
-        for (size_t i = 0; i < nb; ++i) zmin = fmin(zmin, sw_dot(sw_sub(B[i], cam->eye), f));
+        for (size_t i = 0; i < nb; ++i) zmin = sw_min(zmin, sw_dot(sw_sub(B[i], cam->eye), f));
         if (zmin < near) delta = near - zmin;
     }
     swarp_mat4 Mc, Vc;
@@ -146,7 +146,7 @@ swarp_status sw_psm_setup(const swarp_camera* cam, const swarp_light* light, con
                         : (swarp_vec4){-light->direction.x, -light->direction.y, -light->direction.z, 0.0};
     swarp_vec4 Lh = sw_xform4(&Mc, Lw);
     swarp_vec3 qh = sw_v3(Lh.x, Lh.y, Lh.z);
-    double qlen = sw_len(qh);
+    double qlen = sw_glen(qh);
     if (!(qlen > 0.0)) return SWARP_ERR_LIGHT_INSIDE_BODY; /* the light is the eye itself */
     swarp_vec3 qn = sw_scale(qh, 1.0 / qlen);
     double tau = Lh.w / qlen; /* w_l / |q_h|: 0 = light at infinity in PPS */
@@ -171,7 +171,7 @@ swarp_status sw_psm_setup(const swarp_camera* cam, const swarp_light* light, con
             if (!(X.w > 0.0)) return SWARP_ERR_DEGENERATE;
             swarp_vec3 x = sw_v3(X.x / X.w, X.y / X.w, X.z / X.w);
             swarp_vec3 R = sw_sub(sw_scale(x, tau), qn);
-            if (!sw_normalize(R, &rd[nr])) return SWARP_ERR_LIGHT_INSIDE_BODY; /* receiver at the light */
+            if (!sw_gnormalize(R, &rd[nr])) return SWARP_ERR_LIGHT_INSIDE_BODY; /* receiver at the light */
             ++nr;
         }
         if (nr == 0) return SWARP_ERR_BODY_EMPTY;
@@ -179,7 +179,7 @@ swarp_status sw_psm_setup(const swarp_camera* cam, const swarp_light* light, con
         /* a cone of 90° or more: the light sits among the receivers */
         if (!(cap.cosr > SW_PSM_MIN_COS)) return SWARP_ERR_LIGHT_INSIDE_BODY;
         a = cap.c;
-        if (!sw_normalize(sw_sub(b1, sw_scale(a, sw_dot(b1, a))), &e1)) return SWARP_ERR_DEGENERATE;
+        if (!sw_gnormalize(sw_sub(b1, sw_scale(a, sw_dot(b1, a))), &e1)) return SWARP_ERR_DEGENERATE;
         e2 = sw_cross(a, e1);
         /* rows: x = e1·R/w_l = e1·X - w_c (e1·q̂)/τ (finite as τ -> 0: the
          * axis tilts away from -q̂ by O(τ); the rounding of e1·q̂ only moves
@@ -218,7 +218,8 @@ swarp_status sw_psm_setup(const swarp_camera* cam, const swarp_light* light, con
         if (B_poly) {
             swarp_mat4 F;
             sw_mul(&A, &QM, &F);
-            swarp_polyhedron C = *B_poly;
+            swarp_polyhedron C;
+            sw_poly_copy(B_poly, &C);
             for (int k = 0; k < 4 && C.vertex_count > 0; ++k) {
                 int row = k / 2;
                 double sg = (k & 1) ? -1.0 : 1.0; /* sg·(row) - w <= 0 */
@@ -254,17 +255,17 @@ swarp_status sw_psm_setup(const swarp_camera* cam, const swarp_light* light, con
     {
         swarp_vec3 ld = {0, 0, 0};
         if (light->type == SWARP_LIGHT_POINT) {
-            sw_normalize(sw_sub(cam->eye, light->position), &ld);
+            sw_gnormalize(sw_sub(cam->eye, light->position), &ld);
         } else {
-            sw_normalize(light->direction, &ld);
+            sw_gnormalize(light->direction, &ld);
         }
-        res->gamma = acos(fmax(-1.0, fmin(1.0, sw_dot(ld, f))));
+        res->gamma = acos(sw_max(-1.0, sw_min(1.0, sw_dot(ld, f))));
     }
     double lo = INFINITY, hi = -INFINITY;
     for (size_t i = 0; i < nz; ++i) {
         swarp_vec4 h = sw_xform_point(&QM, zp[i]);
-        lo = fmin(lo, h.z / h.w);
-        hi = fmax(hi, h.z / h.w);
+        lo = sw_min(lo, h.z / h.w);
+        hi = sw_max(hi, h.z / h.w);
     }
     res->light_near = lo;
     res->light_far = hi;

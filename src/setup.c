@@ -68,14 +68,14 @@ static swarp_status sw_info_merge(swarp_status a, swarp_status b) {
 /* The light's view axis for a point light: the spot axis, or the direction
  * to the centre of the points' bounding box. */
 static int sw_point_axis(const swarp_light* light, const swarp_vec3* pts, size_t n, swarp_vec3* a) {
-    if (light->cone_angle > 0.0) return sw_normalize(light->direction, a);
+    if (light->cone_angle > 0.0) return sw_gnormalize(light->direction, a);
     swarp_vec3 lo = pts[0], hi = pts[0];
     for (size_t i = 1; i < n; ++i) {
         lo = sw_v3(fmin(lo.x, pts[i].x), fmin(lo.y, pts[i].y), fmin(lo.z, pts[i].z));
         hi = sw_v3(fmax(hi.x, pts[i].x), fmax(hi.y, pts[i].y), fmax(hi.z, pts[i].z));
     }
     swarp_vec3 c = sw_scale(sw_add(lo, hi), 0.5);
-    return sw_normalize(sw_sub(c, light->position), a);
+    return sw_gnormalize(sw_sub(c, light->position), a);
 }
 
 /* Everything after B: light view, warp, fit, error model. */
@@ -274,20 +274,20 @@ static swarp_status sw_setup_range(const swarp_camera* cam, const swarp_light* l
                                    double near, double far, const swarp_polyhedron* Hin,
                                    const swarp_setup_options* o, swarp_setup_result* out,
                                    swarp_vec3* out_points, size_t capacity, size_t* out_count) {
-    swarp_polyhedron H, B;
+    swarp_polyhedron Hl, B;
+    const swarp_polyhedron* Hp = Hin;
     swarp_status s;
-    if (Hin) {
-        H = *Hin;
-    } else {
-        s = sw_body_h(cam, near, far, scene, &H);
+    if (!Hp) {
+        s = sw_body_h(cam, near, far, scene, &Hl);
         if (s != SWARP_OK) return s;
+        Hp = &Hl;
     }
-    s = sw_body_from_h(&H, light, scene, &B);
+    s = sw_body_from_h(Hp, light, scene, &B);
     if (s != SWARP_OK) return s;
     s = sw_write_points(&B, out_points, capacity, out_count);
     if (s != SWARP_OK) return s;
     swarp_setup_result res;
-    swarp_status info = sw_setup_points(cam, light, B.vertices, B.vertex_count, &B, H.vertices, H.vertex_count, near,
+    swarp_status info = sw_setup_points(cam, light, B.vertices, B.vertex_count, &B, Hp->vertices, Hp->vertex_count, near,
                                         far, o, &res);
     if (swarp_status_is_error(info)) return info;
     *out = res;
