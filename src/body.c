@@ -135,6 +135,17 @@ static swarp_status sw_extend(const swarp_polyhedron* H, swarp_vec3 u, double T,
         out->vertices[nv] = *apex;
     else
         for (uint32_t i = 0; i < nv; ++i) out->vertices[nv + i] = sw_add(H->vertices[i], sw_scale(u, T));
+    /* directed edges of the front faces, as bit sets per start vertex */
+    uint64_t front_edge[SWARP_POLY_MAX_VERTICES][SWARP_POLY_MAX_VERTICES / 64];
+    memset(front_edge, 0, nv * sizeof front_edge[0]);
+    for (uint32_t g = 0; g < H->face_count; ++g) {
+        if (!front[g]) continue;
+        uint32_t m = H->face_vertex_count[g];
+        for (uint32_t j = 0; j < m; ++j) {
+            uint8_t p = H->face_vertices[g][j], q = H->face_vertices[g][(j + 1) % m];
+            front_edge[p][q >> 6] |= (uint64_t)1 << (q & 63);
+        }
+    }
     uint32_t tf = 0;
     for (uint32_t f = 0; f < H->face_count; ++f) {
         uint32_t n = H->face_vertex_count[f];
@@ -149,16 +160,7 @@ static swarp_status sw_extend(const swarp_polyhedron* H, swarp_vec3 u, double T,
              * lies in a front face */
             for (uint32_t k = 0; k < n; ++k) {
                 uint8_t a = l[k], b = l[(k + 1) % n];
-                int twin_front = 0;
-                for (uint32_t g = 0; g < H->face_count && !twin_front; ++g) {
-                    if (!front[g]) continue;
-                    uint32_t m = H->face_vertex_count[g];
-                    for (uint32_t j = 0; j < m; ++j)
-                        if (H->face_vertices[g][j] == b && H->face_vertices[g][(j + 1) % m] == a) {
-                            twin_front = 1;
-                            break;
-                        }
-                }
+                int twin_front = (front_edge[b][a >> 6] >> (a & 63)) & 1u;
                 if (!twin_front) continue;
                 if (tf >= SWARP_POLY_MAX_FACES) return SWARP_ERR_CAPACITY;
                 /* side face b -> a -> a' -> b' (or b -> a -> apex) */

@@ -135,15 +135,16 @@ void sw_poly_finalize(swarp_polyhedron* p, uint32_t first_new) {
     memset(used, 0, nv);
     for (uint32_t f = 0; f < p->face_count; ++f) {
         uint32_t n = p->face_vertex_count[f], m = 0;
-        uint8_t loop[SWARP_POLY_MAX_FACE_VERTICES];
+        /* compacted in place: row nf <= f, and within a row m <= k */
+        const uint8_t* src = p->face_vertices[f];
+        uint8_t* loop = p->face_vertices[nf];
         for (uint32_t k = 0; k < n; ++k) {
-            uint8_t id = remap[p->face_vertices[f][k]];
+            uint8_t id = remap[src[k]];
             if (m > 0 && loop[m - 1] == id) continue;
             loop[m++] = id;
         }
         while (m > 1 && loop[m - 1] == loop[0]) --m;
         if (m < 3) continue;
-        memcpy(p->face_vertices[nf], loop, m);
         p->face_vertex_count[nf] = m;
         p->planes[nf] = p->planes[f];
         for (uint32_t k = 0; k < m; ++k) used[loop[k]] = 1;
@@ -352,7 +353,8 @@ swarp_status sw_poly_clip(const swarp_polyhedron* in, swarp_vec3 n_raw, double d
     for (uint32_t f = 0; f < in->face_count; ++f) {
         uint32_t fn = in->face_vertex_count[f];
         const uint8_t* fl = in->face_vertices[f];
-        uint8_t loop[SWARP_POLY_MAX_FACE_VERTICES];
+        if (tf >= SWARP_POLY_MAX_FACES) return SWARP_ERR_CAPACITY;
+        uint8_t* loop = t.face_vertices[tf]; /* written in place */
         uint32_t m = 0;
         int all_on = 1;
         for (uint32_t k = 0; k < fn; ++k) {
@@ -389,8 +391,6 @@ swarp_status sw_poly_clip(const swarp_polyhedron* in, swarp_vec3 n_raw, double d
             swarp_vec3 fnrm = {in->planes[f].a, in->planes[f].b, in->planes[f].c};
             if (sw_dot(fnrm, n) > 0.0) cap_coincides = 1;
         }
-        if (tf >= SWARP_POLY_MAX_FACES) return SWARP_ERR_CAPACITY;
-        memcpy(t.face_vertices[tf], loop, m);
         t.face_vertex_count[tf] = m;
         t.planes[tf] = in->planes[f];
         ++tf;
@@ -409,7 +409,7 @@ swarp_status sw_poly_clip(const swarp_polyhedron* in, swarp_vec3 n_raw, double d
         sw_gnormalize(sw_cross(ref, n), &e1);
         e2 = sw_cross(n, e1);
         double key[SWARP_POLY_MAX_FACE_VERTICES];
-        uint8_t idx[SWARP_POLY_MAX_FACE_VERTICES];
+        uint8_t* idx = t.face_vertices[tf];
         for (uint32_t k = 0; k < n_on; ++k) {
             swarp_vec3 q = sw_sub(t.vertices[on_plane[k]], c);
             double kk = sw_pseudo_angle(sw_dot(q, e1), sw_dot(q, e2));
@@ -422,7 +422,6 @@ swarp_status sw_poly_clip(const swarp_polyhedron* in, swarp_vec3 n_raw, double d
             key[j] = kk;
             idx[j] = on_plane[k];
         }
-        memcpy(t.face_vertices[tf], idx, n_on);
         t.face_vertex_count[tf] = n_on;
         t.planes[tf].a = n.x;
         t.planes[tf].b = n.y;
