@@ -270,7 +270,7 @@ swarp_status sw_body_from_h(const swarp_polyhedron* H, const swarp_light* light,
         swarp_vec3 l = light->position;
         s = flat ? sw_flat_extend(H, sw_v3(0, 0, 0), 0.0, &l, &M) : sw_extend(H, sw_v3(0, 0, 0), 0.0, &l, &M);
         if (s != SWARP_OK) return s;
-        sw_poly_finalize(&M, H->vertex_count);
+        sw_poly_finalize(&M, H->vertex_count, 0.0); /* the apex may sit on a vertex of H */
         s = sw_poly_clip_box(&M, box, B);
         if (s != SWARP_OK) return s;
         if (light->cone_angle > 0.0) {
@@ -285,7 +285,9 @@ swarp_status sw_body_from_h(const swarp_polyhedron* H, const swarp_light* light,
         double T = 2.0 * diag + 1e-300;
         s = flat ? sw_flat_extend(H, u, T, NULL, &M) : sw_extend(H, u, T, NULL, &M);
         if (s != SWARP_OK) return s;
-        sw_poly_finalize(&M, H->vertex_count);
+        /* the translated copies are T > diag(S) away from H and as far apart
+         * as H's vertices: nothing to merge, only faces to tidy */
+        sw_poly_finalize(&M, M.vertex_count, 0.0);
         s = sw_poly_clip_box(&M, box, B);
         if (s != SWARP_OK) return s;
     }

@@ -42,7 +42,7 @@ double sw_poly_scale(const swarp_polyhedron* p);
 /* merge near-duplicate vertices (vertices from index first_new on are
  * compared with all earlier ones; those before are known to be apart),
  * drop degenerate faces and unreferenced vertices */
-void sw_poly_finalize(swarp_polyhedron* p, uint32_t first_new);
+void sw_poly_finalize(swarp_polyhedron* p, uint32_t first_new, double scale /* 0: compute */);
 /* copy only the used parts */
 void sw_poly_copy(const swarp_polyhedron* in, swarp_polyhedron* out);
 

@@ -112,8 +112,8 @@ static swarp_vec3 sw_newell(const swarp_vec3* v, const uint8_t* idx, uint32_t n)
 /* Merge vertices closer than eps, drop repeated indices in loops and faces
  * with fewer than 3 distinct vertices, drop unreferenced vertices when there
  * are faces.  Keeps the SWARP_POLY_EPS_REL promise after every operation. */
-void sw_poly_finalize(swarp_polyhedron* p, uint32_t first_new) {
-    const double eps = SWARP_POLY_EPS_REL * sw_poly_scale(p);
+void sw_poly_finalize(swarp_polyhedron* p, uint32_t first_new, double scale) {
+    const double eps = SWARP_POLY_EPS_REL * (scale > 0.0 ? scale : sw_poly_scale(p));
     uint8_t remap[SWARP_POLY_MAX_VERTICES];
     uint32_t nv = 0;
     if (first_new > p->vertex_count) first_new = p->vertex_count;
@@ -204,7 +204,7 @@ void sw_poly_from_corners(const swarp_vec3 c[8], swarp_polyhedron* out) {
         ++nf;
     }
     out->face_count = nf;
-    sw_poly_finalize(out, 0);
+    sw_poly_finalize(out, 0, 0.0);
 }
 
 SWARP_API swarp_status swarp_poly_from_aabb(const swarp_aabb* box, swarp_polyhedron* out) {
@@ -311,7 +311,8 @@ swarp_status sw_poly_clip(const swarp_polyhedron* in, swarp_vec3 n_raw, double d
         return SWARP_OK;
     }
     /* tolerance for "on the plane": see SWARP_POLY_EPS_REL */
-    const double eps = SWARP_POLY_EPS_REL * sw_max(sw_poly_scale(in), fabs(d));
+    const double in_scale = sw_poly_scale(in);
+    const double eps = SWARP_POLY_EPS_REL * sw_max(in_scale, fabs(d));
     double dist[SWARP_POLY_MAX_VERTICES];
     signed char side[SWARP_POLY_MAX_VERTICES];
     int any_out = 0, any_in = 0;
@@ -431,7 +432,7 @@ swarp_status sw_poly_clip(const swarp_polyhedron* in, swarp_vec3 n_raw, double d
     }
     t.vertex_count = tv;
     t.face_count = tf;
-    sw_poly_finalize(&t, n_kept);
+    sw_poly_finalize(&t, n_kept, in_scale); /* clipping never grows coordinates */
     sw_poly_copy(&t, out);
     return SWARP_OK;
 }
