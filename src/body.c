@@ -80,7 +80,7 @@ static swarp_status sw_flat_extend(const swarp_polyhedron* H, swarp_vec3 u, doub
     const double eps = SW_BODY_VISIBLE_EPS_REL * sw_poly_scale(H);
     int cls[SWARP_POLY_MAX_FACE_VERTICES]; /* edge i = (v_i -> v_i+1) front/visible */
     for (uint32_t i = 0; i < k; ++i) {
-        swarp_vec3 a = H->vertices[loop[i]], b = H->vertices[loop[(i + 1) % k]];
+        swarp_vec3 a = H->vertices[loop[i]], b = H->vertices[loop[i + 1 == k ? 0 : i + 1]];
         swarp_vec3 m = sw_cross(sw_sub(b, a), n); /* outward in-plane edge normal */
         if (point)
             cls[i] = sw_dot(m, sw_sub(*point, a)) > eps * sw_glen(m);
@@ -142,7 +142,7 @@ static swarp_status sw_extend(const swarp_polyhedron* H, swarp_vec3 u, double T,
         if (!front[g]) continue;
         uint32_t m = H->face_vertex_count[g];
         for (uint32_t j = 0; j < m; ++j) {
-            uint8_t p = H->face_vertices[g][j], q = H->face_vertices[g][(j + 1) % m];
+            uint8_t p = H->face_vertices[g][j], q = H->face_vertices[g][j + 1 == m ? 0 : j + 1];
             front_edge[p][q >> 6] |= (uint64_t)1 << (q & 63);
         }
     }
@@ -159,7 +159,7 @@ static swarp_status sw_extend(const swarp_polyhedron* H, swarp_vec3 u, double T,
             /* silhouette edges: edge a->b of this back face whose twin b->a
              * lies in a front face */
             for (uint32_t k = 0; k < n; ++k) {
-                uint8_t a = l[k], b = l[(k + 1) % n];
+                uint8_t a = l[k], b = l[k + 1 == n ? 0 : k + 1];
                 int twin_front = (front_edge[b][a >> 6] >> (a & 63)) & 1u;
                 if (!twin_front) continue;
                 if (tf >= SWARP_POLY_MAX_FACES) return SWARP_ERR_CAPACITY;

@@ -101,7 +101,7 @@ static swarp_vec3 sw_newell(const swarp_vec3* v, const uint8_t* idx, uint32_t n)
     for (uint32_t i = 0; i < n; ++i) c = sw_add(c, v[idx[i]]);
     c = sw_scale(c, 1.0 / n); /* centred: no cancellation for large worlds */
     for (uint32_t i = 0; i < n; ++i) {
-        swarp_vec3 a = sw_sub(v[idx[i]], c), b = sw_sub(v[idx[(i + 1) % n]], c);
+        swarp_vec3 a = sw_sub(v[idx[i]], c), b = sw_sub(v[idx[i + 1 == n ? 0 : i + 1]], c);
         nn.x += (a.y - b.y) * (a.z + b.z);
         nn.y += (a.z - b.z) * (a.x + b.x);
         nn.z += (a.x - b.x) * (a.y + b.y);
@@ -359,7 +359,7 @@ swarp_status sw_poly_clip(const swarp_polyhedron* in, swarp_vec3 n_raw, double d
         uint32_t m = 0;
         int all_on = 1;
         for (uint32_t k = 0; k < fn; ++k) {
-            uint8_t i = fl[k], j = fl[(k + 1) % fn];
+            uint8_t i = fl[k], j = fl[k + 1 == fn ? 0 : k + 1];
             if (side[i] != 0) all_on = 0;
             if (side[i] <= 0) {
                 if (m >= SWARP_POLY_MAX_FACE_VERTICES) return SWARP_ERR_CAPACITY;
@@ -441,12 +441,30 @@ swarp_status sw_poly_clip_box(const swarp_polyhedron* in, const swarp_aabb* box,
     const swarp_vec3 ns[6] = {{-1, 0, 0}, {1, 0, 0}, {0, -1, 0}, {0, 1, 0}, {0, 0, -1}, {0, 0, 1}};
     const double ds[6] = {box->min.x, -box->max.x, box->min.y, -box->max.y, box->min.z, -box->max.z};
     const swarp_polyhedron* src = in;
-    for (int k = 0; k < 6; ++k) {
-        swarp_status s = sw_poly_clip(src, ns[k], ds[k], out);
-        if (s != SWARP_OK) return s;
-        src = out;
-        if (out->vertex_count == 0) break;
+    /* the polyhedron's own bounds: a box plane that no vertex crosses (by
+     * more than the clip's tolerance) is skipped without a clip call */
+    double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+    for (uint32_t i = 0; i < in->vertex_count; ++i) {
+        const double* v = &in->vertices[i].x;
+        for (int c = 0; c < 3; ++c) {
+            if (v[c] < lo[c]) lo[c] = v[c];
+            if (v[c] > hi[c]) hi[c] = v[c];
+        }
     }
+    const double* bmin = &box->min.x;
+    const double* bmax = &box->max.x;
+    int clipped = 0;
+    for (int k = 0; k < 6; ++k) {
+        int c = k / 2;
+        if (clipped || (k & 1 ? hi[c] > bmax[c] : lo[c] < bmin[c])) {
+            swarp_status s = sw_poly_clip(src, ns[k], ds[k], out);
+            if (s != SWARP_OK) return s;
+            src = out;
+            clipped = 1; /* bounds changed: test the remaining planes by clipping */
+            if (out->vertex_count == 0) break;
+        }
+    }
+    if (src != out) sw_poly_copy(in, out); /* inside the box already */
     return SWARP_OK;
 }
 
