@@ -57,17 +57,23 @@ static void avg_moments(const double* x, const double* w, int n, int k, double* 
     }
     for (int j = 0; j < k; ++j) out[j] /= W;
 }
+/* Helpers assert only on failure (Check's per-assert bookkeeping is slow). */
+#define REQUIRE_OK(call)                                                         \
+    do {                                                                         \
+        swarp_status st_ = (call);                                               \
+        if (st_ != SWARP_OK) ck_abort_msg("%s -> %s", #call, swarp_status_name(st_)); \
+    } while (0)
 static void f_vsm(double x, double* m, const void* ctx) {
     (void)ctx;
-    ck_assert_int_eq(swarp_vsm_moments(x, m), SWARP_OK);
+    REQUIRE_OK(swarp_vsm_moments(x, m));
 }
 static void f_msm(double x, double* m, const void* ctx) {
     (void)ctx;
-    ck_assert_int_eq(swarp_msm_moments(x, m), SWARP_OK);
+    REQUIRE_OK(swarp_msm_moments(x, m));
 }
 static void f_evsm(double x, double* m, const void* ctx) {
     const double* c = ctx;
-    ck_assert_int_eq(swarp_evsm_moments(x, c[0], c[1], m), SWARP_OK);
+    REQUIRE_OK(swarp_evsm_moments(x, c[0], c[1], m));
 }
 
 /* ---- VSM ---------------------------------------------------------------- */
@@ -226,7 +232,7 @@ typedef struct {
 } pq_ctx;
 static void f_lvsm(double x, double* m, const void* ctx) {
     const pq_ctx* c = ctx;
-    ck_assert_int_eq(swarp_lvsm_moments(x, c->p, c->q, m), SWARP_OK);
+    REQUIRE_OK(swarp_lvsm_moments(x, c->p, c->q, m));
 }
 
 /* Builds all layer moments of a distribution. */
@@ -234,7 +240,7 @@ static void layer_moments(const double* x, const double* w, int n, const double*
                           uint32_t N, double delta, double* out) {
     for (uint32_t i = 0; i < N; ++i) {
         pq_ctx c;
-        ck_assert_int_eq(swarp_lvsm_layer_interval(splits, N, i, delta, &c.p, &c.q), SWARP_OK);
+        REQUIRE_OK(swarp_lvsm_layer_interval(splits, N, i, delta, &c.p, &c.q));
         avg_moments(x, w, n, 2, out + 2 * i, f_lvsm, &c);
     }
 }
@@ -607,13 +613,16 @@ START_TEST(evsm_max_exponent_fp16_fp32) {
     ck_assert_double_le(c32, 0.5 * log((double)FLT_MAX));
     ck_assert_double_ge(c32, 0.5 * log((double)FLT_MAX) - 1e-2);
     /* simulated fp16 storage: every moment of every depth in [0, 1] finite */
+    /* (counted, then asserted once: Check's per-assert bookkeeping is slow) */
+    int bad = 0;
     for (int i = 0; i <= 100000; ++i) {
         double x = i / 100000.0, m[4];
-        ck_assert_int_eq(swarp_evsm_moments(x, c16, c16, m), SWARP_OK);
-        for (int j = 0; j < 4; ++j) ck_assert(isfinite(to_fp16(m[j])));
-        ck_assert_int_eq(swarp_evsm_moments(x, c32, c32, m), SWARP_OK);
-        for (int j = 0; j < 4; ++j) ck_assert(isfinite((float)m[j]));
+        bad += swarp_evsm_moments(x, c16, c16, m) != SWARP_OK;
+        for (int j = 0; j < 4; ++j) bad += !isfinite(to_fp16(m[j]));
+        bad += swarp_evsm_moments(x, c32, c32, m) != SWARP_OK;
+        for (int j = 0; j < 4; ++j) bad += !isfinite((float)m[j]);
     }
+    ck_assert_int_eq(bad, 0);
     /* and c is the largest such: 0.5 % more overflows fp16 at x = 1 */
     double m[4];
     ck_assert_int_eq(swarp_evsm_moments(1.0, c16 * 1.005, c16, m), SWARP_OK);
@@ -732,7 +741,7 @@ END_TEST
  * more than 2, and both bounds are sharp). */
 START_TEST(msm_range_and_bounds) {
     uint64_t s = 57;
-    for (int k = 0; k < 20000; ++k) {
+    for (int k = 0; k < 5000; ++k) {
         int n = 1 + (int)(sm_next(&s) % 8);
         double x[8], w[8], B[4], Bb[4], M[2], v, vb, pv;
         for (int i = 0; i < n; ++i) {
