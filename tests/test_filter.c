@@ -1002,6 +1002,86 @@ START_TEST(bad_inputs_leave_outputs_untouched) {
 }
 END_TEST
 
+/* Random inputs over many magnitudes (including huge, tiny, negative):
+ * whatever the status, a non-error status never comes with a NaN or an
+ * infinity in the output. */
+static double wild(uint64_t* s) {
+    static const double mags[] = {0.0, 1e-300, 1e-12, 1e-3, 0.5, 1.0, 7.0, 1e5, 1e150, 1e300};
+    double m = mags[sm_next(s) % 10];
+    double v = m * urand(s, 0.5, 1.5);
+    return (sm_next(s) & 1) ? -v : v;
+}
+#define FINITE_OR_ERR(st, ...)                                               \
+    do {                                                                     \
+        double vals_[] = {__VA_ARGS__};                                      \
+        if (!swarp_status_is_error(st))                                      \
+            for (size_t q_ = 0; q_ < sizeof vals_ / sizeof vals_[0]; ++q_)   \
+                if (!isfinite(vals_[q_])) ck_abort_msg("line %d: non-finite output %d, status %d", __LINE__, (int)q_, (int)(st)); \
+    } while (0)
+
+START_TEST(no_nonfinite_output_on_random_inputs) {
+    uint64_t s = 4242;
+    for (int k = 0; k < 20000; ++k) {
+        double a = wild(&s), b = wild(&s), c = wild(&s), d = wild(&s), e = wild(&s);
+        double o[4] = {0, 0, 0, 0}, M[4] = {a, b, c, d}, r = 0, r2 = 0;
+        swarp_status st;
+        st = swarp_vsm_moments(a, o);
+        FINITE_OR_ERR(st, o[0], o[1]);
+        st = swarp_vsm_chebyshev(M, c, fabs(d), &r);
+        FINITE_OR_ERR(st, r);
+        st = swarp_vsm_reduce_bleeding(a, b, &r);
+        FINITE_OR_ERR(st, r);
+        st = swarp_lvsm_warp(a, b, c, &r);
+        FINITE_OR_ERR(st, r);
+        st = swarp_lvsm_moments(a, b, c, o);
+        FINITE_OR_ERR(st, o[0], o[1]);
+        uint32_t L = 0, L2 = 0;
+        st = swarp_lvsm_layer_uniform(a, b, c, 1 + (uint32_t)(sm_next(&s) % 8), &L);
+        ck_assert(swarp_status_is_error(st) || L < 8);
+        double sp[4] = {a, a + fabs(b), a + fabs(b) + fabs(c), a + fabs(b) + fabs(c) + fabs(d)};
+        double lm[6] = {a, b, c, d, e, a};
+        st = swarp_lvsm_transition(e, sp, 3, fabs(wild(&s)), &L, &L2, &r);
+        FINITE_OR_ERR(st, r);
+        st = swarp_lvsm_visibility(lm, sp, 3, fabs(wild(&s)), fabs(wild(&s)), e, fabs(wild(&s)), &r);
+        FINITE_OR_ERR(st, r);
+        st = swarp_lvsm_second_occluder(a, b, &r);
+        FINITE_OR_ERR(st, r);
+        st = swarp_evsm_moments(a, fabs(b), fabs(c), o);
+        FINITE_OR_ERR(st, o[0], o[1], o[2], o[3]);
+        st = swarp_evsm_visibility(M, e, fabs(b), fabs(c), fabs(d), &r);
+        FINITE_OR_ERR(st, r);
+        st = swarp_msm_bias(M, fabs(e), o);
+        FINITE_OR_ERR(st, o[0], o[1], o[2], o[3]);
+        st = swarp_msm_visibility(M, e, &r);
+        FINITE_OR_ERR(st, r);
+        if (!swarp_status_is_error(st)) ck_assert(r >= 0.0 && r <= 1.0);
+        st = swarp_pcss_penumbra(a, b, c, &r);
+        FINITE_OR_ERR(st, r);
+        st = swarp_pcss_search_width(a, b, c, &r);
+        FINITE_OR_ERR(st, r);
+        st = swarp_pcss_filter_width(a, b, c, &r2);
+        FINITE_OR_ERR(st, r2);
+    }
+    /* Lloyd with wild samples */
+    for (int k = 0; k < 200; ++k) {
+        double mu[16], s2[16], out[5];
+        for (int j = 0; j < 16; ++j) {
+            mu[j] = wild(&s);
+            s2[j] = wild(&s);
+        }
+        double a = wild(&s);
+        double sp[5] = {a, a + 1, a + 2, a + 3, a + 4};
+        swarp_lloyd_report rep;
+        swarp_status st = swarp_lvsm_lloyd(mu, s2, 16, NULL, sp, 4, out, &rep);
+        if (!swarp_status_is_error(st))
+            for (int j = 0; j < 5; ++j) {
+                ck_assert(isfinite(out[j]));
+                if (j) ck_assert_double_lt(out[j - 1], out[j]);
+            }
+    }
+}
+END_TEST
+
 static Suite* filter_suite(void) {
     Suite* s = suite_create("filter");
     TCase* tc = tcase_create("vsm");
@@ -1035,6 +1115,7 @@ static Suite* filter_suite(void) {
     tcase_add_test(tc, pcf_poisson_disk_deterministic);
     tcase_add_test(tc, pcss_widths_by_similar_triangles);
     tcase_add_test(tc, bad_inputs_leave_outputs_untouched);
+    tcase_add_test(tc, no_nonfinite_output_on_random_inputs);
     suite_add_tcase(s, tc);
     return s;
 }
