@@ -794,6 +794,10 @@ SWARP_API swarp_status swarp_vsm_reduce_bleeding(double p, double amount, double
 /** Worst case layer count of the LVSM functions (splits hold N + 1 values). */
 #define SWARP_LVSM_MAX_LAYERS 64
 
+/* Splits, wherever an LVSM function takes them: N + 1 finite, strictly
+ * increasing values with s_N - s_0 finite; otherwise SWARP_ERR_NON_FINITE,
+ * SWARP_ERR_NOT_INCREASING or SWARP_ERR_OUT_OF_RANGE (range overflows). */
+
 /** @brief Depth interval [p_i, q_i] of layer i with overlaps, [VSM] §4.1.1:
  *  L_0 = [s_0, s_1 + delta], L_i = [s_i - delta, s_{i+1} + delta],
  *  L_{N-1} = [s_{N-1} - delta, s_N] (layers counted from 0 here).

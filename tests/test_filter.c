@@ -912,6 +912,8 @@ START_TEST(bad_inputs_leave_outputs_untouched) {
     ck_assert_int_eq(swarp_lvsm_layer_interval(sp, 4, 1, 0.25, &p, &q), SWARP_ERR_FILTER_OVERLAP);
     ck_assert_int_eq(swarp_lvsm_layer_interval(sp, 4, 1, -0.1, &p, &q), SWARP_ERR_FILTER_OVERLAP);
     ck_assert_int_eq(swarp_lvsm_layer_interval(NULL, 4, 1, 0.1, &p, &q), SWARP_ERR_NULL_POINTER);
+    double huge[3] = {-1.5e308, 0.0, 1.5e308};
+    ck_assert_int_eq(swarp_lvsm_layer_interval(huge, 2, 1, 0.0, &p, &q), SWARP_ERR_OUT_OF_RANGE);
     ck_assert_int_eq(swarp_lvsm_warp(0.5, 0.7, 0.7, &p), SWARP_ERR_OUT_OF_RANGE);
     ck_assert_int_eq(swarp_lvsm_moments(0.5, 0.7, 0.3, o), SWARP_ERR_OUT_OF_RANGE);
     ck_assert_int_eq(swarp_lvsm_moments(NAN, 0.3, 0.7, o), SWARP_ERR_NON_FINITE);
