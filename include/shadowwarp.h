@@ -529,8 +529,8 @@ typedef struct swarp_lixel_restrict_options {
     uint32_t max_size;/**< largest width or height accepted (0 = 16384) */
     /** Non-zero: keep only the rays that hit P inside the viewer's frustum
      *  ([LIXEL] §3, C_floor "within the viewer's frustum"): C's image is
-     *  clipped to the viewer image [-1/2, view_width - 1/2] x
-     *  [-1/2, view_height - 1/2] first (on P the light image IS the viewer
+     *  clipped to the viewer's pixel centres [0, view_width - 1] x
+     *  [0, view_height - 1] first (on P the light image IS the viewer
      *  image); rays of C with q <= 0 are then allowed (clipped away).
      *  Needs M_l straight from swarp_lixel_matrix with g = view_width,
      *  h = view_height.  0 = no clipping. */

@@ -757,7 +757,7 @@ START_TEST(restrict_clipped_to_view_matches_sampling) {
                 if (dot(sub(X, k.c.eye), k.c.f) <= 0) continue;
                 double x, y;
                 cam_pixel(&k.c, X, &x, &y);
-                if (x < -0.5 || x > k.c.g - 0.5 || y < -0.5 || y > k.c.h - 0.5) continue;
+                if (x < 0 || x > k.c.g - 1 || y < 0 || y > k.c.h - 1) continue;
                 lo_x = fmin(lo_x, x), hi_x = fmax(hi_x, x), lo_y = fmin(lo_y, y), hi_y = fmax(hi_y, y);
             }
         if (!(hi_x > lo_x)) continue;
@@ -765,11 +765,11 @@ START_TEST(restrict_clipped_to_view_matches_sampling) {
         ck_assert_double_ge(R.x1, hi_x - 1e-6);
         ck_assert_double_le(R.y0, lo_y + 1e-6);
         ck_assert_double_ge(R.y1, hi_y - 1e-6);
-        /* and not larger than the view (plus rounding to lixel centres) */
-        ck_assert_int_ge(R.x0, -1);
-        ck_assert_int_le(R.x1, (int32_t)k.c.g);
-        ck_assert_int_ge(R.y0, -1);
-        ck_assert_int_le(R.y1, (int32_t)k.c.h);
+        /* and never larger than the viewer's pixel centres */
+        ck_assert_int_ge(R.x0, 0);
+        ck_assert_int_le(R.x1, (int32_t)k.c.g - 1);
+        ck_assert_int_ge(R.y0, 0);
+        ck_assert_int_le(R.y1, (int32_t)k.c.h - 1);
         /* tight up to the sampling gap */
         double gap = 0.05 * (k.c.g + k.c.h);
         ck_assert_double_ge(R.x0, lo_x - 1 - gap);
