@@ -21,6 +21,7 @@ static const sw_cmd commands[] = {
     {"lixel", cmd_lixel, "plane-stabilised light matrix M_l for --eye --dir --plane --light-pos|--light-dir"},
 
     /* stage: splits */
+    {"stabwalk", cmd_stabwalk, "texel coordinates of a fixed point while the camera moves [--res --steps]"},
 
     /* stage: plan */
 
