@@ -958,6 +958,52 @@ START_TEST(split_directional_points) {
 }
 END_TEST
 
+/* An orthographic viewer (eye at infinity) works too: exact on P. */
+START_TEST(orthographic_viewer) {
+    rng_state = 0x0F7u;
+    for (int it = 0; it < 2000; ++it) {
+        v3 eye = V(rnd(-20, 20), rnd(-20, 20), rnd(-20, 20));
+        v3 f = rnd_unit(), up = rnd_unit();
+        if (len(cross(f, up)) < 0.2) continue;
+        v3 sx = unit(cross(f, up)), uy = cross(sx, f);
+        double hw = rnd(1, 30), hh = rnd(1, 30), n = 0.1, fa = 200;
+        unsigned g = (unsigned)rnd(64, 1500), h = (unsigned)rnd(64, 1500);
+        /* ortho(-hw, hw, -hh, hh, n, fa) * lookAt */
+        double O[4][4] = {{1 / hw, 0, 0, 0}, {0, 1 / hh, 0, 0}, {0, 0, -2 / (fa - n), -(fa + n) / (fa - n)}, {0, 0, 0, 1}};
+        double Vw[4][4] = {{sx.x, sx.y, sx.z, -dot(sx, eye)}, {uy.x, uy.y, uy.z, -dot(uy, eye)},
+                           {-f.x, -f.y, -f.z, dot(f, eye)}, {0, 0, 0, 1}};
+        swarp_mat4 Mv;
+        for (int r = 0; r < 4; ++r)
+            for (int k = 0; k < 4; ++k) {
+                double acc = 0;
+                for (int j = 0; j < 4; ++j) acc += O[r][j] * Vw[j][k];
+                Mv.m[k * 4 + r] = acc;
+            }
+        v3 nrm = rnd_unit();
+        if (fabs(dot(nrm, f)) < 0.05) continue;
+        swarp_plane P = plane_through(nrm, add(eye, mul(f, rnd(5, 50))));
+        swarp_light L = (it & 1) ? point_light(add(eye, V(rnd(-30, 30), rnd(-30, 30), rnd(-30, 30)))) : dir_light(rnd_unit());
+        swarp_mat4 Ml;
+        swarp_status st = swarp_lixel_matrix(&Mv, g, h, &L, &P, NULL, &Ml, NULL);
+        if (st == SWARP_ERR_LIXEL_LIGHT_ON_PLANE || st == SWARP_ERR_LIXEL_LIGHT_PARALLEL_PLANE) continue;
+        ck_assert_msg(!swarp_status_is_error(st), "%s", swarp_status_name(st));
+        for (int k = 0; k < 8; ++k) {
+            double x = rnd(0, g - 1), y = rnd(0, h - 1);
+            double a = ((x + 0.5) * 2 / g - 1) * hw, b = ((y + 0.5) * 2 / h - 1) * hh;
+            v3 o = add(eye, add(mul(sx, a), mul(uy, b)));
+            double t = -(dot(nrm, o) + P.d) / dot(nrm, f);
+            if (t < n || t > fa) continue;
+            v3 X = add(o, mul(f, t));
+            double xl, yl, zl, q;
+            light_px(&Ml, X, &xl, &yl, &zl, &q);
+            /* light on the viewer's side of P or not: q > 0 in front */
+            ck_assert_double_gt(q, 0);
+            ck_assert_double_le(fmax(fabs(xl - x), fabs(yl - y)) / fmax(g, h), 1e-9);
+        }
+    }
+}
+END_TEST
+
 /* @@MORE_TESTS@@ */
 
 static Suite* lixel_suite(void) {
@@ -979,6 +1025,7 @@ static Suite* lixel_suite(void) {
     tcase_add_test(tc, factor_viewport_times_projection);
     tcase_add_test(tc, floor_wall_split_and_select);
     tcase_add_test(tc, split_directional_points);
+    tcase_add_test(tc, orthographic_viewer);
     /* @@MORE_TCASES@@ */
     suite_add_tcase(s, tc);
     return s;
