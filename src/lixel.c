@@ -123,7 +123,7 @@ SWARP_API swarp_status swarp_lixel_matrix(const swarp_mat4* M_v, uint32_t g, uin
     double pi_scale = hypot(hypot(pi_img.x * g, pi_img.y * h), hypot(pi_img.z, pi_img.w));
     if (!(fabs(pi_img.z) > LX_EYE_EPS * pi_scale)) return SWARP_ERR_LIXEL_PLANE_THROUGH_EYE;
 
-    /* (2): the four corner pixels, hit points p^1..p^4 on P */
+    /* [LIXEL] (2): the four corner pixels, hit points p^1..p^4 on P */
     const double px[4] = {0.0, 0.0, (double)g - 1.0, (double)g - 1.0};
     const double py[4] = {0.0, (double)h - 1.0, (double)h - 1.0, 0.0};
     swarp_vec4 rows[4] = {lx_row(&V, 0), lx_row(&V, 1), lx_row(&V, 2), lx_row(&V, 3)};
@@ -168,7 +168,9 @@ SWARP_API swarp_status swarp_lixel_matrix(const swarp_mat4* M_v, uint32_t g, uin
         p_hat = sw_add(sw_scale(p_r, 1.0 - t), sw_scale(sw_v3(L.x, L.y, L.z), t));
     }
 
-    /* (1), (7)-(10): five correspondences */
+    /* [LIXEL] (1), (7)-(10): five correspondences ((9) read as
+     * [(g-1)q, (h-1)q, 1q, q]^t = M_l p^3, papers README); the corner rays
+     * of [LIXEL] (2) gave p^1..p^4 above */
     swarp_vec4 src[5], dst[5];
     src[0] = L;
     dst[0] = lx_v4(0.0, 0.0, 1.0, 0.0);
@@ -391,7 +393,7 @@ SWARP_API swarp_status swarp_lixel_restrict(const swarp_mat4* M_l, const swarp_v
     sw_set(&A, 1, 1, s_y * c);
     sw_set(&A, 1, 3, -y0);
     swarp_mat4 M;
-    sw_mul(&A, M_l, &M); /* [LIXEL] §2: M_l := A_l M_l */
+    sw_mul(&A, M_l, &M); /* [LIXEL] Fig. 6, §2 "Less of the plane": M_l := A_l M_l */
     if (!sw_mat_finite(&M)) return SWARP_ERR_NON_FINITE;
     swarp_lixel_rect rect;
     rect.x0 = (int32_t)x0;

@@ -228,7 +228,8 @@ static void check_exact(const config* k, const swarp_mat4* Ml, int samples, doub
     }
 }
 
-/* [LIXEL] (3)-(6) hold exactly for every point of P: 10^4 random configs */
+/* [LIXEL] (3)-(6) hold exactly for every point of P with M_l built from
+ * [LIXEL] (1), (7)-(10): 10^4 random configs */
 START_TEST(plane_points_same_pixel_in_both_images) {
     rng_state = 0x11CE1u;
     double err_d = 0, err_f = 0, err_gpu = 0;
