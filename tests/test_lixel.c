@@ -1005,6 +1005,73 @@ START_TEST(orthographic_viewer) {
 }
 END_TEST
 
+/* Near-degenerate sweep: planes almost through the eye, lights almost on
+ * the plane or grazing it, planes almost parallel to the view.  Errors
+ * leave the output untouched; every other result is finite with q > 0 on
+ * the visible plane points. */
+START_TEST(near_degenerate_never_nan) {
+    rng_state = 0xDE6u;
+    int n_err = 0, n_ok = 0;
+    for (int it = 0; it < 4000; ++it) {
+        config k = random_config(50.0);
+        double eps = pow(10.0, -rnd(3, 15));
+        v3 n = V(k.P.a, k.P.b, k.P.c);
+        switch (it % 4) {
+        case 0: /* plane through the eye, offset eps */
+            k.P.d = -dot(n, k.c.eye) + eps * (rng_next() & 1 ? 1 : -1);
+            break;
+        case 1: /* point light eps off the plane */
+        {
+            v3 X0 = mul(n, -k.P.d / dot(n, n));
+            v3 lp = add(add(X0, mul(unit(cross(n, rnd_unit())), rnd(1, 30))), mul(unit(n), eps));
+            k.light = point_light(lp);
+            break;
+        }
+        case 2: /* directional light grazing the plane */
+        {
+            v3 t = unit(cross(n, rnd_unit()));
+            k.light = dir_light(add(t, mul(unit(n), eps)));
+            break;
+        }
+        default: /* plane almost parallel to the view direction */
+        {
+            v3 t = unit(cross(k.c.f, rnd_unit()));
+            n = add(t, mul(k.c.f, eps));
+            k.P = plane_through(n, add(k.c.eye, mul(k.c.u, -rnd(0.5, 5))));
+            break;
+        }
+        }
+        swarp_mat4 Ml;
+        sentinel(&Ml);
+        swarp_status st = swarp_lixel_matrix(&k.Mv, k.c.g, k.c.h, &k.light, &k.P, NULL, &Ml, NULL);
+        if (swarp_status_is_error(st)) {
+            ck_assert(is_sentinel(&Ml));
+            ++n_err;
+            continue;
+        }
+        ++n_ok;
+        ck_assert(mat_finite(&Ml));
+        for (int s = 0; s < 8; ++s) {
+            v3 X;
+            double xs = rnd(0, k.c.g - 1), ys = rnd(0, k.c.h - 1);
+            double t = cam_hit(&k.c, &k.P, xs, ys, &X);
+            if (!(t > k.c.near) || t > k.c.far) continue;
+            double x, y, z, q;
+            light_px(&Ml, X, &x, &y, &z, &q);
+            ck_assert(isfinite(q));
+            if (st == SWARP_OK) {
+                /* no warning given: then it must still be right */
+                ck_assert_double_gt(q, 0);
+                double e = fmax(fabs(x - xs), fabs(y - ys)) / fmax(k.c.g, k.c.h);
+                ck_assert_msg(e <= 1e-9, "case %d eps %g: error %g", it % 4, eps, e);
+            }
+        }
+    }
+    ck_assert_int_gt(n_err, 100);
+    ck_assert_int_gt(n_ok, 100);
+}
+END_TEST
+
 /* @@MORE_TESTS@@ */
 
 static Suite* lixel_suite(void) {
@@ -1027,6 +1094,7 @@ static Suite* lixel_suite(void) {
     tcase_add_test(tc, floor_wall_split_and_select);
     tcase_add_test(tc, split_directional_points);
     tcase_add_test(tc, orthographic_viewer);
+    tcase_add_test(tc, near_degenerate_never_nan);
     /* @@MORE_TCASES@@ */
     suite_add_tcase(s, tc);
     return s;
