@@ -582,6 +582,19 @@ START_TEST(lloyd_options_and_degenerate) {
     /* both samples in one cluster; equal weights -> plain mean of mu + sigma */
     double x0 = fmin(0.3 + 0.1, 1.0), x1 = 0.7 + 1e-3;
     ck_assert_double_eq_tol(o2[1], 0.5 * (x0 + x1), 1e-12);
+    /* far from the origin, a narrow range: splits stay strictly increasing
+     * and match the same problem shifted to the origin */
+    {
+        double off = 1e6, m3[4] = {off + 0.2e-3, off + 0.5e-3, off + 0.8e-3, off + 0.5e-3};
+        double v3[4] = {1e-8, 1e-8, 1e-8, 2e-8};
+        double spo[4] = {off, off + 0.3e-3, off + 0.6e-3, off + 1e-3}, oo[4];
+        ck_assert_int_eq(swarp_lvsm_lloyd(m3, v3, 4, NULL, spo, 3, oo, &rep), SWARP_OK);
+        for (int i = 0; i < 3; ++i) ck_assert_double_lt(oo[i], oo[i + 1]);
+        double m0[4], sp0[4] = {0.0, 0.3e-3, 0.6e-3, 1e-3}, o0[4];
+        for (int i = 0; i < 4; ++i) m0[i] = m3[i] - off;
+        ck_assert_int_eq(swarp_lvsm_lloyd(m0, v3, 4, NULL, sp0, 3, o0, &rep), SWARP_OK);
+        for (int i = 0; i < 4; ++i) ck_assert_double_eq_tol(oo[i] - off, o0[i], 1e-9);
+    }
     /* one layer: nothing to place */
     double one[2] = {0.0, 1.0}, o1[2];
     ck_assert_int_eq(swarp_lvsm_lloyd(mu, s2, 3, NULL, one, 1, o1, &rep), SWARP_OK);
@@ -1069,22 +1082,27 @@ START_TEST(no_nonfinite_output_on_random_inputs) {
         FINITE_OR_ERR(st, r2);
     }
     /* Lloyd with wild samples */
-    for (int k = 0; k < 200; ++k) {
+    int lloyd_ok = 0;
+    for (int k = 0; k < 2000; ++k) {
         double mu[16], s2[16], out[5];
         for (int j = 0; j < 16; ++j) {
             mu[j] = wild(&s);
             s2[j] = wild(&s);
         }
-        double a = wild(&s);
+        double a = wild(&s), h = fabs(wild(&s)) + 1e-300;
         double sp[5] = {a, a + 1, a + 2, a + 3, a + 4};
+        if (k % 2) /* scaled spacing: ranges from 1e-300 to ~1e300 */
+            for (int j = 1; j < 5; ++j) sp[j] = sp[j - 1] + h * (1 + 1e-3 * j) + fabs(sp[j - 1]) * 1e-15;
         swarp_lloyd_report rep;
         swarp_status st = swarp_lvsm_lloyd(mu, s2, 16, NULL, sp, 4, out, &rep);
+        lloyd_ok += !swarp_status_is_error(st);
         if (!swarp_status_is_error(st))
             for (int j = 0; j < 5; ++j) {
                 ck_assert(isfinite(out[j]));
                 if (j) ck_assert_double_lt(out[j - 1], out[j]);
             }
     }
+    ck_assert_int_gt(lloyd_ok, 500); /* most configurations are valid */
 }
 END_TEST
 
