@@ -10,6 +10,11 @@
  * (2^-24 ~ 6e-8) yet well above double rounding of a weighted mean (~1e-16). */
 #define SW_LLOYD_REL_TOL 1e-9
 #define SW_LLOYD_REL_GAP 1e-9
+/* A cluster is split by teleportation only if its weighted standard
+ * deviation exceeds 1e-6 of the range: the one-pass variance E[u^2] - m^2 in
+ * normalised units carries ~eps = 2e-16 of cancellation, i.e. a spurious
+ * sd of up to ~1.5e-8, and a cluster that narrow is one depth anyway. */
+#define SW_LLOYD_MIN_SPLIT_SD 1e-6
 
 /* Weight of a sample: its variance, optionally clamped ([VSM] §4.1.2). */
 static double sw_weight(double sigma2, double lo, double hi) {
@@ -132,7 +137,7 @@ SWARP_API swarp_status swarp_lvsm_lloyd(const double* mu, const double* sigma2, 
                 double m = X[heavy] / W[heavy];
                 double var = X2[heavy] / W[heavy] - m * m;
                 double sd = var > 0.0 ? sqrt(var) : 0.0;
-                if (sd > gap) { /* a cluster concentrated on one depth cannot be split */
+                if (sd > SW_LLOYD_MIN_SPLIT_SD) { /* one depth cannot be split */
                     double nc[SWARP_LVSM_MAX_LAYERS];
                     uint32_t n = 0;
                     for (uint32_t i = 0; i < k; ++i) {
