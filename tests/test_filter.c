@@ -595,6 +595,27 @@ START_TEST(lloyd_options_and_degenerate) {
         ck_assert_int_eq(swarp_lvsm_lloyd(m0, v3, 4, NULL, sp0, 3, o0, &rep), SWARP_OK);
         for (int i = 0; i < 4; ++i) ck_assert_double_eq_tol(oo[i] - off, o0[i], 1e-9);
     }
+    /* Weighted samples at exactly two depths, three clusters: one cluster
+     * stays empty and cannot be repaired (no cluster has any spread); this
+     * must converge instead of teleporting forever (regression: rounding of
+     * the one-pass variance once looked like spread). */
+    {
+        double m2[64], v2[64], sp2[5] = {0.0, 0.25, 0.5, 0.75, 1.0}, o4[5];
+        for (int j = 0; j < 64; ++j) {
+            double a = 0.1, b = (j % 2) ? 0.5 : 0.9; /* edges A|B and A|C at coverage 1/2 */
+            m2[j] = 0.5 * (a + b);
+            v2[j] = 0.25 * (b - a) * (b - a);
+        }
+        ck_assert_int_eq(swarp_lvsm_lloyd(m2, v2, 64, NULL, sp2, 4, o4, &rep), SWARP_OK);
+        ck_assert_uint_eq(rep.converged, 1);
+        ck_assert_uint_le(rep.teleports, 1);
+        int at5 = 0, at9 = 0;
+        for (int i = 1; i < 4; ++i) {
+            at5 |= fabs(o4[i] - 0.5) < 1e-12;
+            at9 |= fabs(o4[i] - 0.9) < 1e-12;
+        }
+        ck_assert(at5 && at9);
+    }
     /* one layer: nothing to place */
     double one[2] = {0.0, 1.0}, o1[2];
     ck_assert_int_eq(swarp_lvsm_lloyd(mu, s2, 3, NULL, one, 1, o1, &rep), SWARP_OK);
