@@ -1009,7 +1009,9 @@ SWARP_API swarp_status swarp_msm_bias(const double b[4], double alpha, double ou
  *  is returned with SWARP_INFO_FILTER_MSM_DEGENERATE.
  *  @param[in] b  filtered (and usually biased) moments
  *  @param[in] z_f  receiver depth
- *  Moments with b_2 < b_1^2 (rounding) count as a single depth at b_1.
+ *  Moments with b_2 < b_1^2 (rounding) count as a single depth at b_1; in
+ *  the degenerate branch a receiver within ~1e-7 (relative) of a recovered
+ *  depth counts as at it, hence lit (recovered depths carry rounding).
  *  @return SWARP_OK, SWARP_INFO_FILTER_MSM_DEGENERATE, SWARP_ERR_NULL_POINTER,
  *          SWARP_ERR_NON_FINITE (also when products of the moments overflow,
  *          |b| > ~1e150, or the recovered depths do), SWARP_ERR_OUT_OF_RANGE
