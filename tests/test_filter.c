@@ -774,6 +774,29 @@ START_TEST(msm_biased_two_depths_close) {
 }
 END_TEST
 
+/* Three depths and the receiver at one of them: the three-atom
+ * representation through z_f is the distribution itself (4 moments fix a
+ * 3-atom distribution once one atom is known), so the bound is exact.  This
+ * exercises the non-degenerate (Cholesky) branch against brute-force PCF.
+ * Tolerance 1e-7: the solve divides by D33, which for these atom ranges is
+ * >= ~3e-5 (sampled), so rounding stays near eps / D33 ~ 1e-11; 1e-7 leaves
+ * room for the root finding and the weight formulas, far below any error a
+ * wrong formula makes (>= the smallest weight, 0.1 / 3). */
+START_TEST(msm_exact_three_depths_receiver_on_one) {
+    uint64_t s = 58;
+    for (int k = 0; k < 3000; ++k) {
+        double x[3] = {urand(&s, 0.0, 0.3), urand(&s, 0.35, 0.65), urand(&s, 0.7, 1.0)};
+        double w[3] = {urand(&s, 0.1, 1.0), urand(&s, 0.1, 1.0), urand(&s, 0.1, 1.0)};
+        double B[4], v;
+        avg_moments(x, w, 3, 4, B, f_msm, NULL);
+        for (int i = 0; i < 3; ++i) {
+            ck_assert_int_eq(swarp_msm_visibility(B, x[i], &v), SWARP_OK);
+            ck_assert_double_eq_tol(v, pcf(x, w, 3, x[i]), 1e-7);
+        }
+    }
+}
+END_TEST
+
 /* Never outside [0, 1], never NaN; for >= 3 depths and no bias it is an
  * upper bound of PCF and at least as tight as Chebyshev (4 moments constrain
  * more than 2, and both bounds are sharp). */
@@ -1153,6 +1176,7 @@ static Suite* filter_suite(void) {
     tcase_add_test(tc, evsm_upper_bound);
     tcase_add_test(tc, msm_exact_two_depths);
     tcase_add_test(tc, msm_biased_two_depths_close);
+    tcase_add_test(tc, msm_exact_three_depths_receiver_on_one);
     tcase_add_test(tc, msm_range_and_bounds);
     tcase_add_test(tc, msm_vs_bruteforce_pcf_image);
     suite_add_tcase(s, tc);
