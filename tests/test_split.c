@@ -17,7 +17,7 @@ static int untouched(const double* a, size_t k) {
 
 START_TEST(schemes_cover_range_strictly_increasing) {
     uint64_t s = 0x5eed2001;
-    for (int k = 0; k < 3000; ++k) {
+    for (int k = 0; k < 800; ++k) {
         double n = tc_logu(&s, 1e-3, 1e3), f = n * tc_logu(&s, 1.001, 1e6);
         uint32_t m = 1 + (uint32_t)(tc_next(&s) % SWARP_SPLIT_MAX_COUNT);
         double lambda = tc_uniform(&s, 0, 1);
@@ -42,7 +42,7 @@ END_TEST
 
 START_TEST(uniform_log_practical_match_paper) {
     uint64_t s = 0x5eed2002;
-    for (int k = 0; k < 3000; ++k) {
+    for (int k = 0; k < 800; ++k) {
         double n = tc_logu(&s, 1e-3, 1e3), f = n * tc_logu(&s, 1.01, 1e6);
         uint32_t m = 1 + (uint32_t)(tc_next(&s) % SWARP_SPLIT_MAX_COUNT);
         double lambda = tc_uniform(&s, 0, 1);
@@ -76,7 +76,7 @@ END_TEST
 
 START_TEST(pseudo_matches_41_and_reduces_to_practical) {
     uint64_t s = 0x5eed2003;
-    for (int k = 0; k < 3000; ++k) {
+    for (int k = 0; k < 800; ++k) {
         double n = tc_logu(&s, 1e-3, 1e3), f = n * tc_logu(&s, 1.01, 1e6);
         uint32_t m = 1 + (uint32_t)(tc_next(&s) % SWARP_SPLIT_MAX_COUNT);
         double lambda = tc_uniform(&s, 0, 1);
