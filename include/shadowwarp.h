@@ -200,7 +200,15 @@ extern "C" {
 /* <<< status: plan */
 
 /* >>> status: extras (600..699, 1600..1699) */
-#define SWARP_STATUS_LIST_EXTRAS(X)
+#define SWARP_STATUS_LIST_EXTRAS(X)                                                 \
+    X(SWARP_ERR_CUBE_LIGHT_AT_INFINITY, 600,                                        \
+      "light at infinity in post-projective space (w = 0): no cube map, use one orthographic map") \
+    X(SWARP_ERR_CUBE_POINT_UNCOVERED, 601,                                          \
+      "the point is in no cube-map face frustum (it coincides with the light or lies behind it)") \
+    X(SWARP_INFO_CUBE_NEAR_CLIPPED, 1601,                                           \
+      "the point lies inside the faces' near cube (a < Z_1): the face camera clips it") \
+    X(SWARP_INFO_MINDEPTH_EMPTY, 1600,                                              \
+      "the depth buffer holds nothing nearer than far: near plane left unchanged")
 /* <<< status: extras */
 
 #define SWARP_STATUS_LIST(X)          \
@@ -1367,6 +1375,150 @@ SWARP_API swarp_status swarp_cascade_blend(const double* splits, size_t m, doubl
 /* <<< api: plan */
 
 /* >>> api: extras (src/cube.c mindepth.c) */
+/* ---- [KOZ] §14.2.2 "Using Cube Maps": cube-map faces in post-projective space (src/cube.c)
+ *
+ * In the camera's post-projective space the view frustum is the unit cube
+ * [-1, 1]^3 and (almost) every light is a point P.  The shadow map is a cube
+ * map "with displaced centre" whose faces are the unit-cube faces that are
+ * BACK-FACING with respect to P (P on the inner side of the face plane, i.e.
+ * its distance d_i from P along the outward normal N_i is > 0): 3 to 5 faces
+ * for a light outside the cube, all 6 for a light inside.  Face i is rendered
+ * by a camera at P looking along N_i whose far plane is the face (distance
+ * d_i) and whose near plane is Z_1 d_i: the near planes form a small cube,
+ * Z_1 = Z_n/Z_f is the same for every face.
+ *
+ * The light is given HOMOGENEOUSLY, as the camera's view-projection applied to
+ * it: (p, 1) for a point light at p, (-d, 0) for a directional light
+ * travelling along d.  w > 0: the ordinary case, depth Z_n = Z_1, Z_f = 1 (in
+ * units of d_i).  w < 0 (light behind the camera, [KOZ] §14.2.1): P = xyz/w
+ * and the inverse-projection variant Z_n = -Z_1, Z_f = Z_1, which orders
+ * depths from the face towards P (light arriving from the far side).
+ * w = 0 (light at infinity in post-projective space): SWARP_ERR_CUBE_LIGHT_AT_INFINITY.
+ *
+ * Face eye spaces look down -z (OpenGL style); their x and y axes are the
+ * unit-cube axes listed at SWARP_CUBE_FACE_*, so a point S on face i has
+ * NDC (x, y) = (S . right_i, S . up_i) in that face's map.
+ */
+#define SWARP_CUBE_FACE_POS_X 0u /**< outward normal +x (axes of each face: docs/extras.md) */
+#define SWARP_CUBE_FACE_NEG_X 1u
+#define SWARP_CUBE_FACE_POS_Y 2u
+#define SWARP_CUBE_FACE_NEG_Y 3u
+#define SWARP_CUBE_FACE_POS_Z 4u
+#define SWARP_CUBE_FACE_NEG_Z 5u
+/** At most six faces. */
+#define SWARP_CUBE_MAX_FACES 6
+
+/** Options; zero means default. */
+typedef struct swarp_cube_options {
+    double z1;                     /**< Z_1 = Z_n/Z_f in (0, 1); 0 = default 0.01 */
+    swarp_depth_range depth_range; /**< of the face projections; 0 = [-1, 1] */
+    uint32_t _reserved[5];         /**< must be zero */
+} swarp_cube_options;
+
+/** One cube-map face. */
+typedef struct swarp_cube_face {
+    uint32_t face;        /**< SWARP_CUBE_FACE_*: the unit-cube face it lies on */
+    uint32_t inverse;     /**< 1 for the inverse-projection variant (w < 0) */
+    double distance;      /**< d_i: distance from P to the face plane (> 0) */
+    swarp_vec3 right;     /**< face eye x axis (post-projective space) */
+    swarp_vec3 up;        /**< face eye y axis */
+    swarp_vec3 normal;    /**< N_i, the view direction of the face camera */
+    swarp_mat4 view;      /**< post-projective space -> face eye space (eye at P) */
+    swarp_mat4 proj;      /**< face frustum: the face square at the far plane */
+    swarp_mat4 view_proj; /**< proj * view */
+} swarp_cube_face;
+
+/** @brief The cube-map faces of [KOZ] §14.2.2 for a light in post-projective
+ *  space, with their view, projection and view-projection matrices.
+ *  @param[in] ps_light light in post-projective space, homogeneous (see above)
+ *  @param[in] opt      options, or NULL for the defaults
+ *  @param[out] out     capacity faces (SWARP_CUBE_MAX_FACES always suffices),
+ *                      in SWARP_CUBE_FACE_* order
+ *  @param[out] out_count number of faces (3..6 unless P lies on a face plane)
+ *  @return SWARP_OK; SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
+ *  SWARP_ERR_RESERVED_NONZERO, SWARP_ERR_OUT_OF_RANGE (z1 outside (0, 1)),
+ *  SWARP_ERR_UNKNOWN_ENUM (depth_range), SWARP_ERR_CUBE_LIGHT_AT_INFINITY
+ *  (w = 0 or P too far for finite matrices), SWARP_ERR_DEGENERATE (no
+ *  back-facing face: cannot happen for finite P), SWARP_ERR_CAPACITY
+ *  (*out_count = faces needed, out untouched). */
+SWARP_API swarp_status swarp_cube_faces(const swarp_vec4* ps_light, const swarp_cube_options* opt,
+                                        swarp_cube_face* out, size_t capacity, size_t* out_count);
+
+/** @brief Texture coordinate and depth of a point for the cube map: the
+ *  computation of [KOZ] Listing 14-1.  With u = V - P,
+ *  a = max_i (u . N_i)/d_i over the back-facing faces, the point is looked up
+ *  in face argmax at the cube point S = P + u/a ("vertex position minus light
+ *  position", re-centred on the unit cube) and compared against the
+ *  projective transform of a with Z_n = Z_1, Z_f = 1 (or -Z_1, Z_1), i.e. the
+ *  NDC depth the face's view_proj gives V.
+ *  @param[in] ps_light, opt  as swarp_cube_faces
+ *  @param[in] ps_point V in post-projective space
+ *  @param[out] out_face SWARP_CUBE_FACE_* (may be NULL)
+ *  @param[out] out_texcoord S, a point on the unit cube's surface (may be NULL)
+ *  @param[out] out_depth NDC depth in opt->depth_range (may be NULL)
+ *  @return SWARP_OK; SWARP_INFO_CUBE_NEAR_CLIPPED (a < Z_1: inside the near
+ *  cube, the depth is outside the range); the errors of swarp_cube_faces
+ *  (but not CAPACITY); SWARP_ERR_CUBE_POINT_UNCOVERED (a <= 0). */
+SWARP_API swarp_status swarp_cube_lookup(const swarp_vec4* ps_light, const swarp_cube_options* opt,
+                                         const swarp_vec3* ps_point, uint32_t* out_face,
+                                         swarp_vec3* out_texcoord, double* out_depth);
+
+/* ---- [RHS] §4.3 min-depth near plane (src/mindepth.c)
+ *
+ * The nearest visible depth of the frame, read from a LINEAR depth buffer
+ * (view-space distance along the view direction, not radial distance and not
+ * the non-linear z-buffer value), becomes the largest near plane that clips
+ * nothing the camera saw.  [RHS] reduces the buffer on the GPU with a chain of
+ * 2x2 min "mip" passes (Listing A.2) and reads back the last 1x1 level.
+ * Depth values: finite and >= 0, or +INFINITY for "nothing here" (cleared).
+ */
+/** Scratch floats swarp_mindepth_pyramid needs for a w x h buffer. */
+#define SWARP_MINDEPTH_SCRATCH(w, h) ((((size_t)(w) + 1u) / 2u) * (((size_t)(h) + 1u) / 2u))
+
+/** @brief Minimum of a linear depth buffer by the 2x2 min pyramid of [RHS]
+ *  Listing A.2, on the CPU.  Each level halves the size rounding UP and an
+ *  odd last row/column takes the min of the texels that exist (Listing A.2's
+ *  wrap addressing with rounded-down sizes would skip them).
+ *  @param[in] depth  height rows of width floats, row r at depth + r*row_stride
+ *  @param[in] width, height  >= 1; @param[in] row_stride >= width (floats)
+ *  @param[out] scratch  SWARP_MINDEPTH_SCRATCH(width, height) floats (may be
+ *              NULL when that is 0, i.e. never; 1x1 needs 1)
+ *  @param[in] scratch_capacity  floats in scratch
+ *  @param[out] out_scratch_needed  written with the need (always)
+ *  @param[out] out_min  the minimum (+INFINITY if every value is +INFINITY)
+ *  @return SWARP_OK; SWARP_INFO_MINDEPTH_EMPTY (every value +INFINITY);
+ *  SWARP_ERR_NULL_POINTER, SWARP_ERR_INVALID_ARGUMENT (width or height 0,
+ *  row_stride < width), SWARP_ERR_NON_FINITE (a NaN or -INFINITY),
+ *  SWARP_ERR_OUT_OF_RANGE (a negative depth), SWARP_ERR_CAPACITY. */
+SWARP_API swarp_status swarp_mindepth_pyramid(const float* depth, uint32_t width, uint32_t height,
+                                              size_t row_stride, float* scratch,
+                                              size_t scratch_capacity, size_t* out_scratch_needed,
+                                              double* out_min);
+/** @brief The same minimum by a direct scan (the reference the pyramid is
+ *  tested against, and the cheaper choice on the CPU).  Statuses as
+ *  swarp_mindepth_pyramid without the scratch ones. */
+SWARP_API swarp_status swarp_mindepth_direct(const float* depth, uint32_t width, uint32_t height,
+                                             size_t row_stride, double* out_min);
+
+/** Options; zero means default. */
+typedef struct swarp_mindepth_options {
+    double margin;          /**< relative safety margin in [0, 1); 0 = default 1e-3
+                                 (near' = min_depth (1 - margin)) */
+    uint32_t _reserved[4];  /**< must be zero */
+} swarp_mindepth_options;
+
+/** @brief The adjusted near plane of [RHS] §4.3: the measured minimum depth
+ *  less a relative margin, never below the original near and always < far,
+ *  so nothing the depth buffer saw is clipped.
+ *  @param[in] n, f  the camera's near and far (0 < n < f)
+ *  @param[in] min_depth  measured minimum linear depth (>= 0 or +INFINITY)
+ *  @param[in] opt  or NULL; @param[out] out_near  the adjusted near plane
+ *  @return SWARP_OK; SWARP_INFO_MINDEPTH_EMPTY (min_depth >= f: near kept);
+ *  SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE, SWARP_ERR_NEAR_FAR,
+ *  SWARP_ERR_OUT_OF_RANGE (min_depth < 0, margin outside [0, 1)),
+ *  SWARP_ERR_RESERVED_NONZERO. */
+SWARP_API swarp_status swarp_mindepth_near(double n, double f, double min_depth,
+                                           const swarp_mindepth_options* opt, double* out_near);
 /* <<< api: extras */
 
 #ifdef __cplusplus
