@@ -64,6 +64,7 @@ int cmd_report(sw_args* a);
 
 /* stage: splits */
 int cmd_stabwalk(sw_args* a);
+int cmd_cascade(sw_args* a);
 
 /* stage: plan */
 

@@ -20,6 +20,7 @@ static const sw_cmd commands[] = {
     /* stage: lixel */
 
     /* stage: splits */
+    {"cascade", cmd_cascade, "splits, per-split warp, error maxima, atlas [--splits --scheme --stabilize --curve]"},
     {"stabwalk", cmd_stabwalk, "texel coordinates of a fixed point while the camera moves [--res --steps]"},
 
     /* stage: plan */
