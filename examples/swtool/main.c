@@ -18,6 +18,7 @@ static const sw_cmd commands[] = {
     /* stage: geometry */
 
     /* stage: lixel */
+    {"lixel", cmd_lixel, "plane-stabilised light matrix M_l for --eye --dir --plane --light-pos|--light-dir"},
 
     /* stage: splits */
     {"cascade", cmd_cascade, "splits, per-split warp, error maxima, atlas [--splits --scheme --stabilize --curve]"},
