@@ -1369,6 +1369,69 @@ SWARP_API swarp_status swarp_cascade_select_best(const swarp_bias_map* maps, siz
  *  @return as swarp_cascade_select_depth; SWARP_ERR_OUT_OF_RANGE for band. */
 SWARP_API swarp_status swarp_cascade_blend(const double* splits, size_t m, double view_depth,
                                            double band, uint32_t* out_index, double* out_weight);
+
+/* ---- cascades: split distances and the configuration's error curve */
+
+typedef enum swarp_split_scheme {
+    SWARP_SCHEME_DEFAULT = 0,   /**< = PRACTICAL with lambda 0.5 (PSSM, ZSXL06) */
+    SWARP_SCHEME_UNIFORM = 1,   /**< [RHS] (3.6) */
+    SWARP_SCHEME_LOG = 2,       /**< [RHS] (3.7) */
+    SWARP_SCHEME_PRACTICAL = 3, /**< [RHS] (3.8), lambda as given (0 = uniform) */
+    SWARP_SCHEME_PSEUDO = 4,    /**< [RHS] (4.1): practical over [n_p, f_p] */
+    SWARP_SCHEME_FORCE_I32 = 0x7FFFFFFF
+} swarp_split_scheme;
+
+/** How to split [n, f].  Zero means default (4 splits, PSSM lambda 0.5). */
+typedef struct swarp_split_options {
+    uint32_t count;            /**< m, 1..SWARP_SPLIT_MAX_COUNT; 0 = 4 */
+    swarp_split_scheme scheme;
+    double lambda;             /**< PRACTICAL, PSEUDO: in [0, 1] */
+    double pseudo_near;        /**< PSEUDO (and the warp of the FIRST split): n_p as a
+                                    fraction of f - n measured from n, [0, 1) */
+    double pseudo_far;         /**< PSEUDO (and the warp of the LAST split): f_p as a
+                                    fraction of f - n measured from f; n_p + f_p < 1 */
+    uint32_t _reserved[4];
+} swarp_split_options;
+
+/** @brief Split distances C_0 = n < C_1 < ... < C_m = f of a scheme, on the
+ *  (adjusted, [RHS] §3.3.1) range [n, f], through the core schemes
+ *  swarp_split_uniform/log/practical/pseudo.  PSEUDO converts the fractions
+ *  to distances n + n_p (f - n) and f - f_p (f - n) for (4.1).
+ *  @param[out] out  m + 1 distances; capacity >= m + 1 (SWARP_ERR_CAPACITY
+ *  with the count written otherwise)
+ *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
+ *          SWARP_ERR_NEAR_FAR, SWARP_ERR_SPLIT_COUNT, SWARP_ERR_OUT_OF_RANGE,
+ *          SWARP_ERR_UNKNOWN_ENUM, SWARP_ERR_RESERVED_NONZERO,
+ *          SWARP_ERR_CAPACITY. */
+SWARP_API swarp_status swarp_cascade_splits(double n, double f, const swarp_split_options* opt,
+                                            double* out, size_t capacity, size_t* out_count);
+
+/** @brief Warp parameter n' of each split for LiSPSM with an overhead light
+ *  in the error model's frame: n_opt of [RHS] (3.2) with d = C_{i+1} - C_i,
+ *  z_0 = C_i, z_1 = C_{i+1}; the first split uses the pseudo-near fraction
+ *  and the last the pseudo-far fraction of (4.2) ([RHS] §4.2), when given.
+ *  @param[out] out_n_primes m values.
+ *  @return SWARP_OK and the errors of swarp_warp_nopt_pseudo. */
+SWARP_API swarp_status swarp_cascade_nopt(const double* splits, size_t m, double pseudo_near,
+                                          double pseudo_far, double* out_n_primes);
+
+/** Worst-case sample count of swarp_cascade_error_curve. */
+#define SWARP_CASCADE_CURVE_MAX(m, samples_per_split) ((m) * (samples_per_split))
+
+/** @brief The error curve of a whole configuration ([RHS] §3.3.4, Fig. 3.15,
+ *  3.18) through the core's piecewise model swarp_error_split_curve: for
+ *  each split `samples_per_split` depths from C_i (the value just after the
+ *  border: a border belongs to the split that starts there) up to the left
+ *  limit at C_{i+1} (the last sample is nextafter(C_{i+1}, 0), f itself for
+ *  the last split).  out_mx or out_mz may be NULL.
+ *  @param samples_per_split >= 2
+ *  @return SWARP_OK, SWARP_ERR_CAPACITY (count written), SWARP_ERR_NULL_POINTER,
+ *          SWARP_ERR_OUT_OF_RANGE, and the errors of swarp_error_split_curve. */
+SWARP_API swarp_status swarp_cascade_error_curve(const swarp_error_config* cfg,
+                                                 const double* splits, const double* n_primes,
+                                                 size_t m, size_t samples_per_split,
+                                                 double* out_z, double* out_mx, double* out_mz,
+                                                 size_t capacity, size_t* out_count);
 /* <<< api: splits */
 
 /* >>> api: plan (src/plan.c) */

@@ -65,6 +65,7 @@ int cmd_lixel(sw_args* a);
 
 /* stage: splits */
 int cmd_stabwalk(sw_args* a);
+int cmd_cascade(sw_args* a);
 
 /* stage: plan */
 

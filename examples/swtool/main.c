@@ -21,6 +21,7 @@ static const sw_cmd commands[] = {
     {"lixel", cmd_lixel, "plane-stabilised light matrix M_l for --eye --dir --plane --light-pos|--light-dir"},
 
     /* stage: splits */
+    {"cascade", cmd_cascade, "splits, per-split warp, error maxima, atlas [--splits --scheme --stabilize --curve]"},
     {"stabwalk", cmd_stabwalk, "texel coordinates of a fixed point while the camera moves [--res --steps]"},
 
     /* stage: plan */
