@@ -636,6 +636,10 @@ SWARP_API swarp_status swarp_plan(const swarp_scene_needs* needs, const swarp_bu
     uint32_t evaluated = 0;
     for (uint32_t i = 0; i < SW_CANDIDATES; ++i) {
         swarp_plan_chain c = sw_candidate(i);
+        /* candidates come in order of K and the cost grows strictly with K
+         * (pass cost > 0): once a chain meets the budget, no later K can be
+         * cheaper, so the search stops there (the usual case stays cheap) */
+        if (have_best && c.split_count > best.K) break;
         /* a moving camera needs stabilisation, which warps do not admit
          * [RHS] §3.5 */
         if (in.moves && c.warp != SWARP_PLAN_WARP_UNIFORM) continue;

@@ -279,6 +279,26 @@ int cmd_bench_report(sw_args* a) {
                 "  landed on main when this report was generated**.\n\n",
             reps, machine);
     char b1[32], b2[32], b3[32], b4[32], b5[32], b6[32];
+    /* summary: the planner's choice for E = 1 in every configuration */
+    const size_t planner_row = BR_NT - 1;
+    fprintf(md, "## Summary: the planner's choice for a budget of 1 pixel per texel\n\n"
+                "Chain (warp, splits K, scheme) and its predicted max(m_x, m_z); default pass limit 16.\n\n"
+                "| γ |");
+    for (int fi = 0; fi < BR_NF; ++fi)
+        for (int mi = 0; mi < BR_NM; ++mi) fprintf(md, " f/n %g, map %u |", br_fns[fi], br_maps[mi]);
+    fprintf(md, "\n|---:|");
+    for (int k = 0; k < BR_NF * BR_NM; ++k) fprintf(md, "---|");
+    fputc('\n', md);
+    for (int gi = 0; gi < BR_NG; ++gi) {
+        fprintf(md, "| %g |", br_gammas[gi]);
+        for (int fi = 0; fi < BR_NF; ++fi)
+            for (int mi = 0; mi < BR_NM; ++mi) {
+                const br_row* r = &rows[fi][mi][gi][planner_row];
+                fprintf(md, " %s: %s |", r->chosen, br_fmt(r->mx > r->mz ? r->mx : r->mz, b1, sizeof b1));
+            }
+        fputc('\n', md);
+    }
+    fputc('\n', md);
     for (int fi = 0; fi < BR_NF; ++fi)
         for (int mi = 0; mi < BR_NM; ++mi) {
             fprintf(md, "## far/near = %g, map %u x %u\n\n", br_fns[fi], br_maps[mi], br_maps[mi]);
