@@ -10,7 +10,35 @@ REPS="${2:-2000}"
 SWTOOL="$BUILD/examples/swtool/swtool"
 [ -x "$SWTOOL" ] || { echo "regen_accuracy_cost: build swtool first ($SWTOOL)" >&2; exit 1; }
 mkdir -p docs/img docs/plots
-"$SWTOOL" bench-report --reps "$REPS" --out-dir docs
+# The demo's measured columns: its `measure` camera (horizontal view, near 1,
+# far 600) at 1024x768, light at gamma to the view, for the techniques the
+# demo renders on main.  One line per run:
+#   gamma map technique K setup_us passes texels shadow_ms main_ms meas_mz pred_mz
+DEMO="$BUILD/examples/demo/demo"
+DEMO_DAT=docs/plots/demo-measured.dat
+DEMO_ARG=""
+if [ -x "$DEMO" ] && [ "${SWARP_NO_DEMO:-0}" != "1" ]; then
+    TMP=$(mktemp -d)
+    echo "# gamma map technique K setup_us passes texels shadow_ms main_ms meas_mz pred_mz" > "$DEMO_DAT"
+    for g in 90 60 45 30; do
+        LD=$(awk -v g="$g" 'BEGIN { r = g * 3.14159265358979 / 180; printf "0,%.9f,%.9f", -sin(r), cos(r) }')
+        for map in 1024 2048; do
+            for t in uniform:1 pssm:2 pssm:4 pssm:8 pssm:16; do
+                tech=${t%%:*}; k=${t##*:}
+                set -- --technique "$tech"
+                [ "$tech" = pssm ] && set -- "$@" --splits "$k"
+                line=$("$DEMO" "$@" --camera measure --light-dir "$LD" --size 1024x768 --map "$map" \
+                       --out "$TMP" 2>/dev/null | awk '/^technique +setup_us/ { getline; print; exit }')
+                [ -n "$line" ] || continue
+                echo "$line" | awk -v g="$g" -v m="$map" -v t="$tech" -v k="$k" \
+                    '{ print g, m, t, k, $2, $3, $4, $5, $6, $7, $8 }' >> "$DEMO_DAT"
+            done
+        done
+    done
+    rm -rf "$TMP"
+    DEMO_ARG="--demo-data $DEMO_DAT"
+fi
+"$SWTOOL" bench-report --reps "$REPS" --out-dir docs $DEMO_ARG
 gnuplot <<'GP'
 set terminal pngcairo size 1500,1200 font "DejaVu Sans,10"
 set output 'docs/img/pareto.png'
