@@ -1508,6 +1508,7 @@ typedef enum swarp_plan_filter {
 #define SWARP_PLAN_PLANE_LIGHT_GRAZING  2u /**< light from the other side or under 5° elevation */
 #define SWARP_PLAN_PLANE_NOT_VISIBLE    3u /**< the plane misses the view frustum */
 #define SWARP_PLAN_PLANE_NO_PASS_LEFT   4u /**< the pass limit (or time budget) is used up */
+#define SWARP_PLAN_PLANE_LIXEL_REFUSED  5u /**< swarp_lixel_matrix gave another error (e.g. singular) */
 
 /** The chosen chain.  All errors are Lloyd's m_x, m_z (screen pixels per
  *  texel side); costs per the cost model of docs/planning.md.

@@ -483,9 +483,60 @@ static void sw_evaluate(const sw_pin* in, const sw_filter* flt, const swarp_plan
 
 /* ---- lixel planes ---------------------------------------------------------- */
 
+/* The viewer's view-projection (OpenGL clip space, right-handed look-at),
+ * for the lixel stage's own check below. */
+static void sw_view_projection(const sw_pin* in, swarp_mat4* out) {
+    swarp_vec3 f = in->view, s = sw_v3(1.0, 0.0, 0.0), u;
+    (void)sw_normalize(sw_cross(f, in->up), &s); /* checked non-parallel */
+    u = sw_cross(s, f);
+    swarp_mat4 V, P;
+    sw_identity(&V);
+    sw_set(&V, 0, 0, s.x); sw_set(&V, 0, 1, s.y); sw_set(&V, 0, 2, s.z);
+    sw_set(&V, 1, 0, u.x); sw_set(&V, 1, 1, u.y); sw_set(&V, 1, 2, u.z);
+    sw_set(&V, 2, 0, -f.x); sw_set(&V, 2, 1, -f.y); sw_set(&V, 2, 2, -f.z);
+    sw_set(&V, 0, 3, -sw_dot(s, in->eye));
+    sw_set(&V, 1, 3, -sw_dot(u, in->eye));
+    sw_set(&V, 2, 3, sw_dot(f, in->eye));
+    memset(&P, 0, sizeof P);
+    double t = 1.0 / tan(in->theta), n = in->near, fa = in->far;
+    sw_set(&P, 0, 0, t / in->aspect);
+    sw_set(&P, 1, 1, t);
+    sw_set(&P, 2, 2, -(fa + n) / (fa - n));
+    sw_set(&P, 2, 3, -2.0 * fa * n / (fa - n));
+    sw_set(&P, 3, 2, -1.0);
+    sw_mul(&P, &V, out);
+}
+
 /* Is the plane lixel-friendly ([LIXEL] §3-§5): seen from its front by the
- * camera, lit from the same side above 5° elevation, and crossing the view
- * frustum?  Returns SWARP_PLAN_PLANE_USED when it is. */
+ * camera, lit from the same side above 5° elevation, crossing the view
+ * frustum, and accepted by the lixel stage's swarp_lixel_matrix (which
+ * refuses planes through the eye, lights on or parallel to the plane and
+ * planes out of view, and notes a light behind the plane)?  Returns
+ * SWARP_PLAN_PLANE_USED when it is. */
+static uint32_t sw_lixel_accepts(const sw_pin* in, const swarp_plane* pl) {
+    swarp_mat4 M_v, M_l;
+    sw_view_projection(in, &M_v);
+    swarp_light light;
+    memset(&light, 0, sizeof light);
+    if (in->point_light) {
+        light.type = SWARP_LIGHT_POINT;
+        light.position = in->light_pos;
+    } else {
+        light.type = SWARP_LIGHT_DIRECTIONAL;
+        light.direction = sw_scale(in->to_light, -1.0);
+    }
+    swarp_status s = swarp_lixel_matrix(&M_v, (uint32_t)in->res_ix, (uint32_t)in->res_iy, &light, pl,
+                                        NULL, &M_l, NULL);
+    switch (s) {
+    case SWARP_ERR_LIXEL_PLANE_THROUGH_EYE: return SWARP_PLAN_PLANE_CAMERA_ON_PLANE;
+    case SWARP_ERR_LIXEL_LIGHT_ON_PLANE:
+    case SWARP_ERR_LIXEL_LIGHT_PARALLEL_PLANE:
+    case SWARP_INFO_LIXEL_LIGHT_BEHIND_PLANE: return SWARP_PLAN_PLANE_LIGHT_GRAZING;
+    case SWARP_ERR_LIXEL_PLANE_NOT_VISIBLE: return SWARP_PLAN_PLANE_NOT_VISIBLE;
+    default: return swarp_status_is_error(s) ? SWARP_PLAN_PLANE_LIXEL_REFUSED : SWARP_PLAN_PLANE_USED;
+    }
+}
+
 static uint32_t sw_plane_check(const sw_pin* in, const swarp_plane* pl) {
     swarp_vec3 nrm = sw_v3(pl->a, pl->b, pl->c);
     double len = sw_len(nrm);
@@ -515,7 +566,7 @@ static uint32_t sw_plane_check(const sw_pin* in, const swarp_plane* pl) {
         swarp_vec3 p = sw_add(in->eye, sw_scale(in->view, z));
         p = sw_add(p, sw_scale(right, ((k & 1) ? 1.0 : -1.0) * z * tx));
         p = sw_add(p, sw_scale(up, ((k & 2) ? 1.0 : -1.0) * z * ty));
-        if (sw_dot(nrm, p) + d <= 0.0) return SWARP_PLAN_PLANE_USED;
+        if (sw_dot(nrm, p) + d <= 0.0) return sw_lixel_accepts(in, pl);
     }
     return SWARP_PLAN_PLANE_NOT_VISIBLE;
 }
@@ -862,6 +913,7 @@ static const char* sw_plane_text(uint32_t why) {
     case SWARP_PLAN_PLANE_LIGHT_GRAZING: return "left out: lit from the other side or below 5 degrees";
     case SWARP_PLAN_PLANE_NOT_VISIBLE: return "left out: the plane misses the view frustum";
     case SWARP_PLAN_PLANE_NO_PASS_LEFT: return "left out: no pass (or time) left";
+    case SWARP_PLAN_PLANE_LIXEL_REFUSED: return "left out: swarp_lixel_matrix refused the configuration";
     default: return "?";
     }
 }
