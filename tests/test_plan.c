@@ -530,6 +530,10 @@ START_TEST(expectations_table) {
     if (e->filter == SWARP_PLAN_FILTER_EVSM) {
         ck_assert_double_eq(p.filter_exponent_pos, 40.0);
         ck_assert_double_eq(p.filter_exponent_neg, 5.0);
+        /* within the filter stage's safe exponent for fp32 moments [VSM] §4.2 */
+        double c_max = 0.0;
+        ck_assert_int_eq(swarp_evsm_max_exponent(SWARP_TEXEL_FP32, &c_max), SWARP_OK);
+        ck_assert(p.filter_exponent_pos <= c_max && p.filter_exponent_neg <= c_max);
     }
     if (e->filter == SWARP_PLAN_FILTER_LVSM) ck_assert_uint_eq(p.filter_layers, 4);
     if (e->filter == SWARP_PLAN_FILTER_PCF) ck_assert_uint_eq(p.blur_passes, 0);
