@@ -926,6 +926,71 @@ START_TEST(plan_is_cheap_and_finite_at_extremes) {
 }
 END_TEST
 
+START_TEST(random_wild_inputs_never_nan) {
+    /* any valid input: coordinates to 1e6, fovy in (0, 180°), aspect 1e-3..1e3,
+     * near 1e-4.., far/near to 3e6, lights along +-view, planes, boxes, odd
+     * resolutions and limits: a non-error status never comes with a
+     * non-finite number, and explain() always succeeds */
+    rng_state = 0xf022ull;
+    int ok = 0;
+    for (int it = 0; it < 3000; ++it) {
+        swarp_scene_needs n;
+        swarp_budget b;
+        memset(&n, 0, sizeof n);
+        memset(&b, 0, sizeof b);
+        n.camera.eye = (swarp_vec3){rng_range(-1e6, 1e6), rng_range(-1e6, 1e6), rng_range(-1e6, 1e6)};
+        n.camera.dir = (swarp_vec3){rng_range(-1, 1), rng_range(-1, 1), rng_range(-1, 1)};
+        n.camera.up = (swarp_vec3){rng_range(-1, 1), rng_range(-1, 1), rng_range(-1, 1)};
+        n.camera.fovy = rng_range(1e-3, PI - 1e-3);
+        n.camera.aspect = rng_log(1e-3, 1e3);
+        n.camera.near = rng_log(1e-4, 1e4);
+        n.camera.far = n.camera.near * rng_log(1.0001, 3e6);
+        n.light.type = rng_unit() < 0.2 ? SWARP_LIGHT_POINT : SWARP_LIGHT_DIRECTIONAL;
+        n.light.direction = (swarp_vec3){rng_range(-1, 1), rng_range(-1, 1), rng_range(-1, 1)};
+        double r = rng_unit();
+        if (r < 0.1) n.light.direction = n.camera.dir;
+        else if (r < 0.2) n.light.direction = (swarp_vec3){-n.camera.dir.x, -n.camera.dir.y, -n.camera.dir.z};
+        n.light.position = (swarp_vec3){rng_range(-1e6, 1e6), rng_range(-1e6, 1e6), rng_range(-1e6, 1e6)};
+        n.soft_shadows = rng_unit() < 0.5;
+        n.soft_width = n.soft_shadows ? rng_range(1.0, 30.0) : 0.0;
+        n.bleed_risk = (swarp_plan_bleed)(rng_next() % 5);
+        n.camera_moves = rng_unit() < 0.3;
+        n.allow_depth_clamp = rng_unit() < 0.5;
+        n.plane_count = (uint32_t)(rng_next() % 5);
+        for (uint32_t i = 0; i < n.plane_count; ++i)
+            n.planes[i] = (swarp_plane){rng_range(-1, 1), rng_range(-1, 1), rng_range(-1, 1), rng_range(-1e6, 1e6)};
+        if (rng_unit() < 0.3) {
+            n.scene_box.min = (swarp_vec3){rng_range(-1e6, 1e6), rng_range(-1e6, 1e6), rng_range(-1e6, 1e6)};
+            n.scene_box.max = (swarp_vec3){n.scene_box.min.x + rng_range(0, 1e6), n.scene_box.min.y + rng_range(0, 1e6),
+                                           n.scene_box.min.z + rng_range(0, 1e6)};
+        }
+        b.max_error = rng_log(1e-2, 1e2);
+        b.map_resolution = (uint32_t)(rng_next() % 65537);
+        b.atlas_limit = (uint32_t)(rng_next() % 65537);
+        b.max_passes = (uint32_t)(rng_next() % 33);
+        swarp_plan_result p;
+        swarp_status s = swarp_plan(&n, &b, &p);
+        if (swarp_status_is_error(s)) {
+            /* only the documented refusals of valid-looking input */
+            ck_assert_msg(s == SWARP_ERR_PLAN_EMPTY_VIEW || s == SWARP_ERR_DEGENERATE, "%s", swarp_status_name(s));
+            continue;
+        }
+        ++ok;
+        ck_assert(isfinite(p.max_error) && p.max_error > 0.0);
+        ck_assert(isfinite(p.cost_ns) && isfinite(p.texels) && isfinite(p.error_area));
+        for (uint32_t k = 0; k <= p.split_count; ++k) ck_assert(isfinite(p.splits[k]));
+        for (uint32_t k = 0; k < p.split_count; ++k) {
+            ck_assert(p.n_prime[k] > 0.0); /* +inf = uniform is allowed */
+            ck_assert(isfinite(p.split_max_mx[k]) && isfinite(p.split_max_mz[k]));
+        }
+        char text[SWARP_PLAN_EXPLAIN_MAX];
+        size_t cnt;
+        ck_assert_int_eq(swarp_plan_explain(&p, text, sizeof text, &cnt), SWARP_OK);
+    }
+    ck_assert_int_gt(ok, 1000);
+}
+END_TEST
+
 static Suite* plan_suite(void) {
     Suite* s = suite_create("plan");
     TCase* tc = tcase_create("plan");
@@ -942,6 +1007,7 @@ static Suite* plan_suite(void) {
     tcase_add_test(tc, bad_chain_and_null);
     tcase_add_test(tc, explain_text_and_capacity);
     tcase_add_test(tc, plan_is_cheap_and_finite_at_extremes);
+    tcase_add_test(tc, random_wild_inputs_never_nan);
     suite_add_tcase(s, tc);
     return s;
 }
