@@ -196,7 +196,15 @@ extern "C" {
 /* <<< status: splits */
 
 /* >>> status: plan (500..599, 1500..1599) */
-#define SWARP_STATUS_LIST_PLAN(X)
+#define SWARP_STATUS_LIST_PLAN(X)                                                   \
+    X(SWARP_ERR_PLAN_TOO_MANY_PLANES, 500,                                          \
+      "plane_count exceeds SWARP_PLAN_MAX_PLANES")                                  \
+    X(SWARP_ERR_PLAN_EMPTY_VIEW, 501,                                               \
+      "the scene box lies entirely outside the view depth range: nothing to shadow")\
+    X(SWARP_INFO_PLAN_BUDGET_UNMET, 1500,                                           \
+      "no chain meets the budget; the plan is the most accurate within the pass limit") \
+    X(SWARP_INFO_PLAN_POINT_LIGHT, 1501,                                            \
+      "point light planned as a directional light toward the view frustum's centre")
 /* <<< status: plan */
 
 /* >>> status: extras (600..699, 1600..1699) */
@@ -1435,6 +1443,260 @@ SWARP_API swarp_status swarp_cascade_error_curve(const swarp_error_config* cfg,
 /* <<< api: splits */
 
 /* >>> api: plan (src/plan.c) */
+/*
+ * The planner: from what the scene needs and what the caller can spend, the
+ * cheapest chain (warp, splits, stabilisation, inverse projection, lixel
+ * planes, filter) whose predicted error meets the budget, with a reason for
+ * every choice and every effect left out.  docs/planning.md explains the
+ * error and cost models, the candidates and the selection rule.
+ *
+ * Error model (docs/planning.md §2): Lloyd's metric [RHS] (2.3)-(2.8),
+ * generalised from the overhead light to a light at angle γ to the view in
+ * the plane spanned by light and view direction.  It reduces to (2.3)/(2.4)
+ * exactly at γ = 90°, and its light-space extent is W_lz of [RHS] (3.5) for
+ * γ >= Θ.  Cost model (§3): shadow passes × a per-pass time (caller-measured,
+ * or the default fitted to [RHS] Table 7.1) + prefilter blur passes.
+ */
+
+/** Most shadow-map splits the planner considers (PSSM K = 1..16, [RHS] §3.3.5). */
+#define SWARP_PLAN_MAX_SPLITS 16
+/** Most planes of interest a swarp_scene_needs can declare. */
+#define SWARP_PLAN_MAX_PLANES 4
+/** Worst case of swarp_plan_explain()'s text, bytes including the NUL. */
+#define SWARP_PLAN_EXPLAIN_MAX 4096
+
+/** Light-bleeding risk of prefiltered (moment) shadow maps, [VSM] §3.4: how
+ *  much occluders overlap at large depth ratios Δx/Δy (eq. (3.4)). */
+typedef enum swarp_plan_bleed {
+    SWARP_PLAN_BLEED_DEFAULT = 0,  /**< = SWARP_PLAN_BLEED_NONE */
+    SWARP_PLAN_BLEED_NONE = 1,     /**< one occluder over a receiver: Chebyshev exact [VSM] §3.2 */
+    SWARP_PLAN_BLEED_LOW = 2,      /**< occluders overlap at small depth ratios */
+    SWARP_PLAN_BLEED_HIGH = 3,     /**< overlap at large depth ratios ([VSM] Fig. 3.5) */
+    SWARP_PLAN_BLEED_EXTREME = 4,  /**< many overlaps at extreme ratios ([VSM] Fig. 4.3) */
+    SWARP_PLAN_BLEED_FORCE_I32 = 0x7FFFFFFF
+} swarp_plan_bleed;
+
+/** What the scene calls for.  Zero means default for every field: a zeroed
+ *  struct is the default scene (camera at (0,2,0) looking down -z, fovy 60°,
+ *  aspect 4/3, near 1, far 100; sun at zenith; no scene box; static camera;
+ *  hard shadows; no planes). */
+typedef struct swarp_scene_needs {
+    swarp_camera camera;      /**< all zero: the default camera above */
+    swarp_light light;        /**< all zero: directional light (0,-1,0) */
+    swarp_aabb scene_box;     /**< casters and receivers; all zero: unbounded
+                                   (no near/far adjustment [RHS] §3.3.1) */
+    uint32_t screen_width;    /**< pixels; 0: 1024 */
+    uint32_t screen_height;   /**< pixels; 0: 768 */
+    uint32_t camera_moves;    /**< 0 static, 1 moves (stabilisation matters only then) */
+    uint32_t soft_shadows;    /**< 0 hard, 1 soft (a filter is chosen only then) */
+    double soft_width;        /**< filter kernel width in shadow-map texels, >= 1;
+                                   0: 3 (only read when soft_shadows) */
+    swarp_plan_bleed bleed_risk; /**< decides VSM / MSM / EVSM / LVSM for wide kernels */
+    uint32_t allow_depth_clamp;  /**< 1: casters may be clamped to the light's near
+                                      plane ("pancaking"), 0: not */
+    uint32_t plane_count;     /**< planes of interest in planes[], <= SWARP_PLAN_MAX_PLANES */
+    uint32_t _pad0;           /**< must be zero */
+    swarp_plane planes[SWARP_PLAN_MAX_PLANES]; /**< candidate lixel planes [LIXEL] */
+    uint32_t _reserved[4];
+} swarp_scene_needs;
+
+/** What the caller can spend.  Zero means default for every field. */
+typedef struct swarp_budget {
+    double max_error;         /**< max screen pixels per texel, max(m_x, m_z) over the
+                                   view, > 0; 0: 1.0 */
+    uint32_t map_resolution;  /**< texels per side of one map; 0: 2048 */
+    uint32_t atlas_limit;     /**< largest texture side for the split atlas
+                                   ([RHS] §3.3.5), >= map_resolution not required; 0: 8192 */
+    uint32_t max_passes;      /**< most shadow (geometry) passes, 1..32; 0: 16 */
+    uint32_t _pad0;           /**< must be zero */
+    double time_budget_ns;    /**< frame time for shadows, ns; 0: no time limit */
+    double pass_cost_ns;      /**< one shadow pass at map_resolution, measured by the
+                                   caller; 0: 1.39e6 (fit to [RHS] Table 7.1) */
+    double blur_pass_cost_ns; /**< one separable prefilter blur pass over one map;
+                                   0: pass_cost_ns / 4 (assumption, docs/planning.md) */
+    uint32_t _reserved[4];
+} swarp_budget;
+
+typedef enum swarp_plan_warp {
+    SWARP_PLAN_WARP_DEFAULT = 0,       /**< = SWARP_PLAN_WARP_UNIFORM */
+    SWARP_PLAN_WARP_UNIFORM = 1,       /**< focused uniform map, n' = inf [RHS] §3.1 */
+    SWARP_PLAN_WARP_LISPSM_NOPT = 2,   /**< LiSPSM n_opt [RHS] (3.2) */
+    SWARP_PLAN_WARP_LISPSM_NREPAR = 3, /**< Lloyd's n_repar [RHS] (3.3)-(3.5) */
+    SWARP_PLAN_WARP_LISPSM_GMNPR = 4,  /**< λ_GMNPR [GMNPR] (8) */
+    SWARP_PLAN_WARP_LISPSM_PSEUDO = 5, /**< n_opt with pseudo-near/far 0.1, 0.1 [RHS] (4.2) */
+    SWARP_PLAN_WARP_PSM = 6,           /**< PSM, n' = n_repar(η = 1) [RHS] (3.4), [KOZ] */
+    SWARP_PLAN_WARP_FORCE_I32 = 0x7FFFFFFF
+} swarp_plan_warp;
+
+typedef enum swarp_plan_scheme {
+    SWARP_PLAN_SCHEME_DEFAULT = 0,     /**< = SWARP_PLAN_SCHEME_NONE */
+    SWARP_PLAN_SCHEME_NONE = 1,        /**< one map, no split */
+    SWARP_PLAN_SCHEME_PRACTICAL = 2,   /**< PSSM practical, λ = 0.5 [RHS] (3.8) */
+    SWARP_PLAN_SCHEME_LOG = 3,         /**< logarithmic [RHS] (3.7) */
+    SWARP_PLAN_SCHEME_FORCE_I32 = 0x7FFFFFFF
+} swarp_plan_scheme;
+
+typedef enum swarp_plan_stabilize {
+    SWARP_PLAN_STABILIZE_DEFAULT = 0,  /**< = SWARP_PLAN_STABILIZE_NONE */
+    SWARP_PLAN_STABILIZE_NONE = 1,
+    SWARP_PLAN_STABILIZE_APPROX64 = 2, /**< 64 scale levels + texel snap [RHS] §3.5 */
+    SWARP_PLAN_STABILIZE_FORCE_I32 = 0x7FFFFFFF
+} swarp_plan_stabilize;
+
+typedef enum swarp_plan_filter {
+    SWARP_PLAN_FILTER_DEFAULT = 0,     /**< = SWARP_PLAN_FILTER_NONE */
+    SWARP_PLAN_FILTER_NONE = 1,        /**< hard shadows */
+    SWARP_PLAN_FILTER_PCF = 2,         /**< percentage-closer filtering, no bleeding */
+    SWARP_PLAN_FILTER_VSM = 3,         /**< variance shadow map [VSM] (3.1)-(3.3) */
+    SWARP_PLAN_FILTER_MSM = 4,         /**< 4-moment shadow map (not in [VSM]) */
+    SWARP_PLAN_FILTER_EVSM = 5,        /**< exponential VSM [VSM] §4.2 */
+    SWARP_PLAN_FILTER_LVSM = 6,        /**< layered VSM [VSM] §4.1 */
+    SWARP_PLAN_FILTER_FORCE_I32 = 0x7FFFFFFF
+} swarp_plan_filter;
+
+/* Reason flags (swarp_plan.reasons): one bit per choice made or effect left
+ * out; swarp_plan_explain() turns each into a sentence. */
+#define SWARP_PLAN_WHY_ONE_MAP_MEETS      (1u << 0)  /**< one map meets the error budget */
+#define SWARP_PLAN_WHY_SPLITS_NEEDED      (1u << 1)  /**< fewest splits that meet the budget */
+#define SWARP_PLAN_WHY_WARP_LOWERS_ERROR  (1u << 2)  /**< the warp lowers the error at no pass */
+#define SWARP_PLAN_WHY_NO_WARP_NO_GAIN    (1u << 3)  /**< no warp lowers the error (duelling frusta) */
+#define SWARP_PLAN_WHY_NO_WARP_MOVING     (1u << 4)  /**< camera moves: warps cannot be stabilised */
+#define SWARP_PLAN_WHY_STABILIZE_MOVING   (1u << 5)  /**< stabilised because the camera moves */
+#define SWARP_PLAN_WHY_NO_STABILIZE_STATIC (1u << 6) /**< camera static: no stabilisation */
+#define SWARP_PLAN_WHY_INVERSE_PROJECTION (1u << 7)  /**< PSM with light behind: inverse projection [KOZ] */
+#define SWARP_PLAN_WHY_NO_INVERSE         (1u << 8)  /**< no inverse projection (light in front, or not PSM) */
+#define SWARP_PLAN_WHY_FILTER_SOFT        (1u << 9)  /**< filter because soft shadows are requested */
+#define SWARP_PLAN_WHY_NO_FILTER_HARD     (1u << 10) /**< no filter: hard shadows requested */
+#define SWARP_PLAN_WHY_LIXEL_PLANE        (1u << 11) /**< at least one lixel map [LIXEL] */
+#define SWARP_PLAN_WHY_NO_LIXEL_NONE      (1u << 12) /**< no plane of interest declared */
+#define SWARP_PLAN_WHY_NO_LIXEL_SKIPPED   (1u << 13) /**< a declared plane was left out (see plane_reason) */
+#define SWARP_PLAN_WHY_DEPTH_CLAMP        (1u << 14) /**< casters clamped to the light near plane */
+#define SWARP_PLAN_WHY_NO_CLAMP_DISALLOWED (1u << 15) /**< clamping not allowed by the needs */
+#define SWARP_PLAN_WHY_NO_CLAMP_WARPED    (1u << 16) /**< clamping left out: it breaks warped maps [RHS] §3.1.2 */
+#define SWARP_PLAN_WHY_BUDGET_UNMET       (1u << 17) /**< nothing meets the budget: most accurate within the pass limit */
+#define SWARP_PLAN_WHY_TIME_LIMITED       (1u << 18) /**< the time budget excluded chains that met the error budget */
+#define SWARP_PLAN_WHY_ATLAS_SHRINK       (1u << 19) /**< the atlas limit shrinks each split's map */
+#define SWARP_PLAN_WHY_NEAR_FAR_ADJUSTED  (1u << 20) /**< near/far fitted to the scene box [RHS] §3.3.1 */
+#define SWARP_PLAN_WHY_POINT_AS_DIRECTIONAL (1u << 21) /**< point light modelled as directional */
+#define SWARP_PLAN_WHY_PASS_LIMITED       (1u << 22) /**< the pass limit excluded chains */
+#define SWARP_PLAN_WHY_FORCED             (1u << 23) /**< chain given by the caller (swarp_plan_evaluate) */
+
+/* Per-plane outcome (swarp_plan.plane_reason[i]). */
+#define SWARP_PLAN_PLANE_USED           0u /**< a lixel map covers the plane */
+#define SWARP_PLAN_PLANE_CAMERA_ON_PLANE 1u /**< the camera lies on the plane: no front side */
+#define SWARP_PLAN_PLANE_LIGHT_GRAZING  2u /**< light from the other side or under 5° elevation */
+#define SWARP_PLAN_PLANE_NOT_VISIBLE    3u /**< the plane misses the view frustum */
+#define SWARP_PLAN_PLANE_NO_PASS_LEFT   4u /**< the pass limit (or time budget) is used up */
+#define SWARP_PLAN_PLANE_LIXEL_REFUSED  5u /**< swarp_lixel_matrix gave another error (e.g. singular) */
+
+/** The chosen chain.  All errors are Lloyd's m_x, m_z (screen pixels per
+ *  texel side); costs per the cost model of docs/planning.md.
+ *  C has one namespace for functions and typedefs, so the type is the struct
+ *  tag `struct swarp_plan` (the function is swarp_plan()), with the typedef
+ *  swarp_plan_result as a shorter name for the same type. */
+typedef struct swarp_plan {
+    swarp_plan_warp warp;             /**< the warp of every split */
+    swarp_plan_scheme scheme;         /**< split scheme (NONE for one map) */
+    uint32_t split_count;             /**< K, 1..SWARP_PLAN_MAX_SPLITS */
+    uint32_t map_resolution;          /**< texels per side of each split's map */
+    uint32_t atlas_tiles;             /**< atlas tiles per side, ceil(sqrt(K)) */
+    swarp_plan_stabilize stabilize;
+    uint32_t inverse_projection;      /**< 1: PSM with the light behind the camera [KOZ] */
+    uint32_t depth_clamp;             /**< 1: clamp casters to the light near plane */
+    double gamma;                     /**< angle view dir / direction to the light, rad in [0, pi] */
+    double near, far;                 /**< the view depth range planned for (after adjustment) */
+    double splits[SWARP_PLAN_MAX_SPLITS + 1]; /**< C_0 = near .. C_K = far */
+    double n_prime[SWARP_PLAN_MAX_SPLITS];    /**< warp parameter per split in light-space
+                                                   units; +INFINITY = uniform */
+    double split_max_mx[SWARP_PLAN_MAX_SPLITS];
+    double split_max_mz[SWARP_PLAN_MAX_SPLITS];
+    double max_mx, max_mz;            /**< over the whole view */
+    double max_error;                 /**< max(max_mx, max_mz), compared with the budget */
+    double error_area;                /**< max_mx * max_mz (texel-area error bound) */
+    uint32_t lixel_count;             /**< planes with a lixel map */
+    uint32_t lixel_planes[SWARP_PLAN_MAX_PLANES]; /**< their indices in needs->planes */
+    uint32_t plane_reason[SWARP_PLAN_MAX_PLANES]; /**< SWARP_PLAN_PLANE_* per declared plane */
+    double lixel_error;               /**< predicted pixels per texel on a lixel plane */
+    swarp_plan_filter filter;
+    uint32_t filter_layers;           /**< LVSM layers (4), else 0 */
+    double filter_width;              /**< kernel width in texels (0 without filter) */
+    double filter_exponent_pos;       /**< EVSM positive exponent c+ (40), else 0 */
+    double filter_exponent_neg;       /**< EVSM negative exponent c- (5), else 0 */
+    uint32_t shadow_passes;           /**< K + lixel_count */
+    uint32_t blur_passes;             /**< prefilter blur passes (2 per map and layer pair) */
+    double texels;                    /**< texels of all maps (atlas tiles used + lixel maps) */
+    double cost_ns;                   /**< predicted time of all passes */
+    uint32_t meets_budget;            /**< 1: error (and time) budget met */
+    uint32_t reasons;                 /**< SWARP_PLAN_WHY_* flags */
+    uint32_t candidates;              /**< candidate chains evaluated */
+    uint32_t plane_count;             /**< planes declared in the needs (plane_reason valid) */
+    uint32_t _reserved[4];
+} swarp_plan_result;
+
+/** A chain to evaluate as it is (swarp_plan_evaluate). */
+typedef struct swarp_plan_chain {
+    swarp_plan_warp warp;
+    swarp_plan_scheme scheme;   /**< NONE requires split_count 1 (0 means 1) */
+    uint32_t split_count;       /**< 0: 1 */
+    swarp_plan_stabilize stabilize;
+    uint32_t _reserved[4];
+} swarp_plan_chain;
+
+/** @brief Plan the cheapest chain that meets the budget.
+ *  Candidates: uniform, LiSPSM (n_opt, n_repar, λ_GMNPR, pseudo-near/far),
+ *  PSM (+ inverse projection when the light is behind) as one map; PSSM with
+ *  K = 2..16 splits (practical λ = 0.5 or logarithmic) unwarped, with n_opt
+ *  or with n_repar per split.  A moving camera admits only unwarped chains
+ *  (stabilised, [RHS] §3.5).  Chosen: the fewest passes whose predicted
+ *  max(m_x, m_z) <= budget->max_error (and cost <= time budget); ties go to
+ *  the lower error, then to the earlier (simpler) candidate.  If none meets
+ *  it: the most accurate chain within the pass limit and
+ *  SWARP_INFO_PLAN_BUDGET_UNMET.  Then the filter (soft shadows only), depth
+ *  clamping and lixel maps for declared lixel-friendly planes (passes left).
+ *  Error model [RHS] (2.3)-(2.8), generalised to any γ (docs/planning.md).
+ *  @param[in]  needs   scene; NULL or zeroed fields mean the defaults
+ *  @param[in]  budget  budget; NULL or zeroed fields mean the defaults
+ *  @param[out] out_plan the plan (untouched on error)
+ *  @return SWARP_OK; SWARP_INFO_PLAN_BUDGET_UNMET; SWARP_INFO_PLAN_POINT_LIGHT;
+ *          SWARP_ERR_NULL_POINTER (out_plan), SWARP_ERR_NON_FINITE,
+ *          SWARP_ERR_RESERVED_NONZERO, SWARP_ERR_UNKNOWN_ENUM,
+ *          SWARP_ERR_ZERO_VECTOR, SWARP_ERR_DEGENERATE (up parallel to dir),
+ *          SWARP_ERR_FOV, SWARP_ERR_NEAR_FAR, SWARP_ERR_OUT_OF_RANGE (aspect,
+ *          cone, soft_width, max_error, time, costs, max_passes > 32, scene
+ *          box min > max), SWARP_ERR_RESOLUTION (screen or map above 65536),
+ *          SWARP_ERR_PLAN_TOO_MANY_PLANES, SWARP_ERR_PLAN_EMPTY_VIEW. */
+SWARP_API swarp_status swarp_plan(const swarp_scene_needs* needs, const swarp_budget* budget,
+                                  struct swarp_plan* out_plan);
+
+/** @brief Predict one given chain (no choice of warp or splits): the same
+ *  error and cost model and the same filter / lixel / clamp decisions as
+ *  swarp_plan(), for reports and for callers that force a technique.
+ *  meets_budget says whether it meets the budget; the pass limit is not
+ *  enforced on the chain (lixel maps still use only passes left).
+ *  @return as swarp_plan (never SWARP_INFO_PLAN_BUDGET_UNMET), plus
+ *          SWARP_ERR_SPLIT_COUNT (K > 16, or K > 1 with SCHEME_NONE, or K = 1
+ *          with a split scheme) and SWARP_ERR_UNKNOWN_ENUM for the chain. */
+SWARP_API swarp_status swarp_plan_evaluate(const swarp_scene_needs* needs,
+                                           const swarp_budget* budget,
+                                           const swarp_plan_chain* chain,
+                                           struct swarp_plan* out_plan);
+
+/** @brief Readable text of a plan: the chain, the predicted error and cost,
+ *  and one line per reason flag and per left-out plane.  Locale-independent.
+ *  @param[out] out       text, NUL-terminated; may be NULL when capacity is 0
+ *  @param[in]  capacity  bytes available in out
+ *  @param[out] out_count bytes needed including the NUL (always written)
+ *  @return SWARP_OK; SWARP_ERR_CAPACITY (out untouched, *out_count = needed);
+ *          SWARP_ERR_NULL_POINTER (plan or out_count, or out with capacity > 0);
+ *          SWARP_ERR_UNKNOWN_ENUM (plan's enums). */
+SWARP_API swarp_status swarp_plan_explain(const struct swarp_plan* plan, char* out, size_t capacity,
+                                          size_t* out_count);
+
+/** @brief Short names for the plan's enums ("lispsm-nopt", "pssm-log",
+ *  "evsm", ...); never NULL ("?" for unknown values). */
+SWARP_API const char* swarp_plan_warp_name(swarp_plan_warp w);
+SWARP_API const char* swarp_plan_scheme_name(swarp_plan_scheme s);
+SWARP_API const char* swarp_plan_filter_name(swarp_plan_filter f);
 /* <<< api: plan */
 
 /* >>> api: extras (src/cube.c mindepth.c) */

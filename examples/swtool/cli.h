@@ -68,6 +68,8 @@ int cmd_stabwalk(sw_args* a);
 int cmd_cascade(sw_args* a);
 
 /* stage: plan */
+int cmd_plan(sw_args* a);
+int cmd_bench_report(sw_args* a);
 
 /* stage: extras */
 

@@ -25,6 +25,8 @@ static const sw_cmd commands[] = {
     {"stabwalk", cmd_stabwalk, "texel coordinates of a fixed point while the camera moves [--res --steps]"},
 
     /* stage: plan */
+    {"plan", cmd_plan, "the planner: --gamma/--eye/--dir.. --max-error --map --max-passes [--force W]"},
+    {"bench-report", cmd_bench_report, "accuracy/cost report: tables and Pareto data [--out-dir D]"},
 
     /* stage: extras */
 
