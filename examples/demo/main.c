@@ -33,7 +33,8 @@ typedef struct options {
     const char* out;
     const char* obj;
     const char* test;
-    float blend, grid;
+    float blend, grid, offset;
+    demo_select select;
     double path[6 * 256]; /**< --camera FILE: eye and dir per frame */
     int path_count;
 } options;
@@ -55,6 +56,8 @@ static void usage(void) {
         "  --map RES               texels per map side (default 1024)\n"
         "  --grid N                texels per cell in the texel-grid picture (default 8)\n"
         "  --blend F               split blend band, fraction of a split (default 0.1)\n"
+        "  --select depth|best     split selection: eye depth or best resolution (ZZB09)\n"
+        "  --offset K              normal-offset bias in texels (default 1)\n"
         "  --obj FILE              a Wavefront OBJ instead of the built-in scene\n"
         "  --out DIR               output directory (default ./out)\n"
         "  --test images|iou|measure  headless checks (exit 0 pass, 1 fail, 77 skip)\n");
@@ -75,6 +78,7 @@ static int parse_options(int argc, char** argv, options* o) {
     o->map = 1024;
     o->out = "out";
     o->blend = 0.1f;
+    o->offset = 1.0f;
     o->grid = 8;
     for (int i = 1; i < argc; ++i) {
         const char* a = argv[i];
@@ -166,6 +170,21 @@ static int parse_options(int argc, char** argv, options* o) {
         } else if (!strcmp(a, "--blend")) {
             NEED();
             o->blend = (float)atof(val);
+        } else if (!strcmp(a, "--select")) {
+            NEED();
+            if (!strcmp(val, "depth")) o->select = DEMO_SELECT_DEPTH;
+            else if (!strcmp(val, "best")) o->select = DEMO_SELECT_BEST;
+            else {
+                fprintf(stderr, "demo: --select depth|best\n");
+                return -1;
+            }
+        } else if (!strcmp(a, "--offset")) {
+            NEED();
+            o->offset = (float)atof(val);
+            if (!(o->offset >= 0 && o->offset <= 16)) {
+                fprintf(stderr, "demo: --offset 0..16 texels\n");
+                return -1;
+            }
         } else if (!strcmp(a, "--obj")) {
             NEED();
             o->obj = val;
@@ -230,8 +249,8 @@ static int camera_preset(const char* name, int w, int h, swarp_camera* c) {
         c->dir = (swarp_vec3){220, -160, -480};
         c->far = 1000;
     } else if (!strcmp(name, "room")) {
-        c->eye = (swarp_vec3){48, 8, 350};
-        c->dir = (swarp_vec3){22, -7, -30};
+        c->eye = (swarp_vec3){-52, 12, 48};
+        c->dir = (swarp_vec3){-23, -11, -40};
         c->near = 0.5;
         c->far = 600;
     } else if (!strcmp(name, "path")) {
@@ -385,6 +404,7 @@ static int run_technique(const options* o, demo_renderer* r, const demo_view* v,
     req.splits = splits;
     req.scheme = o->scheme;
     req.scheme_lambda = o->scheme_lambda;
+    req.select = o->select;
     req.map_res = o->map;
     req.screen_w = v->w;
     req.screen_h = v->h;
@@ -407,6 +427,7 @@ static int run_technique(const options* o, demo_renderer* r, const demo_view* v,
     p.filter = o->filter;
     p.blend = sh.count > 1 ? o->blend : 0.0f;
     p.grid = o->grid;
+    p.normal_offset = o->offset;
     p.vw = v->w;
     p.vh = v->h;
     /* shaded view, then the measurement from the same pass's float targets */

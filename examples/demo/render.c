@@ -31,9 +31,15 @@ static const char* const main_vs =
     "  gl_Position = u_proj * vs;\n"
     "}\n";
 
-/* Split selection by eye depth (ZSXL06, [RHS] §3.3.3) with a blend band at
- * the far end of each split.  TEMPORARY mirror of the selection rule until
- * the splits stage ships its CPU reference and GLSL twin. */
+/* Map selection, mirroring the library's CPU references:
+ *   u_select 0: by eye depth, swarp_cascade_select_depth [RHS] §3.3.3 (a
+ *     depth on a border belongs to the split that starts there), with the
+ *     blend band of swarp_cascade_blend (weight w of split i, 1 - w of i+1);
+ *   u_select 1: best resolution, swarp_cascade_select_best (ZZB09): among
+ *     the maps covering p the one with the smallest world texel L_texel
+ *     (the texel_world twin of docs/splits.md), else the depth choice;
+ *   u_select 2: swarp_lixel_select: the first map whose clip volume holds
+ *     p in x and y (w > 0), else the last map (the fallback). */
 static const char* const main_fs =
     "in vec3 v_p; in vec3 v_n; in vec3 v_c; in float v_depth;\n"
     "layout(location = 0) out vec4 o_color;\n"
@@ -41,25 +47,58 @@ static const char* const main_fs =
     "layout(location = 2) out vec4 o_pos;\n"
     "uniform sampler2DArrayShadow u_shadow;\n"
     "uniform mat4 u_light[16];\n"
+    "uniform mat4 u_light_inv[16];\n"
+    "uniform vec2 u_uvscale[16];\n"
     "uniform float u_split[17];\n"
-    "uniform int u_count, u_mode, u_filter;\n"
-    "uniform float u_res, u_blend, u_grid;\n"
+    "uniform int u_count, u_mode, u_filter, u_select;\n"
+    "uniform float u_res, u_blend, u_grid, u_offset;\n"
     "uniform vec3 u_light_dir;\n"
-    "int select_split(float z) {\n"
+    "int select_depth(float z) {\n"
     "  for (int i = 0; i < u_count - 1; ++i) if (z < u_split[i + 1]) return i;\n"
     "  return u_count - 1;\n"
     "}\n"
     "float blend_weight(int i, float z) {\n"
-    "  if (i >= u_count - 1 || u_blend <= 0.0) return 0.0;\n"
+    "  if (i >= u_count - 1 || u_blend <= 0.0) return 1.0;\n"
     "  float band = u_blend * (u_split[i + 1] - u_split[i]);\n"
-    "  return clamp((z - (u_split[i + 1] - band)) / band, 0.0, 1.0);\n"
+    "  return clamp((u_split[i + 1] - z) / band, 0.0, 1.0);\n"
     "}\n"
-    "vec3 map_coord(int i) {\n"
-    "  vec4 c = u_light[i] * vec4(v_p, 1.0);\n"
-    "  return c.xyz / c.w * 0.5 + 0.5;\n"
+    "bool covers(int i, vec3 p) {\n"
+    "  vec4 h = u_light[i] * vec4(p, 1.0);\n"
+    "  return h.w > 0.0 && abs(h.x) <= h.w && abs(h.y) <= h.w;\n"
+    "}\n"
+    /* [KOZ] §14.2.3 texel_world, the GLSL twin of swarp_bias_texel_size */
+    "float texel_world(int i, vec3 p) {\n"
+    "  vec4 h = u_light[i] * vec4(p, 1.0);\n"
+    "  vec3 ndc = h.xyz / h.w;\n"
+    "  vec2 r = u_res * u_uvscale[i];\n"
+    "  vec4 qs = u_light_inv[i] * vec4(ndc.x + 2.0 / r.x, ndc.y, ndc.z, 1.0);\n"
+    "  vec4 qt = u_light_inv[i] * vec4(ndc.x, ndc.y + 2.0 / r.y, ndc.z, 1.0);\n"
+    "  return max(length(qs.xyz / qs.w - p), length(qt.xyz / qt.w - p));\n"
+    "}\n"
+    "int select_map(vec3 p, float z) {\n"
+    "  if (u_select == 2) {\n"
+    "    for (int i = 0; i < u_count - 1; ++i) if (covers(i, p)) return i;\n"
+    "    return u_count - 1;\n"
+    "  }\n"
+    "  int d = select_depth(z);\n"
+    "  if (u_select == 0) return d;\n"
+    "  int best = -1; float lt = 0.0;\n"
+    "  for (int i = 0; i < u_count; ++i) {\n"
+    "    vec4 h = u_light[i] * vec4(p, 1.0);\n"
+    "    if (!(h.w > 0.0 && abs(h.x) <= h.w && abs(h.y) <= h.w && abs(h.z) <= h.w)) continue;\n"
+    "    float l = texel_world(i, p);\n"
+    "    if (best < 0 || l < lt) { best = i; lt = l; }\n"
+    "  }\n"
+    "  return best < 0 ? d : best;\n"
+    "}\n"
+    "vec3 map_coord(int i, vec3 p) {\n"
+    "  vec4 c = u_light[i] * vec4(p, 1.0);\n"
+    "  vec3 sc = c.xyz / c.w * 0.5 + 0.5;\n"
+    "  return vec3(sc.xy * u_uvscale[i], sc.z);\n"
     "}\n"
     "float lookup(int i, vec3 sc) {\n"
-    "  if (any(lessThan(sc, vec3(0.0))) || any(greaterThan(sc, vec3(1.0)))) return 1.0;\n"
+    "  if (any(lessThan(sc, vec3(0.0))) || sc.x > u_uvscale[i].x || sc.y > u_uvscale[i].y ||\n"
+    "      sc.z > 1.0) return 1.0;\n"
     "  float ref = sc.z;\n"
     "  if (u_filter == 0) {\n"
     "    vec2 t = (floor(sc.xy * u_res) + 0.5) / u_res;\n"
@@ -100,25 +139,31 @@ static const char* const main_fs =
     "void main() {\n"
     "  vec3 n = normalize(v_n);\n"
     "  if (!gl_FrontFacing) n = -n;\n"
-    "  float ndl = max(dot(n, -u_light_dir), 0.0);\n"
-    "  int i = select_split(v_depth);\n"
-    "  vec3 sc = map_coord(i);\n"
+    "  vec3 to_light = -normalize(u_light_dir);\n"
+    "  float ndl = max(dot(n, to_light), 0.0);\n"
+    "  int i = select_map(v_p, v_depth);\n"
+    /* normal-offset bias (docs/splits.md twin of swarp_bias_normal_offset) */
+    "  vec3 pb = v_p + n * (u_offset * texel_world(i, v_p) * (1.0 - clamp(dot(n, to_light), 0.0, 1.0)));\n"
+    "  vec3 sc = map_coord(i, pb);\n"
     "  float lit = 1.0;\n"
     "  if (u_mode != 4) {\n"
     "    lit = lookup(i, sc);\n"
-    "    float w = blend_weight(i, v_depth);\n"
-    "    if (w > 0.0) lit = mix(lit, lookup(i + 1, map_coord(i + 1)), w);\n"
+    "    if (u_select == 0) {\n"
+    "      float w = blend_weight(i, v_depth);\n"
+    "      if (w < 1.0) lit = lit * w + lookup(i + 1, map_coord(i + 1, pb)) * (1.0 - w);\n"
+    "    }\n"
     "  }\n"
     "  if (ndl <= 0.0) lit = 0.0;\n"
+    "  vec3 sc0 = map_coord(i, v_p);\n"
     "  vec3 shaded = v_c * (0.35 + 0.65 * ndl * lit);\n"
     "  vec3 col = shaded;\n"
-    "  if (u_mode == 1) col = sampling_color(sc.xy) * (0.55 + 0.45 * ndl * lit);\n"
+    "  if (u_mode == 1) col = sampling_color(sc0.xy) * (0.55 + 0.45 * ndl * lit);\n"
     "  else if (u_mode == 2) {\n"
     "    const vec3 sp[4] = vec3[4](vec3(1,0,0), vec3(1,1,0), vec3(0,1,0), vec3(0,0,1));\n"
     "    col = mix(shaded, sp[i % 4] * (0.45 + 0.55 * ndl * lit), 0.6);\n"
-    "  } else if (u_mode == 3) col = mix(shaded, vec3(0.0), grid_line(sc.xy));\n"
+    "  } else if (u_mode == 3) col = mix(shaded, vec3(0.0), grid_line(sc0.xy));\n"
     "  o_color = vec4(col, 1.0);\n"
-    "  o_tex = vec4(sc.xy * u_res, float(i), v_depth);\n"
+    "  o_tex = vec4(sc0.xy * u_res, float(i), v_depth);\n"
     "  o_pos = vec4(v_p, lit);\n"
     "}\n";
 
@@ -209,8 +254,8 @@ int demo_render_shadow(demo_renderer* r, const demo_shadow* sh, double* ms_out) 
     glReadBuffer(GL_NONE);
     glUseProgram(r->prog_depth);
     glBindVertexArray(r->vao);
-    glViewport(0, 0, r->map_res, r->map_res);
     glEnable(GL_DEPTH_TEST);
+    if (sh->depth_clamp) glEnable(GL_DEPTH_CLAMP);
     glDepthFunc(GL_LESS);
     glDepthMask(GL_TRUE);
     glDisable(GL_CULL_FACE);
@@ -222,7 +267,9 @@ int demo_render_shadow(demo_renderer* r, const demo_shadow* sh, double* ms_out) 
     for (int i = 0; i < sh->count && i < r->layers; ++i) {
         double t0 = demo_now_ms();
         glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, r->shadow_tex, 0, i);
+        glViewport(0, 0, r->map_res, r->map_res);
         glClear(GL_DEPTH_BUFFER_BIT);
+        glViewport(0, 0, sh->viewport[i][0], sh->viewport[i][1]);
         float m[16];
         to_float(&sh->light[i], m);
         glUniformMatrix4fv(loc, 1, GL_FALSE, m);
@@ -234,6 +281,7 @@ int demo_render_shadow(demo_renderer* r, const demo_shadow* sh, double* ms_out) 
         errors += demo_gl_check(name);
     }
     glDisable(GL_POLYGON_OFFSET_FILL);
+    glDisable(GL_DEPTH_CLAMP);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     return errors;
 }
@@ -259,11 +307,22 @@ int demo_render_main(demo_renderer* r, const demo_shadow* sh, const demo_main_pa
     glBindVertexArray(r->vao);
     glUniformMatrix4fv(glGetUniformLocation(pr, "u_view"), 1, GL_FALSE, p->view);
     glUniformMatrix4fv(glGetUniformLocation(pr, "u_proj"), 1, GL_FALSE, p->proj);
-    float lm[DEMO_MAX_SPLITS * 16];
+    float lm[DEMO_MAX_SPLITS * 16], li[DEMO_MAX_SPLITS * 16], uvs[DEMO_MAX_SPLITS * 2];
     float split[DEMO_MAX_SPLITS + 1];
-    for (int i = 0; i < sh->count; ++i) to_float(&sh->light[i], lm + 16 * i);
+    for (int i = 0; i < sh->count; ++i) {
+        to_float(&sh->light[i], lm + 16 * i);
+        swarp_mat4 inv;
+        if (swarp_mat4_invert(&sh->light[i], &inv) != SWARP_OK) memset(&inv, 0, sizeof inv);
+        to_float(&inv, li + 16 * i);
+        uvs[2 * i] = (float)sh->viewport[i][0] / (float)r->map_res;
+        uvs[2 * i + 1] = (float)sh->viewport[i][1] / (float)r->map_res;
+    }
     for (int i = 0; i <= sh->count; ++i) split[i] = (float)sh->split[i];
     glUniformMatrix4fv(glGetUniformLocation(pr, "u_light"), sh->count, GL_FALSE, lm);
+    glUniformMatrix4fv(glGetUniformLocation(pr, "u_light_inv"), sh->count, GL_FALSE, li);
+    glUniform2fv(glGetUniformLocation(pr, "u_uvscale"), sh->count, uvs);
+    glUniform1i(glGetUniformLocation(pr, "u_select"), (int)sh->select);
+    glUniform1f(glGetUniformLocation(pr, "u_offset"), p->normal_offset);
     glUniform1fv(glGetUniformLocation(pr, "u_split"), sh->count + 1, split);
     glUniform1i(glGetUniformLocation(pr, "u_count"), sh->count);
     glUniform1i(glGetUniformLocation(pr, "u_mode"), (int)p->mode);

@@ -52,6 +52,7 @@ typedef struct demo_main_params {
     demo_filter filter;
     float blend;                    /**< split blend band, fraction of a split */
     float grid;                     /**< texels per grid cell (Listing A.4 "size") */
+    float normal_offset;            /**< normal-offset bias, texels (swarp_bias_normal_offset) */
     int vw, vh;                     /**< viewport (<= target size) */
 } demo_main_params;
 

@@ -8,10 +8,14 @@
  * in the demo computes shadow maths. */
 #include "shadow.h"
 
+#include <cglm/cglm.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+
+#include "scene.h"
+#include "shadowwarp_cglm.h"
 
 static const char* const tech_names[DEMO_TECH_COUNT] = {
     "uniform", "lispsm", "repar", "gmnpr", "psm", "pssm", "pssm-lispsm", "lixel"};
@@ -51,7 +55,7 @@ int demo_scheme_parse(const char* name, double* lambda) {
 
 int demo_technique_available(demo_technique t) {
     /* TEMPORARY: only what the stand-in fit can do. */
-    return t == DEMO_TECH_UNIFORM || t == DEMO_TECH_PSSM;
+    return t == DEMO_TECH_UNIFORM || t == DEMO_TECH_PSSM || t == DEMO_TECH_LIXEL;
 }
 
 /* ------------------------------------------------------------------------ */
@@ -123,6 +127,67 @@ static void temp_fit(const swarp_camera* cam, const swarp_light* light, const sw
     *out = m;
 }
 
+/* The viewer's view-projection (world -> clip) in double, from the
+ * renderer's own cglm matrices. */
+static void viewer_matrix(const swarp_camera* cam, swarp_mat4* out) {
+    vec3 eye = {(float)cam->eye.x, (float)cam->eye.y, (float)cam->eye.z};
+    vec3 dir = {(float)cam->dir.x, (float)cam->dir.y, (float)cam->dir.z};
+    vec3 up = {(float)cam->up.x, (float)cam->up.y, (float)cam->up.z};
+    mat4 view, proj;
+    glm_look(eye, dir, up, view);
+    glm_perspective((float)cam->fovy, (float)cam->aspect, (float)cam->near, (float)cam->far, proj);
+    swarp_mat4 v, p;
+    swarp_cglm_mat4_to_swarp(view, &v);
+    swarp_cglm_mat4_to_swarp(proj, &p);
+    swarp_mat4_mul(&p, &v, out);
+}
+
+/* One plane of interest [LIXEL]: M_l from the viewer matrix, restricted to
+ * the rays through the plane's rectangle inside the view (Fig. 6), scaled
+ * down only if the rectangle would not fit the map, and factored into the
+ * clip matrix GLP the shadow pass renders with.  0 on success. */
+static int lixel_map(const swarp_mat4* M_v, const demo_shadow_request* req,
+                     const swarp_light* light, const swarp_plane* plane,
+                     const swarp_vec3 rect[4], swarp_mat4* out_GLP, int out_vp[2],
+                     swarp_status* out_status) {
+    swarp_mat4 M_l, M_r, GLV, GLP;
+    swarp_status st = swarp_lixel_matrix(M_v, (uint32_t)req->screen_w, (uint32_t)req->screen_h,
+                                         light, plane, NULL, &M_l, NULL);
+    if (swarp_status_is_error(st)) {
+        *out_status = st;
+        return -1;
+    }
+    swarp_vec4 C[4];
+    for (int i = 0; i < 4; ++i) C[i] = (swarp_vec4){rect[i].x, rect[i].y, rect[i].z, 1.0};
+    swarp_lixel_restrict_options ro;
+    memset(&ro, 0, sizeof ro);
+    ro.view_width = (uint32_t)req->screen_w;
+    ro.view_height = (uint32_t)req->screen_h;
+    swarp_lixel_rect r;
+    swarp_status st2 = swarp_lixel_restrict(&M_l, C, 4, &ro, &r, NULL, &M_r);
+    if (!swarp_status_is_error(st2) &&
+        (r.width > (uint32_t)req->map_res || r.height > (uint32_t)req->map_res)) {
+        /* fewer lixels than pixels: the largest scale that fits the map */
+        double sc = (double)req->map_res / (double)(r.width > r.height ? r.width : r.height);
+        ro.scale_x = ro.scale_y = 0.999 * sc;
+        st2 = swarp_lixel_restrict(&M_l, C, 4, &ro, &r, NULL, &M_r);
+    }
+    if (swarp_status_is_error(st2)) {
+        *out_status = st2;
+        return -1;
+    }
+    st2 = swarp_lixel_factor(&M_r, r.width, r.height, SWARP_DEPTH_NEG_ONE_TO_ONE, 0.0, &GLV, &GLP);
+    if (swarp_status_is_error(st2)) {
+        *out_status = st2;
+        return -1;
+    }
+    *out_GLP = GLP;
+    out_vp[0] = (int)r.width;
+    out_vp[1] = (int)r.height;
+    *out_status = st;
+    return 0;
+}
+
 /* Split distances C_0..C_K over [near, far] from the library's schemes
  * [RHS] (3.6)-(3.8). */
 static int split_distances(const demo_shadow_request* req, double near, double far, int k,
@@ -171,6 +236,41 @@ int demo_shadow_setup(const swarp_camera* cam, const swarp_light* light,
     memset(&sh, 0, sizeof sh);
     sh.near = cam->near;
     sh.far = cam->far;
+    sh.select = req->select == DEMO_SELECT_BEST ? DEMO_SELECT_BEST : DEMO_SELECT_DEPTH;
+    sh.model_applies = 1;
+    for (int i = 0; i < DEMO_MAX_SPLITS; ++i) sh.viewport[i][0] = sh.viewport[i][1] = req->map_res;
+    if (req->technique == DEMO_TECH_LIXEL) {
+        /* [LIXEL] §3: a map for the floor, one for the wall, and a
+         * conventional fallback map for everything else */
+        demo_room room;
+        demo_scene_room(&room);
+        swarp_mat4 M_v;
+        viewer_matrix(cam, &M_v);
+        int n = 0;
+        swarp_status st = SWARP_OK;
+        const swarp_plane* planes[2] = {&room.floor, &room.wall};
+        const swarp_vec3* rects[2] = {room.floor_rect, room.wall_rect};
+        for (int k = 0; k < 2; ++k) {
+            swarp_status sk;
+            if (lixel_map(&M_v, req, light, planes[k], rects[k], &sh.light[n], sh.viewport[n], &sk) == 0)
+                ++n;
+            if (sk != SWARP_OK && st == SWARP_OK) st = sk; /* first note or error */
+        }
+        temp_fit(cam, light, scene, sh.near, sh.far, &sh.light[n]);
+        sh.n_prime[n] = INFINITY;
+        sh.count = n + 1;
+        sh.split[0] = sh.near;
+        sh.split[1] = sh.far;
+        sh.select = DEMO_SELECT_LIXEL;
+        sh.depth_clamp = 1;
+        sh.model_applies = 0;
+        sh.predicted_max_mx = sh.predicted_max_mz = NAN;
+        sh.status = st;
+        sh.source = n == 2 ? "library (swarp_lixel_*) + demo stand-in fallback"
+                           : "library (swarp_lixel_*, a plane failed) + demo stand-in fallback";
+        *out = sh;
+        return 0;
+    }
     sh.count = req->technique == DEMO_TECH_PSSM ? req->splits : 1;
     if (sh.count < 1 || sh.count > DEMO_MAX_SPLITS) return -1;
     if (split_distances(req, sh.near, sh.far, sh.count, sh.split)) return -1;
@@ -197,6 +297,10 @@ int demo_have_error_model(void) {
 int demo_predict(const demo_shadow* sh, double fovy, int w, int h, int map_res, double z,
                  double* out_mx, double* out_mz) {
 #ifdef DEMO_HAVE_ERROR_MODEL
+    if (!sh->model_applies) {
+        *out_mx = *out_mz = NAN;
+        return -1;
+    }
     swarp_error_config cfg;
     memset(&cfg, 0, sizeof cfg);
     cfg.near = sh->near;

@@ -29,17 +29,30 @@ typedef enum demo_scheme {
     DEMO_SCHEME_COUNT
 } demo_scheme;
 
+/** How the main pass picks the map for a fragment. */
+typedef enum demo_select {
+    DEMO_SELECT_DEPTH = 0, /**< by eye depth, swarp_cascade_select_depth [RHS] §3.3.3 */
+    DEMO_SELECT_BEST,      /**< best resolution, swarp_cascade_select_best (ZZB09) */
+    DEMO_SELECT_LIXEL      /**< first map covering p, else the fallback: swarp_lixel_select */
+} demo_select;
+
 typedef struct demo_shadow_request {
     demo_technique technique;
     int splits;          /**< K for the PSSM techniques (1..DEMO_MAX_SPLITS) */
     demo_scheme scheme;
     double scheme_lambda; /**< practical scheme's lambda in [0, 1] */
     int map_res;          /**< texels per side of each map */
+    demo_select select;   /**< DEPTH or BEST for the PSSM techniques */
     int screen_w, screen_h;
 } demo_shadow_request;
 
+
 typedef struct demo_shadow {
     int count;                              /**< number of maps (passes) */
+    demo_select select;
+    int viewport[DEMO_MAX_SPLITS][2];       /**< texels of the layer each map uses */
+    int depth_clamp;                        /**< pancake casters in front of the near plane */
+    int model_applies;                      /**< Lloyd's m_x, m_z describe this configuration */
     swarp_mat4 light[DEMO_MAX_SPLITS];      /**< world -> light clip, per map */
     double split[DEMO_MAX_SPLITS + 1];      /**< eye-depth split distances C_i */
     double n_prime[DEMO_MAX_SPLITS];        /**< warp n' per map (INFINITY = uniform) */
