@@ -60,7 +60,7 @@ static void usage(void) {
         "  --offset K              normal-offset bias in texels (default 1)\n"
         "  --obj FILE              a Wavefront OBJ instead of the built-in scene\n"
         "  --out DIR               output directory (default ./out)\n"
-        "  --test images|iou|measure  headless checks (exit 0 pass, 1 fail, 77 skip)\n");
+        "  --test images|iou|measure|select  headless checks (exit 0 pass, 1 fail, 77 skip)\n");
 }
 
 static int parse_options(int argc, char** argv, options* o) {
@@ -903,6 +903,106 @@ static int test_measure(const options* o) {
     return ran ? 0 : EXIT_SKIP;
 }
 
+/* The shader's map selection against the library's CPU references, pixel
+ * by pixel: swarp_cascade_select_depth and swarp_cascade_select_best for
+ * PSSM(4), swarp_lixel_select for the lixel maps.  A few pixels may differ
+ * where float (GPU) and double (CPU) disagree right on a border. */
+static int test_select(const options* o) {
+    demo_view v;
+    memset(&v, 0, sizeof v);
+    v.w = o->w;
+    v.h = o->h;
+    demo_scene scene;
+    if (demo_scene_default(&scene)) return 1;
+    demo_renderer r;
+    if (demo_render_init(&r, &scene, v.w, v.h, o->map, DEMO_MAX_SPLITS)) return 1;
+    float* tex = malloc(sizeof(float) * 4 * (size_t)v.w * v.h);
+    float* pos = malloc(sizeof(float) * 4 * (size_t)v.w * v.h);
+    int fails = 0;
+    struct {
+        demo_technique t;
+        demo_select sel;
+        const char* camera;
+    } cases[3] = {{DEMO_TECH_PSSM, DEMO_SELECT_DEPTH, "default"},
+                  {DEMO_TECH_PSSM, DEMO_SELECT_BEST, "high"},
+                  {DEMO_TECH_LIXEL, DEMO_SELECT_LIXEL, "room"}};
+    for (int c = 0; c < 3 && tex && pos; ++c) {
+        if (camera_preset(cases[c].camera, v.w, v.h, &v.cam)) return 1;
+        light_from_options(o, &v.light);
+        demo_view_update(&v);
+        demo_shadow_request req;
+        memset(&req, 0, sizeof req);
+        req.technique = cases[c].t;
+        req.splits = 4;
+        req.scheme_lambda = 0.5;
+        req.select = cases[c].sel;
+        req.map_res = o->map;
+        req.screen_w = v.w;
+        req.screen_h = v.h;
+        demo_shadow sh;
+        if (demo_shadow_setup(&v.cam, &v.light, &scene.box, &req, &sh)) {
+            ++fails;
+            continue;
+        }
+        int errs = demo_render_shadow(&r, &sh, NULL);
+        demo_main_params p;
+        memset(&p, 0, sizeof p);
+        memcpy(p.view, v.view, sizeof p.view);
+        memcpy(p.proj, v.proj, sizeof p.proj);
+        p.light_dir[1] = -1;
+        p.mode = DEMO_MODE_SHADED;
+        p.vw = v.w;
+        p.vh = v.h;
+        errs += demo_render_main(&r, &sh, &p, NULL);
+        demo_render_read_aux(&r, tex, pos);
+        swarp_bias_map maps[DEMO_MAX_SPLITS];
+        for (int i = 0; i < sh.count; ++i) {
+            memset(&maps[i], 0, sizeof maps[i]);
+            maps[i].world_to_clip = sh.light[i];
+            maps[i].res_s = sh.viewport[i][0];
+            maps[i].res_t = sh.viewport[i][1];
+            maps[i].depth = SWARP_DEPTH_NEG_ONE_TO_ONE;
+        }
+        long n = 0, diff = 0;
+        int hist[DEMO_MAX_SPLITS] = {0};
+        for (size_t k = 0; k < (size_t)v.w * v.h; ++k) {
+            if (pos[4 * k + 3] < 0) continue; /* sky */
+            swarp_vec3 q = {pos[4 * k], pos[4 * k + 1], pos[4 * k + 2]};
+            double z = tex[4 * k + 3];
+            uint32_t depth_i = 0, want = 0;
+            swarp_status st = swarp_cascade_select_depth(sh.split, (size_t)sh.count, z, &depth_i);
+            if (sh.select == DEMO_SELECT_DEPTH) {
+                want = depth_i;
+            } else if (sh.select == DEMO_SELECT_BEST) {
+                st = swarp_cascade_select_best(maps, (size_t)sh.count, &q, depth_i, &want, NULL);
+            } else {
+                st = swarp_lixel_select(sh.light, (size_t)(sh.count - 1), &q, &want);
+            }
+            if (swarp_status_is_error(st)) continue;
+            int got = (int)tex[4 * k + 2];
+            ++n;
+            if (got >= 0 && got < DEMO_MAX_SPLITS) hist[got]++;
+            diff += got != (int)want;
+        }
+        double frac = n ? (double)diff / n : 1;
+        int used = 0;
+        for (int i = 0; i < sh.count; ++i) used += hist[i] > 0;
+        /* every map must actually be chosen somewhere, or the test says
+         * nothing about the selection */
+        int ok = errs == 0 && n > 1000 && frac <= 0.005 && used >= 2;
+        printf("select %-6s %-5s: %ld pixels, %ld differ from the library (%.3f%%), %d maps used %s\n",
+               demo_technique_name(cases[c].t),
+               cases[c].sel == DEMO_SELECT_DEPTH ? "depth" : cases[c].sel == DEMO_SELECT_BEST ? "best" : "lixel",
+               n, diff, 100 * frac, used, ok ? "ok" : "FAIL");
+        fails += !ok;
+    }
+    free(tex);
+    free(pos);
+    demo_render_free(&r);
+    demo_scene_free(&scene);
+    return fails ? 1 : 0;
+}
+
 static int test_images(const options* o) {
     /* the gallery at small size: every picture exists and is not blank */
     options q = *o;
@@ -962,6 +1062,7 @@ int main(int argc, char** argv) {
         int rc;
         if (!strcmp(o.test, "iou")) rc = test_iou(&o, ctx);
         else if (!strcmp(o.test, "measure")) rc = test_measure(&o);
+        else if (!strcmp(o.test, "select")) rc = test_select(&o);
         else {
             fprintf(stderr, "demo: unknown test %s\n", o.test);
             rc = 2;
