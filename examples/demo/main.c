@@ -356,6 +356,8 @@ static int light_view_picture(demo_renderer* r, const demo_view* v, const demo_s
     int side = v->h < v->w ? v->h : v->w;
     int tile = side / (cols > rows ? cols : rows);
     if (demo_image_alloc(out, tile * cols, tile * rows)) return -1;
+    const uint8_t white[3] = {255, 255, 255};
+    demo_image_fill(out, 0, 0, out->w, out->h, white);
     int errors = 0;
     for (int i = 0; i < k; ++i) {
         demo_shadow one = *sh;
@@ -376,7 +378,10 @@ static int light_view_picture(demo_renderer* r, const demo_view* v, const demo_s
         demo_image t;
         if (read_picture(r, tile, tile, &t)) return -1;
         const uint8_t black[3] = {0, 0, 0};
-        demo_draw_frustum(&t, &sh->light[i], v, sh->split[i], sh->split[i + 1], black, i == 0);
+        /* split frustum for cascades, the whole view for lixel maps */
+        int whole = sh->select == DEMO_SELECT_LIXEL;
+        demo_draw_frustum(&t, &sh->light[i], v, whole ? sh->near : sh->split[i],
+                          whole ? sh->far : sh->split[i + 1], black, i == 0);
         char lab[32];
         snprintf(lab, sizeof lab, "map %d", i);
         if (k > 1) demo_image_label(&t, 6, 6, 1, lab);
