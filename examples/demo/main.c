@@ -47,7 +47,7 @@ static void usage(void) {
         "  --technique T           uniform lispsm repar gmnpr psm pssm pssm-lispsm lixel\n"
         "  --splits K              maps for the pssm techniques (1..16, default 4)\n"
         "  --scheme S              practical[:LAMBDA] | uniform | log (default practical:0.5)\n"
-        "  --filter F              none | pcf2 | pcf3 | pcf5 (default pcf3)\n"
+        "  --filter F              none | pcf2 | pcf3 | pcf5 | poisson | vsm | evsm (default pcf3)\n"
         "  --light-angle E[,A]     sun elevation E and azimuth A in degrees (default 35,115)\n"
         "  --light-dir X,Y,Z       direction the light travels (instead of --light-angle)\n"
         "  --camera P|FILE         default | measure | street | high | room, or a path file of\n"
@@ -119,12 +119,9 @@ static int parse_options(int argc, char** argv, options* o) {
             o->scheme = (demo_scheme)s;
         } else if (!strcmp(a, "--filter")) {
             NEED();
-            static const char* f[DEMO_FILTER_COUNT] = {"none", "pcf2", "pcf3", "pcf5"};
-            int k = -1;
-            for (int j = 0; j < DEMO_FILTER_COUNT; ++j)
-                if (!strcmp(val, f[j])) k = j;
+            int k = demo_filter_parse(val);
             if (k < 0) {
-                fprintf(stderr, "demo: unknown filter %s (none pcf2 pcf3 pcf5)\n", val);
+                fprintf(stderr, "demo: unknown filter %s (none pcf2 pcf3 pcf5 poisson vsm evsm)\n", val);
                 return -1;
             }
             o->filter = (demo_filter)k;
@@ -422,7 +419,7 @@ static int run_technique(const options* o, demo_renderer* r, const demo_view* v,
     res->source = sh.source;
     res->passes = sh.count + 1;
     res->texels = (double)sh.count * o->map * o->map;
-    res->gl_errors += demo_render_shadow(r, &sh, res->shadow_ms);
+    res->gl_errors += demo_render_shadow(r, &sh, o->filter, res->shadow_ms);
     for (int i = 0; i < sh.count; ++i) res->shadow_ms_total += res->shadow_ms[i];
 
     demo_main_params p;
@@ -672,9 +669,8 @@ static int run_gallery(const options* o, int single, gallery_report* rep) {
     }
     if (n > 0 && !single && make_sheet(o, res, n)) rc = 1;
     if (n > 0) {
-        static const char* fname[DEMO_FILTER_COUNT] = {"none", "pcf2", "pcf3", "pcf5"};
         printf("\nsummary (%dx%d, map %d^2, camera %s, filter %s; %s)\n", o->w, o->h, o->map,
-               o->camera, fname[o->filter],
+               o->camera, demo_filter_name(o->filter),
                demo_have_error_model() ? "predicted m from the library"
                                        : "error model not linked: predictions n/a");
         printf("%-14s %9s %6s %10s %9s %9s %10s %10s %9s %9s\n", "technique", "setup_us",
@@ -856,7 +852,7 @@ static int test_iou(const options* o, demo_ctx* ctx) {
             ++fails;
             continue;
         }
-        int errs = demo_render_shadow(&r, &sh, NULL);
+        int errs = demo_render_shadow(&r, &sh, DEMO_FILTER_PCF2, NULL);
         demo_main_params p;
         memset(&p, 0, sizeof p);
         memcpy(p.view, v.view, sizeof p.view);
@@ -985,7 +981,7 @@ static int test_select(const options* o) {
             ++fails;
             continue;
         }
-        int errs = demo_render_shadow(&r, &sh, NULL);
+        int errs = demo_render_shadow(&r, &sh, DEMO_FILTER_PCF2, NULL);
         demo_main_params p;
         memset(&p, 0, sizeof p);
         memcpy(p.view, v.view, sizeof p.view);
