@@ -34,6 +34,7 @@ typedef struct options {
     const char* obj;
     const char* test;
     float blend, grid, offset;
+    double pseudo_near, pseudo_far;
     demo_select select;
     int camera_given;
     double path[6 * 256]; /**< --camera FILE: eye and dir per frame */
@@ -44,7 +45,9 @@ static void usage(void) {
     printf(
         "usage: demo [options]\n"
         "  (no options)            default gallery into ./out/ and a summary table\n"
-        "  --technique T           uniform lispsm repar gmnpr psm pssm pssm-lispsm lixel\n"
+        "  --technique T           uniform lispsm repar gmnpr pseudo psm pssm pssm-lispsm\n"
+        "                          pssm-stable lixel\n"
+        "  --pseudo NP,FP          pseudo-near/far fractions for 'pseudo' (default 0.05,0)\n"
         "  --splits K              maps for the pssm techniques (1..16, default 4)\n"
         "  --scheme S              practical[:LAMBDA] | uniform | log (default practical:0.5)\n"
         "  --filter F              none | pcf2 | pcf3 | pcf5 | poisson | vsm | evsm (default pcf3)\n"
@@ -80,6 +83,8 @@ static int parse_options(int argc, char** argv, options* o) {
     o->out = "out";
     o->blend = 0.1f;
     o->offset = 1.0f;
+    o->pseudo_near = 0.05;
+    o->pseudo_far = 0.0;
     o->grid = 8;
     for (int i = 1; i < argc; ++i) {
         const char* a = argv[i];
@@ -175,6 +180,13 @@ static int parse_options(int argc, char** argv, options* o) {
             else if (!strcmp(val, "best")) o->select = DEMO_SELECT_BEST;
             else {
                 fprintf(stderr, "demo: --select depth|best\n");
+                return -1;
+            }
+        } else if (!strcmp(a, "--pseudo")) {
+            NEED();
+            if (sscanf(val, "%lf,%lf", &o->pseudo_near, &o->pseudo_far) != 2 ||
+                !(o->pseudo_near >= 0 && o->pseudo_far >= 0 && o->pseudo_near + o->pseudo_far < 1)) {
+                fprintf(stderr, "demo: --pseudo NP,FP with NP, FP >= 0, NP + FP < 1\n");
                 return -1;
             }
         } else if (!strcmp(a, "--offset")) {
@@ -399,7 +411,7 @@ static int run_technique(const options* o, demo_renderer* r, const demo_view* v,
                          tech_result* res) {
     memset(res, 0, sizeof *res);
     res->tech = t;
-    if (t == DEMO_TECH_PSSM || t == DEMO_TECH_PSSM_LISPSM)
+    if (demo_technique_is_split((demo_technique)t))
         snprintf(res->label, sizeof res->label, "%s%d", demo_technique_name(t), splits);
     else
         snprintf(res->label, sizeof res->label, "%s", demo_technique_name(t));
@@ -409,6 +421,8 @@ static int run_technique(const options* o, demo_renderer* r, const demo_view* v,
     req.splits = splits;
     req.scheme = o->scheme;
     req.scheme_lambda = o->scheme_lambda;
+    req.pseudo_near = o->pseudo_near;
+    req.pseudo_far = o->pseudo_far;
     req.select = o->select;
     req.map_res = o->map;
     req.screen_w = v->w;
@@ -623,7 +637,7 @@ static int run_gallery(const options* o, int single, gallery_report* rep) {
             }
             continue;
         }
-        int splits = (t == DEMO_TECH_PSSM || t == DEMO_TECH_PSSM_LISPSM) ? o->splits : 1;
+        int splits = demo_technique_is_split((demo_technique)t) ? o->splits : 1;
         /* the lixel maps are for the room corner: without an explicit
          * --camera the gallery looks at it with the room preset (and keeps
          * it off the same-view sheet) */
@@ -650,8 +664,8 @@ static int run_gallery(const options* o, int single, gallery_report* rep) {
             continue;
         }
         res[n].own_view = own_view;
-        printf("%-14s done: %s/%s_*.png (matrices from %s)\n", res[n].label, o->out, res[n].label,
-               res[n].source);
+        printf("%-14s done: %s/%s_*.png (matrices from %s%s)\n", res[n].label, o->out,
+               res[n].label, res[n].source, own_view ? "; room camera" : "");
         if (single) {
             printf("  timing: setup %.2f us (median of 101 calls);", res[n].setup_us);
             for (int k = 0; k < res[n].passes - 1; ++k)
@@ -1061,7 +1075,7 @@ static int test_images(const options* o) {
         }
         ++produced;
         char label[48];
-        if (t == DEMO_TECH_PSSM || t == DEMO_TECH_PSSM_LISPSM)
+        if (demo_technique_is_split((demo_technique)t))
             snprintf(label, sizeof label, "%s%d", demo_technique_name((demo_technique)t), q.splits);
         else
             snprintf(label, sizeof label, "%s", demo_technique_name((demo_technique)t));

@@ -18,7 +18,12 @@
 #include "shadowwarp_cglm.h"
 
 static const char* const tech_names[DEMO_TECH_COUNT] = {
-    "uniform", "lispsm", "repar", "gmnpr", "psm", "pssm", "pssm-lispsm", "lixel"};
+    "uniform", "lispsm", "repar", "gmnpr", "pseudo", "psm",
+    "pssm",    "pssm-lispsm", "pssm-stable", "lixel"};
+
+int demo_technique_is_split(demo_technique t) {
+    return t == DEMO_TECH_PSSM || t == DEMO_TECH_PSSM_LISPSM || t == DEMO_TECH_PSSM_STABLE;
+}
 
 const char* demo_technique_name(demo_technique t) {
     return (unsigned)t < DEMO_TECH_COUNT ? tech_names[t] : "?";
@@ -58,7 +63,8 @@ int demo_technique_available(demo_technique t) {
     return (unsigned)t < DEMO_TECH_COUNT;
 #else
     /* TEMPORARY: only what the stand-in fit can do. */
-    return t == DEMO_TECH_UNIFORM || t == DEMO_TECH_PSSM || t == DEMO_TECH_LIXEL;
+    return t == DEMO_TECH_UNIFORM || t == DEMO_TECH_PSSM || t == DEMO_TECH_PSSM_STABLE ||
+           t == DEMO_TECH_LIXEL;
 #endif
 }
 
@@ -260,6 +266,12 @@ static int conventional_map(const swarp_camera* cam, const swarp_light* light,
         opt.technique = SWARP_TECHNIQUE_LISPSM;
         opt.param = SWARP_WARP_PARAM_GMNPR;
         break;
+    case DEMO_TECH_PSEUDO:
+        opt.technique = SWARP_TECHNIQUE_LISPSM;
+        opt.param = SWARP_WARP_PARAM_PSEUDO;
+        opt.pseudo_near = req->pseudo_near;
+        opt.pseudo_far = req->pseudo_far;
+        break;
     case DEMO_TECH_PSM:
         opt.technique = SWARP_TECHNIQUE_PSM;
         break;
@@ -297,7 +309,8 @@ static int conventional_map(const swarp_camera* cam, const swarp_light* light,
 #endif
 }
 
-static const char* matrix_source(void) {
+static const char* matrix_source(demo_technique t) {
+    if (t == DEMO_TECH_PSSM_STABLE) return "library (swarp_stabilize_directional)";
 #ifdef DEMO_HAVE_GEOMETRY
     return "library (swarp_setup)";
 #else
@@ -356,13 +369,18 @@ int demo_shadow_setup(const swarp_camera* cam, const swarp_light* light,
         *out = sh;
         return 0;
     }
-    int pssm = t == DEMO_TECH_PSSM || t == DEMO_TECH_PSSM_LISPSM;
+    int pssm = demo_technique_is_split(t);
     sh.count = pssm ? req->splits : 1;
     if (sh.count < 1 || sh.count > DEMO_MAX_SPLITS) return -1;
     /* the whole view first: its adjusted range [RHS] §3.3.1 */
     if (conventional_map(cam, light, scene, req, pssm ? DEMO_TECH_UNIFORM : t, 0, 0, 0,
                          &sh.light[0], &sh.n_prime[0], &sh.near, &sh.far, &st))
         return -1;
+    if (t == DEMO_TECH_PSSM_STABLE) {
+        /* the sphere covers whole split frusta: no adjusted range */
+        sh.near = cam->near;
+        sh.far = cam->far;
+    }
     sh.split[0] = sh.near;
     sh.split[1] = sh.far;
     if (pssm) {
@@ -370,6 +388,24 @@ int demo_shadow_setup(const swarp_camera* cam, const swarp_light* light,
         for (int i = 0; i < sh.count; ++i) {
             double a, b;
             swarp_status si;
+            if (t == DEMO_TECH_PSSM_STABLE) {
+                /* [RHS] §3.5 exact solution: the split frustum's minimal
+                 * sphere, texel-snapped (directional lights only) */
+                swarp_stabilize_options so;
+                memset(&so, 0, sizeof so);
+                so.mode = SWARP_STABILIZE_SPHERE;
+                si = swarp_stabilize_directional(cam, sh.split[i], sh.split[i + 1], &light->direction,
+                                                 NULL, 0, scene, (uint32_t)req->map_res, &so,
+                                                 &sh.light[i], NULL);
+                if (swarp_status_is_error(si)) {
+                    fprintf(stderr, "demo: swarp_stabilize_directional: %s\n",
+                            swarp_status_string(si));
+                    return -1;
+                }
+                sh.n_prime[i] = INFINITY;
+                if (si != SWARP_OK && st == SWARP_OK) st = si;
+                continue;
+            }
             if (conventional_map(cam, light, scene, req, t, 1, sh.split[i], sh.split[i + 1],
                                  &sh.light[i], &sh.n_prime[i], &a, &b, &si))
                 return -1;
@@ -397,7 +433,7 @@ int demo_shadow_setup(const swarp_camera* cam, const swarp_light* light,
     }
 #endif
     sh.status = st;
-    sh.source = matrix_source();
+    sh.source = matrix_source(t);
     *out = sh;
     return 0;
 }

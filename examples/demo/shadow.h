@@ -15,9 +15,11 @@ typedef enum demo_technique {
     DEMO_TECH_LISPSM,      /**< LiSPSM with n_opt [RHS] (3.2) */
     DEMO_TECH_REPAR,       /**< LiSPSM with Lloyd's n_repar [RHS] (3.4) */
     DEMO_TECH_GMNPR,       /**< LiSPSM with lambda_GMNPR [GMNPR] (8) */
+    DEMO_TECH_PSEUDO,      /**< LiSPSM with pseudo-near/far n_opt [RHS] (4.2) */
     DEMO_TECH_PSM,         /**< PSM [KOZ] */
     DEMO_TECH_PSSM,        /**< z-partitioned uniform maps [RHS] §3.3 */
     DEMO_TECH_PSSM_LISPSM, /**< z-partitioning + LiSPSM per split [RHS] §3.4 */
+    DEMO_TECH_PSSM_STABLE, /**< stabilised cascades: exact minimal sphere + texel snap [RHS] §3.5 */
     DEMO_TECH_LIXEL,       /**< plane-stabilised maps [LIXEL] */
     DEMO_TECH_COUNT
 } demo_technique;
@@ -41,6 +43,7 @@ typedef struct demo_shadow_request {
     int splits;          /**< K for the PSSM techniques (1..DEMO_MAX_SPLITS) */
     demo_scheme scheme;
     double scheme_lambda; /**< practical scheme's lambda in [0, 1] */
+    double pseudo_near, pseudo_far; /**< n_p, f_p of [RHS] (4.1)-(4.2), fractions */
     int map_res;          /**< texels per side of each map */
     demo_select select;   /**< DEPTH or BEST for the PSSM techniques */
     int screen_w, screen_h;
@@ -65,6 +68,8 @@ typedef struct demo_shadow {
 const char* demo_technique_name(demo_technique t);
 /** Parses a --technique name ("uniform", "lispsm", "pssm", ...); -1 if unknown. */
 int demo_technique_parse(const char* name);
+/** 1 for the z-partitioned techniques (they use --splits). */
+int demo_technique_is_split(demo_technique t);
 /** 1 if the library linked into this build can compute technique t. */
 int demo_technique_available(demo_technique t);
 const char* demo_scheme_name(demo_scheme s);
