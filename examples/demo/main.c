@@ -35,6 +35,7 @@ typedef struct options {
     const char* test;
     float blend, grid, offset;
     double pseudo_near, pseudo_far;
+    double scheme_np, scheme_fp;
     demo_select select;
     int camera_given;
     double path[6 * 256]; /**< --camera FILE: eye and dir per frame */
@@ -49,7 +50,8 @@ static void usage(void) {
         "                          pssm-stable lixel\n"
         "  --pseudo NP,FP          pseudo-near/far fractions for 'pseudo' (default 0.05,0)\n"
         "  --splits K              maps for the pssm techniques (1..16, default 4)\n"
-        "  --scheme S              practical[:LAMBDA] | uniform | log (default practical:0.5)\n"
+        "  --scheme S              practical[:LAMBDA] | uniform | log | pseudo:NP,FP[,LAMBDA]\n"
+        "                          (default practical:0.5; NP, FP eye distances, [RHS] (4.1))\n"
         "  --filter F              none | pcf2 | pcf3 | pcf5 | poisson | vsm | evsm (default pcf3)\n"
         "  --light-angle E[,A]     sun elevation E and azimuth A in degrees (default 35,115)\n"
         "  --light-dir X,Y,Z       direction the light travels (instead of --light-angle)\n"
@@ -116,7 +118,7 @@ static int parse_options(int argc, char** argv, options* o) {
             }
         } else if (!strcmp(a, "--scheme")) {
             NEED();
-            int s = demo_scheme_parse(val, &o->scheme_lambda);
+            int s = demo_scheme_parse(val, &o->scheme_lambda, &o->scheme_np, &o->scheme_fp);
             if (s < 0) {
                 fprintf(stderr, "demo: unknown scheme %s\n", val);
                 return -1;
@@ -330,6 +332,7 @@ typedef struct tech_result {
     demo_image shaded, sampling, grid, splits, light;
     const char* source;
     int own_view; /**< rendered from another camera than the sheet's */
+    demo_shadow sh; /**< the configuration that was rendered */
 } tech_result;
 
 static int cmp_d(const void* a, const void* b) {
@@ -423,6 +426,8 @@ static int run_technique(const options* o, demo_renderer* r, const demo_view* v,
     req.scheme_lambda = o->scheme_lambda;
     req.pseudo_near = o->pseudo_near;
     req.pseudo_far = o->pseudo_far;
+    req.scheme_np = o->scheme_np;
+    req.scheme_fp = o->scheme_fp;
     req.select = o->select;
     req.map_res = o->map;
     req.screen_w = v->w;
@@ -431,6 +436,7 @@ static int run_technique(const options* o, demo_renderer* r, const demo_view* v,
     res->setup_us = time_setup(v, box, &req, &sh);
     if (res->setup_us < 0) return -2;
     res->source = sh.source;
+    res->sh = sh;
     res->passes = sh.count + 1;
     res->texels = (double)sh.count * o->map * o->map;
     res->gl_errors += demo_render_shadow(r, &sh, o->filter, res->shadow_ms);
@@ -735,6 +741,12 @@ static int run_frames(const options* o) {
     }
     int t = o->technique < 0 ? DEMO_TECH_UNIFORM : o->technique;
     int rc = 0;
+    /* flicker: a fixed world point's position inside its texel.  Texels
+     * that slide under the scene (unstabilised maps) change the fraction
+     * from frame to frame; snapped maps ([RHS] §3.5) keep it. */
+    const swarp_vec3 probe = {5, 0, v.cam.eye.z - 80};
+    double prev_frac[2] = {NAN, NAN};
+    int prev_map = -1;
     for (int f = 0; f < o->frames; ++f) {
         if (o->path_count > 0) {
             /* a camera path file: one "ex ey ez dx dy dz" line per frame,
@@ -754,9 +766,31 @@ static int run_frames(const options* o) {
             rc = 1;
             break;
         }
-        printf("frame %d/%d: setup %.2f us, %d shadow passes %.2f ms, main %.2f ms, gl errors %d\n",
+        /* the probe's map by eye depth and its texel coordinates */
+        double dz = (probe.x - v.cam.eye.x) * v.cam.dir.x + (probe.y - v.cam.eye.y) * v.cam.dir.y +
+                    (probe.z - v.cam.eye.z) * v.cam.dir.z;
+        dz /= sqrt(v.cam.dir.x * v.cam.dir.x + v.cam.dir.y * v.cam.dir.y + v.cam.dir.z * v.cam.dir.z);
+        uint32_t mi = 0;
+        swarp_cascade_select_depth(res.sh.split, (size_t)res.sh.count, dz, &mi);
+        swarp_vec4 h;
+        swarp_mat4_transform(&res.sh.light[mi], &probe, &h);
+        double ts = (h.x / h.w * 0.5 + 0.5) * res.sh.viewport[mi][0];
+        double tt = (h.y / h.w * 0.5 + 0.5) * res.sh.viewport[mi][1];
+        double frac[2] = {ts - floor(ts), tt - floor(tt)};
+        double drift = NAN;
+        if ((int)mi == prev_map) {
+            double a = fabs(frac[0] - prev_frac[0]), b = fabs(frac[1] - prev_frac[1]);
+            a = fmin(a, 1 - a);
+            b = fmin(b, 1 - b);
+            drift = fmax(a, b);
+        }
+        prev_frac[0] = frac[0];
+        prev_frac[1] = frac[1];
+        prev_map = (int)mi;
+        printf("frame %d/%d: setup %.2f us, %d shadow passes %.2f ms, main %.2f ms, gl errors %d, "
+               "probe in map %u, sub-texel drift %.4f texel\n",
                f + 1, o->frames, res.setup_us, res.passes - 1, res.shadow_ms_total, res.main_ms,
-               res.gl_errors);
+               res.gl_errors, mi, drift);
         fflush(stdout);
         if (res.gl_errors) rc = 1;
         free_result(&res);

@@ -35,13 +35,20 @@ int demo_technique_parse(const char* name) {
     return -1;
 }
 
-static const char* const scheme_names[DEMO_SCHEME_COUNT] = {"practical", "uniform", "log"};
+static const char* const scheme_names[DEMO_SCHEME_COUNT] = {"practical", "uniform", "log",
+                                                             "pseudo"};
 
 const char* demo_scheme_name(demo_scheme s) {
     return (unsigned)s < DEMO_SCHEME_COUNT ? scheme_names[s] : "?";
 }
 
-int demo_scheme_parse(const char* name, double* lambda) {
+int demo_scheme_parse(const char* name, double* lambda, double* np, double* fp) {
+    if (strncmp(name, "pseudo:", 7) == 0) {
+        *lambda = 0.5;
+        int k = sscanf(name + 7, "%lf,%lf,%lf", np, fp, lambda);
+        if (k < 2 || !(*np > 0 && *fp > *np && *lambda >= 0 && *lambda <= 1)) return -1;
+        return DEMO_SCHEME_PSEUDO;
+    }
     if (strncmp(name, "practical", 9) == 0) {
         *lambda = 0.5;
         if (name[9] == ':') {
@@ -210,6 +217,10 @@ static int split_distances(const demo_shadow_request* req, double near, double f
     swarp_status st;
     if (req->scheme == DEMO_SCHEME_UNIFORM)
         st = swarp_split_uniform(near, far, (uint32_t)k, out, DEMO_MAX_SPLITS + 1, &n);
+    else if (req->scheme == DEMO_SCHEME_PSEUDO)
+        st = swarp_split_pseudo(near, far, fmax(near, fmin(req->scheme_np, far)),
+                                fmin(far, fmax(req->scheme_fp, near)), req->scheme_lambda,
+                                (uint32_t)k, out, DEMO_MAX_SPLITS + 1, &n);
     else if (req->scheme == DEMO_SCHEME_LOG)
         st = swarp_split_log(near, far, (uint32_t)k, out, DEMO_MAX_SPLITS + 1, &n);
     else

@@ -28,6 +28,7 @@ typedef enum demo_scheme {
     DEMO_SCHEME_PRACTICAL = 0, /**< [RHS] (3.8), lambda */
     DEMO_SCHEME_UNIFORM,       /**< [RHS] (3.6) */
     DEMO_SCHEME_LOG,           /**< [RHS] (3.7) */
+    DEMO_SCHEME_PSEUDO,        /**< [RHS] (4.1): practical lambda over [n_p, f_p] */
     DEMO_SCHEME_COUNT
 } demo_scheme;
 
@@ -43,7 +44,8 @@ typedef struct demo_shadow_request {
     int splits;          /**< K for the PSSM techniques (1..DEMO_MAX_SPLITS) */
     demo_scheme scheme;
     double scheme_lambda; /**< practical scheme's lambda in [0, 1] */
-    double pseudo_near, pseudo_far; /**< n_p, f_p of [RHS] (4.1)-(4.2), fractions */
+    double pseudo_near, pseudo_far; /**< n_p, f_p of [RHS] (4.2), fractions (technique pseudo) */
+    double scheme_np, scheme_fp;    /**< n_p, f_p of [RHS] (4.1), eye distances (scheme pseudo) */
     int map_res;          /**< texels per side of each map */
     demo_select select;   /**< DEPTH or BEST for the PSSM techniques */
     int screen_w, screen_h;
@@ -73,7 +75,8 @@ int demo_technique_is_split(demo_technique t);
 /** 1 if the library linked into this build can compute technique t. */
 int demo_technique_available(demo_technique t);
 const char* demo_scheme_name(demo_scheme s);
-int demo_scheme_parse(const char* name, double* lambda);
+/** Parses practical[:L] | uniform | log | pseudo:NP,FP[,L]. */
+int demo_scheme_parse(const char* name, double* lambda, double* np, double* fp);
 
 /** Technique -> light matrices.  0 on success, -1 with a message on stderr
  *  (unavailable technique or a library error). */
