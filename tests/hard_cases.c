@@ -4,6 +4,7 @@
  * tests/robust/entries_*.c for the per-entry generators and checks).
  *
  *   hard_cases [--size N] [--seed S] [--entry NAME] [--save DIR] [--list]
+ *              [--emit DIR N]
  *
  * N configurations per entry point (default 20000; `meson test` passes
  * -Dhard_cases_size; the full sweep is `meson test --benchmark
@@ -13,7 +14,10 @@
  * case index and the message; with --save DIR the bytes of the case are
  * written to DIR/<entry>-<index>.bin, a corpus file for tests/fuzz that
  * replays it (keep it in tests/fuzz/corpus/<entry>/ as a regression test).
- * Exit status 1 when any invariant broke.
+ * Exit status 1 when any invariant broke.  --list prints every entry point
+ * with "available" or "missing" (not in the library yet).  --emit DIR N
+ * writes the bytes of the first N cases of each available entry point to
+ * DIR/<entry>/seed-<i>: the seeds of the fuzz corpus.
  */
 #define _POSIX_C_SOURCE 200809L
 #include <stdio.h>
@@ -41,8 +45,33 @@ int main(int argc, char** argv) {
         else if (!strcmp(argv[i], "--entry") && i + 1 < argc) only = argv[++i];
         else if (!strcmp(argv[i], "--save") && i + 1 < argc) save = argv[++i];
         else if (!strcmp(argv[i], "--list")) {
-            for (size_t k = 0; k < swr_entry_count(); ++k)
-                printf("%s %s\n", swr_entry_at(k)->stage, swr_entry_at(k)->name);
+            static swr_ctx lc;
+            for (size_t k = 0; k < swr_entry_count(); ++k) {
+                swr_run_seeded(swr_entry_at(k), &lc, seed, 0);
+                printf("%s %s %s\n", swr_entry_at(k)->name, swr_entry_at(k)->stage,
+                       lc.skipped ? "missing" : "available");
+            }
+            return 0;
+        } else if (!strcmp(argv[i], "--emit") && i + 2 < argc) {
+            static swr_ctx ec;
+            const char* dir = argv[++i];
+            unsigned long n = strtoul(argv[++i], NULL, 0);
+            for (size_t k = 0; k < swr_entry_count(); ++k) {
+                const swr_entry* e = swr_entry_at(k);
+                for (unsigned long j = 0; j < n; ++j) {
+                    swr_run_seeded(e, &ec, seed, j);
+                    if (ec.skipped) break;
+                    char path[1024];
+                    snprintf(path, sizeof path, "%s/%s/seed-%03lu", dir, e->name, j);
+                    FILE* f = fopen(path, "wb");
+                    if (!f) {
+                        fprintf(stderr, "cannot write %s (mkdir the entry directories first)\n", path);
+                        return 1;
+                    }
+                    fwrite(ec.buf, 1, ec.pos, f);
+                    fclose(f);
+                }
+            }
             return 0;
         } else {
             fprintf(stderr, "usage: %s [--size N] [--seed S] [--entry NAME] [--save DIR] [--list]\n", argv[0]);
