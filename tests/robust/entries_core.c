@@ -116,12 +116,18 @@ static void e_mat4_to_float(swr_ctx* c) {
     for (int i = 0; i < 16; ++i)
         if (!swr_isfin(m.m[i]) || fabs(m.m[i]) > FLT_MAX) swr_expect(c, SWARP_ERR_NON_FINITE);
     swarp_mat4 keep = m;
-    swarp_status st = swarp_mat4_to_float(null_in ? NULL : &m, null_out ? NULL : out);
+    swarp_status st = SWR_CALL(c, swarp_mat4_to_float(null_in ? NULL : &m, null_out ? NULL : out));
     SWR_CHECK(c, memcmp(&keep, &m, sizeof m) == 0, "input modified");
     if (!swr_verdict(c, st, 1, (void*)out, sizeof out)) return;
+    c->tol_min = 0x1p-23; /* one float ulp: the conversion rounds in the caller's mode */
     for (int i = 0; i < 16; ++i) {
         swr_rec(c, "out[i]", out[i]);
-        SWR_CHECK(c, out[i] == (float)m.m[i], "out[%d] = %.9g, (float)m = %.9g", i, out[i], (float)m.m[i]);
+        volatile double src = m.m[i];
+        volatile float want;
+        swr_enter(c); /* the cast rounds in the same mode as the library did */
+        want = (float)src;
+        swr_leave(c, SWARP_OK);
+        SWR_CHECK(c, out[i] == want, "out[%d] = %.9g, (float)m = %.9g", i, out[i], (double)want);
     }
 }
 
@@ -154,13 +160,14 @@ static void e_mat4_mul(swr_ctx* c) {
     if (mat_finite(&a) && mat_finite(&b)) {
         if (overflow) swr_expect(c, SWARP_ERR_NON_FINITE);
         else if (near_overflow) swr_allow(c, SWARP_ERR_NON_FINITE);
+        c->overflow_edge = overflow || near_overflow;
     }
     swarp_mat4 ka = a, kb = b;
     swarp_mat4* out = &r;
     if (alias == 0) out = &a;
     else if (alias == 1) out = &b;
     else swr_fill(&r, sizeof r);
-    swarp_status st = swarp_mat4_mul(n_a ? NULL : &a, n_b ? NULL : &b, n_r ? NULL : out);
+    swarp_status st = SWR_CALL(c, swarp_mat4_mul(n_a ? NULL : &a, n_b ? NULL : &b, n_r ? NULL : out));
     if (alias > 1) {
         SWR_CHECK(c, memcmp(&ka, &a, sizeof a) == 0 && memcmp(&kb, &b, sizeof b) == 0, "input modified");
         if (!swr_verdict(c, st, 1, (void*)&r, sizeof r)) return;
@@ -171,6 +178,7 @@ static void e_mat4_mul(swr_ctx* c) {
         if (!swr_verdict(c, st, 0)) return;
     }
     for (int i = 0; i < 16; ++i) {
+        if (ref[i] != 0) swr_cond(c, (double)(mag[i] / fabsl(ref[i])));
         swr_rec(c, "r", out->m[i]);
         long double err = fabsl(out->m[i] - ref[i]);
         SWR_CHECK(c, err <= 8 * DBL_EPSILON * mag[i] + DBL_MIN, "r[%d] = %.17g, reference %.17Lg", i,
@@ -188,7 +196,7 @@ static void e_mat4_invert(swr_ctx* c) {
     swr_allow(c, SWARP_ERR_SINGULAR);
     swr_fill(&r, sizeof r);
     swarp_mat4 ka = a;
-    swarp_status st = swarp_mat4_invert(n_a ? NULL : &a, n_r ? NULL : &r);
+    swarp_status st = SWR_CALL(c, swarp_mat4_invert(n_a ? NULL : &a, n_r ? NULL : &r));
     SWR_CHECK(c, memcmp(&ka, &a, sizeof a) == 0, "input modified");
     if (!swr_verdict(c, st, 1, (void*)&r, sizeof r)) return;
     /* Forward error against an inverse computed in long double (Gauss
@@ -213,7 +221,10 @@ static void e_mat4_invert(swr_ctx* c) {
             w[col][k] = w[p][k];
             w[p][k] = t;
         }
-        if (w[col][col] == 0.0L) return; /* singular in long double too: no claim */
+        if (w[col][col] == 0.0L) { /* singular in long double too: no claim */
+            swr_cond(c, INFINITY);
+            return;
+        }
         for (int row = 0; row < 4; ++row) {
             if (row == col) continue;
             long double fct = w[row][col] / w[col][col];
@@ -237,6 +248,7 @@ static void e_mat4_invert(swr_ctx* c) {
             if (d > err) err = d;
         }
     for (int i = 0; i < 16; ++i) swr_rec(c, "inverse", r.m[i]);
+    swr_cond(c, (double)(na * nx));
     /* Beyond kappa = 1/(512 eps) the bound says nothing (it exceeds |A^-1|);
      * there the library still answers SWARP_OK (its singularity threshold is a
      * pivot below 1e-300 of the largest entry) with inverses that are off by
@@ -277,13 +289,15 @@ static void e_mat4_transform(swr_ctx* c) {
     if (fin) {
         if (overflow) swr_expect(c, SWARP_ERR_NON_FINITE);
         else if (near_overflow) swr_allow(c, SWARP_ERR_NON_FINITE);
+        c->overflow_edge = overflow || near_overflow;
     }
     swarp_vec4 o;
     swr_fill(&o, sizeof o);
-    swarp_status st = swarp_mat4_transform(n_m ? NULL : &m, n_p ? NULL : &p, n_o ? NULL : &o);
+    swarp_status st = SWR_CALL(c, swarp_mat4_transform(n_m ? NULL : &m, n_p ? NULL : &p, n_o ? NULL : &o));
     if (!swr_verdict(c, st, 1, (void*)&o, sizeof o)) return;
     double got[4] = {o.x, o.y, o.z, o.w};
     for (int i = 0; i < 4; ++i) {
+        if (ref[i] != 0) swr_cond(c, (double)(mag[i] / fabsl(ref[i])));
         swr_rec(c, "out", got[i]);
         SWR_CHECK(c, fabsl(got[i] - ref[i]) <= 8 * DBL_EPSILON * mag[i] + DBL_MIN, "out[%d] = %.17g, ref %.17Lg",
                   i, got[i], ref[i]);
@@ -348,7 +362,7 @@ static void e_warp_nopt(swr_ctx* c) {
     expect_depths(c, d, z0, z1);
     double out;
     swr_fill(&out, sizeof out);
-    swarp_status st = swarp_warp_nopt(d, z0, z1, nul ? NULL : &out);
+    swarp_status st = SWR_CALL(c, swarp_warp_nopt(d, z0, z1, nul ? NULL : &out));
     if (!swr_verdict(c, st, 1, (void*)&out, sizeof out)) return;
     const double args[3] = {d, z0, z1};
     long double ref = ref_nopt((const long double[]){d, z0, z1});
@@ -372,7 +386,7 @@ static void e_warp_nopt_pseudo(swr_ctx* c) {
     if (np < 0 || np > 1 || fp < 0 || fp > 1 || !(np + fp < 1)) swr_expect(c, SWARP_ERR_OUT_OF_RANGE);
     double out;
     swr_fill(&out, sizeof out);
-    swarp_status st = swarp_warp_nopt_pseudo(d, z0, z1, np, fp, nul ? NULL : &out);
+    swarp_status st = SWR_CALL(c, swarp_warp_nopt_pseudo(d, z0, z1, np, fp, nul ? NULL : &out));
     if (!swr_verdict(c, st, 1, (void*)&out, sizeof out)) return;
     const double args[5] = {d, z0, z1, np, fp};
     long double ref = ref_nopt_pseudo((const long double[]){d, z0, z1, np, fp});
@@ -418,7 +432,7 @@ static void e_warp_eta(swr_ctx* c) {
     expect_gamma(c, g);
     double out;
     swr_fill(&out, sizeof out);
-    swarp_status st = swarp_warp_eta(g, th, nul ? NULL : &out);
+    swarp_status st = SWR_CALL(c, swarp_warp_eta(g, th, nul ? NULL : &out));
     if (!swr_verdict(c, st, 1, (void*)&out, sizeof out)) return;
     swr_rec(c, "eta", out);
     SWR_CHECK(c, out >= -1.0 && out <= 0.0, "eta = %.17g outside [-1, 0]", out);
@@ -461,7 +475,7 @@ static void e_warp_wlz(swr_ctx* c) {
     if (!(We > 0)) swr_expect(c, SWARP_ERR_OUT_OF_RANGE);
     double out;
     swr_fill(&out, sizeof out);
-    swarp_status st = swarp_warp_wlz(g, th, n, f, We, nul ? NULL : &out);
+    swarp_status st = SWR_CALL(c, swarp_warp_wlz(g, th, n, f, We, nul ? NULL : &out));
     if (!swr_verdict(c, st, 1, (void*)&out, sizeof out)) return;
     swr_rec(c, "W_lz", out);
     SWR_CHECK(c, out > 0, "W_lz = %g <= 0", out);
@@ -490,7 +504,7 @@ static void e_warp_nrepar(swr_ctx* c) {
     if (!(eta >= -1 && eta <= 1) || !(al > 1) || !(W > 0)) swr_expect(c, SWARP_ERR_OUT_OF_RANGE);
     double out;
     swr_fill(&out, sizeof out);
-    swarp_status st = swarp_warp_nrepar(eta, al, W, nul ? NULL : &out);
+    swarp_status st = SWR_CALL(c, swarp_warp_nrepar(eta, al, W, nul ? NULL : &out));
     if (!swr_verdict(c, st, 1, (void*)&out, sizeof out)) return;
     swr_rec_inf(c, "n_repar", out);
     const double args[3] = {eta, al, W};
@@ -582,7 +596,7 @@ static void e_gmnpr_psi(swr_ctx* c) {
     expect_gm(c, &g, 0, 1, 0);
     double out;
     swr_fill(&out, sizeof out);
-    swarp_status st = swarp_gmnpr_psi(g.lambda, g.theta, g.phi, g.n, g.f, nul ? NULL : &out);
+    swarp_status st = SWR_CALL(c, swarp_gmnpr_psi(g.lambda, g.theta, g.phi, g.n, g.f, nul ? NULL : &out));
     if (!swr_verdict(c, st, 1, (void*)&out, sizeof out)) return;
     swr_rec(c, "psi", out);
     SWR_CHECK(c, out > 0, "psi = %g <= 0", out);
@@ -599,7 +613,7 @@ static void e_gmnpr_offset(swr_ctx* c) {
     expect_gm(c, &g, 0, 1, 0);
     double out;
     swr_fill(&out, sizeof out);
-    swarp_status st = swarp_gmnpr_offset(g.lambda, g.theta, g.phi, g.n, g.f, nul ? NULL : &out);
+    swarp_status st = SWR_CALL(c, swarp_gmnpr_offset(g.lambda, g.theta, g.phi, g.n, g.f, nul ? NULL : &out));
     if (!swr_verdict(c, st, 1, (void*)&out, sizeof out)) return;
     swr_rec(c, "offset", out);
 }
@@ -613,7 +627,7 @@ static void e_gmnpr_F(swr_ctx* c) {
     expect_gm(c, &g, 0, 1, 1);
     double out;
     swr_fill(&out, sizeof out);
-    swarp_status st = swarp_gmnpr_F(g.lambda, g.theta, g.phi, g.n, g.f, g.z, nul ? NULL : &out);
+    swarp_status st = SWR_CALL(c, swarp_gmnpr_F(g.lambda, g.theta, g.phi, g.n, g.f, g.z, nul ? NULL : &out));
     if (!swr_verdict(c, st, 1, (void*)&out, sizeof out)) return;
     swr_rec(c, "F", out);
     SWR_CHECK(c, out >= 0, "F = %g < 0", out);
@@ -638,7 +652,7 @@ static void e_gmnpr_lambda12(swr_ctx* c) {
     double l1, l2;
     swr_fill(&l1, sizeof l1);
     swr_fill(&l2, sizeof l2);
-    swarp_status st = swarp_gmnpr_lambda12(g.theta, g.phi, g.n, g.f, n1 ? NULL : &l1, n2 ? NULL : &l2);
+    swarp_status st = SWR_CALL(c, swarp_gmnpr_lambda12(g.theta, g.phi, g.n, g.f, n1 ? NULL : &l1, n2 ? NULL : &l2));
     if (!swr_verdict(c, st, 2, (void*)&l1, sizeof l1, (void*)&l2, sizeof l2)) return;
     swr_rec(c, "lambda_1", l1);
     swr_rec(c, "lambda_2", l2);
@@ -666,7 +680,7 @@ static void e_gmnpr_lambda(swr_ctx* c) {
     expect_gm(c, &g, 1, 0, 0);
     double out;
     swr_fill(&out, sizeof out);
-    swarp_status st = swarp_gmnpr_lambda(g.theta, g.phi, g.n, g.f, nul ? NULL : &out);
+    swarp_status st = SWR_CALL(c, swarp_gmnpr_lambda(g.theta, g.phi, g.n, g.f, nul ? NULL : &out));
     if (!swr_verdict(c, st, 1, (void*)&out, sizeof out)) return;
     swr_rec_inf(c, "lambda_GMNPR", out);
     if (g.theta == 0.0) {
@@ -692,7 +706,7 @@ static void e_gmnpr_lambda_lispsm(swr_ctx* c) {
     expect_gm(c, &g, 1, 0, 0);
     double out;
     swr_fill(&out, sizeof out);
-    swarp_status st = swarp_gmnpr_lambda_lispsm(g.theta, g.phi, g.n, g.f, nul ? NULL : &out);
+    swarp_status st = SWR_CALL(c, swarp_gmnpr_lambda_lispsm(g.theta, g.phi, g.n, g.f, nul ? NULL : &out));
     if (!swr_verdict(c, st, 1, (void*)&out, sizeof out)) return;
     swr_rec_inf(c, "lambda_LiSPSM", out);
     if (g.theta == 0.0) {
@@ -713,7 +727,7 @@ static void e_gmnpr_lambda_glpr(swr_ctx* c) {
     expect_gm(c, &g, 0, 0, 0);
     double out;
     swr_fill(&out, sizeof out);
-    swarp_status st = swarp_gmnpr_lambda_glpr(g.theta, g.phi, g.n, g.f, nul ? NULL : &out);
+    swarp_status st = SWR_CALL(c, swarp_gmnpr_lambda_glpr(g.theta, g.phi, g.n, g.f, nul ? NULL : &out));
     if (!swr_verdict(c, st, 1, (void*)&out, sizeof out)) return;
     swr_rec_inf(c, "lambda_GLPR", out);
     if (st == SWARP_OK && swr_isfin(out) && swarp_gmnpr_offset) {
@@ -785,7 +799,7 @@ static void e_error_curve(swr_ctx* c, err_fn fn, const char* what) {
     double out;
     swr_fill(&out, sizeof out);
     swarp_error_config keep = cfg;
-    swarp_status st = fn(n_cfg ? NULL : &cfg, z, np, n_out ? NULL : &out);
+    swarp_status st = SWR_CALL(c, fn(n_cfg ? NULL : &cfg, z, np, n_out ? NULL : &out));
     SWR_CHECK(c, memcmp(&keep, &cfg, sizeof cfg) == 0, "cfg modified");
     if (!swr_verdict(c, st, 1, (void*)&out, sizeof out)) return;
     swr_rec(c, what, out);
@@ -820,7 +834,7 @@ static void e_error_max(swr_ctx* c) {
     double mx, mz;
     swr_fill(&mx, sizeof mx);
     swr_fill(&mz, sizeof mz);
-    swarp_status st = swarp_error_max(n_cfg ? NULL : &cfg, np, n_x ? NULL : &mx, n_z ? NULL : &mz);
+    swarp_status st = SWR_CALL(c, swarp_error_max(n_cfg ? NULL : &cfg, np, n_x ? NULL : &mx, n_z ? NULL : &mz));
     if (!swr_verdict(c, st, 2, (void*)&mx, sizeof mx, (void*)&mz, sizeof mz)) return;
     if (!n_x) swr_rec(c, "max m_x", mx);
     if (!n_z) swr_rec(c, "max m_z", mz);
@@ -893,8 +907,8 @@ static void e_error_split_curve(swr_ctx* c) {
     double mx[MAX_Z], mz[MAX_Z];
     swr_fill(mx, sizeof mx);
     swr_fill(mz, sizeof mz);
-    swarp_status st = swarp_error_split_curve(n_cfg ? NULL : &s.cfg, n_sp ? NULL : s.splits, n_np ? NULL : s.np, s.m,
-                                              n_z ? NULL : z, count, n_x ? NULL : mx, n_zz ? NULL : mz);
+    swarp_status st = SWR_CALL(c, swarp_error_split_curve(n_cfg ? NULL : &s.cfg, n_sp ? NULL : s.splits, n_np ? NULL : s.np, s.m,
+                                              n_z ? NULL : z, count, n_x ? NULL : mx, n_zz ? NULL : mz));
     if (!swr_verdict(c, st, 2, (void*)mx, sizeof mx, (void*)mz, sizeof mz)) return;
     for (size_t k = 0; k < count; ++k) {
         if (!n_x) swr_rec(c, "m_x", mx[k]);
@@ -930,8 +944,8 @@ static void e_error_split_max(swr_ctx* c) {
     swr_fill(sz, sizeof sz);
     swr_fill(&mx, sizeof mx);
     swr_fill(&mz, sizeof mz);
-    swarp_status st = swarp_error_split_max(n_cfg ? NULL : &s.cfg, n_sp ? NULL : s.splits, n_np ? NULL : s.np, s.m,
-                                            n_sx ? NULL : sx, n_sz ? NULL : sz, n_x ? NULL : &mx, n_z ? NULL : &mz);
+    swarp_status st = SWR_CALL(c, swarp_error_split_max(n_cfg ? NULL : &s.cfg, n_sp ? NULL : s.splits, n_np ? NULL : s.np, s.m,
+                                            n_sx ? NULL : sx, n_sz ? NULL : sz, n_x ? NULL : &mx, n_z ? NULL : &mz));
     if (!swr_verdict(c, st, 4, (void*)sx, sizeof sx, (void*)sz, sizeof sz, (void*)&mx, sizeof mx, (void*)&mz, sizeof mz))
         return;
     double best_x = 0, best_z = 0;
@@ -999,10 +1013,10 @@ static void e_split_scheme(swr_ctx* c, int kind) {
     size_t* oc = a.null_count ? NULL : &count;
     swarp_status st;
     switch (kind) {
-        case SCH_UNIFORM: st = swarp_split_uniform(a.n, a.f, a.m, o, a.cap, oc); break;
-        case SCH_LOG: st = swarp_split_log(a.n, a.f, a.m, o, a.cap, oc); break;
-        case SCH_PRACTICAL: st = swarp_split_practical(a.n, a.f, a.lambda, a.m, o, a.cap, oc); break;
-        default: st = swarp_split_pseudo(a.n, a.f, a.n_p, a.f_p, a.lambda, a.m, o, a.cap, oc); break;
+        case SCH_UNIFORM: st = SWR_CALL(c, swarp_split_uniform(a.n, a.f, a.m, o, a.cap, oc)); break;
+        case SCH_LOG: st = SWR_CALL(c, swarp_split_log(a.n, a.f, a.m, o, a.cap, oc)); break;
+        case SCH_PRACTICAL: st = SWR_CALL(c, swarp_split_practical(a.n, a.f, a.lambda, a.m, o, a.cap, oc)); break;
+        default: st = SWR_CALL(c, swarp_split_pseudo(a.n, a.f, a.n_p, a.f_p, a.lambda, a.m, o, a.cap, oc)); break;
     }
     if (st == SWARP_ERR_CAPACITY) {
         SWR_CHECK(c, !oc || count == (size_t)a.m + 1, "CAPACITY but needed count %zu, want %u", count, a.m + 1);

@@ -2,6 +2,12 @@
  * verdicts, checks.  See swr.h. */
 #include "swr.h"
 
+#if defined(__x86_64__) || defined(__SSE2__)
+#include <xmmintrin.h>
+#define SWR_HAVE_MXCSR 1
+#endif
+
+#include <fenv.h>
 #include <float.h>
 #include <math.h>
 #include <stdarg.h>
@@ -233,6 +239,9 @@ int swr_verdict(swr_ctx* c, swarp_status st, int nout, ...) {
 }
 
 /* ---- checks ------------------------------------------------------------------ */
+void swr_cond(swr_ctx* c, double k) {
+    if (k > c->cond || k != k) c->cond = k;
+}
 void swr_rec(swr_ctx* c, const char* what, double v) {
     if (c->n_rec < SWR_MAX_REC) c->rec[c->n_rec++] = v;
     if (!swr_isfin(v)) swr_fail(c, "%s = %g is not finite after %s", what, v, swarp_status_name(c->status));
@@ -273,6 +282,28 @@ void swr_close_cond(swr_ctx* c, const char* what, double got, swr_ref_fn f, cons
         }
         a[i] = keep;
     }
+    swr_cond(c, (double)kappa);
     double tol = 64.0 * DBL_EPSILON * (1.0 + (double)kappa);
     swr_close(c, what, got, ref, tol, 1e-300);
+}
+
+/* ---- floating-point environment around the library call ------------------ */
+void swr_enter(swr_ctx* c) {
+    if (c->fenv_mode & SWR_FENV_SET) {
+        c->saved_env = (unsigned)fegetround();
+        fesetround(c->fenv_mode & 0xFFFF);
+    }
+#ifdef SWR_HAVE_MXCSR
+    if (c->fenv_mode & SWR_FENV_FTZ_DAZ) {
+        c->saved_env = _mm_getcsr();
+        _mm_setcsr(c->saved_env | 0x8040u); /* FTZ (bit 15) | DAZ (bit 6) */
+    }
+#endif
+}
+swarp_status swr_leave(swr_ctx* c, swarp_status st) {
+    if (c->fenv_mode & SWR_FENV_SET) fesetround((int)c->saved_env);
+#ifdef SWR_HAVE_MXCSR
+    if (c->fenv_mode & SWR_FENV_FTZ_DAZ) _mm_setcsr(c->saved_env);
+#endif
+    return st;
 }

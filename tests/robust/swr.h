@@ -53,7 +53,29 @@ typedef struct swr_ctx {
     size_t n_rec;
     int failed;
     char msg[512];
+    /* floating-point environment for the library call only (fenv test):
+     * 0 = leave alone, else an FE_* rounding mode + SWR_FENV_SET, or
+     * SWR_FENV_FTZ_DAZ */
+    int fenv_mode;
+    unsigned saved_env;
+    /* how sensitive the recorded outputs are (the fenv test's tolerance is
+     * max(1e-9, tol_min, 64 eps cond) relative to the largest output): cond
+     * is the largest condition number the checks met (swr_close_cond sets
+     * it), tol_min a floor (e.g. one float ulp for float outputs) */
+    double cond, tol_min;
+    /* 1 when the case sits on the overflow threshold: under FE_TOWARDZERO /
+     * FE_DOWNWARD / FE_UPWARD an overflow may round to +-DBL_MAX instead of
+     * +-inf (IEEE 754), so the status may legitimately change; the fenv test
+     * leaves such cases out and counts them */
+    int overflow_edge;
 } swr_ctx;
+#define SWR_FENV_SET 0x10000
+#define SWR_FENV_FTZ_DAZ 0x20000
+/* Wraps the one library call an entry checks: sets c->fenv_mode around it
+ * (decoding and checking run in the default environment). */
+#define SWR_CALL(c, call) (swr_enter(c), swr_leave((c), (call)))
+void swr_enter(swr_ctx* c);
+swarp_status swr_leave(swr_ctx* c, swarp_status st);
 
 typedef void (*swr_entry_fn)(swr_ctx* c);
 typedef struct swr_entry {
@@ -127,6 +149,8 @@ void swr_fail(swr_ctx* c, const char* fmt, ...)
     do {                                     \
         if (!(cond)) swr_fail((c), __VA_ARGS__); \
     } while (0)
+/* Raises c->cond to k (the condition number of an output). */
+void swr_cond(swr_ctx* c, double k);
 /* Records v (for threads/fenv comparisons) and checks it is finite. */
 void swr_rec(swr_ctx* c, const char* what, double v);
 /* Records v, allowing +INFINITY. */
