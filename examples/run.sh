@@ -1,9 +1,16 @@
 #!/bin/sh
 # The main job on the built-in default: installs what is missing, builds,
-# and runs it.  Output goes to stdout (and ./out/ once the demo lands).
+# runs the OSMesa demo's default gallery (PNGs into ./out/ and a summary
+# table on stdout), then swtool's report.  Arguments go to the demo
+# (e.g. sh examples/run.sh --technique lispsm --size 1280x720).
 set -eu
 cd "$(dirname "$0")/.."
 sh tests/install-deps.sh
 [ -d build ] || meson setup build --buildtype=release >/dev/null
 ninja -C build >/dev/null
-./build/examples/swtool/swtool report "$@"
+if [ -x ./build/examples/demo/demo ]; then
+    ./build/examples/demo/demo "$@"
+else
+    echo "run.sh: the demo was not built (OSMesa, libpng, cglm or stb missing); swtool only"
+fi
+./build/examples/swtool/swtool report

@@ -110,31 +110,89 @@ extern "C" {
     X(SWARP_ERR_ZERO_VECTOR, 9, "a direction vector has zero length")               \
     X(SWARP_ERR_RESERVED_NONZERO, 10, "a _reserved field is not zero")              \
     X(SWARP_ERR_DEGENERATE, 11, "degenerate configuration")                         \
-    X(SWARP_ERR_SPLIT_COUNT, 12, "split count m must be at least 1")                \
+    X(SWARP_ERR_SPLIT_COUNT, 12, "split count m is 0 (or above SWARP_SPLIT_MAX_COUNT for a split scheme)") \
     X(SWARP_ERR_UNKNOWN_ENUM, 13, "an enum value is not one of the documented ones")\
     X(SWARP_ERR_NOT_INCREASING, 14, "split distances must be strictly increasing")  \
     X(SWARP_ERR_SINGULAR, 15, "a matrix is singular or too ill-conditioned")        \
+    X(SWARP_ERR_OVERFLOW, 16, "the result does not fit a finite double (inputs too extreme)") \
     X(SWARP_INFO_WARP_UNIFORM, 1000,                                                \
       "warp faded to uniform (duelling frusta: light parallel to the view)")        \
     X(SWARP_INFO_GMNPR_ADJUSTED, 1001,                                              \
       "theta < phi: lambda_GMNPR uses the adjusted branch lambda_2* of eq. (7)")    \
     X(SWARP_INFO_GLPR_NO_SOLUTION, 1002,                                            \
-      "GLPR has no positive lambda here; the largest admissible value was written")
+      "GLPR has no positive lambda here (theta <= phi); lambda_GMNPR was written")
 
 /* >>> status: geometry (100..199, 1100..1199) */
 #define SWARP_STATUS_LIST_GEOMETRY(X)
 /* <<< status: geometry */
 
 /* >>> status: lixel (200..299, 1200..1299) */
-#define SWARP_STATUS_LIST_LIXEL(X)
+#define SWARP_STATUS_LIST_LIXEL(X)                                                  \
+    X(SWARP_ERR_LIXEL_COPLANAR, 200,                                                \
+      "four of the five points are coplanar (or a point is zero): no unique matrix")\
+    X(SWARP_ERR_LIXEL_PLANE_THROUGH_EYE, 201,                                       \
+      "the plane of interest passes through the viewer's eye")                      \
+    X(SWARP_ERR_LIXEL_LIGHT_ON_PLANE, 202, "the point light lies on the plane of interest") \
+    X(SWARP_ERR_LIXEL_LIGHT_PARALLEL_PLANE, 203,                                    \
+      "the directional light is parallel to the plane of interest")                 \
+    X(SWARP_ERR_LIXEL_PLANE_NOT_VISIBLE, 204,                                       \
+      "no corner ray of the viewer hits the plane of interest in front of the eye") \
+    X(SWARP_ERR_LIXEL_RAY_OUTSIDE, 205,                                             \
+      "a ray of C is outside the light frustum of M_l (q <= 0)")                    \
+    X(SWARP_ERR_LIXEL_RECT_TOO_LARGE, 206,                                          \
+      "the light-image rectangle exceeds the allowed size (C approaches the line pi)") \
+    X(SWARP_ERR_LIXEL_TWIST_LINE, 207,                                              \
+      "the twist line projects to a point in the light image")                      \
+    X(SWARP_ERR_LIXEL_EMPTY, 208,                                                   \
+      "no ray of C hits the plane inside the viewer's frustum")                     \
+    X(SWARP_INFO_LIXEL_ILL_CONDITIONED, 1200,                                       \
+      "the five-point configuration is ill-conditioned; the matrix may be inaccurate") \
+    X(SWARP_INFO_LIXEL_QUAD_ACROSS_INFINITY, 1201,                                  \
+      "the quad Q straddles infinity (horizon visible); exact on the visible part") \
+    X(SWARP_INFO_LIXEL_PLANE_PARALLEL_VIEW, 1202,                                   \
+      "the plane of interest is parallel to the view direction (horizon through the centre)") \
+    X(SWARP_INFO_LIXEL_LIGHT_BEHIND_PLANE, 1203,                                    \
+      "light and viewer are on opposite sides of the plane of interest")
 /* <<< status: lixel */
 
 /* >>> status: filter (300..399, 1300..1399) */
-#define SWARP_STATUS_LIST_FILTER(X)
+#define SWARP_STATUS_LIST_FILTER(X)                                                      \
+    X(SWARP_ERR_FILTER_LAYER_COUNT, 300,                                                 \
+      "LVSM layer count must be in 1..SWARP_LVSM_MAX_LAYERS")                            \
+    X(SWARP_ERR_FILTER_OVERLAP, 301,                                                     \
+      "LVSM overlap delta must be >= 0 and smaller than the thinnest layer")             \
+    X(SWARP_ERR_FILTER_BAND, 302,                                                        \
+      "LVSM transition band must lie in [0, delta] and below half the thinnest layer")   \
+    X(SWARP_ERR_FILTER_NO_SAMPLES, 303, "Lloyd relaxation needs at least one sample")    \
+    X(SWARP_ERR_FILTER_BLOCKER, 304,                                                     \
+      "PCSS blocker depth must be > 0 and not beyond the receiver")                      \
+    X(SWARP_ERR_FILTER_EXPONENT, 305,                                                    \
+      "EVSM exponent must be > 0 and keep e^(2c) finite in double")                      \
+    X(SWARP_INFO_FILTER_NOT_CONVERGED, 1300,                                             \
+      "Lloyd relaxation reached its iteration bound before converging; splits written")  \
+    X(SWARP_INFO_FILTER_NO_WEIGHT, 1301,                                                 \
+      "all Lloyd sample weights are zero: splits written unchanged")                     \
+    X(SWARP_INFO_FILTER_MSM_DEGENERATE, 1302,                                            \
+      "moment matrix singular (at most two distinct depths): exact discrete form used")  \
+    X(SWARP_INFO_FILTER_DEPTH_CLAMPED, 1303,                                             \
+      "depth outside [s_0, s_N]: the first or last layer was used")
 /* <<< status: filter */
 
 /* >>> status: splits (400..499, 1400..1499) */
-#define SWARP_STATUS_LIST_SPLITS(X)
+#define SWARP_STATUS_LIST_SPLITS(X)                                                  \
+    X(SWARP_ERR_ATLAS_SPLITS, 400, "atlas layouts hold 1..16 splits")                 \
+    X(SWARP_ERR_STABILIZE_WARPED, 401,                                               \
+      "stabilisation is defined for uniform light-space aligned maps; a warp was requested") \
+    X(SWARP_ERR_STABILIZE_LIGHT, 402, "stabilisation needs a directional light")      \
+    X(SWARP_ERR_BEHIND_PROJECTION, 403,                                              \
+      "the point maps to w <= 0 (behind the centre of projection of the light matrix)") \
+    X(SWARP_ERR_SPLIT_EMPTY, 404, "a split frustum does not intersect the scene")    \
+    X(SWARP_INFO_LEVEL_ABOVE_RANGE, 1400,                                            \
+      "the body is larger than the reference size: quantised level above the level count") \
+    X(SWARP_INFO_OUTSIDE_SPLITS, 1401,                                               \
+      "the point lies in no split map; the split nearest in eye depth was chosen")   \
+    X(SWARP_INFO_BACKFACING, 1402,                                                   \
+      "the normal faces away from the light; N.L clamped to 0")
 /* <<< status: splits */
 
 /* >>> status: plan (500..599, 1500..1599) */
@@ -253,40 +311,68 @@ SWARP_API swarp_status swarp_mat4_transform(const swarp_mat4* m, const swarp_vec
  * Naming: the warp parameter n (or n') is the distance from the projection
  * centre C of the warping frustum P to its near plane [RHS] §3.2.1.  n = n_e
  * (the eye's near distance, overhead light) is PSM; n -> inf is uniform.
+ *
+ * Huge values, one rule for every parameter below: the exactly degenerate
+ * input (z_1 == z_0, eta == -1, theta == 0) gives +INFINITY; a value that is
+ * finite in exact arithmetic but exceeds DBL_MAX is written as DBL_MAX.  Both
+ * come with SWARP_INFO_WARP_UNIFORM.  Angles are radians.
  */
 
 /** @brief LiSPSM n_opt, general form.  [RHS] (3.2) (from [WS06])
- *  n_opt = d / (sqrt(z_1/z_0) - 1).
- *  @param d   extent of the warping frustum P along light-space z (> 0)
- *  @param z_0 eye-space depth where the error peaks near (> 0)
- *  @param z_1 eye-space depth where the error peaks far (>= z_0)
- *  @param[out] out_n_opt  n_opt; +INFINITY when z_1 == z_0
- *  @return SWARP_OK; SWARP_INFO_WARP_UNIFORM when z_1 == z_0 (n_opt = inf);
+ *  n_opt = d / (sqrt(z_1/z_0) - 1), evaluated as
+ *  d (z_0 + sqrt(z_0 z_1)) / (z_1 - z_0) (no cancellation for z_1 ~ z_0).
+ *  For an overhead light (d = f - n, z_0 = n, z_1 = f) it is the n' that makes
+ *  Lloyd's m_z(n) = m_z(f) ([RHS] (2.4)); n_opt / d is [GMNPR]'s λ_LiSPSM(π/2).
+ *  @param[in] d   extent of the warping frustum P along light-space z (> 0),
+ *                 world units
+ *  @param[in] z_0 eye-space depth where the error peaks near (> 0)
+ *  @param[in] z_1 eye-space depth where the error peaks far (>= z_0)
+ *  @param[out] out_n_opt  n_opt, world units; +INFINITY when z_1 == z_0
+ *  @return SWARP_OK; SWARP_INFO_WARP_UNIFORM when z_1 == z_0 (n_opt = inf) or
+ *          the value overflows (DBL_MAX); SWARP_ERR_NULL_POINTER,
  *          SWARP_ERR_NON_FINITE, SWARP_ERR_OUT_OF_RANGE (d <= 0, z_0 <= 0,
- *          z_1 < z_0), SWARP_ERR_NULL_POINTER. */
+ *          z_1 < z_0). */
 SWARP_API swarp_status swarp_warp_nopt(double d, double z_0, double z_1, double* out_n_opt);
 
 /** @brief n_opt with pseudo-near and pseudo-far planes.  [RHS] (4.2)
  *  Read as n_opt = d/(z_1 - z_0) * (z_0 + sqrt((z_0 + n_p (z_1 - z_0))
  *  (z_1 - f_p (z_1 - z_0)))) (papers README); reduces to (3.2) at
- *  n_p = f_p = 0.
- *  @param n_p, f_p  in [0, 1], n_p + f_p < 1 (pseudo planes as fractions of
- *                   the depth range measured from near and from far)
- *  @return as swarp_warp_nopt; SWARP_ERR_OUT_OF_RANGE for n_p, f_p outside. */
+ *  n_p = f_p = 0.  For an overhead light (d = z_1 - z_0) it equalises m_z at
+ *  the pseudo-near depth z_0 + n_p (z_1 - z_0) and the pseudo-far depth
+ *  z_1 - f_p (z_1 - z_0).
+ *  @param[in] d, z_0, z_1  as swarp_warp_nopt
+ *  @param[in] n_p, f_p  in [0, 1], n_p + f_p < 1: the pseudo planes as
+ *                   fractions of the depth range measured from near and from
+ *                   far (NOT eye-space distances; compare swarp_split_pseudo)
+ *  @param[out] out_n_opt  n_opt, world units
+ *  @return as swarp_warp_nopt; SWARP_ERR_NON_FINITE / SWARP_ERR_OUT_OF_RANGE
+ *          for n_p, f_p. */
 SWARP_API swarp_status swarp_warp_nopt_pseudo(double d, double z_0, double z_1, double n_p,
                                               double f_p, double* out_n_opt);
 
 /** @brief Lloyd's warp strength η(γ, Θ).  [RHS] (3.3)
- *  @param gamma angle between light direction and view direction, radians,
+ *  Piecewise in γ with γ_a = Θ/3, γ_b = Θ, γ_c = Θ + 0.3 (π/2 - Θ),
+ *  η_b = -0.2, η_c = 0; continuous in γ.
+ *  @param[in] gamma angle between light direction and view direction, radians,
  *               in [0, pi/2] (callers fold γ > pi/2 to pi - γ)
- *  @param theta half the field of view Θ, radians, in (0, pi/2)
- *  @param[out] out_eta η in [-1, 0] */
+ *  @param[in] theta half the field of view Θ, radians, in (0, pi/2)
+ *  @param[out] out_eta η in [-1, 0]
+ *  @return SWARP_OK; SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
+ *          SWARP_ERR_FOV (theta), SWARP_ERR_OUT_OF_RANGE (gamma). */
 SWARP_API swarp_status swarp_warp_eta(double gamma, double theta, double* out_eta);
 
 /** @brief Width W_lz of the view frustum along the light-space z axis for a
  *  directional light.  [RHS] (3.5)
- *  @param gamma in [0, pi/2]; @param theta in (0, pi/2); @param n_e, f_e eye
- *  near/far (0 < n_e < f_e); @param W_e width of the near plane (> 0). */
+ *  W_lz = W_e cos γ + W_s sin(Θ + γ) + [γ <= Θ] W_s (1 - cos(Θ - γ)),
+ *  W_s = (f_e - n_e)/cos Θ.  Overhead light (γ = π/2): W_lz = f_e - n_e.
+ *  @param[in] gamma in [0, pi/2] radians; @param[in] theta Θ in (0, pi/2)
+ *  @param[in] n_e, f_e eye near/far (0 < n_e < f_e), world units
+ *  @param[in] W_e width of the eye's near plane (> 0), world units; in the
+ *             2D side view of [RHS] Fig. 3.7 this is 2 n_e tan Θ
+ *  @param[out] out_W_lz  W_lz, world units
+ *  @return SWARP_OK; SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
+ *          SWARP_ERR_NEAR_FAR, SWARP_ERR_FOV, SWARP_ERR_OUT_OF_RANGE (gamma,
+ *          W_e), SWARP_ERR_OVERFLOW. */
 SWARP_API swarp_status swarp_warp_wlz(double gamma, double theta, double n_e, double f_e,
                                       double W_e, double* out_W_lz);
 
@@ -294,43 +380,70 @@ SWARP_API swarp_status swarp_warp_wlz(double gamma, double theta, double n_e, do
  *  as η·sqrt(α) + 1 (papers README).  η = -1 gives +INFINITY with
  *  SWARP_INFO_WARP_UNIFORM; η = 0 gives W_lz/(sqrt(α) - 1) (n_opt);
  *  η = 1 gives W_lz/(α - 1) (PSM).
- *  @param eta in [-1, 1]; @param alpha f_e/n_e > 1; @param W_lz > 0. */
+ *  @param[in] eta in [-1, 1]; @param[in] alpha f_e/n_e > 1
+ *  @param[in] W_lz > 0, world units (swarp_warp_wlz)
+ *  @param[out] out_n  n_repar, world units (light space: the warp frustum's
+ *              depth is W_lz)
+ *  @return SWARP_OK; SWARP_INFO_WARP_UNIFORM (η = -1, or overflow: DBL_MAX);
+ *          SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
+ *          SWARP_ERR_OUT_OF_RANGE. */
 SWARP_API swarp_status swarp_warp_nrepar(double eta, double alpha, double W_lz, double* out_n);
 
 /*
  * [GMNPR] uses λ = P_n / (P_f - P_n): the warp parameter for a warping frustum
  * whose depth range is normalised to 1.  θ is the angle between light and
  * view direction (γ in [RHS]), φ the half field of view (Θ in [RHS]).
+ * Eq. (2) has two cases, θ in [φ, π/2] and θ in [0, φ]; they agree at θ = φ.
+ * Common checks: NaN/Inf -> SWARP_ERR_NON_FINITE; n <= 0 or f <= n ->
+ * SWARP_ERR_NEAR_FAR; φ outside (0, π/2) -> SWARP_ERR_FOV; θ or λ outside
+ * their domain -> SWARP_ERR_OUT_OF_RANGE; NULL output -> SWARP_ERR_NULL_POINTER.
  */
 
-/** @brief ψ(λ, θ) of [GMNPR] eq. (2). λ > 0, θ in (0, pi/2], φ in (0, pi/2),
- *  0 < n < f. */
+/** @brief ψ(λ, θ) of [GMNPR] eq. (2).  λ > 0, θ in (0, pi/2], φ in (0, pi/2),
+ *  0 < n < f.
+ *  @return SWARP_OK, the common checks, SWARP_ERR_OVERFLOW (λ or θ so small
+ *  that ψ exceeds DBL_MAX). */
 SWARP_API swarp_status swarp_gmnpr_psi(double lambda, double theta, double phi, double n,
                                        double f, double* out_psi);
 /** @brief φ(λ, θ) of [GMNPR] eq. (2) (the offset inside (z + φ)^2).  Named
- *  "offset" here to keep it apart from the half field of view φ. */
+ *  "offset" here to keep it apart from the half field of view φ.  Same domain
+ *  and statuses as swarp_gmnpr_psi. */
 SWARP_API swarp_status swarp_gmnpr_offset(double lambda, double theta, double phi, double n,
                                           double f, double* out_offset);
-/** @brief Aliasing function F(λ, θ, z) = ψ (z + φ(λ,θ))^2 / z.  [GMNPR] (2) */
+/** @brief Aliasing function F(λ, θ, z) = ψ (z + φ(λ,θ))^2 / z.  [GMNPR] (2)
+ *  @param[in] z eye-space depth in [n, f] (SWARP_ERR_OUT_OF_RANGE outside).
+ *  Other parameters and statuses as swarp_gmnpr_psi. */
 SWARP_API swarp_status swarp_gmnpr_F(double lambda, double theta, double phi, double n,
                                      double f, double z, double* out_F);
-/** @brief λ_1(θ) and λ_2(θ) of [GMNPR] (4), for analysis (λ_2 may be <= 0).
- *  θ in (0, pi/2]. */
+/** @brief λ_1(θ) and λ_2(θ) of [GMNPR] (4), for analysis (either may be <= 0
+ *  off its own case).  λ_1 is read with tanφ/tanθ (papers README).
+ *  θ in (0, pi/2]; both outputs required.
+ *  @return SWARP_OK, the common checks, SWARP_ERR_OVERFLOW. */
 SWARP_API swarp_status swarp_gmnpr_lambda12(double theta, double phi, double n, double f,
                                             double* out_lambda_1, double* out_lambda_2);
 /** @brief λ_GMNPR(θ) of [GMNPR] (8), with λ_2* of (7) for θ < φ.
- *  θ in [0, pi/2]; θ = 0 gives +INFINITY with SWARP_INFO_WARP_UNIFORM.
- *  @return SWARP_OK (θ >= φ), SWARP_INFO_GMNPR_ADJUSTED (0 < θ < φ), ... */
+ *  θ in [0, pi/2]; finite and positive for θ > 0, continuous at θ = φ,
+ *  growing without bound as θ -> 0; θ = 0 gives +INFINITY with
+ *  SWARP_INFO_WARP_UNIFORM (and θ so small that λ overflows gives DBL_MAX
+ *  with SWARP_INFO_WARP_UNIFORM).
+ *  @return SWARP_OK (θ >= φ), SWARP_INFO_GMNPR_ADJUSTED (0 < θ < φ),
+ *  SWARP_INFO_WARP_UNIFORM, the common checks. */
 SWARP_API swarp_status swarp_gmnpr_lambda(double theta, double phi, double n, double f,
                                           double* out_lambda);
-/** @brief λ_LiSPSM(θ) of [GMNPR] (9). θ in [0, pi/2]; θ = 0 gives +INFINITY
- *  with SWARP_INFO_WARP_UNIFORM. */
+/** @brief λ_LiSPSM(θ) of [GMNPR] (9): P_n = (n + sqrt(fn))/sin θ over the
+ *  normalised depth P_f - P_n.  θ in [0, pi/2]; θ = 0 gives +INFINITY with
+ *  SWARP_INFO_WARP_UNIFORM.  At θ = π/2 it equals n_opt/(f - n).
+ *  @return SWARP_OK, SWARP_INFO_WARP_UNIFORM, the common checks. */
 SWARP_API swarp_status swarp_gmnpr_lambda_lispsm(double theta, double phi, double n, double f,
                                                  double* out_lambda);
 /** @brief λ_GLPR: the λ that makes F(λ, θ, z) linear in z (GLPR, [GMNPR] §3,
- *  derived from (2): F linear in z <=> φ(λ, θ) = 0).  See docs/parameters.md
- *  for the derivation and for what is written where no positive solution
- *  exists (SWARP_INFO_GLPR_NO_SOLUTION). */
+ *  derived from (2): F linear in z <=> φ(λ, θ) = 0).  For θ > φ:
+ *  λ = n (1 - tanφ/tanθ) / (f - n + (f + n) tanφ/tanθ), which is n/(f - n)
+ *  (PSM) at θ = π/2.  For θ <= φ there is no positive solution: λ_GMNPR(θ) is
+ *  written instead with SWARP_INFO_GLPR_NO_SOLUTION (θ = 0: +INFINITY with
+ *  SWARP_INFO_WARP_UNIFORM).  Derivation in docs/parameters.md.
+ *  @return SWARP_OK, SWARP_INFO_GLPR_NO_SOLUTION, SWARP_INFO_WARP_UNIFORM,
+ *  the common checks. */
 SWARP_API swarp_status swarp_gmnpr_lambda_glpr(double theta, double phi, double n, double f,
                                                double* out_lambda);
 
@@ -338,10 +451,12 @@ SWARP_API swarp_status swarp_gmnpr_lambda_glpr(double theta, double phi, double 
 /* Core: Lloyd's error metric                    (src/error.c)              */
 /* ======================================================================== */
 
-/** Inputs of Lloyd's error metric [RHS] (2.3)-(2.8).  res_ix >= res_iy is the
- *  image resolution, res_s >= res_t the shadow-map resolution (texels);
- *  theta is Θ, half the field of view, radians in (0, pi/2).  near/far are
- *  the range [n, f] the curve refers to. */
+/** Inputs of Lloyd's error metric [RHS] (2.3)-(2.8).  res_ix x res_iy is the
+ *  image resolution (pixels; the paper has res_ix >= res_iy), res_s x res_t
+ *  the shadow-map resolution (texels); each must be finite and > 0
+ *  (SWARP_ERR_RESOLUTION).  theta is Θ, half the field of view, radians in
+ *  (0, pi/2) (SWARP_ERR_FOV).  near/far are the range [n, f] the curve refers
+ *  to (SWARP_ERR_NEAR_FAR unless 0 < near < far).  _reserved must be zero. */
 typedef struct swarp_error_config {
     double near;
     double far;
@@ -354,29 +469,49 @@ typedef struct swarp_error_config {
 } swarp_error_config;
 
 /** @brief m_x(z, n') [RHS] (2.3); n' = n gives (2.5) (PSM); n' = +INFINITY
- *  gives the closed-form uniform limit (2.7).  z in [near, far]; n' > 0. */
+ *  gives the closed-form uniform limit (2.7).
+ *  @param[in] cfg  see swarp_error_config
+ *  @param[in] z    eye-space depth in [near, far]
+ *  @param[in] n_prime  warp parameter n' in (0, +INFINITY] (+INFINITY =
+ *                  uniform), world units
+ *  @param[out] out_mx  m_x (dimensionless: screen pixels per shadow texel)
+ *  @return SWARP_OK; SWARP_ERR_NULL_POINTER, SWARP_ERR_RESERVED_NONZERO,
+ *          SWARP_ERR_NON_FINITE (NaN anywhere, n' = -inf), SWARP_ERR_FOV,
+ *          SWARP_ERR_RESOLUTION, SWARP_ERR_NEAR_FAR, SWARP_ERR_OUT_OF_RANGE
+ *          (z outside [near, far], n' <= 0), SWARP_ERR_OVERFLOW. */
 SWARP_API swarp_status swarp_error_mx(const swarp_error_config* cfg, double z, double n_prime,
                                       double* out_mx);
-/** @brief m_z(z, n') [RHS] (2.4); n' = n gives (2.6); n' = +INFINITY gives (2.8). */
+/** @brief m_z(z, n') [RHS] (2.4); n' = n gives (2.6); n' = +INFINITY gives
+ *  (2.8).  Parameters and statuses as swarp_error_mx. */
 SWARP_API swarp_status swarp_error_mz(const swarp_error_config* cfg, double z, double n_prime,
                                       double* out_mz);
-/** @brief Exact maxima of m_x and m_z over [near, far].  Both curves are
- *  convex in z (m_z ∝ a^2/z + 2a + z with a = n' - n), so the maximum is at
- *  an end point: no sampling.  Either output pointer may be NULL. */
+/** @brief Exact maxima of m_x and m_z over [near, far].  m_x ∝ 1 + a/z is
+ *  monotone and m_z ∝ a^2/z + 2a + z (a = n' - n) is convex in z, so the
+ *  maximum is at an end point: no sampling.  Either output pointer may be
+ *  NULL.  Statuses as swarp_error_mx (no z). */
 SWARP_API swarp_status swarp_error_max(const swarp_error_config* cfg, double n_prime,
                                        double* out_max_mx, double* out_max_mz);
 /** @brief The piecewise curve of a partitioned frustum ([RHS] Fig. 3.15, 3.18):
  *  split i covers [splits[i], splits[i+1]] with its own warp n_primes[i] and
- *  a full map of res_s x res_t.  splits has m + 1 strictly increasing entries
- *  (cfg->near/far are ignored).  Evaluates at each z[k] (a z on a border
- *  belongs to the split that starts there).  out_mx or out_mz may be NULL. */
+ *  a full map of res_s x res_t (the metric evaluated with n = splits[i],
+ *  f = splits[i+1]).  splits has m + 1 strictly increasing entries, the first
+ *  > 0 (cfg->near/far are ignored).  Evaluates at each z[k] in
+ *  [splits[0], splits[m]] (a z on a border belongs to the split that starts
+ *  there; splits[m] to the last split).  out_mx or out_mz may be NULL; z may
+ *  be NULL when count is 0.
+ *  @return SWARP_OK; SWARP_ERR_NULL_POINTER, SWARP_ERR_RESERVED_NONZERO,
+ *  SWARP_ERR_NON_FINITE, SWARP_ERR_FOV, SWARP_ERR_RESOLUTION,
+ *  SWARP_ERR_SPLIT_COUNT (m = 0), SWARP_ERR_NEAR_FAR (splits[0] <= 0),
+ *  SWARP_ERR_NOT_INCREASING, SWARP_ERR_OUT_OF_RANGE (a z outside, an
+ *  n' <= 0), SWARP_ERR_OVERFLOW.  On error no output is written. */
 SWARP_API swarp_status swarp_error_split_curve(const swarp_error_config* cfg,
                                                const double* splits,
                                                const double* n_primes, size_t m,
                                                const double* z, size_t count,
                                                double* out_mx, double* out_mz);
 /** @brief Exact per-split and overall maxima of the piecewise curve.
- *  out_split_max_mx/mz may be NULL or hold m values; out_max_mx/mz may be NULL. */
+ *  out_split_max_mx/mz may be NULL or hold m values; out_max_mx/mz may be NULL.
+ *  Statuses as swarp_error_split_curve. */
 SWARP_API swarp_status swarp_error_split_max(const swarp_error_config* cfg,
                                              const double* splits,
                                              const double* n_primes, size_t m,
@@ -387,23 +522,37 @@ SWARP_API swarp_status swarp_error_split_max(const swarp_error_config* cfg,
 /* ======================================================================== */
 /* Core: split schemes                           (src/split.c)              */
 /* ======================================================================== */
-/** Worst case: the schemes write m + 1 values. */
+/** Largest split count m the schemes accept; they write m + 1 values, so an
+ *  array of SWARP_SPLIT_MAX_COUNT + 1 doubles always suffices. */
 #define SWARP_SPLIT_MAX_COUNT 64
 
-/** @brief Uniform split scheme C_i = n + (f - n) i/m.  [RHS] (3.6)
- *  Writes m + 1 distances (C_0 = n, C_m = f) into out. */
+/*
+ * Every scheme writes the m + 1 distances C_0 = n < C_1 < ... < C_m = f
+ * (C_0 and C_m exactly n and f) into out[0..m] and m + 1 into *out_count.
+ * Statuses: SWARP_OK; SWARP_ERR_NULL_POINTER (out_count NULL, or out NULL
+ * with capacity > 0); SWARP_ERR_NON_FINITE; SWARP_ERR_NEAR_FAR (n <= 0,
+ * f <= n); SWARP_ERR_OUT_OF_RANGE (lambda outside [0, 1], pseudo planes
+ * outside); SWARP_ERR_SPLIT_COUNT (m = 0 or m > SWARP_SPLIT_MAX_COUNT);
+ * SWARP_ERR_CAPACITY (capacity < m + 1: *out_count = m + 1, out untouched;
+ * so out = NULL, capacity = 0 asks for the count); SWARP_ERR_DEGENERATE
+ * ([n, f] too narrow in double precision for m distinct distances).
+ */
+
+/** @brief Uniform split scheme C_i = n + (f - n) i/m.  [RHS] (3.6) */
 SWARP_API swarp_status swarp_split_uniform(double n, double f, uint32_t m, double* out,
                                            size_t capacity, size_t* out_count);
 /** @brief Logarithmic scheme C_i = n (f/n)^(i/m).  [RHS] (3.7) */
 SWARP_API swarp_status swarp_split_log(double n, double f, uint32_t m, double* out,
                                        size_t capacity, size_t* out_count);
-/** @brief Practical scheme, λ in [0, 1] (0 uniform, 1 logarithmic).  [RHS] (3.8) */
+/** @brief Practical scheme C_i = (1 - λ) C_i^uni + λ C_i^log, λ in [0, 1]
+ *  (0 uniform, 1 logarithmic; PSSM uses 0.5).  [RHS] (3.8) */
 SWARP_API swarp_status swarp_split_practical(double n, double f, double lambda, uint32_t m,
                                              double* out, size_t capacity,
                                              size_t* out_count);
 /** @brief Pseudo-near/far practical scheme.  [RHS] (4.1): the practical scheme
- *  over [n_p, f_p] (eye-space distances, n <= n_p < f_p <= f); C_0 = n and
- *  C_m = f are kept so the splits still cover the whole view. */
+ *  over [n_p, f_p] (EYE-SPACE distances, n <= n_p < f_p <= f) for
+ *  C_1..C_{m-1}; C_0 = n and C_m = f are kept so the splits still cover the
+ *  whole view.  n_p = n, f_p = f gives swarp_split_practical. */
 SWARP_API swarp_status swarp_split_pseudo(double n, double f, double n_p, double f_p,
                                           double lambda, uint32_t m, double* out,
                                           size_t capacity, size_t* out_count);
@@ -412,12 +561,778 @@ SWARP_API swarp_status swarp_split_pseudo(double n, double f, double n_p, double
 /* <<< api: geometry */
 
 /* >>> api: lixel (src/lixel.c) */
+/*
+ * Plane-stabilised light matrices, [LIXEL] Chong & Gortler.  M_l maps world
+ * points to LIGHT-IMAGE coordinates [x_l q, y_l q, z_l q, q] where (x_l, y_l)
+ * are lixel coordinates (lixel centres at integers, like the viewer pixels
+ * (0,0) .. (g-1, h-1)).  On the plane of interest P every point has the same
+ * (x, y) in the viewer image (pixels) and in the light image (lixels).
+ * The viewer-image pixel of a clip-space point is
+ *   x_pix = (x_ndc + 1) g/2 - 1/2,  y_pix = (y_ndc + 1) h/2 - 1/2
+ * (pixel centres at integers, pixel 0 centred half a pixel inside the edge).
+ */
+
+/** Options of swarp_lixel_matrix (zero means default). */
+typedef struct swarp_lixel_options {
+    /** Where the raised point p^4-hat lies on the ray from the corner point
+     *  toward the light ([LIXEL] Fig. 2), as a fraction t in [0, 1):
+     *  point light p-hat = (1-t) p + t l; directional light p-hat =
+     *  p - t |p - eye| d/|d|.  0 = default 0.5.  It fixes the light-image
+     *  near plane (z = -1) only; (x, y) do not depend on it. */
+    double raise;
+    uint32_t _reserved[4];
+} swarp_lixel_options;
+
+/** Optional details of swarp_lixel_matrix. */
+typedef struct swarp_lixel_info {
+    swarp_vec4 corners[4];     /**< p^1..p^4 homogeneous (w <= 0: behind / at infinity) */
+    swarp_vec4 raised;         /**< p-hat, homogeneous, w = 1 */
+    uint32_t raised_index;     /**< which corner (0..3) was raised; 3 (= p^4) when in front */
+    uint32_t corners_in_front; /**< how many corner rays hit P in front of the eye */
+    double conditioning;       /**< swarp_lixel_solve5's measure, (0, 1] */
+    uint32_t _reserved[4];
+} swarp_lixel_info;
+
+/** @brief The 4x4 projective matrix fixed (up to scale) by five point
+ *  correspondences M src[i] ~ dst[i] (no four coplanar).  [LIXEL] §2, via
+ *  [Fau93]: both sets are mapped to the projective basis, in double, after a
+ *  similarity normalisation of each set, with partial pivoting.
+ *  @param[in] src five homogeneous points (w = 0 allowed: points at infinity)
+ *  @param[in] dst five homogeneous image points
+ *  @param[out] out_M the matrix, scaled so its largest |element| is 1
+ *  @param[out] out_conditioning may be NULL: the smallest |det| of four of
+ *         the five normalised points of either set, in [0, 1]; 0 = coplanar
+ *  @return SWARP_OK; SWARP_INFO_LIXEL_ILL_CONDITIONED (conditioning < 1e-6
+ *          or a constraint residual above 1e-9: the matrix is written);
+ *          SWARP_ERR_LIXEL_COPLANAR (conditioning < 1e-13), SWARP_ERR_NON_FINITE,
+ *          SWARP_ERR_NULL_POINTER. */
+SWARP_API swarp_status swarp_lixel_solve5(const swarp_vec4 src[5], const swarp_vec4 dst[5],
+                                          swarp_mat4* out_M, double* out_conditioning);
+
+/** @brief Plane-stabilised light matrix M_l.  [LIXEL] (1), (2), (7)-(10)
+ *  Rays through the corner pixels (2) hit P in p^1..p^4 (homogeneous, so a
+ *  quad across infinity, Fig. 5, is fine); a corner in front of the eye (p^4
+ *  when possible) is raised toward the light (Fig. 2); the light maps to
+ *  [0,0,1,0] (1), p^1..p^3 to their own pixel with z = 1, the raised point
+ *  with z = -1 ((7)-(10), (9) read as [(g-1)q, (h-1)q, 1q, q]).  The sign
+ *  of the matrix is chosen so that q > 0 exactly on the part of P in front
+ *  of the viewer (on P, q_l = c q_v with c > 0).
+ *  @param[in] M_v viewer view-projection (world -> clip, OpenGL style)
+ *  @param g, h viewer image width and height in pixels (>= 2)
+ *  @param[in] light point (position) or directional (direction of travel)
+ *  @param[in] plane the plane of interest P (normal non-zero)
+ *  @param[in] opt may be NULL (defaults)
+ *  @param[out] out_M_l world -> light image (lixels), largest |element| 1
+ *  @param[out] out_info may be NULL
+ *  @return SWARP_OK; informational SWARP_INFO_LIXEL_QUAD_ACROSS_INFINITY,
+ *  _PLANE_PARALLEL_VIEW, _LIGHT_BEHIND_PLANE, _ILL_CONDITIONED (most
+ *  important first: ill-conditioned, parallel, across infinity, behind);
+ *  errors SWARP_ERR_LIXEL_PLANE_THROUGH_EYE, _LIGHT_ON_PLANE,
+ *  _LIGHT_PARALLEL_PLANE, _PLANE_NOT_VISIBLE, SWARP_ERR_SINGULAR (M_v),
+ *  SWARP_ERR_RESOLUTION, SWARP_ERR_ZERO_VECTOR, SWARP_ERR_OUT_OF_RANGE
+ *  (raise), SWARP_ERR_UNKNOWN_ENUM, SWARP_ERR_RESERVED_NONZERO,
+ *  SWARP_ERR_NON_FINITE, SWARP_ERR_NULL_POINTER. */
+SWARP_API swarp_status swarp_lixel_matrix(const swarp_mat4* M_v, uint32_t g, uint32_t h,
+                                          const swarp_light* light, const swarp_plane* plane,
+                                          const swarp_lixel_options* opt, swarp_mat4* out_M_l,
+                                          swarp_lixel_info* out_info);
+
+/** Integer light-image rectangle [x0, x1] x [y0, y1] (lixel centres,
+ *  inclusive): width = x1 - x0 + 1 lixels. */
+typedef struct swarp_lixel_rect {
+    int32_t x0, y0, x1, y1;
+    uint32_t width, height;
+} swarp_lixel_rect;
+
+/** Options of swarp_lixel_restrict (zero means default). */
+typedef struct swarp_lixel_restrict_options {
+    double scale_x;   /**< lixels per pixel along light-image x (0 = 1; < 1: fewer lixels) */
+    double scale_y;   /**< lixels per pixel along y (0 = 1) */
+    double twist;     /**< 2D rotation (radians, counter-clockwise) applied before
+                           the bounding box; see swarp_lixel_twist_for_line */
+    uint32_t max_size;/**< largest width or height accepted (0 = 16384) */
+    /** Non-zero: keep only the rays that hit P inside the viewer's frustum
+     *  ([LIXEL] §3, C_floor "within the viewer's frustum"): C's image is
+     *  clipped to the viewer image [-1/2, view_width - 1/2] x
+     *  [-1/2, view_height - 1/2] first (on P the light image IS the viewer
+     *  image); rays of C with q <= 0 are then allowed (clipped away).
+     *  Needs M_l straight from swarp_lixel_matrix with g = view_width,
+     *  h = view_height.  0 = no clipping. */
+    uint32_t view_width;
+    uint32_t view_height;
+    uint32_t _reserved0;
+    uint32_t _reserved[4];
+} swarp_lixel_restrict_options;
+
+#define SWARP_LIXEL_DEFAULT_MAX_SIZE 16384u
+
+/** @brief Light-image restriction (Fig. 6): the smallest axis-aligned
+ *  rectangle with integer corners enclosing the light image of the convex set
+ *  of rays C, and M_l := A_l M_l where A_l = translate(-x0, -y0) ·
+ *  scale(scale_x, scale_y) · rotate(twist) (rows x, y only).  [LIXEL] §2
+ *  "Less of the plane".
+ *  @param[in] M_l from swarp_lixel_matrix
+ *  @param[in] C vertices of the convex polygon of rays: world points (w = 1,
+ *         any light) or directions from a point light (w = 0); any w != 0 is
+ *         divided out
+ *  @param n number of vertices (>= 1)
+ *  @param[in] opt may be NULL
+ *  @param[out] out_rect the rectangle in the twisted/scaled image BEFORE
+ *         the translation (so x0, y0 tell where it was)
+ *  @param[out] out_A_l the 2D affine map as a 4x4 (may be NULL)
+ *  @param[out] out_M_l A_l · M_l: lixel (0, 0) is the lower-left of the rectangle
+ *  @return SWARP_OK; SWARP_ERR_LIXEL_RAY_OUTSIDE (a vertex has q <= 0,
+ *  without view clipping), SWARP_ERR_LIXEL_EMPTY (nothing of C in view),
+ *  SWARP_ERR_LIXEL_RECT_TOO_LARGE, SWARP_ERR_OUT_OF_RANGE (scale < 0),
+ *  SWARP_ERR_INVALID_ARGUMENT (n = 0), SWARP_ERR_RESERVED_NONZERO,
+ *  SWARP_ERR_NON_FINITE, SWARP_ERR_NULL_POINTER. */
+SWARP_API swarp_status swarp_lixel_restrict(const swarp_mat4* M_l, const swarp_vec4* C, size_t n,
+                                            const swarp_lixel_restrict_options* opt,
+                                            swarp_lixel_rect* out_rect, swarp_mat4* out_A_l,
+                                            swarp_mat4* out_M_l);
+
+/** @brief Twist angle that makes the light image of the world line through a
+ *  and b horizontal, with the light image of `below` (a point on the side
+ *  that should stay inside, e.g. on the floor in front of the wall) at
+ *  smaller y.  [LIXEL] §3 (twist in A_floor).
+ *  @return SWARP_OK; SWARP_ERR_LIXEL_TWIST_LINE (the line images to a point
+ *  or a point has q <= 0), SWARP_ERR_NON_FINITE, SWARP_ERR_NULL_POINTER. */
+SWARP_API swarp_status swarp_lixel_twist_for_line(const swarp_mat4* M_l, const swarp_vec3* a,
+                                                  const swarp_vec3* b, const swarp_vec3* below,
+                                                  double* out_twist);
+
+/** @brief Factor M_l (after restriction, lixels 0..width-1 x 0..height-1)
+ *  into M_l' = GLV · GLP for standard clipping.  [LIXEL] §2 ('M_l = GLV GLP')
+ *  GLP is world -> clip (use it as the light's view-projection; w > 0 on
+ *  the wanted side); GLV is the viewport NDC -> lixels
+ *  (x = (x_ndc + 1) width/2 - 1/2) with depth passed through.  The depth
+ *  row is remapped affinely (allowed by the paper's footnote): the raised
+ *  point p-hat lands on the near plane (NDC -1, or 0) and P at the fraction
+ *  plane_depth of the depth range (default 0.5), so geometry slightly
+ *  behind P is not clipped.  (x, y, q) of M_l' equal those of M_l.
+ *  @param plane_depth in [0, 1): 0 = default 0.5
+ *  @return SWARP_OK; SWARP_ERR_RESOLUTION, SWARP_ERR_OUT_OF_RANGE,
+ *  SWARP_ERR_UNKNOWN_ENUM, SWARP_ERR_NON_FINITE, SWARP_ERR_NULL_POINTER. */
+SWARP_API swarp_status swarp_lixel_factor(const swarp_mat4* M_l, uint32_t width, uint32_t height,
+                                          swarp_depth_range depth_range, double plane_depth,
+                                          swarp_mat4* out_GLV, swarp_mat4* out_GLP);
+
+/** Worst case of swarp_lixel_split: each output has at most n + 1 vertices. */
+#define SWARP_LIXEL_SPLIT_MAX(n) ((n) + 1)
+
+/** @brief Split the convex polygon of rays C_tot by the floor/wall line
+ *  ([LIXEL] §3): C_floor holds the rays that hit the floor in front of the
+ *  wall (on the side its normal points to), C_wall the others (they hit the
+ *  wall above the line when the light is in the room).  The cut is the plane
+ *  through the light and the floor/wall line.  Vertices as in
+ *  swarp_lixel_restrict (all points or all directions).
+ *  @param[out] out_floor, out_wall capacity each; counts written (either
+ *         may be 0 when C_tot lies on one side)
+ *  @return SWARP_OK; SWARP_ERR_CAPACITY (needed counts written),
+ *  SWARP_ERR_DEGENERATE (floor parallel to wall, or light on the line),
+ *  SWARP_ERR_ZERO_VECTOR, SWARP_ERR_INVALID_ARGUMENT, SWARP_ERR_NON_FINITE,
+ *  SWARP_ERR_NULL_POINTER. */
+SWARP_API swarp_status swarp_lixel_split(const swarp_light* light, const swarp_plane* floor_plane,
+                                         const swarp_plane* wall_plane, const swarp_vec4* C_tot,
+                                         size_t n, swarp_vec4* out_floor, size_t floor_capacity,
+                                         size_t* out_floor_count, swarp_vec4* out_wall,
+                                         size_t wall_capacity, size_t* out_wall_count);
+
+/** @brief Which shadow map to use for a world point ([LIXEL] §3, the CPU
+ *  reference of the shader in docs/lixel.md): the first i whose clip matrix
+ *  GLP[i] puts p inside (w > 0, |x| <= w, |y| <= w), else count (the
+ *  conventional fallback map).
+ *  @return SWARP_OK; SWARP_ERR_NON_FINITE, SWARP_ERR_NULL_POINTER. */
+SWARP_API swarp_status swarp_lixel_select(const swarp_mat4* GLP, size_t count, const swarp_vec3* p,
+                                          uint32_t* out_index);
 /* <<< api: lixel */
 
 /* >>> api: filter (src/filter.c) */
+/*
+ * Filtered shadows: the maths an engine mirrors in its shaders (GLSL twins in
+ * docs/filtering.md).  Depths are light-space depths; "t" is the depth of the
+ * receiver being shaded, and visibility is the lit fraction P(X >= t) of the
+ * filter region (a texel at exactly the receiver depth counts as lit).
+ * Files: src/filter_vsm.c (VSM), filter_lvsm.c (layered VSM), filter_lloyd.c (its Lloyd
+ * layer placement), filter_evsm.c, filter_msm.c, filter_pcf.c (PCF and PCSS).
+ */
+
+/* ---- variance shadow maps                    (src/filter_vsm.c) -------- */
+
+/** @brief Moments of one depth sample, [VSM] (3.1): out = (x, x^2).
+ *  Filtering (averaging) these over a region gives M_1 = E[x], M_2 = E[x^2].
+ *  Also the moments of a warped depth: pass the warped value.
+ *  @param[in] x  depth (any finite value; VSMs usually store [0, 1])
+ *  @param[out] out_moments  (M_1, M_2)
+ *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE. */
+SWARP_API swarp_status swarp_vsm_moments(double x, double out_moments[2]);
+
+/** @brief Chebyshev's one-tailed bound p_max(t), [VSM] (3.2)-(3.3):
+ *  mu = M_1, sigma2 = max(M_2 - M_1^2, min_variance),
+ *  p_max = sigma2 / (sigma2 + (t - mu)^2) for t > mu, and 1 for t <= mu.
+ *  @param[in] moments  filtered (M_1, M_2), same depth units as t
+ *  @param[in] t  receiver depth
+ *  @param[in] min_variance  >= 0, depth units squared: the clamp that hides
+ *             rounding of M_2 - M_1^2 (it also makes flat lit regions stay lit)
+ *  @param[out] out_p_max  in [0, 1]: an upper bound of the lit fraction
+ *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
+ *          SWARP_ERR_OUT_OF_RANGE (min_variance < 0). */
+SWARP_API swarp_status swarp_vsm_chebyshev(const double moments[2], double t, double min_variance,
+                                           double* out_p_max);
+
+/** @brief Light-bleeding reduction by clamping ([VSM] §3.4, ref. [10] there),
+ *  a separate step after the bound: out = linstep(amount, 1, p) =
+ *  clamp((p - amount) / (1 - amount), 0, 1).  It darkens every penumbra: tails
+ *  of the bound below `amount` vanish, the rest is stretched to [0, 1].
+ *  @param[in] p  visibility in [0, 1]; @param[in] amount in [0, 1)
+ *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
+ *          SWARP_ERR_OUT_OF_RANGE. */
+SWARP_API swarp_status swarp_vsm_reduce_bleeding(double p, double amount, double* out_p);
+
+/* ---- layered VSM                             (src/filter_lvsm.c) ------- */
+
+/** Worst case layer count of the LVSM functions (splits hold N + 1 values). */
+#define SWARP_LVSM_MAX_LAYERS 64
+
+/** @brief Depth interval [p_i, q_i] of layer i with overlaps, [VSM] §4.1.1:
+ *  L_0 = [s_0, s_1 + delta], L_i = [s_i - delta, s_{i+1} + delta],
+ *  L_{N-1} = [s_{N-1} - delta, s_N] (layers counted from 0 here).
+ *  @param[in] splits  N + 1 strictly increasing split depths s_0..s_N
+ *  @param[in] n_layers N in 1..SWARP_LVSM_MAX_LAYERS; @param[in] i in 0..N-1
+ *  @param[in] delta  overlap, 0 <= delta < thinnest layer
+ *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
+ *          SWARP_ERR_FILTER_LAYER_COUNT, SWARP_ERR_OUT_OF_RANGE (i >= N),
+ *          SWARP_ERR_NOT_INCREASING, SWARP_ERR_FILTER_OVERLAP. */
+SWARP_API swarp_status swarp_lvsm_layer_interval(const double* splits, uint32_t n_layers,
+                                                 uint32_t i, double delta, double* out_p,
+                                                 double* out_q);
+
+/** @brief Layer warp phi_i(t), [VSM] (4.2): 0 for t <= p, (t - p)/(q - p)
+ *  inside, 1 for t >= q.
+ *  @param[in] p, q  layer interval, p < q
+ *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
+ *          SWARP_ERR_OUT_OF_RANGE (q <= p). */
+SWARP_API swarp_status swarp_lvsm_warp(double t, double p, double q, double* out_phi);
+
+/** @brief Moments of a warped depth for layer [p, q]: (phi, phi^2), [VSM]
+ *  (4.2) then (3.1).  Same statuses as swarp_lvsm_warp. */
+SWARP_API swarp_status swarp_lvsm_moments(double t, double p, double q, double out_moments[2]);
+
+/** @brief The layer holding depth t for the uniform scheme s_i = s_0 +
+ *  (s_N - s_0) i / N, in closed form ([VSM] §4.1.3).  A depth on a split
+ *  belongs to the layer that starts there; t outside [s_0, s_N] gives the
+ *  first/last layer and SWARP_INFO_FILTER_DEPTH_CLAMPED.
+ *  @return SWARP_OK, SWARP_INFO_FILTER_DEPTH_CLAMPED, SWARP_ERR_NULL_POINTER,
+ *          SWARP_ERR_NON_FINITE, SWARP_ERR_FILTER_LAYER_COUNT,
+ *          SWARP_ERR_NOT_INCREASING (s_N <= s_0). */
+SWARP_API swarp_status swarp_lvsm_layer_uniform(double t, double s_0, double s_N,
+                                                uint32_t n_layers, uint32_t* out_layer);
+
+/** @brief The layer holding depth t for given split points (binary search of
+ *  the monotonic split sequence, [VSM] §4.1.3).  Conventions and statuses as
+ *  swarp_lvsm_layer_uniform; splits must be strictly increasing. */
+SWARP_API swarp_status swarp_lvsm_layer_find(double t, const double* splits, uint32_t n_layers,
+                                             uint32_t* out_layer);
+
+/** @brief Transition band between adjacent layers ([VSM] §4.1.3): for t
+ *  within `band` of an inner split s_j the visibility is
+ *  (1 - w) V_{j-1} + w V_j with w = (t - (s_j - band)) / (2 band) rising
+ *  linearly across the band; elsewhere lo = hi = the layer of t and w = 0.
+ *  band = 0 switches blending off.
+ *  @param[in] band  half width, 0 <= band < half the thinnest layer
+ *  @param[out] out_layer_lo, out_layer_hi, out_w_hi
+ *  @return as swarp_lvsm_layer_find, plus SWARP_ERR_FILTER_BAND. */
+SWARP_API swarp_status swarp_lvsm_transition(double t, const double* splits, uint32_t n_layers,
+                                             double band, uint32_t* out_layer_lo,
+                                             uint32_t* out_layer_hi, double* out_w_hi);
+
+/** @brief Full LVSM shading of a receiver at depth t ([VSM] §4.1): pick the
+ *  layer (and its neighbour in a transition band), warp t with the layer's
+ *  overlapped interval (4.2), apply Chebyshev (3.3) to the layer's filtered
+ *  warped moments and blend.  The minimum variance is given in depth units
+ *  and scaled by 1/(q - p)^2 into each layer's warped space.
+ *  @param[in] layer_moments  2 N values: filtered (M_1, M_2) of layer i at
+ *             [2i], [2i+1], made with swarp_lvsm_moments and the intervals of
+ *             swarp_lvsm_layer_interval(splits, N, i, delta)
+ *  @param[in] band  transition half width, 0 <= band <= delta
+ *  @return SWARP_OK, SWARP_INFO_FILTER_DEPTH_CLAMPED, and the errors of the
+ *          functions above (SWARP_ERR_FILTER_BAND for band > delta). */
+SWARP_API swarp_status swarp_lvsm_visibility(const double* layer_moments, const double* splits,
+                                             uint32_t n_layers, double delta, double band,
+                                             double t, double min_variance,
+                                             double* out_visibility);
+
+/** @brief Second-occluder depth estimate mu + sigma ([VSM] §4.1.2), exact
+ *  (= max(a, b)) for two depths at coverage 1/2.  sigma2 < 0 (rounding of a
+ *  filtered VSM) counts as 0.
+ *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE. */
+SWARP_API swarp_status swarp_lvsm_second_occluder(double mu, double sigma2, double* out_depth);
+
+/** Options of swarp_lvsm_lloyd; zero means default. */
+typedef struct swarp_lloyd_options {
+    uint32_t max_iterations; /**< bound on relaxation steps; 0 = 100 */
+    uint32_t _pad0;          /**< must be 0 */
+    double weight_clamp_lo;  /**< weights are clamp(sigma2, lo, hi); 0 = no low clamp */
+    double weight_clamp_hi;  /**< 0 = no high clamp; else >= weight_clamp_lo */
+    double tolerance;        /**< converged when no split moves more than this
+                                  (depth units); 0 = 1e-9 (s_N - s_0) */
+    uint32_t _reserved[4];
+} swarp_lloyd_options;
+
+/** What swarp_lvsm_lloyd did. */
+typedef struct swarp_lloyd_report {
+    uint32_t iterations; /**< relaxation steps taken (teleports included) */
+    uint32_t teleports;  /**< empty clusters repaired by teleportation */
+    uint32_t converged;  /**< 1 if the last step moved no split more than tolerance */
+    uint32_t _pad0;
+    double max_shift;    /**< largest split movement in the last step */
+} swarp_lloyd_report;
+
+/** @brief Layer placement by weighted Lloyd relaxation, [VSM] §4.1.2: 1-D
+ *  weighted k-means whose K = N - 1 "means" are the inner split points
+ *  s_1..s_{N-1}.  Sample j has position mu_j + sigma_j (second-occluder
+ *  estimate, clamped to [s_0, s_N]) and weight clamp(sigma2_j, lo, hi); each
+ *  sample joins its nearest split point (ties to the lower one), each split
+ *  moves to the weighted mean of its samples.  Teleportation: a cluster with
+ *  zero total weight is removed (its two adjacent layers merge) and the
+ *  heaviest cluster is split in two at its weighted mean -/+ its weighted
+ *  standard deviation.  s_0 and s_N stay fixed; splits are kept strictly
+ *  increasing (minimum gap 1e-9 (s_N - s_0)).  Deterministic, no allocation.
+ *  @param[in] mu, sigma2  count samples of an unwarped VSM (e.g. 2x2 filtered)
+ *  @param[in] opt  may be NULL (all defaults)
+ *  @param[in] splits_in  N + 1 strictly increasing initial splits
+ *  @param[out] splits_out N + 1 relaxed splits (may alias splits_in)
+ *  @param[out] out_report may be NULL
+ *  @return SWARP_OK (converged), SWARP_INFO_FILTER_NOT_CONVERGED,
+ *          SWARP_INFO_FILTER_NO_WEIGHT, SWARP_ERR_NULL_POINTER,
+ *          SWARP_ERR_NON_FINITE, SWARP_ERR_FILTER_NO_SAMPLES,
+ *          SWARP_ERR_FILTER_LAYER_COUNT, SWARP_ERR_NOT_INCREASING,
+ *          SWARP_ERR_OUT_OF_RANGE (bad clamps or tolerance),
+ *          SWARP_ERR_RESERVED_NONZERO. */
+SWARP_API swarp_status swarp_lvsm_lloyd(const double* mu, const double* sigma2, size_t count,
+                                        const swarp_lloyd_options* opt,
+                                        const double* splits_in, uint32_t n_layers,
+                                        double* splits_out, swarp_lloyd_report* out_report);
+
+/* ---- exponential VSM                         (src/filter_evsm.c) ------- */
+
+/** Storage format of the moments in the texture. */
+typedef enum swarp_texel_format {
+    SWARP_TEXEL_DEFAULT = 0, /**< = SWARP_TEXEL_FP32 */
+    SWARP_TEXEL_FP16 = 1,    /**< IEEE binary16: 10 mantissa bits, max 65504 */
+    SWARP_TEXEL_FP32 = 2,    /**< IEEE binary32 */
+    SWARP_TEXEL_FORMAT_FORCE_I32 = 0x7FFFFFFF
+} swarp_texel_format;
+
+/** @brief Largest safe EVSM exponent c for a texel format ([VSM] §4.2): for
+ *  depths x in [0, 1] the largest moment is e^{2c}, so c = (ln F_max - m)/2
+ *  where F_max = (2 - 2^-p) 2^e_max is the format's largest finite value
+ *  (computed from p mantissa bits and e_max) and m = 4 u (u = 2^-(p+1), the
+ *  unit roundoff) leaves room for a few ulps of GPU exp() error.  Averaging
+ *  (filtering) never exceeds the largest texel, so filtered moments stay
+ *  finite too.  fp32 gives c ~ 44.36, fp16 c ~ 5.545.
+ *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_UNKNOWN_ENUM. */
+SWARP_API swarp_status swarp_evsm_max_exponent(swarp_texel_format format, double* out_c);
+
+/** @brief EVSM moments of depth x ([VSM] §4.2): positive warp e^{c_pos x}
+ *  and negative warp -e^{-c_neg x}, each with its square:
+ *  out = (e^{c_pos x}, e^{2 c_pos x}, -e^{-c_neg x}, e^{-2 c_neg x}).
+ *  @param[in] c_pos, c_neg  > 0 with e^{2c|x|} finite in double
+ *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
+ *          SWARP_ERR_FILTER_EXPONENT. */
+SWARP_API swarp_status swarp_evsm_moments(double x, double c_pos, double c_neg,
+                                          double out_moments[4]);
+
+/** @brief EVSM visibility ([VSM] §4.2): Chebyshev (3.3) on the positive and
+ *  on the negative warp, then the minimum of both upper bounds.  The minimum
+ *  variance is given in depth units and mapped into each warp by its
+ *  derivative at t: min_variance (c e^{+-c t})^2.
+ *  @param[in] moments  filtered moments laid out as swarp_evsm_moments
+ *  @return as swarp_evsm_moments, plus SWARP_ERR_OUT_OF_RANGE (min_variance < 0). */
+SWARP_API swarp_status swarp_evsm_visibility(const double moments[4], double t, double c_pos,
+                                             double c_neg, double min_variance,
+                                             double* out_visibility);
+
+/* ---- moment shadow maps                      (src/filter_msm.c) -------- */
+
+/** Moment bias Peters & Klein 2015 ("Moment Shadow Mapping", I3D) use for
+ *  moments stored with 16 bits each; double or fp32 storage tolerates less. */
+#define SWARP_MSM_ALPHA_DEFAULT 3.0e-5
+
+/** @brief The four power moments of a depth z in [0, 1]: (z, z^2, z^3, z^4)
+ *  (Peters & Klein 2015, §3; the optimised quantisation transform is a GPU
+ *  storage detail and not part of this).
+ *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
+ *          SWARP_ERR_OUT_OF_RANGE (z outside [0, 1]). */
+SWARP_API swarp_status swarp_msm_moments(double z, double out_b[4]);
+
+/** @brief Moment bias (Peters & Klein 2015, Algorithm 3 step 1):
+ *  b' = (1 - alpha) b + alpha (1/2, 1/2, 1/2, 1/2), a blend toward the
+ *  moments of half the mass at 0 and half at 1, which keeps the Hankel matrix
+ *  positive definite after quantisation.
+ *  @param[in] alpha in [0, 1]
+ *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
+ *          SWARP_ERR_OUT_OF_RANGE. */
+SWARP_API swarp_status swarp_msm_bias(const double b[4], double alpha, double out_b[4]);
+
+/** @brief Hamburger 4-moment shadow bound (Peters & Klein 2015, Algorithm 3):
+ *  solve B c = (1, z_f, z_f^2) with the Hankel matrix B of (1, b_1..b_4)
+ *  (Cholesky), take the roots z_2 <= z_3 of c_1 + c_2 z + c_3 z^2, and the
+ *  sharp lower bound G of the occluded fraction from the three-atom
+ *  distribution at (z_f, z_2, z_3).  Visibility = 1 - G, clamped to [0, 1].
+ *  When B is singular to rounding (one or two distinct depths, no bias) the
+ *  distribution is determined by its moments and the exact discrete answer
+ *  is returned with SWARP_INFO_FILTER_MSM_DEGENERATE.
+ *  @param[in] b  filtered (and usually biased) moments
+ *  @param[in] z_f  receiver depth
+ *  @return SWARP_OK, SWARP_INFO_FILTER_MSM_DEGENERATE, SWARP_ERR_NULL_POINTER,
+ *          SWARP_ERR_NON_FINITE, SWARP_ERR_OUT_OF_RANGE (b_2 < 0 or b_4 < 0:
+ *          not moments of any distribution). */
+SWARP_API swarp_status swarp_msm_visibility(const double b[4], double z_f,
+                                            double* out_visibility);
+
+/* ---- PCF and PCSS                            (src/filter_pcf.c) -------- */
+
+/** Worst case point count of swarp_pcf_poisson_disk. */
+#define SWARP_PCF_MAX_SAMPLES 256
+
+/** @brief Poisson-disk sample set in the unit disk for PCF ([RHS] §3.6,
+ *  after Fernando's PCSS), deterministic from a seed: Mitchell's best
+ *  candidate (each new point is the candidate farthest from the points so
+ *  far) with a splitmix64 generator.  Writes count points as x, y pairs.
+ *  @param[in] seed  any value; the same seed gives the same set everywhere
+ *  @param[in] count 1..SWARP_PCF_MAX_SAMPLES points
+ *  @param[in] candidates  candidates per point, 0 = 32
+ *  @param[out] out_xy  2 * count doubles; capacity counts POINTS
+ *  @param[out] out_count  count (or the needed count with SWARP_ERR_CAPACITY)
+ *  @param[out] out_min_distance  smallest pairwise distance (0 for count = 1)
+ *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_OUT_OF_RANGE,
+ *          SWARP_ERR_CAPACITY. */
+SWARP_API swarp_status swarp_pcf_poisson_disk(uint64_t seed, uint32_t count, uint32_t candidates,
+                                              double* out_xy, size_t capacity,
+                                              size_t* out_count, double* out_min_distance);
+
+/** @brief PCSS blocker-search width ([RHS] §3.6, Fernando 2005): by similar
+ *  triangles between the light of width w_light (measured on the light's
+ *  near plane, e.g. in shadow-map UV) and the receiver at depth d_r,
+ *  w_search = w_light (d_r - n_light) / d_r.
+ *  @param[in] n_light  light near-plane distance, 0 < n_light <= d_r
+ *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
+ *          SWARP_ERR_OUT_OF_RANGE. */
+SWARP_API swarp_status swarp_pcss_search_width(double w_light, double n_light, double d_r,
+                                               double* out_w_search);
+
+/** @brief PCSS penumbra width w = (d_r - d_b) w_light / d_b ([RHS] §3.6,
+ *  Fernando 2005), d_b the average blocker depth, d_r the receiver depth
+ *  (both distances from the light), in the units of w_light.
+ *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
+ *          SWARP_ERR_OUT_OF_RANGE (w_light < 0),
+ *          SWARP_ERR_FILTER_BLOCKER (d_b <= 0 or d_b > d_r). */
+SWARP_API swarp_status swarp_pcss_penumbra(double d_r, double d_b, double w_light,
+                                           double* out_w_penumbra);
+
+/** @brief PCSS filter width on the shadow map's near plane: the penumbra at
+ *  the receiver projected back, w_filter = w_penumbra n_light / d_r.
+ *  @return as swarp_pcss_search_width. */
+SWARP_API swarp_status swarp_pcss_filter_width(double w_penumbra, double n_light, double d_r,
+                                               double* out_w_filter);
 /* <<< api: filter */
 
 /* >>> api: splits (src/cascade.c stabilize.c bias.c atlas.c) */
+/*
+ * Splits, atlas, stabilisation and bias.  Guide: docs/splits.md.
+ */
+
+/* ---- texture atlas and filter kernel   (src/atlas.c)   [RHS] §3.3.5, (3.9) */
+
+/** Most splits an atlas layout holds ([RHS] Fig. 3.16c: a 4 x 4 grid). */
+#define SWARP_ATLAS_MAX_SPLITS 16
+
+/** Whole-atlas facts of a layout.  grid x grid tiles of tile_res x tile_res
+ *  texels; atlas_res = grid * tile_res; l_sc = 1/grid ([RHS] (3.9)). */
+typedef struct swarp_atlas_info {
+    uint32_t split_count; /**< m */
+    uint32_t grid;        /**< 1 (m = 1), 2 (m <= 4), 3 (m <= 9), 4 (m <= 16) */
+    double tile_res;      /**< texels per tile side */
+    double atlas_res;     /**< texels per atlas side */
+    double l_sc;          /**< [RHS] (3.9): 1, 1/2, 1/3, 1/4 */
+    uint32_t _reserved[4];
+} swarp_atlas_info;
+
+/** One split's place in the atlas.  Tiles are numbered row by row starting
+ *  at texture coordinate (0, 0) (x = i mod grid, y = i / grid), the order
+ *  of [RHS] Fig. 3.16.  viewport_* are glViewport()-style texel numbers.
+ *  clip_to_atlas maps the split's clip coordinates (x, y, z, w) to
+ *  homogeneous atlas coordinates (u w, v w, d w, w): after the divide u, v
+ *  are atlas texture coordinates in [u0, u0 + l_sc] x [v0, v0 + l_sc] and d
+ *  the window depth in [0, 1] (whatever the clip depth range). */
+typedef struct swarp_atlas_tile {
+    double viewport_x, viewport_y;          /**< lower-left texel */
+    double viewport_width, viewport_height; /**< texels */
+    swarp_mat4 clip_to_atlas;
+} swarp_atlas_tile;
+
+/** @brief Atlas layout for m splits ([RHS] §3.3.5, Fig. 3.16).
+ *  m = 1 uses the whole texture (grid 1, l_sc = 1); 2..4 a 2 x 2 grid,
+ *  5..9 a 3 x 3 grid, 10..16 a 4 x 4 grid.
+ *  @param m          number of splits, 1..SWARP_ATLAS_MAX_SPLITS
+ *  @param tile_res   texels per tile side (> 0, at most 2^24)
+ *  @param depth      clip depth convention of the split matrices
+ *  @param[out] out_info  layout facts (may be NULL)
+ *  @param[out] out_tiles m tiles; capacity >= m
+ *  @param[out] out_count m (also written with SWARP_ERR_CAPACITY)
+ *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_ATLAS_SPLITS,
+ *          SWARP_ERR_RESOLUTION, SWARP_ERR_UNKNOWN_ENUM, SWARP_ERR_CAPACITY. */
+SWARP_API swarp_status swarp_atlas_layout(uint32_t m, uint32_t tile_res, swarp_depth_range depth,
+                                          swarp_atlas_info* out_info, swarp_atlas_tile* out_tiles,
+                                          size_t capacity, size_t* out_count);
+
+/** @brief l_sc of [RHS] (3.9) for m splits: 1 (m = 1), 1/2, 1/3, 1/4. */
+SWARP_API swarp_status swarp_atlas_lsc(uint32_t m, double* out_l_sc);
+
+/** @brief PCF kernel scale of one split, [RHS] (3.9):
+ *  s_i = r_l l_sc (2/(max_x - min_x), 2/(max_y - min_y)).
+ *  min/max are the split's focus box in light space (the box of (3.1)), in
+ *  world units for a uniform map.  s_i is in the split's clip units scaled by
+ *  l_sc; s_i/2 is the extent of r_l in atlas texture coordinates, so a kernel
+ *  of s_i has the same world size r_l in every split.
+ *  @param r_l  kernel size in world units (>= 0)
+ *  @param m    split count (selects l_sc)
+ *  @param min_x, max_x, min_y, max_y  max > min
+ *  @param[out] out_s  s_i (x, y)
+ *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
+ *          SWARP_ERR_OUT_OF_RANGE (r_l < 0, max <= min), SWARP_ERR_ATLAS_SPLITS. */
+SWARP_API swarp_status swarp_atlas_kernel_scale(double r_l, uint32_t m, double min_x,
+                                                double max_x, double min_y, double max_y,
+                                                double out_s[2]);
+
+/* ---- flicker reduction                 (src/stabilize.c)   [RHS] §3.5 (ZZB09) */
+
+typedef enum swarp_stabilize_mode {
+    SWARP_STABILIZE_DEFAULT = 0, /**< = SWARP_STABILIZE_NONE */
+    SWARP_STABILIZE_NONE = 1,    /**< light-aligned focus on the body box, no snapping */
+    SWARP_STABILIZE_SPHERE = 2,  /**< exact solution: minimal sphere of the split frustum */
+    SWARP_STABILIZE_LEVELS = 3,  /**< approximate solution: quantised scale */
+    SWARP_STABILIZE_MODE_FORCE_I32 = 0x7FFFFFFF
+} swarp_stabilize_mode;
+
+/** Options of the stabilised light matrix.  Zero means default. */
+typedef struct swarp_stabilize_options {
+    swarp_stabilize_mode mode;
+    uint32_t levels;       /**< LEVELS: number of scale levels; 0 = 64 [RHS] §3.5 */
+    swarp_vec3 origin;     /**< world origin of snapping AND of the output matrix */
+    double level_max_size; /**< LEVELS: world size of level `levels`; 0 = diameter of
+                                the split frustum's minimal sphere */
+    swarp_depth_range depth;
+    uint32_t _reserved0;
+    uint32_t _reserved[4];
+} swarp_stabilize_options;
+
+/** What the stabiliser did. */
+typedef struct swarp_stabilize_report {
+    swarp_vec3 sphere_center;     /**< exact minimal enclosing sphere of the split frustum */
+    double sphere_radius;
+    double centroid_radius;       /**< sphere about the 8 corners' centroid */
+    double area_saved;            /**< 1 - (r_min / r_centroid)^2: map area the exact
+                                       sphere saves against the centroid sphere */
+    double texel_size_x;          /**< world size of one texel along light-space x */
+    double texel_size_y;
+    double offset_x, offset_y;    /**< light-space centre of the map relative to origin,
+                                       whole multiples of the texel size */
+    uint32_t level_x, level_y;    /**< LEVELS: quantised level (1..); else 0 */
+    uint32_t _reserved[4];
+} swarp_stabilize_report;
+
+/** @brief Exact minimal enclosing sphere of the split frustum [n_i, f_i] of a
+ *  camera (closed form: by the frustum's two mirror symmetries the centre
+ *  lies on the view axis at depth min(f_i, (n_i + f_i)(1 + k^2)/2), k^2 =
+ *  tan^2(fovy/2)(1 + aspect^2)), and the centroid sphere engines use.
+ *  [RHS] §3.5 exact solution (ZZB09).
+ *  @param cam      camera (near/far ignored; the split range is n_i, f_i)
+ *  @param n_i, f_i split range, 0 < n_i < f_i
+ *  @param[out] out_center world centre; @param[out] out_radius radius;
+ *  @param[out] out_centroid_radius may be NULL
+ *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
+ *          SWARP_ERR_NEAR_FAR, SWARP_ERR_FOV, SWARP_ERR_ZERO_VECTOR,
+ *          SWARP_ERR_OUT_OF_RANGE (aspect <= 0), SWARP_ERR_DEGENERATE (up
+ *          parallel to dir), SWARP_ERR_RESERVED_NONZERO. */
+SWARP_API swarp_status swarp_stabilize_sphere(const swarp_camera* cam, double n_i, double f_i,
+                                              swarp_vec3* out_center, double* out_radius,
+                                              double* out_centroid_radius);
+
+/** @brief Light-space basis of a directional light used by the stabiliser:
+ *  rows of out_view are u (right), v (up), w = -light direction, each unit;
+ *  out_view maps origin-relative world coordinates to light view space (a
+ *  right-handed view looking along the light).  It depends on the light
+ *  direction only, never on the camera, so texels keep their orientation.
+ *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
+ *          SWARP_ERR_ZERO_VECTOR. */
+SWARP_API swarp_status swarp_stabilize_light_view(const swarp_vec3* light_dir, swarp_mat4* out_view);
+
+/** @brief Stabilised (flicker-free) uniform light matrix of one split for a
+ *  directional light.  [RHS] §3.5 (ZZB09).
+ *  SPHERE: the map covers the split frustum's exact minimal sphere (constant
+ *  world size 2 r res/(res - 1)); LEVELS: the light-space box of body_points
+ *  with each axis' size rounded up to a multiple of level_max_size/levels;
+ *  NONE: that box unquantised and unsnapped.  SPHERE and LEVELS snap the
+ *  light-space map centre to whole texels relative to opt->origin, in double,
+ *  so a world point's texel coordinates change by whole numbers only and
+ *  jitter does not grow with the distance from the world origin.
+ *  Depth covers the sphere / body and, toward the light, the scene box.
+ *  out_matrix maps ORIGIN-RELATIVE world coordinates (p - origin) to clip
+ *  space (large-world rendering); for origin = 0 it is the ordinary matrix.
+ *  @param cam        camera; @param n_i, f_i split range (0 < n_i < f_i)
+ *  @param light_dir  direction the light travels (non-zero)
+ *  @param body_points world points of the split's body B_i (LEVELS, NONE:
+ *                     count >= 1 required; SPHERE: may be NULL, 0)
+ *  @param scene      scene box (may be NULL): extends depth toward the light
+ *  @param res        map resolution in texels (>= 2)
+ *  @param opt        options (may be NULL = defaults)
+ *  @param[out] out_matrix  the light matrix; @param[out] out_report may be NULL
+ *  @return SWARP_OK, SWARP_INFO_LEVEL_ABOVE_RANGE, SWARP_ERR_NULL_POINTER,
+ *          SWARP_ERR_NON_FINITE, SWARP_ERR_NEAR_FAR, SWARP_ERR_FOV,
+ *          SWARP_ERR_ZERO_VECTOR, SWARP_ERR_RESOLUTION, SWARP_ERR_UNKNOWN_ENUM,
+ *          SWARP_ERR_RESERVED_NONZERO, SWARP_ERR_OUT_OF_RANGE,
+ *          SWARP_ERR_DEGENERATE. */
+SWARP_API swarp_status swarp_stabilize_directional(const swarp_camera* cam, double n_i, double f_i,
+                                                   const swarp_vec3* light_dir,
+                                                   const swarp_vec3* body_points, size_t body_count,
+                                                   const swarp_aabb* scene, uint32_t res,
+                                                   const swarp_stabilize_options* opt,
+                                                   swarp_mat4* out_matrix,
+                                                   swarp_stabilize_report* out_report);
+
+/* ---- bias                               (src/bias.c)   [KOZ] §14.2.3 */
+
+/** A shadow map as the bias functions see it: the final world -> clip matrix
+ *  (uniform or warped, per split), its resolution and clip depth range.
+ *  "Depth units" below are WINDOW depth d in [0, 1] (the value stored in the
+ *  depth texture): d = (z_ndc + 1)/2 for [-1, 1], d = z_ndc for [0, 1]. */
+typedef struct swarp_bias_map {
+    swarp_mat4 world_to_clip;
+    double res_s;  /**< texels along clip x */
+    double res_t;  /**< texels along clip y */
+    swarp_depth_range depth;
+    uint32_t _reserved0;
+    uint32_t _reserved[4];
+} swarp_bias_map;
+
+/** @brief World-space size of the texel at p ([KOZ] §14.2.3): p is mapped to
+ *  the map, shifted by one texel along s (and t) at constant depth and
+ *  mapped back; the lengths of the world displacements are L_s and L_t.
+ *  Exact for warped maps at any point (finite one-texel step, no centre-of-
+ *  map approximation).  L_texel = max(L_s, L_t).
+ *  @param[out] out_L_texel, out_L_s, out_L_t (each may be NULL, not all)
+ *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
+ *          SWARP_ERR_RESOLUTION, SWARP_ERR_UNKNOWN_ENUM,
+ *          SWARP_ERR_RESERVED_NONZERO, SWARP_ERR_SINGULAR,
+ *          SWARP_ERR_BEHIND_PROJECTION. */
+SWARP_API swarp_status swarp_bias_texel_size(const swarp_bias_map* map, const swarp_vec3* p,
+                                             double* out_L_texel, double* out_L_s, double* out_L_t);
+
+/** @brief Unit vector from p toward the light (the L of [KOZ] §14.2.3):
+ *  -direction for a directional light, (position - p)/|.| for a point light. */
+SWARP_API swarp_status swarp_bias_to_light(const swarp_light* light, const swarp_vec3* p,
+                                           swarp_vec3* out_L);
+
+/** @brief [KOZ] §14.2.3 world-space bias: P_biased = P + L (a + b L_texel),
+ *  L the unit vector toward the light, L_texel from swarp_bias_texel_size.
+ *  The point moves toward the light by exactly a + b L_texel world units.
+ *  @param a  constant bias, world units; @param b  bias per texel size
+ *  (dimensionless); a + b L_texel must be >= 0 (else SWARP_ERR_OUT_OF_RANGE)
+ *  @param[out] out_p  biased point; @param[out] out_amount may be NULL
+ *  @return as swarp_bias_texel_size, plus SWARP_ERR_OUT_OF_RANGE,
+ *          SWARP_ERR_ZERO_VECTOR (point light at p). */
+SWARP_API swarp_status swarp_bias_kozlov(const swarp_bias_map* map, const swarp_light* light,
+                                         const swarp_vec3* p, double a, double b,
+                                         swarp_vec3* out_p, double* out_amount);
+
+/** @brief Normal-offset bias: P' = P + N k L_texel (1 - N.L), N the unit
+ *  normal, L the unit vector to the light, N.L clamped to [0, 1] (a back-
+ *  facing normal gives SWARP_INFO_BACKFACING and the full offset k L_texel).
+ *  @param k  offset in texels (>= 0)
+ *  @param[out] out_p; @param[out] out_amount offset length in world units
+ *  (may be NULL). */
+SWARP_API swarp_status swarp_bias_normal_offset(const swarp_bias_map* map, const swarp_light* light,
+                                                const swarp_vec3* p, const swarp_vec3* normal,
+                                                double k, swarp_vec3* out_p, double* out_amount);
+
+/** @brief Constant plus slope-scaled depth bias, given in WORLD units and
+ *  converted to the map's depth units at p:
+ *  world bias  = c + s L_texel tan(acos(N.L))  (tan clamped to 10; the depth
+ *  step of a receiver tilted by the angle between N and L across one texel),
+ *  depth bias  = window-depth difference between p and p moved by the world
+ *  bias toward the light (exact for warped maps; linear for uniform maps).
+ *  @param c  constant, world units (>= 0); @param s slope scale (>= 0)
+ *  @param[out] out_world_bias, out_depth_bias (either may be NULL, not both)
+ *  @return as swarp_bias_normal_offset. */
+SWARP_API swarp_status swarp_bias_slope_scaled(const swarp_bias_map* map, const swarp_light* light,
+                                               const swarp_vec3* p, const swarp_vec3* normal,
+                                               double c, double s, double* out_world_bias,
+                                               double* out_depth_bias);
+
+/** @brief Window depth per world unit toward the light at p: the factor that
+ *  turns a world-space bias into the depth units of this split's map (the
+ *  derivative of d along L at p).  Uniform maps: constant per split. */
+SWARP_API swarp_status swarp_bias_depth_per_world(const swarp_bias_map* map, const swarp_light* light,
+                                                  const swarp_vec3* p, double* out_depth_per_world);
+
+/** @brief Receiver-plane depth bias: the depth gradient (dd/ds, dd/dt) in
+ *  window depth per TEXEL of the receiver plane at p spanned by the world
+ *  tangents tangent_a, tangent_b (e.g. dFdx/dFdy of the world position, or
+ *  two edges of the triangle).  Exact derivative of the (possibly
+ *  projective) map at p.  A PCF tap offset by (ds, dt) texels compares
+ *  against d + dd/ds ds + dd/dt dt.  GLSL twin in docs/splits.md.
+ *  @return as swarp_bias_texel_size; SWARP_ERR_DEGENERATE when the plane is
+ *          seen edge-on by the light (its texel-space image is a line). */
+SWARP_API swarp_status swarp_bias_receiver_plane(const swarp_bias_map* map, const swarp_vec3* p,
+                                                 const swarp_vec3* tangent_a,
+                                                 const swarp_vec3* tangent_b, double out_grad[2]);
+
+/* ---- cascades: split selection and blending   (src/cascade.c)   [RHS] §3.3.3 */
+
+/** @brief Split selection by eye depth (PSSM, ZSXL06; [RHS] §3.3.3):
+ *  the i with splits[i] <= view_depth < splits[i+1] (a depth on a border
+ *  belongs to the split that starts there; the far end to the last split).
+ *  GLSL twin in docs/splits.md.
+ *  @param splits   m + 1 strictly increasing eye-space distances
+ *  @param m        split count (1..SWARP_SPLIT_MAX_COUNT)
+ *  @param view_depth  positive distance along the view direction
+ *  @param[out] out_index
+ *  @return SWARP_OK; SWARP_INFO_OUTSIDE_SPLITS (depth before the first or
+ *          after the last split: the nearest split is written);
+ *          SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE, SWARP_ERR_SPLIT_COUNT,
+ *          SWARP_ERR_NOT_INCREASING. */
+SWARP_API swarp_status swarp_cascade_select_depth(const double* splits, size_t m, double view_depth,
+                                                  uint32_t* out_index);
+
+/** @brief Split selection by best resolution (ZZB09; [RHS] §3.3.3): among
+ *  the splits whose map covers p (w > 0, |x|, |y| <= w, depth inside the clip
+ *  range) the one with the smallest world texel size L_texel at p (exact,
+ *  swarp_bias_texel_size; ties go to the lower index).  GLSL twin in
+ *  docs/splits.md.
+ *  @param maps  m split maps (world -> clip, resolution, depth range)
+ *  @param fallback_index  written with SWARP_INFO_OUTSIDE_SPLITS when no map
+ *                         covers p (pass the depth selection), < m
+ *  @param[out] out_index; @param[out] out_L_texel (may be NULL; the chosen
+ *  split's L_texel, 0 for the fallback)
+ *  @return SWARP_OK, SWARP_INFO_OUTSIDE_SPLITS, SWARP_ERR_NULL_POINTER,
+ *          SWARP_ERR_NON_FINITE, SWARP_ERR_SPLIT_COUNT, SWARP_ERR_OUT_OF_RANGE
+ *          (fallback_index >= m), and the map errors of swarp_bias_texel_size. */
+SWARP_API swarp_status swarp_cascade_select_best(const swarp_bias_map* maps, size_t m,
+                                                 const swarp_vec3* p, uint32_t fallback_index,
+                                                 uint32_t* out_index, double* out_L_texel);
+
+/** @brief Cascade blend weight in a transition band: the last `band` fraction
+ *  of each split's depth range (except the last split's) fades linearly into
+ *  the next split.  Writes the depth-selected split i and the weight w of
+ *  split i; the shader mixes shadow_i w + shadow_{i+1} (1 - w).  w = 1
+ *  outside the bands, w -> 0 at the border, so the result is continuous.
+ *  GLSL twin in docs/splits.md.
+ *  @param band  fraction of each split's length, in [0, 1) (0: hard switch)
+ *  @return as swarp_cascade_select_depth; SWARP_ERR_OUT_OF_RANGE for band. */
+SWARP_API swarp_status swarp_cascade_blend(const double* splits, size_t m, double view_depth,
+                                           double band, uint32_t* out_index, double* out_weight);
 /* <<< api: splits */
 
 /* >>> api: plan (src/plan.c) */

@@ -1,3 +1,374 @@
-/* [placeholder until the core stage lands] */
+/* Core: the closed-form warp parameters.
+ *
+ *   [RHS] (3.2)  n_opt = d / (sqrt(z_1/z_0) - 1)                (LiSPSM, [WS06])
+ *   [RHS] (4.2)  n_opt with pseudo-near / pseudo-far planes
+ *   [RHS] (3.3)  Lloyd's warp strength eta(gamma, Theta)
+ *   [RHS] (3.5)  W_lz, the view frustum's width along light-space z
+ *   [RHS] (3.4)  n_repar(eta)
+ *   [GMNPR] (2)  psi, offset (the paper's varphi) and the aliasing function F
+ *   [GMNPR] (4)  lambda_1, lambda_2;  (7), (8) lambda_GMNPR;  (9) lambda_LiSPSM
+ *   GLPR         lambda with F linear in z, derived from [GMNPR] (2)
+ *
+ * Policy for huge results (one rule for every warp parameter here): the
+ * exactly degenerate input (z_1 == z_0, eta == -1, theta == 0) gives
+ * +INFINITY, which IS the uniform map; a value that is finite in exact
+ * arithmetic but does not fit a double is clamped to DBL_MAX.  Both are
+ * reported with SWARP_INFO_WARP_UNIFORM (numerically the warp is uniform).
+ */
+#include <float.h>
+
 #include "swarp_internal.h"
-typedef int sw_params_placeholder;
+
+#define SW_HALF_PI (0.5 * SWARP_PI)
+
+/* ---- shared argument checks -------------------------------------------- */
+
+/* Angle theta (light/view angle) in the closed interval [0, pi/2]. */
+static int sw_angle_closed(double a) { return a >= 0.0 && a <= SW_HALF_PI; }
+/* Half field of view in the open interval (0, pi/2). */
+static int sw_half_fov_ok(double a) { return a > 0.0 && a < SW_HALF_PI; }
+
+/* Writes a warp parameter that may have overflowed: see the policy above. */
+static swarp_status sw_put_warp(double v, swarp_status ok_status, double* out) {
+    if (!sw_finite(v) || v > DBL_MAX) {
+        *out = DBL_MAX;
+        return SWARP_INFO_WARP_UNIFORM;
+    }
+    *out = v;
+    return ok_status;
+}
+
+/* ---- [RHS] (3.2) and (4.2) --------------------------------------------- */
+
+/* (3.2) rewritten without the cancellation in sqrt(z_1/z_0) - 1:
+ *   d / (sqrt(z_1/z_0) - 1) = d sqrt(z_0) / (sqrt(z_1) - sqrt(z_0))
+ *                           = d (z_0 + sqrt(z_0 z_1)) / (z_1 - z_0),
+ * and z_1 - z_0 is exact when z_1 ~ z_0 (Sterbenz).  This is also (4.2)
+ * at n_p = f_p = 0, so both share sw_nopt_core. */
+static swarp_status sw_nopt_core(double d, double z_0, double z_1, double n_p, double f_p,
+                                 double* out_n_opt) {
+    double dz = z_1 - z_0;
+    if (dz == 0.0) {
+        *out_n_opt = INFINITY; /* duelling frusta: uniform is optimal [RHS] §3.2.1 */
+        return SWARP_INFO_WARP_UNIFORM;
+    }
+    /* pseudo-near and pseudo-far as eye-space depths */
+    double z_pn = z_0 + n_p * dz;
+    double z_pf = z_1 - f_p * dz;
+    double root = sqrt(z_pn) * sqrt(z_pf); /* no overflow of the product */
+    double n_opt = (d / dz) * (z_0 + root);
+    return sw_put_warp(n_opt, SWARP_OK, out_n_opt);
+}
+
+static swarp_status sw_nopt_check(double d, double z_0, double z_1) {
+    if (!sw_finite(d) || !sw_finite(z_0) || !sw_finite(z_1)) return SWARP_ERR_NON_FINITE;
+    if (!(d > 0.0) || !(z_0 > 0.0) || !(z_1 >= z_0)) return SWARP_ERR_OUT_OF_RANGE;
+    return SWARP_OK;
+}
+
+/* [RHS] (3.2) */
+SWARP_API swarp_status swarp_warp_nopt(double d, double z_0, double z_1, double* out_n_opt) {
+    if (!out_n_opt) return SWARP_ERR_NULL_POINTER;
+    swarp_status s = sw_nopt_check(d, z_0, z_1);
+    if (s != SWARP_OK) return s;
+    return sw_nopt_core(d, z_0, z_1, 0.0, 0.0, out_n_opt);
+}
+
+/* [RHS] (4.2), read as in the papers README:
+ *   n_opt = d/(z_1 - z_0) (z_0 + sqrt((z_0 + n_p (z_1 - z_0)) (z_1 - f_p (z_1 - z_0)))).
+ * For an overhead light (d = z_1 - z_0) this is the n' that equalises Lloyd's
+ * m_z at the pseudo-near depth and at the pseudo-far depth (docs/parameters.md). */
+SWARP_API swarp_status swarp_warp_nopt_pseudo(double d, double z_0, double z_1, double n_p,
+                                              double f_p, double* out_n_opt) {
+    if (!out_n_opt) return SWARP_ERR_NULL_POINTER;
+    swarp_status s = sw_nopt_check(d, z_0, z_1);
+    if (s != SWARP_OK) return s;
+    if (!sw_finite(n_p) || !sw_finite(f_p)) return SWARP_ERR_NON_FINITE;
+    if (!(n_p >= 0.0 && n_p <= 1.0) || !(f_p >= 0.0 && f_p <= 1.0) || !(n_p + f_p < 1.0))
+        return SWARP_ERR_OUT_OF_RANGE;
+    return sw_nopt_core(d, z_0, z_1, n_p, f_p, out_n_opt);
+}
+
+/* ---- [RHS] (3.3), (3.5), (3.4) ------------------------------------------ */
+
+/* Lloyd's breakpoints and levels of [RHS] (3.3). */
+#define SW_ETA_B (-0.2)
+#define SW_ETA_C 0.0
+
+/* [RHS] (3.3) */
+SWARP_API swarp_status swarp_warp_eta(double gamma, double theta, double* out_eta) {
+    if (!out_eta) return SWARP_ERR_NULL_POINTER;
+    if (!sw_finite(gamma) || !sw_finite(theta)) return SWARP_ERR_NON_FINITE;
+    if (!sw_half_fov_ok(theta)) return SWARP_ERR_FOV;
+    if (!sw_angle_closed(gamma)) return SWARP_ERR_OUT_OF_RANGE;
+    double gamma_a = theta / 3.0;
+    double gamma_b = theta;
+    double gamma_c = theta + 0.3 * (SW_HALF_PI - theta);
+    double eta;
+    if (gamma <= gamma_a)
+        eta = -1.0;
+    else if (gamma <= gamma_b)
+        eta = -1.0 + (SW_ETA_B + 1.0) * (gamma - gamma_a) / (gamma_b - gamma_a);
+    else if (gamma <= gamma_c) /* sin(90 deg * t), t in (0, 1] */
+        eta = SW_ETA_B + (SW_ETA_C - SW_ETA_B) * sin(SW_HALF_PI * (gamma - gamma_b) / (gamma_c - gamma_b));
+    else
+        eta = SW_ETA_C;
+    *out_eta = eta;
+    return SWARP_OK;
+}
+
+/* [RHS] (3.5) */
+SWARP_API swarp_status swarp_warp_wlz(double gamma, double theta, double n_e, double f_e,
+                                      double W_e, double* out_W_lz) {
+    if (!out_W_lz) return SWARP_ERR_NULL_POINTER;
+    if (!sw_finite(gamma) || !sw_finite(theta) || !sw_finite(n_e) || !sw_finite(f_e) ||
+        !sw_finite(W_e))
+        return SWARP_ERR_NON_FINITE;
+    if (!(n_e > 0.0) || !(f_e > n_e)) return SWARP_ERR_NEAR_FAR;
+    if (!sw_half_fov_ok(theta)) return SWARP_ERR_FOV;
+    if (!sw_angle_closed(gamma) || !(W_e > 0.0)) return SWARP_ERR_OUT_OF_RANGE;
+    double W_n = W_e;
+    double W_s = (f_e - n_e) / cos(theta); /* length of a side face */
+    double Wp_n = W_n * cos(gamma);
+    double Wp_s1 = W_s * (1.0 - cos(theta - gamma));
+    double Wp_s2 = W_s * sin(theta + gamma);
+    double W_lz = Wp_n + Wp_s2 + (gamma <= theta ? Wp_s1 : 0.0);
+    if (!sw_finite(W_lz)) return SWARP_ERR_OVERFLOW;
+    *out_W_lz = W_lz;
+    return SWARP_OK;
+}
+
+/* [RHS] (3.4), second case read as eta*sqrt(alpha) + 1 (papers README). */
+SWARP_API swarp_status swarp_warp_nrepar(double eta, double alpha, double W_lz, double* out_n) {
+    if (!out_n) return SWARP_ERR_NULL_POINTER;
+    if (!sw_finite(eta) || !sw_finite(alpha) || !sw_finite(W_lz)) return SWARP_ERR_NON_FINITE;
+    if (!(eta >= -1.0 && eta <= 1.0) || !(alpha > 1.0) || !(W_lz > 0.0))
+        return SWARP_ERR_OUT_OF_RANGE;
+    if (eta == -1.0) {
+        *out_n = INFINITY; /* eta = -1 is uniform by construction */
+        return SWARP_INFO_WARP_UNIFORM;
+    }
+    double sqrt_alpha = sqrt(alpha);
+    double scale = W_lz / (alpha - 1.0);
+    double g;
+    if (eta < 0.0)
+        g = (1.0 + sqrt_alpha - eta * (alpha - 1.0)) / (eta + 1.0);
+    else
+        g = (1.0 + sqrt_alpha) / (eta * sqrt_alpha + 1.0);
+    return sw_put_warp(scale * g, SWARP_OK, out_n);
+}
+
+/* ---- [GMNPR] ------------------------------------------------------------ */
+/*
+ * Two ratios keep every expression bounded:
+ *   t = tan(phi)/tan(theta) in (0, 1]  for theta >= phi   (case 1 of eq. (2))
+ *   u = tan(theta)/tan(phi) in [0, 1]  for theta <= phi   (case 2)
+ * written with sin/cos so theta = pi/2 (tan huge) and theta -> 0 stay exact.
+ * Both cases of (2) agree at theta = phi; the code uses case 1 there.
+ */
+static double sw_t_ratio(double theta, double phi) { return tan(phi) * cos(theta) / sin(theta); }
+static double sw_u_ratio(double theta, double phi) { return sin(theta) / (cos(theta) * tan(phi)); }
+
+/* D = f - n + (f + n) tan(phi)/tan(theta): the normalising depth of case 1. */
+static double sw_case1_D(double t, double n, double f) { return (f - n) + (f + n) * t; }
+
+static swarp_status sw_gmnpr_frame(double phi, double n, double f) {
+    if (!sw_finite(phi) || !sw_finite(n) || !sw_finite(f)) return SWARP_ERR_NON_FINITE;
+    if (!(n > 0.0) || !(f > n)) return SWARP_ERR_NEAR_FAR;
+    if (!sw_half_fov_ok(phi)) return SWARP_ERR_FOV;
+    return SWARP_OK;
+}
+
+/* Checks shared by psi, offset and F: theta in (0, pi/2], lambda > 0 finite. */
+static swarp_status sw_gmnpr_args(double lambda, double theta, double phi, double n, double f) {
+    if (!sw_finite(lambda) || !sw_finite(theta)) return SWARP_ERR_NON_FINITE;
+    swarp_status s = sw_gmnpr_frame(phi, n, f);
+    if (s != SWARP_OK) return s;
+    if (!(theta > 0.0 && theta <= SW_HALF_PI) || !(lambda > 0.0)) return SWARP_ERR_OUT_OF_RANGE;
+    return SWARP_OK;
+}
+
+/* psi and offset of (2) without checks; 0 on overflow of either. */
+static int sw_gmnpr_psi_offset(double lambda, double theta, double phi, double n, double f,
+                               double* psi, double* offset) {
+    double ll = lambda * (lambda + 1.0);
+    double p, o;
+    if (theta >= phi) {
+        double t = sw_t_ratio(theta, phi);
+        double D = sw_case1_D(t, n, f);
+        p = 1.0 / (tan(phi) * D * ll);
+        o = D * lambda + n * t - n;
+    } else {
+        /* 1/(tan(phi) 2 f lambda (lambda+1) tan(theta)/tan(phi)) = 1/(2 f ll tan(theta)) */
+        double u = sw_u_ratio(theta, phi);
+        p = 1.0 / (2.0 * f * ll * tan(theta));
+        o = f * ((2.0 * lambda + 1.0) / u - 1.0);
+    }
+    if (!sw_finite(p) || !sw_finite(o)) return 0;
+    *psi = p;
+    *offset = o;
+    return 1;
+}
+
+/* [GMNPR] (2), psi */
+SWARP_API swarp_status swarp_gmnpr_psi(double lambda, double theta, double phi, double n,
+                                       double f, double* out_psi) {
+    if (!out_psi) return SWARP_ERR_NULL_POINTER;
+    swarp_status s = sw_gmnpr_args(lambda, theta, phi, n, f);
+    if (s != SWARP_OK) return s;
+    double psi, offset;
+    if (!sw_gmnpr_psi_offset(lambda, theta, phi, n, f, &psi, &offset)) return SWARP_ERR_OVERFLOW;
+    *out_psi = psi;
+    return SWARP_OK;
+}
+
+/* [GMNPR] (2), varphi */
+SWARP_API swarp_status swarp_gmnpr_offset(double lambda, double theta, double phi, double n,
+                                          double f, double* out_offset) {
+    if (!out_offset) return SWARP_ERR_NULL_POINTER;
+    swarp_status s = sw_gmnpr_args(lambda, theta, phi, n, f);
+    if (s != SWARP_OK) return s;
+    double psi, offset;
+    if (!sw_gmnpr_psi_offset(lambda, theta, phi, n, f, &psi, &offset)) return SWARP_ERR_OVERFLOW;
+    *out_offset = offset;
+    return SWARP_OK;
+}
+
+/* [GMNPR] (2), F = psi (z + varphi)^2 / z, evaluated as (psi (z+varphi)) ((z+varphi)/z)
+ * so large lambda (psi ~ 1/lambda^2, varphi ~ lambda) does not overflow. */
+SWARP_API swarp_status swarp_gmnpr_F(double lambda, double theta, double phi, double n,
+                                     double f, double z, double* out_F) {
+    if (!out_F) return SWARP_ERR_NULL_POINTER;
+    if (!sw_finite(z)) return SWARP_ERR_NON_FINITE;
+    swarp_status s = sw_gmnpr_args(lambda, theta, phi, n, f);
+    if (s != SWARP_OK) return s;
+    if (!(z >= n && z <= f)) return SWARP_ERR_OUT_OF_RANGE;
+    double psi, offset;
+    if (!sw_gmnpr_psi_offset(lambda, theta, phi, n, f, &psi, &offset)) return SWARP_ERR_OVERFLOW;
+    double zo = z + offset; /* > 0 on [n, f] in both cases */
+    double F = (psi * zo) * (zo / z);
+    if (!sw_finite(F)) return SWARP_ERR_OVERFLOW;
+    *out_F = F;
+    return SWARP_OK;
+}
+
+/* lambda_1 of [GMNPR] (4) with tan(phi)/tan(theta) (the print's tan(phi)/tan(phi)
+ * is an extraction error, papers README), multiplied through by
+ * u = tan(theta)/tan(phi) so it is finite for every theta in (0, pi/2]:
+ *   lambda_1 = (u (n + sqrt(fn)) - n) / ((f - n) u + f + n). */
+static double sw_lambda_1(double theta, double phi, double n, double f) {
+    double sqrt_fn = sqrt(f) * sqrt(n);
+    if (theta >= phi) { /* t form: bounded for theta -> pi/2 */
+        double t = sw_t_ratio(theta, phi);
+        return (n + sqrt_fn - n * t) / sw_case1_D(t, n, f);
+    }
+    double u = sw_u_ratio(theta, phi);
+    return (u * (n + sqrt_fn) - n) / ((f - n) * u + (f + n));
+}
+
+/* lambda_2 of [GMNPR] (4): (f + sqrt(fn))/(2f) tan(theta)/tan(phi) - 1/2. */
+static double sw_lambda_2(double theta, double phi, double n, double f) {
+    double c = 0.5 * (1.0 + sqrt(n) / sqrt(f)); /* (f + sqrt(fn)) / (2f) */
+    if (theta >= phi) return c / sw_t_ratio(theta, phi) - 0.5;
+    return c * sw_u_ratio(theta, phi) - 0.5;
+}
+
+/* [GMNPR] (4) */
+SWARP_API swarp_status swarp_gmnpr_lambda12(double theta, double phi, double n, double f,
+                                            double* out_lambda_1, double* out_lambda_2) {
+    if (!out_lambda_1 || !out_lambda_2) return SWARP_ERR_NULL_POINTER;
+    if (!sw_finite(theta)) return SWARP_ERR_NON_FINITE;
+    swarp_status s = sw_gmnpr_frame(phi, n, f);
+    if (s != SWARP_OK) return s;
+    if (!(theta > 0.0 && theta <= SW_HALF_PI)) return SWARP_ERR_OUT_OF_RANGE;
+    double l1 = sw_lambda_1(theta, phi, n, f);
+    double l2 = sw_lambda_2(theta, phi, n, f);
+    if (!sw_finite(l1) || !sw_finite(l2)) return SWARP_ERR_OVERFLOW;
+    *out_lambda_1 = l1;
+    *out_lambda_2 = l2;
+    return SWARP_OK;
+}
+
+static swarp_status sw_theta_closed_check(double theta, double phi, double n, double f) {
+    if (!sw_finite(theta)) return SWARP_ERR_NON_FINITE;
+    swarp_status s = sw_gmnpr_frame(phi, n, f);
+    if (s != SWARP_OK) return s;
+    if (!sw_angle_closed(theta)) return SWARP_ERR_OUT_OF_RANGE;
+    return SWARP_OK;
+}
+
+/* lambda_GMNPR without checks; theta in [0, pi/2]. */
+static swarp_status sw_lambda_gmnpr(double theta, double phi, double n, double f, double* out) {
+    if (theta == 0.0) {
+        *out = INFINITY; /* (6): converges to the standard (uniform) shadow map */
+        return SWARP_INFO_WARP_UNIFORM;
+    }
+    if (theta >= phi) {
+        *out = sw_lambda_1(theta, phi, n, f); /* (8), first case = lambda_1 */
+        return SWARP_OK;
+    }
+    /* (7): lambda_2* = lambda_1(phi) / tan(theta pi / (4 phi)), lambda_1(phi) = sqrt(fn)/(2f) */
+    double lambda_1_phi = 0.5 * sqrt(n) / sqrt(f);
+    double lambda = lambda_1_phi / tan(theta * SWARP_PI / (4.0 * phi));
+    return sw_put_warp(lambda, SWARP_INFO_GMNPR_ADJUSTED, out);
+}
+
+/* [GMNPR] (8) with (7) */
+SWARP_API swarp_status swarp_gmnpr_lambda(double theta, double phi, double n, double f,
+                                          double* out_lambda) {
+    if (!out_lambda) return SWARP_ERR_NULL_POINTER;
+    swarp_status s = sw_theta_closed_check(theta, phi, n, f);
+    if (s != SWARP_OK) return s;
+    return sw_lambda_gmnpr(theta, phi, n, f, out_lambda);
+}
+
+/* [GMNPR] (9): P_n = (n + sqrt(fn))/sin(theta) over the normalised depth P_f - P_n. */
+SWARP_API swarp_status swarp_gmnpr_lambda_lispsm(double theta, double phi, double n, double f,
+                                                 double* out_lambda) {
+    if (!out_lambda) return SWARP_ERR_NULL_POINTER;
+    swarp_status s = sw_theta_closed_check(theta, phi, n, f);
+    if (s != SWARP_OK) return s;
+    if (theta == 0.0) {
+        *out_lambda = INFINITY; /* P_n = inf: duelling frusta */
+        return SWARP_INFO_WARP_UNIFORM;
+    }
+    double P_n = (n + sqrt(f) * sqrt(n)) / sin(theta);
+    double depth; /* P_f - P_n of [GMNPR] (9) */
+    if (theta >= phi) {
+        /* (n t + f - n + f t) sin(theta) = D sin(theta) */
+        depth = sw_case1_D(sw_t_ratio(theta, phi), n, f) * sin(theta);
+    } else {
+        depth = 2.0 * f * tan(phi) * cos(theta);
+    }
+    return sw_put_warp(P_n / depth, SWARP_OK, out_lambda);
+}
+
+/* GLPR from [GMNPR] (2), derivation in docs/parameters.md:
+ * F = psi (z + varphi)^2 / z = psi (z + 2 varphi + varphi^2 / z) is linear in z
+ * exactly when varphi(lambda, theta) = 0.
+ *  case 1: D lambda + n t - n = 0  =>  lambda = n (1 - t) / D, with
+ *          1 - t = sin(theta - phi) / (sin(theta) cos(phi)) (no cancellation);
+ *          positive iff theta > phi; = n/(f - n) (PSM) at theta = pi/2.
+ *  case 2: f (2 lambda + 1) t - f = 0  =>  lambda = (u - 1)/2 <= 0: no positive
+ *          solution for theta <= phi.  There lambda_GMNPR is written with
+ *          SWARP_INFO_GLPR_NO_SOLUTION (theta = 0: +INFINITY, WARP_UNIFORM). */
+SWARP_API swarp_status swarp_gmnpr_lambda_glpr(double theta, double phi, double n, double f,
+                                               double* out_lambda) {
+    if (!out_lambda) return SWARP_ERR_NULL_POINTER;
+    swarp_status s = sw_theta_closed_check(theta, phi, n, f);
+    if (s != SWARP_OK) return s;
+    if (theta > phi) {
+        double D = sw_case1_D(sw_t_ratio(theta, phi), n, f);
+        double one_minus_t = sin(theta - phi) / (sin(theta) * cos(phi));
+        double lambda = n * one_minus_t / D;
+        if (lambda > 0.0 && sw_finite(lambda)) {
+            *out_lambda = lambda;
+            return SWARP_OK;
+        }
+        /* underflowed to 0 just above phi: treat as no positive solution */
+    }
+    double fallback;
+    s = sw_lambda_gmnpr(theta, phi, n, f, &fallback);
+    *out_lambda = fallback;
+    return s == SWARP_INFO_WARP_UNIFORM ? s : SWARP_INFO_GLPR_NO_SOLUTION;
+}

@@ -7,6 +7,7 @@
 
 #include "shadowwarp.h"
 #include "shadowwarp_cglm.h"
+#include "test_core.h"
 
 START_TEST(status_messages_are_distinct_and_ranged) {
     static const int codes[] = {
@@ -115,6 +116,9 @@ int main(void) {
     tcase_add_test(tc, to_float_keeps_column_major_and_rejects_overflow);
     tcase_add_test(tc, cglm_converters_round_trip_and_agree_on_order);
     suite_add_tcase(s, tc);
+    suite_add_tcase(s, tcase_params());
+    suite_add_tcase(s, tcase_error());
+    suite_add_tcase(s, tcase_split());
     SRunner* sr = srunner_create(s);
     srunner_run_all(sr, CK_NORMAL);
     int failed = srunner_ntests_failed(sr);

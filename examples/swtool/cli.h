@@ -63,6 +63,7 @@ int cmd_report(sw_args* a);
 /* stage: lixel */
 
 /* stage: splits */
+int cmd_stabwalk(sw_args* a);
 
 /* stage: plan */
 

@@ -20,6 +20,7 @@ static const sw_cmd commands[] = {
     /* stage: lixel */
 
     /* stage: splits */
+    {"stabwalk", cmd_stabwalk, "texel coordinates of a fixed point while the camera moves [--res --steps]"},
 
     /* stage: plan */
 

@@ -1,0 +1,47 @@
+/* demo.h -- what main.c, measure.c and pictures.c share. */
+#ifndef DEMO_DEMO_H
+#define DEMO_DEMO_H
+
+#include "image.h"
+#include "render.h"
+#include "scene.h"
+#include "shadow.h"
+
+typedef struct demo_view {
+    swarp_camera cam;
+    swarp_light light;
+    float view[16], proj[16]; /**< cglm matrices of cam */
+    int w, h;
+} demo_view;
+
+/** Fills view/proj from cam (cglm lookat + perspective). */
+void demo_view_update(demo_view* v);
+
+/** One row of the measured-vs-predicted table. */
+typedef struct demo_measure_row {
+    double z;                     /**< eye depth (bin centre, median of samples) */
+    double mx, mz;                /**< measured screen pixels per texel (x, z) */
+    double pred_mx, pred_mz;      /**< library's m_x, m_z at z (NAN if unavailable) */
+    double ratio_mx, ratio_mz;    /**< median of the per-sample measured/predicted */
+    int split;                    /**< the map the samples were shaded from */
+    int samples;
+} demo_measure_row;
+
+/** Measures m_x and m_z along the view vector (centre column of the
+ *  picture, ground pixels) from the read-back texel coordinates.  Writes up
+ *  to cap rows (depth bins); returns their number. */
+int demo_measure(const demo_view* v, const demo_shadow* sh, int map_res, const float* tex,
+                 const float* pos, demo_measure_row* rows, int cap);
+
+/** The error graph along the view vector (Fig. 5.8): library m_x (orange),
+ *  m_z (blue), split markers, measured points.  */
+int demo_error_graph(const demo_view* v, const demo_shadow* sh, int map_res,
+                     const demo_measure_row* rows, int nrows, const char* title,
+                     demo_image* out);
+
+/** Draws the view frustum (or split frustum [d0, d1]) seen through light
+ *  matrix m into an image of the light view. */
+void demo_draw_frustum(demo_image* im, const swarp_mat4* m, const demo_view* v, double d0,
+                       double d1, const uint8_t rgb[3], int view_vector);
+
+#endif

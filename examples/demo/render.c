@@ -1,0 +1,318 @@
+/* render.c -- shadow passes into a depth texture array (one layer per map)
+ * and the main pass with the shadow test, the split selection and the
+ * visualisations of [RHS] chapter 5. */
+#include "render.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+double demo_now_ms(void) {
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec * 1e3 + (double)ts.tv_nsec * 1e-6;
+}
+
+static const char* const depth_vs =
+    "layout(location = 0) in vec3 a_p;\n"
+    "uniform mat4 u_m;\n"
+    "void main() { gl_Position = u_m * vec4(a_p, 1.0); }\n";
+
+static const char* const main_vs =
+    "layout(location = 0) in vec3 a_p;\n"
+    "layout(location = 1) in vec3 a_n;\n"
+    "layout(location = 2) in vec3 a_c;\n"
+    "uniform mat4 u_view, u_proj;\n"
+    "out vec3 v_p; out vec3 v_n; out vec3 v_c; out float v_depth;\n"
+    "void main() {\n"
+    "  vec4 vs = u_view * vec4(a_p, 1.0);\n"
+    "  v_p = a_p; v_n = a_n; v_c = a_c; v_depth = -vs.z;\n"
+    "  gl_Position = u_proj * vs;\n"
+    "}\n";
+
+/* Split selection by eye depth (ZSXL06, [RHS] §3.3.3) with a blend band at
+ * the far end of each split.  TEMPORARY mirror of the selection rule until
+ * the splits stage ships its CPU reference and GLSL twin. */
+static const char* const main_fs =
+    "in vec3 v_p; in vec3 v_n; in vec3 v_c; in float v_depth;\n"
+    "layout(location = 0) out vec4 o_color;\n"
+    "layout(location = 1) out vec4 o_tex;\n"
+    "layout(location = 2) out vec4 o_pos;\n"
+    "uniform sampler2DArrayShadow u_shadow;\n"
+    "uniform mat4 u_light[16];\n"
+    "uniform float u_split[17];\n"
+    "uniform int u_count, u_mode, u_filter;\n"
+    "uniform float u_res, u_blend, u_grid;\n"
+    "uniform vec3 u_light_dir;\n"
+    "int select_split(float z) {\n"
+    "  for (int i = 0; i < u_count - 1; ++i) if (z < u_split[i + 1]) return i;\n"
+    "  return u_count - 1;\n"
+    "}\n"
+    "float blend_weight(int i, float z) {\n"
+    "  if (i >= u_count - 1 || u_blend <= 0.0) return 0.0;\n"
+    "  float band = u_blend * (u_split[i + 1] - u_split[i]);\n"
+    "  return clamp((z - (u_split[i + 1] - band)) / band, 0.0, 1.0);\n"
+    "}\n"
+    "vec3 map_coord(int i) {\n"
+    "  vec4 c = u_light[i] * vec4(v_p, 1.0);\n"
+    "  return c.xyz / c.w * 0.5 + 0.5;\n"
+    "}\n"
+    "float lookup(int i, vec3 sc) {\n"
+    "  if (any(lessThan(sc, vec3(0.0))) || any(greaterThan(sc, vec3(1.0)))) return 1.0;\n"
+    "  float ref = sc.z;\n"
+    "  if (u_filter == 0) {\n"
+    "    vec2 t = (floor(sc.xy * u_res) + 0.5) / u_res;\n"
+    "    return texture(u_shadow, vec4(t, float(i), ref));\n"
+    "  }\n"
+    "  if (u_filter == 1) return texture(u_shadow, vec4(sc.xy, float(i), ref));\n"
+    "  int k = u_filter == 2 ? 1 : 2;\n"
+    "  float s = 0.0;\n"
+    "  for (int y = -k; y <= k; ++y) for (int x = -k; x <= k; ++x)\n"
+    "    s += texture(u_shadow, vec4(sc.xy + vec2(x, y) / u_res, float(i), ref));\n"
+    "  return s / float((2 * k + 1) * (2 * k + 1));\n"
+    "}\n"
+    /* [RHS] Listing A.3: interval bounds and colours of the sampling scale */
+    "const float iv[7] = float[7](0.0, 1.0/7.75, 1.0/3.25, 1.0, 3.25, 7.75, 10.0);\n"
+    "const vec3 clr[7] = vec3[7](vec3(0.2,0.0,0.0), vec3(1.0,0.2,0.0), vec3(1.0,1.0,0.0),\n"
+    "  vec3(0.0,1.0,0.0), vec3(0.3,0.8,1.0), vec3(0.0,0.0,1.0), vec3(0.0,0.0,0.4));\n"
+    "vec3 sampling_color(vec2 uv) {\n"
+    "  vec2 dSdX = u_res * dFdx(uv);\n"
+    "  vec2 dSdY = u_res * dFdy(uv);\n"
+    "  float area = abs(dSdX.x * dSdY.y - dSdY.x * dSdX.y);\n"
+    "  vec3 result = clr[6];\n"
+    "  for (int i = 0; i < 6; ++i)\n"
+    "    if (area >= iv[i] && area < iv[i + 1]) {\n"
+    "      result = mix(clr[i], clr[i + 1], (area - iv[i]) / (iv[i + 1] - iv[i]));\n"
+    "      break;\n"
+    "    }\n"
+    "  return result;\n"
+    "}\n"
+    /* [RHS] Listing A.4 (Lloyd's texel grid), size = u_grid texels per cell */
+    "float grid_line(vec2 uv) {\n"
+    "  float texel = u_grid / u_res;\n"
+    "  vec2 tc = uv / texel;\n"
+    "  vec2 dS = vec2(dFdx(tc.x), dFdy(tc.x));\n"
+    "  vec2 dT = vec2(dFdx(tc.y), dFdy(tc.y));\n"
+    "  vec2 m = fract(tc);\n"
+    "  return (m.x < length(dS) || m.y < length(dT)) ? 1.0 : 0.0;\n"
+    "}\n"
+    "void main() {\n"
+    "  vec3 n = normalize(v_n);\n"
+    "  if (!gl_FrontFacing) n = -n;\n"
+    "  float ndl = max(dot(n, -u_light_dir), 0.0);\n"
+    "  int i = select_split(v_depth);\n"
+    "  vec3 sc = map_coord(i);\n"
+    "  float lit = 1.0;\n"
+    "  if (u_mode != 4) {\n"
+    "    lit = lookup(i, sc);\n"
+    "    float w = blend_weight(i, v_depth);\n"
+    "    if (w > 0.0) lit = mix(lit, lookup(i + 1, map_coord(i + 1)), w);\n"
+    "  }\n"
+    "  if (ndl <= 0.0) lit = 0.0;\n"
+    "  vec3 shaded = v_c * (0.35 + 0.65 * ndl * lit);\n"
+    "  vec3 col = shaded;\n"
+    "  if (u_mode == 1) col = sampling_color(sc.xy) * (0.55 + 0.45 * ndl * lit);\n"
+    "  else if (u_mode == 2) {\n"
+    "    const vec3 sp[4] = vec3[4](vec3(1,0,0), vec3(1,1,0), vec3(0,1,0), vec3(0,0,1));\n"
+    "    col = mix(shaded, sp[i % 4] * (0.45 + 0.55 * ndl * lit), 0.6);\n"
+    "  } else if (u_mode == 3) col = mix(shaded, vec3(0.0), grid_line(sc.xy));\n"
+    "  o_color = vec4(col, 1.0);\n"
+    "  o_tex = vec4(sc.xy * u_res, float(i), v_depth);\n"
+    "  o_pos = vec4(v_p, lit);\n"
+    "}\n";
+
+int demo_render_init(demo_renderer* r, const demo_scene* s, int w, int h, int map_res,
+                     int max_layers) {
+    memset(r, 0, sizeof *r);
+    r->w = w;
+    r->h = h;
+    r->map_res = map_res;
+    r->layers = max_layers;
+    r->vertex_count = (int)s->count;
+    glGenVertexArrays(1, &r->vao);
+    glBindVertexArray(r->vao);
+    glGenBuffers(1, &r->vbo);
+    glBindBuffer(GL_ARRAY_BUFFER, r->vbo);
+    glBufferData(GL_ARRAY_BUFFER, (GLsizeiptr)(s->count * sizeof(demo_vertex)), s->v,
+                 GL_STATIC_DRAW);
+    for (GLuint a = 0; a < 3; ++a) {
+        glEnableVertexAttribArray(a);
+        glVertexAttribPointer(a, 3, GL_FLOAT, GL_FALSE, sizeof(demo_vertex),
+                              (const void*)(a * 3 * sizeof(float)));
+    }
+    r->prog_depth = demo_gl_program("depth", depth_vs, NULL);
+    r->prog_main = demo_gl_program("main", main_vs, main_fs);
+    if (!r->prog_depth || !r->prog_main) return -1;
+
+    glGenTextures(1, &r->shadow_tex);
+    glBindTexture(GL_TEXTURE_2D_ARRAY, r->shadow_tex);
+    glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, GL_DEPTH_COMPONENT32F, map_res, map_res, max_layers, 0,
+                 GL_DEPTH_COMPONENT, GL_FLOAT, NULL);
+    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+    glGenFramebuffers(1, &r->shadow_fbo);
+
+    glGenFramebuffers(1, &r->fbo);
+    glBindFramebuffer(GL_FRAMEBUFFER, r->fbo);
+    GLuint* rbs[4] = {&r->rb_color, &r->rb_tex, &r->rb_pos, &r->rb_depth};
+    const GLenum fmts[4] = {GL_RGBA8, GL_RGBA32F, GL_RGBA32F, GL_DEPTH_COMPONENT24};
+    const GLenum atts[4] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2,
+                            GL_DEPTH_ATTACHMENT};
+    for (int i = 0; i < 4; ++i) {
+        glGenRenderbuffers(1, rbs[i]);
+        glBindRenderbuffer(GL_RENDERBUFFER, *rbs[i]);
+        glRenderbufferStorage(GL_RENDERBUFFER, fmts[i], w, h);
+        glFramebufferRenderbuffer(GL_FRAMEBUFFER, atts[i], GL_RENDERBUFFER, *rbs[i]);
+    }
+    const GLenum bufs[3] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
+    glDrawBuffers(3, bufs);
+    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+        fprintf(stderr, "demo: main framebuffer incomplete\n");
+        return -1;
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    return demo_gl_check("init") ? -1 : 0;
+}
+
+void demo_render_free(demo_renderer* r) {
+    if (r->prog_depth) glDeleteProgram(r->prog_depth);
+    if (r->prog_main) glDeleteProgram(r->prog_main);
+    glDeleteTextures(1, &r->shadow_tex);
+    glDeleteFramebuffers(1, &r->shadow_fbo);
+    glDeleteFramebuffers(1, &r->fbo);
+    GLuint rbs[4] = {r->rb_color, r->rb_tex, r->rb_pos, r->rb_depth};
+    glDeleteRenderbuffers(4, rbs);
+    glDeleteBuffers(1, &r->vbo);
+    glDeleteVertexArrays(1, &r->vao);
+    memset(r, 0, sizeof *r);
+}
+
+static void to_float(const swarp_mat4* m, float out[16]) {
+    /* swarp_mat4_to_float checks finiteness; a light matrix that does not
+     * fit a float is a library bug worth seeing, so fall back loudly. */
+    if (swarp_mat4_to_float(m, out) != SWARP_OK) {
+        fprintf(stderr, "demo: light matrix not representable as float\n");
+        for (int i = 0; i < 16; ++i) out[i] = (i % 5 == 0) ? 1.0f : 0.0f;
+    }
+}
+
+int demo_render_shadow(demo_renderer* r, const demo_shadow* sh, double* ms_out) {
+    int errors = 0;
+    glBindFramebuffer(GL_FRAMEBUFFER, r->shadow_fbo);
+    GLenum none = GL_NONE;
+    glDrawBuffers(1, &none);
+    glReadBuffer(GL_NONE);
+    glUseProgram(r->prog_depth);
+    glBindVertexArray(r->vao);
+    glViewport(0, 0, r->map_res, r->map_res);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
+    glDisable(GL_CULL_FACE);
+    /* slope-scaled depth bias against acne (the bias stage replaces this
+     * when it lands) */
+    glEnable(GL_POLYGON_OFFSET_FILL);
+    glPolygonOffset(2.0f, 8.0f);
+    GLint loc = glGetUniformLocation(r->prog_depth, "u_m");
+    for (int i = 0; i < sh->count && i < r->layers; ++i) {
+        double t0 = demo_now_ms();
+        glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, r->shadow_tex, 0, i);
+        glClear(GL_DEPTH_BUFFER_BIT);
+        float m[16];
+        to_float(&sh->light[i], m);
+        glUniformMatrix4fv(loc, 1, GL_FALSE, m);
+        glDrawArrays(GL_TRIANGLES, 0, r->vertex_count);
+        glFinish();
+        if (ms_out) ms_out[i] = demo_now_ms() - t0;
+        char name[32];
+        snprintf(name, sizeof name, "shadow pass %d", i);
+        errors += demo_gl_check(name);
+    }
+    glDisable(GL_POLYGON_OFFSET_FILL);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    return errors;
+}
+
+int demo_render_main(demo_renderer* r, const demo_shadow* sh, const demo_main_params* p,
+                     double* ms_out) {
+    double t0 = demo_now_ms();
+    glBindFramebuffer(GL_FRAMEBUFFER, r->fbo);
+    const GLenum bufs[3] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
+    glDrawBuffers(3, bufs);
+    glViewport(0, 0, p->vw, p->vh);
+    const float sky[4] = {0.62f, 0.75f, 0.92f, 1.0f}, zero[4] = {0, 0, 0, 0};
+    const float nopos[4] = {0, 0, 0, -1};
+    glClearBufferfv(GL_COLOR, 0, sky);
+    glClearBufferfv(GL_COLOR, 1, zero);
+    glClearBufferfv(GL_COLOR, 2, nopos);
+    glClear(GL_DEPTH_BUFFER_BIT);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDisable(GL_CULL_FACE);
+    GLuint pr = r->prog_main;
+    glUseProgram(pr);
+    glBindVertexArray(r->vao);
+    glUniformMatrix4fv(glGetUniformLocation(pr, "u_view"), 1, GL_FALSE, p->view);
+    glUniformMatrix4fv(glGetUniformLocation(pr, "u_proj"), 1, GL_FALSE, p->proj);
+    float lm[DEMO_MAX_SPLITS * 16];
+    float split[DEMO_MAX_SPLITS + 1];
+    for (int i = 0; i < sh->count; ++i) to_float(&sh->light[i], lm + 16 * i);
+    for (int i = 0; i <= sh->count; ++i) split[i] = (float)sh->split[i];
+    glUniformMatrix4fv(glGetUniformLocation(pr, "u_light"), sh->count, GL_FALSE, lm);
+    glUniform1fv(glGetUniformLocation(pr, "u_split"), sh->count + 1, split);
+    glUniform1i(glGetUniformLocation(pr, "u_count"), sh->count);
+    glUniform1i(glGetUniformLocation(pr, "u_mode"), (int)p->mode);
+    glUniform1i(glGetUniformLocation(pr, "u_filter"), (int)p->filter);
+    glUniform1f(glGetUniformLocation(pr, "u_res"), (float)r->map_res);
+    glUniform1f(glGetUniformLocation(pr, "u_blend"), p->blend);
+    glUniform1f(glGetUniformLocation(pr, "u_grid"), p->grid > 0 ? p->grid : 1.0f);
+    glUniform3f(glGetUniformLocation(pr, "u_light_dir"), p->light_dir[0], p->light_dir[1],
+                p->light_dir[2]);
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D_ARRAY, r->shadow_tex);
+    glUniform1i(glGetUniformLocation(pr, "u_shadow"), 0);
+    glDrawArrays(GL_TRIANGLES, 0, r->vertex_count);
+    glFinish();
+    if (ms_out) *ms_out = demo_now_ms() - t0;
+    return demo_gl_check(p->mode == DEMO_MODE_UNSHADOWED ? "light view pass" : "main pass");
+}
+
+void demo_render_read_color(demo_renderer* r, int vw, int vh, uint8_t* rgba) {
+    glBindFramebuffer(GL_FRAMEBUFFER, r->fbo);
+    glReadBuffer(GL_COLOR_ATTACHMENT0);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, vw, vh, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
+    /* flip to top row first */
+    size_t row = (size_t)vw * 4;
+    uint8_t* tmp = malloc(row);
+    if (tmp) {
+        for (int y = 0; y < vh / 2; ++y) {
+            uint8_t* a = rgba + (size_t)y * row;
+            uint8_t* b = rgba + (size_t)(vh - 1 - y) * row;
+            memcpy(tmp, a, row);
+            memcpy(a, b, row);
+            memcpy(b, tmp, row);
+        }
+        free(tmp);
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+void demo_render_read_aux(demo_renderer* r, float* tex, float* pos) {
+    glBindFramebuffer(GL_FRAMEBUFFER, r->fbo);
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    if (tex) {
+        glReadBuffer(GL_COLOR_ATTACHMENT1);
+        glReadPixels(0, 0, r->w, r->h, GL_RGBA, GL_FLOAT, tex);
+    }
+    if (pos) {
+        glReadBuffer(GL_COLOR_ATTACHMENT2);
+        glReadPixels(0, 0, r->w, r->h, GL_RGBA, GL_FLOAT, pos);
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}

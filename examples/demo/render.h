@@ -1,0 +1,71 @@
+/* render.h -- the GL passes (render.c). */
+#ifndef DEMO_RENDER_H
+#define DEMO_RENDER_H
+
+#include <stdint.h>
+
+#include "gl.h"
+#include "scene.h"
+#include "shadow.h"
+
+typedef enum demo_mode {
+    DEMO_MODE_SHADED = 0,  /**< lambert + shadow test */
+    DEMO_MODE_SAMPLING,    /**< [RHS] Listing A.3 colour scale */
+    DEMO_MODE_SPLITS,      /**< [RHS] (5.1) split colours */
+    DEMO_MODE_GRID,        /**< [RHS] Listing A.4 texel grid */
+    DEMO_MODE_UNSHADOWED   /**< lambert only (light views) */
+} demo_mode;
+
+typedef enum demo_filter {
+    DEMO_FILTER_NONE = 0, /**< one nearest tap */
+    DEMO_FILTER_PCF2,     /**< hardware 2x2 bilinear compare */
+    DEMO_FILTER_PCF3,     /**< 3x3 bilinear taps */
+    DEMO_FILTER_PCF5,     /**< 5x5 bilinear taps */
+    DEMO_FILTER_COUNT
+} demo_filter;
+
+typedef struct demo_renderer {
+    GLuint vao, vbo;
+    int vertex_count;
+    GLuint prog_depth, prog_main;
+    GLuint shadow_tex, shadow_fbo;
+    int map_res, layers;
+    GLuint fbo, rb_color, rb_tex, rb_pos, rb_depth;
+    int w, h;
+} demo_renderer;
+
+/** Uploads the scene, compiles the programs, allocates a w x h main target
+ *  (RGBA8 + two RGBA32F + depth) and a map_res^2 x max_layers depth array.
+ *  0 on success. */
+int demo_render_init(demo_renderer* r, const demo_scene* s, int w, int h, int map_res,
+                     int max_layers);
+void demo_render_free(demo_renderer* r);
+
+/** The shadow passes, one per map.  ms_out[i]: glFinish-bracketed time of
+ *  pass i (may be NULL).  Returns the number of GL errors seen. */
+int demo_render_shadow(demo_renderer* r, const demo_shadow* sh, double* ms_out);
+
+typedef struct demo_main_params {
+    float view[16], proj[16];       /**< camera (cglm, column-major) */
+    float light_dir[3];             /**< direction light travels */
+    demo_mode mode;
+    demo_filter filter;
+    float blend;                    /**< split blend band, fraction of a split */
+    float grid;                     /**< texels per grid cell (Listing A.4 "size") */
+    int vw, vh;                     /**< viewport (<= target size) */
+} demo_main_params;
+
+/** The main pass into the w x h target.  *ms_out: glFinish-bracketed time.
+ *  Returns the number of GL errors seen. */
+int demo_render_main(demo_renderer* r, const demo_shadow* sh, const demo_main_params* p,
+                     double* ms_out);
+
+/** Read back the colour target (RGBA8, top row first) of vw x vh. */
+void demo_render_read_color(demo_renderer* r, int vw, int vh, uint8_t* rgba);
+/** Read back the float targets: tex = (s, t in texels, split, eye depth),
+ *  pos = (world xyz, lit in [0,1]); bottom row first (GL order). */
+void demo_render_read_aux(demo_renderer* r, float* tex, float* pos);
+
+double demo_now_ms(void);
+
+#endif

@@ -1,0 +1,74 @@
+/* shadow.h -- the demo's one seam to the library: technique -> light
+ * matrices.  Everything the renderer needs about a shadow configuration
+ * (matrices per split, split distances, warp parameters for the error model)
+ * comes out of demo_shadow_setup(); the renderer never computes shadow maths
+ * of its own. */
+#ifndef DEMO_SHADOW_H
+#define DEMO_SHADOW_H
+
+#include "shadowwarp.h"
+
+#define DEMO_MAX_SPLITS 16
+
+typedef enum demo_technique {
+    DEMO_TECH_UNIFORM = 0, /**< light-space aligned, focused uniform map */
+    DEMO_TECH_LISPSM,      /**< LiSPSM with n_opt [RHS] (3.2) */
+    DEMO_TECH_REPAR,       /**< LiSPSM with Lloyd's n_repar [RHS] (3.4) */
+    DEMO_TECH_GMNPR,       /**< LiSPSM with lambda_GMNPR [GMNPR] (8) */
+    DEMO_TECH_PSM,         /**< PSM [KOZ] */
+    DEMO_TECH_PSSM,        /**< z-partitioned uniform maps [RHS] §3.3 */
+    DEMO_TECH_PSSM_LISPSM, /**< z-partitioning + LiSPSM per split [RHS] §3.4 */
+    DEMO_TECH_LIXEL,       /**< plane-stabilised maps [LIXEL] */
+    DEMO_TECH_COUNT
+} demo_technique;
+
+typedef enum demo_scheme {
+    DEMO_SCHEME_PRACTICAL = 0, /**< [RHS] (3.8), lambda */
+    DEMO_SCHEME_UNIFORM,       /**< [RHS] (3.6) */
+    DEMO_SCHEME_LOG,           /**< [RHS] (3.7) */
+    DEMO_SCHEME_COUNT
+} demo_scheme;
+
+typedef struct demo_shadow_request {
+    demo_technique technique;
+    int splits;          /**< K for the PSSM techniques (1..DEMO_MAX_SPLITS) */
+    demo_scheme scheme;
+    double scheme_lambda; /**< practical scheme's lambda in [0, 1] */
+    int map_res;          /**< texels per side of each map */
+    int screen_w, screen_h;
+} demo_shadow_request;
+
+typedef struct demo_shadow {
+    int count;                              /**< number of maps (passes) */
+    swarp_mat4 light[DEMO_MAX_SPLITS];      /**< world -> light clip, per map */
+    double split[DEMO_MAX_SPLITS + 1];      /**< eye-depth split distances C_i */
+    double n_prime[DEMO_MAX_SPLITS];        /**< warp n' per map (INFINITY = uniform) */
+    double near, far;                       /**< eye-depth range the maps cover */
+    double predicted_max_mx, predicted_max_mz; /**< NAN when not available */
+    swarp_status status;                    /**< library status of the setup */
+    const char* source;                     /**< who computed the matrices */
+} demo_shadow;
+
+const char* demo_technique_name(demo_technique t);
+/** Parses a --technique name ("uniform", "lispsm", "pssm", ...); -1 if unknown. */
+int demo_technique_parse(const char* name);
+/** 1 if the library linked into this build can compute technique t. */
+int demo_technique_available(demo_technique t);
+const char* demo_scheme_name(demo_scheme s);
+int demo_scheme_parse(const char* name, double* lambda);
+
+/** Technique -> light matrices.  0 on success, -1 with a message on stderr
+ *  (unavailable technique or a library error). */
+int demo_shadow_setup(const swarp_camera* cam, const swarp_light* light,
+                      const swarp_aabb* scene, const demo_shadow_request* req,
+                      demo_shadow* out);
+
+/** 1 if the library's error model (core stage) is linked in. */
+int demo_have_error_model(void);
+/** m_x and m_z [RHS] (2.3)-(2.8) at eye depth z for configuration sh, seen
+ *  on a screen of w x h pixels with vertical fov fovy (radians).  0 on
+ *  success, -1 if the error model is unavailable or fails. */
+int demo_predict(const demo_shadow* sh, double fovy, int w, int h, int map_res, double z,
+                 double* out_mx, double* out_mz);
+
+#endif

@@ -1,0 +1,270 @@
+/* Shadow bias in world units and its conversion to each map's depth units.
+ * [KOZ] §14.2.3: world-space texel size L_texel and P + L (a + b L_texel);
+ * normal offset, slope-scaled and receiver-plane depth bias. */
+#include "splits_internal.h"
+
+_Static_assert(sizeof(swarp_bias_map) == sizeof(swarp_mat4) + 2 * sizeof(double) + 8 + 16,
+               "swarp_bias_map size");
+
+/* w below this (relative to the matrix scale) means the point sits on or
+ * behind the light's centre of projection: no texel there. */
+#define SW_BIAS_W_EPS 1e-300
+
+/* Largest tan of the receiver slope used by the slope-scaled bias: ~84
+ * degrees; beyond, the bias would grow without bound (grazing receivers). */
+#define SW_BIAS_MAX_SLOPE 10.0
+
+static swarp_status sw_map_check(const swarp_bias_map* map) {
+    if (!sw_reserved_zero(map->_reserved, 4) || map->_reserved0 != 0)
+        return SWARP_ERR_RESERVED_NONZERO;
+    if (!sw_depth_range_ok(map->depth)) return SWARP_ERR_UNKNOWN_ENUM;
+    if (!sw_mat_finite(&map->world_to_clip)) return SWARP_ERR_NON_FINITE;
+    if (!sw_finite(map->res_s) || !sw_finite(map->res_t) || !(map->res_s > 0.0) ||
+        !(map->res_t > 0.0))
+        return SWARP_ERR_RESOLUTION;
+    return SWARP_OK;
+}
+
+static double sw_window_scale(swarp_depth_range d) { return d == SWARP_DEPTH_ZERO_TO_ONE ? 1.0 : 0.5; }
+
+static swarp_status sw_light_check(const swarp_light* light) {
+    if (!sw_reserved_zero(light->_reserved, 4) || light->_reserved0 != 0)
+        return SWARP_ERR_RESERVED_NONZERO;
+    if (light->type != SWARP_LIGHT_DEFAULT && light->type != SWARP_LIGHT_DIRECTIONAL &&
+        light->type != SWARP_LIGHT_POINT)
+        return SWARP_ERR_UNKNOWN_ENUM;
+    if (light->type == SWARP_LIGHT_POINT ? !sw_finite3(&light->position)
+                                         : !sw_finite3(&light->direction))
+        return SWARP_ERR_NON_FINITE;
+    return SWARP_OK;
+}
+
+static swarp_status sw_to_light(const swarp_light* light, swarp_vec3 p, swarp_vec3* L) {
+    swarp_vec3 v = light->type == SWARP_LIGHT_POINT ? sw_sub(light->position, p)
+                                                    : sw_scale(light->direction, -1.0);
+    return sw_normalize(v, L) ? SWARP_OK : SWARP_ERR_ZERO_VECTOR;
+}
+
+/* p -> clip, requiring w > 0 */
+static swarp_status sw_project(const swarp_mat4* M, swarp_vec3 p, swarp_vec4* h) {
+    *h = sw_xform_point(M, p);
+    if (!sw_finite(h->x) || !sw_finite(h->y) || !sw_finite(h->z) || !sw_finite(h->w))
+        return SWARP_ERR_NON_FINITE;
+    if (!(h->w > SW_BIAS_W_EPS)) return SWARP_ERR_BEHIND_PROJECTION;
+    return SWARP_OK;
+}
+
+static swarp_status sw_texel_size(const swarp_bias_map* map, swarp_vec3 p, double* L_s,
+                                  double* L_t) {
+    swarp_mat4 inv;
+    if (!sw_invert(&map->world_to_clip, &inv)) return SWARP_ERR_SINGULAR;
+    swarp_vec4 h;
+    swarp_status st = sw_project(&map->world_to_clip, p, &h);
+    if (st != SWARP_OK) return st;
+    const double nx = h.x / h.w, ny = h.y / h.w, nz = h.z / h.w;
+    /* one texel = 2/res in NDC; shift at constant depth and map back */
+    const double step[2][2] = {{2.0 / map->res_s, 0.0}, {0.0, 2.0 / map->res_t}};
+    double L[2];
+    for (int k = 0; k < 2; ++k) {
+        swarp_vec4 q = {nx + step[k][0], ny + step[k][1], nz, 1.0};
+        swarp_vec4 w = sw_xform4(&inv, q);
+        if (!(fabs(w.w) > SW_BIAS_W_EPS)) return SWARP_ERR_SINGULAR;
+        swarp_vec3 pw = sw_v3(w.x / w.w, w.y / w.w, w.z / w.w);
+        L[k] = sw_len(sw_sub(pw, p));
+        if (!sw_finite(L[k])) return SWARP_ERR_NON_FINITE;
+    }
+    *L_s = L[0];
+    *L_t = L[1];
+    return SWARP_OK;
+}
+
+SWARP_API swarp_status swarp_bias_texel_size(const swarp_bias_map* map, const swarp_vec3* p,
+                                             double* out_L_texel, double* out_L_s, double* out_L_t) {
+    if (!map || !p || (!out_L_texel && !out_L_s && !out_L_t)) return SWARP_ERR_NULL_POINTER;
+    swarp_status st = sw_map_check(map);
+    if (st != SWARP_OK) return st;
+    if (!sw_finite3(p)) return SWARP_ERR_NON_FINITE;
+    double Ls, Lt;
+    if ((st = sw_texel_size(map, *p, &Ls, &Lt)) != SWARP_OK) return st;
+    if (out_L_texel) *out_L_texel = Ls > Lt ? Ls : Lt;
+    if (out_L_s) *out_L_s = Ls;
+    if (out_L_t) *out_L_t = Lt;
+    return SWARP_OK;
+}
+
+SWARP_API swarp_status swarp_bias_to_light(const swarp_light* light, const swarp_vec3* p,
+                                           swarp_vec3* out_L) {
+    if (!light || !p || !out_L) return SWARP_ERR_NULL_POINTER;
+    swarp_status st = sw_light_check(light);
+    if (st != SWARP_OK) return st;
+    if (!sw_finite3(p)) return SWARP_ERR_NON_FINITE;
+    swarp_vec3 L;
+    if ((st = sw_to_light(light, *p, &L)) != SWARP_OK) return st;
+    *out_L = L;
+    return SWARP_OK;
+}
+
+/* Common front part: checks, L (to light) and L_texel = max(L_s, L_t). */
+static swarp_status sw_bias_prep(const swarp_bias_map* map, const swarp_light* light,
+                                 const swarp_vec3* p, swarp_vec3* L, double* L_texel) {
+    swarp_status st = sw_map_check(map);
+    if (st != SWARP_OK) return st;
+    if ((st = sw_light_check(light)) != SWARP_OK) return st;
+    if (!sw_finite3(p)) return SWARP_ERR_NON_FINITE;
+    if ((st = sw_to_light(light, *p, L)) != SWARP_OK) return st;
+    double Ls, Lt;
+    if ((st = sw_texel_size(map, *p, &Ls, &Lt)) != SWARP_OK) return st;
+    *L_texel = Ls > Lt ? Ls : Lt;
+    return SWARP_OK;
+}
+
+SWARP_API swarp_status swarp_bias_kozlov(const swarp_bias_map* map, const swarp_light* light,
+                                         const swarp_vec3* p, double a, double b,
+                                         swarp_vec3* out_p, double* out_amount) {
+    if (!map || !light || !p || !out_p) return SWARP_ERR_NULL_POINTER;
+    if (!sw_finite(a) || !sw_finite(b)) return SWARP_ERR_NON_FINITE;
+    swarp_vec3 L;
+    double L_texel;
+    swarp_status st = sw_bias_prep(map, light, p, &L, &L_texel);
+    if (st != SWARP_OK) return st;
+    /* [KOZ] §14.2.3: P_biased = P_orig + L (a + b L_texel) */
+    const double amount = a + b * L_texel;
+    if (!sw_finite(amount)) return SWARP_ERR_NON_FINITE;
+    if (amount < 0.0) return SWARP_ERR_OUT_OF_RANGE;
+    swarp_vec3 q = sw_add(*p, sw_scale(L, amount));
+    if (!sw_finite3(&q)) return SWARP_ERR_NON_FINITE;
+    *out_p = q;
+    if (out_amount) *out_amount = amount;
+    return SWARP_OK;
+}
+
+/* N.L for a unit normal, clamped to [0, 1]; *back = 1 when it was negative. */
+static double sw_ndotl(swarp_vec3 N, swarp_vec3 L, int* back) {
+    double ndl = sw_dot(N, L);
+    *back = ndl < 0.0;
+    if (ndl < 0.0) ndl = 0.0;
+    if (ndl > 1.0) ndl = 1.0;
+    return ndl;
+}
+
+SWARP_API swarp_status swarp_bias_normal_offset(const swarp_bias_map* map, const swarp_light* light,
+                                                const swarp_vec3* p, const swarp_vec3* normal,
+                                                double k, swarp_vec3* out_p, double* out_amount) {
+    if (!map || !light || !p || !normal || !out_p) return SWARP_ERR_NULL_POINTER;
+    if (!sw_finite(k) || !sw_finite3(normal)) return SWARP_ERR_NON_FINITE;
+    if (k < 0.0) return SWARP_ERR_OUT_OF_RANGE;
+    swarp_vec3 N;
+    if (!sw_normalize(*normal, &N)) return SWARP_ERR_ZERO_VECTOR;
+    swarp_vec3 L;
+    double L_texel;
+    swarp_status st = sw_bias_prep(map, light, p, &L, &L_texel);
+    if (st != SWARP_OK) return st;
+    int back;
+    const double ndl = sw_ndotl(N, L, &back);
+    const double amount = k * L_texel * (1.0 - ndl);
+    swarp_vec3 q = sw_add(*p, sw_scale(N, amount));
+    if (!sw_finite(amount) || !sw_finite3(&q)) return SWARP_ERR_NON_FINITE;
+    *out_p = q;
+    if (out_amount) *out_amount = amount;
+    return back ? SWARP_INFO_BACKFACING : SWARP_OK;
+}
+
+/* Window depth of a point (requires w > 0). */
+static swarp_status sw_window_depth(const swarp_bias_map* map, swarp_vec3 p, double* d) {
+    swarp_vec4 h;
+    swarp_status st = sw_project(&map->world_to_clip, p, &h);
+    if (st != SWARP_OK) return st;
+    const double z = h.z / h.w;
+    *d = map->depth == SWARP_DEPTH_ZERO_TO_ONE ? z : 0.5 * z + 0.5;
+    return SWARP_OK;
+}
+
+SWARP_API swarp_status swarp_bias_slope_scaled(const swarp_bias_map* map, const swarp_light* light,
+                                               const swarp_vec3* p, const swarp_vec3* normal,
+                                               double c, double s, double* out_world_bias,
+                                               double* out_depth_bias) {
+    if (!map || !light || !p || !normal || (!out_world_bias && !out_depth_bias))
+        return SWARP_ERR_NULL_POINTER;
+    if (!sw_finite(c) || !sw_finite(s) || !sw_finite3(normal)) return SWARP_ERR_NON_FINITE;
+    if (c < 0.0 || s < 0.0) return SWARP_ERR_OUT_OF_RANGE;
+    swarp_vec3 N;
+    if (!sw_normalize(*normal, &N)) return SWARP_ERR_ZERO_VECTOR;
+    swarp_vec3 L;
+    double L_texel;
+    swarp_status st = sw_bias_prep(map, light, p, &L, &L_texel);
+    if (st != SWARP_OK) return st;
+    int back;
+    const double ndl = sw_ndotl(N, L, &back);
+    /* tan of the angle between N and L: depth step per unit of lateral move */
+    double slope = SW_BIAS_MAX_SLOPE;
+    if (ndl * SW_BIAS_MAX_SLOPE > sqrt(1.0 - ndl * ndl)) slope = sqrt(1.0 - ndl * ndl) / ndl;
+    const double world_bias = c + s * L_texel * slope;
+    double d0, d1;
+    if ((st = sw_window_depth(map, *p, &d0)) != SWARP_OK) return st;
+    if ((st = sw_window_depth(map, sw_add(*p, sw_scale(L, world_bias)), &d1)) != SWARP_OK) return st;
+    const double depth_bias = d0 - d1;
+    if (!sw_finite(world_bias) || !sw_finite(depth_bias)) return SWARP_ERR_NON_FINITE;
+    if (out_world_bias) *out_world_bias = world_bias;
+    if (out_depth_bias) *out_depth_bias = depth_bias;
+    return back ? SWARP_INFO_BACKFACING : SWARP_OK;
+}
+
+/* Exact derivative of (s, t, d) (texels, texels, window depth) along a world
+ * direction T at p: for h = M p, ndc = h.xyz/h.w, d ndc = (M T).xyz/w -
+ * h.xyz (M T).w/w^2. */
+static void sw_texel_derivative(const swarp_bias_map* map, const swarp_vec4* h, swarp_vec3 T,
+                                double out[3]) {
+    swarp_vec4 t4 = {T.x, T.y, T.z, 0.0};
+    swarp_vec4 g = sw_xform4(&map->world_to_clip, t4);
+    const double iw = 1.0 / h->w, iw2 = iw * iw;
+    out[0] = 0.5 * map->res_s * (g.x * iw - h->x * g.w * iw2);
+    out[1] = 0.5 * map->res_t * (g.y * iw - h->y * g.w * iw2);
+    out[2] = sw_window_scale(map->depth) * (g.z * iw - h->z * g.w * iw2);
+}
+
+SWARP_API swarp_status swarp_bias_depth_per_world(const swarp_bias_map* map, const swarp_light* light,
+                                                  const swarp_vec3* p, double* out_depth_per_world) {
+    if (!map || !light || !p || !out_depth_per_world) return SWARP_ERR_NULL_POINTER;
+    swarp_status st = sw_map_check(map);
+    if (st != SWARP_OK) return st;
+    if ((st = sw_light_check(light)) != SWARP_OK) return st;
+    if (!sw_finite3(p)) return SWARP_ERR_NON_FINITE;
+    swarp_vec3 L;
+    if ((st = sw_to_light(light, *p, &L)) != SWARP_OK) return st;
+    swarp_vec4 h;
+    if ((st = sw_project(&map->world_to_clip, *p, &h)) != SWARP_OK) return st;
+    double dv[3];
+    sw_texel_derivative(map, &h, L, dv);
+    /* moving toward the light lowers the depth: report the decrease */
+    const double f = -dv[2];
+    if (!sw_finite(f)) return SWARP_ERR_NON_FINITE;
+    *out_depth_per_world = f;
+    return SWARP_OK;
+}
+
+SWARP_API swarp_status swarp_bias_receiver_plane(const swarp_bias_map* map, const swarp_vec3* p,
+                                                 const swarp_vec3* tangent_a,
+                                                 const swarp_vec3* tangent_b, double out_grad[2]) {
+    if (!map || !p || !tangent_a || !tangent_b || !out_grad) return SWARP_ERR_NULL_POINTER;
+    swarp_status st = sw_map_check(map);
+    if (st != SWARP_OK) return st;
+    if (!sw_finite3(p) || !sw_finite3(tangent_a) || !sw_finite3(tangent_b)) return SWARP_ERR_NON_FINITE;
+    if (!(sw_len(*tangent_a) > 0.0) || !(sw_len(*tangent_b) > 0.0)) return SWARP_ERR_ZERO_VECTOR;
+    swarp_vec4 h;
+    if ((st = sw_project(&map->world_to_clip, *p, &h)) != SWARP_OK) return st;
+    double a[3], b[3];
+    sw_texel_derivative(map, &h, *tangent_a, a);
+    sw_texel_derivative(map, &h, *tangent_b, b);
+    /* Solve g . (ds, dt) = dd for both tangents (Isidoro's receiver plane). */
+    const double det = a[0] * b[1] - b[0] * a[1];
+    /* |det| below 1e-12 of the product of the two texel-space lengths: the
+     * tangents' images are parallel to ~1e-12 rad, i.e. the plane is edge-on. */
+    const double scale = (fabs(a[0]) + fabs(a[1])) * (fabs(b[0]) + fabs(b[1]));
+    if (!(fabs(det) > 1e-12 * scale)) return SWARP_ERR_DEGENERATE;
+    const double g_s = (a[2] * b[1] - b[2] * a[1]) / det;
+    const double g_t = (a[0] * b[2] - b[0] * a[2]) / det;
+    if (!sw_finite(g_s) || !sw_finite(g_t)) return SWARP_ERR_NON_FINITE;
+    out_grad[0] = g_s;
+    out_grad[1] = g_t;
+    return SWARP_OK;
+}

@@ -1,0 +1,883 @@
+#define _POSIX_C_SOURCE 200809L
+/* Splits stage: atlas and kernel scale [RHS] §3.3.5 (3.9), flicker reduction
+ * [RHS] §3.5, bias [KOZ] §14.2.3, cascades [RHS] §3.3-3.4, §4.1-4.2. */
+#include <check.h>
+#include <math.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "shadowwarp.h"
+
+/* ---- small seeded PRNG (splitmix64) ------------------------------------ */
+static uint64_t rng_state;
+static uint64_t rng_next(void) {
+    uint64_t z = (rng_state += 0x9E3779B97F4A7C15ull);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    return z ^ (z >> 31);
+}
+static double rng_uniform(double a, double b) {
+    return a + (b - a) * ((double)(rng_next() >> 11) * (1.0 / 9007199254740992.0));
+}
+
+#define PI 3.14159265358979323846
+
+static swarp_vec3 v3(double x, double y, double z) {
+    swarp_vec3 v = {x, y, z};
+    return v;
+}
+static swarp_vec3 vsub(swarp_vec3 a, swarp_vec3 b) { return v3(a.x - b.x, a.y - b.y, a.z - b.z); }
+static swarp_vec3 vadd(swarp_vec3 a, swarp_vec3 b) { return v3(a.x + b.x, a.y + b.y, a.z + b.z); }
+static swarp_vec3 vscale(swarp_vec3 a, double s) { return v3(a.x * s, a.y * s, a.z * s); }
+static double vdot(swarp_vec3 a, swarp_vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+static swarp_vec3 vcross(swarp_vec3 a, swarp_vec3 b) {
+    return v3(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x);
+}
+static double vlen(swarp_vec3 a) { return sqrt(vdot(a, a)); }
+static swarp_vec3 vnorm(swarp_vec3 a) { return vscale(a, 1.0 / vlen(a)); }
+static swarp_vec3 rand_unit(void) {
+    for (;;) {
+        swarp_vec3 v = v3(rng_uniform(-1, 1), rng_uniform(-1, 1), rng_uniform(-1, 1));
+        double l = vlen(v);
+        if (l > 0.1 && l <= 1.0) return vscale(v, 1.0 / l);
+    }
+}
+/* homogeneous transform, written out independently of the library */
+static void xform(const swarp_mat4* m, swarp_vec3 p, double out[4]) {
+    for (int r = 0; r < 4; ++r)
+        out[r] = m->m[r] * p.x + m->m[4 + r] * p.y + m->m[8 + r] * p.z + m->m[12 + r];
+}
+
+static swarp_camera make_camera(swarp_vec3 eye, swarp_vec3 dir, double fovy, double aspect,
+                                double n, double f) {
+    swarp_camera c;
+    memset(&c, 0, sizeof c);
+    c.eye = eye;
+    c.dir = dir;
+    c.up = fabs(vnorm(dir).y) > 0.95 ? v3(1, 0, 0) : v3(0, 1, 0);
+    c.fovy = fovy;
+    c.aspect = aspect;
+    c.near = n;
+    c.far = f;
+    return c;
+}
+
+/* frustum slice corners computed here (not with the library's helper) */
+static void corners(const swarp_camera* c, double n, double f, swarp_vec3 out[8]) {
+    swarp_vec3 fw = vnorm(c->dir), r = vnorm(vcross(fw, c->up)), u = vcross(r, fw);
+    double t = tan(c->fovy / 2);
+    int k = 0;
+    for (int s = 0; s < 2; ++s)
+        for (int i = 0; i < 4; ++i) {
+            double z = s ? f : n;
+            double x = (i & 1 ? 1 : -1) * z * t * c->aspect, y = (i & 2 ? 1 : -1) * z * t;
+            out[k++] = vadd(vadd(vadd(c->eye, vscale(fw, z)), vscale(r, x)), vscale(u, y));
+        }
+}
+
+/* ======================================================================= */
+/* Atlas [RHS] §3.3.5, (3.9)                                               */
+/* ======================================================================= */
+
+START_TEST(atlas_tiles_partition_the_atlas) {
+    /* Fig. 3.16: grids of 2x2, 3x3, 4x4; tiles disjoint, inside the atlas, and
+     * clip_to_atlas maps the clip square onto exactly the tile rectangle. */
+    for (uint32_t m = 1; m <= SWARP_ATLAS_MAX_SPLITS; ++m) {
+        for (int dr = 1; dr <= 2; ++dr) {
+            swarp_atlas_info info;
+            swarp_atlas_tile tiles[SWARP_ATLAS_MAX_SPLITS];
+            size_t count = 0;
+            const uint32_t res = 1024;
+            ck_assert_int_eq(swarp_atlas_layout(m, res, (swarp_depth_range)dr, &info, tiles,
+                                                SWARP_ATLAS_MAX_SPLITS, &count),
+                             SWARP_OK);
+            ck_assert_uint_eq(count, m);
+            uint32_t g = m == 1 ? 1 : m <= 4 ? 2 : m <= 9 ? 3 : 4;
+            ck_assert_uint_eq(info.grid, g);
+            ck_assert(info.l_sc == 1.0 / g);
+            ck_assert(info.atlas_res == (double)g * res);
+            for (uint32_t i = 0; i < m; ++i) {
+                const swarp_atlas_tile* t = &tiles[i];
+                ck_assert(t->viewport_width == res && t->viewport_height == res);
+                ck_assert(t->viewport_x >= 0 && t->viewport_x + res <= info.atlas_res);
+                ck_assert(t->viewport_y >= 0 && t->viewport_y + res <= info.atlas_res);
+                for (uint32_t j = 0; j < i; ++j) /* disjoint */
+                    ck_assert(fabs(tiles[j].viewport_x - t->viewport_x) >= res ||
+                              fabs(tiles[j].viewport_y - t->viewport_y) >= res);
+                /* a homogeneous clip point with w != 1 */
+                for (int c = 0; c < 4; ++c) {
+                    double x = c & 1 ? 1 : -1, y = c & 2 ? 1 : -1, w = 2.5;
+                    double zc = (dr == 1 ? -1.0 : 0.0) * w; /* near plane */
+                    double h[4];
+                    xform(&t->clip_to_atlas, v3(x * w, y * w, zc), h);
+                    /* xform adds column 3 once: the clip w is 1 there, so
+                     * scale the input by hand instead */
+                    (void)h;
+                    double in[4] = {x * w, y * w, zc, w}, o[4];
+                    for (int r = 0; r < 4; ++r) {
+                        o[r] = 0;
+                        for (int k = 0; k < 4; ++k) o[r] += t->clip_to_atlas.m[k * 4 + r] * in[k];
+                    }
+                    double u = o[0] / o[3], v = o[1] / o[3], d = o[2] / o[3];
+                    double eu = (t->viewport_x + (x > 0 ? res : 0)) / info.atlas_res;
+                    double ev = (t->viewport_y + (y > 0 ? res : 0)) / info.atlas_res;
+                    ck_assert_double_eq_tol(u, eu, 1e-15);
+                    ck_assert_double_eq_tol(v, ev, 1e-15);
+                    ck_assert_double_eq_tol(d, 0.0, 1e-15);
+                }
+            }
+        }
+    }
+}
+END_TEST
+
+START_TEST(atlas_lsc_and_kernel_scale) {
+    /* [RHS] (3.9) l_sc table, literally */
+    for (uint32_t m = 1; m <= 16; ++m) {
+        double l;
+        ck_assert_int_eq(swarp_atlas_lsc(m, &l), SWARP_OK);
+        double e = m == 1 ? 1.0 : (m <= 4 ? 0.5 : (m <= 9 ? 1.0 / 3.0 : 0.25));
+        ck_assert(l == e);
+    }
+    double s[2];
+    ck_assert_int_eq(swarp_atlas_kernel_scale(0.3, 4, -10, 30, 5, 25, s), SWARP_OK);
+    ck_assert_double_eq_tol(s[0], 0.3 * 0.5 * 2.0 / 40.0, 1e-17);
+    ck_assert_double_eq_tol(s[1], 0.3 * 0.5 * 2.0 / 20.0, 1e-17);
+    /* defining property: the kernel's world size is r_l in every split.  In
+     * atlas texture coordinates a split of world width W spans l_sc, so s/2
+     * atlas units are (s/2)/l_sc * W world units. */
+    rng_state = 11;
+    for (int it = 0; it < 200; ++it) {
+        uint32_t m = 1 + (uint32_t)(rng_next() % 16);
+        double r_l = rng_uniform(0.01, 2.0), lo = rng_uniform(-1e5, 1e5), W = rng_uniform(1, 1e4);
+        double l;
+        swarp_atlas_lsc(m, &l);
+        ck_assert_int_eq(swarp_atlas_kernel_scale(r_l, m, lo, lo + W, lo, lo + 2 * W, s), SWARP_OK);
+        ck_assert_double_eq_tol(s[0] / 2.0 / l * W, r_l, 1e-9 * r_l);
+        ck_assert_double_eq_tol(s[1] / 2.0 / l * 2 * W, r_l, 1e-9 * r_l);
+    }
+}
+END_TEST
+
+START_TEST(atlas_bad_inputs) {
+    swarp_atlas_tile tiles[SWARP_ATLAS_MAX_SPLITS], sent[SWARP_ATLAS_MAX_SPLITS];
+    memset(tiles, 0xA5, sizeof tiles);
+    memcpy(sent, tiles, sizeof tiles);
+    swarp_atlas_info info, isent;
+    memset(&info, 0x5A, sizeof info);
+    isent = info;
+    size_t count = 777;
+    ck_assert_int_eq(swarp_atlas_layout(0, 512, 0, &info, tiles, 16, &count), SWARP_ERR_ATLAS_SPLITS);
+    ck_assert_int_eq(swarp_atlas_layout(17, 512, 0, &info, tiles, 16, &count), SWARP_ERR_ATLAS_SPLITS);
+    ck_assert_int_eq(swarp_atlas_layout(4, 0, 0, &info, tiles, 16, &count), SWARP_ERR_RESOLUTION);
+    ck_assert_int_eq(swarp_atlas_layout(4, 512, (swarp_depth_range)7, &info, tiles, 16, &count),
+                     SWARP_ERR_UNKNOWN_ENUM);
+    ck_assert_int_eq(swarp_atlas_layout(4, 512, 0, &info, NULL, 16, &count), SWARP_ERR_NULL_POINTER);
+    ck_assert_int_eq(swarp_atlas_layout(4, 512, 0, &info, tiles, 16, NULL), SWARP_ERR_NULL_POINTER);
+    ck_assert_uint_eq(count, 777);
+    ck_assert_int_eq(swarp_atlas_layout(9, 512, 0, &info, tiles, 8, &count), SWARP_ERR_CAPACITY);
+    ck_assert_uint_eq(count, 9);
+    ck_assert_mem_eq(tiles, sent, sizeof tiles);
+    ck_assert_mem_eq(&info, &isent, sizeof info);
+    double s[2] = {-7, -7};
+    ck_assert_int_eq(swarp_atlas_kernel_scale(1, 4, 1, 1, 0, 1, s), SWARP_ERR_OUT_OF_RANGE);
+    ck_assert_int_eq(swarp_atlas_kernel_scale(-1, 4, 0, 1, 0, 1, s), SWARP_ERR_OUT_OF_RANGE);
+    ck_assert_int_eq(swarp_atlas_kernel_scale(NAN, 4, 0, 1, 0, 1, s), SWARP_ERR_NON_FINITE);
+    ck_assert_int_eq(swarp_atlas_kernel_scale(1, 0, 0, 1, 0, 1, s), SWARP_ERR_ATLAS_SPLITS);
+    ck_assert_int_eq(swarp_atlas_kernel_scale(1, 4, 0, INFINITY, 0, 1, s), SWARP_ERR_NON_FINITE);
+    ck_assert_int_eq(swarp_atlas_kernel_scale(1, 4, 0, 1, 0, 1, NULL), SWARP_ERR_NULL_POINTER);
+    ck_assert(s[0] == -7 && s[1] == -7);
+    double l = -3;
+    ck_assert_int_eq(swarp_atlas_lsc(0, &l), SWARP_ERR_ATLAS_SPLITS);
+    ck_assert_int_eq(swarp_atlas_lsc(4, NULL), SWARP_ERR_NULL_POINTER);
+    ck_assert(l == -3);
+}
+END_TEST
+
+/* ======================================================================= */
+/* Stabilisation [RHS] §3.5                                                */
+/* ======================================================================= */
+
+/* Smallest sphere through 2, 3 or 4 points (circumsphere of the simplex);
+ * returns 0 when degenerate. */
+static int circum(const swarp_vec3* p, int k, swarp_vec3* c, double* r) {
+    if (k == 2) {
+        *c = vscale(vadd(p[0], p[1]), 0.5);
+        *r = vlen(vsub(p[0], *c));
+        return 1;
+    }
+    swarp_vec3 a = vsub(p[1], p[0]), b = vsub(p[2], p[0]);
+    if (k == 3) {
+        swarp_vec3 axb = vcross(a, b);
+        double d = 2 * vdot(axb, axb);
+        if (d < 1e-18 * vdot(a, a) * vdot(b, b)) return 0;
+        swarp_vec3 t = vadd(vscale(vcross(axb, a), vdot(b, b)), vscale(vcross(b, axb), vdot(a, a)));
+        *c = vadd(p[0], vscale(t, 1.0 / d));
+        *r = vlen(vsub(p[0], *c));
+        return 1;
+    }
+    swarp_vec3 e = vsub(p[3], p[0]);
+    double det = vdot(a, vcross(b, e));
+    if (fabs(det) < 1e-12 * vlen(a) * vlen(b) * vlen(e)) return 0;
+    swarp_vec3 t = vadd(vadd(vscale(vcross(b, e), vdot(a, a)), vscale(vcross(e, a), vdot(b, b))),
+                        vscale(vcross(a, b), vdot(e, e)));
+    *c = vadd(p[0], vscale(t, 1.0 / (2 * det)));
+    *r = vlen(vsub(p[0], *c));
+    return 1;
+}
+
+/* Brute-force minimal enclosing sphere of 8 points: the smallest of all
+ * spheres through 2, 3 or 4 of them that contains all 8 (the minimal sphere
+ * is always such a sphere). */
+static double brute_min_sphere(const swarp_vec3 pts[8], swarp_vec3* best_c) {
+    double best = INFINITY;
+    int idx[4];
+    for (int k = 2; k <= 4; ++k) {
+        for (int m = 0; m < 256; ++m) {
+            if (__builtin_popcount(m) != k) continue;
+            int n = 0;
+            for (int i = 0; i < 8; ++i)
+                if (m & (1 << i)) idx[n++] = i;
+            swarp_vec3 s[4];
+            for (int i = 0; i < k; ++i) s[i] = pts[idx[i]];
+            swarp_vec3 c;
+            double r;
+            if (!circum(s, k, &c, &r) || r >= best) continue;
+            int ok = 1;
+            for (int i = 0; i < 8 && ok; ++i) ok = vlen(vsub(pts[i], c)) <= r * (1 + 1e-12);
+            if (ok) {
+                best = r;
+                *best_c = c;
+            }
+        }
+    }
+    return best;
+}
+
+START_TEST(stabilize_min_sphere_is_exact_and_beats_centroid) {
+    rng_state = 2024;
+    double saved_sum = 0;
+    for (int it = 0; it < 300; ++it) {
+        swarp_camera cam = make_camera(v3(rng_uniform(-100, 100), rng_uniform(-100, 100), rng_uniform(-100, 100)),
+                                       rand_unit(), rng_uniform(0.2, 2.6), rng_uniform(0.3, 3.0), 0.1, 1000);
+        double n = rng_uniform(0.1, 50), f = n * rng_uniform(1.01, 100);
+        swarp_vec3 c, bc = v3(0, 0, 0), pts[8];
+        double r, rc;
+        ck_assert_int_eq(swarp_stabilize_sphere(&cam, n, f, &c, &r, &rc), SWARP_OK);
+        corners(&cam, n, f, pts);
+        double br = brute_min_sphere(pts, &bc);
+        ck_assert_double_eq_tol(r, br, 1e-9 * br);
+        ck_assert_double_eq_tol(vlen(vsub(c, bc)), 0.0, 1e-6 * br);
+        /* centroid sphere: centre = mean of corners, radius = max distance */
+        swarp_vec3 m = v3(0, 0, 0);
+        for (int i = 0; i < 8; ++i) m = vadd(m, vscale(pts[i], 0.125));
+        double mr = 0;
+        for (int i = 0; i < 8; ++i) mr = fmax(mr, vlen(vsub(pts[i], m)));
+        ck_assert_double_eq_tol(rc, mr, 1e-9 * mr);
+        ck_assert(r <= rc * (1 + 1e-12));
+        saved_sum += 1 - (r / rc) * (r / rc);
+    }
+    ck_assert(saved_sum > 0); /* it saves area on average */
+}
+END_TEST
+
+/* Texel coordinates (s, t) of a world point under a matrix that takes
+ * origin-relative coordinates. */
+static void texel_of(const swarp_mat4* m, swarp_vec3 p_rel, double res, double st[2]) {
+    double h[4];
+    xform(m, p_rel, h);
+    st[0] = (h[0] / h[3] * 0.5 + 0.5) * res;
+    st[1] = (h[1] / h[3] * 0.5 + 0.5) * res;
+}
+static double frac_dist(double x) { return fabs(x - nearbyint(x)); }
+
+/* A camera wandering by small random moves and rotations (sub-texel to several
+ * texels): 1000 steps.  mode SPHERE or LEVELS.  Returns the number of level
+ * changes seen. */
+static int run_walk(swarp_stabilize_mode mode, double world_offset, int expect_integer) {
+    const uint32_t res = 1024;
+    const double n = 1, f = 60;
+    swarp_vec3 base = v3(world_offset + 3, 10, world_offset - 7);
+    swarp_camera cam = make_camera(base, v3(0.3, -0.4, -1), 0.9, 1.5, n, f);
+    swarp_vec3 light = v3(0.4, -1, 0.25);
+    swarp_stabilize_options o;
+    memset(&o, 0, sizeof o);
+    o.mode = mode;
+    o.origin = v3(world_offset, 0, world_offset); /* caller's local origin */
+    swarp_vec3 P = vadd(base, v3(5, -3, -20));    /* fixed world point */
+    double prev[2] = {0, 0}, prev_tx = 0, prev_ty = 0;
+    uint32_t prev_level = 0, prev_level_y = 0;
+    int level_changes = 0, non_integer = 0;
+    for (int it = 0; it < 1000; ++it) {
+        /* texel ~ 2*60*1.2/1024 ~ 0.1..0.2 world units: moves up to 0.6 */
+        cam.eye = vadd(cam.eye, v3(rng_uniform(-0.6, 0.6), rng_uniform(-0.2, 0.2), rng_uniform(-0.6, 0.6)));
+        swarp_vec3 fw = vnorm(cam.dir), rt = vnorm(vcross(fw, v3(0, 1, 0)));
+        double a = rng_uniform(-0.01, 0.01);
+        cam.dir = vnorm(vadd(fw, vscale(rt, a)));
+        cam.dir.y = fmax(-0.7, fmin(-0.2, cam.dir.y + rng_uniform(-0.005, 0.005)));
+        swarp_vec3 body[8];
+        corners(&cam, n, f, body);
+        swarp_mat4 M;
+        swarp_stabilize_report rep;
+        swarp_status st = swarp_stabilize_directional(&cam, n, f, &light, body, 8, NULL, res, &o, &M, &rep);
+        ck_assert(st == SWARP_OK || st == SWARP_INFO_LEVEL_ABOVE_RANGE);
+        /* the map covers the split: every body corner inside the clip square */
+        for (int i = 0; i < 8; ++i) {
+            double h[4];
+            xform(&M, vsub(body[i], o.origin), h);
+            ck_assert(fabs(h[0]) <= 1 + 1e-12 && fabs(h[1]) <= 1 + 1e-12);
+            ck_assert(h[2] >= -1 - 1e-12 && h[2] <= 1 + 1e-12);
+        }
+        double stc[2];
+        texel_of(&M, vsub(P, o.origin), res, stc);
+        if (it > 0) {
+            int same_level = mode == SWARP_STABILIZE_SPHERE ||
+                             (rep.level_x == prev_level && rep.level_y == prev_level_y);
+            if (same_level) {
+                if (expect_integer) {
+                    ck_assert_msg(frac_dist(stc[0] - prev[0]) < 1e-6, "s moved by %.9g", stc[0] - prev[0]);
+                    ck_assert_msg(frac_dist(stc[1] - prev[1]) < 1e-6, "t moved by %.9g", stc[1] - prev[1]);
+                    ck_assert(rep.texel_size_x == prev_tx && rep.texel_size_y == prev_ty);
+                } else if (frac_dist(stc[0] - prev[0]) > 1e-3) {
+                    ++non_integer;
+                }
+            } else {
+                ++level_changes;
+                ck_assert(rep.texel_size_x != prev_tx || rep.texel_size_y != prev_ty);
+            }
+        }
+        prev[0] = stc[0];
+        prev[1] = stc[1];
+        prev_tx = rep.texel_size_x;
+        prev_ty = rep.texel_size_y;
+        prev_level = rep.level_x;
+        prev_level_y = rep.level_y;
+    }
+    if (!expect_integer) ck_assert_int_gt(non_integer, 500);
+    return level_changes;
+}
+
+START_TEST(stabilize_sphere_whole_texels_1000_moves) {
+    rng_state = 77;
+    run_walk(SWARP_STABILIZE_SPHERE, 0.0, 1);
+    /* large world: camera ~3e5 from the world origin, origin near the camera */
+    rng_state = 78;
+    run_walk(SWARP_STABILIZE_SPHERE, 3e5, 1);
+}
+END_TEST
+
+START_TEST(stabilize_levels_whole_texels_between_level_changes) {
+    rng_state = 79;
+    int changes = run_walk(SWARP_STABILIZE_LEVELS, 0.0, 1);
+    ck_assert_int_lt(changes, 500); /* the scale is quantised: mostly constant */
+    rng_state = 80;
+    run_walk(SWARP_STABILIZE_LEVELS, 1e6, 1);
+}
+END_TEST
+
+START_TEST(stabilize_none_does_flicker) {
+    /* the same walk without stabilisation moves texels by fractions: the
+     * assertions above are not vacuous */
+    rng_state = 81;
+    run_walk(SWARP_STABILIZE_NONE, 0.0, 0);
+}
+END_TEST
+
+START_TEST(stabilize_sphere_size_constant_and_levels_quantised) {
+    swarp_camera cam = make_camera(v3(0, 5, 0), v3(0, -0.3, -1), 1.0, 1.0, 1, 100);
+    swarp_vec3 light = v3(0, -1, 0.1), body[8];
+    corners(&cam, 1, 100, body);
+    swarp_stabilize_options o;
+    memset(&o, 0, sizeof o);
+    o.mode = SWARP_STABILIZE_SPHERE;
+    swarp_mat4 M;
+    swarp_stabilize_report rep;
+    ck_assert_int_eq(swarp_stabilize_directional(&cam, 1, 100, &light, NULL, 0, NULL, 2048, &o, &M, &rep), SWARP_OK);
+    /* world size of the map = 2 r res/(res - 1) */
+    ck_assert_double_eq_tol(rep.texel_size_x * 2048, 2 * rep.sphere_radius * 2048 / 2047.0, 1e-9);
+    ck_assert(rep.texel_size_x == rep.texel_size_y);
+    ck_assert(rep.area_saved > 0 && rep.area_saved < 1);
+    o.mode = SWARP_STABILIZE_LEVELS;
+    o.levels = 16;
+    ck_assert_int_eq(swarp_stabilize_directional(&cam, 1, 100, &light, body, 8, NULL, 2048, &o, &M, &rep), SWARP_OK);
+    double step = 2 * rep.sphere_radius / 16;
+    ck_assert_double_eq_tol(rep.texel_size_x * 2048, rep.level_x * step, 1e-9);
+    ck_assert_double_eq_tol(rep.texel_size_y * 2048, rep.level_y * step, 1e-9);
+    ck_assert(rep.level_x >= 1 && rep.level_x <= 16);
+}
+END_TEST
+
+START_TEST(stabilize_bad_inputs) {
+    swarp_camera cam = make_camera(v3(0, 5, 0), v3(0, -0.3, -1), 1.0, 1.0, 1, 100);
+    swarp_vec3 light = v3(0, -1, 0.1), body[8];
+    corners(&cam, 1, 100, body);
+    swarp_stabilize_options o;
+    memset(&o, 0, sizeof o);
+    swarp_mat4 M, Ms;
+    memset(&M, 0x7F, sizeof M);
+    Ms = M;
+    swarp_stabilize_report rep, reps;
+    memset(&rep, 0x3C, sizeof rep);
+    reps = rep;
+#define BAD(expr, code) ck_assert_int_eq((expr), (code))
+    BAD(swarp_stabilize_directional(NULL, 1, 100, &light, body, 8, NULL, 512, &o, &M, &rep), SWARP_ERR_NULL_POINTER);
+    BAD(swarp_stabilize_directional(&cam, 1, 100, &light, NULL, 0, NULL, 512, &o, &M, &rep), SWARP_ERR_NULL_POINTER);
+    BAD(swarp_stabilize_directional(&cam, 100, 1, &light, body, 8, NULL, 512, &o, &M, &rep), SWARP_ERR_NEAR_FAR);
+    BAD(swarp_stabilize_directional(&cam, 0, 1, &light, body, 8, NULL, 512, &o, &M, &rep), SWARP_ERR_NEAR_FAR);
+    BAD(swarp_stabilize_directional(&cam, NAN, 1, &light, body, 8, NULL, 512, &o, &M, &rep), SWARP_ERR_NON_FINITE);
+    BAD(swarp_stabilize_directional(&cam, 1, 100, &light, body, 8, NULL, 1, &o, &M, &rep), SWARP_ERR_RESOLUTION);
+    swarp_vec3 zero = v3(0, 0, 0);
+    BAD(swarp_stabilize_directional(&cam, 1, 100, &zero, body, 8, NULL, 512, &o, &M, &rep), SWARP_ERR_ZERO_VECTOR);
+    o.mode = (swarp_stabilize_mode)9;
+    BAD(swarp_stabilize_directional(&cam, 1, 100, &light, body, 8, NULL, 512, &o, &M, &rep), SWARP_ERR_UNKNOWN_ENUM);
+    o.mode = 0;
+    o._reserved[2] = 1;
+    BAD(swarp_stabilize_directional(&cam, 1, 100, &light, body, 8, NULL, 512, &o, &M, &rep), SWARP_ERR_RESERVED_NONZERO);
+    o._reserved[2] = 0;
+    o.level_max_size = -1;
+    BAD(swarp_stabilize_directional(&cam, 1, 100, &light, body, 8, NULL, 512, &o, &M, &rep), SWARP_ERR_OUT_OF_RANGE);
+    o.level_max_size = 0;
+    swarp_camera bad = cam;
+    bad.fovy = PI;
+    BAD(swarp_stabilize_directional(&bad, 1, 100, &light, body, 8, NULL, 512, &o, &M, &rep), SWARP_ERR_FOV);
+    bad = cam;
+    bad.up = bad.dir;
+    BAD(swarp_stabilize_directional(&bad, 1, 100, &light, body, 8, NULL, 512, &o, &M, &rep), SWARP_ERR_DEGENERATE);
+    bad = cam;
+    bad._reserved[0] = 3;
+    BAD(swarp_stabilize_directional(&bad, 1, 100, &light, body, 8, NULL, 512, &o, &M, &rep), SWARP_ERR_RESERVED_NONZERO);
+    swarp_vec3 nanbody[2] = {v3(0, 0, 0), v3(NAN, 0, 0)};
+    BAD(swarp_stabilize_directional(&cam, 1, 100, &light, nanbody, 2, NULL, 512, &o, &M, &rep), SWARP_ERR_NON_FINITE);
+    /* a single point (no extent) without stabilisation cannot be focused */
+    BAD(swarp_stabilize_directional(&cam, 1, 100, &light, body, 1, NULL, 512, &o, &M, &rep), SWARP_ERR_DEGENERATE);
+    ck_assert_mem_eq(&M, &Ms, sizeof M);
+    ck_assert_mem_eq(&rep, &reps, sizeof rep);
+    swarp_vec3 c = v3(9, 9, 9);
+    double r = 9;
+    BAD(swarp_stabilize_sphere(&cam, 5, 5, &c, &r, NULL), SWARP_ERR_NEAR_FAR);
+    BAD(swarp_stabilize_sphere(&cam, 1, 5, NULL, &r, NULL), SWARP_ERR_NULL_POINTER);
+    ck_assert(c.x == 9 && r == 9);
+    BAD(swarp_stabilize_light_view(&zero, &M), SWARP_ERR_ZERO_VECTOR);
+    ck_assert_mem_eq(&M, &Ms, sizeof M);
+#undef BAD
+}
+END_TEST
+
+/* ======================================================================= */
+/* Bias [KOZ] §14.2.3                                                      */
+/* ======================================================================= */
+
+/* An orthographic light map built here independently: basis (u, v, w) from a
+ * random light direction, half sizes hx, hy, depth range [t0, t1] along d. */
+typedef struct ortho_map {
+    swarp_bias_map map;
+    swarp_vec3 u, v, d;
+    double hx, hy, t0, t1;
+} ortho_map;
+
+static ortho_map make_ortho(swarp_vec3 d, swarp_vec3 centre, double hx, double hy, double t0,
+                            double t1, double res_s, double res_t) {
+    ortho_map o;
+    memset(&o, 0, sizeof o);
+    o.d = vnorm(d);
+    o.u = vnorm(vcross(o.d, fabs(o.d.z) < 0.9 ? v3(0, 0, 1) : v3(1, 0, 0)));
+    o.v = vcross(o.u, o.d);
+    o.hx = hx;
+    o.hy = hy;
+    o.t0 = t0;
+    o.t1 = t1;
+    swarp_vec3 rows[3] = {vscale(o.u, 1 / hx), vscale(o.v, 1 / hy), vscale(o.d, 2 / (t1 - t0))};
+    double tr[3] = {-vdot(o.u, centre) / hx, -vdot(o.v, centre) / hy,
+                    -2 * vdot(o.d, centre) / (t1 - t0) - (t1 + t0) / (t1 - t0)};
+    for (int r = 0; r < 3; ++r) {
+        o.map.world_to_clip.m[0 + r] = ((double*)&rows[r])[0];
+        o.map.world_to_clip.m[4 + r] = ((double*)&rows[r])[1];
+        o.map.world_to_clip.m[8 + r] = ((double*)&rows[r])[2];
+        o.map.world_to_clip.m[12 + r] = tr[r];
+    }
+    o.map.world_to_clip.m[15] = 1;
+    o.map.res_s = res_s;
+    o.map.res_t = res_t;
+    o.map.depth = SWARP_DEPTH_NEG_ONE_TO_ONE;
+    return o;
+}
+
+START_TEST(bias_texel_size_uniform_equals_footprint) {
+    rng_state = 5;
+    for (int it = 0; it < 500; ++it) {
+        swarp_vec3 c = v3(rng_uniform(-1e5, 1e5), rng_uniform(-1e3, 1e3), rng_uniform(-1e5, 1e5));
+        double hx = rng_uniform(1, 500), hy = rng_uniform(1, 500);
+        double rs = floor(rng_uniform(64, 4096)), rt = floor(rng_uniform(64, 4096));
+        ortho_map o = make_ortho(rand_unit(), c, hx, hy, -300, 400, rs, rt);
+        swarp_vec3 p = vadd(c, v3(rng_uniform(-hx, hx), rng_uniform(-50, 50), rng_uniform(-hy, hy)));
+        double L, Ls, Lt;
+        ck_assert_int_eq(swarp_bias_texel_size(&o.map, &p, &L, &Ls, &Lt), SWARP_OK);
+        /* analytic footprint of a uniform map: width / resolution */
+        ck_assert_double_eq_tol(Ls, 2 * hx / rs, 1e-7 * Ls);
+        ck_assert_double_eq_tol(Lt, 2 * hy / rt, 1e-7 * Lt);
+        ck_assert(L == fmax(Ls, Lt));
+    }
+}
+END_TEST
+
+START_TEST(bias_texel_size_perspective_map_is_exact) {
+    /* A perspective light map (a warped map's shape): at view depth z the
+     * texel at constant depth is 2 z tan(fovy/2) aspect / res wide anywhere in
+     * the map, not only at the centre. */
+    rng_state = 6;
+    for (int it = 0; it < 300; ++it) {
+        double fovy = rng_uniform(0.3, 2.0), aspect = rng_uniform(0.5, 2), n = rng_uniform(0.5, 5),
+               f = n * rng_uniform(5, 500);
+        double t = tan(fovy / 2), res = 1024;
+        swarp_bias_map map;
+        memset(&map, 0, sizeof map);
+        double *m = map.world_to_clip.m; /* gluPerspective, eye at 0 looking down -z */
+        m[0] = 1 / (t * aspect);
+        m[5] = 1 / t;
+        m[10] = -(f + n) / (f - n);
+        m[11] = -1;
+        m[14] = -2 * f * n / (f - n);
+        map.res_s = map.res_t = res;
+        double z = rng_uniform(n, f);
+        swarp_vec3 p = v3(rng_uniform(-0.9, 0.9) * z * t * aspect, rng_uniform(-0.9, 0.9) * z * t, -z);
+        double Ls, Lt;
+        ck_assert_int_eq(swarp_bias_texel_size(&map, &p, NULL, &Ls, &Lt), SWARP_OK);
+        ck_assert_double_eq_tol(Ls, 2 * z * t * aspect / res, 1e-8 * Ls);
+        ck_assert_double_eq_tol(Lt, 2 * z * t / res, 1e-8 * Lt);
+    }
+}
+END_TEST
+
+START_TEST(bias_kozlov_moves_toward_light_by_amount) {
+    rng_state = 7;
+    for (int it = 0; it < 300; ++it) {
+        swarp_vec3 c = v3(rng_uniform(-1e4, 1e4), 0, rng_uniform(-1e4, 1e4));
+        ortho_map o = make_ortho(rand_unit(), c, 100, 100, -300, 300, 2048, 2048);
+        swarp_light L;
+        memset(&L, 0, sizeof L);
+        int point = it & 1;
+        L.type = point ? SWARP_LIGHT_POINT : SWARP_LIGHT_DIRECTIONAL;
+        L.direction = rand_unit();
+        L.position = vadd(c, vscale(rand_unit(), 500));
+        swarp_vec3 p = vadd(c, v3(rng_uniform(-50, 50), rng_uniform(-50, 50), rng_uniform(-50, 50)));
+        double a = rng_uniform(0, 0.1), b = rng_uniform(0, 3), amount, Lt;
+        swarp_vec3 q;
+        ck_assert_int_eq(swarp_bias_kozlov(&o.map, &L, &p, a, b, &q, &amount), SWARP_OK);
+        swarp_bias_texel_size(&o.map, &p, &Lt, NULL, NULL);
+        ck_assert_double_eq_tol(amount, a + b * Lt, 1e-12);
+        ck_assert_double_eq_tol(vlen(vsub(q, p)), amount, 1e-9);
+        if (point) /* distance to the light shrinks by exactly the amount */
+            ck_assert_double_eq_tol(vlen(vsub(L.position, p)) - vlen(vsub(L.position, q)), amount, 1e-8);
+        else /* advance against the light's travel direction */
+            ck_assert_double_eq_tol(-vdot(vsub(q, p), vnorm(L.direction)), amount, 1e-9);
+    }
+}
+END_TEST
+
+START_TEST(bias_normal_offset_and_slope) {
+    ortho_map o = make_ortho(v3(0, -1, 0), v3(0, 0, 0), 64, 64, -100, 100, 1024, 1024);
+    /* the map's t axis: d = (0,-1,0) */
+    swarp_light L;
+    memset(&L, 0, sizeof L);
+    L.type = SWARP_LIGHT_DIRECTIONAL;
+    L.direction = v3(0, -1, 0);
+    swarp_vec3 p = v3(3, 1, -2), q;
+    const double texel = 128.0 / 1024;
+    double amount;
+    /* N facing the light: no offset */
+    swarp_vec3 up = v3(0, 1, 0);
+    ck_assert_int_eq(swarp_bias_normal_offset(&o.map, &L, &p, &up, 2, &q, &amount), SWARP_OK);
+    ck_assert_double_eq_tol(amount, 0, 1e-15);
+    /* N at 60 degrees: N.L = 1/2 -> offset k texel / 2 along N */
+    swarp_vec3 n60 = v3(sin(PI / 3), cos(PI / 3), 0);
+    ck_assert_int_eq(swarp_bias_normal_offset(&o.map, &L, &p, &n60, 2, &q, &amount), SWARP_OK);
+    ck_assert_double_eq_tol(amount, 2 * texel * 0.5, 1e-12);
+    ck_assert_double_eq_tol(vlen(vsub(q, vadd(p, vscale(n60, amount)))), 0, 1e-12);
+    /* back-facing: full offset, reported */
+    swarp_vec3 down = v3(0, -1, 0);
+    ck_assert_int_eq(swarp_bias_normal_offset(&o.map, &L, &p, &down, 2, &q, &amount), SWARP_INFO_BACKFACING);
+    ck_assert_double_eq_tol(amount, 2 * texel, 1e-12);
+    /* slope-scaled: c + s texel tan(60 deg); depth: window depth per world unit
+     * of this ortho map is 1/(t1 - t0) */
+    double wb, db, dpw;
+    ck_assert_int_eq(swarp_bias_slope_scaled(&o.map, &L, &p, &n60, 0.01, 1.5, &wb, &db), SWARP_OK);
+    ck_assert_double_eq_tol(wb, 0.01 + 1.5 * texel * tan(PI / 3), 1e-12);
+    ck_assert_double_eq_tol(db, wb / 200.0, 1e-14);
+    ck_assert_int_eq(swarp_bias_depth_per_world(&o.map, &L, &p, &dpw), SWARP_OK);
+    ck_assert_double_eq_tol(dpw, 1.0 / 200.0, 1e-15);
+    o.map.depth = SWARP_DEPTH_ZERO_TO_ONE; /* same matrix read as [0,1] */
+    ck_assert_int_eq(swarp_bias_depth_per_world(&o.map, &L, &p, &dpw), SWARP_OK);
+    ck_assert_double_eq_tol(dpw, 2.0 / 200.0, 1e-15);
+}
+END_TEST
+
+START_TEST(bias_receiver_plane_gradient) {
+    /* For an ortho map and a plane N.x = N.p, the depth along t = d.x changes
+     * by -(N.u)/(N.d) per world unit along u; per texel (2 hx/res world) and
+     * in window depth (1/(t1 - t0) per world unit). */
+    rng_state = 8;
+    for (int it = 0; it < 300; ++it) {
+        swarp_vec3 c = v3(rng_uniform(-1e3, 1e3), 0, rng_uniform(-1e3, 1e3));
+        double hx = rng_uniform(10, 100), hy = rng_uniform(10, 100);
+        ortho_map o = make_ortho(rand_unit(), c, hx, hy, -500, 500, 1024, 512);
+        swarp_vec3 N = rand_unit();
+        if (fabs(vdot(N, o.d)) < 0.2) continue;
+        swarp_vec3 p = vadd(c, vscale(rand_unit(), 5));
+        swarp_vec3 ta = vnorm(vcross(N, rand_unit())), tb = vcross(N, ta);
+        ta = vadd(vscale(ta, 2.0), vscale(tb, 0.3)); /* any spanning pair */
+        double g[2];
+        ck_assert_int_eq(swarp_bias_receiver_plane(&o.map, &p, &ta, &tb, g), SWARP_OK);
+        double dtdx = -vdot(N, o.u) / vdot(N, o.d), dtdy = -vdot(N, o.v) / vdot(N, o.d);
+        double e_s = dtdx * (2 * hx / 1024) / 1000.0, e_t = dtdy * (2 * hy / 512) / 1000.0;
+        ck_assert_double_eq_tol(g[0], e_s, 1e-9 * (1 + fabs(e_s)));
+        ck_assert_double_eq_tol(g[1], e_t, 1e-9 * (1 + fabs(e_t)));
+    }
+    /* edge-on plane: degenerate */
+    ortho_map o = make_ortho(v3(0, -1, 0), v3(0, 0, 0), 10, 10, -10, 10, 256, 256);
+    swarp_vec3 p = v3(0, 0, 0), ta = v3(1, 0, 0), tb = v3(1, 5, 0);
+    double g[2] = {-9, -9};
+    ck_assert_int_eq(swarp_bias_receiver_plane(&o.map, &p, &ta, &tb, g), SWARP_ERR_DEGENERATE);
+    ck_assert(g[0] == -9 && g[1] == -9);
+}
+END_TEST
+
+START_TEST(bias_bad_inputs) {
+    ortho_map o = make_ortho(v3(0, -1, 0), v3(0, 0, 0), 10, 10, -10, 10, 256, 256);
+    swarp_light L;
+    memset(&L, 0, sizeof L);
+    L.direction = v3(0, -1, 0);
+    swarp_vec3 p = v3(1, 1, 1), q = v3(-5, -5, -5), n = v3(0, 1, 0);
+    double x = -5, y = -5;
+    swarp_bias_map bm = o.map;
+    bm.res_s = 0;
+    ck_assert_int_eq(swarp_bias_texel_size(&bm, &p, &x, NULL, NULL), SWARP_ERR_RESOLUTION);
+    bm = o.map;
+    bm.depth = (swarp_depth_range)5;
+    ck_assert_int_eq(swarp_bias_texel_size(&bm, &p, &x, NULL, NULL), SWARP_ERR_UNKNOWN_ENUM);
+    bm = o.map;
+    bm._reserved[3] = 1;
+    ck_assert_int_eq(swarp_bias_texel_size(&bm, &p, &x, NULL, NULL), SWARP_ERR_RESERVED_NONZERO);
+    bm = o.map;
+    memset(bm.world_to_clip.m, 0, sizeof bm.world_to_clip.m);
+    bm.world_to_clip.m[15] = 1;
+    ck_assert_int_eq(swarp_bias_texel_size(&bm, &p, &x, NULL, NULL), SWARP_ERR_SINGULAR);
+    bm = o.map;
+    bm.world_to_clip.m[3] = NAN;
+    ck_assert_int_eq(swarp_bias_texel_size(&bm, &p, &x, NULL, NULL), SWARP_ERR_NON_FINITE);
+    ck_assert_int_eq(swarp_bias_texel_size(&o.map, &p, NULL, NULL, NULL), SWARP_ERR_NULL_POINTER);
+    /* behind a perspective map's centre of projection */
+    swarp_bias_map pm;
+    memset(&pm, 0, sizeof pm);
+    pm.world_to_clip.m[0] = pm.world_to_clip.m[5] = 1;
+    pm.world_to_clip.m[10] = -1.02;
+    pm.world_to_clip.m[11] = -1;
+    pm.world_to_clip.m[14] = -2.02;
+    pm.res_s = pm.res_t = 64;
+    swarp_vec3 behind = v3(0, 0, 5);
+    ck_assert_int_eq(swarp_bias_texel_size(&pm, &behind, &x, NULL, NULL), SWARP_ERR_BEHIND_PROJECTION);
+    ck_assert(x == -5);
+    ck_assert_int_eq(swarp_bias_kozlov(&o.map, &L, &p, -1, 0, &q, NULL), SWARP_ERR_OUT_OF_RANGE);
+    ck_assert_int_eq(swarp_bias_kozlov(&o.map, &L, &p, NAN, 0, &q, NULL), SWARP_ERR_NON_FINITE);
+    swarp_light bl = L;
+    bl.type = (swarp_light_type)9;
+    ck_assert_int_eq(swarp_bias_kozlov(&o.map, &bl, &p, 0, 0, &q, NULL), SWARP_ERR_UNKNOWN_ENUM);
+    bl = L;
+    bl.direction = v3(0, 0, 0);
+    ck_assert_int_eq(swarp_bias_kozlov(&o.map, &bl, &p, 0, 0, &q, NULL), SWARP_ERR_ZERO_VECTOR);
+    bl = L;
+    bl.type = SWARP_LIGHT_POINT;
+    bl.position = p;
+    ck_assert_int_eq(swarp_bias_kozlov(&o.map, &bl, &p, 0, 0, &q, NULL), SWARP_ERR_ZERO_VECTOR);
+    swarp_vec3 z0 = v3(0, 0, 0);
+    ck_assert_int_eq(swarp_bias_normal_offset(&o.map, &L, &p, &z0, 1, &q, NULL), SWARP_ERR_ZERO_VECTOR);
+    ck_assert_int_eq(swarp_bias_normal_offset(&o.map, &L, &p, &n, -1, &q, NULL), SWARP_ERR_OUT_OF_RANGE);
+    ck_assert_int_eq(swarp_bias_slope_scaled(&o.map, &L, &p, &n, -1, 0, &x, &y), SWARP_ERR_OUT_OF_RANGE);
+    ck_assert_int_eq(swarp_bias_slope_scaled(&o.map, &L, &p, &n, 0, 0, NULL, NULL), SWARP_ERR_NULL_POINTER);
+    ck_assert_int_eq(swarp_bias_depth_per_world(&o.map, &L, &p, NULL), SWARP_ERR_NULL_POINTER);
+    double g[2] = {-5, -5};
+    ck_assert_int_eq(swarp_bias_receiver_plane(&o.map, &p, &z0, &n, g), SWARP_ERR_ZERO_VECTOR);
+    ck_assert(q.x == -5 && q.y == -5 && q.z == -5 && x == -5 && y == -5 && g[0] == -5);
+}
+END_TEST
+
+
+/* ======================================================================= */
+/* Split selection and blending [RHS] §3.3.3                               */
+/* ======================================================================= */
+
+/* practical split scheme [RHS] (3.8), written here independently */
+static void practical(double n, double f, double lambda, int m, double* out) {
+    for (int i = 0; i <= m; ++i)
+        out[i] = (1 - lambda) * (n + (f - n) * i / m) + lambda * n * pow(f / n, (double)i / m);
+    out[0] = n;
+    out[m] = f;
+}
+
+START_TEST(select_best_never_worse_than_depth) {
+    rng_state = 31;
+    int overlap_points = 0, better = 0;
+    for (int it = 0; it < 60; ++it) {
+        const int m = 2 + (int)(rng_next() % 7);
+        const double n = rng_uniform(0.5, 2), f = n * rng_uniform(50, 500);
+        swarp_camera cam = make_camera(v3(rng_uniform(-1e3, 1e3), 20, rng_uniform(-1e3, 1e3)),
+                                       v3(rng_uniform(-1, 1), rng_uniform(-0.5, 0.1), rng_uniform(-1, 1)),
+                                       rng_uniform(0.5, 1.5), rng_uniform(1, 2), n, f);
+        /* include lights from behind the viewer (Fig. 3.13) */
+        swarp_vec3 light = it % 3 == 0 ? vadd(vnorm(cam.dir), vscale(rand_unit(), 0.2)) : rand_unit();
+        double splits[10];
+        practical(n, f, 0.5, m, splits);
+        swarp_bias_map maps[10];
+        swarp_stabilize_options o;
+        memset(&o, 0, sizeof o);
+        for (int i = 0; i < m; ++i) {
+            swarp_vec3 body[8];
+            corners(&cam, splits[i], splits[i + 1], body);
+            memset(&maps[i], 0, sizeof maps[i]);
+            maps[i].res_s = maps[i].res_t = 1024;
+            ck_assert_int_eq(swarp_stabilize_directional(&cam, splits[i], splits[i + 1], &light, body, 8,
+                                                         NULL, 1024, &o, &maps[i].world_to_clip, NULL),
+                             SWARP_OK);
+        }
+        swarp_vec3 fw = vnorm(cam.dir), r = vnorm(vcross(fw, cam.up)), u = vcross(r, fw);
+        for (int k = 0; k < 200; ++k) {
+            double z = n * pow(f / n, rng_uniform(0, 1));
+            double t = tan(cam.fovy / 2);
+            swarp_vec3 p = vadd(vadd(vadd(cam.eye, vscale(fw, z)), vscale(r, rng_uniform(-1, 1) * z * t * cam.aspect)),
+                                vscale(u, rng_uniform(-1, 1) * z * t));
+            uint32_t i_d, i_b;
+            swarp_status st = swarp_cascade_select_depth(splits, (size_t)m, z, &i_d);
+            ck_assert_int_eq(st, SWARP_OK);
+            ck_assert(splits[i_d] <= z && (z < splits[i_d + 1] || (int)i_d == m - 1));
+            double Lb, Ld;
+            st = swarp_cascade_select_best(maps, (size_t)m, &p, i_d, &i_b, &Lb);
+            ck_assert_int_eq(st, SWARP_OK); /* the depth split always covers p */
+            ck_assert_int_eq(swarp_bias_texel_size(&maps[i_d], &p, &Ld, NULL, NULL), SWARP_OK);
+            ck_assert(Lb <= Ld);
+            /* brute force: no covering split has a smaller texel */
+            int covering = 0;
+            for (int i = 0; i < m; ++i) {
+                double h[4];
+                xform(&maps[i].world_to_clip, p, h);
+                if (fabs(h[0]) <= h[3] && fabs(h[1]) <= h[3] && fabs(h[2]) <= h[3]) {
+                    double L;
+                    swarp_bias_texel_size(&maps[i], &p, &L, NULL, NULL);
+                    ck_assert(L >= Lb);
+                    ++covering;
+                }
+            }
+            if (covering > 1) ++overlap_points;
+            if (Lb < Ld) ++better;
+        }
+    }
+    ck_assert_int_gt(overlap_points, 100); /* the property was exercised */
+    ck_assert_int_gt(better, 10);          /* and best-resolution did win */
+}
+END_TEST
+
+START_TEST(blend_weight_continuous_and_banded) {
+    double splits[5] = {1, 4, 10, 30, 100};
+    const double band = 0.2;
+    for (int k = 0; k <= 20000; ++k) {
+        double z = 1 + 99.0 * k / 20000.0;
+        uint32_t i;
+        double w;
+        ck_assert_int_eq(swarp_cascade_blend(splits, 4, z, band, &i, &w), SWARP_OK);
+        ck_assert(w >= 0 && w <= 1);
+        double start = splits[i + 1] - band * (splits[i + 1] - splits[i]);
+        if (i == 3 || z <= start) ck_assert(w == 1.0);
+        else ck_assert_double_eq_tol(w, (splits[i + 1] - z) / (splits[i + 1] - start), 1e-12);
+    }
+    /* continuity of the mixed result across each border: just before, split i
+     * has weight ~0 (so i+1 has ~1); just after, split i+1 has weight 1 */
+    for (int b = 1; b < 4; ++b) {
+        uint32_t i;
+        double w;
+        swarp_cascade_blend(splits, 4, nextafter(splits[b], 0), band, &i, &w);
+        ck_assert_uint_eq(i, (uint32_t)b - 1);
+        ck_assert_double_eq_tol(w, 0, 1e-12);
+        swarp_cascade_blend(splits, 4, splits[b], band, &i, &w);
+        ck_assert_uint_eq(i, (uint32_t)b);
+        ck_assert(w == 1.0);
+    }
+    uint32_t i = 99;
+    double w = -1;
+    ck_assert_int_eq(swarp_cascade_blend(splits, 4, 150, band, &i, &w), SWARP_INFO_OUTSIDE_SPLITS);
+    ck_assert_uint_eq(i, 3);
+    ck_assert_int_eq(swarp_cascade_blend(splits, 4, 0.5, 0, &i, &w), SWARP_INFO_OUTSIDE_SPLITS);
+    ck_assert_uint_eq(i, 0);
+    ck_assert(w == 1.0);
+}
+END_TEST
+
+START_TEST(select_bad_inputs) {
+    double splits[5] = {1, 4, 10, 30, 100}, bad[3] = {1, 1, 2}, nan3[3] = {1, NAN, 3};
+    uint32_t i = 42;
+    double w = -3;
+    ck_assert_int_eq(swarp_cascade_select_depth(NULL, 4, 5, &i), SWARP_ERR_NULL_POINTER);
+    ck_assert_int_eq(swarp_cascade_select_depth(splits, 0, 5, &i), SWARP_ERR_SPLIT_COUNT);
+    ck_assert_int_eq(swarp_cascade_select_depth(bad, 2, 5, &i), SWARP_ERR_NOT_INCREASING);
+    ck_assert_int_eq(swarp_cascade_select_depth(nan3, 2, 5, &i), SWARP_ERR_NON_FINITE);
+    ck_assert_int_eq(swarp_cascade_select_depth(splits, 4, INFINITY, &i), SWARP_ERR_NON_FINITE);
+    ck_assert_int_eq(swarp_cascade_blend(splits, 4, 5, 1.0, &i, &w), SWARP_ERR_OUT_OF_RANGE);
+    ck_assert_int_eq(swarp_cascade_blend(splits, 4, 5, -0.1, &i, &w), SWARP_ERR_OUT_OF_RANGE);
+    ck_assert_int_eq(swarp_cascade_blend(splits, 4, 5, 0.1, &i, NULL), SWARP_ERR_NULL_POINTER);
+    swarp_bias_map maps[2];
+    memset(maps, 0, sizeof maps);
+    for (int k = 0; k < 2; ++k) {
+        maps[k].world_to_clip.m[0] = maps[k].world_to_clip.m[5] = maps[k].world_to_clip.m[10] = 1;
+        maps[k].world_to_clip.m[15] = 1;
+        maps[k].res_s = maps[k].res_t = 64;
+    }
+    swarp_vec3 p = v3(0, 0, 0), far = v3(5, 0, 0);
+    ck_assert_int_eq(swarp_cascade_select_best(maps, 2, &p, 2, &i, &w), SWARP_ERR_OUT_OF_RANGE);
+    ck_assert_int_eq(swarp_cascade_select_best(maps, 0, &p, 0, &i, &w), SWARP_ERR_SPLIT_COUNT);
+    maps[1]._reserved[0] = 1;
+    ck_assert_int_eq(swarp_cascade_select_best(maps, 2, &p, 0, &i, &w), SWARP_ERR_RESERVED_NONZERO);
+    ck_assert_int_eq(swarp_cascade_select_best(maps, 2, &far, 0, &i, &w), SWARP_ERR_RESERVED_NONZERO);
+    ck_assert(i == 42 && w == -3);
+    maps[1]._reserved[0] = 0;
+    ck_assert_int_eq(swarp_cascade_select_best(maps, 2, &far, 1, &i, &w), SWARP_INFO_OUTSIDE_SPLITS);
+    ck_assert_uint_eq(i, 1);
+}
+END_TEST
+/* ======================================================================= */
+
+static Suite* splits_suite(void) {
+    Suite* s = suite_create("splits");
+    TCase* t = tcase_create("atlas");
+    tcase_add_test(t, atlas_tiles_partition_the_atlas);
+    tcase_add_test(t, atlas_lsc_and_kernel_scale);
+    tcase_add_test(t, atlas_bad_inputs);
+    suite_add_tcase(s, t);
+    t = tcase_create("stabilize");
+    tcase_add_test(t, stabilize_min_sphere_is_exact_and_beats_centroid);
+    tcase_add_test(t, stabilize_sphere_whole_texels_1000_moves);
+    tcase_add_test(t, stabilize_levels_whole_texels_between_level_changes);
+    tcase_add_test(t, stabilize_none_does_flicker);
+    tcase_add_test(t, stabilize_sphere_size_constant_and_levels_quantised);
+    tcase_add_test(t, stabilize_bad_inputs);
+    suite_add_tcase(s, t);
+    t = tcase_create("bias");
+    tcase_add_test(t, bias_texel_size_uniform_equals_footprint);
+    tcase_add_test(t, bias_texel_size_perspective_map_is_exact);
+    tcase_add_test(t, bias_kozlov_moves_toward_light_by_amount);
+    tcase_add_test(t, bias_normal_offset_and_slope);
+    tcase_add_test(t, bias_receiver_plane_gradient);
+    tcase_add_test(t, bias_bad_inputs);
+    suite_add_tcase(s, t);
+    t = tcase_create("select");
+    tcase_add_test(t, select_best_never_worse_than_depth);
+    tcase_add_test(t, blend_weight_continuous_and_banded);
+    tcase_add_test(t, select_bad_inputs);
+    suite_add_tcase(s, t);
+    return s;
+}
+
+int main(void) {
+    SRunner* sr = srunner_create(splits_suite());
+    srunner_run_all(sr, CK_NORMAL);
+    int failed = srunner_ntests_failed(sr);
+    srunner_free(sr);
+    return failed == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}
