@@ -4,7 +4,7 @@
  * tests/robust/entries_*.c for the per-entry generators and checks).
  *
  *   hard_cases [--size N] [--seed S] [--entry NAME] [--save DIR] [--list]
- *              [--emit DIR N]
+ *              [--emit DIR N] [--findings]
  *
  * N configurations per entry point (default 20000; `meson test` passes
  * -Dhard_cases_size; the full sweep is `meson test --benchmark
@@ -14,7 +14,9 @@
  * case index and the message; with --save DIR the bytes of the case are
  * written to DIR/<entry>-<index>.bin, a corpus file for tests/fuzz that
  * replays it (keep it in tests/fuzz/corpus/<entry>/ as a regression test).
- * Exit status 1 when any invariant broke.  --list prints every entry point
+ * Exit status 1 when any invariant broke.  "finding" counts accuracy
+ * departures on extreme inputs (magnitudes below 1e-150 or above 1e150, see
+ * swr.h); --findings prints the first three per entry point.  --list prints every entry point
  * with "available" or "missing" (not in the library yet).  --emit DIR N
  * writes the bytes of the first N cases of each available entry point to
  * DIR/<entry>/seed-<i>: the seeds of the fuzz corpus.
@@ -37,6 +39,7 @@ int main(int argc, char** argv) {
     unsigned long long size = 20000, seed = 0x5EEDC0DEull;
     const char* only = NULL;
     const char* save = NULL;
+    int show_findings = 0;
     /* SWARP_HARD_CASES_SIZE overrides --size (valgrind runs a smaller sweep) */
     const char* env_size = getenv("SWARP_HARD_CASES_SIZE");
     for (int i = 1; i < argc; ++i) {
@@ -44,6 +47,7 @@ int main(int argc, char** argv) {
         else if (!strcmp(argv[i], "--seed") && i + 1 < argc) seed = strtoull(argv[++i], NULL, 0);
         else if (!strcmp(argv[i], "--entry") && i + 1 < argc) only = argv[++i];
         else if (!strcmp(argv[i], "--save") && i + 1 < argc) save = argv[++i];
+        else if (!strcmp(argv[i], "--findings")) show_findings = 1;
         else if (!strcmp(argv[i], "--list")) {
             static swr_ctx lc;
             for (size_t k = 0; k < swr_entry_count(); ++k) {
@@ -80,15 +84,15 @@ int main(int argc, char** argv) {
     }
     if (env_size && *env_size) size = strtoull(env_size, NULL, 0);
     static swr_ctx c; /* large; one at a time */
-    unsigned long long total = 0, total_fail = 0, n_entries = 0;
+    unsigned long long total = 0, total_fail = 0, total_found = 0, n_entries = 0;
     char skipped[4096] = "";
     printf("hard-case sweep: %llu configurations per entry point, seed 0x%llx\n", size, seed);
-    printf("%-34s %9s %9s %9s %9s %6s %7s\n", "entry point", "cases", "ok", "info", "error", "FAIL", "s");
+    printf("%-34s %9s %9s %9s %9s %6s %7s %7s\n", "entry point", "cases", "ok", "info", "error", "FAIL", "finding", "s");
     double t_all = now();
     for (size_t k = 0; k < swr_entry_count(); ++k) {
         const swr_entry* e = swr_entry_at(k);
         if (only && strcmp(only, e->name) != 0) continue;
-        unsigned long long ok = 0, info = 0, err = 0, fail = 0;
+        unsigned long long ok = 0, info = 0, err = 0, fail = 0, found = 0;
         double t0 = now();
         int skip = 0;
         for (unsigned long long i = 0; i < size; ++i) {
@@ -100,9 +104,17 @@ int main(int argc, char** argv) {
             if (c.status == SWARP_OK) ++ok;
             else if (swarp_status_is_error(c.status)) ++err;
             else ++info;
+            if (c.finding) {
+                if (found < 3 && show_findings) {
+                    printf("  finding %s case %llu: %s\n", e->name, i, c.finding_msg);
+                    if (c.args[0]) printf("       arguments: %s\n", c.args);
+                }
+                ++found;
+            }
             if (bad) {
                 if (fail < 5) {
                     printf("  FAIL %s case %llu (seed 0x%llx): %s\n", e->name, i, seed, c.msg);
+                    if (c.args[0]) printf("       arguments: %s\n", c.args);
                     if (save) {
                         char path[1024];
                         snprintf(path, sizeof path, "%s/%s-%llu.bin", save, e->name, i);
@@ -125,10 +137,13 @@ int main(int argc, char** argv) {
         ++n_entries;
         total += size;
         total_fail += fail;
-        printf("%-34s %9llu %9llu %9llu %9llu %6llu %7.2f\n", e->name, size, ok, info, err, fail, now() - t0);
+        total_found += found;
+        printf("%-34s %9llu %9llu %9llu %9llu %6llu %7llu %7.2f\n", e->name, size, ok, info, err, fail, found,
+               now() - t0);
     }
-    printf("%llu entry points, %llu configurations, %llu invariant violations, %.1f s\n", n_entries, total,
-           total_fail, now() - t_all);
+    printf("%llu entry points, %llu configurations, %llu invariant violations, %llu accuracy findings on extreme "
+           "inputs, %.1f s\n",
+           n_entries, total, total_fail, total_found, now() - t_all);
     if (skipped[0]) printf("skipped (not in the library yet):%s\n", skipped);
     return total_fail ? 1 : 0;
 }

@@ -32,7 +32,7 @@ int LLVMFuzzerInitialize(int* argc, char*** argv) {
 int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     static swr_ctx c; /* libFuzzer runs one input at a time */
     if (swr_run(target, &c, data, size)) {
-        fprintf(stderr, "invariant violated in %s: %s\n", target->name, c.msg);
+        fprintf(stderr, "invariant violated in %s: %s\n  arguments: %s\n", target->name, c.msg, c.args);
         abort();
     }
     return 0;

@@ -36,6 +36,7 @@ static int replay_dir(const swr_entry* e, const char* dir, unsigned long* files,
         if (bad) {
             ++*fails;
             printf("FAIL %s: %s\n", path, c.msg);
+            if (c.args[0]) printf("     arguments: %s\n", c.args);
         }
     }
     closedir(d);
