@@ -653,8 +653,8 @@ typedef struct swarp_lixel_restrict_options {
     uint32_t max_size;/**< largest width or height accepted (0 = 16384) */
     /** Non-zero: keep only the rays that hit P inside the viewer's frustum
      *  ([LIXEL] §3, C_floor "within the viewer's frustum"): C's image is
-     *  clipped to the viewer image [-1/2, view_width - 1/2] x
-     *  [-1/2, view_height - 1/2] first (on P the light image IS the viewer
+     *  clipped to the viewer's pixel centres [0, view_width - 1] x
+     *  [0, view_height - 1] first (on P the light image IS the viewer
      *  image); rays of C with q <= 0 are then allowed (clipped away).
      *  Needs M_l straight from swarp_lixel_matrix with g = view_width,
      *  h = view_height.  0 = no clipping. */
@@ -695,6 +695,10 @@ SWARP_API swarp_status swarp_lixel_restrict(const swarp_mat4* M_l, const swarp_v
  *  and b horizontal, with the light image of `below` (a point on the side
  *  that should stay inside, e.g. on the floor in front of the wall) at
  *  smaller y.  [LIXEL] §3 (twist in A_floor).
+ *  @param[in] M_l from swarp_lixel_matrix (before restriction)
+ *  @param[in] a, b two world points of the line (q > 0 in M_l)
+ *  @param[in] below a world point on the side that should map below the line
+ *  @param[out] out_twist radians, for swarp_lixel_restrict_options.twist
  *  @return SWARP_OK; SWARP_ERR_LIXEL_TWIST_LINE (the line images to a point
  *  or a point has q <= 0), SWARP_ERR_NON_FINITE, SWARP_ERR_NULL_POINTER. */
 SWARP_API swarp_status swarp_lixel_twist_for_line(const swarp_mat4* M_l, const swarp_vec3* a,
@@ -710,7 +714,13 @@ SWARP_API swarp_status swarp_lixel_twist_for_line(const swarp_mat4* M_l, const s
  *  point p-hat lands on the near plane (NDC -1, or 0) and P at the fraction
  *  plane_depth of the depth range (default 0.5), so geometry slightly
  *  behind P is not clipped.  (x, y, q) of M_l' equal those of M_l.
+ *  @param[in] M_l restricted light matrix (lixels; depth as built by
+ *         swarp_lixel_matrix: p-hat at z = -1, P at z = +1)
+ *  @param width, height the map size in lixels (swarp_lixel_rect)
+ *  @param depth_range clip depth convention (DEFAULT = [-1, 1])
  *  @param plane_depth in [0, 1): 0 = default 0.5
+ *  @param[out] out_GLV viewport, NDC -> lixels
+ *  @param[out] out_GLP world -> clip
  *  @return SWARP_OK; SWARP_ERR_RESOLUTION, SWARP_ERR_OUT_OF_RANGE,
  *  SWARP_ERR_UNKNOWN_ENUM, SWARP_ERR_NON_FINITE, SWARP_ERR_NULL_POINTER. */
 SWARP_API swarp_status swarp_lixel_factor(const swarp_mat4* M_l, uint32_t width, uint32_t height,
@@ -725,7 +735,12 @@ SWARP_API swarp_status swarp_lixel_factor(const swarp_mat4* M_l, uint32_t width,
  *  wall (on the side its normal points to), C_wall the others (they hit the
  *  wall above the line when the light is in the room).  The cut is the plane
  *  through the light and the floor/wall line.  Vertices as in
- *  swarp_lixel_restrict (all points or all directions).
+ *  swarp_lixel_restrict (all points or all directions; directions need a
+ *  point light).
+ *  @param[in] light the light (point or directional)
+ *  @param[in] floor_plane, wall_plane the two planes of interest (normal of
+ *         the wall pointing into the room)
+ *  @param[in] C_tot n >= 3 vertices of the convex polygon of rays, in order
  *  @param[out] out_floor, out_wall capacity each; counts written (either
  *         may be 0 when C_tot lies on one side)
  *  @return SWARP_OK; SWARP_ERR_CAPACITY (needed counts written),
@@ -742,6 +757,11 @@ SWARP_API swarp_status swarp_lixel_split(const swarp_light* light, const swarp_p
  *  reference of the shader in docs/lixel.md): the first i whose clip matrix
  *  GLP[i] puts p inside (w > 0, |x| <= w, |y| <= w), else count (the
  *  conventional fallback map).
+ *  @param[in] GLP count clip matrices (swarp_lixel_factor), in the order the
+ *         shader tries them (e.g. floor, wall); may be NULL when count = 0
+ *  @param count number of plane maps
+ *  @param[in] p world point
+ *  @param[out] out_index 0 .. count-1, or count for the fallback map
  *  @return SWARP_OK; SWARP_ERR_NON_FINITE, SWARP_ERR_NULL_POINTER. */
 SWARP_API swarp_status swarp_lixel_select(const swarp_mat4* GLP, size_t count, const swarp_vec3* p,
                                           uint32_t* out_index);

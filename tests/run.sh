@@ -21,7 +21,7 @@ echo "== ASan + UBSan"
 ninja -C build-asan
 ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 \
 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
-    meson test -C build-asan --print-errorlogs
+    meson test -C build-asan --print-errorlogs --timeout-multiplier 10
 # stage: robustness (valgrind, coverage, fuzz, consumers)
 # Each step below can be run on its own; docs/quality.md lists the commands.
 echo "== valgrind memcheck (every test binary except python and fenv)"

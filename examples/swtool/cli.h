@@ -61,6 +61,7 @@ int cmd_report(sw_args* a);
 /* stage: geometry */
 
 /* stage: lixel */
+int cmd_lixel(sw_args* a);
 
 /* stage: splits */
 int cmd_stabwalk(sw_args* a);

@@ -18,6 +18,7 @@ static const sw_cmd commands[] = {
     /* stage: geometry */
 
     /* stage: lixel */
+    {"lixel", cmd_lixel, "plane-stabilised light matrix M_l for --eye --dir --plane --light-pos|--light-dir"},
 
     /* stage: splits */
     {"stabwalk", cmd_stabwalk, "texel coordinates of a fixed point while the camera moves [--res --steps]"},
