@@ -6,9 +6,11 @@
 
 extern const swr_entry swr_entries_core[];
 /* stage tables: */
+extern const swr_entry swr_entries_lixel[];
 
 static const swr_entry* const tables[] = {
     swr_entries_core,
+    swr_entries_lixel,
 };
 
 size_t swr_entry_count(void) {

@@ -172,6 +172,9 @@ double swr_offset(swr_ctx* c) {
 void swr_expect(swr_ctx* c, swarp_status s) {
     if (c->n_expect < SWR_MAX_EXPECT) c->expect[c->n_expect++] = s;
 }
+void swr_finding_status(swr_ctx* c, swarp_status s) {
+    if (c->n_findst < SWR_MAX_EXPECT) c->findst[c->n_findst++] = s;
+}
 void swr_allow(swr_ctx* c, swarp_status s) {
     if (c->n_allow < SWR_MAX_EXPECT) c->allow[c->n_allow++] = s;
 }
@@ -244,6 +247,11 @@ int swr_verdict(swr_ctx* c, swarp_status st, int nout, ...) {
                 }
                 swr_fail(c, "returned %s, expected one of: %s", swarp_status_name(st), buf);
             }
+        } else if (in_list(c->findst, c->n_findst, st)) {
+            if (!c->finding)
+                snprintf(c->finding_msg, sizeof c->finding_msg, "undocumented status %s on valid arguments",
+                         swarp_status_name(st));
+            c->finding++;
         } else if (!in_list(c->allow, c->n_allow, st)) {
             swr_fail_acc(c, "valid arguments rejected with %s", swarp_status_name(st));
         }
