@@ -141,7 +141,12 @@ static void e_lixel_solve5(swr_ctx* c) {
     swr_fill(&M, sizeof M);
     swr_fill(&cond, sizeof cond);
     swarp_status st = SWR_CALL(c, swarp_lixel_solve5(n_s ? NULL : src, n_d ? NULL : dst, n_m ? NULL : &M, n_c ? NULL : &cond));
+    /* the OK / ILL_CONDITIONED / COPLANAR thresholds are on a computed
+     * conditioning: rounding decides near them (fenv test) */
+    if (st == SWARP_INFO_LIXEL_ILL_CONDITIONED || st == SWARP_ERR_LIXEL_COPLANAR) c->rounding_edge = 1;
     if (!swr_verdict(c, st, 2, (void*)&M, sizeof M, (void*)&cond, sizeof cond)) return;
+    if (!n_c && cond > 0) swr_cond(c, 1.0 / (cond * cond));
+    if (!n_c && cond < 1e-4) c->rounding_edge = 1;
     rec_mat(c, "M", &M);
     SWR_CHECK(c, maxabs(&M) == 1.0, "largest |element| %.17g, documented 1", maxabs(&M));
     if (!n_c) {
@@ -174,17 +179,29 @@ static void gen_scene(swr_ctx* c, const viewer* v, swarp_light* L, swarp_plane* 
     if (k == 4) nrm = gen_dir(c); /* maybe zero */
     swarp_vec3 on = v3(v->eye.x + swr_num_in(c, -5, 5, NULL, 0), v->eye.y - swr_num_in(c, 0.5, 5, NULL, 0),
                        v->eye.z + swr_num_in(c, -5, 5, NULL, 0));
-    if (swr_one_in(c, 12)) on = v->eye; /* plane through the eye */
+    if (swr_one_in(c, 12)) { /* plane through the eye (an exact degeneracy: rounding decides) */
+        on = v->eye;
+        c->rounding_edge = 1;
+    }
     P->a = nrm.x;
     P->b = nrm.y;
     P->c = nrm.z;
     P->d = -dot(nrm, on);
     L->type = (swarp_light_type)swr_enum(c, 3);
     L->direction = gen_dir(c);
-    if (swr_one_in(c, 8)) L->direction = v3(-nrm.y, nrm.x, 0); /* maybe parallel to P */
+    if (swr_one_in(c, 8)) { /* maybe parallel to P */
+        L->direction = v3(-nrm.y, nrm.x, 0);
+        c->rounding_edge = 1;
+    }
     L->position = v3(on.x + swr_num_in(c, -20, 20, NULL, 0), on.y + swr_num(c, 0.1, 30, NULL, 0), on.z + swr_num_in(c, -20, 20, NULL, 0));
-    if (swr_one_in(c, 12)) L->position = on; /* light on the plane */
-    if (swr_one_in(c, 12)) L->position = v->eye;
+    if (swr_one_in(c, 12)) { /* light on the plane */
+        L->position = on;
+        c->rounding_edge = 1;
+    }
+    if (swr_one_in(c, 12)) {
+        L->position = v->eye;
+        c->rounding_edge = 1;
+    }
     L->cone_angle = swr_one_in(c, 2) ? 0.0 : swr_num(c, 0.1, 1.5, NULL, 0);
     L->_reserved[swr_u8(c) % 4] = swr_reserved(c);
 }
@@ -248,7 +265,10 @@ static void e_lixel_matrix(swr_ctx* c) {
              (int)L.type, P.a, P.b, P.c, P.d, g, h);
     swarp_status st = SWR_CALL(c, swarp_lixel_matrix(n_mv ? NULL : &v.M_v, g, h, n_l ? NULL : &L, n_p ? NULL : &P,
                                                     use_opt ? &opt : NULL, n_out ? NULL : &M, n_info ? NULL : &info));
+    if (st == SWARP_INFO_LIXEL_ILL_CONDITIONED || st == SWARP_ERR_LIXEL_COPLANAR) c->rounding_edge = 1;
     if (!swr_verdict(c, st, 2, (void*)&M, sizeof M, (void*)&info, sizeof info)) return;
+    if (!n_info && info.conditioning > 0) swr_cond(c, 1.0 / (info.conditioning * info.conditioning));
+    if (!n_info && info.conditioning < 1e-4) c->rounding_edge = 1;
     rec_mat(c, "M_l", &M);
     SWR_CHECK(c, maxabs(&M) == 1.0, "largest |element| %.17g, documented 1", maxabs(&M));
     if (!n_info) SWR_CHECK(c, info.corners_in_front <= 4 && info.raised_index <= 3, "info out of range");

@@ -126,8 +126,8 @@ int main(int argc, char** argv) {
                worst[m] / SWR_FENV_TOL, worst_entry[m] ? " in " : "", worst_entry[m] ? worst_entry[m] : "");
     printf("fenv: %lu calls with extreme inputs (a magnitude below 1e-150, subnormals included, or above 1e150) "
            "left out\n", extreme);
-    printf("fenv: %lu calls on a threshold decided by rounding left out (overflow: directed rounding may give "
-           "DBL_MAX; n_p + f_p = 1)\n",
+    printf("fenv: %lu calls on a threshold decided by rounding left out (overflows, exact degeneracies, "
+           "conditioning thresholds)\n",
            rounding_edge);
     printf("fenv: %lu numerically singular calls (condition > 1/(64 eps)) whose status depends on the rounding "
            "mode left out\n", singular);
