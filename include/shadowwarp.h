@@ -123,7 +123,22 @@ extern "C" {
       "GLPR has no positive lambda here (theta <= phi); lambda_GMNPR was written")
 
 /* >>> status: geometry (100..199, 1100..1199) */
-#define SWARP_STATUS_LIST_GEOMETRY(X)
+#define SWARP_STATUS_LIST_GEOMETRY(X)                                                   \
+    X(SWARP_ERR_BODY_EMPTY, 100,                                                        \
+      "the view frustum misses the scene box (H = V intersect S is empty)")              \
+    X(SWARP_ERR_BOX_INVERTED, 101, "scene box min exceeds max on some axis")            \
+    X(SWARP_ERR_BOX_DEGENERATE, 102,                                                    \
+      "scene box has zero extent along two or more axes")                               \
+    X(SWARP_ERR_LIGHT_INSIDE_BODY, 103,                                                 \
+      "point light inside the body B: one perspective map cannot cover it")             \
+    X(SWARP_INFO_LIGHT_PARALLEL, 1100,                                                  \
+      "light nearly parallel to the view: light-space up blended toward camera right")  \
+    X(SWARP_INFO_FLAT_EXTENT, 1101,                                                     \
+      "an extent of the focused body is zero; its width was padded")                    \
+    X(SWARP_INFO_PSM_INVERSE, 1102,                                                     \
+      "light behind the camera: PSM uses the inverse projection (near < 0 < far)")      \
+    X(SWARP_INFO_LIGHT_NEAR_CLIPPED, 1103,                                              \
+      "spot light on or inside B: points nearer than its near plane left out")
 /* <<< status: geometry */
 
 /* >>> status: lixel (200..299, 1200..1299) */
@@ -574,6 +589,341 @@ SWARP_API swarp_status swarp_split_pseudo(double n, double f, double n_p, double
                                           size_t capacity, size_t* out_count);
 
 /* >>> api: geometry (src/poly.c body.c focus.c warp.c psm.c setup.c) */
+/* ======================================================================== */
+/* Geometry: convex polyhedra                    (src/poly.c)               */
+/* ======================================================================== */
+/*
+ * A convex polyhedron with a fixed capacity (no allocation).  Vertices are a
+ * point set; each face is a loop of vertex indices, counter-clockwise seen
+ * from outside, with its plane (outward unit normal, a*x+b*y+c*z+d = 0,
+ * outside where the expression is > 0).  Degenerate polyhedra are valid: a
+ * flat one (a polygon) has two opposite faces over the same vertices, a
+ * point has one vertex and no face, an empty one has no vertex.
+ *
+ * Clipping never leaves two vertices closer than SWARP_POLY_EPS_REL times the
+ * polyhedron's scale (largest absolute coordinate, so the tolerance follows
+ * double precision for large worlds): 1e-12 is ~4000 ulps of a coordinate,
+ * far above rounding noise and far below any feature worth keeping.
+ *
+ * Capacity: V ∩ S has at most 12 faces and 20 vertices; the bodies B built
+ * from it stay far below the maxima (docs/geometry.md gives the counts).
+ * sizeof(swarp_polyhedron) == SWARP_POLY_SIZE bytes (about 7.3 KiB).
+ */
+#define SWARP_POLY_MAX_VERTICES 128
+#define SWARP_POLY_MAX_FACES 64
+#define SWARP_POLY_MAX_FACE_VERTICES 32
+#define SWARP_POLY_EPS_REL 1e-12
+#define SWARP_POLY_SIZE                                                          \
+    (8 + SWARP_POLY_MAX_VERTICES * 24 + SWARP_POLY_MAX_FACES * 32 +               \
+     SWARP_POLY_MAX_FACES * 4 + SWARP_POLY_MAX_FACES * SWARP_POLY_MAX_FACE_VERTICES)
+
+typedef struct swarp_polyhedron {
+    uint32_t vertex_count;
+    uint32_t face_count;
+    swarp_vec3 vertices[SWARP_POLY_MAX_VERTICES];
+    swarp_plane planes[SWARP_POLY_MAX_FACES];          /**< outward, unit normal */
+    uint32_t face_vertex_count[SWARP_POLY_MAX_FACES];
+    uint8_t face_vertices[SWARP_POLY_MAX_FACES][SWARP_POLY_MAX_FACE_VERTICES];
+} swarp_polyhedron;
+
+/** @brief The box as a polyhedron (8 vertices, 6 faces; fewer if flat).
+ *  @param[in] box min <= max componentwise, finite.
+ *  @param[out] out the polyhedron.
+ *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
+ *          SWARP_ERR_BOX_INVERTED. */
+SWARP_API swarp_status swarp_poly_from_aabb(const swarp_aabb* box, swarp_polyhedron* out);
+
+/** @brief The camera's view frustum V between view depths near and far
+ *  (world units along cam->dir; cam->near/far are ignored, so a split
+ *  frustum [RHS] §3.3 is the same call).
+ *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
+ *          SWARP_ERR_FOV, SWARP_ERR_NEAR_FAR, SWARP_ERR_ZERO_VECTOR,
+ *          SWARP_ERR_DEGENERATE (up parallel to dir),
+ *          SWARP_ERR_RESERVED_NONZERO, SWARP_ERR_OUT_OF_RANGE (aspect <= 0). */
+SWARP_API swarp_status swarp_poly_from_camera_range(const swarp_camera* cam, double near,
+                                                    double far, swarp_polyhedron* out);
+/** @brief The camera's view frustum V between cam->near and cam->far. */
+SWARP_API swarp_status swarp_poly_from_camera(const swarp_camera* cam, swarp_polyhedron* out);
+
+/** @brief The frustum whose clip cube is mapped to world space by an inverse
+ *  view-projection matrix (the 8 corners of the NDC cube, depth per
+ *  depth_range).
+ *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
+ *          SWARP_ERR_UNKNOWN_ENUM, SWARP_ERR_DEGENERATE (a corner maps to
+ *          infinity: w <= 0). */
+SWARP_API swarp_status swarp_poly_from_inverse_matrix(const swarp_mat4* inv_view_proj,
+                                                      swarp_depth_range depth_range,
+                                                      swarp_polyhedron* out);
+
+/** @brief Keep the part of a convex polyhedron where a*x+b*y+c*z+d <= 0
+ *  (the plane's normal points to the side removed).  out may equal in.
+ *  @return SWARP_OK (possibly empty: vertex_count 0), SWARP_ERR_NULL_POINTER,
+ *          SWARP_ERR_NON_FINITE, SWARP_ERR_ZERO_VECTOR (zero normal),
+ *          SWARP_ERR_CAPACITY (a maximum above would be exceeded). */
+SWARP_API swarp_status swarp_poly_clip(const swarp_polyhedron* in, const swarp_plane* plane,
+                                       swarp_polyhedron* out);
+
+/** @brief in ∩ box (six clips).  out may equal in.
+ *  @return as swarp_poly_clip; SWARP_ERR_BOX_INVERTED. */
+SWARP_API swarp_status swarp_poly_clip_aabb(const swarp_polyhedron* in, const swarp_aabb* box,
+                                            swarp_polyhedron* out);
+
+/* ======================================================================== */
+/* Geometry: the intersection body B             (src/body.c)               */
+/* ======================================================================== */
+/** Worst case of points of B written by swarp_body_points / swarp_setup. */
+#define SWARP_BODY_MAX_POINTS SWARP_POLY_MAX_VERTICES
+
+/** @brief H = V ∩ S for the view depths [near, far].  [RHS] §3.1.1
+ *  @return SWARP_OK, SWARP_ERR_BODY_EMPTY (the frustum misses the box,
+ *          e.g. the camera looks away from it), SWARP_ERR_BOX_DEGENERATE,
+ *          and the statuses of swarp_poly_from_camera_range. */
+SWARP_API swarp_status swarp_body_h(const swarp_camera* cam, double near, double far,
+                                    const swarp_aabb* scene, swarp_polyhedron* out_H);
+
+/** @brief B from H.  [RHS] §3.1.1 (Fig. 3.2).  Directional light: H extruded
+ *  against the light direction until it leaves S, then ∩ S.  Point light:
+ *  conv(H ∪ {l}) ∩ S ∩ L, where L (cone_angle > 0) is the square pyramid
+ *  with apex l, axis light->direction and half-angle cone_angle that
+ *  circumscribes the spot cone (the spot's shadow-map frustum).
+ *  @return SWARP_OK, SWARP_ERR_BODY_EMPTY, SWARP_ERR_NULL_POINTER,
+ *          SWARP_ERR_NON_FINITE, SWARP_ERR_ZERO_VECTOR, SWARP_ERR_UNKNOWN_ENUM,
+ *          SWARP_ERR_RESERVED_NONZERO, SWARP_ERR_OUT_OF_RANGE (cone angle). */
+SWARP_API swarp_status swarp_body_from_h(const swarp_polyhedron* H, const swarp_light* light,
+                                         const swarp_aabb* scene, swarp_polyhedron* out_B);
+
+/** @brief The points of B (its vertices) for the view depths [near, far].
+ *  @param[out] out capacity points; SWARP_BODY_MAX_POINTS always suffices.
+ *  @param[out] out_count number of points (also on SWARP_ERR_CAPACITY).
+ *  @return as swarp_body_h and swarp_body_from_h, SWARP_ERR_CAPACITY. */
+SWARP_API swarp_status swarp_body_points(const swarp_camera* cam, double near, double far,
+                                         const swarp_light* light, const swarp_aabb* scene,
+                                         swarp_vec3* out, size_t capacity, size_t* out_count);
+
+/** @brief Adjusted near/far [RHS] §3.3.1 ([ZSN07]): min and max view depth
+ *  over the points of H = V ∩ S (view frustum cam->near..cam->far).
+ *  @return SWARP_OK, SWARP_ERR_BODY_EMPTY, statuses of swarp_body_h. */
+SWARP_API swarp_status swarp_body_adjusted_range(const swarp_camera* cam, const swarp_aabb* scene,
+                                                 double* out_near, double* out_far);
+
+/* ======================================================================== */
+/* Geometry: light space and focusing            (src/focus.c)              */
+/* ======================================================================== */
+/*
+ * Light-space alignment ([RHS] §3.2.1, [WS06]): the light view looks along
+ * the light (directional: the direction light travels; point light: the
+ * axis a given by the caller, usually the spot axis or the direction to the
+ * centre of B) and its up vector (+y) is the view direction v projected on
+ * the plane perpendicular to that axis, v_perp = v - (v·a) a, |v_perp| =
+ * sin γ.  Continuous fallback near γ = 0 and γ = 180°: the up vector is
+ * normalize(v_perp + w(sin γ) r_perp), r the camera's right vector and
+ * w(s) = SWARP_FOCUS_BLEND_WEIGHT (1 - s/SWARP_FOCUS_BLEND_SIN)^2 for
+ * s < SWARP_FOCUS_BLEND_SIN (0 above): no threshold switch, the basis turns
+ * smoothly through the right vector when the light passes parallel or
+ * antiparallel to the view in the plane of v and the camera's up vector.
+ * (Every continuous tangent field on the sphere has a zero: this one's lies
+ * off that plane, on the v-r great circle, at sin γ ≈ 0.09; see
+ * docs/geometry.md.)  SWARP_INFO_LIGHT_PARALLEL reports that the blend is
+ * active.
+ */
+#define SWARP_FOCUS_BLEND_SIN 0.17364817766693033 /* sin 10° */
+#define SWARP_FOCUS_BLEND_WEIGHT 0.5
+
+/** @brief Light view matrix (right-handed, looks down -z) with light-space
+ *  alignment.  [RHS] §3.2.1
+ *  @param[in] cam    the viewer (its dir and up give the alignment)
+ *  @param[in] light  the light
+ *  @param[in] axis   point lights: the direction the light view looks along
+ *                    (any length > 0); NULL means light->direction (spot)
+ *                    or, for an omni light, the direction to cam->eye.
+ *                    Ignored for directional lights.
+ *  @param[out] out_view  light view; origin at cam->eye (directional) or at
+ *                    the light position (point light).
+ *  @return SWARP_OK, SWARP_INFO_LIGHT_PARALLEL, SWARP_ERR_NULL_POINTER,
+ *          SWARP_ERR_NON_FINITE, SWARP_ERR_ZERO_VECTOR, ... */
+SWARP_API swarp_status swarp_focus_light_view(const swarp_camera* cam, const swarp_light* light,
+                                              const swarp_vec3* axis, swarp_mat4* out_view);
+
+/** @brief The focusing matrix A_fit.  [RHS] (3.1)
+ *  Maps the bounding box of the points transformed by m (with perspective
+ *  division) to x, y in [-1, 1] and z in [-1, 1] (SWARP_DEPTH_NEG_ONE_TO_ONE)
+ *  or [0, 1] (SWARP_DEPTH_ZERO_TO_ONE); (3.1) is the [0, 1] case.
+ *  @param[in] m          transform applied to the points first (e.g. P·L)
+ *  @param[in] points     world-space points (xy extent), count >= 1
+ *  @param[in] z_points   points whose depth extent is used (NULL: points).
+ *                        Pancaking passes the receivers (H) here.
+ *  @param[out] out_A_fit the fit; a zero extent gets width 1 (status).
+ *  @return SWARP_OK, SWARP_INFO_FLAT_EXTENT (an extent was zero),
+ *          SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE, SWARP_ERR_UNKNOWN_ENUM,
+ *          SWARP_ERR_DEGENERATE (a point maps to w <= 0). */
+SWARP_API swarp_status swarp_focus_fit(const swarp_mat4* m, const swarp_vec3* points, size_t count,
+                                       const swarp_vec3* z_points, size_t z_count,
+                                       swarp_depth_range depth_range, swarp_mat4* out_A_fit);
+
+/* ======================================================================== */
+/* Geometry: LiSPSM warping frustum              (src/warp.c)               */
+/* ======================================================================== */
+typedef enum swarp_warp_param {
+    SWARP_WARP_PARAM_DEFAULT = 0,   /**< = SWARP_WARP_PARAM_NOPT */
+    SWARP_WARP_PARAM_NOPT = 1,      /**< n_opt [RHS] (3.2), z_0, z_1 from B */
+    SWARP_WARP_PARAM_NREPAR = 2,    /**< n_repar(η(γ, Θ)) [RHS] (3.3)-(3.4) */
+    SWARP_WARP_PARAM_GMNPR = 3,     /**< λ_GMNPR [GMNPR] (8) times d */
+    SWARP_WARP_PARAM_PSEUDO = 4,    /**< pseudo-near/far n_opt [RHS] (4.2) */
+    SWARP_WARP_PARAM_USER = 5,      /**< caller's n' (eye units) */
+    SWARP_WARP_PARAM_FORCE_I32 = 0x7FFFFFFF
+} swarp_warp_param;
+
+typedef enum swarp_warp_center {
+    SWARP_WARP_CENTER_DEFAULT = 0,        /**< = VIEW_VECTOR */
+    SWARP_WARP_CENTER_VIEW_VECTOR = 1,    /**< [RHS] §4.1: C_start from s on the view vector */
+    SWARP_WARP_CENTER_NEAREST_VERTEX = 2, /**< [WS06]: C_start from the nearest vertex e */
+    SWARP_WARP_CENTER_FORCE_I32 = 0x7FFFFFFF
+} swarp_warp_center;
+
+/** Options of the LiSPSM warp; zero means default. */
+typedef struct swarp_warp_options {
+    swarp_warp_param param;
+    swarp_warp_center center;
+    double n_user;       /**< SWARP_WARP_PARAM_USER: n' in eye units (> 0; +inf = uniform) */
+    double pseudo_near;  /**< n_p of (4.2), fraction in [0, 1) */
+    double pseudo_far;   /**< f_p of (4.2), fraction in [0, 1), n_p + f_p < 1 */
+    uint32_t _reserved[4];
+} swarp_warp_options;
+
+/** What the warp used (outputs of swarp_warp_lispsm). */
+typedef struct swarp_warp_info {
+    double n_light;   /**< n in light-space units (distance C to near plane of P); +inf = uniform */
+    double n_eye;     /**< n' in eye units: n_light (f - n) / d, what the error model takes */
+    double d;         /**< extent of B along the warp axis (light-space y) */
+    double z_0, z_1;  /**< eye depths of the near and far ends of P's axis */
+    double gamma;     /**< angle between view and light axis, radians [0, pi] */
+    uint32_t _reserved[4];
+} swarp_warp_info;
+
+/** @brief The LiSPSM warp P for the points of B in light view space.
+ *  [RHS] §3.2.1, (3.2), §4.1; [WS06].
+ *  P is a perspective along light-space +y with projection centre C, written
+ *  in the normalised form w = 1 + (y - y_min)/n, so n = +inf is exactly the
+ *  identity-like uniform map (continuous fade as γ -> 0).  Follow it with
+ *  swarp_focus_fit(P·L, ...).
+ *  @param[in] light_view  L from swarp_focus_light_view
+ *  @param[in] cam         the viewer (eye, dir, fovy)
+ *  @param[in] near, far   the view depth range the warp refers to (adjusted
+ *                         or split range; 0 < near < far)
+ *  @param[in] points      points of B (world), count >= 1
+ *  @param[in] nearest     the nearest vertex e of H to the eye (used by
+ *                         SWARP_WARP_CENTER_NEAREST_VERTEX; NULL: the point
+ *                         s on the view vector at depth near, [RHS] §4.1)
+ *  @param[in] opts        NULL or zeroed for defaults
+ *  @param[out] out_P      the warp (applied after L)
+ *  @param[out] out_info   may be NULL
+ *  @return SWARP_OK, SWARP_INFO_WARP_UNIFORM (n = inf: θ -> 0 or η = -1),
+ *          SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE, SWARP_ERR_NEAR_FAR,
+ *          SWARP_ERR_UNKNOWN_ENUM, SWARP_ERR_RESERVED_NONZERO,
+ *          SWARP_ERR_OUT_OF_RANGE (n_user, pseudo fractions). */
+SWARP_API swarp_status swarp_warp_lispsm(const swarp_mat4* light_view, const swarp_camera* cam,
+                                         double near, double far, const swarp_vec3* points,
+                                         size_t count, const swarp_vec3* nearest,
+                                         const swarp_warp_options* opts,
+                                         swarp_mat4* out_P, swarp_warp_info* out_info);
+
+/* ======================================================================== */
+/* Geometry: the one call for engines            (src/setup.c)              */
+/* ======================================================================== */
+typedef enum swarp_technique {
+    SWARP_TECHNIQUE_DEFAULT = 0, /**< = SWARP_TECHNIQUE_LISPSM */
+    SWARP_TECHNIQUE_UNIFORM = 1, /**< focused uniform map [RHS] §3.1 */
+    SWARP_TECHNIQUE_LISPSM = 2,  /**< LiSPSM [RHS] §3.2.1, parameter per swarp_warp_param */
+    SWARP_TECHNIQUE_PSM = 3,     /**< PSM in the camera's post-perspective space [KOZ] */
+    SWARP_TECHNIQUE_FORCE_I32 = 0x7FFFFFFF
+} swarp_technique;
+
+/** Options of swarp_setup; a zeroed struct is a valid request. */
+typedef struct swarp_setup_options {
+    swarp_technique technique;
+    swarp_warp_param param;        /**< LiSPSM parameter (default n_opt) */
+    swarp_warp_center center;      /**< LiSPSM projection centre (default [RHS] §4.1) */
+    swarp_depth_range depth_range; /**< default [-1, 1] */
+    uint32_t map_width, map_height;       /**< texels; 0: 2048 (height 0: = width) */
+    uint32_t screen_width, screen_height; /**< pixels; 0: 1920 x 1080 */
+    uint32_t pancake;       /**< 1: light depth range over the receivers H only ("pancaking") */
+    uint32_t psm_slideback; /**< PSM, light behind the camera: 1 = virtual slide-back instead
+                                 of Kozlov's inverse projection */
+    uint32_t _pad0, _pad1;  /**< must be zero */
+    double n_user;          /**< SWARP_WARP_PARAM_USER: n' in eye units */
+    double pseudo_near;     /**< SWARP_WARP_PARAM_PSEUDO: n_p in [0, 1) */
+    double pseudo_far;      /**< SWARP_WARP_PARAM_PSEUDO: f_p in [0, 1) */
+    double slideback;       /**< PSM: extra slide-back distance (world units, >= 0) that
+                                 keeps the near-plane quad [KOZ] Fig. 14-6 */
+    uint32_t _reserved[4];
+} swarp_setup_options;
+
+/** Results of swarp_setup.  matrix = light_proj · light_view maps world
+ *  space to the light's clip space (x, y in [-1, 1], depth per the depth
+ *  range; divide by w). */
+typedef struct swarp_setup_result {
+    swarp_mat4 light_view;
+    swarp_mat4 light_proj;
+    swarp_mat4 matrix;
+    double n_eye;      /**< n' used, eye units ((3.2) scaled by (f - n)/d); +inf uniform;
+                            PSM: near + slide-back */
+    double n_light;    /**< n in the warp's light-space units; +inf uniform */
+    double view_near;  /**< the view depth range used (adjusted [RHS] §3.3.1 in swarp_setup) */
+    double view_far;
+    double gamma;      /**< angle between view direction and light axis, radians */
+    double max_mx;     /**< predicted max m_x over [view_near, view_far], [RHS] (2.3) */
+    double max_mz;     /**< predicted max m_z, [RHS] (2.4) */
+    double light_near; /**< light depth range covered (world units along the light; PSM: */
+    double light_far;  /**<   post-perspective units), informational */
+    uint32_t point_count; /**< number of points of B */
+    uint32_t _pad;
+    uint32_t _reserved[4];
+} swarp_setup_result;
+
+/** @brief The one call: H = V ∩ S, adjusted near/far [RHS] §3.3.1, B
+ *  [RHS] §3.1.1, light view with light-space alignment, the technique's
+ *  warp ([RHS] §3.2.1 / [KOZ]), focusing [RHS] (3.1) and the error model's
+ *  prediction [RHS] (2.3)-(2.8).  No allocation; about 1-2 µs.
+ *  @param[in] cam, light, scene  (scene: the box S of casters and receivers)
+ *  @param[in] opts     NULL or zeroed for defaults
+ *  @param[out] out     matrices and report
+ *  @param[out] out_points  the points of B (NULL: not wanted); capacity
+ *                      SWARP_BODY_MAX_POINTS always suffices
+ *  @param[out] out_count   number of points of B (may be NULL)
+ *  @return SWARP_OK or an informational status (SWARP_INFO_WARP_UNIFORM,
+ *          SWARP_INFO_PSM_INVERSE, SWARP_INFO_LIGHT_PARALLEL,
+ *          SWARP_INFO_LIGHT_NEAR_CLIPPED, SWARP_INFO_FLAT_EXTENT);
+ *          SWARP_ERR_BODY_EMPTY (camera looks away from the box),
+ *          SWARP_ERR_LIGHT_INSIDE_BODY, SWARP_ERR_BOX_INVERTED,
+ *          SWARP_ERR_BOX_DEGENERATE, SWARP_ERR_CAPACITY, and the argument
+ *          errors (NULL, NON_FINITE, FOV, NEAR_FAR, ZERO_VECTOR, DEGENERATE,
+ *          UNKNOWN_ENUM, RESERVED_NONZERO, OUT_OF_RANGE). */
+SWARP_API swarp_status swarp_setup(const swarp_camera* cam, const swarp_light* light,
+                                   const swarp_aabb* scene, const swarp_setup_options* opts,
+                                   swarp_setup_result* out, swarp_vec3* out_points,
+                                   size_t capacity, size_t* out_count);
+
+/** @brief swarp_setup for an explicit view depth range [near, far] (a split
+ *  frustum), used as given (no adjustment).  cam->near/far are ignored.
+ *  @return as swarp_setup. */
+SWARP_API swarp_status swarp_setup_range(const swarp_camera* cam, const swarp_light* light,
+                                         const swarp_aabb* scene, double near, double far,
+                                         const swarp_setup_options* opts, swarp_setup_result* out,
+                                         swarp_vec3* out_points, size_t capacity,
+                                         size_t* out_count);
+
+/** @brief The light matrices for given points of B (count <=
+ *  SWARP_BODY_MAX_POINTS) and the view depth range [near, far] they refer
+ *  to.  receivers (may be NULL): the points of H, used for pancaking, the
+ *  nearest vertex e ([WS06] centre) and PSM's unit cube clipping.
+ *  @return as swarp_setup; SWARP_ERR_INVALID_ARGUMENT for count 0 or above
+ *          the maximum. */
+SWARP_API swarp_status swarp_setup_points(const swarp_camera* cam, const swarp_light* light,
+                                          const swarp_vec3* points, size_t count,
+                                          const swarp_vec3* receivers, size_t receiver_count,
+                                          double near, double far,
+                                          const swarp_setup_options* opts,
+                                          swarp_setup_result* out);
 /* <<< api: geometry */
 
 /* >>> api: lixel (src/lixel.c) */

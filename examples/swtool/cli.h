@@ -59,6 +59,7 @@ int cmd_params(sw_args* a);
 int cmd_curve(sw_args* a);
 int cmd_report(sw_args* a);
 /* stage: geometry */
+int cmd_setup(sw_args* a);
 
 /* stage: lixel */
 int cmd_lixel(sw_args* a);

@@ -16,6 +16,7 @@ static const sw_cmd commands[] = {
     {"curve", cmd_curve, "m_x, m_z along the view depth for a technique [--splits --scheme]"},
     {"report", cmd_report, "the default configuration: each technique's parameter and max error"},
     /* stage: geometry */
+    {"setup", cmd_setup, "light view/projection/matrix for --eye --dir --box and a light (swarp_setup)"},
 
     /* stage: lixel */
     {"lixel", cmd_lixel, "plane-stabilised light matrix M_l for --eye --dir --plane --light-pos|--light-dir"},
