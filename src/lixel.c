@@ -26,6 +26,8 @@ _Static_assert(sizeof(swarp_lixel_restrict_options) == 3 * sizeof(double) + 16 +
 /* |n.v| (unit vectors) below this: the plane is parallel to the view
  * direction (horizon through the image centre). */
 #define LX_VIEW_PARALLEL_EPS 1e-9
+/* Snap distance (lixels) of the rectangle corners to integers. */
+#define LX_SNAP 1e-6
 /* A vertex of C with q below this fraction of |row 4| |X| is outside. */
 #define LX_Q_EPS 1e-12
 
@@ -121,7 +123,7 @@ SWARP_API swarp_status swarp_lixel_matrix(const swarp_mat4* M_v, uint32_t g, uin
     double pi_scale = hypot(hypot(pi_img.x * g, pi_img.y * h), hypot(pi_img.z, pi_img.w));
     if (!(fabs(pi_img.z) > LX_EYE_EPS * pi_scale)) return SWARP_ERR_LIXEL_PLANE_THROUGH_EYE;
 
-    /* (2): the four corner pixels, hit points p^1..p^4 on P */
+    /* [LIXEL] (2): the four corner pixels, hit points p^1..p^4 on P */
     const double px[4] = {0.0, 0.0, (double)g - 1.0, (double)g - 1.0};
     const double py[4] = {0.0, (double)h - 1.0, (double)h - 1.0, 0.0};
     swarp_vec4 rows[4] = {lx_row(&V, 0), lx_row(&V, 1), lx_row(&V, 2), lx_row(&V, 3)};
@@ -166,7 +168,9 @@ SWARP_API swarp_status swarp_lixel_matrix(const swarp_mat4* M_v, uint32_t g, uin
         p_hat = sw_add(sw_scale(p_r, 1.0 - t), sw_scale(sw_v3(L.x, L.y, L.z), t));
     }
 
-    /* (1), (7)-(10): five correspondences */
+    /* [LIXEL] (1), (7)-(10): five correspondences ((9) read as
+     * [(g-1)q, (h-1)q, 1q, q]^t = M_l p^3, papers README); the corner rays
+     * of [LIXEL] (2) gave p^1..p^4 above */
     swarp_vec4 src[5], dst[5];
     src[0] = L;
     dst[0] = lx_v4(0.0, 0.0, 1.0, 0.0);
@@ -269,8 +273,9 @@ static double det3v(const double a[3], const double b[3], const double k[3]) {
  * rectangle sides (in lixels: far below one). */
 #define LX_CLIP_TOL 1e-9
 
-/* The bounding box of (image of the cone C) clipped to the viewer image
- * [-1/2, g - 1/2] x [-1/2, h - 1/2], without storing the clipped polygon:
+/* The bounding box of (image of the cone C) clipped to the viewer's pixel
+ * centres [0, g - 1] x [0, h - 1] (one lixel per pixel needs no more),
+ * without storing the clipped polygon:
  * its vertices are (a) vertices of C inside, (b) edges of C crossing a
  * side of the rectangle, (c) rectangle corners inside the cone.  All tests
  * are linear in the homogeneous vectors, so rays with q <= 0 need no case.
@@ -278,7 +283,7 @@ static double det3v(const double a[3], const double b[3], const double k[3]) {
 static int clipped_box(const swarp_mat4* M, const swarp_vec4* C, size_t n, double g, double h, double c,
                        double s, double s_x, double s_y, box2* box) {
     /* sides as functionals l(v) >= 0 on v = (X, Y, Q) */
-    const double side[4][3] = {{1, 0, 0.5}, {-1, 0, g - 0.5}, {0, 1, 0.5}, {0, -1, h - 0.5}};
+    const double side[4][3] = {{1, 0, 0}, {-1, 0, g - 1.0}, {0, 1, 0}, {0, -1, h - 1.0}};
     int any = 0;
     double S[3] = {0, 0, 0};
     for (size_t j = 0; j < n; ++j) {
@@ -303,8 +308,7 @@ static int clipped_box(const swarp_mat4* M, const swarp_vec4* C, size_t n, doubl
             double v[3] = {ta * a[0] + tb * b[0], ta * a[1] + tb * b[1], ta * a[2] + tb * b[2]};
             if (!(v[2] > 0.0)) continue;
             double x = v[0] / v[2], y = v[1] / v[2];
-            if (x < -0.5 - LX_CLIP_TOL || x > g - 0.5 + LX_CLIP_TOL || y < -0.5 - LX_CLIP_TOL ||
-                y > h - 0.5 + LX_CLIP_TOL)
+            if (x < -LX_CLIP_TOL || x > g - 1.0 + LX_CLIP_TOL || y < -LX_CLIP_TOL || y > h - 1.0 + LX_CLIP_TOL)
                 continue;
             box_add(box, x, y, c, s, s_x, s_y);
             any = 1;
@@ -312,7 +316,7 @@ static int clipped_box(const swarp_mat4* M, const swarp_vec4* C, size_t n, doubl
     }
     /* (c): corner K inside the cone when every edge sees it on the side of
      * the interior vector S (sum of the unit vertex vectors) */
-    const double kx[4] = {-0.5, g - 0.5, g - 0.5, -0.5}, ky[4] = {-0.5, -0.5, h - 0.5, h - 0.5};
+    const double kx[4] = {0.0, g - 1.0, g - 1.0, 0.0}, ky[4] = {0.0, 0.0, h - 1.0, h - 1.0};
     for (int q = 0; q < 4; ++q) {
         double K[3] = {kx[q], ky[q], 1.0};
         int inside = n >= 3;
@@ -371,8 +375,12 @@ SWARP_API swarp_status swarp_lixel_restrict(const swarp_mat4* M_l, const swarp_v
         }
     }
     double lo_x = box.lo_x, lo_y = box.lo_y, hi_x = box.hi_x, hi_y = box.hi_y;
-    /* integer (lixel-centre) corners enclosing the image */
-    double x0 = floor(lo_x), x1 = ceil(hi_x), y0 = floor(lo_y), y1 = ceil(hi_y);
+    /* integer (lixel-centre) corners enclosing the image; a value within
+     * LX_SNAP of an integer snaps to it (rounding noise of ~1e-12 lixel
+     * must not add a row: the clip volume reaches half a lixel beyond the
+     * centres anyway, so nothing is lost) */
+    double x0 = floor(lo_x + LX_SNAP), x1 = ceil(hi_x - LX_SNAP), y0 = floor(lo_y + LX_SNAP),
+           y1 = ceil(hi_y - LX_SNAP);
     if (!(x1 - x0 + 1.0 <= (double)max_size) || !(y1 - y0 + 1.0 <= (double)max_size) ||
         !(fabs(x0) < 2e9) || !(fabs(x1) < 2e9) || !(fabs(y0) < 2e9) || !(fabs(y1) < 2e9))
         return SWARP_ERR_LIXEL_RECT_TOO_LARGE;
@@ -385,7 +393,7 @@ SWARP_API swarp_status swarp_lixel_restrict(const swarp_mat4* M_l, const swarp_v
     sw_set(&A, 1, 1, s_y * c);
     sw_set(&A, 1, 3, -y0);
     swarp_mat4 M;
-    sw_mul(&A, M_l, &M); /* [LIXEL] §2: M_l := A_l M_l */
+    sw_mul(&A, M_l, &M); /* [LIXEL] Fig. 6, §2 "Less of the plane": M_l := A_l M_l */
     if (!sw_mat_finite(&M)) return SWARP_ERR_NON_FINITE;
     swarp_lixel_rect rect;
     rect.x0 = (int32_t)x0;

@@ -228,7 +228,8 @@ static void check_exact(const config* k, const swarp_mat4* Ml, int samples, doub
     }
 }
 
-/* [LIXEL] (3)-(6) hold exactly for every point of P: 10^4 random configs */
+/* [LIXEL] (3)-(6) hold exactly for every point of P with M_l built from
+ * [LIXEL] (1), (7)-(10): 10^4 random configs */
 START_TEST(plane_points_same_pixel_in_both_images) {
     rng_state = 0x11CE1u;
     double err_d = 0, err_f = 0, err_gpu = 0;
@@ -757,7 +758,7 @@ START_TEST(restrict_clipped_to_view_matches_sampling) {
                 if (dot(sub(X, k.c.eye), k.c.f) <= 0) continue;
                 double x, y;
                 cam_pixel(&k.c, X, &x, &y);
-                if (x < -0.5 || x > k.c.g - 0.5 || y < -0.5 || y > k.c.h - 0.5) continue;
+                if (x < 0 || x > k.c.g - 1 || y < 0 || y > k.c.h - 1) continue;
                 lo_x = fmin(lo_x, x), hi_x = fmax(hi_x, x), lo_y = fmin(lo_y, y), hi_y = fmax(hi_y, y);
             }
         if (!(hi_x > lo_x)) continue;
@@ -765,11 +766,11 @@ START_TEST(restrict_clipped_to_view_matches_sampling) {
         ck_assert_double_ge(R.x1, hi_x - 1e-6);
         ck_assert_double_le(R.y0, lo_y + 1e-6);
         ck_assert_double_ge(R.y1, hi_y - 1e-6);
-        /* and not larger than the view (plus rounding to lixel centres) */
-        ck_assert_int_ge(R.x0, -1);
-        ck_assert_int_le(R.x1, (int32_t)k.c.g);
-        ck_assert_int_ge(R.y0, -1);
-        ck_assert_int_le(R.y1, (int32_t)k.c.h);
+        /* and never larger than the viewer's pixel centres */
+        ck_assert_int_ge(R.x0, 0);
+        ck_assert_int_le(R.x1, (int32_t)k.c.g - 1);
+        ck_assert_int_ge(R.y0, 0);
+        ck_assert_int_le(R.y1, (int32_t)k.c.h - 1);
         /* tight up to the sampling gap */
         double gap = 0.05 * (k.c.g + k.c.h);
         ck_assert_double_ge(R.x0, lo_x - 1 - gap);
@@ -958,6 +959,119 @@ START_TEST(split_directional_points) {
 }
 END_TEST
 
+/* An orthographic viewer (eye at infinity) works too: exact on P. */
+START_TEST(orthographic_viewer) {
+    rng_state = 0x0F7u;
+    for (int it = 0; it < 2000; ++it) {
+        v3 eye = V(rnd(-20, 20), rnd(-20, 20), rnd(-20, 20));
+        v3 f = rnd_unit(), up = rnd_unit();
+        if (len(cross(f, up)) < 0.2) continue;
+        v3 sx = unit(cross(f, up)), uy = cross(sx, f);
+        double hw = rnd(1, 30), hh = rnd(1, 30), n = 0.1, fa = 200;
+        unsigned g = (unsigned)rnd(64, 1500), h = (unsigned)rnd(64, 1500);
+        /* ortho(-hw, hw, -hh, hh, n, fa) * lookAt */
+        double O[4][4] = {{1 / hw, 0, 0, 0}, {0, 1 / hh, 0, 0}, {0, 0, -2 / (fa - n), -(fa + n) / (fa - n)}, {0, 0, 0, 1}};
+        double Vw[4][4] = {{sx.x, sx.y, sx.z, -dot(sx, eye)}, {uy.x, uy.y, uy.z, -dot(uy, eye)},
+                           {-f.x, -f.y, -f.z, dot(f, eye)}, {0, 0, 0, 1}};
+        swarp_mat4 Mv;
+        for (int r = 0; r < 4; ++r)
+            for (int k = 0; k < 4; ++k) {
+                double acc = 0;
+                for (int j = 0; j < 4; ++j) acc += O[r][j] * Vw[j][k];
+                Mv.m[k * 4 + r] = acc;
+            }
+        v3 nrm = rnd_unit();
+        if (fabs(dot(nrm, f)) < 0.05) continue;
+        swarp_plane P = plane_through(nrm, add(eye, mul(f, rnd(5, 50))));
+        swarp_light L = (it & 1) ? point_light(add(eye, V(rnd(-30, 30), rnd(-30, 30), rnd(-30, 30)))) : dir_light(rnd_unit());
+        swarp_mat4 Ml;
+        swarp_status st = swarp_lixel_matrix(&Mv, g, h, &L, &P, NULL, &Ml, NULL);
+        if (st == SWARP_ERR_LIXEL_LIGHT_ON_PLANE || st == SWARP_ERR_LIXEL_LIGHT_PARALLEL_PLANE) continue;
+        ck_assert_msg(!swarp_status_is_error(st), "%s", swarp_status_name(st));
+        for (int k = 0; k < 8; ++k) {
+            double x = rnd(0, g - 1), y = rnd(0, h - 1);
+            double a = ((x + 0.5) * 2 / g - 1) * hw, b = ((y + 0.5) * 2 / h - 1) * hh;
+            v3 o = add(eye, add(mul(sx, a), mul(uy, b)));
+            double t = -(dot(nrm, o) + P.d) / dot(nrm, f);
+            if (t < n || t > fa) continue;
+            v3 X = add(o, mul(f, t));
+            double xl, yl, zl, q;
+            light_px(&Ml, X, &xl, &yl, &zl, &q);
+            /* light on the viewer's side of P or not: q > 0 in front */
+            ck_assert_double_gt(q, 0);
+            ck_assert_double_le(fmax(fabs(xl - x), fabs(yl - y)) / fmax(g, h), 1e-9);
+        }
+    }
+}
+END_TEST
+
+/* Near-degenerate sweep: planes almost through the eye, lights almost on
+ * the plane or grazing it, planes almost parallel to the view.  Errors
+ * leave the output untouched; every other result is finite with q > 0 on
+ * the visible plane points. */
+START_TEST(near_degenerate_never_nan) {
+    rng_state = 0xDE6u;
+    int n_err = 0, n_ok = 0;
+    for (int it = 0; it < 4000; ++it) {
+        config k = random_config(50.0);
+        double eps = pow(10.0, -rnd(3, 15));
+        v3 n = V(k.P.a, k.P.b, k.P.c);
+        switch (it % 4) {
+        case 0: /* plane through the eye, offset eps */
+            k.P.d = -dot(n, k.c.eye) + eps * (rng_next() & 1 ? 1 : -1);
+            break;
+        case 1: /* point light eps off the plane */
+        {
+            v3 X0 = mul(n, -k.P.d / dot(n, n));
+            v3 lp = add(add(X0, mul(unit(cross(n, rnd_unit())), rnd(1, 30))), mul(unit(n), eps));
+            k.light = point_light(lp);
+            break;
+        }
+        case 2: /* directional light grazing the plane */
+        {
+            v3 t = unit(cross(n, rnd_unit()));
+            k.light = dir_light(add(t, mul(unit(n), eps)));
+            break;
+        }
+        default: /* plane almost parallel to the view direction */
+        {
+            v3 t = unit(cross(k.c.f, rnd_unit()));
+            n = add(t, mul(k.c.f, eps));
+            k.P = plane_through(n, add(k.c.eye, mul(k.c.u, -rnd(0.5, 5))));
+            break;
+        }
+        }
+        swarp_mat4 Ml;
+        sentinel(&Ml);
+        swarp_status st = swarp_lixel_matrix(&k.Mv, k.c.g, k.c.h, &k.light, &k.P, NULL, &Ml, NULL);
+        if (swarp_status_is_error(st)) {
+            ck_assert(is_sentinel(&Ml));
+            ++n_err;
+            continue;
+        }
+        ++n_ok;
+        ck_assert(mat_finite(&Ml));
+        for (int s = 0; s < 8; ++s) {
+            v3 X;
+            double xs = rnd(0, k.c.g - 1), ys = rnd(0, k.c.h - 1);
+            double t = cam_hit(&k.c, &k.P, xs, ys, &X);
+            if (!(t > k.c.near) || t > k.c.far) continue;
+            double x, y, z, q;
+            light_px(&Ml, X, &x, &y, &z, &q);
+            ck_assert(isfinite(q));
+            if (st == SWARP_OK) {
+                /* no warning given: then it must still be right */
+                ck_assert_double_gt(q, 0);
+                double e = fmax(fabs(x - xs), fabs(y - ys)) / fmax(k.c.g, k.c.h);
+                ck_assert_msg(e <= 1e-9, "case %d eps %g: error %g", it % 4, eps, e);
+            }
+        }
+    }
+    ck_assert_int_gt(n_err, 100);
+    ck_assert_int_gt(n_ok, 100);
+}
+END_TEST
+
 /* @@MORE_TESTS@@ */
 
 static Suite* lixel_suite(void) {
@@ -979,6 +1093,8 @@ static Suite* lixel_suite(void) {
     tcase_add_test(tc, factor_viewport_times_projection);
     tcase_add_test(tc, floor_wall_split_and_select);
     tcase_add_test(tc, split_directional_points);
+    tcase_add_test(tc, orthographic_viewer);
+    tcase_add_test(tc, near_degenerate_never_nan);
     /* @@MORE_TCASES@@ */
     suite_add_tcase(s, tc);
     return s;

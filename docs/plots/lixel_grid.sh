@@ -1,0 +1,6 @@
+#!/bin/sh
+# Regenerates docs/img/lixel_grid.png (docs/lixel.md).  Run from the top of
+# the tree after `meson setup build && ninja -C build` (needs libpng-dev).
+set -eu
+ninja -C build tests/lixel_grid >/dev/null
+./build/tests/lixel_grid docs/img/lixel_grid.png
