@@ -230,7 +230,7 @@ swarp_status sw_body_h(const swarp_camera* cam, double near, double far, const s
 }
 
 /* The square pyramid L circumscribing the spot cone: 4 planes through l. */
-static swarp_status sw_clip_light_pyramid(swarp_polyhedron* B, const swarp_light* light) {
+swarp_status sw_clip_light_pyramid(swarp_polyhedron* B, const swarp_light* light) {
     swarp_vec3 a = {0, 0, 1}, e1 = {1, 0, 0}, e2;
     sw_gnormalize(light->direction, &a);
     swarp_vec3 ref = fabs(a.x) < 0.6 ? sw_v3(1, 0, 0) : (fabs(a.y) < 0.6 ? sw_v3(0, 1, 0) : sw_v3(0, 0, 1));

@@ -190,6 +190,7 @@ static void check_config_v(rng* R, const config* c, swarp_technique tech, swarp_
     if (o.param == SWARP_WARP_PARAM_PSEUDO) o.pseudo_near = 0.1, o.pseudo_far = 0.2;
     o.center = (swarp_warp_center)((v / 5) % 3);
     if (tech == SWARP_TECHNIQUE_PSM && v % 7 == 3) o.psm_slideback = 1;
+    if (v % 6 == 5) o.pancake = 1; /* depth range over the receivers only */
     swarp_setup_result res;
     swarp_vec3 pts[SWARP_BODY_MAX_POINTS];
     size_t np = 0;
@@ -246,7 +247,10 @@ static void check_config_v(rng* R, const config* c, swarp_technique tech, swarp_
         if (c->light.type == SWARP_LIGHT_POINT && cc[3] <= 0) continue;
         for (int k = 0; k < 2; ++k) lo[k] = fmin(lo[k], cc[k]), hi[k] = fmax(hi[k], cc[k]);
     }
-    if (s != SWARP_INFO_LIGHT_NEAR_CLIPPED)
+    /* (PSM fits the receivers a spot lights, H ∩ L, whose vertices this test
+     * does not rebuild: for spots its coverage checks remain) */
+    int spot = c->light.type == SWARP_LIGHT_POINT && c->light.cone_angle > 0;
+    if (s != SWARP_INFO_LIGHT_NEAR_CLIPPED && !(spot && tech == SWARP_TECHNIQUE_PSM))
         for (int k = 0; k < 2; ++k) {
             CHECK(fabs(lo[k] + 1) < ctol && fabs(hi[k] - 1) < ctol, "not tight: axis %d [%.17g, %.17g] %s tech %d", k,
                           lo[k], hi[k], swarp_status_name(s), (int)tech);
@@ -300,6 +304,10 @@ static void check_config_v(rng* R, const config* c, swarp_technique tech, swarp_
             }
             double cc[4];
             clip(&res.matrix, p, cc);
+            if (o.pancake) { /* casters may lie before the depth range: the renderer clamps them */
+                double zlo = dr == SWARP_DEPTH_ZERO_TO_ONE ? 0.0 : -1.0;
+                if (cc[2] < zlo) cc[2] = zlo;
+            }
             CHECK(in_clip(cc, dr, ctol), "caster between H and the light outside the map: %g %g %g (%s)",
                           cc[0], cc[1], cc[2], swarp_status_name(s));
             /* depth order: the caster is nearer the light than the receiver
