@@ -358,7 +358,7 @@ static double sw_pseudo_angle(double x, double y) {
 /* Clips in into out (out != in).  When no vertex lies outside, *unchanged
  * is set and out is not written. */
 static swarp_status sw_poly_clip_to(const swarp_polyhedron* in, swarp_vec3 n_raw, double d_raw,
-                                    swarp_polyhedron* out, int* unchanged) {
+                                    swarp_polyhedron* out, int* unchanged, double scale /* 0: compute */) {
     *unchanged = 0;
     double len = sw_glen(n_raw);
     if (!(len > 0.0)) return SWARP_ERR_ZERO_VECTOR;
@@ -370,7 +370,7 @@ static swarp_status sw_poly_clip_to(const swarp_polyhedron* in, swarp_vec3 n_raw
         return SWARP_OK;
     }
     /* tolerance for "on the plane": see SWARP_POLY_EPS_REL */
-    const double in_scale = sw_poly_scale(in);
+    const double in_scale = scale > 0.0 ? scale : sw_poly_scale(in);
     const double eps = SWARP_POLY_EPS_REL * sw_max(in_scale, fabs(d));
     double dist[SWARP_POLY_MAX_VERTICES];
     signed char side[SWARP_POLY_MAX_VERTICES];
@@ -501,7 +501,7 @@ swarp_status sw_poly_clip(const swarp_polyhedron* in, swarp_vec3 n, double d, sw
     swarp_polyhedron tmp;
     swarp_polyhedron* dst = (out == in) ? &tmp : out;
     int unchanged = 0;
-    swarp_status s = sw_poly_clip_to(in, n, d, dst, &unchanged);
+    swarp_status s = sw_poly_clip_to(in, n, d, dst, &unchanged, 0.0);
     if (s != SWARP_OK) return s;
     if (unchanged) {
         if (out != in) sw_poly_copy(in, out);
@@ -539,7 +539,10 @@ swarp_status sw_poly_clip_box(const swarp_polyhedron* in, const swarp_aabb* box,
         if ((k & 1) ? !(hi[c] > bmax[c]) : !(lo[c] < bmin[c])) continue;
         swarp_polyhedron* dst = (src == out) ? &buf : out;
         int unchanged = 0;
-        swarp_status s = sw_poly_clip_to(src, ns[k], ds[k], dst, &unchanged);
+        /* the scale from the bounds: the largest absolute coordinate */
+        double sc = 1e-300;
+        for (int q = 0; q < 3; ++q) sc = sw_max(sc, sw_max(fabs(lo[q]), fabs(hi[q])));
+        swarp_status s = sw_poly_clip_to(src, ns[k], ds[k], dst, &unchanged, sc);
         if (s != SWARP_OK) return s;
         if (unchanged) continue;
         src = dst;
