@@ -971,6 +971,110 @@ START_TEST(focus_fit_maps_to_the_cube) {
 }
 END_TEST
 
+/* ---- light view and the LiSPSM warp called directly ----------------------- */
+START_TEST(light_view_alignment) {
+    rng R = {4242};
+    int blended = 0, aligned = 0;
+    for (int t = 0; t < 2000; ++t) {
+        config c;
+        rnd_config(&R, &c, 0);
+        swarp_light light;
+        memset(&light, 0, sizeof light);
+        light.type = SWARP_LIGHT_DIRECTIONAL;
+        light.direction = rnd_unit(&R);
+        if (t % 10 == 0) light.direction = scl(unit(c.cam.dir), (t % 20) ? 1.0 : -1.0); /* exactly (anti)parallel */
+        swarp_mat4 L;
+        swarp_status s = swarp_focus_light_view(&c.cam, &light, NULL, &L);
+        ck_assert(s == SWARP_OK || s == SWARP_INFO_LIGHT_PARALLEL);
+        /* rigid, right-handed: rows orthonormal, det = +1 */
+        swarp_vec3 r0 = v3(L.m[0], L.m[4], L.m[8]), r1 = v3(L.m[1], L.m[5], L.m[9]), r2 = v3(L.m[2], L.m[6], L.m[10]);
+        ck_assert_double_eq_tol(dot(r0, r0), 1, 1e-12);
+        ck_assert_double_eq_tol(dot(r1, r1), 1, 1e-12);
+        ck_assert_double_eq_tol(dot(r0, r1), 0, 1e-12);
+        ck_assert_double_eq_tol(dot(cross(r0, r1), r2), 1, 1e-12);
+        /* looks along the light: -z row is the light direction */
+        swarp_vec3 a = unit(light.direction);
+        ck_assert_double_eq_tol(dot(r2, a), -1, 1e-12);
+        /* the eye is the origin */
+        double e[4];
+        clip(&L, c.cam.eye, e);
+        ck_assert(fabs(e[0]) + fabs(e[1]) + fabs(e[2]) < 1e-9 * fmax(1, len(c.cam.eye)));
+        /* up = the view direction projected (outside the blend zone) */
+        swarp_vec3 v = unit(c.cam.dir);
+        swarp_vec3 vp = sub(v, scl(a, dot(v, a)));
+        if (len(vp) > 0.1737) {
+            ck_assert_int_eq(s, SWARP_OK);
+            ck_assert_double_eq_tol(dot(r1, unit(vp)), 1, 1e-12);
+            aligned++;
+        } else {
+            ck_assert_int_eq(s, SWARP_INFO_LIGHT_PARALLEL);
+            blended++;
+        }
+    }
+    ck_assert(aligned > 1000 && blended > 100);
+}
+END_TEST
+
+START_TEST(warp_lispsm_direct) {
+    /* overhead light, level camera, box containing V: n_opt = n + sqrt(n f)
+     * in eye units, and P maps B's extent along y to [-1, 1] */
+    swarp_camera cam = overhead_camera();
+    swarp_light light;
+    memset(&light, 0, sizeof light);
+    light.type = SWARP_LIGHT_DIRECTIONAL;
+    light.direction = v3(0, -1, 0);
+    swarp_aabb box = {{-300, -100, -150}, {300, 100, 50}};
+    swarp_vec3 pts[SWARP_BODY_MAX_POINTS];
+    size_t np = 0;
+    ck_assert_int_eq(swarp_body_points(&cam, 1, 100, &light, &box, pts, SWARP_BODY_MAX_POINTS, &np), SWARP_OK);
+    size_t need = 0;
+    ck_assert_int_eq(swarp_body_points(&cam, 1, 100, &light, &box, pts, 3, &need), SWARP_ERR_CAPACITY);
+    ck_assert_uint_eq(need, np);
+    swarp_mat4 L, P;
+    ck_assert_int_eq(swarp_focus_light_view(&cam, &light, NULL, &L), SWARP_OK);
+    swarp_warp_info info;
+    for (int center = 1; center <= 2; ++center) {
+        swarp_warp_options o;
+        memset(&o, 0, sizeof o);
+        o.center = (swarp_warp_center)center;
+        swarp_vec3 e = add(cam.eye, v3(0, 0, -1)); /* a nearest vertex on the near plane axis */
+        ck_assert_int_eq(swarp_warp_lispsm(&L, &cam, 1, 100, pts, np, &e, &o, &P, &info), SWARP_OK);
+        ck_assert_double_eq_tol(info.d, 99, 1e-9);
+        ck_assert_double_eq_tol(info.z_0, 1, 1e-9);
+        ck_assert_double_eq_tol(info.z_1, 100, 1e-9);
+        ck_assert_double_eq_tol(info.n_eye, 11, 1e-9);
+        ck_assert_double_eq_tol(info.gamma, PI / 2, 1e-12);
+        swarp_mat4 PL;
+        ck_assert_int_eq(swarp_mat4_mul(&P, &L, &PL), SWARP_OK);
+        double lo = INFINITY, hi = -INFINITY;
+        for (size_t i = 0; i < np; ++i) {
+            double cc[4];
+            clip(&PL, pts[i], cc);
+            ck_assert(cc[3] > 0);
+            lo = fmin(lo, cc[1]), hi = fmax(hi, cc[1]);
+        }
+        ck_assert_double_eq_tol(lo, -1, 1e-12);
+        ck_assert_double_eq_tol(hi, 1, 1e-12);
+    }
+    /* a caller's n' = +inf is the uniform map */
+    swarp_warp_options o;
+    memset(&o, 0, sizeof o);
+    o.param = SWARP_WARP_PARAM_USER;
+    o.n_user = INFINITY;
+    ck_assert_int_eq(swarp_warp_lispsm(&L, &cam, 1, 100, pts, np, NULL, &o, &P, &info), SWARP_INFO_WARP_UNIFORM);
+    ck_assert(P.m[3] == 0 && P.m[7] == 0 && P.m[11] == 0); /* no perspective row */
+    /* bad input: untouched */
+    swarp_mat4 P0 = P;
+    pts[0].x = NAN;
+    ck_assert_int_eq(swarp_warp_lispsm(&L, &cam, 1, 100, pts, np, NULL, NULL, &P, &info), SWARP_ERR_NON_FINITE);
+    ck_assert(memcmp(&P, &P0, sizeof P) == 0);
+    pts[0].x = 0;
+    o.param = (swarp_warp_param)17;
+    ck_assert_int_eq(swarp_warp_lispsm(&L, &cam, 1, 100, pts, np, NULL, &o, &P, &info), SWARP_ERR_UNKNOWN_ENUM);
+    ck_assert_int_eq(swarp_warp_lispsm(&L, &cam, 5, 1, pts, np, NULL, NULL, &P, &info), SWARP_ERR_NEAR_FAR);
+}
+END_TEST
+
 Suite* geometry_suite(void) {
     Suite* s = suite_create("geometry");
     TCase* tc = tcase_create("properties");
@@ -990,6 +1094,8 @@ Suite* geometry_suite(void) {
     tcase_add_test(tc, poly_camera_and_inverse_matrix_agree);
     tcase_add_test(tc, adjusted_range_brackets_samples);
     tcase_add_test(tc, focus_fit_maps_to_the_cube);
+    tcase_add_test(tc, light_view_alignment);
+    tcase_add_test(tc, warp_lispsm_direct);
     suite_add_tcase(s, tc);
     return s;
 }
