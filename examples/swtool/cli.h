@@ -69,5 +69,7 @@ int cmd_stabwalk(sw_args* a);
 /* stage: plan */
 
 /* stage: extras */
+int cmd_cube(sw_args* a);
+int cmd_mindepth(sw_args* a);
 
 #endif
