@@ -724,7 +724,7 @@ SWARP_API swarp_status swarp_body_adjusted_range(const swarp_camera* cam, const 
  * smoothly through the right vector when the light passes parallel or
  * antiparallel to the view in the plane of v and the camera's up vector.
  * (Every continuous tangent field on the sphere has a zero: this one's lies
- * off that plane, on the v-r great circle, at sin γ ≈ 0.09; see
+ * off that plane, on the v-r great circle, at γ ≈ 5.6° (sin γ ≈ 0.097); see
  * docs/geometry.md.)  SWARP_INFO_LIGHT_PARALLEL reports that the blend is
  * active.
  */
