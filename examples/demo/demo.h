@@ -44,4 +44,10 @@ int demo_error_graph(const demo_view* v, const demo_shadow* sh, int map_res,
 void demo_draw_frustum(demo_image* im, const swarp_mat4* m, const demo_view* v, double d0,
                        double d1, const uint8_t rgb[3], int view_vector);
 
+/** The third-person visualisation view ([RHS] §5.2-5.3) of configuration
+ *  sh: rendered with split colours from an outside camera, overlays drawn.
+ *  Returns the number of GL errors (-1 on failure). */
+int demo_third_person(demo_renderer* r, const demo_view* v, const demo_shadow* sh,
+                      const demo_main_params* base, demo_image* out);
+
 #endif

@@ -487,6 +487,10 @@ static int run_technique(const options* o, demo_renderer* r, const demo_view* v,
         if (e < 0) return -1;
         res->gl_errors += e;
 
+        demo_image third;
+        int e3 = demo_third_person(r, v, &sh, &p, &third);
+        if (e3 < 0) return -1;
+        res->gl_errors += e3;
         char title[160];
         snprintf(title, sizeof title, "%s: m_x, m_z along the view vector", res->label);
         demo_image graph;
@@ -500,10 +504,10 @@ static int run_technique(const options* o, demo_renderer* r, const demo_view* v,
         snprintf(gl, sizeof gl, "grid: %g texels per cell", (double)o->grid);
         demo_image_label(&res->grid, 8, 40, 1, gl);
         demo_image_label(&res->light, 8, res->light.h - 20, 1, res->label);
-        const demo_image* all[6] = {&res->shaded, &res->sampling, &res->splits, &res->grid,
-                                    &res->light, &graph};
+        const demo_image* all[7] = {&res->shaded, &res->sampling, &res->splits, &res->grid,
+                                    &res->light, &graph, &third};
         res->min_nonblank = 1.0;
-        for (int k = 0; k < 6; ++k) {
+        for (int k = 0; k < 7; ++k) {
             double nb = demo_image_nonblank(all[k]);
             if (nb < res->min_nonblank) res->min_nonblank = nb;
         }
@@ -514,7 +518,9 @@ static int run_technique(const options* o, demo_renderer* r, const demo_view* v,
         w |= write_png(o, res->label, "grid", &res->grid);
         w |= write_png(o, res->label, "light", &res->light);
         w |= write_png(o, res->label, "error", &graph);
+        w |= write_png(o, res->label, "third", &third);
         demo_image_free(&graph);
+        demo_image_free(&third);
         if (w) return -1;
     }
     res->ok = 1;
@@ -1098,7 +1104,7 @@ static int test_images(const options* o) {
     double nonblank = rep.min_nonblank;
     if (rc) return rc == 2 ? 1 : rc;
     int fails = 0, checked = 0;
-    const char* what[6] = {"shaded", "sampling", "splits", "grid", "light", "error"};
+    const char* what[7] = {"shaded", "sampling", "splits", "grid", "light", "error", "third"};
     int produced = 0;
     for (int t = 0; t < DEMO_TECH_COUNT; ++t) {
         if (!rep.produced[t]) {
@@ -1113,7 +1119,7 @@ static int test_images(const options* o) {
             snprintf(label, sizeof label, "%s%d", demo_technique_name((demo_technique)t), q.splits);
         else
             snprintf(label, sizeof label, "%s", demo_technique_name((demo_technique)t));
-        for (int k = 0; k < 6; ++k) {
+        for (int k = 0; k < 7; ++k) {
             char path[1200];
             snprintf(path, sizeof path, "%s/%s_%s.png", q.out, label, what[k]);
             FILE* f = fopen(path, "rb");

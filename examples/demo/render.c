@@ -49,11 +49,15 @@ static const char* const main_vs =
     "layout(location = 0) in vec3 a_p;\n"
     "layout(location = 1) in vec3 a_n;\n"
     "layout(location = 2) in vec3 a_c;\n"
-    "uniform mat4 u_view, u_proj;\n"
+    "uniform mat4 u_view, u_proj, u_sel_view;\n"
+    "uniform int u_has_sel_view;\n"
     "out vec3 v_p; out vec3 v_n; out vec3 v_c; out float v_depth;\n"
     "void main() {\n"
     "  vec4 vs = u_view * vec4(a_p, 1.0);\n"
-    "  v_p = a_p; v_n = a_n; v_c = a_c; v_depth = -vs.z;\n"
+    /* split selection always uses the VIEWER's eye depth, also when an
+     * outside camera draws the picture */
+    "  vec4 es = u_has_sel_view != 0 ? u_sel_view * vec4(a_p, 1.0) : vs;\n"
+    "  v_p = a_p; v_n = a_n; v_c = a_c; v_depth = -es.z;\n"
     "  gl_Position = u_proj * vs;\n"
     "}\n";
 
@@ -405,6 +409,8 @@ int demo_render_main(demo_renderer* r, const demo_shadow* sh, const demo_main_pa
     glUseProgram(pr);
     glBindVertexArray(r->vao);
     glUniformMatrix4fv(glGetUniformLocation(pr, "u_view"), 1, GL_FALSE, p->view);
+    glUniformMatrix4fv(glGetUniformLocation(pr, "u_sel_view"), 1, GL_FALSE, p->sel_view);
+    glUniform1i(glGetUniformLocation(pr, "u_has_sel_view"), p->has_sel_view);
     glUniformMatrix4fv(glGetUniformLocation(pr, "u_proj"), 1, GL_FALSE, p->proj);
     float lm[DEMO_MAX_SPLITS * 16], li[DEMO_MAX_SPLITS * 16], uvs[DEMO_MAX_SPLITS * 2];
     float split[DEMO_MAX_SPLITS + 1];

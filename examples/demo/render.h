@@ -54,6 +54,8 @@ int demo_render_shadow(demo_renderer* r, const demo_shadow* sh, demo_filter filt
 
 typedef struct demo_main_params {
     float view[16], proj[16];       /**< camera (cglm, column-major) */
+    float sel_view[16];             /**< the viewer's view matrix for split selection */
+    int has_sel_view;               /**< 0: the camera above is the viewer */
     float light_dir[3];             /**< direction light travels */
     demo_mode mode;
     demo_filter filter;

@@ -255,7 +255,7 @@ static int conventional_map(const swarp_camera* cam, const swarp_light* light,
                             const swarp_aabb* scene, const demo_shadow_request* req,
                             demo_technique t, int range, double near, double far,
                             swarp_mat4* out_m, double* out_n, double* out_near, double* out_far,
-                            swarp_status* out_status) {
+                            swarp_vec3* body, int* body_count, swarp_status* out_status) {
 #ifdef DEMO_HAVE_GEOMETRY
     swarp_setup_options opt;
     memset(&opt, 0, sizeof opt);
@@ -290,8 +290,13 @@ static int conventional_map(const swarp_camera* cam, const swarp_light* light,
         break;
     }
     swarp_setup_result res;
-    swarp_status st = range ? swarp_setup_range(cam, light, scene, near, far, &opt, &res, NULL, 0, NULL)
-                            : swarp_setup(cam, light, scene, &opt, &res, NULL, 0, NULL);
+    size_t nb = 0;
+    _Static_assert(DEMO_MAX_BODY >= SWARP_BODY_MAX_POINTS, "room for every point of B");
+    swarp_status st = range ? swarp_setup_range(cam, light, scene, near, far, &opt, &res, body,
+                                                body ? DEMO_MAX_BODY : 0, body ? &nb : NULL)
+                            : swarp_setup(cam, light, scene, &opt, &res, body,
+                                          body ? DEMO_MAX_BODY : 0, body ? &nb : NULL);
+    if (body_count) *body_count = swarp_status_is_error(st) ? 0 : (int)nb;
     *out_status = st;
     if (swarp_status_is_error(st)) {
         fprintf(stderr, "demo: swarp_setup (%s): %s\n", demo_technique_name(t),
@@ -306,6 +311,8 @@ static int conventional_map(const swarp_camera* cam, const swarp_light* light,
 #else
     (void)req;
     (void)t;
+    (void)body;
+    if (body_count) *body_count = 0;
     /* TEMPORARY stand-in: uniform only, over the camera's own range */
     if (!range) {
         near = cam->near;
@@ -363,7 +370,7 @@ int demo_shadow_setup(const swarp_camera* cam, const swarp_light* light,
         }
         swarp_status sf;
         if (conventional_map(cam, light, scene, req, DEMO_TECH_UNIFORM, 0, 0, 0, &sh.light[n],
-                             &sh.n_prime[n], &sh.near, &sh.far, &sf))
+                             &sh.n_prime[n], &sh.near, &sh.far, NULL, NULL, &sf))
             return -1;
         sh.count = n + 1;
         sh.split[0] = sh.near;
@@ -385,7 +392,8 @@ int demo_shadow_setup(const swarp_camera* cam, const swarp_light* light,
     if (sh.count < 1 || sh.count > DEMO_MAX_SPLITS) return -1;
     /* the whole view first: its adjusted range [RHS] §3.3.1 */
     if (conventional_map(cam, light, scene, req, pssm ? DEMO_TECH_UNIFORM : t, 0, 0, 0,
-                         &sh.light[0], &sh.n_prime[0], &sh.near, &sh.far, &st))
+                         &sh.light[0], &sh.n_prime[0], &sh.near, &sh.far, sh.body, &sh.body_count,
+                         &st))
         return -1;
     if (t == DEMO_TECH_PSSM_STABLE) {
         /* the sphere covers whole split frusta: no adjusted range */
@@ -418,7 +426,7 @@ int demo_shadow_setup(const swarp_camera* cam, const swarp_light* light,
                 continue;
             }
             if (conventional_map(cam, light, scene, req, t, 1, sh.split[i], sh.split[i + 1],
-                                 &sh.light[i], &sh.n_prime[i], &a, &b, &si))
+                                 &sh.light[i], &sh.n_prime[i], &a, &b, NULL, NULL, &si))
                 return -1;
             if (si != SWARP_OK && st == SWARP_OK) st = si;
         }

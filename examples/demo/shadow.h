@@ -9,6 +9,7 @@
 #include "shadowwarp.h"
 
 #define DEMO_MAX_SPLITS 16
+#define DEMO_MAX_BODY 128
 
 typedef enum demo_technique {
     DEMO_TECH_UNIFORM = 0, /**< light-space aligned, focused uniform map */
@@ -65,6 +66,8 @@ typedef struct demo_shadow {
     double predicted_max_mx, predicted_max_mz; /**< NAN when not available */
     swarp_status status;                    /**< library status of the setup */
     const char* source;                     /**< who computed the matrices */
+    swarp_vec3 body[DEMO_MAX_BODY];         /**< points of B from the setup (whole view) */
+    int body_count;
 } demo_shadow;
 
 const char* demo_technique_name(demo_technique t);
