@@ -23,3 +23,34 @@ ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 \
 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
     meson test -C build-asan --print-errorlogs --timeout-multiplier 10
 # stage: robustness (valgrind, coverage, fuzz, consumers)
+# Each step below can be run on its own; docs/quality.md lists the commands.
+echo "== valgrind memcheck (every test binary except python and fenv)"
+# python3 is not our binary; valgrind computes SSE in round-to-nearest only
+SWARP_HARD_CASES_SIZE=2000 meson test -C build-ci --no-suite python --no-suite fenv --print-errorlogs \
+    --wrap='valgrind --error-exitcode=1 --leak-check=full --errors-for-leak-kinds=definite,indirect --track-origins=yes -q' \
+    --timeout-multiplier=10
+
+echo "== coverage of src/ (gcovr)"
+[ -d build-cov ] || meson setup build-cov -Db_coverage=true --buildtype=debug >/dev/null
+ninja -C build-cov >/dev/null
+find build-cov -name '*.gcda' -delete
+meson test -C build-cov --no-suite python >/dev/null || meson test -C build-cov --no-suite python --print-errorlogs
+gcovr -r . --filter 'src/' --exclude-unreachable-branches --exclude-throw-branches build-cov | tail -n 40
+gcovr -r . --filter 'src/' --exclude-unreachable-branches --exclude-throw-branches --print-summary \
+    -o /dev/null build-cov
+if [ -n "${SWARP_COV_FAIL_UNDER:-}" ]; then
+    # e.g. SWARP_COV_FAIL_UNDER="95 90" fails below 95 % lines or 90 % branches
+    set -- $SWARP_COV_FAIL_UNDER
+    gcovr -r . --filter 'src/' --exclude-unreachable-branches --exclude-throw-branches \
+        --fail-under-line "$1" --fail-under-branch "$2" -o /dev/null build-cov
+fi
+
+echo "== consumers (pkg-config, CMake, meson subproject)"
+sh tests/consumers/run.sh
+
+echo "== ABI (abidiff against tests/abi/shadowwarp.abi)"
+sh tests/abi/check.sh build-ci
+
+echo "== fuzz (libFuzzer, ${SWARP_FUZZ_SECONDS:-60} s in total)"
+sh tests/fuzz/run.sh "${SWARP_FUZZ_SECONDS:-60}"
+echo "== all done"

@@ -1,0 +1,424 @@
+"""shadowwarp -- ctypes binding of libshadowwarp (standard library only).
+
+Usage:
+    import shadowwarp as sw
+    n = sw.warp_nopt(d=10.0, z_0=1.0, z_1=100.0)      # a float
+    n.status                                          # 'SWARP_OK' or an informational name
+    cam = sw.Camera(eye=(0, 2, 5), dir=(0, 0, -1), up=(0, 1, 0),
+                    fovy=1.0, aspect=16/9, near=0.1, far=100.0)
+
+Conventions (those of include/shadowwarp.h):
+  * matrices are swarp_mat4, 16 doubles in COLUMN-MAJOR order; Mat4.rows()
+    gives them row by row, Mat4.from_rows() builds one;
+  * angles in radians;
+  * an error status raises SwarpError (.status is the symbolic name, .code the
+    number, .message the library's text); the outputs are untouched then;
+  * a success returns the outputs; each carries .status ('SWARP_OK' or an
+    informational name such as 'SWARP_INFO_WARP_UNIFORM').  Results of
+    several values are tuples (Result) with .status.
+
+The library is found through $SHADOWWARP_LIB (a path to libshadowwarp.so),
+then next to this file (build trees: ../../build*/src), then the system
+(ctypes.util.find_library).  Functions that are not in the loaded library
+(an older version) raise NotImplementedError when called; has(name) tells.
+"""
+import ctypes
+import ctypes.util
+import glob
+import math
+import os
+
+__all__ = ["SwarpError", "Vec3", "Vec4", "Mat4", "AABB", "Plane", "Camera", "Light",
+           "ErrorConfig", "has", "version", "status_name", "status_string"]
+
+_c_double_p = ctypes.POINTER(ctypes.c_double)
+_c_size_p = ctypes.POINTER(ctypes.c_size_t)
+
+
+def _find_library():
+    env = os.environ.get("SHADOWWARP_LIB")
+    if env:
+        return env
+    here = os.path.dirname(os.path.abspath(__file__))
+    for pattern in ("../../build*/src/libshadowwarp.so", "../../build*/src/libshadowwarp.so.*"):
+        hits = sorted(glob.glob(os.path.join(here, pattern)))
+        if hits:
+            return hits[0]
+    found = ctypes.util.find_library("shadowwarp")
+    if found:
+        return found
+    raise OSError("libshadowwarp not found: set SHADOWWARP_LIB to the path of libshadowwarp.so")
+
+
+_lib = ctypes.CDLL(_find_library())
+
+
+def has(name):
+    """True if the loaded library exports the C function `name`."""
+    try:
+        getattr(_lib, name)
+        return True
+    except AttributeError:
+        return False
+
+
+def _fn(name, argtypes, restype=ctypes.c_int):
+    """Binds a C function lazily, so a missing symbol only fails when called."""
+    cache = {}
+
+    def call(*args):
+        f = cache.get("f")
+        if f is None:
+            if not has(name):
+                raise NotImplementedError(name + " is not in the loaded libshadowwarp")
+            f = getattr(_lib, name)
+            f.argtypes = argtypes
+            f.restype = restype
+            cache["f"] = f
+        return f(*args)
+    call.__name__ = name
+    return call
+
+
+# ---- status ---------------------------------------------------------------
+_status_name = _fn("swarp_status_name", [ctypes.c_int], ctypes.c_char_p)
+_status_string = _fn("swarp_status_string", [ctypes.c_int], ctypes.c_char_p)
+_status_is_error = _fn("swarp_status_is_error", [ctypes.c_int], ctypes.c_int)
+
+
+def status_name(code):
+    return _status_name(int(code)).decode()
+
+
+def status_string(code):
+    return _status_string(int(code)).decode()
+
+
+# Every status the library knows, by name: STATUS['SWARP_ERR_CAPACITY'] == 8.
+STATUS = {}
+for _code in range(0, 2000):
+    _n = status_name(_code)
+    if _n != "SWARP_UNKNOWN_STATUS":
+        STATUS[_n] = _code
+        globals()[_n] = _code
+
+
+class SwarpError(Exception):
+    """An error status (1..999) from libshadowwarp."""
+
+    def __init__(self, code, function):
+        self.code = int(code)
+        self.status = status_name(code)
+        self.message = status_string(code)
+        self.function = function
+        super().__init__("%s: %s (%s)" % (function, self.status, self.message))
+
+
+class Float(float):
+    """A float result with the call's .status."""
+    status = "SWARP_OK"
+
+
+class Result(tuple):
+    """A tuple of results with the call's .status."""
+    status = "SWARP_OK"
+
+
+def _check(code, function):
+    if _status_is_error(code):
+        raise SwarpError(code, function)
+    return status_name(code)
+
+
+def _float(value, status):
+    r = Float(value)
+    r.status = status
+    return r
+
+
+def _result(values, status):
+    r = Result(values)
+    r.status = status
+    return r
+
+
+def version():
+    """(runtime version string, version number)."""
+    return (_fn("swarp_version_string", [], ctypes.c_char_p)().decode(),
+            _fn("swarp_version_number", [], ctypes.c_int)())
+
+
+# ---- boundary types (layouts checked by _Static_assert in src/) ---------------
+class Vec3(ctypes.Structure):
+    _fields_ = [("x", ctypes.c_double), ("y", ctypes.c_double), ("z", ctypes.c_double)]
+
+    def __iter__(self):
+        return iter((self.x, self.y, self.z))
+
+    def __repr__(self):
+        return "Vec3(%r, %r, %r)" % (self.x, self.y, self.z)
+
+
+class Vec4(ctypes.Structure):
+    _fields_ = [("x", ctypes.c_double), ("y", ctypes.c_double), ("z", ctypes.c_double),
+                ("w", ctypes.c_double)]
+
+    def __iter__(self):
+        return iter((self.x, self.y, self.z, self.w))
+
+    def __repr__(self):
+        return "Vec4(%r, %r, %r, %r)" % tuple(self)
+
+
+class Mat4(ctypes.Structure):
+    """Column-major 4x4: element (row r, column c) is m[c*4 + r]."""
+    _fields_ = [("m", ctypes.c_double * 16)]
+
+    @classmethod
+    def from_rows(cls, rows):
+        out = cls()
+        for r in range(4):
+            for c in range(4):
+                out.m[c * 4 + r] = float(rows[r][c])
+        return out
+
+    @classmethod
+    def identity(cls):
+        return cls.from_rows([[1.0 if r == c else 0.0 for c in range(4)] for r in range(4)])
+
+    def at(self, r, c):
+        return self.m[c * 4 + r]
+
+    def rows(self):
+        return [[self.m[c * 4 + r] for c in range(4)] for r in range(4)]
+
+    def __repr__(self):
+        return "Mat4.from_rows(%r)" % (self.rows(),)
+
+    def __str__(self):
+        return "\n".join("  ".join("%12.6g" % v for v in row) for row in self.rows())
+
+
+class AABB(ctypes.Structure):
+    _fields_ = [("min", Vec3), ("max", Vec3)]
+
+
+class Plane(ctypes.Structure):
+    _fields_ = [("a", ctypes.c_double), ("b", ctypes.c_double), ("c", ctypes.c_double),
+                ("d", ctypes.c_double)]
+
+
+def _vec3(v):
+    if isinstance(v, Vec3):
+        return v
+    x, y, z = v
+    return Vec3(float(x), float(y), float(z))
+
+
+class Camera(ctypes.Structure):
+    _fields_ = [("eye", Vec3), ("dir", Vec3), ("up", Vec3), ("fovy", ctypes.c_double),
+                ("aspect", ctypes.c_double), ("near", ctypes.c_double), ("far", ctypes.c_double),
+                ("_reserved", ctypes.c_uint32 * 4)]
+
+    def __init__(self, eye=(0, 0, 0), dir=(0, 0, -1), up=(0, 1, 0), fovy=math.pi / 3,
+                 aspect=1.0, near=0.1, far=100.0):
+        super().__init__(_vec3(eye), _vec3(dir), _vec3(up), fovy, aspect, near, far)
+
+
+DEPTH_DEFAULT, DEPTH_NEG_ONE_TO_ONE, DEPTH_ZERO_TO_ONE = 0, 1, 2
+LIGHT_DEFAULT, LIGHT_DIRECTIONAL, LIGHT_POINT = 0, 1, 2
+
+
+class Light(ctypes.Structure):
+    _fields_ = [("type", ctypes.c_int32), ("_reserved0", ctypes.c_uint32), ("direction", Vec3),
+                ("position", Vec3), ("cone_angle", ctypes.c_double),
+                ("_reserved", ctypes.c_uint32 * 4)]
+
+    def __init__(self, type=LIGHT_DIRECTIONAL, direction=(0, -1, 0), position=(0, 0, 0),
+                 cone_angle=0.0):
+        super().__init__(type, 0, _vec3(direction), _vec3(position), cone_angle)
+
+
+class ErrorConfig(ctypes.Structure):
+    """Inputs of Lloyd's error metric [RHS] (2.3)-(2.8)."""
+    _fields_ = [("near", ctypes.c_double), ("far", ctypes.c_double), ("theta", ctypes.c_double),
+                ("res_ix", ctypes.c_double), ("res_iy", ctypes.c_double),
+                ("res_s", ctypes.c_double), ("res_t", ctypes.c_double),
+                ("_reserved", ctypes.c_uint32 * 4)]
+
+    def __init__(self, near=1.0, far=100.0, theta=math.pi / 6, res_ix=1024, res_iy=768,
+                 res_s=1024, res_t=1024):
+        super().__init__(near, far, theta, res_ix, res_iy, res_s, res_t)
+
+
+SIZES = {Vec3: 24, Vec4: 32, Mat4: 128, AABB: 48, Plane: 32, Camera: 120, Light: 80,
+         ErrorConfig: 72}
+
+# ---- mat4 -----------------------------------------------------------------------
+_P = ctypes.POINTER
+_mat4_to_float = _fn("swarp_mat4_to_float", [_P(Mat4), _P(ctypes.c_float)])
+_mat4_mul = _fn("swarp_mat4_mul", [_P(Mat4), _P(Mat4), _P(Mat4)])
+_mat4_invert = _fn("swarp_mat4_invert", [_P(Mat4), _P(Mat4)])
+_mat4_transform = _fn("swarp_mat4_transform", [_P(Mat4), _P(Vec3), _P(Vec4)])
+
+
+def mat4_to_float(m):
+    out = (ctypes.c_float * 16)()
+    st = _check(_mat4_to_float(ctypes.byref(m), out), "swarp_mat4_to_float")
+    return _result(list(out), st)
+
+
+def mat4_mul(a, b):
+    r = Mat4()
+    _check(_mat4_mul(ctypes.byref(a), ctypes.byref(b), ctypes.byref(r)), "swarp_mat4_mul")
+    return r
+
+
+def mat4_invert(a):
+    r = Mat4()
+    _check(_mat4_invert(ctypes.byref(a), ctypes.byref(r)), "swarp_mat4_invert")
+    return r
+
+
+def mat4_transform(m, p):
+    out = Vec4()
+    _check(_mat4_transform(ctypes.byref(m), ctypes.byref(_vec3(p)), ctypes.byref(out)),
+           "swarp_mat4_transform")
+    return out
+
+
+# ---- core: scalar functions with one or two double outputs --------------------------
+def _scalar(cname, nargs, nout=1):
+    f = _fn(cname, [ctypes.c_double] * nargs + [_c_double_p] * nout)
+
+    def call(*args):
+        if len(args) != nargs:
+            raise TypeError("%s takes %d arguments" % (cname, nargs))
+        outs = [ctypes.c_double() for _ in range(nout)]
+        st = _check(f(*[float(a) for a in args], *[ctypes.byref(o) for o in outs]), cname)
+        if nout == 1:
+            return _float(outs[0].value, st)
+        return _result([o.value for o in outs], st)
+    call.__name__ = cname[len("swarp_"):]
+    return call
+
+
+#: [RHS] (3.2) n_opt(d, z_0, z_1)
+warp_nopt = _scalar("swarp_warp_nopt", 3)
+#: [RHS] (4.2) n_opt(d, z_0, z_1, n_p, f_p) with pseudo near/far
+warp_nopt_pseudo = _scalar("swarp_warp_nopt_pseudo", 5)
+#: [RHS] (3.3) eta(gamma, theta)
+warp_eta = _scalar("swarp_warp_eta", 2)
+#: [RHS] (3.5) W_lz(gamma, theta, n_e, f_e, W_e)
+warp_wlz = _scalar("swarp_warp_wlz", 5)
+#: [RHS] (3.4) n_repar(eta, alpha, W_lz)
+warp_nrepar = _scalar("swarp_warp_nrepar", 3)
+#: [GMNPR] (2) psi(lambda, theta, phi, n, f)
+gmnpr_psi = _scalar("swarp_gmnpr_psi", 5)
+#: [GMNPR] (2) offset phi(lambda, theta) (lambda, theta, phi, n, f)
+gmnpr_offset = _scalar("swarp_gmnpr_offset", 5)
+#: [GMNPR] (2) F(lambda, theta, phi, n, f, z)
+gmnpr_F = _scalar("swarp_gmnpr_F", 6)
+#: [GMNPR] (4) (lambda_1, lambda_2)(theta, phi, n, f)
+gmnpr_lambda12 = _scalar("swarp_gmnpr_lambda12", 4, nout=2)
+#: [GMNPR] (8) lambda_GMNPR(theta, phi, n, f)
+gmnpr_lambda = _scalar("swarp_gmnpr_lambda", 4)
+#: [GMNPR] (9) lambda_LiSPSM(theta, phi, n, f)
+gmnpr_lambda_lispsm = _scalar("swarp_gmnpr_lambda_lispsm", 4)
+#: GLPR lambda(theta, phi, n, f)
+gmnpr_lambda_glpr = _scalar("swarp_gmnpr_lambda_glpr", 4)
+
+# ---- core: Lloyd's error metric ----------------------------------------------------
+_error_mx = _fn("swarp_error_mx", [_P(ErrorConfig), ctypes.c_double, ctypes.c_double, _c_double_p])
+_error_mz = _fn("swarp_error_mz", [_P(ErrorConfig), ctypes.c_double, ctypes.c_double, _c_double_p])
+_error_max = _fn("swarp_error_max", [_P(ErrorConfig), ctypes.c_double, _c_double_p, _c_double_p])
+_error_split_curve = _fn("swarp_error_split_curve",
+                         [_P(ErrorConfig), _c_double_p, _c_double_p, ctypes.c_size_t, _c_double_p,
+                          ctypes.c_size_t, _c_double_p, _c_double_p])
+_error_split_max = _fn("swarp_error_split_max",
+                       [_P(ErrorConfig), _c_double_p, _c_double_p, ctypes.c_size_t, _c_double_p,
+                        _c_double_p, _c_double_p, _c_double_p])
+
+
+def error_mx(cfg, z, n_prime):
+    """[RHS] (2.3); n_prime = cfg.near gives PSM (2.5), math.inf uniform (2.7)."""
+    out = ctypes.c_double()
+    st = _check(_error_mx(ctypes.byref(cfg), z, n_prime, ctypes.byref(out)), "swarp_error_mx")
+    return _float(out.value, st)
+
+
+def error_mz(cfg, z, n_prime):
+    """[RHS] (2.4); (2.6) and (2.8) as for error_mx."""
+    out = ctypes.c_double()
+    st = _check(_error_mz(ctypes.byref(cfg), z, n_prime, ctypes.byref(out)), "swarp_error_mz")
+    return _float(out.value, st)
+
+
+def error_max(cfg, n_prime):
+    """(max m_x, max m_z) over [near, far]."""
+    mx, mz = ctypes.c_double(), ctypes.c_double()
+    st = _check(_error_max(ctypes.byref(cfg), n_prime, ctypes.byref(mx), ctypes.byref(mz)),
+                "swarp_error_max")
+    return _result([mx.value, mz.value], st)
+
+
+def _darr(values):
+    values = [float(v) for v in values]
+    return (ctypes.c_double * max(1, len(values)))(*values), len(values)
+
+
+def error_split_curve(cfg, splits, n_primes, z):
+    """([m_x(z_k)], [m_z(z_k)]) of the piecewise curve of a partitioned frustum."""
+    sp, _ = _darr(splits)
+    npr, m = _darr(n_primes)
+    zz, count = _darr(z)
+    mx = (ctypes.c_double * max(1, count))()
+    mz = (ctypes.c_double * max(1, count))()
+    st = _check(_error_split_curve(ctypes.byref(cfg), sp, npr, m, zz, count, mx, mz),
+                "swarp_error_split_curve")
+    return _result([list(mx[:count]), list(mz[:count])], st)
+
+
+def error_split_max(cfg, splits, n_primes):
+    """([max m_x per split], [max m_z per split], max m_x, max m_z)."""
+    sp, _ = _darr(splits)
+    npr, m = _darr(n_primes)
+    sx = (ctypes.c_double * max(1, m))()
+    sz = (ctypes.c_double * max(1, m))()
+    mx, mz = ctypes.c_double(), ctypes.c_double()
+    st = _check(_error_split_max(ctypes.byref(cfg), sp, npr, m, sx, sz, ctypes.byref(mx),
+                                 ctypes.byref(mz)), "swarp_error_split_max")
+    return _result([list(sx[:m]), list(sz[:m]), mx.value, mz.value], st)
+
+
+# ---- core: split schemes ------------------------------------------------------------
+SPLIT_MAX_COUNT = 64
+
+
+def _scheme(cname, nargs):
+    f = _fn(cname, [ctypes.c_double] * nargs + [ctypes.c_uint32, _c_double_p, ctypes.c_size_t,
+                                                 _c_size_p])
+
+    def call(*args):
+        *dargs, m = args
+        if len(dargs) != nargs:
+            raise TypeError("%s takes %d arguments and m" % (cname, nargs))
+        out = (ctypes.c_double * SPLIT_MAX_COUNT)()
+        count = ctypes.c_size_t()
+        st = _check(f(*[float(a) for a in dargs], int(m), out, SPLIT_MAX_COUNT,
+                      ctypes.byref(count)), cname)
+        return _result(list(out[:count.value]), st)
+    call.__name__ = cname[len("swarp_"):]
+    return call
+
+
+#: [RHS] (3.6) split_uniform(n, f, m) -> [C_0 .. C_m]
+split_uniform = _scheme("swarp_split_uniform", 2)
+#: [RHS] (3.7) split_log(n, f, m)
+split_log = _scheme("swarp_split_log", 2)
+#: [RHS] (3.8) split_practical(n, f, lambda, m)
+split_practical = _scheme("swarp_split_practical", 3)
+#: [RHS] (4.1) split_pseudo(n, f, n_p, f_p, lambda, m)
+split_pseudo = _scheme("swarp_split_pseudo", 5)
+
+# >>> stages that landed later add their wrappers below this line

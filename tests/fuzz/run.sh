@@ -1,0 +1,57 @@
+#!/bin/sh
+# Bounded libFuzzer run over every entry point the library has (CI: about 60 s
+# in total).  Builds tests/fuzz/fuzz_target.c with clang
+# -fsanitize=fuzzer,address,undefined against all of src/, then fuzzes each
+# available entry point for SECONDS/targets seconds, starting from the
+# committed corpus tests/fuzz/corpus/<entry>/ (read-only; new inputs go to a
+# temporary directory unless SWARP_FUZZ_GROW=1).  Prints the executions per
+# target and in total.  A crash (an invariant violation, a sanitizer report)
+# is copied to tests/fuzz/corpus/<entry>/crash-<sha1> -- commit it: the
+# corpus replay in `meson test` keeps it as a regression test -- and fails.
+#   sh tests/fuzz/run.sh [SECONDS]        default 60
+set -eu
+cd "$(dirname "$0")/../.."
+total="${1:-60}"
+out="${SWARP_FUZZ_BUILD:-build-fuzz}"
+mkdir -p "$out"
+CC_FUZZ="${CC_FUZZ:-clang}"
+# shellcheck disable=SC2046
+"$CC_FUZZ" -std=c11 -g -O1 -fno-omit-frame-pointer -fsanitize=fuzzer,address,undefined \
+    -fno-sanitize-recover=undefined -DSWARP_STATIC -Iinclude -Isrc \
+    src/*.c tests/robust/swr.c tests/robust/entries*.c tests/fuzz/fuzz_target.c -lm -o "$out/fuzz_target"
+"$CC_FUZZ" -std=c11 -O1 -DSWARP_STATIC -Iinclude -Isrc src/*.c tests/robust/swr.c tests/robust/entries*.c tests/hard_cases.c -lm \
+    -o "$out/hard_cases_list"
+targets="$("$out/hard_cases_list" --list | awk '$3 == "available" {print $1}')"
+n="$(echo "$targets" | wc -w)"
+per=$((total / n))
+[ "$per" -ge 1 ] || per=1
+echo "fuzz: $n targets, $per s each"
+tmp="$(mktemp -d)"; trap 'rm -rf "$tmp"' EXIT INT TERM
+sum=0
+status=0
+for t in $targets; do
+    mkdir -p "tests/fuzz/corpus/$t" "$tmp/$t" "$tmp/art-$t"
+    if [ "${SWARP_FUZZ_GROW:-0}" = 1 ]; then work="tests/fuzz/corpus/$t"; else work="$tmp/$t"; fi
+    set +e
+    SWARP_FUZZ_TARGET="$t" ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
+        "$out/fuzz_target" "$work" "tests/fuzz/corpus/$t" -max_total_time="$per" -max_len=4096 \
+        -print_final_stats=1 -artifact_prefix="$tmp/art-$t/" >"$tmp/$t.log" 2>&1
+    rc=$?
+    set -e
+    execs="$(awk '/stat::number_of_executed_units/{print $2}' "$tmp/$t.log" | tail -n1)"
+    execs="${execs:-0}"
+    sum=$((sum + execs))
+    printf '  %-34s %10s executions\n' "$t" "$execs"
+    if [ "$rc" -ne 0 ]; then
+        status=1
+        grep -E 'invariant violated|ERROR|runtime error' "$tmp/$t.log" | head -n 5
+        for f in "$tmp/art-$t"/*; do
+            [ -e "$f" ] || continue
+            sha="$(sha1sum "$f" | cut -c1-16)"
+            cp "$f" "tests/fuzz/corpus/$t/crash-$sha"
+            echo "  kept tests/fuzz/corpus/$t/crash-$sha (commit it as a regression test)"
+        done
+    fi
+done
+echo "fuzz: $sum executions in total over $n targets"
+exit $status

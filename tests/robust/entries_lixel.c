@@ -1,0 +1,545 @@
+/* Hard-case / fuzz entries for the lixel stage ([LIXEL] Chong & Gortler).
+ * Beyond the specific statuses predicted for NULL pointers, non-finite
+ * inputs, reserved words and enums, a domain error must be one of the
+ * function's documented statuses (swr_allow) and leave every output
+ * untouched.  Properties: the five correspondences of solve5; the defining
+ * property of M_l (a point of the plane of interest has the same (x, y) in
+ * viewer pixels and lixels, q > 0 in front of the viewer); the restriction
+ * rectangle encloses C; GLV GLP reproduces (x, y, q) of M_l. */
+#include <float.h>
+#include <math.h>
+#include <string.h>
+
+#include "swr.h"
+
+SWR_WEAK(swarp_lixel_solve5)
+SWR_WEAK(swarp_lixel_matrix)
+SWR_WEAK(swarp_lixel_restrict)
+SWR_WEAK(swarp_lixel_twist_for_line)
+SWR_WEAK(swarp_lixel_factor)
+SWR_WEAK(swarp_lixel_split)
+SWR_WEAK(swarp_lixel_select)
+
+#define SKIP_IF_MISSING(c, f) \
+    do {                      \
+        if (!(f)) {           \
+            (c)->skipped = 1; \
+            return;           \
+        }                     \
+    } while (0)
+
+static int fin(double x) { return swr_isfin(x); }
+static int fin3(const swarp_vec3* v) { return fin(v->x) && fin(v->y) && fin(v->z); }
+static int fin4(const swarp_vec4* v) { return fin(v->x) && fin(v->y) && fin(v->z) && fin(v->w); }
+static int finm(const swarp_mat4* m) {
+    for (int i = 0; i < 16; ++i)
+        if (!fin(m->m[i])) return 0;
+    return 1;
+}
+static void rec_mat(swr_ctx* c, const char* what, const swarp_mat4* m) {
+    for (int i = 0; i < 16; ++i) swr_rec(c, what, m->m[i]);
+}
+static double maxabs(const swarp_mat4* m) {
+    double a = 0;
+    for (int i = 0; i < 16; ++i) a = fmax(a, fabs(m->m[i]));
+    return a;
+}
+static swarp_vec4 xf(const swarp_mat4* m, swarp_vec4 p) {
+    swarp_vec4 o;
+    o.x = m->m[0] * p.x + m->m[4] * p.y + m->m[8] * p.z + m->m[12] * p.w;
+    o.y = m->m[1] * p.x + m->m[5] * p.y + m->m[9] * p.z + m->m[13] * p.w;
+    o.z = m->m[2] * p.x + m->m[6] * p.y + m->m[10] * p.z + m->m[14] * p.w;
+    o.w = m->m[3] * p.x + m->m[7] * p.y + m->m[11] * p.z + m->m[15] * p.w;
+    return o;
+}
+static swarp_vec3 v3(double x, double y, double z) {
+    swarp_vec3 v = {x, y, z};
+    return v;
+}
+static swarp_vec3 cross(swarp_vec3 a, swarp_vec3 b) {
+    return v3(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x);
+}
+static double dot(swarp_vec3 a, swarp_vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+static swarp_vec3 unit(swarp_vec3 a) {
+    double l = sqrt(dot(a, a));
+    return l > 0 ? v3(a.x / l, a.y / l, a.z / l) : v3(0, 0, 1);
+}
+
+/* a direction, sometimes axis-aligned or tiny */
+static swarp_vec3 gen_dir(swr_ctx* c) {
+    static const double brk[] = {0.0, 1.0, -1.0};
+    swarp_vec3 d = v3(swr_num(c, -1, 1, brk, 3), swr_num(c, -1, 1, brk, 3), swr_num(c, -1, 1, brk, 3));
+    if (swr_one_in(c, 16)) d = v3(0, 0, 0);
+    return d;
+}
+
+/* A viewer: eye (offset up to 1e6), looking along dir, perspective with
+ * fovy, aspect; M_v = P V (OpenGL). */
+typedef struct viewer {
+    swarp_vec3 eye, dir, up;
+    double fovy, aspect, near, far;
+    swarp_mat4 M_v;
+} viewer;
+static void gen_viewer(swr_ctx* c, viewer* v) {
+    double off = swr_offset(c);
+    v->eye = v3(off + swr_num_in(c, -10, 10, NULL, 0), swr_num_in(c, 0.1, 10, NULL, 0), off + swr_num_in(c, -10, 10, NULL, 0));
+    v->dir = unit(v3(swr_num_in(c, -1, 1, NULL, 0), swr_num_in(c, -1, 0.3, NULL, 0), swr_num_in(c, -1, 1, NULL, 0)));
+    v->up = v3(0, 1, 0);
+    if (fabs(v->dir.y) > 0.999) v->up = v3(1, 0, 0);
+    v->fovy = swr_num_in(c, 0.2, 2.5, NULL, 0);
+    v->aspect = swr_num_in(c, 0.5, 2.5, NULL, 0);
+    v->near = swr_num_in(c, 1e-3, 1, NULL, 0);
+    v->far = v->near * swr_num_in(c, 10, 1e5, NULL, 0);
+    swarp_vec3 f = v->dir, s = unit(cross(f, v->up)), u = cross(s, f);
+    swarp_mat4 V = {{0}}, P = {{0}};
+    V.m[0] = s.x; V.m[4] = s.y; V.m[8] = s.z;
+    V.m[1] = u.x; V.m[5] = u.y; V.m[9] = u.z;
+    V.m[2] = -f.x; V.m[6] = -f.y; V.m[10] = -f.z;
+    V.m[12] = -dot(s, v->eye); V.m[13] = -dot(u, v->eye); V.m[14] = dot(f, v->eye);
+    V.m[15] = 1;
+    double t = 1.0 / tan(v->fovy / 2);
+    P.m[0] = t / v->aspect; P.m[5] = t;
+    P.m[10] = -(v->far + v->near) / (v->far - v->near);
+    P.m[11] = -1;
+    P.m[14] = -2 * v->far * v->near / (v->far - v->near);
+    for (int col = 0; col < 4; ++col)
+        for (int row = 0; row < 4; ++row) {
+            double acc = 0;
+            for (int k = 0; k < 4; ++k) acc += P.m[k * 4 + row] * V.m[col * 4 + k];
+            v->M_v.m[col * 4 + row] = acc;
+        }
+}
+
+/* ------------------------------------------------------------------------ */
+static void e_lixel_solve5(swr_ctx* c) {
+    SKIP_IF_MISSING(c, swarp_lixel_solve5);
+    swarp_vec4 src[5], dst[5];
+    double off = swr_offset(c);
+    for (int i = 0; i < 5; ++i) {
+        src[i].x = off + swr_num(c, -10, 10, NULL, 0);
+        src[i].y = swr_num(c, -10, 10, NULL, 0);
+        src[i].z = off + swr_num(c, -10, 10, NULL, 0);
+        src[i].w = swr_one_in(c, 8) ? 0.0 : 1.0;
+        dst[i].x = swr_num(c, -1000, 1000, NULL, 0);
+        dst[i].y = swr_num(c, -1000, 1000, NULL, 0);
+        dst[i].z = swr_one_in(c, 2) ? 1.0 : -1.0;
+        dst[i].w = swr_one_in(c, 10) ? 0.0 : 1.0;
+    }
+    if (swr_one_in(c, 6)) { /* four coplanar */
+        src[3].x = 0.5 * (src[0].x + src[1].x);
+        src[3].y = 0.5 * (src[0].y + src[1].y);
+        src[3].z = 0.5 * (src[0].z + src[1].z);
+        src[3].w = 0.5 * (src[0].w + src[1].w);
+    }
+    int n_s = swr_null(c), n_d = swr_null(c), n_m = swr_null(c), n_c = swr_one_in(c, 3);
+    if (n_s || n_d || n_m) swr_expect(c, SWARP_ERR_NULL_POINTER);
+    for (int i = 0; i < 5; ++i)
+        if (!fin4(&src[i]) || !fin4(&dst[i])) swr_expect(c, SWARP_ERR_NON_FINITE);
+    swr_allow(c, SWARP_ERR_LIXEL_COPLANAR);
+    swarp_mat4 M;
+    double cond;
+    swr_fill(&M, sizeof M);
+    swr_fill(&cond, sizeof cond);
+    swarp_status st = SWR_CALL(c, swarp_lixel_solve5(n_s ? NULL : src, n_d ? NULL : dst, n_m ? NULL : &M, n_c ? NULL : &cond));
+    /* the OK / ILL_CONDITIONED / COPLANAR thresholds are on a computed
+     * conditioning: rounding decides near them (fenv test) */
+    if (st == SWARP_INFO_LIXEL_ILL_CONDITIONED || st == SWARP_ERR_LIXEL_COPLANAR) c->rounding_edge = 1;
+    if (!swr_verdict(c, st, 2, (void*)&M, sizeof M, (void*)&cond, sizeof cond)) return;
+    if (!n_c && cond > 0) swr_cond(c, 1.0 / (cond * cond));
+    if (!n_c && cond < 1e-4) c->rounding_edge = 1;
+    rec_mat(c, "M", &M);
+    SWR_CHECK(c, maxabs(&M) == 1.0, "largest |element| %.17g, documented 1", maxabs(&M));
+    if (!n_c) {
+        swr_rec(c, "conditioning", cond);
+        SWR_CHECK(c, cond >= 0 && cond <= 1, "conditioning %g outside [0, 1]", cond);
+    }
+    if (st != SWARP_OK) return; /* ill-conditioned: written, no accuracy claim */
+    /* M src[i] ~ dst[i]: the 2x2 minors of (M src, dst) vanish */
+    for (int i = 0; i < 5; ++i) {
+        swarp_vec4 p = xf(&M, src[i]);
+        double a[4] = {p.x, p.y, p.z, p.w}, b[4] = {dst[i].x, dst[i].y, dst[i].z, dst[i].w};
+        double na = 0, nb = 0, worst = 0;
+        for (int k = 0; k < 4; ++k) {
+            na = fmax(na, fabs(a[k]));
+            nb = fmax(nb, fabs(b[k]));
+        }
+        for (int j = 0; j < 4; ++j)
+            for (int k = j + 1; k < 4; ++k) worst = fmax(worst, fabs(a[j] * b[k] - a[k] * b[j]));
+        SWR_CHECK_ACC(c, worst <= 1e-6 * na * nb, "M src[%d] not parallel to dst[%d]: minor %.3g of %.3g", i, i, worst,
+                      na * nb);
+    }
+}
+
+/* light and plane of interest for a viewer: a floor (y = const) or a wall,
+ * sometimes through the eye, light sometimes on the plane or parallel */
+static void gen_scene(swr_ctx* c, const viewer* v, swarp_light* L, swarp_plane* P) {
+    memset(L, 0, sizeof *L);
+    uint8_t k = swr_u8(c) % 5;
+    swarp_vec3 nrm = k == 0 ? v3(0, 1, 0) : k == 1 ? v3(1, 0, 0) : k == 2 ? v3(0, 0, 1) : unit(gen_dir(c));
+    if (k == 4) nrm = gen_dir(c); /* maybe zero */
+    swarp_vec3 on = v3(v->eye.x + swr_num_in(c, -5, 5, NULL, 0), v->eye.y - swr_num_in(c, 0.5, 5, NULL, 0),
+                       v->eye.z + swr_num_in(c, -5, 5, NULL, 0));
+    if (swr_one_in(c, 12)) { /* plane through the eye (an exact degeneracy: rounding decides) */
+        on = v->eye;
+        c->rounding_edge = 1;
+    }
+    P->a = nrm.x;
+    P->b = nrm.y;
+    P->c = nrm.z;
+    P->d = -dot(nrm, on);
+    L->type = (swarp_light_type)swr_enum(c, 3);
+    L->direction = gen_dir(c);
+    if (swr_one_in(c, 8)) { /* maybe parallel to P */
+        L->direction = v3(-nrm.y, nrm.x, 0);
+        c->rounding_edge = 1;
+    }
+    L->position = v3(on.x + swr_num_in(c, -20, 20, NULL, 0), on.y + swr_num(c, 0.1, 30, NULL, 0), on.z + swr_num_in(c, -20, 20, NULL, 0));
+    if (swr_one_in(c, 12)) { /* light on the plane */
+        L->position = on;
+        c->rounding_edge = 1;
+    }
+    if (swr_one_in(c, 12)) {
+        L->position = v->eye;
+        c->rounding_edge = 1;
+    }
+    L->cone_angle = swr_one_in(c, 2) ? 0.0 : swr_num(c, 0.1, 1.5, NULL, 0);
+    L->_reserved[swr_u8(c) % 4] = swr_reserved(c);
+}
+
+static void expect_light(swr_ctx* c, const swarp_light* L) {
+    int t = (int)L->type;
+    if (t < 0 || t > 2) swr_expect(c, SWARP_ERR_UNKNOWN_ENUM);
+    /* only the fields the type uses are checked (documented per field) */
+    if (t == 0 || t == 1) {
+        if (!fin3(&L->direction)) swr_expect(c, SWARP_ERR_NON_FINITE);
+        if (L->direction.x == 0 && L->direction.y == 0 && L->direction.z == 0) swr_expect(c, SWARP_ERR_ZERO_VECTOR);
+    }
+    if (t == 2 && !fin3(&L->position)) swr_expect(c, SWARP_ERR_NON_FINITE);
+    /* the lixel stage does not use cone_angle: a NaN there may be refused
+     * or ignored (noted in docs/quality.md) */
+    if (t == 2 && !fin(L->cone_angle)) swr_allow(c, SWARP_ERR_NON_FINITE);
+    for (int i = 0; i < 4; ++i)
+        if (L->_reserved[i]) swr_expect(c, SWARP_ERR_RESERVED_NONZERO);
+    if (L->_reserved0) swr_expect(c, SWARP_ERR_RESERVED_NONZERO);
+}
+
+static void e_lixel_matrix(swr_ctx* c) {
+    SKIP_IF_MISSING(c, swarp_lixel_matrix);
+    viewer v;
+    gen_viewer(c, &v);
+    swarp_light L;
+    swarp_plane P;
+    gen_scene(c, &v, &L, &P);
+    uint32_t g = swr_one_in(c, 20) ? swr_u8(c) % 3 : 64 + swr_u32(c) % 4000;
+    uint32_t h = swr_one_in(c, 20) ? swr_u8(c) % 3 : 64 + swr_u32(c) % 4000;
+    swarp_lixel_options opt;
+    memset(&opt, 0, sizeof opt);
+    static const double brk[] = {0.0, 1.0};
+    opt.raise = swr_one_in(c, 2) ? 0.0 : swr_num(c, 0, 1, brk, 2);
+    opt._reserved[swr_u8(c) % 4] = swr_reserved(c);
+    int use_opt = !swr_one_in(c, 3);
+    int n_mv = swr_null(c), n_l = swr_null(c), n_p = swr_null(c), n_out = swr_null(c), n_info = swr_one_in(c, 3);
+    if (n_mv || n_l || n_p || n_out) swr_expect(c, SWARP_ERR_NULL_POINTER);
+    expect_light(c, &L);
+    if (!fin(P.a) || !fin(P.b) || !fin(P.c) || !fin(P.d)) swr_expect(c, SWARP_ERR_NON_FINITE);
+    if (P.a == 0 && P.b == 0 && P.c == 0) swr_expect(c, SWARP_ERR_ZERO_VECTOR);
+    if (g < 2 || h < 2) swr_expect(c, SWARP_ERR_RESOLUTION);
+    if (use_opt) {
+        if (!fin(opt.raise)) swr_expect(c, SWARP_ERR_NON_FINITE);
+        else if (!(opt.raise >= 0 && opt.raise < 1)) swr_expect(c, SWARP_ERR_OUT_OF_RANGE);
+        for (int i = 0; i < 4; ++i)
+            if (opt._reserved[i]) swr_expect(c, SWARP_ERR_RESERVED_NONZERO);
+    }
+    static const swarp_status dom[] = {SWARP_ERR_LIXEL_PLANE_THROUGH_EYE, SWARP_ERR_LIXEL_LIGHT_ON_PLANE,
+                                       SWARP_ERR_LIXEL_LIGHT_PARALLEL_PLANE, SWARP_ERR_LIXEL_PLANE_NOT_VISIBLE,
+                                       SWARP_ERR_SINGULAR, SWARP_ERR_ZERO_VECTOR};
+    for (size_t i = 0; i < sizeof dom / sizeof dom[0]; ++i) swr_allow(c, dom[i]);
+    /* finding: COPLANAR is not among lixel_matrix's documented statuses but
+     * comes back for eyes offset by 1e5..1e6 (docs/quality.md) */
+    swr_finding_status(c, SWARP_ERR_LIXEL_COPLANAR);
+    swarp_mat4 M;
+    swarp_lixel_info info;
+    swr_fill(&M, sizeof M);
+    swr_fill(&info, sizeof info);
+    swr_args(c, "eye=(%.17g %.17g %.17g) light type %d plane (%g %g %g %g) g=%u h=%u", v.eye.x, v.eye.y, v.eye.z,
+             (int)L.type, P.a, P.b, P.c, P.d, g, h);
+    swarp_status st = SWR_CALL(c, swarp_lixel_matrix(n_mv ? NULL : &v.M_v, g, h, n_l ? NULL : &L, n_p ? NULL : &P,
+                                                    use_opt ? &opt : NULL, n_out ? NULL : &M, n_info ? NULL : &info));
+    if (st == SWARP_INFO_LIXEL_ILL_CONDITIONED || st == SWARP_ERR_LIXEL_COPLANAR) c->rounding_edge = 1;
+    if (!swr_verdict(c, st, 2, (void*)&M, sizeof M, (void*)&info, sizeof info)) return;
+    if (!n_info && info.conditioning > 0) swr_cond(c, 1.0 / (info.conditioning * info.conditioning));
+    if (!n_info && info.conditioning < 1e-4) c->rounding_edge = 1;
+    rec_mat(c, "M_l", &M);
+    SWR_CHECK(c, maxabs(&M) == 1.0, "largest |element| %.17g, documented 1", maxabs(&M));
+    if (!n_info) SWR_CHECK(c, info.corners_in_front <= 4 && info.raised_index <= 3, "info out of range");
+    if (st != SWARP_OK) return;
+    /* the defining property: on P, viewer pixel == lixel, q > 0 in front */
+    swarp_vec3 nrm = v3(P.a, P.b, P.c);
+    double nn = dot(nrm, nrm);
+    for (int k = 0; k < 4; ++k) {
+        /* a point of P seen by the viewer: along a ray through the image */
+        double sx = swr_num_in(c, -0.9, 0.9, NULL, 0), sy = swr_num_in(c, -0.9, 0.9, NULL, 0);
+        swarp_vec3 f = v.dir, s = unit(cross(f, v.up)), u = cross(s, f);
+        double t = tan(v.fovy / 2);
+        swarp_vec3 ray = v3(f.x + sx * t * v.aspect * s.x + sy * t * u.x, f.y + sx * t * v.aspect * s.y + sy * t * u.y,
+                            f.z + sx * t * v.aspect * s.z + sy * t * u.z);
+        double den = dot(nrm, ray);
+        if (fabs(den) < 1e-6 * sqrt(nn * dot(ray, ray))) continue;
+        double lam = -(dot(nrm, v.eye) + P.d) / den;
+        if (!(lam > 0)) continue; /* P behind the viewer along this ray */
+        swarp_vec4 p = {v.eye.x + lam * ray.x, v.eye.y + lam * ray.y, v.eye.z + lam * ray.z, 1.0};
+        swarp_vec4 cv = xf(&v.M_v, p), cl = xf(&M, p);
+        if (!(cv.w > 0)) continue;
+        double xp = (cv.x / cv.w + 1) * g / 2 - 0.5, yp = (cv.y / cv.w + 1) * h / 2 - 0.5;
+        SWR_CHECK(c, cl.w > 0, "q = %g <= 0 at a point of P in front of the viewer", cl.w);
+        if (!(cl.w > 0)) return;
+        double xl = cl.x / cl.w, yl = cl.y / cl.w;
+        double tol = 1e-6 * (1 + fabs(xp) + fabs(yp) + g + h);
+        SWR_CHECK_ACC(c, fabs(xl - xp) <= tol && fabs(yl - yp) <= tol,
+                      "on P: lixel (%.9g, %.9g) != pixel (%.9g, %.9g)", xl, yl, xp, yp);
+    }
+}
+
+static void e_lixel_restrict(swr_ctx* c) {
+    SKIP_IF_MISSING(c, swarp_lixel_restrict);
+    swarp_mat4 M;
+    for (int i = 0; i < 16; ++i) M.m[i] = swr_num_in(c, -1, 1, NULL, 0);
+    M.m[3] = M.m[7] = M.m[11] = 0;
+    M.m[15] = swr_num(c, 0.5, 2, NULL, 0);
+    swarp_vec4 C[8];
+    size_t n = swr_one_in(c, 16) ? 0 : 1 + swr_u8(c) % 8;
+    for (size_t i = 0; i < 8; ++i) {
+        C[i].x = swr_num(c, -100, 100, NULL, 0);
+        C[i].y = swr_num(c, -100, 100, NULL, 0);
+        C[i].z = swr_num(c, -100, 100, NULL, 0);
+        C[i].w = swr_one_in(c, 10) ? 0.0 : 1.0;
+    }
+    swarp_lixel_restrict_options opt;
+    memset(&opt, 0, sizeof opt);
+    static const double brk[] = {0.0, 1.0};
+    opt.scale_x = swr_num(c, 0, 4, brk, 2);
+    opt.scale_y = swr_num(c, 0, 4, brk, 2);
+    opt.twist = swr_num(c, -3.2, 3.2, brk, 2);
+    opt.max_size = swr_one_in(c, 4) ? swr_u32(c) % 100000 : 0;
+    if (swr_one_in(c, 4)) {
+        opt.view_width = 64 + swr_u32(c) % 2000;
+        opt.view_height = 64 + swr_u32(c) % 2000;
+    }
+    opt._reserved[swr_u8(c) % 4] = swr_reserved(c);
+    int use_opt = !swr_one_in(c, 3);
+    int n_m = swr_null(c), n_c = swr_null(c), n_r = swr_null(c), n_a = swr_one_in(c, 3), n_o = swr_null(c);
+    if (n_m || (n_c && n > 0) || n_r || n_o) swr_expect(c, SWARP_ERR_NULL_POINTER);
+    if (n_c && n == 0) swr_expect(c, SWARP_ERR_NULL_POINTER);
+    if (!finm(&M)) swr_expect(c, SWARP_ERR_NON_FINITE);
+    for (size_t i = 0; i < n; ++i)
+        if (!fin4(&C[i])) swr_expect(c, SWARP_ERR_NON_FINITE);
+    if (use_opt) {
+        if (!fin(opt.scale_x) || !fin(opt.scale_y) || !fin(opt.twist)) swr_expect(c, SWARP_ERR_NON_FINITE);
+        if (opt.scale_x < 0 || opt.scale_y < 0) swr_expect(c, SWARP_ERR_OUT_OF_RANGE);
+        for (int i = 0; i < 4; ++i)
+            if (opt._reserved[i]) swr_expect(c, SWARP_ERR_RESERVED_NONZERO);
+    }
+    if (n == 0) swr_expect(c, SWARP_ERR_INVALID_ARGUMENT);
+    static const swarp_status dom[] = {SWARP_ERR_LIXEL_RAY_OUTSIDE, SWARP_ERR_LIXEL_EMPTY,
+                                       SWARP_ERR_LIXEL_RECT_TOO_LARGE, SWARP_ERR_OUT_OF_RANGE};
+    for (size_t i = 0; i < sizeof dom / sizeof dom[0]; ++i) swr_allow(c, dom[i]);
+    swarp_lixel_rect r;
+    swarp_mat4 A, out;
+    swr_fill(&r, sizeof r);
+    swr_fill(&A, sizeof A);
+    swr_fill(&out, sizeof out);
+    swarp_status st = SWR_CALL(c, swarp_lixel_restrict(n_m ? NULL : &M, n_c ? NULL : C, n, use_opt ? &opt : NULL,
+                                                      n_r ? NULL : &r, n_a ? NULL : &A, n_o ? NULL : &out));
+    if (!swr_verdict(c, st, 3, (void*)&r, sizeof r, (void*)&A, sizeof A, (void*)&out, sizeof out)) return;
+    rec_mat(c, "A_l M_l", &out);
+    if (!n_a) rec_mat(c, "A_l", &A);
+    c->rec[c->n_rec < SWR_MAX_REC ? c->n_rec++ : 0] = r.x0;
+    SWR_CHECK(c, r.x1 >= r.x0 && r.y1 >= r.y0, "empty rectangle [%d, %d] x [%d, %d]", r.x0, r.x1, r.y0, r.y1);
+    SWR_CHECK(c, r.width == (uint32_t)(r.x1 - r.x0 + 1) && r.height == (uint32_t)(r.y1 - r.y0 + 1),
+              "width/height %u %u disagree with the corners", r.width, r.height);
+    uint32_t maxs = use_opt && opt.max_size ? opt.max_size : SWARP_LIXEL_DEFAULT_MAX_SIZE;
+    SWR_CHECK(c, r.width <= maxs && r.height <= maxs, "rect %ux%u above max_size %u", r.width, r.height, maxs);
+    /* without view clipping every vertex of C lands inside [0, w-1] x [0, h-1] (+1/2) */
+    if (use_opt && opt.view_width) return;
+    for (size_t i = 0; i < n; ++i) {
+        swarp_vec4 q = xf(&out, C[i]);
+        if (!(q.w > 0)) continue;
+        double x = q.x / q.w, y = q.y / q.w, slack = 1e-6 * (1 + r.width + r.height);
+        SWR_CHECK_ACC(c, x >= -0.5 - slack && x <= r.width - 0.5 + slack && y >= -0.5 - slack && y <= r.height - 0.5 + slack,
+                      "vertex %zu at (%g, %g) outside the %ux%u rectangle", i, x, y, r.width, r.height);
+    }
+}
+
+static void e_lixel_twist_for_line(swr_ctx* c) {
+    SKIP_IF_MISSING(c, swarp_lixel_twist_for_line);
+    swarp_mat4 M;
+    for (int i = 0; i < 16; ++i) M.m[i] = swr_num(c, -1, 1, NULL, 0);
+    swarp_vec3 a = v3(swr_num(c, -10, 10, NULL, 0), swr_num(c, -10, 10, NULL, 0), swr_num(c, -10, 10, NULL, 0));
+    swarp_vec3 b = swr_one_in(c, 10) ? a : v3(swr_num(c, -10, 10, NULL, 0), swr_num(c, -10, 10, NULL, 0), swr_num(c, -10, 10, NULL, 0));
+    swarp_vec3 bl = v3(swr_num(c, -10, 10, NULL, 0), swr_num(c, -10, 10, NULL, 0), swr_num(c, -10, 10, NULL, 0));
+    int n_m = swr_null(c), n_a = swr_null(c), n_b = swr_null(c), n_bl = swr_null(c), n_o = swr_null(c);
+    if (n_m || n_a || n_b || n_bl || n_o) swr_expect(c, SWARP_ERR_NULL_POINTER);
+    if (!finm(&M) || !fin3(&a) || !fin3(&b) || !fin3(&bl)) swr_expect(c, SWARP_ERR_NON_FINITE);
+    swr_allow(c, SWARP_ERR_LIXEL_TWIST_LINE);
+    double tw;
+    swr_fill(&tw, sizeof tw);
+    swarp_status st = SWR_CALL(c, swarp_lixel_twist_for_line(n_m ? NULL : &M, n_a ? NULL : &a, n_b ? NULL : &b,
+                                                            n_bl ? NULL : &bl, n_o ? NULL : &tw));
+    if (!swr_verdict(c, st, 1, (void*)&tw, sizeof tw)) return;
+    swr_rec(c, "twist", tw);
+    SWR_CHECK(c, fabs(tw) <= 2 * 3.14159265358979323846 + 1e-9, "twist %g beyond 2 pi", tw);
+    /* rotated by tw, the images of a and b have the same y */
+    swarp_vec4 pa = xf(&M, (swarp_vec4){a.x, a.y, a.z, 1}), pb = xf(&M, (swarp_vec4){b.x, b.y, b.z, 1});
+    double xa = pa.x / pa.w, ya = pa.y / pa.w, xb = pb.x / pb.w, yb = pb.y / pb.w;
+    double ra = sin(tw) * xa + cos(tw) * ya, rb = sin(tw) * xb + cos(tw) * yb;
+    double scale = fabs(xa) + fabs(ya) + fabs(xb) + fabs(yb);
+    SWR_CHECK_ACC(c, fabs(ra - rb) <= 1e-9 * scale + 1e-300, "rotated line not horizontal: y %.17g vs %.17g", ra, rb);
+}
+
+static void e_lixel_factor(swr_ctx* c) {
+    SKIP_IF_MISSING(c, swarp_lixel_factor);
+    swarp_mat4 M;
+    for (int i = 0; i < 16; ++i) M.m[i] = swr_num(c, -1, 1, NULL, 0);
+    uint32_t w = swr_one_in(c, 16) ? 0 : 1 + swr_u32(c) % 8192, h = swr_one_in(c, 16) ? 0 : 1 + swr_u32(c) % 8192;
+    int32_t dr = swr_enum(c, 3);
+    static const double brk[] = {0.0, 1.0, 0.5};
+    double pd = swr_num(c, 0, 1, brk, 3);
+    int n_m = swr_null(c), n_v = swr_null(c), n_p = swr_null(c);
+    if (n_m || n_v || n_p) swr_expect(c, SWARP_ERR_NULL_POINTER);
+    if (!finm(&M) || !fin(pd)) swr_expect(c, SWARP_ERR_NON_FINITE);
+    if (w == 0 || h == 0) swr_expect(c, SWARP_ERR_RESOLUTION);
+    if (dr < 0 || dr > 2) swr_expect(c, SWARP_ERR_UNKNOWN_ENUM);
+    if (fin(pd) && !(pd >= 0 && pd < 1)) swr_expect(c, SWARP_ERR_OUT_OF_RANGE);
+    swr_allow(c, SWARP_ERR_OUT_OF_RANGE);
+    swr_allow(c, SWARP_ERR_SINGULAR);
+    swarp_mat4 V, P;
+    swr_fill(&V, sizeof V);
+    swr_fill(&P, sizeof P);
+    swarp_status st = SWR_CALL(c, swarp_lixel_factor(n_m ? NULL : &M, w, h, (swarp_depth_range)dr, pd, n_v ? NULL : &V,
+                                                    n_p ? NULL : &P));
+    if (!swr_verdict(c, st, 2, (void*)&V, sizeof V, (void*)&P, sizeof P)) return;
+    rec_mat(c, "GLV", &V);
+    rec_mat(c, "GLP", &P);
+    /* (x, y, q) of GLV GLP equal those of M_l */
+    double scale = maxabs(&M);
+    for (int col = 0; col < 4; ++col)
+        for (int row = 0; row < 4; ++row) {
+            if (row == 2) continue;
+            double acc = 0, mag = 0;
+            for (int k = 0; k < 4; ++k) {
+                acc += V.m[k * 4 + row] * P.m[col * 4 + k];
+                mag += fabs(V.m[k * 4 + row] * P.m[col * 4 + k]);
+            }
+            SWR_CHECK_ACC(c, fabs(acc - M.m[col * 4 + row]) <= 1e-12 * (mag + scale),
+                          "(GLV GLP)[%d][%d] = %.17g, M_l %.17g", row, col, acc, M.m[col * 4 + row]);
+        }
+}
+
+static void e_lixel_split(swr_ctx* c) {
+    SKIP_IF_MISSING(c, swarp_lixel_split);
+    viewer v;
+    gen_viewer(c, &v);
+    swarp_light L;
+    swarp_plane fl, wa;
+    gen_scene(c, &v, &L, &fl);
+    gen_scene(c, &v, &L, &wa);
+    size_t n = swr_u8(c) % 9;
+    swarp_vec4 C[8];
+    double y0 = v.eye.y - swr_num_in(c, 0, 5, NULL, 0), rad = swr_num_in(c, 0.1, 20, NULL, 0);
+    for (size_t i = 0; i < 8; ++i) { /* a convex polygon (regular, in a horizontal plane) */
+        double a = 6.283185307179586 * (double)i / (double)(n ? n : 1);
+        C[i].x = v.eye.x + rad * cos(a);
+        C[i].y = y0;
+        C[i].z = v.eye.z + rad * sin(a);
+        C[i].w = 1.0;
+    }
+    if (swr_one_in(c, 16)) C[0].x = swr_num(c, -1, 1, NULL, 0) / 0.0;
+    size_t cap_f = swr_one_in(c, 6) ? swr_u8(c) % 10 : 9, cap_w = swr_one_in(c, 6) ? swr_u8(c) % 10 : 9;
+    int n_l = swr_null(c), n_f = swr_null(c), n_w = swr_null(c), n_c = swr_null(c);
+    int n_of = swr_null(c), n_ofc = swr_null(c), n_ow = swr_null(c), n_owc = swr_null(c);
+    if (n_l || n_f || n_w || n_c || (n_of && cap_f > 0) || n_ofc || (n_ow && cap_w > 0) || n_owc)
+        swr_expect(c, SWARP_ERR_NULL_POINTER);
+    if ((n_of && cap_f == 0) || (n_ow && cap_w == 0)) swr_allow(c, SWARP_ERR_NULL_POINTER);
+    expect_light(c, &L);
+    for (size_t i = 0; i < n; ++i)
+        if (!fin4(&C[i])) swr_expect(c, SWARP_ERR_NON_FINITE);
+    if (!fin(fl.a) || !fin(fl.b) || !fin(fl.c) || !fin(fl.d) || !fin(wa.a) || !fin(wa.b) || !fin(wa.c) || !fin(wa.d))
+        swr_expect(c, SWARP_ERR_NON_FINITE);
+    if (n < 3) swr_expect(c, SWARP_ERR_INVALID_ARGUMENT);
+    static const swarp_status dom[] = {SWARP_ERR_CAPACITY, SWARP_ERR_DEGENERATE, SWARP_ERR_ZERO_VECTOR,
+                                       SWARP_ERR_INVALID_ARGUMENT};
+    for (size_t i = 0; i < sizeof dom / sizeof dom[0]; ++i) swr_allow(c, dom[i]);
+    swarp_vec4 of[10], ow[10];
+    size_t cf, cw;
+    swr_fill(of, sizeof of);
+    swr_fill(ow, sizeof ow);
+    swr_fill(&cf, sizeof cf);
+    swr_fill(&cw, sizeof cw);
+    swarp_status st = SWR_CALL(c, swarp_lixel_split(n_l ? NULL : &L, n_f ? NULL : &fl, n_w ? NULL : &wa, n_c ? NULL : C, n,
+                                                   n_of ? NULL : of, cap_f, n_ofc ? NULL : &cf, n_ow ? NULL : ow, cap_w,
+                                                   n_owc ? NULL : &cw));
+    if (st == SWARP_ERR_CAPACITY) {
+        SWR_CHECK(c, swr_untouched(of, sizeof of) && swr_untouched(ow, sizeof ow), "CAPACITY but vertices written");
+        SWR_CHECK(c, cf <= SWARP_LIXEL_SPLIT_MAX(n) && cw <= SWARP_LIXEL_SPLIT_MAX(n), "needed counts %zu %zu", cf, cw);
+        SWR_CHECK(c, cf > cap_f || cw > cap_w, "CAPACITY with counts %zu %zu <= capacities %zu %zu", cf, cw, cap_f, cap_w);
+        swr_fill(&cf, sizeof cf);
+        swr_fill(&cw, sizeof cw);
+    }
+    if (!swr_verdict(c, st, 4, (void*)of, sizeof of, (void*)ow, sizeof ow, (void*)&cf, sizeof cf, (void*)&cw, sizeof cw))
+        return;
+    SWR_CHECK(c, cf <= cap_f && cw <= cap_w && cf <= SWARP_LIXEL_SPLIT_MAX(n) && cw <= SWARP_LIXEL_SPLIT_MAX(n),
+              "counts %zu %zu", cf, cw);
+    for (size_t i = 0; i < cf && i < 10; ++i) {
+        swr_rec(c, "floor", of[i].x);
+        swr_rec(c, "floor", of[i].y);
+        swr_rec(c, "floor", of[i].z);
+        swr_rec(c, "floor", of[i].w);
+    }
+    for (size_t i = 0; i < cw && i < 10; ++i) {
+        swr_rec(c, "wall", ow[i].x);
+        swr_rec(c, "wall", ow[i].y);
+        swr_rec(c, "wall", ow[i].z);
+        swr_rec(c, "wall", ow[i].w);
+    }
+}
+
+static void e_lixel_select(swr_ctx* c) {
+    SKIP_IF_MISSING(c, swarp_lixel_select);
+    swarp_mat4 G[3];
+    size_t count = swr_u8(c) % 4;
+    for (int k = 0; k < 3; ++k)
+        for (int i = 0; i < 16; ++i) G[k].m[i] = swr_num(c, -1, 1, NULL, 0);
+    swarp_vec3 p = v3(swr_num(c, -10, 10, NULL, 0), swr_num(c, -10, 10, NULL, 0), swr_num(c, -10, 10, NULL, 0));
+    int n_g = swr_null(c), n_p = swr_null(c), n_o = swr_null(c);
+    if ((n_g && count > 0) || n_p || n_o) swr_expect(c, SWARP_ERR_NULL_POINTER);
+    for (size_t k = 0; k < count; ++k)
+        if (!finm(&G[k])) swr_expect(c, SWARP_ERR_NON_FINITE);
+    if (!fin3(&p)) swr_expect(c, SWARP_ERR_NON_FINITE);
+    uint32_t idx;
+    swr_fill(&idx, sizeof idx);
+    swarp_status st = SWR_CALL(c, swarp_lixel_select(n_g ? NULL : G, count, n_p ? NULL : &p, n_o ? NULL : &idx));
+    if (!swr_verdict(c, st, 1, (void*)&idx, sizeof idx)) return;
+    c->rec[c->n_rec < SWR_MAX_REC ? c->n_rec++ : 0] = idx;
+    SWR_CHECK(c, idx <= count, "index %u > count %zu", idx, count);
+    /* the first map that holds p (w > 0, |x|, |y| <= w) */
+    uint32_t want = (uint32_t)count;
+    for (size_t k = 0; k < count; ++k) {
+        swarp_vec4 q = xf(&G[k], (swarp_vec4){p.x, p.y, p.z, 1});
+        if (q.w > 0 && fabs(q.x) <= q.w && fabs(q.y) <= q.w) {
+            want = (uint32_t)k;
+            break;
+        }
+    }
+    SWR_CHECK_ACC(c, idx == want, "index %u, the first map holding p is %u", idx, want);
+}
+
+const swr_entry swr_entries_lixel[] = {
+    {"swarp_lixel_solve5", "lixel", e_lixel_solve5},
+    {"swarp_lixel_matrix", "lixel", e_lixel_matrix},
+    {"swarp_lixel_restrict", "lixel", e_lixel_restrict},
+    {"swarp_lixel_twist_for_line", "lixel", e_lixel_twist_for_line},
+    {"swarp_lixel_factor", "lixel", e_lixel_factor},
+    {"swarp_lixel_split", "lixel", e_lixel_split},
+    {"swarp_lixel_select", "lixel", e_lixel_select},
+    {NULL, NULL, NULL},
+};
