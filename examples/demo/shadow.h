@@ -87,11 +87,9 @@ int demo_shadow_setup(const swarp_camera* cam, const swarp_light* light,
                       const swarp_aabb* scene, const demo_shadow_request* req,
                       demo_shadow* out);
 
-/** 1 if the library's error model (core stage) is linked in. */
-int demo_have_error_model(void);
 /** m_x and m_z [RHS] (2.3)-(2.8) at eye depth z for configuration sh, seen
  *  on a screen of w x h pixels with vertical fov fovy (radians).  0 on
- *  success, -1 if the error model is unavailable or fails. */
+ *  success, -1 if the model does not apply (lixel) or fails. */
 int demo_predict(const demo_shadow* sh, double fovy, int w, int h, int map_res, double z,
                  double* out_mx, double* out_mz);
 
