@@ -554,7 +554,7 @@ static int make_sheet(const options* o, tech_result* all, int n_all) {
     for (int i = 0; i < n_all; ++i)
         if (!all[i].own_view) res[n++] = &all[i];
     if (n == 0) return 0;
-    int cw = 360, ch = (int)lround(360.0 * res[0]->shaded.h / res[0]->shaded.w);
+    int cw = 320, ch = (int)lround(320.0 * res[0]->shaded.h / res[0]->shaded.w);
     int hdr = 28;
     demo_image sheet;
     if (demo_image_alloc(&sheet, 4 * cw, hdr + n * ch)) return -1;
@@ -571,6 +571,7 @@ static int make_sheet(const options* o, tech_result* all, int n_all) {
             demo_image_blit(&sheet, c * cw, hdr + i * ch, &small);
             demo_image_free(&small);
         }
+        demo_image_label(&sheet, 6, hdr + i * ch + 6, 2, res[i]->label);
     }
     int rc = write_png(o, "sheet", "techniques", &sheet);
     demo_image_free(&sheet);
