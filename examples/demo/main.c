@@ -1028,6 +1028,7 @@ static int test_select(const options* o) {
     } cases[3] = {{DEMO_TECH_PSSM, DEMO_SELECT_DEPTH, "default"},
                   {DEMO_TECH_PSSM, DEMO_SELECT_BEST, "high"},
                   {DEMO_TECH_LIXEL, DEMO_SELECT_LIXEL, "room"}};
+    const double band = 0.2; /* blend band of the depth case */
     for (int c = 0; c < 3 && tex && pos; ++c) {
         if (camera_preset(cases[c].camera, v.w, v.h, &v.cam)) return 1;
         light_from_options(o, &v.light);
@@ -1053,10 +1054,12 @@ static int test_select(const options* o) {
         memcpy(p.proj, v.proj, sizeof p.proj);
         p.light_dir[1] = -1;
         p.mode = DEMO_MODE_SHADED;
+        p.blend = (float)band;
         p.vw = v.w;
         p.vh = v.h;
         errs += demo_render_main(&r, &sh, &p, NULL);
         demo_render_read_aux(&r, tex, pos);
+        long wn = 0, wdiff = 0, wband = 0;
         swarp_bias_map maps[DEMO_MAX_SPLITS];
         for (int i = 0; i < sh.count; ++i) {
             memset(&maps[i], 0, sizeof maps[i]);
@@ -1075,6 +1078,17 @@ static int test_select(const options* o) {
             swarp_status st = swarp_cascade_select_depth(sh.split, (size_t)sh.count, z, &depth_i);
             if (sh.select == DEMO_SELECT_DEPTH) {
                 want = depth_i;
+                /* the blend weight against swarp_cascade_blend */
+                uint32_t bi;
+                double bw;
+                if (!swarp_status_is_error(
+                        swarp_cascade_blend(sh.split, (size_t)sh.count, z, band, &bi, &bw)) &&
+                    bi == depth_i) {
+                    double got_w = 1.0 - 2.0 * (tex[4 * k + 2] - floorf(tex[4 * k + 2]));
+                    ++wn;
+                    wband += bw < 1.0;
+                    wdiff += fabs(got_w - bw) > 2e-3;
+                }
             } else if (sh.select == DEMO_SELECT_BEST) {
                 st = swarp_cascade_select_best(maps, (size_t)sh.count, &q, depth_i, &want, NULL);
             } else {
@@ -1092,6 +1106,11 @@ static int test_select(const options* o) {
         /* every map must actually be chosen somewhere, or the test says
          * nothing about the selection */
         int ok = errs == 0 && n > 1000 && frac <= 0.005 && used >= 2;
+        if (sh.select == DEMO_SELECT_DEPTH) {
+            printf("blend  pssm   depth: %ld pixels (%ld in blend bands), %ld blend weights differ "
+                   "from swarp_cascade_blend by > 2e-3\n", wn, wband, wdiff);
+            ok = ok && wn > 1000 && wband > 500 && (double)wdiff / (double)wn <= 0.005;
+        }
         printf("select %-6s %-5s: %ld pixels, %ld differ from the library (%.3f%%), %d maps used %s\n",
                demo_technique_name(cases[c].t),
                cases[c].sel == DEMO_SELECT_DEPTH ? "depth" : cases[c].sel == DEMO_SELECT_BEST ? "best" : "lixel",

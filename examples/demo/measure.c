@@ -76,7 +76,9 @@ int demo_measure(const demo_view* v, const demo_shadow* sh, int map_res, const f
             const float* t0 = tex + 4 * ((size_t)y * w + x);
             const float* t1 = tex + 4 * ((size_t)(y + 1) * w + x);
             const float* t2 = tex + 4 * ((size_t)y * w + x + 1);
-            if (t0[2] != t1[2] || t0[2] != t2[2]) continue; /* split border */
+            /* the integer part is the map index (the fraction holds the
+             * blend weight) */
+            if ((int)t0[2] != (int)t1[2] || (int)t0[2] != (int)t2[2]) continue; /* border */
             const float* p0 = pos + 4 * ((size_t)y * w + x);
             const float* p1 = pos + 4 * ((size_t)(y + 1) * w + x);
             const float* p2 = pos + 4 * ((size_t)y * w + x + 1);

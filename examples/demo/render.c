@@ -212,10 +212,11 @@ static const char* const main_fs =
     "  vec3 pb = v_p + n * (u_offset * texel_world(i, v_p) * (1.0 - clamp(dot(n, to_light), 0.0, 1.0)));\n"
     "  vec3 sc = map_coord(i, pb);\n"
     "  float lit = 1.0;\n"
+    "  float w = 1.0;\n"
     "  if (u_mode != 4) {\n"
     "    lit = lookup(i, sc);\n"
     "    if (u_select == 0) {\n"
-    "      float w = blend_weight(i, v_depth);\n"
+    "      w = blend_weight(i, v_depth);\n"
     "      if (w < 1.0) lit = lit * w + lookup(i + 1, map_coord(i + 1, pb)) * (1.0 - w);\n"
     "    }\n"
     "  }\n"
@@ -229,7 +230,8 @@ static const char* const main_fs =
     "    col = mix(shaded, sp[i % 4] * (0.45 + 0.55 * ndl * lit), 0.6);\n"
     "  } else if (u_mode == 3) col = mix(shaded, vec3(0.0), grid_line(sc0.xy));\n"
     "  o_color = vec4(col, 1.0);\n"
-    "  o_tex = vec4(sc0.xy * u_res, float(i), v_depth);\n"
+    /* the map index, and in its fraction the blend weight: i + (1 - w)/2 */
+    "  o_tex = vec4(sc0.xy * u_res, float(i) + 0.5 * (1.0 - w), v_depth);\n"
     "  o_pos = vec4(v_p, lit);\n"
     "}\n";
 

@@ -72,7 +72,8 @@ int demo_render_main(demo_renderer* r, const demo_shadow* sh, const demo_main_pa
 
 /** Read back the colour target (RGBA8, top row first) of vw x vh. */
 void demo_render_read_color(demo_renderer* r, int vw, int vh, uint8_t* rgba);
-/** Read back the float targets: tex = (s, t in texels, split, eye depth),
+/** Read back the float targets: tex = (s, t in texels, map index + (1 - w)/2
+ *  with w the cascade blend weight of that map, eye depth),
  *  pos = (world xyz, lit in [0,1]); bottom row first (GL order). */
 void demo_render_read_aux(demo_renderer* r, float* tex, float* pos);
 
