@@ -69,6 +69,8 @@
     X(PFNGLDELETEFRAMEBUFFERSPROC, glDeleteFramebuffers)               \
     X(PFNGLBINDFRAMEBUFFERPROC, glBindFramebuffer)                     \
     X(PFNGLFRAMEBUFFERTEXTURELAYERPROC, glFramebufferTextureLayer)     \
+    X(PFNGLFRAMEBUFFERTEXTUREPROC, glFramebufferTexture)               \
+    X(PFNGLVIEWPORTINDEXEDFPROC, glViewportIndexedf)                   \
     X(PFNGLCHECKFRAMEBUFFERSTATUSPROC, glCheckFramebufferStatus)       \
     X(PFNGLGENRENDERBUFFERSPROC, glGenRenderbuffers)                   \
     X(PFNGLDELETERENDERBUFFERSPROC, glDeleteRenderbuffers)             \
@@ -143,6 +145,8 @@ DEMO_GL_FUNCS(DEMO_GL_DECLARE_)
 #define glDeleteFramebuffers dgl_glDeleteFramebuffers
 #define glBindFramebuffer dgl_glBindFramebuffer
 #define glFramebufferTextureLayer dgl_glFramebufferTextureLayer
+#define glFramebufferTexture dgl_glFramebufferTexture
+#define glViewportIndexedf dgl_glViewportIndexedf
 #define glCheckFramebufferStatus dgl_glCheckFramebufferStatus
 #define glGenRenderbuffers dgl_glGenRenderbuffers
 #define glDeleteRenderbuffers dgl_glDeleteRenderbuffers
@@ -157,6 +161,8 @@ int demo_gl_load(void);
 /** Compiles and links a program from vertex + fragment source (a common
  *  "#version 450 core" header is prepended).  0 and a message on failure. */
 GLuint demo_gl_program(const char* name, const char* vs, const char* fs);
+/** The same with a geometry shader between them (gs may be NULL). */
+GLuint demo_gl_program_gs(const char* name, const char* vs, const char* gs, const char* fs);
 
 /** glGetError after a pass: prints the pass name and returns the number of
  *  errors drained (0 = clean). */

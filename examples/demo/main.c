@@ -66,7 +66,8 @@ static void usage(void) {
         "  --offset K              normal-offset bias in texels (default 1)\n"
         "  --obj FILE              a Wavefront OBJ instead of the built-in scene\n"
         "  --out DIR               output directory (default ./out)\n"
-        "  --test images|iou|measure|select  headless checks (exit 0 pass, 1 fail, 77 skip)\n");
+        "  --test images|iou|measure|select|clone  headless checks (exit 0 pass, 1 fail, 77 skip)\n"
+        "  --test bench-clone      time K passes against geometry cloning for K = 4, 8, 16\n");
 }
 
 static int parse_options(int argc, char** argv, options* o) {
@@ -1124,6 +1125,85 @@ static int test_select(const options* o) {
     return fails ? 1 : 0;
 }
 
+/* Geometry cloning against K passes: the same depth in every texel of
+ * every layer (the same triangles rasterised with the same matrices), and
+ * the cost of both for K = 4, 8, 16 ([RHS] §3.3.6, Tables 7.1/7.2 for the
+ * shape of the result). */
+static int test_clone(const options* o, int bench) {
+    demo_view v;
+    memset(&v, 0, sizeof v);
+    v.w = o->w;
+    v.h = o->h;
+    if (camera_preset("default", v.w, v.h, &v.cam)) return 1;
+    light_from_options(o, &v.light);
+    demo_view_update(&v);
+    demo_scene scene;
+    if (demo_scene_default(&scene)) return 1;
+    demo_renderer r;
+    if (demo_render_init(&r, &scene, v.w, v.h, o->map, DEMO_MAX_SPLITS)) return 1;
+    size_t n = (size_t)o->map * o->map;
+    float* a = malloc(sizeof(float) * n);
+    int fails = 0;
+    const int ks[3] = {4, 8, 16};
+    if (bench)
+        printf("%-4s %16s %16s %8s  (median of 5, ms, glFinish-bracketed, %d^2 maps, %zu triangles)\n",
+               "K", "K passes", "1 pass (clone)", "ratio", o->map, scene.count / 3);
+    for (int c = 0; c < 3 && a; ++c) {
+        demo_shadow_request req;
+        memset(&req, 0, sizeof req);
+        req.technique = DEMO_TECH_PSSM;
+        req.splits = ks[c];
+        req.scheme_lambda = 0.5;
+        req.map_res = o->map;
+        req.screen_w = v.w;
+        req.screen_h = v.h;
+        demo_shadow sh;
+        if (demo_shadow_setup(&v.cam, &v.light, &scene.box, &req, &sh)) {
+            ++fails;
+            continue;
+        }
+        int errs = 0;
+        double multi[5], single[5];
+        for (int rep = 0; rep < (bench ? 5 : 1); ++rep) {
+            double ms[DEMO_MAX_SPLITS];
+            double t0 = demo_now_ms();
+            errs += demo_render_shadow(&r, &sh, DEMO_FILTER_PCF2, ms);
+            multi[rep] = demo_now_ms() - t0;
+            errs += demo_render_shadow_single(&r, &sh, &single[rep]);
+        }
+        if (bench) {
+            qsort(multi, 5, sizeof multi[0], cmp_d);
+            qsort(single, 5, sizeof single[0], cmp_d);
+            printf("%-4d %16.2f %16.2f %8.2f\n", ks[c], multi[2], single[2], single[2] / multi[2]);
+        }
+        /* K passes, read every layer back; then the clone, read again */
+        long differ = 0, covered = 0;
+        errs += demo_render_shadow(&r, &sh, DEMO_FILTER_PCF2, NULL);
+        float* multi_depth = malloc(sizeof(float) * n * (size_t)sh.count);
+        if (!multi_depth) return 1;
+        for (int i = 0; i < sh.count; ++i) errs += demo_render_read_depth(&r, i, multi_depth + n * (size_t)i);
+        errs += demo_render_shadow_single(&r, &sh, NULL);
+        for (int i = 0; i < sh.count; ++i) {
+            errs += demo_render_read_depth(&r, i, a);
+            const float* m = multi_depth + n * (size_t)i;
+            for (size_t k = 0; k < n; ++k) {
+                covered += m[k] < 1.0f;
+                differ += a[k] != m[k];
+            }
+        }
+        free(multi_depth);
+        int ok = errs == 0 && differ == 0 && covered > (long)n / 4;
+        if (!bench || !ok)
+            printf("clone K=%-2d: %ld texels with geometry, %ld differ from the K-pass maps, gl errors %d %s\n",
+                   ks[c], covered, differ, errs, ok ? "ok" : "FAIL");
+        fails += !ok;
+    }
+    free(a);
+    demo_render_free(&r);
+    demo_scene_free(&scene);
+    return fails ? 1 : 0;
+}
+
 static int test_images(const options* o) {
     /* the gallery at small size: every picture exists and is not blank */
     options q = *o;
@@ -1195,6 +1275,8 @@ int main(int argc, char** argv) {
         if (!strcmp(o.test, "iou")) rc = test_iou(&o, ctx);
         else if (!strcmp(o.test, "measure")) rc = test_measure(&o);
         else if (!strcmp(o.test, "select")) rc = test_select(&o);
+        else if (!strcmp(o.test, "clone")) rc = test_clone(&o, 0);
+        else if (!strcmp(o.test, "bench-clone")) rc = test_clone(&o, 1);
         else {
             fprintf(stderr, "demo: unknown test %s\n", o.test);
             rc = 2;

@@ -30,7 +30,7 @@ typedef enum demo_filter {
 typedef struct demo_renderer {
     GLuint vao, vbo;
     int vertex_count;
-    GLuint prog_depth, prog_moment, prog_main;
+    GLuint prog_depth, prog_moment, prog_clone, prog_main;
     GLuint shadow_tex, shadow_fbo;
     GLuint moment_tex;         /**< RGBA32F array: VSM / EVSM moments per map */
     float poisson[32];         /**< 16 unit-disk points (swarp_pcf_poisson_disk) */
@@ -51,6 +51,13 @@ void demo_render_free(demo_renderer* r);
  *  pass i (may be NULL).  Returns the number of GL errors seen. */
 int demo_render_shadow(demo_renderer* r, const demo_shadow* sh, demo_filter filter,
                        double* ms_out);
+
+/** All maps in ONE pass by geometry cloning ([RHS] §3.3.6, Listing A.1):
+ *  a geometry shader emits each triangle into every map's layer and
+ *  viewport.  Depth compare maps only.  *ms_out: glFinish-bracketed time. */
+int demo_render_shadow_single(demo_renderer* r, const demo_shadow* sh, double* ms_out);
+/** Reads layer `layer` of the depth array (map_res^2 floats). */
+int demo_render_read_depth(demo_renderer* r, int layer, float* out);
 
 typedef struct demo_main_params {
     float view[16], proj[16];       /**< camera (cglm, column-major) */
