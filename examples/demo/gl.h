@@ -55,6 +55,7 @@
     X(PFNGLUNIFORM1FVPROC, glUniform1fv)                               \
     X(PFNGLUNIFORM2FPROC, glUniform2f)                                 \
     X(PFNGLUNIFORM2FVPROC, glUniform2fv)                               \
+    X(PFNGLUNIFORM2IPROC, glUniform2i)                                 \
     X(PFNGLUNIFORM3FPROC, glUniform3f)                                 \
     X(PFNGLUNIFORM4FVPROC, glUniform4fv)                               \
     X(PFNGLUNIFORMMATRIX4FVPROC, glUniformMatrix4fv)                   \
@@ -63,6 +64,8 @@
     X(PFNGLBINDTEXTUREPROC, glBindTexture)                             \
     X(PFNGLACTIVETEXTUREPROC, glActiveTexture)                         \
     X(PFNGLTEXIMAGE3DPROC, glTexImage3D)                               \
+    X(PFNGLTEXIMAGE2DPROC, glTexImage2D)                               \
+    X(PFNGLFRAMEBUFFERTEXTURE2DPROC, glFramebufferTexture2D)           \
     X(PFNGLTEXPARAMETERIPROC, glTexParameteri)                         \
     X(PFNGLTEXPARAMETERFVPROC, glTexParameterfv)                       \
     X(PFNGLGENFRAMEBUFFERSPROC, glGenFramebuffers)                     \
@@ -131,6 +134,7 @@ DEMO_GL_FUNCS(DEMO_GL_DECLARE_)
 #define glUniform1fv dgl_glUniform1fv
 #define glUniform2f dgl_glUniform2f
 #define glUniform2fv dgl_glUniform2fv
+#define glUniform2i dgl_glUniform2i
 #define glUniform3f dgl_glUniform3f
 #define glUniform4fv dgl_glUniform4fv
 #define glUniformMatrix4fv dgl_glUniformMatrix4fv
@@ -139,6 +143,8 @@ DEMO_GL_FUNCS(DEMO_GL_DECLARE_)
 #define glBindTexture dgl_glBindTexture
 #define glActiveTexture dgl_glActiveTexture
 #define glTexImage3D dgl_glTexImage3D
+#define glTexImage2D dgl_glTexImage2D
+#define glFramebufferTexture2D dgl_glFramebufferTexture2D
 #define glTexParameteri dgl_glTexParameteri
 #define glTexParameterfv dgl_glTexParameterfv
 #define glGenFramebuffers dgl_glGenFramebuffers

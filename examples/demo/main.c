@@ -38,6 +38,7 @@ typedef struct options {
     double scheme_np, scheme_fp;
     demo_select select;
     int camera_given;
+    int mindepth;
     double path[6 * 256]; /**< --camera FILE: eye and dir per frame */
     int path_count;
 } options;
@@ -65,8 +66,10 @@ static void usage(void) {
         "  --select depth|best     split selection: eye depth or best resolution (ZZB09)\n"
         "  --offset K              normal-offset bias in texels (default 1)\n"
         "  --obj FILE              a Wavefront OBJ instead of the built-in scene\n"
+        "  --mindepth              [RHS] 4.3: min depth on GPU and CPU, LiSPSM sampling with the\n"
+        "                          camera / adjusted / pseudo near plane (camera street)\n"
         "  --out DIR               output directory (default ./out)\n"
-        "  --test images|iou|measure|select|clone  headless checks (exit 0 pass, 1 fail, 77 skip)\n"
+        "  --test images|iou|measure|select|clone|mindepth  headless checks (exit 0 pass, 1 fail, 77 skip)\n"
         "  --test bench-clone      time K passes against geometry cloning for K = 4, 8, 16\n");
 }
 
@@ -199,6 +202,8 @@ static int parse_options(int argc, char** argv, options* o) {
                 fprintf(stderr, "demo: --offset 0..16 texels\n");
                 return -1;
             }
+        } else if (!strcmp(a, "--mindepth")) {
+            o->mindepth = 1;
         } else if (!strcmp(a, "--obj")) {
             NEED();
             o->obj = val;
@@ -1204,6 +1209,93 @@ static int test_clone(const options* o, int bench) {
     return fails ? 1 : 0;
 }
 
+/* [RHS] §4.3 / Figs. 7.8-7.9: the min-depth near plane measured on the GPU
+ * and on the CPU, and the sampling rate of LiSPSM with the camera's near
+ * plane, the adjusted near plane and the pseudo-near plane side by side. */
+static int run_mindepth(const options* o, int test) {
+    demo_view v;
+    memset(&v, 0, sizeof v);
+    v.w = o->w;
+    v.h = o->h;
+    if (camera_preset(o->camera_given ? o->camera : "street", v.w, v.h, &v.cam)) return 2;
+    light_from_options(o, &v.light);
+    demo_view_update(&v);
+    demo_scene scene;
+    if (load_scene(o, &scene)) return 2;
+    demo_renderer r;
+    if (demo_render_init(&r, &scene, v.w, v.h, o->map, DEMO_MAX_SPLITS)) return 2;
+    demo_mindepth_result md;
+    int rc = demo_mindepth(&r, &v, &md) ? 1 : 0;
+    printf("min depth of the view (camera near %.3g, far %.3g):\n", v.cam.near, v.cam.far);
+    printf("  GPU 2x2 min chain (%d passes) %.6f   [depth pass %.2f ms, chain + 1-texel read-back %.2f ms]\n",
+           md.levels, md.gpu_min, md.depth_pass_ms, md.chain_ms);
+    printf("  CPU swarp_mindepth_pyramid    %.6f   [full read-back %.2f ms, reduction %.3f ms]\n",
+           md.cpu_pyramid_min, md.readback_ms, md.cpu_pyramid_ms);
+    printf("  CPU swarp_mindepth_direct     %.6f   [reduction %.3f ms]\n", md.cpu_direct_min,
+           md.cpu_direct_ms);
+    printf("  adjusted near plane (swarp_mindepth_near) %.6f\n", md.adjusted_near);
+    int same = md.gpu_min == md.cpu_pyramid_min && md.gpu_min == md.cpu_direct_min;
+    int safe = md.adjusted_near <= md.gpu_min && md.adjusted_near >= v.cam.near;
+    if (!same || !safe || md.gl_errors) {
+        printf("  FAIL: %s%s%s\n", same ? "" : "GPU and CPU minima differ; ",
+               safe ? "" : "adjusted near clips what the camera saw; ", md.gl_errors ? "GL errors" : "");
+        rc = 1;
+    }
+    if (!test && rc == 0) {
+        /* sampling rate: camera near | adjusted near | pseudo-near */
+        if (mkdir_p(o->out)) return 2;
+        const char* names[3] = {"near", "adjusted", "pseudo"};
+        for (int k = 0; k < 3; ++k) {
+            demo_view vk = v;
+            if (k == 1) vk.cam.near = md.adjusted_near;
+            demo_view_update(&vk);
+            options q = *o;
+            q.pseudo_near = k == 2 ? 0.05 : 0;
+            q.pseudo_far = 0;
+            tech_result res;
+            demo_technique t = k == 2 ? DEMO_TECH_PSEUDO : DEMO_TECH_LISPSM;
+            q.out = o->out;
+            char label[64];
+            snprintf(label, sizeof label, "mindepth_%s", names[k]);
+            if (run_technique(&q, &r, &vk, &scene.box, t, 1, 0, &res)) {
+                rc = 1;
+                continue;
+            }
+            demo_main_params p;
+            memset(&p, 0, sizeof p);
+            memcpy(p.view, vk.view, sizeof p.view);
+            memcpy(p.proj, vk.proj, sizeof p.proj);
+            p.light_dir[0] = (float)vk.light.direction.x;
+            p.light_dir[1] = (float)vk.light.direction.y;
+            p.light_dir[2] = (float)vk.light.direction.z;
+            p.mode = DEMO_MODE_SAMPLING;
+            p.filter = o->filter;
+            p.normal_offset = o->offset;
+            p.vw = vk.w;
+            p.vh = vk.h;
+            res.gl_errors += demo_render_main(&r, &res.sh, &p, NULL);
+            demo_image im;
+            if (read_picture(&r, vk.w, vk.h, &im)) return 2;
+            char cap[160];
+            snprintf(cap, sizeof cap, "LiSPSM, %s: near %.2f, predicted max m_z %.2f",
+                     k == 0 ? "camera near" : k == 1 ? "adjusted near [RHS] 4.3" : "pseudo-near 0.05 (4.2)",
+                     res.sh.near, res.sh.predicted_max_mz);
+            demo_image_label(&im, 8, 8, 1, cap);
+            demo_image_sampling_legend(&im, 20, vk.h - 44, vk.w / 2 > 420 ? 420 : vk.w / 2);
+            rc |= write_png(o, label, "sampling", &im) ? 1 : 0;
+            printf("  %-28s view range [%.3f, %.1f], n' %.3f, predicted max m_x %.3f, m_z %.3f -> %s/%s_sampling.png\n",
+                   cap, res.sh.near, res.sh.far, res.sh.n_prime[0], res.sh.predicted_max_mx,
+                   res.sh.predicted_max_mz, o->out, label);
+            if (res.gl_errors) rc = 1;
+            demo_image_free(&im);
+            free_result(&res);
+        }
+    }
+    demo_render_free(&r);
+    demo_scene_free(&scene);
+    return rc;
+}
+
 static int test_images(const options* o) {
     /* the gallery at small size: every picture exists and is not blank */
     options q = *o;
@@ -1276,6 +1368,7 @@ int main(int argc, char** argv) {
         else if (!strcmp(o.test, "measure")) rc = test_measure(&o);
         else if (!strcmp(o.test, "select")) rc = test_select(&o);
         else if (!strcmp(o.test, "clone")) rc = test_clone(&o, 0);
+        else if (!strcmp(o.test, "mindepth")) rc = run_mindepth(&o, 1);
         else if (!strcmp(o.test, "bench-clone")) rc = test_clone(&o, 1);
         else {
             fprintf(stderr, "demo: unknown test %s\n", o.test);
@@ -1285,5 +1378,12 @@ int main(int argc, char** argv) {
         return rc;
     }
     if (o.frames > 0) return run_frames(&o);
+    if (o.mindepth) {
+        demo_ctx* ctx = open_context();
+        if (!ctx) return 2;
+        int rc = run_mindepth(&o, 0);
+        demo_ctx_destroy(ctx);
+        return rc;
+    }
     return run_gallery(&o, o.technique >= 0, NULL);
 }
