@@ -1075,6 +1075,55 @@ START_TEST(warp_lispsm_direct) {
 }
 END_TEST
 
+/* [KOZ] §14.2.1: light behind the camera.  Casters behind the camera and
+ * the receivers in front that they shadow land inside the map, and the
+ * caster is nearer the light in depth (inverse projection, no slide-back),
+ * also with the virtual slide-back option. */
+START_TEST(psm_light_behind_camera) {
+    swarp_camera cam = overhead_camera();
+    cam.dir = unit(v3(0, -0.25, -1));
+    swarp_aabb box = {{-100, 0, -120}, {100, 30, 60}}; /* reaches 60 units behind the camera */
+    for (int deg = 5; deg <= 80; deg += 5) {
+        for (int slide = 0; slide < 2; ++slide) {
+            swarp_light light;
+            memset(&light, 0, sizeof light);
+            light.type = SWARP_LIGHT_DIRECTIONAL;
+            /* travels forward and down: comes from behind the camera */
+            light.direction = unit(add(scl(v3(0, 0, -1), cos(deg * DEG)), scl(v3(0, -1, 0), sin(deg * DEG))));
+            swarp_setup_options o;
+            memset(&o, 0, sizeof o);
+            o.technique = SWARP_TECHNIQUE_PSM;
+            o.psm_slideback = (uint32_t)slide;
+            swarp_setup_result r;
+            swarp_status s = swarp_setup(&cam, &light, &box, &o, &r, NULL, 0, NULL);
+            ck_assert_msg(!swarp_status_is_error(s), "%d°: %s", deg, swarp_status_name(s));
+            if (!slide) ck_assert_int_eq(s, SWARP_INFO_PSM_INVERSE);
+            int behind = 0;
+            rng R = {(uint64_t)deg};
+            for (int k = 0; k < 400; ++k) {
+                swarp_vec3 h = rnd_in_frustum(&R, &cam, cam.near, cam.far);
+                if (!in_box(&box, h, 0)) continue;
+                double ch[4];
+                clip(&r.matrix, h, ch);
+                ck_assert(in_clip(ch, SWARP_DEPTH_NEG_ONE_TO_ONE, 1e-9));
+                /* walk back toward the light through the box */
+                for (double t = 1; t < 400; t *= 1.7) {
+                    swarp_vec3 p = sub(h, scl(light.direction, t));
+                    if (!in_box(&box, p, 0)) break;
+                    double cp[4];
+                    clip(&r.matrix, p, cp);
+                    ck_assert_msg(in_clip(cp, SWARP_DEPTH_NEG_ONE_TO_ONE, 1e-9), "%d°: caster outside the map", deg);
+                    ck_assert_msg(cp[2] < ch[2] + 1e-12, "%d°: caster depth %.17g not before receiver %.17g", deg,
+                                  cp[2], ch[2]);
+                    if (dot(sub(p, cam.eye), unit(cam.dir)) < 0) behind++;
+                }
+            }
+            ck_assert_msg(behind > 10, "%d°: too few casters behind the camera (%d)", deg, behind);
+        }
+    }
+}
+END_TEST
+
 Suite* geometry_suite(void) {
     Suite* s = suite_create("geometry");
     TCase* tc = tcase_create("properties");
@@ -1096,6 +1145,7 @@ Suite* geometry_suite(void) {
     tcase_add_test(tc, focus_fit_maps_to_the_cube);
     tcase_add_test(tc, light_view_alignment);
     tcase_add_test(tc, warp_lispsm_direct);
+    tcase_add_test(tc, psm_light_behind_camera);
     suite_add_tcase(s, tc);
     return s;
 }
