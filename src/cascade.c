@@ -2,6 +2,7 @@
  * selection, blending, per-split matrices and the configuration's error
  * curve.  [RHS] §3.3-3.4, §4.1-4.2. */
 #include "splits_internal.h"
+#include "geometry_internal.h"
 
 static swarp_status sw_check_splits(const double* splits, size_t m) {
     if (!splits) return SWARP_ERR_NULL_POINTER;
@@ -329,22 +330,33 @@ SWARP_API swarp_status swarp_cascade_setup(const swarp_camera* cam, const swarp_
                                          SWARP_ATLAS_MAX_SPLITS, &cnt);
     if (st != SWARP_OK) return st;
 
-    swarp_vec3 pts[SWARP_BODY_MAX_POINTS];
+    swarp_vec3 pts_buf[SWARP_BODY_MAX_POINTS];
+    const swarp_vec3* pts = pts_buf;
     size_t npts = 0;
     swarp_setup_result sr;
+    swarp_polyhedron H, Hi, Bi;
+    swarp_vec3 cam_f = {0, 0, -1}, cam_r, cam_u;
     swarp_status info = SWARP_OK;
     const int single = (K == 1 && smode == SWARP_STABILIZE_NONE && !any_user);
     if (single) {
         /* one split IS the single map: the same call, bit for bit */
-        st = swarp_setup(cam, light, scene, &o.setup, &sr, pts, SWARP_BODY_MAX_POINTS, &npts);
+        st = swarp_setup(cam, light, scene, &o.setup, &sr, pts_buf, SWARP_BODY_MAX_POINTS, &npts);
         if (swarp_status_is_error(st)) return st;
         res.view_near = res.splits[0] = sr.view_near;
         res.view_far = res.splits[1] = sr.view_far;
     } else {
-        /* [RHS] §3.3.1 adjusted near/far, then the scheme on it */
+        /* [RHS] §3.3.1 adjusted near/far (exactly as swarp_body_adjusted_range),
+         * keeping H = V ∩ S: each split's H_i is H clipped to its depth slab,
+         * cheaper than building V_i ∩ S again */
+        if ((st = sw_check_camera(cam)) != SWARP_OK) return st;
+        if ((st = sw_check_light(light)) != SWARP_OK) return st;
+        if ((st = sw_check_box(scene)) != SWARP_OK) return st;
+        if ((st = sw_body_h(cam, cam->near, cam->far, scene, &H)) != SWARP_OK) return st;
+        sw_camera_basis(cam, &cam_f, &cam_r, &cam_u);
         double n_adj, f_adj;
-        st = swarp_body_adjusted_range(cam, scene, &n_adj, &f_adj);
-        if (swarp_status_is_error(st)) return st;
+        sw_depth_range_of(&H, cam->eye, cam_f, &n_adj, &f_adj);
+        n_adj = sw_max(n_adj, cam->near);
+        f_adj = sw_min(sw_max(f_adj, n_adj), cam->far);
         if (!(f_adj > n_adj)) {
             /* H lies in one view plane: keep a sliver, as swarp_setup does */
             const double pad = fmax(1e-9 * n_adj, 1e-300);
@@ -358,6 +370,7 @@ SWARP_API swarp_status swarp_cascade_setup(const swarp_camera* cam, const swarp_
         res.view_near = n_adj;
         res.view_far = f_adj;
     }
+    const double f_dot_eye = sw_dot(cam_f, cam->eye);
 
     for (uint32_t i = 0; i < K; ++i) {
         swarp_cascade_split* s = &sp[i];
@@ -378,11 +391,35 @@ SWARP_API swarp_status swarp_cascade_setup(const swarp_camera* cam, const swarp_
             so.pseudo_near = i == 0 ? fmin(o.setup.pseudo_near * whole / len, SW_PSEUDO_MAX_FRACTION) : 0.0;
             so.pseudo_far = i + 1 == K ? fmin(o.setup.pseudo_far * whole / len, SW_PSEUDO_MAX_FRACTION) : 0.0;
         }
-        if (!single) {
-            st = swarp_setup_range(cam, light, scene, s->near, s->far, &so, &sr, pts,
+        if (!single && so.technique == SWARP_TECHNIQUE_PSM) {
+            /* PSM's unit-cube clipping wants B as a polyhedron: the full call */
+            st = swarp_setup_range(cam, light, scene, s->near, s->far, &so, &sr, pts_buf,
                                    SWARP_BODY_MAX_POINTS, &npts);
+            pts = pts_buf;
             if (st == SWARP_ERR_BODY_EMPTY) return SWARP_ERR_SPLIT_EMPTY;
             if (swarp_status_is_error(st)) return st;
+        } else if (!single) {
+            /* H_i = H within C_i <= (p - eye).f <= C_{i+1} (outer ends are H's own) */
+            const swarp_polyhedron* hp = &H;
+            if (i > 0) {
+                st = sw_poly_clip(hp, sw_scale(cam_f, -1.0), f_dot_eye + s->near, &Hi);
+                if (st != SWARP_OK) return st;
+                hp = &Hi;
+            }
+            if (i + 1 < K) {
+                st = sw_poly_clip(hp, cam_f, -f_dot_eye - s->far, &Hi);
+                if (st != SWARP_OK) return st;
+                hp = &Hi;
+            }
+            if (hp->vertex_count == 0) return SWARP_ERR_SPLIT_EMPTY;
+            st = sw_body_from_h(hp, light, scene, &Bi);
+            if (st == SWARP_ERR_BODY_EMPTY) return SWARP_ERR_SPLIT_EMPTY;
+            if (st != SWARP_OK) return st;
+            st = swarp_setup_points(cam, light, Bi.vertices, Bi.vertex_count, hp->vertices,
+                                    hp->vertex_count, s->near, s->far, &so, &sr);
+            if (swarp_status_is_error(st)) return st;
+            pts = Bi.vertices;
+            npts = Bi.vertex_count;
         }
         s->status = st;
         if (st != SWARP_OK && info == SWARP_OK) info = st;
