@@ -1807,7 +1807,8 @@ typedef struct swarp_cascade_options {
                                             split only, pseudo-far on the LAST ([RHS] §4.2) */
     swarp_split_options split;         /**< scheme and count (count 1..16) */
     swarp_stabilize_options stabilize; /**< mode != NONE needs technique UNIFORM and a
-                                            directional light */
+                                            directional light; its depth field is
+                                            ignored (setup.depth_range is used) */
     double kernel_world_size;          /**< r_l of [RHS] (3.9), world units; 0 = 1 */
     double n_user[SWARP_CASCADE_MAX_SPLITS]; /**< per-split warp: n' in eye units for
                                             split i (+INFINITY = uniform); 0 = use setup */

@@ -428,8 +428,11 @@ SWARP_API swarp_status swarp_cascade_setup(const swarp_camera* cam, const swarp_
         s->n_eye = sr.n_eye;
         if (smode != SWARP_STABILIZE_NONE) {
             swarp_stabilize_report rep;
+            /* one depth convention for the whole cascade: the setup's */
+            swarp_stabilize_options sto = o.stabilize;
+            sto.depth = o.setup.depth_range;
             st = swarp_stabilize_directional(cam, s->near, s->far, &light->direction, pts, npts, scene,
-                                             tile_res, &o.stabilize, &s->matrix, &rep);
+                                             tile_res, &sto, &s->matrix, &rep);
             if (swarp_status_is_error(st)) return st;
             if (st != SWARP_OK) {
                 s->status = st;

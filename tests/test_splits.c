@@ -1279,6 +1279,7 @@ START_TEST(cascade_stabilized_whole_texels) {
     o.setup.map_width = 1024;
     o.stabilize.mode = SWARP_STABILIZE_SPHERE;
     o.stabilize.origin = v3(1, 2, 3);
+    o.setup.depth_range = SWARP_DEPTH_ZERO_TO_ONE; /* the stabilised maps follow it */
     swarp_vec3 P = v3(4, 0, -30);
     double prev[4][2];
     double prev_texel[4];
@@ -1292,6 +1293,18 @@ START_TEST(cascade_stabilized_whole_texels) {
         swarp_status st = swarp_cascade_setup(&c.cam, &c.light, &c.box, &o, &r, sp, 4, &k);
         ck_assert_msg(!swarp_status_is_error(st), "%s", swarp_status_name(st));
         for (int i = 0; i < 4; ++i) {
+            if (it == 0) { /* B_i inside the map, depth in [0, 1] */
+                swarp_vec3 B[SWARP_BODY_MAX_POINTS];
+                size_t nb;
+                ck_assert_int_eq(swarp_body_points(&c.cam, sp[i].near, sp[i].far, &c.light, &c.box, B,
+                                                   SWARP_BODY_MAX_POINTS, &nb), SWARP_OK);
+                for (size_t j = 0; j < nb; ++j) {
+                    double h[4];
+                    xform(&sp[i].matrix, vsub(B[j], o.stabilize.origin), h);
+                    ck_assert(fabs(h[0]) <= 1 + 1e-9 && fabs(h[1]) <= 1 + 1e-9);
+                    ck_assert(h[2] >= -1e-9 && h[2] <= 1 + 1e-9);
+                }
+            }
             double stc[2];
             texel_of(&sp[i].matrix, vsub(P, o.stabilize.origin), 1024, stc);
             /* the exact solution's size depends on the split range: with the
