@@ -27,7 +27,9 @@
  *                 fixed forever.  A successful call never writes NaN; the only
  *                 non-finite value ever written is +INFINITY for a warp
  *                 parameter n' together with SWARP_INFO_WARP_UNIFORM (n' = inf
- *                 IS the uniform shadow map; the error model accepts it).
+ *                 IS the uniform shadow map; the error model accepts it), and
+ *                 +INFINITY as the minimum of an empty depth buffer with
+ *                 SWARP_INFO_MINDEPTH_EMPTY (extras).
  * Memory, threads No function allocates, keeps global state, does I/O or
  *                 reads the locale.  Everything is reentrant and thread-safe.
  *                 Output arrays follow (T* out, size_t capacity, size_t*
