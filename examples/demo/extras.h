@@ -65,5 +65,8 @@ int extras_cloning(extras_env* e, int test, extras_bench_row* rows, int* nrows);
 int extras_blur(extras_env* e, int test);
 int extras_mindepth(extras_env* e, int test, extras_bench_row* rows, int* nrows);
 int extras_cube(extras_env* e, int test);
+/** The adjusted near plane of view v measured on the GPU (extras_mindepth.c):
+ *  swarp_mindepth_near of the mip-min chain's minimum; NAN on failure. */
+double extras_measured_near(extras_env* e, const demo_view* v);
 
 #endif

@@ -218,6 +218,22 @@ static int sampling_and_graph(extras_env* e, const demo_view* v, const demo_shad
     return errs;
 }
 
+double extras_measured_near(extras_env* e, const demo_view* v) {
+    md_ctx m;
+    size_t npx = (size_t)e->w * e->h, cap = SWARP_MINDEPTH_SCRATCH(e->w, e->h);
+    float* buf = malloc(sizeof(float) * npx);
+    float* scratch = malloc(sizeof(float) * cap);
+    double near = NAN;
+    md_measure a;
+    if (buf && scratch && md_init(e, &m) == 0 && measure(e, &m, v, buf, scratch, cap, &a) == 0 &&
+        !swarp_status_is_error(a.st_near))
+        near = a.near_adj;
+    md_free(&m);
+    free(buf);
+    free(scratch);
+    return near;
+}
+
 int extras_mindepth(extras_env* e, int test, extras_bench_row* rows, int* nrows) {
     md_ctx m;
     size_t npx = (size_t)e->w * e->h;
