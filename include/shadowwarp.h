@@ -456,15 +456,16 @@ SWARP_API swarp_status swarp_gmnpr_lambda12(double theta, double phi, double n, 
                                             double* out_lambda_1, double* out_lambda_2);
 /** @brief λ_GMNPR(θ) of [GMNPR] (8), with λ_2* of (7) for θ < φ.
  *  θ in [0, pi/2]; finite and positive for θ > 0, continuous at θ = φ,
- *  growing without bound as θ -> 0; never Inf or NaN: θ = 0 (and θ so
- *  small that λ overflows) gives DBL_MAX with SWARP_INFO_WARP_UNIFORM.
+ *  growing without bound as θ -> 0; θ = 0 gives +INFINITY with
+ *  SWARP_INFO_WARP_UNIFORM (and θ so small that λ overflows gives DBL_MAX
+ *  with SWARP_INFO_WARP_UNIFORM).
  *  @return SWARP_OK (θ >= φ), SWARP_INFO_GMNPR_ADJUSTED (0 < θ < φ),
  *  SWARP_INFO_WARP_UNIFORM, the common checks. */
 SWARP_API swarp_status swarp_gmnpr_lambda(double theta, double phi, double n, double f,
                                           double* out_lambda);
 /** @brief λ_LiSPSM(θ) of [GMNPR] (9): P_n = (n + sqrt(fn))/sin θ over the
- *  normalised depth P_f - P_n.  θ in [0, pi/2]; θ = 0 gives DBL_MAX (finite)
- *  with SWARP_INFO_WARP_UNIFORM.  At θ = π/2 it equals n_opt/(f - n).
+ *  normalised depth P_f - P_n.  θ in [0, pi/2]; θ = 0 gives +INFINITY with
+ *  SWARP_INFO_WARP_UNIFORM.  At θ = π/2 it equals n_opt/(f - n).
  *  @return SWARP_OK, SWARP_INFO_WARP_UNIFORM, the common checks. */
 SWARP_API swarp_status swarp_gmnpr_lambda_lispsm(double theta, double phi, double n, double f,
                                                  double* out_lambda);
