@@ -702,6 +702,15 @@ SWARP_API swarp_status swarp_body_points(const swarp_camera* cam, double near, d
                                          const swarp_light* light, const swarp_aabb* scene,
                                          swarp_vec3* out, size_t capacity, size_t* out_count);
 
+/** @brief The receivers a light can reach: H ∩ L for a spot light (L the
+ *  square pyramid around its cone, as in swarp_body_from_h), H itself for
+ *  directional and omni lights.  Pass its vertices as the receivers of
+ *  swarp_setup_points (pancaking, PSM unit cube clipping).  out may equal H.
+ *  @return SWARP_OK, SWARP_ERR_BODY_EMPTY (the cone misses H), and the
+ *          statuses of swarp_body_from_h's argument checks. */
+SWARP_API swarp_status swarp_body_receivers(const swarp_polyhedron* H, const swarp_light* light,
+                                            swarp_polyhedron* out);
+
 /** @brief Adjusted near/far [RHS] §3.3.1 ([ZSN07]): min and max view depth
  *  over the points of H = V ∩ S (view frustum cam->near..cam->far).
  *  @return SWARP_OK, SWARP_ERR_BODY_EMPTY, statuses of swarp_body_h. */

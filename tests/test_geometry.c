@@ -1073,6 +1073,26 @@ START_TEST(warp_lispsm_direct) {
         ck_assert_double_eq_tol(lo, -1, 1e-12);
         ck_assert_double_eq_tol(hi, 1, 1e-12);
     }
+    /* receivers: H itself for a directional light; H ∩ L for a spot */
+    swarp_polyhedron Hh, Rr;
+    ck_assert_int_eq(swarp_body_h(&cam, 1, 100, &box, &Hh), SWARP_OK);
+    ck_assert_int_eq(swarp_body_receivers(&Hh, &light, &Rr), SWARP_OK);
+    ck_assert_uint_eq(Rr.vertex_count, Hh.vertex_count);
+    swarp_light spot;
+    memset(&spot, 0, sizeof spot);
+    spot.type = SWARP_LIGHT_POINT;
+    spot.position = v3(0, 60, -50);
+    spot.direction = v3(0, -1, 0);
+    spot.cone_angle = 20 * DEG;
+    ck_assert_int_eq(swarp_body_receivers(&Hh, &spot, &Rr), SWARP_OK);
+    for (uint32_t i = 0; i < Rr.vertex_count; ++i) {
+        swarp_vec3 q = sub(Rr.vertices[i], spot.position);
+        /* inside the pyramid that circumscribes the cone: within atan(√2 tan 20°) */
+        ck_assert(acos(fmin(1.0, -q.y / len(q))) <= atan(sqrt(2.0) * tan(20 * DEG)) + 1e-9);
+        ck_assert(in_frustum(&cam, 1, 100, Rr.vertices[i], 1e-9));
+    }
+    spot.direction = v3(0, 1, 0); /* pointing away: lights nothing of H */
+    ck_assert_int_eq(swarp_body_receivers(&Hh, &spot, &Rr), SWARP_ERR_BODY_EMPTY);
     /* a caller's n' = +inf is the uniform map */
     swarp_warp_options o;
     memset(&o, 0, sizeof o);
