@@ -1686,6 +1686,14 @@ SWARP_API swarp_status swarp_bias_receiver_plane(const swarp_bias_map* map, cons
 
 /* ---- cascades: split selection and blending   (src/cascade.c)   [RHS] §3.3.3 */
 
+/** @brief View depth of a world point: (p - eye) . dir/|dir|, the z that
+ *  swarp_cascade_select_depth and swarp_cascade_blend take (in a shader:
+ *  -view_space_position.z).
+ *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
+ *          SWARP_ERR_ZERO_VECTOR. */
+SWARP_API swarp_status swarp_cascade_view_depth(const swarp_camera* cam, const swarp_vec3* p,
+                                                double* out_depth);
+
 /** @brief Split selection by eye depth (PSSM, ZSXL06; [RHS] §3.3.3):
  *  the i with splits[i] <= view_depth < splits[i+1] (a depth on a border
  *  belongs to the split that starts there; the far end to the last split).
@@ -1828,6 +1836,10 @@ typedef struct swarp_cascade_split {
     double mx_start, mz_start; /**< values at C_i: just after the border into this split */
     double mx_end, mz_end;     /**< values at C_{i+1} with this split's map (just before) */
     double texel_size;         /**< stabilised: world texel size; else 0 */
+    double depth_per_world;    /**< window depth per world unit toward the light at the
+                                    centroid of B_i (swarp_bias_depth_per_world): converts
+                                    a world-space bias to this split's depth units
+                                    (constant over the split for uniform maps) */
     swarp_status status;       /**< this split's own (informational) status */
     uint32_t point_count;      /**< points of B_i */
     uint32_t _reserved[4];

@@ -23,6 +23,18 @@ static uint32_t sw_select_depth(const double* splits, size_t m, double z, int* o
     return i;
 }
 
+SWARP_API swarp_status swarp_cascade_view_depth(const swarp_camera* cam, const swarp_vec3* p,
+                                                double* out_depth) {
+    if (!cam || !p || !out_depth) return SWARP_ERR_NULL_POINTER;
+    if (!sw_finite3(&cam->eye) || !sw_finite3(&cam->dir) || !sw_finite3(p)) return SWARP_ERR_NON_FINITE;
+    swarp_vec3 f;
+    if (!sw_normalize(cam->dir, &f)) return SWARP_ERR_ZERO_VECTOR;
+    const double z = sw_dot(sw_sub(*p, cam->eye), f);
+    if (!sw_finite(z)) return SWARP_ERR_NON_FINITE;
+    *out_depth = z;
+    return SWARP_OK;
+}
+
 SWARP_API swarp_status swarp_cascade_select_depth(const double* splits, size_t m, double view_depth,
                                                   uint32_t* out_index) {
     if (!out_index) return SWARP_ERR_NULL_POINTER;
@@ -223,7 +235,7 @@ SWARP_API swarp_status swarp_cascade_error_curve(const swarp_error_config* cfg,
 
 _Static_assert(sizeof(swarp_cascade_split) ==
                    2 * sizeof(double) + 2 * sizeof(swarp_mat4) + sizeof(swarp_atlas_tile) +
-                       10 * sizeof(double) + 8 + 16,
+                       11 * sizeof(double) + 8 + 16,
                "swarp_cascade_split size");
 _Static_assert(sizeof(swarp_cascade_result) == 8 + (4 + SWARP_CASCADE_MAX_SPLITS + 1) * sizeof(double) +
                                                    sizeof(swarp_atlas_info) + 16,
@@ -449,6 +461,18 @@ SWARP_API swarp_status swarp_cascade_setup(const swarp_camera* cam, const swarp_
         c = sw_scale(c, 1.0 / (double)(npts ? npts : 1));
         if (smode != SWARP_STABILIZE_NONE) c = sw_sub(c, o.stabilize.origin);
         sw_kernel_scale(&s->matrix, c, r_l, res.atlas.l_sc, s->kernel_scale);
+        {
+            /* world bias -> this split's depth units, at the centroid */
+            swarp_bias_map bm;
+            memset(&bm, 0, sizeof bm);
+            bm.world_to_clip = s->matrix;
+            bm.res_s = bm.res_t = (double)tile_res;
+            bm.depth = o.setup.depth_range;
+            swarp_light lw = *light;
+            if (smode != SWARP_STABILIZE_NONE) lw.position = sw_sub(lw.position, o.stabilize.origin);
+            st = swarp_bias_depth_per_world(&bm, &lw, &c, &s->depth_per_world);
+            if (st != SWARP_OK) s->depth_per_world = 0.0; /* point light at the centroid */
+        }
         if ((st = sw_split_errors(cam, &o.setup, s)) != SWARP_OK) return st;
         if (s->max_mx > res.max_mx) res.max_mx = s->max_mx;
         if (s->max_mz > res.max_mz) res.max_mz = s->max_mz;

@@ -778,6 +778,30 @@ START_TEST(select_best_never_worse_than_depth) {
 }
 END_TEST
 
+START_TEST(view_depth_of_world_points) {
+    rng_state = 33;
+    for (int it = 0; it < 100; ++it) {
+        swarp_camera cam = make_camera(v3(rng_uniform(-1e5, 1e5), 3, rng_uniform(-1e5, 1e5)), rand_unit(), 1, 1, 1, 100);
+        double z = rng_uniform(1, 100), x = rng_uniform(-5, 5);
+        swarp_vec3 side = vnorm(vcross(cam.dir, cam.up));
+        swarp_vec3 p = vadd(vadd(cam.eye, vscale(vnorm(cam.dir), z)), vscale(side, x));
+        double d;
+        ck_assert_int_eq(swarp_cascade_view_depth(&cam, &p, &d), SWARP_OK);
+        ck_assert_double_eq_tol(d, z, 1e-9 * 1e5);
+    }
+    swarp_camera cam = make_camera(v3(0, 0, 0), v3(0, 0, -1), 1, 1, 1, 100);
+    swarp_vec3 p = v3(0, 0, -3);
+    double d = -1;
+    cam.dir = v3(0, 0, 0);
+    ck_assert_int_eq(swarp_cascade_view_depth(&cam, &p, &d), SWARP_ERR_ZERO_VECTOR);
+    p.x = NAN;
+    cam.dir = v3(0, 0, -1);
+    ck_assert_int_eq(swarp_cascade_view_depth(&cam, &p, &d), SWARP_ERR_NON_FINITE);
+    ck_assert_int_eq(swarp_cascade_view_depth(&cam, NULL, &d), SWARP_ERR_NULL_POINTER);
+    ck_assert(d == -1);
+}
+END_TEST
+
 START_TEST(blend_weight_continuous_and_banded) {
     double splits[5] = {1, 4, 10, 30, 100};
     const double band = 0.2;
@@ -1172,6 +1196,17 @@ START_TEST(cascade_splits_cover_bodies_and_range) {
                 lo = fmin(lo, x);
                 hi = fmax(hi, x);
             }
+            /* uniform maps: a world bias of 1 toward the light lowers the
+             * window depth by depth_per_world anywhere in the split */
+            if (o.setup.technique == SWARP_TECHNIQUE_UNIFORM) {
+                swarp_vec3 q = B[nb / 2], L = vscale(vnorm(c.light.direction), -1.0);
+                double h0[4], h1[4];
+                xform(&sp[i].matrix, q, h0);
+                xform(&sp[i].matrix, vadd(q, L), h1);
+                double dd = 0.5 * (h0[2] / h0[3] - h1[2] / h1[3]);
+                ck_assert_double_eq_tol(sp[i].depth_per_world, dd, 1e-9 * fabs(dd) + 1e-15);
+                ck_assert(sp[i].depth_per_world > 0);
+            }
             /* uniform maps: kernel scale = (3.9) with the body's light-space x extent */
             if (o.setup.technique == SWARP_TECHNIQUE_UNIFORM)
                 ck_assert_double_eq_tol(sp[i].kernel_scale[0], 0.5 * l_sc * 2 / (hi - lo), 1e-7 * sp[i].kernel_scale[0]);
@@ -1424,6 +1459,7 @@ static Suite* splits_suite(void) {
     t = tcase_create("select");
     tcase_add_test(t, select_best_never_worse_than_depth);
     tcase_add_test(t, blend_weight_continuous_and_banded);
+    tcase_add_test(t, view_depth_of_world_points);
     tcase_add_test(t, select_bad_inputs);
     suite_add_tcase(s, t);
     return s;
