@@ -1626,7 +1626,11 @@ SWARP_API swarp_status swarp_bias_texel_size(const swarp_bias_map* map, const sw
                                              double* out_L_texel, double* out_L_s, double* out_L_t);
 
 /** @brief Unit vector from p toward the light (the L of [KOZ] §14.2.3):
- *  -direction for a directional light, (position - p)/|.| for a point light. */
+ *  -direction for a directional light, (position - p)/|.| for a point light.
+ *  @param[in] light, p; @param[out] out_L unit vector
+ *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
+ *          SWARP_ERR_UNKNOWN_ENUM, SWARP_ERR_RESERVED_NONZERO,
+ *          SWARP_ERR_ZERO_VECTOR (zero direction, point light at p). */
 SWARP_API swarp_status swarp_bias_to_light(const swarp_light* light, const swarp_vec3* p,
                                            swarp_vec3* out_L);
 
@@ -1647,7 +1651,10 @@ SWARP_API swarp_status swarp_bias_kozlov(const swarp_bias_map* map, const swarp_
  *  facing normal gives SWARP_INFO_BACKFACING and the full offset k L_texel).
  *  @param k  offset in texels (>= 0)
  *  @param[out] out_p; @param[out] out_amount offset length in world units
- *  (may be NULL). */
+ *  (may be NULL).
+ *  @return SWARP_OK, SWARP_INFO_BACKFACING, SWARP_ERR_OUT_OF_RANGE (k < 0),
+ *          SWARP_ERR_ZERO_VECTOR (normal), and the errors of
+ *          swarp_bias_texel_size and swarp_bias_to_light. */
 SWARP_API swarp_status swarp_bias_normal_offset(const swarp_bias_map* map, const swarp_light* light,
                                                 const swarp_vec3* p, const swarp_vec3* normal,
                                                 double k, swarp_vec3* out_p, double* out_amount);
@@ -1667,8 +1674,12 @@ SWARP_API swarp_status swarp_bias_slope_scaled(const swarp_bias_map* map, const 
                                                double* out_depth_bias);
 
 /** @brief Window depth per world unit toward the light at p: the factor that
- *  turns a world-space bias into the depth units of this split's map (the
- *  derivative of d along L at p).  Uniform maps: constant per split. */
+ *  turns a world-space bias into the depth units of this split's map (minus
+ *  the derivative of d along L at p, so > 0 for a map looking along the
+ *  light).  Uniform maps: constant per split.
+ *  @param[out] out_depth_per_world window depth units per world unit
+ *  @return SWARP_OK, SWARP_ERR_BEHIND_PROJECTION, and the argument errors of
+ *          swarp_bias_texel_size and swarp_bias_to_light. */
 SWARP_API swarp_status swarp_bias_depth_per_world(const swarp_bias_map* map, const swarp_light* light,
                                                   const swarp_vec3* p, double* out_depth_per_world);
 
