@@ -318,6 +318,8 @@ SWARP_API swarp_status swarp_cascade_setup(const swarp_camera* cam, const swarp_
             if (nu != INFINITY) user_warp = 1;
         }
     }
+    if (!sw_reserved_zero(o.stabilize._reserved, 4) || o.stabilize._reserved0 != 0)
+        return SWARP_ERR_RESERVED_NONZERO;
     swarp_stabilize_mode smode = o.stabilize.mode == SWARP_STABILIZE_DEFAULT ? SWARP_STABILIZE_NONE
                                                                              : o.stabilize.mode;
     if (smode != SWARP_STABILIZE_NONE && smode != SWARP_STABILIZE_SPHERE &&
@@ -354,6 +356,12 @@ SWARP_API swarp_status swarp_cascade_setup(const swarp_camera* cam, const swarp_
         /* one split IS the single map: the same call, bit for bit */
         st = swarp_setup(cam, light, scene, &o.setup, &sr, pts_buf, SWARP_BODY_MAX_POINTS, &npts);
         if (swarp_status_is_error(st)) return st;
+        /* the split options are still validated; one split is [n, f] exactly */
+        swarp_split_options so = o.split;
+        so.count = 1;
+        swarp_status sst = swarp_cascade_splits(sr.view_near, sr.view_far, &so, res.splits,
+                                                SWARP_CASCADE_MAX_SPLITS + 1, &cnt);
+        if (swarp_status_is_error(sst)) return sst;
         res.view_near = res.splits[0] = sr.view_near;
         res.view_far = res.splits[1] = sr.view_far;
     } else {

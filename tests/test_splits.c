@@ -1402,7 +1402,13 @@ START_TEST(cascade_bad_inputs) {
     o.stabilize.mode = 0;
     o.split.scheme = (swarp_split_scheme)99;
     ck_assert_int_eq(swarp_cascade_setup(&c.cam, &c.light, &c.box, &o, &r, sp, 16, &k), SWARP_ERR_UNKNOWN_ENUM);
+    o.split.count = 1; /* the single-map path validates the scheme too */
+    ck_assert_int_eq(swarp_cascade_setup(&c.cam, &c.light, &c.box, &o, &r, sp, 16, &k), SWARP_ERR_UNKNOWN_ENUM);
+    o.split.count = 0;
     o.split.scheme = 0;
+    o.stabilize._reserved[2] = 5;
+    ck_assert_int_eq(swarp_cascade_setup(&c.cam, &c.light, &c.box, &o, &r, sp, 16, &k), SWARP_ERR_RESERVED_NONZERO);
+    o.stabilize._reserved[2] = 0;
     /* camera looking away from the scene */
     swarp_camera away = c.cam;
     away.dir = v3(0, 1, 0);
