@@ -258,7 +258,11 @@ static void sw_kernel_scale(const swarp_mat4* M, swarp_vec3 c, double r_l, doubl
             const double hk = k == 0 ? h.x : h.y;
             g[j] = (row_k - hk / h.w * row_w) / h.w;
         }
-        out[k] = r_l * l_sc * hypot(hypot(g[0], g[1]), g[2]);
+        /* sqrt of the sum of squares (hypot is slow); exact enough and safe
+         * for |g| up to ~1e150, beyond which the overflow-proof length is used */
+        const double s2 = g[0] * g[0] + g[1] * g[1] + g[2] * g[2];
+        const double len = (s2 > 1e-290 && s2 < 1e290) ? sqrt(s2) : sw_len(sw_v3(g[0], g[1], g[2]));
+        out[k] = r_l * l_sc * len;
     }
 }
 
@@ -337,7 +341,7 @@ SWARP_API swarp_status swarp_cascade_setup(const swarp_camera* cam, const swarp_
     memset(&res, 0, sizeof res);
     res.split_count = K;
     swarp_cascade_split sp[SWARP_CASCADE_MAX_SPLITS];
-    memset(sp, 0, sizeof sp);
+    memset(sp, 0, K * sizeof sp[0]);
     swarp_atlas_tile tiles[SWARP_ATLAS_MAX_SPLITS];
     size_t cnt;
     swarp_status st = swarp_atlas_layout(K, tile_res, o.setup.depth_range, &res.atlas, tiles,
