@@ -1599,6 +1599,23 @@ SWARP_API swarp_status swarp_stabilize_directional(const swarp_camera* cam, doub
                                                    swarp_mat4* out_matrix,
                                                    swarp_stabilize_report* out_report);
 
+/** @brief Offset snapping for a caller's own uniform light matrix ([RHS]
+ *  §3.5, the offset problem): shifts the clip-space translation by less than
+ *  half a texel so that `origin` lands on a texel corner.  While the matrix's
+ *  scale and orientation stay the same (e.g. quantised with LEVELS), every
+ *  world point then moves by whole texels between frames.  Done in double on
+ *  (origin-relative) coordinates.
+ *  @param[in] m  world -> clip matrix of a uniform map (last row 0 0 0 w)
+ *  @param res_s, res_t  map resolution in texels (> 0)
+ *  @param[in] origin  snapping origin (world)
+ *  @param[out] out  the snapped matrix (may alias m)
+ *  @return SWARP_OK, SWARP_ERR_STABILIZE_WARPED (m is projective: a warped
+ *          map has no uniform texel grid), SWARP_ERR_NULL_POINTER,
+ *          SWARP_ERR_NON_FINITE, SWARP_ERR_RESOLUTION, SWARP_ERR_SINGULAR
+ *          (w = 0). */
+SWARP_API swarp_status swarp_stabilize_snap_matrix(const swarp_mat4* m, double res_s, double res_t,
+                                                   const swarp_vec3* origin, swarp_mat4* out);
+
 /* ---- bias                               (src/bias.c)   [KOZ] §14.2.3 */
 
 /** A shadow map as the bias functions see it: the final world -> clip matrix

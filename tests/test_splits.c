@@ -411,6 +411,86 @@ START_TEST(stabilize_sphere_size_constant_and_levels_quantised) {
 }
 END_TEST
 
+/* An orthographic light map built here independently: basis (u, v, w) from a
+ * random light direction, half sizes hx, hy, depth range [t0, t1] along d. */
+typedef struct ortho_map {
+    swarp_bias_map map;
+    swarp_vec3 u, v, d;
+    double hx, hy, t0, t1;
+} ortho_map;
+
+static ortho_map make_ortho(swarp_vec3 d, swarp_vec3 centre, double hx, double hy, double t0,
+                            double t1, double res_s, double res_t) {
+    ortho_map o;
+    memset(&o, 0, sizeof o);
+    o.d = vnorm(d);
+    o.u = vnorm(vcross(o.d, fabs(o.d.z) < 0.9 ? v3(0, 0, 1) : v3(1, 0, 0)));
+    o.v = vcross(o.u, o.d);
+    o.hx = hx;
+    o.hy = hy;
+    o.t0 = t0;
+    o.t1 = t1;
+    swarp_vec3 rows[3] = {vscale(o.u, 1 / hx), vscale(o.v, 1 / hy), vscale(o.d, 2 / (t1 - t0))};
+    double tr[3] = {-vdot(o.u, centre) / hx, -vdot(o.v, centre) / hy,
+                    -2 * vdot(o.d, centre) / (t1 - t0) - (t1 + t0) / (t1 - t0)};
+    for (int r = 0; r < 3; ++r) {
+        o.map.world_to_clip.m[0 + r] = ((double*)&rows[r])[0];
+        o.map.world_to_clip.m[4 + r] = ((double*)&rows[r])[1];
+        o.map.world_to_clip.m[8 + r] = ((double*)&rows[r])[2];
+        o.map.world_to_clip.m[12 + r] = tr[r];
+    }
+    o.map.world_to_clip.m[15] = 1;
+    o.map.res_s = res_s;
+    o.map.res_t = res_t;
+    o.map.depth = SWARP_DEPTH_NEG_ONE_TO_ONE;
+    return o;
+}
+
+START_TEST(stabilize_snap_matrix_whole_texels) {
+    /* a caller's ortho map with fixed scale and orientation, sliding with
+     * the camera: after snapping, a fixed point moves by whole texels */
+    rng_state = 91;
+    for (int rep = 0; rep < 20; ++rep) {
+        swarp_vec3 origin = v3(rng_uniform(-1e6, 1e6), 0, rng_uniform(-1e6, 1e6));
+        swarp_vec3 P = vadd(origin, v3(rng_uniform(-50, 50), rng_uniform(-5, 5), rng_uniform(-50, 50)));
+        double prev[2] = {0, 0};
+        for (int it = 0; it < 50; ++it) {
+            swarp_vec3 c = vadd(origin, v3(rng_uniform(-30, 30), 0, rng_uniform(-30, 30)));
+            ortho_map o = make_ortho(v3(0.3, -1, 0.2), vsub(c, origin), 80, 60, -100, 100, 2048, 1024);
+            swarp_mat4 M;
+            /* the matrix takes origin-relative points here: snap about 0 */
+            double st[2], st0[2];
+            swarp_vec3 zero = v3(0, 0, 0);
+            ck_assert_int_eq(swarp_stabilize_snap_matrix(&o.map.world_to_clip, 2048, 1024, &zero, &M), SWARP_OK);
+            texel_of(&M, vsub(P, origin), 2048, st);
+            st[1] = st[1] / 2048 * 1024;
+            texel_of(&o.map.world_to_clip, vsub(P, origin), 2048, st0);
+            ck_assert(fabs(st[0] - st0[0]) <= 0.5 + 1e-9); /* moved by at most half a texel */
+            if (it > 0) {
+                ck_assert(frac_dist(st[0] - prev[0]) < 1e-6);
+                ck_assert(frac_dist(st[1] - prev[1]) < 1e-6);
+            }
+            prev[0] = st[0];
+            prev[1] = st[1];
+        }
+    }
+    /* a warped (projective) map has no uniform grid */
+    swarp_mat4 P4, out;
+    memset(&P4, 0, sizeof P4);
+    P4.m[0] = P4.m[5] = 1;
+    P4.m[10] = -1.02;
+    P4.m[11] = -1;
+    P4.m[14] = -2.02;
+    memset(&out, 0x11, sizeof out);
+    swarp_mat4 outs = out;
+    swarp_vec3 o0 = v3(0, 0, 0);
+    ck_assert_int_eq(swarp_stabilize_snap_matrix(&P4, 512, 512, &o0, &out), SWARP_ERR_STABILIZE_WARPED);
+    ck_assert_int_eq(swarp_stabilize_snap_matrix(&P4, 0, 512, &o0, &out), SWARP_ERR_RESOLUTION);
+    ck_assert_int_eq(swarp_stabilize_snap_matrix(NULL, 512, 512, &o0, &out), SWARP_ERR_NULL_POINTER);
+    ck_assert_mem_eq(&out, &outs, sizeof out);
+}
+END_TEST
+
 START_TEST(stabilize_bad_inputs) {
     swarp_camera cam = make_camera(v3(0, 5, 0), v3(0, -0.3, -1), 1.0, 1.0, 1, 100);
     swarp_vec3 light = v3(0, -1, 0.1), body[8];
@@ -470,41 +550,6 @@ END_TEST
 /* ======================================================================= */
 /* Bias [KOZ] §14.2.3                                                      */
 /* ======================================================================= */
-
-/* An orthographic light map built here independently: basis (u, v, w) from a
- * random light direction, half sizes hx, hy, depth range [t0, t1] along d. */
-typedef struct ortho_map {
-    swarp_bias_map map;
-    swarp_vec3 u, v, d;
-    double hx, hy, t0, t1;
-} ortho_map;
-
-static ortho_map make_ortho(swarp_vec3 d, swarp_vec3 centre, double hx, double hy, double t0,
-                            double t1, double res_s, double res_t) {
-    ortho_map o;
-    memset(&o, 0, sizeof o);
-    o.d = vnorm(d);
-    o.u = vnorm(vcross(o.d, fabs(o.d.z) < 0.9 ? v3(0, 0, 1) : v3(1, 0, 0)));
-    o.v = vcross(o.u, o.d);
-    o.hx = hx;
-    o.hy = hy;
-    o.t0 = t0;
-    o.t1 = t1;
-    swarp_vec3 rows[3] = {vscale(o.u, 1 / hx), vscale(o.v, 1 / hy), vscale(o.d, 2 / (t1 - t0))};
-    double tr[3] = {-vdot(o.u, centre) / hx, -vdot(o.v, centre) / hy,
-                    -2 * vdot(o.d, centre) / (t1 - t0) - (t1 + t0) / (t1 - t0)};
-    for (int r = 0; r < 3; ++r) {
-        o.map.world_to_clip.m[0 + r] = ((double*)&rows[r])[0];
-        o.map.world_to_clip.m[4 + r] = ((double*)&rows[r])[1];
-        o.map.world_to_clip.m[8 + r] = ((double*)&rows[r])[2];
-        o.map.world_to_clip.m[12 + r] = tr[r];
-    }
-    o.map.world_to_clip.m[15] = 1;
-    o.map.res_s = res_s;
-    o.map.res_t = res_t;
-    o.map.depth = SWARP_DEPTH_NEG_ONE_TO_ONE;
-    return o;
-}
 
 START_TEST(bias_texel_size_uniform_equals_footprint) {
     rng_state = 5;
@@ -1455,6 +1500,7 @@ static Suite* splits_suite(void) {
     tcase_add_test(t, stabilize_levels_whole_texels_between_level_changes);
     tcase_add_test(t, stabilize_none_does_flicker);
     tcase_add_test(t, stabilize_sphere_size_constant_and_levels_quantised);
+    tcase_add_test(t, stabilize_snap_matrix_whole_texels);
     tcase_add_test(t, stabilize_bad_inputs);
     suite_add_tcase(s, t);
     t = tcase_create("bias");
