@@ -233,6 +233,12 @@ SWARP_API swarp_status swarp_cascade_error_curve(const swarp_error_config* cfg,
 
 /* ---- the one call -------------------------------------------------------- */
 
+_Static_assert(sizeof(swarp_split_options) == 8 + 3 * sizeof(double) + 16, "swarp_split_options size");
+_Static_assert(sizeof(swarp_cascade_options) ==
+                   sizeof(swarp_setup_options) + sizeof(swarp_split_options) +
+                       sizeof(swarp_stabilize_options) + (1 + SWARP_CASCADE_MAX_SPLITS) * sizeof(double) + 16,
+               "swarp_cascade_options size");
+
 _Static_assert(sizeof(swarp_cascade_split) ==
                    2 * sizeof(double) + 2 * sizeof(swarp_mat4) + sizeof(swarp_atlas_tile) +
                        11 * sizeof(double) + 8 + 16,
