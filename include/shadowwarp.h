@@ -1846,7 +1846,9 @@ typedef struct swarp_cascade_options {
     swarp_split_options split;         /**< scheme and count (count 1..16) */
     swarp_stabilize_options stabilize; /**< mode != NONE needs technique UNIFORM and a
                                             directional light; its depth field is
-                                            ignored (setup.depth_range is used) */
+                                            ignored (setup.depth_range is used).
+                                            SPHERE splits the camera's own near..far
+                                            (no adjustment, [RHS] §3.5) */
     double kernel_world_size;          /**< r_l of [RHS] (3.9), world units; 0 = 1 */
     double n_user[SWARP_CASCADE_MAX_SPLITS]; /**< per-split warp: n' in eye units for
                                             split i (+INFINITY = uniform); 0 = use setup */

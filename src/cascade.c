@@ -387,6 +387,12 @@ SWARP_API swarp_status swarp_cascade_setup(const swarp_camera* cam, const swarp_
         sw_depth_range_of(&H, cam->eye, cam_f, &n_adj, &f_adj);
         n_adj = sw_max(n_adj, cam->near);
         f_adj = sw_min(sw_max(f_adj, n_adj), cam->far);
+        if (smode == SWARP_STABILIZE_SPHERE) {
+            /* [RHS] §3.5: the exact solution needs constant split ranges, so
+             * no view frustum adjustment: split the camera's own [near, far] */
+            n_adj = cam->near;
+            f_adj = cam->far;
+        }
         if (!(f_adj > n_adj)) {
             /* H lies in one view plane: keep a sliver, as swarp_setup does */
             const double pad = fmax(1e-9 * n_adj, 1e-300);
@@ -404,6 +410,7 @@ SWARP_API swarp_status swarp_cascade_setup(const swarp_camera* cam, const swarp_
 
     for (uint32_t i = 0; i < K; ++i) {
         swarp_cascade_split* s = &sp[i];
+        swarp_vec3 sphere_center = sw_v3(0, 0, 0);
         s->near = res.splits[i];
         s->far = res.splits[i + 1];
         swarp_setup_options so = o.setup;
@@ -421,7 +428,14 @@ SWARP_API swarp_status swarp_cascade_setup(const swarp_camera* cam, const swarp_
             so.pseudo_near = i == 0 ? fmin(o.setup.pseudo_near * whole / len, SW_PSEUDO_MAX_FRACTION) : 0.0;
             so.pseudo_far = i + 1 == K ? fmin(o.setup.pseudo_far * whole / len, SW_PSEUDO_MAX_FRACTION) : 0.0;
         }
-        if (!single && so.technique == SWARP_TECHNIQUE_PSM) {
+        if (smode == SWARP_STABILIZE_SPHERE) {
+            /* the sphere alone decides the map: no body needed (a split
+             * beyond the scene still gets its constant-size map) */
+            npts = 0;
+            st = SWARP_OK;
+            sw_identity(&sr.matrix); /* replaced below */
+            sr.n_eye = INFINITY;
+        } else if (!single && so.technique == SWARP_TECHNIQUE_PSM) {
             /* PSM's unit-cube clipping wants B as a polyhedron: the full call */
             st = swarp_setup_range(cam, light, scene, s->near, s->far, &so, &sr, pts_buf,
                                    SWARP_BODY_MAX_POINTS, &npts);
@@ -458,6 +472,7 @@ SWARP_API swarp_status swarp_cascade_setup(const swarp_camera* cam, const swarp_
         s->n_eye = sr.n_eye;
         if (smode != SWARP_STABILIZE_NONE) {
             swarp_stabilize_report rep;
+            memset(&rep, 0, sizeof rep);
             /* one depth convention for the whole cascade: the setup's */
             swarp_stabilize_options sto = o.stabilize;
             sto.depth = o.setup.depth_range;
@@ -469,6 +484,7 @@ SWARP_API swarp_status swarp_cascade_setup(const swarp_camera* cam, const swarp_
                 if (info == SWARP_OK) info = st;
             }
             s->texel_size = fmax(rep.texel_size_x, rep.texel_size_y);
+            sphere_center = rep.sphere_center;
             s->n_eye = INFINITY;
         }
         s->tile = tiles[i];
@@ -476,7 +492,7 @@ SWARP_API swarp_status swarp_cascade_setup(const swarp_camera* cam, const swarp_
         /* kernel scale at the centroid of B_i (origin-relative when stabilised) */
         swarp_vec3 c = sw_v3(0, 0, 0);
         for (size_t k = 0; k < npts; ++k) c = sw_add(c, pts[k]);
-        c = sw_scale(c, 1.0 / (double)(npts ? npts : 1));
+        c = npts ? sw_scale(c, 1.0 / (double)npts) : sphere_center;
         if (smode != SWARP_STABILIZE_NONE) c = sw_sub(c, o.stabilize.origin);
         sw_kernel_scale(&s->matrix, c, r_l, res.atlas.l_sc, s->kernel_scale);
         {

@@ -1366,9 +1366,11 @@ END_TEST
 START_TEST(cascade_stabilized_whole_texels) {
     rng_state = 55;
     scene_cfg c = random_scene(0);
-    /* a box the whole view frustum stays inside: adjusted near/far constant */
-    c.box.min = v3(-500, -400, -500);
-    c.box.max = v3(500, 400, 500);
+    /* a flat box the view frustum leaves through the ground: the adjusted
+     * far changes every frame, the exact solution must not care (it splits
+     * the camera's own range, [RHS] §3.5) */
+    c.box.min = v3(-500, -5, -500);
+    c.box.max = v3(500, 40, 500);
     c.cam = make_camera(v3(0, 10, 0), v3(0.2, -0.3, -1), 1.0, 1.5, 0.5, 300);
     swarp_cascade_options o;
     memset(&o, 0, sizeof o);
@@ -1390,12 +1392,15 @@ START_TEST(cascade_stabilized_whole_texels) {
         size_t k;
         swarp_status st = swarp_cascade_setup(&c.cam, &c.light, &c.box, &o, &r, sp, 4, &k);
         ck_assert_msg(!swarp_status_is_error(st), "%s", swarp_status_name(st));
+        ck_assert(r.view_near == c.cam.near && r.view_far == c.cam.far); /* not adjusted */
         for (int i = 0; i < 4; ++i) {
             if (it == 0) { /* B_i inside the map, depth in [0, 1] */
                 swarp_vec3 B[SWARP_BODY_MAX_POINTS];
                 size_t nb;
-                ck_assert_int_eq(swarp_body_points(&c.cam, sp[i].near, sp[i].far, &c.light, &c.box, B,
-                                                   SWARP_BODY_MAX_POINTS, &nb), SWARP_OK);
+                swarp_status bs = swarp_body_points(&c.cam, sp[i].near, sp[i].far, &c.light, &c.box, B,
+                                                    SWARP_BODY_MAX_POINTS, &nb);
+                ck_assert(bs == SWARP_OK || bs == SWARP_ERR_BODY_EMPTY);
+                if (bs != SWARP_OK) nb = 0;
                 for (size_t j = 0; j < nb; ++j) {
                     double h[4];
                     xform(&sp[i].matrix, vsub(B[j], o.stabilize.origin), h);
