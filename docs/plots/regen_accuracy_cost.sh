@@ -11,8 +11,8 @@ SWTOOL="$BUILD/examples/swtool/swtool"
 [ -x "$SWTOOL" ] || { echo "regen_accuracy_cost: build swtool first ($SWTOOL)" >&2; exit 1; }
 mkdir -p docs/img docs/plots
 # The demo's measured columns: its `measure` camera (horizontal view, near 1,
-# far 600) at 1024x768, light at gamma to the view, for the techniques the
-# demo renders on main.  One line per run:
+# far 600) at 1024x768, light at gamma to the view, uniform and PSSM.
+# Set SWARP_NO_DEMO=1 to reuse the last docs/plots/demo-measured.dat.  One line per run:
 #   gamma map technique K setup_us passes texels shadow_ms main_ms meas_mz pred_mz
 DEMO="$BUILD/examples/demo/demo"
 DEMO_DAT=docs/plots/demo-measured.dat
@@ -36,8 +36,9 @@ if [ -x "$DEMO" ] && [ "${SWARP_NO_DEMO:-0}" != "1" ]; then
         done
     done
     rm -rf "$TMP"
-    DEMO_ARG="--demo-data $DEMO_DAT"
 fi
+# SWARP_NO_DEMO=1 (or no demo binary) keeps the last demo-measured.dat
+[ -f "$DEMO_DAT" ] && DEMO_ARG="--demo-data $DEMO_DAT"
 "$SWTOOL" bench-report --reps "$REPS" --out-dir docs $DEMO_ARG
 gnuplot <<'GP'
 set terminal pngcairo size 1500,1200 font "DejaVu Sans,10"
