@@ -2174,10 +2174,17 @@ SWARP_API swarp_status swarp_plan_evaluate(const swarp_scene_needs* needs,
 SWARP_API swarp_status swarp_plan_explain(const struct swarp_plan* plan, char* out, size_t capacity,
                                           size_t* out_count);
 
-/** @brief Short names for the plan's enums ("lispsm-nopt", "pssm-log",
- *  "evsm", ...); never NULL ("?" for unknown values). */
+/** @brief Short name of a warp kind ("uniform", "lispsm-nopt", "psm", ...).
+ *  @param w the warp kind
+ *  @return a static string, never NULL ("?" for values not in the enum). */
 SWARP_API const char* swarp_plan_warp_name(swarp_plan_warp w);
+/** @brief Short name of a split scheme ("none", "pssm-practical", "pssm-log").
+ *  @param s the scheme
+ *  @return a static string, never NULL ("?" for values not in the enum). */
 SWARP_API const char* swarp_plan_scheme_name(swarp_plan_scheme s);
+/** @brief Short name of a filter kind ("none", "pcf", "vsm", "msm", "evsm", "lvsm").
+ *  @param f the filter kind
+ *  @return a static string, never NULL ("?" for values not in the enum). */
 SWARP_API const char* swarp_plan_filter_name(swarp_plan_filter f);
 /* <<< api: plan */
 
