@@ -15,5 +15,9 @@ for n in sheet_techniques uniform_sampling lispsm_sampling pssm4_sampling psm_sa
     cp "$T/$n.png" "docs/img/demo_$n.png"
 done
 cp "$T/measure/lispsm_error.png" docs/img/demo_measure_lispsm_error.png
+"$B/examples/demo/demo" --mindepth --out "$T/md" --size 960x540 >/dev/null
+for k in near adjusted pseudo; do
+    cp "$T/md/mindepth_${k}_sampling.png" "docs/img/demo_mindepth_${k}_sampling.png"
+done
 rm -rf "$T"
 ls docs/img/demo_*.png
