@@ -27,7 +27,9 @@
  *                 fixed forever.  A successful call never writes NaN; the only
  *                 non-finite value ever written is +INFINITY for a warp
  *                 parameter n' together with SWARP_INFO_WARP_UNIFORM (n' = inf
- *                 IS the uniform shadow map; the error model accepts it).
+ *                 IS the uniform shadow map; the error model accepts it), and
+ *                 +INFINITY as the minimum of an empty depth buffer with
+ *                 SWARP_INFO_MINDEPTH_EMPTY (extras).
  * Memory, threads No function allocates, keeps global state, does I/O or
  *                 reads the locale.  Everything is reentrant and thread-safe.
  *                 Output arrays follow (T* out, size_t capacity, size_t*
@@ -722,7 +724,7 @@ SWARP_API swarp_status swarp_body_adjusted_range(const swarp_camera* cam, const 
  * smoothly through the right vector when the light passes parallel or
  * antiparallel to the view in the plane of v and the camera's up vector.
  * (Every continuous tangent field on the sphere has a zero: this one's lies
- * off that plane, on the v-r great circle, at sin γ ≈ 0.09; see
+ * off that plane, on the v-r great circle, at γ ≈ 5.6° (sin γ ≈ 0.097); see
  * docs/geometry.md.)  SWARP_INFO_LIGHT_PARALLEL reports that the blend is
  * active.
  */
