@@ -57,6 +57,7 @@
     X(PFNGLUNIFORM2FVPROC, glUniform2fv)                               \
     X(PFNGLUNIFORM2IPROC, glUniform2i)                                 \
     X(PFNGLUNIFORM3FPROC, glUniform3f)                                 \
+    X(PFNGLUNIFORM3FVPROC, glUniform3fv)                               \
     X(PFNGLUNIFORM4FVPROC, glUniform4fv)                               \
     X(PFNGLUNIFORMMATRIX4FVPROC, glUniformMatrix4fv)                   \
     X(PFNGLGENTEXTURESPROC, glGenTextures)                             \
@@ -136,6 +137,7 @@ DEMO_GL_FUNCS(DEMO_GL_DECLARE_)
 #define glUniform2fv dgl_glUniform2fv
 #define glUniform2i dgl_glUniform2i
 #define glUniform3f dgl_glUniform3f
+#define glUniform3fv dgl_glUniform3fv
 #define glUniform4fv dgl_glUniform4fv
 #define glUniformMatrix4fv dgl_glUniformMatrix4fv
 #define glGenTextures dgl_glGenTextures

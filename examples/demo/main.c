@@ -890,13 +890,13 @@ static int test_iou(const options* o, demo_ctx* ctx) {
         pts[i][1] = z + t * ld.z;
     }
     int nh = hull2(pts, 8, hull);
-    const demo_technique techs[7] = {DEMO_TECH_UNIFORM, DEMO_TECH_LISPSM, DEMO_TECH_PSSM,
+    const demo_technique techs[8] = {DEMO_TECH_UNIFORM, DEMO_TECH_LISPSM, DEMO_TECH_PSSM,
                                      DEMO_TECH_PSM, DEMO_TECH_PSSM_LISPSM, DEMO_TECH_PSSM_STABLE,
-                                     DEMO_TECH_GMNPR};
+                                     DEMO_TECH_GMNPR, DEMO_TECH_PSM_CUBE};
     int fails = 0, ran = 0;
     float* tex = malloc(sizeof(float) * 4 * (size_t)v.w * v.h);
     float* pos = malloc(sizeof(float) * 4 * (size_t)v.w * v.h);
-    for (int k = 0; k < 7 && tex && pos; ++k) {
+    for (int k = 0; k < 8 && tex && pos; ++k) {
         if (!demo_technique_available(techs[k])) {
             printf("iou %-12s not in this build\n", demo_technique_name(techs[k]));
             ++fails;
@@ -1031,11 +1031,12 @@ static int test_select(const options* o) {
         demo_technique t;
         demo_select sel;
         const char* camera;
-    } cases[3] = {{DEMO_TECH_PSSM, DEMO_SELECT_DEPTH, "default"},
+    } cases[4] = {{DEMO_TECH_PSSM, DEMO_SELECT_DEPTH, "default"},
                   {DEMO_TECH_PSSM, DEMO_SELECT_BEST, "high"},
-                  {DEMO_TECH_LIXEL, DEMO_SELECT_LIXEL, "room"}};
+                  {DEMO_TECH_LIXEL, DEMO_SELECT_LIXEL, "room"},
+                  {DEMO_TECH_PSM_CUBE, DEMO_SELECT_CUBE, "default"}};
     const double band = 0.2; /* blend band of the depth case */
-    for (int c = 0; c < 3 && tex && pos; ++c) {
+    for (int c = 0; c < 4 && tex && pos; ++c) {
         if (camera_preset(cases[c].camera, v.w, v.h, &v.cam)) return 1;
         light_from_options(o, &v.light);
         demo_view_update(&v);
@@ -1097,6 +1098,17 @@ static int test_select(const options* o) {
                 }
             } else if (sh.select == DEMO_SELECT_BEST) {
                 st = swarp_cascade_select_best(maps, (size_t)sh.count, &q, depth_i, &want, NULL);
+            } else if (sh.select == DEMO_SELECT_CUBE) {
+                /* [KOZ] Listing 14-1 on the CPU: the face of V, mapped to
+                 * the index of that face's map */
+                swarp_vec4 hv;
+                swarp_mat4_transform(&sh.cube_camera, &q, &hv);
+                swarp_vec3 V = {hv.x / hv.w, hv.y / hv.w, hv.z / hv.w};
+                uint32_t face = 99;
+                st = swarp_cube_lookup(&sh.cube_light, NULL, &V, &face, NULL, NULL);
+                want = 99;
+                for (int i = 0; i < sh.count; ++i)
+                    if (sh.cube_face[i] == face) want = (uint32_t)i;
             } else {
                 st = swarp_lixel_select(sh.light, (size_t)(sh.count - 1), &q, &want);
             }
@@ -1119,7 +1131,10 @@ static int test_select(const options* o) {
         }
         printf("select %-6s %-5s: %ld pixels, %ld differ from the library (%.3f%%), %d maps used %s\n",
                demo_technique_name(cases[c].t),
-               cases[c].sel == DEMO_SELECT_DEPTH ? "depth" : cases[c].sel == DEMO_SELECT_BEST ? "best" : "lixel",
+               cases[c].sel == DEMO_SELECT_DEPTH  ? "depth"
+               : cases[c].sel == DEMO_SELECT_BEST ? "best"
+               : cases[c].sel == DEMO_SELECT_CUBE ? "cube"
+                                                  : "lixel",
                n, diff, 100 * frac, used, ok ? "ok" : "FAIL");
         fails += !ok;
     }

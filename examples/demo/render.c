@@ -118,6 +118,10 @@ static const char* const main_fs =
     "uniform int u_count, u_mode, u_filter, u_select;\n"
     "uniform float u_res, u_blend, u_grid, u_offset;\n"
     "uniform vec3 u_light_dir;\n"
+    "uniform mat4 u_cube_cam;\n"
+    "uniform vec3 u_cube_P;\n"
+    "uniform vec3 u_cube_N[6];\n"
+    "uniform float u_cube_d[6];\n"
     "int select_depth(float z) {\n"
     "  for (int i = 0; i < u_count - 1; ++i) if (z < u_split[i + 1]) return i;\n"
     "  return u_count - 1;\n"
@@ -140,7 +144,20 @@ static const char* const main_fs =
     "  vec4 qt = u_light_inv[i] * vec4(ndc.x, ndc.y + 2.0 / r.y, ndc.z, 1.0);\n"
     "  return max(length(qs.xyz / qs.w - p), length(qt.xyz / qt.w - p));\n"
     "}\n"
+    /* [KOZ] Listing 14-1 (swarp_cube_lookup): u = V - P in post-projective
+     * space, the face with the largest (u . N_i) / d_i */
+    "int select_cube(vec3 p) {\n"
+    "  vec4 h = u_cube_cam * vec4(p, 1.0);\n"
+    "  vec3 u = h.xyz / h.w - u_cube_P;\n"
+    "  int best = 0; float a = -1e30;\n"
+    "  for (int i = 0; i < u_count; ++i) {\n"
+    "    float ai = dot(u, u_cube_N[i]) / u_cube_d[i];\n"
+    "    if (ai > a) { a = ai; best = i; }\n"
+    "  }\n"
+    "  return best;\n"
+    "}\n"
     "int select_map(vec3 p, float z) {\n"
+    "  if (u_select == 3) return select_cube(p);\n"
     "  if (u_select == 2) {\n"
     "    for (int i = 0; i < u_count - 1; ++i) if (covers(i, p)) return i;\n"
     "    return u_count - 1;\n"
@@ -490,6 +507,8 @@ int demo_render_main(demo_renderer* r, const demo_shadow* sh, const demo_main_pa
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glDisable(GL_CULL_FACE);
+    /* a light view shows what the shadow pass saw: pancaked casters too */
+    if (p->mode == DEMO_MODE_UNSHADOWED && sh->depth_clamp) glEnable(GL_DEPTH_CLAMP);
     GLuint pr = r->prog_main;
     glUseProgram(pr);
     glBindVertexArray(r->vao);
@@ -513,6 +532,23 @@ int demo_render_main(demo_renderer* r, const demo_shadow* sh, const demo_main_pa
     glUniform2fv(glGetUniformLocation(pr, "u_uvscale"), sh->count, uvs);
     glUniform1i(glGetUniformLocation(pr, "u_select"), (int)sh->select);
     glUniform1f(glGetUniformLocation(pr, "u_offset"), p->normal_offset);
+    if (sh->select == DEMO_SELECT_CUBE) {
+        float cam[16], P[3], N[18], d[6];
+        to_float(&sh->cube_camera, cam);
+        P[0] = (float)(sh->cube_light.x / sh->cube_light.w);
+        P[1] = (float)(sh->cube_light.y / sh->cube_light.w);
+        P[2] = (float)(sh->cube_light.z / sh->cube_light.w);
+        for (int i = 0; i < sh->count && i < 6; ++i) {
+            N[3 * i] = (float)sh->cube_normal[i].x;
+            N[3 * i + 1] = (float)sh->cube_normal[i].y;
+            N[3 * i + 2] = (float)sh->cube_normal[i].z;
+            d[i] = (float)sh->cube_distance[i];
+        }
+        glUniformMatrix4fv(glGetUniformLocation(pr, "u_cube_cam"), 1, GL_FALSE, cam);
+        glUniform3f(glGetUniformLocation(pr, "u_cube_P"), P[0], P[1], P[2]);
+        glUniform3fv(glGetUniformLocation(pr, "u_cube_N"), sh->count, N);
+        glUniform1fv(glGetUniformLocation(pr, "u_cube_d"), sh->count, d);
+    }
     glUniform1fv(glGetUniformLocation(pr, "u_split"), sh->count + 1, split);
     glUniform1i(glGetUniformLocation(pr, "u_count"), sh->count);
     glUniform1i(glGetUniformLocation(pr, "u_mode"), (int)p->mode);
@@ -533,6 +569,7 @@ int demo_render_main(demo_renderer* r, const demo_shadow* sh, const demo_main_pa
     glUniform1f(glGetUniformLocation(pr, "u_evsm_c"), r->evsm_c);
     glDrawArrays(GL_TRIANGLES, 0, r->vertex_count);
     glFinish();
+    glDisable(GL_DEPTH_CLAMP);
     if (ms_out) *ms_out = demo_now_ms() - t0;
     return demo_gl_check(p->mode == DEMO_MODE_UNSHADOWED ? "light view pass" : "main pass");
 }

@@ -18,7 +18,7 @@
 #include "shadowwarp_cglm.h"
 
 static const char* const tech_names[DEMO_TECH_COUNT] = {
-    "uniform", "lispsm", "repar", "gmnpr", "pseudo", "psm",
+    "uniform", "lispsm", "repar", "gmnpr", "pseudo", "psm", "psm-cube",
     "pssm",    "pssm-lispsm", "pssm-stable", "lixel"};
 
 int demo_technique_is_split(demo_technique t) {
@@ -265,6 +265,54 @@ int demo_shadow_setup(const swarp_camera* cam, const swarp_light* light,
         sh.status = st != SWARP_OK ? st : sf;
         sh.source = n == 2 ? "library (swarp_lixel_* + uniform fallback)"
                            : "library (swarp_lixel_*: a plane failed; + uniform fallback)";
+        *out = sh;
+        return 0;
+    }
+    if (t == DEMO_TECH_PSM_CUBE) {
+        /* [KOZ] §14.2.2: the adjusted view range from the setup, the
+         * camera's post-projective space over it, the light there, and one
+         * map per back-facing face of the unit cube */
+        double nprime;
+        if (conventional_map(cam, light, scene, req, DEMO_TECH_UNIFORM, 0, 0, 0, &sh.light[0],
+                             &nprime, &sh.near, &sh.far, sh.body, &sh.body_count, &st))
+            return -1;
+        swarp_camera c2 = *cam;
+        c2.near = sh.near;
+        c2.far = sh.far;
+        viewer_matrix(&c2, &sh.cube_camera);
+        swarp_vec3 lp = light->type == SWARP_LIGHT_POINT ? light->position : light->direction;
+        swarp_vec4 hl;
+        swarp_mat4_transform(&sh.cube_camera, &lp, &hl);
+        if (light->type != SWARP_LIGHT_POINT) {
+            /* (-d, 0): C (-d, 0) = -(C (d, 1) - C (0, 1)) */
+            swarp_vec3 zero = {0, 0, 0};
+            swarp_vec4 h0;
+            swarp_mat4_transform(&sh.cube_camera, &zero, &h0);
+            hl = (swarp_vec4){-(hl.x - h0.x), -(hl.y - h0.y), -(hl.z - h0.z), -(hl.w - h0.w)};
+        }
+        sh.cube_light = hl;
+        swarp_cube_face faces[SWARP_CUBE_MAX_FACES];
+        size_t nf = 0;
+        swarp_status sc = swarp_cube_faces(&hl, NULL, faces, SWARP_CUBE_MAX_FACES, &nf);
+        if (swarp_status_is_error(sc)) {
+            fprintf(stderr, "demo: swarp_cube_faces: %s\n", swarp_status_string(sc));
+            return -1;
+        }
+        for (size_t i = 0; i < nf; ++i) {
+            swarp_mat4_mul(&faces[i].view_proj, &sh.cube_camera, &sh.light[i]);
+            sh.cube_normal[i] = faces[i].normal;
+            sh.cube_distance[i] = faces[i].distance;
+            sh.cube_face[i] = faces[i].face;
+            sh.n_prime[i] = NAN;
+        }
+        sh.count = (int)nf;
+        sh.split[0] = sh.near;
+        sh.split[1] = sh.far;
+        sh.select = DEMO_SELECT_CUBE;
+        sh.depth_clamp = 1;
+        sh.model_applies = 0;
+        sh.status = sc != SWARP_OK ? sc : st;
+        sh.source = "library (swarp_setup range + swarp_cube_faces)";
         *out = sh;
         return 0;
     }
