@@ -53,7 +53,8 @@ static void usage(void) {
         "  --splits K              maps for the pssm techniques (1..16, default 4)\n"
         "  --scheme S              practical[:LAMBDA] | uniform | log | pseudo:NP,FP[,LAMBDA]\n"
         "                          (default practical:0.5; NP, FP eye distances, [RHS] (4.1))\n"
-        "  --filter F              none | pcf2 | pcf3 | pcf5 | poisson | vsm | evsm (default pcf3)\n"
+        "  --filter F              none | pcf2 | pcf3 | pcf5 | poisson | vsm | evsm | projblur\n"
+        "                          (default pcf3; projblur: [KOZ] 14.3.2 on the ground)\n"
         "  --light-angle E[,A]     sun elevation E and azimuth A in degrees (default 35,115)\n"
         "  --light-dir X,Y,Z       direction the light travels (instead of --light-angle)\n"
         "  --camera P|FILE         default | measure | street | high | room, or a path file of\n"
@@ -132,7 +133,7 @@ static int parse_options(int argc, char** argv, options* o) {
             NEED();
             int k = demo_filter_parse(val);
             if (k < 0) {
-                fprintf(stderr, "demo: unknown filter %s (none pcf2 pcf3 pcf5 poisson vsm evsm)\n", val);
+                fprintf(stderr, "demo: unknown filter %s (none pcf2 pcf3 pcf5 poisson vsm evsm projblur)\n", val);
                 return -1;
             }
             o->filter = (demo_filter)k;

@@ -16,7 +16,7 @@ double demo_now_ms(void) {
 }
 
 static const char* const filter_names[DEMO_FILTER_COUNT] = {"none", "pcf2", "pcf3", "pcf5",
-                                                           "poisson", "vsm", "evsm"};
+                                                           "poisson", "vsm", "evsm", "projblur"};
 
 const char* demo_filter_name(demo_filter f) {
     return (unsigned)f < DEMO_FILTER_COUNT ? filter_names[f] : "?";
@@ -70,6 +70,47 @@ static const char* const clone_gs =
     "    EmitVertex();\n"
     "  }\n"
     "  EndPrimitive();\n"
+    "}\n";
+
+/* [KOZ] §14.3.2 projective blur: the colour part of the shadow map is 1
+ * where the light sees the receiver (the ground) and 0 where it sees a
+ * caster; blurred, it is projected onto the ground as a soft shadow. */
+static const char* const receiver_vs =
+    "layout(location = 0) in vec3 a_p;\n"
+    "layout(location = 1) in vec3 a_n;\n"
+    "uniform mat4 u_m;\n"
+    "out float v_ground;\n"
+    "void main() {\n"
+    "  v_ground = (abs(a_p.y) < 1e-3 && a_n.y > 0.99) ? 1.0 : 0.0;\n"
+    "  gl_Position = u_m * vec4(a_p, 1.0);\n"
+    "}\n";
+static const char* const receiver_fs =
+    "in float v_ground;\n"
+    "layout(location = 0) out vec4 o_c;\n"
+    "void main() { o_c = vec4(v_ground > 0.5 ? 1.0 : 0.0); }\n";
+/* one separable Gaussian pass (sigma u_sigma texels, radius 3 sigma) */
+static const char* const blur_vs =
+    "void main() {\n"
+    "  vec2 p = vec2((gl_VertexID & 1) * 4 - 1, (gl_VertexID & 2) * 2 - 1);\n"
+    "  gl_Position = vec4(p, 0.0, 1.0);\n"
+    "}\n";
+static const char* const blur_fs =
+    "uniform sampler2DArray u_src;\n"
+    "uniform int u_layer;\n"
+    "uniform ivec2 u_dir;\n"
+    "uniform float u_sigma;\n"
+    "layout(location = 0) out vec4 o_c;\n"
+    "void main() {\n"
+    "  ivec2 c = ivec2(gl_FragCoord.xy);\n"
+    "  ivec2 m = textureSize(u_src, 0).xy - 1;\n"
+    "  int rad = int(ceil(3.0 * u_sigma));\n"
+    "  float sum = 0.0, wsum = 0.0;\n"
+    "  for (int k = -rad; k <= rad; ++k) {\n"
+    "    float w = exp(-0.5 * float(k * k) / (u_sigma * u_sigma));\n"
+    "    sum += w * texelFetch(u_src, ivec3(clamp(c + k * u_dir, ivec2(0), m), u_layer), 0).r;\n"
+    "    wsum += w;\n"
+    "  }\n"
+    "  o_c = vec4(sum / wsum);\n"
     "}\n";
 
 static const char* const depth_vs =
@@ -196,6 +237,7 @@ static const char* const main_fs =
     "  float vn = vsm_chebyshev(m.zw, wn, min_variance * kn * kn);\n"
     "  return min(vp, vn);\n"
     "}\n"
+    "bool v_ground = false;\n"
     "float lookup(int i, vec3 sc) {\n"
     "  if (any(lessThan(sc, vec3(0.0))) || sc.x > u_uvscale[i].x || sc.y > u_uvscale[i].y ||\n"
     "      sc.z > 1.0) return 1.0;\n"
@@ -210,6 +252,14 @@ static const char* const main_fs =
     "    for (int k = 0; k < 16; ++k)\n"
     "      s += texture(u_shadow, vec4(sc.xy + 2.0 * u_poisson[k] / u_res, float(i), ref));\n"
     "    return s / 16.0;\n"
+    "  }\n"
+    "  if (u_filter == 7) {\n"
+    /* projective blur on the ground; ordinary 3x3 PCF on everything else */
+    "    if (v_ground) return texture(u_moments, vec3(sc.xy, float(i))).r;\n"
+    "    float s = 0.0;\n"
+    "    for (int y = -1; y <= 1; ++y) for (int x = -1; x <= 1; ++x)\n"
+    "      s += texture(u_shadow, vec4(sc.xy + vec2(x, y) / u_res, float(i), ref));\n"
+    "    return s / 9.0;\n"
     "  }\n"
     "  if (u_filter >= 5) {\n"
     /* filtering the moments over the same 3x3 bilinear footprint as pcf3 */
@@ -254,6 +304,7 @@ static const char* const main_fs =
     "void main() {\n"
     "  vec3 n = normalize(v_n);\n"
     "  if (!gl_FrontFacing) n = -n;\n"
+    "  v_ground = abs(v_p.y) < 1e-3 && n.y > 0.99;\n"
     "  vec3 to_light = -normalize(u_light_dir);\n"
     "  float ndl = max(dot(n, to_light), 0.0);\n"
     "  int i = select_map(v_p, v_depth);\n"
@@ -284,6 +335,20 @@ static const char* const main_fs =
     "  o_pos = vec4(v_p, lit);\n"
     "}\n";
 
+/* The RGBA32F arrays (moments, projective-blur colour) are big (16 bytes a
+ * texel): made on first use only. */
+static GLuint float_array(int res, int layers) {
+    GLuint t;
+    glGenTextures(1, &t);
+    glBindTexture(GL_TEXTURE_2D_ARRAY, t);
+    glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, GL_RGBA32F, res, res, layers, 0, GL_RGBA, GL_FLOAT, NULL);
+    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    return t;
+}
+
 int demo_render_init(demo_renderer* r, const demo_scene* s, int w, int h, int map_res,
                      int max_layers) {
     memset(r, 0, sizeof *r);
@@ -306,6 +371,9 @@ int demo_render_init(demo_renderer* r, const demo_scene* s, int w, int h, int ma
     r->prog_depth = demo_gl_program("depth", depth_vs, NULL);
     r->prog_moment = demo_gl_program("moments", depth_vs, moment_fs);
     r->prog_clone = demo_gl_program_gs("clone", clone_vs, clone_gs, NULL);
+    r->prog_receiver = demo_gl_program("receiver", receiver_vs, receiver_fs);
+    r->prog_blur = demo_gl_program("blur", blur_vs, blur_fs);
+    if (!r->prog_receiver || !r->prog_blur) return -1;
     if (!r->prog_clone) return -1;
     if (!r->prog_moment) return -1;
     double xy[32], dmin;
@@ -315,6 +383,7 @@ int demo_render_init(demo_renderer* r, const demo_scene* s, int w, int h, int ma
     double c;
     if (swarp_evsm_max_exponent(SWARP_TEXEL_FP32, &c) != SWARP_OK) return -1;
     r->evsm_c = (float)c;
+    r->blur_sigma = 2.0f;
     r->prog_main = demo_gl_program("main", main_vs, main_fs);
     if (!r->prog_depth || !r->prog_main) return -1;
 
@@ -329,15 +398,6 @@ int demo_render_init(demo_renderer* r, const demo_scene* s, int w, int h, int ma
     glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
     glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
     glGenFramebuffers(1, &r->shadow_fbo);
-    glGenTextures(1, &r->moment_tex);
-    glBindTexture(GL_TEXTURE_2D_ARRAY, r->moment_tex);
-    glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, GL_RGBA32F, map_res, map_res, max_layers, 0, GL_RGBA,
-                 GL_FLOAT, NULL);
-    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-
     glGenFramebuffers(1, &r->fbo);
     glBindFramebuffer(GL_FRAMEBUFFER, r->fbo);
     GLuint* rbs[4] = {&r->rb_color, &r->rb_tex, &r->rb_pos, &r->rb_depth};
@@ -364,7 +424,10 @@ void demo_render_free(demo_renderer* r) {
     if (r->prog_depth) glDeleteProgram(r->prog_depth);
     if (r->prog_moment) glDeleteProgram(r->prog_moment);
     if (r->prog_clone) glDeleteProgram(r->prog_clone);
-    glDeleteTextures(1, &r->moment_tex);
+    if (r->moment_tex) glDeleteTextures(1, &r->moment_tex);
+    if (r->blur_tex) glDeleteTextures(1, &r->blur_tex);
+    if (r->prog_receiver) glDeleteProgram(r->prog_receiver);
+    if (r->prog_blur) glDeleteProgram(r->prog_blur);
     if (r->prog_main) glDeleteProgram(r->prog_main);
     glDeleteTextures(1, &r->shadow_tex);
     glDeleteFramebuffers(1, &r->shadow_fbo);
@@ -388,14 +451,16 @@ static void to_float(const swarp_mat4* m, float out[16]) {
 int demo_render_shadow(demo_renderer* r, const demo_shadow* sh, demo_filter filter,
                        double* ms_out) {
     int errors = 0;
-    int moments = filter == DEMO_FILTER_VSM || filter == DEMO_FILTER_EVSM;
+    int blur = filter == DEMO_FILTER_PROJBLUR;
+    int moments = filter == DEMO_FILTER_VSM || filter == DEMO_FILTER_EVSM || blur;
+    if (moments && !r->moment_tex) r->moment_tex = float_array(r->map_res, r->layers);
     glBindFramebuffer(GL_FRAMEBUFFER, r->shadow_fbo);
     GLenum buf = moments ? GL_COLOR_ATTACHMENT0 : GL_NONE;
     glDrawBuffers(1, &buf);
     glReadBuffer(GL_NONE);
-    GLuint prog = moments ? r->prog_moment : r->prog_depth;
+    GLuint prog = blur ? r->prog_receiver : moments ? r->prog_moment : r->prog_depth;
     glUseProgram(prog);
-    if (moments) {
+    if (moments && !blur) {
         glUniform1i(glGetUniformLocation(prog, "u_kind"), filter == DEMO_FILTER_EVSM);
         glUniform1f(glGetUniformLocation(prog, "u_c"), r->evsm_c);
     }
@@ -407,7 +472,7 @@ int demo_render_shadow(demo_renderer* r, const demo_shadow* sh, demo_filter filt
     glDisable(GL_CULL_FACE);
     /* slope-scaled depth bias against acne for the depth compare (moment
      * maps store the unbiased depth: Chebyshev's bound needs no offset) */
-    if (!moments) {
+    if (!moments || blur) {
         glEnable(GL_POLYGON_OFFSET_FILL);
         glPolygonOffset(2.0f, 8.0f);
     }
@@ -423,8 +488,9 @@ int demo_render_shadow(demo_renderer* r, const demo_shadow* sh, demo_filter filt
                                   0, i);
         glViewport(0, 0, r->map_res, r->map_res);
         glClear(GL_DEPTH_BUFFER_BIT);
+        const float lit[4] = {1, 1, 1, 1};
         if (moments)
-            glClearBufferfv(GL_COLOR, 0, filter == DEMO_FILTER_EVSM ? far_evsm : far_vsm);
+            glClearBufferfv(GL_COLOR, 0, blur ? lit : filter == DEMO_FILTER_EVSM ? far_evsm : far_vsm);
         glViewport(0, 0, sh->viewport[i][0], sh->viewport[i][1]);
         float m[16];
         to_float(&sh->light[i], m);
@@ -439,6 +505,34 @@ int demo_render_shadow(demo_renderer* r, const demo_shadow* sh, demo_filter filt
     glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, 0, 0, 0);
     glDisable(GL_POLYGON_OFFSET_FILL);
     glDisable(GL_DEPTH_CLAMP);
+    if (blur) {
+        /* ping-pong: moment_tex -> blur_tex (x) -> moment_tex (y), per map */
+        if (!r->blur_tex) r->blur_tex = float_array(r->map_res, r->layers);
+        glDisable(GL_DEPTH_TEST);
+        glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, 0, 0, 0);
+        glUseProgram(r->prog_blur);
+        glUniform1i(glGetUniformLocation(r->prog_blur, "u_src"), 0);
+        glUniform1f(glGetUniformLocation(r->prog_blur, "u_sigma"), r->blur_sigma);
+        glActiveTexture(GL_TEXTURE0);
+        glBindVertexArray(r->vao);
+        double t0 = demo_now_ms();
+        for (int i = 0; i < sh->count && i < r->layers; ++i) {
+            glViewport(0, 0, sh->viewport[i][0], sh->viewport[i][1]);
+            glUniform1i(glGetUniformLocation(r->prog_blur, "u_layer"), i);
+            for (int pass = 0; pass < 2; ++pass) {
+                GLuint src = pass ? r->blur_tex : r->moment_tex;
+                GLuint dst = pass ? r->moment_tex : r->blur_tex;
+                glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, dst, 0, i);
+                glBindTexture(GL_TEXTURE_2D_ARRAY, src);
+                glUniform2i(glGetUniformLocation(r->prog_blur, "u_dir"), pass == 0, pass == 1);
+                glDrawArrays(GL_TRIANGLES, 0, 3);
+            }
+        }
+        glFinish();
+        r->blur_ms = demo_now_ms() - t0;
+        glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, 0, 0, 0);
+        errors += demo_gl_check("projective blur passes");
+    }
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     return errors;
 }
