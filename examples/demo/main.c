@@ -684,8 +684,10 @@ static int run_gallery(const options* o, int single, gallery_report* rep) {
             continue;
         }
         res[n].own_view = own_view;
-        printf("%-14s done: %s/%s_*.png (matrices from %s%s)\n", res[n].label, o->out,
-               res[n].label, res[n].source, own_view ? "; room camera" : "");
+        printf("%-14s done: %s/%s_*.png (matrices from %s%s%s%s)\n", res[n].label, o->out,
+               res[n].label, res[n].source, own_view ? "; room camera" : "",
+               res[n].sh.status != SWARP_OK ? "; " : "",
+               res[n].sh.status != SWARP_OK ? swarp_status_name(res[n].sh.status) : "");
         if (single) {
             printf("  timing: setup %.2f us (median of 101 calls);", res[n].setup_us);
             for (int k = 0; k < res[n].passes - 1; ++k)
@@ -874,78 +876,87 @@ static int test_iou(const options* o, demo_ctx* ctx) {
     v.cam.near = 1;
     v.cam.far = 150;
     v.light.type = SWARP_LIGHT_DIRECTIONAL;
-    v.light.direction = (swarp_vec3){0.45, -1, 0.3};
     demo_view_update(&v);
     demo_renderer r;
     if (demo_render_init(&r, &scene, v.w, v.h, o->map, DEMO_MAX_SPLITS)) return 1;
-    /* the geometric shadow: the box's corners projected along the light
-     * onto y = 0, and their convex hull */
-    double pts[8][2], hull[10][2];
-    const swarp_vec3 ld = v.light.direction;
-    for (int i = 0; i < 8; ++i) {
-        double x = (i & 1) ? caster.max.x : caster.min.x;
-        double y = (i & 2) ? caster.max.y : caster.min.y;
-        double z = (i & 4) ? caster.max.z : caster.min.z;
-        double t = -y / ld.y;
-        pts[i][0] = x + t * ld.x;
-        pts[i][1] = z + t * ld.z;
-    }
-    int nh = hull2(pts, 8, hull);
     const demo_technique techs[8] = {DEMO_TECH_UNIFORM, DEMO_TECH_LISPSM, DEMO_TECH_PSSM,
                                      DEMO_TECH_PSM, DEMO_TECH_PSSM_LISPSM, DEMO_TECH_PSSM_STABLE,
                                      DEMO_TECH_GMNPR, DEMO_TECH_PSM_CUBE};
+    /* two lights: the first lies behind the viewer as PSM sees it (the
+     * camera looks steeply down, the sun is high: SWARP_INFO_PSM_INVERSE,
+     * Kozlov's inverse projection, [KOZ] §14.2.1), the second in front */
+    const swarp_vec3 lights[2] = {{0.45, -1, 0.3}, {0.3, -1, -0.5}};
     int fails = 0, ran = 0;
     float* tex = malloc(sizeof(float) * 4 * (size_t)v.w * v.h);
     float* pos = malloc(sizeof(float) * 4 * (size_t)v.w * v.h);
-    for (int k = 0; k < 8 && tex && pos; ++k) {
-        if (!demo_technique_available(techs[k])) {
-            printf("iou %-12s not in this build\n", demo_technique_name(techs[k]));
-            ++fails;
-            continue;
+    for (int li = 0; li < 2; ++li) {
+        v.light.direction = lights[li];
+        /* the geometric shadow: the box's corners projected along the light
+         * onto y = 0, and their convex hull */
+        double pts[8][2], hull[10][2];
+        const swarp_vec3 ld = v.light.direction;
+        for (int i = 0; i < 8; ++i) {
+            double x = (i & 1) ? caster.max.x : caster.min.x;
+            double y = (i & 2) ? caster.max.y : caster.min.y;
+            double z = (i & 4) ? caster.max.z : caster.min.z;
+            double t = -y / ld.y;
+            pts[i][0] = x + t * ld.x;
+            pts[i][1] = z + t * ld.z;
         }
-        demo_shadow_request req;
-        memset(&req, 0, sizeof req);
-        req.technique = techs[k];
-        req.splits = 4;
-        req.scheme_lambda = 0.5;
-        req.map_res = o->map;
-        req.screen_w = v.w;
-        req.screen_h = v.h;
-        demo_shadow sh;
-        if (demo_shadow_setup(&v.cam, &v.light, &scene.box, &req, &sh)) {
-            ++fails;
-            continue;
+        int nh = hull2(pts, 8, hull);
+        for (int k = 0; k < 8 && tex && pos; ++k) {
+            if (!demo_technique_available(techs[k])) {
+                printf("iou %-12s not in this build\n", demo_technique_name(techs[k]));
+                ++fails;
+                continue;
+            }
+            demo_shadow_request req;
+            memset(&req, 0, sizeof req);
+            req.technique = techs[k];
+            req.splits = 4;
+            req.scheme_lambda = 0.5;
+            req.map_res = o->map;
+            req.screen_w = v.w;
+            req.screen_h = v.h;
+            demo_shadow sh;
+            if (demo_shadow_setup(&v.cam, &v.light, &scene.box, &req, &sh)) {
+                ++fails;
+                continue;
+            }
+            int errs = demo_render_shadow(&r, &sh, DEMO_FILTER_PCF2, NULL);
+            demo_main_params p;
+            memset(&p, 0, sizeof p);
+            memcpy(p.view, v.view, sizeof p.view);
+            memcpy(p.proj, v.proj, sizeof p.proj);
+            p.light_dir[0] = (float)ld.x;
+            p.light_dir[1] = (float)ld.y;
+            p.light_dir[2] = (float)ld.z;
+            p.filter = DEMO_FILTER_PCF2;
+            p.mode = DEMO_MODE_SHADED;
+            p.vw = v.w;
+            p.vh = v.h;
+            errs += demo_render_main(&r, &sh, &p, NULL);
+            demo_render_read_aux(&r, tex, pos);
+            long inter = 0, uni = 0, ground = 0;
+            for (size_t i = 0; i < (size_t)v.w * v.h; ++i) {
+                const float* q = pos + 4 * i;
+                if (q[3] < 0 || fabsf(q[1]) > 1e-3f) continue; /* not ground */
+                ++ground;
+                int rendered = q[3] < 0.5f;
+                int geometric = inside_hull(hull, nh, q[0], q[2]);
+                inter += rendered && geometric;
+                uni += rendered || geometric;
+            }
+            double iou = uni ? (double)inter / uni : 0;
+            int ok = iou >= 0.95 && errs == 0 && uni > 200;
+            printf("iou %-12s light %s: %.4f (%ld shadow pixels of %ld ground pixels, gl errors "
+                   "%d%s%s) %s\n",
+                   demo_technique_name(techs[k]), li ? "2" : "1", iou, uni,
+                   ground, errs, sh.status != SWARP_OK ? ", " : "",
+                   sh.status != SWARP_OK ? swarp_status_name(sh.status) : "", ok ? "ok" : "FAIL");
+            fails += !ok;
+            ++ran;
         }
-        int errs = demo_render_shadow(&r, &sh, DEMO_FILTER_PCF2, NULL);
-        demo_main_params p;
-        memset(&p, 0, sizeof p);
-        memcpy(p.view, v.view, sizeof p.view);
-        memcpy(p.proj, v.proj, sizeof p.proj);
-        p.light_dir[0] = (float)ld.x;
-        p.light_dir[1] = (float)ld.y;
-        p.light_dir[2] = (float)ld.z;
-        p.filter = DEMO_FILTER_PCF2;
-        p.mode = DEMO_MODE_SHADED;
-        p.vw = v.w;
-        p.vh = v.h;
-        errs += demo_render_main(&r, &sh, &p, NULL);
-        demo_render_read_aux(&r, tex, pos);
-        long inter = 0, uni = 0, ground = 0;
-        for (size_t i = 0; i < (size_t)v.w * v.h; ++i) {
-            const float* q = pos + 4 * i;
-            if (q[3] < 0 || fabsf(q[1]) > 1e-3f) continue; /* not ground */
-            ++ground;
-            int rendered = q[3] < 0.5f;
-            int geometric = inside_hull(hull, nh, q[0], q[2]);
-            inter += rendered && geometric;
-            uni += rendered || geometric;
-        }
-        double iou = uni ? (double)inter / uni : 0;
-        int ok = iou >= 0.95 && errs == 0 && uni > 200;
-        printf("iou %-12s %.4f (%ld shadow pixels of %ld ground pixels, gl errors %d) %s\n",
-               demo_technique_name(techs[k]), iou, uni, ground, errs, ok ? "ok" : "FAIL");
-        fails += !ok;
-        ++ran;
     }
     free(tex);
     free(pos);
