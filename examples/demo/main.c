@@ -884,8 +884,9 @@ static int test_iou(const options* o, demo_ctx* ctx) {
                                      DEMO_TECH_GMNPR, DEMO_TECH_PSM_CUBE};
     /* two lights: the first lies behind the viewer as PSM sees it (the
      * camera looks steeply down, the sun is high: SWARP_INFO_PSM_INVERSE,
-     * Kozlov's inverse projection, [KOZ] §14.2.1), the second in front */
-    const swarp_vec3 lights[2] = {{0.45, -1, 0.3}, {0.3, -1, -0.5}};
+     * Kozlov's inverse projection, [KOZ] §14.2.1), the second, low and
+     * ahead, in front of it (the ordinary PSM) */
+    const swarp_vec3 lights[2] = {{0.45, -1, 0.3}, {0.2, -0.5, 1}};
     int fails = 0, ran = 0;
     float* tex = malloc(sizeof(float) * 4 * (size_t)v.w * v.h);
     float* pos = malloc(sizeof(float) * 4 * (size_t)v.w * v.h);
