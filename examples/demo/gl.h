@@ -169,6 +169,10 @@ int demo_gl_load(void);
 /** Compiles and links a program from vertex + fragment source (a common
  *  "#version 450 core" header is prepended).  0 and a message on failure. */
 GLuint demo_gl_program(const char* name, const char* vs, const char* fs);
+/** A program whose fragment shader is the concatenation of fs_parts (after
+ *  the common #version line): library GLSL files first, then the demo's. */
+GLuint demo_gl_program_parts(const char* name, const char* vs, const char* const* fs_parts,
+                             int fs_count);
 /** The same with a geometry shader between them (gs may be NULL). */
 GLuint demo_gl_program_gs(const char* name, const char* vs, const char* gs, const char* fs);
 

@@ -9,6 +9,9 @@
 #include <math.h>
 #include <time.h>
 
+#include "filtering_glsl.h"
+#include "splits_glsl.h"
+
 double demo_now_ms(void) {
     struct timespec ts;
     clock_gettime(CLOCK_MONOTONIC, &ts);
@@ -134,15 +137,20 @@ static const char* const main_vs =
     "  gl_Position = u_proj * vs;\n"
     "}\n";
 
-/* Map selection, mirroring the library's CPU references:
- *   u_select 0: by eye depth, swarp_cascade_select_depth [RHS] §3.3.3 (a
- *     depth on a border belongs to the split that starts there), with the
- *     blend band of swarp_cascade_blend (weight w of split i, 1 - w of i+1);
- *   u_select 1: best resolution, swarp_cascade_select_best (ZZB09): among
- *     the maps covering p the one with the smallest world texel L_texel
- *     (the texel_world twin of docs/splits.md), else the depth choice;
+/* The main pass.  The fragment shader is docs/glsl/splits.glsl and
+ * docs/glsl/filtering.glsl (the library's GLSL twins, tested against the C
+ * functions by the splits and filter stages) followed by this source.
+ * Map selection, mirroring the library's CPU references:
+ *   u_select 0: by eye depth, swarp_select_split_depth (splits.glsl, twin of
+ *     swarp_cascade_select_depth [RHS] §3.3.3), with swarp_cascade_blend's
+ *     band (weight w of split i, 1 - w of i + 1);
+ *   u_select 1: best resolution, swarp_select_split_best (twin of
+ *     swarp_cascade_select_best, ZZB09), else the depth choice;
  *   u_select 2: swarp_lixel_select: the first map whose clip volume holds
- *     p in x and y (w > 0), else the last map (the fallback). */
+ *     p in x and y (w > 0), else the last map (the fallback);
+ *   u_select 3: the cube face of [KOZ] Listing 14-1 (swarp_cube_lookup).
+ * Bias: swarp_bias_normal_offset (splits.glsl).  VSM / EVSM: vsm_chebyshev,
+ * vsm_reduce_bleeding, evsm_visibility (filtering.glsl). */
 static const char* const main_fs =
     "in vec3 v_p; in vec3 v_n; in vec3 v_c; in float v_depth;\n"
     "layout(location = 0) out vec4 o_color;\n"
@@ -163,27 +171,10 @@ static const char* const main_fs =
     "uniform vec3 u_cube_P;\n"
     "uniform vec3 u_cube_N[6];\n"
     "uniform float u_cube_d[6];\n"
-    "int select_depth(float z) {\n"
-    "  for (int i = 0; i < u_count - 1; ++i) if (z < u_split[i + 1]) return i;\n"
-    "  return u_count - 1;\n"
-    "}\n"
-    "float blend_weight(int i, float z) {\n"
-    "  if (i >= u_count - 1 || u_blend <= 0.0) return 1.0;\n"
-    "  float band = u_blend * (u_split[i + 1] - u_split[i]);\n"
-    "  return clamp((u_split[i + 1] - z) / band, 0.0, 1.0);\n"
-    "}\n"
+    /* swarp_lixel_select: x and y only, w > 0 */
     "bool covers(int i, vec3 p) {\n"
     "  vec4 h = u_light[i] * vec4(p, 1.0);\n"
     "  return h.w > 0.0 && abs(h.x) <= h.w && abs(h.y) <= h.w;\n"
-    "}\n"
-    /* [KOZ] §14.2.3 texel_world, the GLSL twin of swarp_bias_texel_size */
-    "float texel_world(int i, vec3 p) {\n"
-    "  vec4 h = u_light[i] * vec4(p, 1.0);\n"
-    "  vec3 ndc = h.xyz / h.w;\n"
-    "  vec2 r = u_res * u_uvscale[i];\n"
-    "  vec4 qs = u_light_inv[i] * vec4(ndc.x + 2.0 / r.x, ndc.y, ndc.z, 1.0);\n"
-    "  vec4 qt = u_light_inv[i] * vec4(ndc.x, ndc.y + 2.0 / r.y, ndc.z, 1.0);\n"
-    "  return max(length(qs.xyz / qs.w - p), length(qt.xyz / qt.w - p));\n"
     "}\n"
     /* [KOZ] Listing 14-1 (swarp_cube_lookup): u = V - P in post-projective
      * space, the face with the largest (u . N_i) / d_i */
@@ -203,39 +194,14 @@ static const char* const main_fs =
     "    for (int i = 0; i < u_count - 1; ++i) if (covers(i, p)) return i;\n"
     "    return u_count - 1;\n"
     "  }\n"
-    "  int d = select_depth(z);\n"
+    "  int d = swarp_select_split_depth(u_split, u_count, z);\n"
     "  if (u_select == 0) return d;\n"
-    "  int best = -1; float lt = 0.0;\n"
-    "  for (int i = 0; i < u_count; ++i) {\n"
-    "    vec4 h = u_light[i] * vec4(p, 1.0);\n"
-    "    if (!(h.w > 0.0 && abs(h.x) <= h.w && abs(h.y) <= h.w && abs(h.z) <= h.w)) continue;\n"
-    "    float l = texel_world(i, p);\n"
-    "    if (best < 0 || l < lt) { best = i; lt = l; }\n"
-    "  }\n"
-    "  return best < 0 ? d : best;\n"
+    "  return swarp_select_split_best(u_light, u_light_inv, u_count, vec2(u_res), false, p, d);\n"
     "}\n"
     "vec3 map_coord(int i, vec3 p) {\n"
     "  vec4 c = u_light[i] * vec4(p, 1.0);\n"
     "  vec3 sc = c.xyz / c.w * 0.5 + 0.5;\n"
     "  return vec3(sc.xy * u_uvscale[i], sc.z);\n"
-    "}\n"
-    /* docs/filtering.md twins of swarp_vsm_chebyshev, swarp_vsm_reduce_bleeding,
-     * swarp_evsm_visibility */
-    "float vsm_chebyshev(vec2 M, float t, float min_variance) {\n"
-    "  if (t <= M.x) return 1.0;\n"
-    "  float sigma2 = max(fma(-M.x, M.x, M.y), min_variance);\n"
-    "  float d = t - M.x;\n"
-    "  return sigma2 / (sigma2 + d * d);\n"
-    "}\n"
-    "float vsm_reduce_bleeding(float p, float amount) {\n"
-    "  return clamp((p - amount) / (1.0 - amount), 0.0, 1.0);\n"
-    "}\n"
-    "float evsm_visibility(vec4 m, float t, float c_pos, float c_neg, float min_variance) {\n"
-    "  float wp = exp(c_pos * t), wn = -exp(-c_neg * t);\n"
-    "  float kp = c_pos * wp, kn = c_neg * wn;\n"
-    "  float vp = vsm_chebyshev(m.xy, wp, min_variance * kp * kp);\n"
-    "  float vn = vsm_chebyshev(m.zw, wn, min_variance * kn * kn);\n"
-    "  return min(vp, vn);\n"
     "}\n"
     "bool v_ground = false;\n"
     "float lookup(int i, vec3 sc) {\n"
@@ -309,15 +275,17 @@ static const char* const main_fs =
     "  float ndl = max(dot(n, to_light), 0.0);\n"
     "  int i = select_map(v_p, v_depth);\n"
     /* normal-offset bias (docs/splits.md twin of swarp_bias_normal_offset) */
-    "  vec3 pb = v_p + n * (u_offset * texel_world(i, v_p) * (1.0 - clamp(dot(n, to_light), 0.0, 1.0)));\n"
+    "  vec3 pb = swarp_bias_normal_offset(u_light[i], u_light_inv[i], u_res * u_uvscale[i], v_p,\n"
+    "                                     n, to_light, u_offset);\n"
     "  vec3 sc = map_coord(i, pb);\n"
     "  float lit = 1.0;\n"
     "  float w = 1.0;\n"
     "  if (u_mode != 4) {\n"
     "    lit = lookup(i, sc);\n"
     "    if (u_select == 0) {\n"
-    "      w = blend_weight(i, v_depth);\n"
-    "      if (w < 1.0) lit = lit * w + lookup(i + 1, map_coord(i + 1, pb)) * (1.0 - w);\n"
+    "      int bi;\n"
+    "      w = swarp_cascade_blend(u_split, u_count, v_depth, u_blend, bi);\n"
+    "      if (w < 1.0) lit = mix(lookup(i + 1, map_coord(i + 1, pb)), lit, w);\n"
     "    }\n"
     "  }\n"
     "  if (ndl <= 0.0) lit = 0.0;\n"
@@ -384,7 +352,8 @@ int demo_render_init(demo_renderer* r, const demo_scene* s, int w, int h, int ma
     if (swarp_evsm_max_exponent(SWARP_TEXEL_FP32, &c) != SWARP_OK) return -1;
     r->evsm_c = (float)c;
     r->blur_sigma = 2.0f;
-    r->prog_main = demo_gl_program("main", main_vs, main_fs);
+    const char* const fs_parts[3] = {demo_splits_glsl, demo_filtering_glsl, main_fs};
+    r->prog_main = demo_gl_program_parts("main", main_vs, fs_parts, 3);
     if (!r->prog_depth || !r->prog_main) return -1;
 
     glGenTextures(1, &r->shadow_tex);
