@@ -52,7 +52,7 @@ static void usage(void) {
         "  --pseudo NP,FP          pseudo-near/far fractions for 'pseudo' (default 0.05,0)\n"
         "  --splits K              maps for the pssm techniques (1..16, default 4)\n"
         "  --scheme S              practical[:LAMBDA] | uniform | log | pseudo:NP,FP[,LAMBDA]\n"
-        "                          (default practical:0.5; NP, FP eye distances, [RHS] (4.1))\n"
+        "                          (default practical:0.5; NP, FP fractions of the range, (4.1))\n"
         "  --filter F              none | pcf2 | pcf3 | pcf5 | poisson | vsm | evsm | projblur\n"
         "                          (default pcf3; projblur: [KOZ] 14.3.2 on the ground)\n"
         "  --light-angle E[,A]     sun elevation E and azimuth A in degrees (default 35,115)\n"

@@ -44,9 +44,11 @@ const char* demo_scheme_name(demo_scheme s) {
 
 int demo_scheme_parse(const char* name, double* lambda, double* np, double* fp) {
     if (strncmp(name, "pseudo:", 7) == 0) {
+        /* n_p, f_p as fractions of the range, as swarp_split_options has them */
         *lambda = 0.5;
         int k = sscanf(name + 7, "%lf,%lf,%lf", np, fp, lambda);
-        if (k < 2 || !(*np > 0 && *fp > *np && *lambda >= 0 && *lambda <= 1)) return -1;
+        if (k < 2 || !(*np >= 0 && *fp >= 0 && *np + *fp < 1 && *lambda >= 0 && *lambda <= 1))
+            return -1;
         return DEMO_SCHEME_PSEUDO;
     }
     if (strncmp(name, "practical", 9) == 0) {
@@ -130,38 +132,10 @@ static int lixel_map(const swarp_mat4* M_v, const demo_shadow_request* req,
     return 0;
 }
 
-/* Split distances C_0..C_K over [near, far] from the library's schemes
- * [RHS] (3.6)-(3.8). */
-static int split_distances(const demo_shadow_request* req, double near, double far, int k,
-                           double* out) {
-    size_t n = 0;
-    swarp_status st;
-    if (req->scheme == DEMO_SCHEME_UNIFORM)
-        st = swarp_split_uniform(near, far, (uint32_t)k, out, DEMO_MAX_SPLITS + 1, &n);
-    else if (req->scheme == DEMO_SCHEME_PSEUDO)
-        st = swarp_split_pseudo(near, far, fmax(near, fmin(req->scheme_np, far)),
-                                fmin(far, fmax(req->scheme_fp, near)), req->scheme_lambda,
-                                (uint32_t)k, out, DEMO_MAX_SPLITS + 1, &n);
-    else if (req->scheme == DEMO_SCHEME_LOG)
-        st = swarp_split_log(near, far, (uint32_t)k, out, DEMO_MAX_SPLITS + 1, &n);
-    else
-        st = swarp_split_practical(near, far, req->scheme_lambda, (uint32_t)k, out,
-                                   DEMO_MAX_SPLITS + 1, &n);
-    if (swarp_status_is_error(st) || n != (size_t)k + 1) {
-        fprintf(stderr, "demo: split scheme: %s\n", swarp_status_string(st));
-        return -1;
-    }
-    return 0;
-}
-
-/* A conventional (non-lixel) map for one technique over the adjusted view
- * range (range = 0) or over [near, far] (range = 1, a split): the library's
- * swarp_setup / swarp_setup_range when the geometry stage is linked in. */
-static int conventional_map(const swarp_camera* cam, const swarp_light* light,
-                            const swarp_aabb* scene, const demo_shadow_request* req,
-                            demo_technique t, int range, double near, double far,
-                            swarp_mat4* out_m, double* out_n, double* out_near, double* out_far,
-                            swarp_vec3* body, int* body_count, swarp_status* out_status) {
+/* The library's options for a technique (the parameter choice of the
+ * LiSPSM variants; the PSSM techniques use the same per split). */
+static void setup_options(const demo_shadow_request* req, demo_technique t,
+                          swarp_setup_options* out) {
     swarp_setup_options opt;
     memset(&opt, 0, sizeof opt);
     opt.technique = SWARP_TECHNIQUE_UNIFORM;
@@ -194,6 +168,19 @@ static int conventional_map(const swarp_camera* cam, const swarp_light* light,
     default:
         break;
     }
+    *out = opt;
+}
+
+/* A conventional (non-lixel) map for one technique over the adjusted view
+ * range (range = 0) or over [near, far] (range = 1, a split): the library's
+ * swarp_setup / swarp_setup_range when the geometry stage is linked in. */
+static int conventional_map(const swarp_camera* cam, const swarp_light* light,
+                            const swarp_aabb* scene, const demo_shadow_request* req,
+                            demo_technique t, int range, double near, double far,
+                            swarp_mat4* out_m, double* out_n, double* out_near, double* out_far,
+                            swarp_vec3* body, int* body_count, swarp_status* out_status) {
+    swarp_setup_options opt;
+    setup_options(req, t, &opt);
     swarp_setup_result res;
     size_t nb = 0;
     _Static_assert(DEMO_MAX_BODY >= SWARP_BODY_MAX_POINTS, "room for every point of B");
@@ -216,7 +203,8 @@ static int conventional_map(const swarp_camera* cam, const swarp_light* light,
 }
 
 static const char* matrix_source(demo_technique t) {
-    if (t == DEMO_TECH_PSSM_STABLE) return "library (swarp_stabilize_directional)";
+    if (t == DEMO_TECH_PSSM_STABLE) return "library (swarp_cascade_setup, stabilised)";
+    if (demo_technique_is_split(t)) return "library (swarp_cascade_setup)";
     return "library (swarp_setup)";
 }
 
@@ -324,41 +312,43 @@ int demo_shadow_setup(const swarp_camera* cam, const swarp_light* light,
                          &sh.light[0], &sh.n_prime[0], &sh.near, &sh.far, sh.body, &sh.body_count,
                          &st))
         return -1;
-    if (t == DEMO_TECH_PSSM_STABLE) {
-        /* the sphere covers whole split frusta: no adjusted range */
-        sh.near = cam->near;
-        sh.far = cam->far;
-    }
-    sh.split[0] = sh.near;
-    sh.split[1] = sh.far;
     if (pssm) {
-        if (split_distances(req, sh.near, sh.far, sh.count, sh.split)) return -1;
-        for (int i = 0; i < sh.count; ++i) {
-            double a, b;
-            swarp_status si;
-            if (t == DEMO_TECH_PSSM_STABLE) {
-                /* [RHS] §3.5 exact solution: the split frustum's minimal
-                 * sphere, texel-snapped (directional lights only) */
-                swarp_stabilize_options so;
-                memset(&so, 0, sizeof so);
-                so.mode = SWARP_STABILIZE_SPHERE;
-                si = swarp_stabilize_directional(cam, sh.split[i], sh.split[i + 1], &light->direction,
-                                                 NULL, 0, scene, (uint32_t)req->map_res, &so,
-                                                 &sh.light[i], NULL);
-                if (swarp_status_is_error(si)) {
-                    fprintf(stderr, "demo: swarp_stabilize_directional: %s\n",
-                            swarp_status_string(si));
-                    return -1;
-                }
-                sh.n_prime[i] = INFINITY;
-                if (si != SWARP_OK && st == SWARP_OK) st = si;
-                continue;
-            }
-            if (conventional_map(cam, light, scene, req, t, 1, sh.split[i], sh.split[i + 1],
-                                 &sh.light[i], &sh.n_prime[i], &a, &b, NULL, NULL, &si))
-                return -1;
-            if (si != SWARP_OK && st == SWARP_OK) st = si;
+        /* [RHS] §3.3-3.5 in one library call: adjusted range, split
+         * distances, per split B_i and its matrix (or the stabilised one) */
+        swarp_cascade_options co;
+        memset(&co, 0, sizeof co);
+        setup_options(req, t == DEMO_TECH_PSSM_LISPSM ? DEMO_TECH_LISPSM : DEMO_TECH_UNIFORM,
+                      &co.setup);
+        co.split.count = (uint32_t)sh.count;
+        co.split.scheme = req->scheme == DEMO_SCHEME_UNIFORM ? SWARP_SCHEME_UNIFORM
+                          : req->scheme == DEMO_SCHEME_LOG   ? SWARP_SCHEME_LOG
+                          : req->scheme == DEMO_SCHEME_PSEUDO ? SWARP_SCHEME_PSEUDO
+                                                              : SWARP_SCHEME_PRACTICAL;
+        co.split.lambda = req->scheme_lambda;
+        co.split.pseudo_near = req->scheme_np;
+        co.split.pseudo_far = req->scheme_fp;
+        if (t == DEMO_TECH_PSSM_STABLE) co.stabilize.mode = SWARP_STABILIZE_SPHERE;
+        swarp_cascade_result cr;
+        swarp_cascade_split cs[SWARP_CASCADE_MAX_SPLITS];
+        size_t n = 0;
+        swarp_status sc = swarp_cascade_setup(cam, light, scene, &co, &cr, cs,
+                                              SWARP_CASCADE_MAX_SPLITS, &n);
+        if (swarp_status_is_error(sc) || n != (size_t)sh.count) {
+            fprintf(stderr, "demo: swarp_cascade_setup (%s): %s\n", demo_technique_name(t),
+                    swarp_status_string(sc));
+            return -1;
         }
+        sh.near = cr.view_near;
+        sh.far = cr.view_far;
+        for (int i = 0; i <= sh.count; ++i) sh.split[i] = cr.splits[i];
+        for (int i = 0; i < sh.count; ++i) {
+            sh.light[i] = cs[i].matrix;
+            sh.n_prime[i] = cs[i].n_eye;
+        }
+        if (sc != SWARP_OK) st = sc;
+    } else {
+        sh.split[0] = sh.near;
+        sh.split[1] = sh.far;
     }
     {
         /* the predicted worst error of the whole configuration [RHS]

@@ -48,7 +48,7 @@ typedef struct demo_shadow_request {
     demo_scheme scheme;
     double scheme_lambda; /**< practical scheme's lambda in [0, 1] */
     double pseudo_near, pseudo_far; /**< n_p, f_p of [RHS] (4.2), fractions (technique pseudo) */
-    double scheme_np, scheme_fp;    /**< n_p, f_p of [RHS] (4.1), eye distances (scheme pseudo) */
+    double scheme_np, scheme_fp;    /**< n_p, f_p of [RHS] (4.1), fractions (scheme pseudo) */
     int map_res;          /**< texels per side of each map */
     demo_select select;   /**< DEPTH or BEST for the PSSM techniques */
     int screen_w, screen_h;
