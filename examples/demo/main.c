@@ -3,7 +3,7 @@
  *
  *   demo                         default gallery into ./out/ + summary table
  *   demo --technique lispsm ...  one technique, all its pictures
- *   demo --test images|iou|measure   headless checks used by meson test
+ *   demo --test NAME             headless checks used by meson test
  *                                (exit 77 when no OSMesa context)
  */
 #include <errno.h>
@@ -70,7 +70,8 @@ static void usage(void) {
         "  --mindepth              [RHS] 4.3: min depth on GPU and CPU, LiSPSM sampling with the\n"
         "                          camera / adjusted / pseudo near plane (camera street)\n"
         "  --out DIR               output directory (default ./out)\n"
-        "  --test images|iou|measure|select|clone|mindepth  headless checks (exit 0 pass, 1 fail, 77 skip)\n"
+        "  --test images|iou|measure|select|clone|mindepth|flicker\n"
+        "                          headless checks (exit 0 pass, 1 fail, 77 skip)\n"
         "  --test bench-clone      time K passes against geometry cloning for K = 4, 8, 16\n");
 }
 
@@ -734,7 +735,7 @@ static int run_gallery(const options* o, int single, gallery_report* rep) {
     return rc;
 }
 
-static int run_frames(const options* o) {
+static int run_frames(const options* o, double* out_max_drift) {
     demo_view v;
     memset(&v, 0, sizeof v);
     v.w = o->w;
@@ -802,6 +803,7 @@ static int run_frames(const options* o) {
         prev_frac[0] = frac[0];
         prev_frac[1] = frac[1];
         prev_map = (int)mi;
+        if (out_max_drift && !isnan(drift) && drift > *out_max_drift) *out_max_drift = drift;
         printf("frame %d/%d: setup %.2f us, %d shadow passes %.2f ms, main %.2f ms, gl errors %d, "
                "probe in map %u, sub-texel drift %.4f texel\n",
                f + 1, o->frames, res.setup_us, res.passes - 1, res.shadow_ms_total, res.main_ms,
@@ -1324,6 +1326,24 @@ static int run_mindepth(const options* o, int test) {
     return rc;
 }
 
+/* [RHS] §3.5: a fixed ground point keeps its place inside its texel while
+ * the camera moves and turns (stabilised cascades), and does not without
+ * stabilisation (the control that shows the check can fail). */
+static int test_flicker(const options* o) {
+    options q = *o;
+    q.frames = 8;
+    q.splits = 4;
+    double drift_stable = 0, drift_plain = 0;
+    q.technique = DEMO_TECH_PSSM_STABLE;
+    int rc = run_frames(&q, &drift_stable);
+    q.technique = DEMO_TECH_PSSM;
+    rc |= run_frames(&q, &drift_plain);
+    int ok = rc == 0 && drift_stable < 1e-4 && drift_plain > 1e-2;
+    printf("flicker: largest sub-texel drift per frame: pssm-stable %.6f, pssm %.6f %s\n",
+           drift_stable, drift_plain, ok ? "ok" : "FAIL");
+    return ok ? 0 : 1;
+}
+
 static int test_images(const options* o) {
     /* the gallery at small size: every picture exists and is not blank */
     options q = *o;
@@ -1397,6 +1417,7 @@ int main(int argc, char** argv) {
         else if (!strcmp(o.test, "select")) rc = test_select(&o);
         else if (!strcmp(o.test, "clone")) rc = test_clone(&o, 0);
         else if (!strcmp(o.test, "mindepth")) rc = run_mindepth(&o, 1);
+        else if (!strcmp(o.test, "flicker")) rc = test_flicker(&o);
         else if (!strcmp(o.test, "bench-clone")) rc = test_clone(&o, 1);
         else {
             fprintf(stderr, "demo: unknown test %s\n", o.test);
@@ -1405,7 +1426,7 @@ int main(int argc, char** argv) {
         demo_ctx_destroy(ctx);
         return rc;
     }
-    if (o.frames > 0) return run_frames(&o);
+    if (o.frames > 0) return run_frames(&o, NULL);
     if (o.mindepth) {
         demo_ctx* ctx = open_context();
         if (!ctx) return 2;
