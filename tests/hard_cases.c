@@ -15,7 +15,7 @@
  * written to DIR/<entry>-<index>.bin, a corpus file for tests/fuzz that
  * replays it (keep it in tests/fuzz/corpus/<entry>/ as a regression test).
  * Exit status 1 when any invariant broke.  "finding" counts accuracy
- * departures on extreme inputs (magnitudes below 1e-150 or above 1e150, see
+ * departures on extreme inputs (magnitudes below 1e-100 or above 1e100, see
  * swr.h); --findings prints the first three per entry point.  --list prints every entry point
  * with "available" or "missing" (not in the library yet).  --emit DIR N
  * writes the bytes of the first N cases of each available entry point to

@@ -7,10 +7,12 @@
 extern const swr_entry swr_entries_core[];
 /* stage tables: */
 extern const swr_entry swr_entries_lixel[];
+extern const swr_entry swr_entries_filter[];
 
 static const swr_entry* const tables[] = {
     swr_entries_core,
     swr_entries_lixel,
+    swr_entries_filter,
 };
 
 size_t swr_entry_count(void) {

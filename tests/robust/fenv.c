@@ -15,9 +15,9 @@
  *     of z_0, an inverse of an ill-conditioned matrix, ...) and tol_min one
  *     float ulp (2^-23) for swarp_mat4_to_float, whose cast rounds in the
  *     caller's mode.
- * Cases with extreme inputs (a finite non-zero magnitude below 1e-150 --
- * subnormals included, which DAZ turns into zero -- or above 1e150) are left
- * out and counted: the tolerance is documented for the range 1e-150..1e150.  Cases on
+ * Cases with extreme inputs (a finite non-zero magnitude below 1e-100 --
+ * subnormals included, which DAZ turns into zero -- or above 1e100) are left
+ * out and counted: the tolerance is documented for the range 1e-100..1e100.  Cases on
  * a threshold decided by rounding (ctx.rounding_edge: an overflow, which
  * IEEE 754 directed rounding turns into +-DBL_MAX instead of +-inf, or a
  * domain bound on a rounded sum) are left out of all.  A
@@ -68,7 +68,7 @@ int main(int argc, char** argv) {
             if (base->skipped) break;
             used = 1;
             for (size_t m = 0; m < n_modes; ++m) {
-                if (base->extreme) { /* magnitudes beyond 1e+-150: see swr.h */
+                if (base->extreme) { /* magnitudes beyond 1e+-100: see swr.h */
                     ++extreme;
                     continue;
                 }
@@ -124,7 +124,7 @@ int main(int argc, char** argv) {
     for (size_t m = 0; m < n_modes; ++m)
         printf("  %-14s %8lu calls compared, largest difference %.3g of the tolerance%s%s\n", modes[m].name, compared[m],
                worst[m] / SWR_FENV_TOL, worst_entry[m] ? " in " : "", worst_entry[m] ? worst_entry[m] : "");
-    printf("fenv: %lu calls with extreme inputs (a magnitude below 1e-150, subnormals included, or above 1e150) "
+    printf("fenv: %lu calls with extreme inputs (a magnitude below 1e-100, subnormals included, or above 1e100) "
            "left out\n", extreme);
     printf("fenv: %lu calls on a threshold decided by rounding left out (overflows, exact degeneracies, "
            "conditioning thresholds)\n",
