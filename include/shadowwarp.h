@@ -123,7 +123,22 @@ extern "C" {
       "GLPR has no positive lambda here (theta <= phi); lambda_GMNPR was written")
 
 /* >>> status: geometry (100..199, 1100..1199) */
-#define SWARP_STATUS_LIST_GEOMETRY(X)
+#define SWARP_STATUS_LIST_GEOMETRY(X)                                                   \
+    X(SWARP_ERR_BODY_EMPTY, 100,                                                        \
+      "the view frustum misses the scene box (H = V intersect S is empty)")              \
+    X(SWARP_ERR_BOX_INVERTED, 101, "scene box min exceeds max on some axis")            \
+    X(SWARP_ERR_BOX_DEGENERATE, 102,                                                    \
+      "scene box has zero extent along two or more axes")                               \
+    X(SWARP_ERR_LIGHT_INSIDE_BODY, 103,                                                 \
+      "point light inside the body B: one perspective map cannot cover it")             \
+    X(SWARP_INFO_LIGHT_PARALLEL, 1100,                                                  \
+      "light nearly parallel to the view: light-space up blended toward camera right")  \
+    X(SWARP_INFO_FLAT_EXTENT, 1101,                                                     \
+      "an extent of the focused body is zero; its width was padded")                    \
+    X(SWARP_INFO_PSM_INVERSE, 1102,                                                     \
+      "light behind the camera: PSM uses the inverse projection (near < 0 < far)")      \
+    X(SWARP_INFO_LIGHT_NEAR_CLIPPED, 1103,                                              \
+      "spot light on or inside B: points nearer than its near plane left out")
 /* <<< status: geometry */
 
 /* >>> status: lixel (200..299, 1200..1299) */
@@ -196,11 +211,27 @@ extern "C" {
 /* <<< status: splits */
 
 /* >>> status: plan (500..599, 1500..1599) */
-#define SWARP_STATUS_LIST_PLAN(X)
+#define SWARP_STATUS_LIST_PLAN(X)                                                   \
+    X(SWARP_ERR_PLAN_TOO_MANY_PLANES, 500,                                          \
+      "plane_count exceeds SWARP_PLAN_MAX_PLANES")                                  \
+    X(SWARP_ERR_PLAN_EMPTY_VIEW, 501,                                               \
+      "the scene box lies entirely outside the view depth range: nothing to shadow")\
+    X(SWARP_INFO_PLAN_BUDGET_UNMET, 1500,                                           \
+      "no chain meets the budget; the plan is the most accurate within the pass limit") \
+    X(SWARP_INFO_PLAN_POINT_LIGHT, 1501,                                            \
+      "point light planned as a directional light toward the view frustum's centre")
 /* <<< status: plan */
 
 /* >>> status: extras (600..699, 1600..1699) */
-#define SWARP_STATUS_LIST_EXTRAS(X)
+#define SWARP_STATUS_LIST_EXTRAS(X)                                                 \
+    X(SWARP_ERR_CUBE_LIGHT_AT_INFINITY, 600,                                        \
+      "light at infinity in post-projective space (w = 0): no cube map, use one orthographic map") \
+    X(SWARP_ERR_CUBE_POINT_UNCOVERED, 601,                                          \
+      "the point is in no cube-map face frustum (it coincides with the light or lies behind it)") \
+    X(SWARP_INFO_CUBE_NEAR_CLIPPED, 1601,                                           \
+      "the point lies inside the faces' near cube (a < Z_1): the face camera clips it") \
+    X(SWARP_INFO_MINDEPTH_EMPTY, 1600,                                              \
+      "the depth buffer holds nothing nearer than far: near plane left unchanged")
 /* <<< status: extras */
 
 #define SWARP_STATUS_LIST(X)          \
@@ -558,6 +589,341 @@ SWARP_API swarp_status swarp_split_pseudo(double n, double f, double n_p, double
                                           size_t capacity, size_t* out_count);
 
 /* >>> api: geometry (src/poly.c body.c focus.c warp.c psm.c setup.c) */
+/* ======================================================================== */
+/* Geometry: convex polyhedra                    (src/poly.c)               */
+/* ======================================================================== */
+/*
+ * A convex polyhedron with a fixed capacity (no allocation).  Vertices are a
+ * point set; each face is a loop of vertex indices, counter-clockwise seen
+ * from outside, with its plane (outward unit normal, a*x+b*y+c*z+d = 0,
+ * outside where the expression is > 0).  Degenerate polyhedra are valid: a
+ * flat one (a polygon) has two opposite faces over the same vertices, a
+ * point has one vertex and no face, an empty one has no vertex.
+ *
+ * Clipping never leaves two vertices closer than SWARP_POLY_EPS_REL times the
+ * polyhedron's scale (largest absolute coordinate, so the tolerance follows
+ * double precision for large worlds): 1e-12 is ~4000 ulps of a coordinate,
+ * far above rounding noise and far below any feature worth keeping.
+ *
+ * Capacity: V ∩ S has at most 12 faces and 20 vertices; the bodies B built
+ * from it stay far below the maxima (docs/geometry.md gives the counts).
+ * sizeof(swarp_polyhedron) == SWARP_POLY_SIZE bytes (about 7.3 KiB).
+ */
+#define SWARP_POLY_MAX_VERTICES 128
+#define SWARP_POLY_MAX_FACES 64
+#define SWARP_POLY_MAX_FACE_VERTICES 32
+#define SWARP_POLY_EPS_REL 1e-12
+#define SWARP_POLY_SIZE                                                          \
+    (8 + SWARP_POLY_MAX_VERTICES * 24 + SWARP_POLY_MAX_FACES * 32 +               \
+     SWARP_POLY_MAX_FACES * 4 + SWARP_POLY_MAX_FACES * SWARP_POLY_MAX_FACE_VERTICES)
+
+typedef struct swarp_polyhedron {
+    uint32_t vertex_count;
+    uint32_t face_count;
+    swarp_vec3 vertices[SWARP_POLY_MAX_VERTICES];
+    swarp_plane planes[SWARP_POLY_MAX_FACES];          /**< outward, unit normal */
+    uint32_t face_vertex_count[SWARP_POLY_MAX_FACES];
+    uint8_t face_vertices[SWARP_POLY_MAX_FACES][SWARP_POLY_MAX_FACE_VERTICES];
+} swarp_polyhedron;
+
+/** @brief The box as a polyhedron (8 vertices, 6 faces; fewer if flat).
+ *  @param[in] box min <= max componentwise, finite.
+ *  @param[out] out the polyhedron.
+ *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
+ *          SWARP_ERR_BOX_INVERTED. */
+SWARP_API swarp_status swarp_poly_from_aabb(const swarp_aabb* box, swarp_polyhedron* out);
+
+/** @brief The camera's view frustum V between view depths near and far
+ *  (world units along cam->dir; cam->near/far are ignored, so a split
+ *  frustum [RHS] §3.3 is the same call).
+ *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
+ *          SWARP_ERR_FOV, SWARP_ERR_NEAR_FAR, SWARP_ERR_ZERO_VECTOR,
+ *          SWARP_ERR_DEGENERATE (up parallel to dir),
+ *          SWARP_ERR_RESERVED_NONZERO, SWARP_ERR_OUT_OF_RANGE (aspect <= 0). */
+SWARP_API swarp_status swarp_poly_from_camera_range(const swarp_camera* cam, double near,
+                                                    double far, swarp_polyhedron* out);
+/** @brief The camera's view frustum V between cam->near and cam->far. */
+SWARP_API swarp_status swarp_poly_from_camera(const swarp_camera* cam, swarp_polyhedron* out);
+
+/** @brief The frustum whose clip cube is mapped to world space by an inverse
+ *  view-projection matrix (the 8 corners of the NDC cube, depth per
+ *  depth_range).
+ *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
+ *          SWARP_ERR_UNKNOWN_ENUM, SWARP_ERR_DEGENERATE (a corner maps to
+ *          infinity: w <= 0). */
+SWARP_API swarp_status swarp_poly_from_inverse_matrix(const swarp_mat4* inv_view_proj,
+                                                      swarp_depth_range depth_range,
+                                                      swarp_polyhedron* out);
+
+/** @brief Keep the part of a convex polyhedron where a*x+b*y+c*z+d <= 0
+ *  (the plane's normal points to the side removed).  out may equal in.
+ *  @return SWARP_OK (possibly empty: vertex_count 0), SWARP_ERR_NULL_POINTER,
+ *          SWARP_ERR_NON_FINITE, SWARP_ERR_ZERO_VECTOR (zero normal),
+ *          SWARP_ERR_CAPACITY (a maximum above would be exceeded). */
+SWARP_API swarp_status swarp_poly_clip(const swarp_polyhedron* in, const swarp_plane* plane,
+                                       swarp_polyhedron* out);
+
+/** @brief in ∩ box (six clips).  out may equal in.
+ *  @return as swarp_poly_clip; SWARP_ERR_BOX_INVERTED. */
+SWARP_API swarp_status swarp_poly_clip_aabb(const swarp_polyhedron* in, const swarp_aabb* box,
+                                            swarp_polyhedron* out);
+
+/* ======================================================================== */
+/* Geometry: the intersection body B             (src/body.c)               */
+/* ======================================================================== */
+/** Worst case of points of B written by swarp_body_points / swarp_setup. */
+#define SWARP_BODY_MAX_POINTS SWARP_POLY_MAX_VERTICES
+
+/** @brief H = V ∩ S for the view depths [near, far].  [RHS] §3.1.1
+ *  @return SWARP_OK, SWARP_ERR_BODY_EMPTY (the frustum misses the box,
+ *          e.g. the camera looks away from it), SWARP_ERR_BOX_DEGENERATE,
+ *          and the statuses of swarp_poly_from_camera_range. */
+SWARP_API swarp_status swarp_body_h(const swarp_camera* cam, double near, double far,
+                                    const swarp_aabb* scene, swarp_polyhedron* out_H);
+
+/** @brief B from H.  [RHS] §3.1.1 (Fig. 3.2).  Directional light: H extruded
+ *  against the light direction until it leaves S, then ∩ S.  Point light:
+ *  conv(H ∪ {l}) ∩ S ∩ L, where L (cone_angle > 0) is the square pyramid
+ *  with apex l, axis light->direction and half-angle cone_angle that
+ *  circumscribes the spot cone (the spot's shadow-map frustum).
+ *  @return SWARP_OK, SWARP_ERR_BODY_EMPTY, SWARP_ERR_NULL_POINTER,
+ *          SWARP_ERR_NON_FINITE, SWARP_ERR_ZERO_VECTOR, SWARP_ERR_UNKNOWN_ENUM,
+ *          SWARP_ERR_RESERVED_NONZERO, SWARP_ERR_OUT_OF_RANGE (cone angle). */
+SWARP_API swarp_status swarp_body_from_h(const swarp_polyhedron* H, const swarp_light* light,
+                                         const swarp_aabb* scene, swarp_polyhedron* out_B);
+
+/** @brief The points of B (its vertices) for the view depths [near, far].
+ *  @param[out] out capacity points; SWARP_BODY_MAX_POINTS always suffices.
+ *  @param[out] out_count number of points (also on SWARP_ERR_CAPACITY).
+ *  @return as swarp_body_h and swarp_body_from_h, SWARP_ERR_CAPACITY. */
+SWARP_API swarp_status swarp_body_points(const swarp_camera* cam, double near, double far,
+                                         const swarp_light* light, const swarp_aabb* scene,
+                                         swarp_vec3* out, size_t capacity, size_t* out_count);
+
+/** @brief Adjusted near/far [RHS] §3.3.1 ([ZSN07]): min and max view depth
+ *  over the points of H = V ∩ S (view frustum cam->near..cam->far).
+ *  @return SWARP_OK, SWARP_ERR_BODY_EMPTY, statuses of swarp_body_h. */
+SWARP_API swarp_status swarp_body_adjusted_range(const swarp_camera* cam, const swarp_aabb* scene,
+                                                 double* out_near, double* out_far);
+
+/* ======================================================================== */
+/* Geometry: light space and focusing            (src/focus.c)              */
+/* ======================================================================== */
+/*
+ * Light-space alignment ([RHS] §3.2.1, [WS06]): the light view looks along
+ * the light (directional: the direction light travels; point light: the
+ * axis a given by the caller, usually the spot axis or the direction to the
+ * centre of B) and its up vector (+y) is the view direction v projected on
+ * the plane perpendicular to that axis, v_perp = v - (v·a) a, |v_perp| =
+ * sin γ.  Continuous fallback near γ = 0 and γ = 180°: the up vector is
+ * normalize(v_perp + w(sin γ) r_perp), r the camera's right vector and
+ * w(s) = SWARP_FOCUS_BLEND_WEIGHT (1 - s/SWARP_FOCUS_BLEND_SIN)^2 for
+ * s < SWARP_FOCUS_BLEND_SIN (0 above): no threshold switch, the basis turns
+ * smoothly through the right vector when the light passes parallel or
+ * antiparallel to the view in the plane of v and the camera's up vector.
+ * (Every continuous tangent field on the sphere has a zero: this one's lies
+ * off that plane, on the v-r great circle, at sin γ ≈ 0.09; see
+ * docs/geometry.md.)  SWARP_INFO_LIGHT_PARALLEL reports that the blend is
+ * active.
+ */
+#define SWARP_FOCUS_BLEND_SIN 0.17364817766693033 /* sin 10° */
+#define SWARP_FOCUS_BLEND_WEIGHT 0.5
+
+/** @brief Light view matrix (right-handed, looks down -z) with light-space
+ *  alignment.  [RHS] §3.2.1
+ *  @param[in] cam    the viewer (its dir and up give the alignment)
+ *  @param[in] light  the light
+ *  @param[in] axis   point lights: the direction the light view looks along
+ *                    (any length > 0); NULL means light->direction (spot)
+ *                    or, for an omni light, the direction to cam->eye.
+ *                    Ignored for directional lights.
+ *  @param[out] out_view  light view; origin at cam->eye (directional) or at
+ *                    the light position (point light).
+ *  @return SWARP_OK, SWARP_INFO_LIGHT_PARALLEL, SWARP_ERR_NULL_POINTER,
+ *          SWARP_ERR_NON_FINITE, SWARP_ERR_ZERO_VECTOR, ... */
+SWARP_API swarp_status swarp_focus_light_view(const swarp_camera* cam, const swarp_light* light,
+                                              const swarp_vec3* axis, swarp_mat4* out_view);
+
+/** @brief The focusing matrix A_fit.  [RHS] (3.1)
+ *  Maps the bounding box of the points transformed by m (with perspective
+ *  division) to x, y in [-1, 1] and z in [-1, 1] (SWARP_DEPTH_NEG_ONE_TO_ONE)
+ *  or [0, 1] (SWARP_DEPTH_ZERO_TO_ONE); (3.1) is the [0, 1] case.
+ *  @param[in] m          transform applied to the points first (e.g. P·L)
+ *  @param[in] points     world-space points (xy extent), count >= 1
+ *  @param[in] z_points   points whose depth extent is used (NULL: points).
+ *                        Pancaking passes the receivers (H) here.
+ *  @param[out] out_A_fit the fit; a zero extent gets width 1 (status).
+ *  @return SWARP_OK, SWARP_INFO_FLAT_EXTENT (an extent was zero),
+ *          SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE, SWARP_ERR_UNKNOWN_ENUM,
+ *          SWARP_ERR_DEGENERATE (a point maps to w <= 0). */
+SWARP_API swarp_status swarp_focus_fit(const swarp_mat4* m, const swarp_vec3* points, size_t count,
+                                       const swarp_vec3* z_points, size_t z_count,
+                                       swarp_depth_range depth_range, swarp_mat4* out_A_fit);
+
+/* ======================================================================== */
+/* Geometry: LiSPSM warping frustum              (src/warp.c)               */
+/* ======================================================================== */
+typedef enum swarp_warp_param {
+    SWARP_WARP_PARAM_DEFAULT = 0,   /**< = SWARP_WARP_PARAM_NOPT */
+    SWARP_WARP_PARAM_NOPT = 1,      /**< n_opt [RHS] (3.2), z_0, z_1 from B */
+    SWARP_WARP_PARAM_NREPAR = 2,    /**< n_repar(η(γ, Θ)) [RHS] (3.3)-(3.4) */
+    SWARP_WARP_PARAM_GMNPR = 3,     /**< λ_GMNPR [GMNPR] (8) times d */
+    SWARP_WARP_PARAM_PSEUDO = 4,    /**< pseudo-near/far n_opt [RHS] (4.2) */
+    SWARP_WARP_PARAM_USER = 5,      /**< caller's n' (eye units) */
+    SWARP_WARP_PARAM_FORCE_I32 = 0x7FFFFFFF
+} swarp_warp_param;
+
+typedef enum swarp_warp_center {
+    SWARP_WARP_CENTER_DEFAULT = 0,        /**< = VIEW_VECTOR */
+    SWARP_WARP_CENTER_VIEW_VECTOR = 1,    /**< [RHS] §4.1: C_start from s on the view vector */
+    SWARP_WARP_CENTER_NEAREST_VERTEX = 2, /**< [WS06]: C_start from the nearest vertex e */
+    SWARP_WARP_CENTER_FORCE_I32 = 0x7FFFFFFF
+} swarp_warp_center;
+
+/** Options of the LiSPSM warp; zero means default. */
+typedef struct swarp_warp_options {
+    swarp_warp_param param;
+    swarp_warp_center center;
+    double n_user;       /**< SWARP_WARP_PARAM_USER: n' in eye units (> 0; +inf = uniform) */
+    double pseudo_near;  /**< n_p of (4.2), fraction in [0, 1) */
+    double pseudo_far;   /**< f_p of (4.2), fraction in [0, 1), n_p + f_p < 1 */
+    uint32_t _reserved[4];
+} swarp_warp_options;
+
+/** What the warp used (outputs of swarp_warp_lispsm). */
+typedef struct swarp_warp_info {
+    double n_light;   /**< n in light-space units (distance C to near plane of P); +inf = uniform */
+    double n_eye;     /**< n' in eye units: n_light (f - n) / d, what the error model takes */
+    double d;         /**< extent of B along the warp axis (light-space y) */
+    double z_0, z_1;  /**< eye depths of the near and far ends of P's axis */
+    double gamma;     /**< angle between view and light axis, radians [0, pi] */
+    uint32_t _reserved[4];
+} swarp_warp_info;
+
+/** @brief The LiSPSM warp P for the points of B in light view space.
+ *  [RHS] §3.2.1, (3.2), §4.1; [WS06].
+ *  P is a perspective along light-space +y with projection centre C, written
+ *  in the normalised form w = 1 + (y - y_min)/n, so n = +inf is exactly the
+ *  identity-like uniform map (continuous fade as γ -> 0).  Follow it with
+ *  swarp_focus_fit(P·L, ...).
+ *  @param[in] light_view  L from swarp_focus_light_view
+ *  @param[in] cam         the viewer (eye, dir, fovy)
+ *  @param[in] near, far   the view depth range the warp refers to (adjusted
+ *                         or split range; 0 < near < far)
+ *  @param[in] points      points of B (world), count >= 1
+ *  @param[in] nearest     the nearest vertex e of H to the eye (used by
+ *                         SWARP_WARP_CENTER_NEAREST_VERTEX; NULL: the point
+ *                         s on the view vector at depth near, [RHS] §4.1)
+ *  @param[in] opts        NULL or zeroed for defaults
+ *  @param[out] out_P      the warp (applied after L)
+ *  @param[out] out_info   may be NULL
+ *  @return SWARP_OK, SWARP_INFO_WARP_UNIFORM (n = inf: θ -> 0 or η = -1),
+ *          SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE, SWARP_ERR_NEAR_FAR,
+ *          SWARP_ERR_UNKNOWN_ENUM, SWARP_ERR_RESERVED_NONZERO,
+ *          SWARP_ERR_OUT_OF_RANGE (n_user, pseudo fractions). */
+SWARP_API swarp_status swarp_warp_lispsm(const swarp_mat4* light_view, const swarp_camera* cam,
+                                         double near, double far, const swarp_vec3* points,
+                                         size_t count, const swarp_vec3* nearest,
+                                         const swarp_warp_options* opts,
+                                         swarp_mat4* out_P, swarp_warp_info* out_info);
+
+/* ======================================================================== */
+/* Geometry: the one call for engines            (src/setup.c)              */
+/* ======================================================================== */
+typedef enum swarp_technique {
+    SWARP_TECHNIQUE_DEFAULT = 0, /**< = SWARP_TECHNIQUE_LISPSM */
+    SWARP_TECHNIQUE_UNIFORM = 1, /**< focused uniform map [RHS] §3.1 */
+    SWARP_TECHNIQUE_LISPSM = 2,  /**< LiSPSM [RHS] §3.2.1, parameter per swarp_warp_param */
+    SWARP_TECHNIQUE_PSM = 3,     /**< PSM in the camera's post-perspective space [KOZ] */
+    SWARP_TECHNIQUE_FORCE_I32 = 0x7FFFFFFF
+} swarp_technique;
+
+/** Options of swarp_setup; a zeroed struct is a valid request. */
+typedef struct swarp_setup_options {
+    swarp_technique technique;
+    swarp_warp_param param;        /**< LiSPSM parameter (default n_opt) */
+    swarp_warp_center center;      /**< LiSPSM projection centre (default [RHS] §4.1) */
+    swarp_depth_range depth_range; /**< default [-1, 1] */
+    uint32_t map_width, map_height;       /**< texels; 0: 2048 (height 0: = width) */
+    uint32_t screen_width, screen_height; /**< pixels; 0: 1920 x 1080 */
+    uint32_t pancake;       /**< 1: light depth range over the receivers H only ("pancaking") */
+    uint32_t psm_slideback; /**< PSM, light behind the camera: 1 = virtual slide-back instead
+                                 of Kozlov's inverse projection */
+    uint32_t _pad0, _pad1;  /**< must be zero */
+    double n_user;          /**< SWARP_WARP_PARAM_USER: n' in eye units */
+    double pseudo_near;     /**< SWARP_WARP_PARAM_PSEUDO: n_p in [0, 1) */
+    double pseudo_far;      /**< SWARP_WARP_PARAM_PSEUDO: f_p in [0, 1) */
+    double slideback;       /**< PSM: extra slide-back distance (world units, >= 0) that
+                                 keeps the near-plane quad [KOZ] Fig. 14-6 */
+    uint32_t _reserved[4];
+} swarp_setup_options;
+
+/** Results of swarp_setup.  matrix = light_proj · light_view maps world
+ *  space to the light's clip space (x, y in [-1, 1], depth per the depth
+ *  range; divide by w). */
+typedef struct swarp_setup_result {
+    swarp_mat4 light_view;
+    swarp_mat4 light_proj;
+    swarp_mat4 matrix;
+    double n_eye;      /**< n' used, eye units ((3.2) scaled by (f - n)/d); +inf uniform;
+                            PSM: near + slide-back */
+    double n_light;    /**< n in the warp's light-space units; +inf uniform */
+    double view_near;  /**< the view depth range used (adjusted [RHS] §3.3.1 in swarp_setup) */
+    double view_far;
+    double gamma;      /**< angle between view direction and light axis, radians */
+    double max_mx;     /**< predicted max m_x over [view_near, view_far], [RHS] (2.3) */
+    double max_mz;     /**< predicted max m_z, [RHS] (2.4) */
+    double light_near; /**< light depth range covered (world units along the light; PSM: */
+    double light_far;  /**<   post-perspective units), informational */
+    uint32_t point_count; /**< number of points of B */
+    uint32_t _pad;
+    uint32_t _reserved[4];
+} swarp_setup_result;
+
+/** @brief The one call: H = V ∩ S, adjusted near/far [RHS] §3.3.1, B
+ *  [RHS] §3.1.1, light view with light-space alignment, the technique's
+ *  warp ([RHS] §3.2.1 / [KOZ]), focusing [RHS] (3.1) and the error model's
+ *  prediction [RHS] (2.3)-(2.8).  No allocation; about 1-2 µs.
+ *  @param[in] cam, light, scene  (scene: the box S of casters and receivers)
+ *  @param[in] opts     NULL or zeroed for defaults
+ *  @param[out] out     matrices and report
+ *  @param[out] out_points  the points of B (NULL: not wanted); capacity
+ *                      SWARP_BODY_MAX_POINTS always suffices
+ *  @param[out] out_count   number of points of B (may be NULL)
+ *  @return SWARP_OK or an informational status (SWARP_INFO_WARP_UNIFORM,
+ *          SWARP_INFO_PSM_INVERSE, SWARP_INFO_LIGHT_PARALLEL,
+ *          SWARP_INFO_LIGHT_NEAR_CLIPPED, SWARP_INFO_FLAT_EXTENT);
+ *          SWARP_ERR_BODY_EMPTY (camera looks away from the box),
+ *          SWARP_ERR_LIGHT_INSIDE_BODY, SWARP_ERR_BOX_INVERTED,
+ *          SWARP_ERR_BOX_DEGENERATE, SWARP_ERR_CAPACITY, and the argument
+ *          errors (NULL, NON_FINITE, FOV, NEAR_FAR, ZERO_VECTOR, DEGENERATE,
+ *          UNKNOWN_ENUM, RESERVED_NONZERO, OUT_OF_RANGE). */
+SWARP_API swarp_status swarp_setup(const swarp_camera* cam, const swarp_light* light,
+                                   const swarp_aabb* scene, const swarp_setup_options* opts,
+                                   swarp_setup_result* out, swarp_vec3* out_points,
+                                   size_t capacity, size_t* out_count);
+
+/** @brief swarp_setup for an explicit view depth range [near, far] (a split
+ *  frustum), used as given (no adjustment).  cam->near/far are ignored.
+ *  @return as swarp_setup. */
+SWARP_API swarp_status swarp_setup_range(const swarp_camera* cam, const swarp_light* light,
+                                         const swarp_aabb* scene, double near, double far,
+                                         const swarp_setup_options* opts, swarp_setup_result* out,
+                                         swarp_vec3* out_points, size_t capacity,
+                                         size_t* out_count);
+
+/** @brief The light matrices for given points of B (count <=
+ *  SWARP_BODY_MAX_POINTS) and the view depth range [near, far] they refer
+ *  to.  receivers (may be NULL): the points of H, used for pancaking, the
+ *  nearest vertex e ([WS06] centre) and PSM's unit cube clipping.
+ *  @return as swarp_setup; SWARP_ERR_INVALID_ARGUMENT for count 0 or above
+ *          the maximum. */
+SWARP_API swarp_status swarp_setup_points(const swarp_camera* cam, const swarp_light* light,
+                                          const swarp_vec3* points, size_t count,
+                                          const swarp_vec3* receivers, size_t receiver_count,
+                                          double near, double far,
+                                          const swarp_setup_options* opts,
+                                          swarp_setup_result* out);
 /* <<< api: geometry */
 
 /* >>> api: lixel (src/lixel.c) */
@@ -814,6 +1180,10 @@ SWARP_API swarp_status swarp_vsm_reduce_bleeding(double p, double amount, double
 /** Worst case layer count of the LVSM functions (splits hold N + 1 values). */
 #define SWARP_LVSM_MAX_LAYERS 64
 
+/* Splits, wherever an LVSM function takes them: N + 1 finite, strictly
+ * increasing values with s_N - s_0 finite; otherwise SWARP_ERR_NON_FINITE,
+ * SWARP_ERR_NOT_INCREASING or SWARP_ERR_OUT_OF_RANGE (range overflows). */
+
 /** @brief Depth interval [p_i, q_i] of layer i with overlaps, [VSM] §4.1.1:
  *  L_0 = [s_0, s_1 + delta], L_i = [s_i - delta, s_{i+1} + delta],
  *  L_{N-1} = [s_{N-1} - delta, s_N] (layers counted from 0 here).
@@ -1005,9 +1375,13 @@ SWARP_API swarp_status swarp_msm_bias(const double b[4], double alpha, double ou
  *  is returned with SWARP_INFO_FILTER_MSM_DEGENERATE.
  *  @param[in] b  filtered (and usually biased) moments
  *  @param[in] z_f  receiver depth
+ *  Moments with b_2 < b_1^2 (rounding) count as a single depth at b_1; in
+ *  the degenerate branch a receiver within ~1e-7 (relative) of a recovered
+ *  depth counts as at it, hence lit (recovered depths carry rounding).
  *  @return SWARP_OK, SWARP_INFO_FILTER_MSM_DEGENERATE, SWARP_ERR_NULL_POINTER,
- *          SWARP_ERR_NON_FINITE, SWARP_ERR_OUT_OF_RANGE (b_2 < 0 or b_4 < 0:
- *          not moments of any distribution). */
+ *          SWARP_ERR_NON_FINITE (also when products of the moments overflow,
+ *          |b| > ~1e150, or the recovered depths do), SWARP_ERR_OUT_OF_RANGE
+ *          (b_2 < 0 or b_4 < 0: not moments of any distribution). */
 SWARP_API swarp_status swarp_msm_visibility(const double b[4], double z_f,
                                             double* out_visibility);
 
@@ -1353,12 +1727,473 @@ SWARP_API swarp_status swarp_cascade_select_best(const swarp_bias_map* maps, siz
  *  @return as swarp_cascade_select_depth; SWARP_ERR_OUT_OF_RANGE for band. */
 SWARP_API swarp_status swarp_cascade_blend(const double* splits, size_t m, double view_depth,
                                            double band, uint32_t* out_index, double* out_weight);
+
+/* ---- cascades: split distances and the configuration's error curve */
+
+typedef enum swarp_split_scheme {
+    SWARP_SCHEME_DEFAULT = 0,   /**< = PRACTICAL with lambda 0.5 (PSSM, ZSXL06) */
+    SWARP_SCHEME_UNIFORM = 1,   /**< [RHS] (3.6) */
+    SWARP_SCHEME_LOG = 2,       /**< [RHS] (3.7) */
+    SWARP_SCHEME_PRACTICAL = 3, /**< [RHS] (3.8), lambda as given (0 = uniform) */
+    SWARP_SCHEME_PSEUDO = 4,    /**< [RHS] (4.1): practical over [n_p, f_p] */
+    SWARP_SCHEME_FORCE_I32 = 0x7FFFFFFF
+} swarp_split_scheme;
+
+/** How to split [n, f].  Zero means default (4 splits, PSSM lambda 0.5). */
+typedef struct swarp_split_options {
+    uint32_t count;            /**< m, 1..SWARP_SPLIT_MAX_COUNT; 0 = 4 */
+    swarp_split_scheme scheme;
+    double lambda;             /**< PRACTICAL, PSEUDO: in [0, 1] */
+    double pseudo_near;        /**< PSEUDO (and the warp of the FIRST split): n_p as a
+                                    fraction of f - n measured from n, [0, 1) */
+    double pseudo_far;         /**< PSEUDO (and the warp of the LAST split): f_p as a
+                                    fraction of f - n measured from f; n_p + f_p < 1 */
+    uint32_t _reserved[4];
+} swarp_split_options;
+
+/** @brief Split distances C_0 = n < C_1 < ... < C_m = f of a scheme, on the
+ *  (adjusted, [RHS] §3.3.1) range [n, f], through the core schemes
+ *  swarp_split_uniform/log/practical/pseudo.  PSEUDO converts the fractions
+ *  to distances n + n_p (f - n) and f - f_p (f - n) for (4.1).
+ *  @param[out] out  m + 1 distances; capacity >= m + 1 (SWARP_ERR_CAPACITY
+ *  with the count written otherwise)
+ *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
+ *          SWARP_ERR_NEAR_FAR, SWARP_ERR_SPLIT_COUNT, SWARP_ERR_OUT_OF_RANGE,
+ *          SWARP_ERR_UNKNOWN_ENUM, SWARP_ERR_RESERVED_NONZERO,
+ *          SWARP_ERR_CAPACITY. */
+SWARP_API swarp_status swarp_cascade_splits(double n, double f, const swarp_split_options* opt,
+                                            double* out, size_t capacity, size_t* out_count);
+
+/** @brief Warp parameter n' of each split for LiSPSM with an overhead light
+ *  in the error model's frame: n_opt of [RHS] (3.2) with d = C_{i+1} - C_i,
+ *  z_0 = C_i, z_1 = C_{i+1}; the first split uses the pseudo-near fraction
+ *  and the last the pseudo-far fraction of (4.2) ([RHS] §4.2), when given.
+ *  @param[out] out_n_primes m values.
+ *  @return SWARP_OK and the errors of swarp_warp_nopt_pseudo. */
+SWARP_API swarp_status swarp_cascade_nopt(const double* splits, size_t m, double pseudo_near,
+                                          double pseudo_far, double* out_n_primes);
+
+/** Worst-case sample count of swarp_cascade_error_curve. */
+#define SWARP_CASCADE_CURVE_MAX(m, samples_per_split) ((m) * (samples_per_split))
+
+/** @brief The error curve of a whole configuration ([RHS] §3.3.4, Fig. 3.15,
+ *  3.18) through the core's piecewise model swarp_error_split_curve: for
+ *  each split `samples_per_split` depths from C_i (the value just after the
+ *  border: a border belongs to the split that starts there) up to the left
+ *  limit at C_{i+1} (the last sample is nextafter(C_{i+1}, 0), f itself for
+ *  the last split).  out_mx or out_mz may be NULL.
+ *  @param samples_per_split >= 2
+ *  @return SWARP_OK, SWARP_ERR_CAPACITY (count written), SWARP_ERR_NULL_POINTER,
+ *          SWARP_ERR_OUT_OF_RANGE, and the errors of swarp_error_split_curve. */
+SWARP_API swarp_status swarp_cascade_error_curve(const swarp_error_config* cfg,
+                                                 const double* splits, const double* n_primes,
+                                                 size_t m, size_t samples_per_split,
+                                                 double* out_z, double* out_mx, double* out_mz,
+                                                 size_t capacity, size_t* out_count);
 /* <<< api: splits */
 
 /* >>> api: plan (src/plan.c) */
+/*
+ * The planner: from what the scene needs and what the caller can spend, the
+ * cheapest chain (warp, splits, stabilisation, inverse projection, lixel
+ * planes, filter) whose predicted error meets the budget, with a reason for
+ * every choice and every effect left out.  docs/planning.md explains the
+ * error and cost models, the candidates and the selection rule.
+ *
+ * Error model (docs/planning.md §2): Lloyd's metric [RHS] (2.3)-(2.8),
+ * generalised from the overhead light to a light at angle γ to the view in
+ * the plane spanned by light and view direction.  It reduces to (2.3)/(2.4)
+ * exactly at γ = 90°, and its light-space extent is W_lz of [RHS] (3.5) for
+ * γ >= Θ.  Cost model (§3): shadow passes × a per-pass time (caller-measured,
+ * or the default fitted to [RHS] Table 7.1) + prefilter blur passes.
+ */
+
+/** Most shadow-map splits the planner considers (PSSM K = 1..16, [RHS] §3.3.5). */
+#define SWARP_PLAN_MAX_SPLITS 16
+/** Most planes of interest a swarp_scene_needs can declare. */
+#define SWARP_PLAN_MAX_PLANES 4
+/** Worst case of swarp_plan_explain()'s text, bytes including the NUL. */
+#define SWARP_PLAN_EXPLAIN_MAX 4096
+
+/** Light-bleeding risk of prefiltered (moment) shadow maps, [VSM] §3.4: how
+ *  much occluders overlap at large depth ratios Δx/Δy (eq. (3.4)). */
+typedef enum swarp_plan_bleed {
+    SWARP_PLAN_BLEED_DEFAULT = 0,  /**< = SWARP_PLAN_BLEED_NONE */
+    SWARP_PLAN_BLEED_NONE = 1,     /**< one occluder over a receiver: Chebyshev exact [VSM] §3.2 */
+    SWARP_PLAN_BLEED_LOW = 2,      /**< occluders overlap at small depth ratios */
+    SWARP_PLAN_BLEED_HIGH = 3,     /**< overlap at large depth ratios ([VSM] Fig. 3.5) */
+    SWARP_PLAN_BLEED_EXTREME = 4,  /**< many overlaps at extreme ratios ([VSM] Fig. 4.3) */
+    SWARP_PLAN_BLEED_FORCE_I32 = 0x7FFFFFFF
+} swarp_plan_bleed;
+
+/** What the scene calls for.  Zero means default for every field: a zeroed
+ *  struct is the default scene (camera at (0,2,0) looking down -z, fovy 60°,
+ *  aspect 4/3, near 1, far 100; sun at zenith; no scene box; static camera;
+ *  hard shadows; no planes). */
+typedef struct swarp_scene_needs {
+    swarp_camera camera;      /**< all zero: the default camera above */
+    swarp_light light;        /**< all zero: directional light (0,-1,0) */
+    swarp_aabb scene_box;     /**< casters and receivers; all zero: unbounded
+                                   (no near/far adjustment [RHS] §3.3.1) */
+    uint32_t screen_width;    /**< pixels; 0: 1024 */
+    uint32_t screen_height;   /**< pixels; 0: 768 */
+    uint32_t camera_moves;    /**< 0 static, 1 moves (stabilisation matters only then) */
+    uint32_t soft_shadows;    /**< 0 hard, 1 soft (a filter is chosen only then) */
+    double soft_width;        /**< filter kernel width in shadow-map texels, >= 1;
+                                   0: 3 (only read when soft_shadows) */
+    swarp_plan_bleed bleed_risk; /**< decides VSM / MSM / EVSM / LVSM for wide kernels */
+    uint32_t allow_depth_clamp;  /**< 1: casters may be clamped to the light's near
+                                      plane ("pancaking"), 0: not */
+    uint32_t plane_count;     /**< planes of interest in planes[], <= SWARP_PLAN_MAX_PLANES */
+    uint32_t _pad0;           /**< must be zero */
+    swarp_plane planes[SWARP_PLAN_MAX_PLANES]; /**< candidate lixel planes [LIXEL] */
+    uint32_t _reserved[4];
+} swarp_scene_needs;
+
+/** What the caller can spend.  Zero means default for every field. */
+typedef struct swarp_budget {
+    double max_error;         /**< max screen pixels per texel, max(m_x, m_z) over the
+                                   view, > 0; 0: 1.0 */
+    uint32_t map_resolution;  /**< texels per side of one map; 0: 2048 */
+    uint32_t atlas_limit;     /**< largest texture side for the split atlas
+                                   ([RHS] §3.3.5), >= map_resolution not required; 0: 8192 */
+    uint32_t max_passes;      /**< most shadow (geometry) passes, 1..32; 0: 16 */
+    uint32_t _pad0;           /**< must be zero */
+    double time_budget_ns;    /**< frame time for shadows, ns; 0: no time limit */
+    double pass_cost_ns;      /**< one shadow pass at map_resolution, measured by the
+                                   caller; 0: 1.39e6 (fit to [RHS] Table 7.1) */
+    double blur_pass_cost_ns; /**< one separable prefilter blur pass over one map;
+                                   0: pass_cost_ns / 4 (assumption, docs/planning.md) */
+    uint32_t _reserved[4];
+} swarp_budget;
+
+typedef enum swarp_plan_warp {
+    SWARP_PLAN_WARP_DEFAULT = 0,       /**< = SWARP_PLAN_WARP_UNIFORM */
+    SWARP_PLAN_WARP_UNIFORM = 1,       /**< focused uniform map, n' = inf [RHS] §3.1 */
+    SWARP_PLAN_WARP_LISPSM_NOPT = 2,   /**< LiSPSM n_opt [RHS] (3.2) */
+    SWARP_PLAN_WARP_LISPSM_NREPAR = 3, /**< Lloyd's n_repar [RHS] (3.3)-(3.5) */
+    SWARP_PLAN_WARP_LISPSM_GMNPR = 4,  /**< λ_GMNPR [GMNPR] (8) */
+    SWARP_PLAN_WARP_LISPSM_PSEUDO = 5, /**< n_opt with pseudo-near/far 0.1, 0.1 [RHS] (4.2) */
+    SWARP_PLAN_WARP_PSM = 6,           /**< PSM, n' = n_repar(η = 1) [RHS] (3.4), [KOZ] */
+    SWARP_PLAN_WARP_FORCE_I32 = 0x7FFFFFFF
+} swarp_plan_warp;
+
+typedef enum swarp_plan_scheme {
+    SWARP_PLAN_SCHEME_DEFAULT = 0,     /**< = SWARP_PLAN_SCHEME_NONE */
+    SWARP_PLAN_SCHEME_NONE = 1,        /**< one map, no split */
+    SWARP_PLAN_SCHEME_PRACTICAL = 2,   /**< PSSM practical, λ = 0.5 [RHS] (3.8) */
+    SWARP_PLAN_SCHEME_LOG = 3,         /**< logarithmic [RHS] (3.7) */
+    SWARP_PLAN_SCHEME_FORCE_I32 = 0x7FFFFFFF
+} swarp_plan_scheme;
+
+typedef enum swarp_plan_stabilize {
+    SWARP_PLAN_STABILIZE_DEFAULT = 0,  /**< = SWARP_PLAN_STABILIZE_NONE */
+    SWARP_PLAN_STABILIZE_NONE = 1,
+    SWARP_PLAN_STABILIZE_APPROX64 = 2, /**< 64 scale levels + texel snap [RHS] §3.5 */
+    SWARP_PLAN_STABILIZE_FORCE_I32 = 0x7FFFFFFF
+} swarp_plan_stabilize;
+
+typedef enum swarp_plan_filter {
+    SWARP_PLAN_FILTER_DEFAULT = 0,     /**< = SWARP_PLAN_FILTER_NONE */
+    SWARP_PLAN_FILTER_NONE = 1,        /**< hard shadows */
+    SWARP_PLAN_FILTER_PCF = 2,         /**< percentage-closer filtering, no bleeding */
+    SWARP_PLAN_FILTER_VSM = 3,         /**< variance shadow map [VSM] (3.1)-(3.3) */
+    SWARP_PLAN_FILTER_MSM = 4,         /**< 4-moment shadow map (not in [VSM]) */
+    SWARP_PLAN_FILTER_EVSM = 5,        /**< exponential VSM [VSM] §4.2 */
+    SWARP_PLAN_FILTER_LVSM = 6,        /**< layered VSM [VSM] §4.1 */
+    SWARP_PLAN_FILTER_FORCE_I32 = 0x7FFFFFFF
+} swarp_plan_filter;
+
+/* Reason flags (swarp_plan.reasons): one bit per choice made or effect left
+ * out; swarp_plan_explain() turns each into a sentence. */
+#define SWARP_PLAN_WHY_ONE_MAP_MEETS      (1u << 0)  /**< one map meets the error budget */
+#define SWARP_PLAN_WHY_SPLITS_NEEDED      (1u << 1)  /**< fewest splits that meet the budget */
+#define SWARP_PLAN_WHY_WARP_LOWERS_ERROR  (1u << 2)  /**< the warp lowers the error at no pass */
+#define SWARP_PLAN_WHY_NO_WARP_NO_GAIN    (1u << 3)  /**< no warp lowers the error (duelling frusta) */
+#define SWARP_PLAN_WHY_NO_WARP_MOVING     (1u << 4)  /**< camera moves: warps cannot be stabilised */
+#define SWARP_PLAN_WHY_STABILIZE_MOVING   (1u << 5)  /**< stabilised because the camera moves */
+#define SWARP_PLAN_WHY_NO_STABILIZE_STATIC (1u << 6) /**< camera static: no stabilisation */
+#define SWARP_PLAN_WHY_INVERSE_PROJECTION (1u << 7)  /**< PSM with light behind: inverse projection [KOZ] */
+#define SWARP_PLAN_WHY_NO_INVERSE         (1u << 8)  /**< no inverse projection (light in front, or not PSM) */
+#define SWARP_PLAN_WHY_FILTER_SOFT        (1u << 9)  /**< filter because soft shadows are requested */
+#define SWARP_PLAN_WHY_NO_FILTER_HARD     (1u << 10) /**< no filter: hard shadows requested */
+#define SWARP_PLAN_WHY_LIXEL_PLANE        (1u << 11) /**< at least one lixel map [LIXEL] */
+#define SWARP_PLAN_WHY_NO_LIXEL_NONE      (1u << 12) /**< no plane of interest declared */
+#define SWARP_PLAN_WHY_NO_LIXEL_SKIPPED   (1u << 13) /**< a declared plane was left out (see plane_reason) */
+#define SWARP_PLAN_WHY_DEPTH_CLAMP        (1u << 14) /**< casters clamped to the light near plane */
+#define SWARP_PLAN_WHY_NO_CLAMP_DISALLOWED (1u << 15) /**< clamping not allowed by the needs */
+#define SWARP_PLAN_WHY_NO_CLAMP_WARPED    (1u << 16) /**< clamping left out: it breaks warped maps [RHS] §3.1.2 */
+#define SWARP_PLAN_WHY_BUDGET_UNMET       (1u << 17) /**< nothing meets the budget: most accurate within the pass limit */
+#define SWARP_PLAN_WHY_TIME_LIMITED       (1u << 18) /**< the time budget excluded chains that met the error budget */
+#define SWARP_PLAN_WHY_ATLAS_SHRINK       (1u << 19) /**< the atlas limit shrinks each split's map */
+#define SWARP_PLAN_WHY_NEAR_FAR_ADJUSTED  (1u << 20) /**< near/far fitted to the scene box [RHS] §3.3.1 */
+#define SWARP_PLAN_WHY_POINT_AS_DIRECTIONAL (1u << 21) /**< point light modelled as directional */
+#define SWARP_PLAN_WHY_PASS_LIMITED       (1u << 22) /**< the pass limit excluded chains */
+#define SWARP_PLAN_WHY_FORCED             (1u << 23) /**< chain given by the caller (swarp_plan_evaluate) */
+
+/* Per-plane outcome (swarp_plan.plane_reason[i]). */
+#define SWARP_PLAN_PLANE_USED           0u /**< a lixel map covers the plane */
+#define SWARP_PLAN_PLANE_CAMERA_ON_PLANE 1u /**< the camera lies on the plane: no front side */
+#define SWARP_PLAN_PLANE_LIGHT_GRAZING  2u /**< light from the other side or under 5° elevation */
+#define SWARP_PLAN_PLANE_NOT_VISIBLE    3u /**< the plane misses the view frustum */
+#define SWARP_PLAN_PLANE_NO_PASS_LEFT   4u /**< the pass limit (or time budget) is used up */
+#define SWARP_PLAN_PLANE_LIXEL_REFUSED  5u /**< swarp_lixel_matrix gave another error (e.g. singular) */
+
+/** The chosen chain.  All errors are Lloyd's m_x, m_z (screen pixels per
+ *  texel side); costs per the cost model of docs/planning.md.
+ *  C has one namespace for functions and typedefs, so the type is the struct
+ *  tag `struct swarp_plan` (the function is swarp_plan()), with the typedef
+ *  swarp_plan_result as a shorter name for the same type. */
+typedef struct swarp_plan {
+    swarp_plan_warp warp;             /**< the warp of every split */
+    swarp_plan_scheme scheme;         /**< split scheme (NONE for one map) */
+    uint32_t split_count;             /**< K, 1..SWARP_PLAN_MAX_SPLITS */
+    uint32_t map_resolution;          /**< texels per side of each split's map */
+    uint32_t atlas_tiles;             /**< atlas tiles per side, ceil(sqrt(K)) */
+    swarp_plan_stabilize stabilize;
+    uint32_t inverse_projection;      /**< 1: PSM with the light behind the camera [KOZ] */
+    uint32_t depth_clamp;             /**< 1: clamp casters to the light near plane */
+    double gamma;                     /**< angle view dir / direction to the light, rad in [0, pi] */
+    double near, far;                 /**< the view depth range planned for (after adjustment) */
+    double splits[SWARP_PLAN_MAX_SPLITS + 1]; /**< C_0 = near .. C_K = far */
+    double n_prime[SWARP_PLAN_MAX_SPLITS];    /**< warp parameter per split in light-space
+                                                   units; +INFINITY = uniform */
+    double split_max_mx[SWARP_PLAN_MAX_SPLITS];
+    double split_max_mz[SWARP_PLAN_MAX_SPLITS];
+    double max_mx, max_mz;            /**< over the whole view */
+    double max_error;                 /**< max(max_mx, max_mz), compared with the budget */
+    double error_area;                /**< max_mx * max_mz (texel-area error bound) */
+    uint32_t lixel_count;             /**< planes with a lixel map */
+    uint32_t lixel_planes[SWARP_PLAN_MAX_PLANES]; /**< their indices in needs->planes */
+    uint32_t plane_reason[SWARP_PLAN_MAX_PLANES]; /**< SWARP_PLAN_PLANE_* per declared plane */
+    double lixel_error;               /**< predicted pixels per texel on a lixel plane */
+    swarp_plan_filter filter;
+    uint32_t filter_layers;           /**< LVSM layers (4), else 0 */
+    double filter_width;              /**< kernel width in texels (0 without filter) */
+    double filter_exponent_pos;       /**< EVSM positive exponent c+ (40), else 0 */
+    double filter_exponent_neg;       /**< EVSM negative exponent c- (5), else 0 */
+    uint32_t shadow_passes;           /**< K + lixel_count */
+    uint32_t blur_passes;             /**< prefilter blur passes (2 per map and layer pair) */
+    double texels;                    /**< texels of all maps (atlas tiles used + lixel maps) */
+    double cost_ns;                   /**< predicted time of all passes */
+    uint32_t meets_budget;            /**< 1: error (and time) budget met */
+    uint32_t reasons;                 /**< SWARP_PLAN_WHY_* flags */
+    uint32_t candidates;              /**< candidate chains evaluated */
+    uint32_t plane_count;             /**< planes declared in the needs (plane_reason valid) */
+    uint32_t _reserved[4];
+} swarp_plan_result;
+
+/** A chain to evaluate as it is (swarp_plan_evaluate). */
+typedef struct swarp_plan_chain {
+    swarp_plan_warp warp;
+    swarp_plan_scheme scheme;   /**< NONE requires split_count 1 (0 means 1) */
+    uint32_t split_count;       /**< 0: 1 */
+    swarp_plan_stabilize stabilize;
+    uint32_t _reserved[4];
+} swarp_plan_chain;
+
+/** @brief Plan the cheapest chain that meets the budget.
+ *  Candidates: uniform, LiSPSM (n_opt, n_repar, λ_GMNPR, pseudo-near/far),
+ *  PSM (+ inverse projection when the light is behind) as one map; PSSM with
+ *  K = 2..16 splits (practical λ = 0.5 or logarithmic) unwarped, with n_opt
+ *  or with n_repar per split.  A moving camera admits only unwarped chains
+ *  (stabilised, [RHS] §3.5).  Chosen: the fewest passes whose predicted
+ *  max(m_x, m_z) <= budget->max_error (and cost <= time budget); ties go to
+ *  the lower error, then to the earlier (simpler) candidate.  If none meets
+ *  it: the most accurate chain within the pass limit and
+ *  SWARP_INFO_PLAN_BUDGET_UNMET.  Then the filter (soft shadows only), depth
+ *  clamping and lixel maps for declared lixel-friendly planes (passes left).
+ *  Error model [RHS] (2.3)-(2.8), generalised to any γ (docs/planning.md).
+ *  @param[in]  needs   scene; NULL or zeroed fields mean the defaults
+ *  @param[in]  budget  budget; NULL or zeroed fields mean the defaults
+ *  @param[out] out_plan the plan (untouched on error)
+ *  @return SWARP_OK; SWARP_INFO_PLAN_BUDGET_UNMET; SWARP_INFO_PLAN_POINT_LIGHT;
+ *          SWARP_ERR_NULL_POINTER (out_plan), SWARP_ERR_NON_FINITE,
+ *          SWARP_ERR_RESERVED_NONZERO, SWARP_ERR_UNKNOWN_ENUM,
+ *          SWARP_ERR_ZERO_VECTOR, SWARP_ERR_DEGENERATE (up parallel to dir),
+ *          SWARP_ERR_FOV, SWARP_ERR_NEAR_FAR, SWARP_ERR_OUT_OF_RANGE (aspect,
+ *          cone, soft_width, max_error, time, costs, max_passes > 32, scene
+ *          box min > max), SWARP_ERR_RESOLUTION (screen or map above 65536),
+ *          SWARP_ERR_PLAN_TOO_MANY_PLANES, SWARP_ERR_PLAN_EMPTY_VIEW. */
+SWARP_API swarp_status swarp_plan(const swarp_scene_needs* needs, const swarp_budget* budget,
+                                  struct swarp_plan* out_plan);
+
+/** @brief Predict one given chain (no choice of warp or splits): the same
+ *  error and cost model and the same filter / lixel / clamp decisions as
+ *  swarp_plan(), for reports and for callers that force a technique.
+ *  meets_budget says whether it meets the budget; the pass limit is not
+ *  enforced on the chain (lixel maps still use only passes left).
+ *  @return as swarp_plan (never SWARP_INFO_PLAN_BUDGET_UNMET), plus
+ *          SWARP_ERR_SPLIT_COUNT (K > 16, or K > 1 with SCHEME_NONE, or K = 1
+ *          with a split scheme) and SWARP_ERR_UNKNOWN_ENUM for the chain. */
+SWARP_API swarp_status swarp_plan_evaluate(const swarp_scene_needs* needs,
+                                           const swarp_budget* budget,
+                                           const swarp_plan_chain* chain,
+                                           struct swarp_plan* out_plan);
+
+/** @brief Readable text of a plan: the chain, the predicted error and cost,
+ *  and one line per reason flag and per left-out plane.  Locale-independent.
+ *  @param[out] out       text, NUL-terminated; may be NULL when capacity is 0
+ *  @param[in]  capacity  bytes available in out
+ *  @param[out] out_count bytes needed including the NUL (always written)
+ *  @return SWARP_OK; SWARP_ERR_CAPACITY (out untouched, *out_count = needed);
+ *          SWARP_ERR_NULL_POINTER (plan or out_count, or out with capacity > 0);
+ *          SWARP_ERR_UNKNOWN_ENUM (plan's enums). */
+SWARP_API swarp_status swarp_plan_explain(const struct swarp_plan* plan, char* out, size_t capacity,
+                                          size_t* out_count);
+
+/** @brief Short names for the plan's enums ("lispsm-nopt", "pssm-log",
+ *  "evsm", ...); never NULL ("?" for unknown values). */
+SWARP_API const char* swarp_plan_warp_name(swarp_plan_warp w);
+SWARP_API const char* swarp_plan_scheme_name(swarp_plan_scheme s);
+SWARP_API const char* swarp_plan_filter_name(swarp_plan_filter f);
 /* <<< api: plan */
 
 /* >>> api: extras (src/cube.c mindepth.c) */
+/* ---- [KOZ] §14.2.2 "Using Cube Maps": cube-map faces in post-projective space (src/cube.c)
+ *
+ * In the camera's post-projective space the view frustum is the unit cube
+ * [-1, 1]^3 and (almost) every light is a point P.  The shadow map is a cube
+ * map "with displaced centre" whose faces are the unit-cube faces that are
+ * BACK-FACING with respect to P (P on the inner side of the face plane, i.e.
+ * its distance d_i from P along the outward normal N_i is > 0): 3 to 5 faces
+ * for a light outside the cube, all 6 for a light inside.  Face i is rendered
+ * by a camera at P looking along N_i whose far plane is the face (distance
+ * d_i) and whose near plane is Z_1 d_i: the near planes form a small cube,
+ * Z_1 = Z_n/Z_f is the same for every face.
+ *
+ * The light is given HOMOGENEOUSLY, as the camera's view-projection applied to
+ * it: (p, 1) for a point light at p, (-d, 0) for a directional light
+ * travelling along d.  w > 0: the ordinary case, depth Z_n = Z_1, Z_f = 1 (in
+ * units of d_i).  w < 0 (light behind the camera, [KOZ] §14.2.1): P = xyz/w
+ * and the inverse-projection variant Z_n = -Z_1, Z_f = Z_1, which orders
+ * depths from the face towards P (light arriving from the far side).
+ * w = 0 (light at infinity in post-projective space): SWARP_ERR_CUBE_LIGHT_AT_INFINITY.
+ *
+ * Face eye spaces look down -z (OpenGL style); their x and y axes are the
+ * unit-cube axes listed at SWARP_CUBE_FACE_*, so a point S on face i has
+ * NDC (x, y) = (S . right_i, S . up_i) in that face's map.
+ */
+#define SWARP_CUBE_FACE_POS_X 0u /**< outward normal +x (axes of each face: docs/extras.md) */
+#define SWARP_CUBE_FACE_NEG_X 1u
+#define SWARP_CUBE_FACE_POS_Y 2u
+#define SWARP_CUBE_FACE_NEG_Y 3u
+#define SWARP_CUBE_FACE_POS_Z 4u
+#define SWARP_CUBE_FACE_NEG_Z 5u
+/** At most six faces. */
+#define SWARP_CUBE_MAX_FACES 6
+
+/** Options; zero means default. */
+typedef struct swarp_cube_options {
+    double z1;                     /**< Z_1 = Z_n/Z_f in (0, 1); 0 = default 0.01 */
+    swarp_depth_range depth_range; /**< of the face projections; 0 = [-1, 1] */
+    uint32_t _reserved[5];         /**< must be zero */
+} swarp_cube_options;
+
+/** One cube-map face. */
+typedef struct swarp_cube_face {
+    uint32_t face;        /**< SWARP_CUBE_FACE_*: the unit-cube face it lies on */
+    uint32_t inverse;     /**< 1 for the inverse-projection variant (w < 0) */
+    double distance;      /**< d_i: distance from P to the face plane (> 0) */
+    swarp_vec3 right;     /**< face eye x axis (post-projective space) */
+    swarp_vec3 up;        /**< face eye y axis */
+    swarp_vec3 normal;    /**< N_i, the view direction of the face camera */
+    swarp_mat4 view;      /**< post-projective space -> face eye space (eye at P) */
+    swarp_mat4 proj;      /**< face frustum: the face square at the far plane */
+    swarp_mat4 view_proj; /**< proj * view */
+} swarp_cube_face;
+
+/** @brief The cube-map faces of [KOZ] §14.2.2 for a light in post-projective
+ *  space, with their view, projection and view-projection matrices.
+ *  @param[in] ps_light light in post-projective space, homogeneous (see above)
+ *  @param[in] opt      options, or NULL for the defaults
+ *  @param[out] out     capacity faces (SWARP_CUBE_MAX_FACES always suffices),
+ *                      in SWARP_CUBE_FACE_* order
+ *  @param[out] out_count number of faces (3..6 unless P lies on a face plane)
+ *  @return SWARP_OK; SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
+ *  SWARP_ERR_RESERVED_NONZERO, SWARP_ERR_OUT_OF_RANGE (z1 outside (0, 1)),
+ *  SWARP_ERR_UNKNOWN_ENUM (depth_range), SWARP_ERR_CUBE_LIGHT_AT_INFINITY
+ *  (w = 0 or P too far for finite matrices), SWARP_ERR_DEGENERATE (no
+ *  back-facing face: cannot happen for finite P), SWARP_ERR_CAPACITY
+ *  (*out_count = faces needed, out untouched). */
+SWARP_API swarp_status swarp_cube_faces(const swarp_vec4* ps_light, const swarp_cube_options* opt,
+                                        swarp_cube_face* out, size_t capacity, size_t* out_count);
+
+/** @brief Texture coordinate and depth of a point for the cube map: the
+ *  computation of [KOZ] Listing 14-1.  With u = V - P,
+ *  a = max_i (u . N_i)/d_i over the back-facing faces, the point is looked up
+ *  in face argmax at the cube point S = P + u/a ("vertex position minus light
+ *  position", re-centred on the unit cube) and compared against the
+ *  projective transform of a with Z_n = Z_1, Z_f = 1 (or -Z_1, Z_1), i.e. the
+ *  NDC depth the face's view_proj gives V.
+ *  @param[in] ps_light, opt  as swarp_cube_faces
+ *  @param[in] ps_point V in post-projective space
+ *  @param[out] out_face SWARP_CUBE_FACE_* (may be NULL)
+ *  @param[out] out_texcoord S, a point on the unit cube's surface (may be NULL)
+ *  @param[out] out_depth NDC depth in opt->depth_range (may be NULL)
+ *  @return SWARP_OK; SWARP_INFO_CUBE_NEAR_CLIPPED (a < Z_1: inside the near
+ *  cube, the depth is outside the range); the errors of swarp_cube_faces
+ *  (but not CAPACITY); SWARP_ERR_CUBE_POINT_UNCOVERED (a <= 0). */
+SWARP_API swarp_status swarp_cube_lookup(const swarp_vec4* ps_light, const swarp_cube_options* opt,
+                                         const swarp_vec3* ps_point, uint32_t* out_face,
+                                         swarp_vec3* out_texcoord, double* out_depth);
+
+/* ---- [RHS] §4.3 min-depth near plane (src/mindepth.c)
+ *
+ * The nearest visible depth of the frame, read from a LINEAR depth buffer
+ * (view-space distance along the view direction, not radial distance and not
+ * the non-linear z-buffer value), becomes the largest near plane that clips
+ * nothing the camera saw.  [RHS] reduces the buffer on the GPU with a chain of
+ * 2x2 min "mip" passes (Listing A.2) and reads back the last 1x1 level.
+ * Depth values: finite and >= 0, or +INFINITY for "nothing here" (cleared).
+ */
+/** Scratch floats swarp_mindepth_pyramid needs for a w x h buffer. */
+#define SWARP_MINDEPTH_SCRATCH(w, h) ((((size_t)(w) + 1u) / 2u) * (((size_t)(h) + 1u) / 2u))
+
+/** @brief Minimum of a linear depth buffer by the 2x2 min pyramid of [RHS]
+ *  Listing A.2, on the CPU.  Each level halves the size rounding UP and an
+ *  odd last row/column takes the min of the texels that exist (Listing A.2's
+ *  wrap addressing with rounded-down sizes would skip them).
+ *  @param[in] depth  height rows of width floats, row r at depth + r*row_stride
+ *  @param[in] width, height  >= 1; @param[in] row_stride >= width (floats)
+ *  @param[out] scratch  SWARP_MINDEPTH_SCRATCH(width, height) floats (may be
+ *              NULL when that is 0, i.e. never; 1x1 needs 1)
+ *  @param[in] scratch_capacity  floats in scratch
+ *  @param[out] out_scratch_needed  written with the need (always)
+ *  @param[out] out_min  the minimum (+INFINITY if every value is +INFINITY)
+ *  @return SWARP_OK; SWARP_INFO_MINDEPTH_EMPTY (every value +INFINITY);
+ *  SWARP_ERR_NULL_POINTER, SWARP_ERR_INVALID_ARGUMENT (width or height 0,
+ *  row_stride < width), SWARP_ERR_NON_FINITE (a NaN or -INFINITY),
+ *  SWARP_ERR_OUT_OF_RANGE (a negative depth), SWARP_ERR_CAPACITY. */
+SWARP_API swarp_status swarp_mindepth_pyramid(const float* depth, uint32_t width, uint32_t height,
+                                              size_t row_stride, float* scratch,
+                                              size_t scratch_capacity, size_t* out_scratch_needed,
+                                              double* out_min);
+/** @brief The same minimum by a direct scan (the reference the pyramid is
+ *  tested against, and the cheaper choice on the CPU).  Statuses as
+ *  swarp_mindepth_pyramid without the scratch ones. */
+SWARP_API swarp_status swarp_mindepth_direct(const float* depth, uint32_t width, uint32_t height,
+                                             size_t row_stride, double* out_min);
+
+/** Options; zero means default. */
+typedef struct swarp_mindepth_options {
+    double margin;          /**< relative safety margin in [0, 1); 0 = default 1e-3
+                                 (near' = min_depth (1 - margin)) */
+    uint32_t _reserved[4];  /**< must be zero */
+} swarp_mindepth_options;
+
+/** @brief The adjusted near plane of [RHS] §4.3: the measured minimum depth
+ *  less a relative margin, never below the original near and always < far,
+ *  so nothing the depth buffer saw is clipped.
+ *  @param[in] n, f  the camera's near and far (0 < n < f)
+ *  @param[in] min_depth  measured minimum linear depth (>= 0 or +INFINITY)
+ *  @param[in] opt  or NULL; @param[out] out_near  the adjusted near plane
+ *  @return SWARP_OK; SWARP_INFO_MINDEPTH_EMPTY (min_depth >= f: near kept);
+ *  SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE, SWARP_ERR_NEAR_FAR,
+ *  SWARP_ERR_OUT_OF_RANGE (min_depth < 0, margin outside [0, 1)),
+ *  SWARP_ERR_RESERVED_NONZERO. */
+SWARP_API swarp_status swarp_mindepth_near(double n, double f, double min_depth,
+                                           const swarp_mindepth_options* opt, double* out_near);
 /* <<< api: extras */
 
 #ifdef __cplusplus

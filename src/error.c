@@ -17,6 +17,10 @@
 
 #define SW_HALF_PI (0.5 * SWARP_PI)
 
+_Static_assert(offsetof(swarp_error_config, _reserved) == 7 * sizeof(double),
+               "swarp_error_config layout");
+_Static_assert(sizeof(swarp_error_config) == 7 * sizeof(double) + 16, "swarp_error_config size");
+
 /* ---- checks -------------------------------------------------------------- */
 
 /* Everything of the config but near/far (the split functions ignore those). */

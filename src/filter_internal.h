@@ -29,6 +29,8 @@ static inline swarp_status sw_check_splits(const double* splits, uint32_t n_laye
         if (!sw_finite(splits[i])) return SWARP_ERR_NON_FINITE;
     for (uint32_t i = 0; i < n_layers; ++i)
         if (!(splits[i + 1] > splits[i])) return SWARP_ERR_NOT_INCREASING;
+    /* widths and the whole range must be representable (|s| up to ~1e307) */
+    if (!sw_finite(splits[n_layers] - splits[0])) return SWARP_ERR_OUT_OF_RANGE;
     return SWARP_OK;
 }
 

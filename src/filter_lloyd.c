@@ -10,6 +10,11 @@
  * (2^-24 ~ 6e-8) yet well above double rounding of a weighted mean (~1e-16). */
 #define SW_LLOYD_REL_TOL 1e-9
 #define SW_LLOYD_REL_GAP 1e-9
+/* A cluster is split by teleportation only if its weighted standard
+ * deviation exceeds 1e-6 of the range: the one-pass variance E[u^2] - m^2 in
+ * normalised units carries ~eps = 2e-16 of cancellation, i.e. a spurious
+ * sd of up to ~1.5e-8, and a cluster that narrow is one depth anyway. */
+#define SW_LLOYD_MIN_SPLIT_SD 1e-6
 
 /* Weight of a sample: its variance, optionally clamped ([VSM] §4.1.2). */
 static double sw_weight(double sigma2, double lo, double hi) {
@@ -69,21 +74,31 @@ SWARP_API swarp_status swarp_lvsm_lloyd(const double* mu, const double* sigma2, 
     for (size_t j = 0; j < count; ++j)
         if (!sw_finite(mu[j]) || !sw_finite(sigma2[j])) return SWARP_ERR_NON_FINITE;
 
+    /* Everything runs in normalised depth u = (x - s_0) / (s_N - s_0) in
+     * [0, 1] and with weights divided by the largest one, so no sum can
+     * overflow and far-from-origin depths (1e5 and more) keep their digits. */
     const double s_0 = splits_in[0], s_N = splits_in[n_layers];
     const double range = s_N - s_0;
     const uint32_t max_it = o.max_iterations ? o.max_iterations : SW_LLOYD_DEFAULT_ITERATIONS;
-    const double tol = o.tolerance > 0.0 ? o.tolerance : SW_LLOYD_REL_TOL * range;
-    const double gap = SW_LLOYD_REL_GAP * range;
+    const double tol = o.tolerance > 0.0 ? o.tolerance / range : SW_LLOYD_REL_TOL;
+    const double gap = SW_LLOYD_REL_GAP;
     const uint32_t k = n_layers - 1; /* inner splits = cluster means */
+    double w_max = 0.0;
+    for (size_t j = 0; j < count; ++j) {
+        double w = sw_weight(sigma2[j], o.weight_clamp_lo, o.weight_clamp_hi);
+        if (w > w_max) w_max = w;
+    }
 
     double c[SWARP_LVSM_MAX_LAYERS];
-    for (uint32_t i = 0; i < k; ++i) c[i] = splits_in[i + 1];
+    for (uint32_t i = 0; i < k; ++i) c[i] = (splits_in[i + 1] - s_0) / range;
 
     swarp_lloyd_report rep;
     memset(&rep, 0, sizeof rep);
     swarp_status result = SWARP_OK;
     if (k == 0) {
         rep.converged = 1; /* one layer: nothing to place */
+    } else if (!(w_max > 0.0)) {
+        result = SWARP_INFO_FILTER_NO_WEIGHT;
     } else {
         for (;;) {
             if (rep.iterations >= max_it) {
@@ -95,12 +110,12 @@ SWARP_API swarp_status swarp_lvsm_lloyd(const double* mu, const double* sigma2, 
             double W_total = 0.0;
             for (uint32_t i = 0; i < k; ++i) W[i] = X[i] = X2[i] = 0.0;
             for (size_t j = 0; j < count; ++j) {
-                double w = sw_weight(sigma2[j], o.weight_clamp_lo, o.weight_clamp_hi);
+                double w = sw_weight(sigma2[j], o.weight_clamp_lo, o.weight_clamp_hi) / w_max;
                 if (!(w > 0.0)) continue;
-                /* second-occluder estimate mu + sigma, clamped into the range */
-                double x = mu[j] + sqrt(sigma2[j] > 0.0 ? sigma2[j] : 0.0);
-                if (x < s_0) x = s_0;
-                if (x > s_N) x = s_N;
+                /* second-occluder estimate mu + sigma, clamped into the range
+                 * (compared before normalising: mu + sigma may overflow) */
+                double x_d = mu[j] + sqrt(sigma2[j] > 0.0 ? sigma2[j] : 0.0);
+                double x = (x_d <= s_0) ? 0.0 : (x_d >= s_N ? 1.0 : (x_d - s_0) / range);
                 uint32_t i = sw_nearest(c, k, x);
                 W[i] += w;
                 X[i] += w * x;
@@ -122,7 +137,7 @@ SWARP_API swarp_status swarp_lvsm_lloyd(const double* mu, const double* sigma2, 
                 double m = X[heavy] / W[heavy];
                 double var = X2[heavy] / W[heavy] - m * m;
                 double sd = var > 0.0 ? sqrt(var) : 0.0;
-                if (sd > gap) { /* a cluster concentrated on one depth cannot be split */
+                if (sd > SW_LLOYD_MIN_SPLIT_SD) { /* one depth cannot be split */
                     double nc[SWARP_LVSM_MAX_LAYERS];
                     uint32_t n = 0;
                     for (uint32_t i = 0; i < k; ++i) {
@@ -141,7 +156,7 @@ SWARP_API swarp_status swarp_lvsm_lloyd(const double* mu, const double* sigma2, 
                             nc[b] = nc[b - 1];
                             nc[b - 1] = tmp;
                         }
-                    sw_enforce_gap(nc, k, s_0, s_N, gap);
+                    sw_enforce_gap(nc, k, 0.0, 1.0, gap);
                     double shift = 0.0;
                     for (uint32_t i = 0; i < k; ++i) {
                         double d = fabs(nc[i] - c[i]);
@@ -156,7 +171,7 @@ SWARP_API swarp_status swarp_lvsm_lloyd(const double* mu, const double* sigma2, 
             double shift = 0.0;
             double nc[SWARP_LVSM_MAX_LAYERS];
             for (uint32_t i = 0; i < k; ++i) nc[i] = (W[i] > 0.0) ? X[i] / W[i] : c[i];
-            sw_enforce_gap(nc, k, s_0, s_N, gap);
+            sw_enforce_gap(nc, k, 0.0, 1.0, gap);
             for (uint32_t i = 0; i < k; ++i) {
                 double d = fabs(nc[i] - c[i]);
                 if (d > shift) shift = d;
@@ -169,9 +184,23 @@ SWARP_API swarp_status swarp_lvsm_lloyd(const double* mu, const double* sigma2, 
             }
         }
     }
-    splits_out[0] = s_0;
-    for (uint32_t i = 0; i < k; ++i) splits_out[i + 1] = c[i];
-    splits_out[n_layers] = s_N;
+    /* back to depth units; max_shift too */
+    double out[SWARP_LVSM_MAX_LAYERS + 1];
+    out[0] = s_0;
+    for (uint32_t i = 0; i < k; ++i) {
+        /* untouched splits come back bit-identical (NO_WEIGHT, one layer) */
+        out[i + 1] = (result == SWARP_INFO_FILTER_NO_WEIGHT) ? splits_in[i + 1] : s_0 + c[i] * range;
+    }
+    out[n_layers] = s_N;
+    /* The 1e-9 gap may be below one ulp of s_0 (say s_0 = 1e6 over a range of
+     * 1e-3): step to the next representable value so the splits stay strictly
+     * increasing (possible: the input had N + 1 distinct values in range). */
+    for (uint32_t i = 1; i < n_layers; ++i)
+        if (!(out[i] > out[i - 1])) out[i] = nextafter(out[i - 1], s_N);
+    for (uint32_t i = n_layers - 1; i > 0; --i)
+        if (!(out[i] < out[i + 1])) out[i] = nextafter(out[i + 1], s_0);
+    for (uint32_t i = 0; i <= n_layers; ++i) splits_out[i] = out[i];
+    rep.max_shift *= range;
     if (out_report) *out_report = rep;
     return result;
 }

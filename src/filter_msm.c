@@ -60,6 +60,11 @@ SWARP_API swarp_status swarp_msm_visibility(const double b[4], double z_f,
     if (!sw_finite(z_f)) return SWARP_ERR_NON_FINITE;
     if (b[1] < 0.0 || b[3] < 0.0) return SWARP_ERR_OUT_OF_RANGE;
     const double b1 = b[0], b2 = b[1], b3 = b[2], b4 = b[3];
+    /* Squares and products of the moments must stay finite (|b| < ~1e150);
+     * moments of depths in [0, 1] are in [0, 1]. */
+    if (!sw_finite(b1 * b1) || !sw_finite(b2 * b2) || !sw_finite(b1 * b2) ||
+        !sw_finite(z_f * z_f))
+        return SWARP_ERR_NON_FINITE;
 
     /* LDL^T of the Hankel matrix B = [1 b1 b2; b1 b2 b3; b2 b3 b4]. */
     double D22 = b2 - b1 * b1;
@@ -91,7 +96,10 @@ SWARP_API swarp_status swarp_msm_visibility(const double b[4], double z_f,
             w[0] = 1.0;
             w[1] = 0.0;
         }
-        *out_visibility = sw_clamp01(sw_lit_mass(x, w, 2, z_f, SW_MSM_ATOM_SNAP * (x[1] - x[0])));
+        double v = sw_lit_mass(x, w, 2, z_f, SW_MSM_ATOM_SNAP * (x[1] - x[0]));
+        if (!sw_finite(v) || !sw_finite(x[0]) || !sw_finite(x[1]))
+            return SWARP_ERR_NON_FINITE; /* not moments of any distribution */
+        *out_visibility = sw_clamp01(v);
         return SWARP_INFO_FILTER_MSM_DEGENERATE;
     }
 
@@ -129,6 +137,7 @@ SWARP_API swarp_status swarp_msm_visibility(const double b[4], double z_f,
         G = 1.0 - (z2 * z3 - b1 * (z2 + z3) + b2) / ((z_f - z2) * (z_f - z3));
     }
     if (!sw_finite(G)) G = (z_f > z3) ? 1.0 : 0.0; /* limits of the formulas */
+    if (!sw_finite(G)) return SWARP_ERR_NON_FINITE;
     *out_visibility = sw_clamp01(1.0 - G);
     return SWARP_OK;
 }

@@ -76,7 +76,8 @@ SWARP_API swarp_status swarp_pcss_search_width(double w_light, double n_light, d
     if (!out_w_search) return SWARP_ERR_NULL_POINTER;
     swarp_status st = sw_check_near(w_light, n_light, d_r);
     if (st != SWARP_OK) return st;
-    *out_w_search = w_light * (d_r - n_light) / d_r;
+    /* the ratio is in [0, 1): no overflow for any finite w_light */
+    *out_w_search = w_light * ((d_r - n_light) / d_r);
     return SWARP_OK;
 }
 
@@ -98,6 +99,6 @@ SWARP_API swarp_status swarp_pcss_filter_width(double w_penumbra, double n_light
     if (!out_w_filter) return SWARP_ERR_NULL_POINTER;
     swarp_status st = sw_check_near(w_penumbra, n_light, d_r);
     if (st != SWARP_OK) return st;
-    *out_w_filter = w_penumbra * n_light / d_r;
+    *out_w_filter = w_penumbra * (n_light / d_r); /* ratio in (0, 1] */
     return SWARP_OK;
 }

@@ -68,13 +68,23 @@ static const char* f_names[F_COUNT] = {
 
 typedef struct {
     double splits_u[N_LAYERS + 1], splits_l[N_LAYERS + 1];
+    double delta_l, band_l; /* for the Lloyd splits: kept inside thin layers */
     double c32, c16;
 } filt_cfg;
 
-static void layer_moments(const double* z, int n, const double* splits, double* lm) {
+/* Lloyd may place two splits close together: overlap and band must stay
+ * below the thinnest layer (and half of it) to be valid. */
+static void fit_overlap(filt_cfg* cfg) {
+    double thin = 1.0;
+    for (int i = 0; i < N_LAYERS; ++i) thin = fmin(thin, cfg->splits_l[i + 1] - cfg->splits_l[i]);
+    cfg->delta_l = fmin(DELTA, 0.4 * thin);
+    cfg->band_l = fmin(BAND, 0.4 * cfg->delta_l);
+}
+
+static void layer_moments(const double* z, int n, const double* splits, double delta, double* lm) {
     for (int i = 0; i < N_LAYERS; ++i) {
         double p, q;
-        check(swarp_lvsm_layer_interval(splits, N_LAYERS, (uint32_t)i, DELTA, &p, &q), "interval");
+        check(swarp_lvsm_layer_interval(splits, N_LAYERS, (uint32_t)i, delta, &p, &q), "interval");
         lm[2 * i] = lm[2 * i + 1] = 0.0;
         for (int k = 0; k < n; ++k) {
             double m[2];
@@ -105,11 +115,11 @@ static void eval_filters(const double* z, int n, double t, const filt_cfg* cfg, 
     *pcf_out = (double)lit / n;
     check(swarp_vsm_chebyshev(M, t, MIN_VAR, &out[F_VSM]), "vsm");
     double lm[2 * N_LAYERS];
-    layer_moments(z, n, cfg->splits_u, lm);
+    layer_moments(z, n, cfg->splits_u, DELTA, lm);
     check(swarp_lvsm_visibility(lm, cfg->splits_u, N_LAYERS, DELTA, BAND, t, MIN_VAR,
                                 &out[F_LVSM_U]), "lvsm");
-    layer_moments(z, n, cfg->splits_l, lm);
-    check(swarp_lvsm_visibility(lm, cfg->splits_l, N_LAYERS, DELTA, BAND, t, MIN_VAR,
+    layer_moments(z, n, cfg->splits_l, cfg->delta_l, lm);
+    check(swarp_lvsm_visibility(lm, cfg->splits_l, N_LAYERS, cfg->delta_l, cfg->band_l, t, MIN_VAR,
                                 &out[F_LVSM_L]), "lvsm lloyd");
     check(swarp_evsm_visibility(E32, t, cfg->c32, cfg->c32, MIN_VAR, &out[F_EVSM32]), "evsm");
     check(swarp_evsm_visibility(E16, t, cfg->c16, cfg->c16, MIN_VAR, &out[F_EVSM16]), "evsm");
@@ -134,6 +144,8 @@ static void lloyd_splits(const double* img, int w, int h, double* splits) {
     for (int i = 0; i <= N_LAYERS; ++i) init[i] = (double)i / N_LAYERS;
     swarp_lloyd_report rep;
     check(swarp_lvsm_lloyd(mu, s2, n, NULL, init, N_LAYERS, splits, &rep), "lloyd");
+    fprintf(stderr, "Lloyd: %u iterations, %u teleports, converged %u\n", rep.iterations,
+            rep.teleports, rep.converged);
 }
 
 static void init_cfg(filt_cfg* cfg) {
@@ -166,6 +178,7 @@ static int run_table(void) {
         filt_cfg cfg;
         init_cfg(&cfg);
         lloyd_splits(&depth_img[0][0], SZ, SZ, cfg.splits_l);
+        fit_overlap(&cfg);
         double sum[F_COUNT] = {0}, mx[F_COUNT] = {0};
         long cnt = 0;
         for (int y = R; y < SZ - R; ++y)
@@ -219,6 +232,7 @@ static int run_plot(void) {
     filt_cfg cfg;
     init_cfg(&cfg);
     memcpy(cfg.splits_l, cfg.splits_u, sizeof cfg.splits_l); /* the plot shows uniform LVSM */
+    fit_overlap(&cfg);
     printf("# x  pcf_B vsm_B lvsm_B evsm_B msm_B  pcf_C vsm_C lvsm_C evsm_C msm_C\n");
     for (int x = RP; x < W - RP; ++x) {
         double z[2 * RP + 1];

@@ -65,7 +65,7 @@ START_TEST(nopt_equalises_mz_at_near_and_far_overhead) {
     swarp_error_config cfg = {0};
     cfg.theta = 30 * TC_DEG;
     cfg.res_ix = 1024, cfg.res_iy = 768, cfg.res_s = 1024, cfg.res_t = 1024;
-    for (int k = 0; k < 2000; ++k) {
+    for (int k = 0; k < 500; ++k) {
         double n = tc_logu(&s, 1e-3, 1e3), f = n * tc_logu(&s, 1.01, 1e6);
         double n_opt = 0;
         /* overhead light: the warp frustum's depth d is the view depth f - n */
@@ -96,7 +96,7 @@ END_TEST
 
 START_TEST(nopt_equals_lambda_lispsm_at_right_angle) {
     uint64_t s = 0x5eed0002;
-    for (int k = 0; k < 1000; ++k) {
+    for (int k = 0; k < 500; ++k) {
         double n, f, phi, n_opt = 0, lambda = 0;
         rand_frame(&s, &n, &f, &phi);
         ck_assert_int_eq(swarp_warp_nopt(f - n, n, f, &n_opt), SWARP_OK);
@@ -158,7 +158,7 @@ END_TEST
 
 START_TEST(nopt_pseudo_reduces_to_32_and_equalises_pseudo_planes) {
     uint64_t s = 0x5eed0003;
-    for (int k = 0; k < 2000; ++k) {
+    for (int k = 0; k < 500; ++k) {
         double z0 = tc_logu(&s, 1e-2, 1e2), z1 = z0 * tc_logu(&s, 1.05, 1e4);
         double d = tc_logu(&s, 1e-3, 1e5);
         double a = 0, b = 0;
@@ -187,14 +187,16 @@ START_TEST(eta_matches_paper_and_is_continuous) {
     const double thetas[] = {1, 10, 22.5, 30, 45, 60, 89};
     for (size_t i = 0; i < sizeof thetas / sizeof thetas[0]; ++i) {
         double T = thetas[i], prev = -2.0;
+        int bad = 0; /* counted, asserted once: Check is slow per assertion */
         for (int k = 0; k <= 9000; ++k) {
             double g = 90.0 * k / 9000.0, eta = 0;
-            ck_assert_int_eq(swarp_warp_eta(g * TC_DEG, T * TC_DEG, &eta), SWARP_OK);
-            ck_assert_double_eq_tol(eta, lit_eta_deg(g, T), 1e-12);
-            ck_assert(eta >= -1.0 && eta <= 0.0);
-            ck_assert(eta >= prev - 1e-15); /* non-decreasing in gamma */
+            bad += swarp_warp_eta(g * TC_DEG, T * TC_DEG, &eta) != SWARP_OK;
+            bad += !(fabs(eta - lit_eta_deg(g, T)) <= 1e-12);
+            bad += !(eta >= -1.0 && eta <= 0.0);
+            bad += !(eta >= prev - 1e-15); /* non-decreasing in gamma */
             prev = eta;
         }
+        ck_assert_int_eq(bad, 0);
         /* continuity at gamma_a, gamma_b, gamma_c (radians) */
         double t = T * TC_DEG;
         double br[3] = {t / 3.0, t, t + 0.3 * (TC_HALF_PI - t)};
@@ -239,7 +241,7 @@ static double geom_extent(double g, double T, double n, double f) {
 
 START_TEST(wlz_is_the_projected_frustum_width) {
     uint64_t s = 0x5eed0004;
-    for (int k = 0; k < 2000; ++k) {
+    for (int k = 0; k < 500; ++k) {
         double n = tc_logu(&s, 1e-2, 1e2), f = n * tc_logu(&s, 1.05, 1e4);
         double T = tc_uniform(&s, 5, 80) * TC_DEG, W_e = 2.0 * n * tan(T), W = 0;
         /* overhead light: W_lz = f - n exactly as in the error model */
@@ -281,7 +283,7 @@ END_TEST
 
 START_TEST(nrepar_at_minus_one_zero_one) {
     uint64_t s = 0x5eed0005;
-    for (int k = 0; k < 2000; ++k) {
+    for (int k = 0; k < 500; ++k) {
         double n = tc_logu(&s, 1e-2, 1e2), f = n * tc_logu(&s, 1.05, 1e4);
         double alpha = f / n, W = tc_logu(&s, 1e-2, 1e4), out = 0, ref = 0;
         ck_assert_int_eq(swarp_warp_nrepar(-1.0, alpha, W, &out), SWARP_INFO_WARP_UNIFORM);
@@ -329,7 +331,7 @@ END_TEST
 
 START_TEST(gmnpr_psi_offset_F_match_eq2) {
     uint64_t s = 0x5eed0006;
-    for (int k = 0; k < 3000; ++k) {
+    for (int k = 0; k < 800; ++k) {
         double n, f, phi;
         rand_frame(&s, &n, &f, &phi);
         double th = tc_uniform(&s, 1e-3, TC_HALF_PI), l = tc_logu(&s, 1e-4, 1e4);
@@ -406,7 +408,7 @@ END_TEST
 
 START_TEST(gmnpr_lambda_equalises_F_for_theta_at_least_phi) {
     uint64_t s = 0x5eed0007;
-    for (int k = 0; k < 3000; ++k) {
+    for (int k = 0; k < 800; ++k) {
         double n, f, phi, l = 0;
         rand_frame(&s, &n, &f, &phi);
         /* sweep including both ends of [phi, pi/2] */
@@ -465,14 +467,16 @@ START_TEST(gmnpr_lambda_continuous_positive_and_unbounded_below_phi) {
                               (f - n + (f + n) * tan(phi) / tan(th)), 1e-9);
         /* positive, finite, non-increasing in theta on (0, phi], down to denormals */
         double prev = 0.0;
+        int bad = 0;
         for (double t = phi; t > 0.0; t *= 0.5) {
             double v = -1;
             swarp_status st = swarp_gmnpr_lambda(t, phi, n, f, &v);
-            ck_assert(st == SWARP_OK || st == SWARP_INFO_GMNPR_ADJUSTED || st == SWARP_INFO_WARP_UNIFORM);
-            ck_assert(isfinite(v) && v > 0.0);
-            ck_assert(v >= prev);
+            bad += !(st == SWARP_OK || st == SWARP_INFO_GMNPR_ADJUSTED || st == SWARP_INFO_WARP_UNIFORM);
+            bad += !(isfinite(v) && v > 0.0);
+            bad += !(v >= prev);
             prev = v;
         }
+        ck_assert_int_eq(bad, 0);
         /* grows without bound */
         ck_assert_int_eq(swarp_gmnpr_lambda(1e-200, phi, n, f, &l), SWARP_INFO_GMNPR_ADJUSTED);
         ck_assert(l > 1e190 * c);
@@ -483,13 +487,13 @@ START_TEST(gmnpr_lambda_continuous_positive_and_unbounded_below_phi) {
     ck_assert_int_eq(swarp_gmnpr_lambda(4.9e-324, 1.5, 1e-6, 1e6, &l), SWARP_INFO_WARP_UNIFORM);
     ck_assert(l == DBL_MAX);
     /* never NaN, never Inf for theta in (0, pi/2] */
-    int bad = 0;
+    int bad2 = 0;
     for (int k = 1; k <= 100000; ++k) {
         double th = TC_HALF_PI * k / 100000.0, v = -1;
         swarp_status st = swarp_gmnpr_lambda(th, TC_PI / 6, 1, 100, &v);
-        bad += swarp_status_is_error(st) || !(isfinite(v) && v > 0);
+        bad2 += swarp_status_is_error(st) || !(isfinite(v) && v > 0);
     }
-    ck_assert_int_eq(bad, 0);
+    ck_assert_int_eq(bad2, 0);
 }
 END_TEST
 
@@ -497,7 +501,7 @@ END_TEST
 
 START_TEST(gmnpr_lambda_lispsm_matches_eq9) {
     uint64_t s = 0x5eed0009;
-    for (int k = 0; k < 2000; ++k) {
+    for (int k = 0; k < 500; ++k) {
         double n, f, phi, l = 0;
         rand_frame(&s, &n, &f, &phi);
         double th = tc_uniform(&s, 1e-4, TC_HALF_PI);
@@ -527,7 +531,7 @@ END_TEST
 
 START_TEST(glpr_makes_F_linear_in_z) {
     uint64_t s = 0x5eed000a;
-    for (int k = 0; k < 2000; ++k) {
+    for (int k = 0; k < 500; ++k) {
         double n, f, phi, l = 0;
         rand_frame(&s, &n, &f, &phi);
         double th = tc_uniform(&s, phi + 1e-3, TC_HALF_PI);

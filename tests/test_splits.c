@@ -841,6 +841,234 @@ START_TEST(select_bad_inputs) {
     ck_assert_uint_eq(i, 1);
 }
 END_TEST
+
+/* ======================================================================= */
+/* Split schemes and the configuration's error curve [RHS] §3.3.2-3.4      */
+/* ======================================================================= */
+
+START_TEST(splits_cover_range_without_gap_or_overlap) {
+    rng_state = 41;
+    const swarp_split_scheme schemes[5] = {SWARP_SCHEME_DEFAULT, SWARP_SCHEME_UNIFORM, SWARP_SCHEME_LOG,
+                                           SWARP_SCHEME_PRACTICAL, SWARP_SCHEME_PSEUDO};
+    for (int it = 0; it < 400; ++it) {
+        swarp_split_options o;
+        memset(&o, 0, sizeof o);
+        o.scheme = schemes[it % 5];
+        o.count = 1 + (uint32_t)(rng_next() % SWARP_SPLIT_MAX_COUNT);
+        o.lambda = rng_uniform(0, 1);
+        if (o.scheme == SWARP_SCHEME_PSEUDO) {
+            o.pseudo_near = rng_uniform(0, 0.3);
+            o.pseudo_far = rng_uniform(0, 0.3);
+        }
+        double n = rng_uniform(0.01, 10), f = n * rng_uniform(1.5, 1e5);
+        double c[SWARP_SPLIT_MAX_COUNT + 1];
+        size_t cnt;
+        ck_assert_int_eq(swarp_cascade_splits(n, f, &o, c, SWARP_SPLIT_MAX_COUNT + 1, &cnt), SWARP_OK);
+        uint32_t m = o.count;
+        ck_assert_uint_eq(cnt, m + 1);
+        ck_assert(c[0] == n && c[m] == f); /* whole range, exactly */
+        for (uint32_t i = 0; i < m; ++i) ck_assert(c[i + 1] > c[i]);
+        /* independent evaluation of (3.6)-(3.8), (4.1) at the inner splits */
+        double lam = o.scheme == SWARP_SCHEME_DEFAULT ? 0.5
+                     : o.scheme == SWARP_SCHEME_UNIFORM ? 0.0
+                     : o.scheme == SWARP_SCHEME_LOG ? 1.0 : o.lambda;
+        double a = n, b = f;
+        if (o.scheme == SWARP_SCHEME_PSEUDO) {
+            a = n + o.pseudo_near * (f - n);
+            b = f - o.pseudo_far * (f - n);
+        }
+        double e[SWARP_SPLIT_MAX_COUNT + 1];
+        practical(a, b, lam, (int)m, e);
+        for (uint32_t i = 1; i < m; ++i) ck_assert_double_eq_tol(c[i], e[i], 1e-12 * e[i]);
+        /* every depth of [n, f] lies in exactly one split (half-open, last
+         * closed), and depth selection finds it */
+        for (int k = 0; k < 50; ++k) {
+            double z = k == 0 ? n : k == 1 ? f : k < 2 + (int)m ? c[k - 1] : n * pow(f / n, rng_uniform(0, 1));
+            if (z > f) z = f;
+            int owners = 0;
+            uint32_t own = 0;
+            for (uint32_t i = 0; i < m; ++i)
+                if ((z >= c[i] && z < c[i + 1]) || (i == m - 1 && z == f)) {
+                    ++owners;
+                    own = i;
+                }
+            ck_assert_int_eq(owners, 1);
+            uint32_t sel;
+            ck_assert_int_eq(swarp_cascade_select_depth(c, m, z, &sel), SWARP_OK);
+            ck_assert_uint_eq(sel, own);
+        }
+    }
+}
+END_TEST
+
+static double curve_max(const double* v, size_t n) {
+    double m = 0;
+    for (size_t i = 0; i < n; ++i) m = fmax(m, v[i]);
+    return m;
+}
+static double curve_min(const double* v, size_t n) {
+    double m = INFINITY;
+    for (size_t i = 0; i < n; ++i) m = fmin(m, v[i]);
+    return m;
+}
+
+static swarp_error_config fig_cfg(double n, double f) {
+    swarp_error_config cfg;
+    memset(&cfg, 0, sizeof cfg);
+    cfg.near = n;
+    cfg.far = f;
+    cfg.theta = PI / 6; /* Θ = 30°, Fig. 3.15 / 3.18 */
+    cfg.res_ix = cfg.res_iy = 1024;
+    cfg.res_s = cfg.res_t = 1024;
+    return cfg;
+}
+
+START_TEST(error_pssm_halves_when_splits_double) {
+    /* [RHS] §3.3.4, Fig. 3.15: PSSM (lambda 0.5), uniform maps, overhead
+     * light: the maximum error (at the near plane) roughly halves when the
+     * split count doubles.  Band: both maxima are set by the first split
+     * C_1 = U/m + L_m with U = (f - n)/2 (halves exactly when m doubles) and
+     * L_m = n (1 + (f/n)^(1/m))/2 (shrinks by a factor in (0, 1)), so the
+     * ratio lies in [1/2 - q/2, 1/2 + q/2] with q = L_m/C_1(m).  For f/n >=
+     * 500 and m <= 8, q <= 0.1 (checked below), hence the band [0.45, 0.55]. */
+    const double fs[2] = {500, 1000};
+    for (int fi = 0; fi < 2; ++fi) {
+        const double n = 1, f = fs[fi];
+        swarp_error_config cfg = fig_cfg(n, f);
+        double prev_mx = 0, prev_mz = 0;
+        for (uint32_t m = 2; m <= 16; m *= 2) {
+            swarp_split_options o;
+            memset(&o, 0, sizeof o);
+            o.count = m; /* default scheme: PSSM lambda 0.5 */
+            double c[17], np[16];
+            size_t cnt;
+            ck_assert_int_eq(swarp_cascade_splits(n, f, &o, c, 17, &cnt), SWARP_OK);
+            for (uint32_t i = 0; i < m; ++i) np[i] = INFINITY; /* uniform */
+            static double z[16 * 64], mx[16 * 64], mz[16 * 64];
+            size_t k;
+            ck_assert_int_eq(swarp_cascade_error_curve(&cfg, c, np, m, 64, z, mx, mz, 16 * 64, &k), SWARP_OK);
+            ck_assert_uint_eq(k, m * 64);
+            double cmx = curve_max(mx, k), cmz = curve_max(mz, k);
+            /* the maximum sits at the near plane (first sample) */
+            ck_assert(mx[0] == cmx && mz[0] == cmz);
+            /* the sampled curve includes both ends of every split, and the
+             * curves are convex: its maximum is the exact maximum */
+            double smx, smz;
+            ck_assert_int_eq(swarp_error_split_max(&cfg, c, np, m, NULL, NULL, &smx, &smz), SWARP_OK);
+            ck_assert_double_eq_tol(cmx, smx, 1e-12 * smx);
+            ck_assert_double_eq_tol(cmz, smz, 1e-12 * smz);
+            /* uniform (2.7): m_x max = C_1/n; (2.8): m_z max = (C_1 - n)/(2 tan Θ n) */
+            ck_assert_double_eq_tol(cmx, c[1] / n, 1e-9 * cmx);
+            ck_assert_double_eq_tol(cmz, (c[1] - n) / (2 * tan(PI / 6) * n), 1e-9 * cmz);
+            if (prev_mx > 0) {
+                double q = 0.5 * n * (1 + pow(f / n, 2.0 / m)) / prev_mx; /* L_{m/2}/C_1(m/2) */
+                ck_assert(q <= 0.1);
+                ck_assert_msg(cmx / prev_mx >= 0.45 && cmx / prev_mx <= 0.55, "mx ratio %g", cmx / prev_mx);
+                ck_assert_msg(cmz / prev_mz >= 0.45 && cmz / prev_mz <= 0.55, "mz ratio %g", cmz / prev_mz);
+            }
+            prev_mx = cmx;
+            prev_mz = cmz;
+        }
+    }
+}
+END_TEST
+
+START_TEST(error_lispsm_log_flatter_than_lispsm_pssm) {
+    /* [RHS] §3.4.1, Fig. 3.18: LiSPSM (n_opt per split) with logarithmic
+     * splits has a flatter m_z than with PSSM(lambda 0.5): smaller max/min
+     * over the whole range. */
+    const double n = 1, f = 500;
+    swarp_error_config cfg = fig_cfg(n, f);
+    double ratio[2];
+    for (int s = 0; s < 2; ++s) {
+        swarp_split_options o;
+        memset(&o, 0, sizeof o);
+        o.count = 4;
+        o.scheme = s ? SWARP_SCHEME_LOG : SWARP_SCHEME_PRACTICAL;
+        o.lambda = 0.5;
+        double c[5], np[4];
+        size_t cnt;
+        ck_assert_int_eq(swarp_cascade_splits(n, f, &o, c, 5, &cnt), SWARP_OK);
+        ck_assert_int_eq(swarp_cascade_nopt(c, 4, 0, 0, np), SWARP_OK);
+        for (int i = 0; i < 4; ++i) /* overhead n_opt = n_i + sqrt(n_i f_i) */
+            ck_assert_double_eq_tol(np[i], c[i] + sqrt(c[i] * c[i + 1]), 1e-9 * np[i]);
+        static double z[4 * 200], mz[4 * 200];
+        size_t k;
+        ck_assert_int_eq(swarp_cascade_error_curve(&cfg, c, np, 4, 200, z, NULL, mz, 800, &k), SWARP_OK);
+        ratio[s] = curve_max(mz, k) / curve_min(mz, k);
+    }
+    ck_assert_msg(ratio[1] < ratio[0], "log %g pssm %g", ratio[1], ratio[0]);
+}
+END_TEST
+
+START_TEST(error_curve_samples_borders) {
+    double c[4] = {1, 5, 20, 100}, np[3] = {INFINITY, 12, INFINITY};
+    swarp_error_config cfg = fig_cfg(1, 100);
+    double z[30], mx[30], mz[30];
+    size_t k;
+    ck_assert_int_eq(swarp_cascade_error_curve(&cfg, c, np, 3, 10, z, mx, mz, 30, &k), SWARP_OK);
+    for (int i = 0; i < 3; ++i) {
+        ck_assert(z[i * 10] == c[i]); /* just after the border: the new split */
+        if (i < 2) ck_assert(z[i * 10 + 9] == nextafter(c[i + 1], 0)); /* left limit */
+        /* just after the border == the split's own model at its near plane */
+        swarp_error_config sc = cfg;
+        sc.near = c[i];
+        sc.far = c[i + 1];
+        double ex, ez;
+        swarp_error_mx(&sc, c[i], np[i], &ex);
+        swarp_error_mz(&sc, c[i], np[i], &ez);
+        ck_assert_double_eq_tol(mx[i * 10], ex, 1e-12 * ex);
+        ck_assert_double_eq_tol(mz[i * 10], ez, 1e-12 * ez);
+    }
+    ck_assert(z[29] == 100);
+    /* capacity and bad input leave outputs alone */
+    double zs[30];
+    memcpy(zs, z, sizeof z);
+    ck_assert_int_eq(swarp_cascade_error_curve(&cfg, c, np, 3, 10, z, mx, mz, 29, &k), SWARP_ERR_CAPACITY);
+    ck_assert_uint_eq(k, 30);
+    ck_assert_int_eq(swarp_cascade_error_curve(&cfg, c, np, 3, 1, z, mx, mz, 30, &k), SWARP_ERR_OUT_OF_RANGE);
+    double bad_np[3] = {INFINITY, -1, 2};
+    ck_assert(swarp_status_is_error(swarp_cascade_error_curve(&cfg, c, bad_np, 3, 10, z, mx, mz, 30, &k)));
+    ck_assert_mem_eq(z, zs, sizeof z);
+}
+END_TEST
+
+START_TEST(splits_bad_inputs) {
+    double c[5] = {-1, -1, -1, -1, -1}, cs[5];
+    memcpy(cs, c, sizeof c);
+    size_t cnt = 99;
+    swarp_split_options o;
+    memset(&o, 0, sizeof o);
+    ck_assert_int_eq(swarp_cascade_splits(0, 10, &o, c, 5, &cnt), SWARP_ERR_NEAR_FAR);
+    ck_assert_int_eq(swarp_cascade_splits(10, 10, &o, c, 5, &cnt), SWARP_ERR_NEAR_FAR);
+    ck_assert_int_eq(swarp_cascade_splits(1, NAN, &o, c, 5, &cnt), SWARP_ERR_NON_FINITE);
+    ck_assert_int_eq(swarp_cascade_splits(1, 10, &o, c, 5, NULL), SWARP_ERR_NULL_POINTER);
+    o.scheme = (swarp_split_scheme)17;
+    ck_assert_int_eq(swarp_cascade_splits(1, 10, &o, c, 5, &cnt), SWARP_ERR_UNKNOWN_ENUM);
+    o.scheme = SWARP_SCHEME_PRACTICAL;
+    o.lambda = 1.5;
+    ck_assert_int_eq(swarp_cascade_splits(1, 10, &o, c, 5, &cnt), SWARP_ERR_OUT_OF_RANGE);
+    o.lambda = 0.5;
+    o.scheme = SWARP_SCHEME_PSEUDO;
+    o.pseudo_near = 0.6;
+    o.pseudo_far = 0.5;
+    ck_assert_int_eq(swarp_cascade_splits(1, 10, &o, c, 5, &cnt), SWARP_ERR_OUT_OF_RANGE);
+    o.pseudo_near = o.pseudo_far = 0;
+    o.count = 65;
+    ck_assert_int_eq(swarp_cascade_splits(1, 10, &o, c, 5, &cnt), SWARP_ERR_SPLIT_COUNT);
+    o.count = 0;
+    o._reserved[1] = 4;
+    ck_assert_int_eq(swarp_cascade_splits(1, 10, &o, c, 5, &cnt), SWARP_ERR_RESERVED_NONZERO);
+    o._reserved[1] = 0;
+    ck_assert_uint_eq(cnt, 99);
+    ck_assert_int_eq(swarp_cascade_splits(1, 10, &o, c, 4, &cnt), SWARP_ERR_CAPACITY);
+    ck_assert_uint_eq(cnt, 5);
+    ck_assert_mem_eq(c, cs, sizeof c);
+    double np[2] = {-3, -3}, s2[3] = {1, 2, 2};
+    ck_assert_int_eq(swarp_cascade_nopt(s2, 2, 0, 0, np), SWARP_ERR_NOT_INCREASING);
+    ck_assert(np[0] == -3);
+}
+END_TEST
 /* ======================================================================= */
 
 static Suite* splits_suite(void) {
@@ -865,6 +1093,13 @@ static Suite* splits_suite(void) {
     tcase_add_test(t, bias_normal_offset_and_slope);
     tcase_add_test(t, bias_receiver_plane_gradient);
     tcase_add_test(t, bias_bad_inputs);
+    suite_add_tcase(s, t);
+    t = tcase_create("schemes");
+    tcase_add_test(t, splits_cover_range_without_gap_or_overlap);
+    tcase_add_test(t, error_pssm_halves_when_splits_double);
+    tcase_add_test(t, error_lispsm_log_flatter_than_lispsm_pssm);
+    tcase_add_test(t, error_curve_samples_borders);
+    tcase_add_test(t, splits_bad_inputs);
     suite_add_tcase(s, t);
     t = tcase_create("select");
     tcase_add_test(t, select_best_never_worse_than_depth);

@@ -54,6 +54,7 @@
     X(PFNGLUNIFORM1FPROC, glUniform1f)                                 \
     X(PFNGLUNIFORM1FVPROC, glUniform1fv)                               \
     X(PFNGLUNIFORM2FPROC, glUniform2f)                                 \
+    X(PFNGLUNIFORM2FVPROC, glUniform2fv)                               \
     X(PFNGLUNIFORM3FPROC, glUniform3f)                                 \
     X(PFNGLUNIFORM4FVPROC, glUniform4fv)                               \
     X(PFNGLUNIFORMMATRIX4FVPROC, glUniformMatrix4fv)                   \
@@ -127,6 +128,7 @@ DEMO_GL_FUNCS(DEMO_GL_DECLARE_)
 #define glUniform1f dgl_glUniform1f
 #define glUniform1fv dgl_glUniform1fv
 #define glUniform2f dgl_glUniform2f
+#define glUniform2fv dgl_glUniform2fv
 #define glUniform3f dgl_glUniform3f
 #define glUniform4fv dgl_glUniform4fv
 #define glUniformMatrix4fv dgl_glUniformMatrix4fv

@@ -33,7 +33,11 @@ typedef struct options {
     const char* out;
     const char* obj;
     const char* test;
-    float blend, grid;
+    float blend, grid, offset;
+    double pseudo_near, pseudo_far;
+    double scheme_np, scheme_fp;
+    demo_select select;
+    int camera_given;
     double path[6 * 256]; /**< --camera FILE: eye and dir per frame */
     int path_count;
 } options;
@@ -42,10 +46,13 @@ static void usage(void) {
     printf(
         "usage: demo [options]\n"
         "  (no options)            default gallery into ./out/ and a summary table\n"
-        "  --technique T           uniform lispsm repar gmnpr psm pssm pssm-lispsm lixel\n"
+        "  --technique T           uniform lispsm repar gmnpr pseudo psm pssm pssm-lispsm\n"
+        "                          pssm-stable lixel\n"
+        "  --pseudo NP,FP          pseudo-near/far fractions for 'pseudo' (default 0.05,0)\n"
         "  --splits K              maps for the pssm techniques (1..16, default 4)\n"
-        "  --scheme S              practical[:LAMBDA] | uniform | log (default practical:0.5)\n"
-        "  --filter F              none | pcf2 | pcf3 | pcf5 (default pcf3)\n"
+        "  --scheme S              practical[:LAMBDA] | uniform | log | pseudo:NP,FP[,LAMBDA]\n"
+        "                          (default practical:0.5; NP, FP eye distances, [RHS] (4.1))\n"
+        "  --filter F              none | pcf2 | pcf3 | pcf5 | poisson | vsm | evsm (default pcf3)\n"
         "  --light-angle E[,A]     sun elevation E and azimuth A in degrees (default 35,115)\n"
         "  --light-dir X,Y,Z       direction the light travels (instead of --light-angle)\n"
         "  --camera P|FILE         default | measure | street | high | room, or a path file of\n"
@@ -55,9 +62,11 @@ static void usage(void) {
         "  --map RES               texels per map side (default 1024)\n"
         "  --grid N                texels per cell in the texel-grid picture (default 8)\n"
         "  --blend F               split blend band, fraction of a split (default 0.1)\n"
+        "  --select depth|best     split selection: eye depth or best resolution (ZZB09)\n"
+        "  --offset K              normal-offset bias in texels (default 1)\n"
         "  --obj FILE              a Wavefront OBJ instead of the built-in scene\n"
         "  --out DIR               output directory (default ./out)\n"
-        "  --test images|iou|measure  headless checks (exit 0 pass, 1 fail, 77 skip)\n");
+        "  --test images|iou|measure|select  headless checks (exit 0 pass, 1 fail, 77 skip)\n");
 }
 
 static int parse_options(int argc, char** argv, options* o) {
@@ -75,6 +84,9 @@ static int parse_options(int argc, char** argv, options* o) {
     o->map = 1024;
     o->out = "out";
     o->blend = 0.1f;
+    o->offset = 1.0f;
+    o->pseudo_near = 0.05;
+    o->pseudo_far = 0.0;
     o->grid = 8;
     for (int i = 1; i < argc; ++i) {
         const char* a = argv[i];
@@ -106,7 +118,7 @@ static int parse_options(int argc, char** argv, options* o) {
             }
         } else if (!strcmp(a, "--scheme")) {
             NEED();
-            int s = demo_scheme_parse(val, &o->scheme_lambda);
+            int s = demo_scheme_parse(val, &o->scheme_lambda, &o->scheme_np, &o->scheme_fp);
             if (s < 0) {
                 fprintf(stderr, "demo: unknown scheme %s\n", val);
                 return -1;
@@ -114,12 +126,9 @@ static int parse_options(int argc, char** argv, options* o) {
             o->scheme = (demo_scheme)s;
         } else if (!strcmp(a, "--filter")) {
             NEED();
-            static const char* f[DEMO_FILTER_COUNT] = {"none", "pcf2", "pcf3", "pcf5"};
-            int k = -1;
-            for (int j = 0; j < DEMO_FILTER_COUNT; ++j)
-                if (!strcmp(val, f[j])) k = j;
+            int k = demo_filter_parse(val);
             if (k < 0) {
-                fprintf(stderr, "demo: unknown filter %s (none pcf2 pcf3 pcf5)\n", val);
+                fprintf(stderr, "demo: unknown filter %s (none pcf2 pcf3 pcf5 poisson vsm evsm)\n", val);
                 return -1;
             }
             o->filter = (demo_filter)k;
@@ -143,6 +152,7 @@ static int parse_options(int argc, char** argv, options* o) {
         } else if (!strcmp(a, "--camera")) {
             NEED();
             o->camera = val;
+            o->camera_given = 1;
         } else if (!strcmp(a, "--frames")) {
             NEED();
             o->frames = atoi(val);
@@ -166,6 +176,28 @@ static int parse_options(int argc, char** argv, options* o) {
         } else if (!strcmp(a, "--blend")) {
             NEED();
             o->blend = (float)atof(val);
+        } else if (!strcmp(a, "--select")) {
+            NEED();
+            if (!strcmp(val, "depth")) o->select = DEMO_SELECT_DEPTH;
+            else if (!strcmp(val, "best")) o->select = DEMO_SELECT_BEST;
+            else {
+                fprintf(stderr, "demo: --select depth|best\n");
+                return -1;
+            }
+        } else if (!strcmp(a, "--pseudo")) {
+            NEED();
+            if (sscanf(val, "%lf,%lf", &o->pseudo_near, &o->pseudo_far) != 2 ||
+                !(o->pseudo_near >= 0 && o->pseudo_far >= 0 && o->pseudo_near + o->pseudo_far < 1)) {
+                fprintf(stderr, "demo: --pseudo NP,FP with NP, FP >= 0, NP + FP < 1\n");
+                return -1;
+            }
+        } else if (!strcmp(a, "--offset")) {
+            NEED();
+            o->offset = (float)atof(val);
+            if (!(o->offset >= 0 && o->offset <= 16)) {
+                fprintf(stderr, "demo: --offset 0..16 texels\n");
+                return -1;
+            }
         } else if (!strcmp(a, "--obj")) {
             NEED();
             o->obj = val;
@@ -230,8 +262,8 @@ static int camera_preset(const char* name, int w, int h, swarp_camera* c) {
         c->dir = (swarp_vec3){220, -160, -480};
         c->far = 1000;
     } else if (!strcmp(name, "room")) {
-        c->eye = (swarp_vec3){48, 8, 350};
-        c->dir = (swarp_vec3){22, -7, -30};
+        c->eye = (swarp_vec3){-52, 12, 48};
+        c->dir = (swarp_vec3){-23, -11, -40};
         c->near = 0.5;
         c->far = 600;
     } else if (!strcmp(name, "path")) {
@@ -299,6 +331,8 @@ typedef struct tech_result {
     double min_nonblank; /**< smallest non-blank fraction of the pictures */
     demo_image shaded, sampling, grid, splits, light;
     const char* source;
+    int own_view; /**< rendered from another camera than the sheet's */
+    demo_shadow sh; /**< the configuration that was rendered */
 } tech_result;
 
 static int cmp_d(const void* a, const void* b) {
@@ -334,6 +368,8 @@ static int light_view_picture(demo_renderer* r, const demo_view* v, const demo_s
     int side = v->h < v->w ? v->h : v->w;
     int tile = side / (cols > rows ? cols : rows);
     if (demo_image_alloc(out, tile * cols, tile * rows)) return -1;
+    const uint8_t white[3] = {255, 255, 255};
+    demo_image_fill(out, 0, 0, out->w, out->h, white);
     int errors = 0;
     for (int i = 0; i < k; ++i) {
         demo_shadow one = *sh;
@@ -354,7 +390,10 @@ static int light_view_picture(demo_renderer* r, const demo_view* v, const demo_s
         demo_image t;
         if (read_picture(r, tile, tile, &t)) return -1;
         const uint8_t black[3] = {0, 0, 0};
-        demo_draw_frustum(&t, &sh->light[i], v, sh->split[i], sh->split[i + 1], black, i == 0);
+        /* split frustum for cascades, the whole view for lixel maps */
+        int whole = sh->select == DEMO_SELECT_LIXEL;
+        demo_draw_frustum(&t, &sh->light[i], v, whole ? sh->near : sh->split[i],
+                          whole ? sh->far : sh->split[i + 1], black, i == 0);
         char lab[32];
         snprintf(lab, sizeof lab, "map %d", i);
         if (k > 1) demo_image_label(&t, 6, 6, 1, lab);
@@ -375,7 +414,7 @@ static int run_technique(const options* o, demo_renderer* r, const demo_view* v,
                          tech_result* res) {
     memset(res, 0, sizeof *res);
     res->tech = t;
-    if (t == DEMO_TECH_PSSM || t == DEMO_TECH_PSSM_LISPSM)
+    if (demo_technique_is_split((demo_technique)t))
         snprintf(res->label, sizeof res->label, "%s%d", demo_technique_name(t), splits);
     else
         snprintf(res->label, sizeof res->label, "%s", demo_technique_name(t));
@@ -385,16 +424,22 @@ static int run_technique(const options* o, demo_renderer* r, const demo_view* v,
     req.splits = splits;
     req.scheme = o->scheme;
     req.scheme_lambda = o->scheme_lambda;
+    req.pseudo_near = o->pseudo_near;
+    req.pseudo_far = o->pseudo_far;
+    req.scheme_np = o->scheme_np;
+    req.scheme_fp = o->scheme_fp;
+    req.select = o->select;
     req.map_res = o->map;
     req.screen_w = v->w;
     req.screen_h = v->h;
     demo_shadow sh;
     res->setup_us = time_setup(v, box, &req, &sh);
-    if (res->setup_us < 0) return -1;
+    if (res->setup_us < 0) return -2;
     res->source = sh.source;
+    res->sh = sh;
     res->passes = sh.count + 1;
     res->texels = (double)sh.count * o->map * o->map;
-    res->gl_errors += demo_render_shadow(r, &sh, res->shadow_ms);
+    res->gl_errors += demo_render_shadow(r, &sh, o->filter, res->shadow_ms);
     for (int i = 0; i < sh.count; ++i) res->shadow_ms_total += res->shadow_ms[i];
 
     demo_main_params p;
@@ -407,6 +452,7 @@ static int run_technique(const options* o, demo_renderer* r, const demo_view* v,
     p.filter = o->filter;
     p.blend = sh.count > 1 ? o->blend : 0.0f;
     p.grid = o->grid;
+    p.normal_offset = o->offset;
     p.vw = v->w;
     p.vh = v->h;
     /* shaded view, then the measurement from the same pass's float targets */
@@ -494,9 +540,15 @@ static void print_measure(const tech_result* r) {
     }
 }
 
-static int make_sheet(const options* o, tech_result* res, int n) {
-    /* rows: techniques; columns: shaded, sampling rate, texel grid, splits */
-    int cw = 360, ch = (int)lround(360.0 * res[0].shaded.h / res[0].shaded.w);
+static int make_sheet(const options* o, tech_result* all, int n_all) {
+    /* rows: techniques seen from the same camera; columns: shaded, sampling
+     * rate, texel grid, splits */
+    tech_result* res[DEMO_TECH_COUNT];
+    int n = 0;
+    for (int i = 0; i < n_all; ++i)
+        if (!all[i].own_view) res[n++] = &all[i];
+    if (n == 0) return 0;
+    int cw = 360, ch = (int)lround(360.0 * res[0]->shaded.h / res[0]->shaded.w);
     int hdr = 28;
     demo_image sheet;
     if (demo_image_alloc(&sheet, 4 * cw, hdr + n * ch)) return -1;
@@ -506,7 +558,7 @@ static int make_sheet(const options* o, tech_result* res, int n) {
                            "split colours (5.1)"};
     for (int c = 0; c < 4; ++c) demo_image_text(&sheet, c * cw + 8, 8, 2, cols[c], black);
     for (int i = 0; i < n; ++i) {
-        demo_image* src[4] = {&res[i].shaded, &res[i].sampling, &res[i].grid, &res[i].splits};
+        demo_image* src[4] = {&res[i]->shaded, &res[i]->sampling, &res[i]->grid, &res[i]->splits};
         for (int c = 0; c < 4; ++c) {
             demo_image small;
             if (demo_image_resize(src[c], cw, ch, &small)) return -1;
@@ -540,7 +592,12 @@ static demo_ctx* open_context(void) {
     return ctx;
 }
 
-static int run_gallery(const options* o, int single, double* out_min_nonblank) {
+typedef struct gallery_report {
+    double min_nonblank;          /**< smallest non-blank fraction of any picture */
+    int produced[DEMO_TECH_COUNT]; /**< 1: all pictures of technique t written */
+} gallery_report;
+
+static int run_gallery(const options* o, int single, gallery_report* rep) {
     demo_view v;
     memset(&v, 0, sizeof v);
     v.w = o->w;
@@ -586,15 +643,35 @@ static int run_gallery(const options* o, int single, double* out_min_nonblank) {
             }
             continue;
         }
-        int splits = (t == DEMO_TECH_PSSM || t == DEMO_TECH_PSSM_LISPSM) ? o->splits : 1;
-        if (run_technique(o, &r, &v, &scene.box, (demo_technique)t, splits, 1, &res[n])) {
+        int splits = demo_technique_is_split((demo_technique)t) ? o->splits : 1;
+        /* the lixel maps are for the room corner: without an explicit
+         * --camera the gallery looks at it with the room preset (and keeps
+         * it off the same-view sheet) */
+        demo_view lv = v;
+        int own_view = t == DEMO_TECH_LIXEL && !o->camera_given && !o->obj;
+        if (own_view) {
+            if (camera_preset("room", o->w, o->h, &lv.cam)) return 2;
+            demo_view_update(&lv);
+        }
+        int e = run_technique(o, &r, own_view ? &lv : &v, &scene.box, (demo_technique)t, splits,
+                              1, &res[n]);
+        if (e == -2 && !single) {
+            /* the library refused the technique itself (not implemented in
+             * the linked library): say so and go on */
+            printf("%-14s skipped: the library's setup refused it (see above)\n",
+                   demo_technique_name((demo_technique)t));
+            free_result(&res[n]);
+            continue;
+        }
+        if (e) {
             fprintf(stderr, "demo: %s failed\n", demo_technique_name((demo_technique)t));
             free_result(&res[n]);
             rc = 1;
             continue;
         }
-        printf("%-14s done: %s/%s_*.png (matrices from %s)\n", res[n].label, o->out, res[n].label,
-               res[n].source);
+        res[n].own_view = own_view;
+        printf("%-14s done: %s/%s_*.png (matrices from %s%s)\n", res[n].label, o->out,
+               res[n].label, res[n].source, own_view ? "; room camera" : "");
         if (single) {
             printf("  timing: setup %.2f us (median of 101 calls);", res[n].setup_us);
             for (int k = 0; k < res[n].passes - 1; ++k)
@@ -604,15 +681,16 @@ static int run_gallery(const options* o, int single, double* out_min_nonblank) {
             print_measure(&res[n]);
         }
         if (res[n].gl_errors) rc = 1;
-        if (out_min_nonblank && res[n].min_nonblank < *out_min_nonblank)
-            *out_min_nonblank = res[n].min_nonblank;
+        if (rep) {
+            if (res[n].min_nonblank < rep->min_nonblank) rep->min_nonblank = res[n].min_nonblank;
+            rep->produced[t] = 1;
+        }
         ++n;
     }
     if (n > 0 && !single && make_sheet(o, res, n)) rc = 1;
     if (n > 0) {
-        static const char* fname[DEMO_FILTER_COUNT] = {"none", "pcf2", "pcf3", "pcf5"};
         printf("\nsummary (%dx%d, map %d^2, camera %s, filter %s; %s)\n", o->w, o->h, o->map,
-               o->camera, fname[o->filter],
+               o->camera, demo_filter_name(o->filter),
                demo_have_error_model() ? "predicted m from the library"
                                        : "error model not linked: predictions n/a");
         printf("%-14s %9s %6s %10s %9s %9s %10s %10s %9s %9s\n", "technique", "setup_us",
@@ -663,6 +741,12 @@ static int run_frames(const options* o) {
     }
     int t = o->technique < 0 ? DEMO_TECH_UNIFORM : o->technique;
     int rc = 0;
+    /* flicker: a fixed world point's position inside its texel.  Texels
+     * that slide under the scene (unstabilised maps) change the fraction
+     * from frame to frame; snapped maps ([RHS] §3.5) keep it. */
+    const swarp_vec3 probe = {5, 0, v.cam.eye.z - 80};
+    double prev_frac[2] = {NAN, NAN};
+    int prev_map = -1;
     for (int f = 0; f < o->frames; ++f) {
         if (o->path_count > 0) {
             /* a camera path file: one "ex ey ez dx dy dz" line per frame,
@@ -682,9 +766,31 @@ static int run_frames(const options* o) {
             rc = 1;
             break;
         }
-        printf("frame %d/%d: setup %.2f us, %d shadow passes %.2f ms, main %.2f ms, gl errors %d\n",
+        /* the probe's map by eye depth and its texel coordinates */
+        double dz = (probe.x - v.cam.eye.x) * v.cam.dir.x + (probe.y - v.cam.eye.y) * v.cam.dir.y +
+                    (probe.z - v.cam.eye.z) * v.cam.dir.z;
+        dz /= sqrt(v.cam.dir.x * v.cam.dir.x + v.cam.dir.y * v.cam.dir.y + v.cam.dir.z * v.cam.dir.z);
+        uint32_t mi = 0;
+        swarp_cascade_select_depth(res.sh.split, (size_t)res.sh.count, dz, &mi);
+        swarp_vec4 h;
+        swarp_mat4_transform(&res.sh.light[mi], &probe, &h);
+        double ts = (h.x / h.w * 0.5 + 0.5) * res.sh.viewport[mi][0];
+        double tt = (h.y / h.w * 0.5 + 0.5) * res.sh.viewport[mi][1];
+        double frac[2] = {ts - floor(ts), tt - floor(tt)};
+        double drift = NAN;
+        if ((int)mi == prev_map) {
+            double a = fabs(frac[0] - prev_frac[0]), b = fabs(frac[1] - prev_frac[1]);
+            a = fmin(a, 1 - a);
+            b = fmin(b, 1 - b);
+            drift = fmax(a, b);
+        }
+        prev_frac[0] = frac[0];
+        prev_frac[1] = frac[1];
+        prev_map = (int)mi;
+        printf("frame %d/%d: setup %.2f us, %d shadow passes %.2f ms, main %.2f ms, gl errors %d, "
+               "probe in map %u, sub-texel drift %.4f texel\n",
                f + 1, o->frames, res.setup_us, res.passes - 1, res.shadow_ms_total, res.main_ms,
-               res.gl_errors);
+               res.gl_errors, mi, drift);
         fflush(stdout);
         if (res.gl_errors) rc = 1;
         free_result(&res);
@@ -794,7 +900,7 @@ static int test_iou(const options* o, demo_ctx* ctx) {
             ++fails;
             continue;
         }
-        int errs = demo_render_shadow(&r, &sh, NULL);
+        int errs = demo_render_shadow(&r, &sh, DEMO_FILTER_PCF2, NULL);
         demo_main_params p;
         memset(&p, 0, sizeof p);
         memcpy(p.view, v.view, sizeof p.view);
@@ -882,18 +988,128 @@ static int test_measure(const options* o) {
     return ran ? 0 : EXIT_SKIP;
 }
 
+/* The shader's map selection against the library's CPU references, pixel
+ * by pixel: swarp_cascade_select_depth and swarp_cascade_select_best for
+ * PSSM(4), swarp_lixel_select for the lixel maps.  A few pixels may differ
+ * where float (GPU) and double (CPU) disagree right on a border. */
+static int test_select(const options* o) {
+    demo_view v;
+    memset(&v, 0, sizeof v);
+    v.w = o->w;
+    v.h = o->h;
+    demo_scene scene;
+    if (demo_scene_default(&scene)) return 1;
+    demo_renderer r;
+    if (demo_render_init(&r, &scene, v.w, v.h, o->map, DEMO_MAX_SPLITS)) return 1;
+    float* tex = malloc(sizeof(float) * 4 * (size_t)v.w * v.h);
+    float* pos = malloc(sizeof(float) * 4 * (size_t)v.w * v.h);
+    int fails = 0;
+    struct {
+        demo_technique t;
+        demo_select sel;
+        const char* camera;
+    } cases[3] = {{DEMO_TECH_PSSM, DEMO_SELECT_DEPTH, "default"},
+                  {DEMO_TECH_PSSM, DEMO_SELECT_BEST, "high"},
+                  {DEMO_TECH_LIXEL, DEMO_SELECT_LIXEL, "room"}};
+    for (int c = 0; c < 3 && tex && pos; ++c) {
+        if (camera_preset(cases[c].camera, v.w, v.h, &v.cam)) return 1;
+        light_from_options(o, &v.light);
+        demo_view_update(&v);
+        demo_shadow_request req;
+        memset(&req, 0, sizeof req);
+        req.technique = cases[c].t;
+        req.splits = 4;
+        req.scheme_lambda = 0.5;
+        req.select = cases[c].sel;
+        req.map_res = o->map;
+        req.screen_w = v.w;
+        req.screen_h = v.h;
+        demo_shadow sh;
+        if (demo_shadow_setup(&v.cam, &v.light, &scene.box, &req, &sh)) {
+            ++fails;
+            continue;
+        }
+        int errs = demo_render_shadow(&r, &sh, DEMO_FILTER_PCF2, NULL);
+        demo_main_params p;
+        memset(&p, 0, sizeof p);
+        memcpy(p.view, v.view, sizeof p.view);
+        memcpy(p.proj, v.proj, sizeof p.proj);
+        p.light_dir[1] = -1;
+        p.mode = DEMO_MODE_SHADED;
+        p.vw = v.w;
+        p.vh = v.h;
+        errs += demo_render_main(&r, &sh, &p, NULL);
+        demo_render_read_aux(&r, tex, pos);
+        swarp_bias_map maps[DEMO_MAX_SPLITS];
+        for (int i = 0; i < sh.count; ++i) {
+            memset(&maps[i], 0, sizeof maps[i]);
+            maps[i].world_to_clip = sh.light[i];
+            maps[i].res_s = sh.viewport[i][0];
+            maps[i].res_t = sh.viewport[i][1];
+            maps[i].depth = SWARP_DEPTH_NEG_ONE_TO_ONE;
+        }
+        long n = 0, diff = 0;
+        int hist[DEMO_MAX_SPLITS] = {0};
+        for (size_t k = 0; k < (size_t)v.w * v.h; ++k) {
+            if (pos[4 * k + 3] < 0) continue; /* sky */
+            swarp_vec3 q = {pos[4 * k], pos[4 * k + 1], pos[4 * k + 2]};
+            double z = tex[4 * k + 3];
+            uint32_t depth_i = 0, want = 0;
+            swarp_status st = swarp_cascade_select_depth(sh.split, (size_t)sh.count, z, &depth_i);
+            if (sh.select == DEMO_SELECT_DEPTH) {
+                want = depth_i;
+            } else if (sh.select == DEMO_SELECT_BEST) {
+                st = swarp_cascade_select_best(maps, (size_t)sh.count, &q, depth_i, &want, NULL);
+            } else {
+                st = swarp_lixel_select(sh.light, (size_t)(sh.count - 1), &q, &want);
+            }
+            if (swarp_status_is_error(st)) continue;
+            int got = (int)tex[4 * k + 2];
+            ++n;
+            if (got >= 0 && got < DEMO_MAX_SPLITS) hist[got]++;
+            diff += got != (int)want;
+        }
+        double frac = n ? (double)diff / n : 1;
+        int used = 0;
+        for (int i = 0; i < sh.count; ++i) used += hist[i] > 0;
+        /* every map must actually be chosen somewhere, or the test says
+         * nothing about the selection */
+        int ok = errs == 0 && n > 1000 && frac <= 0.005 && used >= 2;
+        printf("select %-6s %-5s: %ld pixels, %ld differ from the library (%.3f%%), %d maps used %s\n",
+               demo_technique_name(cases[c].t),
+               cases[c].sel == DEMO_SELECT_DEPTH ? "depth" : cases[c].sel == DEMO_SELECT_BEST ? "best" : "lixel",
+               n, diff, 100 * frac, used, ok ? "ok" : "FAIL");
+        fails += !ok;
+    }
+    free(tex);
+    free(pos);
+    demo_render_free(&r);
+    demo_scene_free(&scene);
+    return fails ? 1 : 0;
+}
+
 static int test_images(const options* o) {
     /* the gallery at small size: every picture exists and is not blank */
     options q = *o;
-    double nonblank = 1.0;
-    int rc = run_gallery(&q, 0, &nonblank);
+    gallery_report rep;
+    memset(&rep, 0, sizeof rep);
+    rep.min_nonblank = 1.0;
+    int rc = run_gallery(&q, 0, &rep);
+    double nonblank = rep.min_nonblank;
     if (rc) return rc == 2 ? 1 : rc;
     int fails = 0, checked = 0;
     const char* what[6] = {"shaded", "sampling", "splits", "grid", "light", "error"};
+    int produced = 0;
     for (int t = 0; t < DEMO_TECH_COUNT; ++t) {
-        if (!demo_technique_available((demo_technique)t)) continue;
+        if (!rep.produced[t]) {
+            if (demo_technique_available((demo_technique)t))
+                printf("note: %s was refused by the library's setup\n",
+                       demo_technique_name((demo_technique)t));
+            continue;
+        }
+        ++produced;
         char label[48];
-        if (t == DEMO_TECH_PSSM || t == DEMO_TECH_PSSM_LISPSM)
+        if (demo_technique_is_split((demo_technique)t))
             snprintf(label, sizeof label, "%s%d", demo_technique_name((demo_technique)t), q.splits);
         else
             snprintf(label, sizeof label, "%s", demo_technique_name((demo_technique)t));
@@ -919,6 +1135,7 @@ static int test_images(const options* o) {
     printf("images: %d files checked, %d bad; least non-blank picture: %.1f%% of pixels\n",
            checked, fails, 100 * nonblank);
     if (nonblank < 0.01) ++fails;
+    if (produced < 2) ++fails;
     return fails ? 1 : 0;
 }
 
@@ -941,6 +1158,7 @@ int main(int argc, char** argv) {
         int rc;
         if (!strcmp(o.test, "iou")) rc = test_iou(&o, ctx);
         else if (!strcmp(o.test, "measure")) rc = test_measure(&o);
+        else if (!strcmp(o.test, "select")) rc = test_select(&o);
         else {
             fprintf(stderr, "demo: unknown test %s\n", o.test);
             rc = 2;

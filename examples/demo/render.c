@@ -6,6 +6,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <math.h>
 #include <time.h>
 
 double demo_now_ms(void) {
@@ -13,6 +14,31 @@ double demo_now_ms(void) {
     clock_gettime(CLOCK_MONOTONIC, &ts);
     return (double)ts.tv_sec * 1e3 + (double)ts.tv_nsec * 1e-6;
 }
+
+static const char* const filter_names[DEMO_FILTER_COUNT] = {"none", "pcf2", "pcf3", "pcf5",
+                                                           "poisson", "vsm", "evsm"};
+
+const char* demo_filter_name(demo_filter f) {
+    return (unsigned)f < DEMO_FILTER_COUNT ? filter_names[f] : "?";
+}
+
+int demo_filter_parse(const char* name) {
+    for (int i = 0; i < DEMO_FILTER_COUNT; ++i)
+        if (strcmp(name, filter_names[i]) == 0) return i;
+    return -1;
+}
+
+/* The moment pass (VSM / EVSM): the GLSL twins of swarp_vsm_moments and
+ * swarp_evsm_moments (docs/filtering.md) on the window depth. */
+static const char* const moment_fs =
+    "uniform int u_kind;\n"
+    "uniform float u_c;\n"
+    "layout(location = 0) out vec4 o_m;\n"
+    "void main() {\n"
+    "  float x = gl_FragCoord.z;\n"
+    "  if (u_kind == 0) o_m = vec4(x, x * x, 0.0, 0.0);\n"
+    "  else { float p = exp(u_c * x), n = -exp(-u_c * x); o_m = vec4(p, p * p, n, n * n); }\n"
+    "}\n";
 
 static const char* const depth_vs =
     "layout(location = 0) in vec3 a_p;\n"
@@ -31,41 +57,116 @@ static const char* const main_vs =
     "  gl_Position = u_proj * vs;\n"
     "}\n";
 
-/* Split selection by eye depth (ZSXL06, [RHS] §3.3.3) with a blend band at
- * the far end of each split.  TEMPORARY mirror of the selection rule until
- * the splits stage ships its CPU reference and GLSL twin. */
+/* Map selection, mirroring the library's CPU references:
+ *   u_select 0: by eye depth, swarp_cascade_select_depth [RHS] §3.3.3 (a
+ *     depth on a border belongs to the split that starts there), with the
+ *     blend band of swarp_cascade_blend (weight w of split i, 1 - w of i+1);
+ *   u_select 1: best resolution, swarp_cascade_select_best (ZZB09): among
+ *     the maps covering p the one with the smallest world texel L_texel
+ *     (the texel_world twin of docs/splits.md), else the depth choice;
+ *   u_select 2: swarp_lixel_select: the first map whose clip volume holds
+ *     p in x and y (w > 0), else the last map (the fallback). */
 static const char* const main_fs =
     "in vec3 v_p; in vec3 v_n; in vec3 v_c; in float v_depth;\n"
     "layout(location = 0) out vec4 o_color;\n"
     "layout(location = 1) out vec4 o_tex;\n"
     "layout(location = 2) out vec4 o_pos;\n"
     "uniform sampler2DArrayShadow u_shadow;\n"
+    "uniform sampler2DArray u_moments;\n"
+    "uniform vec2 u_poisson[16];\n"
+    "uniform float u_evsm_c;\n"
     "uniform mat4 u_light[16];\n"
+    "uniform mat4 u_light_inv[16];\n"
+    "uniform vec2 u_uvscale[16];\n"
     "uniform float u_split[17];\n"
-    "uniform int u_count, u_mode, u_filter;\n"
-    "uniform float u_res, u_blend, u_grid;\n"
+    "uniform int u_count, u_mode, u_filter, u_select;\n"
+    "uniform float u_res, u_blend, u_grid, u_offset;\n"
     "uniform vec3 u_light_dir;\n"
-    "int select_split(float z) {\n"
+    "int select_depth(float z) {\n"
     "  for (int i = 0; i < u_count - 1; ++i) if (z < u_split[i + 1]) return i;\n"
     "  return u_count - 1;\n"
     "}\n"
     "float blend_weight(int i, float z) {\n"
-    "  if (i >= u_count - 1 || u_blend <= 0.0) return 0.0;\n"
+    "  if (i >= u_count - 1 || u_blend <= 0.0) return 1.0;\n"
     "  float band = u_blend * (u_split[i + 1] - u_split[i]);\n"
-    "  return clamp((z - (u_split[i + 1] - band)) / band, 0.0, 1.0);\n"
+    "  return clamp((u_split[i + 1] - z) / band, 0.0, 1.0);\n"
     "}\n"
-    "vec3 map_coord(int i) {\n"
-    "  vec4 c = u_light[i] * vec4(v_p, 1.0);\n"
-    "  return c.xyz / c.w * 0.5 + 0.5;\n"
+    "bool covers(int i, vec3 p) {\n"
+    "  vec4 h = u_light[i] * vec4(p, 1.0);\n"
+    "  return h.w > 0.0 && abs(h.x) <= h.w && abs(h.y) <= h.w;\n"
+    "}\n"
+    /* [KOZ] §14.2.3 texel_world, the GLSL twin of swarp_bias_texel_size */
+    "float texel_world(int i, vec3 p) {\n"
+    "  vec4 h = u_light[i] * vec4(p, 1.0);\n"
+    "  vec3 ndc = h.xyz / h.w;\n"
+    "  vec2 r = u_res * u_uvscale[i];\n"
+    "  vec4 qs = u_light_inv[i] * vec4(ndc.x + 2.0 / r.x, ndc.y, ndc.z, 1.0);\n"
+    "  vec4 qt = u_light_inv[i] * vec4(ndc.x, ndc.y + 2.0 / r.y, ndc.z, 1.0);\n"
+    "  return max(length(qs.xyz / qs.w - p), length(qt.xyz / qt.w - p));\n"
+    "}\n"
+    "int select_map(vec3 p, float z) {\n"
+    "  if (u_select == 2) {\n"
+    "    for (int i = 0; i < u_count - 1; ++i) if (covers(i, p)) return i;\n"
+    "    return u_count - 1;\n"
+    "  }\n"
+    "  int d = select_depth(z);\n"
+    "  if (u_select == 0) return d;\n"
+    "  int best = -1; float lt = 0.0;\n"
+    "  for (int i = 0; i < u_count; ++i) {\n"
+    "    vec4 h = u_light[i] * vec4(p, 1.0);\n"
+    "    if (!(h.w > 0.0 && abs(h.x) <= h.w && abs(h.y) <= h.w && abs(h.z) <= h.w)) continue;\n"
+    "    float l = texel_world(i, p);\n"
+    "    if (best < 0 || l < lt) { best = i; lt = l; }\n"
+    "  }\n"
+    "  return best < 0 ? d : best;\n"
+    "}\n"
+    "vec3 map_coord(int i, vec3 p) {\n"
+    "  vec4 c = u_light[i] * vec4(p, 1.0);\n"
+    "  vec3 sc = c.xyz / c.w * 0.5 + 0.5;\n"
+    "  return vec3(sc.xy * u_uvscale[i], sc.z);\n"
+    "}\n"
+    /* docs/filtering.md twins of swarp_vsm_chebyshev, swarp_vsm_reduce_bleeding,
+     * swarp_evsm_visibility */
+    "float vsm_chebyshev(vec2 M, float t, float min_variance) {\n"
+    "  if (t <= M.x) return 1.0;\n"
+    "  float sigma2 = max(fma(-M.x, M.x, M.y), min_variance);\n"
+    "  float d = t - M.x;\n"
+    "  return sigma2 / (sigma2 + d * d);\n"
+    "}\n"
+    "float vsm_reduce_bleeding(float p, float amount) {\n"
+    "  return clamp((p - amount) / (1.0 - amount), 0.0, 1.0);\n"
+    "}\n"
+    "float evsm_visibility(vec4 m, float t, float c_pos, float c_neg, float min_variance) {\n"
+    "  float wp = exp(c_pos * t), wn = -exp(-c_neg * t);\n"
+    "  float kp = c_pos * wp, kn = c_neg * wn;\n"
+    "  float vp = vsm_chebyshev(m.xy, wp, min_variance * kp * kp);\n"
+    "  float vn = vsm_chebyshev(m.zw, wn, min_variance * kn * kn);\n"
+    "  return min(vp, vn);\n"
     "}\n"
     "float lookup(int i, vec3 sc) {\n"
-    "  if (any(lessThan(sc, vec3(0.0))) || any(greaterThan(sc, vec3(1.0)))) return 1.0;\n"
+    "  if (any(lessThan(sc, vec3(0.0))) || sc.x > u_uvscale[i].x || sc.y > u_uvscale[i].y ||\n"
+    "      sc.z > 1.0) return 1.0;\n"
     "  float ref = sc.z;\n"
     "  if (u_filter == 0) {\n"
     "    vec2 t = (floor(sc.xy * u_res) + 0.5) / u_res;\n"
     "    return texture(u_shadow, vec4(t, float(i), ref));\n"
     "  }\n"
     "  if (u_filter == 1) return texture(u_shadow, vec4(sc.xy, float(i), ref));\n"
+    "  if (u_filter == 4) {\n"
+    "    float s = 0.0;\n"
+    "    for (int k = 0; k < 16; ++k)\n"
+    "      s += texture(u_shadow, vec4(sc.xy + 2.0 * u_poisson[k] / u_res, float(i), ref));\n"
+    "    return s / 16.0;\n"
+    "  }\n"
+    "  if (u_filter >= 5) {\n"
+    /* filtering the moments over the same 3x3 bilinear footprint as pcf3 */
+    "    vec4 m = vec4(0.0);\n"
+    "    for (int y = -1; y <= 1; ++y) for (int x = -1; x <= 1; ++x)\n"
+    "      m += texture(u_moments, vec3(sc.xy + vec2(x, y) / u_res, float(i)));\n"
+    "    m /= 9.0;\n"
+    "    if (u_filter == 5) return vsm_reduce_bleeding(vsm_chebyshev(m.xy, ref, 1e-6), 0.2);\n"
+    "    return evsm_visibility(m, ref, u_evsm_c, u_evsm_c, 1e-6);\n"
+    "  }\n"
     "  int k = u_filter == 2 ? 1 : 2;\n"
     "  float s = 0.0;\n"
     "  for (int y = -k; y <= k; ++y) for (int x = -k; x <= k; ++x)\n"
@@ -100,25 +201,31 @@ static const char* const main_fs =
     "void main() {\n"
     "  vec3 n = normalize(v_n);\n"
     "  if (!gl_FrontFacing) n = -n;\n"
-    "  float ndl = max(dot(n, -u_light_dir), 0.0);\n"
-    "  int i = select_split(v_depth);\n"
-    "  vec3 sc = map_coord(i);\n"
+    "  vec3 to_light = -normalize(u_light_dir);\n"
+    "  float ndl = max(dot(n, to_light), 0.0);\n"
+    "  int i = select_map(v_p, v_depth);\n"
+    /* normal-offset bias (docs/splits.md twin of swarp_bias_normal_offset) */
+    "  vec3 pb = v_p + n * (u_offset * texel_world(i, v_p) * (1.0 - clamp(dot(n, to_light), 0.0, 1.0)));\n"
+    "  vec3 sc = map_coord(i, pb);\n"
     "  float lit = 1.0;\n"
     "  if (u_mode != 4) {\n"
     "    lit = lookup(i, sc);\n"
-    "    float w = blend_weight(i, v_depth);\n"
-    "    if (w > 0.0) lit = mix(lit, lookup(i + 1, map_coord(i + 1)), w);\n"
+    "    if (u_select == 0) {\n"
+    "      float w = blend_weight(i, v_depth);\n"
+    "      if (w < 1.0) lit = lit * w + lookup(i + 1, map_coord(i + 1, pb)) * (1.0 - w);\n"
+    "    }\n"
     "  }\n"
     "  if (ndl <= 0.0) lit = 0.0;\n"
+    "  vec3 sc0 = map_coord(i, v_p);\n"
     "  vec3 shaded = v_c * (0.35 + 0.65 * ndl * lit);\n"
     "  vec3 col = shaded;\n"
-    "  if (u_mode == 1) col = sampling_color(sc.xy) * (0.55 + 0.45 * ndl * lit);\n"
+    "  if (u_mode == 1) col = sampling_color(sc0.xy) * (0.55 + 0.45 * ndl * lit);\n"
     "  else if (u_mode == 2) {\n"
     "    const vec3 sp[4] = vec3[4](vec3(1,0,0), vec3(1,1,0), vec3(0,1,0), vec3(0,0,1));\n"
     "    col = mix(shaded, sp[i % 4] * (0.45 + 0.55 * ndl * lit), 0.6);\n"
-    "  } else if (u_mode == 3) col = mix(shaded, vec3(0.0), grid_line(sc.xy));\n"
+    "  } else if (u_mode == 3) col = mix(shaded, vec3(0.0), grid_line(sc0.xy));\n"
     "  o_color = vec4(col, 1.0);\n"
-    "  o_tex = vec4(sc.xy * u_res, float(i), v_depth);\n"
+    "  o_tex = vec4(sc0.xy * u_res, float(i), v_depth);\n"
     "  o_pos = vec4(v_p, lit);\n"
     "}\n";
 
@@ -142,6 +249,15 @@ int demo_render_init(demo_renderer* r, const demo_scene* s, int w, int h, int ma
                               (const void*)(a * 3 * sizeof(float)));
     }
     r->prog_depth = demo_gl_program("depth", depth_vs, NULL);
+    r->prog_moment = demo_gl_program("moments", depth_vs, moment_fs);
+    if (!r->prog_moment) return -1;
+    double xy[32], dmin;
+    size_t np = 0;
+    if (swarp_pcf_poisson_disk(7, 16, 0, xy, 16, &np, &dmin) != SWARP_OK || np != 16) return -1;
+    for (int i = 0; i < 32; ++i) r->poisson[i] = (float)xy[i];
+    double c;
+    if (swarp_evsm_max_exponent(SWARP_TEXEL_FP32, &c) != SWARP_OK) return -1;
+    r->evsm_c = (float)c;
     r->prog_main = demo_gl_program("main", main_vs, main_fs);
     if (!r->prog_depth || !r->prog_main) return -1;
 
@@ -156,6 +272,14 @@ int demo_render_init(demo_renderer* r, const demo_scene* s, int w, int h, int ma
     glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
     glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
     glGenFramebuffers(1, &r->shadow_fbo);
+    glGenTextures(1, &r->moment_tex);
+    glBindTexture(GL_TEXTURE_2D_ARRAY, r->moment_tex);
+    glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, GL_RGBA32F, map_res, map_res, max_layers, 0, GL_RGBA,
+                 GL_FLOAT, NULL);
+    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
 
     glGenFramebuffers(1, &r->fbo);
     glBindFramebuffer(GL_FRAMEBUFFER, r->fbo);
@@ -181,6 +305,8 @@ int demo_render_init(demo_renderer* r, const demo_scene* s, int w, int h, int ma
 
 void demo_render_free(demo_renderer* r) {
     if (r->prog_depth) glDeleteProgram(r->prog_depth);
+    if (r->prog_moment) glDeleteProgram(r->prog_moment);
+    glDeleteTextures(1, &r->moment_tex);
     if (r->prog_main) glDeleteProgram(r->prog_main);
     glDeleteTextures(1, &r->shadow_tex);
     glDeleteFramebuffers(1, &r->shadow_fbo);
@@ -201,28 +327,47 @@ static void to_float(const swarp_mat4* m, float out[16]) {
     }
 }
 
-int demo_render_shadow(demo_renderer* r, const demo_shadow* sh, double* ms_out) {
+int demo_render_shadow(demo_renderer* r, const demo_shadow* sh, demo_filter filter,
+                       double* ms_out) {
     int errors = 0;
+    int moments = filter == DEMO_FILTER_VSM || filter == DEMO_FILTER_EVSM;
     glBindFramebuffer(GL_FRAMEBUFFER, r->shadow_fbo);
-    GLenum none = GL_NONE;
-    glDrawBuffers(1, &none);
+    GLenum buf = moments ? GL_COLOR_ATTACHMENT0 : GL_NONE;
+    glDrawBuffers(1, &buf);
     glReadBuffer(GL_NONE);
-    glUseProgram(r->prog_depth);
+    GLuint prog = moments ? r->prog_moment : r->prog_depth;
+    glUseProgram(prog);
+    if (moments) {
+        glUniform1i(glGetUniformLocation(prog, "u_kind"), filter == DEMO_FILTER_EVSM);
+        glUniform1f(glGetUniformLocation(prog, "u_c"), r->evsm_c);
+    }
     glBindVertexArray(r->vao);
-    glViewport(0, 0, r->map_res, r->map_res);
     glEnable(GL_DEPTH_TEST);
+    if (sh->depth_clamp) glEnable(GL_DEPTH_CLAMP);
     glDepthFunc(GL_LESS);
     glDepthMask(GL_TRUE);
     glDisable(GL_CULL_FACE);
-    /* slope-scaled depth bias against acne (the bias stage replaces this
-     * when it lands) */
-    glEnable(GL_POLYGON_OFFSET_FILL);
-    glPolygonOffset(2.0f, 8.0f);
-    GLint loc = glGetUniformLocation(r->prog_depth, "u_m");
+    /* slope-scaled depth bias against acne for the depth compare (moment
+     * maps store the unbiased depth: Chebyshev's bound needs no offset) */
+    if (!moments) {
+        glEnable(GL_POLYGON_OFFSET_FILL);
+        glPolygonOffset(2.0f, 8.0f);
+    }
+    GLint loc = glGetUniformLocation(prog, "u_m");
+    /* what an empty texel holds: depth 1 (the far plane) */
+    const float far_vsm[4] = {1, 1, 0, 0};
+    const float far_evsm[4] = {expf(r->evsm_c), expf(2 * r->evsm_c), -expf(-r->evsm_c),
+                               expf(-2 * r->evsm_c)};
     for (int i = 0; i < sh->count && i < r->layers; ++i) {
         double t0 = demo_now_ms();
         glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, r->shadow_tex, 0, i);
+        glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, moments ? r->moment_tex : 0,
+                                  0, i);
+        glViewport(0, 0, r->map_res, r->map_res);
         glClear(GL_DEPTH_BUFFER_BIT);
+        if (moments)
+            glClearBufferfv(GL_COLOR, 0, filter == DEMO_FILTER_EVSM ? far_evsm : far_vsm);
+        glViewport(0, 0, sh->viewport[i][0], sh->viewport[i][1]);
         float m[16];
         to_float(&sh->light[i], m);
         glUniformMatrix4fv(loc, 1, GL_FALSE, m);
@@ -233,7 +378,9 @@ int demo_render_shadow(demo_renderer* r, const demo_shadow* sh, double* ms_out) 
         snprintf(name, sizeof name, "shadow pass %d", i);
         errors += demo_gl_check(name);
     }
+    glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, 0, 0, 0);
     glDisable(GL_POLYGON_OFFSET_FILL);
+    glDisable(GL_DEPTH_CLAMP);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     return errors;
 }
@@ -259,11 +406,22 @@ int demo_render_main(demo_renderer* r, const demo_shadow* sh, const demo_main_pa
     glBindVertexArray(r->vao);
     glUniformMatrix4fv(glGetUniformLocation(pr, "u_view"), 1, GL_FALSE, p->view);
     glUniformMatrix4fv(glGetUniformLocation(pr, "u_proj"), 1, GL_FALSE, p->proj);
-    float lm[DEMO_MAX_SPLITS * 16];
+    float lm[DEMO_MAX_SPLITS * 16], li[DEMO_MAX_SPLITS * 16], uvs[DEMO_MAX_SPLITS * 2];
     float split[DEMO_MAX_SPLITS + 1];
-    for (int i = 0; i < sh->count; ++i) to_float(&sh->light[i], lm + 16 * i);
+    for (int i = 0; i < sh->count; ++i) {
+        to_float(&sh->light[i], lm + 16 * i);
+        swarp_mat4 inv;
+        if (swarp_mat4_invert(&sh->light[i], &inv) != SWARP_OK) memset(&inv, 0, sizeof inv);
+        to_float(&inv, li + 16 * i);
+        uvs[2 * i] = (float)sh->viewport[i][0] / (float)r->map_res;
+        uvs[2 * i + 1] = (float)sh->viewport[i][1] / (float)r->map_res;
+    }
     for (int i = 0; i <= sh->count; ++i) split[i] = (float)sh->split[i];
     glUniformMatrix4fv(glGetUniformLocation(pr, "u_light"), sh->count, GL_FALSE, lm);
+    glUniformMatrix4fv(glGetUniformLocation(pr, "u_light_inv"), sh->count, GL_FALSE, li);
+    glUniform2fv(glGetUniformLocation(pr, "u_uvscale"), sh->count, uvs);
+    glUniform1i(glGetUniformLocation(pr, "u_select"), (int)sh->select);
+    glUniform1f(glGetUniformLocation(pr, "u_offset"), p->normal_offset);
     glUniform1fv(glGetUniformLocation(pr, "u_split"), sh->count + 1, split);
     glUniform1i(glGetUniformLocation(pr, "u_count"), sh->count);
     glUniform1i(glGetUniformLocation(pr, "u_mode"), (int)p->mode);
@@ -276,6 +434,12 @@ int demo_render_main(demo_renderer* r, const demo_shadow* sh, const demo_main_pa
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D_ARRAY, r->shadow_tex);
     glUniform1i(glGetUniformLocation(pr, "u_shadow"), 0);
+    glActiveTexture(GL_TEXTURE1);
+    glBindTexture(GL_TEXTURE_2D_ARRAY, r->moment_tex);
+    glUniform1i(glGetUniformLocation(pr, "u_moments"), 1);
+    glActiveTexture(GL_TEXTURE0);
+    glUniform2fv(glGetUniformLocation(pr, "u_poisson"), 16, r->poisson);
+    glUniform1f(glGetUniformLocation(pr, "u_evsm_c"), r->evsm_c);
     glDrawArrays(GL_TRIANGLES, 0, r->vertex_count);
     glFinish();
     if (ms_out) *ms_out = demo_now_ms() - t0;

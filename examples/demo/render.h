@@ -21,14 +21,20 @@ typedef enum demo_filter {
     DEMO_FILTER_PCF2,     /**< hardware 2x2 bilinear compare */
     DEMO_FILTER_PCF3,     /**< 3x3 bilinear taps */
     DEMO_FILTER_PCF5,     /**< 5x5 bilinear taps */
+    DEMO_FILTER_POISSON,  /**< 16 bilinear taps on a Poisson disk (swarp_pcf_poisson_disk) */
+    DEMO_FILTER_VSM,      /**< variance shadow map, moments 3x3-filtered [VSM] (3.1)-(3.3) */
+    DEMO_FILTER_EVSM,     /**< exponential VSM [VSM] §4.2, c from swarp_evsm_max_exponent */
     DEMO_FILTER_COUNT
 } demo_filter;
 
 typedef struct demo_renderer {
     GLuint vao, vbo;
     int vertex_count;
-    GLuint prog_depth, prog_main;
+    GLuint prog_depth, prog_moment, prog_main;
     GLuint shadow_tex, shadow_fbo;
+    GLuint moment_tex;         /**< RGBA32F array: VSM / EVSM moments per map */
+    float poisson[32];         /**< 16 unit-disk points (swarp_pcf_poisson_disk) */
+    float evsm_c;              /**< EVSM exponent (swarp_evsm_max_exponent, fp32) */
     int map_res, layers;
     GLuint fbo, rb_color, rb_tex, rb_pos, rb_depth;
     int w, h;
@@ -43,7 +49,8 @@ void demo_render_free(demo_renderer* r);
 
 /** The shadow passes, one per map.  ms_out[i]: glFinish-bracketed time of
  *  pass i (may be NULL).  Returns the number of GL errors seen. */
-int demo_render_shadow(demo_renderer* r, const demo_shadow* sh, double* ms_out);
+int demo_render_shadow(demo_renderer* r, const demo_shadow* sh, demo_filter filter,
+                       double* ms_out);
 
 typedef struct demo_main_params {
     float view[16], proj[16];       /**< camera (cglm, column-major) */
@@ -52,6 +59,7 @@ typedef struct demo_main_params {
     demo_filter filter;
     float blend;                    /**< split blend band, fraction of a split */
     float grid;                     /**< texels per grid cell (Listing A.4 "size") */
+    float normal_offset;            /**< normal-offset bias, texels (swarp_bias_normal_offset) */
     int vw, vh;                     /**< viewport (<= target size) */
 } demo_main_params;
 
@@ -67,5 +75,7 @@ void demo_render_read_color(demo_renderer* r, int vw, int vh, uint8_t* rgba);
 void demo_render_read_aux(demo_renderer* r, float* tex, float* pos);
 
 double demo_now_ms(void);
+const char* demo_filter_name(demo_filter f);
+int demo_filter_parse(const char* name);
 
 #endif

@@ -188,6 +188,26 @@ static int tower(demo_scene* s, v3 base, float h, float w0, float w1, v3 col) {
     return r;
 }
 
+/* room corner centre; floor slab top at y = 0.3, back wall inner face at
+ * z = ROOM_Z - 14 */
+#define ROOM_X (-75.0f)
+#define ROOM_Z 5.0f
+
+void demo_scene_room(demo_room* r) {
+    const double fy = 0.3, wz = ROOM_Z - 14.0, x0 = ROOM_X - 15.0, x1 = ROOM_X + 14.0;
+    const double z0 = ROOM_Z - 14.0, z1 = ROOM_Z + 15.0, wy = 9.0;
+    r->floor = (swarp_plane){0, 1, 0, -fy};
+    r->wall = (swarp_plane){0, 0, 1, -wz};
+    r->floor_rect[0] = (swarp_vec3){x0, fy, z1};
+    r->floor_rect[1] = (swarp_vec3){x1, fy, z1};
+    r->floor_rect[2] = (swarp_vec3){x1, fy, z0};
+    r->floor_rect[3] = (swarp_vec3){x0, fy, z0};
+    r->wall_rect[0] = (swarp_vec3){x0, fy, wz};
+    r->wall_rect[1] = (swarp_vec3){x1, fy, wz};
+    r->wall_rect[2] = (swarp_vec3){x1, wy, wz};
+    r->wall_rect[3] = (swarp_vec3){x0, wy, wz};
+}
+
 int demo_scene_default(demo_scene* s) {
     memset(s, 0, sizeof *s);
     uint32_t st = 12345u;
@@ -230,7 +250,7 @@ int demo_scene_default(demo_scene* s) {
     }
     /* room corner (lixel's floor + wall): floor slab and an L of walls with a
      * table and a ball inside */
-    v3 rc = mk(70.0f, 0.0f, 320.0f);
+    v3 rc = mk(ROOM_X, 0.0f, ROOM_Z);
     r |= box(s, add(rc, mk(-15, 0, -15)), add(rc, mk(15, 0.3f, 15)), mk(0.7f, 0.7f, 0.75f));
     r |= box(s, add(rc, mk(-15, 0.3f, -15)), add(rc, mk(15, 9, -14)), mk(0.85f, 0.8f, 0.7f));
     r |= box(s, add(rc, mk(14, 0.3f, -14)), add(rc, mk(15, 9, 15)), mk(0.85f, 0.8f, 0.7f));

@@ -24,6 +24,15 @@ typedef struct demo_scene {
  *  buildings, cone/box trees, spheres and a room corner (floor + wall).
  *  0 on success. */
 int demo_scene_default(demo_scene* s);
+/** The room corner of the default scene, for the lixel technique: the
+ *  floor's top face and the back wall's inner face, each as a plane and the
+ *  four corners of its rectangle (counter-clockwise seen from the room). */
+typedef struct demo_room {
+    swarp_plane floor, wall;
+    swarp_vec3 floor_rect[4], wall_rect[4];
+} demo_room;
+void demo_scene_room(demo_room* out);
+
 /** Flat ground (200 x 200 m) with one box of 10 x 10 x 10 m at the origin:
  *  the scene whose shadow the tests compute geometrically.  The box's
  *  bounds are written to *out_box when not NULL. */

@@ -8,13 +8,22 @@
  * in the demo computes shadow maths. */
 #include "shadow.h"
 
+#include <cglm/cglm.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "scene.h"
+#include "shadowwarp_cglm.h"
+
 static const char* const tech_names[DEMO_TECH_COUNT] = {
-    "uniform", "lispsm", "repar", "gmnpr", "psm", "pssm", "pssm-lispsm", "lixel"};
+    "uniform", "lispsm", "repar", "gmnpr", "pseudo", "psm",
+    "pssm",    "pssm-lispsm", "pssm-stable", "lixel"};
+
+int demo_technique_is_split(demo_technique t) {
+    return t == DEMO_TECH_PSSM || t == DEMO_TECH_PSSM_LISPSM || t == DEMO_TECH_PSSM_STABLE;
+}
 
 const char* demo_technique_name(demo_technique t) {
     return (unsigned)t < DEMO_TECH_COUNT ? tech_names[t] : "?";
@@ -26,13 +35,20 @@ int demo_technique_parse(const char* name) {
     return -1;
 }
 
-static const char* const scheme_names[DEMO_SCHEME_COUNT] = {"practical", "uniform", "log"};
+static const char* const scheme_names[DEMO_SCHEME_COUNT] = {"practical", "uniform", "log",
+                                                             "pseudo"};
 
 const char* demo_scheme_name(demo_scheme s) {
     return (unsigned)s < DEMO_SCHEME_COUNT ? scheme_names[s] : "?";
 }
 
-int demo_scheme_parse(const char* name, double* lambda) {
+int demo_scheme_parse(const char* name, double* lambda, double* np, double* fp) {
+    if (strncmp(name, "pseudo:", 7) == 0) {
+        *lambda = 0.5;
+        int k = sscanf(name + 7, "%lf,%lf,%lf", np, fp, lambda);
+        if (k < 2 || !(*np > 0 && *fp > *np && *lambda >= 0 && *lambda <= 1)) return -1;
+        return DEMO_SCHEME_PSEUDO;
+    }
     if (strncmp(name, "practical", 9) == 0) {
         *lambda = 0.5;
         if (name[9] == ':') {
@@ -50,10 +66,16 @@ int demo_scheme_parse(const char* name, double* lambda) {
 }
 
 int demo_technique_available(demo_technique t) {
+#ifdef DEMO_HAVE_GEOMETRY
+    return (unsigned)t < DEMO_TECH_COUNT;
+#else
     /* TEMPORARY: only what the stand-in fit can do. */
-    return t == DEMO_TECH_UNIFORM || t == DEMO_TECH_PSSM;
+    return t == DEMO_TECH_UNIFORM || t == DEMO_TECH_PSSM || t == DEMO_TECH_PSSM_STABLE ||
+           t == DEMO_TECH_LIXEL;
+#endif
 }
 
+#ifndef DEMO_HAVE_GEOMETRY
 /* ------------------------------------------------------------------------ */
 /* TEMPORARY stand-in until the library's setup call is on main.            */
 /* ------------------------------------------------------------------------ */
@@ -123,6 +145,69 @@ static void temp_fit(const swarp_camera* cam, const swarp_light* light, const sw
     *out = m;
 }
 
+#endif /* !DEMO_HAVE_GEOMETRY */
+
+/* The viewer's view-projection (world -> clip) in double, from the
+ * renderer's own cglm matrices. */
+static void viewer_matrix(const swarp_camera* cam, swarp_mat4* out) {
+    vec3 eye = {(float)cam->eye.x, (float)cam->eye.y, (float)cam->eye.z};
+    vec3 dir = {(float)cam->dir.x, (float)cam->dir.y, (float)cam->dir.z};
+    vec3 up = {(float)cam->up.x, (float)cam->up.y, (float)cam->up.z};
+    mat4 view, proj;
+    glm_look(eye, dir, up, view);
+    glm_perspective((float)cam->fovy, (float)cam->aspect, (float)cam->near, (float)cam->far, proj);
+    swarp_mat4 v, p;
+    swarp_cglm_mat4_to_swarp(view, &v);
+    swarp_cglm_mat4_to_swarp(proj, &p);
+    swarp_mat4_mul(&p, &v, out);
+}
+
+/* One plane of interest [LIXEL]: M_l from the viewer matrix, restricted to
+ * the rays through the plane's rectangle inside the view (Fig. 6), scaled
+ * down only if the rectangle would not fit the map, and factored into the
+ * clip matrix GLP the shadow pass renders with.  0 on success. */
+static int lixel_map(const swarp_mat4* M_v, const demo_shadow_request* req,
+                     const swarp_light* light, const swarp_plane* plane,
+                     const swarp_vec3 rect[4], swarp_mat4* out_GLP, int out_vp[2],
+                     swarp_status* out_status) {
+    swarp_mat4 M_l, M_r, GLV, GLP;
+    swarp_status st = swarp_lixel_matrix(M_v, (uint32_t)req->screen_w, (uint32_t)req->screen_h,
+                                         light, plane, NULL, &M_l, NULL);
+    if (swarp_status_is_error(st)) {
+        *out_status = st;
+        return -1;
+    }
+    swarp_vec4 C[4];
+    for (int i = 0; i < 4; ++i) C[i] = (swarp_vec4){rect[i].x, rect[i].y, rect[i].z, 1.0};
+    swarp_lixel_restrict_options ro;
+    memset(&ro, 0, sizeof ro);
+    ro.view_width = (uint32_t)req->screen_w;
+    ro.view_height = (uint32_t)req->screen_h;
+    swarp_lixel_rect r;
+    swarp_status st2 = swarp_lixel_restrict(&M_l, C, 4, &ro, &r, NULL, &M_r);
+    if (!swarp_status_is_error(st2) &&
+        (r.width > (uint32_t)req->map_res || r.height > (uint32_t)req->map_res)) {
+        /* fewer lixels than pixels: the largest scale that fits the map */
+        double sc = (double)req->map_res / (double)(r.width > r.height ? r.width : r.height);
+        ro.scale_x = ro.scale_y = 0.999 * sc;
+        st2 = swarp_lixel_restrict(&M_l, C, 4, &ro, &r, NULL, &M_r);
+    }
+    if (swarp_status_is_error(st2)) {
+        *out_status = st2;
+        return -1;
+    }
+    st2 = swarp_lixel_factor(&M_r, r.width, r.height, SWARP_DEPTH_NEG_ONE_TO_ONE, 0.0, &GLV, &GLP);
+    if (swarp_status_is_error(st2)) {
+        *out_status = st2;
+        return -1;
+    }
+    *out_GLP = GLP;
+    out_vp[0] = (int)r.width;
+    out_vp[1] = (int)r.height;
+    *out_status = st;
+    return 0;
+}
+
 /* Split distances C_0..C_K over [near, far] from the library's schemes
  * [RHS] (3.6)-(3.8). */
 static int split_distances(const demo_shadow_request* req, double near, double far, int k,
@@ -132,6 +217,10 @@ static int split_distances(const demo_shadow_request* req, double near, double f
     swarp_status st;
     if (req->scheme == DEMO_SCHEME_UNIFORM)
         st = swarp_split_uniform(near, far, (uint32_t)k, out, DEMO_MAX_SPLITS + 1, &n);
+    else if (req->scheme == DEMO_SCHEME_PSEUDO)
+        st = swarp_split_pseudo(near, far, fmax(near, fmin(req->scheme_np, far)),
+                                fmin(far, fmax(req->scheme_fp, near)), req->scheme_lambda,
+                                (uint32_t)k, out, DEMO_MAX_SPLITS + 1, &n);
     else if (req->scheme == DEMO_SCHEME_LOG)
         st = swarp_split_log(near, far, (uint32_t)k, out, DEMO_MAX_SPLITS + 1, &n);
     else
@@ -159,6 +248,87 @@ static int split_distances(const demo_shadow_request* req, double near, double f
 #endif
 }
 
+/* A conventional (non-lixel) map for one technique over the adjusted view
+ * range (range = 0) or over [near, far] (range = 1, a split): the library's
+ * swarp_setup / swarp_setup_range when the geometry stage is linked in. */
+static int conventional_map(const swarp_camera* cam, const swarp_light* light,
+                            const swarp_aabb* scene, const demo_shadow_request* req,
+                            demo_technique t, int range, double near, double far,
+                            swarp_mat4* out_m, double* out_n, double* out_near, double* out_far,
+                            swarp_status* out_status) {
+#ifdef DEMO_HAVE_GEOMETRY
+    swarp_setup_options opt;
+    memset(&opt, 0, sizeof opt);
+    opt.technique = SWARP_TECHNIQUE_UNIFORM;
+    opt.map_width = opt.map_height = (uint32_t)req->map_res;
+    opt.screen_width = (uint32_t)req->screen_w;
+    opt.screen_height = (uint32_t)req->screen_h;
+    switch (t) {
+    case DEMO_TECH_LISPSM:
+    case DEMO_TECH_PSSM_LISPSM:
+        opt.technique = SWARP_TECHNIQUE_LISPSM;
+        opt.param = SWARP_WARP_PARAM_NOPT;
+        break;
+    case DEMO_TECH_REPAR:
+        opt.technique = SWARP_TECHNIQUE_LISPSM;
+        opt.param = SWARP_WARP_PARAM_NREPAR;
+        break;
+    case DEMO_TECH_GMNPR:
+        opt.technique = SWARP_TECHNIQUE_LISPSM;
+        opt.param = SWARP_WARP_PARAM_GMNPR;
+        break;
+    case DEMO_TECH_PSEUDO:
+        opt.technique = SWARP_TECHNIQUE_LISPSM;
+        opt.param = SWARP_WARP_PARAM_PSEUDO;
+        opt.pseudo_near = req->pseudo_near;
+        opt.pseudo_far = req->pseudo_far;
+        break;
+    case DEMO_TECH_PSM:
+        opt.technique = SWARP_TECHNIQUE_PSM;
+        break;
+    default:
+        break;
+    }
+    swarp_setup_result res;
+    swarp_status st = range ? swarp_setup_range(cam, light, scene, near, far, &opt, &res, NULL, 0, NULL)
+                            : swarp_setup(cam, light, scene, &opt, &res, NULL, 0, NULL);
+    *out_status = st;
+    if (swarp_status_is_error(st)) {
+        fprintf(stderr, "demo: swarp_setup (%s): %s\n", demo_technique_name(t),
+                swarp_status_string(st));
+        return -1;
+    }
+    *out_m = res.matrix;
+    *out_n = res.n_eye;
+    *out_near = res.view_near;
+    *out_far = res.view_far;
+    return 0;
+#else
+    (void)req;
+    (void)t;
+    /* TEMPORARY stand-in: uniform only, over the camera's own range */
+    if (!range) {
+        near = cam->near;
+        far = cam->far;
+    }
+    temp_fit(cam, light, scene, near, far, out_m);
+    *out_n = INFINITY;
+    *out_near = near;
+    *out_far = far;
+    *out_status = SWARP_OK;
+    return 0;
+#endif
+}
+
+static const char* matrix_source(demo_technique t) {
+    if (t == DEMO_TECH_PSSM_STABLE) return "library (swarp_stabilize_directional)";
+#ifdef DEMO_HAVE_GEOMETRY
+    return "library (swarp_setup)";
+#else
+    return "demo stand-in (temporary ortho fit)";
+#endif
+}
+
 int demo_shadow_setup(const swarp_camera* cam, const swarp_light* light,
                       const swarp_aabb* scene, const demo_shadow_request* req,
                       demo_shadow* out) {
@@ -169,19 +339,112 @@ int demo_shadow_setup(const swarp_camera* cam, const swarp_light* light,
     }
     demo_shadow sh;
     memset(&sh, 0, sizeof sh);
-    sh.near = cam->near;
-    sh.far = cam->far;
-    sh.count = req->technique == DEMO_TECH_PSSM ? req->splits : 1;
-    if (sh.count < 1 || sh.count > DEMO_MAX_SPLITS) return -1;
-    if (split_distances(req, sh.near, sh.far, sh.count, sh.split)) return -1;
-    for (int i = 0; i < sh.count; ++i) {
-        temp_fit(cam, light, scene, sh.split[i], sh.split[i + 1], &sh.light[i]);
-        sh.n_prime[i] = INFINITY;
+    sh.select = req->select == DEMO_SELECT_BEST ? DEMO_SELECT_BEST : DEMO_SELECT_DEPTH;
+    sh.model_applies = 1;
+    sh.predicted_max_mx = sh.predicted_max_mz = NAN;
+    for (int i = 0; i < DEMO_MAX_SPLITS; ++i) sh.viewport[i][0] = sh.viewport[i][1] = req->map_res;
+    swarp_status st = SWARP_OK;
+    demo_technique t = req->technique;
+    if (t == DEMO_TECH_LIXEL) {
+        /* [LIXEL] §3: a map for the floor, one for the wall, and a
+         * conventional fallback map for everything else */
+        demo_room room;
+        demo_scene_room(&room);
+        swarp_mat4 M_v;
+        viewer_matrix(cam, &M_v);
+        int n = 0;
+        const swarp_plane* planes[2] = {&room.floor, &room.wall};
+        const swarp_vec3* rects[2] = {room.floor_rect, room.wall_rect};
+        for (int k = 0; k < 2; ++k) {
+            swarp_status sk;
+            if (lixel_map(&M_v, req, light, planes[k], rects[k], &sh.light[n], sh.viewport[n], &sk) == 0)
+                ++n;
+            if (sk != SWARP_OK && st == SWARP_OK) st = sk; /* first note or error */
+        }
+        swarp_status sf;
+        if (conventional_map(cam, light, scene, req, DEMO_TECH_UNIFORM, 0, 0, 0, &sh.light[n],
+                             &sh.n_prime[n], &sh.near, &sh.far, &sf))
+            return -1;
+        sh.count = n + 1;
+        sh.split[0] = sh.near;
+        sh.split[1] = sh.far;
+        sh.select = DEMO_SELECT_LIXEL;
+        sh.depth_clamp = 1;
+        sh.model_applies = 0;
+        sh.status = st != SWARP_OK ? st : sf;
+        sh.source = n == 2 ? "library (swarp_lixel_* + uniform fallback)"
+                           : "library (swarp_lixel_*: a plane failed; + uniform fallback)";
+#ifndef DEMO_HAVE_GEOMETRY
+        sh.source = "library (swarp_lixel_*) + demo stand-in fallback";
+#endif
+        *out = sh;
+        return 0;
     }
-    sh.predicted_max_mx = NAN;
-    sh.predicted_max_mz = NAN;
-    sh.status = SWARP_OK;
-    sh.source = "demo stand-in (temporary ortho fit)";
+    int pssm = demo_technique_is_split(t);
+    sh.count = pssm ? req->splits : 1;
+    if (sh.count < 1 || sh.count > DEMO_MAX_SPLITS) return -1;
+    /* the whole view first: its adjusted range [RHS] §3.3.1 */
+    if (conventional_map(cam, light, scene, req, pssm ? DEMO_TECH_UNIFORM : t, 0, 0, 0,
+                         &sh.light[0], &sh.n_prime[0], &sh.near, &sh.far, &st))
+        return -1;
+    if (t == DEMO_TECH_PSSM_STABLE) {
+        /* the sphere covers whole split frusta: no adjusted range */
+        sh.near = cam->near;
+        sh.far = cam->far;
+    }
+    sh.split[0] = sh.near;
+    sh.split[1] = sh.far;
+    if (pssm) {
+        if (split_distances(req, sh.near, sh.far, sh.count, sh.split)) return -1;
+        for (int i = 0; i < sh.count; ++i) {
+            double a, b;
+            swarp_status si;
+            if (t == DEMO_TECH_PSSM_STABLE) {
+                /* [RHS] §3.5 exact solution: the split frustum's minimal
+                 * sphere, texel-snapped (directional lights only) */
+                swarp_stabilize_options so;
+                memset(&so, 0, sizeof so);
+                so.mode = SWARP_STABILIZE_SPHERE;
+                si = swarp_stabilize_directional(cam, sh.split[i], sh.split[i + 1], &light->direction,
+                                                 NULL, 0, scene, (uint32_t)req->map_res, &so,
+                                                 &sh.light[i], NULL);
+                if (swarp_status_is_error(si)) {
+                    fprintf(stderr, "demo: swarp_stabilize_directional: %s\n",
+                            swarp_status_string(si));
+                    return -1;
+                }
+                sh.n_prime[i] = INFINITY;
+                if (si != SWARP_OK && st == SWARP_OK) st = si;
+                continue;
+            }
+            if (conventional_map(cam, light, scene, req, t, 1, sh.split[i], sh.split[i + 1],
+                                 &sh.light[i], &sh.n_prime[i], &a, &b, &si))
+                return -1;
+            if (si != SWARP_OK && st == SWARP_OK) st = si;
+        }
+    }
+#ifdef DEMO_HAVE_ERROR_MODEL
+    {
+        /* the predicted worst error of the whole configuration [RHS]
+         * (2.3)-(2.8), piecewise for splits */
+        swarp_error_config cfg;
+        memset(&cfg, 0, sizeof cfg);
+        cfg.near = sh.near;
+        cfg.far = sh.far;
+        cfg.theta = 0.5 * cam->fovy;
+        cfg.res_ix = req->screen_w;
+        cfg.res_iy = req->screen_h;
+        cfg.res_s = cfg.res_t = req->map_res;
+        double mx, mz;
+        if (!swarp_status_is_error(swarp_error_split_max(&cfg, sh.split, sh.n_prime,
+                                                         (size_t)sh.count, NULL, NULL, &mx, &mz))) {
+            sh.predicted_max_mx = mx;
+            sh.predicted_max_mz = mz;
+        }
+    }
+#endif
+    sh.status = st;
+    sh.source = matrix_source(t);
     *out = sh;
     return 0;
 }
@@ -197,6 +460,10 @@ int demo_have_error_model(void) {
 int demo_predict(const demo_shadow* sh, double fovy, int w, int h, int map_res, double z,
                  double* out_mx, double* out_mz) {
 #ifdef DEMO_HAVE_ERROR_MODEL
+    if (!sh->model_applies) {
+        *out_mx = *out_mz = NAN;
+        return -1;
+    }
     swarp_error_config cfg;
     memset(&cfg, 0, sizeof cfg);
     cfg.near = sh->near;

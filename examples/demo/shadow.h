@@ -15,9 +15,11 @@ typedef enum demo_technique {
     DEMO_TECH_LISPSM,      /**< LiSPSM with n_opt [RHS] (3.2) */
     DEMO_TECH_REPAR,       /**< LiSPSM with Lloyd's n_repar [RHS] (3.4) */
     DEMO_TECH_GMNPR,       /**< LiSPSM with lambda_GMNPR [GMNPR] (8) */
+    DEMO_TECH_PSEUDO,      /**< LiSPSM with pseudo-near/far n_opt [RHS] (4.2) */
     DEMO_TECH_PSM,         /**< PSM [KOZ] */
     DEMO_TECH_PSSM,        /**< z-partitioned uniform maps [RHS] §3.3 */
     DEMO_TECH_PSSM_LISPSM, /**< z-partitioning + LiSPSM per split [RHS] §3.4 */
+    DEMO_TECH_PSSM_STABLE, /**< stabilised cascades: exact minimal sphere + texel snap [RHS] §3.5 */
     DEMO_TECH_LIXEL,       /**< plane-stabilised maps [LIXEL] */
     DEMO_TECH_COUNT
 } demo_technique;
@@ -26,20 +28,36 @@ typedef enum demo_scheme {
     DEMO_SCHEME_PRACTICAL = 0, /**< [RHS] (3.8), lambda */
     DEMO_SCHEME_UNIFORM,       /**< [RHS] (3.6) */
     DEMO_SCHEME_LOG,           /**< [RHS] (3.7) */
+    DEMO_SCHEME_PSEUDO,        /**< [RHS] (4.1): practical lambda over [n_p, f_p] */
     DEMO_SCHEME_COUNT
 } demo_scheme;
+
+/** How the main pass picks the map for a fragment. */
+typedef enum demo_select {
+    DEMO_SELECT_DEPTH = 0, /**< by eye depth, swarp_cascade_select_depth [RHS] §3.3.3 */
+    DEMO_SELECT_BEST,      /**< best resolution, swarp_cascade_select_best (ZZB09) */
+    DEMO_SELECT_LIXEL      /**< first map covering p, else the fallback: swarp_lixel_select */
+} demo_select;
 
 typedef struct demo_shadow_request {
     demo_technique technique;
     int splits;          /**< K for the PSSM techniques (1..DEMO_MAX_SPLITS) */
     demo_scheme scheme;
     double scheme_lambda; /**< practical scheme's lambda in [0, 1] */
+    double pseudo_near, pseudo_far; /**< n_p, f_p of [RHS] (4.2), fractions (technique pseudo) */
+    double scheme_np, scheme_fp;    /**< n_p, f_p of [RHS] (4.1), eye distances (scheme pseudo) */
     int map_res;          /**< texels per side of each map */
+    demo_select select;   /**< DEPTH or BEST for the PSSM techniques */
     int screen_w, screen_h;
 } demo_shadow_request;
 
+
 typedef struct demo_shadow {
     int count;                              /**< number of maps (passes) */
+    demo_select select;
+    int viewport[DEMO_MAX_SPLITS][2];       /**< texels of the layer each map uses */
+    int depth_clamp;                        /**< pancake casters in front of the near plane */
+    int model_applies;                      /**< Lloyd's m_x, m_z describe this configuration */
     swarp_mat4 light[DEMO_MAX_SPLITS];      /**< world -> light clip, per map */
     double split[DEMO_MAX_SPLITS + 1];      /**< eye-depth split distances C_i */
     double n_prime[DEMO_MAX_SPLITS];        /**< warp n' per map (INFINITY = uniform) */
@@ -52,10 +70,13 @@ typedef struct demo_shadow {
 const char* demo_technique_name(demo_technique t);
 /** Parses a --technique name ("uniform", "lispsm", "pssm", ...); -1 if unknown. */
 int demo_technique_parse(const char* name);
+/** 1 for the z-partitioned techniques (they use --splits). */
+int demo_technique_is_split(demo_technique t);
 /** 1 if the library linked into this build can compute technique t. */
 int demo_technique_available(demo_technique t);
 const char* demo_scheme_name(demo_scheme s);
-int demo_scheme_parse(const char* name, double* lambda);
+/** Parses practical[:L] | uniform | log | pseudo:NP,FP[,L]. */
+int demo_scheme_parse(const char* name, double* lambda, double* np, double* fp);
 
 /** Technique -> light matrices.  0 on success, -1 with a message on stderr
  *  (unavailable technique or a library error). */

@@ -59,14 +59,18 @@ int cmd_params(sw_args* a);
 int cmd_curve(sw_args* a);
 int cmd_report(sw_args* a);
 /* stage: geometry */
+int cmd_setup(sw_args* a);
 
 /* stage: lixel */
 int cmd_lixel(sw_args* a);
 
 /* stage: splits */
 int cmd_stabwalk(sw_args* a);
+int cmd_cascade(sw_args* a);
 
 /* stage: plan */
+int cmd_plan(sw_args* a);
+int cmd_bench_report(sw_args* a);
 
 /* stage: extras */
 

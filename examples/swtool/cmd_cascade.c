@@ -6,6 +6,69 @@
 
 #include "cli.h"
 
+/* "none" | "sphere" | "levels" | "levels:N" */
+static int parse_stabilize(const char* s, swarp_stabilize_mode* mode, uint32_t* levels) {
+    *levels = 0;
+    if (!s || strcmp(s, "none") == 0) {
+        *mode = SWARP_STABILIZE_NONE;
+        return 1;
+    }
+    if (strcmp(s, "sphere") == 0) {
+        *mode = SWARP_STABILIZE_SPHERE;
+        return 1;
+    }
+    if (strncmp(s, "levels", 6) == 0) {
+        *mode = SWARP_STABILIZE_LEVELS;
+        if (s[6] == '\0') return 1;
+        if (s[6] != ':') return 0;
+        char* end = NULL;
+        long v = strtol(s + 7, &end, 10);
+        if (end == s + 7 || *end || v < 1 || v > 1000000) return 0;
+        *levels = (uint32_t)v;
+        return 1;
+    }
+    return 0;
+}
+
+/* "uniform" | "log" | "practical[:L]" | "pseudo:NP,FP[,L]" */
+static int parse_scheme(const char* s, swarp_split_options* o) {
+    if (!s) return 1;
+    if (strcmp(s, "uniform") == 0) {
+        o->scheme = SWARP_SCHEME_UNIFORM;
+        return 1;
+    }
+    if (strcmp(s, "log") == 0) {
+        o->scheme = SWARP_SCHEME_LOG;
+        return 1;
+    }
+    if (strcmp(s, "practical") == 0 || strcmp(s, "pssm") == 0) {
+        o->scheme = SWARP_SCHEME_PRACTICAL;
+        o->lambda = 0.5;
+        return 1;
+    }
+    if (strncmp(s, "practical:", 10) == 0) {
+        o->scheme = SWARP_SCHEME_PRACTICAL;
+        return cli_parse_list(s + 10, &o->lambda, 1);
+    }
+    if (strncmp(s, "pseudo:", 7) == 0) {
+        double v[3];
+        o->scheme = SWARP_SCHEME_PSEUDO;
+        o->lambda = 0.5;
+        if (cli_parse_list(s + 7, v, 2)) {
+            o->pseudo_near = v[0];
+            o->pseudo_far = v[1];
+            return 1;
+        }
+        if (cli_parse_list(s + 7, v, 3)) {
+            o->pseudo_near = v[0];
+            o->pseudo_far = v[1];
+            o->lambda = v[2];
+            return 1;
+        }
+    }
+    return 0;
+}
+
 /* 8 corners of the camera's frustum slice [n, f] */
 static void walk_corners(const swarp_camera* c, double n, double f, swarp_vec3 out[8]) {
     double l = sqrt(c->dir.x * c->dir.x + c->dir.y * c->dir.y + c->dir.z * c->dir.z);
@@ -93,5 +156,136 @@ int cmd_stabwalk(sw_args* a) {
         json_close_arr();
         json_end();
     }
+    return 0;
+}
+
+/* swtool cascade: split distances, per-split warp, error maxima, atlas place
+ * and (with --curve) the whole configuration's error curve.  The error model
+ * is Lloyd's overhead-light frame [RHS] (2.3)-(2.8). */
+int cmd_cascade(sw_args* a) {
+    static const char* const known[] = {"near", "far", "fovy", "image", "res", "splits", "scheme",
+                                        "warp", "stabilize", "curve", "samples", NULL};
+    if (!cli_check_known(a, known)) return 2;
+    double n, f, fovy;
+    unsigned K, res, samples, iw, ih;
+    if (!cli_double(a, "near", 1.0, &n) || !cli_double(a, "far", 500.0, &f) ||
+        !cli_double(a, "fovy", 60.0, &fovy) || !cli_uint(a, "splits", 4, &K) ||
+        !cli_uint(a, "res", 1024, &res) || !cli_uint(a, "samples", 64, &samples) ||
+        !cli_size(a, "image", 1024, 1024, &iw, &ih))
+        return 2;
+    swarp_split_options so;
+    memset(&so, 0, sizeof so);
+    so.count = K;
+    if (!parse_scheme(cli_opt(a, "scheme"), &so)) {
+        fprintf(stderr, "swtool cascade: --scheme uniform|log|practical:L|pseudo:NP,FP[,L]\n");
+        return 2;
+    }
+    swarp_stabilize_mode smode;
+    uint32_t levels;
+    if (!parse_stabilize(cli_opt(a, "stabilize"), &smode, &levels)) {
+        fprintf(stderr, "swtool cascade: --stabilize none|sphere|levels:N\n");
+        return 2;
+    }
+    const char* warp = cli_opt(a, "warp");
+    int lispsm = warp && strcmp(warp, "lispsm") == 0;
+    if (warp && !lispsm && strcmp(warp, "none") != 0) {
+        fprintf(stderr, "swtool cascade: --warp none|lispsm\n");
+        return 2;
+    }
+    if (lispsm && smode != SWARP_STABILIZE_NONE)
+        return cli_report_status(a, SWARP_ERR_STABILIZE_WARPED, "--stabilize with --warp lispsm");
+    if (K == 0 || K > SWARP_SPLIT_MAX_COUNT) return cli_report_status(a, SWARP_ERR_SPLIT_COUNT, "--splits");
+
+    double c[SWARP_SPLIT_MAX_COUNT + 1], np[SWARP_SPLIT_MAX_COUNT];
+    double smx[SWARP_SPLIT_MAX_COUNT], smz[SWARP_SPLIT_MAX_COUNT], mx_all, mz_all;
+    size_t cnt;
+    swarp_status st = swarp_cascade_splits(n, f, &so, c, SWARP_SPLIT_MAX_COUNT + 1, &cnt);
+    if (swarp_status_is_error(st)) return cli_report_status(a, st, "swarp_cascade_splits");
+    if (lispsm) {
+        st = swarp_cascade_nopt(c, K, so.scheme == SWARP_SCHEME_PSEUDO ? so.pseudo_near : 0.0,
+                                so.scheme == SWARP_SCHEME_PSEUDO ? so.pseudo_far : 0.0, np);
+        if (swarp_status_is_error(st)) return cli_report_status(a, st, "swarp_cascade_nopt");
+    } else {
+        for (unsigned i = 0; i < K; ++i) np[i] = INFINITY;
+    }
+    swarp_error_config cfg;
+    memset(&cfg, 0, sizeof cfg);
+    cfg.near = n;
+    cfg.far = f;
+    cfg.theta = 0.5 * fovy * SW_DEG;
+    cfg.res_ix = iw > ih ? iw : ih;
+    cfg.res_iy = iw > ih ? ih : iw;
+    cfg.res_s = cfg.res_t = res;
+    st = swarp_error_split_max(&cfg, c, np, K, smx, smz, &mx_all, &mz_all);
+    if (swarp_status_is_error(st)) return cli_report_status(a, st, "swarp_error_split_max");
+    swarp_atlas_info info;
+    swarp_atlas_tile tiles[SWARP_ATLAS_MAX_SPLITS];
+    int have_atlas = K <= SWARP_ATLAS_MAX_SPLITS;
+    if (have_atlas) {
+        st = swarp_atlas_layout(K, res, SWARP_DEPTH_DEFAULT, &info, tiles, SWARP_ATLAS_MAX_SPLITS, &cnt);
+        if (swarp_status_is_error(st)) return cli_report_status(a, st, "swarp_atlas_layout");
+    }
+    const int curve = cli_flag(a, "curve");
+    static double z[SWARP_SPLIT_MAX_COUNT * 4096], cmx[SWARP_SPLIT_MAX_COUNT * 4096],
+        cmz[SWARP_SPLIT_MAX_COUNT * 4096];
+    size_t ncurve = 0;
+    if (curve) {
+        if (samples < 2 || samples > 4096) {
+            fprintf(stderr, "swtool cascade: --samples 2..4096\n");
+            return 2;
+        }
+        st = swarp_cascade_error_curve(&cfg, c, np, K, samples, z, cmx, cmz,
+                                       sizeof z / sizeof z[0], &ncurve);
+        if (swarp_status_is_error(st)) return cli_report_status(a, st, "swarp_cascade_error_curve");
+    }
+    if (a->json) {
+        json_begin();
+        json_kv_status(SWARP_OK);
+        json_kv_arr("splits", c, K + 1);
+        json_kv_num("max_mx", mx_all);
+        json_kv_num("max_mz", mz_all);
+        if (have_atlas) json_kv_num("l_sc", info.l_sc);
+        json_key("split");
+        json_open_arr();
+        for (unsigned i = 0; i < K; ++i) {
+            json_open_obj();
+            json_kv_num("near", c[i]);
+            json_kv_num("far", c[i + 1]);
+            json_kv_num("n_prime", np[i]);
+            json_kv_num("max_mx", smx[i]);
+            json_kv_num("max_mz", smz[i]);
+            if (have_atlas) {
+                double vp[4] = {tiles[i].viewport_x, tiles[i].viewport_y, tiles[i].viewport_width,
+                                tiles[i].viewport_height};
+                json_kv_arr("viewport", vp, 4);
+                json_kv_mat("clip_to_atlas", &tiles[i].clip_to_atlas);
+            }
+            json_close_obj();
+        }
+        json_close_arr();
+        if (curve) {
+            json_kv_arr("z", z, ncurve);
+            json_kv_arr("mx", cmx, ncurve);
+            json_kv_arr("mz", cmz, ncurve);
+        }
+        json_end();
+        return 0;
+    }
+    if (curve) {
+        printf("# z m_x m_z   (%u splits; a border depth belongs to the split that starts there)\n", K);
+        for (size_t k = 0; k < ncurve; ++k) printf("%.17g %.17g %.17g\n", z[k], cmx[k], cmz[k]);
+        return 0;
+    }
+    printf("split        near          far      n_prime     max m_x     max m_z   atlas viewport\n");
+    for (unsigned i = 0; i < K; ++i) {
+        printf("%5u %12.6g %12.6g %12.6g %11.5g %11.5g", i, c[i], c[i + 1], np[i], smx[i], smz[i]);
+        if (have_atlas)
+            printf("   %g,%g %gx%g", tiles[i].viewport_x, tiles[i].viewport_y, tiles[i].viewport_width,
+                   tiles[i].viewport_height);
+        printf("\n");
+    }
+    printf("whole: max m_x %.6g, max m_z %.6g", mx_all, mz_all);
+    if (have_atlas) printf("; atlas %gx%g, l_sc %g", info.atlas_res, info.atlas_res, info.l_sc);
+    printf("\n");
     return 0;
 }

@@ -16,14 +16,18 @@ static const sw_cmd commands[] = {
     {"curve", cmd_curve, "m_x, m_z along the view depth for a technique [--splits --scheme]"},
     {"report", cmd_report, "the default configuration: each technique's parameter and max error"},
     /* stage: geometry */
+    {"setup", cmd_setup, "light view/projection/matrix for --eye --dir --box and a light (swarp_setup)"},
 
     /* stage: lixel */
     {"lixel", cmd_lixel, "plane-stabilised light matrix M_l for --eye --dir --plane --light-pos|--light-dir"},
 
     /* stage: splits */
+    {"cascade", cmd_cascade, "splits, per-split warp, error maxima, atlas [--splits --scheme --stabilize --curve]"},
     {"stabwalk", cmd_stabwalk, "texel coordinates of a fixed point while the camera moves [--res --steps]"},
 
     /* stage: plan */
+    {"plan", cmd_plan, "the planner: --gamma/--eye/--dir.. --max-error --map --max-passes [--force W]"},
+    {"bench-report", cmd_bench_report, "accuracy/cost report: tables and Pareto data [--out-dir D]"},
 
     /* stage: extras */
 

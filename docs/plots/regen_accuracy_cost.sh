@@ -1,0 +1,68 @@
+#!/bin/sh
+# Regenerates docs/accuracy-cost.md, docs/plots/accuracy-cost*.dat and
+# docs/img/pareto.png from `swtool bench-report` (one command: run from the
+# repository root after building, e.g. `ninja -C build`).
+#   sh docs/plots/regen_accuracy_cost.sh [build-dir] [reps]
+set -eu
+cd "$(dirname "$0")/../.."
+BUILD="${1:-build}"
+REPS="${2:-2000}"
+SWTOOL="$BUILD/examples/swtool/swtool"
+[ -x "$SWTOOL" ] || { echo "regen_accuracy_cost: build swtool first ($SWTOOL)" >&2; exit 1; }
+mkdir -p docs/img docs/plots
+# The demo's measured columns: its `measure` camera (horizontal view, near 1,
+# far 600) at 1024x768, light at gamma to the view, for the techniques the
+# demo renders on main.  One line per run:
+#   gamma map technique K setup_us passes texels shadow_ms main_ms meas_mz pred_mz
+DEMO="$BUILD/examples/demo/demo"
+DEMO_DAT=docs/plots/demo-measured.dat
+DEMO_ARG=""
+if [ -x "$DEMO" ] && [ "${SWARP_NO_DEMO:-0}" != "1" ]; then
+    TMP=$(mktemp -d)
+    echo "# gamma map technique K setup_us passes texels shadow_ms main_ms meas_mz pred_mz" > "$DEMO_DAT"
+    for g in 90 60 45 30; do
+        LD=$(awk -v g="$g" 'BEGIN { r = g * 3.14159265358979 / 180; printf "0,%.9f,%.9f", -sin(r), cos(r) }')
+        for map in 1024 2048; do
+            for t in uniform:1 pssm:2 pssm:4 pssm:8 pssm:16; do
+                tech=${t%%:*}; k=${t##*:}
+                set -- --technique "$tech"
+                [ "$tech" = pssm ] && set -- "$@" --splits "$k"
+                line=$("$DEMO" "$@" --camera measure --light-dir "$LD" --size 1024x768 --map "$map" \
+                       --out "$TMP" 2>/dev/null | awk '/^technique +setup_us/ { getline; print; exit }')
+                [ -n "$line" ] || continue
+                echo "$line" | awk -v g="$g" -v m="$map" -v t="$tech" -v k="$k" \
+                    '{ print g, m, t, k, $2, $3, $4, $5, $6, $7, $8 }' >> "$DEMO_DAT"
+            done
+        done
+    done
+    rm -rf "$TMP"
+    DEMO_ARG="--demo-data $DEMO_DAT"
+fi
+"$SWTOOL" bench-report --reps "$REPS" --out-dir docs $DEMO_ARG
+gnuplot <<'GP'
+set terminal pngcairo size 1500,1200 font "DejaVu Sans,10"
+set output 'docs/img/pareto.png'
+set multiplot layout 3,3 title "Predicted max error vs predicted shadow time (f/n = 1000, map 2048, screen 1024x768, Θ = 30°)\nerror = max(m_x, m_z), Lloyd's metric generalised to γ (docs/planning.md); time = shadow passes × 1.39 ms ([RHS] Table 7.1 fit); line: Pareto front"
+set logscale y
+set xlabel "predicted shadow time [ms]"
+set ylabel "max pixels per texel"
+set grid
+set key top right font ",8"
+set xrange [0:24]
+set yrange [0.3:*]
+gammas = "90 60 45 30 20 10 5 0 150"
+do for [i=0:8] {
+  set title sprintf("γ = %s°", word(gammas, i+1))
+  plot 'docs/plots/accuracy-cost.dat' index i using 1:($3==1?$2:1/0) with points pt 7 ps 1.2 lc rgb "#d62728" title "one map (uniform, LiSPSM, PSM)", \
+       '' index i using 1:($3==2?$2:1/0) with points pt 5 ps 1.0 lc rgb "#1f77b4" title "PSSM", \
+       '' index i using 1:($3==3?$2:1/0) with points pt 4 ps 1.3 lc rgb "#17becf" title "PSSM stabilised", \
+       '' index i using 1:($3==4?$2:1/0) with points pt 9 ps 1.3 lc rgb "#2ca02c" title "PSSM + n_opt", \
+       '' index i using 1:($3==7?$2:1/0) with points pt 13 ps 1.2 lc rgb "#9467bd" title "PSSM log", \
+       '' index i using 1:($3==8?$2:1/0) with points pt 11 ps 1.3 lc rgb "#ff7f0e" title "PSSM log + n_opt", \
+       '' index i using 1:($3==6?$2:1/0) with points pt 3 ps 2.5 lw 2 lc rgb "#000000" title "planner (E = 1)", \
+       'docs/plots/accuracy-cost-front.dat' index i using 1:2 with lines lw 1.5 lc rgb "#555555" title "Pareto front", \
+       1 with lines dt 2 lc rgb "#000000" title "1 pixel per texel"
+}
+unset multiplot
+GP
+echo "regen_accuracy_cost: wrote docs/accuracy-cost.md, docs/plots/accuracy-cost*.dat, docs/img/pareto.png"

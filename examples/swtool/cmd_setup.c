@@ -1,0 +1,137 @@
+/* swtool setup: the one call for engines (swarp_setup) from the command
+ * line.  docs/swtool.md, section "setup". */
+#define _POSIX_C_SOURCE 200809L
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "cli.h"
+
+static int cmp_double(const void* a, const void* b) {
+    double x = *(const double*)a, y = *(const double*)b;
+    return (x > y) - (x < y);
+}
+
+static double now_ns(void) {
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec * 1e9 + (double)ts.tv_nsec;
+}
+
+int cmd_setup(sw_args* a) {
+    static const char* const known[] = {"eye",   "dir",    "up",        "fovy",  "aspect", "near",
+                                        "far",   "light-dir", "light-pos", "box", "map",    "screen",
+                                        "technique", "depth", "reps", NULL};
+    if (!cli_check_known(a, known)) return 2;
+    swarp_camera cam;
+    memset(&cam, 0, sizeof cam);
+    swarp_light light;
+    memset(&light, 0, sizeof light);
+    swarp_aabb box;
+    double fovy_deg = 60.0, boxv[6];
+    unsigned map = 2048, sw = 1920, sh = 1080, reps = 1;
+    if (!cli_vec3(a, "eye", 1, &cam.eye) || !cli_vec3(a, "dir", 1, &cam.dir)) return 2;
+    cam.up = (swarp_vec3){0, 1, 0};
+    if (!cli_vec3(a, "up", 0, &cam.up)) return 2;
+    if (!cli_double(a, "fovy", 60.0, &fovy_deg) || !cli_double(a, "aspect", 16.0 / 9.0, &cam.aspect) ||
+        !cli_double(a, "near", 1.0, &cam.near) || !cli_double(a, "far", 100.0, &cam.far))
+        return 2;
+    cam.fovy = fovy_deg * SW_DEG;
+    const char* ld = cli_opt(a, "light-dir");
+    const char* lp = cli_opt(a, "light-pos");
+    if ((ld != NULL) == (lp != NULL)) {
+        fprintf(stderr, "swtool setup: give exactly one of --light-dir x,y,z and --light-pos x,y,z\n");
+        return 2;
+    }
+    if (ld) {
+        light.type = SWARP_LIGHT_DIRECTIONAL;
+        if (!cli_vec3(a, "light-dir", 1, &light.direction)) return 2;
+    } else {
+        light.type = SWARP_LIGHT_POINT;
+        if (!cli_vec3(a, "light-pos", 1, &light.position)) return 2;
+    }
+    const char* bs = cli_opt(a, "box");
+    if (!bs || !cli_parse_list(bs, boxv, 6)) {
+        fprintf(stderr, "swtool setup: --box x0,y0,z0,x1,y1,z1 is required\n");
+        return 2;
+    }
+    box.min = (swarp_vec3){boxv[0], boxv[1], boxv[2]};
+    box.max = (swarp_vec3){boxv[3], boxv[4], boxv[5]};
+    if (!cli_uint(a, "map", 2048, &map) || !cli_size(a, "screen", 1920, 1080, &sw, &sh) ||
+        !cli_uint(a, "reps", 1, &reps))
+        return 2;
+    if (reps == 0) reps = 1;
+    swarp_setup_options o;
+    memset(&o, 0, sizeof o);
+    o.map_width = o.map_height = map;
+    o.screen_width = sw;
+    o.screen_height = sh;
+    const char* tech = cli_opt(a, "technique");
+    if (!tech || strcmp(tech, "lispsm") == 0) {
+        o.technique = SWARP_TECHNIQUE_LISPSM;
+        o.param = SWARP_WARP_PARAM_NOPT;
+    } else if (strcmp(tech, "uniform") == 0) {
+        o.technique = SWARP_TECHNIQUE_UNIFORM;
+    } else if (strcmp(tech, "repar") == 0) {
+        o.technique = SWARP_TECHNIQUE_LISPSM;
+        o.param = SWARP_WARP_PARAM_NREPAR;
+    } else if (strcmp(tech, "gmnpr") == 0) {
+        o.technique = SWARP_TECHNIQUE_LISPSM;
+        o.param = SWARP_WARP_PARAM_GMNPR;
+    } else if (strcmp(tech, "psm") == 0) {
+        o.technique = SWARP_TECHNIQUE_PSM;
+    } else {
+        fprintf(stderr, "swtool setup: --technique uniform|lispsm|repar|gmnpr|psm, got '%s'\n", tech);
+        return 2;
+    }
+    const char* depth = cli_opt(a, "depth");
+    if (!depth || strcmp(depth, "gl") == 0) {
+        o.depth_range = SWARP_DEPTH_NEG_ONE_TO_ONE;
+    } else if (strcmp(depth, "zo") == 0) {
+        o.depth_range = SWARP_DEPTH_ZERO_TO_ONE;
+    } else {
+        fprintf(stderr, "swtool setup: --depth gl|zo, got '%s'\n", depth);
+        return 2;
+    }
+    double* ns = malloc(sizeof(double) * reps);
+    if (!ns) return 1;
+    swarp_setup_result r;
+    swarp_status s = SWARP_OK;
+    for (unsigned k = 0; k < reps; ++k) {
+        double t0 = now_ns();
+        s = swarp_setup(&cam, &light, &box, &o, &r, NULL, 0, NULL);
+        ns[k] = now_ns() - t0;
+    }
+    qsort(ns, reps, sizeof(double), cmp_double);
+    double median = reps % 2 ? ns[reps / 2] : 0.5 * (ns[reps / 2 - 1] + ns[reps / 2]);
+    free(ns);
+    if (swarp_status_is_error(s)) return cli_report_status(a, s, "swarp_setup");
+    if (a->json) {
+        json_begin();
+        json_kv_status(s);
+        json_kv_mat("light_view", &r.light_view);
+        json_kv_mat("light_proj", &r.light_proj);
+        json_kv_mat("matrix", &r.matrix);
+        json_kv_num("n_param", r.n_eye);
+        json_kv_num("near", r.view_near);
+        json_kv_num("far", r.view_far);
+        json_kv_num("max_mx", r.max_mx);
+        json_kv_num("max_mz", r.max_mz);
+        json_kv_num("setup_ns", median);
+        json_end();
+    } else {
+        printf("status      %s\n", swarp_status_name(s));
+        printf("technique   %s\n", tech ? tech : "lispsm");
+        printf("n' (eye)    %.9g\n", r.n_eye);
+        printf("view range  [%.9g, %.9g] (adjusted, [RHS] 3.3.1)\n", r.view_near, r.view_far);
+        printf("gamma       %.6g deg\n", r.gamma / SW_DEG);
+        printf("max m_x     %.6g\nmax m_z     %.6g\n", r.max_mx, r.max_mz);
+        printf("points of B %u\n", r.point_count);
+        printf("setup       %.0f ns (median of %u)\n", median, reps);
+        printf("matrix (column-major):\n");
+        for (int row = 0; row < 4; ++row)
+            printf("  %14.8g %14.8g %14.8g %14.8g\n", r.matrix.m[row], r.matrix.m[4 + row], r.matrix.m[8 + row],
+                   r.matrix.m[12 + row]);
+    }
+    return cli_report_status(a, s, "swarp_setup");
+}

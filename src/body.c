@@ -1,0 +1,367 @@
+/* The convex intersection body B of [RHS] §3.1.1 (Fig. 3.2, [WS06]) and the
+ * adjusted near/far of [RHS] §3.3.1 ([ZSN07]).
+ *
+ *   H = V ∩ S
+ *   directional light:  B = (H swept against the light direction) ∩ S
+ *   point light:        B = conv(H ∪ {l}) ∩ S ∩ L
+ *
+ * The sweep H + {t u : t >= 0} (u = -light direction) is built explicitly as
+ * conv(H ∪ (H + T u)) with T longer than the diagonal of S: faces of H that
+ * face u move to H + T u, the others stay, and each silhouette edge between
+ * the two kinds becomes a quad.  Clipping by S then cuts it where the
+ * extrusion leaves S, exactly "extrude each point of H until it leaves S,
+ * then ∩ S".  conv(H ∪ {l}) is built the same way with the faces visible
+ * from l replaced by triangles to l.  A flat H (flat scene box) is handled
+ * as a polygon in its plane. */
+#include "geometry_internal.h"
+
+/* Faces of H whose plane passes within this many scale units of the light
+ * position count as not visible from it (the light lies on their plane). */
+#define SW_BODY_VISIBLE_EPS_REL 1e-12
+
+static int sw_face_is_front(swarp_plane p, swarp_vec3 u) {
+    double c = p.a * u.x + p.b * u.y + p.c * u.z;
+    if (c != 0.0) return c > 0.0;
+    /* exactly parallel: tie-break on the normal so that of two opposite
+     * faces (a flat H) exactly one is "front" */
+    if (p.a != 0.0) return p.a > 0.0;
+    if (p.b != 0.0) return p.b > 0.0;
+    return p.c > 0.0;
+}
+
+static swarp_vec3 sw_plane_n(swarp_plane p) { return sw_v3(p.a, p.b, p.c); }
+
+/* Is H flat (all vertices on the plane of face 0)? */
+static int sw_poly_is_flat(const swarp_polyhedron* H) {
+    if (H->face_count == 0) return 1;
+    const double eps = SWARP_POLY_EPS_REL * 4.0 * sw_poly_scale(H);
+    swarp_plane p = H->planes[0];
+    for (uint32_t i = 0; i < H->vertex_count; ++i) {
+        double d = p.a * H->vertices[i].x + p.b * H->vertices[i].y + p.c * H->vertices[i].z + p.d;
+        if (fabs(d) > eps) return 0;
+    }
+    return 1;
+}
+
+/* A flat polyhedron (two opposite faces) from a convex loop of points. */
+static swarp_status sw_poly_flat_from_loop(const swarp_vec3* pts, uint32_t n, swarp_vec3 normal,
+                                           swarp_polyhedron* out) {
+    if (n > SWARP_POLY_MAX_FACE_VERTICES || n > SWARP_POLY_MAX_VERTICES) return SWARP_ERR_CAPACITY;
+    out->vertex_count = n;
+    for (uint32_t i = 0; i < n; ++i) out->vertices[i] = pts[i];
+    if (n < 3) {
+        out->face_count = 0;
+        return SWARP_OK;
+    }
+    double d = -sw_dot(normal, pts[0]);
+    out->face_count = 2;
+    out->planes[0] = (swarp_plane){normal.x, normal.y, normal.z, d};
+    out->planes[1] = (swarp_plane){-normal.x, -normal.y, -normal.z, -d};
+    out->face_vertex_count[0] = out->face_vertex_count[1] = n;
+    for (uint32_t i = 0; i < n; ++i) {
+        out->face_vertices[0][i] = (uint8_t)i;
+        out->face_vertices[1][i] = (uint8_t)(n - 1 - i);
+    }
+    return SWARP_OK;
+}
+
+/* In-plane version for a flat H: the loop of face 0 (CCW about its normal n).
+ * Directional (point == NULL): hull of the polygon and its translate by T u.
+ * Point light: hull of the polygon and the point. */
+static swarp_status sw_flat_extend(const swarp_polyhedron* H, swarp_vec3 u, double T,
+                                   const swarp_vec3* point, swarp_polyhedron* out) {
+    if (H->face_count == 0) { /* a point or nothing: kept as it is */
+        sw_poly_copy(H, out);
+        return SWARP_OK;
+    }
+    const uint8_t* loop = H->face_vertices[0];
+    uint32_t k = H->face_vertex_count[0];
+    swarp_vec3 n = sw_plane_n(H->planes[0]);
+    const double eps = SW_BODY_VISIBLE_EPS_REL * sw_poly_scale(H);
+    int cls[SWARP_POLY_MAX_FACE_VERTICES]; /* edge i = (v_i -> v_i+1) front/visible */
+    for (uint32_t i = 0; i < k; ++i) {
+        swarp_vec3 a = H->vertices[loop[i]], b = H->vertices[loop[(i + 1) % k]];
+        swarp_vec3 m = sw_cross(sw_sub(b, a), n); /* outward in-plane edge normal */
+        if (point)
+            cls[i] = sw_dot(m, sw_sub(*point, a)) > eps * sw_glen(m);
+        else
+            cls[i] = sw_dot(m, u) > 0.0;
+    }
+    swarp_vec3 pts[2 * SWARP_POLY_MAX_FACE_VERTICES + 1];
+    uint32_t np = 0;
+    for (uint32_t i = 0; i < k; ++i) {
+        int p = cls[(i + k - 1) % k], q = cls[i];
+        swarp_vec3 v = H->vertices[loop[i]];
+        swarp_vec3 vt = point ? *point : sw_add(v, sw_scale(u, T));
+        if (point) {
+            if (!p && !q) pts[np++] = v;
+            else if (!p && q) pts[np++] = v, pts[np++] = vt;
+            else if (p && !q) pts[np++] = v;
+        } else {
+            if (!p && !q) pts[np++] = v;
+            else if (p && q) pts[np++] = vt;
+            else if (!p && q) pts[np++] = v, pts[np++] = vt;
+            else pts[np++] = vt, pts[np++] = v;
+        }
+    }
+    return sw_poly_flat_from_loop(pts, np, n, out);
+}
+
+/* conv(H ∪ (H + T u)) (apex == NULL) or conv(H ∪ {apex}) for a solid H. */
+static swarp_status sw_extend(const swarp_polyhedron* H, swarp_vec3 u, double T, const swarp_vec3* apex,
+                              swarp_polyhedron* out) {
+    const uint32_t nv = H->vertex_count;
+    int front[SWARP_POLY_MAX_FACES];
+    int any_front = 0;
+    const double eps = SW_BODY_VISIBLE_EPS_REL * sw_poly_scale(H);
+    for (uint32_t f = 0; f < H->face_count; ++f) {
+        if (apex) {
+            swarp_plane p = H->planes[f];
+            front[f] = p.a * apex->x + p.b * apex->y + p.c * apex->z + p.d > eps;
+        } else {
+            front[f] = sw_face_is_front(H->planes[f], u);
+        }
+        any_front |= front[f];
+    }
+    if (!any_front) { /* apex inside H: the hull is H */
+        sw_poly_copy(H, out);
+        return SWARP_OK;
+    }
+    /* vertices: H's, then either the translated copies or the apex */
+    uint32_t tv = apex ? nv + 1 : 2 * nv;
+    if (tv > SWARP_POLY_MAX_VERTICES) return SWARP_ERR_CAPACITY;
+    for (uint32_t i = 0; i < nv; ++i) out->vertices[i] = H->vertices[i];
+    if (apex)
+        out->vertices[nv] = *apex;
+    else
+        for (uint32_t i = 0; i < nv; ++i) out->vertices[nv + i] = sw_add(H->vertices[i], sw_scale(u, T));
+    uint32_t tf = 0;
+    for (uint32_t f = 0; f < H->face_count; ++f) {
+        uint32_t n = H->face_vertex_count[f];
+        const uint8_t* l = H->face_vertices[f];
+        if (!front[f]) {
+            if (tf >= SWARP_POLY_MAX_FACES) return SWARP_ERR_CAPACITY;
+            out->planes[tf] = H->planes[f];
+            out->face_vertex_count[tf] = n;
+            memcpy(out->face_vertices[tf], l, n);
+            ++tf;
+            /* silhouette edges: edge a->b of this back face whose twin b->a
+             * lies in a front face */
+            for (uint32_t k = 0; k < n; ++k) {
+                uint8_t a = l[k], b = l[(k + 1) % n];
+                int twin_front = 0;
+                for (uint32_t g = 0; g < H->face_count && !twin_front; ++g) {
+                    if (!front[g]) continue;
+                    uint32_t m = H->face_vertex_count[g];
+                    for (uint32_t j = 0; j < m; ++j)
+                        if (H->face_vertices[g][j] == b && H->face_vertices[g][(j + 1) % m] == a) {
+                            twin_front = 1;
+                            break;
+                        }
+                }
+                if (!twin_front) continue;
+                if (tf >= SWARP_POLY_MAX_FACES) return SWARP_ERR_CAPACITY;
+                /* side face b -> a -> a' -> b' (or b -> a -> apex) */
+                uint8_t* q = out->face_vertices[tf];
+                uint32_t qn;
+                q[0] = b;
+                q[1] = a;
+                if (apex) {
+                    q[2] = (uint8_t)nv;
+                    qn = 3;
+                } else {
+                    q[2] = (uint8_t)(nv + a);
+                    q[3] = (uint8_t)(nv + b);
+                    qn = 4;
+                }
+                swarp_vec3 nn;
+                {
+                    /* plane through the edge containing u (or the apex) */
+                    swarp_vec3 va = out->vertices[a], vb = out->vertices[b];
+                    swarp_vec3 dir = apex ? sw_sub(*apex, va) : u;
+                    nn = sw_cross(sw_sub(va, vb), dir); /* (a - b) x u: outward for CCW b->a->... */
+                }
+                swarp_vec3 nu = {0, 0, 1};
+                if (!sw_gnormalize(nn, &nu)) continue; /* edge parallel to u: zero-area side */
+                out->planes[tf] = (swarp_plane){nu.x, nu.y, nu.z, -sw_dot(nu, out->vertices[a])};
+                out->face_vertex_count[tf] = qn;
+                ++tf;
+            }
+        } else if (!apex) {
+            if (tf >= SWARP_POLY_MAX_FACES) return SWARP_ERR_CAPACITY;
+            swarp_plane p = H->planes[f];
+            /* translated plane: d' = d - n·(T u) */
+            p.d -= T * (p.a * u.x + p.b * u.y + p.c * u.z);
+            out->planes[tf] = p;
+            out->face_vertex_count[tf] = n;
+            for (uint32_t k = 0; k < n; ++k) out->face_vertices[tf][k] = (uint8_t)(nv + l[k]);
+            ++tf;
+        }
+    }
+    out->vertex_count = tv;
+    out->face_count = tf;
+    return SWARP_OK;
+}
+
+void sw_depth_range_of(const swarp_polyhedron* P, swarp_vec3 eye, swarp_vec3 f, double* mn, double* mx) {
+    double lo = INFINITY, hi = -INFINITY;
+    for (uint32_t i = 0; i < P->vertex_count; ++i) {
+        double z = sw_dot(sw_sub(P->vertices[i], eye), f);
+        if (z < lo) lo = z;
+        if (z > hi) hi = z;
+    }
+    *mn = lo;
+    *mx = hi;
+}
+
+swarp_status sw_body_h(const swarp_camera* cam, double near, double far, const swarp_aabb* box,
+                       swarp_polyhedron* H) {
+    /* box first: it is usually the smaller, and clipping the frustum by the
+     * box's planes keeps the exact axis planes */
+    swarp_polyhedron V;
+    swarp_status s = swarp_poly_from_camera_range(cam, near, far, &V);
+    if (s != SWARP_OK) return s;
+    s = sw_poly_clip_box(&V, box, H);
+    if (s != SWARP_OK) return s;
+    if (H->vertex_count == 0) return SWARP_ERR_BODY_EMPTY;
+    return SWARP_OK;
+}
+
+/* The square pyramid L circumscribing the spot cone: 4 planes through l. */
+static swarp_status sw_clip_light_pyramid(swarp_polyhedron* B, const swarp_light* light) {
+    swarp_vec3 a = {0, 0, 1}, e1 = {1, 0, 0}, e2;
+    sw_gnormalize(light->direction, &a);
+    swarp_vec3 ref = fabs(a.x) < 0.6 ? sw_v3(1, 0, 0) : (fabs(a.y) < 0.6 ? sw_v3(0, 1, 0) : sw_v3(0, 0, 1));
+    sw_gnormalize(sw_cross(ref, a), &e1);
+    e2 = sw_cross(a, e1);
+    double c = cos(light->cone_angle), s = sin(light->cone_angle);
+    swarp_vec3 ns[4] = {sw_sub(sw_scale(e1, c), sw_scale(a, s)), sw_sub(sw_scale(e1, -c), sw_scale(a, s)),
+                        sw_sub(sw_scale(e2, c), sw_scale(a, s)), sw_sub(sw_scale(e2, -c), sw_scale(a, s))};
+    for (int k = 0; k < 4; ++k) {
+        swarp_status st = sw_poly_clip(B, ns[k], -sw_dot(ns[k], light->position), B);
+        if (st != SWARP_OK) return st;
+    }
+    return SWARP_OK;
+}
+
+swarp_status sw_body_from_h(const swarp_polyhedron* H, const swarp_light* light, const swarp_aabb* box,
+                            swarp_polyhedron* B) {
+    swarp_polyhedron M;
+    swarp_status s;
+    /* the in-plane construction only when H is flat AND the light lies in
+     * its plane (u parallel to it, or l on it); otherwise the solid
+     * construction makes a prism / pyramid over the polygon */
+    int flat = sw_poly_is_flat(H);
+    if (flat && H->face_count > 0) {
+        swarp_plane p = H->planes[0];
+        if (light->type == SWARP_LIGHT_POINT) {
+            const swarp_vec3* l = &light->position;
+            double off = p.a * l->x + p.b * l->y + p.c * l->z + p.d;
+            flat = fabs(off) <= SW_BODY_VISIBLE_EPS_REL * sw_max(sw_poly_scale(H), sw_glen(*l));
+        } else {
+            swarp_vec3 dd = {0, -1, 0};
+            sw_gnormalize(light->direction, &dd);
+            flat = fabs(p.a * dd.x + p.b * dd.y + p.c * dd.z) <= 1e-15; /* exactly grazing */
+        }
+    }
+    if (light->type == SWARP_LIGHT_POINT) {
+        swarp_vec3 l = light->position;
+        s = flat ? sw_flat_extend(H, sw_v3(0, 0, 0), 0.0, &l, &M) : sw_extend(H, sw_v3(0, 0, 0), 0.0, &l, &M);
+        if (s != SWARP_OK) return s;
+        sw_poly_finalize(&M, H->vertex_count);
+        s = sw_poly_clip_box(&M, box, B);
+        if (s != SWARP_OK) return s;
+        if (light->cone_angle > 0.0) {
+            s = sw_clip_light_pyramid(B, light);
+            if (s != SWARP_OK) return s;
+        }
+    } else {
+        swarp_vec3 u = {0, 0, 1};
+        sw_gnormalize(sw_scale(light->direction, -1.0), &u);
+        /* T: longer than any path inside S */
+        double diag = sw_glen(sw_sub(box->max, box->min));
+        double T = 2.0 * diag + 1e-300;
+        s = flat ? sw_flat_extend(H, u, T, NULL, &M) : sw_extend(H, u, T, NULL, &M);
+        if (s != SWARP_OK) return s;
+        sw_poly_finalize(&M, H->vertex_count);
+        s = sw_poly_clip_box(&M, box, B);
+        if (s != SWARP_OK) return s;
+    }
+    if (B->vertex_count == 0) return SWARP_ERR_BODY_EMPTY;
+    return SWARP_OK;
+}
+
+SWARP_API swarp_status swarp_body_h(const swarp_camera* cam, double near, double far, const swarp_aabb* scene,
+                                    swarp_polyhedron* out_H) {
+    if (!cam || !scene || !out_H) return SWARP_ERR_NULL_POINTER;
+    swarp_status s = sw_check_camera_shape(cam);
+    if (s != SWARP_OK) return s;
+    if (!sw_finite(near) || !sw_finite(far)) return SWARP_ERR_NON_FINITE;
+    if (!(near > 0.0 && far > near)) return SWARP_ERR_NEAR_FAR;
+    s = sw_check_box(scene);
+    if (s != SWARP_OK) return s;
+    swarp_polyhedron H;
+    s = sw_body_h(cam, near, far, scene, &H);
+    if (s != SWARP_OK) return s;
+    memcpy(out_H, &H, sizeof H);
+    return SWARP_OK;
+}
+
+SWARP_API swarp_status swarp_body_from_h(const swarp_polyhedron* H, const swarp_light* light,
+                                         const swarp_aabb* scene, swarp_polyhedron* out_B) {
+    if (!H || !light || !scene || !out_B) return SWARP_ERR_NULL_POINTER;
+    swarp_status s = sw_check_light(light);
+    if (s != SWARP_OK) return s;
+    s = sw_check_box(scene);
+    if (s != SWARP_OK) return s;
+    if (H->vertex_count > SWARP_POLY_MAX_VERTICES || H->face_count > SWARP_POLY_MAX_FACES)
+        return SWARP_ERR_INVALID_ARGUMENT;
+    if (H->vertex_count == 0) return SWARP_ERR_BODY_EMPTY;
+    for (uint32_t i = 0; i < H->vertex_count; ++i)
+        if (!sw_finite3(&H->vertices[i])) return SWARP_ERR_NON_FINITE;
+    for (uint32_t f = 0; f < H->face_count; ++f) {
+        if (H->face_vertex_count[f] > SWARP_POLY_MAX_FACE_VERTICES) return SWARP_ERR_INVALID_ARGUMENT;
+        for (uint32_t k = 0; k < H->face_vertex_count[f]; ++k)
+            if (H->face_vertices[f][k] >= H->vertex_count) return SWARP_ERR_INVALID_ARGUMENT;
+    }
+    swarp_polyhedron B;
+    s = sw_body_from_h(H, light, scene, &B);
+    if (s != SWARP_OK) return s;
+    memcpy(out_B, &B, sizeof B);
+    return SWARP_OK;
+}
+
+SWARP_API swarp_status swarp_body_points(const swarp_camera* cam, double near, double far,
+                                         const swarp_light* light, const swarp_aabb* scene, swarp_vec3* out,
+                                         size_t capacity, size_t* out_count) {
+    if (!cam || !light || !scene || !out_count || (!out && capacity > 0)) return SWARP_ERR_NULL_POINTER;
+    swarp_status s = sw_check_light(light);
+    if (s != SWARP_OK) return s;
+    swarp_polyhedron H, B;
+    s = swarp_body_h(cam, near, far, scene, &H);
+    if (s != SWARP_OK) return s;
+    s = sw_body_from_h(&H, light, scene, &B);
+    if (s != SWARP_OK) return s;
+    *out_count = B.vertex_count;
+    if (capacity < B.vertex_count) return SWARP_ERR_CAPACITY;
+    memcpy(out, B.vertices, B.vertex_count * sizeof(swarp_vec3));
+    return SWARP_OK;
+}
+
+SWARP_API swarp_status swarp_body_adjusted_range(const swarp_camera* cam, const swarp_aabb* scene,
+                                                 double* out_near, double* out_far) {
+    if (!cam || !scene || !out_near || !out_far) return SWARP_ERR_NULL_POINTER;
+    swarp_status s = sw_check_camera(cam);
+    if (s != SWARP_OK) return s;
+    swarp_polyhedron H;
+    s = swarp_body_h(cam, cam->near, cam->far, scene, &H);
+    if (s != SWARP_OK) return s;
+    swarp_vec3 f, r, u;
+    sw_camera_basis(cam, &f, &r, &u);
+    double mn, mx;
+    sw_depth_range_of(&H, cam->eye, f, &mn, &mx);
+    /* H ⊂ V: clamp rounding to the frustum's own range */
+    *out_near = sw_max(mn, cam->near);
+    *out_far = sw_min(sw_max(mx, *out_near), cam->far);
+    return SWARP_OK;
+}

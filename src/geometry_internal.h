@@ -1,0 +1,85 @@
+/* Internal helpers of the geometry stage (poly, body, focus, warp, psm,
+ * setup).  Not installed, not exported. */
+#ifndef SWARP_GEOMETRY_INTERNAL_H
+#define SWARP_GEOMETRY_INTERNAL_H
+
+#include "swarp_internal.h"
+
+/* Fast length for the hot paths: sqrt of the sum of squares, exact enough
+ * and safe up to |v| ~ 1e150; falls back to the overflow-proof hypot of
+ * swarp_internal.h outside that range. */
+static inline double sw_glen(swarp_vec3 a) {
+    double s = a.x * a.x + a.y * a.y + a.z * a.z;
+    if (s > 1e-290 && s < 1e290) return sqrt(s);
+    return sw_len(a);
+}
+static inline int sw_gnormalize(swarp_vec3 a, swarp_vec3* out) {
+    double l = sw_glen(a);
+    if (!(l > 0.0) || !sw_finite(l)) return 0;
+    *out = sw_scale(a, 1.0 / l);
+    return 1;
+}
+static inline double sw_max(double a, double b) { return a > b ? a : b; }
+static inline double sw_min(double a, double b) { return a < b ? a : b; }
+
+/* ---- argument checks shared by the geometry entry points ---------------- */
+swarp_status sw_check_camera_shape(const swarp_camera* cam);   /* all but near/far */
+swarp_status sw_check_camera(const swarp_camera* cam);         /* + near/far */
+swarp_status sw_check_light(const swarp_light* light);
+swarp_status sw_check_box(const swarp_aabb* box);               /* + degenerate */
+swarp_status sw_check_depth_range(swarp_depth_range d);
+
+/* Orthonormal camera basis: f (forward), r (right), u (up). */
+void sw_camera_basis(const swarp_camera* cam, swarp_vec3* f, swarp_vec3* r, swarp_vec3* u);
+
+/* Internal polyhedron operations (no argument checks). */
+void sw_poly_from_corners(const swarp_vec3 c[8], swarp_polyhedron* out);
+swarp_status sw_poly_clip(const swarp_polyhedron* in, swarp_vec3 n, double d,
+                          swarp_polyhedron* out);
+swarp_status sw_poly_clip_box(const swarp_polyhedron* in, const swarp_aabb* box,
+                              swarp_polyhedron* out);
+double sw_poly_scale(const swarp_polyhedron* p);
+/* merge near-duplicate vertices (vertices from index first_new on are
+ * compared with all earlier ones; those before are known to be apart),
+ * drop degenerate faces and unreferenced vertices */
+void sw_poly_finalize(swarp_polyhedron* p, uint32_t first_new);
+/* copy only the used parts */
+void sw_poly_copy(const swarp_polyhedron* in, swarp_polyhedron* out);
+
+/* H = V ∩ S and B without argument checks. */
+swarp_status sw_body_h(const swarp_camera* cam, double near, double far, const swarp_aabb* box,
+                       swarp_polyhedron* H);
+swarp_status sw_body_from_h(const swarp_polyhedron* H, const swarp_light* light,
+                            const swarp_aabb* box, swarp_polyhedron* B);
+/* min/max of dot(p - eye, f) over the vertices */
+void sw_depth_range_of(const swarp_polyhedron* P, swarp_vec3 eye, swarp_vec3 f, double* mn,
+                       double* mx);
+
+/* Light view (look-at) from origin along forward with the aligned up. */
+swarp_status sw_light_view(const swarp_camera* cam, swarp_vec3 origin, swarp_vec3 forward,
+                           swarp_mat4* out);
+void sw_look_at(swarp_vec3 origin, swarp_vec3 forward_unit, swarp_vec3 up_unit, swarp_mat4* out);
+/* fit without checks; returns status (OK, INFO_FLAT_EXTENT, ERR_DEGENERATE) */
+swarp_status sw_focus_fit(const swarp_mat4* m, const swarp_vec3* pts, size_t n,
+                          const swarp_vec3* zpts, size_t zn, swarp_depth_range dr,
+                          swarp_mat4* out);
+
+/* LiSPSM warp for points already validated; M maps world to the light space
+ * the warp works in (affine light view, or the post-perspective space of a
+ * point light: then M_inv is its inverse, used for the eye depths). */
+swarp_status sw_warp_lispsm(const swarp_mat4* M, const swarp_mat4* M_inv, const swarp_camera* cam,
+                            double near, double far, const swarp_vec3* points, size_t count,
+                            const swarp_vec3* nearest, const swarp_warp_options* o, swarp_mat4* out_P,
+                            swarp_warp_info* out_info);
+static inline swarp_vec3 sw_project(const swarp_mat4* m, swarp_vec3 p) {
+    swarp_vec4 h = sw_xform_point(m, p);
+    return sw_v3(h.x / h.w, h.y / h.w, h.z / h.w);
+}
+
+/* PSM [KOZ] for the one call (src/psm.c); fills light_view, light_proj,
+ * matrix, n_eye, n_light, gamma, light_near/far of res. */
+swarp_status sw_psm_setup(const swarp_camera* cam, const swarp_light* light, const swarp_vec3* B, size_t nb,
+                          const swarp_polyhedron* B_poly, const swarp_vec3* H, size_t nh, double near, double far,
+                          const swarp_setup_options* o, swarp_setup_result* res);
+
+#endif

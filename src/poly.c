@@ -1,0 +1,497 @@
+/* Convex polyhedra with a fixed capacity: construction from a box, a camera
+ * or an inverse view-projection matrix, and clipping by planes.  The
+ * intersection body B of [RHS] §3.1.1 is built from these operations. */
+#include "geometry_internal.h"
+
+_Static_assert(sizeof(swarp_polyhedron) == SWARP_POLY_SIZE, "swarp_polyhedron size");
+_Static_assert(SWARP_POLY_MAX_VERTICES <= 255, "face indices are uint8_t");
+
+/* ---- shared argument checks ---------------------------------------------- */
+
+swarp_status sw_check_depth_range(swarp_depth_range d) {
+    if (d != SWARP_DEPTH_DEFAULT && d != SWARP_DEPTH_NEG_ONE_TO_ONE && d != SWARP_DEPTH_ZERO_TO_ONE)
+        return SWARP_ERR_UNKNOWN_ENUM;
+    return SWARP_OK;
+}
+
+swarp_status sw_check_camera_shape(const swarp_camera* cam) {
+    if (!sw_reserved_zero(cam->_reserved, 4)) return SWARP_ERR_RESERVED_NONZERO;
+    if (!sw_finite3(&cam->eye) || !sw_finite3(&cam->dir) || !sw_finite3(&cam->up) ||
+        !sw_finite(cam->fovy) || !sw_finite(cam->aspect))
+        return SWARP_ERR_NON_FINITE;
+    if (!(cam->fovy > 0.0 && cam->fovy < SWARP_PI)) return SWARP_ERR_FOV;
+    if (!(cam->aspect > 0.0)) return SWARP_ERR_OUT_OF_RANGE;
+    swarp_vec3 f, u;
+    if (!sw_gnormalize(cam->dir, &f) || !sw_gnormalize(cam->up, &u)) return SWARP_ERR_ZERO_VECTOR;
+    /* up must leave a usable right vector: sin(angle(dir, up)) >= 1e-9 */
+    if (!(sw_glen(sw_cross(f, u)) >= 1e-9)) return SWARP_ERR_DEGENERATE;
+    return SWARP_OK;
+}
+
+swarp_status sw_check_camera(const swarp_camera* cam) {
+    swarp_status s = sw_check_camera_shape(cam);
+    if (s != SWARP_OK) return s;
+    if (!sw_finite(cam->near) || !sw_finite(cam->far)) return SWARP_ERR_NON_FINITE;
+    if (!(cam->near > 0.0 && cam->far > cam->near)) return SWARP_ERR_NEAR_FAR;
+    return SWARP_OK;
+}
+
+swarp_status sw_check_light(const swarp_light* light) {
+    if (light->_reserved0 != 0 || !sw_reserved_zero(light->_reserved, 4))
+        return SWARP_ERR_RESERVED_NONZERO;
+    swarp_light_type t = light->type;
+    if (t != SWARP_LIGHT_DEFAULT && t != SWARP_LIGHT_DIRECTIONAL && t != SWARP_LIGHT_POINT)
+        return SWARP_ERR_UNKNOWN_ENUM;
+    if (t == SWARP_LIGHT_POINT) {
+        if (!sw_finite3(&light->position) || !sw_finite(light->cone_angle)) return SWARP_ERR_NON_FINITE;
+        if (light->cone_angle != 0.0) {
+            if (!(light->cone_angle > 0.0 && light->cone_angle < 0.5 * SWARP_PI)) return SWARP_ERR_OUT_OF_RANGE;
+            if (!sw_finite3(&light->direction)) return SWARP_ERR_NON_FINITE;
+            swarp_vec3 a;
+            if (!sw_gnormalize(light->direction, &a)) return SWARP_ERR_ZERO_VECTOR;
+        }
+    } else {
+        if (!sw_finite3(&light->direction)) return SWARP_ERR_NON_FINITE;
+        swarp_vec3 a;
+        if (!sw_gnormalize(light->direction, &a)) return SWARP_ERR_ZERO_VECTOR;
+    }
+    return SWARP_OK;
+}
+
+swarp_status sw_check_box(const swarp_aabb* box) {
+    if (!sw_finite3(&box->min) || !sw_finite3(&box->max)) return SWARP_ERR_NON_FINITE;
+    if (!(box->min.x <= box->max.x && box->min.y <= box->max.y && box->min.z <= box->max.z))
+        return SWARP_ERR_BOX_INVERTED;
+    int zero = (box->min.x == box->max.x) + (box->min.y == box->max.y) + (box->min.z == box->max.z);
+    if (zero >= 2) return SWARP_ERR_BOX_DEGENERATE;
+    return SWARP_OK;
+}
+
+void sw_camera_basis(const swarp_camera* cam, swarp_vec3* f, swarp_vec3* r, swarp_vec3* u) {
+    swarp_vec3 ff = {0, 0, -1}, uu, rr = {1, 0, 0};
+    sw_gnormalize(cam->dir, &ff);
+    sw_gnormalize(sw_cross(ff, cam->up), &rr);
+    uu = sw_cross(rr, ff);
+    *f = ff;
+    *r = rr;
+    *u = uu;
+}
+
+/* ---- construction ---------------------------------------------------------- */
+
+/* Largest absolute coordinate (at least the extent): the scale the relative
+ * epsilons refer to.  Never 0 for a non-empty polyhedron of non-zero size;
+ * a tiny floor keeps eps > 0 for a polyhedron at the origin. */
+double sw_poly_scale(const swarp_polyhedron* p) {
+    double s = 0.0;
+    for (uint32_t i = 0; i < p->vertex_count; ++i) {
+        const swarp_vec3* v = &p->vertices[i];
+        double ax = fabs(v->x), ay = fabs(v->y), az = fabs(v->z);
+        if (ax > s) s = ax;
+        if (ay > s) s = ay;
+        if (az > s) s = az;
+    }
+    return s > 1e-300 ? s : 1e-300;
+}
+
+/* Newell normal of a loop (robust for non-planar or tiny loops). */
+static swarp_vec3 sw_newell(const swarp_vec3* v, const uint8_t* idx, uint32_t n) {
+    swarp_vec3 nn = {0, 0, 0};
+    swarp_vec3 c = {0, 0, 0};
+    for (uint32_t i = 0; i < n; ++i) c = sw_add(c, v[idx[i]]);
+    c = sw_scale(c, 1.0 / n); /* centred: no cancellation for large worlds */
+    for (uint32_t i = 0; i < n; ++i) {
+        swarp_vec3 a = sw_sub(v[idx[i]], c), b = sw_sub(v[idx[(i + 1) % n]], c);
+        nn.x += (a.y - b.y) * (a.z + b.z);
+        nn.y += (a.z - b.z) * (a.x + b.x);
+        nn.z += (a.x - b.x) * (a.y + b.y);
+    }
+    return nn;
+}
+
+/* Merge vertices closer than eps, drop repeated indices in loops and faces
+ * with fewer than 3 distinct vertices, drop unreferenced vertices when there
+ * are faces.  Keeps the SWARP_POLY_EPS_REL promise after every operation. */
+void sw_poly_finalize(swarp_polyhedron* p, uint32_t first_new) {
+    const double eps = SWARP_POLY_EPS_REL * sw_poly_scale(p);
+    uint8_t remap[SWARP_POLY_MAX_VERTICES];
+    uint32_t nv = 0;
+    if (first_new > p->vertex_count) first_new = p->vertex_count;
+    for (uint32_t i = 0; i < first_new; ++i) remap[i] = (uint8_t)i;
+    nv = first_new;
+    for (uint32_t i = first_new; i < p->vertex_count; ++i) {
+        swarp_vec3 v = p->vertices[i];
+        uint32_t j = 0;
+        for (; j < nv; ++j) {
+            swarp_vec3 w = p->vertices[j];
+            if (fabs(v.x - w.x) <= eps && fabs(v.y - w.y) <= eps && fabs(v.z - w.z) <= eps) break;
+        }
+        if (j == nv) p->vertices[nv++] = v;
+        remap[i] = (uint8_t)j;
+    }
+    p->vertex_count = nv;
+    uint32_t nf = 0;
+    uint8_t used[SWARP_POLY_MAX_VERTICES];
+    memset(used, 0, nv);
+    for (uint32_t f = 0; f < p->face_count; ++f) {
+        uint32_t n = p->face_vertex_count[f], m = 0;
+        uint8_t loop[SWARP_POLY_MAX_FACE_VERTICES];
+        for (uint32_t k = 0; k < n; ++k) {
+            uint8_t id = remap[p->face_vertices[f][k]];
+            if (m > 0 && loop[m - 1] == id) continue;
+            loop[m++] = id;
+        }
+        while (m > 1 && loop[m - 1] == loop[0]) --m;
+        if (m < 3) continue;
+        memcpy(p->face_vertices[nf], loop, m);
+        p->face_vertex_count[nf] = m;
+        p->planes[nf] = p->planes[f];
+        for (uint32_t k = 0; k < m; ++k) used[loop[k]] = 1;
+        ++nf;
+    }
+    p->face_count = nf;
+    if (nf > 0) { /* vertices of a solid or flat polyhedron are face corners */
+        uint32_t k = 0;
+        for (uint32_t i = 0; i < nv; ++i) {
+            if (used[i]) {
+                remap[i] = (uint8_t)k;
+                p->vertices[k++] = p->vertices[i];
+            }
+        }
+        if (k != nv) {
+            for (uint32_t f = 0; f < nf; ++f)
+                for (uint32_t j = 0; j < p->face_vertex_count[f]; ++j)
+                    p->face_vertices[f][j] = remap[p->face_vertices[f][j]];
+            p->vertex_count = k;
+        }
+    }
+}
+
+/* The 6 faces of a hexahedron given by 8 corners, corner index = x | y<<1 |
+ * z<<2.  The plane of each face comes from Newell's normal, oriented away
+ * from the centroid (so the corner order's handedness does not matter). */
+void sw_poly_from_corners(const swarp_vec3 c[8], swarp_polyhedron* out) {
+    static const uint8_t quads[6][4] = {{0, 4, 6, 2}, {1, 3, 7, 5}, {0, 1, 5, 4},
+                                        {2, 6, 7, 3}, {0, 2, 3, 1}, {4, 5, 7, 6}};
+    out->vertex_count = 8;
+    swarp_vec3 centroid = {0, 0, 0};
+    for (int i = 0; i < 8; ++i) {
+        out->vertices[i] = c[i];
+        centroid = sw_add(centroid, c[i]);
+    }
+    centroid = sw_scale(centroid, 1.0 / 8.0);
+    uint32_t nf = 0;
+    for (int f = 0; f < 6; ++f) {
+        uint8_t loop[4];
+        memcpy(loop, quads[f], 4);
+        swarp_vec3 n = sw_newell(out->vertices, loop, 4);
+        swarp_vec3 nu = {0, 0, 1};
+        if (!sw_gnormalize(n, &nu)) continue; /* collapsed face (flat box) */
+        swarp_vec3 fc = sw_scale(sw_add(sw_add(c[loop[0]], c[loop[1]]), sw_add(c[loop[2]], c[loop[3]])), 0.25);
+        if (sw_dot(nu, sw_sub(fc, centroid)) < 0.0) {
+            nu = sw_scale(nu, -1.0);
+            uint8_t t = loop[1];
+            loop[1] = loop[3];
+            loop[3] = t;
+        }
+        out->planes[nf].a = nu.x;
+        out->planes[nf].b = nu.y;
+        out->planes[nf].c = nu.z;
+        out->planes[nf].d = -sw_dot(nu, fc);
+        memcpy(out->face_vertices[nf], loop, 4);
+        out->face_vertex_count[nf] = 4;
+        ++nf;
+    }
+    out->face_count = nf;
+    sw_poly_finalize(out, 0);
+}
+
+SWARP_API swarp_status swarp_poly_from_aabb(const swarp_aabb* box, swarp_polyhedron* out) {
+    if (!box || !out) return SWARP_ERR_NULL_POINTER;
+    if (!sw_finite3(&box->min) || !sw_finite3(&box->max)) return SWARP_ERR_NON_FINITE;
+    if (!(box->min.x <= box->max.x && box->min.y <= box->max.y && box->min.z <= box->max.z))
+        return SWARP_ERR_BOX_INVERTED;
+    swarp_vec3 c[8];
+    for (int i = 0; i < 8; ++i)
+        c[i] = sw_v3((i & 1) ? box->max.x : box->min.x, (i & 2) ? box->max.y : box->min.y,
+                     (i & 4) ? box->max.z : box->min.z);
+    sw_poly_from_corners(c, out);
+    /* exact axis planes for the box (Newell gives them too, up to rounding) */
+    return SWARP_OK;
+}
+
+static void sw_frustum_corners(const swarp_camera* cam, double near, double far, swarp_vec3 c[8]) {
+    swarp_vec3 f, r, u;
+    sw_camera_basis(cam, &f, &r, &u);
+    double ty = tan(0.5 * cam->fovy), tx = ty * cam->aspect;
+    for (int i = 0; i < 8; ++i) {
+        double z = (i & 4) ? far : near;
+        double sx = (i & 1) ? 1.0 : -1.0, sy = (i & 2) ? 1.0 : -1.0;
+        /* eye + z (f + sx tx r + sy ty u): corners relative to the eye first */
+        swarp_vec3 d = sw_add(f, sw_add(sw_scale(r, sx * tx), sw_scale(u, sy * ty)));
+        c[i] = sw_add(cam->eye, sw_scale(d, z));
+    }
+}
+
+SWARP_API swarp_status swarp_poly_from_camera_range(const swarp_camera* cam, double near, double far,
+                                                    swarp_polyhedron* out) {
+    if (!cam || !out) return SWARP_ERR_NULL_POINTER;
+    swarp_status s = sw_check_camera_shape(cam);
+    if (s != SWARP_OK) return s;
+    if (!sw_finite(near) || !sw_finite(far)) return SWARP_ERR_NON_FINITE;
+    if (!(near > 0.0 && far > near)) return SWARP_ERR_NEAR_FAR;
+    swarp_vec3 c[8];
+    sw_frustum_corners(cam, near, far, c);
+    for (int i = 0; i < 8; ++i)
+        if (!sw_finite3(&c[i])) return SWARP_ERR_NON_FINITE;
+    sw_poly_from_corners(c, out);
+    return SWARP_OK;
+}
+
+SWARP_API swarp_status swarp_poly_from_camera(const swarp_camera* cam, swarp_polyhedron* out) {
+    if (!cam || !out) return SWARP_ERR_NULL_POINTER;
+    return swarp_poly_from_camera_range(cam, cam->near, cam->far, out);
+}
+
+SWARP_API swarp_status swarp_poly_from_inverse_matrix(const swarp_mat4* inv, swarp_depth_range dr,
+                                                      swarp_polyhedron* out) {
+    if (!inv || !out) return SWARP_ERR_NULL_POINTER;
+    if (!sw_mat_finite(inv)) return SWARP_ERR_NON_FINITE;
+    if (sw_check_depth_range(dr) != SWARP_OK) return SWARP_ERR_UNKNOWN_ENUM;
+    double z0 = (dr == SWARP_DEPTH_ZERO_TO_ONE) ? 0.0 : -1.0;
+    swarp_vec3 c[8];
+    double wsign = 0.0;
+    for (int i = 0; i < 8; ++i) {
+        swarp_vec4 h = {(i & 1) ? 1.0 : -1.0, (i & 2) ? 1.0 : -1.0, (i & 4) ? 1.0 : z0, 1.0};
+        swarp_vec4 p = sw_xform4(inv, h);
+        /* all corners must lie on the same side of w = 0 (a finite frustum) */
+        if (i == 0) wsign = p.w > 0.0 ? 1.0 : -1.0;
+        if (!(p.w * wsign > 0.0)) return SWARP_ERR_DEGENERATE;
+        c[i] = sw_v3(p.x / p.w, p.y / p.w, p.z / p.w);
+        if (!sw_finite3(&c[i])) return SWARP_ERR_DEGENERATE;
+    }
+    sw_poly_from_corners(c, out);
+    return SWARP_OK;
+}
+
+/* ---- clipping -------------------------------------------------------------- */
+
+/* Copies only the used parts (the struct is 7 KiB, B uses a few hundred bytes). */
+void sw_poly_copy(const swarp_polyhedron* in, swarp_polyhedron* out) {
+    out->vertex_count = in->vertex_count;
+    out->face_count = in->face_count;
+    memcpy(out->vertices, in->vertices, in->vertex_count * sizeof(swarp_vec3));
+    memcpy(out->planes, in->planes, in->face_count * sizeof(swarp_plane));
+    memcpy(out->face_vertex_count, in->face_vertex_count, in->face_count * sizeof(uint32_t));
+    memcpy(out->face_vertices, in->face_vertices, in->face_count * sizeof in->face_vertices[0]);
+}
+
+/* Pseudo-angle in [0, 4) of (x, y): monotone in the true angle, no atan2. */
+static double sw_pseudo_angle(double x, double y) {
+    double d = fabs(x) + fabs(y);
+    if (!(d > 0.0)) return 0.0;
+    double t = x / d; /* in [-1, 1] */
+    return (y >= 0.0) ? 1.0 - t : 3.0 + t;
+}
+
+/* Keeps n·x + d <= 0; n need not be unit.  in and out may alias. */
+swarp_status sw_poly_clip(const swarp_polyhedron* in, swarp_vec3 n_raw, double d_raw,
+                          swarp_polyhedron* out) {
+    double len = sw_glen(n_raw);
+    if (!(len > 0.0)) return SWARP_ERR_ZERO_VECTOR;
+    swarp_vec3 n = sw_scale(n_raw, 1.0 / len);
+    double d = d_raw / len;
+    const uint32_t nv = in->vertex_count;
+    if (nv == 0) {
+        if (out != in) {
+            out->vertex_count = 0;
+            out->face_count = 0;
+        }
+        return SWARP_OK;
+    }
+    /* tolerance for "on the plane": see SWARP_POLY_EPS_REL */
+    const double eps = SWARP_POLY_EPS_REL * sw_max(sw_poly_scale(in), fabs(d));
+    double dist[SWARP_POLY_MAX_VERTICES];
+    signed char side[SWARP_POLY_MAX_VERTICES];
+    int any_out = 0, any_in = 0;
+    for (uint32_t i = 0; i < nv; ++i) {
+        dist[i] = sw_dot(n, in->vertices[i]) + d;
+        side[i] = dist[i] > eps ? 1 : (dist[i] < -eps ? -1 : 0);
+        any_out |= side[i] > 0;
+        any_in |= side[i] <= 0;
+    }
+    if (!any_out) {
+        if (out != in) sw_poly_copy(in, out);
+        return SWARP_OK;
+    }
+    if (!any_in) {
+        out->vertex_count = 0;
+        out->face_count = 0;
+        return SWARP_OK;
+    }
+
+    swarp_polyhedron t; /* built here, copied out at the end (out may be in) */
+    uint8_t map[SWARP_POLY_MAX_VERTICES];
+    uint32_t tv = 0;
+    uint8_t on_plane[SWARP_POLY_MAX_VERTICES];
+    uint32_t n_on = 0;
+    for (uint32_t i = 0; i < nv; ++i) {
+        if (side[i] <= 0) {
+            map[i] = (uint8_t)tv;
+            t.vertices[tv] = in->vertices[i];
+            if (side[i] == 0) on_plane[n_on++] = (uint8_t)tv;
+            ++tv;
+        }
+    }
+    /* intersection points, one per crossing edge (keyed by its end points) */
+    const uint32_t n_kept = tv;
+    uint8_t edge_lo[SWARP_POLY_MAX_VERTICES], edge_hi[SWARP_POLY_MAX_VERTICES], edge_v[SWARP_POLY_MAX_VERTICES];
+    uint32_t n_edges = 0;
+    uint32_t tf = 0;
+    int cap_coincides = 0;
+    for (uint32_t f = 0; f < in->face_count; ++f) {
+        uint32_t fn = in->face_vertex_count[f];
+        const uint8_t* fl = in->face_vertices[f];
+        uint8_t loop[SWARP_POLY_MAX_FACE_VERTICES];
+        uint32_t m = 0;
+        int all_on = 1;
+        for (uint32_t k = 0; k < fn; ++k) {
+            uint8_t i = fl[k], j = fl[(k + 1) % fn];
+            if (side[i] != 0) all_on = 0;
+            if (side[i] <= 0) {
+                if (m >= SWARP_POLY_MAX_FACE_VERTICES) return SWARP_ERR_CAPACITY;
+                loop[m++] = map[i];
+            }
+            if ((side[i] < 0 && side[j] > 0) || (side[i] > 0 && side[j] < 0)) {
+                uint8_t lo = i < j ? i : j, hi = i < j ? j : i;
+                uint32_t e = 0;
+                for (; e < n_edges; ++e)
+                    if (edge_lo[e] == lo && edge_hi[e] == hi) break;
+                if (e == n_edges) {
+                    if (tv >= SWARP_POLY_MAX_VERTICES) return SWARP_ERR_CAPACITY;
+                    /* canonical order: both faces get the very same point */
+                    double s = dist[lo] / (dist[lo] - dist[hi]);
+                    swarp_vec3 a = in->vertices[lo], b = in->vertices[hi];
+                    t.vertices[tv] = sw_add(a, sw_scale(sw_sub(b, a), s));
+                    edge_lo[e] = lo;
+                    edge_hi[e] = hi;
+                    edge_v[e] = (uint8_t)tv;
+                    on_plane[n_on++] = (uint8_t)tv;
+                    ++tv;
+                    ++n_edges;
+                }
+                if (m >= SWARP_POLY_MAX_FACE_VERTICES) return SWARP_ERR_CAPACITY;
+                loop[m++] = edge_v[e];
+            }
+        }
+        if (m < 3) continue;
+        if (all_on) {
+            swarp_vec3 fnrm = {in->planes[f].a, in->planes[f].b, in->planes[f].c};
+            if (sw_dot(fnrm, n) > 0.0) cap_coincides = 1;
+        }
+        if (tf >= SWARP_POLY_MAX_FACES) return SWARP_ERR_CAPACITY;
+        memcpy(t.face_vertices[tf], loop, m);
+        t.face_vertex_count[tf] = m;
+        t.planes[tf] = in->planes[f];
+        ++tf;
+    }
+    /* the cap: the new face on the clip plane, sorted counter-clockwise seen
+     * from outside (along +n) */
+    if (n_on >= 3 && !cap_coincides) {
+        if (n_on > SWARP_POLY_MAX_FACE_VERTICES) return SWARP_ERR_CAPACITY;
+        if (tf >= SWARP_POLY_MAX_FACES) return SWARP_ERR_CAPACITY;
+        swarp_vec3 c = {0, 0, 0};
+        for (uint32_t k = 0; k < n_on; ++k) c = sw_add(c, t.vertices[on_plane[k]]);
+        c = sw_scale(c, 1.0 / n_on);
+        /* in-plane basis (e1, e2) with e1 x e2 = n */
+        swarp_vec3 ref = fabs(n.x) < 0.6 ? sw_v3(1, 0, 0) : (fabs(n.y) < 0.6 ? sw_v3(0, 1, 0) : sw_v3(0, 0, 1));
+        swarp_vec3 e1 = {1, 0, 0}, e2;
+        sw_gnormalize(sw_cross(ref, n), &e1);
+        e2 = sw_cross(n, e1);
+        double key[SWARP_POLY_MAX_FACE_VERTICES];
+        uint8_t idx[SWARP_POLY_MAX_FACE_VERTICES];
+        for (uint32_t k = 0; k < n_on; ++k) {
+            swarp_vec3 q = sw_sub(t.vertices[on_plane[k]], c);
+            double kk = sw_pseudo_angle(sw_dot(q, e1), sw_dot(q, e2));
+            uint32_t j = k;
+            while (j > 0 && key[j - 1] > kk) {
+                key[j] = key[j - 1];
+                idx[j] = idx[j - 1];
+                --j;
+            }
+            key[j] = kk;
+            idx[j] = on_plane[k];
+        }
+        memcpy(t.face_vertices[tf], idx, n_on);
+        t.face_vertex_count[tf] = n_on;
+        t.planes[tf].a = n.x;
+        t.planes[tf].b = n.y;
+        t.planes[tf].c = n.z;
+        t.planes[tf].d = d;
+        ++tf;
+    }
+    t.vertex_count = tv;
+    t.face_count = tf;
+    sw_poly_finalize(&t, n_kept);
+    sw_poly_copy(&t, out);
+    return SWARP_OK;
+}
+
+swarp_status sw_poly_clip_box(const swarp_polyhedron* in, const swarp_aabb* box, swarp_polyhedron* out) {
+    const swarp_vec3 ns[6] = {{-1, 0, 0}, {1, 0, 0}, {0, -1, 0}, {0, 1, 0}, {0, 0, -1}, {0, 0, 1}};
+    const double ds[6] = {box->min.x, -box->max.x, box->min.y, -box->max.y, box->min.z, -box->max.z};
+    const swarp_polyhedron* src = in;
+    for (int k = 0; k < 6; ++k) {
+        swarp_status s = sw_poly_clip(src, ns[k], ds[k], out);
+        if (s != SWARP_OK) return s;
+        src = out;
+        if (out->vertex_count == 0) break;
+    }
+    return SWARP_OK;
+}
+
+/* A caller's polyhedron: counts within capacity, indices valid, finite. */
+static swarp_status sw_poly_validate(const swarp_polyhedron* in) {
+    if (in->vertex_count > SWARP_POLY_MAX_VERTICES || in->face_count > SWARP_POLY_MAX_FACES)
+        return SWARP_ERR_INVALID_ARGUMENT;
+    for (uint32_t i = 0; i < in->vertex_count; ++i)
+        if (!sw_finite3(&in->vertices[i])) return SWARP_ERR_NON_FINITE;
+    for (uint32_t f = 0; f < in->face_count; ++f) {
+        if (in->face_vertex_count[f] > SWARP_POLY_MAX_FACE_VERTICES) return SWARP_ERR_INVALID_ARGUMENT;
+        for (uint32_t k = 0; k < in->face_vertex_count[f]; ++k)
+            if (in->face_vertices[f][k] >= in->vertex_count) return SWARP_ERR_INVALID_ARGUMENT;
+    }
+    return SWARP_OK;
+}
+
+SWARP_API swarp_status swarp_poly_clip(const swarp_polyhedron* in, const swarp_plane* plane,
+                                       swarp_polyhedron* out) {
+    if (!in || !plane || !out) return SWARP_ERR_NULL_POINTER;
+    if (!sw_finite(plane->a) || !sw_finite(plane->b) || !sw_finite(plane->c) || !sw_finite(plane->d))
+        return SWARP_ERR_NON_FINITE;
+    swarp_status s = sw_poly_validate(in);
+    if (s != SWARP_OK) return s;
+    swarp_vec3 n = {plane->a, plane->b, plane->c};
+    if (!(sw_glen(n) > 0.0)) return SWARP_ERR_ZERO_VECTOR;
+    /* compute into a local: outputs stay untouched on error */
+    swarp_polyhedron t;
+    s = sw_poly_clip(in, n, plane->d, &t);
+    if (s != SWARP_OK) return s;
+    memcpy(out, &t, sizeof t);
+    return SWARP_OK;
+}
+
+SWARP_API swarp_status swarp_poly_clip_aabb(const swarp_polyhedron* in, const swarp_aabb* box,
+                                            swarp_polyhedron* out) {
+    if (!in || !box || !out) return SWARP_ERR_NULL_POINTER;
+    if (!sw_finite3(&box->min) || !sw_finite3(&box->max)) return SWARP_ERR_NON_FINITE;
+    if (!(box->min.x <= box->max.x && box->min.y <= box->max.y && box->min.z <= box->max.z))
+        return SWARP_ERR_BOX_INVERTED;
+    swarp_status s = sw_poly_validate(in);
+    if (s != SWARP_OK) return s;
+    swarp_polyhedron t;
+    s = sw_poly_clip_box(in, box, &t);
+    if (s != SWARP_OK) return s;
+    memcpy(out, &t, sizeof t);
+    return SWARP_OK;
+}

@@ -1,0 +1,364 @@
+/* The one call for engines: camera + light + scene box + options -> light
+ * view, light projection, their product, the points of B, the n' used and
+ * the predicted maximum errors.  Built from the separately callable stages:
+ *
+ *   swarp_setup        H = V ∩ S, adjusted near/far [RHS] §3.3.1, B, then
+ *   swarp_setup_range  the same for an explicit view depth range (a split),
+ *                      without adjusting it, then
+ *   swarp_setup_points the light matrix for given points of B (and of the
+ *                      receivers H, for pancaking and the nearest vertex). */
+#include "geometry_internal.h"
+
+_Static_assert(sizeof(swarp_setup_options) == 12 * 4 + 4 * 8 + 16, "swarp_setup_options size");
+_Static_assert(sizeof(swarp_setup_result) == 3 * 128 + 9 * 8 + 8 + 16, "swarp_setup_result size");
+_Static_assert(sizeof(swarp_warp_options) == 8 + 3 * 8 + 16, "swarp_warp_options size");
+_Static_assert(sizeof(swarp_warp_info) == 6 * 8 + 16, "swarp_warp_info size");
+
+#define SW_DEFAULT_MAP 2048u
+#define SW_DEFAULT_SCREEN_W 1920u
+#define SW_DEFAULT_SCREEN_H 1080u
+/* Point lights: points of B nearer to the light than this fraction of the
+ * farthest one are cut off by the light's near plane (a perspective map
+ * cannot reach its own apex). */
+#define SW_LIGHT_NEAR_MIN_REL 1e-4
+/* Point lights: a single perspective map covers half-angles up to
+ * atan(1e3) ≈ 89.94°; beyond that the light is inside B. */
+#define SW_LIGHT_MAX_TAN 1e3
+
+static swarp_status sw_check_setup_options(const swarp_setup_options* o) {
+    if (!sw_reserved_zero(o->_reserved, 4) || o->_pad0 != 0 || o->_pad1 != 0) return SWARP_ERR_RESERVED_NONZERO;
+    if ((uint32_t)o->technique > (uint32_t)SWARP_TECHNIQUE_PSM) return SWARP_ERR_UNKNOWN_ENUM;
+    if (sw_check_depth_range(o->depth_range) != SWARP_OK) return SWARP_ERR_UNKNOWN_ENUM;
+    if (o->pancake > 1 || o->psm_slideback > 1) return SWARP_ERR_OUT_OF_RANGE;
+    if (!sw_finite(o->slideback)) return SWARP_ERR_NON_FINITE;
+    if (o->slideback < 0.0) return SWARP_ERR_OUT_OF_RANGE;
+    swarp_warp_options w;
+    memset(&w, 0, sizeof w);
+    w.param = o->param;
+    w.center = o->center;
+    w.n_user = o->n_user;
+    w.pseudo_near = o->pseudo_near;
+    w.pseudo_far = o->pseudo_far;
+    if ((uint32_t)w.param > (uint32_t)SWARP_WARP_PARAM_USER) return SWARP_ERR_UNKNOWN_ENUM;
+    if ((uint32_t)w.center > (uint32_t)SWARP_WARP_CENTER_NEAREST_VERTEX) return SWARP_ERR_UNKNOWN_ENUM;
+    if (o->technique == SWARP_TECHNIQUE_LISPSM || o->technique == SWARP_TECHNIQUE_DEFAULT) {
+        if (w.param == SWARP_WARP_PARAM_USER) {
+            if (isnan(w.n_user)) return SWARP_ERR_NON_FINITE;
+            if (!(w.n_user > 0.0)) return SWARP_ERR_OUT_OF_RANGE;
+        }
+        if (w.param == SWARP_WARP_PARAM_PSEUDO) {
+            if (!sw_finite(w.pseudo_near) || !sw_finite(w.pseudo_far)) return SWARP_ERR_NON_FINITE;
+            if (!(w.pseudo_near >= 0.0 && w.pseudo_far >= 0.0 && w.pseudo_near + w.pseudo_far < 1.0))
+                return SWARP_ERR_OUT_OF_RANGE;
+        }
+    }
+    return SWARP_OK;
+}
+
+/* More important informational statuses win. */
+static swarp_status sw_info_merge(swarp_status a, swarp_status b) {
+    static const swarp_status order[] = {SWARP_INFO_PSM_INVERSE, SWARP_INFO_WARP_UNIFORM,
+                                         SWARP_INFO_LIGHT_NEAR_CLIPPED, SWARP_INFO_LIGHT_PARALLEL,
+                                         SWARP_INFO_FLAT_EXTENT};
+    for (size_t i = 0; i < sizeof order / sizeof order[0]; ++i)
+        if (a == order[i] || b == order[i]) return order[i];
+    return a != SWARP_OK ? a : b;
+}
+
+/* The light's view axis for a point light: the spot axis, or the direction
+ * to the centre of the points' bounding box. */
+static int sw_point_axis(const swarp_light* light, const swarp_vec3* pts, size_t n, swarp_vec3* a) {
+    if (light->cone_angle > 0.0) return sw_gnormalize(light->direction, a);
+    swarp_vec3 lo = pts[0], hi = pts[0];
+    for (size_t i = 1; i < n; ++i) {
+        lo = sw_v3(fmin(lo.x, pts[i].x), fmin(lo.y, pts[i].y), fmin(lo.z, pts[i].z));
+        hi = sw_v3(fmax(hi.x, pts[i].x), fmax(hi.y, pts[i].y), fmax(hi.z, pts[i].z));
+    }
+    swarp_vec3 c = sw_scale(sw_add(lo, hi), 0.5);
+    return sw_gnormalize(sw_sub(c, light->position), a);
+}
+
+/* Everything after B: light view, warp, fit, error model. */
+static swarp_status sw_setup_points(const swarp_camera* cam, const swarp_light* light, const swarp_vec3* B,
+                                    size_t nb, const swarp_polyhedron* B_poly, const swarp_vec3* H, size_t nh, double near, double far,
+                                    const swarp_setup_options* o, swarp_setup_result* out) {
+    swarp_status info = SWARP_OK, s;
+    swarp_technique tech = o->technique == SWARP_TECHNIQUE_DEFAULT ? SWARP_TECHNIQUE_LISPSM : o->technique;
+    swarp_depth_range dr = o->depth_range == SWARP_DEPTH_DEFAULT ? SWARP_DEPTH_NEG_ONE_TO_ONE : o->depth_range;
+    swarp_vec3 v, r, u;
+    sw_camera_basis(cam, &v, &r, &u);
+    /* nearest vertex e of H (the receivers) for the WS06 centre */
+    const swarp_vec3* ep = NULL;
+    {
+        const swarp_vec3* src = H ? H : B;
+        size_t ns = H ? nh : nb;
+        double best = INFINITY;
+        for (size_t i = 0; i < ns; ++i) {
+            double z = sw_dot(sw_sub(src[i], cam->eye), v);
+            if (z < best) best = z, ep = &src[i];
+        }
+    }
+    swarp_setup_result res;
+    memset(&res, 0, sizeof res);
+    res.view_near = near;
+    res.view_far = far;
+
+    if (tech == SWARP_TECHNIQUE_PSM) {
+        s = sw_psm_setup(cam, light, B, nb, B_poly, H, nh, near, far, o, &res);
+        if (swarp_status_is_error(s)) return s;
+        info = sw_info_merge(info, s);
+    } else {
+        swarp_mat4 L, P0, M, M_inv;
+        sw_identity(&P0);
+        if (light->type == SWARP_LIGHT_POINT) {
+            swarp_vec3 a = {0, 0, -1};
+            if (!sw_point_axis(light, B, nb, &a)) return SWARP_ERR_LIGHT_INSIDE_BODY;
+            s = sw_light_view(cam, light->position, a, &L);
+            if (swarp_status_is_error(s)) return s;
+            info = sw_info_merge(info, s);
+            /* every point must lie in front of the light within the widest
+             * perspective a map can have */
+            double dmax = 0.0;
+            for (size_t i = 0; i < nb; ++i) {
+                swarp_vec4 h = sw_xform_point(&L, B[i]);
+                double D = -h.z;
+                if (D > dmax) dmax = D;
+            }
+            double dmin_allowed = SW_LIGHT_NEAR_MIN_REL * dmax;
+            for (size_t i = 0; i < nb; ++i) {
+                swarp_vec4 h = sw_xform_point(&L, B[i]);
+                double D = -h.z;
+                if (D < dmin_allowed) {
+                    if (light->cone_angle > 0.0 && D > -dmin_allowed) { /* the apex of a spot */
+                        info = sw_info_merge(info, SWARP_INFO_LIGHT_NEAR_CLIPPED);
+                        continue;
+                    }
+                    return SWARP_ERR_LIGHT_INSIDE_BODY;
+                }
+                if (hypot(h.x, h.y) > SW_LIGHT_MAX_TAN * D) return SWARP_ERR_LIGHT_INSIDE_BODY;
+            }
+            /* P0: (x, y, z) -> (x/D, y/D, 1/D), D = -z: a point light becomes
+             * a directional one travelling toward -z */
+            memset(&P0, 0, sizeof P0);
+            sw_set(&P0, 0, 0, 1.0);
+            sw_set(&P0, 1, 1, 1.0);
+            sw_set(&P0, 2, 3, 1.0);
+            sw_set(&P0, 3, 2, -1.0);
+            res.light_near = fmax(dmin_allowed, 0.0);
+            res.light_far = dmax;
+        } else {
+            s = sw_light_view(cam, cam->eye, light->direction, &L);
+            if (swarp_status_is_error(s)) return s;
+            info = sw_info_merge(info, s);
+        }
+        sw_mul(&P0, &L, &M);
+        if (!sw_invert(&M, &M_inv)) return SWARP_ERR_SINGULAR;
+        /* the points the map must see; point lights drop the apex region */
+        swarp_vec3 Bk[SWARP_BODY_MAX_POINTS + 1];
+        size_t nbk = 0;
+        for (size_t i = 0; i < nb && nbk < SWARP_BODY_MAX_POINTS; ++i) {
+            if (light->type == SWARP_LIGHT_POINT) {
+                swarp_vec4 h = sw_xform_point(&L, B[i]);
+                if (-h.z < res.light_near) continue;
+            }
+            Bk[nbk++] = B[i];
+        }
+        if (nbk == 0) return SWARP_ERR_BODY_EMPTY;
+        swarp_mat4 P;
+        swarp_warp_info wi;
+        memset(&wi, 0, sizeof wi);
+        if (tech == SWARP_TECHNIQUE_LISPSM) {
+            swarp_warp_options w;
+            memset(&w, 0, sizeof w);
+            w.param = o->param;
+            w.center = o->center;
+            w.n_user = o->n_user;
+            w.pseudo_near = o->pseudo_near;
+            w.pseudo_far = o->pseudo_far;
+            s = sw_warp_lispsm(&M, &M_inv, cam, near, far, Bk, nbk, ep, &w, &P, &wi);
+            if (swarp_status_is_error(s)) return s;
+            info = sw_info_merge(info, s);
+        } else {
+            /* uniform: flip z so depth grows away from the light */
+            sw_identity(&P);
+            sw_set(&P, 2, 2, -1.0);
+            wi.n_light = wi.n_eye = INFINITY;
+        }
+        swarp_mat4 PM, A;
+        sw_mul(&P, &M, &PM);
+        /* pancaking: the depth range covers the receivers H only; casters
+         * nearer the light are clamped to the near plane by the renderer */
+        const swarp_vec3* zp = (o->pancake && H && light->type != SWARP_LIGHT_POINT) ? H : NULL;
+        s = sw_focus_fit(&PM, Bk, nbk, zp, nh, dr, &A);
+        if (swarp_status_is_error(s)) return s;
+        info = sw_info_merge(info, s);
+        swarp_mat4 proj;
+        sw_mul(&P, &P0, &proj);
+        sw_mul(&A, &proj, &res.light_proj);
+        res.light_view = L;
+        sw_mul(&res.light_proj, &L, &res.matrix);
+        res.n_light = wi.n_light;
+        res.n_eye = wi.n_eye;
+        res.gamma = wi.gamma;
+        if (tech != SWARP_TECHNIQUE_LISPSM) {
+            double vz = sw_at(&M, 2, 0) * v.x + sw_at(&M, 2, 1) * v.y + sw_at(&M, 2, 2) * v.z;
+            res.gamma = acos(fmax(-1.0, fmin(1.0, -vz)));
+        }
+        if (light->type != SWARP_LIGHT_POINT) {
+            /* light depth range in light view units (distance along the light) */
+            double lo = INFINITY, hi = -INFINITY;
+            const swarp_vec3* zs = zp ? zp : Bk;
+            size_t zn = zp ? nh : nbk;
+            for (size_t i = 0; i < zn; ++i) {
+                swarp_vec4 h = sw_xform_point(&L, zs[i]);
+                lo = fmin(lo, -h.z);
+                hi = fmax(hi, -h.z);
+            }
+            res.light_near = lo;
+            res.light_far = hi;
+        }
+    }
+    /* the error model [RHS] (2.3)-(2.8) for n' in eye units */
+    {
+        uint32_t mw = o->map_width ? o->map_width : SW_DEFAULT_MAP;
+        uint32_t mh = o->map_height ? o->map_height : mw;
+        uint32_t sw = o->screen_width ? o->screen_width : SW_DEFAULT_SCREEN_W;
+        uint32_t sh = o->screen_height ? o->screen_height : SW_DEFAULT_SCREEN_H;
+        swarp_error_config cfg;
+        memset(&cfg, 0, sizeof cfg);
+        cfg.near = near;
+        cfg.far = far;
+        cfg.theta = 0.5 * cam->fovy;
+        cfg.res_ix = sw > sh ? sw : sh;
+        cfg.res_iy = sw > sh ? sh : sw;
+        cfg.res_s = mw > mh ? mw : mh;
+        cfg.res_t = mw > mh ? mh : mw;
+        double mx = NAN, mz = NAN;
+        s = swarp_error_max(&cfg, res.n_eye, &mx, &mz);
+        if (swarp_status_is_error(s) || !sw_finite(mx) || !sw_finite(mz)) return SWARP_ERR_DEGENERATE;
+        res.max_mx = mx;
+        res.max_mz = mz;
+    }
+    if (!sw_mat_finite(&res.matrix) || !sw_mat_finite(&res.light_proj) || !sw_mat_finite(&res.light_view))
+        return SWARP_ERR_DEGENERATE;
+    res.point_count = (uint32_t)nb;
+    *out = res;
+    return info;
+}
+
+static swarp_status sw_setup_defaults(const swarp_setup_options* opts, swarp_setup_options* o) {
+    memset(o, 0, sizeof *o);
+    if (opts) *o = *opts;
+    return sw_check_setup_options(o);
+}
+
+static swarp_status sw_check_common(const swarp_camera* cam, const swarp_light* light,
+                                    const swarp_setup_options* opts, swarp_setup_options* o) {
+    swarp_status s = sw_check_camera_shape(cam);
+    if (s != SWARP_OK) return s;
+    s = sw_check_light(light);
+    if (s != SWARP_OK) return s;
+    return sw_setup_defaults(opts, o);
+}
+
+static swarp_status sw_write_points(const swarp_polyhedron* B, swarp_vec3* out_points, size_t capacity,
+                                    size_t* out_count) {
+    if (out_count) *out_count = B->vertex_count;
+    if (out_points) {
+        if (capacity < B->vertex_count) return SWARP_ERR_CAPACITY;
+    }
+    return SWARP_OK;
+}
+
+static swarp_status sw_setup_range(const swarp_camera* cam, const swarp_light* light, const swarp_aabb* scene,
+                                   double near, double far, const swarp_polyhedron* Hin,
+                                   const swarp_setup_options* o, swarp_setup_result* out,
+                                   swarp_vec3* out_points, size_t capacity, size_t* out_count) {
+    swarp_polyhedron Hl, B;
+    const swarp_polyhedron* Hp = Hin;
+    swarp_status s;
+    if (!Hp) {
+        s = sw_body_h(cam, near, far, scene, &Hl);
+        if (s != SWARP_OK) return s;
+        Hp = &Hl;
+    }
+    s = sw_body_from_h(Hp, light, scene, &B);
+    if (s != SWARP_OK) return s;
+    s = sw_write_points(&B, out_points, capacity, out_count);
+    if (s != SWARP_OK) return s;
+    swarp_setup_result res;
+    swarp_status info = sw_setup_points(cam, light, B.vertices, B.vertex_count, &B, Hp->vertices, Hp->vertex_count, near,
+                                        far, o, &res);
+    if (swarp_status_is_error(info)) return info;
+    *out = res;
+    if (out_points) memcpy(out_points, B.vertices, B.vertex_count * sizeof(swarp_vec3));
+    return info;
+}
+
+SWARP_API swarp_status swarp_setup(const swarp_camera* cam, const swarp_light* light, const swarp_aabb* scene,
+                                   const swarp_setup_options* opts, swarp_setup_result* out,
+                                   swarp_vec3* out_points, size_t capacity, size_t* out_count) {
+    if (!cam || !light || !scene || !out) return SWARP_ERR_NULL_POINTER;
+    swarp_setup_options o;
+    swarp_status s = sw_check_common(cam, light, opts, &o);
+    if (s != SWARP_OK) return s;
+    if (!sw_finite(cam->near) || !sw_finite(cam->far)) return SWARP_ERR_NON_FINITE;
+    if (!(cam->near > 0.0 && cam->far > cam->near)) return SWARP_ERR_NEAR_FAR;
+    s = sw_check_box(scene);
+    if (s != SWARP_OK) return s;
+    swarp_polyhedron H;
+    s = sw_body_h(cam, cam->near, cam->far, scene, &H);
+    if (s != SWARP_OK) return s;
+    /* adjusted near/far [RHS] §3.3.1: V ∩ S over [near', far'] is H itself */
+    swarp_vec3 f, r, u;
+    sw_camera_basis(cam, &f, &r, &u);
+    double zn, zf;
+    sw_depth_range_of(&H, cam->eye, f, &zn, &zf);
+    zn = fmin(fmax(zn, cam->near), cam->far);
+    zf = fmin(fmax(zf, zn), cam->far);
+    if (!(zf > zn)) { /* H lies in one depth plane (box face on a view plane): keep a sliver */
+        double pad = fmax(1e-9 * zn, 1e-300);
+        if (zn - pad > cam->near) zn -= pad;
+        else zf += pad;
+    }
+    return sw_setup_range(cam, light, scene, zn, zf, &H, &o, out, out_points, capacity, out_count);
+}
+
+SWARP_API swarp_status swarp_setup_range(const swarp_camera* cam, const swarp_light* light,
+                                         const swarp_aabb* scene, double near, double far,
+                                         const swarp_setup_options* opts, swarp_setup_result* out,
+                                         swarp_vec3* out_points, size_t capacity, size_t* out_count) {
+    if (!cam || !light || !scene || !out) return SWARP_ERR_NULL_POINTER;
+    swarp_setup_options o;
+    swarp_status s = sw_check_common(cam, light, opts, &o);
+    if (s != SWARP_OK) return s;
+    if (!sw_finite(near) || !sw_finite(far)) return SWARP_ERR_NON_FINITE;
+    if (!(near > 0.0 && far > near)) return SWARP_ERR_NEAR_FAR;
+    s = sw_check_box(scene);
+    if (s != SWARP_OK) return s;
+    return sw_setup_range(cam, light, scene, near, far, NULL, &o, out, out_points, capacity, out_count);
+}
+
+SWARP_API swarp_status swarp_setup_points(const swarp_camera* cam, const swarp_light* light,
+                                          const swarp_vec3* points, size_t count, const swarp_vec3* receivers,
+                                          size_t receiver_count, double near, double far,
+                                          const swarp_setup_options* opts, swarp_setup_result* out) {
+    if (!cam || !light || !points || !out) return SWARP_ERR_NULL_POINTER;
+    swarp_setup_options o;
+    swarp_status s = sw_check_common(cam, light, opts, &o);
+    if (s != SWARP_OK) return s;
+    if (!sw_finite(near) || !sw_finite(far)) return SWARP_ERR_NON_FINITE;
+    if (!(near > 0.0 && far > near)) return SWARP_ERR_NEAR_FAR;
+    if (count == 0 || count > SWARP_BODY_MAX_POINTS || (receivers && receiver_count == 0))
+        return SWARP_ERR_INVALID_ARGUMENT;
+    for (size_t i = 0; i < count; ++i)
+        if (!sw_finite3(&points[i])) return SWARP_ERR_NON_FINITE;
+    if (receivers)
+        for (size_t i = 0; i < receiver_count; ++i)
+            if (!sw_finite3(&receivers[i])) return SWARP_ERR_NON_FINITE;
+    swarp_setup_result res;
+    s = sw_setup_points(cam, light, points, count, NULL, receivers, receivers ? receiver_count : 0, near, far, &o, &res);
+    if (swarp_status_is_error(s)) return s;
+    *out = res;
+    return s;
+}

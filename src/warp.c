@@ -1,0 +1,206 @@
+/* LiSPSM: the perspective warping frustum P around B in light space
+ * ([RHS] §3.2.1, (3.2)-(3.4), §4.1, (4.2); [WS06]; [GMNPR] (8)).
+ *
+ * Light space is the light view of swarp_focus_light_view: x right, y the
+ * aligned up vector (the view direction projected, the warp axis), z toward
+ * the light.  P looks along +y from the projection centre
+ * C = C_start - n ŷ, C_start = (c_x, y_min, c_z), and is written in the
+ * normalised homogeneous form
+ *
+ *     w = 1 + ε (y - y_min),  ε = 1/n,
+ *     x' = x - c_x,   y' = A (y - y_min) - 1,   z' = -(z - c_z),
+ *     A = (2 + ε d)/d,  d = y_max - y_min,
+ *
+ * which is n times the textbook perspective with near n and far n + d along
+ * y (y'/w runs from -1 at y_min to 1 at y_max) and becomes the uniform
+ * (orthographic) map exactly at ε = 0: the warp fades continuously as
+ * n -> inf.  The map's coordinates are (x'/w, y'/w), its depth z'/w; a light
+ * ray (fixed x, y) keeps its w, so depth order along it is kept. */
+#include "geometry_internal.h"
+
+static void sw_warp_matrix(double eps, double ymin, double d, double cx, double cz, swarp_mat4* P) {
+    double A = (2.0 + eps * d) / d;
+    memset(P, 0, sizeof *P);
+    sw_set(P, 0, 0, 1.0);
+    sw_set(P, 0, 3, -cx);
+    sw_set(P, 1, 1, A);
+    sw_set(P, 1, 3, -A * ymin - 1.0);
+    sw_set(P, 2, 2, -1.0);
+    sw_set(P, 2, 3, cz);
+    sw_set(P, 3, 1, eps);
+    sw_set(P, 3, 3, 1.0 - eps * ymin);
+}
+
+static swarp_status sw_check_warp_options(const swarp_warp_options* o) {
+    if (!sw_reserved_zero(o->_reserved, 4)) return SWARP_ERR_RESERVED_NONZERO;
+    if ((uint32_t)o->param > (uint32_t)SWARP_WARP_PARAM_USER) return SWARP_ERR_UNKNOWN_ENUM;
+    if ((uint32_t)o->center > (uint32_t)SWARP_WARP_CENTER_NEAREST_VERTEX) return SWARP_ERR_UNKNOWN_ENUM;
+    if (o->param == SWARP_WARP_PARAM_USER) {
+        if (isnan(o->n_user)) return SWARP_ERR_NON_FINITE;
+        if (!(o->n_user > 0.0)) return SWARP_ERR_OUT_OF_RANGE; /* +inf allowed: uniform */
+    }
+    if (o->param == SWARP_WARP_PARAM_PSEUDO) {
+        if (!sw_finite(o->pseudo_near) || !sw_finite(o->pseudo_far)) return SWARP_ERR_NON_FINITE;
+        if (!(o->pseudo_near >= 0.0 && o->pseudo_far >= 0.0 && o->pseudo_near + o->pseudo_far < 1.0))
+            return SWARP_ERR_OUT_OF_RANGE;
+    }
+    return SWARP_OK;
+}
+
+/* The warp parameter n in light units for the chosen parameterisation.
+ * gamma in [0, pi] is the angle between view and light axis. */
+static swarp_status sw_warp_n(const swarp_warp_options* o, double d, double z0, double z1, double gamma,
+                              double theta, double near, double far, double* n_light) {
+    double g = gamma > 0.5 * SWARP_PI ? SWARP_PI - gamma : gamma; /* fold to [0, pi/2] */
+    if (g < 0.0) g = 0.0;
+    swarp_status s;
+    double n = INFINITY;
+    switch (o->param) {
+        case SWARP_WARP_PARAM_DEFAULT:
+        case SWARP_WARP_PARAM_NOPT:
+            if (!(z1 > z0)) break;
+            s = swarp_warp_nopt(d, z0, z1, &n); /* [RHS] (3.2) */
+            if (swarp_status_is_error(s)) return s;
+            break;
+        case SWARP_WARP_PARAM_PSEUDO:
+            if (!(z1 > z0)) break;
+            s = swarp_warp_nopt_pseudo(d, z0, z1, o->pseudo_near, o->pseudo_far, &n); /* [RHS] (4.2) */
+            if (swarp_status_is_error(s)) return s;
+            break;
+        case SWARP_WARP_PARAM_NREPAR: {
+            /* [RHS] (3.3)-(3.4) with α = z_1/z_0 (the paper: "n_e and f_e ...
+             * can be seen as z_0 and z_1") and W_lz = d, so η = 0 is n_opt */
+            double eta;
+            s = swarp_warp_eta(g, theta, &eta);
+            if (swarp_status_is_error(s)) return s;
+            if (!(z1 > z0) || eta <= -1.0) break;
+            s = swarp_warp_nrepar(eta, z1 / z0, d, &n);
+            if (swarp_status_is_error(s)) return s;
+            break;
+        }
+        case SWARP_WARP_PARAM_GMNPR: {
+            /* [GMNPR] (8): λ = P_n / (P_f - P_n); P's depth range is d */
+            double lambda;
+            if (!(g > 0.0)) break;
+            s = swarp_gmnpr_lambda(g, theta, near, far, &lambda);
+            if (swarp_status_is_error(s)) return s;
+            n = lambda * d;
+            break;
+        }
+        case SWARP_WARP_PARAM_USER:
+            n = o->n_user * d / (far - near); /* eye units -> light units */
+            break;
+        default:
+            return SWARP_ERR_UNKNOWN_ENUM;
+    }
+    if (isnan(n) || !(n > 0.0)) return SWARP_ERR_DEGENERATE;
+    *n_light = n;
+    return SWARP_OK;
+}
+
+SWARP_API swarp_status swarp_warp_lispsm(const swarp_mat4* light_view, const swarp_camera* cam, double near,
+                                         double far, const swarp_vec3* points, size_t count,
+                                         const swarp_vec3* nearest, const swarp_warp_options* opts,
+                                         swarp_mat4* out_P, swarp_warp_info* out_info) {
+    if (!light_view || !cam || !points || !out_P) return SWARP_ERR_NULL_POINTER;
+    swarp_warp_options o;
+    memset(&o, 0, sizeof o);
+    if (opts) o = *opts;
+    swarp_status s = sw_check_warp_options(&o);
+    if (s != SWARP_OK) return s;
+    s = sw_check_camera_shape(cam);
+    if (s != SWARP_OK) return s;
+    if (!sw_mat_finite(light_view)) return SWARP_ERR_NON_FINITE;
+    if (!sw_finite(near) || !sw_finite(far)) return SWARP_ERR_NON_FINITE;
+    if (!(near > 0.0 && far > near)) return SWARP_ERR_NEAR_FAR;
+    if (count == 0) return SWARP_ERR_INVALID_ARGUMENT;
+    for (size_t i = 0; i < count; ++i)
+        if (!sw_finite3(&points[i])) return SWARP_ERR_NON_FINITE;
+    if (nearest && !sw_finite3(nearest)) return SWARP_ERR_NON_FINITE;
+    swarp_mat4 P, L_inv;
+    swarp_warp_info info;
+    if (!sw_invert(light_view, &L_inv)) return SWARP_ERR_SINGULAR;
+    for (size_t i = 0; i < count; ++i) {
+        swarp_vec4 h = sw_xform_point(light_view, points[i]);
+        if (!(h.w > 0.0)) return SWARP_ERR_DEGENERATE;
+    }
+    s = sw_warp_lispsm(light_view, &L_inv, cam, near, far, points, count, nearest, &o, &P, &info);
+    if (swarp_status_is_error(s)) return s;
+    *out_P = P;
+    if (out_info) *out_info = info;
+    return s;
+}
+
+/* Eye depth of the light-space point q = (x, y, z) of M-space, or NAN. */
+static double sw_eye_depth(const swarp_mat4* M_inv, const swarp_camera* cam, swarp_vec3 v, double x, double y,
+                           double z) {
+    swarp_vec4 h = {x, y, z, 1.0};
+    swarp_vec4 w = sw_xform4(M_inv, h);
+    if (!(w.w > 0.0)) return NAN;
+    swarp_vec3 p = sw_v3(w.x / w.w, w.y / w.w, w.z / w.w);
+    return sw_dot(sw_sub(p, cam->eye), v);
+}
+
+swarp_status sw_warp_lispsm(const swarp_mat4* M, const swarp_mat4* M_inv, const swarp_camera* cam, double near,
+                            double far, const swarp_vec3* points, size_t count, const swarp_vec3* nearest,
+                            const swarp_warp_options* o, swarp_mat4* out_P, swarp_warp_info* out_info) {
+    swarp_vec3 v, r, u;
+    sw_camera_basis(cam, &v, &r, &u);
+    /* B in light space: extent along the warp axis y */
+    double ymin = INFINITY, ymax = -INFINITY;
+    for (size_t i = 0; i < count; ++i) {
+        swarp_vec4 h = sw_xform_point(M, points[i]);
+        double y = h.y / h.w;
+        if (y < ymin) ymin = y;
+        if (y > ymax) ymax = y;
+    }
+    double d = ymax - ymin;
+    /* γ: angle between the view direction and the light axis (-z of the
+     * light view; for a point light the axis of its view) */
+    double vx = sw_at(M, 0, 0) * v.x + sw_at(M, 0, 1) * v.y + sw_at(M, 0, 2) * v.z;
+    double vy = sw_at(M, 1, 0) * v.x + sw_at(M, 1, 1) * v.y + sw_at(M, 1, 2) * v.z;
+    double vz = sw_at(M, 2, 0) * v.x + sw_at(M, 2, 1) * v.y + sw_at(M, 2, 2) * v.z;
+    double gamma = atan2(hypot(vx, vy), -vz);
+    if (sw_at(M, 3, 2) != 0.0) { /* point light: M = P0·L, P0's w row is -z of L */
+        double vw = sw_at(M, 3, 0) * v.x + sw_at(M, 3, 1) * v.y + sw_at(M, 3, 2) * v.z;
+        gamma = atan2(hypot(vx, vy), vw);
+    }
+    /* C_start: [RHS] §4.1 takes s on the view vector at the depth of the
+     * nearest vertex e (the given near); [WS06] takes e itself. */
+    swarp_vec3 c_ws = sw_add(cam->eye, sw_scale(v, near));
+    if (o->center == SWARP_WARP_CENTER_NEAREST_VERTEX && nearest) c_ws = *nearest;
+    swarp_vec3 c_ls = sw_project(M, c_ws);
+    /* z_0, z_1 of (3.2): eye depths of the two ends of P's axis, C_start and
+     * (c_x, y_max, c_z) ([WS06] calcNoptGeneral).  z_0 is kept at or beyond
+     * near: the part of B nearer than the view's near plane receives nothing. */
+    double z0 = sw_eye_depth(M_inv, cam, v, c_ls.x, ymin, c_ls.z);
+    double z1 = sw_eye_depth(M_inv, cam, v, c_ls.x, ymax, c_ls.z);
+    if (!sw_finite(z0) || !sw_finite(z1)) z0 = z1 = near; /* axis leaves the light's space: uniform */
+    z0 = fmax(z0, near);
+    double theta = 0.5 * cam->fovy;
+    double n_light = INFINITY;
+    swarp_status st = SWARP_OK;
+    if (d > 0.0) {
+        swarp_status s = sw_warp_n(o, d, z0, z1, gamma, theta, near, far, &n_light);
+        if (s != SWARP_OK) return s;
+    }
+    double eps = (d > 0.0 && sw_finite(n_light)) ? 1.0 / n_light : 0.0;
+    if (eps == 0.0) {
+        n_light = INFINITY;
+        st = SWARP_INFO_WARP_UNIFORM;
+    }
+    swarp_mat4 P;
+    sw_warp_matrix(eps, ymin, d > 0.0 ? d : 1.0, c_ls.x, c_ls.z, &P);
+    if (!sw_mat_finite(&P)) return SWARP_ERR_DEGENERATE;
+    *out_P = P;
+    if (out_info) {
+        memset(out_info, 0, sizeof *out_info);
+        out_info->n_light = n_light;
+        out_info->n_eye = (d > 0.0 && sw_finite(n_light)) ? n_light * (far - near) / d : INFINITY;
+        out_info->d = d;
+        out_info->z_0 = z0;
+        out_info->z_1 = z1;
+        out_info->gamma = gamma;
+    }
+    return st;
+}
