@@ -8,11 +8,13 @@ extern const swr_entry swr_entries_core[];
 /* stage tables: */
 extern const swr_entry swr_entries_lixel[];
 extern const swr_entry swr_entries_filter[];
+extern const swr_entry swr_entries_geometry[];
 
 static const swr_entry* const tables[] = {
     swr_entries_core,
     swr_entries_lixel,
     swr_entries_filter,
+    swr_entries_geometry,
 };
 
 size_t swr_entry_count(void) {

@@ -143,7 +143,7 @@ double swr_num_in(swr_ctx* c, double lo, double hi, const double* brk, int nbrk)
 
 int32_t swr_enum(swr_ctx* c, int32_t n) {
     uint8_t s = swr_u8(c);
-    if (s < 232) return (int32_t)(s % (uint8_t)(n > 0 ? n : 1));
+    if (s < 250) return (int32_t)(s % (uint8_t)(n > 0 ? n : 1)); /* about 2% invalid */
     switch (s % 4) {
         case 0: return n;
         case 1: return -1;
@@ -219,6 +219,14 @@ void swr_args(swr_ctx* c, const char* fmt, ...) {
     va_list ap;
     va_start(ap, fmt);
     vsnprintf(c->args, sizeof c->args, fmt, ap);
+    va_end(ap);
+}
+
+void swr_known(swr_ctx* c, const char* fmt, ...) {
+    va_list ap;
+    va_start(ap, fmt);
+    if (!c->finding) vsnprintf(c->finding_msg, sizeof c->finding_msg, fmt, ap);
+    c->finding++;
     va_end(ap);
 }
 

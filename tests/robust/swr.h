@@ -181,6 +181,15 @@ void swr_fail(swr_ctx* c, const char* fmt, ...)
     __attribute__((format(printf, 2, 3)))
 #endif
     ;
+/* A known problem of the library (reported to its stage, docs/quality.md):
+ * counted as a finding on any input, so the suite stays usable until it is
+ * fixed; SWARP_STRICT=1 in the environment makes hard_cases fail on every
+ * finding. */
+void swr_known(swr_ctx* c, const char* fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 2, 3)))
+#endif
+    ;
 /* A failure of accuracy: a finding when the input is extreme (see above). */
 void swr_fail_acc(swr_ctx* c, const char* fmt, ...)
 #if defined(__GNUC__)
