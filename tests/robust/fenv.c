@@ -46,10 +46,11 @@ typedef struct mode {
 /* KNOWN (docs/quality.md, reported to the geometry stage): swarp_setup's
  * warp parameter can jump by orders of magnitude (and OK <-> UNIFORM) with
  * the rounding mode, and the planner's predictions built on the same
- * quantities move with it; differences of these entry points are counted and
+ * quantities move with it (swarp_plan_explain's text prints numbers in the
+ * caller's rounding mode); differences of these entry points are counted and
  * printed, not failed, until that is fixed (SWARP_STRICT=1 fails them). */
 static const char* const known_sensitive[] = {"swarp_setup", "swarp_setup_range", "swarp_body_points", "swarp_plan",
-                                              "swarp_plan_evaluate"};
+                                              "swarp_plan_evaluate", "swarp_plan_explain"};
 static int is_known(const char* name) {
     for (size_t i = 0; i < sizeof known_sensitive / sizeof known_sensitive[0]; ++i)
         if (strcmp(name, known_sensitive[i]) == 0) return 1;
@@ -103,7 +104,7 @@ int main(int argc, char** argv) {
                 }
                 ++compared[m];
                 if (c->failed) {
-                    if (note_fail(e->name, strict, &fails, &known)) printf("FAIL %s case %lu under %s: %s\n", e->name, j, modes[m].name, c->msg);
+                    if (note_fail(e->name, strict, &fails, &known)) printf("%s %s case %lu under %s: %s\n", is_known(e->name) && !strict ? "KNOWN" : "FAIL", e->name, j, modes[m].name, c->msg);
                     continue;
                 }
                 double cond_any = fmax(c->cond, base->cond);
@@ -115,7 +116,7 @@ int main(int argc, char** argv) {
                 }
                 if (c->status != base->status || c->n_rec != base->n_rec) {
                     if (note_fail(e->name, strict, &fails, &known))
-                        printf("FAIL %s case %lu under %s: status %s, default %s\n", e->name, j, modes[m].name,
+                        printf("%s %s case %lu under %s: status %s, default %s\n", is_known(e->name) && !strict ? "KNOWN" : "FAIL", e->name, j, modes[m].name,
                                swarp_status_name(c->status), swarp_status_name(base->status));
                     continue;
                 }
@@ -129,7 +130,7 @@ int main(int argc, char** argv) {
                     double d = fabs(a - b) / scale;
                     if (!(d <= tol)) {
                         if (note_fail(e->name, strict, &fails, &known))
-                            printf("FAIL %s case %lu under %s: output %zu = %.17g, default %.17g\n", e->name, j,
+                            printf("%s %s case %lu under %s: output %zu = %.17g, default %.17g\n", is_known(e->name) && !strict ? "KNOWN" : "FAIL", e->name, j,
                                    modes[m].name, i, a, b);
                     }
                     d /= tol / SWR_FENV_TOL; /* in units of the 1e-9 tolerance */
