@@ -171,8 +171,14 @@ static void expect_scene(swr_ctx* c, const scene_args* s, int uses_cam_range) {
         swr_expect(c, SWARP_ERR_NEAR_FAR);
     if (cam->dir.x == 0 && cam->dir.y == 0 && cam->dir.z == 0) swr_expect(c, SWARP_ERR_ZERO_VECTOR);
     else if (fin3(&cam->dir) && fin3(&cam->up)) {
-        swarp_vec3 cr = cross(cam->dir, cam->up);
-        if (dot(cr, cr) <= 1e-24 * dot(cam->dir, cam->dir) * dot(cam->up, cam->up)) {
+        /* scale both to a max component of 1 first: tiny vectors are valid */
+        double md = fmax(fabs(cam->dir.x), fmax(fabs(cam->dir.y), fabs(cam->dir.z)));
+        double mu = fmax(fabs(cam->up.x), fmax(fabs(cam->up.y), fabs(cam->up.z)));
+        swarp_vec3 dn = v3(cam->dir.x / md, cam->dir.y / md, cam->dir.z / md);
+        swarp_vec3 un = mu > 0 ? v3(cam->up.x / mu, cam->up.y / mu, cam->up.z / mu) : cam->up;
+        swarp_vec3 cr = cross(dn, un);
+        if (mu == 0) swr_expect(c, SWARP_ERR_ZERO_VECTOR);
+        if (dot(cr, cr) <= 1e-24 * dot(dn, dn) * dot(un, un)) {
             swr_expect(c, SWARP_ERR_DEGENERATE);
             swr_domain(c, SWARP_ERR_ZERO_VECTOR);
         }

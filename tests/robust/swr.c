@@ -170,6 +170,8 @@ double swr_offset(swr_ctx* c) {
 
 /* ---- expectations and verdicts ---------------------------------------------- */
 void swr_expect(swr_ctx* c, swarp_status s) {
+    for (int i = 0; i < c->n_expect; ++i)
+        if (c->expect[i] == s) return;
     if (c->n_expect < SWR_MAX_EXPECT) c->expect[c->n_expect++] = s;
 }
 void swr_domain(swr_ctx* c, swarp_status s) {
@@ -266,9 +268,11 @@ int swr_verdict(swr_ctx* c, swarp_status st, int nout, ...) {
         if (c->n_expect > 0) {
             if (!in_list(c->expect, c->n_expect, st) && !in_list(c->domain, c->n_domain, st)) {
                 char buf[256] = "";
-                for (int i = 0; i < c->n_expect; ++i) {
-                    strncat(buf, swarp_status_name(c->expect[i]), sizeof buf - strlen(buf) - 2);
-                    strncat(buf, " ", sizeof buf - strlen(buf) - 1);
+                size_t used = 0;
+                for (int i = 0; i < c->n_expect && used + 1 < sizeof buf; ++i) { /* (the fuzzer found the old strncat overflow) */
+                    int w = snprintf(buf + used, sizeof buf - used, "%s ", swarp_status_name(c->expect[i]));
+                    if (w < 0) break;
+                    used += (size_t)w;
                 }
                 swr_fail_strict(c, "returned %s, expected one of: %s", swarp_status_name(st), buf);
             }
