@@ -724,7 +724,7 @@ SWARP_API swarp_status swarp_body_adjusted_range(const swarp_camera* cam, const 
  * smoothly through the right vector when the light passes parallel or
  * antiparallel to the view in the plane of v and the camera's up vector.
  * (Every continuous tangent field on the sphere has a zero: this one's lies
- * off that plane, on the v-r great circle, at sin γ ≈ 0.09; see
+ * off that plane, on the v-r great circle, at γ ≈ 5.6° (sin γ ≈ 0.097); see
  * docs/geometry.md.)  SWARP_INFO_LIGHT_PARALLEL reports that the blend is
  * active.
  */
@@ -1568,7 +1568,8 @@ SWARP_API swarp_status swarp_stabilize_light_view(const swarp_vec3* light_dir, s
 /** @brief Stabilised (flicker-free) uniform light matrix of one split for a
  *  directional light.  [RHS] §3.5 (ZZB09).
  *  SPHERE: the map covers the split frustum's exact minimal sphere (constant
- *  world size 2 r res/(res - 1)); LEVELS: the light-space box of body_points
+ *  world size 2 r res/(res - 1), rounded up to 2^-20 relative so ulp-level
+ *  wobble of n_i, f_i leaves it bit-identical); LEVELS: the light-space box of body_points
  *  with each axis' size rounded up to a multiple of level_max_size/levels;
  *  NONE: that box unquantised and unsnapped.  SPHERE and LEVELS snap the
  *  light-space map centre to whole texels relative to opt->origin, in double,
@@ -1792,6 +1793,84 @@ SWARP_API swarp_status swarp_cascade_error_curve(const swarp_error_config* cfg,
                                                  size_t m, size_t samples_per_split,
                                                  double* out_z, double* out_mx, double* out_mz,
                                                  size_t capacity, size_t* out_count);
+
+/* ---- cascades: the one call                  (src/cascade.c)   [RHS] §3.3-3.4 */
+
+/** Most splits swarp_cascade_setup computes (the largest atlas, Fig. 3.16c). */
+#define SWARP_CASCADE_MAX_SPLITS 16
+
+/** Options of swarp_cascade_setup; a zeroed struct is a valid request
+ *  (4 PSSM splits, LiSPSM n_opt per split, 2048² tiles, no stabilisation). */
+typedef struct swarp_cascade_options {
+    swarp_setup_options setup;         /**< technique and parameters for every split;
+                                            map_width = atlas tile size.  param PSEUDO:
+                                            pseudo_near/far are fractions of the whole
+                                            adjusted range; pseudo-near acts on the FIRST
+                                            split only, pseudo-far on the LAST ([RHS] §4.2) */
+    swarp_split_options split;         /**< scheme and count (count 1..16) */
+    swarp_stabilize_options stabilize; /**< mode != NONE needs technique UNIFORM and a
+                                            directional light; its depth field is
+                                            ignored (setup.depth_range is used) */
+    double kernel_world_size;          /**< r_l of [RHS] (3.9), world units; 0 = 1 */
+    double n_user[SWARP_CASCADE_MAX_SPLITS]; /**< per-split warp: n' in eye units for
+                                            split i (+INFINITY = uniform); 0 = use setup */
+    uint32_t _reserved[4];
+} swarp_cascade_options;
+
+/** One split of a cascade. */
+typedef struct swarp_cascade_split {
+    double near, far;          /**< C_i, C_{i+1}: eye-space depth range */
+    swarp_mat4 matrix;         /**< world -> split clip space (stabilised: takes p - origin) */
+    swarp_mat4 atlas_matrix;   /**< tile.clip_to_atlas * matrix: world -> atlas texture
+                                    coordinates (homogeneous; divide by w) */
+    swarp_atlas_tile tile;     /**< viewport in texels and clip -> atlas matrix */
+    double n_eye;              /**< warp parameter n' used (eye units); +inf uniform */
+    double kernel_scale[2];    /**< s_i of [RHS] (3.9) for kernel_world_size */
+    double max_mx, max_mz;     /**< exact maxima over [near, far], [RHS] (2.3)-(2.8) */
+    double mx_start, mz_start; /**< values at C_i: just after the border into this split */
+    double mx_end, mz_end;     /**< values at C_{i+1} with this split's map (just before) */
+    double texel_size;         /**< stabilised: world texel size; else 0 */
+    swarp_status status;       /**< this split's own (informational) status */
+    uint32_t point_count;      /**< points of B_i */
+    uint32_t _reserved[4];
+} swarp_cascade_split;
+
+/** Whole-cascade facts. */
+typedef struct swarp_cascade_result {
+    uint32_t split_count;
+    uint32_t _pad;
+    double view_near, view_far;  /**< adjusted near/far [RHS] §3.3.1 */
+    double splits[SWARP_CASCADE_MAX_SPLITS + 1]; /**< C_0 .. C_m */
+    double max_mx, max_mz;       /**< maxima of the whole configuration */
+    swarp_atlas_info atlas;
+    uint32_t _reserved[4];
+} swarp_cascade_result;
+
+/** @brief Cascaded (z-partitioned) shadow maps with any geometry technique.
+ *  [RHS] §3.3-3.4, §4.1-4.2, §3.3.5, (3.9), §3.5.
+ *  Adjusted near/far ([RHS] §3.3.1), split distances (swarp_cascade_splits),
+ *  per split its body B_i and light matrix through swarp_setup_range (the
+ *  split frustum instead of the view frustum, [RHS] §3.4; LiSPSM with the
+ *  robust projection centre of §4.1 unless setup.center says otherwise),
+ *  the atlas place and kernel scale, the stabilised matrix if asked for,
+ *  and the error model's values per split.  With one split the result is
+ *  swarp_setup's, bit for bit.
+ *  @param[in] cam, light, scene  as swarp_setup
+ *  @param[in] opts   NULL or zeroed for defaults
+ *  @param[out] out   whole-cascade facts
+ *  @param[out] out_splits  one entry per split; capacity >= count
+ *  @param[out] out_count   split count (also with SWARP_ERR_CAPACITY)
+ *  @return SWARP_OK or the first informational status of a split;
+ *          SWARP_ERR_STABILIZE_WARPED, SWARP_ERR_STABILIZE_LIGHT,
+ *          SWARP_ERR_SPLIT_COUNT (count > 16), SWARP_ERR_SPLIT_EMPTY,
+ *          SWARP_ERR_CAPACITY, and the errors of swarp_setup,
+ *          swarp_cascade_splits and swarp_stabilize_directional. */
+SWARP_API swarp_status swarp_cascade_setup(const swarp_camera* cam, const swarp_light* light,
+                                           const swarp_aabb* scene,
+                                           const swarp_cascade_options* opts,
+                                           swarp_cascade_result* out,
+                                           swarp_cascade_split* out_splits, size_t capacity,
+                                           size_t* out_count);
 /* <<< api: splits */
 
 /* >>> api: plan (src/plan.c) */

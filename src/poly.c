@@ -101,7 +101,7 @@ static swarp_vec3 sw_newell(const swarp_vec3* v, const uint8_t* idx, uint32_t n)
     for (uint32_t i = 0; i < n; ++i) c = sw_add(c, v[idx[i]]);
     c = sw_scale(c, 1.0 / n); /* centred: no cancellation for large worlds */
     for (uint32_t i = 0; i < n; ++i) {
-        swarp_vec3 a = sw_sub(v[idx[i]], c), b = sw_sub(v[idx[(i + 1) % n]], c);
+        swarp_vec3 a = sw_sub(v[idx[i]], c), b = sw_sub(v[idx[i + 1 == n ? 0 : i + 1]], c);
         nn.x += (a.y - b.y) * (a.z + b.z);
         nn.y += (a.z - b.z) * (a.x + b.x);
         nn.z += (a.x - b.x) * (a.y + b.y);
@@ -112,8 +112,8 @@ static swarp_vec3 sw_newell(const swarp_vec3* v, const uint8_t* idx, uint32_t n)
 /* Merge vertices closer than eps, drop repeated indices in loops and faces
  * with fewer than 3 distinct vertices, drop unreferenced vertices when there
  * are faces.  Keeps the SWARP_POLY_EPS_REL promise after every operation. */
-void sw_poly_finalize(swarp_polyhedron* p, uint32_t first_new) {
-    const double eps = SWARP_POLY_EPS_REL * sw_poly_scale(p);
+void sw_poly_finalize(swarp_polyhedron* p, uint32_t first_new, double scale) {
+    const double eps = SWARP_POLY_EPS_REL * (scale > 0.0 ? scale : sw_poly_scale(p));
     uint8_t remap[SWARP_POLY_MAX_VERTICES];
     uint32_t nv = 0;
     if (first_new > p->vertex_count) first_new = p->vertex_count;
@@ -135,15 +135,16 @@ void sw_poly_finalize(swarp_polyhedron* p, uint32_t first_new) {
     memset(used, 0, nv);
     for (uint32_t f = 0; f < p->face_count; ++f) {
         uint32_t n = p->face_vertex_count[f], m = 0;
-        uint8_t loop[SWARP_POLY_MAX_FACE_VERTICES];
+        /* compacted in place: row nf <= f, and within a row m <= k */
+        const uint8_t* src = p->face_vertices[f];
+        uint8_t* loop = p->face_vertices[nf];
         for (uint32_t k = 0; k < n; ++k) {
-            uint8_t id = remap[p->face_vertices[f][k]];
+            uint8_t id = remap[src[k]];
             if (m > 0 && loop[m - 1] == id) continue;
             loop[m++] = id;
         }
         while (m > 1 && loop[m - 1] == loop[0]) --m;
         if (m < 3) continue;
-        memcpy(p->face_vertices[nf], loop, m);
         p->face_vertex_count[nf] = m;
         p->planes[nf] = p->planes[f];
         for (uint32_t k = 0; k < m; ++k) used[loop[k]] = 1;
@@ -203,7 +204,7 @@ void sw_poly_from_corners(const swarp_vec3 c[8], swarp_polyhedron* out) {
         ++nf;
     }
     out->face_count = nf;
-    sw_poly_finalize(out, 0);
+    sw_poly_finalize(out, 0, 0.0);
 }
 
 SWARP_API swarp_status swarp_poly_from_aabb(const swarp_aabb* box, swarp_polyhedron* out) {
@@ -310,7 +311,8 @@ swarp_status sw_poly_clip(const swarp_polyhedron* in, swarp_vec3 n_raw, double d
         return SWARP_OK;
     }
     /* tolerance for "on the plane": see SWARP_POLY_EPS_REL */
-    const double eps = SWARP_POLY_EPS_REL * sw_max(sw_poly_scale(in), fabs(d));
+    const double in_scale = sw_poly_scale(in);
+    const double eps = SWARP_POLY_EPS_REL * sw_max(in_scale, fabs(d));
     double dist[SWARP_POLY_MAX_VERTICES];
     signed char side[SWARP_POLY_MAX_VERTICES];
     int any_out = 0, any_in = 0;
@@ -352,11 +354,12 @@ swarp_status sw_poly_clip(const swarp_polyhedron* in, swarp_vec3 n_raw, double d
     for (uint32_t f = 0; f < in->face_count; ++f) {
         uint32_t fn = in->face_vertex_count[f];
         const uint8_t* fl = in->face_vertices[f];
-        uint8_t loop[SWARP_POLY_MAX_FACE_VERTICES];
+        if (tf >= SWARP_POLY_MAX_FACES) return SWARP_ERR_CAPACITY;
+        uint8_t* loop = t.face_vertices[tf]; /* written in place */
         uint32_t m = 0;
         int all_on = 1;
         for (uint32_t k = 0; k < fn; ++k) {
-            uint8_t i = fl[k], j = fl[(k + 1) % fn];
+            uint8_t i = fl[k], j = fl[k + 1 == fn ? 0 : k + 1];
             if (side[i] != 0) all_on = 0;
             if (side[i] <= 0) {
                 if (m >= SWARP_POLY_MAX_FACE_VERTICES) return SWARP_ERR_CAPACITY;
@@ -389,8 +392,6 @@ swarp_status sw_poly_clip(const swarp_polyhedron* in, swarp_vec3 n_raw, double d
             swarp_vec3 fnrm = {in->planes[f].a, in->planes[f].b, in->planes[f].c};
             if (sw_dot(fnrm, n) > 0.0) cap_coincides = 1;
         }
-        if (tf >= SWARP_POLY_MAX_FACES) return SWARP_ERR_CAPACITY;
-        memcpy(t.face_vertices[tf], loop, m);
         t.face_vertex_count[tf] = m;
         t.planes[tf] = in->planes[f];
         ++tf;
@@ -409,7 +410,7 @@ swarp_status sw_poly_clip(const swarp_polyhedron* in, swarp_vec3 n_raw, double d
         sw_gnormalize(sw_cross(ref, n), &e1);
         e2 = sw_cross(n, e1);
         double key[SWARP_POLY_MAX_FACE_VERTICES];
-        uint8_t idx[SWARP_POLY_MAX_FACE_VERTICES];
+        uint8_t* idx = t.face_vertices[tf];
         for (uint32_t k = 0; k < n_on; ++k) {
             swarp_vec3 q = sw_sub(t.vertices[on_plane[k]], c);
             double kk = sw_pseudo_angle(sw_dot(q, e1), sw_dot(q, e2));
@@ -422,7 +423,6 @@ swarp_status sw_poly_clip(const swarp_polyhedron* in, swarp_vec3 n_raw, double d
             key[j] = kk;
             idx[j] = on_plane[k];
         }
-        memcpy(t.face_vertices[tf], idx, n_on);
         t.face_vertex_count[tf] = n_on;
         t.planes[tf].a = n.x;
         t.planes[tf].b = n.y;
@@ -432,7 +432,7 @@ swarp_status sw_poly_clip(const swarp_polyhedron* in, swarp_vec3 n_raw, double d
     }
     t.vertex_count = tv;
     t.face_count = tf;
-    sw_poly_finalize(&t, n_kept);
+    sw_poly_finalize(&t, n_kept, in_scale); /* clipping never grows coordinates */
     sw_poly_copy(&t, out);
     return SWARP_OK;
 }
@@ -441,12 +441,30 @@ swarp_status sw_poly_clip_box(const swarp_polyhedron* in, const swarp_aabb* box,
     const swarp_vec3 ns[6] = {{-1, 0, 0}, {1, 0, 0}, {0, -1, 0}, {0, 1, 0}, {0, 0, -1}, {0, 0, 1}};
     const double ds[6] = {box->min.x, -box->max.x, box->min.y, -box->max.y, box->min.z, -box->max.z};
     const swarp_polyhedron* src = in;
-    for (int k = 0; k < 6; ++k) {
-        swarp_status s = sw_poly_clip(src, ns[k], ds[k], out);
-        if (s != SWARP_OK) return s;
-        src = out;
-        if (out->vertex_count == 0) break;
+    /* the polyhedron's own bounds: a box plane that no vertex crosses (by
+     * more than the clip's tolerance) is skipped without a clip call */
+    double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+    for (uint32_t i = 0; i < in->vertex_count; ++i) {
+        const double* v = &in->vertices[i].x;
+        for (int c = 0; c < 3; ++c) {
+            if (v[c] < lo[c]) lo[c] = v[c];
+            if (v[c] > hi[c]) hi[c] = v[c];
+        }
     }
+    const double* bmin = &box->min.x;
+    const double* bmax = &box->max.x;
+    int clipped = 0;
+    for (int k = 0; k < 6; ++k) {
+        int c = k / 2;
+        if (clipped || (k & 1 ? hi[c] > bmax[c] : lo[c] < bmin[c])) {
+            swarp_status s = sw_poly_clip(src, ns[k], ds[k], out);
+            if (s != SWARP_OK) return s;
+            src = out;
+            clipped = 1; /* bounds changed: test the remaining planes by clipping */
+            if (out->vertex_count == 0) break;
+        }
+    }
+    if (src != out) sw_poly_copy(in, out); /* inside the box already */
     return SWARP_OK;
 }
 

@@ -87,6 +87,17 @@ SWARP_API swarp_status swarp_stabilize_light_view(const swarp_vec3* light_dir, s
  * h >= (e/2) res/(res - 1). */
 static double sw_padded_half(double e, double res) { return 0.5 * e * res / (res - 1.0); }
 
+/* Round up to a multiple of 2^-20 of the value's binade: the exact
+ * solution's size then stays bit-identical when the split range wobbles by a
+ * few ulps (e.g. an adjusted near/far recomputed each frame), at a cost of
+ * at most one part in 10^6 of the map. */
+static double sw_round_up_coarse(double h) {
+    int e;
+    (void)frexp(h, &e);
+    const double step = ldexp(1.0, e - 20);
+    return ceil(h / step) * step;
+}
+
 /* Quantise a padded full size up to a whole number of level steps. */
 static double sw_quantise(double size, double step, uint32_t* level) {
     double k = ceil(size / step);
@@ -152,7 +163,7 @@ SWARP_API swarp_status swarp_stabilize_directional(const swarp_camera* cam, doub
         cx = sw_dot(c, u);
         cy = sw_dot(c, v);
         const double tc = sw_dot(c, d);
-        hx = hy = sw_padded_half(2.0 * rep.sphere_radius, dres);
+        hx = hy = sw_round_up_coarse(sw_padded_half(2.0 * rep.sphere_radius, dres));
         t_min = tc - rep.sphere_radius;
         t_max = tc + rep.sphere_radius;
     } else {

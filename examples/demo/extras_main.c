@@ -228,6 +228,7 @@ static void usage(void) {
 }
 
 int main(int argc, char** argv) {
+    setvbuf(stdout, NULL, _IOLBF, 0); /* progress lines also when redirected */
     extras_env e;
     memset(&e, 0, sizeof e);
     e.w = 960;

@@ -34,7 +34,7 @@ static GLuint compile(const char* name, GLenum type, const char* src) {
         char log[4096];
         glGetShaderInfoLog(s, sizeof log, NULL, log);
         fprintf(stderr, "demo: %s %s shader:\n%s\n", name,
-                type == GL_VERTEX_SHADER ? "vertex" : "fragment", log);
+                type == GL_VERTEX_SHADER ? "vertex" : type == GL_GEOMETRY_SHADER ? "geometry" : "fragment", log);
         glDeleteShader(s);
         return 0;
     }
@@ -42,18 +42,26 @@ static GLuint compile(const char* name, GLenum type, const char* src) {
 }
 
 GLuint demo_gl_program(const char* name, const char* vs, const char* fs) {
+    return demo_gl_program_gs(name, vs, NULL, fs);
+}
+
+GLuint demo_gl_program_gs(const char* name, const char* vs, const char* gs, const char* fs) {
     GLuint v = compile(name, GL_VERTEX_SHADER, vs);
+    GLuint g = gs ? compile(name, GL_GEOMETRY_SHADER, gs) : 0;
     GLuint f = fs ? compile(name, GL_FRAGMENT_SHADER, fs) : 0;
-    if (!v || (fs && !f)) {
+    if (!v || (fs && !f) || (gs && !g)) {
         if (v) glDeleteShader(v);
+        if (g) glDeleteShader(g);
         if (f) glDeleteShader(f);
         return 0;
     }
     GLuint p = glCreateProgram();
     glAttachShader(p, v);
+    if (g) glAttachShader(p, g);
     if (f) glAttachShader(p, f);
     glLinkProgram(p);
     glDeleteShader(v);
+    if (g) glDeleteShader(g);
     if (f) glDeleteShader(f);
     GLint ok = 0;
     glGetProgramiv(p, GL_LINK_STATUS, &ok);

@@ -40,6 +40,38 @@ static const char* const moment_fs =
     "  else { float p = exp(u_c * x), n = -exp(-u_c * x); o_m = vec4(p, p * p, n, n * n); }\n"
     "}\n";
 
+/* Geometry cloning ([RHS] §3.3.6, Listing A.1, after ZSN07): one draw, the
+ * geometry shader emits every triangle once per map, transformed by that
+ * map's matrix, into layer i (gl_Layer) and viewport i (gl_ViewportIndex). */
+static const char* const clone_vs =
+    "layout(location = 0) in vec3 a_p;\n"
+    "out vec3 g_p;\n"
+    "void main() { g_p = a_p; }\n";
+static const char* const clone_gs =
+    "layout(triangles, invocations = 16) in;\n"
+    "layout(triangle_strip, max_vertices = 3) out;\n"
+    "in vec3 g_p[];\n"
+    "uniform mat4 u_light[16];\n"
+    "uniform int u_count;\n"
+    "void main() {\n"
+    "  int i = gl_InvocationID;\n"
+    "  if (i >= u_count) return;\n"
+    "  vec4 c[3];\n"
+    "  for (int k = 0; k < 3; ++k) c[k] = u_light[i] * vec4(g_p[k], 1.0);\n"
+    /* cull triangles wholly outside one side of this map's clip volume */
+    "  for (int a = 0; a < 2; ++a) {\n"
+    "    if (c[0][a] > c[0].w && c[1][a] > c[1].w && c[2][a] > c[2].w) return;\n"
+    "    if (c[0][a] < -c[0].w && c[1][a] < -c[1].w && c[2][a] < -c[2].w) return;\n"
+    "  }\n"
+    "  for (int k = 0; k < 3; ++k) {\n"
+    "    gl_Position = c[k];\n"
+    "    gl_Layer = i;\n"
+    "    gl_ViewportIndex = i;\n"
+    "    EmitVertex();\n"
+    "  }\n"
+    "  EndPrimitive();\n"
+    "}\n";
+
 static const char* const depth_vs =
     "layout(location = 0) in vec3 a_p;\n"
     "uniform mat4 u_m;\n"
@@ -49,11 +81,15 @@ static const char* const main_vs =
     "layout(location = 0) in vec3 a_p;\n"
     "layout(location = 1) in vec3 a_n;\n"
     "layout(location = 2) in vec3 a_c;\n"
-    "uniform mat4 u_view, u_proj;\n"
+    "uniform mat4 u_view, u_proj, u_sel_view;\n"
+    "uniform int u_has_sel_view;\n"
     "out vec3 v_p; out vec3 v_n; out vec3 v_c; out float v_depth;\n"
     "void main() {\n"
     "  vec4 vs = u_view * vec4(a_p, 1.0);\n"
-    "  v_p = a_p; v_n = a_n; v_c = a_c; v_depth = -vs.z;\n"
+    /* split selection always uses the VIEWER's eye depth, also when an
+     * outside camera draws the picture */
+    "  vec4 es = u_has_sel_view != 0 ? u_sel_view * vec4(a_p, 1.0) : vs;\n"
+    "  v_p = a_p; v_n = a_n; v_c = a_c; v_depth = -es.z;\n"
     "  gl_Position = u_proj * vs;\n"
     "}\n";
 
@@ -208,10 +244,11 @@ static const char* const main_fs =
     "  vec3 pb = v_p + n * (u_offset * texel_world(i, v_p) * (1.0 - clamp(dot(n, to_light), 0.0, 1.0)));\n"
     "  vec3 sc = map_coord(i, pb);\n"
     "  float lit = 1.0;\n"
+    "  float w = 1.0;\n"
     "  if (u_mode != 4) {\n"
     "    lit = lookup(i, sc);\n"
     "    if (u_select == 0) {\n"
-    "      float w = blend_weight(i, v_depth);\n"
+    "      w = blend_weight(i, v_depth);\n"
     "      if (w < 1.0) lit = lit * w + lookup(i + 1, map_coord(i + 1, pb)) * (1.0 - w);\n"
     "    }\n"
     "  }\n"
@@ -225,7 +262,8 @@ static const char* const main_fs =
     "    col = mix(shaded, sp[i % 4] * (0.45 + 0.55 * ndl * lit), 0.6);\n"
     "  } else if (u_mode == 3) col = mix(shaded, vec3(0.0), grid_line(sc0.xy));\n"
     "  o_color = vec4(col, 1.0);\n"
-    "  o_tex = vec4(sc0.xy * u_res, float(i), v_depth);\n"
+    /* the map index, and in its fraction the blend weight: i + (1 - w)/2 */
+    "  o_tex = vec4(sc0.xy * u_res, float(i) + 0.5 * (1.0 - w), v_depth);\n"
     "  o_pos = vec4(v_p, lit);\n"
     "}\n";
 
@@ -250,6 +288,8 @@ int demo_render_init(demo_renderer* r, const demo_scene* s, int w, int h, int ma
     }
     r->prog_depth = demo_gl_program("depth", depth_vs, NULL);
     r->prog_moment = demo_gl_program("moments", depth_vs, moment_fs);
+    r->prog_clone = demo_gl_program_gs("clone", clone_vs, clone_gs, NULL);
+    if (!r->prog_clone) return -1;
     if (!r->prog_moment) return -1;
     double xy[32], dmin;
     size_t np = 0;
@@ -306,6 +346,7 @@ int demo_render_init(demo_renderer* r, const demo_scene* s, int w, int h, int ma
 void demo_render_free(demo_renderer* r) {
     if (r->prog_depth) glDeleteProgram(r->prog_depth);
     if (r->prog_moment) glDeleteProgram(r->prog_moment);
+    if (r->prog_clone) glDeleteProgram(r->prog_clone);
     glDeleteTextures(1, &r->moment_tex);
     if (r->prog_main) glDeleteProgram(r->prog_main);
     glDeleteTextures(1, &r->shadow_tex);
@@ -385,6 +426,54 @@ int demo_render_shadow(demo_renderer* r, const demo_shadow* sh, demo_filter filt
     return errors;
 }
 
+int demo_render_shadow_single(demo_renderer* r, const demo_shadow* sh, double* ms_out) {
+    glBindFramebuffer(GL_FRAMEBUFFER, r->shadow_fbo);
+    GLenum none = GL_NONE;
+    glDrawBuffers(1, &none);
+    glReadBuffer(GL_NONE);
+    glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, 0, 0, 0);
+    /* the whole array: layered rendering */
+    glFramebufferTexture(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, r->shadow_tex, 0);
+    double t0 = demo_now_ms();
+    glViewport(0, 0, r->map_res, r->map_res);
+    glEnable(GL_DEPTH_TEST);
+    if (sh->depth_clamp) glEnable(GL_DEPTH_CLAMP);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
+    glDisable(GL_CULL_FACE);
+    glClear(GL_DEPTH_BUFFER_BIT); /* clears every layer */
+    for (int i = 0; i < sh->count; ++i)
+        glViewportIndexedf((GLuint)i, 0, 0, (float)sh->viewport[i][0], (float)sh->viewport[i][1]);
+    glEnable(GL_POLYGON_OFFSET_FILL);
+    glPolygonOffset(2.0f, 8.0f);
+    glUseProgram(r->prog_clone);
+    float lm[DEMO_MAX_SPLITS * 16];
+    for (int i = 0; i < sh->count; ++i) to_float(&sh->light[i], lm + 16 * i);
+    glUniformMatrix4fv(glGetUniformLocation(r->prog_clone, "u_light"), sh->count, GL_FALSE, lm);
+    glUniform1i(glGetUniformLocation(r->prog_clone, "u_count"), sh->count);
+    glBindVertexArray(r->vao);
+    glDrawArrays(GL_TRIANGLES, 0, r->vertex_count);
+    glFinish();
+    if (ms_out) *ms_out = demo_now_ms() - t0;
+    int errors = demo_gl_check("single-pass shadow (geometry cloning)");
+    glDisable(GL_POLYGON_OFFSET_FILL);
+    glDisable(GL_DEPTH_CLAMP);
+    glViewport(0, 0, r->map_res, r->map_res); /* resets every viewport index */
+    glFramebufferTexture(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, 0, 0);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    return errors;
+}
+
+int demo_render_read_depth(demo_renderer* r, int layer, float* out) {
+    glBindFramebuffer(GL_FRAMEBUFFER, r->shadow_fbo);
+    glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, 0, 0, 0);
+    glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, r->shadow_tex, 0, layer);
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glReadPixels(0, 0, r->map_res, r->map_res, GL_DEPTH_COMPONENT, GL_FLOAT, out);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    return demo_gl_check("depth read-back");
+}
+
 int demo_render_main(demo_renderer* r, const demo_shadow* sh, const demo_main_params* p,
                      double* ms_out) {
     double t0 = demo_now_ms();
@@ -405,6 +494,8 @@ int demo_render_main(demo_renderer* r, const demo_shadow* sh, const demo_main_pa
     glUseProgram(pr);
     glBindVertexArray(r->vao);
     glUniformMatrix4fv(glGetUniformLocation(pr, "u_view"), 1, GL_FALSE, p->view);
+    glUniformMatrix4fv(glGetUniformLocation(pr, "u_sel_view"), 1, GL_FALSE, p->sel_view);
+    glUniform1i(glGetUniformLocation(pr, "u_has_sel_view"), p->has_sel_view);
     glUniformMatrix4fv(glGetUniformLocation(pr, "u_proj"), 1, GL_FALSE, p->proj);
     float lm[DEMO_MAX_SPLITS * 16], li[DEMO_MAX_SPLITS * 16], uvs[DEMO_MAX_SPLITS * 2];
     float split[DEMO_MAX_SPLITS + 1];

@@ -9,6 +9,7 @@
 #include "shadowwarp.h"
 
 #define DEMO_MAX_SPLITS 16
+#define DEMO_MAX_BODY 128
 
 typedef enum demo_technique {
     DEMO_TECH_UNIFORM = 0, /**< light-space aligned, focused uniform map */
@@ -65,6 +66,8 @@ typedef struct demo_shadow {
     double predicted_max_mx, predicted_max_mz; /**< NAN when not available */
     swarp_status status;                    /**< library status of the setup */
     const char* source;                     /**< who computed the matrices */
+    swarp_vec3 body[DEMO_MAX_BODY];         /**< points of B from the setup (whole view) */
+    int body_count;
 } demo_shadow;
 
 const char* demo_technique_name(demo_technique t);
@@ -84,11 +87,9 @@ int demo_shadow_setup(const swarp_camera* cam, const swarp_light* light,
                       const swarp_aabb* scene, const demo_shadow_request* req,
                       demo_shadow* out);
 
-/** 1 if the library's error model (core stage) is linked in. */
-int demo_have_error_model(void);
 /** m_x and m_z [RHS] (2.3)-(2.8) at eye depth z for configuration sh, seen
  *  on a screen of w x h pixels with vertical fov fovy (radians).  0 on
- *  success, -1 if the error model is unavailable or fails. */
+ *  success, -1 if the model does not apply (lixel) or fails. */
 int demo_predict(const demo_shadow* sh, double fovy, int w, int h, int map_res, double z,
                  double* out_mx, double* out_mz);
 
