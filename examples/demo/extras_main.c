@@ -305,7 +305,7 @@ int main(int argc, char** argv) {
     int rc = 0;
     if (test) {
         if (!strcmp(test, "cloning")) rc = extras_cloning(&e, 1, NULL, NULL);
-        else if (!strcmp(test, "mindepth")) rc = extras_mindepth(&e, 1, NULL, NULL);
+        else if (!strcmp(test, "mindepth")) rc = extras_mindepth(&e, 1);
         else if (!strcmp(test, "cube")) rc = extras_cube(&e, 1);
         else if (!strcmp(test, "blur")) rc = extras_blur(&e, 1);
         else {
@@ -330,7 +330,7 @@ int main(int argc, char** argv) {
             if (!strcmp(parts[i], "viz")) r = extras_viz(&e);
             else if (!strcmp(parts[i], "cloning")) r = extras_cloning(&e, 0, rows, &nrows);
             else if (!strcmp(parts[i], "blur")) r = extras_blur(&e, 0);
-            else if (!strcmp(parts[i], "mindepth")) r = extras_mindepth(&e, 0, rows, &nrows);
+            else if (!strcmp(parts[i], "mindepth")) r = extras_mindepth(&e, 0);
             else if (!strcmp(parts[i], "cube")) r = extras_cube(&e, 0);
             else {
                 fprintf(stderr, "demo-extras: unknown part %s\n", parts[i]);
