@@ -101,11 +101,11 @@ static void draw_body(demo_image* im, const swarp_mat4* m, const swarp_polyhedro
 /* the outside camera: high, behind and to the left of the common view */
 static void outside_view(const extras_env* e, demo_view* ov) {
     *ov = e->v;
-    ov->cam.eye = (swarp_vec3){-600, 560, 820};
-    swarp_vec3 target = {10, -70, 40};
+    ov->cam.eye = (swarp_vec3){-700, 640, 960};
+    swarp_vec3 target = {20, 10, 20};
     ov->cam.dir = (swarp_vec3){target.x - ov->cam.eye.x, target.y - ov->cam.eye.y,
                                target.z - ov->cam.eye.z};
-    ov->cam.fovy = 44 * 3.14159265358979323846 / 180;
+    ov->cam.fovy = 46 * 3.14159265358979323846 / 180;
     ov->cam.near = 10;
     ov->cam.far = 4000;
     demo_view_update(ov);
