@@ -60,7 +60,7 @@ typedef struct extras_bench_row {
 void extras_print_bench(const char* title, const extras_bench_row* rows, int n);
 
 /* The five parts.  test != 0: the headless check (0 pass, 1 fail). */
-int extras_viz(extras_env* e);
+int extras_viz(extras_env* e, int test);
 int extras_cloning(extras_env* e, int test, extras_bench_row* rows, int* nrows);
 int extras_blur(extras_env* e, int test);
 int extras_mindepth(extras_env* e, int test);
