@@ -60,10 +60,18 @@ typedef struct extras_bench_row {
 void extras_print_bench(const char* title, const extras_bench_row* rows, int n);
 
 /* The five parts.  test != 0: the headless check (0 pass, 1 fail). */
-int extras_viz(extras_env* e);
+int extras_viz(extras_env* e, int test);
 int extras_cloning(extras_env* e, int test, extras_bench_row* rows, int* nrows);
 int extras_blur(extras_env* e, int test);
-int extras_mindepth(extras_env* e, int test, extras_bench_row* rows, int* nrows);
+int extras_mindepth(extras_env* e, int test);
+/** One frame of the GPU min-depth path (depth pre-pass, mip-min chain, 1x1
+ *  read-back) for the timing table of extras_clone.c. */
+typedef struct extras_md extras_md;
+extras_md* extras_md_create(extras_env* e);
+void extras_md_destroy(extras_md* x);
+/** Milliseconds of the path (glFinish before, the read-back syncs after);
+ *  -1 on a GL error.  *out_min: the minimum read back. */
+double extras_md_frame(extras_env* e, extras_md* x, const demo_view* v, float* out_min);
 int extras_cube(extras_env* e, int test);
 /** The adjusted near plane of view v measured on the GPU (extras_mindepth.c):
  *  swarp_mindepth_near of the mip-min chain's minimum; NAN on failure. */

@@ -246,54 +246,89 @@ int extras_cloning(extras_env* e, int test, extras_bench_row* rows, int* nrows) 
         clone_free(&c);
         return rc;
     }
+    /* The table of [RHS] Tables 7.1/7.2 on this machine: every variant of
+     * one K is run in the same frame loop, so load changes hit all alike.
+     * Variants: 0 the K + 1 passes, 1 + 2 geometry cloning without / with
+     * the per-triangle cull, 3 the automatic adjusted near plane ([RHS]
+     * §4.3: depth pre-pass, GPU mip-min chain, 1x1 read-back, then the
+     * K + 1 passes of the configuration set up with that near plane). */
+    enum { NV = 4 };
     int F = e->frames, rc = 0;
-    double* t = malloc(sizeof(double) * 6 * (size_t)F);
-    if (!t) return 1;
-    /* LiSPSM alone, then PSSM(K) + LiSPSM three ways */
+    double* t = malloc(sizeof(double) * 3 * NV * (size_t)F); /* shadow, extra, main */
+    extras_md* md = extras_md_create(e);
+    double near_adj = extras_measured_near(e, &e->v);
+    if (!t || !md || !(near_adj > 0)) {
+        free(t);
+        extras_md_destroy(md);
+        clone_free(&c);
+        return 1;
+    }
+    demo_view va = e->v;
+    va.cam.near = near_adj;
+    demo_view_update(&va);
+#define T_SH(v, f) t[(3 * (v) + 0) * F + (f)]
+#define T_EX(v, f) t[(3 * (v) + 1) * F + (f)]
+#define T_MN(v, f) t[(3 * (v) + 2) * F + (f)]
     const int ks[4] = {1, 4, 8, 16};
     for (int ki = 0; ki < 4; ++ki) {
         int K = ks[ki];
-        demo_shadow sh;
-        if (extras_setup(e, &e->v, K == 1 ? DEMO_TECH_LISPSM : DEMO_TECH_PSSM_LISPSM, K, &sh)) {
+        demo_technique tech = K == 1 ? DEMO_TECH_LISPSM : DEMO_TECH_PSSM_LISPSM;
+        demo_shadow sh, sh_adj;
+        if (extras_setup(e, &e->v, tech, K, &sh) || extras_setup(e, &va, tech, K, &sh_adj)) {
             rc = 1;
             break;
         }
+        memset(t, 0, sizeof(double) * 3 * NV * (size_t)F);
         for (int f = 0; f < F; ++f) {
-            glFinish();
-            double t0 = demo_now_ms();
-            rc |= multi_pass(e, &sh) != 0;
-            glFinish();
-            t[f] = demo_now_ms() - t0;
-            rc |= main_mask(e, &sh, DEMO_FILTER_PCF3, NULL, &t[F + f]) != 0;
-            if (K == 1) continue;
-            for (int cull = 0; cull < 2; ++cull) {
+            for (int v = 0; v < NV; ++v) {
+                if (K == 1 && (v == 1 || v == 2)) continue;
+                const demo_shadow* s = v == 3 ? &sh_adj : &sh;
+                if (v == 3) {
+                    T_EX(v, f) = extras_md_frame(e, md, &e->v, NULL);
+                    rc |= T_EX(v, f) < 0;
+                }
                 glFinish();
-                t0 = demo_now_ms();
-                rc |= clone_pass(e, &c, &sh, cull) != 0;
+                double t0 = demo_now_ms();
+                if (v == 0 || v == 3) rc |= multi_pass(e, s) != 0;
+                else rc |= clone_pass(e, &c, s, v == 2) != 0;
                 glFinish();
-                t[(2 + 2 * cull) * F + f] = demo_now_ms() - t0;
-                rc |= main_mask(e, &sh, DEMO_FILTER_PCF3, NULL, &t[(3 + 2 * cull) * F + f]) != 0;
+                T_SH(v, f) = demo_now_ms() - t0;
+                demo_main_params p;
+                extras_main_params(v == 3 ? &va : &e->v, DEMO_MODE_SHADED, DEMO_FILTER_PCF3,
+                                   K > 1 ? 0.1f : 0.0f, &p);
+                rc |= demo_render_main(&e->r, s, &p, &T_MN(v, f)) != 0;
             }
         }
-        int nv = K == 1 ? 1 : 3;
-        for (int v = 0; v < nv && rows && *nrows < 32; ++v) {
+        const int order[NV] = {0, 3, 1, 2};
+        for (int oi = 0; oi < NV && rows && *nrows < 32; ++oi) {
+            int v = order[oi];
+            if (K == 1 && (v == 1 || v == 2)) continue;
             extras_bench_row* row = &rows[(*nrows)++];
             memset(row, 0, sizeof *row);
-            if (K == 1) snprintf(row->name, sizeof row->name, "LiSPSM");
-            else if (v == 0) snprintf(row->name, sizeof row->name, "PSSM(%d) + LiSPSM", K);
-            else if (v == 1) snprintf(row->name, sizeof row->name, "Geometry Cloning PSSM(%d) + LiSPSM", K);
-            else snprintf(row->name, sizeof row->name, "Geometry Cloning + tri cull PSSM(%d) + LiSPSM", K);
+            char base[24];
+            if (K == 1) snprintf(base, sizeof base, "LiSPSM");
+            else snprintf(base, sizeof base, "PSSM(%d) + LiSPSM", K);
+            if (v == 0) snprintf(row->name, sizeof row->name, "%s", base);
+            else if (v == 3) snprintf(row->name, sizeof row->name, "Automatic adjusted zNear + %s", base);
+            else if (v == 1) snprintf(row->name, sizeof row->name, "Geometry Cloning %s", base);
+            else snprintf(row->name, sizeof row->name, "Geometry Cloning + tri cull %s", base);
             if (v == 0) snprintf(row->passes, sizeof row->passes, "%d + 1", K);
+            else if (v == 3) snprintf(row->passes, sizeof row->passes, "1 + %d + 1", K);
             else snprintf(row->passes, sizeof row->passes, "1 + 1");
             double frame[512];
             int n = F < 512 ? F : 512;
-            for (int f = 0; f < n; ++f) frame[f] = t[2 * v * F + f] + t[(2 * v + 1) * F + f];
+            for (int f = 0; f < n; ++f) frame[f] = T_SH(v, f) + T_EX(v, f) + T_MN(v, f);
             row->frame_ms = extras_median(frame, n);
-            row->shadow_ms = extras_median(t + 2 * v * F, F);
-            row->main_ms = extras_median(t + (2 * v + 1) * F, F);
+            row->shadow_ms = extras_median(&T_SH(v, 0), F);
+            row->extra_ms = extras_median(&T_EX(v, 0), F);
+            row->main_ms = extras_median(&T_MN(v, 0), F);
         }
-        printf("  K=%d timed over %d frames\n", K, F);
+        printf("  K=%d: every variant timed over %d frames (adjusted near %.2f)\n", K, F, near_adj);
     }
+#undef T_SH
+#undef T_EX
+#undef T_MN
+    extras_md_destroy(md);
     free(t);
     clone_free(&c);
     return rc;

@@ -218,7 +218,7 @@ static void usage(void) {
     printf("usage: demo-extras [options]\n"
            "  (no options)        every part of issue 10 into ./out/extras and the tables\n"
            "  --part P            viz | cloning | blur | mindepth | cube (repeatable)\n"
-           "  --test T            cloning | mindepth | cube | blur: headless check\n"
+           "  --test T            cloning | mindepth | cube | blur | viz: headless check\n"
            "                      (exit 0 pass, 1 fail, 77 no OSMesa context)\n"
            "  --size WxH          picture size (default 960x540)\n"
            "  --map RES           texels per map side (default 1024)\n"
@@ -228,6 +228,7 @@ static void usage(void) {
 }
 
 int main(int argc, char** argv) {
+    setvbuf(stdout, NULL, _IOLBF, 0); /* progress lines also when redirected */
     extras_env e;
     memset(&e, 0, sizeof e);
     e.w = 960;
@@ -304,7 +305,8 @@ int main(int argc, char** argv) {
     int rc = 0;
     if (test) {
         if (!strcmp(test, "cloning")) rc = extras_cloning(&e, 1, NULL, NULL);
-        else if (!strcmp(test, "mindepth")) rc = extras_mindepth(&e, 1, NULL, NULL);
+        else if (!strcmp(test, "viz")) rc = extras_viz(&e, 1);
+        else if (!strcmp(test, "mindepth")) rc = extras_mindepth(&e, 1);
         else if (!strcmp(test, "cube")) rc = extras_cube(&e, 1);
         else if (!strcmp(test, "blur")) rc = extras_blur(&e, 1);
         else {
@@ -326,10 +328,10 @@ int main(int argc, char** argv) {
         for (int i = 0; i < nparts && rc != 2; ++i) {
             int r = 0;
             printf("\n== %s ==\n", parts[i]);
-            if (!strcmp(parts[i], "viz")) r = extras_viz(&e);
+            if (!strcmp(parts[i], "viz")) r = extras_viz(&e, 0);
             else if (!strcmp(parts[i], "cloning")) r = extras_cloning(&e, 0, rows, &nrows);
             else if (!strcmp(parts[i], "blur")) r = extras_blur(&e, 0);
-            else if (!strcmp(parts[i], "mindepth")) r = extras_mindepth(&e, 0, rows, &nrows);
+            else if (!strcmp(parts[i], "mindepth")) r = extras_mindepth(&e, 0);
             else if (!strcmp(parts[i], "cube")) r = extras_cube(&e, 0);
             else {
                 fprintf(stderr, "demo-extras: unknown part %s\n", parts[i]);

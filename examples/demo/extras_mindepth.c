@@ -234,7 +234,36 @@ double extras_measured_near(extras_env* e, const demo_view* v) {
     return near;
 }
 
-int extras_mindepth(extras_env* e, int test, extras_bench_row* rows, int* nrows) {
+struct extras_md {
+    md_ctx m;
+};
+
+extras_md* extras_md_create(extras_env* e) {
+    extras_md* x = calloc(1, sizeof *x);
+    if (x && md_init(e, &x->m)) {
+        extras_md_destroy(x);
+        return NULL;
+    }
+    return x;
+}
+
+void extras_md_destroy(extras_md* x) {
+    if (!x) return;
+    md_free(&x->m);
+    free(x);
+}
+
+double extras_md_frame(extras_env* e, extras_md* x, const demo_view* v, float* out_min) {
+    glFinish();
+    double t0 = demo_now_ms();
+    int errs = depth_prepass(e, &x->m, v) + mip_chain(e, &x->m);
+    float d = read_back_min(&x->m);
+    double t = demo_now_ms() - t0;
+    if (out_min) *out_min = d;
+    return errs ? -1 : t;
+}
+
+int extras_mindepth(extras_env* e, int test) {
     md_ctx m;
     size_t npx = (size_t)e->w * e->h;
     size_t cap = SWARP_MINDEPTH_SCRATCH(e->w, e->h);
@@ -378,49 +407,6 @@ int extras_mindepth(extras_env* e, int test, extras_bench_row* rows, int* nrows)
         printf("    read-back of the whole buffer  %8.2f ms\n", extras_median(t + 3 * F, F));
         printf("    CPU swarp_mindepth_pyramid     %8.1f us\n", extras_median(t + 4 * F, F));
         printf("    CPU swarp_mindepth_direct      %8.1f us\n", extras_median(t + 5 * F, F));
-        double extra = extras_median(t + 6 * F, F);
-        /* rows for the table: measured min depth + LiSPSM / PSSM(K) */
-        const int ks[4] = {1, 4, 8, 16};
-        for (int ki = 0; ki < 4 && rows; ++ki) {
-            int K = ks[ki];
-            demo_shadow sh;
-            if (extras_setup(e, &va, K == 1 ? DEMO_TECH_LISPSM : DEMO_TECH_PSSM_LISPSM, K, &sh)) {
-                rc = 1;
-                break;
-            }
-            double* fr = t + 7 * F;
-            double sh_ms[64], mn_ms[64];
-            int n = F < 64 ? F : 64;
-            for (int f = 0; f < n; ++f) {
-                double g0 = demo_now_ms();
-                rc |= depth_prepass(e, &m, &e->v) != 0;
-                rc |= mip_chain(e, &m) != 0;
-                volatile float d = read_back_min(&m);
-                (void)d;
-                double g1 = demo_now_ms();
-                glFinish();
-                double s0 = demo_now_ms();
-                rc |= demo_render_shadow(&e->r, &sh, DEMO_FILTER_PCF3, NULL) != 0;
-                glFinish();
-                sh_ms[f] = demo_now_ms() - s0;
-                demo_main_params p;
-                extras_main_params(&va, DEMO_MODE_SHADED, DEMO_FILTER_PCF3, K > 1 ? 0.1f : 0.0f, &p);
-                rc |= demo_render_main(&e->r, &sh, &p, &mn_ms[f]) != 0;
-                fr[f] = (g1 - g0) + sh_ms[f] + mn_ms[f];
-            }
-            if (*nrows < 32) {
-                extras_bench_row* row = &rows[(*nrows)++];
-                memset(row, 0, sizeof *row);
-                if (K == 1) snprintf(row->name, sizeof row->name, "Automatic adjusted zNear + LiSPSM");
-                else snprintf(row->name, sizeof row->name, "Automatic adjusted zNear + PSSM(%d) + LiSPSM", K);
-                snprintf(row->passes, sizeof row->passes, "1 + %d + 1", K);
-                row->extra_ms = extra;
-                row->shadow_ms = extras_median(sh_ms, n);
-                row->main_ms = extras_median(mn_ms, n);
-                row->frame_ms = extras_median(fr, n);
-            }
-            printf("  adjusted zNear + K=%d timed over %d frames\n", K, n);
-        }
         free(t);
     }
 done:

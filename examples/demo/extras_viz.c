@@ -101,11 +101,11 @@ static void draw_body(demo_image* im, const swarp_mat4* m, const swarp_polyhedro
 /* the outside camera: high, behind and to the left of the common view */
 static void outside_view(const extras_env* e, demo_view* ov) {
     *ov = e->v;
-    ov->cam.eye = (swarp_vec3){-600, 560, 820};
-    swarp_vec3 target = {10, -70, 40};
+    ov->cam.eye = (swarp_vec3){-700, 640, 960};
+    swarp_vec3 target = {20, 10, 20};
     ov->cam.dir = (swarp_vec3){target.x - ov->cam.eye.x, target.y - ov->cam.eye.y,
                                target.z - ov->cam.eye.z};
-    ov->cam.fovy = 44 * 3.14159265358979323846 / 180;
+    ov->cam.fovy = 46 * 3.14159265358979323846 / 180;
     ov->cam.near = 10;
     ov->cam.far = 4000;
     demo_view_update(ov);
@@ -252,7 +252,7 @@ static int one(extras_env* e, GLuint prog, demo_technique t, int splits, const c
     return 0;
 }
 
-int extras_viz(extras_env* e) {
+int extras_viz(extras_env* e, int test) {
     GLuint prog = extras_gl_program("visualization view", viz_vs, NULL, viz_fs);
     if (!prog) return 1;
     const struct {
@@ -271,8 +271,19 @@ int extras_viz(extras_env* e) {
             rc = 1;
             continue;
         }
-        if (demo_image_nonblank(&im) < 0.01) rc = 1;
-        if (extras_write(e, techs[i].file, &im)) rc = 1;
+        /* the overlays are there: pixels in the colour of B's edges */
+        long edge = 0;
+        for (size_t k = 0; k < (size_t)im.w * im.h; ++k) {
+            const uint8_t* q = im.px + 4 * k;
+            edge += (q[0] == 138 && q[1] == 0 && q[2] == 0) || (q[0] == 0 && q[1] == 36 && q[2] == 153);
+        }
+        double nb = demo_image_nonblank(&im);
+        int ok = nb >= 0.01 && edge > 50;
+        if (test)
+            printf("viz %-8s non-blank %.1f%%, %ld pixels of body edges %s\n", techs[i].name,
+                   100 * nb, edge, ok ? "ok" : "FAIL");
+        if (!ok) rc = 1;
+        if (!test && extras_write(e, techs[i].file, &im)) rc = 1;
         demo_image_free(&im);
     }
     glDeleteProgram(prog);
