@@ -295,6 +295,31 @@ swarp_status sw_clip_light_pyramid(swarp_polyhedron* B, const swarp_light* light
     return SWARP_OK;
 }
 
+/* The order in which to clip the sweep of H by the planes of S: first the
+ * faces the sweep leaves S through, the one it reaches soonest (smallest
+ * extent / |u| along its axis) first.  That cut removes the far part of the
+ * sweep (T ~ diag(S) long), so the bounds often show that a later plane no
+ * longer cuts, and each cut works on a smaller polyhedron.  The faces u
+ * points away from cannot cut it (H lies in S) and come last. */
+static void sw_sweep_clip_order(swarp_vec3 u, const swarp_aabb* box, uint8_t order[6]) {
+    const double uc[3] = {u.x, u.y, u.z};
+    const double ext[3] = {box->max.x - box->min.x, box->max.y - box->min.y, box->max.z - box->min.z};
+    double key[3];
+    uint8_t ax[3] = {0, 1, 2};
+    for (int c = 0; c < 3; ++c) key[c] = uc[c] != 0.0 ? ext[c] / fabs(uc[c]) : INFINITY;
+    for (int i = 1; i < 3; ++i) /* three keys: insertion sort */
+        for (int j = i; j > 0 && key[ax[j]] < key[ax[j - 1]]; --j) {
+            uint8_t t = ax[j];
+            ax[j] = ax[j - 1];
+            ax[j - 1] = t;
+        }
+    for (int i = 0; i < 3; ++i) {
+        const int c = ax[i], exit_max = uc[c] > 0.0;
+        order[i] = (uint8_t)(2 * c + exit_max);
+        order[3 + i] = (uint8_t)(2 * c + !exit_max);
+    }
+}
+
 swarp_status sw_body_from_h(const swarp_polyhedron* H, const swarp_light* light, const swarp_aabb* box,
                             swarp_polyhedron* B) {
     swarp_polyhedron M;
@@ -341,7 +366,9 @@ swarp_status sw_body_from_h(const swarp_polyhedron* H, const swarp_light* light,
          * as H's vertices: nothing to merge, only faces to tidy (sw_extend
          * has done that for a tidy H) */
         if (!finalized) sw_poly_finalize(&M, M.vertex_count, 0.0);
-        s = sw_poly_clip_box(&M, box, B);
+        uint8_t order[6];
+        sw_sweep_clip_order(u, box, order);
+        s = sw_poly_clip_box_order(&M, box, order, B);
         if (s != SWARP_OK) return s;
     }
     if (B->vertex_count == 0) return SWARP_ERR_BODY_EMPTY;

@@ -38,6 +38,10 @@ swarp_status sw_poly_clip(const swarp_polyhedron* in, swarp_vec3 n, double d,
                           swarp_polyhedron* out);
 swarp_status sw_poly_clip_box(const swarp_polyhedron* in, const swarp_aabb* box,
                               swarp_polyhedron* out);
+/* the same with the planes in a given order (plane k: axis k / 2, the max
+ * side when k is odd) */
+swarp_status sw_poly_clip_box_order(const swarp_polyhedron* in, const swarp_aabb* box, const uint8_t order[6],
+                                    swarp_polyhedron* out);
 double sw_poly_scale(const swarp_polyhedron* p);
 /* merge near-duplicate vertices (vertices from index first_new on are
  * compared with all earlier ones; those before are known to be apart),

@@ -555,7 +555,8 @@ static void sw_poly_bounds(const swarp_polyhedron* p, double lo[3], double hi[3]
     hi[0] = hx, hi[1] = hy, hi[2] = hz;
 }
 
-swarp_status sw_poly_clip_box(const swarp_polyhedron* in, const swarp_aabb* box, swarp_polyhedron* out) {
+swarp_status sw_poly_clip_box_order(const swarp_polyhedron* in, const swarp_aabb* box, const uint8_t order[6],
+                                    swarp_polyhedron* out) {
     const swarp_vec3 ns[6] = {{-1, 0, 0}, {1, 0, 0}, {0, -1, 0}, {0, 1, 0}, {0, 0, -1}, {0, 0, 1}};
     const double ds[6] = {box->min.x, -box->max.x, box->min.y, -box->max.y, box->min.z, -box->max.z};
     const double* bmin = &box->min.x;
@@ -566,14 +567,14 @@ swarp_status sw_poly_clip_box(const swarp_polyhedron* in, const swarp_aabb* box,
     const swarp_polyhedron* src = in;
     double lo[3], hi[3];
     sw_poly_bounds(in, lo, hi);
-    for (int k = 0; k < 6; ++k) {
-        int c = k / 2;
+    for (int q = 0; q < 6; ++q) {
+        const int k = order[q], c = k / 2;
         if ((k & 1) ? !(hi[c] > bmax[c]) : !(lo[c] < bmin[c])) continue;
         swarp_polyhedron* dst = (src == out) ? &buf : out;
         int unchanged = 0;
         /* the scale from the bounds: the largest absolute coordinate */
         double sc = 1e-300;
-        for (int q = 0; q < 3; ++q) sc = sw_max(sc, sw_max(fabs(lo[q]), fabs(hi[q])));
+        for (int a = 0; a < 3; ++a) sc = sw_max(sc, sw_max(fabs(lo[a]), fabs(hi[a])));
         swarp_status s = sw_poly_clip_to(src, ns[k], ds[k], dst, &unchanged, sc);
         if (s != SWARP_OK) return s;
         if (unchanged) continue;
@@ -583,6 +584,11 @@ swarp_status sw_poly_clip_box(const swarp_polyhedron* in, const swarp_aabb* box,
     }
     if (src != out) sw_poly_copy(src, out);
     return SWARP_OK;
+}
+
+swarp_status sw_poly_clip_box(const swarp_polyhedron* in, const swarp_aabb* box, swarp_polyhedron* out) {
+    static const uint8_t order[6] = {0, 1, 2, 3, 4, 5}; /* -x, +x, -y, +y, -z, +z */
+    return sw_poly_clip_box_order(in, box, order, out);
 }
 
 /* A caller's polyhedron: counts within capacity, indices valid, finite. */
