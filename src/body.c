@@ -136,7 +136,8 @@ static swarp_status sw_extend(const swarp_polyhedron* H, swarp_vec3 u, double T,
     int front[SWARP_POLY_MAX_FACES];
     int any_front = 0;
     *finalized = 0;
-    const double eps = SW_BODY_VISIBLE_EPS_REL * sw_poly_scale(H);
+    /* the tolerance is only needed for the apex (a pass over H's vertices) */
+    const double eps = apex ? SW_BODY_VISIBLE_EPS_REL * sw_poly_scale(H) : 0.0;
     for (uint32_t f = 0; f < H->face_count; ++f) {
         if (apex) {
             swarp_plane p = H->planes[f];

@@ -438,8 +438,7 @@ static swarp_status sw_poly_clip_to(const swarp_polyhedron* in, swarp_vec3 n_raw
     for (uint32_t f = 0; f < in->face_count; ++f) {
         uint32_t fn = in->face_vertex_count[f];
         const uint8_t* fl = in->face_vertices[f];
-        if (tf >= SWARP_POLY_MAX_FACES) return SWARP_ERR_CAPACITY;
-        uint8_t* loop = t->face_vertices[tf]; /* written in place */
+        uint8_t* loop = t->face_vertices[tf]; /* tf <= f < SWARP_POLY_MAX_FACES */
         /* most faces lie wholly on one side: only cut faces need the walk
          * over their edges */
         unsigned any = 0;

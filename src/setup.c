@@ -151,7 +151,10 @@ static swarp_status sw_setup_points(const swarp_camera* cam, const swarp_light* 
             if (swarp_status_is_error(s)) return s;
             info = sw_info_merge(info, s);
         }
-        sw_mul(&P0, &L, &M);
+        if (light->type == SWARP_LIGHT_POINT)
+            sw_mul(&P0, &L, &M);
+        else
+            M = L; /* P0 = I: skip the product */
         if (light->type == SWARP_LIGHT_POINT) {
             if (!sw_invert(&M, &M_inv)) return SWARP_ERR_SINGULAR;
         } else { /* a rigid look-at: the inverse is the transpose and -R^T t */
@@ -218,8 +221,8 @@ static swarp_status sw_setup_points(const swarp_camera* cam, const swarp_light* 
         s = sw_focus_fit(&PM, Bk, nbk, zp, nhk, dr, &A);
         if (swarp_status_is_error(s)) return s;
         info = sw_info_merge(info, s);
-        swarp_mat4 proj;
-        sw_mul(&P, &P0, &proj);
+        swarp_mat4 proj = P; /* P P0, P0 = I for a directional light */
+        if (light->type == SWARP_LIGHT_POINT) sw_mul(&P, &P0, &proj);
         sw_mul(&A, &proj, &res.light_proj);
         res.light_view = L;
         sw_mul(&res.light_proj, &L, &res.matrix);
@@ -235,10 +238,12 @@ static swarp_status sw_setup_points(const swarp_camera* cam, const swarp_light* 
             double lo = INFINITY, hi = -INFINITY;
             const swarp_vec3* zs = zp ? zp : Bk;
             size_t zn = zp ? nhk : nbk;
+            /* only the z row of the rigid L is needed; the points are finite */
+            const double l20 = sw_at(&L, 2, 0), l21 = sw_at(&L, 2, 1), l22 = sw_at(&L, 2, 2), l23 = sw_at(&L, 2, 3);
             for (size_t i = 0; i < zn; ++i) {
-                swarp_vec4 h = sw_xform_point(&L, zs[i]);
-                lo = fmin(lo, -h.z);
-                hi = fmax(hi, -h.z);
+                double D = -(l20 * zs[i].x + l21 * zs[i].y + l22 * zs[i].z + l23);
+                lo = D < lo ? D : lo;
+                hi = D > hi ? D : hi;
             }
             res.light_near = lo;
             res.light_far = hi;
