@@ -271,7 +271,7 @@ swarp_status sw_body_h(const swarp_camera* cam, double near, double far, const s
     /* box first: it is usually the smaller, and clipping the frustum by the
      * box's planes keeps the exact axis planes */
     swarp_polyhedron V;
-    swarp_status s = swarp_poly_from_camera_range(cam, near, far, &V);
+    swarp_status s = sw_poly_from_frustum(cam, near, far, &V); /* the callers checked cam, near, far */
     if (s != SWARP_OK) return s;
     s = sw_poly_clip_box(&V, box, H);
     if (s != SWARP_OK) return s;

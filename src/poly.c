@@ -313,6 +313,15 @@ static void sw_frustum_corners(const swarp_camera* cam, double near, double far,
     }
 }
 
+swarp_status sw_poly_from_frustum(const swarp_camera* cam, double near, double far, swarp_polyhedron* out) {
+    swarp_vec3 c[8];
+    sw_frustum_corners(cam, near, far, c);
+    for (int i = 0; i < 8; ++i)
+        if (!sw_finite3(&c[i])) return SWARP_ERR_NON_FINITE;
+    sw_poly_from_corners(c, out);
+    return SWARP_OK;
+}
+
 SWARP_API swarp_status swarp_poly_from_camera_range(const swarp_camera* cam, double near, double far,
                                                     swarp_polyhedron* out) {
     if (!cam || !out) return SWARP_ERR_NULL_POINTER;
@@ -320,12 +329,7 @@ SWARP_API swarp_status swarp_poly_from_camera_range(const swarp_camera* cam, dou
     if (s != SWARP_OK) return s;
     if (!sw_finite(near) || !sw_finite(far)) return SWARP_ERR_NON_FINITE;
     if (!(near > 0.0 && far > near)) return SWARP_ERR_NEAR_FAR;
-    swarp_vec3 c[8];
-    sw_frustum_corners(cam, near, far, c);
-    for (int i = 0; i < 8; ++i)
-        if (!sw_finite3(&c[i])) return SWARP_ERR_NON_FINITE;
-    sw_poly_from_corners(c, out);
-    return SWARP_OK;
+    return sw_poly_from_frustum(cam, near, far, out);
 }
 
 SWARP_API swarp_status swarp_poly_from_camera(const swarp_camera* cam, swarp_polyhedron* out) {
