@@ -385,12 +385,17 @@ static double sw_pseudo_angle(double x, double y) {
 /* Clips in into out (out != in).  When no vertex lies outside, *unchanged
  * is set and out is not written. */
 static swarp_status sw_poly_clip_to(const swarp_polyhedron* in, swarp_vec3 n_raw, double d_raw,
-                                    swarp_polyhedron* out, int* unchanged, double scale /* 0: compute */) {
+                                    swarp_polyhedron* out, int* unchanged, double scale /* 0: compute */,
+                                    int unit_normal /* the box planes: no sqrt and divisions to wait for */) {
     *unchanged = 0;
-    double len = sw_glen(n_raw);
-    if (!(len > 0.0)) return SWARP_ERR_ZERO_VECTOR;
-    swarp_vec3 n = sw_scale(n_raw, 1.0 / len);
-    double d = d_raw / len;
+    swarp_vec3 n = n_raw;
+    double d = d_raw;
+    if (!unit_normal) {
+        double len = sw_glen(n_raw);
+        if (!(len > 0.0)) return SWARP_ERR_ZERO_VECTOR;
+        n = sw_scale(n_raw, 1.0 / len);
+        d = d_raw / len;
+    }
     const uint32_t nv = in->vertex_count;
     if (nv == 0) {
         *unchanged = 1;
@@ -536,7 +541,7 @@ swarp_status sw_poly_clip(const swarp_polyhedron* in, swarp_vec3 n, double d, sw
     swarp_polyhedron tmp;
     swarp_polyhedron* dst = (out == in) ? &tmp : out;
     int unchanged = 0;
-    swarp_status s = sw_poly_clip_to(in, n, d, dst, &unchanged, 0.0);
+    swarp_status s = sw_poly_clip_to(in, n, d, dst, &unchanged, 0.0, 0);
     if (s != SWARP_OK) return s;
     if (unchanged) {
         if (out != in) sw_poly_copy(in, out);
@@ -578,7 +583,7 @@ swarp_status sw_poly_clip_box_order(const swarp_polyhedron* in, const swarp_aabb
         /* the scale from the bounds: the largest absolute coordinate */
         double sc = 1e-300;
         for (int a = 0; a < 3; ++a) sc = sw_max(sc, sw_max(fabs(lo[a]), fabs(hi[a])));
-        swarp_status s = sw_poly_clip_to(src, ns[k], ds[k], dst, &unchanged, sc);
+        swarp_status s = sw_poly_clip_to(src, ns[k], ds[k], dst, &unchanged, sc, 1);
         if (s != SWARP_OK) return s;
         if (unchanged) continue;
         src = dst;
