@@ -386,7 +386,7 @@ static double sw_pseudo_angle(double x, double y) {
  * is set and out is not written. */
 static swarp_status sw_poly_clip_to(const swarp_polyhedron* in, swarp_vec3 n_raw, double d_raw,
                                     swarp_polyhedron* out, int* unchanged, double scale /* 0: compute */,
-                                    int unit_normal /* the box planes: no sqrt and divisions to wait for */) {
+                                    int unit_normal /* n is a unit axis (box planes): no sqrt, no division */) {
     *unchanged = 0;
     swarp_vec3 n = n_raw;
     double d = d_raw;
@@ -507,7 +507,10 @@ static swarp_status sw_poly_clip_to(const swarp_polyhedron* in, swarp_vec3 n_raw
         /* in-plane basis (e1, e2) with e1 x e2 = n */
         swarp_vec3 ref = fabs(n.x) < 0.6 ? sw_v3(1, 0, 0) : (fabs(n.y) < 0.6 ? sw_v3(0, 1, 0) : sw_v3(0, 0, 1));
         swarp_vec3 e1 = {1, 0, 0}, e2;
-        sw_gnormalize(sw_cross(ref, n), &e1);
+        if (unit_normal) /* an axis: ref x n is a unit axis already */
+            e1 = sw_cross(ref, n);
+        else
+            sw_gnormalize(sw_cross(ref, n), &e1);
         e2 = sw_cross(n, e1);
         double key[SWARP_POLY_MAX_FACE_VERTICES];
         uint8_t* idx = t->face_vertices[tf];
