@@ -1944,7 +1944,12 @@ typedef struct swarp_cascade_result {
  *  @param[out] out   whole-cascade facts
  *  @param[out] out_splits  one entry per split; capacity >= count
  *  @param[out] out_count   split count (also with SWARP_ERR_CAPACITY)
- *  @return SWARP_OK or the first informational status of a split;
+ *  o.warp_per_split FROM_FIRST: [RHS] §3.4 arbitrary warping, see
+ *  swarp_cascade_warp.  o.setup.min_depth: [RHS] §4.3 measured min depth, as
+ *  in swarp_setup (not for stabilised cascades).
+ *  @return SWARP_OK or the first informational status of a split
+ *          (SWARP_INFO_SPLIT_NO_SCENE: LEVELS, a split of the constant
+ *          range misses the scene box and its map covers the split frustum);
  *          SWARP_ERR_STABILIZE_WARPED, SWARP_ERR_STABILIZE_LIGHT,
  *          SWARP_ERR_SPLIT_COUNT (count > 16), SWARP_ERR_SPLIT_EMPTY,
  *          SWARP_ERR_CAPACITY, and the errors of swarp_setup,
