@@ -27,7 +27,9 @@
  *                 fixed forever.  A successful call never writes NaN; the only
  *                 non-finite value ever written is +INFINITY for a warp
  *                 parameter n' together with SWARP_INFO_WARP_UNIFORM (n' = inf
- *                 IS the uniform shadow map; the error model accepts it).
+ *                 IS the uniform shadow map; the error model accepts it), and
+ *                 +INFINITY as the minimum of an empty depth buffer with
+ *                 SWARP_INFO_MINDEPTH_EMPTY (extras).
  * Memory, threads No function allocates, keeps global state, does I/O or
  *                 reads the locale.  Everything is reentrant and thread-safe.
  *                 Output arrays follow (T* out, size_t capacity, size_t*
@@ -700,6 +702,15 @@ SWARP_API swarp_status swarp_body_points(const swarp_camera* cam, double near, d
                                          const swarp_light* light, const swarp_aabb* scene,
                                          swarp_vec3* out, size_t capacity, size_t* out_count);
 
+/** @brief The receivers a light can reach: H ∩ L for a spot light (L the
+ *  square pyramid around its cone, as in swarp_body_from_h), H itself for
+ *  directional and omni lights.  Pass its vertices as the receivers of
+ *  swarp_setup_points (pancaking, PSM unit cube clipping).  out may equal H.
+ *  @return SWARP_OK, SWARP_ERR_BODY_EMPTY (the cone misses H), and the
+ *          statuses of swarp_body_from_h's argument checks. */
+SWARP_API swarp_status swarp_body_receivers(const swarp_polyhedron* H, const swarp_light* light,
+                                            swarp_polyhedron* out);
+
 /** @brief Adjusted near/far [RHS] §3.3.1 ([ZSN07]): min and max view depth
  *  over the points of H = V ∩ S (view frustum cam->near..cam->far).
  *  @return SWARP_OK, SWARP_ERR_BODY_EMPTY, statuses of swarp_body_h. */
@@ -722,7 +733,7 @@ SWARP_API swarp_status swarp_body_adjusted_range(const swarp_camera* cam, const 
  * smoothly through the right vector when the light passes parallel or
  * antiparallel to the view in the plane of v and the camera's up vector.
  * (Every continuous tangent field on the sphere has a zero: this one's lies
- * off that plane, on the v-r great circle, at sin γ ≈ 0.09; see
+ * off that plane, on the v-r great circle, at γ ≈ 5.6° (sin γ ≈ 0.097); see
  * docs/geometry.md.)  SWARP_INFO_LIGHT_PARALLEL reports that the blend is
  * active.
  */
@@ -1566,7 +1577,8 @@ SWARP_API swarp_status swarp_stabilize_light_view(const swarp_vec3* light_dir, s
 /** @brief Stabilised (flicker-free) uniform light matrix of one split for a
  *  directional light.  [RHS] §3.5 (ZZB09).
  *  SPHERE: the map covers the split frustum's exact minimal sphere (constant
- *  world size 2 r res/(res - 1)); LEVELS: the light-space box of body_points
+ *  world size 2 r res/(res - 1), rounded up to 2^-20 relative so ulp-level
+ *  wobble of n_i, f_i leaves it bit-identical); LEVELS: the light-space box of body_points
  *  with each axis' size rounded up to a multiple of level_max_size/levels;
  *  NONE: that box unquantised and unsnapped.  SPHERE and LEVELS snap the
  *  light-space map centre to whole texels relative to opt->origin, in double,
@@ -1595,6 +1607,23 @@ SWARP_API swarp_status swarp_stabilize_directional(const swarp_camera* cam, doub
                                                    const swarp_stabilize_options* opt,
                                                    swarp_mat4* out_matrix,
                                                    swarp_stabilize_report* out_report);
+
+/** @brief Offset snapping for a caller's own uniform light matrix ([RHS]
+ *  §3.5, the offset problem): shifts the clip-space translation by less than
+ *  half a texel so that `origin` lands on a texel corner.  While the matrix's
+ *  scale and orientation stay the same (e.g. quantised with LEVELS), every
+ *  world point then moves by whole texels between frames.  Done in double on
+ *  (origin-relative) coordinates.
+ *  @param[in] m  world -> clip matrix of a uniform map (last row 0 0 0 w)
+ *  @param res_s, res_t  map resolution in texels (> 0)
+ *  @param[in] origin  snapping origin (world)
+ *  @param[out] out  the snapped matrix (may alias m)
+ *  @return SWARP_OK, SWARP_ERR_STABILIZE_WARPED (m is projective: a warped
+ *          map has no uniform texel grid), SWARP_ERR_NULL_POINTER,
+ *          SWARP_ERR_NON_FINITE, SWARP_ERR_RESOLUTION, SWARP_ERR_SINGULAR
+ *          (w = 0). */
+SWARP_API swarp_status swarp_stabilize_snap_matrix(const swarp_mat4* m, double res_s, double res_t,
+                                                   const swarp_vec3* origin, swarp_mat4* out);
 
 /* ---- bias                               (src/bias.c)   [KOZ] §14.2.3 */
 
@@ -1625,7 +1654,11 @@ SWARP_API swarp_status swarp_bias_texel_size(const swarp_bias_map* map, const sw
                                              double* out_L_texel, double* out_L_s, double* out_L_t);
 
 /** @brief Unit vector from p toward the light (the L of [KOZ] §14.2.3):
- *  -direction for a directional light, (position - p)/|.| for a point light. */
+ *  -direction for a directional light, (position - p)/|.| for a point light.
+ *  @param[in] light, p; @param[out] out_L unit vector
+ *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
+ *          SWARP_ERR_UNKNOWN_ENUM, SWARP_ERR_RESERVED_NONZERO,
+ *          SWARP_ERR_ZERO_VECTOR (zero direction, point light at p). */
 SWARP_API swarp_status swarp_bias_to_light(const swarp_light* light, const swarp_vec3* p,
                                            swarp_vec3* out_L);
 
@@ -1646,7 +1679,10 @@ SWARP_API swarp_status swarp_bias_kozlov(const swarp_bias_map* map, const swarp_
  *  facing normal gives SWARP_INFO_BACKFACING and the full offset k L_texel).
  *  @param k  offset in texels (>= 0)
  *  @param[out] out_p; @param[out] out_amount offset length in world units
- *  (may be NULL). */
+ *  (may be NULL).
+ *  @return SWARP_OK, SWARP_INFO_BACKFACING, SWARP_ERR_OUT_OF_RANGE (k < 0),
+ *          SWARP_ERR_ZERO_VECTOR (normal), and the errors of
+ *          swarp_bias_texel_size and swarp_bias_to_light. */
 SWARP_API swarp_status swarp_bias_normal_offset(const swarp_bias_map* map, const swarp_light* light,
                                                 const swarp_vec3* p, const swarp_vec3* normal,
                                                 double k, swarp_vec3* out_p, double* out_amount);
@@ -1666,8 +1702,12 @@ SWARP_API swarp_status swarp_bias_slope_scaled(const swarp_bias_map* map, const 
                                                double* out_depth_bias);
 
 /** @brief Window depth per world unit toward the light at p: the factor that
- *  turns a world-space bias into the depth units of this split's map (the
- *  derivative of d along L at p).  Uniform maps: constant per split. */
+ *  turns a world-space bias into the depth units of this split's map (minus
+ *  the derivative of d along L at p, so > 0 for a map looking along the
+ *  light).  Uniform maps: constant per split.
+ *  @param[out] out_depth_per_world window depth units per world unit
+ *  @return SWARP_OK, SWARP_ERR_BEHIND_PROJECTION, and the argument errors of
+ *          swarp_bias_texel_size and swarp_bias_to_light. */
 SWARP_API swarp_status swarp_bias_depth_per_world(const swarp_bias_map* map, const swarp_light* light,
                                                   const swarp_vec3* p, double* out_depth_per_world);
 
@@ -1684,6 +1724,14 @@ SWARP_API swarp_status swarp_bias_receiver_plane(const swarp_bias_map* map, cons
                                                  const swarp_vec3* tangent_b, double out_grad[2]);
 
 /* ---- cascades: split selection and blending   (src/cascade.c)   [RHS] §3.3.3 */
+
+/** @brief View depth of a world point: (p - eye) . dir/|dir|, the z that
+ *  swarp_cascade_select_depth and swarp_cascade_blend take (in a shader:
+ *  -view_space_position.z).
+ *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
+ *          SWARP_ERR_ZERO_VECTOR. */
+SWARP_API swarp_status swarp_cascade_view_depth(const swarp_camera* cam, const swarp_vec3* p,
+                                                double* out_depth);
 
 /** @brief Split selection by eye depth (PSSM, ZSXL06; [RHS] §3.3.3):
  *  the i with splits[i] <= view_depth < splits[i+1] (a depth on a border
@@ -1790,6 +1838,90 @@ SWARP_API swarp_status swarp_cascade_error_curve(const swarp_error_config* cfg,
                                                  size_t m, size_t samples_per_split,
                                                  double* out_z, double* out_mx, double* out_mz,
                                                  size_t capacity, size_t* out_count);
+
+/* ---- cascades: the one call                  (src/cascade.c)   [RHS] §3.3-3.4 */
+
+/** Most splits swarp_cascade_setup computes (the largest atlas, Fig. 3.16c). */
+#define SWARP_CASCADE_MAX_SPLITS 16
+
+/** Options of swarp_cascade_setup; a zeroed struct is a valid request
+ *  (4 PSSM splits, LiSPSM n_opt per split, 2048² tiles, no stabilisation). */
+typedef struct swarp_cascade_options {
+    swarp_setup_options setup;         /**< technique and parameters for every split;
+                                            map_width = atlas tile size.  param PSEUDO:
+                                            pseudo_near/far are fractions of the whole
+                                            adjusted range; pseudo-near acts on the FIRST
+                                            split only, pseudo-far on the LAST ([RHS] §4.2) */
+    swarp_split_options split;         /**< scheme and count (count 1..16) */
+    swarp_stabilize_options stabilize; /**< mode != NONE needs technique UNIFORM and a
+                                            directional light; its depth field is
+                                            ignored (setup.depth_range is used).
+                                            SPHERE splits the camera's own near..far
+                                            (no adjustment, [RHS] §3.5) */
+    double kernel_world_size;          /**< r_l of [RHS] (3.9), world units; 0 = 1 */
+    double n_user[SWARP_CASCADE_MAX_SPLITS]; /**< per-split warp: n' in eye units for
+                                            split i (+INFINITY = uniform); 0 = use setup */
+    uint32_t _reserved[4];
+} swarp_cascade_options;
+
+/** One split of a cascade. */
+typedef struct swarp_cascade_split {
+    double near, far;          /**< C_i, C_{i+1}: eye-space depth range */
+    swarp_mat4 matrix;         /**< world -> split clip space (stabilised: takes p - origin) */
+    swarp_mat4 atlas_matrix;   /**< tile.clip_to_atlas * matrix: world -> atlas texture
+                                    coordinates (homogeneous; divide by w) */
+    swarp_atlas_tile tile;     /**< viewport in texels and clip -> atlas matrix */
+    double n_eye;              /**< warp parameter n' used (eye units); +inf uniform */
+    double kernel_scale[2];    /**< s_i of [RHS] (3.9) for kernel_world_size */
+    double max_mx, max_mz;     /**< exact maxima over [near, far], [RHS] (2.3)-(2.8) */
+    double mx_start, mz_start; /**< values at C_i: just after the border into this split */
+    double mx_end, mz_end;     /**< values at C_{i+1} with this split's map (just before) */
+    double texel_size;         /**< stabilised: world texel size; else 0 */
+    double depth_per_world;    /**< window depth per world unit toward the light at the
+                                    centroid of B_i (swarp_bias_depth_per_world): converts
+                                    a world-space bias to this split's depth units
+                                    (constant over the split for uniform maps) */
+    swarp_status status;       /**< this split's own (informational) status */
+    uint32_t point_count;      /**< points of B_i */
+    uint32_t _reserved[4];
+} swarp_cascade_split;
+
+/** Whole-cascade facts. */
+typedef struct swarp_cascade_result {
+    uint32_t split_count;
+    uint32_t _pad;
+    double view_near, view_far;  /**< adjusted near/far [RHS] §3.3.1 */
+    double splits[SWARP_CASCADE_MAX_SPLITS + 1]; /**< C_0 .. C_m */
+    double max_mx, max_mz;       /**< maxima of the whole configuration */
+    swarp_atlas_info atlas;
+    uint32_t _reserved[4];
+} swarp_cascade_result;
+
+/** @brief Cascaded (z-partitioned) shadow maps with any geometry technique.
+ *  [RHS] §3.3-3.4, §4.1-4.2, §3.3.5, (3.9), §3.5.
+ *  Adjusted near/far ([RHS] §3.3.1), split distances (swarp_cascade_splits),
+ *  per split its body B_i and light matrix through swarp_setup_range (the
+ *  split frustum instead of the view frustum, [RHS] §3.4; LiSPSM with the
+ *  robust projection centre of §4.1 unless setup.center says otherwise),
+ *  the atlas place and kernel scale, the stabilised matrix if asked for,
+ *  and the error model's values per split.  With one split the result is
+ *  swarp_setup's, bit for bit.
+ *  @param[in] cam, light, scene  as swarp_setup
+ *  @param[in] opts   NULL or zeroed for defaults
+ *  @param[out] out   whole-cascade facts
+ *  @param[out] out_splits  one entry per split; capacity >= count
+ *  @param[out] out_count   split count (also with SWARP_ERR_CAPACITY)
+ *  @return SWARP_OK or the first informational status of a split;
+ *          SWARP_ERR_STABILIZE_WARPED, SWARP_ERR_STABILIZE_LIGHT,
+ *          SWARP_ERR_SPLIT_COUNT (count > 16), SWARP_ERR_SPLIT_EMPTY,
+ *          SWARP_ERR_CAPACITY, and the errors of swarp_setup,
+ *          swarp_cascade_splits and swarp_stabilize_directional. */
+SWARP_API swarp_status swarp_cascade_setup(const swarp_camera* cam, const swarp_light* light,
+                                           const swarp_aabb* scene,
+                                           const swarp_cascade_options* opts,
+                                           swarp_cascade_result* out,
+                                           swarp_cascade_split* out_splits, size_t capacity,
+                                           size_t* out_count);
 /* <<< api: splits */
 
 /* >>> api: plan (src/plan.c) */
@@ -2042,10 +2174,17 @@ SWARP_API swarp_status swarp_plan_evaluate(const swarp_scene_needs* needs,
 SWARP_API swarp_status swarp_plan_explain(const struct swarp_plan* plan, char* out, size_t capacity,
                                           size_t* out_count);
 
-/** @brief Short names for the plan's enums ("lispsm-nopt", "pssm-log",
- *  "evsm", ...); never NULL ("?" for unknown values). */
+/** @brief Short name of a warp kind ("uniform", "lispsm-nopt", "psm", ...).
+ *  @param w the warp kind
+ *  @return a static string, never NULL ("?" for values not in the enum). */
 SWARP_API const char* swarp_plan_warp_name(swarp_plan_warp w);
+/** @brief Short name of a split scheme ("none", "pssm-practical", "pssm-log").
+ *  @param s the scheme
+ *  @return a static string, never NULL ("?" for values not in the enum). */
 SWARP_API const char* swarp_plan_scheme_name(swarp_plan_scheme s);
+/** @brief Short name of a filter kind ("none", "pcf", "vsm", "msm", "evsm", "lvsm").
+ *  @param f the filter kind
+ *  @return a static string, never NULL ("?" for values not in the enum). */
 SWARP_API const char* swarp_plan_filter_name(swarp_plan_filter f);
 /* <<< api: plan */
 

@@ -80,7 +80,7 @@ static swarp_status sw_flat_extend(const swarp_polyhedron* H, swarp_vec3 u, doub
     const double eps = SW_BODY_VISIBLE_EPS_REL * sw_poly_scale(H);
     int cls[SWARP_POLY_MAX_FACE_VERTICES]; /* edge i = (v_i -> v_i+1) front/visible */
     for (uint32_t i = 0; i < k; ++i) {
-        swarp_vec3 a = H->vertices[loop[i]], b = H->vertices[loop[(i + 1) % k]];
+        swarp_vec3 a = H->vertices[loop[i]], b = H->vertices[loop[i + 1 == k ? 0 : i + 1]];
         swarp_vec3 m = sw_cross(sw_sub(b, a), n); /* outward in-plane edge normal */
         if (point)
             cls[i] = sw_dot(m, sw_sub(*point, a)) > eps * sw_glen(m);
@@ -135,6 +135,17 @@ static swarp_status sw_extend(const swarp_polyhedron* H, swarp_vec3 u, double T,
         out->vertices[nv] = *apex;
     else
         for (uint32_t i = 0; i < nv; ++i) out->vertices[nv + i] = sw_add(H->vertices[i], sw_scale(u, T));
+    /* directed edges of the front faces, as bit sets per start vertex */
+    uint64_t front_edge[SWARP_POLY_MAX_VERTICES][SWARP_POLY_MAX_VERTICES / 64];
+    memset(front_edge, 0, nv * sizeof front_edge[0]);
+    for (uint32_t g = 0; g < H->face_count; ++g) {
+        if (!front[g]) continue;
+        uint32_t m = H->face_vertex_count[g];
+        for (uint32_t j = 0; j < m; ++j) {
+            uint8_t p = H->face_vertices[g][j], q = H->face_vertices[g][j + 1 == m ? 0 : j + 1];
+            front_edge[p][q >> 6] |= (uint64_t)1 << (q & 63);
+        }
+    }
     uint32_t tf = 0;
     for (uint32_t f = 0; f < H->face_count; ++f) {
         uint32_t n = H->face_vertex_count[f];
@@ -148,17 +159,8 @@ static swarp_status sw_extend(const swarp_polyhedron* H, swarp_vec3 u, double T,
             /* silhouette edges: edge a->b of this back face whose twin b->a
              * lies in a front face */
             for (uint32_t k = 0; k < n; ++k) {
-                uint8_t a = l[k], b = l[(k + 1) % n];
-                int twin_front = 0;
-                for (uint32_t g = 0; g < H->face_count && !twin_front; ++g) {
-                    if (!front[g]) continue;
-                    uint32_t m = H->face_vertex_count[g];
-                    for (uint32_t j = 0; j < m; ++j)
-                        if (H->face_vertices[g][j] == b && H->face_vertices[g][(j + 1) % m] == a) {
-                            twin_front = 1;
-                            break;
-                        }
-                }
+                uint8_t a = l[k], b = l[k + 1 == n ? 0 : k + 1];
+                int twin_front = (front_edge[b][a >> 6] >> (a & 63)) & 1u;
                 if (!twin_front) continue;
                 if (tf >= SWARP_POLY_MAX_FACES) return SWARP_ERR_CAPACITY;
                 /* side face b -> a -> a' -> b' (or b -> a -> apex) */
@@ -228,7 +230,7 @@ swarp_status sw_body_h(const swarp_camera* cam, double near, double far, const s
 }
 
 /* The square pyramid L circumscribing the spot cone: 4 planes through l. */
-static swarp_status sw_clip_light_pyramid(swarp_polyhedron* B, const swarp_light* light) {
+swarp_status sw_clip_light_pyramid(swarp_polyhedron* B, const swarp_light* light) {
     swarp_vec3 a = {0, 0, 1}, e1 = {1, 0, 0}, e2;
     sw_gnormalize(light->direction, &a);
     swarp_vec3 ref = fabs(a.x) < 0.6 ? sw_v3(1, 0, 0) : (fabs(a.y) < 0.6 ? sw_v3(0, 1, 0) : sw_v3(0, 0, 1));
@@ -268,7 +270,7 @@ swarp_status sw_body_from_h(const swarp_polyhedron* H, const swarp_light* light,
         swarp_vec3 l = light->position;
         s = flat ? sw_flat_extend(H, sw_v3(0, 0, 0), 0.0, &l, &M) : sw_extend(H, sw_v3(0, 0, 0), 0.0, &l, &M);
         if (s != SWARP_OK) return s;
-        sw_poly_finalize(&M, H->vertex_count);
+        sw_poly_finalize(&M, H->vertex_count, 0.0); /* the apex may sit on a vertex of H */
         s = sw_poly_clip_box(&M, box, B);
         if (s != SWARP_OK) return s;
         if (light->cone_angle > 0.0) {
@@ -283,7 +285,9 @@ swarp_status sw_body_from_h(const swarp_polyhedron* H, const swarp_light* light,
         double T = 2.0 * diag + 1e-300;
         s = flat ? sw_flat_extend(H, u, T, NULL, &M) : sw_extend(H, u, T, NULL, &M);
         if (s != SWARP_OK) return s;
-        sw_poly_finalize(&M, H->vertex_count);
+        /* the translated copies are T > diag(S) away from H and as far apart
+         * as H's vertices: nothing to merge, only faces to tidy */
+        sw_poly_finalize(&M, M.vertex_count, 0.0);
         s = sw_poly_clip_box(&M, box, B);
         if (s != SWARP_OK) return s;
     }
@@ -363,5 +367,31 @@ SWARP_API swarp_status swarp_body_adjusted_range(const swarp_camera* cam, const 
     /* H ⊂ V: clamp rounding to the frustum's own range */
     *out_near = sw_max(mn, cam->near);
     *out_far = sw_min(sw_max(mx, *out_near), cam->far);
+    return SWARP_OK;
+}
+
+SWARP_API swarp_status swarp_body_receivers(const swarp_polyhedron* H, const swarp_light* light,
+                                            swarp_polyhedron* out) {
+    if (!H || !light || !out) return SWARP_ERR_NULL_POINTER;
+    swarp_status s = sw_check_light(light);
+    if (s != SWARP_OK) return s;
+    if (H->vertex_count > SWARP_POLY_MAX_VERTICES || H->face_count > SWARP_POLY_MAX_FACES)
+        return SWARP_ERR_INVALID_ARGUMENT;
+    for (uint32_t i = 0; i < H->vertex_count; ++i)
+        if (!sw_finite3(&H->vertices[i])) return SWARP_ERR_NON_FINITE;
+    for (uint32_t f = 0; f < H->face_count; ++f) {
+        if (H->face_vertex_count[f] > SWARP_POLY_MAX_FACE_VERTICES) return SWARP_ERR_INVALID_ARGUMENT;
+        for (uint32_t k = 0; k < H->face_vertex_count[f]; ++k)
+            if (H->face_vertices[f][k] >= H->vertex_count) return SWARP_ERR_INVALID_ARGUMENT;
+    }
+    if (H->vertex_count == 0) return SWARP_ERR_BODY_EMPTY;
+    swarp_polyhedron R;
+    sw_poly_copy(H, &R);
+    if (light->type == SWARP_LIGHT_POINT && light->cone_angle > 0.0) {
+        s = sw_clip_light_pyramid(&R, light);
+        if (s != SWARP_OK) return s;
+        if (R.vertex_count == 0) return SWARP_ERR_BODY_EMPTY;
+    }
+    sw_poly_copy(&R, out);
     return SWARP_OK;
 }

@@ -61,8 +61,8 @@ static int sw_mx(const swarp_error_config* c, double n, double f, double z, doub
     double k_x = c->res_ix / c->res_s;
     double v;
     if (isinf(n_prime))
-        v = k_x * (f / z); /* (2.7) */
-    else                   /* (2.3) */
+        v = k_x * (f / z); /* [RHS] (2.7) */
+    else                   /* [RHS] (2.3); n' = n gives [RHS] (2.5) */
         v = k_x * (f / z) * ((n_prime + (z - n)) / (n_prime + (f - n)));
     if (!sw_finite(v)) return 0;
     *out = v;
@@ -75,8 +75,8 @@ static int sw_mz(const swarp_error_config* c, double n, double f, double z, doub
     double k_z = (c->res_iy / c->res_t) * (f - n) / (2.0 * tan(c->theta));
     double v;
     if (isinf(n_prime)) {
-        v = k_z / z; /* (2.8) */
-    } else {         /* (2.4) as k_z * r1 * r2 / z */
+        v = k_z / z; /* [RHS] (2.8) */
+    } else {         /* [RHS] (2.4) as k_z * r1 * r2 / z; n' = n gives [RHS] (2.6) */
         double a = n_prime + (z - n);
         double r1 = a / n_prime;
         double r2 = a / (n_prime + (f - n));

@@ -42,7 +42,7 @@ double sw_poly_scale(const swarp_polyhedron* p);
 /* merge near-duplicate vertices (vertices from index first_new on are
  * compared with all earlier ones; those before are known to be apart),
  * drop degenerate faces and unreferenced vertices */
-void sw_poly_finalize(swarp_polyhedron* p, uint32_t first_new);
+void sw_poly_finalize(swarp_polyhedron* p, uint32_t first_new, double scale /* 0: compute */);
 /* copy only the used parts */
 void sw_poly_copy(const swarp_polyhedron* in, swarp_polyhedron* out);
 
@@ -51,6 +51,8 @@ swarp_status sw_body_h(const swarp_camera* cam, double near, double far, const s
                        swarp_polyhedron* H);
 swarp_status sw_body_from_h(const swarp_polyhedron* H, const swarp_light* light,
                             const swarp_aabb* box, swarp_polyhedron* B);
+/* P ∩ L for a spot light (the square pyramid around its cone), in place */
+swarp_status sw_clip_light_pyramid(swarp_polyhedron* P, const swarp_light* light);
 /* min/max of dot(p - eye, f) over the vertices */
 void sw_depth_range_of(const swarp_polyhedron* P, swarp_vec3 eye, swarp_vec3 f, double* mn,
                        double* mx);

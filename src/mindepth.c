@@ -11,24 +11,31 @@
 _Static_assert(sizeof(swarp_mindepth_options) == sizeof(double) + 16, "swarp_mindepth_options size");
 _Static_assert(sizeof(swarp_cube_options) == sizeof(double) + 4 + 20, "swarp_cube_options size");
 
-/* Validates the buffer: NaN / -inf -> NON_FINITE, negative -> OUT_OF_RANGE.
- * (A min pyramid would otherwise hide a NaN behind fminf's choice.) */
-static swarp_status sw_depth_check(const float* depth, uint32_t w, uint32_t h, size_t stride) {
+static float sw_minf(float a, float b) { return b < a ? b : a; }
+
+/* Validates the buffer: NaN / -inf -> NON_FINITE, negative -> OUT_OF_RANGE
+ * (a min pyramid would otherwise hide a NaN behind the comparison's choice).
+ * The same pass gives the direct minimum in *direct_min. */
+static swarp_status sw_depth_check(const float* depth, uint32_t w, uint32_t h, size_t stride,
+                                   float* direct_min) {
     if (!depth) return SWARP_ERR_NULL_POINTER;
     if (w == 0 || h == 0 || stride < w) return SWARP_ERR_INVALID_ARGUMENT;
-    swarp_status worst = SWARP_OK;
+    int nan = 0, negative = 0;
+    float m = INFINITY;
     for (uint32_t y = 0; y < h; ++y) {
         const float* row = depth + (size_t)y * stride;
         for (uint32_t x = 0; x < w; ++x) {
             float v = row[x];
-            if (isnan(v) || v == -INFINITY) return SWARP_ERR_NON_FINITE;
-            if (v < 0.0f) worst = SWARP_ERR_OUT_OF_RANGE;
+            nan |= (v != v) | (v == -INFINITY);
+            negative |= v < 0.0f;
+            m = sw_minf(m, v);
         }
     }
-    return worst;
+    if (nan) return SWARP_ERR_NON_FINITE;
+    if (negative) return SWARP_ERR_OUT_OF_RANGE;
+    *direct_min = m;
+    return SWARP_OK;
 }
-
-static float sw_minf(float a, float b) { return b < a ? b : a; }
 
 /* [RHS] Listing A.2 on the CPU */
 SWARP_API swarp_status swarp_mindepth_pyramid(const float* depth, uint32_t width, uint32_t height,
@@ -36,7 +43,8 @@ SWARP_API swarp_status swarp_mindepth_pyramid(const float* depth, uint32_t width
                                               size_t scratch_capacity, size_t* out_scratch_needed,
                                               double* out_min) {
     if (!out_scratch_needed || !out_min) return SWARP_ERR_NULL_POINTER;
-    swarp_status s = sw_depth_check(depth, width, height, row_stride);
+    float direct_min;
+    swarp_status s = sw_depth_check(depth, width, height, row_stride, &direct_min);
     if (s != SWARP_OK) return s;
     size_t needed = SWARP_MINDEPTH_SCRATCH(width, height);
     if (scratch_capacity < needed || !scratch) {
@@ -80,11 +88,9 @@ SWARP_API swarp_status swarp_mindepth_pyramid(const float* depth, uint32_t width
 SWARP_API swarp_status swarp_mindepth_direct(const float* depth, uint32_t width, uint32_t height,
                                              size_t row_stride, double* out_min) {
     if (!out_min) return SWARP_ERR_NULL_POINTER;
-    swarp_status s = sw_depth_check(depth, width, height, row_stride);
+    float m;
+    swarp_status s = sw_depth_check(depth, width, height, row_stride, &m);
     if (s != SWARP_OK) return s;
-    float m = INFINITY;
-    for (uint32_t y = 0; y < height; ++y)
-        for (uint32_t x = 0; x < width; ++x) m = sw_minf(m, depth[(size_t)y * row_stride + x]);
     *out_min = (double)m;
     return isinf(m) ? SWARP_INFO_MINDEPTH_EMPTY : SWARP_OK;
 }

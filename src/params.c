@@ -304,10 +304,10 @@ static swarp_status sw_lambda_gmnpr(double theta, double phi, double n, double f
         return SWARP_INFO_WARP_UNIFORM;
     }
     if (theta >= phi) {
-        *out = sw_lambda_1(theta, phi, n, f); /* (8), first case = lambda_1 */
+        *out = sw_lambda_1(theta, phi, n, f); /* [GMNPR] (8), first case = lambda_1 */
         return SWARP_OK;
     }
-    /* (7): lambda_2* = lambda_1(phi) / tan(theta pi / (4 phi)), lambda_1(phi) = sqrt(fn)/(2f) */
+    /* [GMNPR] (7): lambda_2* = lambda_1(phi) / tan(theta pi / (4 phi)), lambda_1(phi) = sqrt(fn)/(2f) */
     double lambda_1_phi = 0.5 * sqrt(n) / sqrt(f);
     double lambda = lambda_1_phi / tan(theta * SWARP_PI / (4.0 * phi));
     return sw_put_warp(lambda, SWARP_INFO_GMNPR_ADJUSTED, out);

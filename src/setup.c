@@ -152,7 +152,18 @@ static swarp_status sw_setup_points(const swarp_camera* cam, const swarp_light* 
             info = sw_info_merge(info, s);
         }
         sw_mul(&P0, &L, &M);
-        if (!sw_invert(&M, &M_inv)) return SWARP_ERR_SINGULAR;
+        if (light->type == SWARP_LIGHT_POINT) {
+            if (!sw_invert(&M, &M_inv)) return SWARP_ERR_SINGULAR;
+        } else { /* a rigid look-at: the inverse is the transpose and -R^T t */
+            memset(&M_inv, 0, sizeof M_inv);
+            for (int r = 0; r < 3; ++r)
+                for (int c = 0; c < 3; ++c) sw_set(&M_inv, r, c, sw_at(&M, c, r));
+            for (int r = 0; r < 3; ++r)
+                sw_set(&M_inv, r, 3,
+                       -(sw_at(&M, 0, r) * sw_at(&M, 0, 3) + sw_at(&M, 1, r) * sw_at(&M, 1, 3) +
+                         sw_at(&M, 2, r) * sw_at(&M, 2, 3)));
+            sw_set(&M_inv, 3, 3, 1.0);
+        }
         /* the points the map must see; point lights drop the apex region */
         swarp_vec3 Bk[SWARP_BODY_MAX_POINTS + 1];
         size_t nbk = 0;
@@ -164,6 +175,21 @@ static swarp_status sw_setup_points(const swarp_camera* cam, const swarp_light* 
             Bk[nbk++] = B[i];
         }
         if (nbk == 0) return SWARP_ERR_BODY_EMPTY;
+        /* the receivers for pancaking, with the same cut */
+        swarp_vec3 Hk[SWARP_BODY_MAX_POINTS];
+        size_t nhk = 0;
+        for (size_t i = 0; H && i < nh && nhk < SWARP_BODY_MAX_POINTS; ++i) {
+            if (light->type == SWARP_LIGHT_POINT) {
+                swarp_vec4 h = sw_xform_point(&L, H[i]);
+                if (-h.z < res.light_near) continue;
+            }
+            Hk[nhk++] = H[i];
+        }
+        if (light->type == SWARP_LIGHT_POINT) { /* the depth actually covered */
+            double dmin = INFINITY;
+            for (size_t i = 0; i < nbk; ++i) dmin = fmin(dmin, -sw_xform_point(&L, Bk[i]).z);
+            res.light_near = dmin;
+        }
         swarp_mat4 P;
         swarp_warp_info wi;
         memset(&wi, 0, sizeof wi);
@@ -188,8 +214,8 @@ static swarp_status sw_setup_points(const swarp_camera* cam, const swarp_light* 
         sw_mul(&P, &M, &PM);
         /* pancaking: the depth range covers the receivers H only; casters
          * nearer the light are clamped to the near plane by the renderer */
-        const swarp_vec3* zp = (o->pancake && H && light->type != SWARP_LIGHT_POINT) ? H : NULL;
-        s = sw_focus_fit(&PM, Bk, nbk, zp, nh, dr, &A);
+        const swarp_vec3* zp = (o->pancake && nhk > 0) ? Hk : NULL;
+        s = sw_focus_fit(&PM, Bk, nbk, zp, nhk, dr, &A);
         if (swarp_status_is_error(s)) return s;
         info = sw_info_merge(info, s);
         swarp_mat4 proj;
@@ -208,7 +234,7 @@ static swarp_status sw_setup_points(const swarp_camera* cam, const swarp_light* 
             /* light depth range in light view units (distance along the light) */
             double lo = INFINITY, hi = -INFINITY;
             const swarp_vec3* zs = zp ? zp : Bk;
-            size_t zn = zp ? nh : nbk;
+            size_t zn = zp ? nhk : nbk;
             for (size_t i = 0; i < zn; ++i) {
                 swarp_vec4 h = sw_xform_point(&L, zs[i]);
                 lo = fmin(lo, -h.z);
@@ -286,6 +312,15 @@ static swarp_status sw_setup_range(const swarp_camera* cam, const swarp_light* l
     if (s != SWARP_OK) return s;
     s = sw_write_points(&B, out_points, capacity, out_count);
     if (s != SWARP_OK) return s;
+    /* the receivers a spot lights: H ∩ L */
+    swarp_polyhedron HL;
+    if (light->type == SWARP_LIGHT_POINT && light->cone_angle > 0.0) {
+        sw_poly_copy(Hp, &HL);
+        s = sw_clip_light_pyramid(&HL, light);
+        if (s != SWARP_OK) return s;
+        if (HL.vertex_count == 0) return SWARP_ERR_BODY_EMPTY;
+        Hp = &HL;
+    }
     swarp_setup_result res;
     swarp_status info = sw_setup_points(cam, light, B.vertices, B.vertex_count, &B, Hp->vertices, Hp->vertex_count, near,
                                         far, o, &res);
@@ -349,7 +384,8 @@ SWARP_API swarp_status swarp_setup_points(const swarp_camera* cam, const swarp_l
     if (s != SWARP_OK) return s;
     if (!sw_finite(near) || !sw_finite(far)) return SWARP_ERR_NON_FINITE;
     if (!(near > 0.0 && far > near)) return SWARP_ERR_NEAR_FAR;
-    if (count == 0 || count > SWARP_BODY_MAX_POINTS || (receivers && receiver_count == 0))
+    if (count == 0 || count > SWARP_BODY_MAX_POINTS ||
+        (receivers && (receiver_count == 0 || receiver_count > SWARP_BODY_MAX_POINTS)))
         return SWARP_ERR_INVALID_ARGUMENT;
     for (size_t i = 0; i < count; ++i)
         if (!sw_finite3(&points[i])) return SWARP_ERR_NON_FINITE;

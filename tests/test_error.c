@@ -8,20 +8,20 @@
 
 /* ---- the paper's formulas, literally ------------------------------------- */
 static double lit_mx(const swarp_error_config* c, double n, double f, double z, double np) {
-    return c->res_ix / c->res_s * f * ((np + z - n) / (z * (np + f - n))); /* (2.3) */
+    return c->res_ix / c->res_s * f * ((np + z - n) / (z * (np + f - n))); /* [RHS] (2.3) */
 }
 static double lit_mz(const swarp_error_config* c, double n, double f, double z, double np) {
     return c->res_iy / c->res_t * (f - n) / (2 * tan(c->theta)) *
-           ((np + z - n) * (np + z - n) / (z * np * (np + f - n))); /* (2.4) */
+           ((np + z - n) * (np + z - n) / (z * np * (np + f - n))); /* [RHS] (2.4) */
 }
-static double lit_mx_psm(const swarp_error_config* c) { return c->res_ix / c->res_s; } /* (2.5) */
-static double lit_mz_psm(const swarp_error_config* c, double z) {                     /* (2.6) */
+static double lit_mx_psm(const swarp_error_config* c) { return c->res_ix / c->res_s; } /* [RHS] (2.5) */
+static double lit_mz_psm(const swarp_error_config* c, double z) { /* [RHS] (2.6) */
     return c->res_iy / c->res_t * (c->far - c->near) / (2 * tan(c->theta)) * z / (c->near * c->far);
 }
-static double lit_mx_uni(const swarp_error_config* c, double z) { /* (2.7) */
+static double lit_mx_uni(const swarp_error_config* c, double z) { /* [RHS] (2.7) */
     return c->res_ix / c->res_s * c->far / z;
 }
-static double lit_mz_uni(const swarp_error_config* c, double z) { /* (2.8) */
+static double lit_mz_uni(const swarp_error_config* c, double z) { /* [RHS] (2.8) */
     return c->res_iy / c->res_t * (c->far - c->near) / (2 * tan(c->theta)) / z;
 }
 

@@ -160,7 +160,7 @@ static double depth_ref(double a, double zn, double zf, int zero_to_one) {
     return zero_to_one ? t : 2.0 * t - 1.0;
 }
 
-START_TEST(cube_lookup_listing_14_1) {
+START_TEST(cube_lookup_listing_14_1) { /* [KOZ] Listing 14-1 */
     /* [KOZ] Fig. 14-12 style: light beyond the far face */
     swarp_vec4 L = {0, 0, 3, 1};
     swarp_vec3 V = {0, 0, 0}, S;
@@ -254,7 +254,7 @@ END_TEST
 
 /* ---- [RHS] §4.3 ------------------------------------------------------------ */
 
-START_TEST(mindepth_pyramid_equals_true_min) {
+START_TEST(mindepth_pyramid_equals_true_min) { /* [RHS] Listing A.2 */
     uint64_t s = 0xde9701;
     static float buf[80 * 90];
     static float scratch[SWARP_MINDEPTH_SCRATCH(80, 80)];

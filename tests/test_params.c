@@ -433,7 +433,7 @@ START_TEST(gmnpr_lambda_equalises_F_for_theta_at_least_phi) {
             }
             ck_assert_rel(l, exp(0.5 * (lo + hi)), 1e-9);
         }
-        /* equals lambda_1 of (4) */
+        /* [GMNPR] (8): equals lambda_1 of [GMNPR] (4) */
         double l1 = 0, l2 = 0;
         ck_assert_int_eq(swarp_gmnpr_lambda12(th, phi, n, f, &l1, &l2), SWARP_OK);
         ck_assert_rel(l, l1, 1e-13);
@@ -453,7 +453,7 @@ START_TEST(gmnpr_lambda_continuous_positive_and_unbounded_below_phi) {
         ck_assert_int_eq(swarp_gmnpr_lambda(phi * (1 + 1e-10), phi, n, f, &b), SWARP_OK);
         ck_assert_rel(a, c, 1e-8);
         ck_assert_rel(b, c, 1e-8);
-        /* (7) literally */
+        /* [GMNPR] (7) literally */
         double th = tc_uniform(&s, 1e-6, phi), l = 0;
         ck_assert_int_eq(swarp_gmnpr_lambda(th, phi, n, f, &l), SWARP_INFO_GMNPR_ADJUSTED);
         ck_assert_rel(l, (sqrt(f * n) / (2.0 * f)) / tan(th / (4.0 * phi) * TC_PI), 1e-12);

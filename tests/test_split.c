@@ -55,12 +55,12 @@ START_TEST(uniform_log_practical_match_paper) {
         ck_assert_int_eq(swarp_split_practical(n, f, 1.0, m, p1, CAP, &cnt), SWARP_OK);
         int bad = 0; /* counted, asserted once: Check is slow per assertion */
         for (uint32_t i = 0; i <= m; ++i) {
-            /* (3.6) as a weighted mean of the ends; (3.7) with pow */
+            /* [RHS] (3.6) as a weighted mean of the ends; [RHS] (3.7) with pow */
             double eu = n * ((double)(m - i) / m) + f * ((double)i / m);
             double el = n * pow(f / n, (double)i / m);
             bad += tc_rel(u[i], eu) > 1e-14;
             bad += tc_rel(l[i], el) > 1e-12;
-            bad += tc_rel(p[i], (1 - lambda) * eu + lambda * el) > 1e-12; /* (3.8) */
+            bad += tc_rel(p[i], (1 - lambda) * eu + lambda * el) > 1e-12; /* [RHS] (3.8) */
             bad += p0[i] != u[i]; /* lambda = 0 is uniform */
             bad += p1[i] != l[i]; /* lambda = 1 is logarithmic */
         }
@@ -86,7 +86,7 @@ START_TEST(pseudo_matches_41_and_reduces_to_practical) {
         ck_assert_int_eq(swarp_split_practical(n, f, lambda, m, b, CAP, &cb), SWARP_OK);
         ck_assert_uint_eq(ca, cb);
         ck_assert(memcmp(a, b, (m + 1) * sizeof a[0]) == 0);
-        /* inner distances follow (4.1) over [n_p, f_p] */
+        /* inner distances follow [RHS] (4.1) over [n_p, f_p] */
         double np = n + (f - n) * tc_uniform(&s, 0, 0.4), fp = f - (f - n) * tc_uniform(&s, 0, 0.4);
         ck_assert_int_eq(swarp_split_pseudo(n, f, np, fp, lambda, m, a, CAP, &ca), SWARP_OK);
         ck_assert(a[0] == n && a[m] == f);

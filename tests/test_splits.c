@@ -395,7 +395,10 @@ START_TEST(stabilize_sphere_size_constant_and_levels_quantised) {
     swarp_stabilize_report rep;
     ck_assert_int_eq(swarp_stabilize_directional(&cam, 1, 100, &light, NULL, 0, NULL, 2048, &o, &M, &rep), SWARP_OK);
     /* world size of the map = 2 r res/(res - 1) */
-    ck_assert_double_eq_tol(rep.texel_size_x * 2048, 2 * rep.sphere_radius * 2048 / 2047.0, 1e-9);
+    /* rounded up by at most 2^-20 relative */
+    ck_assert(rep.texel_size_x * 2048 >= 2 * rep.sphere_radius * 2048 / 2047.0);
+    ck_assert_double_eq_tol(rep.texel_size_x * 2048, 2 * rep.sphere_radius * 2048 / 2047.0,
+                            2 * rep.sphere_radius * 2048 / 2047.0 * 1e-6);
     ck_assert(rep.texel_size_x == rep.texel_size_y);
     ck_assert(rep.area_saved > 0 && rep.area_saved < 1);
     o.mode = SWARP_STABILIZE_LEVELS;
@@ -405,6 +408,86 @@ START_TEST(stabilize_sphere_size_constant_and_levels_quantised) {
     ck_assert_double_eq_tol(rep.texel_size_x * 2048, rep.level_x * step, 1e-9);
     ck_assert_double_eq_tol(rep.texel_size_y * 2048, rep.level_y * step, 1e-9);
     ck_assert(rep.level_x >= 1 && rep.level_x <= 16);
+}
+END_TEST
+
+/* An orthographic light map built here independently: basis (u, v, w) from a
+ * random light direction, half sizes hx, hy, depth range [t0, t1] along d. */
+typedef struct ortho_map {
+    swarp_bias_map map;
+    swarp_vec3 u, v, d;
+    double hx, hy, t0, t1;
+} ortho_map;
+
+static ortho_map make_ortho(swarp_vec3 d, swarp_vec3 centre, double hx, double hy, double t0,
+                            double t1, double res_s, double res_t) {
+    ortho_map o;
+    memset(&o, 0, sizeof o);
+    o.d = vnorm(d);
+    o.u = vnorm(vcross(o.d, fabs(o.d.z) < 0.9 ? v3(0, 0, 1) : v3(1, 0, 0)));
+    o.v = vcross(o.u, o.d);
+    o.hx = hx;
+    o.hy = hy;
+    o.t0 = t0;
+    o.t1 = t1;
+    swarp_vec3 rows[3] = {vscale(o.u, 1 / hx), vscale(o.v, 1 / hy), vscale(o.d, 2 / (t1 - t0))};
+    double tr[3] = {-vdot(o.u, centre) / hx, -vdot(o.v, centre) / hy,
+                    -2 * vdot(o.d, centre) / (t1 - t0) - (t1 + t0) / (t1 - t0)};
+    for (int r = 0; r < 3; ++r) {
+        o.map.world_to_clip.m[0 + r] = ((double*)&rows[r])[0];
+        o.map.world_to_clip.m[4 + r] = ((double*)&rows[r])[1];
+        o.map.world_to_clip.m[8 + r] = ((double*)&rows[r])[2];
+        o.map.world_to_clip.m[12 + r] = tr[r];
+    }
+    o.map.world_to_clip.m[15] = 1;
+    o.map.res_s = res_s;
+    o.map.res_t = res_t;
+    o.map.depth = SWARP_DEPTH_NEG_ONE_TO_ONE;
+    return o;
+}
+
+START_TEST(stabilize_snap_matrix_whole_texels) {
+    /* a caller's ortho map with fixed scale and orientation, sliding with
+     * the camera: after snapping, a fixed point moves by whole texels */
+    rng_state = 91;
+    for (int rep = 0; rep < 20; ++rep) {
+        swarp_vec3 origin = v3(rng_uniform(-1e6, 1e6), 0, rng_uniform(-1e6, 1e6));
+        swarp_vec3 P = vadd(origin, v3(rng_uniform(-50, 50), rng_uniform(-5, 5), rng_uniform(-50, 50)));
+        double prev[2] = {0, 0};
+        for (int it = 0; it < 50; ++it) {
+            swarp_vec3 c = vadd(origin, v3(rng_uniform(-30, 30), 0, rng_uniform(-30, 30)));
+            ortho_map o = make_ortho(v3(0.3, -1, 0.2), vsub(c, origin), 80, 60, -100, 100, 2048, 1024);
+            swarp_mat4 M;
+            /* the matrix takes origin-relative points here: snap about 0 */
+            double st[2], st0[2];
+            swarp_vec3 zero = v3(0, 0, 0);
+            ck_assert_int_eq(swarp_stabilize_snap_matrix(&o.map.world_to_clip, 2048, 1024, &zero, &M), SWARP_OK);
+            texel_of(&M, vsub(P, origin), 2048, st);
+            st[1] = st[1] / 2048 * 1024;
+            texel_of(&o.map.world_to_clip, vsub(P, origin), 2048, st0);
+            ck_assert(fabs(st[0] - st0[0]) <= 0.5 + 1e-9); /* moved by at most half a texel */
+            if (it > 0) {
+                ck_assert(frac_dist(st[0] - prev[0]) < 1e-6);
+                ck_assert(frac_dist(st[1] - prev[1]) < 1e-6);
+            }
+            prev[0] = st[0];
+            prev[1] = st[1];
+        }
+    }
+    /* a warped (projective) map has no uniform grid */
+    swarp_mat4 P4, out;
+    memset(&P4, 0, sizeof P4);
+    P4.m[0] = P4.m[5] = 1;
+    P4.m[10] = -1.02;
+    P4.m[11] = -1;
+    P4.m[14] = -2.02;
+    memset(&out, 0x11, sizeof out);
+    swarp_mat4 outs = out;
+    swarp_vec3 o0 = v3(0, 0, 0);
+    ck_assert_int_eq(swarp_stabilize_snap_matrix(&P4, 512, 512, &o0, &out), SWARP_ERR_STABILIZE_WARPED);
+    ck_assert_int_eq(swarp_stabilize_snap_matrix(&P4, 0, 512, &o0, &out), SWARP_ERR_RESOLUTION);
+    ck_assert_int_eq(swarp_stabilize_snap_matrix(NULL, 512, 512, &o0, &out), SWARP_ERR_NULL_POINTER);
+    ck_assert_mem_eq(&out, &outs, sizeof out);
 }
 END_TEST
 
@@ -467,41 +550,6 @@ END_TEST
 /* ======================================================================= */
 /* Bias [KOZ] §14.2.3                                                      */
 /* ======================================================================= */
-
-/* An orthographic light map built here independently: basis (u, v, w) from a
- * random light direction, half sizes hx, hy, depth range [t0, t1] along d. */
-typedef struct ortho_map {
-    swarp_bias_map map;
-    swarp_vec3 u, v, d;
-    double hx, hy, t0, t1;
-} ortho_map;
-
-static ortho_map make_ortho(swarp_vec3 d, swarp_vec3 centre, double hx, double hy, double t0,
-                            double t1, double res_s, double res_t) {
-    ortho_map o;
-    memset(&o, 0, sizeof o);
-    o.d = vnorm(d);
-    o.u = vnorm(vcross(o.d, fabs(o.d.z) < 0.9 ? v3(0, 0, 1) : v3(1, 0, 0)));
-    o.v = vcross(o.u, o.d);
-    o.hx = hx;
-    o.hy = hy;
-    o.t0 = t0;
-    o.t1 = t1;
-    swarp_vec3 rows[3] = {vscale(o.u, 1 / hx), vscale(o.v, 1 / hy), vscale(o.d, 2 / (t1 - t0))};
-    double tr[3] = {-vdot(o.u, centre) / hx, -vdot(o.v, centre) / hy,
-                    -2 * vdot(o.d, centre) / (t1 - t0) - (t1 + t0) / (t1 - t0)};
-    for (int r = 0; r < 3; ++r) {
-        o.map.world_to_clip.m[0 + r] = ((double*)&rows[r])[0];
-        o.map.world_to_clip.m[4 + r] = ((double*)&rows[r])[1];
-        o.map.world_to_clip.m[8 + r] = ((double*)&rows[r])[2];
-        o.map.world_to_clip.m[12 + r] = tr[r];
-    }
-    o.map.world_to_clip.m[15] = 1;
-    o.map.res_s = res_s;
-    o.map.res_t = res_t;
-    o.map.depth = SWARP_DEPTH_NEG_ONE_TO_ONE;
-    return o;
-}
 
 START_TEST(bias_texel_size_uniform_equals_footprint) {
     rng_state = 5;
@@ -772,6 +820,30 @@ START_TEST(select_best_never_worse_than_depth) {
     }
     ck_assert_int_gt(overlap_points, 100); /* the property was exercised */
     ck_assert_int_gt(better, 10);          /* and best-resolution did win */
+}
+END_TEST
+
+START_TEST(view_depth_of_world_points) {
+    rng_state = 33;
+    for (int it = 0; it < 100; ++it) {
+        swarp_camera cam = make_camera(v3(rng_uniform(-1e5, 1e5), 3, rng_uniform(-1e5, 1e5)), rand_unit(), 1, 1, 1, 100);
+        double z = rng_uniform(1, 100), x = rng_uniform(-5, 5);
+        swarp_vec3 side = vnorm(vcross(cam.dir, cam.up));
+        swarp_vec3 p = vadd(vadd(cam.eye, vscale(vnorm(cam.dir), z)), vscale(side, x));
+        double d;
+        ck_assert_int_eq(swarp_cascade_view_depth(&cam, &p, &d), SWARP_OK);
+        ck_assert_double_eq_tol(d, z, 1e-9 * 1e5);
+    }
+    swarp_camera cam = make_camera(v3(0, 0, 0), v3(0, 0, -1), 1, 1, 1, 100);
+    swarp_vec3 p = v3(0, 0, -3);
+    double d = -1;
+    cam.dir = v3(0, 0, 0);
+    ck_assert_int_eq(swarp_cascade_view_depth(&cam, &p, &d), SWARP_ERR_ZERO_VECTOR);
+    p.x = NAN;
+    cam.dir = v3(0, 0, -1);
+    ck_assert_int_eq(swarp_cascade_view_depth(&cam, &p, &d), SWARP_ERR_NON_FINITE);
+    ck_assert_int_eq(swarp_cascade_view_depth(&cam, NULL, &d), SWARP_ERR_NULL_POINTER);
+    ck_assert(d == -1);
 }
 END_TEST
 
@@ -1069,6 +1141,359 @@ START_TEST(splits_bad_inputs) {
     ck_assert(np[0] == -3);
 }
 END_TEST
+
+/* ======================================================================= */
+/* Cascade setup [RHS] §3.3-3.4, §4.1-4.2                                  */
+/* ======================================================================= */
+
+typedef struct scene_cfg {
+    swarp_camera cam;
+    swarp_light light;
+    swarp_aabb box;
+} scene_cfg;
+
+static scene_cfg random_scene(int overhead) {
+    scene_cfg c;
+    memset(&c, 0, sizeof c);
+    double W = rng_uniform(50, 2000);
+    c.box.min = v3(-W, rng_uniform(-20, 0), -W);
+    c.box.max = v3(W, rng_uniform(20, 200), W);
+    c.cam = make_camera(v3(rng_uniform(-0.5, 0.5) * W, rng_uniform(2, 30), rng_uniform(-0.5, 0.5) * W),
+                        v3(rng_uniform(-1, 1), rng_uniform(-0.6, 0.0), rng_uniform(-1, 1)),
+                        rng_uniform(0.6, 1.4), rng_uniform(1, 2), rng_uniform(0.1, 1), 0);
+    c.cam.far = c.cam.near * rng_uniform(100, 5000);
+    c.light.type = SWARP_LIGHT_DIRECTIONAL;
+    c.light.direction = overhead ? v3(0, -1, 0) : vadd(v3(0, -1, 0), vscale(rand_unit(), 0.8));
+    return c;
+}
+
+START_TEST(cascade_one_split_equals_single_map_bit_for_bit) {
+    rng_state = 51;
+    int tested = 0;
+    for (int it = 0; it < 200; ++it) {
+        scene_cfg c = random_scene(0);
+        swarp_cascade_options o;
+        memset(&o, 0, sizeof o);
+        o.split.count = 1;
+        o.setup.technique = (swarp_technique)(1 + it % 3); /* uniform, LiSPSM, PSM */
+        o.setup.map_width = 1024;
+        swarp_setup_result single;
+        size_t np;
+        swarp_status s1 = swarp_setup(&c.cam, &c.light, &c.box, &o.setup, &single, NULL, 0, &np);
+        swarp_cascade_result r;
+        swarp_cascade_split sp[1];
+        size_t k;
+        swarp_status s2 = swarp_cascade_setup(&c.cam, &c.light, &c.box, &o, &r, sp, 1, &k);
+        ck_assert_int_eq(s1, s2);
+        if (swarp_status_is_error(s1)) continue;
+        ++tested;
+        ck_assert_uint_eq(k, 1);
+        ck_assert_mem_eq(&sp[0].matrix, &single.matrix, sizeof single.matrix);
+        ck_assert(memcmp(&sp[0].n_eye, &single.n_eye, sizeof(double)) == 0);
+        ck_assert(r.view_near == single.view_near && r.view_far == single.view_far);
+        ck_assert(sp[0].near == single.view_near && sp[0].far == single.view_far);
+    }
+    ck_assert_int_gt(tested, 100);
+}
+END_TEST
+
+START_TEST(cascade_splits_cover_bodies_and_range) {
+    rng_state = 52;
+    int tested = 0;
+    for (int it = 0; it < 120; ++it) {
+        scene_cfg c = random_scene(0);
+        if (it % 3 == 2) { /* point light high above the scene; every other one a wide spot */
+            c.light.type = SWARP_LIGHT_POINT;
+            c.light.position = v3(rng_uniform(-300, 300), c.box.max.y + rng_uniform(300, 3000), rng_uniform(-300, 300));
+            if (it % 2) {
+                c.light.direction = v3(0, -1, 0);
+                c.light.cone_angle = 1.4;
+            }
+        }
+        if (it % 5 == 4) { /* large world: everything 3e5 away from the origin */
+            swarp_vec3 off = v3(3e5, 0, -2e5);
+            c.box.min = vadd(c.box.min, off);
+            c.box.max = vadd(c.box.max, off);
+            c.cam.eye = vadd(c.cam.eye, off);
+            c.light.position = vadd(c.light.position, off);
+        }
+        swarp_cascade_options o;
+        memset(&o, 0, sizeof o);
+        const uint32_t Ks[4] = {2, 4, 8, 16};
+        o.split.count = Ks[it % 4];
+        o.setup.technique = it % 2 ? SWARP_TECHNIQUE_LISPSM : SWARP_TECHNIQUE_UNIFORM;
+        o.kernel_world_size = 0.5;
+        swarp_cascade_result r;
+        swarp_cascade_split sp[16];
+        size_t k;
+        swarp_status st = swarp_cascade_setup(&c.cam, &c.light, &c.box, &o, &r, sp, 16, &k);
+        if (st == SWARP_ERR_BODY_EMPTY) continue;
+        ck_assert_msg(!swarp_status_is_error(st), "%s", swarp_status_name(st));
+        ++tested;
+        ck_assert_uint_eq(k, o.split.count);
+        /* adjusted near/far [RHS] §3.3.1, covered without gap or overlap */
+        double an, af;
+        ck_assert_int_eq(swarp_body_adjusted_range(&c.cam, &c.box, &an, &af), SWARP_OK);
+        ck_assert(r.view_near == an && r.view_far == af);
+        ck_assert(sp[0].near == an && sp[k - 1].far == af);
+        for (size_t i = 0; i + 1 < k; ++i) ck_assert(sp[i].far == sp[i + 1].near && sp[i].far > sp[i].near);
+        double l_sc = r.atlas.l_sc;
+        for (size_t i = 0; i < k; ++i) {
+            /* every point of B_i inside the split's clip cube */
+            swarp_vec3 B[SWARP_BODY_MAX_POINTS];
+            size_t nb;
+            ck_assert_int_eq(swarp_body_points(&c.cam, sp[i].near, sp[i].far, &c.light, &c.box, B,
+                                               SWARP_BODY_MAX_POINTS, &nb), SWARP_OK);
+            double lo = INFINITY, hi = -INFINITY;
+            double e[3] = {sp[i].matrix.m[0], sp[i].matrix.m[4], sp[i].matrix.m[8]};
+            double el = sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]);
+            for (size_t j = 0; j < nb; ++j) {
+                double h[4];
+                xform(&sp[i].matrix, B[j], h);
+                ck_assert(h[3] > 0);
+                for (int a = 0; a < 3; ++a) ck_assert_msg(fabs(h[a] / h[3]) <= 1 + 1e-7, "split %zu axis %d: %g", i, a, h[a] / h[3]);
+                double x = (e[0] * B[j].x + e[1] * B[j].y + e[2] * B[j].z) / el;
+                lo = fmin(lo, x);
+                hi = fmax(hi, x);
+            }
+            /* uniform maps: a world bias of 1 toward the light lowers the
+             * window depth by depth_per_world anywhere in the split */
+            if (o.setup.technique == SWARP_TECHNIQUE_UNIFORM && c.light.type == SWARP_LIGHT_DIRECTIONAL) {
+                swarp_vec3 q = B[nb / 2], L = vscale(vnorm(c.light.direction), -1.0);
+                double h0[4], h1[4];
+                xform(&sp[i].matrix, q, h0);
+                xform(&sp[i].matrix, vadd(q, L), h1);
+                double dd = 0.5 * (h0[2] / h0[3] - h1[2] / h1[3]);
+                ck_assert_double_eq_tol(sp[i].depth_per_world, dd, 1e-9 * fabs(dd) + 1e-15);
+                ck_assert(sp[i].depth_per_world > 0);
+            }
+            /* uniform maps: kernel scale = (3.9) with the body's light-space x extent */
+            if (o.setup.technique == SWARP_TECHNIQUE_UNIFORM && c.light.type == SWARP_LIGHT_DIRECTIONAL)
+                ck_assert_double_eq_tol(sp[i].kernel_scale[0], 0.5 * l_sc * 2 / (hi - lo), 1e-7 * sp[i].kernel_scale[0]);
+            /* atlas matrix = clip_to_atlas * matrix */
+            double p4[4];
+            xform(&sp[i].atlas_matrix, B[0], p4);
+            double h[4], t[4] = {0, 0, 0, 0};
+            xform(&sp[i].matrix, B[0], h);
+            for (int r2 = 0; r2 < 4; ++r2)
+                for (int q = 0; q < 4; ++q) t[r2] += sp[i].tile.clip_to_atlas.m[q * 4 + r2] * h[q];
+            /* rounding: relative to the size of the terms summed (large worlds
+             * cancel 1e5-sized terms down to the clip range) */
+            for (int r2 = 0; r2 < 4; ++r2) {
+                const swarp_mat4* A = &sp[i].atlas_matrix;
+                double terms = fabs(A->m[12 + r2]) + fabs(A->m[r2] * B[0].x) + fabs(A->m[4 + r2] * B[0].y) +
+                               fabs(A->m[8 + r2] * B[0].z);
+                ck_assert_double_eq_tol(p4[r2], t[r2], 1e-13 * terms + 1e-15);
+            }
+        }
+    }
+    ck_assert_int_gt(tested, 80);
+}
+END_TEST
+
+START_TEST(cascade_pseudo_planes_first_and_last_only) {
+    rng_state = 53;
+    scene_cfg c = random_scene(1);
+    c.cam.dir = v3(0, -0.05, -1); /* nearly perpendicular to the overhead light */
+    swarp_cascade_options o;
+    memset(&o, 0, sizeof o);
+    o.split.count = 4;
+    o.setup.technique = SWARP_TECHNIQUE_LISPSM;
+    swarp_cascade_result r0, r1;
+    swarp_cascade_split a[4], b[4];
+    size_t k;
+    ck_assert(!swarp_status_is_error(swarp_cascade_setup(&c.cam, &c.light, &c.box, &o, &r0, a, 4, &k)));
+    o.setup.param = SWARP_WARP_PARAM_PSEUDO;
+    o.setup.pseudo_near = 0.002;
+    o.setup.pseudo_far = 0.1;
+    ck_assert(!swarp_status_is_error(swarp_cascade_setup(&c.cam, &c.light, &c.box, &o, &r1, b, 4, &k)));
+    ck_assert(a[0].n_eye != b[0].n_eye);           /* first split: pseudo-near */
+    ck_assert(a[1].n_eye == b[1].n_eye);           /* middle splits: plain n_opt */
+    ck_assert(a[2].n_eye == b[2].n_eye);
+    ck_assert(a[3].n_eye != b[3].n_eye);           /* last split: pseudo-far */
+    /* (4.2): a pseudo-near plane weakens the warp's near end: larger n' */
+    ck_assert(b[0].n_eye > a[0].n_eye);
+    /* per-split warp strength */
+    memset(&o, 0, sizeof o);
+    o.split.count = 4;
+    o.setup.technique = SWARP_TECHNIQUE_LISPSM;
+    o.n_user[1] = 37.5;
+    o.n_user[2] = INFINITY;
+    ck_assert(!swarp_status_is_error(swarp_cascade_setup(&c.cam, &c.light, &c.box, &o, &r1, b, 4, &k)));
+    ck_assert_double_eq_tol(b[1].n_eye, 37.5, 1e-9);
+    ck_assert(b[2].n_eye == INFINITY);
+    ck_assert(b[0].n_eye == a[0].n_eye && b[3].n_eye == a[3].n_eye);
+}
+END_TEST
+
+START_TEST(cascade_error_values_at_borders) {
+    rng_state = 54;
+    scene_cfg c = random_scene(1);
+    swarp_cascade_options o;
+    memset(&o, 0, sizeof o);
+    o.split.count = 4;
+    o.setup.technique = SWARP_TECHNIQUE_LISPSM;
+    o.setup.map_width = 1024;
+    o.setup.screen_width = 1280;
+    o.setup.screen_height = 720;
+    swarp_cascade_result r;
+    swarp_cascade_split sp[4];
+    size_t k;
+    ck_assert(!swarp_status_is_error(swarp_cascade_setup(&c.cam, &c.light, &c.box, &o, &r, sp, 4, &k)));
+    double n_primes[4], z[4 * 50], mx[4 * 50], mz[4 * 50], wmx = 0, wmz = 0;
+    for (int i = 0; i < 4; ++i) n_primes[i] = sp[i].n_eye;
+    swarp_error_config cfg;
+    memset(&cfg, 0, sizeof cfg);
+    cfg.near = r.view_near;
+    cfg.far = r.view_far;
+    cfg.theta = c.cam.fovy / 2;
+    cfg.res_ix = 1280;
+    cfg.res_iy = 720;
+    cfg.res_s = cfg.res_t = 1024;
+    size_t cnt;
+    ck_assert_int_eq(swarp_cascade_error_curve(&cfg, r.splits, n_primes, 4, 50, z, mx, mz, 200, &cnt), SWARP_OK);
+    for (int i = 0; i < 4; ++i) {
+        /* just after border i: the curve's first sample of split i */
+        ck_assert_double_eq_tol(sp[i].mx_start, mx[i * 50], 1e-12 * mx[i * 50]);
+        ck_assert_double_eq_tol(sp[i].mz_start, mz[i * 50], 1e-12 * mz[i * 50]);
+        ck_assert_double_eq_tol(sp[i].mx_end, mx[i * 50 + 49], 1e-9 * mx[i * 50 + 49]);
+        ck_assert_double_eq_tol(sp[i].mz_end, mz[i * 50 + 49], 1e-9 * mz[i * 50 + 49]);
+        ck_assert(sp[i].max_mx >= fmax(sp[i].mx_start, sp[i].mx_end) * (1 - 1e-12));
+        wmx = fmax(wmx, sp[i].max_mx);
+        wmz = fmax(wmz, sp[i].max_mz);
+    }
+    ck_assert(r.max_mx == wmx && r.max_mz == wmz);
+    ck_assert_double_eq_tol(r.max_mx, curve_max(mx, cnt), 1e-9 * r.max_mx);
+}
+END_TEST
+
+START_TEST(cascade_stabilized_whole_texels) {
+    rng_state = 55;
+    scene_cfg c = random_scene(0);
+    /* a flat box the view frustum leaves through the ground: the adjusted
+     * far changes every frame, the exact solution must not care (it splits
+     * the camera's own range, [RHS] §3.5) */
+    c.box.min = v3(-500, -5, -500);
+    c.box.max = v3(500, 40, 500);
+    c.cam = make_camera(v3(0, 10, 0), v3(0.2, -0.3, -1), 1.0, 1.5, 0.5, 300);
+    swarp_cascade_options o;
+    memset(&o, 0, sizeof o);
+    o.split.count = 4;
+    o.setup.technique = SWARP_TECHNIQUE_UNIFORM;
+    o.setup.map_width = 1024;
+    o.stabilize.mode = SWARP_STABILIZE_SPHERE;
+    o.stabilize.origin = v3(1, 2, 3);
+    o.setup.depth_range = SWARP_DEPTH_ZERO_TO_ONE; /* the stabilised maps follow it */
+    swarp_vec3 P = v3(4, 0, -30);
+    double prev[4][2];
+    double prev_texel[4];
+    int compared = 0;
+    for (int it = 0; it < 200; ++it) {
+        c.cam.eye = vadd(c.cam.eye, v3(rng_uniform(-0.3, 0.3), rng_uniform(-0.05, 0.05), rng_uniform(-0.3, 0.3)));
+        c.cam.dir = vnorm(vadd(c.cam.dir, vscale(rand_unit(), 0.004)));
+        swarp_cascade_result r;
+        swarp_cascade_split sp[4];
+        size_t k;
+        swarp_status st = swarp_cascade_setup(&c.cam, &c.light, &c.box, &o, &r, sp, 4, &k);
+        ck_assert_msg(!swarp_status_is_error(st), "%s", swarp_status_name(st));
+        ck_assert(r.view_near == c.cam.near && r.view_far == c.cam.far); /* not adjusted */
+        for (int i = 0; i < 4; ++i) {
+            if (it == 0) { /* B_i inside the map, depth in [0, 1] */
+                swarp_vec3 B[SWARP_BODY_MAX_POINTS];
+                size_t nb;
+                swarp_status bs = swarp_body_points(&c.cam, sp[i].near, sp[i].far, &c.light, &c.box, B,
+                                                    SWARP_BODY_MAX_POINTS, &nb);
+                ck_assert(bs == SWARP_OK || bs == SWARP_ERR_BODY_EMPTY);
+                if (bs != SWARP_OK) nb = 0;
+                for (size_t j = 0; j < nb; ++j) {
+                    double h[4];
+                    xform(&sp[i].matrix, vsub(B[j], o.stabilize.origin), h);
+                    ck_assert(fabs(h[0]) <= 1 + 1e-9 && fabs(h[1]) <= 1 + 1e-9);
+                    ck_assert(h[2] >= -1e-9 && h[2] <= 1 + 1e-9);
+                }
+            }
+            double stc[2];
+            texel_of(&sp[i].matrix, vsub(P, o.stabilize.origin), 1024, stc);
+            /* the exact solution's size depends on the split range: with the
+             * adjusted near/far moving, compare only when it did not change */
+            if (it > 0 && sp[i].texel_size == prev_texel[i]) {
+                ++compared;
+                ck_assert(frac_dist(stc[0] - prev[i][0]) < 1e-6);
+                ck_assert(frac_dist(stc[1] - prev[i][1]) < 1e-6);
+            }
+            prev[i][0] = stc[0];
+            prev[i][1] = stc[1];
+            prev_texel[i] = sp[i].texel_size;
+        }
+    }
+    ck_assert_int_eq(compared, 4 * 199); /* constant world size in every split */
+}
+END_TEST
+
+START_TEST(cascade_bad_inputs) {
+    rng_state = 56;
+    scene_cfg c = random_scene(0);
+    swarp_cascade_options o;
+    memset(&o, 0, sizeof o);
+    swarp_cascade_result r, rs;
+    swarp_cascade_split sp[16], sps[16];
+    memset(&r, 0x6B, sizeof r);
+    memset(sp, 0x6B, sizeof sp);
+    rs = r;
+    memcpy(sps, sp, sizeof sp);
+    size_t k = 1234;
+    ck_assert_int_eq(swarp_cascade_setup(NULL, &c.light, &c.box, &o, &r, sp, 16, &k), SWARP_ERR_NULL_POINTER);
+    ck_assert_int_eq(swarp_cascade_setup(&c.cam, &c.light, &c.box, &o, &r, NULL, 16, &k), SWARP_ERR_NULL_POINTER);
+    o.split.count = 17;
+    ck_assert_int_eq(swarp_cascade_setup(&c.cam, &c.light, &c.box, &o, &r, sp, 16, &k), SWARP_ERR_SPLIT_COUNT);
+    o.split.count = 0;
+    o._reserved[0] = 1;
+    ck_assert_int_eq(swarp_cascade_setup(&c.cam, &c.light, &c.box, &o, &r, sp, 16, &k), SWARP_ERR_RESERVED_NONZERO);
+    o._reserved[0] = 0;
+    o.kernel_world_size = -1;
+    ck_assert_int_eq(swarp_cascade_setup(&c.cam, &c.light, &c.box, &o, &r, sp, 16, &k), SWARP_ERR_OUT_OF_RANGE);
+    o.kernel_world_size = 0;
+    o.n_user[3] = NAN;
+    ck_assert_int_eq(swarp_cascade_setup(&c.cam, &c.light, &c.box, &o, &r, sp, 16, &k), SWARP_ERR_NON_FINITE);
+    o.n_user[3] = -2;
+    ck_assert_int_eq(swarp_cascade_setup(&c.cam, &c.light, &c.box, &o, &r, sp, 16, &k), SWARP_ERR_OUT_OF_RANGE);
+    o.n_user[3] = 0;
+    /* stabilisation with a warp, and with a point light */
+    o.stabilize.mode = SWARP_STABILIZE_SPHERE;
+    ck_assert_int_eq(swarp_cascade_setup(&c.cam, &c.light, &c.box, &o, &r, sp, 16, &k), SWARP_ERR_STABILIZE_WARPED);
+    o.setup.technique = SWARP_TECHNIQUE_UNIFORM;
+    o.n_user[1] = 20;
+    ck_assert_int_eq(swarp_cascade_setup(&c.cam, &c.light, &c.box, &o, &r, sp, 16, &k), SWARP_ERR_STABILIZE_WARPED);
+    o.n_user[1] = 0;
+    swarp_light pl = c.light;
+    pl.type = SWARP_LIGHT_POINT;
+    pl.position = v3(0, 500, 0);
+    ck_assert_int_eq(swarp_cascade_setup(&c.cam, &pl, &c.box, &o, &r, sp, 16, &k), SWARP_ERR_STABILIZE_LIGHT);
+    o.stabilize.mode = (swarp_stabilize_mode)8;
+    ck_assert_int_eq(swarp_cascade_setup(&c.cam, &c.light, &c.box, &o, &r, sp, 16, &k), SWARP_ERR_UNKNOWN_ENUM);
+    o.stabilize.mode = 0;
+    o.split.scheme = (swarp_split_scheme)99;
+    ck_assert_int_eq(swarp_cascade_setup(&c.cam, &c.light, &c.box, &o, &r, sp, 16, &k), SWARP_ERR_UNKNOWN_ENUM);
+    o.split.count = 1; /* the single-map path validates the scheme too */
+    ck_assert_int_eq(swarp_cascade_setup(&c.cam, &c.light, &c.box, &o, &r, sp, 16, &k), SWARP_ERR_UNKNOWN_ENUM);
+    o.split.count = 0;
+    o.split.scheme = 0;
+    o.stabilize._reserved[2] = 5;
+    ck_assert_int_eq(swarp_cascade_setup(&c.cam, &c.light, &c.box, &o, &r, sp, 16, &k), SWARP_ERR_RESERVED_NONZERO);
+    o.stabilize._reserved[2] = 0;
+    /* camera looking away from the scene */
+    swarp_camera away = c.cam;
+    away.dir = v3(0, 1, 0);
+    away.up = v3(1, 0, 0);
+    away.eye = v3(0, 1e4, 0);
+    ck_assert_int_eq(swarp_cascade_setup(&away, &c.light, &c.box, &o, &r, sp, 16, &k), SWARP_ERR_BODY_EMPTY);
+    ck_assert_uint_eq(k, 1234);
+    ck_assert_mem_eq(&r, &rs, sizeof r);
+    ck_assert_mem_eq(sp, sps, sizeof sp);
+    ck_assert_int_eq(swarp_cascade_setup(&c.cam, &c.light, &c.box, &o, &r, sp, 3, &k), SWARP_ERR_CAPACITY);
+    ck_assert_uint_eq(k, 4);
+}
+END_TEST
 /* ======================================================================= */
 
 static Suite* splits_suite(void) {
@@ -1084,6 +1509,7 @@ static Suite* splits_suite(void) {
     tcase_add_test(t, stabilize_levels_whole_texels_between_level_changes);
     tcase_add_test(t, stabilize_none_does_flicker);
     tcase_add_test(t, stabilize_sphere_size_constant_and_levels_quantised);
+    tcase_add_test(t, stabilize_snap_matrix_whole_texels);
     tcase_add_test(t, stabilize_bad_inputs);
     suite_add_tcase(s, t);
     t = tcase_create("bias");
@@ -1101,9 +1527,18 @@ static Suite* splits_suite(void) {
     tcase_add_test(t, error_curve_samples_borders);
     tcase_add_test(t, splits_bad_inputs);
     suite_add_tcase(s, t);
+    t = tcase_create("cascade");
+    tcase_add_test(t, cascade_one_split_equals_single_map_bit_for_bit);
+    tcase_add_test(t, cascade_splits_cover_bodies_and_range);
+    tcase_add_test(t, cascade_pseudo_planes_first_and_last_only);
+    tcase_add_test(t, cascade_error_values_at_borders);
+    tcase_add_test(t, cascade_stabilized_whole_texels);
+    tcase_add_test(t, cascade_bad_inputs);
+    suite_add_tcase(s, t);
     t = tcase_create("select");
     tcase_add_test(t, select_best_never_worse_than_depth);
     tcase_add_test(t, blend_weight_continuous_and_banded);
+    tcase_add_test(t, view_depth_of_world_points);
     tcase_add_test(t, select_bad_inputs);
     suite_add_tcase(s, t);
     return s;

@@ -7,17 +7,21 @@ B=${1:-build}
 T=$(mktemp -d)
 "$B/examples/demo/demo" --out "$T" --size 960x540 --map 1024 >/dev/null
 "$B/examples/demo/demo" --out "$T/measure" --camera measure --light-angle 90 --size 960x540 \
-    --technique uniform >/dev/null
-for f in "$T"/*.png; do
-    n=$(basename "$f")
-    case "$n" in
-        sheet_techniques.png|uniform_shaded.png|uniform_sampling.png|uniform_light.png|\
-        lispsm_sampling.png|lispsm_light.png|lispsm_grid.png|lispsm_error.png|\
-        pssm4_splits.png|pssm4_sampling.png|pssm4_light.png|pssm4_error.png|pssm4_shaded.png|\
-        pssm-lispsm4_sampling.png|psm_sampling.png|lixel_shaded.png|uniform_grid.png|uniform_error.png)
-            cp "$f" "docs/img/demo_$n" ;;
-    esac
+    --technique lispsm >/dev/null
+rm -f docs/img/demo_*.png
+for n in sheet_techniques uniform_sampling lispsm_sampling pssm4_sampling psm_sampling \
+         lispsm_light pssm4_light pssm-lispsm4_light lispsm_grid pssm4_splits pssm4_error \
+         lispsm_error pssm4_third lispsm_third lixel_sampling lixel_shaded pssm4_shaded \
+         psm-cube_splits psm-cube_light psm_light; do
+    cp "$T/$n.png" "docs/img/demo_$n.png"
 done
-cp "$T/measure/uniform_error.png" docs/img/demo_measure_uniform_error.png
+cp "$T/measure/lispsm_error.png" docs/img/demo_measure_lispsm_error.png
+"$B/examples/demo/demo" --mindepth --out "$T/md" --size 960x540 >/dev/null
+for k in near adjusted pseudo; do
+    cp "$T/md/mindepth_${k}_sampling.png" "docs/img/demo_mindepth_${k}_sampling.png"
+done
+"$B/examples/demo/demo" --technique lispsm --filter projblur --out "$T/pb" --size 960x540 >/dev/null
+cp "$T/pb/lispsm_shaded.png" docs/img/demo_projblur_lispsm_shaded.png
+cp "$T/lispsm_shaded.png" docs/img/demo_pcf3_lispsm_shaded.png
 rm -rf "$T"
 ls docs/img/demo_*.png

@@ -44,4 +44,25 @@ int demo_error_graph(const demo_view* v, const demo_shadow* sh, int map_res,
 void demo_draw_frustum(demo_image* im, const swarp_mat4* m, const demo_view* v, double d0,
                        double d1, const uint8_t rgb[3], int view_vector);
 
+/** [RHS] §4.3: the minimum linear depth the viewer sees. */
+typedef struct demo_mindepth_result {
+    double gpu_min;          /**< by the GPU 2x2 min chain (Listing A.2), read back */
+    double cpu_pyramid_min;  /**< swarp_mindepth_pyramid on the read-back buffer */
+    double cpu_direct_min;   /**< swarp_mindepth_direct on the same buffer */
+    double adjusted_near;    /**< swarp_mindepth_near(n, f, gpu_min) */
+    int levels;              /**< chain passes down to 1x1 */
+    double depth_pass_ms, chain_ms, readback_ms, cpu_pyramid_ms, cpu_direct_ms;
+    int gl_errors;
+} demo_mindepth_result;
+
+/** Measures the minimum depth of view v three ways and the adjusted near
+ *  plane.  0 on success. */
+int demo_mindepth(demo_renderer* r, const demo_view* v, demo_mindepth_result* out);
+
+/** The third-person visualisation view ([RHS] §5.2-5.3) of configuration
+ *  sh: rendered with split colours from an outside camera, overlays drawn.
+ *  Returns the number of GL errors (-1 on failure). */
+int demo_third_person(demo_renderer* r, const demo_view* v, const demo_shadow* sh,
+                      const demo_main_params* base, demo_image* out);
+
 #endif

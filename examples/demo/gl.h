@@ -55,7 +55,9 @@
     X(PFNGLUNIFORM1FVPROC, glUniform1fv)                               \
     X(PFNGLUNIFORM2FPROC, glUniform2f)                                 \
     X(PFNGLUNIFORM2FVPROC, glUniform2fv)                               \
+    X(PFNGLUNIFORM2IPROC, glUniform2i)                                 \
     X(PFNGLUNIFORM3FPROC, glUniform3f)                                 \
+    X(PFNGLUNIFORM3FVPROC, glUniform3fv)                               \
     X(PFNGLUNIFORM4FVPROC, glUniform4fv)                               \
     X(PFNGLUNIFORMMATRIX4FVPROC, glUniformMatrix4fv)                   \
     X(PFNGLGENTEXTURESPROC, glGenTextures)                             \
@@ -63,12 +65,16 @@
     X(PFNGLBINDTEXTUREPROC, glBindTexture)                             \
     X(PFNGLACTIVETEXTUREPROC, glActiveTexture)                         \
     X(PFNGLTEXIMAGE3DPROC, glTexImage3D)                               \
+    X(PFNGLTEXIMAGE2DPROC, glTexImage2D)                               \
+    X(PFNGLFRAMEBUFFERTEXTURE2DPROC, glFramebufferTexture2D)           \
     X(PFNGLTEXPARAMETERIPROC, glTexParameteri)                         \
     X(PFNGLTEXPARAMETERFVPROC, glTexParameterfv)                       \
     X(PFNGLGENFRAMEBUFFERSPROC, glGenFramebuffers)                     \
     X(PFNGLDELETEFRAMEBUFFERSPROC, glDeleteFramebuffers)               \
     X(PFNGLBINDFRAMEBUFFERPROC, glBindFramebuffer)                     \
     X(PFNGLFRAMEBUFFERTEXTURELAYERPROC, glFramebufferTextureLayer)     \
+    X(PFNGLFRAMEBUFFERTEXTUREPROC, glFramebufferTexture)               \
+    X(PFNGLVIEWPORTINDEXEDFPROC, glViewportIndexedf)                   \
     X(PFNGLCHECKFRAMEBUFFERSTATUSPROC, glCheckFramebufferStatus)       \
     X(PFNGLGENRENDERBUFFERSPROC, glGenRenderbuffers)                   \
     X(PFNGLDELETERENDERBUFFERSPROC, glDeleteRenderbuffers)             \
@@ -129,7 +135,9 @@ DEMO_GL_FUNCS(DEMO_GL_DECLARE_)
 #define glUniform1fv dgl_glUniform1fv
 #define glUniform2f dgl_glUniform2f
 #define glUniform2fv dgl_glUniform2fv
+#define glUniform2i dgl_glUniform2i
 #define glUniform3f dgl_glUniform3f
+#define glUniform3fv dgl_glUniform3fv
 #define glUniform4fv dgl_glUniform4fv
 #define glUniformMatrix4fv dgl_glUniformMatrix4fv
 #define glGenTextures dgl_glGenTextures
@@ -137,12 +145,16 @@ DEMO_GL_FUNCS(DEMO_GL_DECLARE_)
 #define glBindTexture dgl_glBindTexture
 #define glActiveTexture dgl_glActiveTexture
 #define glTexImage3D dgl_glTexImage3D
+#define glTexImage2D dgl_glTexImage2D
+#define glFramebufferTexture2D dgl_glFramebufferTexture2D
 #define glTexParameteri dgl_glTexParameteri
 #define glTexParameterfv dgl_glTexParameterfv
 #define glGenFramebuffers dgl_glGenFramebuffers
 #define glDeleteFramebuffers dgl_glDeleteFramebuffers
 #define glBindFramebuffer dgl_glBindFramebuffer
 #define glFramebufferTextureLayer dgl_glFramebufferTextureLayer
+#define glFramebufferTexture dgl_glFramebufferTexture
+#define glViewportIndexedf dgl_glViewportIndexedf
 #define glCheckFramebufferStatus dgl_glCheckFramebufferStatus
 #define glGenRenderbuffers dgl_glGenRenderbuffers
 #define glDeleteRenderbuffers dgl_glDeleteRenderbuffers
@@ -157,6 +169,12 @@ int demo_gl_load(void);
 /** Compiles and links a program from vertex + fragment source (a common
  *  "#version 450 core" header is prepended).  0 and a message on failure. */
 GLuint demo_gl_program(const char* name, const char* vs, const char* fs);
+/** A program whose fragment shader is the concatenation of fs_parts (after
+ *  the common #version line): library GLSL files first, then the demo's. */
+GLuint demo_gl_program_parts(const char* name, const char* vs, const char* const* fs_parts,
+                             int fs_count);
+/** The same with a geometry shader between them (gs may be NULL). */
+GLuint demo_gl_program_gs(const char* name, const char* vs, const char* gs, const char* fs);
 
 /** glGetError after a pass: prints the pass name and returns the number of
  *  errors drained (0 = clean). */

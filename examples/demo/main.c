@@ -3,7 +3,7 @@
  *
  *   demo                         default gallery into ./out/ + summary table
  *   demo --technique lispsm ...  one technique, all its pictures
- *   demo --test images|iou|measure   headless checks used by meson test
+ *   demo --test NAME             headless checks used by meson test
  *                                (exit 77 when no OSMesa context)
  */
 #include <errno.h>
@@ -38,6 +38,7 @@ typedef struct options {
     double scheme_np, scheme_fp;
     demo_select select;
     int camera_given;
+    int mindepth;
     double path[6 * 256]; /**< --camera FILE: eye and dir per frame */
     int path_count;
 } options;
@@ -51,8 +52,9 @@ static void usage(void) {
         "  --pseudo NP,FP          pseudo-near/far fractions for 'pseudo' (default 0.05,0)\n"
         "  --splits K              maps for the pssm techniques (1..16, default 4)\n"
         "  --scheme S              practical[:LAMBDA] | uniform | log | pseudo:NP,FP[,LAMBDA]\n"
-        "                          (default practical:0.5; NP, FP eye distances, [RHS] (4.1))\n"
-        "  --filter F              none | pcf2 | pcf3 | pcf5 | poisson | vsm | evsm (default pcf3)\n"
+        "                          (default practical:0.5; NP, FP fractions of the range, (4.1))\n"
+        "  --filter F              none | pcf2 | pcf3 | pcf5 | poisson | vsm | evsm | projblur\n"
+        "                          (default pcf3; projblur: [KOZ] 14.3.2 on the ground)\n"
         "  --light-angle E[,A]     sun elevation E and azimuth A in degrees (default 35,115)\n"
         "  --light-dir X,Y,Z       direction the light travels (instead of --light-angle)\n"
         "  --camera P|FILE         default | measure | street | high | room, or a path file of\n"
@@ -65,8 +67,12 @@ static void usage(void) {
         "  --select depth|best     split selection: eye depth or best resolution (ZZB09)\n"
         "  --offset K              normal-offset bias in texels (default 1)\n"
         "  --obj FILE              a Wavefront OBJ instead of the built-in scene\n"
+        "  --mindepth              [RHS] 4.3: min depth on GPU and CPU, LiSPSM sampling with the\n"
+        "                          camera / adjusted / pseudo near plane (camera street)\n"
         "  --out DIR               output directory (default ./out)\n"
-        "  --test images|iou|measure|select  headless checks (exit 0 pass, 1 fail, 77 skip)\n");
+        "  --test images|iou|measure|select|clone|mindepth|flicker\n"
+        "                          headless checks (exit 0 pass, 1 fail, 77 skip)\n"
+        "  --test bench-clone      time K passes against geometry cloning for K = 4, 8, 16\n");
 }
 
 static int parse_options(int argc, char** argv, options* o) {
@@ -128,7 +134,7 @@ static int parse_options(int argc, char** argv, options* o) {
             NEED();
             int k = demo_filter_parse(val);
             if (k < 0) {
-                fprintf(stderr, "demo: unknown filter %s (none pcf2 pcf3 pcf5 poisson vsm evsm)\n", val);
+                fprintf(stderr, "demo: unknown filter %s (none pcf2 pcf3 pcf5 poisson vsm evsm projblur)\n", val);
                 return -1;
             }
             o->filter = (demo_filter)k;
@@ -198,6 +204,8 @@ static int parse_options(int argc, char** argv, options* o) {
                 fprintf(stderr, "demo: --offset 0..16 texels\n");
                 return -1;
             }
+        } else if (!strcmp(a, "--mindepth")) {
+            o->mindepth = 1;
         } else if (!strcmp(a, "--obj")) {
             NEED();
             o->obj = val;
@@ -487,6 +495,10 @@ static int run_technique(const options* o, demo_renderer* r, const demo_view* v,
         if (e < 0) return -1;
         res->gl_errors += e;
 
+        demo_image third;
+        int e3 = demo_third_person(r, v, &sh, &p, &third);
+        if (e3 < 0) return -1;
+        res->gl_errors += e3;
         char title[160];
         snprintf(title, sizeof title, "%s: m_x, m_z along the view vector", res->label);
         demo_image graph;
@@ -500,10 +512,10 @@ static int run_technique(const options* o, demo_renderer* r, const demo_view* v,
         snprintf(gl, sizeof gl, "grid: %g texels per cell", (double)o->grid);
         demo_image_label(&res->grid, 8, 40, 1, gl);
         demo_image_label(&res->light, 8, res->light.h - 20, 1, res->label);
-        const demo_image* all[6] = {&res->shaded, &res->sampling, &res->splits, &res->grid,
-                                    &res->light, &graph};
+        const demo_image* all[7] = {&res->shaded, &res->sampling, &res->splits, &res->grid,
+                                    &res->light, &graph, &third};
         res->min_nonblank = 1.0;
-        for (int k = 0; k < 6; ++k) {
+        for (int k = 0; k < 7; ++k) {
             double nb = demo_image_nonblank(all[k]);
             if (nb < res->min_nonblank) res->min_nonblank = nb;
         }
@@ -514,7 +526,9 @@ static int run_technique(const options* o, demo_renderer* r, const demo_view* v,
         w |= write_png(o, res->label, "grid", &res->grid);
         w |= write_png(o, res->label, "light", &res->light);
         w |= write_png(o, res->label, "error", &graph);
+        w |= write_png(o, res->label, "third", &third);
         demo_image_free(&graph);
+        demo_image_free(&third);
         if (w) return -1;
     }
     res->ok = 1;
@@ -548,7 +562,7 @@ static int make_sheet(const options* o, tech_result* all, int n_all) {
     for (int i = 0; i < n_all; ++i)
         if (!all[i].own_view) res[n++] = &all[i];
     if (n == 0) return 0;
-    int cw = 360, ch = (int)lround(360.0 * res[0]->shaded.h / res[0]->shaded.w);
+    int cw = 320, ch = (int)lround(320.0 * res[0]->shaded.h / res[0]->shaded.w);
     int hdr = 28;
     demo_image sheet;
     if (demo_image_alloc(&sheet, 4 * cw, hdr + n * ch)) return -1;
@@ -565,6 +579,7 @@ static int make_sheet(const options* o, tech_result* all, int n_all) {
             demo_image_blit(&sheet, c * cw, hdr + i * ch, &small);
             demo_image_free(&small);
         }
+        demo_image_label(&sheet, 6, hdr + i * ch + 6, 2, res[i]->label);
     }
     int rc = write_png(o, "sheet", "techniques", &sheet);
     demo_image_free(&sheet);
@@ -670,8 +685,10 @@ static int run_gallery(const options* o, int single, gallery_report* rep) {
             continue;
         }
         res[n].own_view = own_view;
-        printf("%-14s done: %s/%s_*.png (matrices from %s%s)\n", res[n].label, o->out,
-               res[n].label, res[n].source, own_view ? "; room camera" : "");
+        printf("%-14s done: %s/%s_*.png (matrices from %s%s%s%s)\n", res[n].label, o->out,
+               res[n].label, res[n].source, own_view ? "; room camera" : "",
+               res[n].sh.status != SWARP_OK ? "; " : "",
+               res[n].sh.status != SWARP_OK ? swarp_status_name(res[n].sh.status) : "");
         if (single) {
             printf("  timing: setup %.2f us (median of 101 calls);", res[n].setup_us);
             for (int k = 0; k < res[n].passes - 1; ++k)
@@ -691,8 +708,7 @@ static int run_gallery(const options* o, int single, gallery_report* rep) {
     if (n > 0) {
         printf("\nsummary (%dx%d, map %d^2, camera %s, filter %s; %s)\n", o->w, o->h, o->map,
                o->camera, demo_filter_name(o->filter),
-               demo_have_error_model() ? "predicted m from the library"
-                                       : "error model not linked: predictions n/a");
+               "predicted m from the library's error model");
         printf("%-14s %9s %6s %10s %9s %9s %10s %10s %9s %9s\n", "technique", "setup_us",
                "passes", "texels", "shadow_ms", "main_ms", "meas_mz_mx", "pred_mz_mx",
                "meas/pred", "gl_err");
@@ -719,7 +735,7 @@ static int run_gallery(const options* o, int single, gallery_report* rep) {
     return rc;
 }
 
-static int run_frames(const options* o) {
+static int run_frames(const options* o, double* out_max_drift) {
     demo_view v;
     memset(&v, 0, sizeof v);
     v.w = o->w;
@@ -787,6 +803,7 @@ static int run_frames(const options* o) {
         prev_frac[0] = frac[0];
         prev_frac[1] = frac[1];
         prev_map = (int)mi;
+        if (out_max_drift && !isnan(drift) && drift > *out_max_drift) *out_max_drift = drift;
         printf("frame %d/%d: setup %.2f us, %d shadow passes %.2f ms, main %.2f ms, gl errors %d, "
                "probe in map %u, sub-texel drift %.4f texel\n",
                f + 1, o->frames, res.setup_us, res.passes - 1, res.shadow_ms_total, res.main_ms,
@@ -861,75 +878,88 @@ static int test_iou(const options* o, demo_ctx* ctx) {
     v.cam.near = 1;
     v.cam.far = 150;
     v.light.type = SWARP_LIGHT_DIRECTIONAL;
-    v.light.direction = (swarp_vec3){0.45, -1, 0.3};
     demo_view_update(&v);
     demo_renderer r;
     if (demo_render_init(&r, &scene, v.w, v.h, o->map, DEMO_MAX_SPLITS)) return 1;
-    /* the geometric shadow: the box's corners projected along the light
-     * onto y = 0, and their convex hull */
-    double pts[8][2], hull[10][2];
-    const swarp_vec3 ld = v.light.direction;
-    for (int i = 0; i < 8; ++i) {
-        double x = (i & 1) ? caster.max.x : caster.min.x;
-        double y = (i & 2) ? caster.max.y : caster.min.y;
-        double z = (i & 4) ? caster.max.z : caster.min.z;
-        double t = -y / ld.y;
-        pts[i][0] = x + t * ld.x;
-        pts[i][1] = z + t * ld.z;
-    }
-    int nh = hull2(pts, 8, hull);
-    const demo_technique techs[3] = {DEMO_TECH_UNIFORM, DEMO_TECH_LISPSM, DEMO_TECH_PSSM};
+    const demo_technique techs[8] = {DEMO_TECH_UNIFORM, DEMO_TECH_LISPSM, DEMO_TECH_PSSM,
+                                     DEMO_TECH_PSM, DEMO_TECH_PSSM_LISPSM, DEMO_TECH_PSSM_STABLE,
+                                     DEMO_TECH_GMNPR, DEMO_TECH_PSM_CUBE};
+    /* two lights: the first lies behind the viewer as PSM sees it (the
+     * camera looks steeply down, the sun is high: SWARP_INFO_PSM_INVERSE,
+     * Kozlov's inverse projection, [KOZ] §14.2.1), the second, low and
+     * ahead, in front of it (the ordinary PSM) */
+    const swarp_vec3 lights[2] = {{0.45, -1, 0.3}, {0.2, -0.5, 1}};
     int fails = 0, ran = 0;
     float* tex = malloc(sizeof(float) * 4 * (size_t)v.w * v.h);
     float* pos = malloc(sizeof(float) * 4 * (size_t)v.w * v.h);
-    for (int k = 0; k < 3 && tex && pos; ++k) {
-        if (!demo_technique_available(techs[k])) {
-            printf("iou %-12s skipped: not in this build yet\n", demo_technique_name(techs[k]));
-            continue;
+    for (int li = 0; li < 2; ++li) {
+        v.light.direction = lights[li];
+        /* the geometric shadow: the box's corners projected along the light
+         * onto y = 0, and their convex hull */
+        double pts[8][2], hull[10][2];
+        const swarp_vec3 ld = v.light.direction;
+        for (int i = 0; i < 8; ++i) {
+            double x = (i & 1) ? caster.max.x : caster.min.x;
+            double y = (i & 2) ? caster.max.y : caster.min.y;
+            double z = (i & 4) ? caster.max.z : caster.min.z;
+            double t = -y / ld.y;
+            pts[i][0] = x + t * ld.x;
+            pts[i][1] = z + t * ld.z;
         }
-        demo_shadow_request req;
-        memset(&req, 0, sizeof req);
-        req.technique = techs[k];
-        req.splits = 4;
-        req.scheme_lambda = 0.5;
-        req.map_res = o->map;
-        req.screen_w = v.w;
-        req.screen_h = v.h;
-        demo_shadow sh;
-        if (demo_shadow_setup(&v.cam, &v.light, &scene.box, &req, &sh)) {
-            ++fails;
-            continue;
+        int nh = hull2(pts, 8, hull);
+        for (int k = 0; k < 8 && tex && pos; ++k) {
+            if (!demo_technique_available(techs[k])) {
+                printf("iou %-12s not in this build\n", demo_technique_name(techs[k]));
+                ++fails;
+                continue;
+            }
+            demo_shadow_request req;
+            memset(&req, 0, sizeof req);
+            req.technique = techs[k];
+            req.splits = 4;
+            req.scheme_lambda = 0.5;
+            req.map_res = o->map;
+            req.screen_w = v.w;
+            req.screen_h = v.h;
+            demo_shadow sh;
+            if (demo_shadow_setup(&v.cam, &v.light, &scene.box, &req, &sh)) {
+                ++fails;
+                continue;
+            }
+            int errs = demo_render_shadow(&r, &sh, DEMO_FILTER_PCF2, NULL);
+            demo_main_params p;
+            memset(&p, 0, sizeof p);
+            memcpy(p.view, v.view, sizeof p.view);
+            memcpy(p.proj, v.proj, sizeof p.proj);
+            p.light_dir[0] = (float)ld.x;
+            p.light_dir[1] = (float)ld.y;
+            p.light_dir[2] = (float)ld.z;
+            p.filter = DEMO_FILTER_PCF2;
+            p.mode = DEMO_MODE_SHADED;
+            p.vw = v.w;
+            p.vh = v.h;
+            errs += demo_render_main(&r, &sh, &p, NULL);
+            demo_render_read_aux(&r, tex, pos);
+            long inter = 0, uni = 0, ground = 0;
+            for (size_t i = 0; i < (size_t)v.w * v.h; ++i) {
+                const float* q = pos + 4 * i;
+                if (q[3] < 0 || fabsf(q[1]) > 1e-3f) continue; /* not ground */
+                ++ground;
+                int rendered = q[3] < 0.5f;
+                int geometric = inside_hull(hull, nh, q[0], q[2]);
+                inter += rendered && geometric;
+                uni += rendered || geometric;
+            }
+            double iou = uni ? (double)inter / uni : 0;
+            int ok = iou >= 0.95 && errs == 0 && uni > 200;
+            printf("iou %-12s light %s: %.4f (%ld shadow pixels of %ld ground pixels, gl errors "
+                   "%d%s%s) %s\n",
+                   demo_technique_name(techs[k]), li ? "2" : "1", iou, uni,
+                   ground, errs, sh.status != SWARP_OK ? ", " : "",
+                   sh.status != SWARP_OK ? swarp_status_name(sh.status) : "", ok ? "ok" : "FAIL");
+            fails += !ok;
+            ++ran;
         }
-        int errs = demo_render_shadow(&r, &sh, DEMO_FILTER_PCF2, NULL);
-        demo_main_params p;
-        memset(&p, 0, sizeof p);
-        memcpy(p.view, v.view, sizeof p.view);
-        memcpy(p.proj, v.proj, sizeof p.proj);
-        p.light_dir[0] = (float)ld.x;
-        p.light_dir[1] = (float)ld.y;
-        p.light_dir[2] = (float)ld.z;
-        p.filter = DEMO_FILTER_PCF2;
-        p.mode = DEMO_MODE_SHADED;
-        p.vw = v.w;
-        p.vh = v.h;
-        errs += demo_render_main(&r, &sh, &p, NULL);
-        demo_render_read_aux(&r, tex, pos);
-        long inter = 0, uni = 0, ground = 0;
-        for (size_t i = 0; i < (size_t)v.w * v.h; ++i) {
-            const float* q = pos + 4 * i;
-            if (q[3] < 0 || fabsf(q[1]) > 1e-3f) continue; /* not ground */
-            ++ground;
-            int rendered = q[3] < 0.5f;
-            int geometric = inside_hull(hull, nh, q[0], q[2]);
-            inter += rendered && geometric;
-            uni += rendered || geometric;
-        }
-        double iou = uni ? (double)inter / uni : 0;
-        int ok = iou >= 0.95 && errs == 0 && uni > 200;
-        printf("iou %-12s %.4f (%ld shadow pixels of %ld ground pixels, gl errors %d) %s\n",
-               demo_technique_name(techs[k]), iou, uni, ground, errs, ok ? "ok" : "FAIL");
-        fails += !ok;
-        ++ran;
     }
     free(tex);
     free(pos);
@@ -954,11 +984,16 @@ static int test_measure(const options* o) {
     if (demo_scene_default(&scene)) return 1;
     demo_renderer r;
     if (demo_render_init(&r, &scene, v.w, v.h, o->map, DEMO_MAX_SPLITS)) return 1;
-    const demo_technique techs[3] = {DEMO_TECH_UNIFORM, DEMO_TECH_LISPSM, DEMO_TECH_PSSM};
+    /* the issue asks for uniform, LiSPSM and PSSM(4); the other techniques
+     * the error model describes are checked too */
+    const demo_technique techs[8] = {DEMO_TECH_UNIFORM, DEMO_TECH_LISPSM, DEMO_TECH_PSSM,
+                                     DEMO_TECH_REPAR,   DEMO_TECH_GMNPR,  DEMO_TECH_PSEUDO,
+                                     DEMO_TECH_PSM,     DEMO_TECH_PSSM_LISPSM};
     int fails = 0, ran = 0;
-    for (int k = 0; k < 3; ++k) {
+    for (int k = 0; k < 8; ++k) {
         if (!demo_technique_available(techs[k])) {
-            printf("measure %-12s skipped: not in this build yet\n", demo_technique_name(techs[k]));
+            printf("measure %-12s not in this build\n", demo_technique_name(techs[k]));
+            ++fails;
             continue;
         }
         tech_result res;
@@ -970,14 +1005,17 @@ static int test_measure(const options* o) {
         print_measure(&res);
         int bad = res.gl_errors != 0 || res.nrows < 4;
         int compared = 0;
+        double worst = 0;
         for (int i = 0; i < res.nrows; ++i) {
             const demo_measure_row* m = &res.rows[i];
             if (isnan(m->pred_mz)) continue;
             ++compared;
+            worst = fmax(worst, fabs(m->ratio_mz - 1));
             if (!(fabs(m->ratio_mz - 1) <= 0.10)) bad = 1;
         }
-        printf("measure %-12s %s (%d depth bins compared with the library's m_z)\n", res.label,
-               bad ? "FAIL" : compared ? "ok" : "measured only (error model not linked)", compared);
+        printf("measure %-12s %s (%d depth bins compared with the library's m_z, worst |ratio - 1| "
+               "%.4f)\n", res.label, bad ? "FAIL" : compared ? "ok" : "no depth bin to compare",
+               compared, worst);
         fails += bad;
         ran += compared > 0;
         free_result(&res);
@@ -1008,10 +1046,12 @@ static int test_select(const options* o) {
         demo_technique t;
         demo_select sel;
         const char* camera;
-    } cases[3] = {{DEMO_TECH_PSSM, DEMO_SELECT_DEPTH, "default"},
+    } cases[4] = {{DEMO_TECH_PSSM, DEMO_SELECT_DEPTH, "default"},
                   {DEMO_TECH_PSSM, DEMO_SELECT_BEST, "high"},
-                  {DEMO_TECH_LIXEL, DEMO_SELECT_LIXEL, "room"}};
-    for (int c = 0; c < 3 && tex && pos; ++c) {
+                  {DEMO_TECH_LIXEL, DEMO_SELECT_LIXEL, "room"},
+                  {DEMO_TECH_PSM_CUBE, DEMO_SELECT_CUBE, "default"}};
+    const double band = 0.2; /* blend band of the depth case */
+    for (int c = 0; c < 4 && tex && pos; ++c) {
         if (camera_preset(cases[c].camera, v.w, v.h, &v.cam)) return 1;
         light_from_options(o, &v.light);
         demo_view_update(&v);
@@ -1036,10 +1076,12 @@ static int test_select(const options* o) {
         memcpy(p.proj, v.proj, sizeof p.proj);
         p.light_dir[1] = -1;
         p.mode = DEMO_MODE_SHADED;
+        p.blend = (float)band;
         p.vw = v.w;
         p.vh = v.h;
         errs += demo_render_main(&r, &sh, &p, NULL);
         demo_render_read_aux(&r, tex, pos);
+        long wn = 0, wdiff = 0, wband = 0;
         swarp_bias_map maps[DEMO_MAX_SPLITS];
         for (int i = 0; i < sh.count; ++i) {
             memset(&maps[i], 0, sizeof maps[i]);
@@ -1058,8 +1100,30 @@ static int test_select(const options* o) {
             swarp_status st = swarp_cascade_select_depth(sh.split, (size_t)sh.count, z, &depth_i);
             if (sh.select == DEMO_SELECT_DEPTH) {
                 want = depth_i;
+                /* the blend weight against swarp_cascade_blend */
+                uint32_t bi;
+                double bw;
+                if (!swarp_status_is_error(
+                        swarp_cascade_blend(sh.split, (size_t)sh.count, z, band, &bi, &bw)) &&
+                    bi == depth_i) {
+                    double got_w = 1.0 - 2.0 * (tex[4 * k + 2] - floorf(tex[4 * k + 2]));
+                    ++wn;
+                    wband += bw < 1.0;
+                    wdiff += fabs(got_w - bw) > 2e-3;
+                }
             } else if (sh.select == DEMO_SELECT_BEST) {
                 st = swarp_cascade_select_best(maps, (size_t)sh.count, &q, depth_i, &want, NULL);
+            } else if (sh.select == DEMO_SELECT_CUBE) {
+                /* [KOZ] Listing 14-1 on the CPU: the face of V, mapped to
+                 * the index of that face's map */
+                swarp_vec4 hv;
+                swarp_mat4_transform(&sh.cube_camera, &q, &hv);
+                swarp_vec3 V = {hv.x / hv.w, hv.y / hv.w, hv.z / hv.w};
+                uint32_t face = 99;
+                st = swarp_cube_lookup(&sh.cube_light, NULL, &V, &face, NULL, NULL);
+                want = 99;
+                for (int i = 0; i < sh.count; ++i)
+                    if (sh.cube_face[i] == face) want = (uint32_t)i;
             } else {
                 st = swarp_lixel_select(sh.light, (size_t)(sh.count - 1), &q, &want);
             }
@@ -1075,9 +1139,17 @@ static int test_select(const options* o) {
         /* every map must actually be chosen somewhere, or the test says
          * nothing about the selection */
         int ok = errs == 0 && n > 1000 && frac <= 0.005 && used >= 2;
+        if (sh.select == DEMO_SELECT_DEPTH) {
+            printf("blend  pssm   depth: %ld pixels (%ld in blend bands), %ld blend weights differ "
+                   "from swarp_cascade_blend by > 2e-3\n", wn, wband, wdiff);
+            ok = ok && wn > 1000 && wband > 500 && (double)wdiff / (double)wn <= 0.005;
+        }
         printf("select %-6s %-5s: %ld pixels, %ld differ from the library (%.3f%%), %d maps used %s\n",
                demo_technique_name(cases[c].t),
-               cases[c].sel == DEMO_SELECT_DEPTH ? "depth" : cases[c].sel == DEMO_SELECT_BEST ? "best" : "lixel",
+               cases[c].sel == DEMO_SELECT_DEPTH  ? "depth"
+               : cases[c].sel == DEMO_SELECT_BEST ? "best"
+               : cases[c].sel == DEMO_SELECT_CUBE ? "cube"
+                                                  : "lixel",
                n, diff, 100 * frac, used, ok ? "ok" : "FAIL");
         fails += !ok;
     }
@@ -1086,6 +1158,190 @@ static int test_select(const options* o) {
     demo_render_free(&r);
     demo_scene_free(&scene);
     return fails ? 1 : 0;
+}
+
+/* Geometry cloning against K passes: the same depth in every texel of
+ * every layer (the same triangles rasterised with the same matrices), and
+ * the cost of both for K = 4, 8, 16 ([RHS] §3.3.6, Tables 7.1/7.2 for the
+ * shape of the result). */
+static int test_clone(const options* o, int bench) {
+    demo_view v;
+    memset(&v, 0, sizeof v);
+    v.w = o->w;
+    v.h = o->h;
+    if (camera_preset("default", v.w, v.h, &v.cam)) return 1;
+    light_from_options(o, &v.light);
+    demo_view_update(&v);
+    demo_scene scene;
+    if (demo_scene_default(&scene)) return 1;
+    demo_renderer r;
+    if (demo_render_init(&r, &scene, v.w, v.h, o->map, DEMO_MAX_SPLITS)) return 1;
+    size_t n = (size_t)o->map * o->map;
+    float* a = malloc(sizeof(float) * n);
+    int fails = 0;
+    const int ks[3] = {4, 8, 16};
+    if (bench)
+        printf("%-4s %16s %16s %8s  (median of 5, ms, glFinish-bracketed, %d^2 maps, %zu triangles)\n",
+               "K", "K passes", "1 pass (clone)", "ratio", o->map, scene.count / 3);
+    for (int c = 0; c < 3 && a; ++c) {
+        demo_shadow_request req;
+        memset(&req, 0, sizeof req);
+        req.technique = DEMO_TECH_PSSM;
+        req.splits = ks[c];
+        req.scheme_lambda = 0.5;
+        req.map_res = o->map;
+        req.screen_w = v.w;
+        req.screen_h = v.h;
+        demo_shadow sh;
+        if (demo_shadow_setup(&v.cam, &v.light, &scene.box, &req, &sh)) {
+            ++fails;
+            continue;
+        }
+        int errs = 0;
+        double multi[5], single[5];
+        for (int rep = 0; rep < (bench ? 5 : 1); ++rep) {
+            double ms[DEMO_MAX_SPLITS];
+            double t0 = demo_now_ms();
+            errs += demo_render_shadow(&r, &sh, DEMO_FILTER_PCF2, ms);
+            multi[rep] = demo_now_ms() - t0;
+            errs += demo_render_shadow_single(&r, &sh, &single[rep]);
+        }
+        if (bench) {
+            qsort(multi, 5, sizeof multi[0], cmp_d);
+            qsort(single, 5, sizeof single[0], cmp_d);
+            printf("%-4d %16.2f %16.2f %8.2f\n", ks[c], multi[2], single[2], single[2] / multi[2]);
+        }
+        /* K passes, read every layer back; then the clone, read again */
+        long differ = 0, covered = 0;
+        errs += demo_render_shadow(&r, &sh, DEMO_FILTER_PCF2, NULL);
+        float* multi_depth = malloc(sizeof(float) * n * (size_t)sh.count);
+        if (!multi_depth) return 1;
+        for (int i = 0; i < sh.count; ++i) errs += demo_render_read_depth(&r, i, multi_depth + n * (size_t)i);
+        errs += demo_render_shadow_single(&r, &sh, NULL);
+        for (int i = 0; i < sh.count; ++i) {
+            errs += demo_render_read_depth(&r, i, a);
+            const float* m = multi_depth + n * (size_t)i;
+            for (size_t k = 0; k < n; ++k) {
+                covered += m[k] < 1.0f;
+                differ += a[k] != m[k];
+            }
+        }
+        free(multi_depth);
+        int ok = errs == 0 && differ == 0 && covered > (long)n / 4;
+        if (!bench || !ok)
+            printf("clone K=%-2d: %ld texels with geometry, %ld differ from the K-pass maps, gl errors %d %s\n",
+                   ks[c], covered, differ, errs, ok ? "ok" : "FAIL");
+        fails += !ok;
+    }
+    free(a);
+    demo_render_free(&r);
+    demo_scene_free(&scene);
+    return fails ? 1 : 0;
+}
+
+/* [RHS] §4.3 / Figs. 7.8-7.9: the min-depth near plane measured on the GPU
+ * and on the CPU, and the sampling rate of LiSPSM with the camera's near
+ * plane, the adjusted near plane and the pseudo-near plane side by side. */
+static int run_mindepth(const options* o, int test) {
+    demo_view v;
+    memset(&v, 0, sizeof v);
+    v.w = o->w;
+    v.h = o->h;
+    if (camera_preset(o->camera_given ? o->camera : "street", v.w, v.h, &v.cam)) return 2;
+    light_from_options(o, &v.light);
+    demo_view_update(&v);
+    demo_scene scene;
+    if (load_scene(o, &scene)) return 2;
+    demo_renderer r;
+    if (demo_render_init(&r, &scene, v.w, v.h, o->map, DEMO_MAX_SPLITS)) return 2;
+    demo_mindepth_result md;
+    int rc = demo_mindepth(&r, &v, &md) ? 1 : 0;
+    printf("min depth of the view (camera near %.3g, far %.3g):\n", v.cam.near, v.cam.far);
+    printf("  GPU 2x2 min chain (%d passes) %.6f   [depth pass %.2f ms, chain + 1-texel read-back %.2f ms]\n",
+           md.levels, md.gpu_min, md.depth_pass_ms, md.chain_ms);
+    printf("  CPU swarp_mindepth_pyramid    %.6f   [full read-back %.2f ms, reduction %.3f ms]\n",
+           md.cpu_pyramid_min, md.readback_ms, md.cpu_pyramid_ms);
+    printf("  CPU swarp_mindepth_direct     %.6f   [reduction %.3f ms]\n", md.cpu_direct_min,
+           md.cpu_direct_ms);
+    printf("  adjusted near plane (swarp_mindepth_near) %.6f\n", md.adjusted_near);
+    int same = md.gpu_min == md.cpu_pyramid_min && md.gpu_min == md.cpu_direct_min;
+    int safe = md.adjusted_near <= md.gpu_min && md.adjusted_near >= v.cam.near;
+    if (!same || !safe || md.gl_errors) {
+        printf("  FAIL: %s%s%s\n", same ? "" : "GPU and CPU minima differ; ",
+               safe ? "" : "adjusted near clips what the camera saw; ", md.gl_errors ? "GL errors" : "");
+        rc = 1;
+    }
+    if (!test && rc == 0) {
+        /* sampling rate: camera near | adjusted near | pseudo-near */
+        if (mkdir_p(o->out)) return 2;
+        const char* names[3] = {"near", "adjusted", "pseudo"};
+        for (int k = 0; k < 3; ++k) {
+            demo_view vk = v;
+            if (k == 1) vk.cam.near = md.adjusted_near;
+            demo_view_update(&vk);
+            options q = *o;
+            q.pseudo_near = k == 2 ? 0.05 : 0;
+            q.pseudo_far = 0;
+            tech_result res;
+            demo_technique t = k == 2 ? DEMO_TECH_PSEUDO : DEMO_TECH_LISPSM;
+            q.out = o->out;
+            char label[64];
+            snprintf(label, sizeof label, "mindepth_%s", names[k]);
+            if (run_technique(&q, &r, &vk, &scene.box, t, 1, 0, &res)) {
+                rc = 1;
+                continue;
+            }
+            demo_main_params p;
+            memset(&p, 0, sizeof p);
+            memcpy(p.view, vk.view, sizeof p.view);
+            memcpy(p.proj, vk.proj, sizeof p.proj);
+            p.light_dir[0] = (float)vk.light.direction.x;
+            p.light_dir[1] = (float)vk.light.direction.y;
+            p.light_dir[2] = (float)vk.light.direction.z;
+            p.mode = DEMO_MODE_SAMPLING;
+            p.filter = o->filter;
+            p.normal_offset = o->offset;
+            p.vw = vk.w;
+            p.vh = vk.h;
+            res.gl_errors += demo_render_main(&r, &res.sh, &p, NULL);
+            demo_image im;
+            if (read_picture(&r, vk.w, vk.h, &im)) return 2;
+            char cap[160];
+            snprintf(cap, sizeof cap, "LiSPSM, %s: near %.2f, predicted max m_z %.2f",
+                     k == 0 ? "camera near" : k == 1 ? "adjusted near [RHS] 4.3" : "pseudo-near 0.05 (4.2)",
+                     res.sh.near, res.sh.predicted_max_mz);
+            demo_image_label(&im, 8, 8, 1, cap);
+            demo_image_sampling_legend(&im, 20, vk.h - 44, vk.w / 2 > 420 ? 420 : vk.w / 2);
+            rc |= write_png(o, label, "sampling", &im) ? 1 : 0;
+            printf("  %-28s view range [%.3f, %.1f], n' %.3f, predicted max m_x %.3f, m_z %.3f -> %s/%s_sampling.png\n",
+                   cap, res.sh.near, res.sh.far, res.sh.n_prime[0], res.sh.predicted_max_mx,
+                   res.sh.predicted_max_mz, o->out, label);
+            if (res.gl_errors) rc = 1;
+            demo_image_free(&im);
+            free_result(&res);
+        }
+    }
+    demo_render_free(&r);
+    demo_scene_free(&scene);
+    return rc;
+}
+
+/* [RHS] §3.5: a fixed ground point keeps its place inside its texel while
+ * the camera moves and turns (stabilised cascades), and does not without
+ * stabilisation (the control that shows the check can fail). */
+static int test_flicker(const options* o) {
+    options q = *o;
+    q.frames = 8;
+    q.splits = 4;
+    double drift_stable = 0, drift_plain = 0;
+    q.technique = DEMO_TECH_PSSM_STABLE;
+    int rc = run_frames(&q, &drift_stable);
+    q.technique = DEMO_TECH_PSSM;
+    rc |= run_frames(&q, &drift_plain);
+    int ok = rc == 0 && drift_stable < 1e-4 && drift_plain > 1e-2;
+    printf("flicker: largest sub-texel drift per frame: pssm-stable %.6f, pssm %.6f %s\n",
+           drift_stable, drift_plain, ok ? "ok" : "FAIL");
+    return ok ? 0 : 1;
 }
 
 static int test_images(const options* o) {
@@ -1098,7 +1354,7 @@ static int test_images(const options* o) {
     double nonblank = rep.min_nonblank;
     if (rc) return rc == 2 ? 1 : rc;
     int fails = 0, checked = 0;
-    const char* what[6] = {"shaded", "sampling", "splits", "grid", "light", "error"};
+    const char* what[7] = {"shaded", "sampling", "splits", "grid", "light", "error", "third"};
     int produced = 0;
     for (int t = 0; t < DEMO_TECH_COUNT; ++t) {
         if (!rep.produced[t]) {
@@ -1113,7 +1369,7 @@ static int test_images(const options* o) {
             snprintf(label, sizeof label, "%s%d", demo_technique_name((demo_technique)t), q.splits);
         else
             snprintf(label, sizeof label, "%s", demo_technique_name((demo_technique)t));
-        for (int k = 0; k < 6; ++k) {
+        for (int k = 0; k < 7; ++k) {
             char path[1200];
             snprintf(path, sizeof path, "%s/%s_%s.png", q.out, label, what[k]);
             FILE* f = fopen(path, "rb");
@@ -1159,6 +1415,10 @@ int main(int argc, char** argv) {
         if (!strcmp(o.test, "iou")) rc = test_iou(&o, ctx);
         else if (!strcmp(o.test, "measure")) rc = test_measure(&o);
         else if (!strcmp(o.test, "select")) rc = test_select(&o);
+        else if (!strcmp(o.test, "clone")) rc = test_clone(&o, 0);
+        else if (!strcmp(o.test, "mindepth")) rc = run_mindepth(&o, 1);
+        else if (!strcmp(o.test, "flicker")) rc = test_flicker(&o);
+        else if (!strcmp(o.test, "bench-clone")) rc = test_clone(&o, 1);
         else {
             fprintf(stderr, "demo: unknown test %s\n", o.test);
             rc = 2;
@@ -1166,6 +1426,13 @@ int main(int argc, char** argv) {
         demo_ctx_destroy(ctx);
         return rc;
     }
-    if (o.frames > 0) return run_frames(&o);
+    if (o.frames > 0) return run_frames(&o, NULL);
+    if (o.mindepth) {
+        demo_ctx* ctx = open_context();
+        if (!ctx) return 2;
+        int rc = run_mindepth(&o, 0);
+        demo_ctx_destroy(ctx);
+        return rc;
+    }
     return run_gallery(&o, o.technique >= 0, NULL);
 }

@@ -76,7 +76,9 @@ int demo_measure(const demo_view* v, const demo_shadow* sh, int map_res, const f
             const float* t0 = tex + 4 * ((size_t)y * w + x);
             const float* t1 = tex + 4 * ((size_t)(y + 1) * w + x);
             const float* t2 = tex + 4 * ((size_t)y * w + x + 1);
-            if (t0[2] != t1[2] || t0[2] != t2[2]) continue; /* split border */
+            /* the integer part is the map index (the fraction holds the
+             * blend weight) */
+            if ((int)t0[2] != (int)t1[2] || (int)t0[2] != (int)t2[2]) continue; /* border */
             const float* p0 = pos + 4 * ((size_t)y * w + x);
             const float* p1 = pos + 4 * ((size_t)(y + 1) * w + x);
             const float* p2 = pos + 4 * ((size_t)y * w + x + 1);
@@ -153,11 +155,10 @@ int demo_error_graph(const demo_view* v, const demo_shadow* sh, int map_res,
     demo_image_fill(out, 0, 0, W, H, white);
     enum { NS = 600 };
     double zs[NS], mx[NS], mz[NS];
-    int have = demo_have_error_model();
     double lo = INFINITY, hi = -INFINITY;
     for (int i = 0; i < NS; ++i) {
         zs[i] = sh->near + (sh->far - sh->near) * i / (NS - 1.0);
-        if (!have || demo_predict(sh, v->cam.fovy, v->w, v->h, map_res, zs[i], &mx[i], &mz[i])) {
+        if (demo_predict(sh, v->cam.fovy, v->w, v->h, map_res, zs[i], &mx[i], &mz[i])) {
             mx[i] = mz[i] = NAN;
             continue;
         }
@@ -219,9 +220,9 @@ int demo_error_graph(const demo_view* v, const demo_shadow* sh, int map_res,
     demo_image_text(out, L, 10, 2, title, black);
     demo_image_text(out, W / 2 - 60, H - 22, 1, "eye depth z along the view vector", black);
     demo_image_fill(out, W - 330, T + 6, 14, 4, orange);
-    demo_image_text(out, W - 310, T + 2, 1, have ? "m_x (library, [RHS] (2.3)-(2.8))" : "m_x: error model not linked", black);
+    demo_image_text(out, W - 310, T + 2, 1, sh->model_applies ? "m_x (library, [RHS] (2.3)-(2.8))" : "m_x: model does not apply", black);
     demo_image_fill(out, W - 330, T + 22, 14, 4, blue);
-    demo_image_text(out, W - 310, T + 18, 1, have ? "m_z (library)" : "m_z: error model not linked", black);
+    demo_image_text(out, W - 310, T + 18, 1, sh->model_applies ? "m_z (library)" : "m_z: model does not apply", black);
     demo_image_fill(out, W - 328, T + 34, 7, 7, black);
     demo_image_text(out, W - 310, T + 34, 1, "measured from the render (squares)", black);
     demo_image_text(out, 8, T - 14, 1, "screen px per texel", black);

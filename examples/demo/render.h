@@ -24,15 +24,20 @@ typedef enum demo_filter {
     DEMO_FILTER_POISSON,  /**< 16 bilinear taps on a Poisson disk (swarp_pcf_poisson_disk) */
     DEMO_FILTER_VSM,      /**< variance shadow map, moments 3x3-filtered [VSM] (3.1)-(3.3) */
     DEMO_FILTER_EVSM,     /**< exponential VSM [VSM] §4.2, c from swarp_evsm_max_exponent */
+    DEMO_FILTER_PROJBLUR, /**< [KOZ] §14.3.2 projective blur on the ground, pcf3 elsewhere */
     DEMO_FILTER_COUNT
 } demo_filter;
 
 typedef struct demo_renderer {
     GLuint vao, vbo;
     int vertex_count;
-    GLuint prog_depth, prog_moment, prog_main;
+    GLuint prog_depth, prog_moment, prog_clone, prog_main;
     GLuint shadow_tex, shadow_fbo;
-    GLuint moment_tex;         /**< RGBA32F array: VSM / EVSM moments per map */
+    GLuint moment_tex;         /**< RGBA32F array: VSM / EVSM moments, blur colour (lazy) */
+    GLuint blur_tex;           /**< RGBA32F array: projective blur ping-pong (lazy) */
+    GLuint prog_receiver, prog_blur;
+    float blur_sigma;          /**< projective blur Gaussian sigma, texels */
+    double blur_ms;            /**< time of the last blur passes */
     float poisson[32];         /**< 16 unit-disk points (swarp_pcf_poisson_disk) */
     float evsm_c;              /**< EVSM exponent (swarp_evsm_max_exponent, fp32) */
     int map_res, layers;
@@ -52,8 +57,17 @@ void demo_render_free(demo_renderer* r);
 int demo_render_shadow(demo_renderer* r, const demo_shadow* sh, demo_filter filter,
                        double* ms_out);
 
+/** All maps in ONE pass by geometry cloning ([RHS] §3.3.6, Listing A.1):
+ *  a geometry shader emits each triangle into every map's layer and
+ *  viewport.  Depth compare maps only.  *ms_out: glFinish-bracketed time. */
+int demo_render_shadow_single(demo_renderer* r, const demo_shadow* sh, double* ms_out);
+/** Reads layer `layer` of the depth array (map_res^2 floats). */
+int demo_render_read_depth(demo_renderer* r, int layer, float* out);
+
 typedef struct demo_main_params {
     float view[16], proj[16];       /**< camera (cglm, column-major) */
+    float sel_view[16];             /**< the viewer's view matrix for split selection */
+    int has_sel_view;               /**< 0: the camera above is the viewer */
     float light_dir[3];             /**< direction light travels */
     demo_mode mode;
     demo_filter filter;
@@ -70,7 +84,8 @@ int demo_render_main(demo_renderer* r, const demo_shadow* sh, const demo_main_pa
 
 /** Read back the colour target (RGBA8, top row first) of vw x vh. */
 void demo_render_read_color(demo_renderer* r, int vw, int vh, uint8_t* rgba);
-/** Read back the float targets: tex = (s, t in texels, split, eye depth),
+/** Read back the float targets: tex = (s, t in texels, map index + (1 - w)/2
+ *  with w the cascade blend weight of that map, eye depth),
  *  pos = (world xyz, lit in [0,1]); bottom row first (GL order). */
 void demo_render_read_aux(demo_renderer* r, float* tex, float* pos);
 

@@ -1,11 +1,11 @@
 /* shadow.c -- technique -> light matrices.
  *
- * The library computes every shadow matrix.  Until the geometry stage (the
- * setup call) and the splits stage are on main, this file holds ONE
- * temporary stand-in, marked TEMPORARY below: a light-space aligned
- * orthographic fit of the view frustum (or of each split frustum).  It is
- * replaced by the library's setup call as soon as that lands; nothing else
- * in the demo computes shadow maths. */
+ * The library computes every shadow matrix: swarp_setup / swarp_setup_range
+ * (uniform, LiSPSM variants, PSM, and each split of PSSM), swarp_split_* (the
+ * split distances), swarp_stabilize_directional (stabilised cascades),
+ * swarp_lixel_* (plane-stabilised maps) and swarp_error_* (the predicted
+ * m_x, m_z).  This file only chooses options and collects the results;
+ * nothing in the demo computes shadow maths of its own. */
 #include "shadow.h"
 
 #include <cglm/cglm.h>
@@ -18,7 +18,7 @@
 #include "shadowwarp_cglm.h"
 
 static const char* const tech_names[DEMO_TECH_COUNT] = {
-    "uniform", "lispsm", "repar", "gmnpr", "pseudo", "psm",
+    "uniform", "lispsm", "repar", "gmnpr", "pseudo", "psm", "psm-cube",
     "pssm",    "pssm-lispsm", "pssm-stable", "lixel"};
 
 int demo_technique_is_split(demo_technique t) {
@@ -44,9 +44,11 @@ const char* demo_scheme_name(demo_scheme s) {
 
 int demo_scheme_parse(const char* name, double* lambda, double* np, double* fp) {
     if (strncmp(name, "pseudo:", 7) == 0) {
+        /* n_p, f_p as fractions of the range, as swarp_split_options has them */
         *lambda = 0.5;
         int k = sscanf(name + 7, "%lf,%lf,%lf", np, fp, lambda);
-        if (k < 2 || !(*np > 0 && *fp > *np && *lambda >= 0 && *lambda <= 1)) return -1;
+        if (k < 2 || !(*np >= 0 && *fp >= 0 && *np + *fp < 1 && *lambda >= 0 && *lambda <= 1))
+            return -1;
         return DEMO_SCHEME_PSEUDO;
     }
     if (strncmp(name, "practical", 9) == 0) {
@@ -66,86 +68,8 @@ int demo_scheme_parse(const char* name, double* lambda, double* np, double* fp) 
 }
 
 int demo_technique_available(demo_technique t) {
-#ifdef DEMO_HAVE_GEOMETRY
     return (unsigned)t < DEMO_TECH_COUNT;
-#else
-    /* TEMPORARY: only what the stand-in fit can do. */
-    return t == DEMO_TECH_UNIFORM || t == DEMO_TECH_PSSM || t == DEMO_TECH_PSSM_STABLE ||
-           t == DEMO_TECH_LIXEL;
-#endif
 }
-
-#ifndef DEMO_HAVE_GEOMETRY
-/* ------------------------------------------------------------------------ */
-/* TEMPORARY stand-in until the library's setup call is on main.            */
-/* ------------------------------------------------------------------------ */
-typedef struct tv3 { double x, y, z; } tv3;
-static tv3 t_mk(double x, double y, double z) { tv3 r = {x, y, z}; return r; }
-static tv3 t_add(tv3 a, tv3 b) { return t_mk(a.x + b.x, a.y + b.y, a.z + b.z); }
-static tv3 t_scl(tv3 a, double s) { return t_mk(a.x * s, a.y * s, a.z * s); }
-static double t_dot(tv3 a, tv3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-static tv3 t_cross(tv3 a, tv3 b) {
-    return t_mk(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x);
-}
-static tv3 t_norm(tv3 a) { return t_scl(a, 1.0 / sqrt(t_dot(a, a))); }
-
-static void temp_fit(const swarp_camera* cam, const swarp_light* light, const swarp_aabb* scene,
-                     double d0, double d1, swarp_mat4* out) {
-    tv3 f = t_norm(t_mk(cam->dir.x, cam->dir.y, cam->dir.z));
-    tv3 r = t_norm(t_cross(f, t_mk(cam->up.x, cam->up.y, cam->up.z)));
-    tv3 u = t_cross(r, f);
-    tv3 ld = t_norm(t_mk(light->direction.x, light->direction.y, light->direction.z));
-    /* light view: looks along ld; its up is the view direction projected
-     * perpendicular to ld (light-space alignment), any perpendicular if the
-     * two are parallel */
-    tv3 lb = t_scl(ld, -1.0);
-    tv3 lu = t_add(f, t_scl(ld, -t_dot(f, ld)));
-    if (t_dot(lu, lu) < 1e-12) lu = fabs(ld.x) < 0.9 ? t_mk(1, 0, 0) : t_mk(0, 1, 0);
-    lu = t_norm(t_add(lu, t_scl(ld, -t_dot(lu, ld))));
-    tv3 lr = t_cross(lu, lb);
-    double ty = tan(0.5 * cam->fovy), tx = ty * cam->aspect;
-    double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
-    tv3 eye = t_mk(cam->eye.x, cam->eye.y, cam->eye.z);
-    for (int i = 0; i < 8; ++i) {
-        double d = (i & 4) ? d1 : d0;
-        tv3 p = t_add(eye, t_scl(f, d));
-        p = t_add(p, t_scl(r, ((i & 1) ? 1 : -1) * d * tx));
-        p = t_add(p, t_scl(u, ((i & 2) ? 1 : -1) * d * ty));
-        double q[3] = {t_dot(p, lr), t_dot(p, lu), t_dot(p, lb)};
-        for (int k = 0; k < 3; ++k) {
-            if (q[k] < lo[k]) lo[k] = q[k];
-            if (q[k] > hi[k]) hi[k] = q[k];
-        }
-    }
-    /* depth: the whole scene box, so every caster is in the map */
-    for (int i = 0; i < 8; ++i) {
-        tv3 p = t_mk((i & 1) ? scene->max.x : scene->min.x, (i & 2) ? scene->max.y : scene->min.y,
-                     (i & 4) ? scene->max.z : scene->min.z);
-        double q = t_dot(p, lb);
-        if (q < lo[2]) lo[2] = q;
-        if (q > hi[2]) hi[2] = q;
-    }
-    /* ortho(l, r, b, t, near = -hi_z, far = -lo_z) * view */
-    double sx = 2.0 / (hi[0] - lo[0]), sy = 2.0 / (hi[1] - lo[1]);
-    double sz = -2.0 / (hi[2] - lo[2]);
-    double cx = -(hi[0] + lo[0]) / (hi[0] - lo[0]), cy = -(hi[1] + lo[1]) / (hi[1] - lo[1]);
-    double near = -hi[2], far = -lo[2];
-    double cz = -(far + near) / (far - near);
-    swarp_mat4 m;
-    memset(&m, 0, sizeof m);
-    tv3 ax[3] = {lr, lu, lb};
-    double s[3] = {sx, sy, sz}, c[3] = {cx, cy, cz};
-    for (int row = 0; row < 3; ++row) {
-        m.m[0 * 4 + row] = s[row] * ax[row].x;
-        m.m[1 * 4 + row] = s[row] * ax[row].y;
-        m.m[2 * 4 + row] = s[row] * ax[row].z;
-        m.m[3 * 4 + row] = c[row];
-    }
-    m.m[15] = 1.0;
-    *out = m;
-}
-
-#endif /* !DEMO_HAVE_GEOMETRY */
 
 /* The viewer's view-projection (world -> clip) in double, from the
  * renderer's own cglm matrices. */
@@ -208,55 +132,10 @@ static int lixel_map(const swarp_mat4* M_v, const demo_shadow_request* req,
     return 0;
 }
 
-/* Split distances C_0..C_K over [near, far] from the library's schemes
- * [RHS] (3.6)-(3.8). */
-static int split_distances(const demo_shadow_request* req, double near, double far, int k,
-                           double* out) {
-#ifdef DEMO_HAVE_ERROR_MODEL
-    size_t n = 0;
-    swarp_status st;
-    if (req->scheme == DEMO_SCHEME_UNIFORM)
-        st = swarp_split_uniform(near, far, (uint32_t)k, out, DEMO_MAX_SPLITS + 1, &n);
-    else if (req->scheme == DEMO_SCHEME_PSEUDO)
-        st = swarp_split_pseudo(near, far, fmax(near, fmin(req->scheme_np, far)),
-                                fmin(far, fmax(req->scheme_fp, near)), req->scheme_lambda,
-                                (uint32_t)k, out, DEMO_MAX_SPLITS + 1, &n);
-    else if (req->scheme == DEMO_SCHEME_LOG)
-        st = swarp_split_log(near, far, (uint32_t)k, out, DEMO_MAX_SPLITS + 1, &n);
-    else
-        st = swarp_split_practical(near, far, req->scheme_lambda, (uint32_t)k, out,
-                                   DEMO_MAX_SPLITS + 1, &n);
-    if (swarp_status_is_error(st) || n != (size_t)k + 1) {
-        fprintf(stderr, "demo: split scheme: %s\n", swarp_status_string(st));
-        return -1;
-    }
-    return 0;
-#else
-    /* TEMPORARY until the core stage (swarp_split_*) is linked in */
-    for (int i = 0; i <= k; ++i) {
-        double t = (double)i / k;
-        double c_uni = near + (far - near) * t;
-        double c_log = near * pow(far / near, t);
-        double lambda = req->scheme == DEMO_SCHEME_UNIFORM ? 0.0
-                        : req->scheme == DEMO_SCHEME_LOG   ? 1.0
-                                                           : req->scheme_lambda;
-        out[i] = lambda * c_log + (1 - lambda) * c_uni;
-    }
-    out[0] = near;
-    out[k] = far;
-    return 0;
-#endif
-}
-
-/* A conventional (non-lixel) map for one technique over the adjusted view
- * range (range = 0) or over [near, far] (range = 1, a split): the library's
- * swarp_setup / swarp_setup_range when the geometry stage is linked in. */
-static int conventional_map(const swarp_camera* cam, const swarp_light* light,
-                            const swarp_aabb* scene, const demo_shadow_request* req,
-                            demo_technique t, int range, double near, double far,
-                            swarp_mat4* out_m, double* out_n, double* out_near, double* out_far,
-                            swarp_status* out_status) {
-#ifdef DEMO_HAVE_GEOMETRY
+/* The library's options for a technique (the parameter choice of the
+ * LiSPSM variants; the PSSM techniques use the same per split). */
+static void setup_options(const demo_shadow_request* req, demo_technique t,
+                          swarp_setup_options* out) {
     swarp_setup_options opt;
     memset(&opt, 0, sizeof opt);
     opt.technique = SWARP_TECHNIQUE_UNIFORM;
@@ -289,9 +168,27 @@ static int conventional_map(const swarp_camera* cam, const swarp_light* light,
     default:
         break;
     }
+    *out = opt;
+}
+
+/* A conventional (non-lixel) map for one technique over the adjusted view
+ * range (range = 0) or over [near, far] (range = 1, a split): the library's
+ * swarp_setup / swarp_setup_range when the geometry stage is linked in. */
+static int conventional_map(const swarp_camera* cam, const swarp_light* light,
+                            const swarp_aabb* scene, const demo_shadow_request* req,
+                            demo_technique t, int range, double near, double far,
+                            swarp_mat4* out_m, double* out_n, double* out_near, double* out_far,
+                            swarp_vec3* body, int* body_count, swarp_status* out_status) {
+    swarp_setup_options opt;
+    setup_options(req, t, &opt);
     swarp_setup_result res;
-    swarp_status st = range ? swarp_setup_range(cam, light, scene, near, far, &opt, &res, NULL, 0, NULL)
-                            : swarp_setup(cam, light, scene, &opt, &res, NULL, 0, NULL);
+    size_t nb = 0;
+    _Static_assert(DEMO_MAX_BODY >= SWARP_BODY_MAX_POINTS, "room for every point of B");
+    swarp_status st = range ? swarp_setup_range(cam, light, scene, near, far, &opt, &res, body,
+                                                body ? DEMO_MAX_BODY : 0, body ? &nb : NULL)
+                            : swarp_setup(cam, light, scene, &opt, &res, body,
+                                          body ? DEMO_MAX_BODY : 0, body ? &nb : NULL);
+    if (body_count) *body_count = swarp_status_is_error(st) ? 0 : (int)nb;
     *out_status = st;
     if (swarp_status_is_error(st)) {
         fprintf(stderr, "demo: swarp_setup (%s): %s\n", demo_technique_name(t),
@@ -303,30 +200,12 @@ static int conventional_map(const swarp_camera* cam, const swarp_light* light,
     *out_near = res.view_near;
     *out_far = res.view_far;
     return 0;
-#else
-    (void)req;
-    (void)t;
-    /* TEMPORARY stand-in: uniform only, over the camera's own range */
-    if (!range) {
-        near = cam->near;
-        far = cam->far;
-    }
-    temp_fit(cam, light, scene, near, far, out_m);
-    *out_n = INFINITY;
-    *out_near = near;
-    *out_far = far;
-    *out_status = SWARP_OK;
-    return 0;
-#endif
 }
 
 static const char* matrix_source(demo_technique t) {
-    if (t == DEMO_TECH_PSSM_STABLE) return "library (swarp_stabilize_directional)";
-#ifdef DEMO_HAVE_GEOMETRY
+    if (t == DEMO_TECH_PSSM_STABLE) return "library (swarp_split_*, swarp_stabilize_directional)";
+    if (demo_technique_is_split(t)) return "library (swarp_cascade_setup)";
     return "library (swarp_setup)";
-#else
-    return "demo stand-in (temporary ortho fit)";
-#endif
 }
 
 int demo_shadow_setup(const swarp_camera* cam, const swarp_light* light,
@@ -363,7 +242,7 @@ int demo_shadow_setup(const swarp_camera* cam, const swarp_light* light,
         }
         swarp_status sf;
         if (conventional_map(cam, light, scene, req, DEMO_TECH_UNIFORM, 0, 0, 0, &sh.light[n],
-                             &sh.n_prime[n], &sh.near, &sh.far, &sf))
+                             &sh.n_prime[n], &sh.near, &sh.far, NULL, NULL, &sf))
             return -1;
         sh.count = n + 1;
         sh.split[0] = sh.near;
@@ -374,9 +253,54 @@ int demo_shadow_setup(const swarp_camera* cam, const swarp_light* light,
         sh.status = st != SWARP_OK ? st : sf;
         sh.source = n == 2 ? "library (swarp_lixel_* + uniform fallback)"
                            : "library (swarp_lixel_*: a plane failed; + uniform fallback)";
-#ifndef DEMO_HAVE_GEOMETRY
-        sh.source = "library (swarp_lixel_*) + demo stand-in fallback";
-#endif
+        *out = sh;
+        return 0;
+    }
+    if (t == DEMO_TECH_PSM_CUBE) {
+        /* [KOZ] §14.2.2: the adjusted view range from the setup, the
+         * camera's post-projective space over it, the light there, and one
+         * map per back-facing face of the unit cube */
+        double nprime;
+        if (conventional_map(cam, light, scene, req, DEMO_TECH_UNIFORM, 0, 0, 0, &sh.light[0],
+                             &nprime, &sh.near, &sh.far, sh.body, &sh.body_count, &st))
+            return -1;
+        swarp_camera c2 = *cam;
+        c2.near = sh.near;
+        c2.far = sh.far;
+        viewer_matrix(&c2, &sh.cube_camera);
+        swarp_vec3 lp = light->type == SWARP_LIGHT_POINT ? light->position : light->direction;
+        swarp_vec4 hl;
+        swarp_mat4_transform(&sh.cube_camera, &lp, &hl);
+        if (light->type != SWARP_LIGHT_POINT) {
+            /* (-d, 0): C (-d, 0) = -(C (d, 1) - C (0, 1)) */
+            swarp_vec3 zero = {0, 0, 0};
+            swarp_vec4 h0;
+            swarp_mat4_transform(&sh.cube_camera, &zero, &h0);
+            hl = (swarp_vec4){-(hl.x - h0.x), -(hl.y - h0.y), -(hl.z - h0.z), -(hl.w - h0.w)};
+        }
+        sh.cube_light = hl;
+        swarp_cube_face faces[SWARP_CUBE_MAX_FACES];
+        size_t nf = 0;
+        swarp_status sc = swarp_cube_faces(&hl, NULL, faces, SWARP_CUBE_MAX_FACES, &nf);
+        if (swarp_status_is_error(sc)) {
+            fprintf(stderr, "demo: swarp_cube_faces: %s\n", swarp_status_string(sc));
+            return -1;
+        }
+        for (size_t i = 0; i < nf; ++i) {
+            swarp_mat4_mul(&faces[i].view_proj, &sh.cube_camera, &sh.light[i]);
+            sh.cube_normal[i] = faces[i].normal;
+            sh.cube_distance[i] = faces[i].distance;
+            sh.cube_face[i] = faces[i].face;
+            sh.n_prime[i] = NAN;
+        }
+        sh.count = (int)nf;
+        sh.split[0] = sh.near;
+        sh.split[1] = sh.far;
+        sh.select = DEMO_SELECT_CUBE;
+        sh.depth_clamp = 1;
+        sh.model_applies = 0;
+        sh.status = sc != SWARP_OK ? sc : st;
+        sh.source = "library (swarp_setup range + swarp_cube_faces)";
         *out = sh;
         return 0;
     }
@@ -385,45 +309,89 @@ int demo_shadow_setup(const swarp_camera* cam, const swarp_light* light,
     if (sh.count < 1 || sh.count > DEMO_MAX_SPLITS) return -1;
     /* the whole view first: its adjusted range [RHS] §3.3.1 */
     if (conventional_map(cam, light, scene, req, pssm ? DEMO_TECH_UNIFORM : t, 0, 0, 0,
-                         &sh.light[0], &sh.n_prime[0], &sh.near, &sh.far, &st))
+                         &sh.light[0], &sh.n_prime[0], &sh.near, &sh.far, sh.body, &sh.body_count,
+                         &st))
         return -1;
     if (t == DEMO_TECH_PSSM_STABLE) {
-        /* the sphere covers whole split frusta: no adjusted range */
+        /* [RHS] §3.5 exact solution per split: the split frustum's minimal
+         * sphere, texel-snapped.  The splits divide the CAMERA's fixed
+         * [near, far]: swarp_cascade_setup would split the adjusted range
+         * of §3.3.1, which moves with the camera, so the spheres and their
+         * texels would change size every frame (measured: 0.4 texel of
+         * drift per frame against 0.0000 here; see --frames). */
         sh.near = cam->near;
         sh.far = cam->far;
-    }
-    sh.split[0] = sh.near;
-    sh.split[1] = sh.far;
-    if (pssm) {
-        if (split_distances(req, sh.near, sh.far, sh.count, sh.split)) return -1;
+        size_t n = 0;
+        swarp_status ss;
+        if (req->scheme == DEMO_SCHEME_UNIFORM)
+            ss = swarp_split_uniform(sh.near, sh.far, (uint32_t)sh.count, sh.split,
+                                     DEMO_MAX_SPLITS + 1, &n);
+        else if (req->scheme == DEMO_SCHEME_LOG)
+            ss = swarp_split_log(sh.near, sh.far, (uint32_t)sh.count, sh.split, DEMO_MAX_SPLITS + 1,
+                                 &n);
+        else if (req->scheme == DEMO_SCHEME_PSEUDO)
+            ss = swarp_split_pseudo(sh.near, sh.far, sh.near + req->scheme_np * (sh.far - sh.near),
+                                    sh.far - req->scheme_fp * (sh.far - sh.near), req->scheme_lambda,
+                                    (uint32_t)sh.count, sh.split, DEMO_MAX_SPLITS + 1, &n);
+        else
+            ss = swarp_split_practical(sh.near, sh.far, req->scheme_lambda, (uint32_t)sh.count,
+                                       sh.split, DEMO_MAX_SPLITS + 1, &n);
+        if (swarp_status_is_error(ss) || n != (size_t)sh.count + 1) {
+            fprintf(stderr, "demo: split scheme: %s\n", swarp_status_string(ss));
+            return -1;
+        }
         for (int i = 0; i < sh.count; ++i) {
-            double a, b;
-            swarp_status si;
-            if (t == DEMO_TECH_PSSM_STABLE) {
-                /* [RHS] §3.5 exact solution: the split frustum's minimal
-                 * sphere, texel-snapped (directional lights only) */
-                swarp_stabilize_options so;
-                memset(&so, 0, sizeof so);
-                so.mode = SWARP_STABILIZE_SPHERE;
-                si = swarp_stabilize_directional(cam, sh.split[i], sh.split[i + 1], &light->direction,
-                                                 NULL, 0, scene, (uint32_t)req->map_res, &so,
-                                                 &sh.light[i], NULL);
-                if (swarp_status_is_error(si)) {
-                    fprintf(stderr, "demo: swarp_stabilize_directional: %s\n",
-                            swarp_status_string(si));
-                    return -1;
-                }
-                sh.n_prime[i] = INFINITY;
-                if (si != SWARP_OK && st == SWARP_OK) st = si;
-                continue;
-            }
-            if (conventional_map(cam, light, scene, req, t, 1, sh.split[i], sh.split[i + 1],
-                                 &sh.light[i], &sh.n_prime[i], &a, &b, &si))
+            swarp_stabilize_options so;
+            memset(&so, 0, sizeof so);
+            so.mode = SWARP_STABILIZE_SPHERE;
+            swarp_status si = swarp_stabilize_directional(cam, sh.split[i], sh.split[i + 1],
+                                                          &light->direction, NULL, 0, scene,
+                                                          (uint32_t)req->map_res, &so,
+                                                          &sh.light[i], NULL);
+            if (swarp_status_is_error(si)) {
+                fprintf(stderr, "demo: swarp_stabilize_directional: %s\n", swarp_status_string(si));
                 return -1;
+            }
+            sh.n_prime[i] = INFINITY;
             if (si != SWARP_OK && st == SWARP_OK) st = si;
         }
+    } else if (pssm) {
+        /* [RHS] §3.3-3.4 in one library call: adjusted range, split
+         * distances, per split B_i and its matrix */
+        swarp_cascade_options co;
+        memset(&co, 0, sizeof co);
+        setup_options(req, t == DEMO_TECH_PSSM_LISPSM ? DEMO_TECH_LISPSM : DEMO_TECH_UNIFORM,
+                      &co.setup);
+        co.split.count = (uint32_t)sh.count;
+        co.split.scheme = req->scheme == DEMO_SCHEME_UNIFORM ? SWARP_SCHEME_UNIFORM
+                          : req->scheme == DEMO_SCHEME_LOG   ? SWARP_SCHEME_LOG
+                          : req->scheme == DEMO_SCHEME_PSEUDO ? SWARP_SCHEME_PSEUDO
+                                                              : SWARP_SCHEME_PRACTICAL;
+        co.split.lambda = req->scheme_lambda;
+        co.split.pseudo_near = req->scheme_np;
+        co.split.pseudo_far = req->scheme_fp;
+        swarp_cascade_result cr;
+        swarp_cascade_split cs[SWARP_CASCADE_MAX_SPLITS];
+        size_t n = 0;
+        swarp_status sc = swarp_cascade_setup(cam, light, scene, &co, &cr, cs,
+                                              SWARP_CASCADE_MAX_SPLITS, &n);
+        if (swarp_status_is_error(sc) || n != (size_t)sh.count) {
+            fprintf(stderr, "demo: swarp_cascade_setup (%s): %s\n", demo_technique_name(t),
+                    swarp_status_string(sc));
+            return -1;
+        }
+        sh.near = cr.view_near;
+        sh.far = cr.view_far;
+        for (int i = 0; i <= sh.count; ++i) sh.split[i] = cr.splits[i];
+        for (int i = 0; i < sh.count; ++i) {
+            sh.light[i] = cs[i].matrix;
+            sh.n_prime[i] = cs[i].n_eye;
+        }
+        if (sc != SWARP_OK) st = sc;
+    } else {
+        sh.split[0] = sh.near;
+        sh.split[1] = sh.far;
     }
-#ifdef DEMO_HAVE_ERROR_MODEL
     {
         /* the predicted worst error of the whole configuration [RHS]
          * (2.3)-(2.8), piecewise for splits */
@@ -442,24 +410,14 @@ int demo_shadow_setup(const swarp_camera* cam, const swarp_light* light,
             sh.predicted_max_mz = mz;
         }
     }
-#endif
     sh.status = st;
     sh.source = matrix_source(t);
     *out = sh;
     return 0;
 }
 
-int demo_have_error_model(void) {
-#ifdef DEMO_HAVE_ERROR_MODEL
-    return 1;
-#else
-    return 0;
-#endif
-}
-
 int demo_predict(const demo_shadow* sh, double fovy, int w, int h, int map_res, double z,
                  double* out_mx, double* out_mz) {
-#ifdef DEMO_HAVE_ERROR_MODEL
     if (!sh->model_applies) {
         *out_mx = *out_mz = NAN;
         return -1;
@@ -480,10 +438,4 @@ int demo_predict(const demo_shadow* sh, double fovy, int w, int h, int map_res, 
     *out_mx = mx;
     *out_mz = mz;
     return 0;
-#else
-    (void)sh; (void)fovy; (void)w; (void)h; (void)map_res; (void)z;
-    *out_mx = NAN;
-    *out_mz = NAN;
-    return -1;
-#endif
 }

@@ -9,6 +9,7 @@
 #include "shadowwarp.h"
 
 #define DEMO_MAX_SPLITS 16
+#define DEMO_MAX_BODY 128
 
 typedef enum demo_technique {
     DEMO_TECH_UNIFORM = 0, /**< light-space aligned, focused uniform map */
@@ -17,6 +18,7 @@ typedef enum demo_technique {
     DEMO_TECH_GMNPR,       /**< LiSPSM with lambda_GMNPR [GMNPR] (8) */
     DEMO_TECH_PSEUDO,      /**< LiSPSM with pseudo-near/far n_opt [RHS] (4.2) */
     DEMO_TECH_PSM,         /**< PSM [KOZ] */
+    DEMO_TECH_PSM_CUBE,    /**< PSM with cube-map faces in post-projective space [KOZ] §14.2.2 */
     DEMO_TECH_PSSM,        /**< z-partitioned uniform maps [RHS] §3.3 */
     DEMO_TECH_PSSM_LISPSM, /**< z-partitioning + LiSPSM per split [RHS] §3.4 */
     DEMO_TECH_PSSM_STABLE, /**< stabilised cascades: exact minimal sphere + texel snap [RHS] §3.5 */
@@ -36,7 +38,8 @@ typedef enum demo_scheme {
 typedef enum demo_select {
     DEMO_SELECT_DEPTH = 0, /**< by eye depth, swarp_cascade_select_depth [RHS] §3.3.3 */
     DEMO_SELECT_BEST,      /**< best resolution, swarp_cascade_select_best (ZZB09) */
-    DEMO_SELECT_LIXEL      /**< first map covering p, else the fallback: swarp_lixel_select */
+    DEMO_SELECT_LIXEL,     /**< first map covering p, else the fallback: swarp_lixel_select */
+    DEMO_SELECT_CUBE       /**< the cube face of [KOZ] Listing 14-1: swarp_cube_lookup */
 } demo_select;
 
 typedef struct demo_shadow_request {
@@ -45,7 +48,7 @@ typedef struct demo_shadow_request {
     demo_scheme scheme;
     double scheme_lambda; /**< practical scheme's lambda in [0, 1] */
     double pseudo_near, pseudo_far; /**< n_p, f_p of [RHS] (4.2), fractions (technique pseudo) */
-    double scheme_np, scheme_fp;    /**< n_p, f_p of [RHS] (4.1), eye distances (scheme pseudo) */
+    double scheme_np, scheme_fp;    /**< n_p, f_p of [RHS] (4.1), fractions (scheme pseudo) */
     int map_res;          /**< texels per side of each map */
     demo_select select;   /**< DEPTH or BEST for the PSSM techniques */
     int screen_w, screen_h;
@@ -65,6 +68,14 @@ typedef struct demo_shadow {
     double predicted_max_mx, predicted_max_mz; /**< NAN when not available */
     swarp_status status;                    /**< library status of the setup */
     const char* source;                     /**< who computed the matrices */
+    swarp_vec3 body[DEMO_MAX_BODY];         /**< points of B from the setup (whole view) */
+    /* DEMO_SELECT_CUBE: the post-projective light and the faces */
+    swarp_mat4 cube_camera;                 /**< world -> the camera's post-projective space */
+    swarp_vec4 cube_light;                  /**< the light there, homogeneous */
+    swarp_vec3 cube_normal[6];              /**< N_i per map */
+    double cube_distance[6];                /**< d_i per map */
+    uint32_t cube_face[6];                  /**< SWARP_CUBE_FACE_* per map */
+    int body_count;
 } demo_shadow;
 
 const char* demo_technique_name(demo_technique t);
@@ -84,11 +95,9 @@ int demo_shadow_setup(const swarp_camera* cam, const swarp_light* light,
                       const swarp_aabb* scene, const demo_shadow_request* req,
                       demo_shadow* out);
 
-/** 1 if the library's error model (core stage) is linked in. */
-int demo_have_error_model(void);
 /** m_x and m_z [RHS] (2.3)-(2.8) at eye depth z for configuration sh, seen
  *  on a screen of w x h pixels with vertical fov fovy (radians).  0 on
- *  success, -1 if the error model is unavailable or fails. */
+ *  success, -1 if the model does not apply (lixel) or fails. */
 int demo_predict(const demo_shadow* sh, double fovy, int w, int h, int map_res, double z,
                  double* out_mx, double* out_mz);
 

@@ -73,5 +73,7 @@ int cmd_plan(sw_args* a);
 int cmd_bench_report(sw_args* a);
 
 /* stage: extras */
+int cmd_cube(sw_args* a);
+int cmd_mindepth(sw_args* a);
 
 #endif

@@ -162,7 +162,7 @@ int cmd_stabwalk(sw_args* a) {
 /* swtool cascade: split distances, per-split warp, error maxima, atlas place
  * and (with --curve) the whole configuration's error curve.  The error model
  * is Lloyd's overhead-light frame [RHS] (2.3)-(2.8). */
-int cmd_cascade(sw_args* a) {
+static int cascade_model(sw_args* a) {
     static const char* const known[] = {"near", "far", "fovy", "image", "res", "splits", "scheme",
                                         "warp", "stabilize", "curve", "samples", NULL};
     if (!cli_check_known(a, known)) return 2;
@@ -288,4 +288,192 @@ int cmd_cascade(sw_args* a) {
     if (have_atlas) printf("; atlas %gx%g, l_sc %g", info.atlas_res, info.atlas_res, info.l_sc);
     printf("\n");
     return 0;
+}
+
+/* The scene form: camera, light and scene box as for `swtool setup`, then
+ * swarp_cascade_setup. */
+static int cascade_scene(sw_args* a) {
+    static const char* const known[] = {"eye", "dir", "up", "fovy", "aspect", "near", "far", "light-dir",
+                                        "light-pos", "box", "map", "screen", "technique", "depth",
+                                        "splits", "scheme", "stabilize", "origin", "kernel", "curve",
+                                        "samples", NULL};
+    if (!cli_check_known(a, known)) return 2;
+    swarp_camera cam;
+    memset(&cam, 0, sizeof cam);
+    swarp_light light;
+    memset(&light, 0, sizeof light);
+    swarp_cascade_options o;
+    memset(&o, 0, sizeof o);
+    double fovy_deg, boxv[6], kernel;
+    unsigned map, sw, sh, K, samples;
+    if (!cli_vec3(a, "eye", 1, &cam.eye) || !cli_vec3(a, "dir", 1, &cam.dir)) return 2;
+    cam.up = (swarp_vec3){0, 1, 0};
+    if (!cli_vec3(a, "up", 0, &cam.up) || !cli_double(a, "fovy", 60.0, &fovy_deg) ||
+        !cli_double(a, "aspect", 16.0 / 9.0, &cam.aspect) || !cli_double(a, "near", 1.0, &cam.near) ||
+        !cli_double(a, "far", 100.0, &cam.far) || !cli_uint(a, "map", 1024, &map) ||
+        !cli_size(a, "screen", 1920, 1080, &sw, &sh) || !cli_uint(a, "splits", 4, &K) ||
+        !cli_double(a, "kernel", 1.0, &kernel) || !cli_uint(a, "samples", 64, &samples) ||
+        !cli_vec3(a, "origin", 0, &o.stabilize.origin))
+        return 2;
+    cam.fovy = fovy_deg * SW_DEG;
+    const char* ld = cli_opt(a, "light-dir");
+    const char* lp = cli_opt(a, "light-pos");
+    if ((ld != NULL) == (lp != NULL)) {
+        fprintf(stderr, "swtool %s: give exactly one of --light-dir x,y,z and --light-pos x,y,z\n", a->argv[0]);
+        return 2;
+    }
+    if (ld) {
+        light.type = SWARP_LIGHT_DIRECTIONAL;
+        if (!cli_vec3(a, "light-dir", 1, &light.direction)) return 2;
+    } else {
+        light.type = SWARP_LIGHT_POINT;
+        if (!cli_vec3(a, "light-pos", 1, &light.position)) return 2;
+    }
+    const char* bs = cli_opt(a, "box");
+    if (!bs || !cli_parse_list(bs, boxv, 6)) {
+        fprintf(stderr, "swtool %s: --box x0,y0,z0,x1,y1,z1 is required\n", a->argv[0]);
+        return 2;
+    }
+    swarp_aabb box = {{boxv[0], boxv[1], boxv[2]}, {boxv[3], boxv[4], boxv[5]}};
+    o.setup.map_width = o.setup.map_height = map;
+    o.setup.screen_width = sw;
+    o.setup.screen_height = sh;
+    const char* tech = cli_opt(a, "technique");
+    if (!tech || strcmp(tech, "lispsm") == 0) {
+        o.setup.technique = SWARP_TECHNIQUE_LISPSM;
+    } else if (strcmp(tech, "uniform") == 0) {
+        o.setup.technique = SWARP_TECHNIQUE_UNIFORM;
+    } else if (strcmp(tech, "repar") == 0) {
+        o.setup.technique = SWARP_TECHNIQUE_LISPSM;
+        o.setup.param = SWARP_WARP_PARAM_NREPAR;
+    } else if (strcmp(tech, "psm") == 0) {
+        o.setup.technique = SWARP_TECHNIQUE_PSM;
+    } else {
+        fprintf(stderr, "swtool %s: --technique uniform|lispsm|repar|psm, got '%s'\n", a->argv[0], tech);
+        return 2;
+    }
+    const char* depth = cli_opt(a, "depth");
+    o.setup.depth_range = depth && strcmp(depth, "zo") == 0 ? SWARP_DEPTH_ZERO_TO_ONE : SWARP_DEPTH_NEG_ONE_TO_ONE;
+    o.split.count = K;
+    if (!parse_scheme(cli_opt(a, "scheme"), &o.split)) {
+        fprintf(stderr, "swtool %s: --scheme uniform|log|practical:L|pseudo:NP,FP[,L]\n", a->argv[0]);
+        return 2;
+    }
+    if (o.split.scheme == SWARP_SCHEME_PSEUDO && o.setup.technique == SWARP_TECHNIQUE_LISPSM &&
+        o.setup.param == SWARP_WARP_PARAM_DEFAULT) {
+        /* [RHS] §4.2: the pseudo planes also shape the first and last warps */
+        o.setup.param = SWARP_WARP_PARAM_PSEUDO;
+        o.setup.pseudo_near = o.split.pseudo_near;
+        o.setup.pseudo_far = o.split.pseudo_far;
+    }
+    uint32_t levels;
+    if (!parse_stabilize(cli_opt(a, "stabilize"), &o.stabilize.mode, &levels)) {
+        fprintf(stderr, "swtool %s: --stabilize none|sphere|levels:N\n", a->argv[0]);
+        return 2;
+    }
+    o.stabilize.levels = levels;
+    o.kernel_world_size = kernel;
+    swarp_cascade_result r;
+    swarp_cascade_split sp[SWARP_CASCADE_MAX_SPLITS];
+    size_t n;
+    swarp_status st = swarp_cascade_setup(&cam, &light, &box, &o, &r, sp, SWARP_CASCADE_MAX_SPLITS, &n);
+    if (swarp_status_is_error(st)) return cli_report_status(a, st, "swarp_cascade_setup");
+    static double z[SWARP_CASCADE_MAX_SPLITS * 4096], cmx[SWARP_CASCADE_MAX_SPLITS * 4096],
+        cmz[SWARP_CASCADE_MAX_SPLITS * 4096];
+    size_t ncurve = 0;
+    const int curve = cli_flag(a, "curve");
+    if (curve) {
+        if (samples < 2 || samples > 4096) {
+            fprintf(stderr, "swtool %s: --samples 2..4096\n", a->argv[0]);
+            return 2;
+        }
+        swarp_error_config cfg;
+        memset(&cfg, 0, sizeof cfg);
+        cfg.near = r.view_near;
+        cfg.far = r.view_far;
+        cfg.theta = 0.5 * cam.fovy;
+        cfg.res_ix = sw > sh ? sw : sh;
+        cfg.res_iy = sw > sh ? sh : sw;
+        cfg.res_s = cfg.res_t = map;
+        double np[SWARP_CASCADE_MAX_SPLITS];
+        for (size_t i = 0; i < n; ++i) np[i] = sp[i].n_eye;
+        swarp_status cs = swarp_cascade_error_curve(&cfg, r.splits, np, n, samples, z, cmx, cmz,
+                                                    sizeof z / sizeof z[0], &ncurve);
+        if (swarp_status_is_error(cs)) return cli_report_status(a, cs, "swarp_cascade_error_curve");
+    }
+    if (a->json) {
+        json_begin();
+        json_kv_status(st);
+        json_kv_num("near", r.view_near);
+        json_kv_num("far", r.view_far);
+        json_kv_arr("splits", r.splits, n + 1);
+        json_kv_num("max_mx", r.max_mx);
+        json_kv_num("max_mz", r.max_mz);
+        json_kv_num("atlas_res", r.atlas.atlas_res);
+        json_kv_num("l_sc", r.atlas.l_sc);
+        json_key("split");
+        json_open_arr();
+        for (size_t i = 0; i < n; ++i) {
+            json_open_obj();
+            json_kv_str("status", swarp_status_name(sp[i].status));
+            json_kv_num("near", sp[i].near);
+            json_kv_num("far", sp[i].far);
+            json_kv_mat("matrix", &sp[i].matrix);
+            json_kv_mat("atlas_matrix", &sp[i].atlas_matrix);
+            double vp[4] = {sp[i].tile.viewport_x, sp[i].tile.viewport_y, sp[i].tile.viewport_width,
+                            sp[i].tile.viewport_height};
+            json_kv_arr("viewport", vp, 4);
+            json_kv_arr("kernel_scale", sp[i].kernel_scale, 2);
+            json_kv_num("n_prime", sp[i].n_eye);
+            json_kv_num("max_mx", sp[i].max_mx);
+            json_kv_num("max_mz", sp[i].max_mz);
+            json_kv_num("mx_start", sp[i].mx_start);
+            json_kv_num("mz_start", sp[i].mz_start);
+            json_kv_num("texel_size", sp[i].texel_size);
+            json_kv_num("depth_per_world", sp[i].depth_per_world);
+            json_close_obj();
+        }
+        json_close_arr();
+        if (curve) {
+            json_kv_arr("z", z, ncurve);
+            json_kv_arr("mx", cmx, ncurve);
+            json_kv_arr("mz", cmz, ncurve);
+        }
+        json_end();
+        return cli_report_status(a, st, "swarp_cascade_setup");
+    }
+    if (curve) {
+        printf("# z m_x m_z   (%zu splits; a border depth belongs to the split that starts there)\n", n);
+        for (size_t k = 0; k < ncurve; ++k) printf("%.17g %.17g %.17g\n", z[k], cmx[k], cmz[k]);
+        return cli_report_status(a, st, "swarp_cascade_setup");
+    }
+    printf("status      %s\n", swarp_status_name(st));
+    printf("view range  [%.9g, %.9g] (adjusted, [RHS] 3.3.1), %zu splits\n", r.view_near, r.view_far, n);
+    printf("atlas       %gx%g texels, l_sc %g\n", r.atlas.atlas_res, r.atlas.atlas_res, r.atlas.l_sc);
+    printf("whole       max m_x %.6g, max m_z %.6g\n", r.max_mx, r.max_mz);
+    for (size_t i = 0; i < n; ++i) {
+        const swarp_cascade_split* q = &sp[i];
+        printf("\nsplit %zu     [%.9g, %.9g]  %s\n", i, q->near, q->far, swarp_status_name(q->status));
+        printf("  n'         %.9g\n", q->n_eye);
+        printf("  viewport   %g,%g %gx%g\n", q->tile.viewport_x, q->tile.viewport_y, q->tile.viewport_width,
+               q->tile.viewport_height);
+        printf("  kernel     %.6g, %.6g  (s_i of [RHS] (3.9) for r_l = %g)\n", q->kernel_scale[0],
+               q->kernel_scale[1], kernel > 0 ? kernel : 1.0);
+        printf("  max m_x    %.6g  (%.6g just after the border)\n", q->max_mx, q->mx_start);
+        printf("  max m_z    %.6g  (%.6g just after the border)\n", q->max_mz, q->mz_start);
+        if (q->texel_size > 0) printf("  texel      %.9g world units (stabilised)\n", q->texel_size);
+        printf("  depth/world %.6g window depth per world unit toward the light\n", q->depth_per_world);
+        printf("  matrix (column-major):\n");
+        for (int row = 0; row < 4; ++row)
+            printf("    %14.8g %14.8g %14.8g %14.8g\n", q->matrix.m[row], q->matrix.m[4 + row],
+                   q->matrix.m[8 + row], q->matrix.m[12 + row]);
+    }
+    return cli_report_status(a, st, "swarp_cascade_setup");
+}
+
+/* swtool cascade: the scene form when --eye is given, else the error-model
+ * form; `swtool setup --splits K ...` lands here too. */
+int cmd_cascade(sw_args* a) {
+    if (cli_opt(a, "eye")) return cascade_scene(a);
+    return cascade_model(a);
 }

@@ -22,6 +22,8 @@ int cmd_setup(sw_args* a) {
     static const char* const known[] = {"eye",   "dir",    "up",        "fovy",  "aspect", "near",
                                         "far",   "light-dir", "light-pos", "box", "map",    "screen",
                                         "technique", "depth", "reps", NULL};
+    /* stage: splits -- `setup --splits K` is the cascade (cmd_cascade.c) */
+    if (cli_opt(a, "splits")) return cmd_cascade(a);
     if (!cli_check_known(a, known)) return 2;
     swarp_camera cam;
     memset(&cam, 0, sizeof cam);

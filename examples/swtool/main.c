@@ -30,6 +30,8 @@ static const sw_cmd commands[] = {
     {"bench-report", cmd_bench_report, "accuracy/cost report: tables and Pareto data [--out-dir D]"},
 
     /* stage: extras */
+    {"cube", cmd_cube, "[KOZ] cube-map faces for a post-projective light --light x,y,z,w [--point]"},
+    {"mindepth", cmd_mindepth, "[RHS] 4.3 adjusted near plane from --min D or a --file of linear depths"},
 
 };
 
