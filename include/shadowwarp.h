@@ -702,6 +702,15 @@ SWARP_API swarp_status swarp_body_points(const swarp_camera* cam, double near, d
                                          const swarp_light* light, const swarp_aabb* scene,
                                          swarp_vec3* out, size_t capacity, size_t* out_count);
 
+/** @brief The receivers a light can reach: H ∩ L for a spot light (L the
+ *  square pyramid around its cone, as in swarp_body_from_h), H itself for
+ *  directional and omni lights.  Pass its vertices as the receivers of
+ *  swarp_setup_points (pancaking, PSM unit cube clipping).  out may equal H.
+ *  @return SWARP_OK, SWARP_ERR_BODY_EMPTY (the cone misses H), and the
+ *          statuses of swarp_body_from_h's argument checks. */
+SWARP_API swarp_status swarp_body_receivers(const swarp_polyhedron* H, const swarp_light* light,
+                                            swarp_polyhedron* out);
+
 /** @brief Adjusted near/far [RHS] §3.3.1 ([ZSN07]): min and max view depth
  *  over the points of H = V ∩ S (view frustum cam->near..cam->far).
  *  @return SWARP_OK, SWARP_ERR_BODY_EMPTY, statuses of swarp_body_h. */
@@ -1599,6 +1608,23 @@ SWARP_API swarp_status swarp_stabilize_directional(const swarp_camera* cam, doub
                                                    swarp_mat4* out_matrix,
                                                    swarp_stabilize_report* out_report);
 
+/** @brief Offset snapping for a caller's own uniform light matrix ([RHS]
+ *  §3.5, the offset problem): shifts the clip-space translation by less than
+ *  half a texel so that `origin` lands on a texel corner.  While the matrix's
+ *  scale and orientation stay the same (e.g. quantised with LEVELS), every
+ *  world point then moves by whole texels between frames.  Done in double on
+ *  (origin-relative) coordinates.
+ *  @param[in] m  world -> clip matrix of a uniform map (last row 0 0 0 w)
+ *  @param res_s, res_t  map resolution in texels (> 0)
+ *  @param[in] origin  snapping origin (world)
+ *  @param[out] out  the snapped matrix (may alias m)
+ *  @return SWARP_OK, SWARP_ERR_STABILIZE_WARPED (m is projective: a warped
+ *          map has no uniform texel grid), SWARP_ERR_NULL_POINTER,
+ *          SWARP_ERR_NON_FINITE, SWARP_ERR_RESOLUTION, SWARP_ERR_SINGULAR
+ *          (w = 0). */
+SWARP_API swarp_status swarp_stabilize_snap_matrix(const swarp_mat4* m, double res_s, double res_t,
+                                                   const swarp_vec3* origin, swarp_mat4* out);
+
 /* ---- bias                               (src/bias.c)   [KOZ] §14.2.3 */
 
 /** A shadow map as the bias functions see it: the final world -> clip matrix
@@ -1628,7 +1654,11 @@ SWARP_API swarp_status swarp_bias_texel_size(const swarp_bias_map* map, const sw
                                              double* out_L_texel, double* out_L_s, double* out_L_t);
 
 /** @brief Unit vector from p toward the light (the L of [KOZ] §14.2.3):
- *  -direction for a directional light, (position - p)/|.| for a point light. */
+ *  -direction for a directional light, (position - p)/|.| for a point light.
+ *  @param[in] light, p; @param[out] out_L unit vector
+ *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
+ *          SWARP_ERR_UNKNOWN_ENUM, SWARP_ERR_RESERVED_NONZERO,
+ *          SWARP_ERR_ZERO_VECTOR (zero direction, point light at p). */
 SWARP_API swarp_status swarp_bias_to_light(const swarp_light* light, const swarp_vec3* p,
                                            swarp_vec3* out_L);
 
@@ -1649,7 +1679,10 @@ SWARP_API swarp_status swarp_bias_kozlov(const swarp_bias_map* map, const swarp_
  *  facing normal gives SWARP_INFO_BACKFACING and the full offset k L_texel).
  *  @param k  offset in texels (>= 0)
  *  @param[out] out_p; @param[out] out_amount offset length in world units
- *  (may be NULL). */
+ *  (may be NULL).
+ *  @return SWARP_OK, SWARP_INFO_BACKFACING, SWARP_ERR_OUT_OF_RANGE (k < 0),
+ *          SWARP_ERR_ZERO_VECTOR (normal), and the errors of
+ *          swarp_bias_texel_size and swarp_bias_to_light. */
 SWARP_API swarp_status swarp_bias_normal_offset(const swarp_bias_map* map, const swarp_light* light,
                                                 const swarp_vec3* p, const swarp_vec3* normal,
                                                 double k, swarp_vec3* out_p, double* out_amount);
@@ -1669,8 +1702,12 @@ SWARP_API swarp_status swarp_bias_slope_scaled(const swarp_bias_map* map, const 
                                                double* out_depth_bias);
 
 /** @brief Window depth per world unit toward the light at p: the factor that
- *  turns a world-space bias into the depth units of this split's map (the
- *  derivative of d along L at p).  Uniform maps: constant per split. */
+ *  turns a world-space bias into the depth units of this split's map (minus
+ *  the derivative of d along L at p, so > 0 for a map looking along the
+ *  light).  Uniform maps: constant per split.
+ *  @param[out] out_depth_per_world window depth units per world unit
+ *  @return SWARP_OK, SWARP_ERR_BEHIND_PROJECTION, and the argument errors of
+ *          swarp_bias_texel_size and swarp_bias_to_light. */
 SWARP_API swarp_status swarp_bias_depth_per_world(const swarp_bias_map* map, const swarp_light* light,
                                                   const swarp_vec3* p, double* out_depth_per_world);
 
@@ -1687,6 +1724,14 @@ SWARP_API swarp_status swarp_bias_receiver_plane(const swarp_bias_map* map, cons
                                                  const swarp_vec3* tangent_b, double out_grad[2]);
 
 /* ---- cascades: split selection and blending   (src/cascade.c)   [RHS] §3.3.3 */
+
+/** @brief View depth of a world point: (p - eye) . dir/|dir|, the z that
+ *  swarp_cascade_select_depth and swarp_cascade_blend take (in a shader:
+ *  -view_space_position.z).
+ *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
+ *          SWARP_ERR_ZERO_VECTOR. */
+SWARP_API swarp_status swarp_cascade_view_depth(const swarp_camera* cam, const swarp_vec3* p,
+                                                double* out_depth);
 
 /** @brief Split selection by eye depth (PSSM, ZSXL06; [RHS] §3.3.3):
  *  the i with splits[i] <= view_depth < splits[i+1] (a depth on a border
@@ -1810,7 +1855,9 @@ typedef struct swarp_cascade_options {
     swarp_split_options split;         /**< scheme and count (count 1..16) */
     swarp_stabilize_options stabilize; /**< mode != NONE needs technique UNIFORM and a
                                             directional light; its depth field is
-                                            ignored (setup.depth_range is used) */
+                                            ignored (setup.depth_range is used).
+                                            SPHERE splits the camera's own near..far
+                                            (no adjustment, [RHS] §3.5) */
     double kernel_world_size;          /**< r_l of [RHS] (3.9), world units; 0 = 1 */
     double n_user[SWARP_CASCADE_MAX_SPLITS]; /**< per-split warp: n' in eye units for
                                             split i (+INFINITY = uniform); 0 = use setup */
@@ -1830,6 +1877,10 @@ typedef struct swarp_cascade_split {
     double mx_start, mz_start; /**< values at C_i: just after the border into this split */
     double mx_end, mz_end;     /**< values at C_{i+1} with this split's map (just before) */
     double texel_size;         /**< stabilised: world texel size; else 0 */
+    double depth_per_world;    /**< window depth per world unit toward the light at the
+                                    centroid of B_i (swarp_bias_depth_per_world): converts
+                                    a world-space bias to this split's depth units
+                                    (constant over the split for uniform maps) */
     swarp_status status;       /**< this split's own (informational) status */
     uint32_t point_count;      /**< points of B_i */
     uint32_t _reserved[4];
@@ -2123,10 +2174,17 @@ SWARP_API swarp_status swarp_plan_evaluate(const swarp_scene_needs* needs,
 SWARP_API swarp_status swarp_plan_explain(const struct swarp_plan* plan, char* out, size_t capacity,
                                           size_t* out_count);
 
-/** @brief Short names for the plan's enums ("lispsm-nopt", "pssm-log",
- *  "evsm", ...); never NULL ("?" for unknown values). */
+/** @brief Short name of a warp kind ("uniform", "lispsm-nopt", "psm", ...).
+ *  @param w the warp kind
+ *  @return a static string, never NULL ("?" for values not in the enum). */
 SWARP_API const char* swarp_plan_warp_name(swarp_plan_warp w);
+/** @brief Short name of a split scheme ("none", "pssm-practical", "pssm-log").
+ *  @param s the scheme
+ *  @return a static string, never NULL ("?" for values not in the enum). */
 SWARP_API const char* swarp_plan_scheme_name(swarp_plan_scheme s);
+/** @brief Short name of a filter kind ("none", "pcf", "vsm", "msm", "evsm", "lvsm").
+ *  @param f the filter kind
+ *  @return a static string, never NULL ("?" for values not in the enum). */
 SWARP_API const char* swarp_plan_filter_name(swarp_plan_filter f);
 /* <<< api: plan */
 

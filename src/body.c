@@ -369,3 +369,29 @@ SWARP_API swarp_status swarp_body_adjusted_range(const swarp_camera* cam, const 
     *out_far = sw_min(sw_max(mx, *out_near), cam->far);
     return SWARP_OK;
 }
+
+SWARP_API swarp_status swarp_body_receivers(const swarp_polyhedron* H, const swarp_light* light,
+                                            swarp_polyhedron* out) {
+    if (!H || !light || !out) return SWARP_ERR_NULL_POINTER;
+    swarp_status s = sw_check_light(light);
+    if (s != SWARP_OK) return s;
+    if (H->vertex_count > SWARP_POLY_MAX_VERTICES || H->face_count > SWARP_POLY_MAX_FACES)
+        return SWARP_ERR_INVALID_ARGUMENT;
+    for (uint32_t i = 0; i < H->vertex_count; ++i)
+        if (!sw_finite3(&H->vertices[i])) return SWARP_ERR_NON_FINITE;
+    for (uint32_t f = 0; f < H->face_count; ++f) {
+        if (H->face_vertex_count[f] > SWARP_POLY_MAX_FACE_VERTICES) return SWARP_ERR_INVALID_ARGUMENT;
+        for (uint32_t k = 0; k < H->face_vertex_count[f]; ++k)
+            if (H->face_vertices[f][k] >= H->vertex_count) return SWARP_ERR_INVALID_ARGUMENT;
+    }
+    if (H->vertex_count == 0) return SWARP_ERR_BODY_EMPTY;
+    swarp_polyhedron R;
+    sw_poly_copy(H, &R);
+    if (light->type == SWARP_LIGHT_POINT && light->cone_angle > 0.0) {
+        s = sw_clip_light_pyramid(&R, light);
+        if (s != SWARP_OK) return s;
+        if (R.vertex_count == 0) return SWARP_ERR_BODY_EMPTY;
+    }
+    sw_poly_copy(&R, out);
+    return SWARP_OK;
+}

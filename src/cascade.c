@@ -23,6 +23,18 @@ static uint32_t sw_select_depth(const double* splits, size_t m, double z, int* o
     return i;
 }
 
+SWARP_API swarp_status swarp_cascade_view_depth(const swarp_camera* cam, const swarp_vec3* p,
+                                                double* out_depth) {
+    if (!cam || !p || !out_depth) return SWARP_ERR_NULL_POINTER;
+    if (!sw_finite3(&cam->eye) || !sw_finite3(&cam->dir) || !sw_finite3(p)) return SWARP_ERR_NON_FINITE;
+    swarp_vec3 f;
+    if (!sw_normalize(cam->dir, &f)) return SWARP_ERR_ZERO_VECTOR;
+    const double z = sw_dot(sw_sub(*p, cam->eye), f);
+    if (!sw_finite(z)) return SWARP_ERR_NON_FINITE;
+    *out_depth = z;
+    return SWARP_OK;
+}
+
 SWARP_API swarp_status swarp_cascade_select_depth(const double* splits, size_t m, double view_depth,
                                                   uint32_t* out_index) {
     if (!out_index) return SWARP_ERR_NULL_POINTER;
@@ -221,9 +233,15 @@ SWARP_API swarp_status swarp_cascade_error_curve(const swarp_error_config* cfg,
 
 /* ---- the one call -------------------------------------------------------- */
 
+_Static_assert(sizeof(swarp_split_options) == 8 + 3 * sizeof(double) + 16, "swarp_split_options size");
+_Static_assert(sizeof(swarp_cascade_options) ==
+                   sizeof(swarp_setup_options) + sizeof(swarp_split_options) +
+                       sizeof(swarp_stabilize_options) + (1 + SWARP_CASCADE_MAX_SPLITS) * sizeof(double) + 16,
+               "swarp_cascade_options size");
+
 _Static_assert(sizeof(swarp_cascade_split) ==
                    2 * sizeof(double) + 2 * sizeof(swarp_mat4) + sizeof(swarp_atlas_tile) +
-                       10 * sizeof(double) + 8 + 16,
+                       11 * sizeof(double) + 8 + 16,
                "swarp_cascade_split size");
 _Static_assert(sizeof(swarp_cascade_result) == 8 + (4 + SWARP_CASCADE_MAX_SPLITS + 1) * sizeof(double) +
                                                    sizeof(swarp_atlas_info) + 16,
@@ -246,7 +264,11 @@ static void sw_kernel_scale(const swarp_mat4* M, swarp_vec3 c, double r_l, doubl
             const double hk = k == 0 ? h.x : h.y;
             g[j] = (row_k - hk / h.w * row_w) / h.w;
         }
-        out[k] = r_l * l_sc * hypot(hypot(g[0], g[1]), g[2]);
+        /* sqrt of the sum of squares (hypot is slow); exact enough and safe
+         * for |g| up to ~1e150, beyond which the overflow-proof length is used */
+        const double s2 = g[0] * g[0] + g[1] * g[1] + g[2] * g[2];
+        const double len = (s2 > 1e-290 && s2 < 1e290) ? sqrt(s2) : sw_len(sw_v3(g[0], g[1], g[2]));
+        out[k] = r_l * l_sc * len;
     }
 }
 
@@ -306,6 +328,8 @@ SWARP_API swarp_status swarp_cascade_setup(const swarp_camera* cam, const swarp_
             if (nu != INFINITY) user_warp = 1;
         }
     }
+    if (!sw_reserved_zero(o.stabilize._reserved, 4) || o.stabilize._reserved0 != 0)
+        return SWARP_ERR_RESERVED_NONZERO;
     swarp_stabilize_mode smode = o.stabilize.mode == SWARP_STABILIZE_DEFAULT ? SWARP_STABILIZE_NONE
                                                                              : o.stabilize.mode;
     if (smode != SWARP_STABILIZE_NONE && smode != SWARP_STABILIZE_SPHERE &&
@@ -323,7 +347,7 @@ SWARP_API swarp_status swarp_cascade_setup(const swarp_camera* cam, const swarp_
     memset(&res, 0, sizeof res);
     res.split_count = K;
     swarp_cascade_split sp[SWARP_CASCADE_MAX_SPLITS];
-    memset(sp, 0, sizeof sp);
+    memset(sp, 0, K * sizeof sp[0]);
     swarp_atlas_tile tiles[SWARP_ATLAS_MAX_SPLITS];
     size_t cnt;
     swarp_status st = swarp_atlas_layout(K, tile_res, o.setup.depth_range, &res.atlas, tiles,
@@ -342,6 +366,12 @@ SWARP_API swarp_status swarp_cascade_setup(const swarp_camera* cam, const swarp_
         /* one split IS the single map: the same call, bit for bit */
         st = swarp_setup(cam, light, scene, &o.setup, &sr, pts_buf, SWARP_BODY_MAX_POINTS, &npts);
         if (swarp_status_is_error(st)) return st;
+        /* the split options are still validated; one split is [n, f] exactly */
+        swarp_split_options so = o.split;
+        so.count = 1;
+        swarp_status sst = swarp_cascade_splits(sr.view_near, sr.view_far, &so, res.splits,
+                                                SWARP_CASCADE_MAX_SPLITS + 1, &cnt);
+        if (swarp_status_is_error(sst)) return sst;
         res.view_near = res.splits[0] = sr.view_near;
         res.view_far = res.splits[1] = sr.view_far;
     } else {
@@ -357,6 +387,12 @@ SWARP_API swarp_status swarp_cascade_setup(const swarp_camera* cam, const swarp_
         sw_depth_range_of(&H, cam->eye, cam_f, &n_adj, &f_adj);
         n_adj = sw_max(n_adj, cam->near);
         f_adj = sw_min(sw_max(f_adj, n_adj), cam->far);
+        if (smode == SWARP_STABILIZE_SPHERE) {
+            /* [RHS] §3.5: the exact solution needs constant split ranges, so
+             * no view frustum adjustment: split the camera's own [near, far] */
+            n_adj = cam->near;
+            f_adj = cam->far;
+        }
         if (!(f_adj > n_adj)) {
             /* H lies in one view plane: keep a sliver, as swarp_setup does */
             const double pad = fmax(1e-9 * n_adj, 1e-300);
@@ -374,6 +410,7 @@ SWARP_API swarp_status swarp_cascade_setup(const swarp_camera* cam, const swarp_
 
     for (uint32_t i = 0; i < K; ++i) {
         swarp_cascade_split* s = &sp[i];
+        swarp_vec3 sphere_center = sw_v3(0, 0, 0);
         s->near = res.splits[i];
         s->far = res.splits[i + 1];
         swarp_setup_options so = o.setup;
@@ -391,7 +428,14 @@ SWARP_API swarp_status swarp_cascade_setup(const swarp_camera* cam, const swarp_
             so.pseudo_near = i == 0 ? fmin(o.setup.pseudo_near * whole / len, SW_PSEUDO_MAX_FRACTION) : 0.0;
             so.pseudo_far = i + 1 == K ? fmin(o.setup.pseudo_far * whole / len, SW_PSEUDO_MAX_FRACTION) : 0.0;
         }
-        if (!single && so.technique == SWARP_TECHNIQUE_PSM) {
+        if (smode == SWARP_STABILIZE_SPHERE) {
+            /* the sphere alone decides the map: no body needed (a split
+             * beyond the scene still gets its constant-size map) */
+            npts = 0;
+            st = SWARP_OK;
+            sw_identity(&sr.matrix); /* replaced below */
+            sr.n_eye = INFINITY;
+        } else if (!single && so.technique == SWARP_TECHNIQUE_PSM) {
             /* PSM's unit-cube clipping wants B as a polyhedron: the full call */
             st = swarp_setup_range(cam, light, scene, s->near, s->far, &so, &sr, pts_buf,
                                    SWARP_BODY_MAX_POINTS, &npts);
@@ -428,6 +472,7 @@ SWARP_API swarp_status swarp_cascade_setup(const swarp_camera* cam, const swarp_
         s->n_eye = sr.n_eye;
         if (smode != SWARP_STABILIZE_NONE) {
             swarp_stabilize_report rep;
+            memset(&rep, 0, sizeof rep);
             /* one depth convention for the whole cascade: the setup's */
             swarp_stabilize_options sto = o.stabilize;
             sto.depth = o.setup.depth_range;
@@ -439,6 +484,7 @@ SWARP_API swarp_status swarp_cascade_setup(const swarp_camera* cam, const swarp_
                 if (info == SWARP_OK) info = st;
             }
             s->texel_size = fmax(rep.texel_size_x, rep.texel_size_y);
+            sphere_center = rep.sphere_center;
             s->n_eye = INFINITY;
         }
         s->tile = tiles[i];
@@ -446,9 +492,21 @@ SWARP_API swarp_status swarp_cascade_setup(const swarp_camera* cam, const swarp_
         /* kernel scale at the centroid of B_i (origin-relative when stabilised) */
         swarp_vec3 c = sw_v3(0, 0, 0);
         for (size_t k = 0; k < npts; ++k) c = sw_add(c, pts[k]);
-        c = sw_scale(c, 1.0 / (double)(npts ? npts : 1));
+        c = npts ? sw_scale(c, 1.0 / (double)npts) : sphere_center;
         if (smode != SWARP_STABILIZE_NONE) c = sw_sub(c, o.stabilize.origin);
         sw_kernel_scale(&s->matrix, c, r_l, res.atlas.l_sc, s->kernel_scale);
+        {
+            /* world bias -> this split's depth units, at the centroid */
+            swarp_bias_map bm;
+            memset(&bm, 0, sizeof bm);
+            bm.world_to_clip = s->matrix;
+            bm.res_s = bm.res_t = (double)tile_res;
+            bm.depth = o.setup.depth_range;
+            swarp_light lw = *light;
+            if (smode != SWARP_STABILIZE_NONE) lw.position = sw_sub(lw.position, o.stabilize.origin);
+            st = swarp_bias_depth_per_world(&bm, &lw, &c, &s->depth_per_world);
+            if (st != SWARP_OK) s->depth_per_world = 0.0; /* point light at the centroid */
+        }
         if ((st = sw_split_errors(cam, &o.setup, s)) != SWARP_OK) return st;
         if (s->max_mx > res.max_mx) res.max_mx = s->max_mx;
         if (s->max_mz > res.max_mz) res.max_mz = s->max_mz;

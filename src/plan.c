@@ -17,6 +17,7 @@
  * generalised curves lie at the split ends), a few microseconds.
  */
 #include <float.h>
+#include <stddef.h>
 
 #include "swarp_internal.h"
 
@@ -1036,4 +1037,11 @@ SWARP_API swarp_status swarp_plan_explain(const struct swarp_plan* plan, char* o
     return SWARP_OK;
 }
 
+/* The ABI of the planner's structs (plain doubles and 32-bit fields, no
+ * padding surprises across compilers and bindings). */
 _Static_assert(sizeof(swarp_plan_chain) == 32, "swarp_plan_chain ABI");
+_Static_assert(sizeof(swarp_budget) == 64, "swarp_budget ABI");
+_Static_assert(sizeof(swarp_scene_needs) == 432, "swarp_scene_needs ABI");
+_Static_assert(sizeof(struct swarp_plan) == 744, "swarp_plan ABI");
+_Static_assert(offsetof(struct swarp_plan, reasons) == 716, "swarp_plan ABI");
+_Static_assert(offsetof(swarp_scene_needs, planes) == 288, "swarp_scene_needs ABI");

@@ -168,6 +168,65 @@ void sw_poly_finalize(swarp_polyhedron* p, uint32_t first_new, double scale) {
     }
 }
 
+/* After clipping: merge each new on-plane vertex into an earlier on-plane
+ * vertex closer than eps (Euclidean).  Only these can be that close: every
+ * other kept vertex lies more than the classification tolerance (>= eps)
+ * off the plane.  Loops are then rewritten and unreferenced vertices
+ * dropped, only when something merged. */
+static void sw_poly_merge_on_plane(swarp_polyhedron* p, const uint8_t* on, uint32_t n_on, uint32_t first_new,
+                                   double eps) {
+    uint8_t remap[SWARP_POLY_MAX_VERTICES];
+    int merged = 0;
+    const double eps2 = eps * eps;
+    for (uint32_t i = 0; i < p->vertex_count; ++i) remap[i] = (uint8_t)i;
+    for (uint32_t a = 1; a < n_on; ++a) {
+        if (on[a] < first_new) continue; /* old vertices are apart already */
+        swarp_vec3 v = p->vertices[on[a]];
+        for (uint32_t b = 0; b < a; ++b) {
+            if (remap[on[b]] != on[b]) continue;
+            swarp_vec3 w = p->vertices[on[b]];
+            double dx = v.x - w.x, dy = v.y - w.y, dz = v.z - w.z;
+            if (dx * dx + dy * dy + dz * dz <= eps2) {
+                remap[on[a]] = on[b];
+                merged = 1;
+                break;
+            }
+        }
+    }
+    if (!merged) return;
+    uint32_t nf = 0;
+    uint8_t used[SWARP_POLY_MAX_VERTICES];
+    memset(used, 0, p->vertex_count);
+    for (uint32_t f = 0; f < p->face_count; ++f) {
+        uint32_t n = p->face_vertex_count[f], m = 0;
+        const uint8_t* src = p->face_vertices[f];
+        uint8_t* loop = p->face_vertices[nf];
+        for (uint32_t k = 0; k < n; ++k) {
+            uint8_t id = remap[src[k]];
+            if (m > 0 && loop[m - 1] == id) continue;
+            loop[m++] = id;
+        }
+        while (m > 1 && loop[m - 1] == loop[0]) --m;
+        if (m < 3) continue;
+        p->face_vertex_count[nf] = m;
+        p->planes[nf] = p->planes[f];
+        for (uint32_t k = 0; k < m; ++k) used[loop[k]] = 1;
+        ++nf;
+    }
+    p->face_count = nf;
+    uint32_t k = 0;
+    for (uint32_t i = 0; i < p->vertex_count; ++i) {
+        int keep = nf > 0 ? used[i] : (remap[i] == i);
+        if (keep) {
+            remap[i] = (uint8_t)k;
+            p->vertices[k++] = p->vertices[i];
+        }
+    }
+    for (uint32_t f = 0; f < nf; ++f)
+        for (uint32_t j = 0; j < p->face_vertex_count[f]; ++j) p->face_vertices[f][j] = remap[p->face_vertices[f][j]];
+    p->vertex_count = k;
+}
+
 /* The 6 faces of a hexahedron given by 8 corners, corner index = x | y<<1 |
  * z<<2.  The plane of each face comes from Newell's normal, oriented away
  * from the centroid (so the corner order's handedness does not matter). */
@@ -296,34 +355,35 @@ static double sw_pseudo_angle(double x, double y) {
 }
 
 /* Keeps n·x + d <= 0; n need not be unit.  in and out may alias. */
-swarp_status sw_poly_clip(const swarp_polyhedron* in, swarp_vec3 n_raw, double d_raw,
-                          swarp_polyhedron* out) {
+/* Clips in into out (out != in).  When no vertex lies outside, *unchanged
+ * is set and out is not written. */
+static swarp_status sw_poly_clip_to(const swarp_polyhedron* in, swarp_vec3 n_raw, double d_raw,
+                                    swarp_polyhedron* out, int* unchanged, double scale /* 0: compute */) {
+    *unchanged = 0;
     double len = sw_glen(n_raw);
     if (!(len > 0.0)) return SWARP_ERR_ZERO_VECTOR;
     swarp_vec3 n = sw_scale(n_raw, 1.0 / len);
     double d = d_raw / len;
     const uint32_t nv = in->vertex_count;
     if (nv == 0) {
-        if (out != in) {
-            out->vertex_count = 0;
-            out->face_count = 0;
-        }
+        *unchanged = 1;
         return SWARP_OK;
     }
     /* tolerance for "on the plane": see SWARP_POLY_EPS_REL */
-    const double in_scale = sw_poly_scale(in);
+    const double in_scale = scale > 0.0 ? scale : sw_poly_scale(in);
     const double eps = SWARP_POLY_EPS_REL * sw_max(in_scale, fabs(d));
     double dist[SWARP_POLY_MAX_VERTICES];
     signed char side[SWARP_POLY_MAX_VERTICES];
     int any_out = 0, any_in = 0;
     for (uint32_t i = 0; i < nv; ++i) {
         dist[i] = sw_dot(n, in->vertices[i]) + d;
-        side[i] = dist[i] > eps ? 1 : (dist[i] < -eps ? -1 : 0);
-        any_out |= side[i] > 0;
-        any_in |= side[i] <= 0;
+        int o = dist[i] > eps, u = dist[i] < -eps; /* branch-free */
+        side[i] = (signed char)(o - u);
+        any_out |= o;
+        any_in |= !o;
     }
     if (!any_out) {
-        if (out != in) sw_poly_copy(in, out);
+        *unchanged = 1;
         return SWARP_OK;
     }
     if (!any_in) {
@@ -332,7 +392,7 @@ swarp_status sw_poly_clip(const swarp_polyhedron* in, swarp_vec3 n_raw, double d
         return SWARP_OK;
     }
 
-    swarp_polyhedron t; /* built here, copied out at the end (out may be in) */
+    swarp_polyhedron* t = out; /* built in place (out != in) */
     uint8_t map[SWARP_POLY_MAX_VERTICES];
     uint32_t tv = 0;
     uint8_t on_plane[SWARP_POLY_MAX_VERTICES];
@@ -340,7 +400,7 @@ swarp_status sw_poly_clip(const swarp_polyhedron* in, swarp_vec3 n_raw, double d
     for (uint32_t i = 0; i < nv; ++i) {
         if (side[i] <= 0) {
             map[i] = (uint8_t)tv;
-            t.vertices[tv] = in->vertices[i];
+            t->vertices[tv] = in->vertices[i];
             if (side[i] == 0) on_plane[n_on++] = (uint8_t)tv;
             ++tv;
         }
@@ -355,7 +415,7 @@ swarp_status sw_poly_clip(const swarp_polyhedron* in, swarp_vec3 n_raw, double d
         uint32_t fn = in->face_vertex_count[f];
         const uint8_t* fl = in->face_vertices[f];
         if (tf >= SWARP_POLY_MAX_FACES) return SWARP_ERR_CAPACITY;
-        uint8_t* loop = t.face_vertices[tf]; /* written in place */
+        uint8_t* loop = t->face_vertices[tf]; /* written in place */
         uint32_t m = 0;
         int all_on = 1;
         for (uint32_t k = 0; k < fn; ++k) {
@@ -375,7 +435,7 @@ swarp_status sw_poly_clip(const swarp_polyhedron* in, swarp_vec3 n_raw, double d
                     /* canonical order: both faces get the very same point */
                     double s = dist[lo] / (dist[lo] - dist[hi]);
                     swarp_vec3 a = in->vertices[lo], b = in->vertices[hi];
-                    t.vertices[tv] = sw_add(a, sw_scale(sw_sub(b, a), s));
+                    t->vertices[tv] = sw_add(a, sw_scale(sw_sub(b, a), s));
                     edge_lo[e] = lo;
                     edge_hi[e] = hi;
                     edge_v[e] = (uint8_t)tv;
@@ -392,8 +452,8 @@ swarp_status sw_poly_clip(const swarp_polyhedron* in, swarp_vec3 n_raw, double d
             swarp_vec3 fnrm = {in->planes[f].a, in->planes[f].b, in->planes[f].c};
             if (sw_dot(fnrm, n) > 0.0) cap_coincides = 1;
         }
-        t.face_vertex_count[tf] = m;
-        t.planes[tf] = in->planes[f];
+        t->face_vertex_count[tf] = m;
+        t->planes[tf] = in->planes[f];
         ++tf;
     }
     /* the cap: the new face on the clip plane, sorted counter-clockwise seen
@@ -402,7 +462,7 @@ swarp_status sw_poly_clip(const swarp_polyhedron* in, swarp_vec3 n_raw, double d
         if (n_on > SWARP_POLY_MAX_FACE_VERTICES) return SWARP_ERR_CAPACITY;
         if (tf >= SWARP_POLY_MAX_FACES) return SWARP_ERR_CAPACITY;
         swarp_vec3 c = {0, 0, 0};
-        for (uint32_t k = 0; k < n_on; ++k) c = sw_add(c, t.vertices[on_plane[k]]);
+        for (uint32_t k = 0; k < n_on; ++k) c = sw_add(c, t->vertices[on_plane[k]]);
         c = sw_scale(c, 1.0 / n_on);
         /* in-plane basis (e1, e2) with e1 x e2 = n */
         swarp_vec3 ref = fabs(n.x) < 0.6 ? sw_v3(1, 0, 0) : (fabs(n.y) < 0.6 ? sw_v3(0, 1, 0) : sw_v3(0, 0, 1));
@@ -410,9 +470,9 @@ swarp_status sw_poly_clip(const swarp_polyhedron* in, swarp_vec3 n_raw, double d
         sw_gnormalize(sw_cross(ref, n), &e1);
         e2 = sw_cross(n, e1);
         double key[SWARP_POLY_MAX_FACE_VERTICES];
-        uint8_t* idx = t.face_vertices[tf];
+        uint8_t* idx = t->face_vertices[tf];
         for (uint32_t k = 0; k < n_on; ++k) {
-            swarp_vec3 q = sw_sub(t.vertices[on_plane[k]], c);
+            swarp_vec3 q = sw_sub(t->vertices[on_plane[k]], c);
             double kk = sw_pseudo_angle(sw_dot(q, e1), sw_dot(q, e2));
             uint32_t j = k;
             while (j > 0 && key[j - 1] > kk) {
@@ -423,48 +483,73 @@ swarp_status sw_poly_clip(const swarp_polyhedron* in, swarp_vec3 n_raw, double d
             key[j] = kk;
             idx[j] = on_plane[k];
         }
-        t.face_vertex_count[tf] = n_on;
-        t.planes[tf].a = n.x;
-        t.planes[tf].b = n.y;
-        t.planes[tf].c = n.z;
-        t.planes[tf].d = d;
+        t->face_vertex_count[tf] = n_on;
+        t->planes[tf].a = n.x;
+        t->planes[tf].b = n.y;
+        t->planes[tf].c = n.z;
+        t->planes[tf].d = d;
         ++tf;
     }
-    t.vertex_count = tv;
-    t.face_count = tf;
-    sw_poly_finalize(&t, n_kept, in_scale); /* clipping never grows coordinates */
-    sw_poly_copy(&t, out);
+    t->vertex_count = tv;
+    t->face_count = tf;
+    sw_poly_merge_on_plane(t, on_plane, n_on, n_kept, SWARP_POLY_EPS_REL * in_scale);
     return SWARP_OK;
 }
 
-swarp_status sw_poly_clip_box(const swarp_polyhedron* in, const swarp_aabb* box, swarp_polyhedron* out) {
-    const swarp_vec3 ns[6] = {{-1, 0, 0}, {1, 0, 0}, {0, -1, 0}, {0, 1, 0}, {0, 0, -1}, {0, 0, 1}};
-    const double ds[6] = {box->min.x, -box->max.x, box->min.y, -box->max.y, box->min.z, -box->max.z};
-    const swarp_polyhedron* src = in;
-    /* the polyhedron's own bounds: a box plane that no vertex crosses (by
-     * more than the clip's tolerance) is skipped without a clip call */
-    double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
-    for (uint32_t i = 0; i < in->vertex_count; ++i) {
-        const double* v = &in->vertices[i].x;
+/* Keeps n·x + d <= 0; n need not be unit.  in and out may alias. */
+swarp_status sw_poly_clip(const swarp_polyhedron* in, swarp_vec3 n, double d, swarp_polyhedron* out) {
+    swarp_polyhedron tmp;
+    swarp_polyhedron* dst = (out == in) ? &tmp : out;
+    int unchanged = 0;
+    swarp_status s = sw_poly_clip_to(in, n, d, dst, &unchanged, 0.0);
+    if (s != SWARP_OK) return s;
+    if (unchanged) {
+        if (out != in) sw_poly_copy(in, out);
+    } else if (dst != out) {
+        sw_poly_copy(dst, out);
+    }
+    return SWARP_OK;
+}
+
+static void sw_poly_bounds(const swarp_polyhedron* p, double lo[3], double hi[3]) {
+    lo[0] = lo[1] = lo[2] = INFINITY;
+    hi[0] = hi[1] = hi[2] = -INFINITY;
+    for (uint32_t i = 0; i < p->vertex_count; ++i) {
+        const double* v = &p->vertices[i].x;
         for (int c = 0; c < 3; ++c) {
             if (v[c] < lo[c]) lo[c] = v[c];
             if (v[c] > hi[c]) hi[c] = v[c];
         }
     }
+}
+
+swarp_status sw_poly_clip_box(const swarp_polyhedron* in, const swarp_aabb* box, swarp_polyhedron* out) {
+    const swarp_vec3 ns[6] = {{-1, 0, 0}, {1, 0, 0}, {0, -1, 0}, {0, 1, 0}, {0, 0, -1}, {0, 0, 1}};
+    const double ds[6] = {box->min.x, -box->max.x, box->min.y, -box->max.y, box->min.z, -box->max.z};
     const double* bmin = &box->min.x;
     const double* bmax = &box->max.x;
-    int clipped = 0;
+    /* ping-pong between out and a local buffer: no copy per plane; a plane
+     * the current bounds do not cross is skipped without a clip */
+    swarp_polyhedron buf;
+    const swarp_polyhedron* src = in;
+    double lo[3], hi[3];
+    sw_poly_bounds(in, lo, hi);
     for (int k = 0; k < 6; ++k) {
         int c = k / 2;
-        if (clipped || (k & 1 ? hi[c] > bmax[c] : lo[c] < bmin[c])) {
-            swarp_status s = sw_poly_clip(src, ns[k], ds[k], out);
-            if (s != SWARP_OK) return s;
-            src = out;
-            clipped = 1; /* bounds changed: test the remaining planes by clipping */
-            if (out->vertex_count == 0) break;
-        }
+        if ((k & 1) ? !(hi[c] > bmax[c]) : !(lo[c] < bmin[c])) continue;
+        swarp_polyhedron* dst = (src == out) ? &buf : out;
+        int unchanged = 0;
+        /* the scale from the bounds: the largest absolute coordinate */
+        double sc = 1e-300;
+        for (int q = 0; q < 3; ++q) sc = sw_max(sc, sw_max(fabs(lo[q]), fabs(hi[q])));
+        swarp_status s = sw_poly_clip_to(src, ns[k], ds[k], dst, &unchanged, sc);
+        if (s != SWARP_OK) return s;
+        if (unchanged) continue;
+        src = dst;
+        if (src->vertex_count == 0) break;
+        sw_poly_bounds(src, lo, hi);
     }
-    if (src != out) sw_poly_copy(in, out); /* inside the box already */
+    if (src != out) sw_poly_copy(src, out);
     return SWARP_OK;
 }
 

@@ -153,6 +153,14 @@ swarp_status sw_psm_setup(const swarp_camera* cam, const swarp_light* light, con
     if (Lh.w < 0.0) info = SWARP_INFO_PSM_INVERSE;
     swarp_vec3 b1 = sw_perp_ref(qn); /* roll reference, continuous in q̂ */
     swarp_vec3 a, e1, e2;
+    /* the receivers' centroid in PPS (reference point of the depth row) */
+    swarp_vec3 p0 = {0, 0, 0};
+    for (size_t i = 0; i < nh; ++i) {
+        swarp_vec4 X = sw_xform_point(&Mc, H[i]);
+        if (!(X.w > 0.0)) return SWARP_ERR_DEGENERATE;
+        p0 = sw_add(p0, sw_v3(X.x / X.w, X.y / X.w, X.z / X.w));
+    }
+    p0 = sw_scale(p0, 1.0 / (double)nh);
     double cx1 = 0.0, cx2 = 0.0; /* x, y row offsets: (e·q̂)/τ */
     double wa = 0.0, ww = 1.0;   /* w row = wa a·X + ww w_c */
     if (fabs(tau) < SW_PSM_TAU_ORTHO) {
@@ -193,7 +201,10 @@ swarp_status sw_psm_setup(const swarp_camera* cam, const swarp_light* light, con
     memset(&Q, 0, sizeof Q);
     sw_set(&Q, 0, 0, e1.x), sw_set(&Q, 0, 1, e1.y), sw_set(&Q, 0, 2, e1.z), sw_set(&Q, 0, 3, -cx1);
     sw_set(&Q, 1, 0, e2.x), sw_set(&Q, 1, 1, e2.y), sw_set(&Q, 1, 2, e2.z), sw_set(&Q, 1, 3, -cx2);
-    sw_set(&Q, 2, 0, a.x), sw_set(&Q, 2, 1, a.y), sw_set(&Q, 2, 2, a.z);
+    /* depth z = a·(X - w_c p0), p0 the receivers' centroid in PPS: then
+     * z/w = (u - u0)/(c0 + τu) has derivative a·R(p0)/(...)^2 > 0, i.e. it
+     * increases along every light ray for any position of the origin */
+    sw_set(&Q, 2, 0, a.x), sw_set(&Q, 2, 1, a.y), sw_set(&Q, 2, 2, a.z), sw_set(&Q, 2, 3, -sw_dot(a, p0));
     sw_set(&Q, 3, 0, wa * a.x), sw_set(&Q, 3, 1, wa * a.y), sw_set(&Q, 3, 2, wa * a.z), sw_set(&Q, 3, 3, ww);
     swarp_mat4 QM;
     sw_mul(&Q, &Mc, &QM);

@@ -152,7 +152,18 @@ static swarp_status sw_setup_points(const swarp_camera* cam, const swarp_light* 
             info = sw_info_merge(info, s);
         }
         sw_mul(&P0, &L, &M);
-        if (!sw_invert(&M, &M_inv)) return SWARP_ERR_SINGULAR;
+        if (light->type == SWARP_LIGHT_POINT) {
+            if (!sw_invert(&M, &M_inv)) return SWARP_ERR_SINGULAR;
+        } else { /* a rigid look-at: the inverse is the transpose and -R^T t */
+            memset(&M_inv, 0, sizeof M_inv);
+            for (int r = 0; r < 3; ++r)
+                for (int c = 0; c < 3; ++c) sw_set(&M_inv, r, c, sw_at(&M, c, r));
+            for (int r = 0; r < 3; ++r)
+                sw_set(&M_inv, r, 3,
+                       -(sw_at(&M, 0, r) * sw_at(&M, 0, 3) + sw_at(&M, 1, r) * sw_at(&M, 1, 3) +
+                         sw_at(&M, 2, r) * sw_at(&M, 2, 3)));
+            sw_set(&M_inv, 3, 3, 1.0);
+        }
         /* the points the map must see; point lights drop the apex region */
         swarp_vec3 Bk[SWARP_BODY_MAX_POINTS + 1];
         size_t nbk = 0;

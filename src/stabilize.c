@@ -239,3 +239,27 @@ SWARP_API swarp_status swarp_stabilize_directional(const swarp_camera* cam, doub
     if (out_report) *out_report = rep;
     return info;
 }
+
+SWARP_API swarp_status swarp_stabilize_snap_matrix(const swarp_mat4* m, double res_s, double res_t,
+                                                   const swarp_vec3* origin, swarp_mat4* out) {
+    if (!m || !origin || !out) return SWARP_ERR_NULL_POINTER;
+    if (!sw_mat_finite(m) || !sw_finite3(origin)) return SWARP_ERR_NON_FINITE;
+    if (!sw_finite(res_s) || !sw_finite(res_t) || !(res_s > 0.0) || !(res_t > 0.0))
+        return SWARP_ERR_RESOLUTION;
+    /* A projective last row (w depends on the point) means a warped map:
+     * exactly zero is required, the uniform maps of this library and of
+     * every ortho() have it. */
+    if (m->m[3] != 0.0 || m->m[7] != 0.0 || m->m[11] != 0.0) return SWARP_ERR_STABILIZE_WARPED;
+    const double w = m->m[15];
+    if (w == 0.0) return SWARP_ERR_SINGULAR;
+    /* texel coordinate of the origin; move it to the nearest whole texel */
+    const swarp_vec4 h = sw_xform_point(m, *origin);
+    const double s = (h.x / w + 1.0) * 0.5 * res_s, t = (h.y / w + 1.0) * 0.5 * res_t;
+    const double ds = nearbyint(s) - s, dt = nearbyint(t) - t;
+    swarp_mat4 r = *m;
+    r.m[12] += 2.0 * ds / res_s * w;
+    r.m[13] += 2.0 * dt / res_t * w;
+    if (!sw_mat_finite(&r)) return SWARP_ERR_NON_FINITE;
+    *out = r;
+    return SWARP_OK;
+}

@@ -215,6 +215,7 @@ static void make_case(int c, double* in) {
 }
 
 static double max_err[4][8];
+static int best_hist[K + 1]; /* how often each split was the best one */
 
 static int check_case(int c, const double* in, const float* outf) {
     double out[REC_OUT], e[8] = {0}, tol[8] = {0};
@@ -238,6 +239,7 @@ static int check_case(int c, const double* in, const float* outf) {
             uint32_t ic;
             double Lc;
             swarp_cascade_select_best(maps, K, &p, (uint32_t)in[4], &ic, &Lc);
+            best_hist[ic < K ? ic : K]++;
             int g = (int)out[0];
             e[0] = 0;
             if (g != (int)ic) {
@@ -432,6 +434,18 @@ int main(void) {
         printf("\n");
     }
     printf("%d of %d cases outside tolerance\n", bad, N_CASES);
+    /* the selection cases must exercise several splits */
+    int used = 0;
+    printf("best split chosen:");
+    for (int i = 0; i < K; ++i) {
+        printf(" %d", best_hist[i]);
+        used += best_hist[i] > 0;
+    }
+    printf("\n");
+    if (used < 3) {
+        fprintf(stderr, "splits_glsl: best-resolution cases hit only %d splits\n", used);
+        bad++;
+    }
     p_glDeleteBuffers(3, buf);
     p_glDeleteProgram(prog);
     free(lib);

@@ -67,6 +67,20 @@ static void clip(const swarp_mat4* m, swarp_vec3 p, double out[4]) {
     out[3] = h[3];
 }
 
+/* Rounding bound of evaluating a world-space matrix on a world point and
+ * dividing by w (the standard dot-product bound, 64 ulps): what no matrix can
+ * avoid in large worlds or near a perspective's apex. */
+static double clip_round(const swarp_mat4* m, swarp_vec3 p) {
+    double S[4], h[4];
+    for (int r = 0; r < 4; ++r) {
+        S[r] = fabs(m->m[r] * p.x) + fabs(m->m[4 + r] * p.y) + fabs(m->m[8 + r] * p.z) + fabs(m->m[12 + r]);
+        h[r] = m->m[r] * p.x + m->m[4 + r] * p.y + m->m[8 + r] * p.z + m->m[12 + r];
+    }
+    double e = 0;
+    for (int k = 0; k < 3; ++k) e = fmax(e, (S[k] + fabs(h[k] / h[3]) * S[3]) / fabs(h[3]));
+    return 64 * 2.2e-16 * e;
+}
+
 /* Independent point-in-frustum: view depth in [near, far] and inside the
  * side planes, computed from the camera directly (not from poly.c). */
 static int in_frustum(const swarp_camera* c, double near, double far, swarp_vec3 p, double tol) {
@@ -233,11 +247,12 @@ static void check_config_v(rng* R, const config* c, swarp_technique tech, swarp_
      * no matrix can avoid for a tiny B far from the origin. */
     double ext = 0;
     for (size_t i = 1; i < np; ++i) ext = fmax(ext, len(sub(pts[i], pts[0])));
-    double ctol = 1e-9 + 64 * 2.2e-16 * scale / fmax(ext, 1e-300);
+    double ctol0 = 1e-9 + 64 * 2.2e-16 * scale / fmax(ext, 1e-300);
+    double ctol = ctol0;
     /* tightness: B touches the x and y bounds */
     /* (PSM: unit cube clipping fits the receivers H, [KOZ] §14.2.2) */
     swarp_polyhedron Ht;
-    ck_assert_int_eq(swarp_body_h(&c->cam, res.view_near, res.view_far, &c->box, &Ht), SWARP_OK);
+    ck_assert_int_eq(swarp_body_h(&c->cam, c->cam.near, c->cam.far, &c->box, &Ht), SWARP_OK); /* as swarp_setup */
     const swarp_vec3* tp = tech == SWARP_TECHNIQUE_PSM ? Ht.vertices : pts;
     size_t ntp = tech == SWARP_TECHNIQUE_PSM ? Ht.vertex_count : np;
     double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
@@ -245,6 +260,7 @@ static void check_config_v(rng* R, const config* c, swarp_technique tech, swarp_
         double cc[4];
         clip(&res.matrix, tp[i], cc);
         if (c->light.type == SWARP_LIGHT_POINT && cc[3] <= 0) continue;
+        ctol = fmax(ctol, 1e-9 + clip_round(&res.matrix, tp[i]));
         for (int k = 0; k < 2; ++k) lo[k] = fmin(lo[k], cc[k]), hi[k] = fmax(hi[k], cc[k]);
     }
     /* (PSM fits the receivers a spot lights, H ∩ L, whose vertices this test
@@ -264,7 +280,7 @@ static void check_config_v(rng* R, const config* c, swarp_technique tech, swarp_
         if (!lit_by(c, H.vertices[i])) continue;
         double cc[4];
         clip(&res.matrix, H.vertices[i], cc);
-        CHECK(in_clip(cc, dr, ctol), "H vertex outside the map: %g %g %g w=%g (%s)", cc[0], cc[1], cc[2],
+        CHECK(in_clip(cc, dr, fmax(ctol0, 1e-9 + clip_round(&res.matrix, H.vertices[i]))), "H vertex outside the map: %g %g %g w=%g (%s)", cc[0], cc[1], cc[2],
                       cc[3], swarp_status_name(s));
     }
     int got = 0;
@@ -275,7 +291,7 @@ static void check_config_v(rng* R, const config* c, swarp_technique tech, swarp_
         samples[got++] = p;
         double cc[4];
         clip(&res.matrix, p, cc);
-        CHECK(in_clip(cc, dr, ctol), "point of V∩S outside the map: %g %g %g w=%g", cc[0], cc[1], cc[2],
+        CHECK(in_clip(cc, dr, fmax(ctol0, 1e-9 + clip_round(&res.matrix, p))), "point of V∩S outside the map: %g %g %g w=%g", cc[0], cc[1], cc[2],
                       cc[3]);
         st->cover_checked++;
     }
@@ -308,11 +324,12 @@ static void check_config_v(rng* R, const config* c, swarp_technique tech, swarp_
                 double zlo = dr == SWARP_DEPTH_ZERO_TO_ONE ? 0.0 : -1.0;
                 if (cc[2] < zlo) cc[2] = zlo;
             }
-            CHECK(in_clip(cc, dr, ctol), "caster between H and the light outside the map: %g %g %g (%s)",
+            double ptol = fmax(ctol0, 1e-9 + clip_round(&res.matrix, p));
+            CHECK(in_clip(cc, dr, ptol), "caster between H and the light outside the map: %g %g %g (%s)",
                           cc[0], cc[1], cc[2], swarp_status_name(s));
             /* depth order: the caster is nearer the light than the receiver
              * it shadows (for PSM with the light behind the camera too) */
-            CHECK(cc[2] <= ch[2] + ctol, "depth order wrong: caster %.17g receiver %.17g (%s, tech %d)", cc[2], ch[2],
+            CHECK(cc[2] <= ch[2] + ptol + clip_round(&res.matrix, h), "depth order wrong: caster %.17g receiver %.17g (%s, tech %d)", cc[2], ch[2],
                   swarp_status_name(s), (int)tech);
             st->extr_checked++;
         }
@@ -326,7 +343,7 @@ static void check_config(rng* R, const config* c, swarp_technique tech, swarp_de
 START_TEST(random_configurations_all_properties) {
     rng R = {0x5EED0001ull + (uint64_t)_i};
     sweep_stats st = {0};
-    int n = 1400;
+    int n = getenv("SWARP_STRESS") ? 30000 : 1400;
     for (int i = 0; i < n; ++i) {
         config c;
         rnd_config(&R, &c, (i % 10 == 0) ? 1e5 : 0.0);
@@ -971,6 +988,179 @@ START_TEST(focus_fit_maps_to_the_cube) {
 }
 END_TEST
 
+/* ---- light view and the LiSPSM warp called directly ----------------------- */
+START_TEST(light_view_alignment) {
+    rng R = {4242};
+    int blended = 0, aligned = 0;
+    for (int t = 0; t < 2000; ++t) {
+        config c;
+        rnd_config(&R, &c, 0);
+        swarp_light light;
+        memset(&light, 0, sizeof light);
+        light.type = SWARP_LIGHT_DIRECTIONAL;
+        light.direction = rnd_unit(&R);
+        if (t % 10 == 0) light.direction = scl(unit(c.cam.dir), (t % 20) ? 1.0 : -1.0); /* exactly (anti)parallel */
+        swarp_mat4 L;
+        swarp_status s = swarp_focus_light_view(&c.cam, &light, NULL, &L);
+        ck_assert(s == SWARP_OK || s == SWARP_INFO_LIGHT_PARALLEL);
+        /* rigid, right-handed: rows orthonormal, det = +1 */
+        swarp_vec3 r0 = v3(L.m[0], L.m[4], L.m[8]), r1 = v3(L.m[1], L.m[5], L.m[9]), r2 = v3(L.m[2], L.m[6], L.m[10]);
+        ck_assert_double_eq_tol(dot(r0, r0), 1, 1e-12);
+        ck_assert_double_eq_tol(dot(r1, r1), 1, 1e-12);
+        ck_assert_double_eq_tol(dot(r0, r1), 0, 1e-12);
+        ck_assert_double_eq_tol(dot(cross(r0, r1), r2), 1, 1e-12);
+        /* looks along the light: -z row is the light direction */
+        swarp_vec3 a = unit(light.direction);
+        ck_assert_double_eq_tol(dot(r2, a), -1, 1e-12);
+        /* the eye is the origin */
+        double e[4];
+        clip(&L, c.cam.eye, e);
+        ck_assert(fabs(e[0]) + fabs(e[1]) + fabs(e[2]) < 1e-9 * fmax(1, len(c.cam.eye)));
+        /* up = the view direction projected (outside the blend zone) */
+        swarp_vec3 v = unit(c.cam.dir);
+        swarp_vec3 vp = sub(v, scl(a, dot(v, a)));
+        if (len(vp) > 0.1737) {
+            ck_assert_int_eq(s, SWARP_OK);
+            ck_assert_double_eq_tol(dot(r1, unit(vp)), 1, 1e-12);
+            aligned++;
+        } else {
+            ck_assert_int_eq(s, SWARP_INFO_LIGHT_PARALLEL);
+            blended++;
+        }
+    }
+    ck_assert(aligned > 1000 && blended > 100);
+}
+END_TEST
+
+START_TEST(warp_lispsm_direct) {
+    /* overhead light, level camera, box containing V: n_opt = n + sqrt(n f)
+     * in eye units, and P maps B's extent along y to [-1, 1] */
+    swarp_camera cam = overhead_camera();
+    swarp_light light;
+    memset(&light, 0, sizeof light);
+    light.type = SWARP_LIGHT_DIRECTIONAL;
+    light.direction = v3(0, -1, 0);
+    swarp_aabb box = {{-300, -100, -150}, {300, 100, 50}};
+    swarp_vec3 pts[SWARP_BODY_MAX_POINTS];
+    size_t np = 0;
+    ck_assert_int_eq(swarp_body_points(&cam, 1, 100, &light, &box, pts, SWARP_BODY_MAX_POINTS, &np), SWARP_OK);
+    size_t need = 0;
+    ck_assert_int_eq(swarp_body_points(&cam, 1, 100, &light, &box, pts, 3, &need), SWARP_ERR_CAPACITY);
+    ck_assert_uint_eq(need, np);
+    swarp_mat4 L, P;
+    ck_assert_int_eq(swarp_focus_light_view(&cam, &light, NULL, &L), SWARP_OK);
+    swarp_warp_info info;
+    for (int center = 1; center <= 2; ++center) {
+        swarp_warp_options o;
+        memset(&o, 0, sizeof o);
+        o.center = (swarp_warp_center)center;
+        swarp_vec3 e = add(cam.eye, v3(0, 0, -1)); /* a nearest vertex on the near plane axis */
+        ck_assert_int_eq(swarp_warp_lispsm(&L, &cam, 1, 100, pts, np, &e, &o, &P, &info), SWARP_OK);
+        ck_assert_double_eq_tol(info.d, 99, 1e-9);
+        ck_assert_double_eq_tol(info.z_0, 1, 1e-9);
+        ck_assert_double_eq_tol(info.z_1, 100, 1e-9);
+        ck_assert_double_eq_tol(info.n_eye, 11, 1e-9);
+        ck_assert_double_eq_tol(info.gamma, PI / 2, 1e-12);
+        swarp_mat4 PL;
+        ck_assert_int_eq(swarp_mat4_mul(&P, &L, &PL), SWARP_OK);
+        double lo = INFINITY, hi = -INFINITY;
+        for (size_t i = 0; i < np; ++i) {
+            double cc[4];
+            clip(&PL, pts[i], cc);
+            ck_assert(cc[3] > 0);
+            lo = fmin(lo, cc[1]), hi = fmax(hi, cc[1]);
+        }
+        ck_assert_double_eq_tol(lo, -1, 1e-12);
+        ck_assert_double_eq_tol(hi, 1, 1e-12);
+    }
+    /* receivers: H itself for a directional light; H ∩ L for a spot */
+    swarp_polyhedron Hh, Rr;
+    ck_assert_int_eq(swarp_body_h(&cam, 1, 100, &box, &Hh), SWARP_OK);
+    ck_assert_int_eq(swarp_body_receivers(&Hh, &light, &Rr), SWARP_OK);
+    ck_assert_uint_eq(Rr.vertex_count, Hh.vertex_count);
+    swarp_light spot;
+    memset(&spot, 0, sizeof spot);
+    spot.type = SWARP_LIGHT_POINT;
+    spot.position = v3(0, 60, -50);
+    spot.direction = v3(0, -1, 0);
+    spot.cone_angle = 20 * DEG;
+    ck_assert_int_eq(swarp_body_receivers(&Hh, &spot, &Rr), SWARP_OK);
+    for (uint32_t i = 0; i < Rr.vertex_count; ++i) {
+        swarp_vec3 q = sub(Rr.vertices[i], spot.position);
+        /* inside the pyramid that circumscribes the cone: within atan(√2 tan 20°) */
+        ck_assert(acos(fmin(1.0, -q.y / len(q))) <= atan(sqrt(2.0) * tan(20 * DEG)) + 1e-9);
+        ck_assert(in_frustum(&cam, 1, 100, Rr.vertices[i], 1e-9));
+    }
+    spot.direction = v3(0, 1, 0); /* pointing away: lights nothing of H */
+    ck_assert_int_eq(swarp_body_receivers(&Hh, &spot, &Rr), SWARP_ERR_BODY_EMPTY);
+    /* a caller's n' = +inf is the uniform map */
+    swarp_warp_options o;
+    memset(&o, 0, sizeof o);
+    o.param = SWARP_WARP_PARAM_USER;
+    o.n_user = INFINITY;
+    ck_assert_int_eq(swarp_warp_lispsm(&L, &cam, 1, 100, pts, np, NULL, &o, &P, &info), SWARP_INFO_WARP_UNIFORM);
+    ck_assert(P.m[3] == 0 && P.m[7] == 0 && P.m[11] == 0); /* no perspective row */
+    /* bad input: untouched */
+    swarp_mat4 P0 = P;
+    pts[0].x = NAN;
+    ck_assert_int_eq(swarp_warp_lispsm(&L, &cam, 1, 100, pts, np, NULL, NULL, &P, &info), SWARP_ERR_NON_FINITE);
+    ck_assert(memcmp(&P, &P0, sizeof P) == 0);
+    pts[0].x = 0;
+    o.param = (swarp_warp_param)17;
+    ck_assert_int_eq(swarp_warp_lispsm(&L, &cam, 1, 100, pts, np, NULL, &o, &P, &info), SWARP_ERR_UNKNOWN_ENUM);
+    ck_assert_int_eq(swarp_warp_lispsm(&L, &cam, 5, 1, pts, np, NULL, NULL, &P, &info), SWARP_ERR_NEAR_FAR);
+}
+END_TEST
+
+/* [KOZ] §14.2.1: light behind the camera.  Casters behind the camera and
+ * the receivers in front that they shadow land inside the map, and the
+ * caster is nearer the light in depth (inverse projection, no slide-back),
+ * also with the virtual slide-back option. */
+START_TEST(psm_light_behind_camera) {
+    swarp_camera cam = overhead_camera();
+    cam.dir = unit(v3(0, -0.25, -1));
+    swarp_aabb box = {{-100, 0, -120}, {100, 30, 60}}; /* reaches 60 units behind the camera */
+    for (int deg = 5; deg <= 80; deg += 5) {
+        for (int slide = 0; slide < 2; ++slide) {
+            swarp_light light;
+            memset(&light, 0, sizeof light);
+            light.type = SWARP_LIGHT_DIRECTIONAL;
+            /* travels forward and down: comes from behind the camera */
+            light.direction = unit(add(scl(v3(0, 0, -1), cos(deg * DEG)), scl(v3(0, -1, 0), sin(deg * DEG))));
+            swarp_setup_options o;
+            memset(&o, 0, sizeof o);
+            o.technique = SWARP_TECHNIQUE_PSM;
+            o.psm_slideback = (uint32_t)slide;
+            swarp_setup_result r;
+            swarp_status s = swarp_setup(&cam, &light, &box, &o, &r, NULL, 0, NULL);
+            ck_assert_msg(!swarp_status_is_error(s), "%d°: %s", deg, swarp_status_name(s));
+            if (!slide) ck_assert_int_eq(s, SWARP_INFO_PSM_INVERSE);
+            int behind = 0;
+            rng R = {(uint64_t)deg};
+            for (int k = 0; k < 400; ++k) {
+                swarp_vec3 h = rnd_in_frustum(&R, &cam, cam.near, cam.far);
+                if (!in_box(&box, h, 0)) continue;
+                double ch[4];
+                clip(&r.matrix, h, ch);
+                ck_assert(in_clip(ch, SWARP_DEPTH_NEG_ONE_TO_ONE, 1e-9));
+                /* walk back toward the light through the box */
+                for (double t = 1; t < 400; t *= 1.7) {
+                    swarp_vec3 p = sub(h, scl(light.direction, t));
+                    if (!in_box(&box, p, 0)) break;
+                    double cp[4];
+                    clip(&r.matrix, p, cp);
+                    ck_assert_msg(in_clip(cp, SWARP_DEPTH_NEG_ONE_TO_ONE, 1e-9), "%d°: caster outside the map", deg);
+                    ck_assert_msg(cp[2] < ch[2] + 1e-12, "%d°: caster depth %.17g not before receiver %.17g", deg,
+                                  cp[2], ch[2]);
+                    if (dot(sub(p, cam.eye), unit(cam.dir)) < 0) behind++;
+                }
+            }
+            ck_assert_msg(behind > 10, "%d°: too few casters behind the camera (%d)", deg, behind);
+        }
+    }
+}
+END_TEST
+
 Suite* geometry_suite(void) {
     Suite* s = suite_create("geometry");
     TCase* tc = tcase_create("properties");
@@ -990,6 +1180,9 @@ Suite* geometry_suite(void) {
     tcase_add_test(tc, poly_camera_and_inverse_matrix_agree);
     tcase_add_test(tc, adjusted_range_brackets_samples);
     tcase_add_test(tc, focus_fit_maps_to_the_cube);
+    tcase_add_test(tc, light_view_alignment);
+    tcase_add_test(tc, warp_lispsm_direct);
+    tcase_add_test(tc, psm_light_behind_camera);
     suite_add_tcase(s, tc);
     return s;
 }

@@ -186,6 +186,45 @@ START_TEST(model_equals_core_lloyd_at_overhead_light) {
 }
 END_TEST
 
+START_TEST(model_equals_geometry_setup_at_overhead_light) {
+    /* The geometry stage builds the real light matrices from the body B and
+     * reports (2.3)/(2.4) at its own n'; with a scene box holding the whole
+     * view and the sun at zenith, its numbers must be the planner's, split by
+     * split, for uniform, LiSPSM n_opt and PSM. */
+    static const swarp_plan_warp warps[3] = {SWARP_PLAN_WARP_UNIFORM, SWARP_PLAN_WARP_LISPSM_NOPT,
+                                             SWARP_PLAN_WARP_PSM};
+    static const swarp_technique techs[3] = {SWARP_TECHNIQUE_UNIFORM, SWARP_TECHNIQUE_LISPSM,
+                                             SWARP_TECHNIQUE_PSM};
+    double fns[3] = {10.0, 100.0, 1000.0};
+    for (int fi = 0; fi < 3; ++fi)
+        for (int wi = 0; wi < 3; ++wi)
+            for (uint32_t K = 1; K <= 4; K *= 2) {
+                if (K > 1 && wi == 2) continue;
+                double fn = fns[fi];
+                swarp_scene_needs n = scene(90.0, fn);
+                swarp_budget b = budget_of(1.0);
+                swarp_plan_chain c = chain_of(warps[wi], K > 1 ? SWARP_PLAN_SCHEME_LOG : SWARP_PLAN_SCHEME_NONE, K);
+                swarp_plan_result p;
+                ck_assert_int_eq(swarp_plan_evaluate(&n, &b, &c, &p), SWARP_OK);
+                swarp_aabb box = {{-2.0 * fn, -2.0 * fn, -1.05 * fn}, {2.0 * fn, 2.0 * fn, 1.0}};
+                swarp_setup_options o;
+                memset(&o, 0, sizeof o);
+                o.technique = techs[wi];
+                o.map_width = 2048;
+                o.screen_width = 1024;
+                o.screen_height = 768;
+                for (uint32_t i = 0; i < K; ++i) {
+                    swarp_setup_result r;
+                    swarp_status s = swarp_setup_range(&n.camera, &n.light, &box, p.splits[i], p.splits[i + 1],
+                                                       &o, &r, NULL, 0, NULL);
+                    ck_assert_msg(!swarp_status_is_error(s), "%s", swarp_status_name(s));
+                    ck_assert_double_eq_tol(r.max_mx, p.split_max_mx[i], 1e-6 * p.split_max_mx[i]);
+                    ck_assert_double_eq_tol(r.max_mz, p.split_max_mz[i], 1e-6 * p.split_max_mz[i]);
+                }
+            }
+}
+END_TEST
+
 START_TEST(model_equals_dense_sampling_any_gamma) {
     rng_state = 0x5eed0001ull;
     static const swarp_plan_warp warps[] = {
@@ -997,6 +1036,7 @@ static Suite* plan_suite(void) {
     tcase_set_timeout(tc, 600);
     tcase_add_test(tc, model_equals_core_lloyd_at_overhead_light);
     tcase_add_test(tc, model_equals_dense_sampling_any_gamma);
+    tcase_add_test(tc, model_equals_geometry_setup_at_overhead_light);
     tcase_add_test(tc, duelling_frusta_fade_every_warp_to_uniform);
     tcase_add_loop_test(tc, expectations_table, 0, (int)(sizeof table / sizeof table[0]));
     tcase_add_test(tc, defaults_are_the_documented_scene);

@@ -411,6 +411,86 @@ START_TEST(stabilize_sphere_size_constant_and_levels_quantised) {
 }
 END_TEST
 
+/* An orthographic light map built here independently: basis (u, v, w) from a
+ * random light direction, half sizes hx, hy, depth range [t0, t1] along d. */
+typedef struct ortho_map {
+    swarp_bias_map map;
+    swarp_vec3 u, v, d;
+    double hx, hy, t0, t1;
+} ortho_map;
+
+static ortho_map make_ortho(swarp_vec3 d, swarp_vec3 centre, double hx, double hy, double t0,
+                            double t1, double res_s, double res_t) {
+    ortho_map o;
+    memset(&o, 0, sizeof o);
+    o.d = vnorm(d);
+    o.u = vnorm(vcross(o.d, fabs(o.d.z) < 0.9 ? v3(0, 0, 1) : v3(1, 0, 0)));
+    o.v = vcross(o.u, o.d);
+    o.hx = hx;
+    o.hy = hy;
+    o.t0 = t0;
+    o.t1 = t1;
+    swarp_vec3 rows[3] = {vscale(o.u, 1 / hx), vscale(o.v, 1 / hy), vscale(o.d, 2 / (t1 - t0))};
+    double tr[3] = {-vdot(o.u, centre) / hx, -vdot(o.v, centre) / hy,
+                    -2 * vdot(o.d, centre) / (t1 - t0) - (t1 + t0) / (t1 - t0)};
+    for (int r = 0; r < 3; ++r) {
+        o.map.world_to_clip.m[0 + r] = ((double*)&rows[r])[0];
+        o.map.world_to_clip.m[4 + r] = ((double*)&rows[r])[1];
+        o.map.world_to_clip.m[8 + r] = ((double*)&rows[r])[2];
+        o.map.world_to_clip.m[12 + r] = tr[r];
+    }
+    o.map.world_to_clip.m[15] = 1;
+    o.map.res_s = res_s;
+    o.map.res_t = res_t;
+    o.map.depth = SWARP_DEPTH_NEG_ONE_TO_ONE;
+    return o;
+}
+
+START_TEST(stabilize_snap_matrix_whole_texels) {
+    /* a caller's ortho map with fixed scale and orientation, sliding with
+     * the camera: after snapping, a fixed point moves by whole texels */
+    rng_state = 91;
+    for (int rep = 0; rep < 20; ++rep) {
+        swarp_vec3 origin = v3(rng_uniform(-1e6, 1e6), 0, rng_uniform(-1e6, 1e6));
+        swarp_vec3 P = vadd(origin, v3(rng_uniform(-50, 50), rng_uniform(-5, 5), rng_uniform(-50, 50)));
+        double prev[2] = {0, 0};
+        for (int it = 0; it < 50; ++it) {
+            swarp_vec3 c = vadd(origin, v3(rng_uniform(-30, 30), 0, rng_uniform(-30, 30)));
+            ortho_map o = make_ortho(v3(0.3, -1, 0.2), vsub(c, origin), 80, 60, -100, 100, 2048, 1024);
+            swarp_mat4 M;
+            /* the matrix takes origin-relative points here: snap about 0 */
+            double st[2], st0[2];
+            swarp_vec3 zero = v3(0, 0, 0);
+            ck_assert_int_eq(swarp_stabilize_snap_matrix(&o.map.world_to_clip, 2048, 1024, &zero, &M), SWARP_OK);
+            texel_of(&M, vsub(P, origin), 2048, st);
+            st[1] = st[1] / 2048 * 1024;
+            texel_of(&o.map.world_to_clip, vsub(P, origin), 2048, st0);
+            ck_assert(fabs(st[0] - st0[0]) <= 0.5 + 1e-9); /* moved by at most half a texel */
+            if (it > 0) {
+                ck_assert(frac_dist(st[0] - prev[0]) < 1e-6);
+                ck_assert(frac_dist(st[1] - prev[1]) < 1e-6);
+            }
+            prev[0] = st[0];
+            prev[1] = st[1];
+        }
+    }
+    /* a warped (projective) map has no uniform grid */
+    swarp_mat4 P4, out;
+    memset(&P4, 0, sizeof P4);
+    P4.m[0] = P4.m[5] = 1;
+    P4.m[10] = -1.02;
+    P4.m[11] = -1;
+    P4.m[14] = -2.02;
+    memset(&out, 0x11, sizeof out);
+    swarp_mat4 outs = out;
+    swarp_vec3 o0 = v3(0, 0, 0);
+    ck_assert_int_eq(swarp_stabilize_snap_matrix(&P4, 512, 512, &o0, &out), SWARP_ERR_STABILIZE_WARPED);
+    ck_assert_int_eq(swarp_stabilize_snap_matrix(&P4, 0, 512, &o0, &out), SWARP_ERR_RESOLUTION);
+    ck_assert_int_eq(swarp_stabilize_snap_matrix(NULL, 512, 512, &o0, &out), SWARP_ERR_NULL_POINTER);
+    ck_assert_mem_eq(&out, &outs, sizeof out);
+}
+END_TEST
+
 START_TEST(stabilize_bad_inputs) {
     swarp_camera cam = make_camera(v3(0, 5, 0), v3(0, -0.3, -1), 1.0, 1.0, 1, 100);
     swarp_vec3 light = v3(0, -1, 0.1), body[8];
@@ -470,41 +550,6 @@ END_TEST
 /* ======================================================================= */
 /* Bias [KOZ] §14.2.3                                                      */
 /* ======================================================================= */
-
-/* An orthographic light map built here independently: basis (u, v, w) from a
- * random light direction, half sizes hx, hy, depth range [t0, t1] along d. */
-typedef struct ortho_map {
-    swarp_bias_map map;
-    swarp_vec3 u, v, d;
-    double hx, hy, t0, t1;
-} ortho_map;
-
-static ortho_map make_ortho(swarp_vec3 d, swarp_vec3 centre, double hx, double hy, double t0,
-                            double t1, double res_s, double res_t) {
-    ortho_map o;
-    memset(&o, 0, sizeof o);
-    o.d = vnorm(d);
-    o.u = vnorm(vcross(o.d, fabs(o.d.z) < 0.9 ? v3(0, 0, 1) : v3(1, 0, 0)));
-    o.v = vcross(o.u, o.d);
-    o.hx = hx;
-    o.hy = hy;
-    o.t0 = t0;
-    o.t1 = t1;
-    swarp_vec3 rows[3] = {vscale(o.u, 1 / hx), vscale(o.v, 1 / hy), vscale(o.d, 2 / (t1 - t0))};
-    double tr[3] = {-vdot(o.u, centre) / hx, -vdot(o.v, centre) / hy,
-                    -2 * vdot(o.d, centre) / (t1 - t0) - (t1 + t0) / (t1 - t0)};
-    for (int r = 0; r < 3; ++r) {
-        o.map.world_to_clip.m[0 + r] = ((double*)&rows[r])[0];
-        o.map.world_to_clip.m[4 + r] = ((double*)&rows[r])[1];
-        o.map.world_to_clip.m[8 + r] = ((double*)&rows[r])[2];
-        o.map.world_to_clip.m[12 + r] = tr[r];
-    }
-    o.map.world_to_clip.m[15] = 1;
-    o.map.res_s = res_s;
-    o.map.res_t = res_t;
-    o.map.depth = SWARP_DEPTH_NEG_ONE_TO_ONE;
-    return o;
-}
 
 START_TEST(bias_texel_size_uniform_equals_footprint) {
     rng_state = 5;
@@ -775,6 +820,30 @@ START_TEST(select_best_never_worse_than_depth) {
     }
     ck_assert_int_gt(overlap_points, 100); /* the property was exercised */
     ck_assert_int_gt(better, 10);          /* and best-resolution did win */
+}
+END_TEST
+
+START_TEST(view_depth_of_world_points) {
+    rng_state = 33;
+    for (int it = 0; it < 100; ++it) {
+        swarp_camera cam = make_camera(v3(rng_uniform(-1e5, 1e5), 3, rng_uniform(-1e5, 1e5)), rand_unit(), 1, 1, 1, 100);
+        double z = rng_uniform(1, 100), x = rng_uniform(-5, 5);
+        swarp_vec3 side = vnorm(vcross(cam.dir, cam.up));
+        swarp_vec3 p = vadd(vadd(cam.eye, vscale(vnorm(cam.dir), z)), vscale(side, x));
+        double d;
+        ck_assert_int_eq(swarp_cascade_view_depth(&cam, &p, &d), SWARP_OK);
+        ck_assert_double_eq_tol(d, z, 1e-9 * 1e5);
+    }
+    swarp_camera cam = make_camera(v3(0, 0, 0), v3(0, 0, -1), 1, 1, 1, 100);
+    swarp_vec3 p = v3(0, 0, -3);
+    double d = -1;
+    cam.dir = v3(0, 0, 0);
+    ck_assert_int_eq(swarp_cascade_view_depth(&cam, &p, &d), SWARP_ERR_ZERO_VECTOR);
+    p.x = NAN;
+    cam.dir = v3(0, 0, -1);
+    ck_assert_int_eq(swarp_cascade_view_depth(&cam, &p, &d), SWARP_ERR_NON_FINITE);
+    ck_assert_int_eq(swarp_cascade_view_depth(&cam, NULL, &d), SWARP_ERR_NULL_POINTER);
+    ck_assert(d == -1);
 }
 END_TEST
 
@@ -1133,6 +1202,17 @@ START_TEST(cascade_splits_cover_bodies_and_range) {
     int tested = 0;
     for (int it = 0; it < 120; ++it) {
         scene_cfg c = random_scene(0);
+        if (it % 3 == 2) { /* point light high above the scene */
+            c.light.type = SWARP_LIGHT_POINT;
+            c.light.position = v3(rng_uniform(-300, 300), c.box.max.y + rng_uniform(300, 3000), rng_uniform(-300, 300));
+        }
+        if (it % 5 == 4) { /* large world: everything 3e5 away from the origin */
+            swarp_vec3 off = v3(3e5, 0, -2e5);
+            c.box.min = vadd(c.box.min, off);
+            c.box.max = vadd(c.box.max, off);
+            c.cam.eye = vadd(c.cam.eye, off);
+            c.light.position = vadd(c.light.position, off);
+        }
         swarp_cascade_options o;
         memset(&o, 0, sizeof o);
         const uint32_t Ks[4] = {2, 4, 8, 16};
@@ -1172,8 +1252,19 @@ START_TEST(cascade_splits_cover_bodies_and_range) {
                 lo = fmin(lo, x);
                 hi = fmax(hi, x);
             }
+            /* uniform maps: a world bias of 1 toward the light lowers the
+             * window depth by depth_per_world anywhere in the split */
+            if (o.setup.technique == SWARP_TECHNIQUE_UNIFORM && c.light.type == SWARP_LIGHT_DIRECTIONAL) {
+                swarp_vec3 q = B[nb / 2], L = vscale(vnorm(c.light.direction), -1.0);
+                double h0[4], h1[4];
+                xform(&sp[i].matrix, q, h0);
+                xform(&sp[i].matrix, vadd(q, L), h1);
+                double dd = 0.5 * (h0[2] / h0[3] - h1[2] / h1[3]);
+                ck_assert_double_eq_tol(sp[i].depth_per_world, dd, 1e-9 * fabs(dd) + 1e-15);
+                ck_assert(sp[i].depth_per_world > 0);
+            }
             /* uniform maps: kernel scale = (3.9) with the body's light-space x extent */
-            if (o.setup.technique == SWARP_TECHNIQUE_UNIFORM)
+            if (o.setup.technique == SWARP_TECHNIQUE_UNIFORM && c.light.type == SWARP_LIGHT_DIRECTIONAL)
                 ck_assert_double_eq_tol(sp[i].kernel_scale[0], 0.5 * l_sc * 2 / (hi - lo), 1e-7 * sp[i].kernel_scale[0]);
             /* atlas matrix = clip_to_atlas * matrix */
             double p4[4];
@@ -1182,7 +1273,14 @@ START_TEST(cascade_splits_cover_bodies_and_range) {
             xform(&sp[i].matrix, B[0], h);
             for (int r2 = 0; r2 < 4; ++r2)
                 for (int q = 0; q < 4; ++q) t[r2] += sp[i].tile.clip_to_atlas.m[q * 4 + r2] * h[q];
-            for (int r2 = 0; r2 < 4; ++r2) ck_assert_double_eq_tol(p4[r2], t[r2], 1e-9 * (1 + fabs(t[r2])));
+            /* rounding: relative to the size of the terms summed (large worlds
+             * cancel 1e5-sized terms down to the clip range) */
+            for (int r2 = 0; r2 < 4; ++r2) {
+                const swarp_mat4* A = &sp[i].atlas_matrix;
+                double terms = fabs(A->m[12 + r2]) + fabs(A->m[r2] * B[0].x) + fabs(A->m[4 + r2] * B[0].y) +
+                               fabs(A->m[8 + r2] * B[0].z);
+                ck_assert_double_eq_tol(p4[r2], t[r2], 1e-13 * terms + 1e-15);
+            }
         }
     }
     ck_assert_int_gt(tested, 80);
@@ -1268,9 +1366,11 @@ END_TEST
 START_TEST(cascade_stabilized_whole_texels) {
     rng_state = 55;
     scene_cfg c = random_scene(0);
-    /* a box the whole view frustum stays inside: adjusted near/far constant */
-    c.box.min = v3(-500, -400, -500);
-    c.box.max = v3(500, 400, 500);
+    /* a flat box the view frustum leaves through the ground: the adjusted
+     * far changes every frame, the exact solution must not care (it splits
+     * the camera's own range, [RHS] §3.5) */
+    c.box.min = v3(-500, -5, -500);
+    c.box.max = v3(500, 40, 500);
     c.cam = make_camera(v3(0, 10, 0), v3(0.2, -0.3, -1), 1.0, 1.5, 0.5, 300);
     swarp_cascade_options o;
     memset(&o, 0, sizeof o);
@@ -1292,12 +1392,15 @@ START_TEST(cascade_stabilized_whole_texels) {
         size_t k;
         swarp_status st = swarp_cascade_setup(&c.cam, &c.light, &c.box, &o, &r, sp, 4, &k);
         ck_assert_msg(!swarp_status_is_error(st), "%s", swarp_status_name(st));
+        ck_assert(r.view_near == c.cam.near && r.view_far == c.cam.far); /* not adjusted */
         for (int i = 0; i < 4; ++i) {
             if (it == 0) { /* B_i inside the map, depth in [0, 1] */
                 swarp_vec3 B[SWARP_BODY_MAX_POINTS];
                 size_t nb;
-                ck_assert_int_eq(swarp_body_points(&c.cam, sp[i].near, sp[i].far, &c.light, &c.box, B,
-                                                   SWARP_BODY_MAX_POINTS, &nb), SWARP_OK);
+                swarp_status bs = swarp_body_points(&c.cam, sp[i].near, sp[i].far, &c.light, &c.box, B,
+                                                    SWARP_BODY_MAX_POINTS, &nb);
+                ck_assert(bs == SWARP_OK || bs == SWARP_ERR_BODY_EMPTY);
+                if (bs != SWARP_OK) nb = 0;
                 for (size_t j = 0; j < nb; ++j) {
                     double h[4];
                     xform(&sp[i].matrix, vsub(B[j], o.stabilize.origin), h);
@@ -1367,7 +1470,13 @@ START_TEST(cascade_bad_inputs) {
     o.stabilize.mode = 0;
     o.split.scheme = (swarp_split_scheme)99;
     ck_assert_int_eq(swarp_cascade_setup(&c.cam, &c.light, &c.box, &o, &r, sp, 16, &k), SWARP_ERR_UNKNOWN_ENUM);
+    o.split.count = 1; /* the single-map path validates the scheme too */
+    ck_assert_int_eq(swarp_cascade_setup(&c.cam, &c.light, &c.box, &o, &r, sp, 16, &k), SWARP_ERR_UNKNOWN_ENUM);
+    o.split.count = 0;
     o.split.scheme = 0;
+    o.stabilize._reserved[2] = 5;
+    ck_assert_int_eq(swarp_cascade_setup(&c.cam, &c.light, &c.box, &o, &r, sp, 16, &k), SWARP_ERR_RESERVED_NONZERO);
+    o.stabilize._reserved[2] = 0;
     /* camera looking away from the scene */
     swarp_camera away = c.cam;
     away.dir = v3(0, 1, 0);
@@ -1396,6 +1505,7 @@ static Suite* splits_suite(void) {
     tcase_add_test(t, stabilize_levels_whole_texels_between_level_changes);
     tcase_add_test(t, stabilize_none_does_flicker);
     tcase_add_test(t, stabilize_sphere_size_constant_and_levels_quantised);
+    tcase_add_test(t, stabilize_snap_matrix_whole_texels);
     tcase_add_test(t, stabilize_bad_inputs);
     suite_add_tcase(s, t);
     t = tcase_create("bias");
@@ -1424,6 +1534,7 @@ static Suite* splits_suite(void) {
     t = tcase_create("select");
     tcase_add_test(t, select_best_never_worse_than_depth);
     tcase_add_test(t, blend_weight_continuous_and_banded);
+    tcase_add_test(t, view_depth_of_world_points);
     tcase_add_test(t, select_bad_inputs);
     suite_add_tcase(s, t);
     return s;

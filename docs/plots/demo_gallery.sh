@@ -11,9 +11,17 @@ T=$(mktemp -d)
 rm -f docs/img/demo_*.png
 for n in sheet_techniques uniform_sampling lispsm_sampling pssm4_sampling psm_sampling \
          lispsm_light pssm4_light pssm-lispsm4_light lispsm_grid pssm4_splits pssm4_error \
-         lispsm_error pssm4_third lispsm_third lixel_sampling lixel_shaded pssm4_shaded; do
+         lispsm_error pssm4_third lispsm_third lixel_sampling lixel_shaded pssm4_shaded \
+         psm-cube_splits psm-cube_light psm_light; do
     cp "$T/$n.png" "docs/img/demo_$n.png"
 done
 cp "$T/measure/lispsm_error.png" docs/img/demo_measure_lispsm_error.png
+"$B/examples/demo/demo" --mindepth --out "$T/md" --size 960x540 >/dev/null
+for k in near adjusted pseudo; do
+    cp "$T/md/mindepth_${k}_sampling.png" "docs/img/demo_mindepth_${k}_sampling.png"
+done
+"$B/examples/demo/demo" --technique lispsm --filter projblur --out "$T/pb" --size 960x540 >/dev/null
+cp "$T/pb/lispsm_shaded.png" docs/img/demo_projblur_lispsm_shaded.png
+cp "$T/lispsm_shaded.png" docs/img/demo_pcf3_lispsm_shaded.png
 rm -rf "$T"
 ls docs/img/demo_*.png

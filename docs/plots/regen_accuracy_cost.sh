@@ -11,8 +11,9 @@ SWTOOL="$BUILD/examples/swtool/swtool"
 [ -x "$SWTOOL" ] || { echo "regen_accuracy_cost: build swtool first ($SWTOOL)" >&2; exit 1; }
 mkdir -p docs/img docs/plots
 # The demo's measured columns: its `measure` camera (horizontal view, near 1,
-# far 600) at 1024x768, light at gamma to the view, for the techniques the
-# demo renders on main.  One line per run:
+# far 600) at 1024x768, light at gamma to the view, every technique the demo
+# renders and measures (the lixel technique has no view-vector measurement).
+# Set SWARP_NO_DEMO=1 to reuse the last docs/plots/demo-measured.dat.  One line per run:
 #   gamma map technique K setup_us passes texels shadow_ms main_ms meas_mz pred_mz
 DEMO="$BUILD/examples/demo/demo"
 DEMO_DAT=docs/plots/demo-measured.dat
@@ -20,13 +21,13 @@ DEMO_ARG=""
 if [ -x "$DEMO" ] && [ "${SWARP_NO_DEMO:-0}" != "1" ]; then
     TMP=$(mktemp -d)
     echo "# gamma map technique K setup_us passes texels shadow_ms main_ms meas_mz pred_mz" > "$DEMO_DAT"
-    for g in 90 60 45 30; do
+    for g in 90 60 45 30 150; do
         LD=$(awk -v g="$g" 'BEGIN { r = g * 3.14159265358979 / 180; printf "0,%.9f,%.9f", -sin(r), cos(r) }')
         for map in 1024 2048; do
-            for t in uniform:1 pssm:2 pssm:4 pssm:8 pssm:16; do
+            for t in uniform:1 lispsm:1 repar:1 gmnpr:1 psm:1 pssm:2 pssm:4 pssm:8 pssm:16 pssm-lispsm:4; do
                 tech=${t%%:*}; k=${t##*:}
                 set -- --technique "$tech"
-                [ "$tech" = pssm ] && set -- "$@" --splits "$k"
+                [ "$k" != 1 ] && set -- "$@" --splits "$k"
                 line=$("$DEMO" "$@" --camera measure --light-dir "$LD" --size 1024x768 --map "$map" \
                        --out "$TMP" 2>/dev/null | awk '/^technique +setup_us/ { getline; print; exit }')
                 [ -n "$line" ] || continue
@@ -36,8 +37,9 @@ if [ -x "$DEMO" ] && [ "${SWARP_NO_DEMO:-0}" != "1" ]; then
         done
     done
     rm -rf "$TMP"
-    DEMO_ARG="--demo-data $DEMO_DAT"
 fi
+# SWARP_NO_DEMO=1 (or no demo binary) keeps the last demo-measured.dat
+[ -f "$DEMO_DAT" ] && DEMO_ARG="--demo-data $DEMO_DAT"
 "$SWTOOL" bench-report --reps "$REPS" --out-dir docs $DEMO_ARG
 gnuplot <<'GP'
 set terminal pngcairo size 1500,1200 font "DejaVu Sans,10"

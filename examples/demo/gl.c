@@ -23,10 +23,12 @@ int demo_gl_load(void) {
     return missing ? -1 : 0;
 }
 
-static GLuint compile(const char* name, GLenum type, const char* src) {
-    const char* parts[2] = {"#version 450 core\n", src};
+static GLuint compile_parts(const char* name, GLenum type, const char* const* src, int n) {
+    const char* parts[8] = {"#version 450 core\n"};
+    if (n > 7) n = 7;
+    for (int i = 0; i < n; ++i) parts[i + 1] = src[i];
     GLuint s = glCreateShader(type);
-    glShaderSource(s, 2, parts, NULL);
+    glShaderSource(s, n + 1, parts, NULL);
     glCompileShader(s);
     GLint ok = 0;
     glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
@@ -39,6 +41,37 @@ static GLuint compile(const char* name, GLenum type, const char* src) {
         return 0;
     }
     return s;
+}
+
+static GLuint compile(const char* name, GLenum type, const char* src) {
+    return compile_parts(name, type, &src, 1);
+}
+
+GLuint demo_gl_program_parts(const char* name, const char* vs, const char* const* fs_parts,
+                             int fs_count) {
+    GLuint v = compile(name, GL_VERTEX_SHADER, vs);
+    GLuint f = compile_parts(name, GL_FRAGMENT_SHADER, fs_parts, fs_count);
+    if (!v || !f) {
+        if (v) glDeleteShader(v);
+        if (f) glDeleteShader(f);
+        return 0;
+    }
+    GLuint p = glCreateProgram();
+    glAttachShader(p, v);
+    glAttachShader(p, f);
+    glLinkProgram(p);
+    glDeleteShader(v);
+    glDeleteShader(f);
+    GLint ok = 0;
+    glGetProgramiv(p, GL_LINK_STATUS, &ok);
+    if (!ok) {
+        char log[4096];
+        glGetProgramInfoLog(p, sizeof log, NULL, log);
+        fprintf(stderr, "demo: %s link:\n%s\n", name, log);
+        glDeleteProgram(p);
+        return 0;
+    }
+    return p;
 }
 
 GLuint demo_gl_program(const char* name, const char* vs, const char* fs) {

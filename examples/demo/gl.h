@@ -57,6 +57,7 @@
     X(PFNGLUNIFORM2FVPROC, glUniform2fv)                               \
     X(PFNGLUNIFORM2IPROC, glUniform2i)                                 \
     X(PFNGLUNIFORM3FPROC, glUniform3f)                                 \
+    X(PFNGLUNIFORM3FVPROC, glUniform3fv)                               \
     X(PFNGLUNIFORM4FVPROC, glUniform4fv)                               \
     X(PFNGLUNIFORMMATRIX4FVPROC, glUniformMatrix4fv)                   \
     X(PFNGLGENTEXTURESPROC, glGenTextures)                             \
@@ -136,6 +137,7 @@ DEMO_GL_FUNCS(DEMO_GL_DECLARE_)
 #define glUniform2fv dgl_glUniform2fv
 #define glUniform2i dgl_glUniform2i
 #define glUniform3f dgl_glUniform3f
+#define glUniform3fv dgl_glUniform3fv
 #define glUniform4fv dgl_glUniform4fv
 #define glUniformMatrix4fv dgl_glUniformMatrix4fv
 #define glGenTextures dgl_glGenTextures
@@ -167,6 +169,10 @@ int demo_gl_load(void);
 /** Compiles and links a program from vertex + fragment source (a common
  *  "#version 450 core" header is prepended).  0 and a message on failure. */
 GLuint demo_gl_program(const char* name, const char* vs, const char* fs);
+/** A program whose fragment shader is the concatenation of fs_parts (after
+ *  the common #version line): library GLSL files first, then the demo's. */
+GLuint demo_gl_program_parts(const char* name, const char* vs, const char* const* fs_parts,
+                             int fs_count);
 /** The same with a geometry shader between them (gs may be NULL). */
 GLuint demo_gl_program_gs(const char* name, const char* vs, const char* gs, const char* fs);
 

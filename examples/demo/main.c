@@ -3,7 +3,7 @@
  *
  *   demo                         default gallery into ./out/ + summary table
  *   demo --technique lispsm ...  one technique, all its pictures
- *   demo --test images|iou|measure   headless checks used by meson test
+ *   demo --test NAME             headless checks used by meson test
  *                                (exit 77 when no OSMesa context)
  */
 #include <errno.h>
@@ -52,8 +52,9 @@ static void usage(void) {
         "  --pseudo NP,FP          pseudo-near/far fractions for 'pseudo' (default 0.05,0)\n"
         "  --splits K              maps for the pssm techniques (1..16, default 4)\n"
         "  --scheme S              practical[:LAMBDA] | uniform | log | pseudo:NP,FP[,LAMBDA]\n"
-        "                          (default practical:0.5; NP, FP eye distances, [RHS] (4.1))\n"
-        "  --filter F              none | pcf2 | pcf3 | pcf5 | poisson | vsm | evsm (default pcf3)\n"
+        "                          (default practical:0.5; NP, FP fractions of the range, (4.1))\n"
+        "  --filter F              none | pcf2 | pcf3 | pcf5 | poisson | vsm | evsm | projblur\n"
+        "                          (default pcf3; projblur: [KOZ] 14.3.2 on the ground)\n"
         "  --light-angle E[,A]     sun elevation E and azimuth A in degrees (default 35,115)\n"
         "  --light-dir X,Y,Z       direction the light travels (instead of --light-angle)\n"
         "  --camera P|FILE         default | measure | street | high | room, or a path file of\n"
@@ -69,7 +70,8 @@ static void usage(void) {
         "  --mindepth              [RHS] 4.3: min depth on GPU and CPU, LiSPSM sampling with the\n"
         "                          camera / adjusted / pseudo near plane (camera street)\n"
         "  --out DIR               output directory (default ./out)\n"
-        "  --test images|iou|measure|select|clone|mindepth  headless checks (exit 0 pass, 1 fail, 77 skip)\n"
+        "  --test images|iou|measure|select|clone|mindepth|flicker\n"
+        "                          headless checks (exit 0 pass, 1 fail, 77 skip)\n"
         "  --test bench-clone      time K passes against geometry cloning for K = 4, 8, 16\n");
 }
 
@@ -132,7 +134,7 @@ static int parse_options(int argc, char** argv, options* o) {
             NEED();
             int k = demo_filter_parse(val);
             if (k < 0) {
-                fprintf(stderr, "demo: unknown filter %s (none pcf2 pcf3 pcf5 poisson vsm evsm)\n", val);
+                fprintf(stderr, "demo: unknown filter %s (none pcf2 pcf3 pcf5 poisson vsm evsm projblur)\n", val);
                 return -1;
             }
             o->filter = (demo_filter)k;
@@ -683,8 +685,10 @@ static int run_gallery(const options* o, int single, gallery_report* rep) {
             continue;
         }
         res[n].own_view = own_view;
-        printf("%-14s done: %s/%s_*.png (matrices from %s%s)\n", res[n].label, o->out,
-               res[n].label, res[n].source, own_view ? "; room camera" : "");
+        printf("%-14s done: %s/%s_*.png (matrices from %s%s%s%s)\n", res[n].label, o->out,
+               res[n].label, res[n].source, own_view ? "; room camera" : "",
+               res[n].sh.status != SWARP_OK ? "; " : "",
+               res[n].sh.status != SWARP_OK ? swarp_status_name(res[n].sh.status) : "");
         if (single) {
             printf("  timing: setup %.2f us (median of 101 calls);", res[n].setup_us);
             for (int k = 0; k < res[n].passes - 1; ++k)
@@ -731,7 +735,7 @@ static int run_gallery(const options* o, int single, gallery_report* rep) {
     return rc;
 }
 
-static int run_frames(const options* o) {
+static int run_frames(const options* o, double* out_max_drift) {
     demo_view v;
     memset(&v, 0, sizeof v);
     v.w = o->w;
@@ -799,6 +803,7 @@ static int run_frames(const options* o) {
         prev_frac[0] = frac[0];
         prev_frac[1] = frac[1];
         prev_map = (int)mi;
+        if (out_max_drift && !isnan(drift) && drift > *out_max_drift) *out_max_drift = drift;
         printf("frame %d/%d: setup %.2f us, %d shadow passes %.2f ms, main %.2f ms, gl errors %d, "
                "probe in map %u, sub-texel drift %.4f texel\n",
                f + 1, o->frames, res.setup_us, res.passes - 1, res.shadow_ms_total, res.main_ms,
@@ -873,78 +878,88 @@ static int test_iou(const options* o, demo_ctx* ctx) {
     v.cam.near = 1;
     v.cam.far = 150;
     v.light.type = SWARP_LIGHT_DIRECTIONAL;
-    v.light.direction = (swarp_vec3){0.45, -1, 0.3};
     demo_view_update(&v);
     demo_renderer r;
     if (demo_render_init(&r, &scene, v.w, v.h, o->map, DEMO_MAX_SPLITS)) return 1;
-    /* the geometric shadow: the box's corners projected along the light
-     * onto y = 0, and their convex hull */
-    double pts[8][2], hull[10][2];
-    const swarp_vec3 ld = v.light.direction;
-    for (int i = 0; i < 8; ++i) {
-        double x = (i & 1) ? caster.max.x : caster.min.x;
-        double y = (i & 2) ? caster.max.y : caster.min.y;
-        double z = (i & 4) ? caster.max.z : caster.min.z;
-        double t = -y / ld.y;
-        pts[i][0] = x + t * ld.x;
-        pts[i][1] = z + t * ld.z;
-    }
-    int nh = hull2(pts, 8, hull);
-    const demo_technique techs[7] = {DEMO_TECH_UNIFORM, DEMO_TECH_LISPSM, DEMO_TECH_PSSM,
+    const demo_technique techs[8] = {DEMO_TECH_UNIFORM, DEMO_TECH_LISPSM, DEMO_TECH_PSSM,
                                      DEMO_TECH_PSM, DEMO_TECH_PSSM_LISPSM, DEMO_TECH_PSSM_STABLE,
-                                     DEMO_TECH_GMNPR};
+                                     DEMO_TECH_GMNPR, DEMO_TECH_PSM_CUBE};
+    /* two lights: the first lies behind the viewer as PSM sees it (the
+     * camera looks steeply down, the sun is high: SWARP_INFO_PSM_INVERSE,
+     * Kozlov's inverse projection, [KOZ] §14.2.1), the second, low and
+     * ahead, in front of it (the ordinary PSM) */
+    const swarp_vec3 lights[2] = {{0.45, -1, 0.3}, {0.2, -0.5, 1}};
     int fails = 0, ran = 0;
     float* tex = malloc(sizeof(float) * 4 * (size_t)v.w * v.h);
     float* pos = malloc(sizeof(float) * 4 * (size_t)v.w * v.h);
-    for (int k = 0; k < 7 && tex && pos; ++k) {
-        if (!demo_technique_available(techs[k])) {
-            printf("iou %-12s not in this build\n", demo_technique_name(techs[k]));
-            ++fails;
-            continue;
+    for (int li = 0; li < 2; ++li) {
+        v.light.direction = lights[li];
+        /* the geometric shadow: the box's corners projected along the light
+         * onto y = 0, and their convex hull */
+        double pts[8][2], hull[10][2];
+        const swarp_vec3 ld = v.light.direction;
+        for (int i = 0; i < 8; ++i) {
+            double x = (i & 1) ? caster.max.x : caster.min.x;
+            double y = (i & 2) ? caster.max.y : caster.min.y;
+            double z = (i & 4) ? caster.max.z : caster.min.z;
+            double t = -y / ld.y;
+            pts[i][0] = x + t * ld.x;
+            pts[i][1] = z + t * ld.z;
         }
-        demo_shadow_request req;
-        memset(&req, 0, sizeof req);
-        req.technique = techs[k];
-        req.splits = 4;
-        req.scheme_lambda = 0.5;
-        req.map_res = o->map;
-        req.screen_w = v.w;
-        req.screen_h = v.h;
-        demo_shadow sh;
-        if (demo_shadow_setup(&v.cam, &v.light, &scene.box, &req, &sh)) {
-            ++fails;
-            continue;
+        int nh = hull2(pts, 8, hull);
+        for (int k = 0; k < 8 && tex && pos; ++k) {
+            if (!demo_technique_available(techs[k])) {
+                printf("iou %-12s not in this build\n", demo_technique_name(techs[k]));
+                ++fails;
+                continue;
+            }
+            demo_shadow_request req;
+            memset(&req, 0, sizeof req);
+            req.technique = techs[k];
+            req.splits = 4;
+            req.scheme_lambda = 0.5;
+            req.map_res = o->map;
+            req.screen_w = v.w;
+            req.screen_h = v.h;
+            demo_shadow sh;
+            if (demo_shadow_setup(&v.cam, &v.light, &scene.box, &req, &sh)) {
+                ++fails;
+                continue;
+            }
+            int errs = demo_render_shadow(&r, &sh, DEMO_FILTER_PCF2, NULL);
+            demo_main_params p;
+            memset(&p, 0, sizeof p);
+            memcpy(p.view, v.view, sizeof p.view);
+            memcpy(p.proj, v.proj, sizeof p.proj);
+            p.light_dir[0] = (float)ld.x;
+            p.light_dir[1] = (float)ld.y;
+            p.light_dir[2] = (float)ld.z;
+            p.filter = DEMO_FILTER_PCF2;
+            p.mode = DEMO_MODE_SHADED;
+            p.vw = v.w;
+            p.vh = v.h;
+            errs += demo_render_main(&r, &sh, &p, NULL);
+            demo_render_read_aux(&r, tex, pos);
+            long inter = 0, uni = 0, ground = 0;
+            for (size_t i = 0; i < (size_t)v.w * v.h; ++i) {
+                const float* q = pos + 4 * i;
+                if (q[3] < 0 || fabsf(q[1]) > 1e-3f) continue; /* not ground */
+                ++ground;
+                int rendered = q[3] < 0.5f;
+                int geometric = inside_hull(hull, nh, q[0], q[2]);
+                inter += rendered && geometric;
+                uni += rendered || geometric;
+            }
+            double iou = uni ? (double)inter / uni : 0;
+            int ok = iou >= 0.95 && errs == 0 && uni > 200;
+            printf("iou %-12s light %s: %.4f (%ld shadow pixels of %ld ground pixels, gl errors "
+                   "%d%s%s) %s\n",
+                   demo_technique_name(techs[k]), li ? "2" : "1", iou, uni,
+                   ground, errs, sh.status != SWARP_OK ? ", " : "",
+                   sh.status != SWARP_OK ? swarp_status_name(sh.status) : "", ok ? "ok" : "FAIL");
+            fails += !ok;
+            ++ran;
         }
-        int errs = demo_render_shadow(&r, &sh, DEMO_FILTER_PCF2, NULL);
-        demo_main_params p;
-        memset(&p, 0, sizeof p);
-        memcpy(p.view, v.view, sizeof p.view);
-        memcpy(p.proj, v.proj, sizeof p.proj);
-        p.light_dir[0] = (float)ld.x;
-        p.light_dir[1] = (float)ld.y;
-        p.light_dir[2] = (float)ld.z;
-        p.filter = DEMO_FILTER_PCF2;
-        p.mode = DEMO_MODE_SHADED;
-        p.vw = v.w;
-        p.vh = v.h;
-        errs += demo_render_main(&r, &sh, &p, NULL);
-        demo_render_read_aux(&r, tex, pos);
-        long inter = 0, uni = 0, ground = 0;
-        for (size_t i = 0; i < (size_t)v.w * v.h; ++i) {
-            const float* q = pos + 4 * i;
-            if (q[3] < 0 || fabsf(q[1]) > 1e-3f) continue; /* not ground */
-            ++ground;
-            int rendered = q[3] < 0.5f;
-            int geometric = inside_hull(hull, nh, q[0], q[2]);
-            inter += rendered && geometric;
-            uni += rendered || geometric;
-        }
-        double iou = uni ? (double)inter / uni : 0;
-        int ok = iou >= 0.95 && errs == 0 && uni > 200;
-        printf("iou %-12s %.4f (%ld shadow pixels of %ld ground pixels, gl errors %d) %s\n",
-               demo_technique_name(techs[k]), iou, uni, ground, errs, ok ? "ok" : "FAIL");
-        fails += !ok;
-        ++ran;
     }
     free(tex);
     free(pos);
@@ -1031,11 +1046,12 @@ static int test_select(const options* o) {
         demo_technique t;
         demo_select sel;
         const char* camera;
-    } cases[3] = {{DEMO_TECH_PSSM, DEMO_SELECT_DEPTH, "default"},
+    } cases[4] = {{DEMO_TECH_PSSM, DEMO_SELECT_DEPTH, "default"},
                   {DEMO_TECH_PSSM, DEMO_SELECT_BEST, "high"},
-                  {DEMO_TECH_LIXEL, DEMO_SELECT_LIXEL, "room"}};
+                  {DEMO_TECH_LIXEL, DEMO_SELECT_LIXEL, "room"},
+                  {DEMO_TECH_PSM_CUBE, DEMO_SELECT_CUBE, "default"}};
     const double band = 0.2; /* blend band of the depth case */
-    for (int c = 0; c < 3 && tex && pos; ++c) {
+    for (int c = 0; c < 4 && tex && pos; ++c) {
         if (camera_preset(cases[c].camera, v.w, v.h, &v.cam)) return 1;
         light_from_options(o, &v.light);
         demo_view_update(&v);
@@ -1097,6 +1113,17 @@ static int test_select(const options* o) {
                 }
             } else if (sh.select == DEMO_SELECT_BEST) {
                 st = swarp_cascade_select_best(maps, (size_t)sh.count, &q, depth_i, &want, NULL);
+            } else if (sh.select == DEMO_SELECT_CUBE) {
+                /* [KOZ] Listing 14-1 on the CPU: the face of V, mapped to
+                 * the index of that face's map */
+                swarp_vec4 hv;
+                swarp_mat4_transform(&sh.cube_camera, &q, &hv);
+                swarp_vec3 V = {hv.x / hv.w, hv.y / hv.w, hv.z / hv.w};
+                uint32_t face = 99;
+                st = swarp_cube_lookup(&sh.cube_light, NULL, &V, &face, NULL, NULL);
+                want = 99;
+                for (int i = 0; i < sh.count; ++i)
+                    if (sh.cube_face[i] == face) want = (uint32_t)i;
             } else {
                 st = swarp_lixel_select(sh.light, (size_t)(sh.count - 1), &q, &want);
             }
@@ -1119,7 +1146,10 @@ static int test_select(const options* o) {
         }
         printf("select %-6s %-5s: %ld pixels, %ld differ from the library (%.3f%%), %d maps used %s\n",
                demo_technique_name(cases[c].t),
-               cases[c].sel == DEMO_SELECT_DEPTH ? "depth" : cases[c].sel == DEMO_SELECT_BEST ? "best" : "lixel",
+               cases[c].sel == DEMO_SELECT_DEPTH  ? "depth"
+               : cases[c].sel == DEMO_SELECT_BEST ? "best"
+               : cases[c].sel == DEMO_SELECT_CUBE ? "cube"
+                                                  : "lixel",
                n, diff, 100 * frac, used, ok ? "ok" : "FAIL");
         fails += !ok;
     }
@@ -1296,6 +1326,24 @@ static int run_mindepth(const options* o, int test) {
     return rc;
 }
 
+/* [RHS] §3.5: a fixed ground point keeps its place inside its texel while
+ * the camera moves and turns (stabilised cascades), and does not without
+ * stabilisation (the control that shows the check can fail). */
+static int test_flicker(const options* o) {
+    options q = *o;
+    q.frames = 8;
+    q.splits = 4;
+    double drift_stable = 0, drift_plain = 0;
+    q.technique = DEMO_TECH_PSSM_STABLE;
+    int rc = run_frames(&q, &drift_stable);
+    q.technique = DEMO_TECH_PSSM;
+    rc |= run_frames(&q, &drift_plain);
+    int ok = rc == 0 && drift_stable < 1e-4 && drift_plain > 1e-2;
+    printf("flicker: largest sub-texel drift per frame: pssm-stable %.6f, pssm %.6f %s\n",
+           drift_stable, drift_plain, ok ? "ok" : "FAIL");
+    return ok ? 0 : 1;
+}
+
 static int test_images(const options* o) {
     /* the gallery at small size: every picture exists and is not blank */
     options q = *o;
@@ -1369,6 +1417,7 @@ int main(int argc, char** argv) {
         else if (!strcmp(o.test, "select")) rc = test_select(&o);
         else if (!strcmp(o.test, "clone")) rc = test_clone(&o, 0);
         else if (!strcmp(o.test, "mindepth")) rc = run_mindepth(&o, 1);
+        else if (!strcmp(o.test, "flicker")) rc = test_flicker(&o);
         else if (!strcmp(o.test, "bench-clone")) rc = test_clone(&o, 1);
         else {
             fprintf(stderr, "demo: unknown test %s\n", o.test);
@@ -1377,7 +1426,7 @@ int main(int argc, char** argv) {
         demo_ctx_destroy(ctx);
         return rc;
     }
-    if (o.frames > 0) return run_frames(&o);
+    if (o.frames > 0) return run_frames(&o, NULL);
     if (o.mindepth) {
         demo_ctx* ctx = open_context();
         if (!ctx) return 2;

@@ -9,6 +9,9 @@
 #include <math.h>
 #include <time.h>
 
+#include "filtering_glsl.h"
+#include "splits_glsl.h"
+
 double demo_now_ms(void) {
     struct timespec ts;
     clock_gettime(CLOCK_MONOTONIC, &ts);
@@ -16,7 +19,7 @@ double demo_now_ms(void) {
 }
 
 static const char* const filter_names[DEMO_FILTER_COUNT] = {"none", "pcf2", "pcf3", "pcf5",
-                                                           "poisson", "vsm", "evsm"};
+                                                           "poisson", "vsm", "evsm", "projblur"};
 
 const char* demo_filter_name(demo_filter f) {
     return (unsigned)f < DEMO_FILTER_COUNT ? filter_names[f] : "?";
@@ -72,6 +75,47 @@ static const char* const clone_gs =
     "  EndPrimitive();\n"
     "}\n";
 
+/* [KOZ] §14.3.2 projective blur: the colour part of the shadow map is 1
+ * where the light sees the receiver (the ground) and 0 where it sees a
+ * caster; blurred, it is projected onto the ground as a soft shadow. */
+static const char* const receiver_vs =
+    "layout(location = 0) in vec3 a_p;\n"
+    "layout(location = 1) in vec3 a_n;\n"
+    "uniform mat4 u_m;\n"
+    "out float v_ground;\n"
+    "void main() {\n"
+    "  v_ground = (abs(a_p.y) < 1e-3 && a_n.y > 0.99) ? 1.0 : 0.0;\n"
+    "  gl_Position = u_m * vec4(a_p, 1.0);\n"
+    "}\n";
+static const char* const receiver_fs =
+    "in float v_ground;\n"
+    "layout(location = 0) out vec4 o_c;\n"
+    "void main() { o_c = vec4(v_ground > 0.5 ? 1.0 : 0.0); }\n";
+/* one separable Gaussian pass (sigma u_sigma texels, radius 3 sigma) */
+static const char* const blur_vs =
+    "void main() {\n"
+    "  vec2 p = vec2((gl_VertexID & 1) * 4 - 1, (gl_VertexID & 2) * 2 - 1);\n"
+    "  gl_Position = vec4(p, 0.0, 1.0);\n"
+    "}\n";
+static const char* const blur_fs =
+    "uniform sampler2DArray u_src;\n"
+    "uniform int u_layer;\n"
+    "uniform ivec2 u_dir;\n"
+    "uniform float u_sigma;\n"
+    "layout(location = 0) out vec4 o_c;\n"
+    "void main() {\n"
+    "  ivec2 c = ivec2(gl_FragCoord.xy);\n"
+    "  ivec2 m = textureSize(u_src, 0).xy - 1;\n"
+    "  int rad = int(ceil(3.0 * u_sigma));\n"
+    "  float sum = 0.0, wsum = 0.0;\n"
+    "  for (int k = -rad; k <= rad; ++k) {\n"
+    "    float w = exp(-0.5 * float(k * k) / (u_sigma * u_sigma));\n"
+    "    sum += w * texelFetch(u_src, ivec3(clamp(c + k * u_dir, ivec2(0), m), u_layer), 0).r;\n"
+    "    wsum += w;\n"
+    "  }\n"
+    "  o_c = vec4(sum / wsum);\n"
+    "}\n";
+
 static const char* const depth_vs =
     "layout(location = 0) in vec3 a_p;\n"
     "uniform mat4 u_m;\n"
@@ -93,15 +137,20 @@ static const char* const main_vs =
     "  gl_Position = u_proj * vs;\n"
     "}\n";
 
-/* Map selection, mirroring the library's CPU references:
- *   u_select 0: by eye depth, swarp_cascade_select_depth [RHS] §3.3.3 (a
- *     depth on a border belongs to the split that starts there), with the
- *     blend band of swarp_cascade_blend (weight w of split i, 1 - w of i+1);
- *   u_select 1: best resolution, swarp_cascade_select_best (ZZB09): among
- *     the maps covering p the one with the smallest world texel L_texel
- *     (the texel_world twin of docs/splits.md), else the depth choice;
+/* The main pass.  The fragment shader is docs/glsl/splits.glsl and
+ * docs/glsl/filtering.glsl (the library's GLSL twins, tested against the C
+ * functions by the splits and filter stages) followed by this source.
+ * Map selection, mirroring the library's CPU references:
+ *   u_select 0: by eye depth, swarp_select_split_depth (splits.glsl, twin of
+ *     swarp_cascade_select_depth [RHS] §3.3.3), with swarp_cascade_blend's
+ *     band (weight w of split i, 1 - w of i + 1);
+ *   u_select 1: best resolution, swarp_select_split_best (twin of
+ *     swarp_cascade_select_best, ZZB09), else the depth choice;
  *   u_select 2: swarp_lixel_select: the first map whose clip volume holds
- *     p in x and y (w > 0), else the last map (the fallback). */
+ *     p in x and y (w > 0), else the last map (the fallback);
+ *   u_select 3: the cube face of [KOZ] Listing 14-1 (swarp_cube_lookup).
+ * Bias: swarp_bias_normal_offset (splits.glsl).  VSM / EVSM: vsm_chebyshev,
+ * vsm_reduce_bleeding, evsm_visibility (filtering.glsl). */
 static const char* const main_fs =
     "in vec3 v_p; in vec3 v_n; in vec3 v_c; in float v_depth;\n"
     "layout(location = 0) out vec4 o_color;\n"
@@ -118,67 +167,43 @@ static const char* const main_fs =
     "uniform int u_count, u_mode, u_filter, u_select;\n"
     "uniform float u_res, u_blend, u_grid, u_offset;\n"
     "uniform vec3 u_light_dir;\n"
-    "int select_depth(float z) {\n"
-    "  for (int i = 0; i < u_count - 1; ++i) if (z < u_split[i + 1]) return i;\n"
-    "  return u_count - 1;\n"
-    "}\n"
-    "float blend_weight(int i, float z) {\n"
-    "  if (i >= u_count - 1 || u_blend <= 0.0) return 1.0;\n"
-    "  float band = u_blend * (u_split[i + 1] - u_split[i]);\n"
-    "  return clamp((u_split[i + 1] - z) / band, 0.0, 1.0);\n"
-    "}\n"
+    "uniform mat4 u_cube_cam;\n"
+    "uniform vec3 u_cube_P;\n"
+    "uniform vec3 u_cube_N[6];\n"
+    "uniform float u_cube_d[6];\n"
+    /* swarp_lixel_select: x and y only, w > 0 */
     "bool covers(int i, vec3 p) {\n"
     "  vec4 h = u_light[i] * vec4(p, 1.0);\n"
     "  return h.w > 0.0 && abs(h.x) <= h.w && abs(h.y) <= h.w;\n"
     "}\n"
-    /* [KOZ] §14.2.3 texel_world, the GLSL twin of swarp_bias_texel_size */
-    "float texel_world(int i, vec3 p) {\n"
-    "  vec4 h = u_light[i] * vec4(p, 1.0);\n"
-    "  vec3 ndc = h.xyz / h.w;\n"
-    "  vec2 r = u_res * u_uvscale[i];\n"
-    "  vec4 qs = u_light_inv[i] * vec4(ndc.x + 2.0 / r.x, ndc.y, ndc.z, 1.0);\n"
-    "  vec4 qt = u_light_inv[i] * vec4(ndc.x, ndc.y + 2.0 / r.y, ndc.z, 1.0);\n"
-    "  return max(length(qs.xyz / qs.w - p), length(qt.xyz / qt.w - p));\n"
+    /* [KOZ] Listing 14-1 (swarp_cube_lookup): u = V - P in post-projective
+     * space, the face with the largest (u . N_i) / d_i */
+    "int select_cube(vec3 p) {\n"
+    "  vec4 h = u_cube_cam * vec4(p, 1.0);\n"
+    "  vec3 u = h.xyz / h.w - u_cube_P;\n"
+    "  int best = 0; float a = -1e30;\n"
+    "  for (int i = 0; i < u_count; ++i) {\n"
+    "    float ai = dot(u, u_cube_N[i]) / u_cube_d[i];\n"
+    "    if (ai > a) { a = ai; best = i; }\n"
+    "  }\n"
+    "  return best;\n"
     "}\n"
     "int select_map(vec3 p, float z) {\n"
+    "  if (u_select == 3) return select_cube(p);\n"
     "  if (u_select == 2) {\n"
     "    for (int i = 0; i < u_count - 1; ++i) if (covers(i, p)) return i;\n"
     "    return u_count - 1;\n"
     "  }\n"
-    "  int d = select_depth(z);\n"
+    "  int d = swarp_select_split_depth(u_split, u_count, z);\n"
     "  if (u_select == 0) return d;\n"
-    "  int best = -1; float lt = 0.0;\n"
-    "  for (int i = 0; i < u_count; ++i) {\n"
-    "    vec4 h = u_light[i] * vec4(p, 1.0);\n"
-    "    if (!(h.w > 0.0 && abs(h.x) <= h.w && abs(h.y) <= h.w && abs(h.z) <= h.w)) continue;\n"
-    "    float l = texel_world(i, p);\n"
-    "    if (best < 0 || l < lt) { best = i; lt = l; }\n"
-    "  }\n"
-    "  return best < 0 ? d : best;\n"
+    "  return swarp_select_split_best(u_light, u_light_inv, u_count, vec2(u_res), false, p, d);\n"
     "}\n"
     "vec3 map_coord(int i, vec3 p) {\n"
     "  vec4 c = u_light[i] * vec4(p, 1.0);\n"
     "  vec3 sc = c.xyz / c.w * 0.5 + 0.5;\n"
     "  return vec3(sc.xy * u_uvscale[i], sc.z);\n"
     "}\n"
-    /* docs/filtering.md twins of swarp_vsm_chebyshev, swarp_vsm_reduce_bleeding,
-     * swarp_evsm_visibility */
-    "float vsm_chebyshev(vec2 M, float t, float min_variance) {\n"
-    "  if (t <= M.x) return 1.0;\n"
-    "  float sigma2 = max(fma(-M.x, M.x, M.y), min_variance);\n"
-    "  float d = t - M.x;\n"
-    "  return sigma2 / (sigma2 + d * d);\n"
-    "}\n"
-    "float vsm_reduce_bleeding(float p, float amount) {\n"
-    "  return clamp((p - amount) / (1.0 - amount), 0.0, 1.0);\n"
-    "}\n"
-    "float evsm_visibility(vec4 m, float t, float c_pos, float c_neg, float min_variance) {\n"
-    "  float wp = exp(c_pos * t), wn = -exp(-c_neg * t);\n"
-    "  float kp = c_pos * wp, kn = c_neg * wn;\n"
-    "  float vp = vsm_chebyshev(m.xy, wp, min_variance * kp * kp);\n"
-    "  float vn = vsm_chebyshev(m.zw, wn, min_variance * kn * kn);\n"
-    "  return min(vp, vn);\n"
-    "}\n"
+    "bool v_ground = false;\n"
     "float lookup(int i, vec3 sc) {\n"
     "  if (any(lessThan(sc, vec3(0.0))) || sc.x > u_uvscale[i].x || sc.y > u_uvscale[i].y ||\n"
     "      sc.z > 1.0) return 1.0;\n"
@@ -193,6 +218,14 @@ static const char* const main_fs =
     "    for (int k = 0; k < 16; ++k)\n"
     "      s += texture(u_shadow, vec4(sc.xy + 2.0 * u_poisson[k] / u_res, float(i), ref));\n"
     "    return s / 16.0;\n"
+    "  }\n"
+    "  if (u_filter == 7) {\n"
+    /* projective blur on the ground; ordinary 3x3 PCF on everything else */
+    "    if (v_ground) return texture(u_moments, vec3(sc.xy, float(i))).r;\n"
+    "    float s = 0.0;\n"
+    "    for (int y = -1; y <= 1; ++y) for (int x = -1; x <= 1; ++x)\n"
+    "      s += texture(u_shadow, vec4(sc.xy + vec2(x, y) / u_res, float(i), ref));\n"
+    "    return s / 9.0;\n"
     "  }\n"
     "  if (u_filter >= 5) {\n"
     /* filtering the moments over the same 3x3 bilinear footprint as pcf3 */
@@ -237,19 +270,22 @@ static const char* const main_fs =
     "void main() {\n"
     "  vec3 n = normalize(v_n);\n"
     "  if (!gl_FrontFacing) n = -n;\n"
+    "  v_ground = abs(v_p.y) < 1e-3 && n.y > 0.99;\n"
     "  vec3 to_light = -normalize(u_light_dir);\n"
     "  float ndl = max(dot(n, to_light), 0.0);\n"
     "  int i = select_map(v_p, v_depth);\n"
     /* normal-offset bias (docs/splits.md twin of swarp_bias_normal_offset) */
-    "  vec3 pb = v_p + n * (u_offset * texel_world(i, v_p) * (1.0 - clamp(dot(n, to_light), 0.0, 1.0)));\n"
+    "  vec3 pb = swarp_bias_normal_offset(u_light[i], u_light_inv[i], u_res * u_uvscale[i], v_p,\n"
+    "                                     n, to_light, u_offset);\n"
     "  vec3 sc = map_coord(i, pb);\n"
     "  float lit = 1.0;\n"
     "  float w = 1.0;\n"
     "  if (u_mode != 4) {\n"
     "    lit = lookup(i, sc);\n"
     "    if (u_select == 0) {\n"
-    "      w = blend_weight(i, v_depth);\n"
-    "      if (w < 1.0) lit = lit * w + lookup(i + 1, map_coord(i + 1, pb)) * (1.0 - w);\n"
+    "      int bi;\n"
+    "      w = swarp_cascade_blend(u_split, u_count, v_depth, u_blend, bi);\n"
+    "      if (w < 1.0) lit = mix(lookup(i + 1, map_coord(i + 1, pb)), lit, w);\n"
     "    }\n"
     "  }\n"
     "  if (ndl <= 0.0) lit = 0.0;\n"
@@ -266,6 +302,20 @@ static const char* const main_fs =
     "  o_tex = vec4(sc0.xy * u_res, float(i) + 0.5 * (1.0 - w), v_depth);\n"
     "  o_pos = vec4(v_p, lit);\n"
     "}\n";
+
+/* The RGBA32F arrays (moments, projective-blur colour) are big (16 bytes a
+ * texel): made on first use only. */
+static GLuint float_array(int res, int layers) {
+    GLuint t;
+    glGenTextures(1, &t);
+    glBindTexture(GL_TEXTURE_2D_ARRAY, t);
+    glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, GL_RGBA32F, res, res, layers, 0, GL_RGBA, GL_FLOAT, NULL);
+    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    return t;
+}
 
 int demo_render_init(demo_renderer* r, const demo_scene* s, int w, int h, int map_res,
                      int max_layers) {
@@ -289,6 +339,9 @@ int demo_render_init(demo_renderer* r, const demo_scene* s, int w, int h, int ma
     r->prog_depth = demo_gl_program("depth", depth_vs, NULL);
     r->prog_moment = demo_gl_program("moments", depth_vs, moment_fs);
     r->prog_clone = demo_gl_program_gs("clone", clone_vs, clone_gs, NULL);
+    r->prog_receiver = demo_gl_program("receiver", receiver_vs, receiver_fs);
+    r->prog_blur = demo_gl_program("blur", blur_vs, blur_fs);
+    if (!r->prog_receiver || !r->prog_blur) return -1;
     if (!r->prog_clone) return -1;
     if (!r->prog_moment) return -1;
     double xy[32], dmin;
@@ -298,7 +351,9 @@ int demo_render_init(demo_renderer* r, const demo_scene* s, int w, int h, int ma
     double c;
     if (swarp_evsm_max_exponent(SWARP_TEXEL_FP32, &c) != SWARP_OK) return -1;
     r->evsm_c = (float)c;
-    r->prog_main = demo_gl_program("main", main_vs, main_fs);
+    r->blur_sigma = 2.0f;
+    const char* const fs_parts[3] = {demo_splits_glsl, demo_filtering_glsl, main_fs};
+    r->prog_main = demo_gl_program_parts("main", main_vs, fs_parts, 3);
     if (!r->prog_depth || !r->prog_main) return -1;
 
     glGenTextures(1, &r->shadow_tex);
@@ -312,15 +367,6 @@ int demo_render_init(demo_renderer* r, const demo_scene* s, int w, int h, int ma
     glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
     glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
     glGenFramebuffers(1, &r->shadow_fbo);
-    glGenTextures(1, &r->moment_tex);
-    glBindTexture(GL_TEXTURE_2D_ARRAY, r->moment_tex);
-    glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, GL_RGBA32F, map_res, map_res, max_layers, 0, GL_RGBA,
-                 GL_FLOAT, NULL);
-    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-
     glGenFramebuffers(1, &r->fbo);
     glBindFramebuffer(GL_FRAMEBUFFER, r->fbo);
     GLuint* rbs[4] = {&r->rb_color, &r->rb_tex, &r->rb_pos, &r->rb_depth};
@@ -347,7 +393,10 @@ void demo_render_free(demo_renderer* r) {
     if (r->prog_depth) glDeleteProgram(r->prog_depth);
     if (r->prog_moment) glDeleteProgram(r->prog_moment);
     if (r->prog_clone) glDeleteProgram(r->prog_clone);
-    glDeleteTextures(1, &r->moment_tex);
+    if (r->moment_tex) glDeleteTextures(1, &r->moment_tex);
+    if (r->blur_tex) glDeleteTextures(1, &r->blur_tex);
+    if (r->prog_receiver) glDeleteProgram(r->prog_receiver);
+    if (r->prog_blur) glDeleteProgram(r->prog_blur);
     if (r->prog_main) glDeleteProgram(r->prog_main);
     glDeleteTextures(1, &r->shadow_tex);
     glDeleteFramebuffers(1, &r->shadow_fbo);
@@ -371,14 +420,16 @@ static void to_float(const swarp_mat4* m, float out[16]) {
 int demo_render_shadow(demo_renderer* r, const demo_shadow* sh, demo_filter filter,
                        double* ms_out) {
     int errors = 0;
-    int moments = filter == DEMO_FILTER_VSM || filter == DEMO_FILTER_EVSM;
+    int blur = filter == DEMO_FILTER_PROJBLUR;
+    int moments = filter == DEMO_FILTER_VSM || filter == DEMO_FILTER_EVSM || blur;
+    if (moments && !r->moment_tex) r->moment_tex = float_array(r->map_res, r->layers);
     glBindFramebuffer(GL_FRAMEBUFFER, r->shadow_fbo);
     GLenum buf = moments ? GL_COLOR_ATTACHMENT0 : GL_NONE;
     glDrawBuffers(1, &buf);
     glReadBuffer(GL_NONE);
-    GLuint prog = moments ? r->prog_moment : r->prog_depth;
+    GLuint prog = blur ? r->prog_receiver : moments ? r->prog_moment : r->prog_depth;
     glUseProgram(prog);
-    if (moments) {
+    if (moments && !blur) {
         glUniform1i(glGetUniformLocation(prog, "u_kind"), filter == DEMO_FILTER_EVSM);
         glUniform1f(glGetUniformLocation(prog, "u_c"), r->evsm_c);
     }
@@ -390,7 +441,7 @@ int demo_render_shadow(demo_renderer* r, const demo_shadow* sh, demo_filter filt
     glDisable(GL_CULL_FACE);
     /* slope-scaled depth bias against acne for the depth compare (moment
      * maps store the unbiased depth: Chebyshev's bound needs no offset) */
-    if (!moments) {
+    if (!moments || blur) {
         glEnable(GL_POLYGON_OFFSET_FILL);
         glPolygonOffset(2.0f, 8.0f);
     }
@@ -406,8 +457,9 @@ int demo_render_shadow(demo_renderer* r, const demo_shadow* sh, demo_filter filt
                                   0, i);
         glViewport(0, 0, r->map_res, r->map_res);
         glClear(GL_DEPTH_BUFFER_BIT);
+        const float lit[4] = {1, 1, 1, 1};
         if (moments)
-            glClearBufferfv(GL_COLOR, 0, filter == DEMO_FILTER_EVSM ? far_evsm : far_vsm);
+            glClearBufferfv(GL_COLOR, 0, blur ? lit : filter == DEMO_FILTER_EVSM ? far_evsm : far_vsm);
         glViewport(0, 0, sh->viewport[i][0], sh->viewport[i][1]);
         float m[16];
         to_float(&sh->light[i], m);
@@ -422,6 +474,34 @@ int demo_render_shadow(demo_renderer* r, const demo_shadow* sh, demo_filter filt
     glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, 0, 0, 0);
     glDisable(GL_POLYGON_OFFSET_FILL);
     glDisable(GL_DEPTH_CLAMP);
+    if (blur) {
+        /* ping-pong: moment_tex -> blur_tex (x) -> moment_tex (y), per map */
+        if (!r->blur_tex) r->blur_tex = float_array(r->map_res, r->layers);
+        glDisable(GL_DEPTH_TEST);
+        glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, 0, 0, 0);
+        glUseProgram(r->prog_blur);
+        glUniform1i(glGetUniformLocation(r->prog_blur, "u_src"), 0);
+        glUniform1f(glGetUniformLocation(r->prog_blur, "u_sigma"), r->blur_sigma);
+        glActiveTexture(GL_TEXTURE0);
+        glBindVertexArray(r->vao);
+        double t0 = demo_now_ms();
+        for (int i = 0; i < sh->count && i < r->layers; ++i) {
+            glViewport(0, 0, sh->viewport[i][0], sh->viewport[i][1]);
+            glUniform1i(glGetUniformLocation(r->prog_blur, "u_layer"), i);
+            for (int pass = 0; pass < 2; ++pass) {
+                GLuint src = pass ? r->blur_tex : r->moment_tex;
+                GLuint dst = pass ? r->moment_tex : r->blur_tex;
+                glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, dst, 0, i);
+                glBindTexture(GL_TEXTURE_2D_ARRAY, src);
+                glUniform2i(glGetUniformLocation(r->prog_blur, "u_dir"), pass == 0, pass == 1);
+                glDrawArrays(GL_TRIANGLES, 0, 3);
+            }
+        }
+        glFinish();
+        r->blur_ms = demo_now_ms() - t0;
+        glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, 0, 0, 0);
+        errors += demo_gl_check("projective blur passes");
+    }
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     return errors;
 }
@@ -490,6 +570,8 @@ int demo_render_main(demo_renderer* r, const demo_shadow* sh, const demo_main_pa
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glDisable(GL_CULL_FACE);
+    /* a light view shows what the shadow pass saw: pancaked casters too */
+    if (p->mode == DEMO_MODE_UNSHADOWED && sh->depth_clamp) glEnable(GL_DEPTH_CLAMP);
     GLuint pr = r->prog_main;
     glUseProgram(pr);
     glBindVertexArray(r->vao);
@@ -513,6 +595,23 @@ int demo_render_main(demo_renderer* r, const demo_shadow* sh, const demo_main_pa
     glUniform2fv(glGetUniformLocation(pr, "u_uvscale"), sh->count, uvs);
     glUniform1i(glGetUniformLocation(pr, "u_select"), (int)sh->select);
     glUniform1f(glGetUniformLocation(pr, "u_offset"), p->normal_offset);
+    if (sh->select == DEMO_SELECT_CUBE) {
+        float cam[16], P[3], N[18], d[6];
+        to_float(&sh->cube_camera, cam);
+        P[0] = (float)(sh->cube_light.x / sh->cube_light.w);
+        P[1] = (float)(sh->cube_light.y / sh->cube_light.w);
+        P[2] = (float)(sh->cube_light.z / sh->cube_light.w);
+        for (int i = 0; i < sh->count && i < 6; ++i) {
+            N[3 * i] = (float)sh->cube_normal[i].x;
+            N[3 * i + 1] = (float)sh->cube_normal[i].y;
+            N[3 * i + 2] = (float)sh->cube_normal[i].z;
+            d[i] = (float)sh->cube_distance[i];
+        }
+        glUniformMatrix4fv(glGetUniformLocation(pr, "u_cube_cam"), 1, GL_FALSE, cam);
+        glUniform3f(glGetUniformLocation(pr, "u_cube_P"), P[0], P[1], P[2]);
+        glUniform3fv(glGetUniformLocation(pr, "u_cube_N"), sh->count, N);
+        glUniform1fv(glGetUniformLocation(pr, "u_cube_d"), sh->count, d);
+    }
     glUniform1fv(glGetUniformLocation(pr, "u_split"), sh->count + 1, split);
     glUniform1i(glGetUniformLocation(pr, "u_count"), sh->count);
     glUniform1i(glGetUniformLocation(pr, "u_mode"), (int)p->mode);
@@ -533,6 +632,7 @@ int demo_render_main(demo_renderer* r, const demo_shadow* sh, const demo_main_pa
     glUniform1f(glGetUniformLocation(pr, "u_evsm_c"), r->evsm_c);
     glDrawArrays(GL_TRIANGLES, 0, r->vertex_count);
     glFinish();
+    glDisable(GL_DEPTH_CLAMP);
     if (ms_out) *ms_out = demo_now_ms() - t0;
     return demo_gl_check(p->mode == DEMO_MODE_UNSHADOWED ? "light view pass" : "main pass");
 }

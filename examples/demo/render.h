@@ -24,6 +24,7 @@ typedef enum demo_filter {
     DEMO_FILTER_POISSON,  /**< 16 bilinear taps on a Poisson disk (swarp_pcf_poisson_disk) */
     DEMO_FILTER_VSM,      /**< variance shadow map, moments 3x3-filtered [VSM] (3.1)-(3.3) */
     DEMO_FILTER_EVSM,     /**< exponential VSM [VSM] §4.2, c from swarp_evsm_max_exponent */
+    DEMO_FILTER_PROJBLUR, /**< [KOZ] §14.3.2 projective blur on the ground, pcf3 elsewhere */
     DEMO_FILTER_COUNT
 } demo_filter;
 
@@ -32,7 +33,11 @@ typedef struct demo_renderer {
     int vertex_count;
     GLuint prog_depth, prog_moment, prog_clone, prog_main;
     GLuint shadow_tex, shadow_fbo;
-    GLuint moment_tex;         /**< RGBA32F array: VSM / EVSM moments per map */
+    GLuint moment_tex;         /**< RGBA32F array: VSM / EVSM moments, blur colour (lazy) */
+    GLuint blur_tex;           /**< RGBA32F array: projective blur ping-pong (lazy) */
+    GLuint prog_receiver, prog_blur;
+    float blur_sigma;          /**< projective blur Gaussian sigma, texels */
+    double blur_ms;            /**< time of the last blur passes */
     float poisson[32];         /**< 16 unit-disk points (swarp_pcf_poisson_disk) */
     float evsm_c;              /**< EVSM exponent (swarp_evsm_max_exponent, fp32) */
     int map_res, layers;

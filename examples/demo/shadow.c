@@ -18,7 +18,7 @@
 #include "shadowwarp_cglm.h"
 
 static const char* const tech_names[DEMO_TECH_COUNT] = {
-    "uniform", "lispsm", "repar", "gmnpr", "pseudo", "psm",
+    "uniform", "lispsm", "repar", "gmnpr", "pseudo", "psm", "psm-cube",
     "pssm",    "pssm-lispsm", "pssm-stable", "lixel"};
 
 int demo_technique_is_split(demo_technique t) {
@@ -44,9 +44,11 @@ const char* demo_scheme_name(demo_scheme s) {
 
 int demo_scheme_parse(const char* name, double* lambda, double* np, double* fp) {
     if (strncmp(name, "pseudo:", 7) == 0) {
+        /* n_p, f_p as fractions of the range, as swarp_split_options has them */
         *lambda = 0.5;
         int k = sscanf(name + 7, "%lf,%lf,%lf", np, fp, lambda);
-        if (k < 2 || !(*np > 0 && *fp > *np && *lambda >= 0 && *lambda <= 1)) return -1;
+        if (k < 2 || !(*np >= 0 && *fp >= 0 && *np + *fp < 1 && *lambda >= 0 && *lambda <= 1))
+            return -1;
         return DEMO_SCHEME_PSEUDO;
     }
     if (strncmp(name, "practical", 9) == 0) {
@@ -130,38 +132,10 @@ static int lixel_map(const swarp_mat4* M_v, const demo_shadow_request* req,
     return 0;
 }
 
-/* Split distances C_0..C_K over [near, far] from the library's schemes
- * [RHS] (3.6)-(3.8). */
-static int split_distances(const demo_shadow_request* req, double near, double far, int k,
-                           double* out) {
-    size_t n = 0;
-    swarp_status st;
-    if (req->scheme == DEMO_SCHEME_UNIFORM)
-        st = swarp_split_uniform(near, far, (uint32_t)k, out, DEMO_MAX_SPLITS + 1, &n);
-    else if (req->scheme == DEMO_SCHEME_PSEUDO)
-        st = swarp_split_pseudo(near, far, fmax(near, fmin(req->scheme_np, far)),
-                                fmin(far, fmax(req->scheme_fp, near)), req->scheme_lambda,
-                                (uint32_t)k, out, DEMO_MAX_SPLITS + 1, &n);
-    else if (req->scheme == DEMO_SCHEME_LOG)
-        st = swarp_split_log(near, far, (uint32_t)k, out, DEMO_MAX_SPLITS + 1, &n);
-    else
-        st = swarp_split_practical(near, far, req->scheme_lambda, (uint32_t)k, out,
-                                   DEMO_MAX_SPLITS + 1, &n);
-    if (swarp_status_is_error(st) || n != (size_t)k + 1) {
-        fprintf(stderr, "demo: split scheme: %s\n", swarp_status_string(st));
-        return -1;
-    }
-    return 0;
-}
-
-/* A conventional (non-lixel) map for one technique over the adjusted view
- * range (range = 0) or over [near, far] (range = 1, a split): the library's
- * swarp_setup / swarp_setup_range when the geometry stage is linked in. */
-static int conventional_map(const swarp_camera* cam, const swarp_light* light,
-                            const swarp_aabb* scene, const demo_shadow_request* req,
-                            demo_technique t, int range, double near, double far,
-                            swarp_mat4* out_m, double* out_n, double* out_near, double* out_far,
-                            swarp_vec3* body, int* body_count, swarp_status* out_status) {
+/* The library's options for a technique (the parameter choice of the
+ * LiSPSM variants; the PSSM techniques use the same per split). */
+static void setup_options(const demo_shadow_request* req, demo_technique t,
+                          swarp_setup_options* out) {
     swarp_setup_options opt;
     memset(&opt, 0, sizeof opt);
     opt.technique = SWARP_TECHNIQUE_UNIFORM;
@@ -194,6 +168,19 @@ static int conventional_map(const swarp_camera* cam, const swarp_light* light,
     default:
         break;
     }
+    *out = opt;
+}
+
+/* A conventional (non-lixel) map for one technique over the adjusted view
+ * range (range = 0) or over [near, far] (range = 1, a split): the library's
+ * swarp_setup / swarp_setup_range when the geometry stage is linked in. */
+static int conventional_map(const swarp_camera* cam, const swarp_light* light,
+                            const swarp_aabb* scene, const demo_shadow_request* req,
+                            demo_technique t, int range, double near, double far,
+                            swarp_mat4* out_m, double* out_n, double* out_near, double* out_far,
+                            swarp_vec3* body, int* body_count, swarp_status* out_status) {
+    swarp_setup_options opt;
+    setup_options(req, t, &opt);
     swarp_setup_result res;
     size_t nb = 0;
     _Static_assert(DEMO_MAX_BODY >= SWARP_BODY_MAX_POINTS, "room for every point of B");
@@ -216,7 +203,8 @@ static int conventional_map(const swarp_camera* cam, const swarp_light* light,
 }
 
 static const char* matrix_source(demo_technique t) {
-    if (t == DEMO_TECH_PSSM_STABLE) return "library (swarp_stabilize_directional)";
+    if (t == DEMO_TECH_PSSM_STABLE) return "library (swarp_split_*, swarp_stabilize_directional)";
+    if (demo_technique_is_split(t)) return "library (swarp_cascade_setup)";
     return "library (swarp_setup)";
 }
 
@@ -268,6 +256,54 @@ int demo_shadow_setup(const swarp_camera* cam, const swarp_light* light,
         *out = sh;
         return 0;
     }
+    if (t == DEMO_TECH_PSM_CUBE) {
+        /* [KOZ] §14.2.2: the adjusted view range from the setup, the
+         * camera's post-projective space over it, the light there, and one
+         * map per back-facing face of the unit cube */
+        double nprime;
+        if (conventional_map(cam, light, scene, req, DEMO_TECH_UNIFORM, 0, 0, 0, &sh.light[0],
+                             &nprime, &sh.near, &sh.far, sh.body, &sh.body_count, &st))
+            return -1;
+        swarp_camera c2 = *cam;
+        c2.near = sh.near;
+        c2.far = sh.far;
+        viewer_matrix(&c2, &sh.cube_camera);
+        swarp_vec3 lp = light->type == SWARP_LIGHT_POINT ? light->position : light->direction;
+        swarp_vec4 hl;
+        swarp_mat4_transform(&sh.cube_camera, &lp, &hl);
+        if (light->type != SWARP_LIGHT_POINT) {
+            /* (-d, 0): C (-d, 0) = -(C (d, 1) - C (0, 1)) */
+            swarp_vec3 zero = {0, 0, 0};
+            swarp_vec4 h0;
+            swarp_mat4_transform(&sh.cube_camera, &zero, &h0);
+            hl = (swarp_vec4){-(hl.x - h0.x), -(hl.y - h0.y), -(hl.z - h0.z), -(hl.w - h0.w)};
+        }
+        sh.cube_light = hl;
+        swarp_cube_face faces[SWARP_CUBE_MAX_FACES];
+        size_t nf = 0;
+        swarp_status sc = swarp_cube_faces(&hl, NULL, faces, SWARP_CUBE_MAX_FACES, &nf);
+        if (swarp_status_is_error(sc)) {
+            fprintf(stderr, "demo: swarp_cube_faces: %s\n", swarp_status_string(sc));
+            return -1;
+        }
+        for (size_t i = 0; i < nf; ++i) {
+            swarp_mat4_mul(&faces[i].view_proj, &sh.cube_camera, &sh.light[i]);
+            sh.cube_normal[i] = faces[i].normal;
+            sh.cube_distance[i] = faces[i].distance;
+            sh.cube_face[i] = faces[i].face;
+            sh.n_prime[i] = NAN;
+        }
+        sh.count = (int)nf;
+        sh.split[0] = sh.near;
+        sh.split[1] = sh.far;
+        sh.select = DEMO_SELECT_CUBE;
+        sh.depth_clamp = 1;
+        sh.model_applies = 0;
+        sh.status = sc != SWARP_OK ? sc : st;
+        sh.source = "library (swarp_setup range + swarp_cube_faces)";
+        *out = sh;
+        return 0;
+    }
     int pssm = demo_technique_is_split(t);
     sh.count = pssm ? req->splits : 1;
     if (sh.count < 1 || sh.count > DEMO_MAX_SPLITS) return -1;
@@ -277,40 +313,84 @@ int demo_shadow_setup(const swarp_camera* cam, const swarp_light* light,
                          &st))
         return -1;
     if (t == DEMO_TECH_PSSM_STABLE) {
-        /* the sphere covers whole split frusta: no adjusted range */
+        /* [RHS] §3.5 exact solution per split: the split frustum's minimal
+         * sphere, texel-snapped.  The splits divide the CAMERA's fixed
+         * [near, far]: swarp_cascade_setup would split the adjusted range
+         * of §3.3.1, which moves with the camera, so the spheres and their
+         * texels would change size every frame (measured: 0.4 texel of
+         * drift per frame against 0.0000 here; see --frames). */
         sh.near = cam->near;
         sh.far = cam->far;
-    }
-    sh.split[0] = sh.near;
-    sh.split[1] = sh.far;
-    if (pssm) {
-        if (split_distances(req, sh.near, sh.far, sh.count, sh.split)) return -1;
+        size_t n = 0;
+        swarp_status ss;
+        if (req->scheme == DEMO_SCHEME_UNIFORM)
+            ss = swarp_split_uniform(sh.near, sh.far, (uint32_t)sh.count, sh.split,
+                                     DEMO_MAX_SPLITS + 1, &n);
+        else if (req->scheme == DEMO_SCHEME_LOG)
+            ss = swarp_split_log(sh.near, sh.far, (uint32_t)sh.count, sh.split, DEMO_MAX_SPLITS + 1,
+                                 &n);
+        else if (req->scheme == DEMO_SCHEME_PSEUDO)
+            ss = swarp_split_pseudo(sh.near, sh.far, sh.near + req->scheme_np * (sh.far - sh.near),
+                                    sh.far - req->scheme_fp * (sh.far - sh.near), req->scheme_lambda,
+                                    (uint32_t)sh.count, sh.split, DEMO_MAX_SPLITS + 1, &n);
+        else
+            ss = swarp_split_practical(sh.near, sh.far, req->scheme_lambda, (uint32_t)sh.count,
+                                       sh.split, DEMO_MAX_SPLITS + 1, &n);
+        if (swarp_status_is_error(ss) || n != (size_t)sh.count + 1) {
+            fprintf(stderr, "demo: split scheme: %s\n", swarp_status_string(ss));
+            return -1;
+        }
         for (int i = 0; i < sh.count; ++i) {
-            double a, b;
-            swarp_status si;
-            if (t == DEMO_TECH_PSSM_STABLE) {
-                /* [RHS] §3.5 exact solution: the split frustum's minimal
-                 * sphere, texel-snapped (directional lights only) */
-                swarp_stabilize_options so;
-                memset(&so, 0, sizeof so);
-                so.mode = SWARP_STABILIZE_SPHERE;
-                si = swarp_stabilize_directional(cam, sh.split[i], sh.split[i + 1], &light->direction,
-                                                 NULL, 0, scene, (uint32_t)req->map_res, &so,
-                                                 &sh.light[i], NULL);
-                if (swarp_status_is_error(si)) {
-                    fprintf(stderr, "demo: swarp_stabilize_directional: %s\n",
-                            swarp_status_string(si));
-                    return -1;
-                }
-                sh.n_prime[i] = INFINITY;
-                if (si != SWARP_OK && st == SWARP_OK) st = si;
-                continue;
-            }
-            if (conventional_map(cam, light, scene, req, t, 1, sh.split[i], sh.split[i + 1],
-                                 &sh.light[i], &sh.n_prime[i], &a, &b, NULL, NULL, &si))
+            swarp_stabilize_options so;
+            memset(&so, 0, sizeof so);
+            so.mode = SWARP_STABILIZE_SPHERE;
+            swarp_status si = swarp_stabilize_directional(cam, sh.split[i], sh.split[i + 1],
+                                                          &light->direction, NULL, 0, scene,
+                                                          (uint32_t)req->map_res, &so,
+                                                          &sh.light[i], NULL);
+            if (swarp_status_is_error(si)) {
+                fprintf(stderr, "demo: swarp_stabilize_directional: %s\n", swarp_status_string(si));
                 return -1;
+            }
+            sh.n_prime[i] = INFINITY;
             if (si != SWARP_OK && st == SWARP_OK) st = si;
         }
+    } else if (pssm) {
+        /* [RHS] §3.3-3.4 in one library call: adjusted range, split
+         * distances, per split B_i and its matrix */
+        swarp_cascade_options co;
+        memset(&co, 0, sizeof co);
+        setup_options(req, t == DEMO_TECH_PSSM_LISPSM ? DEMO_TECH_LISPSM : DEMO_TECH_UNIFORM,
+                      &co.setup);
+        co.split.count = (uint32_t)sh.count;
+        co.split.scheme = req->scheme == DEMO_SCHEME_UNIFORM ? SWARP_SCHEME_UNIFORM
+                          : req->scheme == DEMO_SCHEME_LOG   ? SWARP_SCHEME_LOG
+                          : req->scheme == DEMO_SCHEME_PSEUDO ? SWARP_SCHEME_PSEUDO
+                                                              : SWARP_SCHEME_PRACTICAL;
+        co.split.lambda = req->scheme_lambda;
+        co.split.pseudo_near = req->scheme_np;
+        co.split.pseudo_far = req->scheme_fp;
+        swarp_cascade_result cr;
+        swarp_cascade_split cs[SWARP_CASCADE_MAX_SPLITS];
+        size_t n = 0;
+        swarp_status sc = swarp_cascade_setup(cam, light, scene, &co, &cr, cs,
+                                              SWARP_CASCADE_MAX_SPLITS, &n);
+        if (swarp_status_is_error(sc) || n != (size_t)sh.count) {
+            fprintf(stderr, "demo: swarp_cascade_setup (%s): %s\n", demo_technique_name(t),
+                    swarp_status_string(sc));
+            return -1;
+        }
+        sh.near = cr.view_near;
+        sh.far = cr.view_far;
+        for (int i = 0; i <= sh.count; ++i) sh.split[i] = cr.splits[i];
+        for (int i = 0; i < sh.count; ++i) {
+            sh.light[i] = cs[i].matrix;
+            sh.n_prime[i] = cs[i].n_eye;
+        }
+        if (sc != SWARP_OK) st = sc;
+    } else {
+        sh.split[0] = sh.near;
+        sh.split[1] = sh.far;
     }
     {
         /* the predicted worst error of the whole configuration [RHS]

@@ -18,6 +18,7 @@ typedef enum demo_technique {
     DEMO_TECH_GMNPR,       /**< LiSPSM with lambda_GMNPR [GMNPR] (8) */
     DEMO_TECH_PSEUDO,      /**< LiSPSM with pseudo-near/far n_opt [RHS] (4.2) */
     DEMO_TECH_PSM,         /**< PSM [KOZ] */
+    DEMO_TECH_PSM_CUBE,    /**< PSM with cube-map faces in post-projective space [KOZ] §14.2.2 */
     DEMO_TECH_PSSM,        /**< z-partitioned uniform maps [RHS] §3.3 */
     DEMO_TECH_PSSM_LISPSM, /**< z-partitioning + LiSPSM per split [RHS] §3.4 */
     DEMO_TECH_PSSM_STABLE, /**< stabilised cascades: exact minimal sphere + texel snap [RHS] §3.5 */
@@ -37,7 +38,8 @@ typedef enum demo_scheme {
 typedef enum demo_select {
     DEMO_SELECT_DEPTH = 0, /**< by eye depth, swarp_cascade_select_depth [RHS] §3.3.3 */
     DEMO_SELECT_BEST,      /**< best resolution, swarp_cascade_select_best (ZZB09) */
-    DEMO_SELECT_LIXEL      /**< first map covering p, else the fallback: swarp_lixel_select */
+    DEMO_SELECT_LIXEL,     /**< first map covering p, else the fallback: swarp_lixel_select */
+    DEMO_SELECT_CUBE       /**< the cube face of [KOZ] Listing 14-1: swarp_cube_lookup */
 } demo_select;
 
 typedef struct demo_shadow_request {
@@ -46,7 +48,7 @@ typedef struct demo_shadow_request {
     demo_scheme scheme;
     double scheme_lambda; /**< practical scheme's lambda in [0, 1] */
     double pseudo_near, pseudo_far; /**< n_p, f_p of [RHS] (4.2), fractions (technique pseudo) */
-    double scheme_np, scheme_fp;    /**< n_p, f_p of [RHS] (4.1), eye distances (scheme pseudo) */
+    double scheme_np, scheme_fp;    /**< n_p, f_p of [RHS] (4.1), fractions (scheme pseudo) */
     int map_res;          /**< texels per side of each map */
     demo_select select;   /**< DEPTH or BEST for the PSSM techniques */
     int screen_w, screen_h;
@@ -67,6 +69,12 @@ typedef struct demo_shadow {
     swarp_status status;                    /**< library status of the setup */
     const char* source;                     /**< who computed the matrices */
     swarp_vec3 body[DEMO_MAX_BODY];         /**< points of B from the setup (whole view) */
+    /* DEMO_SELECT_CUBE: the post-projective light and the faces */
+    swarp_mat4 cube_camera;                 /**< world -> the camera's post-projective space */
+    swarp_vec4 cube_light;                  /**< the light there, homogeneous */
+    swarp_vec3 cube_normal[6];              /**< N_i per map */
+    double cube_distance[6];                /**< d_i per map */
+    uint32_t cube_face[6];                  /**< SWARP_CUBE_FACE_* per map */
     int body_count;
 } demo_shadow;
 

@@ -32,10 +32,22 @@ else:
     print("(the closed forms are not in this library build yet)")
 
 if sw.has("swarp_setup"):
-    pass  # filled in when the setup call lands
+    # the one call: a LiSPSM shadow matrix (n_opt, [RHS] §3.2.1) for a camera
+    # over a 100 x 20 x 100 scene and the sun 50 degrees from the view direction
+    cam = sw.Camera(eye=(0, 8, 30), dir=(0, -0.25, -1), up=(0, 1, 0), fovy=fovy, aspect=16 / 9,
+                    near=near, far=far)
+    light = sw.Light(sw.LIGHT_DIRECTIONAL, direction=(0.6, -0.7, -0.4))
+    opts = sw.SetupOptions(technique=sw.TECHNIQUE_LISPSM, param=sw.WARP_PARAM_NOPT)
+    r = sw.setup(cam, light, ((-50, 0, -100), (50, 20, 40)), opts)
+    res, pts = r
+    print("swarp_setup (%s): n' = %.6g eye units, view depth [%.4g, %.4g], B has %d points"
+          % (r.status, res.n_eye, res.view_near, res.view_far, len(pts)))
+    print("predicted max error m_x = %.4g, m_z = %.4g pixels per texel" % (res.max_mx, res.max_mz))
+    print("LiSPSM light matrix (world -> light clip, printed by rows):")
+    print(res.matrix)
 else:
-    # a LiSPSM-style matrix needs the geometry stage; until then show the
-    # matrix helpers on a perspective warp with its near plane at n_opt
+    # until the geometry stage is in the library: the matrix helpers on a
+    # perspective warp
     n = 1.0
     P = sw.Mat4.from_rows([[n, 0, 0, 0], [0, n, 0, 0], [0, 0, -(far + n) / (far - n), -2 * far * n / (far - n)],
                            [0, 0, -1, 0]])

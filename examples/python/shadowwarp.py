@@ -422,3 +422,242 @@ split_practical = _scheme("swarp_split_practical", 3)
 split_pseudo = _scheme("swarp_split_pseudo", 5)
 
 # >>> stages that landed later add their wrappers below this line
+
+# ---- geometry: the one call ---------------------------------------------------------
+TECHNIQUE_DEFAULT, TECHNIQUE_UNIFORM, TECHNIQUE_LISPSM, TECHNIQUE_PSM = 0, 1, 2, 3
+WARP_PARAM_DEFAULT, WARP_PARAM_NOPT, WARP_PARAM_NREPAR, WARP_PARAM_GMNPR, WARP_PARAM_PSEUDO, \
+    WARP_PARAM_USER = 0, 1, 2, 3, 4, 5
+WARP_CENTER_DEFAULT, WARP_CENTER_VIEW_VECTOR, WARP_CENTER_NEAREST_VERTEX = 0, 1, 2
+BODY_MAX_POINTS = 128
+
+
+class SetupOptions(ctypes.Structure):
+    """swarp_setup_options; zero means default."""
+    _fields_ = [("technique", ctypes.c_int32), ("param", ctypes.c_int32), ("center", ctypes.c_int32),
+                ("depth_range", ctypes.c_int32), ("map_width", ctypes.c_uint32),
+                ("map_height", ctypes.c_uint32), ("screen_width", ctypes.c_uint32),
+                ("screen_height", ctypes.c_uint32), ("pancake", ctypes.c_uint32),
+                ("psm_slideback", ctypes.c_uint32), ("_pad0", ctypes.c_uint32),
+                ("_pad1", ctypes.c_uint32), ("n_user", ctypes.c_double),
+                ("pseudo_near", ctypes.c_double), ("pseudo_far", ctypes.c_double),
+                ("slideback", ctypes.c_double), ("_reserved", ctypes.c_uint32 * 4)]
+
+
+class SetupResult(ctypes.Structure):
+    """swarp_setup_result: matrix = light_proj . light_view (world -> light clip)."""
+    _fields_ = [("light_view", Mat4), ("light_proj", Mat4), ("matrix", Mat4),
+                ("n_eye", ctypes.c_double), ("n_light", ctypes.c_double),
+                ("view_near", ctypes.c_double), ("view_far", ctypes.c_double),
+                ("gamma", ctypes.c_double), ("max_mx", ctypes.c_double), ("max_mz", ctypes.c_double),
+                ("light_near", ctypes.c_double), ("light_far", ctypes.c_double),
+                ("point_count", ctypes.c_uint32), ("_pad", ctypes.c_uint32),
+                ("_reserved", ctypes.c_uint32 * 4)]
+
+
+def _aabb(box):
+    if isinstance(box, AABB):
+        return box
+    lo, hi = box
+    return AABB(_vec3(lo), _vec3(hi))
+
+
+_setup = _fn("swarp_setup", [_P(Camera), _P(Light), _P(AABB), _P(SetupOptions), _P(SetupResult),
+                            _P(Vec3), ctypes.c_size_t, _c_size_p])
+_setup_range = _fn("swarp_setup_range", [_P(Camera), _P(Light), _P(AABB), ctypes.c_double,
+                                        ctypes.c_double, _P(SetupOptions), _P(SetupResult),
+                                        _P(Vec3), ctypes.c_size_t, _c_size_p])
+
+
+def setup(camera, light, scene, options=None, near_far=None):
+    """The one call ([RHS] §3.1-§3.3, (2.3)-(2.8)): returns (SetupResult,
+    [points of B]) with .status.  scene: AABB or ((x0, y0, z0), (x1, y1, z1)).
+    near_far=(n, f): swarp_setup_range for a split frustum."""
+    res = SetupResult()
+    pts = (Vec3 * BODY_MAX_POINTS)()
+    count = ctypes.c_size_t()
+    opt = ctypes.byref(options) if options is not None else None
+    box = _aabb(scene)
+    if near_far is None:
+        code = _setup(ctypes.byref(camera), ctypes.byref(light), ctypes.byref(box), opt,
+                      ctypes.byref(res), pts, BODY_MAX_POINTS, ctypes.byref(count))
+        st = _check(code, "swarp_setup")
+    else:
+        code = _setup_range(ctypes.byref(camera), ctypes.byref(light), ctypes.byref(box),
+                            float(near_far[0]), float(near_far[1]), opt, ctypes.byref(res), pts,
+                            BODY_MAX_POINTS, ctypes.byref(count))
+        st = _check(code, "swarp_setup_range")
+    return _result([res, [tuple(p) for p in pts[:count.value]]], st)
+
+
+# ---- splits stage: cascades, atlas ---------------------------------------------------
+SCHEME_DEFAULT, SCHEME_UNIFORM, SCHEME_LOG, SCHEME_PRACTICAL, SCHEME_PSEUDO = 0, 1, 2, 3, 4
+
+
+class SplitOptions(ctypes.Structure):
+    """swarp_split_options; zero means default (4 PSSM splits, lambda 0.5)."""
+    _fields_ = [("count", ctypes.c_uint32), ("scheme", ctypes.c_int32), ("lambda_", ctypes.c_double),
+                ("pseudo_near", ctypes.c_double), ("pseudo_far", ctypes.c_double),
+                ("_reserved", ctypes.c_uint32 * 4)]
+
+
+_cascade_splits = _fn("swarp_cascade_splits", [ctypes.c_double, ctypes.c_double, _P(SplitOptions),
+                                              _c_double_p, ctypes.c_size_t, _c_size_p])
+_cascade_nopt = _fn("swarp_cascade_nopt", [_c_double_p, ctypes.c_size_t, ctypes.c_double,
+                                          ctypes.c_double, _c_double_p])
+_cascade_select_depth = _fn("swarp_cascade_select_depth", [_c_double_p, ctypes.c_size_t,
+                                                          ctypes.c_double, _P(ctypes.c_uint32)])
+_atlas_lsc = _fn("swarp_atlas_lsc", [ctypes.c_uint32, _c_double_p])
+
+
+def cascade_splits(n, f, count=0, scheme=SCHEME_DEFAULT, lambda_=0.0, pseudo_near=0.0,
+                   pseudo_far=0.0):
+    """Split distances C_0 = n .. C_m = f ([RHS] (3.6)-(3.8), (4.1))."""
+    opt = SplitOptions(count, scheme, lambda_, pseudo_near, pseudo_far)
+    out = (ctypes.c_double * (SPLIT_MAX_COUNT + 1))()
+    cnt = ctypes.c_size_t()
+    st = _check(_cascade_splits(float(n), float(f), ctypes.byref(opt), out, SPLIT_MAX_COUNT + 1,
+                                ctypes.byref(cnt)), "swarp_cascade_splits")
+    return _result(list(out[:cnt.value]), st)
+
+
+def cascade_nopt(splits, pseudo_near=0.0, pseudo_far=0.0):
+    """n' per split ([RHS] (3.2), (4.2)); +inf = uniform."""
+    sp, _ = _darr(splits)
+    m = len(splits) - 1
+    out = (ctypes.c_double * max(1, m))()
+    st = _check(_cascade_nopt(sp, m, pseudo_near, pseudo_far, out), "swarp_cascade_nopt")
+    return _result(list(out[:m]), st)
+
+
+def cascade_select_depth(splits, view_depth):
+    """The split holding an eye depth ([RHS] §3.3.3)."""
+    sp, _ = _darr(splits)
+    idx = ctypes.c_uint32()
+    st = _check(_cascade_select_depth(sp, len(splits) - 1, float(view_depth), ctypes.byref(idx)),
+                "swarp_cascade_select_depth")
+    r = _result([idx.value], st)
+    return r
+
+
+def atlas_lsc(m):
+    """l_sc of [RHS] (3.9)."""
+    out = ctypes.c_double()
+    st = _check(_atlas_lsc(int(m), ctypes.byref(out)), "swarp_atlas_lsc")
+    return _float(out.value, st)
+
+
+# ---- lixel ([LIXEL] Chong & Gortler) ----------------------------------------------
+class LixelOptions(ctypes.Structure):
+    _fields_ = [("raise_", ctypes.c_double), ("_reserved", ctypes.c_uint32 * 4)]
+
+
+class LixelInfo(ctypes.Structure):
+    _fields_ = [("corners", Vec4 * 4), ("raised", Vec4), ("raised_index", ctypes.c_uint32),
+                ("corners_in_front", ctypes.c_uint32), ("conditioning", ctypes.c_double),
+                ("_reserved", ctypes.c_uint32 * 4)]
+
+
+_lixel_matrix = _fn("swarp_lixel_matrix", [_P(Mat4), ctypes.c_uint32, ctypes.c_uint32, _P(Light),
+                                          _P(Plane), _P(LixelOptions), _P(Mat4), _P(LixelInfo)])
+
+
+def lixel_matrix(view_proj, width, height, light, plane, raise_=0.0):
+    """Plane-stabilised light matrix M_l ([LIXEL] (1), (7)-(10)): (M_l, LixelInfo)."""
+    if not isinstance(plane, Plane):
+        plane = Plane(*[float(v) for v in plane])
+    opt = LixelOptions(raise_)
+    out = Mat4()
+    info = LixelInfo()
+    st = _check(_lixel_matrix(ctypes.byref(view_proj), int(width), int(height), ctypes.byref(light),
+                              ctypes.byref(plane), ctypes.byref(opt), ctypes.byref(out),
+                              ctypes.byref(info)), "swarp_lixel_matrix")
+    return _result([out, info], st)
+
+
+# ---- plan --------------------------------------------------------------------------
+PLAN_MAX_SPLITS = 16
+PLAN_MAX_PLANES = 4
+PLAN_EXPLAIN_MAX = 4096
+
+
+class SceneNeeds(ctypes.Structure):
+    """swarp_scene_needs; a zeroed struct is the default scene."""
+    _fields_ = [("camera", Camera), ("light", Light), ("scene_box", AABB),
+                ("screen_width", ctypes.c_uint32), ("screen_height", ctypes.c_uint32),
+                ("camera_moves", ctypes.c_uint32), ("soft_shadows", ctypes.c_uint32),
+                ("soft_width", ctypes.c_double), ("bleed_risk", ctypes.c_int32),
+                ("allow_depth_clamp", ctypes.c_uint32), ("plane_count", ctypes.c_uint32),
+                ("_pad0", ctypes.c_uint32), ("planes", Plane * PLAN_MAX_PLANES),
+                ("_reserved", ctypes.c_uint32 * 4)]
+
+    def __init__(self, **kw):
+        super().__init__()
+        for k, v in kw.items():
+            setattr(self, k, v)
+
+
+class Budget(ctypes.Structure):
+    """swarp_budget; zero means default (1 pixel per texel, 2048 maps, 16 passes)."""
+    _fields_ = [("max_error", ctypes.c_double), ("map_resolution", ctypes.c_uint32),
+                ("atlas_limit", ctypes.c_uint32), ("max_passes", ctypes.c_uint32),
+                ("_pad0", ctypes.c_uint32), ("time_budget_ns", ctypes.c_double),
+                ("pass_cost_ns", ctypes.c_double), ("blur_pass_cost_ns", ctypes.c_double),
+                ("_reserved", ctypes.c_uint32 * 4)]
+
+    def __init__(self, **kw):
+        super().__init__()
+        for k, v in kw.items():
+            setattr(self, k, v)
+
+
+class Plan(ctypes.Structure):
+    """struct swarp_plan (swarp_plan_result)."""
+    _fields_ = [("warp", ctypes.c_int32), ("scheme", ctypes.c_int32), ("split_count", ctypes.c_uint32),
+                ("map_resolution", ctypes.c_uint32), ("atlas_tiles", ctypes.c_uint32),
+                ("stabilize", ctypes.c_int32), ("inverse_projection", ctypes.c_uint32),
+                ("depth_clamp", ctypes.c_uint32), ("gamma", ctypes.c_double),
+                ("near", ctypes.c_double), ("far", ctypes.c_double),
+                ("splits", ctypes.c_double * (PLAN_MAX_SPLITS + 1)),
+                ("n_prime", ctypes.c_double * PLAN_MAX_SPLITS),
+                ("split_max_mx", ctypes.c_double * PLAN_MAX_SPLITS),
+                ("split_max_mz", ctypes.c_double * PLAN_MAX_SPLITS),
+                ("max_mx", ctypes.c_double), ("max_mz", ctypes.c_double),
+                ("max_error", ctypes.c_double), ("error_area", ctypes.c_double),
+                ("lixel_count", ctypes.c_uint32), ("lixel_planes", ctypes.c_uint32 * PLAN_MAX_PLANES),
+                ("plane_reason", ctypes.c_uint32 * PLAN_MAX_PLANES), ("lixel_error", ctypes.c_double),
+                ("filter", ctypes.c_int32), ("filter_layers", ctypes.c_uint32),
+                ("filter_width", ctypes.c_double), ("filter_exponent_pos", ctypes.c_double),
+                ("filter_exponent_neg", ctypes.c_double), ("shadow_passes", ctypes.c_uint32),
+                ("blur_passes", ctypes.c_uint32), ("texels", ctypes.c_double),
+                ("cost_ns", ctypes.c_double), ("meets_budget", ctypes.c_uint32),
+                ("reasons", ctypes.c_uint32), ("candidates", ctypes.c_uint32),
+                ("plane_count", ctypes.c_uint32), ("_reserved", ctypes.c_uint32 * 4)]
+
+
+_plan = _fn("swarp_plan", [_P(SceneNeeds), _P(Budget), _P(Plan)])
+_plan_explain = _fn("swarp_plan_explain", [_P(Plan), ctypes.c_char_p, ctypes.c_size_t, _c_size_p])
+_plan_warp_name = _fn("swarp_plan_warp_name", [ctypes.c_int32], ctypes.c_char_p)
+
+
+def plan(needs=None, budget=None):
+    """The cheapest chain that meets the budget (docs/planning.md): a Plan with .status."""
+    out = Plan()
+    st = _check(_plan(ctypes.byref(needs) if needs is not None else None,
+                      ctypes.byref(budget) if budget is not None else None, ctypes.byref(out)),
+                "swarp_plan")
+    out.status = st
+    return out
+
+
+def plan_explain(p):
+    """Readable text of a plan."""
+    buf = ctypes.create_string_buffer(PLAN_EXPLAIN_MAX)
+    n = ctypes.c_size_t()
+    _check(_plan_explain(ctypes.byref(p), buf, PLAN_EXPLAIN_MAX, ctypes.byref(n)),
+           "swarp_plan_explain")
+    return buf.value.decode()
+
+
+def plan_warp_name(w):
+    return _plan_warp_name(int(w)).decode()
+

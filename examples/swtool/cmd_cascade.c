@@ -430,6 +430,7 @@ static int cascade_scene(sw_args* a) {
             json_kv_num("mx_start", sp[i].mx_start);
             json_kv_num("mz_start", sp[i].mz_start);
             json_kv_num("texel_size", sp[i].texel_size);
+            json_kv_num("depth_per_world", sp[i].depth_per_world);
             json_close_obj();
         }
         json_close_arr();
@@ -461,6 +462,7 @@ static int cascade_scene(sw_args* a) {
         printf("  max m_x    %.6g  (%.6g just after the border)\n", q->max_mx, q->mx_start);
         printf("  max m_z    %.6g  (%.6g just after the border)\n", q->max_mz, q->mz_start);
         if (q->texel_size > 0) printf("  texel      %.9g world units (stabilised)\n", q->texel_size);
+        printf("  depth/world %.6g window depth per world unit toward the light\n", q->depth_per_world);
         printf("  matrix (column-major):\n");
         for (int row = 0; row < 4; ++row)
             printf("    %14.8g %14.8g %14.8g %14.8g\n", q->matrix.m[row], q->matrix.m[4 + row],

@@ -59,6 +59,30 @@ class Conventions(unittest.TestCase):
         self.assertIn("singular", cm.exception.message)
 
 
+class Layouts(unittest.TestCase):
+    """ctypes structs against the C compiler's sizeof/offsetof (tests/python/layouts.c)."""
+
+    def test_sizes_and_offsets_match_c(self):
+        exe = os.environ.get("SHADOWWARP_LAYOUTS")
+        if not exe:
+            self.skipTest("SHADOWWARP_LAYOUTS not set")
+        import subprocess
+        lines = subprocess.run([exe], check=True, capture_output=True, text=True).stdout.split("\n")
+        c = dict(line.split() for line in lines if line.strip())
+        names = {"swarp_vec3": sw.Vec3, "swarp_vec4": sw.Vec4, "swarp_mat4": sw.Mat4, "swarp_aabb": sw.AABB,
+                 "swarp_plane": sw.Plane, "swarp_camera": sw.Camera, "swarp_light": sw.Light,
+                 "swarp_error_config": sw.ErrorConfig, "swarp_setup_options": sw.SetupOptions,
+                 "swarp_setup_result": sw.SetupResult, "swarp_split_options": sw.SplitOptions,
+                 "swarp_lixel_options": sw.LixelOptions, "swarp_lixel_info": sw.LixelInfo,
+                 "swarp_scene_needs": sw.SceneNeeds, "swarp_budget": sw.Budget, "swarp_plan_result": sw.Plan}
+        for key, value in c.items():
+            if "." in key:
+                struct, field = key.split(".")
+                self.assertEqual(getattr(names[struct], field).offset, int(value), key)
+            else:
+                self.assertEqual(ctypes.sizeof(names[key]), int(value), key)
+
+
 class Mat4(unittest.TestCase):
     def setUp(self):
         self.a = sw.Mat4.from_rows([[2, 0, 1, 3], [0, 1, 0, -2], [1, 0, 3, 0.5], [0, 0, 0, 1]])
@@ -160,6 +184,78 @@ class Core(unittest.TestCase):
             Fn, Ff = sw.gmnpr_F(lam, theta, phi, n, f, n), sw.gmnpr_F(lam, theta, phi, n, f, f)
             self.assertAlmostEqual(Fn / Ff, 1.0, places=10)
         self.assertEqual(sw.gmnpr_lambda(0.1, phi, n, f).status, "SWARP_INFO_GMNPR_ADJUSTED")
+
+
+class LaterStages(unittest.TestCase):
+    @need("swarp_setup")
+    def test_setup_maps_the_body_into_the_unit_cube(self):
+        cam = sw.Camera(eye=(0, 5, 10), dir=(0, -0.3, -1), up=(0, 1, 0), fovy=1.0, aspect=16 / 9,
+                        near=0.5, far=80.0)
+        light = sw.Light(direction=(0.3, -1, 0.2))
+        r = sw.setup(cam, light, ((-30, 0, -60), (30, 10, 5)))
+        res, pts = r
+        self.assertIn(r.status, sw.STATUS)
+        self.assertTrue(pts)
+        for p in pts:
+            x, y, z, w = sw.mat4_transform(res.matrix, p)
+            self.assertGreater(w, 0)
+            self.assertLessEqual(abs(x / w), 1 + 1e-9)
+            self.assertLessEqual(abs(y / w), 1 + 1e-9)
+        self.assertGreater(res.n_eye, 0)
+        self.assertTrue(math.isfinite(res.max_mx) and math.isfinite(res.max_mz))
+        with self.assertRaises(sw.SwarpError) as cm:
+            sw.setup(sw.Camera(near=2.0, far=1.0), light, ((-1, -1, -1), (1, 1, 1)))
+        self.assertEqual(cm.exception.status, "SWARP_ERR_NEAR_FAR")
+
+    @need("swarp_cascade_splits")
+    def test_cascade_splits_and_selection(self):
+        s = sw.cascade_splits(1.0, 100.0, count=4, scheme=sw.SCHEME_LOG)
+        self.assertEqual(len(s), 5)
+        for i, v in enumerate(s):
+            self.assertAlmostEqual(v, 100.0 ** (i / 4), places=9)  # [RHS] (3.7)
+        self.assertEqual(sw.cascade_select_depth(s, 5.0)[0], 1)
+        n = sw.cascade_nopt(s)
+        self.assertEqual(len(n), 4)
+        self.assertTrue(all(v > 0 for v in n))
+        self.assertEqual(sw.atlas_lsc(4), 0.5)
+
+    @need("swarp_lixel_matrix")
+    def test_lixel_plane_is_pixel_for_pixel(self):
+        # viewer looking down at the floor y = 0 from (0, 2, 4), 640 x 480
+        f = 1.0 / math.tan(0.5)
+        n, fa = 0.1, 100.0
+        P = sw.Mat4.from_rows([[f / (4 / 3), 0, 0, 0], [0, f, 0, 0],
+                               [0, 0, -(fa + n) / (fa - n), -2 * fa * n / (fa - n)], [0, 0, -1, 0]])
+        d = (0.0, -0.5, -1.0)
+        ln = math.sqrt(sum(v * v for v in d))
+        fw = [v / ln for v in d]
+        s = [-fw[2], 0.0, fw[0]]
+        ls = math.sqrt(sum(v * v for v in s))
+        s = [v / ls for v in s]
+        u = [s[1] * fw[2] - s[2] * fw[1], s[2] * fw[0] - s[0] * fw[2], s[0] * fw[1] - s[1] * fw[0]]
+        eye = (0.0, 2.0, 4.0)
+        V = sw.Mat4.from_rows([s + [-sum(a * b for a, b in zip(s, eye))],
+                               u + [-sum(a * b for a, b in zip(u, eye))],
+                               [-v for v in fw] + [sum(a * b for a, b in zip(fw, eye))], [0, 0, 0, 1]])
+        MV = sw.mat4_mul(P, V)
+        M_l, info = sw.lixel_matrix(MV, 640, 480, sw.Light(sw.LIGHT_POINT, position=(1, 6, 0)), (0, 1, 0, 0))
+        for p in ((0.3, 0.0, 1.0), (-1.0, 0.0, -2.0), (0.5, 0.0, -0.5)):
+            cv = sw.mat4_transform(MV, p)
+            cl = sw.mat4_transform(M_l, p)
+            xp, yp = (cv.x / cv.w + 1) * 320 - 0.5, (cv.y / cv.w + 1) * 240 - 0.5
+            self.assertAlmostEqual(cl.x / cl.w, xp, places=6)
+            self.assertAlmostEqual(cl.y / cl.w, yp, places=6)
+            self.assertGreater(cl.w, 0)
+
+    @need("swarp_plan")
+    def test_plan_meets_its_budget(self):
+        p = sw.plan(sw.SceneNeeds(), sw.Budget(max_error=2.0))
+        self.assertTrue(1 <= p.split_count <= sw.PLAN_MAX_SPLITS)
+        if p.meets_budget:
+            self.assertLessEqual(p.max_error, 2.0)
+        self.assertEqual(p.max_error, max(p.max_mx, p.max_mz))
+        text = sw.plan_explain(p)
+        self.assertIn(sw.plan_warp_name(p.warp), text)
 
 
 if __name__ == "__main__":

@@ -7,10 +7,18 @@
 extern const swr_entry swr_entries_core[];
 /* stage tables: */
 extern const swr_entry swr_entries_lixel[];
+extern const swr_entry swr_entries_filter[];
+extern const swr_entry swr_entries_geometry[];
+extern const swr_entry swr_entries_plan[];
+extern const swr_entry swr_entries_splits[];
 
 static const swr_entry* const tables[] = {
     swr_entries_core,
     swr_entries_lixel,
+    swr_entries_filter,
+    swr_entries_geometry,
+    swr_entries_splits,
+    swr_entries_plan,
 };
 
 size_t swr_entry_count(void) {
