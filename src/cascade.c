@@ -459,6 +459,13 @@ SWARP_API swarp_status swarp_cascade_setup(const swarp_camera* cam, const swarp_
             st = sw_body_from_h(hp, light, scene, &Bi);
             if (st == SWARP_ERR_BODY_EMPTY) return SWARP_ERR_SPLIT_EMPTY;
             if (st != SWARP_OK) return st;
+            if (light->type == SWARP_LIGHT_POINT && light->cone_angle > 0.0) {
+                /* receivers a spot lights: H_i ∩ L (as swarp_setup_range) */
+                st = swarp_body_receivers(hp, light, &Hi);
+                if (st == SWARP_ERR_BODY_EMPTY) return SWARP_ERR_SPLIT_EMPTY;
+                if (st != SWARP_OK) return st;
+                hp = &Hi;
+            }
             st = swarp_setup_points(cam, light, Bi.vertices, Bi.vertex_count, hp->vertices,
                                     hp->vertex_count, s->near, s->far, &so, &sr);
             if (swarp_status_is_error(st)) return st;

@@ -24,11 +24,11 @@ UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
     meson test -C build-asan --print-errorlogs --timeout-multiplier 10
 # stage: robustness (valgrind, coverage, fuzz, consumers)
 # Each step below can be run on its own; docs/quality.md lists the commands.
-echo "== valgrind memcheck (every test binary except python, fenv and the OSMesa demo)"
+echo "== valgrind memcheck (every test binary except python, fenv and the OSMesa ones (demo, gl))"
 # python3 is not our binary; valgrind computes SSE in round-to-nearest only;
 # the demo's llvmpipe JIT takes minutes per frame under memcheck and reports
 # the driver's own uninitialised reads: the demo runs under ASan+UBSan above.
-SWARP_HARD_CASES_SIZE=2000 meson test -C build-ci --no-suite python --no-suite fenv --no-suite demo --print-errorlogs \
+SWARP_HARD_CASES_SIZE=2000 meson test -C build-ci --no-suite python --no-suite fenv --no-suite demo --no-suite gl --print-errorlogs \
     --wrap='valgrind --error-exitcode=1 --leak-check=full --errors-for-leak-kinds=definite,indirect --track-origins=yes -q' \
     --timeout-multiplier=10
 

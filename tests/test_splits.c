@@ -1202,9 +1202,13 @@ START_TEST(cascade_splits_cover_bodies_and_range) {
     int tested = 0;
     for (int it = 0; it < 120; ++it) {
         scene_cfg c = random_scene(0);
-        if (it % 3 == 2) { /* point light high above the scene */
+        if (it % 3 == 2) { /* point light high above the scene; every other one a wide spot */
             c.light.type = SWARP_LIGHT_POINT;
             c.light.position = v3(rng_uniform(-300, 300), c.box.max.y + rng_uniform(300, 3000), rng_uniform(-300, 300));
+            if (it % 2) {
+                c.light.direction = v3(0, -1, 0);
+                c.light.cone_angle = 1.4;
+            }
         }
         if (it % 5 == 4) { /* large world: everything 3e5 away from the origin */
             swarp_vec3 off = v3(3e5, 0, -2e5);
