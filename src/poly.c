@@ -87,9 +87,9 @@ double sw_poly_scale(const swarp_polyhedron* p) {
     for (uint32_t i = 0; i < p->vertex_count; ++i) {
         const swarp_vec3* v = &p->vertices[i];
         double ax = fabs(v->x), ay = fabs(v->y), az = fabs(v->z);
-        if (ax > s) s = ax;
-        if (ay > s) s = ay;
-        if (az > s) s = az;
+        s = ax > s ? ax : s; /* branch-free max */
+        s = ay > s ? ay : s;
+        s = az > s ? az : s;
     }
     return s > 1e-300 ? s : 1e-300;
 }
@@ -512,15 +512,15 @@ swarp_status sw_poly_clip(const swarp_polyhedron* in, swarp_vec3 n, double d, sw
 }
 
 static void sw_poly_bounds(const swarp_polyhedron* p, double lo[3], double hi[3]) {
-    lo[0] = lo[1] = lo[2] = INFINITY;
-    hi[0] = hi[1] = hi[2] = -INFINITY;
-    for (uint32_t i = 0; i < p->vertex_count; ++i) {
-        const double* v = &p->vertices[i].x;
-        for (int c = 0; c < 3; ++c) {
-            if (v[c] < lo[c]) lo[c] = v[c];
-            if (v[c] > hi[c]) hi[c] = v[c];
-        }
+    double lx = INFINITY, ly = INFINITY, lz = INFINITY, hx = -INFINITY, hy = -INFINITY, hz = -INFINITY;
+    for (uint32_t i = 0; i < p->vertex_count; ++i) { /* min/max without branches */
+        const swarp_vec3 v = p->vertices[i];
+        lx = v.x < lx ? v.x : lx, hx = v.x > hx ? v.x : hx;
+        ly = v.y < ly ? v.y : ly, hy = v.y > hy ? v.y : hy;
+        lz = v.z < lz ? v.z : lz, hz = v.z > hz ? v.z : hz;
     }
+    lo[0] = lx, lo[1] = ly, lo[2] = lz;
+    hi[0] = hx, hi[1] = hy, hi[2] = hz;
 }
 
 swarp_status sw_poly_clip_box(const swarp_polyhedron* in, const swarp_aabb* box, swarp_polyhedron* out) {

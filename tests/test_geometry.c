@@ -910,6 +910,7 @@ START_TEST(poly_camera_and_inverse_matrix_agree) {
         }
     }
     swarp_polyhedron A;
+    memset(&A, 0, sizeof A); /* unused slots are unspecified; memcmp below reads all bytes */
     swarp_plane zero = {0, 0, 0, 1}, nanp = {NAN, 0, 1, 0};
     swarp_aabb box = {{0, 0, 0}, {1, 1, 1}};
     ck_assert_int_eq(swarp_poly_from_aabb(&box, &A), SWARP_OK);
