@@ -89,15 +89,23 @@ static int sw_mz(const swarp_error_config* c, double n, double f, double z, doub
 
 /* ---- single range --------------------------------------------------------- */
 
-/* [RHS] (2.3), (2.5), (2.7) */
-SWARP_API swarp_status swarp_error_mx(const swarp_error_config* cfg, double z, double n_prime,
-                                      double* out_mx) {
-    if (!cfg || !out_mx) return SWARP_ERR_NULL_POINTER;
+/* The checks shared by the point queries m_x(z), m_z(z): a full config, a
+ * finite z inside [near, far] and a valid n'. */
+static swarp_status sw_point_args(const swarp_error_config* cfg, double z, double n_prime) {
     swarp_status s = sw_cfg_full(cfg);
     if (s != SWARP_OK) return s;
     if (!sw_finite(z)) return SWARP_ERR_NON_FINITE;
     if ((s = sw_nprime(n_prime)) != SWARP_OK) return s;
     if (!(z >= cfg->near && z <= cfg->far)) return SWARP_ERR_OUT_OF_RANGE;
+    return SWARP_OK;
+}
+
+/* [RHS] (2.3), (2.5), (2.7) */
+SWARP_API swarp_status swarp_error_mx(const swarp_error_config* cfg, double z, double n_prime,
+                                      double* out_mx) {
+    if (!cfg || !out_mx) return SWARP_ERR_NULL_POINTER;
+    swarp_status s = sw_point_args(cfg, z, n_prime);
+    if (s != SWARP_OK) return s;
     double v;
     if (!sw_mx(cfg, cfg->near, cfg->far, z, n_prime, &v)) return SWARP_ERR_OVERFLOW;
     *out_mx = v;
@@ -108,11 +116,8 @@ SWARP_API swarp_status swarp_error_mx(const swarp_error_config* cfg, double z, d
 SWARP_API swarp_status swarp_error_mz(const swarp_error_config* cfg, double z, double n_prime,
                                       double* out_mz) {
     if (!cfg || !out_mz) return SWARP_ERR_NULL_POINTER;
-    swarp_status s = sw_cfg_full(cfg);
+    swarp_status s = sw_point_args(cfg, z, n_prime);
     if (s != SWARP_OK) return s;
-    if (!sw_finite(z)) return SWARP_ERR_NON_FINITE;
-    if ((s = sw_nprime(n_prime)) != SWARP_OK) return s;
-    if (!(z >= cfg->near && z <= cfg->far)) return SWARP_ERR_OUT_OF_RANGE;
     double v;
     if (!sw_mz(cfg, cfg->near, cfg->far, z, n_prime, &v)) return SWARP_ERR_OVERFLOW;
     *out_mz = v;
