@@ -147,26 +147,38 @@ static double sw_ndotl(swarp_vec3 N, swarp_vec3 L, int* back) {
     return ndl;
 }
 
+/* The front part of the normal-dependent biases: unit normal N (zero ->
+ * SWARP_ERR_ZERO_VECTOR), then sw_bias_prep, then the clamped N.L. */
+typedef struct sw_bias_frame {
+    swarp_vec3 N, L;
+    double L_texel, ndl;
+    int back; /* N.L was negative */
+} sw_bias_frame;
+static swarp_status sw_bias_prep_normal(const swarp_bias_map* map, const swarp_light* light,
+                                        const swarp_vec3* p, const swarp_vec3* normal,
+                                        sw_bias_frame* fr) {
+    if (!sw_normalize(*normal, &fr->N)) return SWARP_ERR_ZERO_VECTOR;
+    swarp_status st = sw_bias_prep(map, light, p, &fr->L, &fr->L_texel);
+    if (st != SWARP_OK) return st;
+    fr->ndl = sw_ndotl(fr->N, fr->L, &fr->back);
+    return SWARP_OK;
+}
+
 SWARP_API swarp_status swarp_bias_normal_offset(const swarp_bias_map* map, const swarp_light* light,
                                                 const swarp_vec3* p, const swarp_vec3* normal,
                                                 double k, swarp_vec3* out_p, double* out_amount) {
     if (!map || !light || !p || !normal || !out_p) return SWARP_ERR_NULL_POINTER;
     if (!sw_finite(k) || !sw_finite3(normal)) return SWARP_ERR_NON_FINITE;
     if (k < 0.0) return SWARP_ERR_OUT_OF_RANGE;
-    swarp_vec3 N;
-    if (!sw_normalize(*normal, &N)) return SWARP_ERR_ZERO_VECTOR;
-    swarp_vec3 L;
-    double L_texel;
-    swarp_status st = sw_bias_prep(map, light, p, &L, &L_texel);
+    sw_bias_frame fr;
+    swarp_status st = sw_bias_prep_normal(map, light, p, normal, &fr);
     if (st != SWARP_OK) return st;
-    int back;
-    const double ndl = sw_ndotl(N, L, &back);
-    const double amount = k * L_texel * (1.0 - ndl);
-    swarp_vec3 q = sw_add(*p, sw_scale(N, amount));
+    const double amount = k * fr.L_texel * (1.0 - fr.ndl);
+    swarp_vec3 q = sw_add(*p, sw_scale(fr.N, amount));
     if (!sw_finite(amount) || !sw_finite3(&q)) return SWARP_ERR_NON_FINITE;
     *out_p = q;
     if (out_amount) *out_amount = amount;
-    return back ? SWARP_INFO_BACKFACING : SWARP_OK;
+    return fr.back ? SWARP_INFO_BACKFACING : SWARP_OK;
 }
 
 /* Window depth of a point (requires w > 0). */
@@ -187,26 +199,22 @@ SWARP_API swarp_status swarp_bias_slope_scaled(const swarp_bias_map* map, const 
         return SWARP_ERR_NULL_POINTER;
     if (!sw_finite(c) || !sw_finite(s) || !sw_finite3(normal)) return SWARP_ERR_NON_FINITE;
     if (c < 0.0 || s < 0.0) return SWARP_ERR_OUT_OF_RANGE;
-    swarp_vec3 N;
-    if (!sw_normalize(*normal, &N)) return SWARP_ERR_ZERO_VECTOR;
-    swarp_vec3 L;
-    double L_texel;
-    swarp_status st = sw_bias_prep(map, light, p, &L, &L_texel);
+    sw_bias_frame fr;
+    swarp_status st = sw_bias_prep_normal(map, light, p, normal, &fr);
     if (st != SWARP_OK) return st;
-    int back;
-    const double ndl = sw_ndotl(N, L, &back);
     /* tan of the angle between N and L: depth step per unit of lateral move */
+    const double ndl = fr.ndl;
     double slope = SW_BIAS_MAX_SLOPE;
     if (ndl * SW_BIAS_MAX_SLOPE > sqrt(1.0 - ndl * ndl)) slope = sqrt(1.0 - ndl * ndl) / ndl;
-    const double world_bias = c + s * L_texel * slope;
+    const double world_bias = c + s * fr.L_texel * slope;
     double d0, d1;
     if ((st = sw_window_depth(map, *p, &d0)) != SWARP_OK) return st;
-    if ((st = sw_window_depth(map, sw_add(*p, sw_scale(L, world_bias)), &d1)) != SWARP_OK) return st;
+    if ((st = sw_window_depth(map, sw_add(*p, sw_scale(fr.L, world_bias)), &d1)) != SWARP_OK) return st;
     const double depth_bias = d0 - d1;
     if (!sw_finite(world_bias) || !sw_finite(depth_bias)) return SWARP_ERR_NON_FINITE;
     if (out_world_bias) *out_world_bias = world_bias;
     if (out_depth_bias) *out_depth_bias = depth_bias;
-    return back ? SWARP_INFO_BACKFACING : SWARP_OK;
+    return fr.back ? SWARP_INFO_BACKFACING : SWARP_OK;
 }
 
 /* Exact derivative of (s, t, d) (texels, texels, window depth) along a world
