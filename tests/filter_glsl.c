@@ -18,6 +18,7 @@
 
 #include "gl_harness.h"
 #include "shadowwarp.h"
+#include "test_util.h"
 
 #ifndef FILTER_GLSL_PATH
 #error "FILTER_GLSL_PATH must name docs/glsl/filtering.glsl"
@@ -80,13 +81,7 @@ static const char* k_main =
 
 /* ---- cases -------------------------------------------------------------- */
 static uint64_t rng = 2024;
-static double urand(double lo, double hi) {
-    uint64_t z = (rng += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    z ^= z >> 31;
-    return lo + (hi - lo) * ((double)(z >> 11) * 0x1.0p-53);
-}
+static double urand(double lo, double hi) { return tu_uniform(&rng, lo, hi); }
 static double fl(double x) { return (double)(float)x; } /* what the shader sees */
 
 static float in_buf[N_CASES * REC_IN], out_buf[N_CASES * REC_OUT];
