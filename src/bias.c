@@ -92,14 +92,20 @@ SWARP_API swarp_status swarp_bias_texel_size(const swarp_bias_map* map, const sw
     return SWARP_OK;
 }
 
-SWARP_API swarp_status swarp_bias_to_light(const swarp_light* light, const swarp_vec3* p,
-                                           swarp_vec3* out_L) {
-    if (!light || !p || !out_L) return SWARP_ERR_NULL_POINTER;
+/* The checked light and point, then L: the unit vector from p to the light. */
+static swarp_status sw_light_at(const swarp_light* light, const swarp_vec3* p, swarp_vec3* L) {
     swarp_status st = sw_light_check(light);
     if (st != SWARP_OK) return st;
     if (!sw_finite3(p)) return SWARP_ERR_NON_FINITE;
+    return sw_to_light(light, *p, L);
+}
+
+SWARP_API swarp_status swarp_bias_to_light(const swarp_light* light, const swarp_vec3* p,
+                                           swarp_vec3* out_L) {
+    if (!light || !p || !out_L) return SWARP_ERR_NULL_POINTER;
     swarp_vec3 L;
-    if ((st = sw_to_light(light, *p, &L)) != SWARP_OK) return st;
+    swarp_status st = sw_light_at(light, p, &L);
+    if (st != SWARP_OK) return st;
     *out_L = L;
     return SWARP_OK;
 }
@@ -109,9 +115,7 @@ static swarp_status sw_bias_prep(const swarp_bias_map* map, const swarp_light* l
                                  const swarp_vec3* p, swarp_vec3* L, double* L_texel) {
     swarp_status st = sw_map_check(map);
     if (st != SWARP_OK) return st;
-    if ((st = sw_light_check(light)) != SWARP_OK) return st;
-    if (!sw_finite3(p)) return SWARP_ERR_NON_FINITE;
-    if ((st = sw_to_light(light, *p, L)) != SWARP_OK) return st;
+    if ((st = sw_light_at(light, p, L)) != SWARP_OK) return st;
     double Ls, Lt;
     if ((st = sw_texel_size(map, *p, &Ls, &Lt)) != SWARP_OK) return st;
     *L_texel = Ls > Lt ? Ls : Lt;
@@ -235,10 +239,8 @@ SWARP_API swarp_status swarp_bias_depth_per_world(const swarp_bias_map* map, con
     if (!map || !light || !p || !out_depth_per_world) return SWARP_ERR_NULL_POINTER;
     swarp_status st = sw_map_check(map);
     if (st != SWARP_OK) return st;
-    if ((st = sw_light_check(light)) != SWARP_OK) return st;
-    if (!sw_finite3(p)) return SWARP_ERR_NON_FINITE;
     swarp_vec3 L;
-    if ((st = sw_to_light(light, *p, &L)) != SWARP_OK) return st;
+    if ((st = sw_light_at(light, p, &L)) != SWARP_OK) return st;
     swarp_vec4 h;
     if ((st = sw_project(&map->world_to_clip, *p, &h)) != SWARP_OK) return st;
     double dv[3];
