@@ -52,13 +52,13 @@ coverage_step() {
         meson test -C build-cov --no-suite python --no-suite demo --no-suite gl --print-errorlogs || return 1
     gcovr -r . --filter 'src/' --exclude-unreachable-branches --exclude-throw-branches build-cov | tail -n 60
     gcovr -r . --filter 'src/' --exclude-unreachable-branches --exclude-throw-branches --print-summary \
-        -o /dev/null build-cov
+        -o build-cov/coverage-summary.txt build-cov
     if [ -n "${SWARP_COV_FAIL_UNDER:-}" ]; then
         # e.g. SWARP_COV_FAIL_UNDER="95 90" fails below 95 % lines or 90 % branches
         # shellcheck disable=SC2086
         set -- $SWARP_COV_FAIL_UNDER
         gcovr -r . --filter 'src/' --exclude-unreachable-branches --exclude-throw-branches \
-            --fail-under-line "$1" --fail-under-branch "$2" -o /dev/null build-cov
+            --fail-under-line "$1" --fail-under-branch "$2" -o build-cov/coverage-summary.txt build-cov
     fi
 }
 echo "== coverage of src/ (gcovr)"
