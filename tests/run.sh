@@ -24,35 +24,57 @@ UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
     meson test -C build-asan --print-errorlogs --timeout-multiplier 10
 # stage: robustness (valgrind, coverage, fuzz, consumers)
 # Each step below can be run on its own; docs/quality.md lists the commands.
-echo "== valgrind memcheck (every test binary except python, fenv and the OSMesa ones (demo, gl))"
-# python3 is not our binary; valgrind computes SSE in round-to-nearest only;
-# the demo's llvmpipe JIT takes minutes per frame under memcheck and reports
-# the driver's own uninitialised reads: the demo runs under ASan+UBSan above.
-SWARP_HARD_CASES_SIZE=2000 meson test -C build-ci --no-suite python --no-suite fenv --no-suite demo --no-suite gl --print-errorlogs \
-    --wrap='valgrind --error-exitcode=1 --leak-check=full --errors-for-leak-kinds=definite,indirect --track-origins=yes -q' \
-    --timeout-multiplier=10
+# The steps all run even when one fails; the summary lists them and the
+# script fails if any did.
+failed=""
+step() { # step NAME COMMAND...: runs it, remembers a failure
+    name="$1"; shift
+    if "$@"; then echo "-- $name: ok"; else echo "-- $name: FAILED"; failed="$failed $name"; fi
+}
 
+valgrind_step() {
+    # python3 is not our binary; valgrind computes SSE in round-to-nearest only;
+    # the demo's llvmpipe JIT takes minutes per frame under memcheck and reports
+    # the driver's own uninitialised reads: the demo runs under ASan+UBSan above.
+    SWARP_HARD_CASES_SIZE=1000 SWARP_THREADS_CASES=40 meson test -C build-ci --no-suite python --no-suite fenv \
+        --no-suite demo --no-suite gl --print-errorlogs \
+        --wrap='valgrind --error-exitcode=1 --leak-check=full --errors-for-leak-kinds=definite,indirect --track-origins=yes -q' \
+        --timeout-multiplier=10
+}
+echo "== valgrind memcheck (every test binary except python, fenv and the OSMesa ones (demo, gl))"
+step valgrind valgrind_step
+
+coverage_step() {
+    [ -d build-cov ] || meson setup build-cov -Db_coverage=true --buildtype=debug >/dev/null
+    ninja -C build-cov >/dev/null
+    find build-cov -name '*.gcda' -delete
+    meson test -C build-cov --no-suite python --no-suite demo --no-suite gl >/dev/null ||
+        meson test -C build-cov --no-suite python --no-suite demo --no-suite gl --print-errorlogs || return 1
+    gcovr -r . --filter 'src/' --exclude-unreachable-branches --exclude-throw-branches build-cov | tail -n 60
+    gcovr -r . --filter 'src/' --exclude-unreachable-branches --exclude-throw-branches --print-summary \
+        -o build-cov/coverage-summary.txt build-cov
+    if [ -n "${SWARP_COV_FAIL_UNDER:-}" ]; then
+        # e.g. SWARP_COV_FAIL_UNDER="95 90" fails below 95 % lines or 90 % branches
+        # shellcheck disable=SC2086
+        set -- $SWARP_COV_FAIL_UNDER
+        gcovr -r . --filter 'src/' --exclude-unreachable-branches --exclude-throw-branches \
+            --fail-under-line "$1" --fail-under-branch "$2" -o build-cov/coverage-summary.txt build-cov
+    fi
+}
 echo "== coverage of src/ (gcovr)"
-[ -d build-cov ] || meson setup build-cov -Db_coverage=true --buildtype=debug >/dev/null
-ninja -C build-cov >/dev/null
-find build-cov -name '*.gcda' -delete
-meson test -C build-cov --no-suite python >/dev/null || meson test -C build-cov --no-suite python --print-errorlogs
-gcovr -r . --filter 'src/' --exclude-unreachable-branches --exclude-throw-branches build-cov | tail -n 40
-gcovr -r . --filter 'src/' --exclude-unreachable-branches --exclude-throw-branches --print-summary \
-    -o /dev/null build-cov
-if [ -n "${SWARP_COV_FAIL_UNDER:-}" ]; then
-    # e.g. SWARP_COV_FAIL_UNDER="95 90" fails below 95 % lines or 90 % branches
-    set -- $SWARP_COV_FAIL_UNDER
-    gcovr -r . --filter 'src/' --exclude-unreachable-branches --exclude-throw-branches \
-        --fail-under-line "$1" --fail-under-branch "$2" -o /dev/null build-cov
-fi
+step coverage coverage_step
 
 echo "== consumers (pkg-config, CMake, meson subproject)"
-sh tests/consumers/run.sh
+step consumers sh tests/consumers/run.sh
 
 echo "== ABI (abidiff against tests/abi/shadowwarp.abi)"
-sh tests/abi/check.sh build-ci
+step abi sh tests/abi/check.sh build-ci
 
 echo "== fuzz (libFuzzer, ${SWARP_FUZZ_SECONDS:-60} s in total)"
-sh tests/fuzz/run.sh "${SWARP_FUZZ_SECONDS:-60}"
+step fuzz sh tests/fuzz/run.sh "${SWARP_FUZZ_SECONDS:-60}"
+
+if [ -n "$failed" ]; then
+    echo "== FAILED:$failed"
+    exit 1
+fi
 echo "== all done"

@@ -154,7 +154,7 @@ static void expect_splits(swr_ctx* c, const double* s, uint32_t n, int null_s) {
 #define MAXN 8
 static void e_lvsm_layer_interval(swr_ctx* c) {
     SKIP_IF_MISSING(c, swarp_lvsm_layer_interval);
-    double s[MAXN + 1];
+    double s[MAXN + 1] = {0};
     uint32_t n = gen_splits(c, s, MAXN), i = swr_u8(c) % (MAXN + 1);
     double th = n >= 1 && n <= MAXN ? thinnest(s, n) : 1;
     const double brk[] = {0.0, th};
@@ -254,7 +254,7 @@ static void e_lvsm_layer_uniform(swr_ctx* c) {
 
 static void e_lvsm_layer_find(swr_ctx* c) {
     SKIP_IF_MISSING(c, swarp_lvsm_layer_find);
-    double s[MAXN + 1];
+    double s[MAXN + 1] = {0};
     uint32_t n = gen_splits(c, s, MAXN);
     uint32_t k = n <= MAXN ? n : MAXN;
     const double brk[] = {s[0], s[k], s[k / 2]};
@@ -274,7 +274,7 @@ static void e_lvsm_layer_find(swr_ctx* c) {
 
 static void e_lvsm_transition(swr_ctx* c) {
     SKIP_IF_MISSING(c, swarp_lvsm_transition);
-    double s[MAXN + 1];
+    double s[MAXN + 1] = {0};
     uint32_t n = gen_splits(c, s, MAXN);
     uint32_t k = n <= MAXN ? n : MAXN;
     double th = k >= 1 ? thinnest(s, k) : 1;
@@ -307,7 +307,7 @@ static void e_lvsm_transition(swr_ctx* c) {
 
 static void e_lvsm_visibility(swr_ctx* c) {
     SKIP_IF_MISSING(c, swarp_lvsm_visibility);
-    double s[MAXN + 1], mom[2 * MAXN];
+    double s[MAXN + 1] = {0}, mom[2 * MAXN];
     uint32_t n = gen_splits(c, s, MAXN);
     uint32_t k = n <= MAXN ? n : MAXN;
     double th = k >= 1 ? thinnest(s, k) : 1;
@@ -359,7 +359,7 @@ static void e_lvsm_second_occluder(swr_ctx* c) {
 static void e_lvsm_lloyd(swr_ctx* c) {
     SKIP_IF_MISSING(c, swarp_lvsm_lloyd);
     enum { NS = 24 };
-    double mu[NS], s2[NS], s[MAXN + 1], out[MAXN + 1];
+    double mu[NS], s2[NS], s[MAXN + 1] = {0}, out[MAXN + 1];
     size_t count = swr_one_in(c, 16) ? 0 : 1 + swr_u8(c) % NS;
     for (int i = 0; i < NS; ++i) {
         mu[i] = swr_num(c, 0, 1, brk01, 3);

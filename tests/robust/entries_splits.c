@@ -288,7 +288,7 @@ static void expect_cascade(swr_ctx* c, const double* s, size_t m) {
 
 static void e_cascade_select_depth(swr_ctx* c) {
     SKIP_IF_MISSING(c, swarp_cascade_select_depth);
-    double s[9];
+    double s[9] = {0};
     size_t m = gen_cascade(c, s, 8);
     size_t k = m <= 8 ? m : 8;
     const double brk[] = {s[0], s[k], s[k / 2]};
@@ -310,7 +310,7 @@ static void e_cascade_select_depth(swr_ctx* c) {
 
 static void e_cascade_blend(swr_ctx* c) {
     SKIP_IF_MISSING(c, swarp_cascade_blend);
-    double s[9];
+    double s[9] = {0};
     size_t m = gen_cascade(c, s, 8);
     size_t k = m <= 8 ? m : 8;
     const double brk[] = {s[0], s[k], s[k / 2]}, brk_b[] = {0.0, 1.0, 0.5};
@@ -391,7 +391,7 @@ static void e_cascade_splits(swr_ctx* c) {
 
 static void e_cascade_nopt(swr_ctx* c) {
     SKIP_IF_MISSING(c, swarp_cascade_nopt);
-    double s[9];
+    double s[9] = {0};
     size_t m = gen_cascade(c, s, 8);
     static const double brk01[] = {0.0, 0.5};
     double np = swr_num(c, 0, 0.5, brk01, 2), fp = swr_num(c, 0, 0.5, brk01, 2);

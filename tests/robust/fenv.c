@@ -122,7 +122,9 @@ int main(int argc, char** argv) {
                 }
                 /* relative to the largest output of the call (slot 0 is the status) */
                 double scale = fmax(c->out_scale, base->out_scale), cond = fmax(c->cond, base->cond);
-                for (size_t i = 1; i < c->n_rec; ++i) scale = fmax(scale, fmax(fabs(c->rec[i]), fabs(base->rec[i])));
+                for (size_t i = 1; i < c->n_rec; ++i) /* finite outputs only (n' may be +inf) */
+                    if (isfinite(c->rec[i]) && isfinite(base->rec[i]))
+                        scale = fmax(scale, fmax(fabs(c->rec[i]), fabs(base->rec[i])));
                 double tol = fmax(fmax(SWR_FENV_TOL, base->tol_min), 64 * DBL_EPSILON * cond);
                 for (size_t i = 1; i < c->n_rec; ++i) {
                     double a = c->rec[i], b = base->rec[i];
@@ -134,7 +136,7 @@ int main(int argc, char** argv) {
                                    modes[m].name, i, a, b);
                     }
                     d /= tol / SWR_FENV_TOL; /* in units of the 1e-9 tolerance */
-                    if (d > worst[m] || d != d) {
+                    if (!is_known(e->name) && (d > worst[m] || d != d)) {
                         worst[m] = d;
                         worst_entry[m] = e->name;
                     }
@@ -145,7 +147,7 @@ int main(int argc, char** argv) {
     }
     printf("fenv: %lu entry points, %lu cases each, tolerance %.0e relative\n", entries, per, SWR_FENV_TOL);
     for (size_t m = 0; m < n_modes; ++m)
-        printf("  %-14s %8lu calls compared, largest difference %.3g of the tolerance%s%s\n", modes[m].name, compared[m],
+        printf("  %-14s %8lu calls compared, largest difference %.3g of the tolerance (outside the known-sensitive)%s%s\n", modes[m].name, compared[m],
                worst[m] / SWR_FENV_TOL, worst_entry[m] ? " in " : "", worst_entry[m] ? worst_entry[m] : "");
     printf("fenv: %lu calls with extreme inputs (a magnitude below 1e-100, subnormals included, or above 1e100) "
            "left out\n", extreme);

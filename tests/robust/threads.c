@@ -9,6 +9,7 @@
  * point, several rounds, so the same function runs in several threads at
  * once.  The library has no globals; this catches any hidden state.
  *   threads [N_THREADS] [K]           default 8 threads, 300 cases per entry
+ * (SWARP_THREADS_CASES overrides K: the valgrind run uses fewer)
  */
 #define _POSIX_C_SOURCE 200809L
 #include <pthread.h>
@@ -64,6 +65,8 @@ static void* worker(void* p) {
 int main(int argc, char** argv) {
     int nthreads = argc > 1 ? atoi(argv[1]) : 8;
     unsigned long per = argc > 2 ? strtoul(argv[2], NULL, 0) : 300;
+    const char* env = getenv("SWARP_THREADS_CASES"); /* valgrind runs fewer */
+    if (env && *env) per = strtoul(env, NULL, 0);
     if (nthreads < 1 || nthreads > 256) return 2;
     swr_ctx* c = (swr_ctx*)malloc(sizeof *c);
     cases = (work_case*)calloc(swr_entry_count() * per, sizeof *cases);
