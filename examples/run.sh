@@ -10,6 +10,11 @@ sh tests/install-deps.sh
 ninja -C build >/dev/null
 if [ -x ./build/examples/demo/demo ]; then
     ./build/examples/demo/demo "$@"
+    # issue 10 extras for the default gallery: PSM with cube-map faces next to
+    # single-map PSM, and the third-person views (docs/demo-extras.md)
+    if [ $# -eq 0 ] && [ -x ./build/examples/demo/demo-extras ]; then
+        ./build/examples/demo/demo-extras --part cube --part viz --frames 3 --out out/extras
+    fi
 else
     echo "run.sh: the demo was not built (OSMesa, libpng, cglm or stb missing); swtool only"
 fi

@@ -209,7 +209,9 @@ extern "C" {
     X(SWARP_INFO_OUTSIDE_SPLITS, 1401,                                               \
       "the point lies in no split map; the split nearest in eye depth was chosen")   \
     X(SWARP_INFO_BACKFACING, 1402,                                                   \
-      "the normal faces away from the light; N.L clamped to 0")
+      "the normal faces away from the light; N.L clamped to 0")                      \
+    X(SWARP_INFO_SPLIT_NO_SCENE, 1403,                                               \
+      "a stabilised split misses the scene box; its map covers the split frustum")
 /* <<< status: splits */
 
 /* >>> status: plan (500..599, 1500..1599) */
@@ -866,7 +868,14 @@ typedef struct swarp_setup_options {
     double pseudo_far;      /**< SWARP_WARP_PARAM_PSEUDO: f_p in [0, 1) */
     double slideback;       /**< PSM: extra slide-back distance (world units, >= 0) that
                                  keeps the near-plane quad [KOZ] Fig. 14-6 */
-    uint32_t _reserved[4];
+    double min_depth;       /**< [RHS] §4.3 measured minimum LINEAR view depth of the
+                                 frame (swarp_mindepth_pyramid/direct); 0 = not given.
+                                 swarp_setup (and swarp_cascade_setup unstabilised)
+                                 replace the camera's near by swarp_mindepth_near(near,
+                                 far, min_depth) before the adjusted near/far of §3.3.1;
+                                 +INFINITY (nothing seen) keeps the near.  Ignored by
+                                 swarp_setup_range/_points (explicit range).  >= 0 */
+    uint32_t _reserved[2];  /**< must be zero (two words went to min_depth) */
 } swarp_setup_options;
 
 /** Results of swarp_setup.  matrix = light_proj · light_view maps world
@@ -894,7 +903,8 @@ typedef struct swarp_setup_result {
 /** @brief The one call: H = V ∩ S, adjusted near/far [RHS] §3.3.1, B
  *  [RHS] §3.1.1, light view with light-space alignment, the technique's
  *  warp ([RHS] §3.2.1 / [KOZ]), focusing [RHS] (3.1) and the error model's
- *  prediction [RHS] (2.3)-(2.8).  No allocation; about 1-2 µs.
+ *  prediction [RHS] (2.3)-(2.8).  No allocation; about 2-2.5 µs per call
+ *  (docs/performance.md).
  *  @param[in] cam, light, scene  (scene: the box S of casters and receivers)
  *  @param[in] opts     NULL or zeroed for defaults
  *  @param[out] out     matrices and report
@@ -1844,6 +1854,24 @@ SWARP_API swarp_status swarp_cascade_error_curve(const swarp_error_config* cfg,
 /** Most splits swarp_cascade_setup computes (the largest atlas, Fig. 3.16c). */
 #define SWARP_CASCADE_MAX_SPLITS 16
 
+/** Warp strength of the splits 1.. of a cascade ([RHS] §3.4 "arbitrary
+ *  warping": "adjust the warping strength for each split independently or
+ *  based upon the variable first split according to the currently used split
+ *  scheme"). */
+typedef enum swarp_cascade_warp {
+    SWARP_CASCADE_WARP_DEFAULT = 0,    /**< = EACH */
+    SWARP_CASCADE_WARP_EACH = 1,       /**< every split its own: n_user[i] when given, else
+                                            the setup's parameter on the split (n_opt ...) */
+    SWARP_CASCADE_WARP_FROM_FIRST = 2, /**< split 0 as EACH (its n'_0); every split i >= 1
+                                            with n_user[i] == 0 gets
+                                            n'_i = n'_0 * nu_i / nu_0,  nu_i = C_i + sqrt(C_i C_{i+1})
+                                            (n_opt of [RHS] (3.2) for the split's own range in
+                                            the overhead frame, swarp_cascade_nopt): the first
+                                            split's strength relative to its optimum carried
+                                            through the scheme (log scheme: n'_0 (C_i / C_0)) */
+    SWARP_CASCADE_WARP_FORCE_I32 = 0x7FFFFFFF
+} swarp_cascade_warp;
+
 /** Options of swarp_cascade_setup; a zeroed struct is a valid request
  *  (4 PSSM splits, LiSPSM n_opt per split, 2048² tiles, no stabilisation). */
 typedef struct swarp_cascade_options {
@@ -1856,12 +1884,17 @@ typedef struct swarp_cascade_options {
     swarp_stabilize_options stabilize; /**< mode != NONE needs technique UNIFORM and a
                                             directional light; its depth field is
                                             ignored (setup.depth_range is used).
-                                            SPHERE splits the camera's own near..far
-                                            (no adjustment, [RHS] §3.5) */
+                                            SPHERE and LEVELS split the camera's own
+                                            near..far: no adjustment and no min_depth,
+                                            since [RHS] §3.5 needs constant split
+                                            ranges (the adjusted far moves with the
+                                            camera and the texels would drift) */
     double kernel_world_size;          /**< r_l of [RHS] (3.9), world units; 0 = 1 */
     double n_user[SWARP_CASCADE_MAX_SPLITS]; /**< per-split warp: n' in eye units for
-                                            split i (+INFINITY = uniform); 0 = use setup */
-    uint32_t _reserved[4];
+                                            split i (+INFINITY = uniform); 0 = use setup
+                                            (or, FROM_FIRST, derived from split 0) */
+    swarp_cascade_warp warp_per_split; /**< how splits 1.. get their warp strength */
+    uint32_t _reserved[3];             /**< must be zero (one word went to warp_per_split) */
 } swarp_cascade_options;
 
 /** One split of a cascade. */
@@ -1911,7 +1944,12 @@ typedef struct swarp_cascade_result {
  *  @param[out] out   whole-cascade facts
  *  @param[out] out_splits  one entry per split; capacity >= count
  *  @param[out] out_count   split count (also with SWARP_ERR_CAPACITY)
- *  @return SWARP_OK or the first informational status of a split;
+ *  o.warp_per_split FROM_FIRST: [RHS] §3.4 arbitrary warping, see
+ *  swarp_cascade_warp.  o.setup.min_depth: [RHS] §4.3 measured min depth, as
+ *  in swarp_setup (not for stabilised cascades).
+ *  @return SWARP_OK or the first informational status of a split
+ *          (SWARP_INFO_SPLIT_NO_SCENE: LEVELS, a split of the constant
+ *          range misses the scene box and its map covers the split frustum);
  *          SWARP_ERR_STABILIZE_WARPED, SWARP_ERR_STABILIZE_LIGHT,
  *          SWARP_ERR_SPLIT_COUNT (count > 16), SWARP_ERR_SPLIT_EMPTY,
  *          SWARP_ERR_CAPACITY, and the errors of swarp_setup,

@@ -92,14 +92,20 @@ SWARP_API swarp_status swarp_bias_texel_size(const swarp_bias_map* map, const sw
     return SWARP_OK;
 }
 
-SWARP_API swarp_status swarp_bias_to_light(const swarp_light* light, const swarp_vec3* p,
-                                           swarp_vec3* out_L) {
-    if (!light || !p || !out_L) return SWARP_ERR_NULL_POINTER;
+/* The checked light and point, then L: the unit vector from p to the light. */
+static swarp_status sw_light_at(const swarp_light* light, const swarp_vec3* p, swarp_vec3* L) {
     swarp_status st = sw_light_check(light);
     if (st != SWARP_OK) return st;
     if (!sw_finite3(p)) return SWARP_ERR_NON_FINITE;
+    return sw_to_light(light, *p, L);
+}
+
+SWARP_API swarp_status swarp_bias_to_light(const swarp_light* light, const swarp_vec3* p,
+                                           swarp_vec3* out_L) {
+    if (!light || !p || !out_L) return SWARP_ERR_NULL_POINTER;
     swarp_vec3 L;
-    if ((st = sw_to_light(light, *p, &L)) != SWARP_OK) return st;
+    swarp_status st = sw_light_at(light, p, &L);
+    if (st != SWARP_OK) return st;
     *out_L = L;
     return SWARP_OK;
 }
@@ -109,9 +115,7 @@ static swarp_status sw_bias_prep(const swarp_bias_map* map, const swarp_light* l
                                  const swarp_vec3* p, swarp_vec3* L, double* L_texel) {
     swarp_status st = sw_map_check(map);
     if (st != SWARP_OK) return st;
-    if ((st = sw_light_check(light)) != SWARP_OK) return st;
-    if (!sw_finite3(p)) return SWARP_ERR_NON_FINITE;
-    if ((st = sw_to_light(light, *p, L)) != SWARP_OK) return st;
+    if ((st = sw_light_at(light, p, L)) != SWARP_OK) return st;
     double Ls, Lt;
     if ((st = sw_texel_size(map, *p, &Ls, &Lt)) != SWARP_OK) return st;
     *L_texel = Ls > Lt ? Ls : Lt;
@@ -147,26 +151,38 @@ static double sw_ndotl(swarp_vec3 N, swarp_vec3 L, int* back) {
     return ndl;
 }
 
+/* The front part of the normal-dependent biases: unit normal N (zero ->
+ * SWARP_ERR_ZERO_VECTOR), then sw_bias_prep, then the clamped N.L. */
+typedef struct sw_bias_frame {
+    swarp_vec3 N, L;
+    double L_texel, ndl;
+    int back; /* N.L was negative */
+} sw_bias_frame;
+static swarp_status sw_bias_prep_normal(const swarp_bias_map* map, const swarp_light* light,
+                                        const swarp_vec3* p, const swarp_vec3* normal,
+                                        sw_bias_frame* fr) {
+    if (!sw_normalize(*normal, &fr->N)) return SWARP_ERR_ZERO_VECTOR;
+    swarp_status st = sw_bias_prep(map, light, p, &fr->L, &fr->L_texel);
+    if (st != SWARP_OK) return st;
+    fr->ndl = sw_ndotl(fr->N, fr->L, &fr->back);
+    return SWARP_OK;
+}
+
 SWARP_API swarp_status swarp_bias_normal_offset(const swarp_bias_map* map, const swarp_light* light,
                                                 const swarp_vec3* p, const swarp_vec3* normal,
                                                 double k, swarp_vec3* out_p, double* out_amount) {
     if (!map || !light || !p || !normal || !out_p) return SWARP_ERR_NULL_POINTER;
     if (!sw_finite(k) || !sw_finite3(normal)) return SWARP_ERR_NON_FINITE;
     if (k < 0.0) return SWARP_ERR_OUT_OF_RANGE;
-    swarp_vec3 N;
-    if (!sw_normalize(*normal, &N)) return SWARP_ERR_ZERO_VECTOR;
-    swarp_vec3 L;
-    double L_texel;
-    swarp_status st = sw_bias_prep(map, light, p, &L, &L_texel);
+    sw_bias_frame fr;
+    swarp_status st = sw_bias_prep_normal(map, light, p, normal, &fr);
     if (st != SWARP_OK) return st;
-    int back;
-    const double ndl = sw_ndotl(N, L, &back);
-    const double amount = k * L_texel * (1.0 - ndl);
-    swarp_vec3 q = sw_add(*p, sw_scale(N, amount));
+    const double amount = k * fr.L_texel * (1.0 - fr.ndl);
+    swarp_vec3 q = sw_add(*p, sw_scale(fr.N, amount));
     if (!sw_finite(amount) || !sw_finite3(&q)) return SWARP_ERR_NON_FINITE;
     *out_p = q;
     if (out_amount) *out_amount = amount;
-    return back ? SWARP_INFO_BACKFACING : SWARP_OK;
+    return fr.back ? SWARP_INFO_BACKFACING : SWARP_OK;
 }
 
 /* Window depth of a point (requires w > 0). */
@@ -187,26 +203,22 @@ SWARP_API swarp_status swarp_bias_slope_scaled(const swarp_bias_map* map, const 
         return SWARP_ERR_NULL_POINTER;
     if (!sw_finite(c) || !sw_finite(s) || !sw_finite3(normal)) return SWARP_ERR_NON_FINITE;
     if (c < 0.0 || s < 0.0) return SWARP_ERR_OUT_OF_RANGE;
-    swarp_vec3 N;
-    if (!sw_normalize(*normal, &N)) return SWARP_ERR_ZERO_VECTOR;
-    swarp_vec3 L;
-    double L_texel;
-    swarp_status st = sw_bias_prep(map, light, p, &L, &L_texel);
+    sw_bias_frame fr;
+    swarp_status st = sw_bias_prep_normal(map, light, p, normal, &fr);
     if (st != SWARP_OK) return st;
-    int back;
-    const double ndl = sw_ndotl(N, L, &back);
     /* tan of the angle between N and L: depth step per unit of lateral move */
+    const double ndl = fr.ndl;
     double slope = SW_BIAS_MAX_SLOPE;
     if (ndl * SW_BIAS_MAX_SLOPE > sqrt(1.0 - ndl * ndl)) slope = sqrt(1.0 - ndl * ndl) / ndl;
-    const double world_bias = c + s * L_texel * slope;
+    const double world_bias = c + s * fr.L_texel * slope;
     double d0, d1;
     if ((st = sw_window_depth(map, *p, &d0)) != SWARP_OK) return st;
-    if ((st = sw_window_depth(map, sw_add(*p, sw_scale(L, world_bias)), &d1)) != SWARP_OK) return st;
+    if ((st = sw_window_depth(map, sw_add(*p, sw_scale(fr.L, world_bias)), &d1)) != SWARP_OK) return st;
     const double depth_bias = d0 - d1;
     if (!sw_finite(world_bias) || !sw_finite(depth_bias)) return SWARP_ERR_NON_FINITE;
     if (out_world_bias) *out_world_bias = world_bias;
     if (out_depth_bias) *out_depth_bias = depth_bias;
-    return back ? SWARP_INFO_BACKFACING : SWARP_OK;
+    return fr.back ? SWARP_INFO_BACKFACING : SWARP_OK;
 }
 
 /* Exact derivative of (s, t, d) (texels, texels, window depth) along a world
@@ -227,10 +239,8 @@ SWARP_API swarp_status swarp_bias_depth_per_world(const swarp_bias_map* map, con
     if (!map || !light || !p || !out_depth_per_world) return SWARP_ERR_NULL_POINTER;
     swarp_status st = sw_map_check(map);
     if (st != SWARP_OK) return st;
-    if ((st = sw_light_check(light)) != SWARP_OK) return st;
-    if (!sw_finite3(p)) return SWARP_ERR_NON_FINITE;
     swarp_vec3 L;
-    if ((st = sw_to_light(light, *p, &L)) != SWARP_OK) return st;
+    if ((st = sw_light_at(light, p, &L)) != SWARP_OK) return st;
     swarp_vec4 h;
     if ((st = sw_project(&map->world_to_clip, *p, &h)) != SWARP_OK) return st;
     double dv[3];

@@ -107,12 +107,35 @@ static swarp_status sw_flat_extend(const swarp_polyhedron* H, swarp_vec3 u, doub
     return sw_poly_flat_from_loop(pts, np, n, out);
 }
 
-/* conv(H ∪ (H + T u)) (apex == NULL) or conv(H ∪ {apex}) for a solid H. */
+/* Are H's loops tidy (at least 3 vertices, no index repeated next to
+ * itself, also across the wrap)?  Then the sweep built from them needs no
+ * sw_poly_finalize pass: see sw_extend. */
+static int sw_loops_tidy(const swarp_polyhedron* H) {
+    for (uint32_t f = 0; f < H->face_count; ++f) {
+        const uint32_t n = H->face_vertex_count[f];
+        const uint8_t* l = H->face_vertices[f];
+        if (n < 3) return 0;
+        unsigned same = l[n - 1] == l[0];
+        for (uint32_t k = 1; k < n; ++k) same |= l[k - 1] == l[k];
+        if (same) return 0;
+    }
+    return 1;
+}
+
+/* conv(H ∪ (H + T u)) (apex == NULL) or conv(H ∪ {apex}) for a solid H.
+ *
+ * For the sweep of a tidy H (the usual case) the result is written already
+ * in the form sw_poly_finalize would give it, and *finalized is set: only
+ * the vertices some face uses (a vertex of H on a back face, a translated
+ * copy of one on a front face), numbered in the same order.  Otherwise every
+ * vertex of H and of its copy (or the apex) is written and the caller
+ * finalizes. */
 static swarp_status sw_extend(const swarp_polyhedron* H, swarp_vec3 u, double T, const swarp_vec3* apex,
-                              swarp_polyhedron* out) {
+                              swarp_polyhedron* out, int* finalized) {
     const uint32_t nv = H->vertex_count;
     int front[SWARP_POLY_MAX_FACES];
     int any_front = 0;
+    *finalized = 0;
     const double eps = SW_BODY_VISIBLE_EPS_REL * sw_poly_scale(H);
     for (uint32_t f = 0; f < H->face_count; ++f) {
         if (apex) {
@@ -127,14 +150,40 @@ static swarp_status sw_extend(const swarp_polyhedron* H, swarp_vec3 u, double T,
         sw_poly_copy(H, out);
         return SWARP_OK;
     }
-    /* vertices: H's, then either the translated copies or the apex */
+    /* vertices: H's, then either the translated copies or the apex; id[]
+     * is the output index of each (slot nv + i: the copy of vertex i) */
     uint32_t tv = apex ? nv + 1 : 2 * nv;
     if (tv > SWARP_POLY_MAX_VERTICES) return SWARP_ERR_CAPACITY;
-    for (uint32_t i = 0; i < nv; ++i) out->vertices[i] = H->vertices[i];
-    if (apex)
-        out->vertices[nv] = *apex;
-    else
-        for (uint32_t i = 0; i < nv; ++i) out->vertices[nv + i] = sw_add(H->vertices[i], sw_scale(u, T));
+    uint8_t id[SWARP_POLY_MAX_VERTICES];
+    if (!apex && sw_loops_tidy(H)) {
+        uint8_t on_back[SWARP_POLY_MAX_VERTICES], on_front[SWARP_POLY_MAX_VERTICES];
+        memset(on_back, 0, nv);
+        memset(on_front, 0, nv);
+        for (uint32_t g = 0; g < H->face_count; ++g) {
+            uint8_t* mark = front[g] ? on_front : on_back;
+            for (uint32_t j = 0; j < H->face_vertex_count[g]; ++j) mark[H->face_vertices[g][j]] = 1;
+        }
+        uint32_t k = 0;
+        for (uint32_t i = 0; i < nv; ++i)
+            if (on_back[i]) {
+                id[i] = (uint8_t)k;
+                out->vertices[k++] = H->vertices[i];
+            }
+        for (uint32_t i = 0; i < nv; ++i)
+            if (on_front[i]) {
+                id[nv + i] = (uint8_t)k;
+                out->vertices[k++] = sw_add(H->vertices[i], sw_scale(u, T));
+            }
+        tv = k;
+        *finalized = 1;
+    } else {
+        for (uint32_t i = 0; i < tv; ++i) id[i] = (uint8_t)i;
+        for (uint32_t i = 0; i < nv; ++i) out->vertices[i] = H->vertices[i];
+        if (apex)
+            out->vertices[nv] = *apex;
+        else
+            for (uint32_t i = 0; i < nv; ++i) out->vertices[nv + i] = sw_add(H->vertices[i], sw_scale(u, T));
+    }
     /* directed edges of the front faces, as bit sets per start vertex */
     uint64_t front_edge[SWARP_POLY_MAX_VERTICES][SWARP_POLY_MAX_VERTICES / 64];
     memset(front_edge, 0, nv * sizeof front_edge[0]);
@@ -154,7 +203,7 @@ static swarp_status sw_extend(const swarp_polyhedron* H, swarp_vec3 u, double T,
             if (tf >= SWARP_POLY_MAX_FACES) return SWARP_ERR_CAPACITY;
             out->planes[tf] = H->planes[f];
             out->face_vertex_count[tf] = n;
-            memcpy(out->face_vertices[tf], l, n);
+            for (uint32_t k = 0; k < n; ++k) out->face_vertices[tf][k] = id[l[k]];
             ++tf;
             /* silhouette edges: edge a->b of this back face whose twin b->a
              * lies in a front face */
@@ -166,26 +215,26 @@ static swarp_status sw_extend(const swarp_polyhedron* H, swarp_vec3 u, double T,
                 /* side face b -> a -> a' -> b' (or b -> a -> apex) */
                 uint8_t* q = out->face_vertices[tf];
                 uint32_t qn;
-                q[0] = b;
-                q[1] = a;
+                q[0] = id[b];
+                q[1] = id[a];
                 if (apex) {
-                    q[2] = (uint8_t)nv;
+                    q[2] = id[nv];
                     qn = 3;
                 } else {
-                    q[2] = (uint8_t)(nv + a);
-                    q[3] = (uint8_t)(nv + b);
+                    q[2] = id[nv + a];
+                    q[3] = id[nv + b];
                     qn = 4;
                 }
                 swarp_vec3 nn;
                 {
                     /* plane through the edge containing u (or the apex) */
-                    swarp_vec3 va = out->vertices[a], vb = out->vertices[b];
+                    swarp_vec3 va = H->vertices[a], vb = H->vertices[b];
                     swarp_vec3 dir = apex ? sw_sub(*apex, va) : u;
                     nn = sw_cross(sw_sub(va, vb), dir); /* (a - b) x u: outward for CCW b->a->... */
                 }
                 swarp_vec3 nu = {0, 0, 1};
                 if (!sw_gnormalize(nn, &nu)) continue; /* edge parallel to u: zero-area side */
-                out->planes[tf] = (swarp_plane){nu.x, nu.y, nu.z, -sw_dot(nu, out->vertices[a])};
+                out->planes[tf] = (swarp_plane){nu.x, nu.y, nu.z, -sw_dot(nu, H->vertices[a])};
                 out->face_vertex_count[tf] = qn;
                 ++tf;
             }
@@ -196,7 +245,7 @@ static swarp_status sw_extend(const swarp_polyhedron* H, swarp_vec3 u, double T,
             p.d -= T * (p.a * u.x + p.b * u.y + p.c * u.z);
             out->planes[tf] = p;
             out->face_vertex_count[tf] = n;
-            for (uint32_t k = 0; k < n; ++k) out->face_vertices[tf][k] = (uint8_t)(nv + l[k]);
+            for (uint32_t k = 0; k < n; ++k) out->face_vertices[tf][k] = id[nv + l[k]];
             ++tf;
         }
     }
@@ -268,7 +317,9 @@ swarp_status sw_body_from_h(const swarp_polyhedron* H, const swarp_light* light,
     }
     if (light->type == SWARP_LIGHT_POINT) {
         swarp_vec3 l = light->position;
-        s = flat ? sw_flat_extend(H, sw_v3(0, 0, 0), 0.0, &l, &M) : sw_extend(H, sw_v3(0, 0, 0), 0.0, &l, &M);
+        int finalized = 0;
+        s = flat ? sw_flat_extend(H, sw_v3(0, 0, 0), 0.0, &l, &M)
+                 : sw_extend(H, sw_v3(0, 0, 0), 0.0, &l, &M, &finalized);
         if (s != SWARP_OK) return s;
         sw_poly_finalize(&M, H->vertex_count, 0.0); /* the apex may sit on a vertex of H */
         s = sw_poly_clip_box(&M, box, B);
@@ -283,11 +334,13 @@ swarp_status sw_body_from_h(const swarp_polyhedron* H, const swarp_light* light,
         /* T: longer than any path inside S */
         double diag = sw_glen(sw_sub(box->max, box->min));
         double T = 2.0 * diag + 1e-300;
-        s = flat ? sw_flat_extend(H, u, T, NULL, &M) : sw_extend(H, u, T, NULL, &M);
+        int finalized = 0;
+        s = flat ? sw_flat_extend(H, u, T, NULL, &M) : sw_extend(H, u, T, NULL, &M, &finalized);
         if (s != SWARP_OK) return s;
         /* the translated copies are T > diag(S) away from H and as far apart
-         * as H's vertices: nothing to merge, only faces to tidy */
-        sw_poly_finalize(&M, M.vertex_count, 0.0);
+         * as H's vertices: nothing to merge, only faces to tidy (sw_extend
+         * has done that for a tidy H) */
+        if (!finalized) sw_poly_finalize(&M, M.vertex_count, 0.0);
         s = sw_poly_clip_box(&M, box, B);
         if (s != SWARP_OK) return s;
     }

@@ -238,6 +238,12 @@ _Static_assert(sizeof(swarp_cascade_options) ==
                    sizeof(swarp_setup_options) + sizeof(swarp_split_options) +
                        sizeof(swarp_stabilize_options) + (1 + SWARP_CASCADE_MAX_SPLITS) * sizeof(double) + 16,
                "swarp_cascade_options size");
+/* warp_per_split took one of the four reserved words: the size is unchanged */
+_Static_assert(sizeof(swarp_cascade_options) ==
+                   sizeof(swarp_setup_options) + sizeof(swarp_split_options) +
+                       sizeof(swarp_stabilize_options) + (1 + SWARP_CASCADE_MAX_SPLITS) * sizeof(double) +
+                       sizeof(swarp_cascade_warp) + 3 * sizeof(uint32_t),
+               "swarp_cascade_options fields");
 
 _Static_assert(sizeof(swarp_cascade_split) ==
                    2 * sizeof(double) + 2 * sizeof(swarp_mat4) + sizeof(swarp_atlas_tile) +
@@ -307,7 +313,11 @@ SWARP_API swarp_status swarp_cascade_setup(const swarp_camera* cam, const swarp_
     swarp_cascade_options o;
     memset(&o, 0, sizeof o);
     if (opts) o = *opts;
-    if (!sw_reserved_zero(o._reserved, 4)) return SWARP_ERR_RESERVED_NONZERO;
+    if (!sw_reserved_zero(o._reserved, 3)) return SWARP_ERR_RESERVED_NONZERO;
+    const swarp_cascade_warp wmode =
+        o.warp_per_split == SWARP_CASCADE_WARP_DEFAULT ? SWARP_CASCADE_WARP_EACH : o.warp_per_split;
+    if (wmode != SWARP_CASCADE_WARP_EACH && wmode != SWARP_CASCADE_WARP_FROM_FIRST)
+        return SWARP_ERR_UNKNOWN_ENUM;
     const uint32_t K = o.split.count ? o.split.count : 4;
     if (K > SWARP_CASCADE_MAX_SPLITS) return SWARP_ERR_SPLIT_COUNT;
     if (capacity < K) {
@@ -362,6 +372,9 @@ SWARP_API swarp_status swarp_cascade_setup(const swarp_camera* cam, const swarp_
     swarp_vec3 cam_f = {0, 0, -1}, cam_r, cam_u;
     swarp_status info = SWARP_OK;
     const int single = (K == 1 && smode == SWARP_STABILIZE_NONE && !any_user);
+    /* the setup's own checks (min_depth among them) also on the split path */
+    if (isnan(o.setup.min_depth)) return SWARP_ERR_NON_FINITE;
+    if (o.setup.min_depth < 0.0) return SWARP_ERR_OUT_OF_RANGE;
     if (single) {
         /* one split IS the single map: the same call, bit for bit */
         st = swarp_setup(cam, light, scene, &o.setup, &sr, pts_buf, SWARP_BODY_MAX_POINTS, &npts);
@@ -381,22 +394,33 @@ SWARP_API swarp_status swarp_cascade_setup(const swarp_camera* cam, const swarp_
         if ((st = sw_check_camera(cam)) != SWARP_OK) return st;
         if ((st = sw_check_light(light)) != SWARP_OK) return st;
         if ((st = sw_check_box(scene)) != SWARP_OK) return st;
-        if ((st = sw_body_h(cam, cam->near, cam->far, scene, &H)) != SWARP_OK) return st;
+        /* [RHS] §4.3: a measured min depth moves the near plane out, as in
+         * swarp_setup; not for stabilised maps (constant ranges, below) */
+        double cam_near = cam->near;
+        if (o.setup.min_depth > 0.0 && smode == SWARP_STABILIZE_NONE) {
+            st = swarp_mindepth_near(cam->near, cam->far, o.setup.min_depth, NULL, &cam_near);
+            if (swarp_status_is_error(st)) return st;
+        }
+        if ((st = sw_body_h(cam, cam_near, cam->far, scene, &H)) != SWARP_OK) return st;
         sw_camera_basis(cam, &cam_f, &cam_r, &cam_u);
         double n_adj, f_adj;
         sw_depth_range_of(&H, cam->eye, cam_f, &n_adj, &f_adj);
-        n_adj = sw_max(n_adj, cam->near);
+        n_adj = sw_max(n_adj, cam_near);
         f_adj = sw_min(sw_max(f_adj, n_adj), cam->far);
-        if (smode == SWARP_STABILIZE_SPHERE) {
-            /* [RHS] §3.5: the exact solution needs constant split ranges, so
-             * no view frustum adjustment: split the camera's own [near, far] */
+        if (smode != SWARP_STABILIZE_NONE) {
+            /* [RHS] §3.5: both solutions need constant split ranges, so no
+             * view frustum adjustment: split the camera's own [near, far].
+             * The adjusted far moves with the camera (the demo measured
+             * 792.80 -> 793.22 -> 793.58 in three frames of a walk), which
+             * moves every split border, the sphere and the level size, and
+             * the texels drift by fractions per frame. */
             n_adj = cam->near;
             f_adj = cam->far;
         }
         if (!(f_adj > n_adj)) {
             /* H lies in one view plane: keep a sliver, as swarp_setup does */
             const double pad = fmax(1e-9 * n_adj, 1e-300);
-            if (n_adj - pad > cam->near) n_adj -= pad;
+            if (n_adj - pad > cam_near) n_adj -= pad;
             else f_adj += pad;
         }
         swarp_split_options so = o.split;
@@ -407,6 +431,13 @@ SWARP_API swarp_status swarp_cascade_setup(const swarp_camera* cam, const swarp_
         res.view_far = f_adj;
     }
     const double f_dot_eye = sw_dot(cam_f, cam->eye);
+    /* FROM_FIRST: nu_i = n_opt of (3.2) for each split's own range, the
+     * scale by which the first split's n' is carried to split i */
+    double nu[SWARP_CASCADE_MAX_SPLITS];
+    if (wmode == SWARP_CASCADE_WARP_FROM_FIRST && K > 1) {
+        st = swarp_cascade_nopt(res.splits, K, 0.0, 0.0, nu);
+        if (swarp_status_is_error(st)) return st;
+    }
 
     for (uint32_t i = 0; i < K; ++i) {
         swarp_cascade_split* s = &sp[i];
@@ -420,6 +451,18 @@ SWARP_API swarp_status swarp_cascade_setup(const swarp_camera* cam, const swarp_
             so.technique = o.n_user[i] == INFINITY ? SWARP_TECHNIQUE_UNIFORM : SWARP_TECHNIQUE_LISPSM;
             so.param = SWARP_WARP_PARAM_USER;
             so.n_user = o.n_user[i];
+        } else if (wmode == SWARP_CASCADE_WARP_FROM_FIRST && i > 0) {
+            /* [RHS] §3.4 arbitrary warping "based upon the variable first
+             * split according to the currently used split scheme":
+             * n'_i = n'_0 nu_i / nu_0 (uniform first split: all uniform) */
+            const double n0 = sp[0].n_eye, ni = n0 * (nu[i] / nu[0]);
+            if (!(n0 < INFINITY) || !(ni < INFINITY)) {
+                so.technique = SWARP_TECHNIQUE_UNIFORM;
+            } else {
+                so.technique = SWARP_TECHNIQUE_LISPSM;
+                so.param = SWARP_WARP_PARAM_USER;
+                so.n_user = ni;
+            }
         } else if (so.param == SWARP_WARP_PARAM_PSEUDO && K > 1) {
             /* [RHS] §4.2: pseudo-near only for the first split, pseudo-far only
              * for the last; the fractions of the whole range become fractions
@@ -455,6 +498,24 @@ SWARP_API swarp_status swarp_cascade_setup(const swarp_camera* cam, const swarp_
                 if (st != SWARP_OK) return st;
                 hp = &Hi;
             }
+            if (hp->vertex_count == 0 && smode == SWARP_STABILIZE_LEVELS) {
+                /* the constant split range ([RHS] §3.5) may reach past the
+                 * scene: nothing to shadow there, the map covers the split
+                 * frustum itself */
+                sw_cam_frame fr;
+                fr.eye = cam->eye;
+                fr.f = cam_f;
+                fr.r = cam_r;
+                fr.u = cam_u;
+                fr.tan_half = tan(0.5 * cam->fovy);
+                fr.aspect = cam->aspect;
+                sw_frustum_corners(&fr, s->near, s->far, pts_buf);
+                pts = pts_buf;
+                npts = 8;
+                st = SWARP_INFO_SPLIT_NO_SCENE;
+                sw_identity(&sr.matrix); /* replaced by the stabiliser */
+                sr.n_eye = INFINITY;
+            } else {
             if (hp->vertex_count == 0) return SWARP_ERR_SPLIT_EMPTY;
             st = sw_body_from_h(hp, light, scene, &Bi);
             if (st == SWARP_ERR_BODY_EMPTY) return SWARP_ERR_SPLIT_EMPTY;
@@ -471,6 +532,7 @@ SWARP_API swarp_status swarp_cascade_setup(const swarp_camera* cam, const swarp_
             if (swarp_status_is_error(st)) return st;
             pts = Bi.vertices;
             npts = Bi.vertex_count;
+            }
         }
         s->status = st;
         if (st != SWARP_OK && info == SWARP_OK) info = st;

@@ -89,34 +89,35 @@ static int sw_mz(const swarp_error_config* c, double n, double f, double z, doub
 
 /* ---- single range --------------------------------------------------------- */
 
-/* [RHS] (2.3), (2.5), (2.7) */
-SWARP_API swarp_status swarp_error_mx(const swarp_error_config* cfg, double z, double n_prime,
-                                      double* out_mx) {
-    if (!cfg || !out_mx) return SWARP_ERR_NULL_POINTER;
+/* One point query m(z) over the config's [near, far], m = sw_mx or sw_mz:
+ * a full config, a finite z inside [near, far] and a valid n', then the value
+ * (SWARP_ERR_OVERFLOW when it is not finite). */
+typedef int (*sw_point_fn)(const swarp_error_config* c, double n, double f, double z,
+                           double n_prime, double* out);
+static swarp_status sw_point(const swarp_error_config* cfg, double z, double n_prime,
+                             sw_point_fn m, double* out) {
+    if (!cfg || !out) return SWARP_ERR_NULL_POINTER;
     swarp_status s = sw_cfg_full(cfg);
     if (s != SWARP_OK) return s;
     if (!sw_finite(z)) return SWARP_ERR_NON_FINITE;
     if ((s = sw_nprime(n_prime)) != SWARP_OK) return s;
     if (!(z >= cfg->near && z <= cfg->far)) return SWARP_ERR_OUT_OF_RANGE;
     double v;
-    if (!sw_mx(cfg, cfg->near, cfg->far, z, n_prime, &v)) return SWARP_ERR_OVERFLOW;
-    *out_mx = v;
+    if (!m(cfg, cfg->near, cfg->far, z, n_prime, &v)) return SWARP_ERR_OVERFLOW;
+    *out = v;
     return SWARP_OK;
+}
+
+/* [RHS] (2.3), (2.5), (2.7) */
+SWARP_API swarp_status swarp_error_mx(const swarp_error_config* cfg, double z, double n_prime,
+                                      double* out_mx) {
+    return sw_point(cfg, z, n_prime, sw_mx, out_mx);
 }
 
 /* [RHS] (2.4), (2.6), (2.8) */
 SWARP_API swarp_status swarp_error_mz(const swarp_error_config* cfg, double z, double n_prime,
                                       double* out_mz) {
-    if (!cfg || !out_mz) return SWARP_ERR_NULL_POINTER;
-    swarp_status s = sw_cfg_full(cfg);
-    if (s != SWARP_OK) return s;
-    if (!sw_finite(z)) return SWARP_ERR_NON_FINITE;
-    if ((s = sw_nprime(n_prime)) != SWARP_OK) return s;
-    if (!(z >= cfg->near && z <= cfg->far)) return SWARP_ERR_OUT_OF_RANGE;
-    double v;
-    if (!sw_mz(cfg, cfg->near, cfg->far, z, n_prime, &v)) return SWARP_ERR_OVERFLOW;
-    *out_mz = v;
-    return SWARP_OK;
+    return sw_point(cfg, z, n_prime, sw_mz, out_mz);
 }
 
 /* Maxima over [n, f] at the end points (monotone m_x, convex m_z). */

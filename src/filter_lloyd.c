@@ -51,6 +51,19 @@ static void sw_enforce_gap(double* c, uint32_t k, double s_0, double s_N, double
     }
 }
 
+/* One Lloyd step's end: the new centres nc, kept gap apart inside [0, 1],
+ * replace c; returns the largest move. */
+static double sw_adopt(double* c, double* nc, uint32_t k, double gap) {
+    sw_enforce_gap(nc, k, 0.0, 1.0, gap);
+    double shift = 0.0;
+    for (uint32_t i = 0; i < k; ++i) {
+        double d = fabs(nc[i] - c[i]);
+        if (d > shift) shift = d;
+        c[i] = nc[i];
+    }
+    return shift;
+}
+
 SWARP_API swarp_status swarp_lvsm_lloyd(const double* mu, const double* sigma2, size_t count,
                                         const swarp_lloyd_options* opt,
                                         const double* splits_in, uint32_t n_layers,
@@ -156,27 +169,14 @@ SWARP_API swarp_status swarp_lvsm_lloyd(const double* mu, const double* sigma2, 
                             nc[b] = nc[b - 1];
                             nc[b - 1] = tmp;
                         }
-                    sw_enforce_gap(nc, k, 0.0, 1.0, gap);
-                    double shift = 0.0;
-                    for (uint32_t i = 0; i < k; ++i) {
-                        double d = fabs(nc[i] - c[i]);
-                        if (d > shift) shift = d;
-                        c[i] = nc[i];
-                    }
-                    rep.max_shift = shift;
+                    rep.max_shift = sw_adopt(c, nc, k, gap);
                     ++rep.teleports;
                     continue; /* never converged right after a teleport */
                 }
             }
-            double shift = 0.0;
             double nc[SWARP_LVSM_MAX_LAYERS];
             for (uint32_t i = 0; i < k; ++i) nc[i] = (W[i] > 0.0) ? X[i] / W[i] : c[i];
-            sw_enforce_gap(nc, k, 0.0, 1.0, gap);
-            for (uint32_t i = 0; i < k; ++i) {
-                double d = fabs(nc[i] - c[i]);
-                if (d > shift) shift = d;
-                c[i] = nc[i];
-            }
+            double shift = sw_adopt(c, nc, k, gap);
             rep.max_shift = shift;
             if (shift <= tol) {
                 rep.converged = 1;

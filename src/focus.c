@@ -85,17 +85,19 @@ SWARP_API swarp_status swarp_focus_light_view(const swarp_camera* cam, const swa
 /* ---- A_fit ------------------------------------------------------------------ */
 
 static int sw_extent(const swarp_mat4* m, const swarp_vec3* pts, size_t n, double lo[3], double hi[3]) {
-    for (int k = 0; k < 3; ++k) lo[k] = INFINITY, hi[k] = -INFINITY;
+    double lx = INFINITY, ly = INFINITY, lz = INFINITY, hx = -INFINITY, hy = -INFINITY, hz = -INFINITY;
+    int ok = 1;
     for (size_t i = 0; i < n; ++i) {
         swarp_vec4 h = sw_xform_point(m, pts[i]);
-        if (!(h.w > 0.0)) return 0;
-        double iw = 1.0 / h.w, c[3] = {h.x * iw, h.y * iw, h.z * iw};
-        for (int k = 0; k < 3; ++k) {
-            if (c[k] < lo[k]) lo[k] = c[k];
-            if (c[k] > hi[k]) hi[k] = c[k];
-        }
+        ok &= h.w > 0.0;
+        double iw = 1.0 / h.w, x = h.x * iw, y = h.y * iw, z = h.z * iw;
+        lx = x < lx ? x : lx, hx = x > hx ? x : hx; /* branch-free min/max */
+        ly = y < ly ? y : ly, hy = y > hy ? y : hy;
+        lz = z < lz ? z : lz, hz = z > hz ? z : hz;
     }
-    return 1;
+    lo[0] = lx, lo[1] = ly, lo[2] = lz;
+    hi[0] = hx, hi[1] = hy, hi[2] = hz;
+    return ok;
 }
 
 swarp_status sw_focus_fit(const swarp_mat4* m, const swarp_vec3* pts, size_t n, const swarp_vec3* zpts,

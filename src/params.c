@@ -210,14 +210,23 @@ static int sw_gmnpr_psi_offset(double lambda, double theta, double phi, double n
     return 1;
 }
 
+/* psi and varphi of [GMNPR] (2) after the argument checks (the same for both
+ * public queries); SWARP_ERR_OVERFLOW when either is not finite. */
+static swarp_status sw_gmnpr_checked(double lambda, double theta, double phi, double n, double f,
+                                     double* psi, double* offset) {
+    swarp_status s = sw_gmnpr_args(lambda, theta, phi, n, f);
+    if (s != SWARP_OK) return s;
+    if (!sw_gmnpr_psi_offset(lambda, theta, phi, n, f, psi, offset)) return SWARP_ERR_OVERFLOW;
+    return SWARP_OK;
+}
+
 /* [GMNPR] (2), psi */
 SWARP_API swarp_status swarp_gmnpr_psi(double lambda, double theta, double phi, double n,
                                        double f, double* out_psi) {
     if (!out_psi) return SWARP_ERR_NULL_POINTER;
-    swarp_status s = sw_gmnpr_args(lambda, theta, phi, n, f);
-    if (s != SWARP_OK) return s;
     double psi, offset;
-    if (!sw_gmnpr_psi_offset(lambda, theta, phi, n, f, &psi, &offset)) return SWARP_ERR_OVERFLOW;
+    swarp_status s = sw_gmnpr_checked(lambda, theta, phi, n, f, &psi, &offset);
+    if (s != SWARP_OK) return s;
     *out_psi = psi;
     return SWARP_OK;
 }
@@ -226,10 +235,9 @@ SWARP_API swarp_status swarp_gmnpr_psi(double lambda, double theta, double phi, 
 SWARP_API swarp_status swarp_gmnpr_offset(double lambda, double theta, double phi, double n,
                                           double f, double* out_offset) {
     if (!out_offset) return SWARP_ERR_NULL_POINTER;
-    swarp_status s = sw_gmnpr_args(lambda, theta, phi, n, f);
-    if (s != SWARP_OK) return s;
     double psi, offset;
-    if (!sw_gmnpr_psi_offset(lambda, theta, phi, n, f, &psi, &offset)) return SWARP_ERR_OVERFLOW;
+    swarp_status s = sw_gmnpr_checked(lambda, theta, phi, n, f, &psi, &offset);
+    if (s != SWARP_OK) return s;
     *out_offset = offset;
     return SWARP_OK;
 }

@@ -919,6 +919,15 @@ static const char* sw_plane_text(uint32_t why) {
     }
 }
 
+/* "<pre>a<mid>b": the explain text's number pairs ("[n, f", "m_x .., m_z ..",
+ * "c+ .., c- .."). */
+static void sw_putdd(sw_text* t, const char* pre, double a, const char* mid, double b) {
+    sw_puts(t, pre);
+    sw_putd(t, a);
+    sw_puts(t, mid);
+    sw_putd(t, b);
+}
+
 static void sw_explain(const swarp_plan_result* p, sw_text* t) {
     sw_puts(t, "chain: ");
     sw_puts(t, swarp_plan_warp_name(p->warp));
@@ -945,39 +954,24 @@ static void sw_explain(const swarp_plan_result* p, sw_text* t) {
         sw_puts(t, " texels");
         if (p->filter_layers) { sw_puts(t, ", "); sw_putu(t, p->filter_layers); sw_puts(t, " layers"); }
         if (p->filter_exponent_pos > 0.0) {
-            sw_puts(t, ", c+ ");
-            sw_putd(t, p->filter_exponent_pos);
-            sw_puts(t, ", c- ");
-            sw_putd(t, p->filter_exponent_neg);
+            sw_putdd(t, ", c+ ", p->filter_exponent_pos, ", c- ", p->filter_exponent_neg);
         }
         sw_puts(t, ")");
     }
     sw_puts(t, "\nlight/view angle gamma ");
     sw_putd(t, p->gamma * 180.0 / SWARP_PI);
-    sw_puts(t, " deg, depth range [");
-    sw_putd(t, p->near);
-    sw_puts(t, ", ");
-    sw_putd(t, p->far);
-    sw_puts(t, "]\npredicted max m_x ");
-    sw_putd(t, p->max_mx);
-    sw_puts(t, ", m_z ");
-    sw_putd(t, p->max_mz);
+    sw_putdd(t, " deg, depth range [", p->near, ", ", p->far);
+    sw_putdd(t, "]\npredicted max m_x ", p->max_mx, ", m_z ", p->max_mz);
     sw_puts(t, " (pixels per texel), area ");
     sw_putd(t, p->error_area);
     sw_puts(t, p->meets_budget ? ": meets the budget\n" : ": does NOT meet the budget\n");
     for (uint32_t i = 0; i < p->split_count && p->split_count > 1; ++i) {
         sw_puts(t, "  split ");
         sw_putu(t, i);
-        sw_puts(t, " [");
-        sw_putd(t, p->splits[i]);
-        sw_puts(t, ", ");
-        sw_putd(t, p->splits[i + 1]);
+        sw_putdd(t, " [", p->splits[i], ", ", p->splits[i + 1]);
         sw_puts(t, "]: n' ");
         sw_putd(t, p->n_prime[i]);
-        sw_puts(t, ", m_x ");
-        sw_putd(t, p->split_max_mx[i]);
-        sw_puts(t, ", m_z ");
-        sw_putd(t, p->split_max_mz[i]);
+        sw_putdd(t, ", m_x ", p->split_max_mx[i], ", m_z ", p->split_max_mz[i]);
         sw_puts(t, "\n");
     }
     sw_puts(t, "cost: ");

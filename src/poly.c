@@ -87,9 +87,9 @@ double sw_poly_scale(const swarp_polyhedron* p) {
     for (uint32_t i = 0; i < p->vertex_count; ++i) {
         const swarp_vec3* v = &p->vertices[i];
         double ax = fabs(v->x), ay = fabs(v->y), az = fabs(v->z);
-        if (ax > s) s = ax;
-        if (ay > s) s = ay;
-        if (az > s) s = az;
+        s = ax > s ? ax : s; /* branch-free max */
+        s = ay > s ? ay : s;
+        s = az > s ? az : s;
     }
     return s > 1e-300 ? s : 1e-300;
 }
@@ -175,25 +175,32 @@ void sw_poly_finalize(swarp_polyhedron* p, uint32_t first_new, double scale) {
  * dropped, only when something merged. */
 static void sw_poly_merge_on_plane(swarp_polyhedron* p, const uint8_t* on, uint32_t n_on, uint32_t first_new,
                                    double eps) {
-    uint8_t remap[SWARP_POLY_MAX_VERTICES];
+    /* into[a]: the on-plane slot that slot a merges into (a itself when it
+     * stays).  Merges are rare, so the whole-vertex remap is only built
+     * when one happened. */
+    uint8_t into[SWARP_POLY_MAX_VERTICES];
     int merged = 0;
     const double eps2 = eps * eps;
-    for (uint32_t i = 0; i < p->vertex_count; ++i) remap[i] = (uint8_t)i;
+    if (n_on > 0) into[0] = 0;
     for (uint32_t a = 1; a < n_on; ++a) {
+        into[a] = (uint8_t)a;
         if (on[a] < first_new) continue; /* old vertices are apart already */
         swarp_vec3 v = p->vertices[on[a]];
         for (uint32_t b = 0; b < a; ++b) {
-            if (remap[on[b]] != on[b]) continue;
+            if (into[b] != b) continue; /* merged itself: compare with survivors only */
             swarp_vec3 w = p->vertices[on[b]];
             double dx = v.x - w.x, dy = v.y - w.y, dz = v.z - w.z;
             if (dx * dx + dy * dy + dz * dz <= eps2) {
-                remap[on[a]] = on[b];
+                into[a] = (uint8_t)b;
                 merged = 1;
                 break;
             }
         }
     }
     if (!merged) return;
+    uint8_t remap[SWARP_POLY_MAX_VERTICES];
+    for (uint32_t i = 0; i < p->vertex_count; ++i) remap[i] = (uint8_t)i;
+    for (uint32_t a = 0; a < n_on; ++a) remap[on[a]] = on[into[a]];
     uint32_t nf = 0;
     uint8_t used[SWARP_POLY_MAX_VERTICES];
     memset(used, 0, p->vertex_count);
@@ -225,6 +232,16 @@ static void sw_poly_merge_on_plane(swarp_polyhedron* p, const uint8_t* on, uint3
     for (uint32_t f = 0; f < nf; ++f)
         for (uint32_t j = 0; j < p->face_vertex_count[f]; ++j) p->face_vertices[f][j] = remap[p->face_vertices[f][j]];
     p->vertex_count = k;
+}
+
+/* No two points closer than eps in every coordinate (the merge test of
+ * sw_poly_finalize)? */
+static int sw_points_apart(const swarp_vec3* v, uint32_t n, double eps) {
+    for (uint32_t i = 1; i < n; ++i)
+        for (uint32_t j = 0; j < i; ++j)
+            if (fabs(v[i].x - v[j].x) <= eps && fabs(v[i].y - v[j].y) <= eps && fabs(v[i].z - v[j].z) <= eps)
+                return 0;
+    return 1;
 }
 
 /* The 6 faces of a hexahedron given by 8 corners, corner index = x | y<<1 |
@@ -263,6 +280,9 @@ void sw_poly_from_corners(const swarp_vec3 c[8], swarp_polyhedron* out) {
         ++nf;
     }
     out->face_count = nf;
+    /* a real frustum or box: 6 quads on 8 corners that are all apart, so
+     * sw_poly_finalize would merge, drop and renumber nothing */
+    if (nf == 6 && sw_points_apart(out->vertices, 8, SWARP_POLY_EPS_REL * sw_poly_scale(out))) return;
     sw_poly_finalize(out, 0, 0.0);
 }
 
@@ -346,6 +366,9 @@ void sw_poly_copy(const swarp_polyhedron* in, swarp_polyhedron* out) {
     memcpy(out->face_vertices, in->face_vertices, in->face_count * sizeof in->face_vertices[0]);
 }
 
+/* Vertex classes of a clip (bits, so a face's classes can be OR-ed). */
+enum { SW_IN = 1, SW_ON = 2, SW_OUT = 4 };
+
 /* Pseudo-angle in [0, 4) of (x, y): monotone in the true angle, no atan2. */
 static double sw_pseudo_angle(double x, double y) {
     double d = fabs(x) + fabs(y);
@@ -373,12 +396,13 @@ static swarp_status sw_poly_clip_to(const swarp_polyhedron* in, swarp_vec3 n_raw
     const double in_scale = scale > 0.0 ? scale : sw_poly_scale(in);
     const double eps = SWARP_POLY_EPS_REL * sw_max(in_scale, fabs(d));
     double dist[SWARP_POLY_MAX_VERTICES];
-    signed char side[SWARP_POLY_MAX_VERTICES];
+    /* class bits per vertex: SW_IN, SW_ON (within eps of the plane), SW_OUT */
+    uint8_t cls[SWARP_POLY_MAX_VERTICES];
     int any_out = 0, any_in = 0;
     for (uint32_t i = 0; i < nv; ++i) {
         dist[i] = sw_dot(n, in->vertices[i]) + d;
         int o = dist[i] > eps, u = dist[i] < -eps; /* branch-free */
-        side[i] = (signed char)(o - u);
+        cls[i] = (uint8_t)(SW_ON + 2 * o - u);     /* 4, 2 or 1 */
         any_out |= o;
         any_in |= !o;
     }
@@ -398,10 +422,10 @@ static swarp_status sw_poly_clip_to(const swarp_polyhedron* in, swarp_vec3 n_raw
     uint8_t on_plane[SWARP_POLY_MAX_VERTICES];
     uint32_t n_on = 0;
     for (uint32_t i = 0; i < nv; ++i) {
-        if (side[i] <= 0) {
+        if (cls[i] != SW_OUT) {
             map[i] = (uint8_t)tv;
             t->vertices[tv] = in->vertices[i];
-            if (side[i] == 0) on_plane[n_on++] = (uint8_t)tv;
+            if (cls[i] == SW_ON) on_plane[n_on++] = (uint8_t)tv;
             ++tv;
         }
     }
@@ -416,39 +440,47 @@ static swarp_status sw_poly_clip_to(const swarp_polyhedron* in, swarp_vec3 n_raw
         const uint8_t* fl = in->face_vertices[f];
         if (tf >= SWARP_POLY_MAX_FACES) return SWARP_ERR_CAPACITY;
         uint8_t* loop = t->face_vertices[tf]; /* written in place */
+        /* most faces lie wholly on one side: only cut faces need the walk
+         * over their edges */
+        unsigned any = 0;
+        for (uint32_t k = 0; k < fn; ++k) any |= cls[fl[k]];
+        if (any == SW_OUT) continue; /* wholly outside */
         uint32_t m = 0;
-        int all_on = 1;
-        for (uint32_t k = 0; k < fn; ++k) {
-            uint8_t i = fl[k], j = fl[k + 1 == fn ? 0 : k + 1];
-            if (side[i] != 0) all_on = 0;
-            if (side[i] <= 0) {
-                if (m >= SWARP_POLY_MAX_FACE_VERTICES) return SWARP_ERR_CAPACITY;
-                loop[m++] = map[i];
-            }
-            if ((side[i] < 0 && side[j] > 0) || (side[i] > 0 && side[j] < 0)) {
-                uint8_t lo = i < j ? i : j, hi = i < j ? j : i;
-                uint32_t e = 0;
-                for (; e < n_edges; ++e)
-                    if (edge_lo[e] == lo && edge_hi[e] == hi) break;
-                if (e == n_edges) {
-                    if (tv >= SWARP_POLY_MAX_VERTICES) return SWARP_ERR_CAPACITY;
-                    /* canonical order: both faces get the very same point */
-                    double s = dist[lo] / (dist[lo] - dist[hi]);
-                    swarp_vec3 a = in->vertices[lo], b = in->vertices[hi];
-                    t->vertices[tv] = sw_add(a, sw_scale(sw_sub(b, a), s));
-                    edge_lo[e] = lo;
-                    edge_hi[e] = hi;
-                    edge_v[e] = (uint8_t)tv;
-                    on_plane[n_on++] = (uint8_t)tv;
-                    ++tv;
-                    ++n_edges;
+        if (!(any & SW_OUT)) { /* wholly kept: no edge crosses */
+            for (uint32_t k = 0; k < fn; ++k) loop[k] = map[fl[k]];
+            m = fn;
+        } else {
+            for (uint32_t k = 0; k < fn; ++k) {
+                uint8_t i = fl[k], j = fl[k + 1 == fn ? 0 : k + 1];
+                if (cls[i] != SW_OUT) {
+                    if (m >= SWARP_POLY_MAX_FACE_VERTICES) return SWARP_ERR_CAPACITY;
+                    loop[m++] = map[i];
                 }
-                if (m >= SWARP_POLY_MAX_FACE_VERTICES) return SWARP_ERR_CAPACITY;
-                loop[m++] = edge_v[e];
+                if ((cls[i] | cls[j]) == (SW_IN | SW_OUT)) { /* strictly crossing */
+                    uint8_t lo = i < j ? i : j, hi = i < j ? j : i;
+                    uint32_t e = 0;
+                    for (; e < n_edges; ++e)
+                        if (edge_lo[e] == lo && edge_hi[e] == hi) break;
+                    if (e == n_edges) {
+                        if (tv >= SWARP_POLY_MAX_VERTICES) return SWARP_ERR_CAPACITY;
+                        /* canonical order: both faces get the very same point */
+                        double s = dist[lo] / (dist[lo] - dist[hi]);
+                        swarp_vec3 a = in->vertices[lo], b = in->vertices[hi];
+                        t->vertices[tv] = sw_add(a, sw_scale(sw_sub(b, a), s));
+                        edge_lo[e] = lo;
+                        edge_hi[e] = hi;
+                        edge_v[e] = (uint8_t)tv;
+                        on_plane[n_on++] = (uint8_t)tv;
+                        ++tv;
+                        ++n_edges;
+                    }
+                    if (m >= SWARP_POLY_MAX_FACE_VERTICES) return SWARP_ERR_CAPACITY;
+                    loop[m++] = edge_v[e];
+                }
             }
         }
         if (m < 3) continue;
-        if (all_on) {
+        if (any == SW_ON) { /* the face lies in the clip plane */
             swarp_vec3 fnrm = {in->planes[f].a, in->planes[f].b, in->planes[f].c};
             if (sw_dot(fnrm, n) > 0.0) cap_coincides = 1;
         }
@@ -512,15 +544,15 @@ swarp_status sw_poly_clip(const swarp_polyhedron* in, swarp_vec3 n, double d, sw
 }
 
 static void sw_poly_bounds(const swarp_polyhedron* p, double lo[3], double hi[3]) {
-    lo[0] = lo[1] = lo[2] = INFINITY;
-    hi[0] = hi[1] = hi[2] = -INFINITY;
-    for (uint32_t i = 0; i < p->vertex_count; ++i) {
-        const double* v = &p->vertices[i].x;
-        for (int c = 0; c < 3; ++c) {
-            if (v[c] < lo[c]) lo[c] = v[c];
-            if (v[c] > hi[c]) hi[c] = v[c];
-        }
+    double lx = INFINITY, ly = INFINITY, lz = INFINITY, hx = -INFINITY, hy = -INFINITY, hz = -INFINITY;
+    for (uint32_t i = 0; i < p->vertex_count; ++i) { /* min/max without branches */
+        const swarp_vec3 v = p->vertices[i];
+        lx = v.x < lx ? v.x : lx, hx = v.x > hx ? v.x : hx;
+        ly = v.y < ly ? v.y : ly, hy = v.y > hy ? v.y : hy;
+        lz = v.z < lz ? v.z : lz, hz = v.z > hz ? v.z : hz;
     }
+    lo[0] = lx, lo[1] = ly, lo[2] = lz;
+    hi[0] = hx, hi[1] = hy, hi[2] = hz;
 }
 
 swarp_status sw_poly_clip_box(const swarp_polyhedron* in, const swarp_aabb* box, swarp_polyhedron* out) {

@@ -9,7 +9,9 @@
  *                      receivers H, for pancaking and the nearest vertex). */
 #include "geometry_internal.h"
 
-_Static_assert(sizeof(swarp_setup_options) == 12 * 4 + 4 * 8 + 16, "swarp_setup_options size");
+/* min_depth took two of the four reserved words: the size is unchanged */
+_Static_assert(sizeof(swarp_setup_options) == 12 * 4 + 5 * 8 + 8, "swarp_setup_options size");
+_Static_assert(sizeof(swarp_setup_options) == 12 * 4 + 4 * 8 + 16, "swarp_setup_options size kept");
 _Static_assert(sizeof(swarp_setup_result) == 3 * 128 + 9 * 8 + 8 + 16, "swarp_setup_result size");
 _Static_assert(sizeof(swarp_warp_options) == 8 + 3 * 8 + 16, "swarp_warp_options size");
 _Static_assert(sizeof(swarp_warp_info) == 6 * 8 + 16, "swarp_warp_info size");
@@ -26,7 +28,9 @@ _Static_assert(sizeof(swarp_warp_info) == 6 * 8 + 16, "swarp_warp_info size");
 #define SW_LIGHT_MAX_TAN 1e3
 
 static swarp_status sw_check_setup_options(const swarp_setup_options* o) {
-    if (!sw_reserved_zero(o->_reserved, 4) || o->_pad0 != 0 || o->_pad1 != 0) return SWARP_ERR_RESERVED_NONZERO;
+    if (!sw_reserved_zero(o->_reserved, 2) || o->_pad0 != 0 || o->_pad1 != 0) return SWARP_ERR_RESERVED_NONZERO;
+    if (isnan(o->min_depth)) return SWARP_ERR_NON_FINITE;
+    if (o->min_depth < 0.0) return SWARP_ERR_OUT_OF_RANGE; /* also -INFINITY */
     if ((uint32_t)o->technique > (uint32_t)SWARP_TECHNIQUE_PSM) return SWARP_ERR_UNKNOWN_ENUM;
     if (sw_check_depth_range(o->depth_range) != SWARP_OK) return SWARP_ERR_UNKNOWN_ENUM;
     if (o->pancake > 1 || o->psm_slideback > 1) return SWARP_ERR_OUT_OF_RANGE;
@@ -341,19 +345,26 @@ SWARP_API swarp_status swarp_setup(const swarp_camera* cam, const swarp_light* l
     if (!(cam->near > 0.0 && cam->far > cam->near)) return SWARP_ERR_NEAR_FAR;
     s = sw_check_box(scene);
     if (s != SWARP_OK) return s;
+    /* [RHS] §4.3: a measured min depth moves the near plane out (never
+     * past what the depth buffer saw); 0 = not given, the camera's own */
+    double cam_near = cam->near;
+    if (o.min_depth > 0.0) {
+        s = swarp_mindepth_near(cam->near, cam->far, o.min_depth, NULL, &cam_near);
+        if (swarp_status_is_error(s)) return s;
+    }
     swarp_polyhedron H;
-    s = sw_body_h(cam, cam->near, cam->far, scene, &H);
+    s = sw_body_h(cam, cam_near, cam->far, scene, &H);
     if (s != SWARP_OK) return s;
     /* adjusted near/far [RHS] §3.3.1: V ∩ S over [near', far'] is H itself */
     swarp_vec3 f, r, u;
     sw_camera_basis(cam, &f, &r, &u);
     double zn, zf;
     sw_depth_range_of(&H, cam->eye, f, &zn, &zf);
-    zn = fmin(fmax(zn, cam->near), cam->far);
+    zn = fmin(fmax(zn, cam_near), cam->far);
     zf = fmin(fmax(zf, zn), cam->far);
     if (!(zf > zn)) { /* H lies in one depth plane (box face on a view plane): keep a sliver */
         double pad = fmax(1e-9 * zn, 1e-300);
-        if (zn - pad > cam->near) zn -= pad;
+        if (zn - pad > cam_near) zn -= pad;
         else zf += pad;
     }
     return sw_setup_range(cam, light, scene, zn, zf, &H, &o, out, out_points, capacity, out_count);

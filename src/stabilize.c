@@ -29,7 +29,11 @@ static void sw_min_sphere(const sw_cam_frame* fr, double n, double f, swarp_vec3
     if (r_centroid) *r_centroid = hypot(0.5 * (f - n), f * k);
 }
 
-static swarp_status sw_check_range(double n, double f) {
+/* The camera's frame, then the split range [n, f] checked (in that order). */
+static swarp_status sw_frame_and_range(const swarp_camera* cam, double n, double f,
+                                       sw_cam_frame* fr) {
+    swarp_status st = sw_cam_frame_make(cam, fr);
+    if (st != SWARP_OK) return st;
     if (!sw_finite(n) || !sw_finite(f)) return SWARP_ERR_NON_FINITE;
     if (!(n > 0.0) || !(f > n)) return SWARP_ERR_NEAR_FAR;
     return SWARP_OK;
@@ -40,9 +44,8 @@ SWARP_API swarp_status swarp_stabilize_sphere(const swarp_camera* cam, double n_
                                               double* out_centroid_radius) {
     if (!cam || !out_center || !out_radius) return SWARP_ERR_NULL_POINTER;
     sw_cam_frame fr;
-    swarp_status st = sw_cam_frame_make(cam, &fr);
+    swarp_status st = sw_frame_and_range(cam, n_i, f_i, &fr);
     if (st != SWARP_OK) return st;
-    if ((st = sw_check_range(n_i, f_i)) != SWARP_OK) return st;
     swarp_vec3 c;
     double r, rc;
     sw_min_sphere(&fr, n_i, f_i, &c, &r, &rc);
@@ -128,9 +131,8 @@ SWARP_API swarp_status swarp_stabilize_directional(const swarp_camera* cam, doub
     if (o.level_max_size < 0.0) return SWARP_ERR_OUT_OF_RANGE;
 
     sw_cam_frame fr;
-    swarp_status st = sw_cam_frame_make(cam, &fr);
+    swarp_status st = sw_frame_and_range(cam, n_i, f_i, &fr);
     if (st != SWARP_OK) return st;
-    if ((st = sw_check_range(n_i, f_i)) != SWARP_OK) return st;
     if (!sw_finite3(light_dir)) return SWARP_ERR_NON_FINITE;
     if (res < 2) return SWARP_ERR_RESOLUTION;
     const int need_body = (o.mode != SWARP_STABILIZE_SPHERE);

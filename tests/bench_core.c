@@ -8,17 +8,9 @@
 #include <string.h>
 #include <time.h>
 
+#include "bench_util.h"
 #include "shadowwarp.h"
 
-static double now_ns(void) {
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return (double)t.tv_sec * 1e9 + (double)t.tv_nsec;
-}
-static int cmp_d(const void* a, const void* b) {
-    double x = *(const double*)a, y = *(const double*)b;
-    return (x > y) - (x < y);
-}
 
 enum { REPS = 301 };
 static volatile double sink;
@@ -32,7 +24,7 @@ static volatile double sink;
             for (int i = 0; i < (inner); ++i) { __VA_ARGS__; }                        \
             t[r] = (now_ns() - t0) / (inner);                                    \
         }                                                                        \
-        qsort(t, REPS, sizeof t[0], cmp_d);                                      \
+        qsort(t, REPS, sizeof t[0], cmp_double);                                 \
         printf("%-44s %12.1f %12.1f\n", name, t[REPS / 2], t[(REPS * 99) / 100]); \
     } while (0)
 

@@ -9,20 +9,12 @@
 #include <time.h>
 #include <unistd.h>
 
+#include "bench_util.h"
 #include "shadowwarp.h"
 
 #define BATCHES 301
 #define CALLS 1000
 
-static double now_ns(void) {
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec * 1e9 + (double)ts.tv_nsec;
-}
-static int cmp(const void* a, const void* b) {
-    double x = *(const double*)a, y = *(const double*)b;
-    return (x > y) - (x < y);
-}
 
 static volatile double sink; /* keeps the calls alive */
 static double in_t[CALLS];
@@ -99,7 +91,7 @@ static void run(const char* name, bench_fn f, int calls) {
         f(calls);
         t[b] = (now_ns() - t0) / calls;
     }
-    qsort(t, BATCHES, sizeof t[0], cmp);
+    qsort(t, BATCHES, sizeof t[0], cmp_double);
     printf("| %s | %.1f | %.1f |\n", name, t[BATCHES / 2], t[(int)(BATCHES * 0.99)]);
 }
 

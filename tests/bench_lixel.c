@@ -8,20 +8,12 @@
 #include <string.h>
 #include <time.h>
 
+#include "bench_util.h"
 #include "shadowwarp.h"
 
 #define REPS 2001
 #define INNER 50
 
-static double now_ns(void) {
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return ts.tv_sec * 1e9 + ts.tv_nsec;
-}
-static int cmp(const void* a, const void* b) {
-    double x = *(const double*)a, y = *(const double*)b;
-    return (x > y) - (x < y);
-}
 
 static swarp_mat4 viewer(void) {
     /* lookAt((1,1.7,4), dir (-0.2,-0.35,-1)) x perspective(60 deg, 1.5, 0.1, 100) */
@@ -81,9 +73,9 @@ int main(void) {
         double t3 = now_ns();
         tm[r] = (t1 - t0) / INNER, tr[r] = (t2 - t1) / INNER, tf[r] = (t3 - t2) / INNER;
     }
-    qsort(tm, REPS, sizeof(double), cmp);
-    qsort(tr, REPS, sizeof(double), cmp);
-    qsort(tf, REPS, sizeof(double), cmp);
+    qsort(tm, REPS, sizeof(double), cmp_double);
+    qsort(tr, REPS, sizeof(double), cmp_double);
+    qsort(tf, REPS, sizeof(double), cmp_double);
     printf("lixel stage, ns per call (%d x %d calls)\n", REPS, INNER);
     printf("%-34s %10s %10s\n", "function", "median", "p99");
     printf("%-34s %10.0f %10.0f\n", "swarp_lixel_matrix", tm[REPS / 2], tm[REPS * 99 / 100]);

@@ -9,7 +9,6 @@
  * context: compute shaders need it).
  */
 #define _POSIX_C_SOURCE 200809L
-#include <GL/osmesa.h>
 #include <float.h>
 #include <math.h>
 #include <stdint.h>
@@ -17,7 +16,9 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "gl_harness.h"
 #include "shadowwarp.h"
+#include "test_util.h"
 
 #ifndef FILTER_GLSL_PATH
 #error "FILTER_GLSL_PATH must name docs/glsl/filtering.glsl"
@@ -26,90 +27,6 @@
 #define REC_IN 32
 #define REC_OUT 8
 #define N_CASES 4096
-
-/* ---- GL entry points ---------------------------------------------------- */
-#define GLFUNCS(X)                                                  \
-    X(PFNGLCREATESHADERPROC, glCreateShader)                        \
-    X(PFNGLSHADERSOURCEPROC, glShaderSource)                        \
-    X(PFNGLCOMPILESHADERPROC, glCompileShader)                      \
-    X(PFNGLGETSHADERIVPROC, glGetShaderiv)                          \
-    X(PFNGLGETSHADERINFOLOGPROC, glGetShaderInfoLog)                \
-    X(PFNGLDELETESHADERPROC, glDeleteShader)                        \
-    X(PFNGLCREATEPROGRAMPROC, glCreateProgram)                      \
-    X(PFNGLATTACHSHADERPROC, glAttachShader)                        \
-    X(PFNGLLINKPROGRAMPROC, glLinkProgram)                          \
-    X(PFNGLGETPROGRAMIVPROC, glGetProgramiv)                        \
-    X(PFNGLGETPROGRAMINFOLOGPROC, glGetProgramInfoLog)              \
-    X(PFNGLUSEPROGRAMPROC, glUseProgram)                            \
-    X(PFNGLDELETEPROGRAMPROC, glDeleteProgram)                      \
-    X(PFNGLGENBUFFERSPROC, glGenBuffers)                            \
-    X(PFNGLDELETEBUFFERSPROC, glDeleteBuffers)                      \
-    X(PFNGLBINDBUFFERPROC, glBindBuffer)                            \
-    X(PFNGLBUFFERDATAPROC, glBufferData)                            \
-    X(PFNGLBINDBUFFERBASEPROC, glBindBufferBase)                    \
-    X(PFNGLGETBUFFERSUBDATAPROC, glGetBufferSubData)                \
-    X(PFNGLDISPATCHCOMPUTEPROC, glDispatchCompute)                  \
-    X(PFNGLMEMORYBARRIERPROC, glMemoryBarrier)
-#define DECL(type, name) static type p_##name;
-GLFUNCS(DECL)
-#undef DECL
-
-static int load_gl(void) {
-    int ok = 1;
-#define LOAD(type, name)                                         \
-    p_##name = (type)(void (*)(void))OSMesaGetProcAddress(#name); \
-    if (!p_##name) {                                             \
-        fprintf(stderr, "filter_glsl: missing %s\n", #name);     \
-        ok = 0;                                                  \
-    }
-    GLFUNCS(LOAD)
-#undef LOAD
-    return ok;
-}
-
-static char* read_file(const char* path) {
-    FILE* f = fopen(path, "rb");
-    if (!f) return NULL;
-    fseek(f, 0, SEEK_END);
-    long n = ftell(f);
-    fseek(f, 0, SEEK_SET);
-    char* s = malloc((size_t)n + 1);
-    if (s && fread(s, 1, (size_t)n, f) != (size_t)n) {
-        free(s);
-        s = NULL;
-    }
-    if (s) s[n] = 0;
-    fclose(f);
-    return s;
-}
-
-static GLuint compile(const char* const* parts, int n_parts, const char* what) {
-    GLuint s = p_glCreateShader(GL_COMPUTE_SHADER);
-    p_glShaderSource(s, n_parts, parts, NULL);
-    p_glCompileShader(s);
-    GLint ok = 0;
-    p_glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
-    if (!ok) {
-        char log[8192];
-        p_glGetShaderInfoLog(s, sizeof log, NULL, log);
-        fprintf(stderr, "filter_glsl: %s does not compile:\n%s\n", what, log);
-        p_glDeleteShader(s);
-        return 0;
-    }
-    GLuint p = p_glCreateProgram();
-    p_glAttachShader(p, s);
-    p_glLinkProgram(p);
-    p_glDeleteShader(s);
-    p_glGetProgramiv(p, GL_LINK_STATUS, &ok);
-    if (!ok) {
-        char log[8192];
-        p_glGetProgramInfoLog(p, sizeof log, NULL, log);
-        fprintf(stderr, "filter_glsl: %s does not link:\n%s\n", what, log);
-        p_glDeleteProgram(p);
-        return 0;
-    }
-    return p;
-}
 
 /* The driver: one invocation per case, kind in in[0]. */
 static const char* k_main =
@@ -164,13 +81,7 @@ static const char* k_main =
 
 /* ---- cases -------------------------------------------------------------- */
 static uint64_t rng = 2024;
-static double urand(double lo, double hi) {
-    uint64_t z = (rng += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    z ^= z >> 31;
-    return lo + (hi - lo) * ((double)(z >> 11) * 0x1.0p-53);
-}
+static double urand(double lo, double hi) { return tu_uniform(&rng, lo, hi); }
 static double fl(double x) { return (double)(float)x; } /* what the shader sees */
 
 static float in_buf[N_CASES * REC_IN], out_buf[N_CASES * REC_OUT];
@@ -455,25 +366,9 @@ static int check_case(int i, const double* in, const float* out) {
 }
 
 int main(void) {
-    static const int versions[][2] = {{4, 5}, {4, 3}};
-    OSMesaContext ctx = NULL;
-    for (int v = 0; v < 2 && !ctx; ++v) {
-        const int attribs[] = {OSMESA_FORMAT, OSMESA_RGBA, OSMESA_PROFILE, OSMESA_CORE_PROFILE,
-                               OSMESA_CONTEXT_MAJOR_VERSION, versions[v][0],
-                               OSMESA_CONTEXT_MINOR_VERSION, versions[v][1], 0};
-        ctx = OSMesaCreateContextAttribs(attribs, NULL);
-    }
-    if (!ctx) {
-        fprintf(stderr, "filter_glsl: no GL 4.3+ core context: skipped\n");
-        return 77;
-    }
-    static unsigned char fb[4 * 4 * 4];
-    if (!OSMesaMakeCurrent(ctx, fb, GL_UNSIGNED_BYTE, 4, 4) || !load_gl()) {
-        OSMesaDestroyContext(ctx);
-        fprintf(stderr, "filter_glsl: cannot make the context current: skipped\n");
-        return 77;
-    }
-    char* lib = read_file(FILTER_GLSL_PATH);
+    OSMesaContext ctx = glh_open("filter_glsl");
+    if (!ctx) return 77;
+    char* lib = glh_read_file(FILTER_GLSL_PATH);
     if (!lib) {
         fprintf(stderr, "filter_glsl: cannot read %s\n", FILTER_GLSL_PATH);
         return 1;
@@ -482,12 +377,12 @@ int main(void) {
     /* 1. the whole file, samplers included, must compile */
     const char* with_samplers[3] = {"#version 450 core\n#define FILTER_GLSL_WITH_SAMPLERS\n", lib,
                                     "layout(local_size_x = 1) in;\nvoid main() {}\n"};
-    GLuint p0 = compile(with_samplers, 3, "filtering.glsl (with samplers)");
+    GLuint p0 = glh_compile("filter_glsl", with_samplers, 3, "filtering.glsl (with samplers)");
     if (!p0) rc = 1;
     else p_glDeleteProgram(p0);
     /* 2. evaluate the texture-free twins */
     const char* parts[3] = {"#version 450 core\n", lib, k_main};
-    GLuint prog = compile(parts, 3, "filtering.glsl + driver");
+    GLuint prog = glh_compile("filter_glsl", parts, 3, "filtering.glsl + driver");
     if (!prog) {
         free(lib);
         OSMesaDestroyContext(ctx);
@@ -500,16 +395,9 @@ int main(void) {
     }
     GLuint buf[2];
     p_glGenBuffers(2, buf);
-    p_glBindBuffer(GL_SHADER_STORAGE_BUFFER, buf[0]);
-    p_glBufferData(GL_SHADER_STORAGE_BUFFER, sizeof in_buf, in_buf, GL_STATIC_DRAW);
-    p_glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, buf[0]);
-    p_glBindBuffer(GL_SHADER_STORAGE_BUFFER, buf[1]);
-    p_glBufferData(GL_SHADER_STORAGE_BUFFER, sizeof out_buf, NULL, GL_DYNAMIC_READ);
-    p_glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, buf[1]);
-    p_glUseProgram(prog);
-    p_glDispatchCompute(N_CASES / 64, 1, 1);
-    p_glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-    p_glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, sizeof out_buf, out_buf);
+    glh_ssbo(buf[0], 0, sizeof in_buf, in_buf, GL_STATIC_DRAW);
+    glh_ssbo(buf[1], 1, sizeof out_buf, NULL, GL_DYNAMIC_READ);
+    glh_run(prog, N_CASES / 64, buf[1], sizeof out_buf, out_buf);
     int bad = 0;
     for (int i = 0; i < N_CASES; ++i)
         if (!check_case(i, cases[i], out_buf + i * REC_OUT)) ++bad;
@@ -524,7 +412,6 @@ int main(void) {
     p_glDeleteBuffers(2, buf);
     p_glDeleteProgram(prog);
     free(lib);
-    OSMesaMakeCurrent(NULL, NULL, 0, 0, 0);
-    OSMesaDestroyContext(ctx);
+    glh_close(ctx);
     return (rc || bad) ? 1 : 0;
 }

@@ -5,7 +5,6 @@
  * with the C library evaluated on the same float-rounded inputs.
  * Exit 0 = pass, 1 = mismatch or GLSL error, 77 = skipped (no GL 4.3+). */
 #define _POSIX_C_SOURCE 200809L
-#include <GL/osmesa.h>
 #include <float.h>
 #include <math.h>
 #include <stdint.h>
@@ -13,7 +12,9 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "gl_harness.h"
 #include "shadowwarp.h"
+#include "test_util.h"
 
 #ifndef SPLITS_GLSL_PATH
 #error "SPLITS_GLSL_PATH must name docs/glsl/splits.glsl"
@@ -24,90 +25,6 @@
 #define N_CASES 4096
 #define K 4
 #define SCENE_FLOATS (24 + 2 * 16 * SWARP_CASCADE_MAX_SPLITS)
-
-/* ---- GL entry points ---------------------------------------------------- */
-#define GLFUNCS(X)                                                  \
-    X(PFNGLCREATESHADERPROC, glCreateShader)                        \
-    X(PFNGLSHADERSOURCEPROC, glShaderSource)                        \
-    X(PFNGLCOMPILESHADERPROC, glCompileShader)                      \
-    X(PFNGLGETSHADERIVPROC, glGetShaderiv)                          \
-    X(PFNGLGETSHADERINFOLOGPROC, glGetShaderInfoLog)                \
-    X(PFNGLDELETESHADERPROC, glDeleteShader)                        \
-    X(PFNGLCREATEPROGRAMPROC, glCreateProgram)                      \
-    X(PFNGLATTACHSHADERPROC, glAttachShader)                        \
-    X(PFNGLLINKPROGRAMPROC, glLinkProgram)                          \
-    X(PFNGLGETPROGRAMIVPROC, glGetProgramiv)                        \
-    X(PFNGLGETPROGRAMINFOLOGPROC, glGetProgramInfoLog)              \
-    X(PFNGLUSEPROGRAMPROC, glUseProgram)                            \
-    X(PFNGLDELETEPROGRAMPROC, glDeleteProgram)                      \
-    X(PFNGLGENBUFFERSPROC, glGenBuffers)                            \
-    X(PFNGLDELETEBUFFERSPROC, glDeleteBuffers)                      \
-    X(PFNGLBINDBUFFERPROC, glBindBuffer)                            \
-    X(PFNGLBUFFERDATAPROC, glBufferData)                            \
-    X(PFNGLBINDBUFFERBASEPROC, glBindBufferBase)                    \
-    X(PFNGLGETBUFFERSUBDATAPROC, glGetBufferSubData)                \
-    X(PFNGLDISPATCHCOMPUTEPROC, glDispatchCompute)                  \
-    X(PFNGLMEMORYBARRIERPROC, glMemoryBarrier)
-#define DECL(type, name) static type p_##name;
-GLFUNCS(DECL)
-#undef DECL
-
-static int load_gl(void) {
-    int ok = 1;
-#define LOAD(type, name)                                         \
-    p_##name = (type)(void (*)(void))OSMesaGetProcAddress(#name); \
-    if (!p_##name) {                                             \
-        fprintf(stderr, "splits_glsl: missing %s\n", #name);     \
-        ok = 0;                                                  \
-    }
-    GLFUNCS(LOAD)
-#undef LOAD
-    return ok;
-}
-
-static char* read_file(const char* path) {
-    FILE* f = fopen(path, "rb");
-    if (!f) return NULL;
-    fseek(f, 0, SEEK_END);
-    long n = ftell(f);
-    fseek(f, 0, SEEK_SET);
-    char* s = malloc((size_t)n + 1);
-    if (s && fread(s, 1, (size_t)n, f) != (size_t)n) {
-        free(s);
-        s = NULL;
-    }
-    if (s) s[n] = 0;
-    fclose(f);
-    return s;
-}
-
-static GLuint compile(const char* const* parts, int n_parts, const char* what) {
-    GLuint s = p_glCreateShader(GL_COMPUTE_SHADER);
-    p_glShaderSource(s, n_parts, parts, NULL);
-    p_glCompileShader(s);
-    GLint ok = 0;
-    p_glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
-    if (!ok) {
-        char log[8192];
-        p_glGetShaderInfoLog(s, sizeof log, NULL, log);
-        fprintf(stderr, "splits_glsl: %s does not compile:\n%s\n", what, log);
-        p_glDeleteShader(s);
-        return 0;
-    }
-    GLuint p = p_glCreateProgram();
-    p_glAttachShader(p, s);
-    p_glLinkProgram(p);
-    p_glDeleteShader(s);
-    p_glGetProgramiv(p, GL_LINK_STATUS, &ok);
-    if (!ok) {
-        char log[8192];
-        p_glGetProgramInfoLog(p, sizeof log, NULL, log);
-        fprintf(stderr, "splits_glsl: %s does not link:\n%s\n", what, log);
-        p_glDeleteProgram(p);
-        return 0;
-    }
-    return p;
-}
 
 /* The driver: one invocation per case, kind in inp[b]. */
 static const char* k_main =
@@ -151,13 +68,7 @@ static const char* k_main =
     "}\n";
 
 static uint64_t rng = 4711;
-static double urand(double lo, double hi) {
-    uint64_t z = (rng += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    z ^= z >> 31;
-    return lo + (hi - lo) * ((double)(z >> 11) * 0x1.0p-53);
-}
+static double urand(double lo, double hi) { return tu_uniform(&rng, lo, hi); }
 static double fl(double x) { return (double)(float)x; } /* what the shader sees */
 
 static float in_buf[N_CASES * REC_IN], out_buf[N_CASES * REC_OUT], scene_buf[SCENE_FLOATS];
@@ -371,25 +282,9 @@ static int make_scene(void) {
 }
 
 int main(void) {
-    static const int versions[][2] = {{4, 5}, {4, 3}};
-    OSMesaContext ctx = NULL;
-    for (int v = 0; v < 2 && !ctx; ++v) {
-        const int attribs[] = {OSMESA_FORMAT, OSMESA_RGBA, OSMESA_PROFILE, OSMESA_CORE_PROFILE,
-                               OSMESA_CONTEXT_MAJOR_VERSION, versions[v][0],
-                               OSMESA_CONTEXT_MINOR_VERSION, versions[v][1], 0};
-        ctx = OSMesaCreateContextAttribs(attribs, NULL);
-    }
-    if (!ctx) {
-        fprintf(stderr, "splits_glsl: no GL 4.3+ core context: skipped\n");
-        return 77;
-    }
-    static unsigned char fb[4 * 4 * 4];
-    if (!OSMesaMakeCurrent(ctx, fb, GL_UNSIGNED_BYTE, 4, 4) || !load_gl()) {
-        OSMesaDestroyContext(ctx);
-        fprintf(stderr, "splits_glsl: cannot make the context current: skipped\n");
-        return 77;
-    }
-    char* lib = read_file(SPLITS_GLSL_PATH);
+    OSMesaContext ctx = glh_open("splits_glsl");
+    if (!ctx) return 77;
+    char* lib = glh_read_file(SPLITS_GLSL_PATH);
     if (!lib || !make_scene()) {
         fprintf(stderr, "splits_glsl: cannot read %s or build the cascade\n", SPLITS_GLSL_PATH);
         free(lib);
@@ -398,7 +293,7 @@ int main(void) {
     }
     /* the file plus the driver, as a GLSL 4.50 compute shader */
     const char* parts[3] = {"#version 450 core\n", lib, k_main};
-    GLuint prog = compile(parts, 3, "splits.glsl + driver");
+    GLuint prog = glh_compile("splits_glsl", parts, 3, "splits.glsl + driver");
     if (!prog) {
         free(lib);
         OSMesaDestroyContext(ctx);
@@ -410,20 +305,10 @@ int main(void) {
     }
     GLuint buf[3];
     p_glGenBuffers(3, buf);
-    p_glBindBuffer(GL_SHADER_STORAGE_BUFFER, buf[0]);
-    p_glBufferData(GL_SHADER_STORAGE_BUFFER, sizeof in_buf, in_buf, GL_STATIC_DRAW);
-    p_glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, buf[0]);
-    p_glBindBuffer(GL_SHADER_STORAGE_BUFFER, buf[1]);
-    p_glBufferData(GL_SHADER_STORAGE_BUFFER, sizeof out_buf, NULL, GL_DYNAMIC_READ);
-    p_glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, buf[1]);
-    p_glBindBuffer(GL_SHADER_STORAGE_BUFFER, buf[2]);
-    p_glBufferData(GL_SHADER_STORAGE_BUFFER, sizeof scene_buf, scene_buf, GL_STATIC_DRAW);
-    p_glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, buf[2]);
-    p_glUseProgram(prog);
-    p_glDispatchCompute(N_CASES / 64, 1, 1);
-    p_glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-    p_glBindBuffer(GL_SHADER_STORAGE_BUFFER, buf[1]);
-    p_glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, sizeof out_buf, out_buf);
+    glh_ssbo(buf[0], 0, sizeof in_buf, in_buf, GL_STATIC_DRAW);
+    glh_ssbo(buf[1], 1, sizeof out_buf, NULL, GL_DYNAMIC_READ);
+    glh_ssbo(buf[2], 2, sizeof scene_buf, scene_buf, GL_STATIC_DRAW);
+    glh_run(prog, N_CASES / 64, buf[1], sizeof out_buf, out_buf);
     int bad = 0;
     for (int i = 0; i < N_CASES; ++i)
         if (!check_case(i, cases[i], out_buf + i * REC_OUT)) ++bad;
@@ -449,7 +334,6 @@ int main(void) {
     p_glDeleteBuffers(3, buf);
     p_glDeleteProgram(prog);
     free(lib);
-    OSMesaMakeCurrent(NULL, NULL, 0, 0, 0);
-    OSMesaDestroyContext(ctx);
+    glh_close(ctx);
     return bad ? 1 : 0;
 }

@@ -119,9 +119,6 @@ int main(void) {
     suite_add_tcase(s, tcase_params());
     suite_add_tcase(s, tcase_error());
     suite_add_tcase(s, tcase_split());
-    SRunner* sr = srunner_create(s);
-    srunner_run_all(sr, CK_NORMAL);
-    int failed = srunner_ntests_failed(sr);
-    srunner_free(sr);
+    int failed = tu_run_suite(s);
     return failed ? EXIT_FAILURE : EXIT_SUCCESS;
 }

@@ -9,31 +9,22 @@
 #include <string.h>
 
 #include "shadowwarp.h"
+#include "test_util.h"
 
 TCase* tcase_params(void);
 TCase* tcase_error(void);
 TCase* tcase_split(void);
 
 /* splitmix64: the tests' own seeded PRNG. */
-static inline uint64_t tc_next(uint64_t* s) {
-    uint64_t z = (*s += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    return z ^ (z >> 31);
-}
+static inline uint64_t tc_next(uint64_t* s) { return tu_splitmix64(s); }
 /* uniform in [a, b) */
-static inline double tc_uniform(uint64_t* s, double a, double b) {
-    return a + (b - a) * ((double)(tc_next(s) >> 11) * (1.0 / 9007199254740992.0));
-}
+static inline double tc_uniform(uint64_t* s, double a, double b) { return tu_uniform(s, a, b); }
 /* log-uniform in [a, b), a > 0 */
 static inline double tc_logu(uint64_t* s, double a, double b) {
     return exp(tc_uniform(s, log(a), log(b)));
 }
 
-static inline double tc_rel(double a, double b) {
-    double m = fabs(a) > fabs(b) ? fabs(a) : fabs(b);
-    return m == 0.0 ? 0.0 : fabs(a - b) / m;
-}
+static inline double tc_rel(double a, double b) { return tu_rel(a, b); }
 
 #define TC_PI 3.14159265358979323846
 #define TC_HALF_PI (0.5 * TC_PI)

@@ -8,16 +8,10 @@
 #include <string.h>
 
 #include "shadowwarp.h"
+#include "test_util.h"
 
-static uint64_t next_u64(uint64_t* s) { /* splitmix64 */
-    uint64_t z = (*s += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    return z ^ (z >> 31);
-}
-static double uni(uint64_t* s, double a, double b) {
-    return a + (b - a) * ((double)(next_u64(s) >> 11) * (1.0 / 9007199254740992.0));
-}
+static uint64_t next_u64(uint64_t* s) { return tu_splitmix64(s); }
+static double uni(uint64_t* s, double a, double b) { return tu_uniform(s, a, b); }
 
 /* ---- [KOZ] §14.2.2 ------------------------------------------------------------ */
 
@@ -377,9 +371,6 @@ int main(void) {
     tcase_add_test(tm, mindepth_near_plane);
     tcase_add_test(tm, mindepth_bad_inputs);
     suite_add_tcase(s, tm);
-    SRunner* sr = srunner_create(s);
-    srunner_run_all(sr, CK_NORMAL);
-    int failed = srunner_ntests_failed(sr);
-    srunner_free(sr);
+    int failed = tu_run_suite(s);
     return failed ? EXIT_FAILURE : EXIT_SUCCESS;
 }

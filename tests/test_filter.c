@@ -12,29 +12,17 @@
 #include <string.h>
 
 #include "shadowwarp.h"
+#include "test_util.h"
 
 /* ---- helpers ------------------------------------------------------------ */
 
-static uint64_t sm_next(uint64_t* s) { /* splitmix64, the test's own PRNG */
-    uint64_t z = (*s += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    return z ^ (z >> 31);
-}
-static double urand(uint64_t* s, double lo, double hi) {
-    return lo + (hi - lo) * ((double)(sm_next(s) >> 11) * 0x1.0p-53);
-}
+static uint64_t sm_next(uint64_t* s) { return tu_splitmix64(s); } /* the test's own PRNG */
+static double urand(uint64_t* s, double lo, double hi) { return tu_uniform(s, lo, hi); }
 
 #define SENT 12345.678
 
-static void fill(double* a, size_t n) {
-    for (size_t i = 0; i < n; ++i) a[i] = SENT;
-}
-static int untouched(const double* a, size_t n) {
-    for (size_t i = 0; i < n; ++i)
-        if (memcmp(&a[i], &(double){SENT}, sizeof(double)) != 0) return 0;
-    return 1;
-}
+static void fill(double* a, size_t n) { tu_fill(a, n, SENT); }
+static int untouched(const double* a, size_t n) { return tu_untouched(a, n, SENT); }
 
 /* Brute-force PCF of a discrete distribution: lit mass P(X >= t). */
 static double pcf(const double* x, const double* w, int n, double t) {
@@ -1190,9 +1178,6 @@ static Suite* filter_suite(void) {
 }
 
 int main(void) {
-    SRunner* sr = srunner_create(filter_suite());
-    srunner_run_all(sr, CK_NORMAL);
-    int failed = srunner_ntests_failed(sr);
-    srunner_free(sr);
+    int failed = tu_run_suite(filter_suite());
     return failed == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -9,6 +9,7 @@
 #include <string.h>
 
 #include "shadowwarp.h"
+#include "test_util.h"
 
 #define PI 3.14159265358979323846
 
@@ -29,13 +30,8 @@
 
 /* ---- PRNG (splitmix64) ---------------------------------------------------- */
 typedef struct rng { uint64_t s; } rng;
-static uint64_t rng_next(rng* r) {
-    uint64_t z = (r->s += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    return z ^ (z >> 31);
-}
-static double rnd(rng* r, double a, double b) { return a + (b - a) * ((rng_next(r) >> 11) * 0x1.0p-53); }
+static uint64_t rng_next(rng* r) { return tu_splitmix64(&r->s); }
+static double rnd(rng* r, double a, double b) { return tu_uniform(&r->s, a, b); }
 static swarp_vec3 v3(double x, double y, double z) {
     swarp_vec3 v = {x, y, z};
     return v;
@@ -795,7 +791,7 @@ START_TEST(bad_input_non_finite_and_null) {
     o.technique = (swarp_technique)9;
     ck_assert_int_eq(swarp_setup(&c.cam, &c.light, &c.box, &o, &r, NULL, 0, NULL), SWARP_ERR_UNKNOWN_ENUM);
     memset(&o, 0, sizeof o);
-    o._reserved[3] = 1;
+    o._reserved[1] = 1; /* the last reserved word (min_depth took two) */
     ck_assert_int_eq(swarp_setup(&c.cam, &c.light, &c.box, &o, &r, NULL, 0, NULL), SWARP_ERR_RESERVED_NONZERO);
     memset(&o, 0, sizeof o);
     o.param = SWARP_WARP_PARAM_USER;
@@ -910,6 +906,7 @@ START_TEST(poly_camera_and_inverse_matrix_agree) {
         }
     }
     swarp_polyhedron A;
+    memset(&A, 0, sizeof A); /* unused slots are unspecified; memcmp below reads all bytes */
     swarp_plane zero = {0, 0, 0, 1}, nanp = {NAN, 0, 1, 0};
     swarp_aabb box = {{0, 0, 0}, {1, 1, 1}};
     ck_assert_int_eq(swarp_poly_from_aabb(&box, &A), SWARP_OK);
@@ -1188,9 +1185,6 @@ Suite* geometry_suite(void) {
 }
 
 int main(void) {
-    SRunner* sr = srunner_create(geometry_suite());
-    srunner_run_all(sr, CK_NORMAL);
-    int failed = srunner_ntests_failed(sr);
-    srunner_free(sr);
+    int failed = tu_run_suite(geometry_suite());
     return failed ? EXIT_FAILURE : EXIT_SUCCESS;
 }

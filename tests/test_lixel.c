@@ -10,18 +10,14 @@
 #include <string.h>
 
 #include "shadowwarp.h"
+#include "test_util.h"
 
 #define M_PI 3.14159265358979323846
 
 /* ---- small PRNG (splitmix64) -------------------------------------------- */
 static uint64_t rng_state;
-static uint64_t rng_next(void) {
-    uint64_t z = (rng_state += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    return z ^ (z >> 31);
-}
-static double rnd(double a, double b) { return a + (b - a) * ((double)(rng_next() >> 11) / 9007199254740992.0); }
+static uint64_t rng_next(void) { return tu_splitmix64(&rng_state); }
+static double rnd(double a, double b) { return tu_uniform(&rng_state, a, b); }
 
 typedef struct v3 { double x, y, z; } v3;
 static v3 V(double x, double y, double z) { v3 r = {x, y, z}; return r; }
@@ -452,14 +448,8 @@ START_TEST(large_world_coordinates) {
 END_TEST
 
 /* ---- degenerate inputs: own status, outputs untouched ------------------- */
-static void sentinel(swarp_mat4* m) {
-    for (int i = 0; i < 16; ++i) m->m[i] = 7.25;
-}
-static int is_sentinel(const swarp_mat4* m) {
-    swarp_mat4 s;
-    sentinel(&s);
-    return memcmp(&s, m, sizeof s) == 0;
-}
+static void sentinel(swarp_mat4* m) { tu_fill(m->m, 16, 7.25); }
+static int is_sentinel(const swarp_mat4* m) { return tu_untouched(m->m, 16, 7.25); }
 
 START_TEST(degenerate_inputs_have_own_status) {
     cam c = make_cam(V(0, 2, 0), V(0.2, -0.5, -1), V(0, 1, 0), 60 * M_PI / 180, 1.0, 0.1, 100, 256, 256);
@@ -1101,9 +1091,6 @@ static Suite* lixel_suite(void) {
 }
 
 int main(void) {
-    SRunner* sr = srunner_create(lixel_suite());
-    srunner_run_all(sr, CK_NORMAL);
-    int failed = srunner_ntests_failed(sr);
-    srunner_free(sr);
+    int failed = tu_run_suite(lixel_suite());
     return failed ? 1 : 0;
 }

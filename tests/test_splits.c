@@ -8,18 +8,12 @@
 #include <string.h>
 
 #include "shadowwarp.h"
+#include "test_util.h"
 
 /* ---- small seeded PRNG (splitmix64) ------------------------------------ */
 static uint64_t rng_state;
-static uint64_t rng_next(void) {
-    uint64_t z = (rng_state += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    return z ^ (z >> 31);
-}
-static double rng_uniform(double a, double b) {
-    return a + (b - a) * ((double)(rng_next() >> 11) * (1.0 / 9007199254740992.0));
-}
+static uint64_t rng_next(void) { return tu_splitmix64(&rng_state); }
+static double rng_uniform(double a, double b) { return tu_uniform(&rng_state, a, b); }
 
 #define PI 3.14159265358979323846
 
@@ -1545,9 +1539,6 @@ static Suite* splits_suite(void) {
 }
 
 int main(void) {
-    SRunner* sr = srunner_create(splits_suite());
-    srunner_run_all(sr, CK_NORMAL);
-    int failed = srunner_ntests_failed(sr);
-    srunner_free(sr);
+    int failed = tu_run_suite(splits_suite());
     return failed == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

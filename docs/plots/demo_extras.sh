@@ -10,7 +10,8 @@ F=${2:-9}
 T=$(mktemp -d)
 "$B/examples/demo/demo-extras" --out "$T" --size 960x540 --map 1024 --frames "$F" \
     | tee docs/plots/demo-extras.log
-for n in viz_uniform viz_lispsm viz_pssm4 blur_sheet mindepth_sheet cube_sheet cube_faces; do
+for n in viz_uniform viz_lispsm viz_pssm4 blur_sheet mindepth_sheet cube_sheet cube_sheet_behind \
+         cube_faces; do
     cp "$T/$n.png" "docs/img/extras_$n.png"
 done
 rm -rf "$T"

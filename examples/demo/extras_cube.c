@@ -353,7 +353,7 @@ static int cube_part(extras_env* e, GLuint prog, demo_image* sheet, int pass, in
                 demo_image_label(&im, 8, 8, 2, lab);
             }
             if (demo_image_resize(&im, cw, ch, &small) == 0) {
-                demo_image_blit(sheet, c * cw, hdr + (2 * pass + row) * ch, &small);
+                demo_image_blit(sheet, c * cw, hdr + (2 * (pass % 2) + row) * ch, &small);
                 demo_image_free(&small);
             }
             if (c == 0 && row == 1 && pass == 0) {
@@ -385,30 +385,39 @@ int extras_cube(extras_env* e, int test) {
     int rc = 0;
     /* rows: PSM one map / cube map with the camera's near plane, then both
      * with the near plane measured by the GPU mip-min chain ([RHS] §4.3,
-     * which is what PSM needs most: [RHS] Fig. 4.3) */
+     * which is what PSM needs most: [RHS] Fig. 4.3).  Two suns: the
+     * default one (in front of the camera: w > 0) and one from behind the
+     * camera (w < 0: the inverse-projection faces and a virtual slide-back) */
     const int cw = 480, ch = 270, hdr = 28;
-    demo_image sheet;
-    if (demo_image_alloc(&sheet, 3 * cw, hdr + 4 * ch)) return 1;
-    const uint8_t white[3] = {255, 255, 255}, black[3] = {0, 0, 0};
-    demo_image_fill(&sheet, 0, 0, sheet.w, sheet.h, white);
-    const char* cols[3] = {"shaded", "sampling rate (Listing A.3)", "texel grid (Listing A.4)"};
-    for (int c = 0; c < 3; ++c) demo_image_text(&sheet, c * cw + 8, 8, 2, cols[c], black);
     demo_view saved = e->v;
-    for (int pass = 0; pass < 2; ++pass) {
-        if (pass == 1) {
-            double n = extras_measured_near(e, &saved);
-            if (!(n > 0)) {
-                rc = 1;
-                break;
-            }
-            e->v.cam.near = n;
-            demo_view_update(&e->v);
+    for (int light = 0; light < 2; ++light) {
+        demo_image sheet;
+        if (demo_image_alloc(&sheet, 3 * cw, hdr + 4 * ch)) return 1;
+        const uint8_t white[3] = {255, 255, 255}, black[3] = {0, 0, 0};
+        demo_image_fill(&sheet, 0, 0, sheet.w, sheet.h, white);
+        const char* cols[3] = {"shaded", "sampling rate (Listing A.3)", "texel grid (Listing A.4)"};
+        for (int c = 0; c < 3; ++c) demo_image_text(&sheet, c * cw + 8, 8, 2, cols[c], black);
+        if (light == 1) {
+            extras_light(35, 10, &e->v.light);
+            printf("  sun from behind the camera (elevation 35, azimuth 10):\n");
         }
-        rc |= cube_part(e, prog, &sheet, pass, cw, ch, hdr);
+        demo_view lit = e->v;
+        for (int pass = 0; pass < 2; ++pass) {
+            if (pass == 1) {
+                double n = extras_measured_near(e, &lit);
+                if (!(n > 0)) {
+                    rc = 1;
+                    break;
+                }
+                e->v.cam.near = n;
+                demo_view_update(&e->v);
+            }
+            rc |= cube_part(e, prog, &sheet, pass + 2 * light, cw, ch, hdr);
+        }
+        e->v = saved;
+        rc |= extras_write(e, light ? "cube_sheet_behind" : "cube_sheet", &sheet);
+        demo_image_free(&sheet);
     }
-    e->v = saved;
-    rc |= extras_write(e, "cube_sheet", &sheet);
-    demo_image_free(&sheet);
     glDeleteProgram(prog);
     return rc;
 }

@@ -116,8 +116,12 @@ static int one(extras_env* e, GLuint prog, demo_technique t, int splits, const c
     demo_shadow sh;
     if (extras_setup(e, &e->v, t, splits, &sh)) return -1;
     demo_image common;
+    memset(&common, 0, sizeof common);
     int errs = extras_render(e, &e->v, &sh, DEMO_MODE_SHADED, &common);
-    if (errs) return -1;
+    if (errs) {
+        demo_image_free(&common);
+        return -1;
+    }
     demo_view ov;
     outside_view(e, &ov);
 
@@ -139,7 +143,10 @@ static int one(extras_env* e, GLuint prog, demo_technique t, int splits, const c
     glUniformMatrix4fv(glGetUniformLocation(prog, "u_proj"), 1, GL_FALSE, ov.proj);
     float lm[16 * DEMO_MAX_SPLITS], uvs[2 * DEMO_MAX_SPLITS], split[DEMO_MAX_SPLITS + 1];
     for (int i = 0; i < sh.count; ++i) {
-        if (swarp_mat4_to_float(&sh.light[i], lm + 16 * i) != SWARP_OK) return -1;
+        if (swarp_mat4_to_float(&sh.light[i], lm + 16 * i) != SWARP_OK) {
+            demo_image_free(&common);
+            return -1;
+        }
         uvs[2 * i] = (float)sh.viewport[i][0] / (float)e->map;
         uvs[2 * i + 1] = (float)sh.viewport[i][1] / (float)e->map;
     }
@@ -169,8 +176,10 @@ static int one(extras_env* e, GLuint prog, demo_technique t, int splits, const c
     glUniform1i(glGetUniformLocation(prog, "u_shadow"), 0);
     glDrawArrays(GL_TRIANGLES, 0, r->vertex_count);
     glFinish();
-    if (demo_gl_check("visualization view")) return -1;
-    if (demo_image_alloc(out, e->w, e->h)) return -1;
+    if (demo_gl_check("visualization view") || demo_image_alloc(out, e->w, e->h)) {
+        demo_image_free(&common);
+        return -1;
+    }
     demo_render_read_color(r, e->w, e->h, out->px);
 
     /* bodies B (per map), the frusta, the light direction */

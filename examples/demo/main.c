@@ -475,7 +475,9 @@ static int run_technique(const options* o, demo_renderer* r, const demo_view* v,
         return -1;
     }
     demo_render_read_aux(r, tex, pos);
-    res->nrows = demo_measure(v, &sh, o->map, tex, pos, res->rows, 16);
+    /* measured against Lloyd's model only where the model describes the
+     * configuration (not for lixel or cube-face maps) */
+    res->nrows = sh.model_applies ? demo_measure(v, &sh, o->map, tex, pos, res->rows, 16) : 0;
     free(tex);
     free(pos);
     res->max_mx = sh.predicted_max_mx;
@@ -720,12 +722,18 @@ static int run_gallery(const options* o, int single, gallery_report* rep) {
                     mm = res[i].rows[k].mz;
                     pm = res[i].rows[k].pred_mz;
                 }
-            printf("%-14s %9.2f %6d %10.0f %9.2f %9.2f %10.3f %10.3f %9.3f %9d\n", res[i].label,
-                   res[i].setup_us, res[i].passes, res[i].texels, res[i].shadow_ms_total,
-                   res[i].main_ms, mm, pm, mm / pm, res[i].gl_errors);
+            if (res[i].nrows > 0)
+                printf("%-14s %9.2f %6d %10.0f %9.2f %9.2f %10.3f %10.3f %9.3f %9d\n",
+                       res[i].label, res[i].setup_us, res[i].passes, res[i].texels,
+                       res[i].shadow_ms_total, res[i].main_ms, mm, pm, mm / pm, res[i].gl_errors);
+            else
+                printf("%-14s %9.2f %6d %10.0f %9.2f %9.2f %10s %10s %9s %9d\n", res[i].label,
+                       res[i].setup_us, res[i].passes, res[i].texels, res[i].shadow_ms_total,
+                       res[i].main_ms, "-", "-", "-", res[i].gl_errors);
         }
         printf("(meas_mz_mx: the largest measured m_z along the view vector, pred_mz_mx the\n"
-               " library's m_z there; timings: glFinish-bracketed, llvmpipe)\n");
+               " library's m_z there, '-' where Lloyd's model does not describe the maps;\n"
+               " timings: glFinish-bracketed, llvmpipe)\n");
     }
     for (int i = 0; i < n; ++i) free_result(&res[i]);
     printf("total %.1f s\n", (demo_now_ms() - t_start) / 1e3);

@@ -1,11 +1,12 @@
 /* shadow.c -- technique -> light matrices.
  *
- * The library computes every shadow matrix: swarp_setup / swarp_setup_range
- * (uniform, LiSPSM variants, PSM, and each split of PSSM), swarp_split_* (the
- * split distances), swarp_stabilize_directional (stabilised cascades),
- * swarp_lixel_* (plane-stabilised maps) and swarp_error_* (the predicted
- * m_x, m_z).  This file only chooses options and collects the results;
- * nothing in the demo computes shadow maths of its own. */
+ * The library computes every shadow matrix: swarp_setup (uniform, LiSPSM
+ * variants, PSM), swarp_cascade_setup (PSSM with or without LiSPSM),
+ * swarp_split_* + swarp_stabilize_directional (stabilised cascades),
+ * swarp_cube_faces (PSM cube maps), swarp_lixel_* (plane-stabilised maps)
+ * and swarp_error_* (the predicted m_x, m_z).  This file only chooses
+ * options and collects the results; nothing in the demo computes shadow
+ * maths of its own. */
 #include "shadow.h"
 
 #include <cglm/cglm.h>
@@ -171,23 +172,19 @@ static void setup_options(const demo_shadow_request* req, demo_technique t,
     *out = opt;
 }
 
-/* A conventional (non-lixel) map for one technique over the adjusted view
- * range (range = 0) or over [near, far] (range = 1, a split): the library's
- * swarp_setup / swarp_setup_range when the geometry stage is linked in. */
+/* One map over the view's adjusted range ([RHS] §3.3.1): the library's
+ * swarp_setup for the technique, with the points of B when asked for. */
 static int conventional_map(const swarp_camera* cam, const swarp_light* light,
                             const swarp_aabb* scene, const demo_shadow_request* req,
-                            demo_technique t, int range, double near, double far,
-                            swarp_mat4* out_m, double* out_n, double* out_near, double* out_far,
+                            demo_technique t, swarp_mat4* out_m, double* out_n, double* out_near, double* out_far,
                             swarp_vec3* body, int* body_count, swarp_status* out_status) {
     swarp_setup_options opt;
     setup_options(req, t, &opt);
     swarp_setup_result res;
     size_t nb = 0;
     _Static_assert(DEMO_MAX_BODY >= SWARP_BODY_MAX_POINTS, "room for every point of B");
-    swarp_status st = range ? swarp_setup_range(cam, light, scene, near, far, &opt, &res, body,
-                                                body ? DEMO_MAX_BODY : 0, body ? &nb : NULL)
-                            : swarp_setup(cam, light, scene, &opt, &res, body,
-                                          body ? DEMO_MAX_BODY : 0, body ? &nb : NULL);
+    swarp_status st = swarp_setup(cam, light, scene, &opt, &res, body, body ? DEMO_MAX_BODY : 0,
+                                  body ? &nb : NULL);
     if (body_count) *body_count = swarp_status_is_error(st) ? 0 : (int)nb;
     *out_status = st;
     if (swarp_status_is_error(st)) {
@@ -241,7 +238,7 @@ int demo_shadow_setup(const swarp_camera* cam, const swarp_light* light,
             if (sk != SWARP_OK && st == SWARP_OK) st = sk; /* first note or error */
         }
         swarp_status sf;
-        if (conventional_map(cam, light, scene, req, DEMO_TECH_UNIFORM, 0, 0, 0, &sh.light[n],
+        if (conventional_map(cam, light, scene, req, DEMO_TECH_UNIFORM, &sh.light[n],
                              &sh.n_prime[n], &sh.near, &sh.far, NULL, NULL, &sf))
             return -1;
         sh.count = n + 1;
@@ -261,7 +258,7 @@ int demo_shadow_setup(const swarp_camera* cam, const swarp_light* light,
          * camera's post-projective space over it, the light there, and one
          * map per back-facing face of the unit cube */
         double nprime;
-        if (conventional_map(cam, light, scene, req, DEMO_TECH_UNIFORM, 0, 0, 0, &sh.light[0],
+        if (conventional_map(cam, light, scene, req, DEMO_TECH_UNIFORM, &sh.light[0],
                              &nprime, &sh.near, &sh.far, sh.body, &sh.body_count, &st))
             return -1;
         swarp_camera c2 = *cam;
@@ -300,18 +297,13 @@ int demo_shadow_setup(const swarp_camera* cam, const swarp_light* light,
         sh.depth_clamp = 1;
         sh.model_applies = 0;
         sh.status = sc != SWARP_OK ? sc : st;
-        sh.source = "library (swarp_setup range + swarp_cube_faces)";
+        sh.source = "library (swarp_setup's range + swarp_cube_faces)";
         *out = sh;
         return 0;
     }
     int pssm = demo_technique_is_split(t);
     sh.count = pssm ? req->splits : 1;
     if (sh.count < 1 || sh.count > DEMO_MAX_SPLITS) return -1;
-    /* the whole view first: its adjusted range [RHS] §3.3.1 */
-    if (conventional_map(cam, light, scene, req, pssm ? DEMO_TECH_UNIFORM : t, 0, 0, 0,
-                         &sh.light[0], &sh.n_prime[0], &sh.near, &sh.far, sh.body, &sh.body_count,
-                         &st))
-        return -1;
     if (t == DEMO_TECH_PSSM_STABLE) {
         /* [RHS] §3.5 exact solution per split: the split frustum's minimal
          * sphere, texel-snapped.  The splits divide the CAMERA's fixed
@@ -389,6 +381,10 @@ int demo_shadow_setup(const swarp_camera* cam, const swarp_light* light,
         }
         if (sc != SWARP_OK) st = sc;
     } else {
+        /* one map over the view's adjusted range [RHS] §3.3.1 */
+        if (conventional_map(cam, light, scene, req, t, &sh.light[0], &sh.n_prime[0], &sh.near,
+                             &sh.far, sh.body, &sh.body_count, &st))
+            return -1;
         sh.split[0] = sh.near;
         sh.split[1] = sh.far;
     }

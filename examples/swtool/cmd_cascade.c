@@ -290,13 +290,30 @@ static int cascade_model(sw_args* a) {
     return 0;
 }
 
+/* --warp-per-split ([RHS] §3.4 arbitrary warping): "first" or "first:N0"
+ * derives splits 1.. from the first (SWARP_CASCADE_WARP_FROM_FIRST, n'_0 =
+ * N0 or the technique's); a list N0,N1,... gives n' per split (EACH). */
+static int parse_warp_per_split(const char* s, unsigned K, swarp_cascade_options* o) {
+    if (!s) return 1;
+    if (strncmp(s, "first", 5) == 0) {
+        o->warp_per_split = SWARP_CASCADE_WARP_FROM_FIRST;
+        if (s[5] == '\0') return 1;
+        return s[5] == ':' && cli_parse_list(s + 6, &o->n_user[0], 1);
+    }
+    size_t cnt = 1;
+    for (const char* c = s; *c; ++c) cnt += *c == ',';
+    if (cnt > K || cnt > SWARP_CASCADE_MAX_SPLITS) return 0;
+    o->warp_per_split = SWARP_CASCADE_WARP_EACH;
+    return cli_parse_list(s, o->n_user, (int)cnt);
+}
+
 /* The scene form: camera, light and scene box as for `swtool setup`, then
  * swarp_cascade_setup. */
 static int cascade_scene(sw_args* a) {
     static const char* const known[] = {"eye", "dir", "up", "fovy", "aspect", "near", "far", "light-dir",
                                         "light-pos", "box", "map", "screen", "technique", "depth",
                                         "splits", "scheme", "stabilize", "origin", "kernel", "curve",
-                                        "samples", NULL};
+                                        "samples", "min-depth", "warp-per-split", NULL};
     if (!cli_check_known(a, known)) return 2;
     swarp_camera cam;
     memset(&cam, 0, sizeof cam);
@@ -313,7 +330,7 @@ static int cascade_scene(sw_args* a) {
         !cli_double(a, "far", 100.0, &cam.far) || !cli_uint(a, "map", 1024, &map) ||
         !cli_size(a, "screen", 1920, 1080, &sw, &sh) || !cli_uint(a, "splits", 4, &K) ||
         !cli_double(a, "kernel", 1.0, &kernel) || !cli_uint(a, "samples", 64, &samples) ||
-        !cli_vec3(a, "origin", 0, &o.stabilize.origin))
+        !cli_vec3(a, "origin", 0, &o.stabilize.origin) || !cli_double(a, "min-depth", 0.0, &o.setup.min_depth))
         return 2;
     cam.fovy = fovy_deg * SW_DEG;
     const char* ld = cli_opt(a, "light-dir");
@@ -373,6 +390,11 @@ static int cascade_scene(sw_args* a) {
     }
     o.stabilize.levels = levels;
     o.kernel_world_size = kernel;
+    if (!parse_warp_per_split(cli_opt(a, "warp-per-split"), K, &o)) {
+        fprintf(stderr, "swtool %s: --warp-per-split first[:N0] | N0,N1,... (n' per split, eye units; "
+                        "0 = the technique's, inf = uniform; at most --splits values)\n", a->argv[0]);
+        return 2;
+    }
     swarp_cascade_result r;
     swarp_cascade_split sp[SWARP_CASCADE_MAX_SPLITS];
     size_t n;

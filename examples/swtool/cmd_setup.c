@@ -21,7 +21,7 @@ static double now_ns(void) {
 int cmd_setup(sw_args* a) {
     static const char* const known[] = {"eye",   "dir",    "up",        "fovy",  "aspect", "near",
                                         "far",   "light-dir", "light-pos", "box", "map",    "screen",
-                                        "technique", "depth", "reps", NULL};
+                                        "technique", "depth", "reps", "min-depth", NULL};
     /* stage: splits -- `setup --splits K` is the cascade (cmd_cascade.c) */
     if (cli_opt(a, "splits")) return cmd_cascade(a);
     if (!cli_check_known(a, known)) return 2;
@@ -59,12 +59,14 @@ int cmd_setup(sw_args* a) {
     }
     box.min = (swarp_vec3){boxv[0], boxv[1], boxv[2]};
     box.max = (swarp_vec3){boxv[3], boxv[4], boxv[5]};
+    double min_depth = 0.0;
     if (!cli_uint(a, "map", 2048, &map) || !cli_size(a, "screen", 1920, 1080, &sw, &sh) ||
-        !cli_uint(a, "reps", 1, &reps))
+        !cli_uint(a, "reps", 1, &reps) || !cli_double(a, "min-depth", 0.0, &min_depth))
         return 2;
     if (reps == 0) reps = 1;
     swarp_setup_options o;
     memset(&o, 0, sizeof o);
+    o.min_depth = min_depth; /* [RHS] §4.3 measured min depth; 0 = not given */
     o.map_width = o.map_height = map;
     o.screen_width = sw;
     o.screen_height = sh;
@@ -125,7 +127,8 @@ int cmd_setup(sw_args* a) {
         printf("status      %s\n", swarp_status_name(s));
         printf("technique   %s\n", tech ? tech : "lispsm");
         printf("n' (eye)    %.9g\n", r.n_eye);
-        printf("view range  [%.9g, %.9g] (adjusted, [RHS] 3.3.1)\n", r.view_near, r.view_far);
+        printf("view range  [%.9g, %.9g] (adjusted, [RHS] 3.3.1%s)\n", r.view_near, r.view_far,
+               min_depth > 0 ? "; near from the measured min depth, 4.3" : "");
         printf("gamma       %.6g deg\n", r.gamma / SW_DEG);
         printf("max m_x     %.6g\nmax m_z     %.6g\n", r.max_mx, r.max_mz);
         printf("points of B %u\n", r.point_count);
