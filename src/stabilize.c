@@ -63,7 +63,7 @@ static int sw_light_basis(const swarp_vec3* light_dir, swarp_vec3* u, swarp_vec3
                           swarp_vec3* d) {
     if (!sw_normalize(*light_dir, d)) return 0;
     swarp_vec3 helper = fabs(d->y) > 0.99 ? sw_v3(1, 0, 0) : sw_v3(0, 1, 0);
-    sw_normalize(sw_cross(*d, helper), u);
+    if (!sw_normalize(sw_cross(*d, helper), u)) return 0;
     *v = sw_cross(*u, *d);
     return 1;
 }

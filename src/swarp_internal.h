@@ -42,7 +42,10 @@ static inline double sw_len(swarp_vec3 a) { return hypot(hypot(a.x, a.y), a.z); 
 static inline int sw_normalize(swarp_vec3 a, swarp_vec3* out) {
     double l = sw_len(a);
     if (!(l > 0.0) || !sw_finite(l)) return 0;
-    *out = sw_scale(a, 1.0 / l);
+    /* divide, not multiply by 1/l: for a subnormal length 1/l overflows */
+    swarp_vec3 n = sw_v3(a.x / l, a.y / l, a.z / l);
+    if (!sw_finite3(&n)) return 0;
+    *out = n;
     return 1;
 }
 

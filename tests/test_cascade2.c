@@ -606,6 +606,29 @@ START_TEST(min_depth_zero_keeps_result) {
 }
 END_TEST
 
+START_TEST(min_depth_ignored_by_stabilized_cascades) {
+    /* [RHS] §3.5 needs constant split ranges: a measured min depth must not
+     * move the splits of a stabilised cascade (documented) */
+    rng_state = 4346;
+    for (int it = 0; it < 10; ++it) {
+        md_scene s = md_random();
+        swarp_cascade_options o;
+        memset(&o, 0, sizeof o);
+        o.split.count = 3;
+        o.setup.technique = SWARP_TECHNIQUE_UNIFORM;
+        o.stabilize.mode = it % 2 ? SWARP_STABILIZE_SPHERE : SWARP_STABILIZE_LEVELS;
+        swarp_cascade_result r0, r1;
+        swarp_cascade_split a[3], b[3];
+        size_t k;
+        swarp_status s0 = swarp_cascade_setup(&s.cam, &s.light, &s.bound, &o, &r0, a, 3, &k);
+        ck_assert_msg(!swarp_status_is_error(s0), "%s", swarp_status_name(s0));
+        o.setup.min_depth = 0.5 * (s.cam.near + s.cam.far);
+        ck_assert_int_eq(swarp_cascade_setup(&s.cam, &s.light, &s.bound, &o, &r1, b, 3, &k), s0);
+        ck_assert(memcmp(&r0, &r1, sizeof r0) == 0 && memcmp(a, b, sizeof a) == 0);
+    }
+}
+END_TEST
+
 START_TEST(min_depth_bad_inputs) {
     rng_state = 4345;
     md_scene s = md_random();
@@ -660,6 +683,7 @@ int main(void) {
     tcase_set_timeout(t, 60);
     tcase_add_test(t, min_depth_moves_near_out_without_clipping);
     tcase_add_test(t, min_depth_zero_keeps_result);
+    tcase_add_test(t, min_depth_ignored_by_stabilized_cascades);
     tcase_add_test(t, min_depth_bad_inputs);
     suite_add_tcase(s, t);
     SRunner* sr = srunner_create(s);

@@ -440,7 +440,8 @@ class SetupOptions(ctypes.Structure):
                 ("psm_slideback", ctypes.c_uint32), ("_pad0", ctypes.c_uint32),
                 ("_pad1", ctypes.c_uint32), ("n_user", ctypes.c_double),
                 ("pseudo_near", ctypes.c_double), ("pseudo_far", ctypes.c_double),
-                ("slideback", ctypes.c_double), ("_reserved", ctypes.c_uint32 * 4)]
+                ("slideback", ctypes.c_double), ("min_depth", ctypes.c_double),
+                ("_reserved", ctypes.c_uint32 * 2)]
 
 
 class SetupResult(ctypes.Structure):

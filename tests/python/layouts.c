@@ -15,7 +15,7 @@ int main(void) {
     S(swarp_setup_options); S(swarp_setup_result); S(swarp_split_options);
     S(swarp_lixel_options); S(swarp_lixel_info); S(swarp_scene_needs); S(swarp_budget);
     S(swarp_plan_result);
-    O(swarp_setup_options, n_user); O(swarp_setup_options, slideback);
+    O(swarp_setup_options, n_user); O(swarp_setup_options, slideback); O(swarp_setup_options, min_depth);
     O(swarp_setup_result, n_eye); O(swarp_setup_result, point_count);
     O(swarp_lixel_info, conditioning); O(swarp_scene_needs, soft_width); O(swarp_scene_needs, planes);
     O(swarp_budget, time_budget_ns); O(swarp_plan_result, gamma); O(swarp_plan_result, max_mx);
