@@ -136,7 +136,8 @@ static swarp_status sw_extend(const swarp_polyhedron* H, swarp_vec3 u, double T,
     int front[SWARP_POLY_MAX_FACES];
     int any_front = 0;
     *finalized = 0;
-    const double eps = SW_BODY_VISIBLE_EPS_REL * sw_poly_scale(H);
+    /* the tolerance is only needed for the apex (a pass over H's vertices) */
+    const double eps = apex ? SW_BODY_VISIBLE_EPS_REL * sw_poly_scale(H) : 0.0;
     for (uint32_t f = 0; f < H->face_count; ++f) {
         if (apex) {
             swarp_plane p = H->planes[f];
@@ -270,7 +271,7 @@ swarp_status sw_body_h(const swarp_camera* cam, double near, double far, const s
     /* box first: it is usually the smaller, and clipping the frustum by the
      * box's planes keeps the exact axis planes */
     swarp_polyhedron V;
-    swarp_status s = swarp_poly_from_camera_range(cam, near, far, &V);
+    swarp_status s = sw_poly_from_frustum(cam, near, far, &V); /* the callers checked cam, near, far */
     if (s != SWARP_OK) return s;
     s = sw_poly_clip_box(&V, box, H);
     if (s != SWARP_OK) return s;
@@ -293,6 +294,31 @@ swarp_status sw_clip_light_pyramid(swarp_polyhedron* B, const swarp_light* light
         if (st != SWARP_OK) return st;
     }
     return SWARP_OK;
+}
+
+/* The order in which to clip the sweep of H by the planes of S: first the
+ * faces the sweep leaves S through, the one it reaches soonest (smallest
+ * extent / |u| along its axis) first.  That cut removes the far part of the
+ * sweep (T ~ diag(S) long), so the bounds often show that a later plane no
+ * longer cuts, and each cut works on a smaller polyhedron.  The faces u
+ * points away from cannot cut it (H lies in S) and come last. */
+static void sw_sweep_clip_order(swarp_vec3 u, const swarp_aabb* box, uint8_t order[6]) {
+    const double uc[3] = {u.x, u.y, u.z};
+    const double ext[3] = {box->max.x - box->min.x, box->max.y - box->min.y, box->max.z - box->min.z};
+    double key[3];
+    uint8_t ax[3] = {0, 1, 2};
+    for (int c = 0; c < 3; ++c) key[c] = uc[c] != 0.0 ? ext[c] / fabs(uc[c]) : INFINITY;
+    for (int i = 1; i < 3; ++i) /* three keys: insertion sort */
+        for (int j = i; j > 0 && key[ax[j]] < key[ax[j - 1]]; --j) {
+            uint8_t t = ax[j];
+            ax[j] = ax[j - 1];
+            ax[j - 1] = t;
+        }
+    for (int i = 0; i < 3; ++i) {
+        const int c = ax[i], exit_max = uc[c] > 0.0;
+        order[i] = (uint8_t)(2 * c + exit_max);
+        order[3 + i] = (uint8_t)(2 * c + !exit_max);
+    }
 }
 
 swarp_status sw_body_from_h(const swarp_polyhedron* H, const swarp_light* light, const swarp_aabb* box,
@@ -341,7 +367,9 @@ swarp_status sw_body_from_h(const swarp_polyhedron* H, const swarp_light* light,
          * as H's vertices: nothing to merge, only faces to tidy (sw_extend
          * has done that for a tidy H) */
         if (!finalized) sw_poly_finalize(&M, M.vertex_count, 0.0);
-        s = sw_poly_clip_box(&M, box, B);
+        uint8_t order[6];
+        sw_sweep_clip_order(u, box, order);
+        s = sw_poly_clip_box_order(&M, box, order, B);
         if (s != SWARP_OK) return s;
     }
     if (B->vertex_count == 0) return SWARP_ERR_BODY_EMPTY;

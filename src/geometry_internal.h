@@ -34,10 +34,17 @@ void sw_camera_basis(const swarp_camera* cam, swarp_vec3* f, swarp_vec3* r, swar
 
 /* Internal polyhedron operations (no argument checks). */
 void sw_poly_from_corners(const swarp_vec3 c[8], swarp_polyhedron* out);
+/* V for [near, far] of a camera its caller has checked (shape, 0 < near < far):
+ * the checks of swarp_poly_from_camera_range are not repeated */
+swarp_status sw_poly_from_frustum(const swarp_camera* cam, double near, double far, swarp_polyhedron* out);
 swarp_status sw_poly_clip(const swarp_polyhedron* in, swarp_vec3 n, double d,
                           swarp_polyhedron* out);
 swarp_status sw_poly_clip_box(const swarp_polyhedron* in, const swarp_aabb* box,
                               swarp_polyhedron* out);
+/* the same with the planes in a given order (plane k: axis k / 2, the max
+ * side when k is odd) */
+swarp_status sw_poly_clip_box_order(const swarp_polyhedron* in, const swarp_aabb* box, const uint8_t order[6],
+                                    swarp_polyhedron* out);
 double sw_poly_scale(const swarp_polyhedron* p);
 /* merge near-duplicate vertices (vertices from index first_new on are
  * compared with all earlier ones; those before are known to be apart),

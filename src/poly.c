@@ -313,6 +313,15 @@ static void sw_frustum_corners(const swarp_camera* cam, double near, double far,
     }
 }
 
+swarp_status sw_poly_from_frustum(const swarp_camera* cam, double near, double far, swarp_polyhedron* out) {
+    swarp_vec3 c[8];
+    sw_frustum_corners(cam, near, far, c);
+    for (int i = 0; i < 8; ++i)
+        if (!sw_finite3(&c[i])) return SWARP_ERR_NON_FINITE;
+    sw_poly_from_corners(c, out);
+    return SWARP_OK;
+}
+
 SWARP_API swarp_status swarp_poly_from_camera_range(const swarp_camera* cam, double near, double far,
                                                     swarp_polyhedron* out) {
     if (!cam || !out) return SWARP_ERR_NULL_POINTER;
@@ -320,12 +329,7 @@ SWARP_API swarp_status swarp_poly_from_camera_range(const swarp_camera* cam, dou
     if (s != SWARP_OK) return s;
     if (!sw_finite(near) || !sw_finite(far)) return SWARP_ERR_NON_FINITE;
     if (!(near > 0.0 && far > near)) return SWARP_ERR_NEAR_FAR;
-    swarp_vec3 c[8];
-    sw_frustum_corners(cam, near, far, c);
-    for (int i = 0; i < 8; ++i)
-        if (!sw_finite3(&c[i])) return SWARP_ERR_NON_FINITE;
-    sw_poly_from_corners(c, out);
-    return SWARP_OK;
+    return sw_poly_from_frustum(cam, near, far, out);
 }
 
 SWARP_API swarp_status swarp_poly_from_camera(const swarp_camera* cam, swarp_polyhedron* out) {
@@ -381,12 +385,17 @@ static double sw_pseudo_angle(double x, double y) {
 /* Clips in into out (out != in).  When no vertex lies outside, *unchanged
  * is set and out is not written. */
 static swarp_status sw_poly_clip_to(const swarp_polyhedron* in, swarp_vec3 n_raw, double d_raw,
-                                    swarp_polyhedron* out, int* unchanged, double scale /* 0: compute */) {
+                                    swarp_polyhedron* out, int* unchanged, double scale /* 0: compute */,
+                                    int unit_normal /* n is a unit axis (box planes): no sqrt, no division */) {
     *unchanged = 0;
-    double len = sw_glen(n_raw);
-    if (!(len > 0.0)) return SWARP_ERR_ZERO_VECTOR;
-    swarp_vec3 n = sw_scale(n_raw, 1.0 / len);
-    double d = d_raw / len;
+    swarp_vec3 n = n_raw;
+    double d = d_raw;
+    if (!unit_normal) {
+        double len = sw_glen(n_raw);
+        if (!(len > 0.0)) return SWARP_ERR_ZERO_VECTOR;
+        n = sw_scale(n_raw, 1.0 / len);
+        d = d_raw / len;
+    }
     const uint32_t nv = in->vertex_count;
     if (nv == 0) {
         *unchanged = 1;
@@ -438,8 +447,7 @@ static swarp_status sw_poly_clip_to(const swarp_polyhedron* in, swarp_vec3 n_raw
     for (uint32_t f = 0; f < in->face_count; ++f) {
         uint32_t fn = in->face_vertex_count[f];
         const uint8_t* fl = in->face_vertices[f];
-        if (tf >= SWARP_POLY_MAX_FACES) return SWARP_ERR_CAPACITY;
-        uint8_t* loop = t->face_vertices[tf]; /* written in place */
+        uint8_t* loop = t->face_vertices[tf]; /* tf <= f < SWARP_POLY_MAX_FACES */
         /* most faces lie wholly on one side: only cut faces need the walk
          * over their edges */
         unsigned any = 0;
@@ -499,7 +507,10 @@ static swarp_status sw_poly_clip_to(const swarp_polyhedron* in, swarp_vec3 n_raw
         /* in-plane basis (e1, e2) with e1 x e2 = n */
         swarp_vec3 ref = fabs(n.x) < 0.6 ? sw_v3(1, 0, 0) : (fabs(n.y) < 0.6 ? sw_v3(0, 1, 0) : sw_v3(0, 0, 1));
         swarp_vec3 e1 = {1, 0, 0}, e2;
-        sw_gnormalize(sw_cross(ref, n), &e1);
+        if (unit_normal) /* an axis: ref x n is a unit axis already */
+            e1 = sw_cross(ref, n);
+        else
+            sw_gnormalize(sw_cross(ref, n), &e1);
         e2 = sw_cross(n, e1);
         double key[SWARP_POLY_MAX_FACE_VERTICES];
         uint8_t* idx = t->face_vertices[tf];
@@ -533,7 +544,7 @@ swarp_status sw_poly_clip(const swarp_polyhedron* in, swarp_vec3 n, double d, sw
     swarp_polyhedron tmp;
     swarp_polyhedron* dst = (out == in) ? &tmp : out;
     int unchanged = 0;
-    swarp_status s = sw_poly_clip_to(in, n, d, dst, &unchanged, 0.0);
+    swarp_status s = sw_poly_clip_to(in, n, d, dst, &unchanged, 0.0, 0);
     if (s != SWARP_OK) return s;
     if (unchanged) {
         if (out != in) sw_poly_copy(in, out);
@@ -555,7 +566,8 @@ static void sw_poly_bounds(const swarp_polyhedron* p, double lo[3], double hi[3]
     hi[0] = hx, hi[1] = hy, hi[2] = hz;
 }
 
-swarp_status sw_poly_clip_box(const swarp_polyhedron* in, const swarp_aabb* box, swarp_polyhedron* out) {
+swarp_status sw_poly_clip_box_order(const swarp_polyhedron* in, const swarp_aabb* box, const uint8_t order[6],
+                                    swarp_polyhedron* out) {
     const swarp_vec3 ns[6] = {{-1, 0, 0}, {1, 0, 0}, {0, -1, 0}, {0, 1, 0}, {0, 0, -1}, {0, 0, 1}};
     const double ds[6] = {box->min.x, -box->max.x, box->min.y, -box->max.y, box->min.z, -box->max.z};
     const double* bmin = &box->min.x;
@@ -566,15 +578,15 @@ swarp_status sw_poly_clip_box(const swarp_polyhedron* in, const swarp_aabb* box,
     const swarp_polyhedron* src = in;
     double lo[3], hi[3];
     sw_poly_bounds(in, lo, hi);
-    for (int k = 0; k < 6; ++k) {
-        int c = k / 2;
+    for (int q = 0; q < 6; ++q) {
+        const int k = order[q], c = k / 2;
         if ((k & 1) ? !(hi[c] > bmax[c]) : !(lo[c] < bmin[c])) continue;
         swarp_polyhedron* dst = (src == out) ? &buf : out;
         int unchanged = 0;
         /* the scale from the bounds: the largest absolute coordinate */
         double sc = 1e-300;
-        for (int q = 0; q < 3; ++q) sc = sw_max(sc, sw_max(fabs(lo[q]), fabs(hi[q])));
-        swarp_status s = sw_poly_clip_to(src, ns[k], ds[k], dst, &unchanged, sc);
+        for (int a = 0; a < 3; ++a) sc = sw_max(sc, sw_max(fabs(lo[a]), fabs(hi[a])));
+        swarp_status s = sw_poly_clip_to(src, ns[k], ds[k], dst, &unchanged, sc, 1);
         if (s != SWARP_OK) return s;
         if (unchanged) continue;
         src = dst;
@@ -583,6 +595,11 @@ swarp_status sw_poly_clip_box(const swarp_polyhedron* in, const swarp_aabb* box,
     }
     if (src != out) sw_poly_copy(src, out);
     return SWARP_OK;
+}
+
+swarp_status sw_poly_clip_box(const swarp_polyhedron* in, const swarp_aabb* box, swarp_polyhedron* out) {
+    static const uint8_t order[6] = {0, 1, 2, 3, 4, 5}; /* -x, +x, -y, +y, -z, +z */
+    return sw_poly_clip_box_order(in, box, order, out);
 }
 
 /* A caller's polyhedron: counts within capacity, indices valid, finite. */

@@ -155,7 +155,10 @@ static swarp_status sw_setup_points(const swarp_camera* cam, const swarp_light* 
             if (swarp_status_is_error(s)) return s;
             info = sw_info_merge(info, s);
         }
-        sw_mul(&P0, &L, &M);
+        if (light->type == SWARP_LIGHT_POINT)
+            sw_mul(&P0, &L, &M);
+        else
+            M = L; /* P0 = I: skip the product */
         if (light->type == SWARP_LIGHT_POINT) {
             if (!sw_invert(&M, &M_inv)) return SWARP_ERR_SINGULAR;
         } else { /* a rigid look-at: the inverse is the transpose and -R^T t */
@@ -168,30 +171,35 @@ static swarp_status sw_setup_points(const swarp_camera* cam, const swarp_light* 
                          sw_at(&M, 2, r) * sw_at(&M, 2, 3)));
             sw_set(&M_inv, 3, 3, 1.0);
         }
-        /* the points the map must see; point lights drop the apex region */
+        /* the points the map must see; point lights drop the apex region
+         * (into Bk, Hk); a directional light uses B and H as they are */
         swarp_vec3 Bk[SWARP_BODY_MAX_POINTS + 1];
-        size_t nbk = 0;
-        for (size_t i = 0; i < nb && nbk < SWARP_BODY_MAX_POINTS; ++i) {
-            if (light->type == SWARP_LIGHT_POINT) {
+        swarp_vec3 Hk[SWARP_BODY_MAX_POINTS];
+        const swarp_vec3* Bp = B;
+        const swarp_vec3* Hp = H;
+        size_t nbk = nb < SWARP_BODY_MAX_POINTS ? nb : SWARP_BODY_MAX_POINTS;
+        size_t nhk = !H ? 0 : nh < SWARP_BODY_MAX_POINTS ? nh : SWARP_BODY_MAX_POINTS;
+        if (light->type == SWARP_LIGHT_POINT) {
+            nbk = 0;
+            for (size_t i = 0; i < nb && nbk < SWARP_BODY_MAX_POINTS; ++i) {
                 swarp_vec4 h = sw_xform_point(&L, B[i]);
                 if (-h.z < res.light_near) continue;
+                Bk[nbk++] = B[i];
             }
-            Bk[nbk++] = B[i];
-        }
-        if (nbk == 0) return SWARP_ERR_BODY_EMPTY;
-        /* the receivers for pancaking, with the same cut */
-        swarp_vec3 Hk[SWARP_BODY_MAX_POINTS];
-        size_t nhk = 0;
-        for (size_t i = 0; H && i < nh && nhk < SWARP_BODY_MAX_POINTS; ++i) {
-            if (light->type == SWARP_LIGHT_POINT) {
+            /* the receivers for pancaking, with the same cut */
+            nhk = 0;
+            for (size_t i = 0; H && i < nh && nhk < SWARP_BODY_MAX_POINTS; ++i) {
                 swarp_vec4 h = sw_xform_point(&L, H[i]);
                 if (-h.z < res.light_near) continue;
+                Hk[nhk++] = H[i];
             }
-            Hk[nhk++] = H[i];
+            Bp = Bk;
+            Hp = Hk;
         }
+        if (nbk == 0) return SWARP_ERR_BODY_EMPTY;
         if (light->type == SWARP_LIGHT_POINT) { /* the depth actually covered */
             double dmin = INFINITY;
-            for (size_t i = 0; i < nbk; ++i) dmin = fmin(dmin, -sw_xform_point(&L, Bk[i]).z);
+            for (size_t i = 0; i < nbk; ++i) dmin = fmin(dmin, -sw_xform_point(&L, Bp[i]).z);
             res.light_near = dmin;
         }
         swarp_mat4 P;
@@ -205,7 +213,7 @@ static swarp_status sw_setup_points(const swarp_camera* cam, const swarp_light* 
             w.n_user = o->n_user;
             w.pseudo_near = o->pseudo_near;
             w.pseudo_far = o->pseudo_far;
-            s = sw_warp_lispsm(&M, &M_inv, cam, near, far, Bk, nbk, ep, &w, &P, &wi);
+            s = sw_warp_lispsm(&M, &M_inv, cam, near, far, Bp, nbk, ep, &w, &P, &wi);
             if (swarp_status_is_error(s)) return s;
             info = sw_info_merge(info, s);
         } else {
@@ -218,12 +226,12 @@ static swarp_status sw_setup_points(const swarp_camera* cam, const swarp_light* 
         sw_mul(&P, &M, &PM);
         /* pancaking: the depth range covers the receivers H only; casters
          * nearer the light are clamped to the near plane by the renderer */
-        const swarp_vec3* zp = (o->pancake && nhk > 0) ? Hk : NULL;
-        s = sw_focus_fit(&PM, Bk, nbk, zp, nhk, dr, &A);
+        const swarp_vec3* zp = (o->pancake && nhk > 0) ? Hp : NULL;
+        s = sw_focus_fit(&PM, Bp, nbk, zp, nhk, dr, &A);
         if (swarp_status_is_error(s)) return s;
         info = sw_info_merge(info, s);
-        swarp_mat4 proj;
-        sw_mul(&P, &P0, &proj);
+        swarp_mat4 proj = P; /* P P0, P0 = I for a directional light */
+        if (light->type == SWARP_LIGHT_POINT) sw_mul(&P, &P0, &proj);
         sw_mul(&A, &proj, &res.light_proj);
         res.light_view = L;
         sw_mul(&res.light_proj, &L, &res.matrix);
@@ -237,12 +245,14 @@ static swarp_status sw_setup_points(const swarp_camera* cam, const swarp_light* 
         if (light->type != SWARP_LIGHT_POINT) {
             /* light depth range in light view units (distance along the light) */
             double lo = INFINITY, hi = -INFINITY;
-            const swarp_vec3* zs = zp ? zp : Bk;
+            const swarp_vec3* zs = zp ? zp : Bp;
             size_t zn = zp ? nhk : nbk;
+            /* only the z row of the rigid L is needed; the points are finite */
+            const double l20 = sw_at(&L, 2, 0), l21 = sw_at(&L, 2, 1), l22 = sw_at(&L, 2, 2), l23 = sw_at(&L, 2, 3);
             for (size_t i = 0; i < zn; ++i) {
-                swarp_vec4 h = sw_xform_point(&L, zs[i]);
-                lo = fmin(lo, -h.z);
-                hi = fmax(hi, -h.z);
+                double D = -(l20 * zs[i].x + l21 * zs[i].y + l22 * zs[i].z + l23);
+                lo = D < lo ? D : lo;
+                hi = D > hi ? D : hi;
             }
             res.light_near = lo;
             res.light_far = hi;
