@@ -36,16 +36,19 @@ valgrind_step() {
     # python3 is not our binary; valgrind computes SSE in round-to-nearest only;
     # the demo's llvmpipe JIT takes minutes per frame under memcheck and reports
     # the driver's own uninitialised reads: the demo runs under ASan+UBSan above.
+    # tests/valgrind.supp: test bugs only (each reported to its stage).
     SWARP_HARD_CASES_SIZE=1000 SWARP_THREADS_CASES=40 meson test -C build-ci --no-suite python --no-suite fenv \
         --no-suite demo --no-suite gl --print-errorlogs \
-        --wrap='valgrind --error-exitcode=1 --leak-check=full --errors-for-leak-kinds=definite,indirect --track-origins=yes -q' \
+        --wrap="valgrind --error-exitcode=1 --leak-check=full --errors-for-leak-kinds=definite,indirect --track-origins=yes -q --suppressions=$PWD/tests/valgrind.supp" \
         --timeout-multiplier=10
 }
 echo "== valgrind memcheck (every test binary except python, fenv and the OSMesa ones (demo, gl))"
 step valgrind valgrind_step
 
 coverage_step() {
-    [ -d build-cov ] || meson setup build-cov -Db_coverage=true --buildtype=debug >/dev/null
+    # atomic counters: the threads test runs 8 threads through the library
+    [ -d build-cov ] || meson setup build-cov -Db_coverage=true --buildtype=debug \
+        -Dc_args=-fprofile-update=atomic >/dev/null
     ninja -C build-cov >/dev/null
     find build-cov -name '*.gcda' -delete
     meson test -C build-cov --no-suite python --no-suite demo --no-suite gl >/dev/null ||
@@ -53,10 +56,13 @@ coverage_step() {
     gcovr -r . --filter 'src/' --exclude-unreachable-branches --exclude-throw-branches build-cov | tail -n 60
     gcovr -r . --filter 'src/' --exclude-unreachable-branches --exclude-throw-branches --print-summary \
         -o build-cov/coverage-summary.txt build-cov
-    if [ -n "${SWARP_COV_FAIL_UNDER:-}" ]; then
-        # e.g. SWARP_COV_FAIL_UNDER="95 90" fails below 95 % lines or 90 % branches
+    # Fails below 95 % lines (the figure, reached) or 85 % branches (a
+    # guard below the 88 % measured; the 90 % is not reached yet, see
+    # docs/quality.md).  SWARP_COV_FAIL_UNDER="L B" changes it, "" turns it off.
+    if [ -n "${SWARP_COV_FAIL_UNDER-95 85}" ]; then
+        cov_limits="${SWARP_COV_FAIL_UNDER-95 85}"
         # shellcheck disable=SC2086
-        set -- $SWARP_COV_FAIL_UNDER
+        set -- $cov_limits
         gcovr -r . --filter 'src/' --exclude-unreachable-branches --exclude-throw-branches \
             --fail-under-line "$1" --fail-under-branch "$2" -o build-cov/coverage-summary.txt build-cov
     fi

@@ -253,7 +253,7 @@ static void e_lixel_matrix(swr_ctx* c) {
     static const swarp_status dom[] = {SWARP_ERR_LIXEL_PLANE_THROUGH_EYE, SWARP_ERR_LIXEL_LIGHT_ON_PLANE,
                                        SWARP_ERR_LIXEL_LIGHT_PARALLEL_PLANE, SWARP_ERR_LIXEL_PLANE_NOT_VISIBLE,
                                        SWARP_ERR_SINGULAR, SWARP_ERR_ZERO_VECTOR};
-    for (size_t i = 0; i < sizeof dom / sizeof dom[0]; ++i) swr_allow(c, dom[i]);
+    for (size_t i = 0; i < sizeof dom / sizeof dom[0]; ++i) swr_domain(c, dom[i]);
     /* finding: COPLANAR is not among lixel_matrix's documented statuses but
      * comes back for eyes offset by 1e5..1e6 (docs/quality.md) */
     swr_finding_status(c, SWARP_ERR_LIXEL_COPLANAR);
@@ -342,7 +342,7 @@ static void e_lixel_restrict(swr_ctx* c) {
     if (n == 0) swr_expect(c, SWARP_ERR_INVALID_ARGUMENT);
     static const swarp_status dom[] = {SWARP_ERR_LIXEL_RAY_OUTSIDE, SWARP_ERR_LIXEL_EMPTY,
                                        SWARP_ERR_LIXEL_RECT_TOO_LARGE, SWARP_ERR_OUT_OF_RANGE};
-    for (size_t i = 0; i < sizeof dom / sizeof dom[0]; ++i) swr_allow(c, dom[i]);
+    for (size_t i = 0; i < sizeof dom / sizeof dom[0]; ++i) swr_domain(c, dom[i]);
     swarp_lixel_rect r;
     swarp_mat4 A, out;
     swr_fill(&r, sizeof r);
@@ -468,7 +468,7 @@ static void e_lixel_split(swr_ctx* c) {
     if (n < 3) swr_expect(c, SWARP_ERR_INVALID_ARGUMENT);
     static const swarp_status dom[] = {SWARP_ERR_CAPACITY, SWARP_ERR_DEGENERATE, SWARP_ERR_ZERO_VECTOR,
                                        SWARP_ERR_INVALID_ARGUMENT};
-    for (size_t i = 0; i < sizeof dom / sizeof dom[0]; ++i) swr_allow(c, dom[i]);
+    for (size_t i = 0; i < sizeof dom / sizeof dom[0]; ++i) swr_domain(c, dom[i]);
     swarp_vec4 of[10], ow[10];
     size_t cf, cw;
     swr_fill(of, sizeof of);

@@ -187,13 +187,14 @@ static void e_stabilize_sphere(swr_ctx* c) {
     swr_rec(c, "center", ctr.z);
     swr_rec(c, "radius", rad);
     SWR_CHECK(c, rad > 0, "radius %g", rad);
-    if (!n_cr) SWR_CHECK(c, crad >= rad * (1 - 1e-12), "centroid radius %g below the minimal %g", crad, rad);
+    /* positions (and so radii of tiny spheres far from the origin) carry an ulp of the eye's magnitude */
+    double eye_ulp = 8 * DBL_EPSILON * (fabs(cam.eye.x) + fabs(cam.eye.y) + fabs(cam.eye.z) + f);
+    if (!n_cr) SWR_CHECK(c, crad >= rad * (1 - 1e-12) - eye_ulp, "centroid radius %g below the minimal %g", crad, rad);
     /* the far corners are inside the sphere */
     double l = sqrt(cam.dir.x * cam.dir.x + cam.dir.y * cam.dir.y + cam.dir.z * cam.dir.z);
     double ty = tan(cam.fovy / 2), tx = ty * cam.aspect;
     double halfdiag = f * sqrt(1 + tx * tx + ty * ty); /* distance eye -> far corner */
-    double dist = sqrt((ctr.x - cam.eye.x) * (ctr.x - cam.eye.x) + (ctr.y - cam.eye.y) * (ctr.y - cam.eye.y) +
-                       (ctr.z - cam.eye.z) * (ctr.z - cam.eye.z));
+    double dist = hypot(hypot(ctr.x - cam.eye.x, ctr.y - cam.eye.y), ctr.z - cam.eye.z); /* no overflow */
     (void)l;
     /* positions carry an ulp of their magnitude */
     double pos_ulp = 8 * DBL_EPSILON * (fabs(cam.eye.x) + fabs(cam.eye.y) + fabs(cam.eye.z) + fabs(ctr.x) + fabs(ctr.y) + fabs(ctr.z));
