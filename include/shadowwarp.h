@@ -348,9 +348,10 @@ SWARP_API swarp_status swarp_mat4_transform(const swarp_mat4* m, const swarp_vec
  * (the eye's near distance, overhead light) is PSM; n -> inf is uniform.
  *
  * Huge values, one rule for every parameter below: the exactly degenerate
- * input (z_1 == z_0, eta == -1, theta == 0) gives +INFINITY; a value that is
- * finite in exact arithmetic but exceeds DBL_MAX is written as DBL_MAX.  Both
- * come with SWARP_INFO_WARP_UNIFORM.  Angles are radians.
+ * input (z_1 == z_0, eta == -1) gives +INFINITY; a value that is finite in
+ * exact arithmetic but exceeds DBL_MAX is written as DBL_MAX.  Both come with
+ * SWARP_INFO_WARP_UNIFORM.  The [GMNPR] λ functions are finite on all of
+ * [0, pi/2]: their θ == 0 also writes DBL_MAX.  Angles are radians.
  */
 
 /** @brief LiSPSM n_opt, general form.  [RHS] (3.2) (from [WS06])
@@ -458,16 +459,15 @@ SWARP_API swarp_status swarp_gmnpr_lambda12(double theta, double phi, double n, 
                                             double* out_lambda_1, double* out_lambda_2);
 /** @brief λ_GMNPR(θ) of [GMNPR] (8), with λ_2* of (7) for θ < φ.
  *  θ in [0, pi/2]; finite and positive for θ > 0, continuous at θ = φ,
- *  growing without bound as θ -> 0; θ = 0 gives +INFINITY with
- *  SWARP_INFO_WARP_UNIFORM (and θ so small that λ overflows gives DBL_MAX
- *  with SWARP_INFO_WARP_UNIFORM).
+ *  growing without bound as θ -> 0; never Inf or NaN: θ = 0 (and θ so
+ *  small that λ overflows) gives DBL_MAX with SWARP_INFO_WARP_UNIFORM.
  *  @return SWARP_OK (θ >= φ), SWARP_INFO_GMNPR_ADJUSTED (0 < θ < φ),
  *  SWARP_INFO_WARP_UNIFORM, the common checks. */
 SWARP_API swarp_status swarp_gmnpr_lambda(double theta, double phi, double n, double f,
                                           double* out_lambda);
 /** @brief λ_LiSPSM(θ) of [GMNPR] (9): P_n = (n + sqrt(fn))/sin θ over the
- *  normalised depth P_f - P_n.  θ in [0, pi/2]; θ = 0 gives +INFINITY with
- *  SWARP_INFO_WARP_UNIFORM.  At θ = π/2 it equals n_opt/(f - n).
+ *  normalised depth P_f - P_n.  θ in [0, pi/2]; θ = 0 gives DBL_MAX (finite)
+ *  with SWARP_INFO_WARP_UNIFORM.  At θ = π/2 it equals n_opt/(f - n).
  *  @return SWARP_OK, SWARP_INFO_WARP_UNIFORM, the common checks. */
 SWARP_API swarp_status swarp_gmnpr_lambda_lispsm(double theta, double phi, double n, double f,
                                                  double* out_lambda);
@@ -475,7 +475,7 @@ SWARP_API swarp_status swarp_gmnpr_lambda_lispsm(double theta, double phi, doubl
  *  derived from (2): F linear in z <=> φ(λ, θ) = 0).  For θ > φ:
  *  λ = n (1 - tanφ/tanθ) / (f - n + (f + n) tanφ/tanθ), which is n/(f - n)
  *  (PSM) at θ = π/2.  For θ <= φ there is no positive solution: λ_GMNPR(θ) is
- *  written instead with SWARP_INFO_GLPR_NO_SOLUTION (θ = 0: +INFINITY with
+ *  written instead with SWARP_INFO_GLPR_NO_SOLUTION (θ = 0: DBL_MAX with
  *  SWARP_INFO_WARP_UNIFORM).  Derivation in docs/parameters.md.
  *  @return SWARP_OK, SWARP_INFO_GLPR_NO_SOLUTION, SWARP_INFO_WARP_UNIFORM,
  *  the common checks. */

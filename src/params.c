@@ -308,7 +308,11 @@ static swarp_status sw_theta_closed_check(double theta, double phi, double n, do
 /* lambda_GMNPR without checks; theta in [0, pi/2]. */
 static swarp_status sw_lambda_gmnpr(double theta, double phi, double n, double f, double* out) {
     if (theta == 0.0) {
-        *out = INFINITY; /* (6): converges to the standard (uniform) shadow map */
+        /* (6): converges to the standard (uniform) shadow map.  The contract of
+         * lambda is "never Inf on [0, pi/2]" (issue 2), so theta = 0 writes the
+         * largest finite double, which the error model and the warp treat as
+         * uniform exactly like +INFINITY. */
+        *out = DBL_MAX;
         return SWARP_INFO_WARP_UNIFORM;
     }
     if (theta >= phi) {
@@ -337,7 +341,7 @@ SWARP_API swarp_status swarp_gmnpr_lambda_lispsm(double theta, double phi, doubl
     swarp_status s = sw_theta_closed_check(theta, phi, n, f);
     if (s != SWARP_OK) return s;
     if (theta == 0.0) {
-        *out_lambda = INFINITY; /* P_n = inf: duelling frusta */
+        *out_lambda = DBL_MAX; /* P_n = inf: duelling frusta; finite, like lambda_GMNPR */
         return SWARP_INFO_WARP_UNIFORM;
     }
     double P_n = (n + sqrt(f) * sqrt(n)) / sin(theta);

@@ -749,7 +749,8 @@ static void e_gmnpr_lambda(swr_ctx* c) {
     if (!swr_verdict(c, st, 1, (void*)&out, sizeof out)) return;
     const double args[4] = {g.theta, g.phi, g.n, g.f};
     long double ref = g.theta > 0 ? ref_lgmnpr((const long double[]){g.theta, g.phi, g.n, g.f}) : INFINITY;
-    if (!check_huge(c, "lambda_GMNPR", out, g.theta == 0.0, ref)) return;
+    /* theta = 0 is finite by contract (DBL_MAX + INFO_WARP_UNIFORM, issue 2): not "degenerate" */
+    if (!check_huge(c, "lambda_GMNPR", out, 0, ref)) return;
     SWR_CHECK_ACC(c, out > 0, "lambda = %g <= 0", out);
     if (g.theta >= g.phi) SWR_CHECK(c, st == SWARP_OK, "theta >= phi but %s", swarp_status_name(st));
     else SWR_CHECK(c, st == SWARP_INFO_GMNPR_ADJUSTED, "theta < phi but %s", swarp_status_name(st));
@@ -770,7 +771,7 @@ static void e_gmnpr_lambda_lispsm(swr_ctx* c) {
     if (!swr_verdict(c, st, 1, (void*)&out, sizeof out)) return;
     const double args[4] = {g.theta, g.phi, g.n, g.f};
     long double ref = g.theta > 0 ? ref_llispsm((const long double[]){g.theta, g.phi, g.n, g.f}) : INFINITY;
-    if (!check_huge(c, "lambda_LiSPSM", out, g.theta == 0.0, ref)) return;
+    if (!check_huge(c, "lambda_LiSPSM", out, 0, ref)) return;
     SWR_CHECK_ACC(c, out > 0 || (out == 0 && ref < DBL_MIN), "lambda = %g <= 0", out);
     swr_close_cond(c, "lambda_LiSPSM [GMNPR] (9)", out, ref_llispsm, args, 4);
 }
@@ -791,7 +792,7 @@ static void e_gmnpr_lambda_glpr(swr_ctx* c) {
         double lg = 0;
         swarp_status sg = swarp_gmnpr_lambda ? SWR_CALL(c, swarp_gmnpr_lambda(g.theta, g.phi, g.n, g.f, &lg)) : SWARP_OK;
         swr_rec_inf(c, "lambda_GLPR", out);
-        if (g.theta == 0.0) SWR_CHECK(c, out == INFINITY && st == SWARP_INFO_WARP_UNIFORM, "theta = 0: %g, %s", out,
+        if (g.theta == 0.0) SWR_CHECK(c, out == DBL_MAX && st == SWARP_INFO_WARP_UNIFORM, "theta = 0: %g, %s", out,
                                       swarp_status_name(st));
         else if (sg == SWARP_INFO_WARP_UNIFORM) SWR_CHECK(c, out == lg, "GLPR %.17g, lambda_GMNPR %.17g (huge)", out, lg);
         else {
