@@ -751,9 +751,11 @@ static int run_gallery(const options* o, int single, gallery_report* rep) {
                res[n].sh.status != SWARP_OK ? "; " : "",
                res[n].sh.status != SWARP_OK ? swarp_status_name(res[n].sh.status) : "");
         if (t == TECH_PLANNED) {
-            printf("planned        rendered %d shadow passes (%s, filter %s); the plan asks for %u\n",
+            printf("planned        rendered %d shadow passes (%s, filter %s) over [%.3g, %.3g]; "
+                   "the plan asks for %u over [%.3g, %.3g]\n",
                    res[n].passes - 1, demo_technique_name(tt), demo_filter_name(q.filter),
-                   plan.plan.shadow_passes);
+                   res[n].sh.near, res[n].sh.far, plan.plan.shadow_passes, plan.plan.near,
+                   plan.plan.far);
             if (rep) rep->planned_passes = res[n].passes - 1;
         }
         if (single) {
