@@ -53,7 +53,11 @@ static int cmp(const void* a, const void* b) {
 #define NCONF 64
 #define REPS 20000
 
-int main(void) {
+/* `bench_setup --calls N [point]`: only N untimed calls, LiSPSM n_opt, for
+ * instruction and cycle counts (perf stat, callgrind): subtract N = 0. */
+int main(int argc, char** argv) {
+    long calls = argc >= 3 && strcmp(argv[1], "--calls") == 0 ? atol(argv[2]) : -1;
+    int calls_point = argc >= 4 && strcmp(argv[3], "point") == 0;
     /* a walkthrough-like set: camera inside a terrain box, looking around */
     swarp_camera cams[NCONF];
     swarp_vec3 dirs[NCONF];
@@ -80,6 +84,28 @@ int main(void) {
                  {"lispsm (n_repar)", SWARP_TECHNIQUE_LISPSM, SWARP_WARP_PARAM_NREPAR},
                  {"lispsm (gmnpr)", SWARP_TECHNIQUE_LISPSM, SWARP_WARP_PARAM_GMNPR},
                  {"psm", SWARP_TECHNIQUE_PSM, SWARP_WARP_PARAM_DEFAULT}};
+    if (calls >= 0) {
+        swarp_setup_options o;
+        memset(&o, 0, sizeof o);
+        o.technique = SWARP_TECHNIQUE_LISPSM;
+        o.param = SWARP_WARP_PARAM_NOPT;
+        swarp_light light;
+        memset(&light, 0, sizeof light);
+        light.type = calls_point ? SWARP_LIGHT_POINT : SWARP_LIGHT_DIRECTIONAL;
+        swarp_setup_result r;
+        swarp_vec3 pts[SWARP_BODY_MAX_POINTS];
+        size_t np;
+        long ok = 0;
+        for (long k = 0; k < calls; ++k) {
+            const swarp_camera* c = &cams[k % NCONF];
+            light.direction = dirs[k % NCONF];
+            light.position = (swarp_vec3){c->eye.x - 800 * dirs[k % NCONF].x, 800.0,
+                                          c->eye.z - 800 * dirs[k % NCONF].z};
+            ok += !swarp_status_is_error(swarp_setup(c, &light, &box, &o, &r, pts, SWARP_BODY_MAX_POINTS, &np));
+        }
+        printf("%ld of %ld calls ok\n", ok, calls);
+        return 0;
+    }
     static double ns[REPS];
     printf("swarp_setup, %d configurations, %d calls per row (libshadowwarp %s)\n\n", NCONF, REPS,
            swarp_version_string());

@@ -94,7 +94,9 @@ static int bench_cascade(void* p, int k) {
     return (int)n;
 }
 
-int main(void) {
+/* `bench_splits --calls N K`: only N untimed calls with K splits, for
+ * instruction and cycle counts (perf stat, callgrind): subtract N = 0. */
+int main(int argc, char** argv) {
     bench_ctx c;
     memset(&c, 0, sizeof c);
     c.cam.eye = (swarp_vec3){0.0, 20.0, 0.0};
@@ -111,6 +113,13 @@ int main(void) {
     c.opt.setup.technique = SWARP_TECHNIQUE_LISPSM; /* n_opt, [RHS] §4.1 centre */
     c.opt.split.scheme = SWARP_SCHEME_PRACTICAL;     /* PSSM */
     c.opt.split.lambda = 0.5;
+    if (argc >= 4 && strcmp(argv[1], "--calls") == 0) {
+        long calls = atol(argv[2]);
+        c.opt.split.count = (uint32_t)atoi(argv[3]);
+        for (long k = 0; k < calls; ++k) bench_cascade(&c, (int)(k % 1000));
+        printf("%ld calls, %ld failed\n", calls, c.failures);
+        return c.failures ? 1 : 0;
+    }
 
     printf("bench_splits: swarp_cascade_setup, PSSM(K, lambda 0.5) + LiSPSM (n_opt) + per-split bodies,\n");
     printf("directional light, scene box 2000 x 130 x 2000, camera 60 deg 16:9, near 0.5, far 2000.\n");
