@@ -594,6 +594,8 @@ static void e_msm_visibility(swr_ctx* c) {
     for (int i = 0; i < 4; ++i) b[i] = (1 - a) * b[i] + 0.5 * a;
     if (swr_one_in(c, 12)) b[swr_u8(c) % 4] = swr_num(c, -1, 2, NULL, 0);
     double zf = swr_num(c, 0, 1, brk01, 3);
+    for (int i = 0; i < 4; ++i) /* derived moments can be extreme too (a fuzz input: b_2 = 1.9e-182) */
+        if (b[i] != 0 && swr_isfin(b[i]) && (fabs(b[i]) < 1e-100 || fabs(b[i]) > 1e100)) c->extreme = 1;
     int n_b = swr_null(c), n_o = swr_null(c);
     if (n_b || n_o) swr_expect(c, SWARP_ERR_NULL_POINTER);
     for (int i = 0; i < 4; ++i) FIN(c, b[i]);
