@@ -301,11 +301,14 @@ static swarp_status sw_check_common(const swarp_camera* cam, const swarp_light* 
     return sw_setup_defaults(opts, o);
 }
 
-static swarp_status sw_write_points(const swarp_polyhedron* B, swarp_vec3* out_points, size_t capacity,
-                                    size_t* out_count) {
-    if (out_count) *out_count = B->vertex_count;
-    if (out_points) {
-        if (capacity < B->vertex_count) return SWARP_ERR_CAPACITY;
+/* Capacity check only: the needed count is written early only together with
+ * SWARP_ERR_CAPACITY (the documented exception); on every other error the
+ * outputs stay untouched, so the count is written at the very end. */
+static swarp_status sw_check_points_capacity(const swarp_polyhedron* B, const swarp_vec3* out_points,
+                                             size_t capacity, size_t* out_count) {
+    if (out_points && capacity < B->vertex_count) {
+        if (out_count) *out_count = B->vertex_count;
+        return SWARP_ERR_CAPACITY;
     }
     return SWARP_OK;
 }
@@ -324,7 +327,7 @@ static swarp_status sw_setup_range(const swarp_camera* cam, const swarp_light* l
     }
     s = sw_body_from_h(Hp, light, scene, &B);
     if (s != SWARP_OK) return s;
-    s = sw_write_points(&B, out_points, capacity, out_count);
+    s = sw_check_points_capacity(&B, out_points, capacity, out_count);
     if (s != SWARP_OK) return s;
     /* the receivers a spot lights: H ∩ L */
     swarp_polyhedron HL;
@@ -341,6 +344,7 @@ static swarp_status sw_setup_range(const swarp_camera* cam, const swarp_light* l
     if (swarp_status_is_error(info)) return info;
     *out = res;
     if (out_points) memcpy(out_points, B.vertices, B.vertex_count * sizeof(swarp_vec3));
+    if (out_count) *out_count = B.vertex_count;
     return info;
 }
 

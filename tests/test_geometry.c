@@ -684,6 +684,12 @@ START_TEST(hard_point_light_positions) {
         o.technique = techniques[t];
         ck_assert_int_eq(swarp_setup(&c.cam, &c.light, &c.box, &o, &r, NULL, 0, NULL), SWARP_ERR_LIGHT_INSIDE_BODY);
         ck_assert(memcmp(&r, &r0, sizeof r) == 0);
+        /* the point count is an output too: untouched on this error */
+        swarp_vec3 pts[SWARP_BODY_MAX_POINTS];
+        size_t count = 12345;
+        ck_assert_int_eq(swarp_setup(&c.cam, &c.light, &c.box, &o, &r, pts, SWARP_BODY_MAX_POINTS, &count),
+                         SWARP_ERR_LIGHT_INSIDE_BODY);
+        ck_assert_uint_eq(count, 12345);
     }
     /* a spot inside the frustum pointing away from the camera: the spot's
      * pyramid keeps B in front of it; the apex region is cut (info) */
