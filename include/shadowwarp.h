@@ -1015,8 +1015,10 @@ SWARP_API swarp_status swarp_lixel_solve5(const swarp_vec4 src[5], const swarp_v
  *  _PLANE_PARALLEL_VIEW, _LIGHT_BEHIND_PLANE, _ILL_CONDITIONED (most
  *  important first: ill-conditioned, parallel, across infinity, behind);
  *  errors SWARP_ERR_LIXEL_PLANE_THROUGH_EYE, _LIGHT_ON_PLANE,
- *  _LIGHT_PARALLEL_PLANE, _PLANE_NOT_VISIBLE, SWARP_ERR_SINGULAR (M_v),
- *  SWARP_ERR_RESOLUTION, SWARP_ERR_ZERO_VECTOR, SWARP_ERR_OUT_OF_RANGE
+ *  _LIGHT_PARALLEL_PLANE, _PLANE_NOT_VISIBLE, SWARP_ERR_LIXEL_COPLANAR (the
+ *  five constraint points of (1), (7)-(10) nearly coplanar: the solver's
+ *  conditioning < 1e-13, reached only in near-degenerate configurations),
+ *  SWARP_ERR_SINGULAR (M_v), SWARP_ERR_RESOLUTION, SWARP_ERR_ZERO_VECTOR, SWARP_ERR_OUT_OF_RANGE
  *  (raise), SWARP_ERR_UNKNOWN_ENUM, SWARP_ERR_RESERVED_NONZERO,
  *  SWARP_ERR_NON_FINITE, SWARP_ERR_NULL_POINTER. */
 SWARP_API swarp_status swarp_lixel_matrix(const swarp_mat4* M_v, uint32_t g, uint32_t h,
