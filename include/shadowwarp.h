@@ -1243,7 +1243,8 @@ SWARP_API swarp_status swarp_lvsm_layer_uniform(double t, double s_0, double s_N
 
 /** @brief The layer holding depth t for given split points (binary search of
  *  the monotonic split sequence, [VSM] §4.1.3).  Conventions and statuses as
- *  swarp_lvsm_layer_uniform; splits must be strictly increasing. */
+ *  swarp_lvsm_layer_uniform; splits must be strictly increasing, and
+ *  SWARP_ERR_OUT_OF_RANGE when the range s_N - s_0 overflows a double. */
 SWARP_API swarp_status swarp_lvsm_layer_find(double t, const double* splits, uint32_t n_layers,
                                              uint32_t* out_layer);
 

@@ -149,6 +149,8 @@ static void expect_splits(swr_ctx* c, const double* s, uint32_t n, int null_s) {
     }
     for (uint32_t i = 0; i <= n; ++i) FIN(c, s[i]);
     if (!increasing(s, n)) swr_expect(c, SWARP_ERR_NOT_INCREASING);
+    /* the whole range s_N - s_0 must be representable (documented) */
+    else if (isfinite(s[0]) && isfinite(s[n]) && !isfinite(s[n] - s[0])) swr_expect(c, SWARP_ERR_OUT_OF_RANGE);
 }
 
 #define MAXN 8
