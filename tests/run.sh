@@ -79,8 +79,14 @@ step abi sh tests/abi/check.sh build-ci
 echo "== fuzz (libFuzzer, ${SWARP_FUZZ_SECONDS:-60} s in total)"
 step fuzz sh tests/fuzz/run.sh "${SWARP_FUZZ_SECONDS:-60}"
 
+# One plain closing line for whoever reads the log: the unit/integration
+# suite of the -Werror build (the other steps are summarised above).
+ok=$(awk '/^Ok:/{print $2}' build-ci/meson-logs/testlog.txt 2>/dev/null | tail -n 1)
+bad=$(awk '/^Fail:/{print $2}' build-ci/meson-logs/testlog.txt 2>/dev/null | tail -n 1)
 if [ -n "$failed" ]; then
     echo "== FAILED:$failed"
+    echo "tests: ${ok:-0} passed, ${bad:-0} failed"
     exit 1
 fi
 echo "== all done"
+echo "tests: ${ok:-0} passed, ${bad:-0} failed"
