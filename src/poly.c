@@ -95,6 +95,32 @@ double sw_poly_scale(const swarp_polyhedron* p) {
 }
 
 /* Newell normal of a loop (robust for non-planar or tiny loops). */
+/* Renumber every face loop through remap, drop repeated neighbours and faces
+ * left with fewer than 3 vertices (compacted in place: row nf <= f, and within
+ * a row m <= k), mark the vertices still used and return the face count.
+ * Shared by the near-duplicate merge after clipping and the final tidy-up. */
+static uint32_t sw_remap_faces(swarp_polyhedron* p, const uint8_t* remap, uint8_t* used) {
+    uint32_t nf = 0;
+    for (uint32_t f = 0; f < p->face_count; ++f) {
+        uint32_t n = p->face_vertex_count[f], m = 0;
+        const uint8_t* src = p->face_vertices[f];
+        uint8_t* loop = p->face_vertices[nf];
+        for (uint32_t k = 0; k < n; ++k) {
+            uint8_t id = remap[src[k]];
+            if (m > 0 && loop[m - 1] == id) continue;
+            loop[m++] = id;
+        }
+        while (m > 1 && loop[m - 1] == loop[0]) --m;
+        if (m < 3) continue;
+        p->face_vertex_count[nf] = m;
+        p->planes[nf] = p->planes[f];
+        for (uint32_t k = 0; k < m; ++k) used[loop[k]] = 1;
+        ++nf;
+    }
+    p->face_count = nf;
+    return nf;
+}
+
 static swarp_vec3 sw_newell(const swarp_vec3* v, const uint8_t* idx, uint32_t n) {
     swarp_vec3 nn = {0, 0, 0};
     swarp_vec3 c = {0, 0, 0};
@@ -133,24 +159,7 @@ void sw_poly_finalize(swarp_polyhedron* p, uint32_t first_new, double scale) {
     uint32_t nf = 0;
     uint8_t used[SWARP_POLY_MAX_VERTICES];
     memset(used, 0, nv);
-    for (uint32_t f = 0; f < p->face_count; ++f) {
-        uint32_t n = p->face_vertex_count[f], m = 0;
-        /* compacted in place: row nf <= f, and within a row m <= k */
-        const uint8_t* src = p->face_vertices[f];
-        uint8_t* loop = p->face_vertices[nf];
-        for (uint32_t k = 0; k < n; ++k) {
-            uint8_t id = remap[src[k]];
-            if (m > 0 && loop[m - 1] == id) continue;
-            loop[m++] = id;
-        }
-        while (m > 1 && loop[m - 1] == loop[0]) --m;
-        if (m < 3) continue;
-        p->face_vertex_count[nf] = m;
-        p->planes[nf] = p->planes[f];
-        for (uint32_t k = 0; k < m; ++k) used[loop[k]] = 1;
-        ++nf;
-    }
-    p->face_count = nf;
+    nf = sw_remap_faces(p, remap, used);
     if (nf > 0) { /* vertices of a solid or flat polyhedron are face corners */
         uint32_t k = 0;
         for (uint32_t i = 0; i < nv; ++i) {
@@ -204,23 +213,7 @@ static void sw_poly_merge_on_plane(swarp_polyhedron* p, const uint8_t* on, uint3
     uint32_t nf = 0;
     uint8_t used[SWARP_POLY_MAX_VERTICES];
     memset(used, 0, p->vertex_count);
-    for (uint32_t f = 0; f < p->face_count; ++f) {
-        uint32_t n = p->face_vertex_count[f], m = 0;
-        const uint8_t* src = p->face_vertices[f];
-        uint8_t* loop = p->face_vertices[nf];
-        for (uint32_t k = 0; k < n; ++k) {
-            uint8_t id = remap[src[k]];
-            if (m > 0 && loop[m - 1] == id) continue;
-            loop[m++] = id;
-        }
-        while (m > 1 && loop[m - 1] == loop[0]) --m;
-        if (m < 3) continue;
-        p->face_vertex_count[nf] = m;
-        p->planes[nf] = p->planes[f];
-        for (uint32_t k = 0; k < m; ++k) used[loop[k]] = 1;
-        ++nf;
-    }
-    p->face_count = nf;
+    nf = sw_remap_faces(p, remap, used);
     uint32_t k = 0;
     for (uint32_t i = 0; i < p->vertex_count; ++i) {
         int keep = nf > 0 ? used[i] : (remap[i] == i);
