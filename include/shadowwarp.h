@@ -133,6 +133,8 @@ extern "C" {
       "scene box has zero extent along two or more axes")                               \
     X(SWARP_ERR_LIGHT_INSIDE_BODY, 103,                                                 \
       "point light inside the body B: one perspective map cannot cover it")             \
+    X(SWARP_ERR_FOLLOW_FRAME, 104,                                                      \
+      "the previous result's light frame is not orthonormal or not from this technique")  \
     X(SWARP_INFO_LIGHT_PARALLEL, 1100,                                                  \
       "light nearly parallel to the view: light-space up blended toward camera right")  \
     X(SWARP_INFO_FLAT_EXTENT, 1101,                                                     \
@@ -140,7 +142,9 @@ extern "C" {
     X(SWARP_INFO_PSM_INVERSE, 1102,                                                     \
       "light behind the camera: PSM uses the inverse projection (near < 0 < far)")      \
     X(SWARP_INFO_LIGHT_NEAR_CLIPPED, 1103,                                              \
-      "spot light on or inside B: points nearer than its near plane left out")
+      "spot light on or inside B: points nearer than its near plane left out")          \
+    X(SWARP_INFO_FOLLOW_LAG, 1104,                                                      \
+      "followed light frame lags the view alignment (light near the view axis): warp weakened")
 /* <<< status: geometry */
 
 /* >>> status: lixel (200..299, 1200..1299) */
@@ -945,6 +949,60 @@ SWARP_API swarp_status swarp_setup_points(const swarp_camera* cam, const swarp_l
                                           double near, double far,
                                           const swarp_setup_options* opts,
                                           swarp_setup_result* out);
+
+/* ======================================================================== */
+/* Geometry: coherent light frames over time     (src/follow.c)             */
+/* ======================================================================== */
+/*
+ * Continuity over the whole sphere of light directions (docs/geometry.md,
+ * "Continuity over the whole sphere").  No stateless rule can give the light
+ * view an up vector that is continuous in the light direction everywhere
+ * (hairy-ball theorem): swarp_setup's rule is singular where
+ * SWARP_FOCUS_BLEND_SIN says.  swarp_setup_follow takes the previous frame's
+ * result and keeps the light frame coherent along ANY path of the light
+ * (and of the camera):
+ *
+ *   h   = the previous up (light_view row 1; PSM: the light camera's right
+ *         in post-perspective space) projected onto the plane perpendicular
+ *         to the new light axis a;
+ *   t   = ±v̂, v̂ = v_perp/|v_perp| ([RHS] §3.2.1 light-space alignment; PSM:
+ *         the post-perspective x axis), the sign that agrees with h;
+ *   h' = h turned about a toward t by at most SWARP_FOLLOW_KAPPA · Δ, where
+ *         Δ = angle(previous axis, a) + angle(previous view dir, view dir).
+ *
+ * The frame changes per call by O(Δ), whatever the path; wherever the target
+ * moves slower than κ·Δ (sin γ > 1/κ along a smooth path, γ ≥ 14.5° for
+ * κ = 4) it is exactly the aligned frame.  LiSPSM then warps along the
+ * frame's y axis with orientation σ = sign(y·v) and the strength of
+ * γ_eff = asin|y·v|, so it is exactly [RHS]'s LiSPSM when aligned and fades
+ * to uniform where y ⟂ v_perp (SWARP_INFO_FOLLOW_LAG says the frame lags).
+ * The followed map may be turned 180° about the light axis relative to
+ * swarp_setup's (y = -v̂); it is the same LiSPSM map, rotated.
+ */
+#define SWARP_FOLLOW_KAPPA 4.0
+
+/** @brief swarp_setup with a light frame that follows the previous frame's
+ *  continuously (no flips anywhere on the sphere of light directions).
+ *  @param[in] cam, light, scene, opts  as swarp_setup
+ *  @param[in] previous_cam  the camera of the previous frame (its view
+ *                     direction lets the frame realign as the camera turns);
+ *                     NULL: the same as cam (only the light's motion counts)
+ *  @param[in] previous  the previous frame's result of swarp_setup or
+ *                     swarp_setup_follow with the SAME technique and light
+ *                     type; NULL: exactly swarp_setup's result (bit for bit)
+ *  @param[out] out, out_points, out_count  as swarp_setup
+ *  @return as swarp_setup, plus SWARP_INFO_FOLLOW_LAG (the frame is still
+ *          turning toward the aligned one); SWARP_ERR_NON_FINITE (NaN/Inf in
+ *          the rows of previous that are read), SWARP_ERR_ZERO_VECTOR (a zero
+ *          row), SWARP_ERR_FOLLOW_FRAME (rows not orthonormal within 1e-6,
+ *          or a PSM result whose ranges are invalid).  Outputs untouched on
+ *          error.  [RHS] §3.2.1, [KOZ] §14.2.2 */
+SWARP_API swarp_status swarp_setup_follow(const swarp_camera* cam, const swarp_light* light,
+                                          const swarp_aabb* scene, const swarp_setup_options* opts,
+                                          const swarp_camera* previous_cam,
+                                          const swarp_setup_result* previous,
+                                          swarp_setup_result* out, swarp_vec3* out_points,
+                                          size_t capacity, size_t* out_count);
 /* <<< api: geometry */
 
 /* >>> api: lixel (src/lixel.c) */
