@@ -177,7 +177,6 @@ swarp_status sw_psm_setup(const swarp_camera* cam, const swarp_light* light, con
     swarp_vec3 qn = sw_scale(qh, 1.0 / qlen);
     double tau = Lh.w / qlen; /* w_l / |q_h|: 0 = light at infinity in PPS */
     if (Lh.w < 0.0) info = SWARP_INFO_PSM_INVERSE;
-    swarp_vec3 b1 = sw_perp_ref(qn); /* roll reference, continuous in q̂ */
     swarp_vec3 a, e1, e2;
     int lag = 0;
     /* the receivers' centroid in PPS (reference point of the depth row) */
@@ -194,7 +193,7 @@ swarp_status sw_psm_setup(const swarp_camera* cam, const swarp_light* light, con
         /* the light is at infinity in PPS: orthographic along -q̂ (the limit
          * of the general rows below, up to a translation A_fit absorbs) */
         a = sw_scale(qn, -1.0);
-        e1 = b1;
+        e1 = sw_perp_ref(a); /* roll reference, continuous in the axis */
         if (fw && sw_psm_follow_e1(fw, a, &e1, &lag) && lag) info = sw_info_follow(info);
         e2 = sw_cross(a, e1);
     } else {
@@ -215,7 +214,10 @@ swarp_status sw_psm_setup(const swarp_camera* cam, const swarp_light* light, con
         /* a cone of 90° or more: the light sits among the receivers */
         if (!(cap.cosr > SW_PSM_MIN_COS)) return SWARP_ERR_LIGHT_INSIDE_BODY;
         a = cap.c;
-        if (!sw_gnormalize(sw_sub(b1, sw_scale(a, sw_dot(b1, a))), &e1)) return SWARP_ERR_DEGENERATE;
+        /* roll: the PPS x axis projected perpendicular to the axis (blended
+         * near a = ±x), a function of the axis alone, so that the follow
+         * rule's budget κΔ (Δ: the axis' turn) covers the target's motion */
+        e1 = sw_perp_ref(a);
         if (fw && sw_psm_follow_e1(fw, a, &e1, &lag) && lag) info = sw_info_follow(info);
         e2 = sw_cross(a, e1);
         /* rows: x = e1·R/w_l = e1·X - w_c (e1·q̂)/τ (finite as τ -> 0: the
