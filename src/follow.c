@@ -17,9 +17,11 @@
  *        Δ = angle(previous axis, a) + angle(previous view dir, view dir).
  *
  * LiSPSM then warps along the frame's y axis, oriented by σ = sign(y·v),
- * with the strength of γ_eff = asin|y·v|: exactly [RHS]'s warp when y = ±v̂,
- * exactly uniform where y ⟂ v_perp, where σ may change sign without a jump
- * (the warp is uniform there). */
+ * with the strength of γ_eff = asin|y·v| (src/warp.c): exactly [RHS]'s warp
+ * when y = ±v̂, exactly uniform where y ⟂ v_perp, where σ may change sign
+ * without a jump (the warp is uniform there).  swarp_setup uses the same
+ * oriented warp: its blended frame near parallel can have y·v < 0 too, and
+ * the first followed frame must continue it without a jump. */
 #include "geometry_internal.h"
 
 /* Rows of a previous light frame must be unit and orthogonal within this:
@@ -82,7 +84,7 @@ swarp_status sw_follow_light_view(const swarp_camera* cam, swarp_vec3 origin, sw
     return lag ? SWARP_INFO_FOLLOW_LAG : SWARP_OK;
 }
 
-swarp_status sw_follow_warp(const swarp_mat4* M, const swarp_mat4* M_inv, const swarp_camera* cam, double near,
+swarp_status sw_warp_lispsm_oriented(const swarp_mat4* M, const swarp_mat4* M_inv, const swarp_camera* cam, double near,
                             double far, const swarp_vec3* points, size_t count, const swarp_vec3* nearest,
                             const swarp_warp_options* o, swarp_mat4* out_P, swarp_warp_info* out_info) {
     swarp_vec3 v, r, u;

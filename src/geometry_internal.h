@@ -109,9 +109,9 @@ double sw_follow_angle(swarp_vec3 a, swarp_vec3 b);
 /* the light view from origin along forward whose up follows fw */
 swarp_status sw_follow_light_view(const swarp_camera* cam, swarp_vec3 origin, swarp_vec3 forward,
                                   const sw_follow* fw, swarp_mat4* out);
-/* LiSPSM along the followed frame's y axis: orientation sign(y·v), strength
- * γ_eff = asin|y·v|; P applies after M as sw_warp_lispsm's */
-swarp_status sw_follow_warp(const swarp_mat4* M, const swarp_mat4* M_inv, const swarp_camera* cam, double near,
+/* LiSPSM along the light frame's y axis, oriented by σ = sign(y·v) (the
+ * one call's warp; with y = v̂ it is sw_warp_lispsm); P applies after M */
+swarp_status sw_warp_lispsm_oriented(const swarp_mat4* M, const swarp_mat4* M_inv, const swarp_camera* cam, double near,
                             double far, const swarp_vec3* points, size_t count, const swarp_vec3* nearest,
                             const swarp_warp_options* o, swarp_mat4* out_P, swarp_warp_info* out_info);
 /* the previous frame of a result, checked (previous_cam may be NULL) */

@@ -214,8 +214,7 @@ static swarp_status sw_setup_points(const swarp_camera* cam, const swarp_light* 
             w.n_user = o->n_user;
             w.pseudo_near = o->pseudo_near;
             w.pseudo_far = o->pseudo_far;
-            s = fw ? sw_follow_warp(&M, &M_inv, cam, near, far, Bp, nbk, ep, &w, &P, &wi)
-                   : sw_warp_lispsm(&M, &M_inv, cam, near, far, Bp, nbk, ep, &w, &P, &wi);
+            s = sw_warp_lispsm_oriented(&M, &M_inv, cam, near, far, Bp, nbk, ep, &w, &P, &wi);
             if (swarp_status_is_error(s)) return s;
             info = sw_info_merge(info, s);
         } else {

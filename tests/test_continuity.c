@@ -202,7 +202,8 @@ static void check_properties(const swarp_camera* cam, const swarp_setup_result* 
 
 /* A steep step from `from` (state at step k0) over dk steps with change j:
  * refined 100 times, following through the sub-steps, then the steepest
- * sub-step refined 100 times again, up to three levels (10^-6 of the step).
+ * sub-step refined 100 times again, up to three levels (10^-6 of the step);
+ * j is the whole step's change.
  * A continuous change shrinks with the step: the largest sub-step change
  * falls below 0.2 j at some level (it stays at j only if all of it happens
  * within 10^-6 of the step).  A jump (flip) does not shrink at any level.
@@ -250,8 +251,10 @@ static void walk(const path* p, swarp_technique tech, swarp_warp_param param, wa
     char name[96], where[160];
     path_name(p, name, sizeof name);
     int have_prev = 0, prev_k = 0;
+    int stride = getenv("SWARP_CONT_STRIDE") ? atoi(getenv("SWARP_CONT_STRIDE")) : SW_UNDER_ASAN ? 20 : 1;
+    if (stride < 1) stride = 1;
     for (int k = 0; k <= p->steps; ++k) {
-        if (SW_UNDER_ASAN && k % 20 != 0) continue;
+        if (k % stride != 0 && k != p->steps) continue;
         light.direction = path_dir(p, &b, k);
         swarp_status s = follow(&cam, &light, &o, have_prev ? &prev : NULL, &cur, pts, &npts);
         snprintf(where, sizeof where, "tech %d param %d, %s, step %.2f°", (int)tech, (int)param, name, k * 0.01);
@@ -266,7 +269,7 @@ static void walk(const path* p, swarp_technique tech, swarp_warp_param param, wa
             double j = mat_jump(&prev.matrix, &cur.matrix) / dk;
             if (j > st->worst) st->worst = j, st->worst_at = k * 0.01;
             if (j > STEEP) {
-                double ratio = refine(p, &b, &cam, &o, &prev, prev_k, dk, j);
+                double ratio = refine(p, &b, &cam, &o, &prev, prev_k, dk, j * dk);
                 st->refined++;
                 st->worst_ratio = fmax(st->worst_ratio, ratio);
                 if (ratio >= 0.2) st->flips++;
@@ -292,7 +295,7 @@ static const path paths[] = { /* 90° around v: the light perpendicular to the v
     {PATH_GREAT, 135, 36000},    {PATH_GREAT, 150, 36000},  {PATH_GREAT, 165, 36000},
     {PATH_AROUND_V, 0.5, 36000}, {PATH_AROUND_V, 3, 36000}, {PATH_AROUND_V, 10, 36000},
     {PATH_AROUND_V, 30, 36000},  {PATH_AROUND_V, 90, 36000}, {PATH_AROUND_V, -0.5, 36000}, {PATH_AROUND_V, -3, 36000},
-    {PATH_AROUND_V, -10, 36000}, {PATH_AROUND_V, -30, 36000}, {PATH_AROUND_R, 90, 36000},
+    {PATH_AROUND_V, -10, 36000}, {PATH_AROUND_V, -30, 36000}, {PATH_AROUND_R, 89, 36000},
     {PATH_AROUND_R, 80, 36000},  {PATH_AROUND_R, 60, 36000}, {PATH_SPIRAL, 0, 72000},
 };
 #define N_PATHS ((int)(sizeof paths / sizeof paths[0]))
