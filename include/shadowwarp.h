@@ -740,8 +740,8 @@ SWARP_API swarp_status swarp_body_adjusted_range(const swarp_camera* cam, const 
  * antiparallel to the view in the plane of v and the camera's up vector.
  * (Every continuous tangent field on the sphere has a zero: this one's lies
  * off that plane, on the v-r great circle, at γ ≈ 5.6° (sin γ ≈ 0.097); see
- * docs/geometry.md.)  SWARP_INFO_LIGHT_PARALLEL reports that the blend is
- * active.
+ * docs/geometry.md; swarp_setup_follow below has no such point.)
+ * SWARP_INFO_LIGHT_PARALLEL reports that the blend is active.
  */
 #define SWARP_FOCUS_BLEND_SIN 0.17364817766693033 /* sin 10° */
 #define SWARP_FOCUS_BLEND_WEIGHT 0.5
@@ -966,16 +966,19 @@ SWARP_API swarp_status swarp_setup_points(const swarp_camera* cam, const swarp_l
  *         in post-perspective space) projected onto the plane perpendicular
  *         to the new light axis a;
  *   t   = ±v̂, v̂ = v_perp/|v_perp| ([RHS] §3.2.1 light-space alignment; PSM:
- *         the post-perspective x axis), the sign that agrees with h;
+ *         the post-perspective x axis projected perpendicular to the light
+ *         camera's axis), the sign that agrees with h;
  *   h' = h turned about a toward t by at most SWARP_FOLLOW_KAPPA · Δ, where
- *         Δ = angle(previous axis, a) + angle(previous view dir, view dir).
+ *         Δ = angle(previous axis, a) + angle(previous view dir, view dir)
+ *         (PSM: the angle the post-perspective axis turned).
  *
  * The frame changes per call by O(Δ), whatever the path; wherever the target
  * moves slower than κ·Δ (sin γ > 1/κ along a smooth path, γ ≥ 14.5° for
  * κ = 4) it is exactly the aligned frame.  LiSPSM then warps along the
  * frame's y axis with orientation σ = sign(y·v) and the strength of
- * γ_eff = asin|y·v|, so it is exactly [RHS]'s LiSPSM when aligned and fades
- * to uniform where y ⟂ v_perp (SWARP_INFO_FOLLOW_LAG says the frame lags).
+ * γ_eff = asin|y·v| (as swarp_setup's warp does with its own frame), so it
+ * is exactly [RHS]'s LiSPSM when aligned and fades to uniform where
+ * y ⟂ v_perp (SWARP_INFO_FOLLOW_LAG says the frame lags).
  * The followed map may be turned 180° about the light axis relative to
  * swarp_setup's (y = -v̂); it is the same LiSPSM map, rotated.
  */
@@ -989,7 +992,10 @@ SWARP_API swarp_status swarp_setup_points(const swarp_camera* cam, const swarp_l
  *                     NULL: the same as cam (only the light's motion counts)
  *  @param[in] previous  the previous frame's result of swarp_setup or
  *                     swarp_setup_follow with the SAME technique and light
- *                     type; NULL: exactly swarp_setup's result (bit for bit)
+ *                     type; NULL: exactly swarp_setup's result (bit for bit).
+ *                     Read: light_view's rotation rows; PSM also light_proj,
+ *                     view_near, view_far and n_eye (with previous_cam's, or
+ *                     cam's, fovy and aspect) to recover its light camera
  *  @param[out] out, out_points, out_count  as swarp_setup
  *  @return as swarp_setup, plus SWARP_INFO_FOLLOW_LAG (the frame is still
  *          turning toward the aligned one); SWARP_ERR_NON_FINITE (NaN/Inf in

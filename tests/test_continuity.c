@@ -110,6 +110,7 @@ typedef struct path {
     double param; /* great: azimuth of the circle about v; around v: offset
                      (negative: around -v); around r: polar angle from r */
     int steps;
+    int stride; /* 0 or 1: every step; n: every n-th (0.01° n) */
 } path;
 
 static swarp_vec3 path_dir(const path* p, const basis* b, double k) {
@@ -160,6 +161,17 @@ typedef struct walk_stats {
     int flips;         /* of them, not shrinking (stateless table only) */
     long calls, lag, uniform, parallel, checked;
 } walk_stats;
+
+/* point_mode = 1: the light is an omni point light 1000 units from the eye,
+ * opposite the path's direction (outside the box: its light axis, toward
+ * the centre of B, turns with the path) */
+static int point_mode = 0;
+static void set_light(swarp_light* light, const swarp_camera* cam, swarp_vec3 d) {
+    memset(light, 0, sizeof *light);
+    light->type = point_mode ? SWARP_LIGHT_POINT : SWARP_LIGHT_DIRECTIONAL;
+    light->direction = d;
+    light->position = add(cam->eye, scl(d, -1000.0));
+}
 
 /* a step this steep (normalised change per 0.01° step) is refined 100× */
 #define STEEP 2e-3
@@ -219,7 +231,7 @@ static double refine(const path* p, const basis* b, const swarp_camera* cam, con
         swarp_setup_result a = start, c, worst_start = start;
         double sub = 0, worst_t = t0;
         for (int m = 1; m <= 100; ++m) {
-            light.direction = path_dir(p, b, t0 + m * h);
+            set_light(&light, cam, path_dir(p, b, t0 + m * h));
             REQUIRE(!swarp_status_is_error(follow(cam, &light, o, &a, &c, NULL, NULL)), "refinement step failed");
             double js = mat_jump(&a.matrix, &c.matrix);
             if (js > sub) sub = js, worst_start = a, worst_t = t0 + (m - 1) * h;
@@ -252,10 +264,11 @@ static void walk(const path* p, swarp_technique tech, swarp_warp_param param, wa
     path_name(p, name, sizeof name);
     int have_prev = 0, prev_k = 0;
     int stride = getenv("SWARP_CONT_STRIDE") ? atoi(getenv("SWARP_CONT_STRIDE")) : SW_UNDER_ASAN ? 20 : 1;
+    if (p->stride > 1) stride *= p->stride;
     if (stride < 1) stride = 1;
     for (int k = 0; k <= p->steps; ++k) {
         if (k % stride != 0 && k != p->steps) continue;
-        light.direction = path_dir(p, &b, k);
+        set_light(&light, &cam, path_dir(p, &b, k));
         swarp_status s = follow(&cam, &light, &o, have_prev ? &prev : NULL, &cur, pts, &npts);
         snprintf(where, sizeof where, "tech %d param %d, %s, step %.2f°", (int)tech, (int)param, name, k * 0.01);
         REQUIRE(!swarp_status_is_error(s), "%s: %s", where, swarp_status_name(s));
@@ -289,14 +302,14 @@ static void walk(const path* p, swarp_technique tech, swarp_warp_param param, wa
 
 /* ---- the walks over the whole sphere ----------------------------------------- */
 static const path paths[] = { /* 90° around v: the light perpendicular to the view */
-    {PATH_GREAT, 0, 36000},      {PATH_GREAT, 15, 36000},   {PATH_GREAT, 30, 36000},
-    {PATH_GREAT, 45, 36000},     {PATH_GREAT, 60, 36000},   {PATH_GREAT, 75, 36000},
-    {PATH_GREAT, 90, 36000},     {PATH_GREAT, 105, 36000},  {PATH_GREAT, 120, 36000},
-    {PATH_GREAT, 135, 36000},    {PATH_GREAT, 150, 36000},  {PATH_GREAT, 165, 36000},
-    {PATH_AROUND_V, 0.5, 36000}, {PATH_AROUND_V, 3, 36000}, {PATH_AROUND_V, 10, 36000},
-    {PATH_AROUND_V, 30, 36000},  {PATH_AROUND_V, 90, 36000}, {PATH_AROUND_V, -0.5, 36000}, {PATH_AROUND_V, -3, 36000},
-    {PATH_AROUND_V, -10, 36000}, {PATH_AROUND_V, -30, 36000}, {PATH_AROUND_R, 89, 36000},
-    {PATH_AROUND_R, 80, 36000},  {PATH_AROUND_R, 60, 36000}, {PATH_SPIRAL, 0, 72000},
+    {PATH_GREAT, 0, 36000, 1},      {PATH_GREAT, 15, 36000, 1},   {PATH_GREAT, 30, 36000, 1},
+    {PATH_GREAT, 45, 36000, 1},     {PATH_GREAT, 60, 36000, 1},   {PATH_GREAT, 75, 36000, 1},
+    {PATH_GREAT, 90, 36000, 1},     {PATH_GREAT, 105, 36000, 1},  {PATH_GREAT, 120, 36000, 1},
+    {PATH_GREAT, 135, 36000, 1},    {PATH_GREAT, 150, 36000, 1},  {PATH_GREAT, 165, 36000, 1},
+    {PATH_AROUND_V, 0.5, 36000, 1}, {PATH_AROUND_V, 3, 36000, 1}, {PATH_AROUND_V, 10, 36000, 1},
+    {PATH_AROUND_V, 30, 36000, 1},  {PATH_AROUND_V, 90, 36000, 1}, {PATH_AROUND_V, -0.5, 36000, 1}, {PATH_AROUND_V, -3, 36000, 1},
+    {PATH_AROUND_V, -10, 36000, 1}, {PATH_AROUND_V, -30, 36000, 1}, {PATH_AROUND_R, 89, 36000, 1},
+    {PATH_AROUND_R, 80, 36000, 1},  {PATH_AROUND_R, 60, 36000, 1}, {PATH_SPIRAL, 0, 72000, 1},
 };
 #define N_PATHS ((int)(sizeof paths / sizeof paths[0]))
 
@@ -325,6 +338,9 @@ static int in_subset(const path* p) {
 #define MAX_STEP 0.02
 #define MAX_STEP_PSM 0.5
 
+static const swarp_technique all_techs_walk[3] = {SWARP_TECHNIQUE_UNIFORM, SWARP_TECHNIQUE_LISPSM,
+                                                  SWARP_TECHNIQUE_PSM};
+
 START_TEST(whole_sphere_walk) {
     const variant* va = &variants[_i];
     if (getenv("SWARP_CONT_TABLE") || (getenv("SWARP_CONT_VARIANT") && atoi(getenv("SWARP_CONT_VARIANT")) != _i))
@@ -346,6 +362,26 @@ START_TEST(whole_sphere_walk) {
     }
     fprintf(stderr, "whole-sphere walk tech %d param %d: %ld calls, largest change per 0.01° step %.3g, %ld lagging\n",
             (int)va->tech, (int)va->param, calls, worst, lag);
+}
+END_TEST
+
+/* ---- point lights: the spiral and the great circle through v and r ---------- */
+START_TEST(point_light_walk) {
+    if (getenv("SWARP_CONT_TABLE")) return;
+    /* 0.04° steps (the 0.01° walks above cover the frame logic; these add
+     * the point light's own axis, the direction to the centre of B) */
+    const path pp[2] = {{PATH_SPIRAL, 0, 72000, 4}, {PATH_GREAT, 90, 36000, 4}};
+    point_mode = 1;
+    for (int t = 0; t < 3; ++t)
+        for (int i = 0; i < 2; ++i) {
+            walk_stats st;
+            walk(&pp[i], all_techs_walk[t], SWARP_WARP_PARAM_DEFAULT, &st);
+            fprintf(stderr, "point light, tech %d, path %d: largest change per step %.3g, %d refined, %ld lagging\n",
+                    (int)all_techs_walk[t], i, st.worst, st.refined, st.lag);
+            ck_assert_msg(st.worst < (all_techs_walk[t] == SWARP_TECHNIQUE_PSM ? MAX_STEP_PSM : MAX_STEP),
+                          "point light tech %d path %d: %g at %.2f°", (int)all_techs_walk[t], i, st.worst, st.worst_at);
+        }
+    point_mode = 0;
 }
 END_TEST
 
@@ -652,6 +688,7 @@ Suite* continuity_suite(void) {
     tcase_add_test(tc, bad_previous_frames);
     tcase_add_test(tc, stateless_singular_point_where_documented);
     tcase_add_loop_test(tc, whole_sphere_walk, 0, (int)(sizeof variants / sizeof variants[0]));
+    tcase_add_test(tc, point_light_walk);
     tcase_add_test(tc, print_table);
     suite_add_tcase(s, tc);
     return s;
