@@ -1009,6 +1009,23 @@ SWARP_API swarp_status swarp_setup_follow(const swarp_camera* cam, const swarp_l
                                           const swarp_setup_result* previous,
                                           swarp_setup_result* out, swarp_vec3* out_points,
                                           size_t capacity, size_t* out_count);
+
+/** @brief swarp_focus_light_view whose up vector follows a previous light
+ *  view continuously (the rule of swarp_setup_follow: the previous up turned
+ *  toward ±v̂ by at most SWARP_FOLLOW_KAPPA times the angle the light axis
+ *  and the view direction turned).  [RHS] §3.2.1
+ *  @param[in] cam, light, axis  as swarp_focus_light_view
+ *  @param[in] previous_cam   the previous frame's camera (NULL: cam)
+ *  @param[in] previous_view  the previous light view (its rotation rows are
+ *                            read); NULL: exactly swarp_focus_light_view
+ *  @param[out] out_view      the light view
+ *  @return as swarp_focus_light_view (SWARP_INFO_LIGHT_PARALLEL only with
+ *          previous_view NULL), SWARP_INFO_FOLLOW_LAG, SWARP_ERR_ZERO_VECTOR,
+ *          SWARP_ERR_NON_FINITE, SWARP_ERR_FOLLOW_FRAME (rows not a rigid
+ *          right-handed frame within 1e-6). */
+SWARP_API swarp_status swarp_focus_light_view_follow(const swarp_camera* cam, const swarp_light* light,
+                                                     const swarp_vec3* axis, const swarp_camera* previous_cam,
+                                                     const swarp_mat4* previous_view, swarp_mat4* out_view);
 /* <<< api: geometry */
 
 /* >>> api: lixel (src/lixel.c) */

@@ -139,11 +139,9 @@ static swarp_status sw_follow_psm(const swarp_setup_result* p, const swarp_camer
     return SWARP_OK;
 }
 
-swarp_status sw_follow_from_result(const swarp_setup_result* previous, const swarp_camera* cam,
-                                   const swarp_camera* previous_cam, swarp_technique tech, sw_follow* out) {
-    const swarp_camera* pc = previous_cam ? previous_cam : cam;
-    const swarp_mat4* L = &previous->light_view;
-    swarp_vec3 rows[3];
+/* The rotation rows of a previous light view, checked: finite, non-zero,
+ * unit, orthogonal, right-handed. */
+static swarp_status sw_follow_rows(const swarp_mat4* L, swarp_vec3 rows[3]) {
     for (int i = 0; i < 3; ++i) rows[i] = sw_v3(sw_at(L, i, 0), sw_at(L, i, 1), sw_at(L, i, 2));
     for (int i = 0; i < 3; ++i)
         if (!sw_finite3(&rows[i])) return SWARP_ERR_NON_FINITE;
@@ -156,6 +154,15 @@ swarp_status sw_follow_from_result(const swarp_setup_result* previous, const swa
         if (fabs(sw_dot(rows[i], rows[(i + 1) % 3])) > SW_FOLLOW_ORTHO_TOL) return SWARP_ERR_FOLLOW_FRAME;
     }
     if (sw_dot(sw_cross(rows[0], rows[1]), rows[2]) < 0.0) return SWARP_ERR_FOLLOW_FRAME;
+    return SWARP_OK;
+}
+
+swarp_status sw_follow_from_result(const swarp_setup_result* previous, const swarp_camera* cam,
+                                   const swarp_camera* previous_cam, swarp_technique tech, sw_follow* out) {
+    const swarp_camera* pc = previous_cam ? previous_cam : cam;
+    swarp_vec3 rows[3];
+    swarp_status st = sw_follow_rows(&previous->light_view, rows);
+    if (st != SWARP_OK) return st;
     sw_follow fw;
     swarp_vec3 r, u;
     sw_camera_basis(pc, &fw.view, &r, &u);
@@ -168,4 +175,48 @@ swarp_status sw_follow_from_result(const swarp_setup_result* previous, const swa
     }
     *out = fw;
     return SWARP_OK;
+}
+
+/* [RHS] §3.2.1 light-space alignment, followed over time */
+SWARP_API swarp_status swarp_focus_light_view_follow(const swarp_camera* cam, const swarp_light* light,
+                                                     const swarp_vec3* axis, const swarp_camera* previous_cam,
+                                                     const swarp_mat4* previous_view, swarp_mat4* out_view) {
+    if (!previous_view) return swarp_focus_light_view(cam, light, axis, out_view);
+    if (!cam || !light || !out_view) return SWARP_ERR_NULL_POINTER;
+    swarp_status s = sw_check_camera_shape(cam);
+    if (s != SWARP_OK) return s;
+    if (previous_cam) {
+        s = sw_check_camera_shape(previous_cam);
+        if (s != SWARP_OK) return s;
+    }
+    s = sw_check_light(light);
+    if (s != SWARP_OK) return s;
+    swarp_vec3 rows[3], r, u;
+    s = sw_follow_rows(previous_view, rows);
+    if (s != SWARP_OK) return s;
+    sw_follow fw;
+    sw_camera_basis(previous_cam ? previous_cam : cam, &fw.view, &r, &u);
+    fw.axis = sw_scale(rows[2], -1.0);
+    fw.up = rows[1];
+    swarp_vec3 origin, forward;
+    if (light->type == SWARP_LIGHT_POINT) {
+        origin = light->position;
+        if (axis) {
+            if (!sw_finite3(axis)) return SWARP_ERR_NON_FINITE;
+            forward = *axis;
+        } else if (light->cone_angle > 0.0) {
+            forward = light->direction;
+        } else {
+            forward = sw_sub(cam->eye, light->position);
+        }
+        if (!(sw_glen(forward) > 0.0)) return SWARP_ERR_ZERO_VECTOR;
+    } else {
+        origin = cam->eye;
+        forward = light->direction;
+    }
+    swarp_mat4 m;
+    s = sw_follow_light_view(cam, origin, forward, &fw, &m);
+    if (swarp_status_is_error(s)) return s;
+    *out_view = m;
+    return s;
 }

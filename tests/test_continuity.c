@@ -679,6 +679,59 @@ START_TEST(print_table) {
 }
 END_TEST
 
+/* ---- swarp_focus_light_view_follow ------------------------------------------- */
+START_TEST(light_view_follow_twin) {
+    rng R = {0xF0110003ull};
+    for (int i = 0; i < 300; ++i) { /* previous NULL: swarp_focus_light_view, byte for byte */
+        swarp_camera cam;
+        swarp_light light;
+        rnd_config(&R, &cam, &light);
+        swarp_mat4 a, b;
+        memset(&a, 0x3C, sizeof a), memset(&b, 0x3C, sizeof b);
+        swarp_status sa = swarp_focus_light_view(&cam, &light, NULL, &a);
+        swarp_status sb = swarp_focus_light_view_follow(&cam, &light, NULL, NULL, NULL, &b);
+        ck_assert_int_eq(sa, sb);
+        ck_assert(memcmp(&a, &b, sizeof a) == 0);
+    }
+    /* through the stateless zero on the v-r circle and on to 30°, 0.01° steps */
+    swarp_camera cam = scene_camera();
+    basis b = cam_basis(&cam);
+    swarp_light light;
+    memset(&light, 0, sizeof light);
+    light.type = SWARP_LIGHT_DIRECTIONAL;
+    swarp_mat4 prev, cur;
+    for (int k = 0; k <= 3000; ++k) {
+        double g = k * 0.01 * DEG;
+        light.direction = add(scl(b.v, cos(g)), scl(b.r, sin(g)));
+        swarp_status s = swarp_focus_light_view_follow(&cam, &light, NULL, NULL, k ? &prev : NULL, &cur);
+        ck_assert(!swarp_status_is_error(s));
+        if (k) {
+            double c = dot(up_row(&prev), up_row(&cur));
+            ck_assert_msg(c > cos(0.1 * DEG), "turns %g° at %.2f°", acos(c) / DEG, k * 0.01);
+        }
+        prev = cur;
+    }
+    /* at 30° (sin γ > 1/κ) it is the aligned frame again: up = ±v̂ */
+    swarp_vec3 a = light.direction, vp = unit(add(b.v, scl(a, -dot(b.v, a))));
+    ck_assert_msg(fabs(dot(up_row(&cur), vp)) > 1 - 1e-12, "not aligned: %.17g", dot(up_row(&cur), vp));
+    /* bad previous views: their status, output untouched */
+    swarp_mat4 bad = cur, out;
+    const double sentinel = -777.0;
+    bad.m[5] = NAN;
+    tu_fill(out.m, 16, sentinel);
+    ck_assert_int_eq(swarp_focus_light_view_follow(&cam, &light, NULL, NULL, &bad, &out), SWARP_ERR_NON_FINITE);
+    ck_assert(tu_untouched(out.m, 16, sentinel));
+    memset(&bad, 0, sizeof bad);
+    ck_assert_int_eq(swarp_focus_light_view_follow(&cam, &light, NULL, NULL, &bad, &out), SWARP_ERR_ZERO_VECTOR);
+    ck_assert(tu_untouched(out.m, 16, sentinel));
+    bad = cur;
+    for (int c = 0; c < 3; ++c) bad.m[c * 4 + 2] *= 0.5;
+    ck_assert_int_eq(swarp_focus_light_view_follow(&cam, &light, NULL, NULL, &bad, &out), SWARP_ERR_FOLLOW_FRAME);
+    ck_assert(tu_untouched(out.m, 16, sentinel));
+    ck_assert_int_eq(swarp_focus_light_view_follow(&cam, &light, NULL, NULL, &cur, NULL), SWARP_ERR_NULL_POINTER);
+}
+END_TEST
+
 Suite* continuity_suite(void) {
     Suite* s = suite_create("continuity");
     TCase* tc = tcase_create("follow");
@@ -687,6 +740,7 @@ Suite* continuity_suite(void) {
     tcase_add_test(tc, aligned_previous_is_lispsm);
     tcase_add_test(tc, bad_previous_frames);
     tcase_add_test(tc, stateless_singular_point_where_documented);
+    tcase_add_test(tc, light_view_follow_twin);
     tcase_add_loop_test(tc, whole_sphere_walk, 0, (int)(sizeof variants / sizeof variants[0]));
     tcase_add_test(tc, point_light_walk);
     tcase_add_test(tc, print_table);
