@@ -271,11 +271,44 @@ swarp_status sw_body_h(const swarp_camera* cam, double near, double far, const s
     /* box first: it is usually the smaller, and clipping the frustum by the
      * box's planes keeps the exact axis planes */
     swarp_polyhedron V;
+    /* H lies in S: a far plane beyond every corner of S (say far = 1e308,
+     * whose corners overflow) is moved in to twice the deepest corner's
+     * view depth, where it still cuts nothing of S; S wholly before the near
+     * plane leaves H empty */
+    {
+        swarp_vec3 f = {0, 0, -1};
+        sw_gnormalize(cam->dir, &f);
+        double zbox = -INFINITY;
+        for (int i = 0; i < 8; ++i) {
+            swarp_vec3 c = sw_v3((i & 1) ? box->max.x : box->min.x, (i & 2) ? box->max.y : box->min.y,
+                                 (i & 4) ? box->max.z : box->min.z);
+            zbox = sw_max(zbox, sw_dot(sw_sub(c, cam->eye), f));
+        }
+        if (zbox < near) return SWARP_ERR_BODY_EMPTY; /* S lies wholly before the near plane */
+        if (far > 2.0 * zbox) far = 2.0 * zbox;
+    }
     swarp_status s = sw_poly_from_frustum(cam, near, far, &V); /* the callers checked cam, near, far */
     if (s != SWARP_OK) return s;
     s = sw_poly_clip_box(&V, box, H);
     if (s != SWARP_OK) return s;
     if (H->vertex_count == 0) return SWARP_ERR_BODY_EMPTY;
+    return SWARP_OK;
+}
+
+/* H = V ∩ S computed with the eye at the origin (as swarp_setup works, see
+ * src/setup.c: coordinates of the size of H, not of the world) and its view
+ * depth range [zmin, zmax]; H_rel is in those camera-relative coordinates. */
+swarp_status sw_body_h_eye(const swarp_camera* cam, double near, double far, const swarp_aabb* box,
+                           swarp_polyhedron* H_rel, double* zmin, double* zmax) {
+    swarp_camera rc = *cam;
+    rc.eye = sw_v3(0.0, 0.0, 0.0);
+    swarp_aabb rb = {sw_sub(box->min, cam->eye), sw_sub(box->max, cam->eye)};
+    if (!sw_finite3(&rb.min) || !sw_finite3(&rb.max)) return SWARP_ERR_NON_FINITE;
+    swarp_status s = sw_body_h(&rc, near, far, &rb, H_rel);
+    if (s != SWARP_OK) return s;
+    swarp_vec3 f, r, u;
+    sw_camera_basis(&rc, &f, &r, &u);
+    sw_depth_range_of(H_rel, rc.eye, f, zmin, zmax);
     return SWARP_OK;
 }
 
@@ -438,13 +471,13 @@ SWARP_API swarp_status swarp_body_adjusted_range(const swarp_camera* cam, const 
     if (!cam || !scene || !out_near || !out_far) return SWARP_ERR_NULL_POINTER;
     swarp_status s = sw_check_camera(cam);
     if (s != SWARP_OK) return s;
-    swarp_polyhedron H;
-    s = swarp_body_h(cam, cam->near, cam->far, scene, &H);
+    s = sw_check_box(scene);
     if (s != SWARP_OK) return s;
-    swarp_vec3 f, r, u;
-    sw_camera_basis(cam, &f, &r, &u);
+    /* camera-relative, as swarp_setup: the same adjusted range */
+    swarp_polyhedron H;
     double mn, mx;
-    sw_depth_range_of(&H, cam->eye, f, &mn, &mx);
+    s = sw_body_h_eye(cam, cam->near, cam->far, scene, &H, &mn, &mx);
+    if (s != SWARP_OK) return s;
     /* H ⊂ V: clamp rounding to the frustum's own range */
     *out_near = sw_max(mn, cam->near);
     *out_far = sw_min(sw_max(mx, *out_near), cam->far);

@@ -293,10 +293,16 @@ SWARP_API swarp_status swarp_poly_from_aabb(const swarp_aabb* box, swarp_polyhed
     return SWARP_OK;
 }
 
+/* Largest tangent of a frustum half-angle used (90° - 1e-12 rad). */
+#define SW_FRUSTUM_MAX_TAN 1e12
+
 static void sw_frustum_corners(const swarp_camera* cam, double near, double far, swarp_vec3 c[8]) {
     swarp_vec3 f, r, u;
     sw_camera_basis(cam, &f, &r, &u);
-    double ty = tan(0.5 * cam->fovy), tx = ty * cam->aspect;
+    /* an aspect of 1e308 asks for a half-angle of 90° - 1e-308 rad: the
+     * frustum is kept within 90° - 1e-12 rad, whose corners stay finite
+     * (SW_FRUSTUM_MAX_TAN) */
+    double ty = fmin(tan(0.5 * cam->fovy), SW_FRUSTUM_MAX_TAN), tx = fmin(ty * cam->aspect, SW_FRUSTUM_MAX_TAN);
     for (int i = 0; i < 8; ++i) {
         double z = (i & 4) ? far : near;
         double sx = (i & 1) ? 1.0 : -1.0, sy = (i & 2) ? 1.0 : -1.0;
@@ -361,6 +367,13 @@ void sw_poly_copy(const swarp_polyhedron* in, swarp_polyhedron* out) {
     memcpy(out->planes, in->planes, in->face_count * sizeof(swarp_plane));
     memcpy(out->face_vertex_count, in->face_vertex_count, in->face_count * sizeof(uint32_t));
     memcpy(out->face_vertices, in->face_vertices, in->face_count * sizeof in->face_vertices[0]);
+}
+
+/* p + t: vertices moved, plane offsets d' = d - n·t */
+void sw_poly_translate(swarp_polyhedron* p, swarp_vec3 t) {
+    for (uint32_t i = 0; i < p->vertex_count; ++i) p->vertices[i] = sw_add(p->vertices[i], t);
+    for (uint32_t f = 0; f < p->face_count; ++f)
+        p->planes[f].d -= p->planes[f].a * t.x + p->planes[f].b * t.y + p->planes[f].c * t.z;
 }
 
 /* Vertex classes of a clip (bits, so a face's classes can be OR-ed). */
