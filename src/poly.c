@@ -296,13 +296,8 @@ SWARP_API swarp_status swarp_poly_from_aabb(const swarp_aabb* box, swarp_polyhed
 /* Largest tangent of a frustum half-angle used (90° - 1e-12 rad). */
 #define SW_FRUSTUM_MAX_TAN 1e12
 
-static void sw_frustum_corners(const swarp_camera* cam, double near, double far, swarp_vec3 c[8]) {
-    swarp_vec3 f, r, u;
-    sw_camera_basis(cam, &f, &r, &u);
-    /* an aspect of 1e308 asks for a half-angle of 90° - 1e-308 rad: the
-     * frustum is kept within 90° - 1e-12 rad, whose corners stay finite
-     * (SW_FRUSTUM_MAX_TAN) */
-    double ty = fmin(tan(0.5 * cam->fovy), SW_FRUSTUM_MAX_TAN), tx = fmin(ty * cam->aspect, SW_FRUSTUM_MAX_TAN);
+static void sw_frustum_corners_b(const swarp_camera* cam, swarp_vec3 f, swarp_vec3 r, swarp_vec3 u, double tx,
+                                 double ty, double near, double far, swarp_vec3 c[8]) {
     for (int i = 0; i < 8; ++i) {
         double z = (i & 4) ? far : near;
         double sx = (i & 1) ? 1.0 : -1.0, sy = (i & 2) ? 1.0 : -1.0;
@@ -312,12 +307,58 @@ static void sw_frustum_corners(const swarp_camera* cam, double near, double far,
     }
 }
 
+/* The frustum's faces, corner index = x | y<<1 | z<<2 (x: right, y: up,
+ * z: far), each loop counter-clockwise seen from outside: the loops
+ * sw_poly_from_corners finds for every camera (its basis is always
+ * right-handed the same way). */
+static const uint8_t sw_frustum_loops[6][4] = {{0, 2, 6, 4}, {1, 5, 7, 3}, {0, 4, 5, 1},
+                                               {2, 3, 7, 6}, {0, 1, 3, 2}, {4, 6, 7, 5}};
+
 swarp_status sw_poly_from_frustum(const swarp_camera* cam, double near, double far, swarp_polyhedron* out) {
+    swarp_vec3 f, r, u;
+    sw_camera_basis(cam, &f, &r, &u);
+    /* an aspect of 1e308 asks for a half-angle of 90° - 1e-308 rad: the
+     * frustum is kept within 90° - 1e-12 rad, whose corners stay finite
+     * (SW_FRUSTUM_MAX_TAN) */
+    double ty = fmin(tan(0.5 * cam->fovy), SW_FRUSTUM_MAX_TAN), tx = fmin(ty * cam->aspect, SW_FRUSTUM_MAX_TAN);
     swarp_vec3 c[8];
-    sw_frustum_corners(cam, near, far, c);
-    for (int i = 0; i < 8; ++i)
+    sw_frustum_corners_b(cam, f, r, u, tx, ty, near, far, c);
+    double scale = 1e-300;
+    for (int i = 0; i < 8; ++i) {
         if (!sw_finite3(&c[i])) return SWARP_ERR_NON_FINITE;
-    sw_poly_from_corners(c, out);
+        scale = sw_max(scale, sw_max(fabs(c[i].x), sw_max(fabs(c[i].y), fabs(c[i].z))));
+    }
+    /* The corners are at least min(2 near tx, 2 near ty, far - near) apart
+     * (the near quad's sides; near and far corners differ by far - near
+     * along f); above 2 eps (the merge test is eps per coordinate, sqrt(3)
+     * eps in distance) nothing merges, and the planes come from the basis
+     * directly instead of Newell's normals of the corners. */
+    const double sep = sw_min(2.0 * near * sw_min(tx, ty), far - near);
+    if (!(sep > 2.0 * SWARP_POLY_EPS_REL * scale)) {
+        sw_poly_from_corners(c, out);
+        return SWARP_OK;
+    }
+    const double kx = 1.0 / sqrt(1.0 + tx * tx), ky = 1.0 / sqrt(1.0 + ty * ty);
+    const double fe = sw_dot(f, cam->eye);
+    swarp_vec3 n[6];
+    double d[6];
+    n[0] = sw_scale(sw_add(r, sw_scale(f, tx)), -kx); /* left: -(r + tx f) */
+    n[1] = sw_scale(sw_sub(r, sw_scale(f, tx)), kx);  /* right: r - tx f */
+    n[2] = sw_scale(sw_add(u, sw_scale(f, ty)), -ky); /* bottom: -(u + ty f) */
+    n[3] = sw_scale(sw_sub(u, sw_scale(f, ty)), ky);  /* top: u - ty f */
+    for (int k = 0; k < 4; ++k) d[k] = -sw_dot(n[k], cam->eye); /* the side planes pass through the eye */
+    n[4] = sw_scale(f, -1.0);
+    d[4] = fe + near;
+    n[5] = f;
+    d[5] = -(fe + far);
+    out->vertex_count = 8;
+    for (int i = 0; i < 8; ++i) out->vertices[i] = c[i];
+    for (int k = 0; k < 6; ++k) {
+        out->planes[k] = (swarp_plane){n[k].x, n[k].y, n[k].z, d[k]};
+        memcpy(out->face_vertices[k], sw_frustum_loops[k], 4);
+        out->face_vertex_count[k] = 4;
+    }
+    out->face_count = 6;
     return SWARP_OK;
 }
 
