@@ -198,7 +198,9 @@ static void sw_poly_merge_on_plane(swarp_polyhedron* p, const uint8_t* on, uint3
         for (uint32_t b = 0; b < a; ++b) {
             if (into[b] != b) continue; /* merged itself: compare with survivors only */
             swarp_vec3 w = p->vertices[on[b]];
-            double dx = v.x - w.x, dy = v.y - w.y, dz = v.z - w.z;
+            double dx = v.x - w.x;
+            if (fabs(dx) > eps) continue; /* the usual case: apart in x already */
+            double dy = v.y - w.y, dz = v.z - w.z;
             if (dx * dx + dy * dy + dz * dz <= eps2) {
                 into[a] = (uint8_t)b;
                 merged = 1;

@@ -115,7 +115,7 @@ static swarp_status sw_setup_points(const swarp_camera* cam, const swarp_light* 
     sw_camera_basis(cam, &v, &r, &u);
     /* nearest vertex e of H (the receivers) for the WS06 centre */
     const swarp_vec3* ep = NULL;
-    {
+    if (o->center == SWARP_WARP_CENTER_NEAREST_VERTEX) { /* only the WS06 centre uses it */
         const swarp_vec3* src = H ? H : B;
         size_t ns = H ? nh : nb;
         double best = INFINITY;
