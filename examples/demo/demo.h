@@ -67,10 +67,13 @@ typedef struct demo_mindepth_result {
 int demo_mindepth(demo_renderer* r, const demo_view* v, demo_mindepth_result* out);
 
 /** The third-person visualisation view ([RHS] §5.2-5.3) of configuration
- *  sh: rendered with split colours from an outside camera, overlays drawn.
- *  Returns the number of GL errors (-1 on failure). */
+ *  sh: rendered with split colours from an outside camera, overlays drawn,
+ *  the bodies B (per split for cascades) from the library for `scene`.
+ *  *out_body_faces (may be NULL): faces of the bodies drawn.  Returns the
+ *  number of GL errors (-1 on failure). */
 int demo_third_person(demo_renderer* r, const demo_view* v, const demo_shadow* sh,
-                      const demo_main_params* base, demo_image* out);
+                      const swarp_aabb* scene, const demo_main_params* base, demo_image* out,
+                      int* out_body_faces);
 
 /** sheets.c: [KOZ] §14.3.2 projective blur against PCF 3x3 on view v
  *  (out_dir/blur_sheet.png).  0 on success. */

@@ -551,9 +551,15 @@ static int run_technique(const options* o, demo_renderer* r, const demo_view* v,
         res->gl_errors += e;
 
         demo_image third;
-        int e3 = demo_third_person(r, v, &sh, &p, &third);
+        int body_faces = 0;
+        int e3 = demo_third_person(r, v, &sh, box, &p, &third, &body_faces);
         if (e3 < 0) return -1;
         res->gl_errors += e3;
+        if (body_faces < 4) {
+            /* a body B is a polyhedron: the library gave none to draw */
+            fprintf(stderr, "demo: %s: no body B drawn in the third-person view\n", res->label);
+            ++res->gl_errors;
+        }
         char title[160];
         snprintf(title, sizeof title, "%s: m_x, m_z along the view vector", res->label);
         demo_image graph;
