@@ -345,7 +345,7 @@ static void br_clone_section(FILE* md, const char* path) {
                 why[0] ? why : "the demo wrote no rows");
         return;
     }
-    fprintf(md, "`demo --test bench-clone` (docs/demo.md, \"Single-pass splits\"): PSSM(K) + LiSPSM on the demo's\n"
+    fprintf(md, "`demo --test bench-clone` (docs/demo.md, \"One pass for all splits\"): PSSM(K) + LiSPSM on the demo's\n"
                 "default view, %s pixels, %u² maps, %u triangles. The K + 1 pass version renders K shadow\n"
                 "passes and the main pass; geometry cloning ([RHS] §3.3.6, Listing A.1) renders all K maps in\n"
                 "one pass (a geometry shader emits each triangle into every split's layer and viewport) and\n"
