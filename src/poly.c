@@ -615,6 +615,21 @@ static void sw_poly_bounds(const swarp_polyhedron* p, double lo[3], double hi[3]
     hi[0] = hx, hi[1] = hy, hi[2] = hz;
 }
 
+/* min/max of one coordinate (0: x, 1: y, 2: z) over the vertices */
+static void sw_poly_axis_bounds(const swarp_polyhedron* p, int c, double* lo, double* hi) {
+    double l = INFINITY, h = -INFINITY;
+    const uint32_t n = p->vertex_count;
+    const swarp_vec3* v = p->vertices;
+    if (c == 0)
+        for (uint32_t i = 0; i < n; ++i) l = v[i].x < l ? v[i].x : l, h = v[i].x > h ? v[i].x : h;
+    else if (c == 1)
+        for (uint32_t i = 0; i < n; ++i) l = v[i].y < l ? v[i].y : l, h = v[i].y > h ? v[i].y : h;
+    else
+        for (uint32_t i = 0; i < n; ++i) l = v[i].z < l ? v[i].z : l, h = v[i].z > h ? v[i].z : h;
+    *lo = l;
+    *hi = h;
+}
+
 swarp_status sw_poly_clip_box_order(const swarp_polyhedron* in, const swarp_aabb* box, const uint8_t order[6],
                                     swarp_polyhedron* out) {
     const swarp_vec3 ns[6] = {{-1, 0, 0}, {1, 0, 0}, {0, -1, 0}, {0, 1, 0}, {0, 0, -1}, {0, 0, 1}};
@@ -627,8 +642,15 @@ swarp_status sw_poly_clip_box_order(const swarp_polyhedron* in, const swarp_aabb
     const swarp_polyhedron* src = in;
     double lo[3], hi[3];
     sw_poly_bounds(in, lo, hi);
+    /* after a clip only the bounds of the axis the next plane needs are
+     * recomputed (stale ones are still bounds: clipping only shrinks) */
+    int stale = 0;
     for (int q = 0; q < 6; ++q) {
         const int k = order[q], c = k / 2;
+        if (stale & (1 << c)) {
+            sw_poly_axis_bounds(src, c, &lo[c], &hi[c]);
+            stale &= ~(1 << c);
+        }
         if ((k & 1) ? !(hi[c] > bmax[c]) : !(lo[c] < bmin[c])) continue;
         swarp_polyhedron* dst = (src == out) ? &buf : out;
         int unchanged = 0;
@@ -640,7 +662,7 @@ swarp_status sw_poly_clip_box_order(const swarp_polyhedron* in, const swarp_aabb
         if (unchanged) continue;
         src = dst;
         if (src->vertex_count == 0) break;
-        sw_poly_bounds(src, lo, hi);
+        stale = 7;
     }
     if (src != out) sw_poly_copy(src, out);
     return SWARP_OK;
