@@ -85,6 +85,30 @@ static int sw_point_axis(const swarp_light* light, const swarp_vec3* pts, size_t
 }
 
 /* Everything after B: light view, warp, fit, error model. */
+/* r = a b for an affine b (last row 0 0 0 1: a look-at, or A_fit's
+ * columns): 12 fewer products than sw_mul and no loop overhead; the same
+ * sums in the same order as sw_mul (the dropped terms are exact zeros,
+ * products with b's 0 0 0 1 row exact), so the values are sw_mul's (a zero
+ * may differ in sign). */
+static void sw_mul_affine_b(const swarp_mat4* a, const swarp_mat4* b, swarp_mat4* r) {
+    swarp_mat4 t;
+    const double* A = a->m;
+    const double* B = b->m;
+    for (int c = 0; c < 3; ++c) {
+        const double b0 = B[c * 4], b1 = B[c * 4 + 1], b2 = B[c * 4 + 2];
+        t.m[c * 4 + 0] = A[0] * b0 + A[4] * b1 + A[8] * b2;
+        t.m[c * 4 + 1] = A[1] * b0 + A[5] * b1 + A[9] * b2;
+        t.m[c * 4 + 2] = A[2] * b0 + A[6] * b1 + A[10] * b2;
+        t.m[c * 4 + 3] = A[3] * b0 + A[7] * b1 + A[11] * b2;
+    }
+    const double b0 = B[12], b1 = B[13], b2 = B[14];
+    t.m[12] = A[0] * b0 + A[4] * b1 + A[8] * b2 + A[12];
+    t.m[13] = A[1] * b0 + A[5] * b1 + A[9] * b2 + A[13];
+    t.m[14] = A[2] * b0 + A[6] * b1 + A[10] * b2 + A[14];
+    t.m[15] = A[3] * b0 + A[7] * b1 + A[11] * b2 + A[15];
+    *r = t;
+}
+
 /* Can the world-space matrix (m · T(-eye), applied to p + eye) be evaluated
  * in double at the camera-relative points p?  Its w carries rounding of
  * about eps times the sizes of the terms summed; when that reaches w itself
@@ -245,7 +269,10 @@ static swarp_status sw_setup_points(const swarp_camera* cam, const swarp_light* 
             wi.n_light = wi.n_eye = INFINITY;
         }
         swarp_mat4 PM, A;
-        sw_mul(&P, &M, &PM);
+        if (light->type == SWARP_LIGHT_POINT)
+            sw_mul(&P, &M, &PM);
+        else
+            sw_mul_affine_b(&P, &M, &PM); /* M = L, a look-at */
         /* pancaking: the depth range covers the receivers H only; casters
          * nearer the light are clamped to the near plane by the renderer */
         const swarp_vec3* zp = (o->pancake && nhk > 0) ? Hp : NULL;
@@ -256,7 +283,7 @@ static swarp_status sw_setup_points(const swarp_camera* cam, const swarp_light* 
         if (light->type == SWARP_LIGHT_POINT) sw_mul(&P, &P0, &proj);
         sw_mul(&A, &proj, &res.light_proj);
         res.light_view = L;
-        sw_mul(&res.light_proj, &L, &res.matrix);
+        sw_mul_affine_b(&res.light_proj, &L, &res.matrix); /* L: a look-at */
         if (!sw_world_resolves(&res.matrix, Bp, nbk, eye)) return SWARP_ERR_DEGENERATE;
         res.n_light = wi.n_light;
         res.n_eye = wi.n_eye;
@@ -339,9 +366,14 @@ static void sw_fold_eye(swarp_mat4* m, swarp_vec3 eye) {
         sw_set(m, r, 3,
                sw_at(m, r, 3) - (sw_at(m, r, 0) * eye.x + sw_at(m, r, 1) * eye.y + sw_at(m, r, 2) * eye.z));
 }
-static void sw_fold_result(swarp_setup_result* res, swarp_vec3 eye) {
+/* Folds the eye back into light_view and matrix; 0 when a changed entry
+ * (their last columns, the rest was checked before) overflowed. */
+static int sw_fold_result(swarp_setup_result* res, swarp_vec3 eye) {
     sw_fold_eye(&res->light_view, eye);
     sw_fold_eye(&res->matrix, eye);
+    int ok = 1;
+    for (int i = 12; i < 16; ++i) ok &= sw_finite(res->light_view.m[i]) & sw_finite(res->matrix.m[i]);
+    return ok;
 }
 
 static swarp_status sw_setup_defaults(const swarp_setup_options* opts, swarp_setup_options* o) {
@@ -402,8 +434,7 @@ static swarp_status sw_setup_range(const swarp_camera* cam, const swarp_light* l
     swarp_status info = sw_setup_points(cam, light, B.vertices, B.vertex_count, &B, Hp->vertices, Hp->vertex_count, near,
                                         far, o, eye, &res);
     if (swarp_status_is_error(info)) return info;
-    sw_fold_result(&res, eye);
-    if (!sw_mat_finite(&res.matrix) || !sw_mat_finite(&res.light_view)) return SWARP_ERR_DEGENERATE;
+    if (!sw_fold_result(&res, eye)) return SWARP_ERR_DEGENERATE;
     *out = res;
     if (out_points)
         for (uint32_t i = 0; i < B.vertex_count; ++i) out_points[i] = sw_add(B.vertices[i], eye);
@@ -508,8 +539,7 @@ SWARP_API swarp_status swarp_setup_points(const swarp_camera* cam, const swarp_l
     s = sw_setup_points(&rc, &rl, Br, count, NULL, receivers ? Hr : NULL, receivers ? receiver_count : 0, near, far,
                         &o, cam->eye, &res);
     if (swarp_status_is_error(s)) return s;
-    sw_fold_result(&res, cam->eye);
-    if (!sw_mat_finite(&res.matrix) || !sw_mat_finite(&res.light_view)) return SWARP_ERR_DEGENERATE;
+    if (!sw_fold_result(&res, cam->eye)) return SWARP_ERR_DEGENERATE;
     *out = res;
     return s;
 }
