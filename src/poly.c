@@ -457,8 +457,18 @@ static swarp_status sw_poly_clip_to(const swarp_polyhedron* in, swarp_vec3 n_raw
     /* class bits per vertex: SW_IN, SW_ON (within eps of the plane), SW_OUT */
     uint8_t cls[SWARP_POLY_MAX_VERTICES];
     int any_out = 0, any_in = 0;
+    if (unit_normal) { /* ±(one coordinate) + d: the same values as the dot with the axis */
+        const swarp_vec3* v = in->vertices;
+        if (n.x != 0.0)
+            for (uint32_t i = 0; i < nv; ++i) dist[i] = n.x * v[i].x + d;
+        else if (n.y != 0.0)
+            for (uint32_t i = 0; i < nv; ++i) dist[i] = n.y * v[i].y + d;
+        else
+            for (uint32_t i = 0; i < nv; ++i) dist[i] = n.z * v[i].z + d;
+    } else {
+        for (uint32_t i = 0; i < nv; ++i) dist[i] = sw_dot(n, in->vertices[i]) + d;
+    }
     for (uint32_t i = 0; i < nv; ++i) {
-        dist[i] = sw_dot(n, in->vertices[i]) + d;
         int o = dist[i] > eps, u = dist[i] < -eps; /* branch-free */
         cls[i] = (uint8_t)(SW_ON + 2 * o - u);     /* 4, 2 or 1 */
         any_out |= o;
