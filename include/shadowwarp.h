@@ -903,7 +903,7 @@ typedef struct swarp_setup_result {
 /** @brief The one call: H = V ∩ S, adjusted near/far [RHS] §3.3.1, B
  *  [RHS] §3.1.1, light view with light-space alignment, the technique's
  *  warp ([RHS] §3.2.1 / [KOZ]), focusing [RHS] (3.1) and the error model's
- *  prediction [RHS] (2.3)-(2.8).  No allocation; about 2-2.5 µs per call
+ *  prediction [RHS] (2.3)-(2.8).  No allocation; about 2 µs per call
  *  (docs/performance.md).
  *  @param[in] cam, light, scene  (scene: the box S of casters and receivers)
  *  @param[in] opts     NULL or zeroed for defaults
