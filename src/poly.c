@@ -489,10 +489,17 @@ static swarp_status sw_poly_clip_to(const swarp_polyhedron* in, swarp_vec3 n_raw
     uint32_t tv = 0;
     uint8_t on_plane[SWARP_POLY_MAX_VERTICES];
     uint32_t n_on = 0;
+    /* per output vertex: on the plane?  and its successor on the cap (the
+     * cap's edges are the in-plane edges of the kept faces, reversed) */
+    uint8_t onf[SWARP_POLY_MAX_VERTICES], nxt[SWARP_POLY_MAX_VERTICES];
+    uint32_t n_cap = 0;
+    int cap_bad = 0;
     for (uint32_t i = 0; i < nv; ++i) {
         if (cls[i] != SW_OUT) {
             map[i] = (uint8_t)tv;
             t->vertices[tv] = in->vertices[i];
+            onf[tv] = cls[i] == SW_ON;
+            nxt[tv] = 0xFF;
             if (cls[i] == SW_ON) on_plane[n_on++] = (uint8_t)tv;
             ++tv;
         }
@@ -537,6 +544,8 @@ static swarp_status sw_poly_clip_to(const swarp_polyhedron* in, swarp_vec3 n_raw
                         edge_lo[e] = lo;
                         edge_hi[e] = hi;
                         edge_v[e] = (uint8_t)tv;
+                        onf[tv] = 1;
+                        nxt[tv] = 0xFF;
                         on_plane[n_on++] = (uint8_t)tv;
                         ++tv;
                         ++n_edges;
@@ -551,6 +560,18 @@ static swarp_status sw_poly_clip_to(const swarp_polyhedron* in, swarp_vec3 n_raw
             swarp_vec3 fnrm = {in->planes[f].a, in->planes[f].b, in->planes[f].c};
             if (sw_dot(fnrm, n) > 0.0) cap_coincides = 1;
         }
+        if (any & (SW_ON | SW_OUT)) { /* its in-plane edges p -> q: cap edges q -> p */
+            uint8_t p = loop[m - 1];
+            for (uint32_t k = 0; k < m; ++k) {
+                const uint8_t q = loop[k];
+                if (onf[p] & onf[q]) {
+                    cap_bad |= nxt[q] != 0xFF;
+                    nxt[q] = p;
+                    ++n_cap;
+                }
+                p = q;
+            }
+        }
         t->face_vertex_count[tf] = m;
         t->planes[tf] = in->planes[f];
         ++tf;
@@ -560,6 +581,21 @@ static swarp_status sw_poly_clip_to(const swarp_polyhedron* in, swarp_vec3 n_raw
     if (n_on >= 3 && !cap_coincides) {
         if (n_on > SWARP_POLY_MAX_FACE_VERTICES) return SWARP_ERR_CAPACITY;
         if (tf >= SWARP_POLY_MAX_FACES) return SWARP_ERR_CAPACITY;
+        uint8_t* idx = t->face_vertices[tf];
+        /* usually the in-plane edges chain into the cap's loop: one cycle
+         * through all n_on on-plane vertices */
+        int chained = !cap_bad && n_cap == n_on;
+        if (chained) {
+            uint8_t v = on_plane[0];
+            idx[0] = v;
+            for (uint32_t k = 1; k < n_on && chained; ++k) {
+                v = nxt[v];
+                chained = v != 0xFF && v != on_plane[0];
+                idx[k] = v;
+            }
+            chained = chained && nxt[v] == on_plane[0];
+        }
+        if (!chained) { /* degenerate: sort by angle around the centroid */
         swarp_vec3 c = {0, 0, 0};
         for (uint32_t k = 0; k < n_on; ++k) c = sw_add(c, t->vertices[on_plane[k]]);
         c = sw_scale(c, 1.0 / n_on);
@@ -572,7 +608,6 @@ static swarp_status sw_poly_clip_to(const swarp_polyhedron* in, swarp_vec3 n_raw
             sw_gnormalize(sw_cross(ref, n), &e1);
         e2 = sw_cross(n, e1);
         double key[SWARP_POLY_MAX_FACE_VERTICES];
-        uint8_t* idx = t->face_vertices[tf];
         for (uint32_t k = 0; k < n_on; ++k) {
             swarp_vec3 q = sw_sub(t->vertices[on_plane[k]], c);
             double kk = sw_pseudo_angle(sw_dot(q, e1), sw_dot(q, e2));
@@ -584,6 +619,7 @@ static swarp_status sw_poly_clip_to(const swarp_polyhedron* in, swarp_vec3 n_raw
             }
             key[j] = kk;
             idx[j] = on_plane[k];
+        }
         }
         t->face_vertex_count[tf] = n_on;
         t->planes[tf].a = n.x;
