@@ -131,7 +131,7 @@ static int sw_loops_tidy(const swarp_polyhedron* H) {
  * vertex of H and of its copy (or the apex) is written and the caller
  * finalizes. */
 static swarp_status sw_extend(const swarp_polyhedron* H, swarp_vec3 u, double T, const swarp_vec3* apex,
-                              swarp_polyhedron* out, int* finalized) {
+                              int h_tidy, swarp_polyhedron* out, int* finalized) {
     const uint32_t nv = H->vertex_count;
     int front[SWARP_POLY_MAX_FACES];
     int any_front = 0;
@@ -156,7 +156,7 @@ static swarp_status sw_extend(const swarp_polyhedron* H, swarp_vec3 u, double T,
     uint32_t tv = apex ? nv + 1 : 2 * nv;
     if (tv > SWARP_POLY_MAX_VERTICES) return SWARP_ERR_CAPACITY;
     uint8_t id[SWARP_POLY_MAX_VERTICES];
-    if (!apex && sw_loops_tidy(H)) {
+    if (!apex && (h_tidy || sw_loops_tidy(H))) {
         uint8_t on_back[SWARP_POLY_MAX_VERTICES], on_front[SWARP_POLY_MAX_VERTICES];
         memset(on_back, 0, nv);
         memset(on_front, 0, nv);
@@ -354,8 +354,23 @@ static void sw_sweep_clip_order(swarp_vec3 u, const swarp_aabb* box, uint8_t ord
     }
 }
 
+static swarp_status sw_body_from_h_ex(const swarp_polyhedron* H, const swarp_light* light, const swarp_aabb* box,
+                                      int h_tidy, swarp_polyhedron* B);
+
 swarp_status sw_body_from_h(const swarp_polyhedron* H, const swarp_light* light, const swarp_aabb* box,
                             swarp_polyhedron* B) {
+    return sw_body_from_h_ex(H, light, box, 0, B);
+}
+
+/* H built by the clipper (sw_body_h and clips of it): its loops are tidy
+ * (no index next to itself, at least 3 entries), see sw_loops_tidy. */
+swarp_status sw_body_from_h_clipped(const swarp_polyhedron* H, const swarp_light* light, const swarp_aabb* box,
+                                    swarp_polyhedron* B) {
+    return sw_body_from_h_ex(H, light, box, 1, B);
+}
+
+static swarp_status sw_body_from_h_ex(const swarp_polyhedron* H, const swarp_light* light, const swarp_aabb* box,
+                                      int h_tidy, swarp_polyhedron* B) {
     swarp_polyhedron M;
     swarp_status s;
     /* the in-plane construction only when H is flat AND the light lies in
@@ -378,7 +393,7 @@ swarp_status sw_body_from_h(const swarp_polyhedron* H, const swarp_light* light,
         swarp_vec3 l = light->position;
         int finalized = 0;
         s = flat ? sw_flat_extend(H, sw_v3(0, 0, 0), 0.0, &l, &M)
-                 : sw_extend(H, sw_v3(0, 0, 0), 0.0, &l, &M, &finalized);
+                 : sw_extend(H, sw_v3(0, 0, 0), 0.0, &l, h_tidy, &M, &finalized);
         if (s != SWARP_OK) return s;
         sw_poly_finalize(&M, H->vertex_count, 0.0); /* the apex may sit on a vertex of H */
         s = sw_poly_clip_box(&M, box, B);
@@ -394,7 +409,7 @@ swarp_status sw_body_from_h(const swarp_polyhedron* H, const swarp_light* light,
         double diag = sw_glen(sw_sub(box->max, box->min));
         double T = 2.0 * diag + 1e-300;
         int finalized = 0;
-        s = flat ? sw_flat_extend(H, u, T, NULL, &M) : sw_extend(H, u, T, NULL, &M, &finalized);
+        s = flat ? sw_flat_extend(H, u, T, NULL, &M) : sw_extend(H, u, T, NULL, h_tidy, &M, &finalized);
         if (s != SWARP_OK) return s;
         /* the translated copies are T > diag(S) away from H and as far apart
          * as H's vertices: nothing to merge, only faces to tidy (sw_extend

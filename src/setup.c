@@ -417,7 +417,7 @@ static swarp_status sw_setup_range(const swarp_camera* cam, const swarp_light* l
         if (s != SWARP_OK) return s;
         Hp = &Hl;
     }
-    s = sw_body_from_h(Hp, light, scene, &B);
+    s = sw_body_from_h_clipped(Hp, light, scene, &B); /* H from sw_body_h: the clipper's */
     if (s != SWARP_OK) return s;
     s = sw_check_points_capacity(&B, out_points, capacity, out_count);
     if (s != SWARP_OK) return s;
