@@ -87,10 +87,9 @@ swarp_status sw_follow_light_view(const swarp_camera* cam, swarp_vec3 origin, sw
 swarp_status sw_warp_lispsm_oriented(const swarp_mat4* M, const swarp_mat4* M_inv, const swarp_camera* cam, double near,
                             double far, const swarp_vec3* points, size_t count, const swarp_vec3* nearest,
                             const swarp_warp_options* o, swarp_mat4* out_P, swarp_warp_info* out_info) {
-    swarp_vec3 v, r, u;
-    sw_camera_basis(cam, &v, &r, &u);
-    /* y·v in the warp's light space (row 1 of M is the light view's up row,
-     * also for a point light, whose P0 keeps x and y) */
+    /* the sign of y·v (row 1 of M is the light view's up row, also for a
+     * point light, whose P0 keeps x and y); the sign needs no unit v */
+    const swarp_vec3 v = cam->dir;
     double vy = sw_at(M, 1, 0) * v.x + sw_at(M, 1, 1) * v.y + sw_at(M, 1, 2) * v.z;
     if (vy >= 0.0) return sw_warp_lispsm(M, M_inv, cam, near, far, points, count, nearest, o, out_P, out_info);
     /* σ = -1: warp along -y, i.e. in the frame turned by 180° about the

@@ -183,7 +183,9 @@ swarp_status sw_warp_lispsm(const swarp_mat4* M, const swarp_mat4* M_inv, const 
      * of swarp_setup_follow) the warp is as strong as the view's slope
      * along its own axis, like n_opt's z_0, z_1 below, and uniform where
      * y ⟂ v. */
-    double gamma_eff = atan2(fabs(vy), hypot(vx, va));
+    double gamma_eff = (o->param == SWARP_WARP_PARAM_NREPAR || o->param == SWARP_WARP_PARAM_GMNPR)
+                           ? atan2(fabs(vy), hypot(vx, va))
+                           : gamma; /* unused by n_opt, (4.2) and the caller's n */
     /* C_start: [RHS] §4.1 takes s on the view vector at the depth of the
      * nearest vertex e (the given near); [WS06] takes e itself. */
     swarp_vec3 c_ws = sw_add(cam->eye, sw_scale(v, near));
