@@ -679,6 +679,64 @@ START_TEST(print_table) {
 }
 END_TEST
 
+/* ---- PSM's steep, continuous regime (docs/geometry.md section 7) -------------
+ * On the great circle through v at azimuth 30°, 30.27°-30.33° from v (the
+ * light from behind the camera, the receivers' cone from the post-perspective
+ * light nearly a hemisphere), the map's y scale (row 1 over row 0) changes
+ * more than twofold: steep.  Yet it is continuous: the largest change per
+ * step shrinks in proportion to the step around the steepest point
+ * (10^-3° -> 10^-5° -> 10^-7°), it stays finite, and H maps inside the clip
+ * volume. */
+static double row_norm(const swarp_mat4* m, int r) {
+    double n = 0;
+    for (int c = 0; c < 4; ++c) n += m->m[c * 4 + r] * m->m[c * 4 + r];
+    return sqrt(n);
+}
+START_TEST(psm_steep_but_continuous) {
+    const path gc30 = {PATH_GREAT, 30, 36000, 1};
+    swarp_camera cam = scene_camera();
+    basis b = cam_basis(&cam);
+    swarp_setup_options o;
+    memset(&o, 0, sizeof o);
+    o.technique = SWARP_TECHNIQUE_PSM;
+    swarp_light light;
+    swarp_vec3 pts[SWARP_BODY_MAX_POINTS];
+    size_t n;
+    double k0 = 3027, h = 0.1, worst[3], lo = INFINITY, hi = 0;
+    for (int level = 0; level < 3; ++level) {
+        int m = level == 0 ? 60 : 100;
+        swarp_setup_result a, c;
+        set_light(&light, &cam, path_dir(&gc30, &b, k0));
+        ck_assert(!swarp_status_is_error(follow(&cam, &light, &o, NULL, &a, NULL, NULL)));
+        double next_k0 = k0;
+        worst[level] = 0;
+        for (int i = 1; i <= m; ++i) {
+            set_light(&light, &cam, path_dir(&gc30, &b, k0 + i * h));
+            swarp_status s = follow(&cam, &light, &o, &a, &c, pts, &n);
+            REQUIRE(!swarp_status_is_error(s), "%s", swarp_status_name(s));
+            for (int e = 0; e < 16; ++e) REQUIRE(isfinite(c.matrix.m[e]), "not finite");
+            double j = mat_jump(&a.matrix, &c.matrix);
+            if (j > worst[level]) worst[level] = j, next_k0 = k0 + (i - 1) * h;
+            if (level == 0) {
+                double ratio = row_norm(&c.matrix, 1) / row_norm(&c.matrix, 0);
+                lo = fmin(lo, ratio), hi = fmax(hi, ratio);
+                if (i % 10 == 0) check_properties(&cam, &c, pts, n, SWARP_TECHNIQUE_PSM, "psm steep");
+            }
+            a = c;
+        }
+        k0 = next_k0;
+        h *= 0.01;
+    }
+    fprintf(stderr,
+            "PSM steep regime: y/x scale from %.3g to %.3g (x%.2f) within 0.06°; largest change per 1e-3°, 1e-5°, "
+            "1e-7° step: %.3g %.3g %.3g\n",
+            lo, hi, hi / lo, worst[0], worst[1], worst[2]);
+    ck_assert_msg(hi > 2 * lo, "not steep here: y/x scale %g..%g", lo, hi);
+    ck_assert_msg(worst[1] < 0.05 * worst[0] && worst[2] < 0.05 * worst[1], "does not shrink: %g %g %g", worst[0],
+                  worst[1], worst[2]);
+}
+END_TEST
+
 /* ---- swarp_focus_light_view_follow ------------------------------------------- */
 START_TEST(light_view_follow_twin) {
     rng R = {0xF0110003ull};
@@ -741,6 +799,7 @@ Suite* continuity_suite(void) {
     tcase_add_test(tc, bad_previous_frames);
     tcase_add_test(tc, stateless_singular_point_where_documented);
     tcase_add_test(tc, light_view_follow_twin);
+    tcase_add_test(tc, psm_steep_but_continuous);
     tcase_add_loop_test(tc, whole_sphere_walk, 0, (int)(sizeof variants / sizeof variants[0]));
     tcase_add_test(tc, point_light_walk);
     tcase_add_test(tc, print_table);
