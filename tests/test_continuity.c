@@ -187,7 +187,7 @@ static swarp_status follow(const swarp_camera* cam, const swarp_light* light, co
 
 /* coverage and tightness on the walk: every vertex of H = V ∩ S (the view
  * range used) maps inside the clip volume; the fitted points (B, for PSM H)
- * touch x, y = ±1 */
+ * lie inside it too (depth included) and touch x, y = ±1 */
 static void check_properties(const swarp_camera* cam, const swarp_setup_result* r, const swarp_vec3* pts,
                              size_t npts, swarp_technique tech, const char* where) {
     swarp_polyhedron H;
@@ -206,6 +206,8 @@ static void check_properties(const swarp_camera* cam, const swarp_setup_result* 
         double c[4];
         clip(&r->matrix, fp[i], c);
         for (int k = 0; k < 2; ++k) lo[k] = fmin(lo[k], c[k]), hi[k] = fmax(hi[k], c[k]);
+        /* B (casters and receivers) inside the depth range too */
+        REQUIRE(c[3] > 0 && fabs(c[2]) <= 1 + 1e-9, "%s: fitted point %zu at depth %g (w %g)", where, i, c[2], c[3]);
     }
     for (int k = 0; k < 2; ++k)
         REQUIRE(fabs(lo[k] + 1) < 1e-9 && fabs(hi[k] - 1) < 1e-9, "%s: axis %d spans [%.12g, %.12g]", where, k,
