@@ -739,6 +739,49 @@ START_TEST(psm_steep_but_continuous) {
 }
 END_TEST
 
+/* ---- the camera turns under a fixed light ------------------------------------
+ * With previous_cam the frame realigns as the view turns (Δ counts the view's
+ * turn): after a 90° yaw in 0.1° steps with the sun 40° from the view it is
+ * the aligned frame (up = ±v̂), turning by a bounded amount per step.
+ * Without previous_cam only the light's motion counts: the frame keeps its
+ * orientation (docs/geometry.md: pass the previous camera). */
+START_TEST(camera_turns_under_fixed_light) {
+    swarp_camera cam = scene_camera();
+    swarp_light light;
+    memset(&light, 0, sizeof light);
+    light.type = SWARP_LIGHT_DIRECTIONAL;
+    basis b0 = cam_basis(&cam);
+    light.direction = add(scl(b0.v, cos(40 * DEG)), scl(b0.u, -sin(40 * DEG)));
+    swarp_setup_options o;
+    memset(&o, 0, sizeof o);
+    o.technique = SWARP_TECHNIQUE_LISPSM;
+    for (int with_prev_cam = 0; with_prev_cam < 2; ++with_prev_cam) {
+        swarp_camera c = cam, pc;
+        swarp_setup_result prev, cur;
+        ck_assert(!swarp_status_is_error(swarp_setup_follow(&c, &light, &scene_box, &o, NULL, NULL, &prev, NULL, 0, NULL)));
+        swarp_vec3 up0 = up_row(&prev.light_view);
+        for (int k = 1; k <= 900; ++k) {
+            pc = c;
+            double yaw = k * 0.1 * DEG; /* about world y */
+            c.dir = v3(cam.dir.x * cos(yaw) + cam.dir.z * sin(yaw), cam.dir.y, -cam.dir.x * sin(yaw) + cam.dir.z * cos(yaw));
+            swarp_status s = swarp_setup_follow(&c, &light, &scene_box, &o, with_prev_cam ? &pc : NULL, &prev, &cur, NULL, 0,
+                                                NULL);
+            ck_assert(!swarp_status_is_error(s));
+            ck_assert_msg(dot(up_row(&prev.light_view), up_row(&cur.light_view)) > cos((SWARP_FOLLOW_KAPPA + 1) * 0.1 * DEG),
+                          "turned too far at step %d", k);
+            prev = cur;
+        }
+        basis b = cam_basis(&c);
+        swarp_vec3 a = light.direction, vp = unit(add(b.v, scl(a, -dot(b.v, a))));
+        if (with_prev_cam)
+            ck_assert_msg(fabs(dot(up_row(&cur.light_view), vp)) > 1 - 1e-12, "not realigned: %.17g",
+                          dot(up_row(&cur.light_view), vp));
+        else
+            ck_assert_msg(dot(up_row(&cur.light_view), up0) > 1 - 1e-12, "the frame moved without previous_cam");
+    }
+}
+END_TEST
+
 /* ---- swarp_focus_light_view_follow ------------------------------------------- */
 START_TEST(light_view_follow_twin) {
     rng R = {0xF0110003ull};
@@ -801,6 +844,7 @@ Suite* continuity_suite(void) {
     tcase_add_test(tc, bad_previous_frames);
     tcase_add_test(tc, stateless_singular_point_where_documented);
     tcase_add_test(tc, light_view_follow_twin);
+    tcase_add_test(tc, camera_turns_under_fixed_light);
     tcase_add_test(tc, psm_steep_but_continuous);
     tcase_add_loop_test(tc, whole_sphere_walk, 0, (int)(sizeof variants / sizeof variants[0]));
     tcase_add_test(tc, point_light_walk);
