@@ -413,6 +413,7 @@ static void rnd_config(rng* R, swarp_camera* cam, swarp_light* light) {
 static const swarp_technique all_techs[3] = {SWARP_TECHNIQUE_UNIFORM, SWARP_TECHNIQUE_LISPSM, SWARP_TECHNIQUE_PSM};
 
 START_TEST(null_previous_is_setup_bitwise) {
+    if (getenv("SWARP_CONT_TABLE")) return; /* table mode: only print_table */
     rng R = {0xF0110001ull};
     int ok = 0;
     for (int i = 0; i < 600; ++i) {
@@ -457,6 +458,7 @@ static void turn180(swarp_mat4* m) { /* diag(-1, -1, 1, 1) · m */
 }
 
 START_TEST(aligned_previous_is_lispsm) {
+    if (getenv("SWARP_CONT_TABLE")) return; /* table mode: only print_table */
     rng R = {0xF0110002ull};
     int checked = 0, turned = 0;
     for (int i = 0; i < 900; ++i) {
@@ -523,6 +525,7 @@ static void expect_bad(const swarp_setup_result* prev, const swarp_camera* prev_
 }
 
 START_TEST(bad_previous_frames) {
+    if (getenv("SWARP_CONT_TABLE")) return; /* table mode: only print_table */
     swarp_camera cam = scene_camera();
     swarp_light light;
     memset(&light, 0, sizeof light);
@@ -604,6 +607,7 @@ static double blend_root(void) {
 static swarp_vec3 up_row(const swarp_mat4* m) { return v3(m->m[1], m->m[5], m->m[9]); }
 
 START_TEST(stateless_singular_point_where_documented) {
+    if (getenv("SWARP_CONT_TABLE")) return; /* table mode: only print_table */
     double g = blend_root();
     ck_assert_msg(fabs(g / DEG - 5.6) < 0.05 && fabs(sin(g) - 0.097) < 0.0005, "root at %.4f°, sin %.5f", g / DEG,
                   sin(g));
@@ -695,6 +699,7 @@ static double row_norm(const swarp_mat4* m, int r) {
     return sqrt(n);
 }
 START_TEST(psm_steep_but_continuous) {
+    if (getenv("SWARP_CONT_TABLE")) return; /* table mode: only print_table */
     const path gc30 = {PATH_GREAT, 30, 36000, 1};
     swarp_camera cam = scene_camera();
     basis b = cam_basis(&cam);
@@ -746,6 +751,7 @@ END_TEST
  * Without previous_cam only the light's motion counts: the frame keeps its
  * orientation (docs/geometry.md: pass the previous camera). */
 START_TEST(camera_turns_under_fixed_light) {
+    if (getenv("SWARP_CONT_TABLE")) return; /* table mode: only print_table */
     swarp_camera cam = scene_camera();
     swarp_light light;
     memset(&light, 0, sizeof light);
@@ -784,6 +790,7 @@ END_TEST
 
 /* ---- swarp_focus_light_view_follow ------------------------------------------- */
 START_TEST(light_view_follow_twin) {
+    if (getenv("SWARP_CONT_TABLE")) return; /* table mode: only print_table */
     rng R = {0xF0110003ull};
     for (int i = 0; i < 300; ++i) { /* previous NULL: swarp_focus_light_view, byte for byte */
         swarp_camera cam;
