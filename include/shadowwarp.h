@@ -144,7 +144,7 @@ extern "C" {
     X(SWARP_INFO_LIGHT_NEAR_CLIPPED, 1103,                                              \
       "spot light on or inside B: points nearer than its near plane left out")          \
     X(SWARP_INFO_FOLLOW_LAG, 1104,                                                      \
-      "followed light frame lags the view alignment (light near the view axis): warp weakened")
+      "followed light frame still turning toward the aligned one (light near the view axis; LiSPSM weaker)")
 /* <<< status: geometry */
 
 /* >>> status: lixel (200..299, 1200..1299) */
@@ -1004,8 +1004,8 @@ SWARP_API swarp_status swarp_setup_points(const swarp_camera* cam, const swarp_l
  *  @return as swarp_setup, plus SWARP_INFO_FOLLOW_LAG (the frame is still
  *          turning toward the aligned one); SWARP_ERR_NON_FINITE (NaN/Inf in
  *          the rows of previous that are read), SWARP_ERR_ZERO_VECTOR (a zero
- *          row), SWARP_ERR_FOLLOW_FRAME (rows not orthonormal within 1e-6,
- *          or a PSM result whose ranges are invalid).  Outputs untouched on
+ *          row), SWARP_ERR_FOLLOW_FRAME (rows not orthonormal within 1e-6 or
+ *          left-handed, or a PSM result whose ranges are invalid).  Outputs untouched on
  *          error.  [RHS] §3.2.1, [KOZ] §14.2.2 */
 SWARP_API swarp_status swarp_setup_follow(const swarp_camera* cam, const swarp_light* light,
                                           const swarp_aabb* scene, const swarp_setup_options* opts,
