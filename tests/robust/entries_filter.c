@@ -470,8 +470,10 @@ static void e_evsm_moments(swr_ctx* c) {
     FIN(c, cn);
     if (swr_isfin(cp) && swr_isfin(cn) && swr_isfin(x)) {
         if (!(cp > 0) || !(cn > 0)) swr_expect(c, SWARP_ERR_FILTER_EXPONENT);
-        else if (!swr_isfin(expl(2.0L * cp * x)) || !swr_isfin(expl(-2.0L * cn * x)) || 2 * cp * x > 709 ||
-                 -2 * cn * x > 709) {
+        else if (fmaxl(2.0L * cp * x, -2.0L * cn * x) > logl(DBL_MAX) + 1e-12L) {
+            /* (the bound is ln DBL_MAX = 709.78..., not 709: e^{709.2} is a
+             * finite double, crash-6e110d38ab22e9f6; 1e-12 covers the rounding
+             * of c·x and of the squared exponential) */
             /* a moment overflows: documented FILTER_EXPONENT; the library says
              * NON_FINITE (doc/implementation mismatch, docs/quality.md) */
             swr_expect(c, SWARP_ERR_FILTER_EXPONENT);
