@@ -1,0 +1,306 @@
+#define _POSIX_C_SOURCE 200809L
+/* Argument checks and edge branches of the swarp_bias_* functions (issue 9,
+ * branch coverage): every bad input gives its documented status with the
+ * outputs untouched, and the valid results are compared with an independent
+ * evaluation (an orthographic map, where the world-space texel is
+ * width / resolution and depth is linear in the light's z). */
+#include <check.h>
+#include <float.h>
+#include <math.h>
+#include <stdint.h>
+#include <string.h>
+
+#include "shadowwarp.h"
+#include "test_util.h"
+
+#define SENTINEL (-7.25e33)
+
+/* An orthographic light map looking down -y: x in [-W/2, W/2] -> s, z in
+ * [-W/2, W/2] -> t (clip y = -z... any sign), light-space depth along -y:
+ * world y = Y0 -> clip z = -1, y = Y0 - D -> +1 (NEG_ONE_TO_ONE). */
+static const double W = 20.0, Y0 = 10.0, D = 40.0;
+static swarp_bias_map ortho_map(swarp_depth_range depth) {
+    swarp_bias_map m;
+    memset(&m, 0, sizeof m);
+    double* a = m.world_to_clip.m; /* column-major: a[c * 4 + r] */
+    a[0 * 4 + 0] = 2.0 / W;        /* clip x = 2 x / W */
+    a[2 * 4 + 1] = 2.0 / W;        /* clip y = 2 z / W */
+    if (depth == SWARP_DEPTH_ZERO_TO_ONE) { /* clip z = (Y0 - y) / D */
+        a[1 * 4 + 2] = -1.0 / D;
+        a[3 * 4 + 2] = Y0 / D;
+    } else { /* clip z = 2 (Y0 - y) / D - 1 */
+        a[1 * 4 + 2] = -2.0 / D;
+        a[3 * 4 + 2] = 2.0 * Y0 / D - 1.0;
+    }
+    a[3 * 4 + 3] = 1.0;
+    m.res_s = 1024.0;
+    m.res_t = 512.0;
+    m.depth = depth;
+    return m;
+}
+static swarp_light sun(void) {
+    swarp_light l;
+    memset(&l, 0, sizeof l);
+    l.type = SWARP_LIGHT_DIRECTIONAL;
+    l.direction = (swarp_vec3){0.0, -1.0, 0.0};
+    return l;
+}
+
+START_TEST(bias_valid_against_orthographic_closed_form) {
+    const swarp_depth_range ranges[2] = {SWARP_DEPTH_NEG_ONE_TO_ONE, SWARP_DEPTH_ZERO_TO_ONE};
+    for (int r = 0; r < 2; ++r) {
+        swarp_bias_map m = ortho_map(ranges[r]);
+        swarp_light l = sun();
+        swarp_vec3 p = {1.5, -3.0, 2.0};
+        double Lt = SENTINEL, Ls = SENTINEL, Ltt = SENTINEL;
+        ck_assert_int_eq(swarp_bias_texel_size(&m, &p, &Lt, &Ls, &Ltt), SWARP_OK);
+        ck_assert(tu_rel(Ls, W / 1024.0) < 1e-12 && tu_rel(Ltt, W / 512.0) < 1e-12 && Lt == Ltt);
+        /* only one output requested */
+        double only = SENTINEL;
+        ck_assert_int_eq(swarp_bias_texel_size(&m, &p, NULL, &only, NULL), SWARP_OK);
+        ck_assert(only == Ls);
+        /* kozlov: p + L (a + b L_texel), L = +y */
+        swarp_vec3 q;
+        double amount;
+        ck_assert_int_eq(swarp_bias_kozlov(&m, &l, &p, 0.01, 2.0, &q, &amount), SWARP_OK);
+        ck_assert(tu_rel(amount, 0.01 + 2.0 * W / 512.0) < 1e-12);
+        ck_assert(q.x == p.x && q.z == p.z && tu_rel(q.y, p.y + amount) < 1e-12);
+        ck_assert_int_eq(swarp_bias_kozlov(&m, &l, &p, 0.01, 2.0, &q, NULL), SWARP_OK);
+        /* normal offset: k L_texel (1 - N.L) along N; N tilted 60 degrees */
+        swarp_vec3 N = {sin(1.0471975511965976), cos(1.0471975511965976), 0.0};
+        ck_assert_int_eq(swarp_bias_normal_offset(&m, &l, &p, &N, 1.5, &q, &amount), SWARP_OK);
+        ck_assert(tu_rel(amount, 1.5 * (W / 512.0) * (1.0 - 0.5)) < 1e-12);
+        ck_assert(fabs(q.x - (p.x + amount * N.x)) < 1e-12);
+        /* back-facing normal: N.L clamped to 0, informational status */
+        swarp_vec3 Nb = {0.0, -1.0, 0.0};
+        ck_assert_int_eq(swarp_bias_normal_offset(&m, &l, &p, &Nb, 1.0, &q, NULL), SWARP_INFO_BACKFACING);
+        ck_assert(tu_rel(q.y, p.y - W / 512.0) < 1e-12);
+        /* slope-scaled: c + s L_texel tan(angle), depth bias = world bias
+         * times the depth scale (2/D for [-1,1] then *0.5 to window = 1/D) */
+        double wb = SENTINEL, db = SENTINEL;
+        ck_assert_int_eq(swarp_bias_slope_scaled(&m, &l, &p, &N, 0.02, 1.0, &wb, &db), SWARP_OK);
+        ck_assert(tu_rel(wb, 0.02 + (W / 512.0) * tan(1.0471975511965976)) < 1e-12);
+        ck_assert(tu_rel(db, wb / D) < 1e-10);
+        /* grazing: slope capped at 10 */
+        swarp_vec3 Ng = {1.0, 1e-9, 0.0};
+        ck_assert_int_eq(swarp_bias_slope_scaled(&m, &l, &p, &Ng, 0.0, 1.0, &wb, NULL), SWARP_OK);
+        ck_assert(tu_rel(wb, 10.0 * W / 512.0) < 1e-12);
+        ck_assert_int_eq(swarp_bias_slope_scaled(&m, &l, &p, &Nb, 0.0, 1.0, NULL, &db), SWARP_INFO_BACKFACING);
+        /* depth per world unit toward the light: 1/D in window depth */
+        double dpw = SENTINEL;
+        ck_assert_int_eq(swarp_bias_depth_per_world(&m, &l, &p, &dpw), SWARP_OK);
+        ck_assert(tu_rel(dpw, 1.0 / D) < 1e-12);
+        /* receiver plane tilted: depth changes 0.5 world per world x */
+        swarp_vec3 ta = {1.0, 0.5, 0.0}, tb = {0.0, 0.0, 1.0};
+        double g[2] = {SENTINEL, SENTINEL};
+        ck_assert_int_eq(swarp_bias_receiver_plane(&m, &p, &ta, &tb, g), SWARP_OK);
+        /* per texel along s: dx = W/1024 world, dy = 0.5 dx, depth -0.5 dx / D */
+        ck_assert(tu_rel(g[0], -0.5 * (W / 1024.0) / D) < 1e-10);
+        ck_assert(fabs(g[1]) < 1e-15);
+        /* point light: L toward the position */
+        swarp_light pl = sun();
+        pl.type = SWARP_LIGHT_POINT;
+        pl.position = (swarp_vec3){p.x, p.y + 5.0, p.z};
+        swarp_vec3 L;
+        ck_assert_int_eq(swarp_bias_to_light(&pl, &p, &L), SWARP_OK);
+        ck_assert(fabs(L.y - 1.0) < 1e-15 && L.x == 0.0 && L.z == 0.0);
+        swarp_light dl = sun();
+        dl.type = SWARP_LIGHT_DEFAULT;
+        ck_assert_int_eq(swarp_bias_to_light(&dl, &p, &L), SWARP_OK);
+        ck_assert(L.y == 1.0);
+    }
+}
+END_TEST
+
+/* Every bad input of every bias function: its status, outputs untouched. */
+START_TEST(bias_bad_inputs_untouched) {
+    const swarp_bias_map good = ortho_map(SWARP_DEPTH_NEG_ONE_TO_ONE);
+    const swarp_light sl = sun();
+    const swarp_vec3 p = {1.5, -3.0, 2.0}, N = {0.0, 1.0, 0.0}, ta = {1.0, 0.0, 0.0}, tb = {0.0, 0.0, 1.0};
+    swarp_bias_map maps[8];
+    swarp_status map_st[8];
+    int nm = 0;
+    maps[nm] = good;
+    maps[nm]._reserved[2] = 1;
+    map_st[nm++] = SWARP_ERR_RESERVED_NONZERO;
+    maps[nm] = good;
+    maps[nm]._reserved0 = 1;
+    map_st[nm++] = SWARP_ERR_RESERVED_NONZERO;
+    maps[nm] = good;
+    maps[nm].depth = (swarp_depth_range)9;
+    map_st[nm++] = SWARP_ERR_UNKNOWN_ENUM;
+    maps[nm] = good;
+    maps[nm].world_to_clip.m[5] = NAN;
+    map_st[nm++] = SWARP_ERR_NON_FINITE;
+    maps[nm] = good;
+    maps[nm].res_s = INFINITY;
+    map_st[nm++] = SWARP_ERR_RESOLUTION;
+    maps[nm] = good;
+    maps[nm].res_t = 0.0;
+    map_st[nm++] = SWARP_ERR_RESOLUTION;
+    maps[nm] = good;
+    maps[nm].res_t = NAN;
+    map_st[nm++] = SWARP_ERR_RESOLUTION;
+    maps[nm] = good;
+    maps[nm].res_s = -1.0;
+    map_st[nm++] = SWARP_ERR_RESOLUTION;
+
+    swarp_light lights[6];
+    swarp_status light_st[6];
+    int nl = 0;
+    lights[nl] = sl;
+    lights[nl]._reserved[0] = 3;
+    light_st[nl++] = SWARP_ERR_RESERVED_NONZERO;
+    lights[nl] = sl;
+    lights[nl]._reserved0 = 3;
+    light_st[nl++] = SWARP_ERR_RESERVED_NONZERO;
+    lights[nl] = sl;
+    lights[nl].type = (swarp_light_type)7;
+    light_st[nl++] = SWARP_ERR_UNKNOWN_ENUM;
+    lights[nl] = sl;
+    lights[nl].direction.y = NAN;
+    light_st[nl++] = SWARP_ERR_NON_FINITE;
+    lights[nl] = sl;
+    lights[nl].type = SWARP_LIGHT_POINT;
+    lights[nl].position.x = INFINITY;
+    light_st[nl++] = SWARP_ERR_NON_FINITE;
+    lights[nl] = sl;
+    lights[nl].direction = (swarp_vec3){0, 0, 0};
+    light_st[nl++] = SWARP_ERR_ZERO_VECTOR;
+
+    double o[4];
+    swarp_vec3 q;
+#define RESET() (tu_fill(o, 4, SENTINEL), tu_fill(&q.x, 3, SENTINEL))
+#define UNTOUCHED() (tu_untouched(o, 4, SENTINEL) && tu_untouched(&q.x, 3, SENTINEL))
+#define EXPECT(call, want)                                                   \
+    do {                                                                     \
+        RESET();                                                             \
+        swarp_status st_ = (call);                                           \
+        ck_assert_msg(st_ == (want), "%s: %s, want %s", #call,               \
+                      swarp_status_name(st_), swarp_status_name(want));      \
+        ck_assert_msg(UNTOUCHED(), "%s wrote its outputs", #call);           \
+    } while (0)
+
+    for (int i = 0; i < nm; ++i) {
+        const swarp_bias_map* m = &maps[i];
+        swarp_status w = map_st[i];
+        EXPECT(swarp_bias_texel_size(m, &p, &o[0], &o[1], &o[2]), w);
+        EXPECT(swarp_bias_kozlov(m, &sl, &p, 0.1, 1.0, &q, &o[0]), w);
+        EXPECT(swarp_bias_normal_offset(m, &sl, &p, &N, 1.0, &q, &o[0]), w);
+        EXPECT(swarp_bias_slope_scaled(m, &sl, &p, &N, 0.1, 1.0, &o[0], &o[1]), w);
+        EXPECT(swarp_bias_depth_per_world(m, &sl, &p, &o[0]), w);
+        EXPECT(swarp_bias_receiver_plane(m, &p, &ta, &tb, o), w);
+    }
+    for (int i = 0; i < nl; ++i) {
+        const swarp_light* l = &lights[i];
+        swarp_status w = light_st[i];
+        EXPECT(swarp_bias_to_light(l, &p, &q), w);
+        EXPECT(swarp_bias_kozlov(&good, l, &p, 0.1, 1.0, &q, &o[0]), w);
+        EXPECT(swarp_bias_normal_offset(&good, l, &p, &N, 1.0, &q, &o[0]), w);
+        EXPECT(swarp_bias_slope_scaled(&good, l, &p, &N, 0.1, 1.0, &o[0], &o[1]), w);
+        EXPECT(swarp_bias_depth_per_world(&good, l, &p, &o[0]), w);
+    }
+    /* NULL pointers */
+    EXPECT(swarp_bias_texel_size(NULL, &p, &o[0], NULL, NULL), SWARP_ERR_NULL_POINTER);
+    EXPECT(swarp_bias_texel_size(&good, NULL, &o[0], NULL, NULL), SWARP_ERR_NULL_POINTER);
+    EXPECT(swarp_bias_texel_size(&good, &p, NULL, NULL, NULL), SWARP_ERR_NULL_POINTER);
+    EXPECT(swarp_bias_to_light(NULL, &p, &q), SWARP_ERR_NULL_POINTER);
+    EXPECT(swarp_bias_to_light(&sl, NULL, &q), SWARP_ERR_NULL_POINTER);
+    EXPECT(swarp_bias_to_light(&sl, &p, NULL), SWARP_ERR_NULL_POINTER);
+    EXPECT(swarp_bias_kozlov(NULL, &sl, &p, 0, 0, &q, NULL), SWARP_ERR_NULL_POINTER);
+    EXPECT(swarp_bias_kozlov(&good, NULL, &p, 0, 0, &q, NULL), SWARP_ERR_NULL_POINTER);
+    EXPECT(swarp_bias_kozlov(&good, &sl, NULL, 0, 0, &q, NULL), SWARP_ERR_NULL_POINTER);
+    EXPECT(swarp_bias_kozlov(&good, &sl, &p, 0, 0, NULL, NULL), SWARP_ERR_NULL_POINTER);
+    EXPECT(swarp_bias_normal_offset(NULL, &sl, &p, &N, 1, &q, NULL), SWARP_ERR_NULL_POINTER);
+    EXPECT(swarp_bias_normal_offset(&good, NULL, &p, &N, 1, &q, NULL), SWARP_ERR_NULL_POINTER);
+    EXPECT(swarp_bias_normal_offset(&good, &sl, NULL, &N, 1, &q, NULL), SWARP_ERR_NULL_POINTER);
+    EXPECT(swarp_bias_normal_offset(&good, &sl, &p, NULL, 1, &q, NULL), SWARP_ERR_NULL_POINTER);
+    EXPECT(swarp_bias_normal_offset(&good, &sl, &p, &N, 1, NULL, NULL), SWARP_ERR_NULL_POINTER);
+    EXPECT(swarp_bias_slope_scaled(NULL, &sl, &p, &N, 0, 1, &o[0], NULL), SWARP_ERR_NULL_POINTER);
+    EXPECT(swarp_bias_slope_scaled(&good, NULL, &p, &N, 0, 1, &o[0], NULL), SWARP_ERR_NULL_POINTER);
+    EXPECT(swarp_bias_slope_scaled(&good, &sl, NULL, &N, 0, 1, &o[0], NULL), SWARP_ERR_NULL_POINTER);
+    EXPECT(swarp_bias_slope_scaled(&good, &sl, &p, NULL, 0, 1, &o[0], NULL), SWARP_ERR_NULL_POINTER);
+    EXPECT(swarp_bias_slope_scaled(&good, &sl, &p, &N, 0, 1, NULL, NULL), SWARP_ERR_NULL_POINTER);
+    EXPECT(swarp_bias_depth_per_world(NULL, &sl, &p, &o[0]), SWARP_ERR_NULL_POINTER);
+    EXPECT(swarp_bias_depth_per_world(&good, NULL, &p, &o[0]), SWARP_ERR_NULL_POINTER);
+    EXPECT(swarp_bias_depth_per_world(&good, &sl, NULL, &o[0]), SWARP_ERR_NULL_POINTER);
+    EXPECT(swarp_bias_depth_per_world(&good, &sl, &p, NULL), SWARP_ERR_NULL_POINTER);
+    EXPECT(swarp_bias_receiver_plane(NULL, &p, &ta, &tb, o), SWARP_ERR_NULL_POINTER);
+    EXPECT(swarp_bias_receiver_plane(&good, NULL, &ta, &tb, o), SWARP_ERR_NULL_POINTER);
+    EXPECT(swarp_bias_receiver_plane(&good, &p, NULL, &tb, o), SWARP_ERR_NULL_POINTER);
+    EXPECT(swarp_bias_receiver_plane(&good, &p, &ta, NULL, o), SWARP_ERR_NULL_POINTER);
+    EXPECT(swarp_bias_receiver_plane(&good, &p, &ta, &tb, NULL), SWARP_ERR_NULL_POINTER);
+    /* non-finite and out-of-range scalars, points, normals, tangents */
+    const swarp_vec3 bad = {NAN, 0, 0}, zero = {0, 0, 0};
+    EXPECT(swarp_bias_texel_size(&good, &bad, &o[0], NULL, NULL), SWARP_ERR_NON_FINITE);
+    EXPECT(swarp_bias_to_light(&sl, &bad, &q), SWARP_ERR_NON_FINITE);
+    EXPECT(swarp_bias_kozlov(&good, &sl, &p, NAN, 1, &q, NULL), SWARP_ERR_NON_FINITE);
+    EXPECT(swarp_bias_kozlov(&good, &sl, &p, 0, INFINITY, &q, NULL), SWARP_ERR_NON_FINITE);
+    EXPECT(swarp_bias_kozlov(&good, &sl, &p, -1.0, 0.0, &q, NULL), SWARP_ERR_OUT_OF_RANGE);
+    EXPECT(swarp_bias_kozlov(&good, &sl, &p, DBL_MAX, DBL_MAX, &q, NULL), SWARP_ERR_NON_FINITE);
+    EXPECT(swarp_bias_normal_offset(&good, &sl, &p, &N, NAN, &q, NULL), SWARP_ERR_NON_FINITE);
+    EXPECT(swarp_bias_normal_offset(&good, &sl, &p, &bad, 1, &q, NULL), SWARP_ERR_NON_FINITE);
+    EXPECT(swarp_bias_normal_offset(&good, &sl, &p, &N, -1, &q, NULL), SWARP_ERR_OUT_OF_RANGE);
+    EXPECT(swarp_bias_normal_offset(&good, &sl, &p, &zero, 1, &q, NULL), SWARP_ERR_ZERO_VECTOR);
+    EXPECT(swarp_bias_slope_scaled(&good, &sl, &p, &N, NAN, 1, &o[0], NULL), SWARP_ERR_NON_FINITE);
+    EXPECT(swarp_bias_slope_scaled(&good, &sl, &p, &N, 0, NAN, &o[0], NULL), SWARP_ERR_NON_FINITE);
+    EXPECT(swarp_bias_slope_scaled(&good, &sl, &p, &bad, 0, 1, &o[0], NULL), SWARP_ERR_NON_FINITE);
+    EXPECT(swarp_bias_slope_scaled(&good, &sl, &p, &N, -1, 1, &o[0], NULL), SWARP_ERR_OUT_OF_RANGE);
+    EXPECT(swarp_bias_slope_scaled(&good, &sl, &p, &N, 0, -1, &o[0], NULL), SWARP_ERR_OUT_OF_RANGE);
+    EXPECT(swarp_bias_slope_scaled(&good, &sl, &p, &zero, 0, 1, &o[0], NULL), SWARP_ERR_ZERO_VECTOR);
+    EXPECT(swarp_bias_depth_per_world(&good, &sl, &bad, &o[0]), SWARP_ERR_NON_FINITE);
+    EXPECT(swarp_bias_receiver_plane(&good, &bad, &ta, &tb, o), SWARP_ERR_NON_FINITE);
+    EXPECT(swarp_bias_receiver_plane(&good, &p, &bad, &tb, o), SWARP_ERR_NON_FINITE);
+    EXPECT(swarp_bias_receiver_plane(&good, &p, &ta, &bad, o), SWARP_ERR_NON_FINITE);
+    EXPECT(swarp_bias_receiver_plane(&good, &p, &zero, &tb, o), SWARP_ERR_ZERO_VECTOR);
+    EXPECT(swarp_bias_receiver_plane(&good, &p, &ta, &zero, o), SWARP_ERR_ZERO_VECTOR);
+    /* edge-on receiver: both tangents map to the same texel direction */
+    const swarp_vec3 ta2 = {2.0, 5.0, 0.0};
+    EXPECT(swarp_bias_receiver_plane(&good, &p, &ta, &ta2, o), SWARP_ERR_DEGENERATE);
+    /* a point light at p: no direction */
+    swarp_light at_p = sl;
+    at_p.type = SWARP_LIGHT_POINT;
+    at_p.position = p;
+    EXPECT(swarp_bias_to_light(&at_p, &p, &q), SWARP_ERR_ZERO_VECTOR);
+    EXPECT(swarp_bias_kozlov(&good, &at_p, &p, 0.1, 1, &q, NULL), SWARP_ERR_ZERO_VECTOR);
+
+    /* a perspective map: points behind its centre of projection (w <= 0) */
+    swarp_bias_map persp = good;
+    memset(persp.world_to_clip.m, 0, sizeof persp.world_to_clip.m);
+    double* a = persp.world_to_clip.m;
+    a[0] = 1.0;                 /* x */
+    a[2 * 4 + 1] = 1.0;         /* y = z */
+    a[1 * 4 + 2] = -1.0;        /* z = -y - 1 ... */
+    a[3 * 4 + 2] = -1.0;
+    a[1 * 4 + 3] = -1.0;        /* w = -y: in front for y < 0 */
+    const swarp_vec3 behind = {0.0, 2.0, 0.0};
+    EXPECT(swarp_bias_texel_size(&persp, &behind, &o[0], NULL, NULL), SWARP_ERR_BEHIND_PROJECTION);
+    EXPECT(swarp_bias_depth_per_world(&persp, &sl, &behind, &o[0]), SWARP_ERR_BEHIND_PROJECTION);
+    EXPECT(swarp_bias_receiver_plane(&persp, &behind, &ta, &tb, o), SWARP_ERR_BEHIND_PROJECTION);
+    EXPECT(swarp_bias_slope_scaled(&persp, &sl, &behind, &N, 0, 1, &o[0], NULL), SWARP_ERR_BEHIND_PROJECTION);
+    /* slope-scaled: the biased point crosses the centre of projection */
+    const swarp_vec3 near_c = {0.0, -0.5, 0.0};
+    EXPECT(swarp_bias_slope_scaled(&persp, &sl, &near_c, &N, 5.0, 0.0, &o[0], &o[1]), SWARP_ERR_BEHIND_PROJECTION);
+    /* a singular map (rank 3) */
+    swarp_bias_map sing = good;
+    memset(sing.world_to_clip.m + 8, 0, 4 * sizeof(double)); /* column 2 (z) zero */
+    EXPECT(swarp_bias_texel_size(&sing, &p, &o[0], NULL, NULL), SWARP_ERR_SINGULAR);
+    EXPECT(swarp_bias_kozlov(&sing, &sl, &p, 0.1, 1.0, &q, NULL), SWARP_ERR_SINGULAR);
+    /* huge coordinates: the biased point overflows */
+    const swarp_vec3 far_p = {0.0, -1e308, 0.0};
+    const swarp_vec3 Nx = {1.0, 0.0, 0.0};
+    EXPECT(swarp_bias_normal_offset(&good, &sl, &far_p, &Nx, DBL_MAX, &q, NULL), SWARP_ERR_NON_FINITE);
+#undef EXPECT
+#undef RESET
+#undef UNTOUCHED
+}
+END_TEST
+
+int main(void) {
+    Suite* s = suite_create("edges_splits");
+    TCase* t = tcase_create("bias");
+    tcase_add_test(t, bias_valid_against_orthographic_closed_form);
+    tcase_add_test(t, bias_bad_inputs_untouched);
+    suite_add_tcase(s, t);
+    return tu_run_suite(s) ? 1 : 0;
+}
