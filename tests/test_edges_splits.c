@@ -287,9 +287,12 @@ START_TEST(bias_bad_inputs_untouched) {
     EXPECT(swarp_bias_texel_size(&sing, &p, &o[0], NULL, NULL), SWARP_ERR_SINGULAR);
     EXPECT(swarp_bias_kozlov(&sing, &sl, &p, 0.1, 1.0, &q, NULL), SWARP_ERR_SINGULAR);
     /* huge coordinates: the biased point overflows */
-    const swarp_vec3 far_p = {0.0, -1e308, 0.0};
+    /* a texel of 2e4 world units times k = DBL_MAX: the offset overflows */
+    swarp_bias_map coarse = good;
+    coarse.res_s = coarse.res_t = 1e-3;
     const swarp_vec3 Nx = {1.0, 0.0, 0.0};
-    EXPECT(swarp_bias_normal_offset(&good, &sl, &far_p, &Nx, DBL_MAX, &q, NULL), SWARP_ERR_NON_FINITE);
+    EXPECT(swarp_bias_normal_offset(&coarse, &sl, &p, &Nx, DBL_MAX, &q, NULL), SWARP_ERR_NON_FINITE);
+    EXPECT(swarp_bias_slope_scaled(&coarse, &sl, &p, &Nx, 0.0, DBL_MAX, &o[0], &o[1]), SWARP_ERR_NON_FINITE);
 #undef EXPECT
 #undef RESET
 #undef UNTOUCHED
