@@ -299,11 +299,231 @@ START_TEST(bias_bad_inputs_untouched) {
 }
 END_TEST
 
+static swarp_camera camera(void) {
+    swarp_camera c;
+    memset(&c, 0, sizeof c);
+    c.eye = (swarp_vec3){0.0, 5.0, 0.0};
+    c.dir = (swarp_vec3){0.0, 0.0, -1.0};
+    c.up = (swarp_vec3){0.0, 1.0, 0.0};
+    c.fovy = 1.0;
+    c.aspect = 1.5;
+    c.near = 0.5;
+    c.far = 200.0;
+    return c;
+}
+
+/* swarp_stabilize_directional: NONE focuses exactly on the body's light-space
+ * box (its corners map to the clip square's edges), LEVELS snaps the centre
+ * to whole texels and reports levels above range, and every bad argument
+ * gives its status with the matrix and report untouched. */
+START_TEST(stabilize_directional_edges) {
+    const swarp_camera cam = camera();
+    const swarp_vec3 ld = {0.0, -1.0, 0.0}; /* straight down: helper axis x */
+    const swarp_vec3 body[4] = {{-3, 0, -1}, {4, 0, -1}, {-3, 0, -9}, {4, 2, -9}};
+    swarp_mat4 m;
+    swarp_stabilize_report rep;
+    swarp_stabilize_options o;
+    memset(&o, 0, sizeof o);
+    ck_assert_int_eq(swarp_stabilize_directional(&cam, 1, 10, &ld, body, 4, NULL, 512, NULL, &m, &rep), SWARP_OK);
+    /* every body point inside [-1, 1]^2 and the extremes on the border */
+    double xmin = 1e9, xmax = -1e9;
+    for (int i = 0; i < 4; ++i) {
+        swarp_vec4 h;
+        ck_assert_int_eq(swarp_mat4_transform(&m, &body[i], &h), SWARP_OK);
+        ck_assert(fabs(h.x) <= 1 + 1e-12 && fabs(h.y) <= 1 + 1e-12 && fabs(h.z) <= 1 + 1e-12);
+        xmin = fmin(xmin, h.x);
+        xmax = fmax(xmax, h.x);
+    }
+    ck_assert(fabs(xmin + 1) < 1e-12 && fabs(xmax - 1) < 1e-12);
+    /* LEVELS with a tiny level_max_size: every level is above the range */
+    o.mode = SWARP_STABILIZE_LEVELS;
+    o.level_max_size = 1e-3;
+    o.depth = SWARP_DEPTH_ZERO_TO_ONE;
+    swarp_aabb scene = {{-50, -1, -50}, {50, 30, 50}};
+    ck_assert_int_eq(swarp_stabilize_directional(&cam, 1, 10, &ld, body, 4, &scene, 512, &o, &m, &rep),
+                     SWARP_INFO_LEVEL_ABOVE_RANGE);
+    ck_assert(rep.level_x > 64 && rep.level_y > 64);
+    /* snapped: the centre offset is a whole number of texels */
+    ck_assert(fabs(rep.offset_x / rep.texel_size_x - nearbyint(rep.offset_x / rep.texel_size_x)) < 1e-9);
+    /* the scene box extends depth toward the light: its top (y = 30) maps to 0 */
+    swarp_vec3 top = {0, 30, 0};
+    swarp_vec4 h;
+    ck_assert_int_eq(swarp_mat4_transform(&m, &top, &h), SWARP_OK);
+    ck_assert(fabs(h.z) < 1e-12);
+    /* a light along +z: the helper axis y; a flat body across the light */
+    const swarp_vec3 lz = {0.0, 0.0, -1.0};
+    const swarp_vec3 flat[3] = {{0, 0, -5}, {1, 0, -5}, {0, 1, -5}};
+    o.mode = SWARP_STABILIZE_LEVELS;
+    o.level_max_size = 0.0;
+    o.depth = SWARP_DEPTH_DEFAULT;
+    ck_assert_int_eq(swarp_stabilize_directional(&cam, 1, 10, &lz, flat, 3, NULL, 256, &o, &m, &rep), SWARP_OK);
+    ck_assert(swarp_mat4_transform(&m, &flat[0], &h) == SWARP_OK && fabs(h.z) < 1e-12); /* centred in depth */
+    /* SPHERE needs no body */
+    o.mode = SWARP_STABILIZE_SPHERE;
+    ck_assert_int_eq(swarp_stabilize_directional(&cam, 1, 10, &ld, NULL, 0, NULL, 256, &o, &m, &rep), SWARP_OK);
+
+    /* bad arguments */
+    swarp_mat4 out;
+    swarp_stabilize_report r2;
+#define BAD(call, want)                                                                      \
+    do {                                                                                     \
+        tu_fill(out.m, 16, SENTINEL);                                                        \
+        tu_fill(&r2.sphere_center.x, 3, SENTINEL);                                           \
+        swarp_status st_ = (call);                                                           \
+        ck_assert_msg(st_ == (want), "%s: %s", #call, swarp_status_name(st_));              \
+        ck_assert(tu_untouched(out.m, 16, SENTINEL) && tu_untouched(&r2.sphere_center.x, 3, SENTINEL)); \
+    } while (0)
+    BAD(swarp_stabilize_directional(NULL, 1, 10, &ld, body, 4, NULL, 512, NULL, &out, &r2), SWARP_ERR_NULL_POINTER);
+    BAD(swarp_stabilize_directional(&cam, 1, 10, NULL, body, 4, NULL, 512, NULL, &out, &r2), SWARP_ERR_NULL_POINTER);
+    BAD(swarp_stabilize_directional(&cam, 1, 10, &ld, body, 4, NULL, 512, NULL, NULL, &r2), SWARP_ERR_NULL_POINTER);
+    BAD(swarp_stabilize_directional(&cam, 1, 10, &ld, NULL, 0, NULL, 512, NULL, &out, &r2), SWARP_ERR_NULL_POINTER);
+    BAD(swarp_stabilize_directional(&cam, 1, 10, &ld, body, 0, NULL, 512, NULL, &out, &r2), SWARP_ERR_NULL_POINTER);
+    swarp_stabilize_options b;
+    memset(&b, 0, sizeof b);
+    b._reserved[3] = 1;
+    BAD(swarp_stabilize_directional(&cam, 1, 10, &ld, body, 4, NULL, 512, &b, &out, &r2), SWARP_ERR_RESERVED_NONZERO);
+    memset(&b, 0, sizeof b);
+    b._reserved0 = 1;
+    BAD(swarp_stabilize_directional(&cam, 1, 10, &ld, body, 4, NULL, 512, &b, &out, &r2), SWARP_ERR_RESERVED_NONZERO);
+    memset(&b, 0, sizeof b);
+    b.mode = (swarp_stabilize_mode)9;
+    BAD(swarp_stabilize_directional(&cam, 1, 10, &ld, body, 4, NULL, 512, &b, &out, &r2), SWARP_ERR_UNKNOWN_ENUM);
+    memset(&b, 0, sizeof b);
+    b.depth = (swarp_depth_range)9;
+    BAD(swarp_stabilize_directional(&cam, 1, 10, &ld, body, 4, NULL, 512, &b, &out, &r2), SWARP_ERR_UNKNOWN_ENUM);
+    memset(&b, 0, sizeof b);
+    b.origin.z = NAN;
+    BAD(swarp_stabilize_directional(&cam, 1, 10, &ld, body, 4, NULL, 512, &b, &out, &r2), SWARP_ERR_NON_FINITE);
+    memset(&b, 0, sizeof b);
+    b.level_max_size = INFINITY;
+    BAD(swarp_stabilize_directional(&cam, 1, 10, &ld, body, 4, NULL, 512, &b, &out, &r2), SWARP_ERR_NON_FINITE);
+    b.level_max_size = -1.0;
+    BAD(swarp_stabilize_directional(&cam, 1, 10, &ld, body, 4, NULL, 512, &b, &out, &r2), SWARP_ERR_OUT_OF_RANGE);
+    BAD(swarp_stabilize_directional(&cam, NAN, 10, &ld, body, 4, NULL, 512, NULL, &out, &r2), SWARP_ERR_NON_FINITE);
+    BAD(swarp_stabilize_directional(&cam, 10, 1, &ld, body, 4, NULL, 512, NULL, &out, &r2), SWARP_ERR_NEAR_FAR);
+    const swarp_vec3 nan_d = {NAN, 0, 0}, zero = {0, 0, 0};
+    BAD(swarp_stabilize_directional(&cam, 1, 10, &nan_d, body, 4, NULL, 512, NULL, &out, &r2), SWARP_ERR_NON_FINITE);
+    BAD(swarp_stabilize_directional(&cam, 1, 10, &zero, body, 4, NULL, 512, NULL, &out, &r2), SWARP_ERR_ZERO_VECTOR);
+    BAD(swarp_stabilize_directional(&cam, 1, 10, &ld, body, 4, NULL, 1, NULL, &out, &r2), SWARP_ERR_RESOLUTION);
+    const swarp_vec3 badbody[2] = {{0, 0, 0}, {INFINITY, 0, 0}};
+    BAD(swarp_stabilize_directional(&cam, 1, 10, &ld, badbody, 2, NULL, 512, NULL, &out, &r2), SWARP_ERR_NON_FINITE);
+    swarp_aabb bs = scene;
+    bs.max.y = NAN;
+    BAD(swarp_stabilize_directional(&cam, 1, 10, &ld, body, 4, &bs, 512, NULL, &out, &r2), SWARP_ERR_NON_FINITE);
+    bs = scene;
+    bs.min.x = 100;
+    BAD(swarp_stabilize_directional(&cam, 1, 10, &ld, body, 4, &bs, 512, NULL, &out, &r2), SWARP_ERR_OUT_OF_RANGE);
+    bs = scene;
+    bs.min.y = 100;
+    BAD(swarp_stabilize_directional(&cam, 1, 10, &ld, body, 4, &bs, 512, NULL, &out, &r2), SWARP_ERR_OUT_OF_RANGE);
+    bs = scene;
+    bs.min.z = 100;
+    BAD(swarp_stabilize_directional(&cam, 1, 10, &ld, body, 4, &bs, 512, NULL, &out, &r2), SWARP_ERR_OUT_OF_RANGE);
+    /* NONE with a body that is a line in light space: no extent to fit */
+    const swarp_vec3 line[2] = {{0, 0, -1}, {0, 3, -1}};
+    BAD(swarp_stabilize_directional(&cam, 1, 10, &ld, line, 2, NULL, 512, NULL, &out, &r2), SWARP_ERR_DEGENERATE);
+    /* a body near DBL_MAX: the matrix overflows */
+    const swarp_vec3 huge[2] = {{-1e308, 0, -1e308}, {1e308, 0, 1e308}};
+    BAD(swarp_stabilize_directional(&cam, 1, 10, &ld, huge, 2, NULL, 512, NULL, &out, &r2), SWARP_ERR_NON_FINITE);
+    /* camera errors come first */
+    swarp_camera bc = cam;
+    bc.fovy = 4.0;
+    BAD(swarp_stabilize_directional(&bc, 1, 10, &ld, body, 4, NULL, 512, NULL, &out, &r2), SWARP_ERR_FOV);
+#undef BAD
+}
+END_TEST
+
+/* swarp_stabilize_snap_matrix and swarp_stabilize_sphere argument checks. */
+START_TEST(stabilize_snap_and_sphere_edges) {
+    swarp_mat4 m, out;
+    memset(&m, 0, sizeof m);
+    m.m[0] = 0.1;
+    m.m[5] = 0.1;
+    m.m[10] = -0.01;
+    m.m[15] = 1.0;
+    m.m[12] = 0.123456;
+    const swarp_vec3 origin = {0, 0, 0};
+    /* the origin lands on a whole texel afterwards */
+    ck_assert_int_eq(swarp_stabilize_snap_matrix(&m, 1024, 1024, &origin, &out), SWARP_OK);
+    double s = (out.m[12] + 1.0) * 0.5 * 1024;
+    ck_assert(fabs(s - nearbyint(s)) < 1e-9);
+    ck_assert(fabs(out.m[12] - m.m[12]) <= 1.0 / 1024 + 1e-15);
+#define BAD(call, want)                                                         \
+    do {                                                                        \
+        tu_fill(out.m, 16, SENTINEL);                                           \
+        ck_assert_int_eq((call), (want));                                      \
+        ck_assert(tu_untouched(out.m, 16, SENTINEL));                           \
+    } while (0)
+    BAD(swarp_stabilize_snap_matrix(NULL, 1024, 1024, &origin, &out), SWARP_ERR_NULL_POINTER);
+    BAD(swarp_stabilize_snap_matrix(&m, 1024, 1024, NULL, &out), SWARP_ERR_NULL_POINTER);
+    ck_assert_int_eq(swarp_stabilize_snap_matrix(&m, 1024, 1024, &origin, NULL), SWARP_ERR_NULL_POINTER);
+    const swarp_vec3 nan_o = {NAN, 0, 0};
+    BAD(swarp_stabilize_snap_matrix(&m, 1024, 1024, &nan_o, &out), SWARP_ERR_NON_FINITE);
+    BAD(swarp_stabilize_snap_matrix(&m, NAN, 1024, &origin, &out), SWARP_ERR_RESOLUTION);
+    BAD(swarp_stabilize_snap_matrix(&m, 1024, INFINITY, &origin, &out), SWARP_ERR_RESOLUTION);
+    BAD(swarp_stabilize_snap_matrix(&m, 0, 1024, &origin, &out), SWARP_ERR_RESOLUTION);
+    BAD(swarp_stabilize_snap_matrix(&m, 1024, -2, &origin, &out), SWARP_ERR_RESOLUTION);
+    swarp_mat4 w = m;
+    w.m[7] = 0.5;
+    BAD(swarp_stabilize_snap_matrix(&w, 1024, 1024, &origin, &out), SWARP_ERR_STABILIZE_WARPED);
+    w = m;
+    w.m[3] = 0.5;
+    BAD(swarp_stabilize_snap_matrix(&w, 1024, 1024, &origin, &out), SWARP_ERR_STABILIZE_WARPED);
+    w = m;
+    w.m[11] = 0.5;
+    BAD(swarp_stabilize_snap_matrix(&w, 1024, 1024, &origin, &out), SWARP_ERR_STABILIZE_WARPED);
+    w = m;
+    w.m[15] = 0.0;
+    BAD(swarp_stabilize_snap_matrix(&w, 1024, 1024, &origin, &out), SWARP_ERR_SINGULAR);
+    /* a snap step that overflows the matrix */
+    w = m;
+    w.m[15] = 1e308;
+    w.m[12] = 1e308;
+    BAD(swarp_stabilize_snap_matrix(&w, 1e-300, 1024, &origin, &out), SWARP_ERR_NON_FINITE);
+#undef BAD
+    /* the sphere: minimal, and the centroid one is never smaller */
+    const swarp_camera cam = camera();
+    swarp_vec3 c = {SENTINEL, SENTINEL, SENTINEL};
+    double r = SENTINEL, rc = SENTINEL;
+    ck_assert_int_eq(swarp_stabilize_sphere(&cam, 1, 10, &c, &r, NULL), SWARP_OK);
+    ck_assert_int_eq(swarp_stabilize_sphere(&cam, 1, 10, &c, &r, &rc), SWARP_OK);
+    ck_assert(rc >= r);
+    c = (swarp_vec3){SENTINEL, SENTINEL, SENTINEL};
+    r = SENTINEL;
+    ck_assert_int_eq(swarp_stabilize_sphere(NULL, 1, 10, &c, &r, NULL), SWARP_ERR_NULL_POINTER);
+    ck_assert_int_eq(swarp_stabilize_sphere(&cam, 1, 10, NULL, &r, NULL), SWARP_ERR_NULL_POINTER);
+    ck_assert_int_eq(swarp_stabilize_sphere(&cam, 1, 10, &c, NULL, NULL), SWARP_ERR_NULL_POINTER);
+    swarp_camera wide = cam; /* k = tan(1.25) sqrt(1 + aspect^2) > 5: f k overflows */
+    wide.fovy = 2.5;
+    ck_assert_int_eq(swarp_stabilize_sphere(&wide, 1, DBL_MAX, &c, &r, NULL), SWARP_ERR_NON_FINITE);
+    ck_assert(tu_untouched(&c.x, 3, SENTINEL) && tu_untouched(&r, 1, SENTINEL));
+    /* light view: zero and NaN directions, and a vertical light */
+    swarp_mat4 v;
+    tu_fill(v.m, 16, SENTINEL);
+    const swarp_vec3 zero = {0, 0, 0}, nan_d = {0, NAN, 0}, down = {0, -1, 0};
+    ck_assert_int_eq(swarp_stabilize_light_view(&zero, &v), SWARP_ERR_ZERO_VECTOR);
+    ck_assert_int_eq(swarp_stabilize_light_view(&nan_d, &v), SWARP_ERR_NON_FINITE);
+    ck_assert_int_eq(swarp_stabilize_light_view(NULL, &v), SWARP_ERR_NULL_POINTER);
+    ck_assert(tu_untouched(v.m, 16, SENTINEL));
+    ck_assert_int_eq(swarp_stabilize_light_view(&down, &v), SWARP_OK);
+    /* orthonormal rows */
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) {
+            double d = v.m[i] * v.m[j] + v.m[4 + i] * v.m[4 + j] + v.m[8 + i] * v.m[8 + j];
+            ck_assert(fabs(d - (i == j)) < 1e-15);
+        }
+}
+END_TEST
+
 int main(void) {
     Suite* s = suite_create("edges_splits");
     TCase* t = tcase_create("bias");
     tcase_add_test(t, bias_valid_against_orthographic_closed_form);
     tcase_add_test(t, bias_bad_inputs_untouched);
+    suite_add_tcase(s, t);
+    t = tcase_create("stabilize");
+    tcase_add_test(t, stabilize_directional_edges);
+    tcase_add_test(t, stabilize_snap_and_sphere_edges);
     suite_add_tcase(s, t);
     return tu_run_suite(s) ? 1 : 0;
 }
