@@ -845,33 +845,107 @@ static void sw_putu(sw_text* t, uint64_t v) {
     sw_puts(t, s);
 }
 
+/* Exact decimal rounding for sw_putd.  The digits must not depend on the
+ * caller's rounding mode (issue 9, fenv test): log10, pow, a division and a
+ * product rounded upward or downward move a value across a decimal rounding
+ * boundary (0.5325 -> "0.532" or "0.533").  The floating-point path below
+ * only estimates; every decision is an exact comparison of the double v =
+ * M 2^E with (num2 / 2) 10^k in integers, M 2^(E+1) 10^-k vs num2 10^k with
+ * the powers of two cancelled: at most ~830 bits for any double. */
+#define SW_BIG_WORDS 40
+typedef struct sw_big {
+    uint32_t w[SW_BIG_WORDS]; /* little-endian 32-bit words */
+} sw_big;
+
+static void sw_big_set(sw_big* b, uint64_t v) {
+    memset(b, 0, sizeof *b);
+    b->w[0] = (uint32_t)v;
+    b->w[1] = (uint32_t)(v >> 32);
+}
+static void sw_big_mul_small(sw_big* b, uint32_t m) {
+    uint64_t carry = 0;
+    for (int i = 0; i < SW_BIG_WORDS; ++i) {
+        uint64_t x = (uint64_t)b->w[i] * m + carry;
+        b->w[i] = (uint32_t)x;
+        carry = x >> 32;
+    }
+}
+static void sw_big_shl(sw_big* b, int bits) {
+    int words = bits / 32, r = bits % 32;
+    for (int i = SW_BIG_WORDS - 1; i >= 0; --i) {
+        uint64_t hi = i - words >= 0 ? b->w[i - words] : 0;
+        uint64_t lo = (r && i - words - 1 >= 0) ? b->w[i - words - 1] : 0;
+        b->w[i] = (uint32_t)((hi << r) | (r ? lo >> (32 - r) : 0));
+    }
+}
+static int sw_big_cmp(const sw_big* a, const sw_big* b) {
+    for (int i = SW_BIG_WORDS - 1; i >= 0; --i)
+        if (a->w[i] != b->w[i]) return a->w[i] < b->w[i] ? -1 : 1;
+    return 0;
+}
+static void sw_big_mul_pow5(sw_big* b, int n) {
+    for (; n >= 13; n -= 13) sw_big_mul_small(b, 1220703125u); /* 5^13 */
+    uint32_t p = 1;
+    for (; n > 0; --n) p *= 5;
+    sw_big_mul_small(b, p);
+}
+
+/* sign of v - (num2 / 2) 10^k, exactly; v > 0 finite, |k| <= 340 */
+static int sw_cmp_decimal(double v, uint64_t num2, int k) {
+    int E;
+    double fr = frexp(v, &E);                   /* v = fr 2^E, fr in [0.5, 1) */
+    uint64_t M = (uint64_t)ldexp(fr, 53);       /* exact: 53-bit integer */
+    E -= 53;                                    /* v = M 2^E */
+    sw_big L, R;
+    sw_big_set(&L, M);
+    sw_big_set(&R, num2);
+    int l2 = E + 1, r2 = 0; /* 2 v = M 2^(E+1) */
+    if (k < 0) {
+        sw_big_mul_pow5(&L, -k);
+        l2 -= k;
+    } else {
+        sw_big_mul_pow5(&R, k);
+        r2 += k;
+    }
+    if (l2 > r2) sw_big_shl(&L, l2 - r2);
+    else sw_big_shl(&R, r2 - l2);
+    return sw_big_cmp(&L, &R);
+}
+
 /* A double with 3 significant digits, locale-independent ("0.532", "12.3",
- * "4.19e+06", "inf"). */
+ * "4.19e+06", "inf"); rounding half away from zero, decided exactly (the
+ * text is the same in every rounding mode). */
 static void sw_putd(sw_text* t, double v) {
     if (v != v) { sw_puts(t, "nan"); return; }
     if (v < 0.0) { sw_puts(t, "-"); v = -v; }
     if (v == INFINITY) { sw_puts(t, "inf"); return; }
     if (v == 0.0) { sw_puts(t, "0"); return; }
-    int e10 = (int)floor(log10(v));
-    if (e10 >= 7 || e10 < -3) {
-        double m = v / pow(10.0, e10);
-        uint64_t q = (uint64_t)llround(m * 100.0);
-        if (q >= 1000) { q /= 10; ++e10; }
+    int e10 = (int)floor(log10(v)); /* estimate, then exact: 10^e10 <= v < 10^(e10+1) */
+    while (sw_cmp_decimal(v, 2, e10) < 0) --e10;
+    while (sw_cmp_decimal(v, 2, e10 + 1) >= 0) ++e10;
+    const int sci = e10 >= 7 || e10 < -3;
+    /* the rounding unit 10^k: 3 significant digits, whole numbers at least */
+    const int k = sci ? e10 - 2 : (e10 - 2 < 0 ? e10 - 2 : 0);
+    double est = k >= 0 ? v / pow(10.0, k) : v * pow(10.0, -k);
+    uint64_t q = (uint64_t)llround(est); /* estimate; exactly: (q - 1/2) 10^k <= v < (q + 1/2) 10^k */
+    while (q > 0 && sw_cmp_decimal(v, 2 * q - 1, k) < 0) --q;
+    while (sw_cmp_decimal(v, 2 * q + 1, k) >= 0) ++q;
+    if (sci) {
+        int ex = e10;
+        if (q >= 1000) { q /= 10; ++ex; } /* 9.995e+07 -> 1.00e+08 */
         sw_putu(t, q / 100);
         sw_puts(t, ".");
         sw_putu(t, (q / 10) % 10);
         sw_putu(t, q % 10);
-        sw_puts(t, e10 < 0 ? "e-" : "e+");
-        int ae = e10 < 0 ? -e10 : e10;
+        sw_puts(t, ex < 0 ? "e-" : "e+");
+        int ae = ex < 0 ? -ex : ex;
         if (ae < 10) sw_puts(t, "0");
         sw_putu(t, (uint64_t)ae);
         return;
     }
-    int dec = 2 - e10;
-    if (dec < 0) dec = 0;
+    int dec = -k;
     uint64_t scale = 1;
     for (int i = 0; i < dec; ++i) scale *= 10;
-    uint64_t q = (uint64_t)llround(v * (double)scale);
     sw_putu(t, q / scale);
     if (dec > 0) {
         sw_puts(t, ".");
