@@ -890,12 +890,25 @@ static void sw_big_mul_pow5(sw_big* b, int n) {
     sw_big_mul_small(b, p);
 }
 
+/* v = M 2^E for finite v > 0, from the bits: no floating-point operation,
+ * so neither the rounding mode nor DAZ (subnormal inputs read as 0) enters. */
+static uint64_t sw_mantissa(double v, int* E) {
+    uint64_t b;
+    memcpy(&b, &v, sizeof b);
+    const int ex = (int)((b >> 52) & 0x7FF);
+    const uint64_t frac = b & ((1ull << 52) - 1);
+    if (ex == 0) {
+        *E = -1074;
+        return frac;
+    }
+    *E = ex - 1075;
+    return frac | (1ull << 52);
+}
+
 /* sign of v - (num2 / 2) 10^k, exactly; v > 0 finite, |k| <= 340 */
 static int sw_cmp_decimal(double v, uint64_t num2, int k) {
     int E;
-    double fr = frexp(v, &E);                   /* v = fr 2^E, fr in [0.5, 1) */
-    uint64_t M = (uint64_t)ldexp(fr, 53);       /* exact: 53-bit integer */
-    E -= 53;                                    /* v = M 2^E */
+    uint64_t M = sw_mantissa(v, &E); /* v = M 2^E */
     sw_big L, R;
     sw_big_set(&L, M);
     sw_big_set(&R, num2);
@@ -920,16 +933,32 @@ static void sw_putd(sw_text* t, double v) {
     if (v < 0.0) { sw_puts(t, "-"); v = -v; }
     if (v == INFINITY) { sw_puts(t, "inf"); return; }
     if (v == 0.0) { sw_puts(t, "0"); return; }
-    int e10 = (int)floor(log10(v)); /* estimate, then exact: 10^e10 <= v < 10^(e10+1) */
+    /* decimal exponent: an integer estimate from the binary one (floor(e2
+     * log10 2) within 1, 1233/4096 ~ log10 2), then exact: 10^e10 <= v <
+     * 10^(e10+1).  No floating-point estimate: under DAZ log10 of a
+     * subnormal is -inf. */
+    int E;
+    uint64_t M = sw_mantissa(v, &E);
+    int e2 = E;
+    for (uint64_t m = M; m > 1; m >>= 1) ++e2; /* floor(log2 v) */
+    int e10 = (e2 * 1233) >> 12; /* arithmetic shift: floor */
+    if (M == 0) { sw_puts(t, "0"); return; } /* a subnormal read as 0 (DAZ) */
     while (sw_cmp_decimal(v, 2, e10) < 0) --e10;
     while (sw_cmp_decimal(v, 2, e10 + 1) >= 0) ++e10;
     const int sci = e10 >= 7 || e10 < -3;
     /* the rounding unit 10^k: 3 significant digits, whole numbers at least */
     const int k = sci ? e10 - 2 : (e10 - 2 < 0 ? e10 - 2 : 0);
-    double est = k >= 0 ? v / pow(10.0, k) : v * pow(10.0, -k);
-    uint64_t q = (uint64_t)llround(est); /* estimate; exactly: (q - 1/2) 10^k <= v < (q + 1/2) 10^k */
-    while (q > 0 && sw_cmp_decimal(v, 2 * q - 1, k) < 0) --q;
-    while (sw_cmp_decimal(v, 2 * q + 1, k) >= 0) ++q;
+    /* q: (q - 1/2) 10^k <= v < (q + 1/2) 10^k, by bisection on the exact
+     * comparison (q < 10^3 in scientific form, < 10^7 in fixed form) */
+    uint64_t lo = 0, hi = sci ? 1000 : 10000000; /* invariant: q in [lo, hi] */
+    while (lo < hi) {
+        uint64_t mid = lo + (hi - lo + 1) / 2;
+        if (sw_cmp_decimal(v, 2 * mid - 1, k) >= 0)
+            lo = mid;
+        else
+            hi = mid - 1;
+    }
+    uint64_t q = lo;
     if (sci) {
         int ex = e10;
         if (q >= 1000) { q /= 10; ++ex; } /* 9.995e+07 -> 1.00e+08 */
