@@ -945,23 +945,32 @@ static void sw_putd(sw_text* t, double v) {
     if (M == 0) { sw_puts(t, "0"); return; } /* a subnormal read as 0 (DAZ) */
     while (sw_cmp_decimal(v, 2, e10) < 0) --e10;
     while (sw_cmp_decimal(v, 2, e10 + 1) >= 0) ++e10;
-    const int sci = e10 >= 7 || e10 < -3;
-    /* the rounding unit 10^k: 3 significant digits, whole numbers at least */
-    const int k = sci ? e10 - 2 : (e10 - 2 < 0 ? e10 - 2 : 0);
-    /* q: (q - 1/2) 10^k <= v < (q + 1/2) 10^k, by bisection on the exact
-     * comparison (q < 10^3 in scientific form, < 10^7 in fixed form) */
-    uint64_t lo = 0, hi = sci ? 1000 : 10000000; /* invariant: q in [lo, hi] */
-    while (lo < hi) {
-        uint64_t mid = lo + (hi - lo + 1) / 2;
-        if (sw_cmp_decimal(v, 2 * mid - 1, k) >= 0)
-            lo = mid;
-        else
-            hi = mid - 1;
+    int sci, k;
+    uint64_t q;
+    for (;;) {
+        sci = e10 >= 7 || e10 < -3;
+        /* the rounding unit 10^k: 3 significant digits, whole numbers at least */
+        k = sci ? e10 - 2 : (e10 - 2 < 0 ? e10 - 2 : 0);
+        /* q: (q - 1/2) 10^k <= v < (q + 1/2) 10^k, by bisection on the exact
+         * comparison (q <= 10^3 in scientific form, <= 10^7 in fixed form) */
+        uint64_t lo = 0, hi = sci ? 1000 : 10000000; /* invariant: q in [lo, hi] */
+        while (lo < hi) {
+            uint64_t mid = lo + (hi - lo + 1) / 2;
+            if (sw_cmp_decimal(v, 2 * mid - 1, k) >= 0)
+                lo = mid;
+            else
+                hi = mid - 1;
+        }
+        q = lo;
+        /* rounding carried into the next decade (99.96 -> 100): format as
+         * that decade, so 99.99999999999999 and 100 give the same "100" */
+        uint64_t next = 1;
+        for (int i = k; i <= e10; ++i) next *= 10;
+        if (q < next) break;
+        ++e10;
     }
-    uint64_t q = lo;
     if (sci) {
-        int ex = e10;
-        if (q >= 1000) { q /= 10; ++ex; } /* 9.995e+07 -> 1.00e+08 */
+        const int ex = e10;
         sw_putu(t, q / 100);
         sw_puts(t, ".");
         sw_putu(t, (q / 10) % 10);

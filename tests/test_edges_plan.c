@@ -55,6 +55,19 @@ START_TEST(explain_text_independent_of_rounding_mode) {
     ck_assert_msg(strstr(ref, "m_z 0.00100") != NULL, "%s", ref);
     snprintf(want, sizeof want, "%.2e texels", p.texels);
     ck_assert_msg(strstr(ref, want) != NULL, "%s not in %s", want, ref);
+    /* a rounding that carries into the next decade is formatted in that
+     * decade: one ulp below 100 prints as 100 exactly does ("100", not
+     * "100.0"), and one ulp below 1e7 as "1.00e+07" */
+    p.near = nextafter(100.0, 0.0);
+    p.far = nextafter(1e7, 0.0);
+    for (int m = 0; m < 4; ++m) {
+        explain(&p, modes[m], got, sizeof got);
+        ck_assert_msg(strstr(got, "depth range [100, 1.00e+07]") != NULL, "mode %d: %s", m, got);
+    }
+    p.near = 100.0;
+    p.far = 1e7;
+    explain(&p, FE_TONEAREST, got, sizeof got);
+    ck_assert_msg(strstr(got, "depth range [100, 1.00e+07]") != NULL, "%s", got);
 }
 END_TEST
 
