@@ -855,32 +855,39 @@ static void sw_putu(sw_text* t, uint64_t v) {
 #define SW_BIG_WORDS 40
 typedef struct sw_big {
     uint32_t w[SW_BIG_WORDS]; /* little-endian 32-bit words */
+    int n;                    /* words in use (the rest are zero) */
 } sw_big;
 
 static void sw_big_set(sw_big* b, uint64_t v) {
-    memset(b, 0, sizeof *b);
     b->w[0] = (uint32_t)v;
     b->w[1] = (uint32_t)(v >> 32);
+    b->n = 2;
 }
 static void sw_big_mul_small(sw_big* b, uint32_t m) {
     uint64_t carry = 0;
-    for (int i = 0; i < SW_BIG_WORDS; ++i) {
+    for (int i = 0; i < b->n; ++i) {
         uint64_t x = (uint64_t)b->w[i] * m + carry;
         b->w[i] = (uint32_t)x;
         carry = x >> 32;
     }
+    if (carry) b->w[b->n++] = (uint32_t)carry; /* n stays below SW_BIG_WORDS: ~830 bits at most */
 }
 static void sw_big_shl(sw_big* b, int bits) {
-    int words = bits / 32, r = bits % 32;
-    for (int i = SW_BIG_WORDS - 1; i >= 0; --i) {
-        uint64_t hi = i - words >= 0 ? b->w[i - words] : 0;
-        uint64_t lo = (r && i - words - 1 >= 0) ? b->w[i - words - 1] : 0;
+    const int words = bits / 32, r = bits % 32;
+    const int n = b->n + words + 1;
+    for (int i = n - 1; i >= 0; --i) {
+        uint64_t hi = (i - words >= 0 && i - words < b->n) ? b->w[i - words] : 0;
+        uint64_t lo = (r && i - words - 1 >= 0 && i - words - 1 < b->n) ? b->w[i - words - 1] : 0;
         b->w[i] = (uint32_t)((hi << r) | (r ? lo >> (32 - r) : 0));
     }
+    b->n = n;
 }
 static int sw_big_cmp(const sw_big* a, const sw_big* b) {
-    for (int i = SW_BIG_WORDS - 1; i >= 0; --i)
-        if (a->w[i] != b->w[i]) return a->w[i] < b->w[i] ? -1 : 1;
+    const int n = a->n > b->n ? a->n : b->n;
+    for (int i = n - 1; i >= 0; --i) {
+        uint32_t x = i < a->n ? a->w[i] : 0, y = i < b->n ? b->w[i] : 0;
+        if (x != y) return x < y ? -1 : 1;
+    }
     return 0;
 }
 static void sw_big_mul_pow5(sw_big* b, int n) {
@@ -951,17 +958,25 @@ static void sw_putd(sw_text* t, double v) {
         sci = e10 >= 7 || e10 < -3;
         /* the rounding unit 10^k: 3 significant digits, whole numbers at least */
         k = sci ? e10 - 2 : (e10 - 2 < 0 ? e10 - 2 : 0);
-        /* q: (q - 1/2) 10^k <= v < (q + 1/2) 10^k, by bisection on the exact
-         * comparison (q <= 10^3 in scientific form, <= 10^7 in fixed form) */
-        uint64_t lo = 0, hi = sci ? 1000 : 10000000; /* invariant: q in [lo, hi] */
-        while (lo < hi) {
-            uint64_t mid = lo + (hi - lo + 1) / 2;
-            if (sw_cmp_decimal(v, 2 * mid - 1, k) >= 0)
-                lo = mid;
-            else
-                hi = mid - 1;
+        /* q: (q - 1/2) 10^k <= v < (q + 1/2) 10^k.  A floating-point
+         * estimate (right or off by one in every mode) checked by two exact
+         * comparisons; bisection on the exact comparison when the estimate
+         * is not usable (DAZ, a subnormal v: q <= 10^3 in scientific form,
+         * <= 10^7 in fixed form). */
+        const uint64_t q_max = sci ? 1000 : 10000000;
+        const double est = k >= 0 ? v / pow(10.0, k) : v * pow(10.0, -k);
+        q = (est >= 1.0 && est < (double)q_max) ? (uint64_t)llround(est) : 0;
+        if (!(q >= 1 && sw_cmp_decimal(v, 2 * q - 1, k) >= 0 && sw_cmp_decimal(v, 2 * q + 1, k) < 0)) {
+            uint64_t lo = 0, hi = q_max; /* invariant: q in [lo, hi] */
+            while (lo < hi) {
+                uint64_t mid = lo + (hi - lo + 1) / 2;
+                if (sw_cmp_decimal(v, 2 * mid - 1, k) >= 0)
+                    lo = mid;
+                else
+                    hi = mid - 1;
+            }
+            q = lo;
         }
-        q = lo;
         /* rounding carried into the next decade (99.96 -> 100): format as
          * that decade, so 99.99999999999999 and 100 give the same "100" */
         uint64_t next = 1;
