@@ -515,6 +515,142 @@ START_TEST(stabilize_snap_and_sphere_edges) {
 }
 END_TEST
 
+/* Cascade selection, blending and the error curve: values against direct
+ * evaluation, every bad argument with its status and outputs untouched. */
+START_TEST(cascade_select_blend_curve_edges) {
+    const double splits[5] = {1.0, 4.0, 16.0, 64.0, 256.0};
+    uint32_t idx = 99;
+    double w = SENTINEL;
+    /* depth selection: brute force */
+    uint64_t s = 0xCA5Cull;
+    for (int n = 0; n < 1000; ++n) {
+        double z = tu_uniform(&s, 0.0, 300.0);
+        uint32_t want = 0;
+        while (want + 1 < 4 && z >= splits[want + 1]) ++want;
+        swarp_status st = swarp_cascade_select_depth(splits, 4, z, &idx);
+        ck_assert_uint_eq(idx, want);
+        ck_assert_int_eq(st, (z < 1.0 || z > 256.0) ? SWARP_INFO_OUTSIDE_SPLITS : SWARP_OK);
+        /* blend: weight 1 outside the last 25 % of the split, then linear to 0 */
+        st = swarp_cascade_blend(splits, 4, z, 0.25, &idx, &w);
+        ck_assert_uint_eq(idx, want);
+        double want_w = 1.0;
+        if (want < 3) {
+            double border = splits[want + 1], width = 0.25 * (border - splits[want]);
+            want_w = fmin(1.0, fmax(0.0, (border - z) / width));
+        }
+        ck_assert(fabs(w - want_w) < 1e-12);
+    }
+    ck_assert_int_eq(swarp_cascade_blend(splits, 4, 10.0, 0.0, &idx, &w), SWARP_OK);
+    ck_assert(w == 1.0);
+    const double nan_s[3] = {1, NAN, 3}, flat[3] = {1, 2, 2};
+    idx = 99;
+    w = SENTINEL;
+    ck_assert_int_eq(swarp_cascade_select_depth(splits, 0, 2.0, &idx), SWARP_ERR_SPLIT_COUNT);
+    ck_assert_int_eq(swarp_cascade_select_depth(splits, SWARP_SPLIT_MAX_COUNT + 1, 2.0, &idx), SWARP_ERR_SPLIT_COUNT);
+    ck_assert_int_eq(swarp_cascade_select_depth(NULL, 2, 2.0, &idx), SWARP_ERR_NULL_POINTER);
+    ck_assert_int_eq(swarp_cascade_select_depth(nan_s, 2, 2.0, &idx), SWARP_ERR_NON_FINITE);
+    ck_assert_int_eq(swarp_cascade_select_depth(flat, 2, 2.0, &idx), SWARP_ERR_NOT_INCREASING);
+    ck_assert_int_eq(swarp_cascade_select_depth(splits, 4, NAN, &idx), SWARP_ERR_NON_FINITE);
+    ck_assert_int_eq(swarp_cascade_select_depth(splits, 4, 2.0, NULL), SWARP_ERR_NULL_POINTER);
+    ck_assert_int_eq(swarp_cascade_blend(splits, 4, 2.0, 1.0, &idx, &w), SWARP_ERR_OUT_OF_RANGE);
+    ck_assert_int_eq(swarp_cascade_blend(splits, 4, 2.0, -0.1, &idx, &w), SWARP_ERR_OUT_OF_RANGE);
+    ck_assert_int_eq(swarp_cascade_blend(splits, 4, 2.0, NAN, &idx, &w), SWARP_ERR_NON_FINITE);
+    ck_assert_int_eq(swarp_cascade_blend(splits, 4, INFINITY, 0.1, &idx, &w), SWARP_ERR_NON_FINITE);
+    ck_assert_int_eq(swarp_cascade_blend(flat, 2, 2.0, 0.1, &idx, &w), SWARP_ERR_NOT_INCREASING);
+    ck_assert_int_eq(swarp_cascade_blend(splits, 4, 2.0, 0.1, NULL, &w), SWARP_ERR_NULL_POINTER);
+    ck_assert_int_eq(swarp_cascade_blend(splits, 4, 2.0, 0.1, &idx, NULL), SWARP_ERR_NULL_POINTER);
+    ck_assert(idx == 99 && tu_untouched(&w, 1, SENTINEL));
+
+    /* view depth: the distance along the normalised view direction */
+    swarp_camera cam = camera();
+    cam.dir = (swarp_vec3){0.0, 0.0, -3.0};
+    const swarp_vec3 p = {7.0, 2.0, -11.0};
+    double d = SENTINEL;
+    ck_assert_int_eq(swarp_cascade_view_depth(&cam, &p, &d), SWARP_OK);
+    ck_assert(d == 11.0);
+    d = SENTINEL;
+    swarp_camera bad = cam;
+    bad.dir = (swarp_vec3){0, 0, 0};
+    ck_assert_int_eq(swarp_cascade_view_depth(&bad, &p, &d), SWARP_ERR_ZERO_VECTOR);
+    bad = cam;
+    bad.eye.x = NAN;
+    ck_assert_int_eq(swarp_cascade_view_depth(&bad, &p, &d), SWARP_ERR_NON_FINITE);
+    const swarp_vec3 nan_p = {0, INFINITY, 0}, huge = {0, 0, -DBL_MAX};
+    ck_assert_int_eq(swarp_cascade_view_depth(&cam, &nan_p, &d), SWARP_ERR_NON_FINITE);
+    bad = cam;
+    bad.eye.z = DBL_MAX; /* p - eye overflows */
+    ck_assert_int_eq(swarp_cascade_view_depth(&bad, &huge, &d), SWARP_ERR_NON_FINITE);
+    ck_assert_int_eq(swarp_cascade_view_depth(NULL, &p, &d), SWARP_ERR_NULL_POINTER);
+    ck_assert_int_eq(swarp_cascade_view_depth(&cam, NULL, &d), SWARP_ERR_NULL_POINTER);
+    ck_assert_int_eq(swarp_cascade_view_depth(&cam, &p, NULL), SWARP_ERR_NULL_POINTER);
+    ck_assert(tu_untouched(&d, 1, SENTINEL));
+
+    /* select_best: the finest map covering p; none covering -> the fallback */
+    swarp_bias_map maps[3] = {ortho_map(SWARP_DEPTH_NEG_ONE_TO_ONE), ortho_map(SWARP_DEPTH_ZERO_TO_ONE),
+                              ortho_map(SWARP_DEPTH_NEG_ONE_TO_ONE)};
+    maps[1].res_s = maps[1].res_t = 4096.0; /* finer */
+    maps[2].res_s = maps[2].res_t = 8192.0;
+    maps[2].world_to_clip.m[12] = 50.0; /* moved away: does not cover */
+    const swarp_vec3 q = {1.5, -3.0, 2.0}, outside = {500.0, 0.0, 0.0};
+    double L = SENTINEL;
+    ck_assert_int_eq(swarp_cascade_select_best(maps, 3, &q, 0, &idx, &L), SWARP_OK);
+    ck_assert_uint_eq(idx, 1);
+    ck_assert(tu_rel(L, W / 4096.0) < 1e-12);
+    ck_assert_int_eq(swarp_cascade_select_best(maps, 3, &q, 0, &idx, NULL), SWARP_OK);
+    ck_assert_int_eq(swarp_cascade_select_best(maps, 3, &outside, 2, &idx, &L), SWARP_INFO_OUTSIDE_SPLITS);
+    ck_assert(idx == 2 && L == 0.0);
+    ck_assert_int_eq(swarp_cascade_select_best(maps, 3, &outside, 2, &idx, NULL), SWARP_INFO_OUTSIDE_SPLITS);
+    idx = 99;
+    L = SENTINEL;
+    ck_assert_int_eq(swarp_cascade_select_best(maps, 3, &q, 3, &idx, &L), SWARP_ERR_OUT_OF_RANGE);
+    ck_assert_int_eq(swarp_cascade_select_best(maps, 0, &q, 0, &idx, &L), SWARP_ERR_SPLIT_COUNT);
+    ck_assert_int_eq(swarp_cascade_select_best(maps, 3, &nan_p, 0, &idx, &L), SWARP_ERR_NON_FINITE);
+    ck_assert_int_eq(swarp_cascade_select_best(NULL, 3, &q, 0, &idx, &L), SWARP_ERR_NULL_POINTER);
+    ck_assert_int_eq(swarp_cascade_select_best(maps, 3, &q, 0, NULL, &L), SWARP_ERR_NULL_POINTER);
+    swarp_bias_map bm[2] = {maps[0], maps[2]};
+    bm[1].res_s = -1.0; /* a bad map that does not cover p is still refused */
+    ck_assert_int_eq(swarp_cascade_select_best(bm, 2, &q, 0, &idx, &L), SWARP_ERR_RESOLUTION);
+    bm[0].res_t = 0.0; /* a bad map that covers p */
+    ck_assert_int_eq(swarp_cascade_select_best(bm, 1, &q, 0, &idx, &L), SWARP_ERR_RESOLUTION);
+    ck_assert(idx == 99 && tu_untouched(&L, 1, SENTINEL));
+
+    /* error curve: arguments; values equal swarp_error_split_curve's */
+    swarp_error_config cfg;
+    memset(&cfg, 0, sizeof cfg);
+    cfg.near = 1.0;
+    cfg.far = 256.0;
+    cfg.theta = 0.8;
+    cfg.res_ix = cfg.res_iy = 1024.0;
+    cfg.res_s = cfg.res_t = 2048.0;
+    const double np[4] = {2.0, 8.0, INFINITY, 100.0};
+    double z[16], mx[16], mz[16];
+    size_t count = 0;
+    ck_assert(!swarp_status_is_error(swarp_cascade_error_curve(&cfg, splits, np, 4, 4, z, mx, mz, 16, &count)));
+    ck_assert_uint_eq(count, 16);
+    double mx1, mz1;
+    for (int i = 0; i < 16; ++i) {
+        ck_assert(!swarp_status_is_error(swarp_error_split_curve(&cfg, splits, np, 4, &z[i], 1, &mx1, &mz1)));
+        ck_assert(mx1 == mx[i] && mz1 == mz[i]);
+    }
+    ck_assert(!swarp_status_is_error(swarp_cascade_error_curve(&cfg, splits, np, 4, 4, z, NULL, NULL, 16, &count)));
+    tu_fill(z, 16, SENTINEL);
+    count = 7;
+    ck_assert_int_eq(swarp_cascade_error_curve(&cfg, splits, np, 4, 4, z, mx, mz, 15, &count), SWARP_ERR_CAPACITY);
+    ck_assert_uint_eq(count, 16);
+    count = 7;
+    ck_assert_int_eq(swarp_cascade_error_curve(&cfg, splits, np, 4, 1, z, mx, mz, 16, &count), SWARP_ERR_OUT_OF_RANGE);
+    ck_assert_int_eq(swarp_cascade_error_curve(NULL, splits, np, 4, 4, z, mx, mz, 16, &count), SWARP_ERR_NULL_POINTER);
+    ck_assert_int_eq(swarp_cascade_error_curve(&cfg, splits, NULL, 4, 4, z, mx, mz, 16, &count), SWARP_ERR_NULL_POINTER);
+    ck_assert_int_eq(swarp_cascade_error_curve(&cfg, splits, np, 4, 4, NULL, mx, mz, 16, &count), SWARP_ERR_NULL_POINTER);
+    ck_assert_int_eq(swarp_cascade_error_curve(&cfg, splits, np, 4, 4, z, mx, mz, 16, NULL), SWARP_ERR_NULL_POINTER);
+    ck_assert_int_eq(swarp_cascade_error_curve(&cfg, flat, np, 2, 4, z, mx, mz, 16, &count), SWARP_ERR_NOT_INCREASING);
+    swarp_error_config bc = cfg;
+    bc.res_s = -1.0; /* the pre-flight call refuses it before any output */
+    ck_assert(swarp_status_is_error(swarp_cascade_error_curve(&bc, splits, np, 4, 4, z, mx, mz, 16, &count)));
+    ck_assert(count == 7 && tu_untouched(z, 16, SENTINEL));
+}
+END_TEST
+
 int main(void) {
     Suite* s = suite_create("edges_splits");
     TCase* t = tcase_create("bias");
@@ -524,6 +660,7 @@ int main(void) {
     t = tcase_create("stabilize");
     tcase_add_test(t, stabilize_directional_edges);
     tcase_add_test(t, stabilize_snap_and_sphere_edges);
+    tcase_add_test(t, cascade_select_blend_curve_edges);
     suite_add_tcase(s, t);
     return tu_run_suite(s) ? 1 : 0;
 }
