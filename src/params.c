@@ -130,7 +130,9 @@ SWARP_API swarp_status swarp_warp_eta(double gamma, double theta, double* out_et
     if (gamma <= gamma_a)
         eta = -1.0;
     else if (gamma <= gamma_b)
-        eta = -1.0 + (SW_ETA_B + 1.0) * (gamma - gamma_a) / (gamma_b - gamma_a);
+        /* the ratio in [0, 1] first: (0.8 (gamma - gamma_a)) / ... rounds
+         * 0.8 x 4.9e-324 up to 4.9e-324 for subnormal angles (eta 0, not -0.2) */
+        eta = -1.0 + (SW_ETA_B + 1.0) * ((gamma - gamma_a) / (gamma_b - gamma_a));
     else if (gamma <= gamma_c) /* sin(90 deg * t), t in (0, 1] */
         eta = SW_ETA_B + (SW_ETA_C - SW_ETA_B) * sin(SW_HALF_PI * (gamma - gamma_b) / (gamma_c - gamma_b));
     else

@@ -311,6 +311,21 @@ START_TEST(gmnpr_F_matches_psi_offset) {
 }
 END_TEST
 
+/* [RHS] (3.3) at subnormal angles: eta(theta, theta) = -0.2 (to rounding) as
+ * for any theta (the linear piece ends at -0.2 at gamma_b = theta); the old
+ * order of operations gave 0 for theta = 4.9e-324. */
+START_TEST(eta_subnormal_angles) {
+    for (int k = 1; k < 2000; k += 7) {
+        const double th = k * 4.9406564584124654e-324;
+        double eta = 5.0;
+        ck_assert_int_eq(swarp_warp_eta(th, th, &eta), SWARP_OK);
+        ck_assert_msg(fabs(eta + 0.2) <= 4 * DBL_EPSILON, "theta = %g: eta %.17g", th, eta);
+        ck_assert_int_eq(swarp_warp_eta(0.0, th, &eta), SWARP_OK);
+        ck_assert(eta == -1.0);
+    }
+}
+END_TEST
+
 int main(void) {
     Suite* s = suite_create("edges_core");
     TCase* t = tcase_create("mat4_invert");
@@ -323,6 +338,7 @@ int main(void) {
     tcase_add_test(t, nrepar_extreme_alpha);
     tcase_add_test(t, gmnpr_F_and_psi_huge_lambda);
     tcase_add_test(t, gmnpr_F_matches_psi_offset);
+    tcase_add_test(t, eta_subnormal_angles);
     suite_add_tcase(s, t);
     return tu_run_suite(s) ? 1 : 0;
 }
