@@ -384,6 +384,19 @@ SWARP_API swarp_status swarp_gmnpr_F(double lambda, double theta, double phi, do
     swarp_status s = sw_gmnpr_args(lambda, theta, phi, n, f);
     if (s != SWARP_OK) return s;
     if (!(z >= n && z <= f)) return SWARP_ERR_OUT_OF_RANGE;
+    /* F is homogeneous of degree 0 in (n, f, z): the same exact 4^-k
+     * scaling as sw_normalise_nf, so subnormal depths keep their bits */
+    {
+        int e = ilogb(f);
+        int k = (e - (e & 1)) / 2;
+        double sc = ldexp(1.0, -k);
+        double n_s = (n * sc) * sc, z_s = (z * sc) * sc;
+        if (!(k > 0 && n_s < DBL_MIN)) {
+            n = n_s;
+            z = z_s;
+            f = (f * sc) * sc;
+        }
+    }
     double F;
     if (!sw_gmnpr_F_value(lambda, theta, phi, n, f, z, &F)) return SWARP_ERR_OVERFLOW;
     *out_F = F;
@@ -397,11 +410,15 @@ SWARP_API swarp_status swarp_gmnpr_F(double lambda, double theta, double phi, do
 static double sw_lambda_1(double theta, double phi, double n, double f) {
     double sqrt_fn = sqrt(f) * sqrt(n);
     if (theta >= phi) { /* t form: bounded for theta -> pi/2 */
-        double t = sw_t_ratio(theta, phi);
-        return (n + sqrt_fn - n * t) / sw_case1_D(t, n, f);
+        double t = sw_t_ratio(theta, phi), two;
+        double Dh = sw_case1_D_half(t, n, f, &two); /* D = two Dh: f near DBL_MAX */
+        return ((n + sqrt_fn - n * t) / two) / Dh;
     }
     double u = sw_u_ratio(theta, phi);
-    return (u * (n + sqrt_fn) - n) / ((f - n) * u + (f + n));
+    double den = (f - n) * u + (f + n);
+    if (!sw_finite(den)) /* f near DBL_MAX: both halved */
+        return (0.5 * (u * (n + sqrt_fn) - n)) / (0.5 * (f - n) * u + (0.5 * f + 0.5 * n));
+    return (u * (n + sqrt_fn) - n) / den;
 }
 
 /* lambda_2 of [GMNPR] (4): (f + sqrt(fn))/(2f) tan(theta)/tan(phi) - 1/2. */
@@ -409,6 +426,21 @@ static double sw_lambda_2(double theta, double phi, double n, double f) {
     double c = 0.5 * (1.0 + sqrt(n) / sqrt(f)); /* (f + sqrt(fn)) / (2f) */
     if (theta >= phi) return c / sw_t_ratio(theta, phi) - 0.5;
     return c * sw_u_ratio(theta, phi) - 0.5;
+}
+
+/* lambda_1, lambda_2, lambda_GMNPR, lambda_LiSPSM and lambda_GLPR are
+ * homogeneous of degree 0 in (n, f): scaling both by 4^-k (exact) to put f in
+ * [1, 4) changes nothing in exact arithmetic but keeps subnormal depths
+ * (n = 4.9e-324, f = 3e-317: sqrt(f) sqrt(n) had ~6 bits) and huge ones at
+ * full precision.  Skipped when it would push n into the subnormals. */
+static void sw_normalise_nf(double* n, double* f) {
+    int e = ilogb(*f);
+    int k = (e - (e & 1)) / 2; /* floor(e / 2) */
+    double s = ldexp(1.0, -k);
+    double n_s = (*n * s) * s;
+    if (k > 0 && n_s < DBL_MIN) return;
+    *n = n_s;
+    *f = (*f * s) * s;
 }
 
 /* [GMNPR] (4) */
@@ -419,6 +451,7 @@ SWARP_API swarp_status swarp_gmnpr_lambda12(double theta, double phi, double n, 
     swarp_status s = sw_gmnpr_frame(phi, n, f);
     if (s != SWARP_OK) return s;
     if (!(theta > 0.0 && theta <= SW_HALF_PI)) return SWARP_ERR_OUT_OF_RANGE;
+    sw_normalise_nf(&n, &f);
     double l1 = sw_lambda_1(theta, phi, n, f);
     double l2 = sw_lambda_2(theta, phi, n, f);
     if (!sw_finite(l1) || !sw_finite(l2)) return SWARP_ERR_OVERFLOW;
@@ -451,7 +484,16 @@ static swarp_status sw_lambda_gmnpr(double theta, double phi, double n, double f
     }
     /* [GMNPR] (7): lambda_2* = lambda_1(phi) / tan(theta pi / (4 phi)), lambda_1(phi) = sqrt(fn)/(2f) */
     double lambda_1_phi = 0.5 * sqrt(n) / sqrt(f);
-    double lambda = lambda_1_phi / tan(theta * SWARP_PI / (4.0 * phi));
+    double lambda;
+    if (theta < 1e-8 * (4.0 * phi / SWARP_PI)) {
+        /* tan(x) = x (1 + x^2/3 + ...) = x to 1e-16 for x < 1e-8; as a ratio
+         * of factors, since x itself is subnormal for theta ~ 1e-323 and
+         * lambda ~ 1e-300 / theta overflows only when it does */
+        const double num[3] = {lambda_1_phi, 4.0, phi}, den[2] = {SWARP_PI, theta};
+        lambda = sw_ratio(num, 3, den, 2);
+    } else {
+        lambda = lambda_1_phi / tan(theta * SWARP_PI / (4.0 * phi));
+    }
     return sw_put_warp(lambda, SWARP_INFO_GMNPR_ADJUSTED, out);
 }
 
@@ -461,6 +503,7 @@ SWARP_API swarp_status swarp_gmnpr_lambda(double theta, double phi, double n, do
     if (!out_lambda) return SWARP_ERR_NULL_POINTER;
     swarp_status s = sw_theta_closed_check(theta, phi, n, f);
     if (s != SWARP_OK) return s;
+    sw_normalise_nf(&n, &f);
     return sw_lambda_gmnpr(theta, phi, n, f, out_lambda);
 }
 
@@ -470,19 +513,39 @@ SWARP_API swarp_status swarp_gmnpr_lambda_lispsm(double theta, double phi, doubl
     if (!out_lambda) return SWARP_ERR_NULL_POINTER;
     swarp_status s = sw_theta_closed_check(theta, phi, n, f);
     if (s != SWARP_OK) return s;
+    sw_normalise_nf(&n, &f);
     if (theta == 0.0) {
         *out_lambda = DBL_MAX; /* P_n = inf: duelling frusta; finite, like lambda_GMNPR */
         return SWARP_INFO_WARP_UNIFORM;
     }
-    double P_n = (n + sqrt(f) * sqrt(n)) / sin(theta);
-    double depth; /* P_f - P_n of [GMNPR] (9) */
-    if (theta >= phi) {
-        /* (n t + f - n + f t) sin(theta) = D sin(theta) */
-        depth = sw_case1_D(sw_t_ratio(theta, phi), n, f) * sin(theta);
-    } else {
-        depth = 2.0 * f * tan(phi) * cos(theta);
+    /* lambda = P_n / (P_f - P_n) with P_n = (n + sqrt(fn))/sin(theta) and
+     * P_f - P_n = D sin(theta) (theta >= phi; (n t + f - n + f t) sin(theta))
+     * or 2 f tan(phi) cos(theta), as one ratio of factors (sw_ratio): P_n
+     * alone overflows for theta ~ 1e-308 and the depth for f ~ DBL_MAX while
+     * lambda is representable.  The numerator is halved only if it overflows. */
+    double num[2] = {n + sqrt(f) * sqrt(n), 1.0};
+    if (!sw_finite(num[0])) {
+        num[0] = 0.5 * n + 0.5 * sqrt(f) * sqrt(n);
+        num[1] = 2.0;
     }
-    return sw_put_warp(P_n / depth, SWARP_OK, out_lambda);
+    double den[5];
+    int n_den;
+    if (theta >= phi) {
+        double two;
+        den[0] = sin(theta);
+        den[1] = sin(theta);
+        den[2] = sw_case1_D_half(sw_t_ratio(theta, phi), n, f, &two);
+        den[3] = two;
+        n_den = 4;
+    } else {
+        den[0] = sin(theta);
+        den[1] = 2.0;
+        den[2] = f;
+        den[3] = tan(phi);
+        den[4] = cos(theta);
+        n_den = 5;
+    }
+    return sw_put_warp(sw_ratio(num, 2, den, n_den), SWARP_OK, out_lambda);
 }
 
 /* GLPR from [GMNPR] (2), derivation in docs/parameters.md:
@@ -499,6 +562,7 @@ SWARP_API swarp_status swarp_gmnpr_lambda_glpr(double theta, double phi, double 
     if (!out_lambda) return SWARP_ERR_NULL_POINTER;
     swarp_status s = sw_theta_closed_check(theta, phi, n, f);
     if (s != SWARP_OK) return s;
+    sw_normalise_nf(&n, &f);
     if (theta > phi) {
         double D = sw_case1_D(sw_t_ratio(theta, phi), n, f);
         double one_minus_t = sin(theta - phi) / (sin(theta) * cos(phi));

@@ -326,6 +326,55 @@ START_TEST(eta_subnormal_angles) {
 }
 END_TEST
 
+/* [GMNPR] (4), (7)-(9) in long double as printed (t = tan(phi)/tan(theta)):
+ * lambda_1 = (n + sqrt(fn) - n t)/(f - n + (f + n) t) for theta >= phi,
+ * lambda_1 = (u (n + sqrt(fn)) - n)/((f - n) u + f + n) otherwise (u = 1/t);
+ * lambda_2* = sqrt(fn)/(2f) / tan(theta pi / (4 phi));
+ * lambda_LiSPSM = ((n + sqrt(fn))/sin(theta)) / (P_f - P_n). */
+static long double ref_lambda_1(long double th, long double ph, long double n, long double f) {
+    long double t = tanl(ph) / tanl(th), r = sqrtl(f * n);
+    if (th >= ph) return (n + r - n * t) / (f - n + (f + n) * t);
+    return ((n + r) / t - n) / ((f - n) / t + f + n);
+}
+static long double ref_lispsm(long double th, long double ph, long double n, long double f) {
+    long double Pn = (n + sqrtl(f * n)) / sinl(th), t = tanl(ph) / tanl(th);
+    long double depth = th >= ph ? (f - n + (f + n) * t) * sinl(th) : 2 * f * tanl(ph) * cosl(th);
+    return Pn / depth;
+}
+
+START_TEST(gmnpr_lambdas_extreme_depths) {
+    /* theta, phi, n, f: subnormal depths, f near DBL_MAX, theta ~ DBL_MIN */
+    const double cases[][4] = {
+        {1.4779317867858497, 0.50534738244393917, 4.9406564584124654e-324, 4.2141857912270174e-317},
+        {0.80206375646367467, 0.52359877559829893, 4.9406564584124654e-324, 3.1805446307091496e-317},
+        {0.035267093095253228, 0.035267093095253228, 4.9406564584124654e-324, 5.6406338434709683e-318},
+        {0.5235987755982987, 0.5235987755982987, 0.99999999900000003, 1.7976931330646226e+308},
+        {1.0496482061068264, 0.0099999999999999985, 0.99999999999999989, 1.7976931348623155e+308},
+        {2.2250738585072009e-308, 1.2492253675820186, 168.9258917337595, 22425.738223714543},
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; ++i) {
+        const double* a = cases[i];
+        double l1, l2, lg, ll;
+        ck_assert_int_eq(swarp_gmnpr_lambda12(a[0], a[1], a[2], a[3], &l1, &l2), SWARP_OK);
+        long double r1 = ref_lambda_1(a[0], a[1], a[2], a[3]);
+        ck_assert_msg(fabsl(l1 - r1) <= 1e-12L * fabsl(r1), "case %zu: lambda_1 %.17g vs %.17Lg", i, l1, r1);
+        ck_assert_int_eq(swarp_gmnpr_lambda_lispsm(a[0], a[1], a[2], a[3], &ll), SWARP_OK);
+        long double rl = ref_lispsm(a[0], a[1], a[2], a[3]);
+        ck_assert_msg(fabsl(ll - rl) <= 1e-12L * rl, "case %zu: lambda_LiSPSM %.17g vs %.17Lg", i, ll, rl);
+        swarp_status st = swarp_gmnpr_lambda(a[0], a[1], a[2], a[3], &lg);
+        ck_assert(st == SWARP_OK || st == SWARP_INFO_GMNPR_ADJUSTED);
+        if (a[0] >= a[1]) ck_assert(lg == l1); /* (8), first case */
+    }
+    /* (7) at a subnormal theta: lambda_1(phi) / tan(theta pi / (4 phi)) */
+    const double th = 4.9406564584124654e-324, ph = 1.1877003556401658e-108, n = 200.99237085786692,
+                 f = 2769.682718713424;
+    double lg;
+    ck_assert_int_eq(swarp_gmnpr_lambda(th, ph, n, f, &lg), SWARP_INFO_GMNPR_ADJUSTED);
+    long double ref = sqrtl((long double)f * n) / (2.0L * f) / tanl((long double)th * 3.14159265358979323846L / (4.0L * ph));
+    ck_assert_msg(fabsl(lg - ref) <= 1e-13L * ref, "lambda_GMNPR %.17g vs %.17Lg", lg, ref);
+}
+END_TEST
+
 int main(void) {
     Suite* s = suite_create("edges_core");
     TCase* t = tcase_create("mat4_invert");
@@ -339,6 +388,7 @@ int main(void) {
     tcase_add_test(t, gmnpr_F_and_psi_huge_lambda);
     tcase_add_test(t, gmnpr_F_matches_psi_offset);
     tcase_add_test(t, eta_subnormal_angles);
+    tcase_add_test(t, gmnpr_lambdas_extreme_depths);
     suite_add_tcase(s, t);
     return tu_run_suite(s) ? 1 : 0;
 }
