@@ -522,12 +522,10 @@ SWARP_API swarp_status swarp_gmnpr_lambda_lispsm(double theta, double phi, doubl
      * P_f - P_n = D sin(theta) (theta >= phi; (n t + f - n + f t) sin(theta))
      * or 2 f tan(phi) cos(theta), as one ratio of factors (sw_ratio): P_n
      * alone overflows for theta ~ 1e-308 and the depth for f ~ DBL_MAX while
-     * lambda is representable.  The numerator is halved only if it overflows. */
-    double num[2] = {n + sqrt(f) * sqrt(n), 1.0};
-    if (!sw_finite(num[0])) {
-        num[0] = 0.5 * n + 0.5 * sqrt(f) * sqrt(n);
-        num[1] = 2.0;
-    }
+     * lambda is representable.  The numerator n + sqrt(fn) <= 2f cannot
+     * overflow: sw_normalise_nf brought f into [1, 4), or it left f huge
+     * only for n < f 2^-1020, where sqrt(fn) < 2^-510 f. */
+    const double num[1] = {n + sqrt(f) * sqrt(n)};
     double den[5];
     int n_den;
     if (theta >= phi) {
@@ -545,7 +543,7 @@ SWARP_API swarp_status swarp_gmnpr_lambda_lispsm(double theta, double phi, doubl
         den[4] = cos(theta);
         n_den = 5;
     }
-    return sw_put_warp(sw_ratio(num, 2, den, n_den), SWARP_OK, out_lambda);
+    return sw_put_warp(sw_ratio(num, 1, den, n_den), SWARP_OK, out_lambda);
 }
 
 /* GLPR from [GMNPR] (2), derivation in docs/parameters.md:
