@@ -352,8 +352,8 @@ START_TEST(gmnpr_lambdas_extreme_depths) {
         {1.0496482061068264, 0.0099999999999999985, 0.99999999999999989, 1.7976931348623155e+308},
         {2.2250738585072009e-308, 1.2492253675820186, 168.9258917337595, 22425.738223714543},
         {0.3, 0.6, 1.0, 1.7e308},
-        {0.3, 0.6, 1.0, 1.79e308},  /* n/f below 2^-1020, not normalised: (f - n) u + f + n overflows */
-        {1.2, 0.6, 1.0, 1.79e308},  /* likewise D = f - n + (f + n) t */
+        {0.3, 0.6, 0.5, 1.79e308},  /* n/f below 2^-1020, not normalised: (f - n) u + f + n overflows */
+        {1.2, 0.6, 0.5, 1.79e308},  /* likewise D = f - n + (f + n) t */
         {1.0, 0.5, 1e308, 1.7e308}, /* n + sqrt(f n) would overflow without the normalisation */
         {0.2, 0.7, 1e308, 1.7e308},
     };
