@@ -129,7 +129,6 @@ SWARP_API swarp_status swarp_lvsm_lloyd(const double* mu, const double* sigma2, 
             }
             ++rep.iterations;
             double W[SWARP_LVSM_MAX_LAYERS], X[SWARP_LVSM_MAX_LAYERS], X2[SWARP_LVSM_MAX_LAYERS];
-            double W_total = 0.0;
             for (uint32_t i = 0; i < k; ++i) W[i] = X[i] = X2[i] = 0.0;
             for (size_t j = 0; j < count; ++j) {
                 double w = sw_weight(sigma2[j], o.weight_clamp_lo, o.weight_clamp_hi) / w_max;
@@ -142,12 +141,10 @@ SWARP_API swarp_status swarp_lvsm_lloyd(const double* mu, const double* sigma2, 
                 W[i] += w;
                 X[i] += w * x;
                 X2[i] += w * x * x;
-                W_total += w;
             }
-            if (!(W_total > 0.0)) {
-                result = SWARP_INFO_FILTER_NO_WEIGHT;
-                break;
-            }
+            /* Sum of W >= 1 here: the sample of weight w_max contributes
+             * w_max / w_max = 1, and w_max = 0 returned NO_WEIGHT before the
+             * loop (a check here was dead code, issue 9 coverage). */
             /* Teleportation: the first empty cluster is removed (its two
              * layers merge) and the heaviest cluster is split in two. */
             uint32_t empty = k, heavy = 0;
