@@ -1168,7 +1168,8 @@ typedef struct swarp_lixel_restrict_options {
  *  @param[out] out_M_l A_l · M_l: lixel (0, 0) is the lower-left of the rectangle
  *  @return SWARP_OK; SWARP_ERR_LIXEL_RAY_OUTSIDE (a vertex has q <= 0,
  *  without view clipping), SWARP_ERR_LIXEL_EMPTY (nothing of C in view),
- *  SWARP_ERR_LIXEL_RECT_TOO_LARGE, SWARP_ERR_OUT_OF_RANGE (scale < 0),
+ *  SWARP_ERR_LIXEL_RECT_TOO_LARGE, SWARP_ERR_OUT_OF_RANGE (scale < 0, or
+ *  an entry of A_l M_l would exceed DBL_MAX, e.g. scale near DBL_MAX),
  *  SWARP_ERR_INVALID_ARGUMENT (n = 0), SWARP_ERR_RESERVED_NONZERO,
  *  SWARP_ERR_NON_FINITE, SWARP_ERR_NULL_POINTER. */
 SWARP_API swarp_status swarp_lixel_restrict(const swarp_mat4* M_l, const swarp_vec4* C, size_t n,
@@ -1206,8 +1207,11 @@ SWARP_API swarp_status swarp_lixel_twist_for_line(const swarp_mat4* M_l, const s
  *  @param plane_depth in [0, 1): 0 = default 0.5
  *  @param[out] out_GLV viewport, NDC -> lixels
  *  @param[out] out_GLP world -> clip
- *  @return SWARP_OK; SWARP_ERR_RESOLUTION, SWARP_ERR_OUT_OF_RANGE,
- *  SWARP_ERR_UNKNOWN_ENUM, SWARP_ERR_NON_FINITE, SWARP_ERR_NULL_POINTER. */
+ *  @return SWARP_OK; SWARP_ERR_RESOLUTION, SWARP_ERR_OUT_OF_RANGE
+ *  (plane_depth outside [0, 1), or an entry of GLP would exceed DBL_MAX:
+ *  possible once max|M_l| > DBL_MAX/3), SWARP_ERR_UNKNOWN_ENUM,
+ *  SWARP_ERR_NON_FINITE (M_l or plane_depth not finite),
+ *  SWARP_ERR_NULL_POINTER. */
 SWARP_API swarp_status swarp_lixel_factor(const swarp_mat4* M_l, uint32_t width, uint32_t height,
                                           swarp_depth_range depth_range, double plane_depth,
                                           swarp_mat4* out_GLV, swarp_mat4* out_GLP);

@@ -394,7 +394,9 @@ SWARP_API swarp_status swarp_lixel_restrict(const swarp_mat4* M_l, const swarp_v
     sw_set(&A, 1, 3, -y0);
     swarp_mat4 M;
     sw_mul(&A, M_l, &M); /* [LIXEL] Fig. 6, §2 "Less of the plane": M_l := A_l M_l */
-    if (!sw_mat_finite(&M)) return SWARP_ERR_NON_FINITE;
+    /* valid (finite) inputs whose product exceeds DBL_MAX (huge scale_x/y):
+     * not representable -> OUT_OF_RANGE, not NON_FINITE */
+    if (!sw_mat_finite(&M)) return SWARP_ERR_OUT_OF_RANGE;
     swarp_lixel_rect rect;
     rect.x0 = (int32_t)x0;
     rect.x1 = (int32_t)x1;
@@ -470,7 +472,10 @@ SWARP_API swarp_status swarp_lixel_factor(const swarp_mat4* M_l, uint32_t width,
                             alpha * Z.w + beta * Q.w));
     lx_set_row(&P, 3, Q);
     viewport_pixels(W, H, &Vw);
-    if (!sw_mat_finite(&P)) return SWARP_ERR_NON_FINITE;
+    /* finite M_l but an entry of GLP beyond DBL_MAX (row 0/1 reach
+     * (2/W + 1) max|M_l| <= 3 max|M_l|): the inputs were valid, the result is
+     * not representable -> OUT_OF_RANGE, not NON_FINITE */
+    if (!sw_mat_finite(&P)) return SWARP_ERR_OUT_OF_RANGE;
     *out_GLV = Vw;
     *out_GLP = P;
     return SWARP_OK;

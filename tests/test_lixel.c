@@ -1064,6 +1064,45 @@ END_TEST
 
 /* @@MORE_TESTS@@ */
 
+/* Finite, valid inputs whose result exceeds DBL_MAX: OUT_OF_RANGE (was
+ * NON_FINITE, which says an INPUT was not finite), outputs untouched. */
+START_TEST(overflowing_results_are_out_of_range) {
+    swarp_mat4 M, V, P;
+    for (int i = 0; i < 16; ++i) M.m[i] = (i % 5 == 0) ? DBL_MAX : 0.0;
+    sentinel(&V);
+    sentinel(&P);
+    /* width 1: GLP row 0 = 2 X + 0 Q, 2 DBL_MAX is not representable */
+    ck_assert_int_eq(swarp_lixel_factor(&M, 1, 1, SWARP_DEPTH_DEFAULT, 0.0, &V, &P), SWARP_ERR_OUT_OF_RANGE);
+    ck_assert(is_sentinel(&V) && is_sentinel(&P));
+    for (int i = 0; i < 16; ++i) M.m[i] = (i % 5 == 0) ? 0.25 * DBL_MAX : 0.0;
+    ck_assert_int_eq(swarp_lixel_factor(&M, 1, 1, SWARP_DEPTH_DEFAULT, 0.0, &V, &P), SWARP_OK);
+    /* restrict: x = x_w + y_w, y = y_w - x_w, rays through the origin image
+     * to (0, 0) (a one-lixel rectangle) but scale_x = DBL_MAX with twist
+     * pi/4 makes A_l M_l's row 0 = sqrt(2) DBL_MAX */
+    swarp_mat4 Ml = {{0}};
+    Ml.m[0] = 1;
+    Ml.m[4] = 1;
+    Ml.m[1] = -1;
+    Ml.m[5] = 1;
+    Ml.m[10] = 1;
+    Ml.m[15] = 1;
+    swarp_vec4 C[2] = {{0, 0, 1, 1}, {0, 0, 2, 1}};
+    swarp_lixel_restrict_options o;
+    memset(&o, 0, sizeof o);
+    o.scale_x = DBL_MAX;
+    o.twist = M_PI / 4;
+    swarp_lixel_rect R, Rs;
+    memset(&Rs, 0x5A, sizeof Rs);
+    R = Rs;
+    sentinel(&P);
+    ck_assert_int_eq(swarp_lixel_restrict(&Ml, C, 2, &o, &R, NULL, &P), SWARP_ERR_OUT_OF_RANGE);
+    ck_assert(is_sentinel(&P));
+    ck_assert(memcmp(&R, &Rs, sizeof R) == 0);
+    o.scale_x = 1;
+    ck_assert_int_eq(swarp_lixel_restrict(&Ml, C, 2, &o, &R, NULL, &P), SWARP_OK);
+}
+END_TEST
+
 static Suite* lixel_suite(void) {
     Suite* s = suite_create("lixel");
     TCase* tc = tcase_create("lixel");
@@ -1085,6 +1124,7 @@ static Suite* lixel_suite(void) {
     tcase_add_test(tc, split_directional_points);
     tcase_add_test(tc, orthographic_viewer);
     tcase_add_test(tc, near_degenerate_never_nan);
+    tcase_add_test(tc, overflowing_results_are_out_of_range);
     /* @@MORE_TCASES@@ */
     suite_add_tcase(s, tc);
     return s;
