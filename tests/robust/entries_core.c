@@ -698,9 +698,26 @@ static void e_gmnpr_F(swr_ctx* c) {
         long double ref = (long double)psi * ((long double)g.z + off) * ((long double)g.z + off) / g.z;
         long double zo = (long double)g.z + offset_terms(g.lambda, g.theta, g.phi, g.n, g.f);
         long double scale = (long double)psi * zo * zo / g.z;
+        /* psi comes back rounded to double: below DBL_MIN (lambda > ~1e160)
+         * it is subnormal or 0 with an absolute error up to DBL_TRUE_MIN/2,
+         * which the factor (z + phi)^2/z carries into this cross-check (F
+         * itself is checked against the long-double ref_F above); likewise
+         * the offset rounded to double near a subnormal z, through
+         * d/d(off) = 2 psi (z + off)/z */
+        long double psi_abs = 0.5L * DBL_TRUE_MIN * zo * zo / g.z + DBL_TRUE_MIN * fabsl((long double)psi * zo / g.z);
+        /* with n, f subnormal the common factor X = f - n + (f + n) t (theta
+         * >= phi; 2 f otherwise) of psi and offset is formed in double with
+         * an absolute error of a few DBL_TRUE_MIN, i.e. relative 8
+         * DBL_TRUE_MIN/|X|: psi and offset carry it once each, F's
+         * combination (psi (z+off)^2) up to three times.  Negligible
+         * (< 2e-15) once X is normal. */
+        long double tt = tanl((long double)g.phi) / tanl((long double)g.theta);
+        long double X = g.theta >= g.phi ? fabsl((long double)g.f - g.n + ((long double)g.f + g.n) * tt)
+                                         : 2.0L * g.f;
+        if (X > 0) psi_abs += 3.0L * scale * (8.0L * DBL_TRUE_MIN / X);
         if (!c->rounding_edge)
-            SWR_CHECK_ACC(c, fabsl(out - ref) <= 1e-12L * scale + DBL_MIN, "F = %.17g but psi (z+phi)^2/z = %.17Lg", out,
-                          ref);
+            SWR_CHECK_ACC(c, fabsl(out - ref) <= 1e-12L * scale + DBL_MIN + psi_abs,
+                          "F = %.17g but psi (z+phi)^2/z = %.17Lg", out, ref);
     }
 }
 
