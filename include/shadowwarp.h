@@ -489,7 +489,9 @@ SWARP_API swarp_status swarp_gmnpr_lambda_lispsm(double theta, double phi, doubl
 /** @brief λ_GLPR: the λ that makes F(λ, θ, z) linear in z (GLPR, [GMNPR] §3,
  *  derived from (2): F linear in z <=> φ(λ, θ) = 0).  For θ > φ:
  *  λ = n (1 - tanφ/tanθ) / (f - n + (f + n) tanφ/tanθ), which is n/(f - n)
- *  (PSM) at θ = π/2.  For θ <= φ there is no positive solution: λ_GMNPR(θ) is
+ *  (PSM) at θ = π/2; a solution below the smallest subnormal (n subnormal
+ *  with f >> n, or θ just above φ) is written as DBL_TRUE_MIN with SWARP_OK.
+ *  For θ <= φ there is no positive solution: λ_GMNPR(θ) is
  *  written instead with SWARP_INFO_GLPR_NO_SOLUTION (θ = 0: DBL_MAX with
  *  SWARP_INFO_WARP_UNIFORM).  Derivation in docs/parameters.md.
  *  @return SWARP_OK, SWARP_INFO_GLPR_NO_SOLUTION, SWARP_INFO_WARP_UNIFORM,

@@ -569,7 +569,13 @@ SWARP_API swarp_status swarp_gmnpr_lambda_glpr(double theta, double phi, double 
             *out_lambda = lambda;
             return SWARP_OK;
         }
-        /* underflowed to 0 just above phi: treat as no positive solution */
+        /* theta > phi: the positive solution exists (1 - t > 0, D > 0) but
+         * lies below the smallest subnormal (n subnormal, f >> n, or theta
+         * just above phi): the nearest positive double is DBL_TRUE_MIN */
+        if (lambda == 0.0 && n > 0.0 && D > 0.0 && one_minus_t > 0.0) {
+            *out_lambda = DBL_TRUE_MIN;
+            return SWARP_OK;
+        }
     }
     double fallback;
     s = sw_lambda_gmnpr(theta, phi, n, f, &fallback);

@@ -380,6 +380,22 @@ START_TEST(gmnpr_lambdas_extreme_depths) {
 }
 END_TEST
 
+/* theta > phi with n subnormal and f >> n: the GLPR solution n (1 - t)/D
+ * (about 6e-333 here) exists but is below DBL_TRUE_MIN -> DBL_TRUE_MIN with
+ * SWARP_OK (was lambda_GMNPR with SWARP_INFO_GLPR_NO_SOLUTION, which says
+ * there is no solution). */
+START_TEST(glpr_lambda_below_true_min) {
+    double lam = -1;
+    ck_assert_int_eq(swarp_gmnpr_lambda_glpr(0.14180588291489093, 1.000001e-06, DBL_TRUE_MIN, 783214767.65697455, &lam),
+                     SWARP_OK);
+    ck_assert(lam == DBL_TRUE_MIN);
+    /* representable: unchanged, the closed form n (1 - t)/(f - n + (f + n) t) */
+    double th = 0.9, ph = 0.3, n = 1.0, f = 100.0, t = tan(ph) / tan(th);
+    ck_assert_int_eq(swarp_gmnpr_lambda_glpr(th, ph, n, f, &lam), SWARP_OK);
+    ck_assert(fabs(lam - n * (1 - t) / (f - n + (f + n) * t)) <= 1e-14 * lam);
+}
+END_TEST
+
 int main(void) {
     Suite* s = suite_create("edges_core");
     TCase* t = tcase_create("mat4_invert");
@@ -394,6 +410,7 @@ int main(void) {
     tcase_add_test(t, gmnpr_F_matches_psi_offset);
     tcase_add_test(t, eta_subnormal_angles);
     tcase_add_test(t, gmnpr_lambdas_extreme_depths);
+    tcase_add_test(t, glpr_lambda_below_true_min);
     suite_add_tcase(s, t);
     return tu_run_suite(s) ? 1 : 0;
 }

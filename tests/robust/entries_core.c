@@ -827,8 +827,14 @@ static void e_gmnpr_lambda_glpr(swr_ctx* c) {
     if (st == SWARP_OK && swr_isfin(out) && swarp_gmnpr_offset) {
         /* GLPR: F linear in z <=> offset(lambda, theta) = 0 */
         double off;
+        /* lambda is only known to the spacing of doubles near it; below
+         * DBL_MIN that is DBL_TRUE_MIN (a solution under DBL_TRUE_MIN is
+         * written as DBL_TRUE_MIN), which moves the offset by
+         * d(offset)/d(lambda) DBL_TRUE_MIN = (f - n + (f + n) t) DBL_TRUE_MIN */
+        double d_off = (g.f - g.n + (g.f + g.n) * (tan(g.phi) / tan(g.theta))) * DBL_TRUE_MIN;
         if (!swarp_status_is_error(swarp_gmnpr_offset(out, g.theta, g.phi, g.n, g.f, &off)))
-            SWR_CHECK(c, fabs(off) <= 1e-6 * (g.n + fabs(out) * (g.f - g.n)), "offset(lambda_GLPR) = %g", off);
+            SWR_CHECK(c, fabs(off) <= 1e-6 * (g.n + fabs(out) * (g.f - g.n)) + 2.0 * d_off,
+                      "offset(lambda_GLPR) = %g", off);
     }
 }
 
