@@ -8,14 +8,26 @@
  * All write m + 1 distances with C_0 = n and C_m = f exactly (set, not
  * computed, so the splits cover [n, f] without a gap of one ulp).
  */
+#include <float.h>
+
 #include "swarp_internal.h"
 
 /* C_i of (3.8) over [a, b] for 0 < i < m.  The logarithmic term is
  * a exp(log(b/a) i/m): one rounding in log, one in exp. */
 static double sw_practical_at(double a, double b, double lambda, uint32_t i, uint32_t m) {
     double s = (double)i / (double)m;
-    double c_uni = a + (b - a) * s;         /* (3.6) */
-    double c_log = a * exp(log(b / a) * s); /* (3.7) */
+    double c_uni = a + (b - a) * s; /* (3.6) */
+    if (lambda == 0.0) return c_uni; /* uniform: no log term (0 * Inf below) */
+    /* (3.7).  b/a overflows for a subnormal near plane and a far one above
+     * ~1e15 (the ratio exceeds DBL_MAX although every C_i is representable):
+     * then log b - log a (absolute error ~ eps |log a| <= 1.6e-13 in the
+     * exponent, i.e. relative in C_i); likewise (b/a)^s may overflow while
+     * a (b/a)^s does not: then exp(log a + L s). */
+    double r = b / a;
+    double L = (r <= DBL_MAX) ? log(r) : log(b) - log(a);
+    double e = exp(L * s);
+    double c_log = (e <= DBL_MAX) ? a * e : exp(log(a) + L * s);
+    if (lambda == 1.0) return c_log;
     return (1.0 - lambda) * c_uni + lambda * c_log;
 }
 

@@ -396,6 +396,28 @@ START_TEST(glpr_lambda_below_true_min) {
 }
 END_TEST
 
+/* A subnormal or tiny near plane with an ordinary far one: f/n overflows
+ * double (was Inf -> 0 * Inf = NaN -> SWARP_ERR_DEGENERATE for every scheme)
+ * though every split is representable. */
+START_TEST(split_schemes_huge_ratio) {
+    double out[5];
+    size_t cnt = 0;
+    ck_assert_int_eq(swarp_split_uniform(DBL_MIN, 1e9, 4, out, 5, &cnt), SWARP_OK);
+    ck_assert(cnt == 5 && out[2] == 0.5e9);
+    const double n = DBL_TRUE_MIN, f = 6e8;
+    ck_assert_int_eq(swarp_split_log(n, f, 4, out, 5, &cnt), SWARP_OK);
+    for (int i = 1; i < 4; ++i) {
+        long double ref = (long double)n * powl((long double)f / n, i / 4.0L); /* (f/n) fits long double */
+        ck_assert(fabsl(out[i] - ref) <= 1e-12L * ref);
+    }
+    ck_assert_int_eq(swarp_split_practical(n, f, 0.5, 4, out, 5, &cnt), SWARP_OK);
+    for (int i = 1; i < 4; ++i) {
+        long double ref = 0.5L * n * powl((long double)f / n, i / 4.0L) + 0.5L * (n + (f - (long double)n) * i / 4.0L);
+        ck_assert(fabsl(out[i] - ref) <= 1e-12L * ref);
+    }
+}
+END_TEST
+
 int main(void) {
     Suite* s = suite_create("edges_core");
     TCase* t = tcase_create("mat4_invert");
@@ -411,6 +433,7 @@ int main(void) {
     tcase_add_test(t, eta_subnormal_angles);
     tcase_add_test(t, gmnpr_lambdas_extreme_depths);
     tcase_add_test(t, glpr_lambda_below_true_min);
+    tcase_add_test(t, split_schemes_huge_ratio);
     suite_add_tcase(s, t);
     return tu_run_suite(s) ? 1 : 0;
 }

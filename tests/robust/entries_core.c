@@ -1102,6 +1102,25 @@ static void e_split_scheme(swr_ctx* c, int kind) {
     double width = a.f - a.n, ulp_f = nextafter(a.f, INFINITY) - a.f;
     if (kind == SCH_PSEUDO && a.f_p - a.n_p < width) width = a.f_p - a.n_p;
     if (swr_isfin(width) && width <= 64.0 * (a.m + 1.0) * ulp_f) swr_allow(c, SWARP_ERR_DEGENERATE);
+    /* log-spaced splits over a subnormal [n, f] (n (f/n)^(i/m)) can be closer
+     * than the DBL_TRUE_MIN spacing there although [n, f] is wide: two
+     * consecutive references within 2 DBL_TRUE_MIN (the library's rounding
+     * bound below DBL_MIN, see the C_i check) have no distinct doubles */
+    if (kind != SCH_UNIFORM && a.m >= 1 && a.m <= SWARP_SPLIT_MAX_COUNT && swr_isfin(a.n) && swr_isfin(a.f) &&
+        a.n > 0 && a.f > a.n && a.n < DBL_MIN && (kind == SCH_LOG || (swr_isfin(a.lambda) && a.lambda > 0 && a.lambda <= 1))) {
+        long double lo = a.n, hi = a.f, prev = lo, lam = kind == SCH_LOG ? 1.0L : a.lambda;
+        if (kind == SCH_PSEUDO && swr_isfin(a.n_p) && swr_isfin(a.f_p) && a.n_p > 0 && a.f_p > a.n_p) {
+            lo = a.n_p;
+            hi = a.f_p;
+        }
+        for (uint32_t i = 1; i <= a.m; ++i) {
+            long double t = (long double)i / a.m;
+            long double r = i == a.m ? (long double)a.f
+                                     : lam * lo * powl(hi / lo, t) + (1.0L - lam) * (lo + (hi - lo) * t);
+            if (r - prev <= 2.0L * DBL_TRUE_MIN) swr_allow(c, SWARP_ERR_DEGENERATE);
+            prev = r;
+        }
+    }
     double out[SWARP_SPLIT_MAX_COUNT + 2];
     size_t count;
     swr_fill(out, sizeof out);
@@ -1143,7 +1162,12 @@ static void e_split_scheme(swr_ctx* c, int kind) {
         if (kind == SCH_UNIFORM) ref = u;                                       /* [RHS] (3.6) */
         else if (kind == SCH_LOG) ref = l;                                      /* [RHS] (3.7) */
         else ref = (long double)a.lambda * l + (1.0L - a.lambda) * u;          /* [RHS] (3.8), (4.1) */
-        swr_close(c, "C_i", out[i], ref, 1e-12, 0);
+        /* below DBL_MIN the doubles are spaced DBL_TRUE_MIN apart: each of the
+         * at most ~8 roundings of (3.6)-(3.8), (4.1) then costs up to
+         * DBL_TRUE_MIN/2 absolute (no cancellation: all terms >= 0), so allow
+         * 4 DBL_TRUE_MIN absolute besides 1e-12 relative (the floor is the
+         * |ref| below which the absolute bound is the larger one) */
+        swr_close(c, "C_i", out[i], ref, 1e-12, 4.0 * DBL_TRUE_MIN / 1e-12);
     }
 }
 static void e_split_uniform(swr_ctx* c) {
