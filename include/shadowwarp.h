@@ -534,7 +534,9 @@ typedef struct swarp_error_config {
 SWARP_API swarp_status swarp_error_mx(const swarp_error_config* cfg, double z, double n_prime,
                                       double* out_mx);
 /** @brief m_z(z, n') [RHS] (2.4); n' = n gives (2.6); n' = +INFINITY gives
- *  (2.8).  Parameters and statuses as swarp_error_mx. */
+ *  (2.8).  Parameters and statuses as swarp_error_mx (both are evaluated
+ *  without intermediate under/overflow; a true value below DBL_TRUE_MIN/2,
+ *  e.g. with res_ix or res_iy near DBL_TRUE_MIN, is returned as 0). */
 SWARP_API swarp_status swarp_error_mz(const swarp_error_config* cfg, double z, double n_prime,
                                       double* out_mz);
 /** @brief Exact maxima of m_x and m_z over [near, far].  m_x ∝ 1 + a/z is

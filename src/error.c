@@ -55,36 +55,75 @@ static swarp_status sw_nprime(double n_prime) {
 
 /* ---- evaluation (no checks) -------------------------------------------- */
 
-/* m_x over the range [n, f]; 0 on overflow. */
-static int sw_mx(const swarp_error_config* c, double n, double f, double z, double n_prime,
-                 double* out) {
-    double k_x = c->res_ix / c->res_s;
-    double v;
-    if (isinf(n_prime))
-        v = k_x * (f / z); /* [RHS] (2.7) */
-    else                   /* [RHS] (2.3); n' = n gives [RHS] (2.5) */
-        v = k_x * (f / z) * ((n_prime + (z - n)) / (n_prime + (f - n)));
+/* A product of factors kept as mantissa * 2^e: every factor is split by
+ * frexp, so no intermediate overflows or underflows (a tiny resolution such
+ * as res_iy = 1e-320 against (f - n) ~ 1e8 would otherwise underflow to 0
+ * a value that is representable); one ldexp at the end rounds once. */
+typedef struct sw_scaled {
+    double m;
+    long e;
+} sw_scaled;
+static void sw_sc_mul(sw_scaled* x, double f, int divide) {
+    int kf, km;
+    double fm = frexp(f, &kf);
+    double m = frexp(divide ? x->m / fm : x->m * fm, &km);
+    x->m = m;
+    x->e += (divide ? -(long)kf : (long)kf) + km;
+}
+/* the value, or 0 when not finite (overflow) */
+static int sw_sc_value(const sw_scaled* x, double* out) {
+    long e = x->e;
+    if (e > 4096) e = 4096; /* ldexp saturates to Inf / 0 anyway */
+    if (e < -4096) e = -4096;
+    double v = ldexp(x->m, (int)e);
     if (!sw_finite(v)) return 0;
     *out = v;
     return 1;
 }
 
+/* m_x over the range [n, f]; 0 on overflow. */
+static int sw_mx(const swarp_error_config* c, double n, double f, double z, double n_prime,
+                 double* out) {
+    sw_scaled v = {1.0, 0};
+    sw_sc_mul(&v, c->res_ix, 0); /* k_x = res_ix/res_s */
+    sw_sc_mul(&v, c->res_s, 1);
+    sw_sc_mul(&v, f, 0);
+    sw_sc_mul(&v, z, 1);
+    if (!isinf(n_prime)) { /* [RHS] (2.3); n' = n gives [RHS] (2.5); else (2.7) */
+        double num = n_prime + (z - n), den = n_prime + (f - n);
+        if (!sw_finite(den)) { /* n' near DBL_MAX: the same ratio, scaled by 1/4 */
+            num = 0.25 * n_prime + 0.25 * (z - n);
+            den = 0.25 * n_prime + 0.25 * (f - n);
+        }
+        sw_sc_mul(&v, num, 0);
+        sw_sc_mul(&v, den, 1);
+    }
+    return sw_sc_value(&v, out);
+}
+
 /* m_z over the range [n, f]; 0 on overflow. */
 static int sw_mz(const swarp_error_config* c, double n, double f, double z, double n_prime,
                  double* out) {
-    double k_z = (c->res_iy / c->res_t) * (f - n) / (2.0 * tan(c->theta));
-    double v;
-    if (isinf(n_prime)) {
-        v = k_z / z; /* [RHS] (2.8) */
-    } else {         /* [RHS] (2.4) as k_z * r1 * r2 / z; n' = n gives [RHS] (2.6) */
-        double a = n_prime + (z - n);
-        double r1 = a / n_prime;
-        double r2 = a / (n_prime + (f - n));
-        v = k_z * r1 * (r2 / z);
+    /* k_z = res_iy/res_t (f - n)/(2 tan Theta) */
+    sw_scaled v = {1.0, 0};
+    sw_sc_mul(&v, c->res_iy, 0);
+    sw_sc_mul(&v, c->res_t, 1);
+    sw_sc_mul(&v, f - n, 0);
+    sw_sc_mul(&v, 2.0 * tan(c->theta), 1);
+    sw_sc_mul(&v, z, 1); /* [RHS] (2.8): k_z / z */
+    if (!isinf(n_prime)) { /* [RHS] (2.4) as k_z * r1 * r2 / z; n' = n gives [RHS] (2.6) */
+        double a = n_prime + (z - n), b = n_prime + (f - n), np = n_prime;
+        if (!sw_finite(b)) { /* n' near DBL_MAX: the same ratios, scaled by 1/4 */
+            a = 0.25 * n_prime + 0.25 * (z - n);
+            b = 0.25 * n_prime + 0.25 * (f - n);
+            np = 0.25 * n_prime;
+        }
+        sw_sc_mul(&v, a, 0); /* r1 = a/n' */
+        sw_sc_mul(&v, np, 1);
+        sw_sc_mul(&v, a, 0); /* r2 = a/(n' + f - n) */
+        sw_sc_mul(&v, b, 1);
     }
-    if (!sw_finite(v)) return 0;
-    *out = v;
-    return 1;
+    return sw_sc_value(&v, out);
 }
 
 /* ---- single range --------------------------------------------------------- */

@@ -418,6 +418,35 @@ START_TEST(split_schemes_huge_ratio) {
 }
 END_TEST
 
+/* res_iy/res_t below DBL_TRUE_MIN/2 while m_z itself is representable
+ * (~1e-317): the product is kept as mantissa * 2^e (was 0 with SWARP_OK). */
+START_TEST(error_tiny_resolution_no_spurious_underflow) {
+    swarp_error_config cfg;
+    memset(&cfg, 0, sizeof cfg);
+    cfg.near = 10.0;
+    cfg.far = 1e8 + 10.0;
+    cfg.theta = 0.5;
+    cfg.res_ix = 1e-320;
+    cfg.res_iy = 1e-320;
+    cfg.res_s = 1e4;
+    cfg.res_t = 1e4;
+    double mz = -1, mx = -1;
+    ck_assert_int_eq(swarp_error_mz(&cfg, cfg.far, cfg.near, &mz), SWARP_OK);
+    /* (2.6) at z = f, n' = n: k_z (n' + f - n)^2/(f n' (n' + f - n)) = k_z / n */
+    long double kz = (long double)cfg.res_iy / 1e4L * ((long double)cfg.far - 10.0L) / (2.0L * tanl(0.5L));
+    long double ref = kz / 10.0L;
+    ck_assert(mz > 0 && fabsl(mz - ref) <= 1e-12L * ref + DBL_TRUE_MIN);
+    /* (2.5) at z = n: res_ix/res_s f/n (n + 0)/(n + f - n) = res_ix/res_s ~ 5e-324 -> rounds to
+     * DBL_TRUE_MIN; with res_s = 1e4 (1e-324 < DBL_TRUE_MIN/2) it is 0 */
+    cfg.res_s = 2e3;
+    ck_assert_int_eq(swarp_error_mx(&cfg, cfg.near, cfg.near, &mx), SWARP_OK);
+    ck_assert(mx == DBL_TRUE_MIN);
+    cfg.res_s = 1e4;
+    ck_assert_int_eq(swarp_error_mx(&cfg, cfg.near, cfg.near, &mx), SWARP_OK);
+    ck_assert(mx == 0.0);
+}
+END_TEST
+
 int main(void) {
     Suite* s = suite_create("edges_core");
     TCase* t = tcase_create("mat4_invert");
@@ -434,6 +463,7 @@ int main(void) {
     tcase_add_test(t, gmnpr_lambdas_extreme_depths);
     tcase_add_test(t, glpr_lambda_below_true_min);
     tcase_add_test(t, split_schemes_huge_ratio);
+    tcase_add_test(t, error_tiny_resolution_no_spurious_underflow);
     suite_add_tcase(s, t);
     return tu_run_suite(s) ? 1 : 0;
 }

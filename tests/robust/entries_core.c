@@ -903,7 +903,19 @@ static void e_error_curve(swr_ctx* c, err_fn fn, const char* what) {
     if (!swr_verdict(c, st, 1, (void*)&out, sizeof out)) return;
     swr_rec(c, what, out);
     SWR_CHECK(c, out >= 0, "%s = %g < 0", what, out);
-    SWR_CHECK_ACC(c, out > 0, "%s = 0 (underflow)", what);
+    {
+        /* [RHS] (2.3)/(2.4) in long double (no underflow there): a true value
+         * below DBL_TRUE_MIN/2 (e.g. res_ix = DBL_TRUE_MIN) rounds to 0, as
+         * documented; only a representable one must come back positive */
+        long double n = cfg.near, f = cfg.far, zz = z, npl = np, ref;
+        long double r = isinf(np) ? 1.0L : (npl + zz - n) / (npl + f - n);
+        if (what[2] == 'x')
+            ref = (long double)cfg.res_ix / cfg.res_s * (f / zz) * r;
+        else
+            ref = (long double)cfg.res_iy / cfg.res_t * (f - n) / (2.0L * tanl(cfg.theta)) / zz *
+                  (isinf(np) ? 1.0L : (npl + zz - n) / npl * r);
+        SWR_CHECK_ACC(c, out > 0 || ref < DBL_TRUE_MIN, "%s = 0 (underflow), reference %.6Lg", what, ref);
+    }
     /* the uniform limit (2.7)/(2.8) is the limit of (2.3)/(2.4) */
     if (np == INFINITY) {
         double big;
