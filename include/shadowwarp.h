@@ -1557,7 +1557,8 @@ SWARP_API swarp_status swarp_pcss_search_width(double w_light, double n_light, d
  *  (both distances from the light), in the units of w_light.
  *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
  *          SWARP_ERR_OUT_OF_RANGE (w_light < 0),
- *          SWARP_ERR_FILTER_BLOCKER (d_b <= 0 or d_b > d_r). */
+ *          SWARP_ERR_FILTER_BLOCKER (d_b <= 0 or d_b > d_r),
+ *          SWARP_ERR_OVERFLOW (the width exceeds DBL_MAX). */
 SWARP_API swarp_status swarp_pcss_penumbra(double d_r, double d_b, double w_light,
                                            double* out_w_penumbra);
 

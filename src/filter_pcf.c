@@ -88,8 +88,14 @@ SWARP_API swarp_status swarp_pcss_penumbra(double d_r, double d_b, double w_ligh
     if (!sw_finite(d_r) || !sw_finite(d_b) || !sw_finite(w_light)) return SWARP_ERR_NON_FINITE;
     if (w_light < 0.0) return SWARP_ERR_OUT_OF_RANGE;
     if (!(d_b > 0.0) || d_b > d_r) return SWARP_ERR_FILTER_BLOCKER;
-    double w = (d_r - d_b) * w_light / d_b;
-    if (!sw_finite(w)) return SWARP_ERR_NON_FINITE;
+    /* w_light (d_r - d_b)/d_b on mantissas and exponents separately: no
+     * intermediate overflow (d_b tiny) or underflow (w_light subnormal, where
+     * (d_r - d_b) w_light rounded to a few bits before the division); one
+     * final rounding in ldexp */
+    int e_w, e_d, e_b;
+    double m_w = frexp(w_light, &e_w), m_d = frexp(d_r - d_b, &e_d), m_b = frexp(d_b, &e_b);
+    double w = ldexp(m_w * m_d / m_b, e_w + e_d - e_b);
+    if (!sw_finite(w)) return SWARP_ERR_OVERFLOW; /* the width itself exceeds DBL_MAX */
     *out_w_penumbra = w;
     return SWARP_OK;
 }

@@ -77,11 +77,29 @@ START_TEST(lloyd_gap_far_from_origin) {
 }
 END_TEST
 
+/* PCSS penumbra w_light (d_r - d_b)/d_b without intermediate overflow or
+ * underflow (was NON_FINITE for a representable width, and 100 instead of
+ * 129 DBL_TRUE_MIN for a subnormal w_light); an unrepresentable width is
+ * SWARP_ERR_OVERFLOW with the output untouched. */
+START_TEST(pcss_penumbra_extreme_scales) {
+    double w = -1;
+    ck_assert_int_eq(swarp_pcss_penumbra(12.0, 8.0, DBL_MAX / 2, &w), SWARP_OK); /* 4 (DBL_MAX/2)/8 */
+    ck_assert(w == DBL_MAX / 4);
+    ck_assert_int_eq(swarp_pcss_penumbra(1.296, 0.01, DBL_TRUE_MIN, &w), SWARP_OK);
+    long double ref = (1.296L - 0.01L) / 0.01L; /* in units of DBL_TRUE_MIN: 128.6 */
+    ck_assert(fabsl(w / DBL_TRUE_MIN - ref) <= 1.0L);
+    w = 7.25;
+    ck_assert_int_eq(swarp_pcss_penumbra(1.88, 0.015, DBL_MAX, &w), SWARP_ERR_OVERFLOW);
+    ck_assert(w == 7.25);
+}
+END_TEST
+
 int main(void) {
     Suite* s = suite_create("edges_filter");
     TCase* t = tcase_create("findings");
     tcase_add_test(t, evsm_overflow_is_exponent_error);
     tcase_add_test(t, lloyd_gap_far_from_origin);
+    tcase_add_test(t, pcss_penumbra_extreme_scales);
     suite_add_tcase(s, t);
     return tu_run_suite(s) ? 1 : 0;
 }

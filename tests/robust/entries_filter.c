@@ -677,8 +677,9 @@ static void e_pcss(swr_ctx* c, int which) {
     if (which == 1) { /* penumbra(d_r = d, d_b = b, w_light = a) */
         if (fin_all && a < 0) swr_expect(c, SWARP_ERR_OUT_OF_RANGE);
         if (fin_all && (!(b > 0) || b > d)) swr_expect(c, SWARP_ERR_FILTER_BLOCKER);
-        st = SWR_CALL(c, swarp_pcss_penumbra(d, b, a, nul ? NULL : &o));
         ref = ((long double)d - b) * a / b;
+        if (fin_all && fabsl(ref) > DBL_MAX) swr_expect(c, SWARP_ERR_OVERFLOW); /* documented */
+        st = SWR_CALL(c, swarp_pcss_penumbra(d, b, a, nul ? NULL : &o));
     } else { /* search / filter width (w = a, n_light = b, d_r = d) */
         if (fin_all && !(b > 0 && b <= d)) swr_expect(c, SWARP_ERR_OUT_OF_RANGE);
         swr_allow(c, SWARP_ERR_OUT_OF_RANGE); /* w < 0: not documented either way */
@@ -692,7 +693,11 @@ static void e_pcss(swr_ctx* c, int which) {
     }
     if (!swr_verdict(c, st, 1, (void*)&o, sizeof o)) return;
     swr_rec(c, "width", o);
-    swr_close(c, "PCSS width [RHS] 3.6", o, ref, 8 * EPS, fabs(a) * (fabs(d) + fabs(b)) / fmin(fabs(b), fabs(d)) + DBL_MIN);
+    /* the terms' magnitude in long double: |d| + |b| overflowed double at
+     * d = b = DBL_MAX and 0 * Inf made the floor NaN */
+    long double terms = fabsl((long double)a) * (fabsl((long double)d) + fabsl((long double)b)) /
+                        fminl(fabsl((long double)b), fabsl((long double)d));
+    swr_close(c, "PCSS width [RHS] 3.6", o, ref, 8 * EPS, (double)fminl(terms, DBL_MAX) + DBL_MIN);
 }
 static void e_pcss_search_width(swr_ctx* c) {
     SKIP_IF_MISSING(c, swarp_pcss_search_width);
