@@ -1515,8 +1515,10 @@ SWARP_API swarp_status swarp_msm_bias(const double b[4], double alpha, double ou
  *  the degenerate branch a receiver within ~1e-7 (relative) of a recovered
  *  depth counts as at it, hence lit (recovered depths carry rounding).
  *  @return SWARP_OK, SWARP_INFO_FILTER_MSM_DEGENERATE, SWARP_ERR_NULL_POINTER,
- *          SWARP_ERR_NON_FINITE (also when products of the moments overflow,
- *          |b| > ~1e150, or the recovered depths do), SWARP_ERR_OUT_OF_RANGE
+ *          SWARP_ERR_NON_FINITE (a NaN/Inf input, or recovered depths that
+ *          overflow; moments and z_f of any magnitude are first rescaled by a
+ *          power of two, the bound being invariant under depth scaling),
+ *          SWARP_ERR_OUT_OF_RANGE
  *          (b_2 < 0 or b_4 < 0: not moments of any distribution). */
 SWARP_API swarp_status swarp_msm_visibility(const double b[4], double z_f,
                                             double* out_visibility);

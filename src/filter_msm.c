@@ -59,9 +59,28 @@ SWARP_API swarp_status swarp_msm_visibility(const double b[4], double z_f,
         if (!sw_finite(b[i])) return SWARP_ERR_NON_FINITE;
     if (!sw_finite(z_f)) return SWARP_ERR_NON_FINITE;
     if (b[1] < 0.0 || b[3] < 0.0) return SWARP_ERR_OUT_OF_RANGE;
-    const double b1 = b[0], b2 = b[1], b3 = b[2], b4 = b[3];
-    /* Squares and products of the moments must stay finite (|b| < ~1e150);
-     * moments of depths in [0, 1] are in [0, 1]. */
+    /* The bound is invariant under depth scaling z -> 2^-k z (b_i -> 2^-ik
+     * b_i, z_f -> 2^-k z_f; the thresholds below are relative).  A depth
+     * scale 2^k beyond 2^100 (z_f = 1e300, or b_2 = 1e300) would overflow
+     * the squares and products: scale it to ~1 first, exactly (powers of
+     * two); moments that then underflow are negligible at that scale, which
+     * gives the right limit (e.g. z_f far behind every depth: 0). */
+    int k = ilogb(z_f);
+    for (int i = 0; i < 4; ++i) {
+        int ki = ilogb(b[i]) / (i + 1);
+        if (b[i] != 0.0 && ki > k) k = ki;
+    }
+    if (z_f == 0.0 && k == ilogb(0.0)) k = 0;
+    double b1 = b[0], b2 = b[1], b3 = b[2], b4 = b[3];
+    if (k > 100) {
+        b1 = ldexp(b1, -k);
+        b2 = ldexp(b2, -2 * k);
+        b3 = ldexp(b3, -3 * k);
+        b4 = ldexp(b4, -4 * k);
+        z_f = ldexp(z_f, -k);
+    }
+    /* Squares and products of the moments must stay finite (they do after
+     * the scaling: |b_i| <= 2^(i + 1) there). */
     if (!sw_finite(b1 * b1) || !sw_finite(b2 * b2) || !sw_finite(b1 * b2) ||
         !sw_finite(z_f * z_f))
         return SWARP_ERR_NON_FINITE;
@@ -83,9 +102,17 @@ SWARP_API swarp_status swarp_msm_visibility(const double b[4], double z_f,
         /* Two atoms: the roots of the degree-2 orthogonal polynomial
          * x^2 - L32 x + (L32 b1 - b2), weights from the first moment. */
         double q1 = -L32, q0 = L32 * b1 - b2;
-        double disc = q1 * q1 - 4.0 * q0;
-        if (disc < 0.0) disc = 0.0;
-        double s = sqrt(disc);
+        /* s = sqrt(q1^2 - 4 q0), as |q1| sqrt(1 - 4 q0/q1^2) once q1^2 could
+         * overflow (moments that are no distribution's, e.g. b_3 = 1e300
+         * with b_4 ~ 1e-5, give L32 ~ 1e300: the old form was Inf -> NaN) */
+        double s;
+        if (fabs(q1) > 1e100) {
+            double u = 1.0 - 4.0 * ((q0 / q1) / q1);
+            s = fabs(q1) * sqrt(u > 0.0 ? u : 0.0);
+        } else {
+            double disc = q1 * q1 - 4.0 * q0;
+            s = sqrt(disc > 0.0 ? disc : 0.0);
+        }
         double x[2] = {0.5 * (-q1 - s), 0.5 * (-q1 + s)};
         double w[2];
         if (x[1] - x[0] > 0.0) {

@@ -94,12 +94,42 @@ START_TEST(pcss_penumbra_extreme_scales) {
 }
 END_TEST
 
+/* MSM bound at extreme depth scales: z_f = +-1e300 against moments in
+ * [0, 1] (z_f^2 overflowed: NON_FINITE) gives the limits 0 / 1; moments that
+ * are no distribution's with b_3 = 1e300 (q1^2 overflowed in the two-atom
+ * branch) give a visibility in [0, 1]; scaling all depths by 2^200 changes
+ * nothing (the bound is scale-invariant and the scaling is exact). */
+START_TEST(msm_visibility_extreme_scales) {
+    const double z[2] = {0.2, 0.7}, w[2] = {0.4, 0.6};
+    double b[4] = {0, 0, 0, 0}, bs[4];
+    for (int j = 0; j < 2; ++j)
+        for (int i = 0, p = 1; i < 4; ++i, ++p) b[i] += w[j] * pow(z[j], p);
+    double v = -1;
+    ck_assert(!swarp_status_is_error(swarp_msm_visibility(b, 1e300, &v)));
+    ck_assert(v == 0.0);
+    ck_assert(!swarp_status_is_error(swarp_msm_visibility(b, -1e300, &v)));
+    ck_assert(v == 1.0);
+    for (int i = 0; i < 4; ++i) bs[i] = ldexp(b[i], 200 * (i + 1));
+    for (double zf = 0.1; zf < 1.0; zf += 0.2) {
+        double v1 = -1, v2 = -2;
+        swarp_status s1 = swarp_msm_visibility(b, zf, &v1), s2 = swarp_msm_visibility(bs, ldexp(zf, 200), &v2);
+        ck_assert_int_eq(s1, s2);
+        ck_assert(v1 == v2);
+    }
+    double bad[4] = {0.042471952366984977, 0.0036077334757268816, 1e300, 2.6031481663760731e-05};
+    v = -1;
+    ck_assert(!swarp_status_is_error(swarp_msm_visibility(bad, 0.8457120933991441, &v)));
+    ck_assert(v >= 0.0 && v <= 1.0);
+}
+END_TEST
+
 int main(void) {
     Suite* s = suite_create("edges_filter");
     TCase* t = tcase_create("findings");
     tcase_add_test(t, evsm_overflow_is_exponent_error);
     tcase_add_test(t, lloyd_gap_far_from_origin);
     tcase_add_test(t, pcss_penumbra_extreme_scales);
+    tcase_add_test(t, msm_visibility_extreme_scales);
     suite_add_tcase(s, t);
     return tu_run_suite(s) ? 1 : 0;
 }
