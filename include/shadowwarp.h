@@ -1688,7 +1688,9 @@ typedef struct swarp_stabilize_report {
  *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
  *          SWARP_ERR_NEAR_FAR, SWARP_ERR_FOV, SWARP_ERR_ZERO_VECTOR,
  *          SWARP_ERR_OUT_OF_RANGE (aspect <= 0), SWARP_ERR_DEGENERATE (up
- *          parallel to dir), SWARP_ERR_RESERVED_NONZERO. */
+ *          parallel to dir), SWARP_ERR_RESERVED_NONZERO, SWARP_ERR_OVERFLOW
+ *          (the sphere's radius or centre exceeds DBL_MAX, e.g. f tan(fovy/2)
+ *          aspect > DBL_MAX). */
 SWARP_API swarp_status swarp_stabilize_sphere(const swarp_camera* cam, double n_i, double f_i,
                                               swarp_vec3* out_center, double* out_radius,
                                               double* out_centroid_radius);

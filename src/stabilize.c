@@ -18,15 +18,25 @@ _Static_assert(sizeof(swarp_stabilize_report) == 10 * sizeof(double) + 8 + 16,
  * circle alone decides and the centre sits at f. */
 static void sw_min_sphere(const sw_cam_frame* fr, double n, double f, swarp_vec3* c,
                           double* r, double* r_centroid) {
-    const double k2 = fr->tan_half * fr->tan_half * (1.0 + fr->aspect * fr->aspect);
-    const double k = sqrt(k2);
-    double z0 = 0.5 * (n + f) * (1.0 + k2);
-    if (z0 > f) z0 = f;
+    /* k = tan_half sqrt(1 + aspect^2) and f k as hypots: aspect ~ 1e167 or
+     * DBL_MAX overflowed k^2 although the sphere (radius ~ f k) is
+     * representable for a small enough f.  For k >= 1, (n + f)(1 + k^2)/2 >= f:
+     * the clamp below applies without forming k^2. */
+    const double t = fr->tan_half, a = fr->aspect;
+    const double k = hypot(t, t * a);
+    const double fk = hypot(f * t, (f * t) * a);
+    /* z0 = (n + f)(1 + k^2)/2 clamped to f, through its distance to the far
+     * plane f - z0 = (f - n)/2 - (n + f) k^2/2, formed from f - n (exact for
+     * n, f within a factor 2): with n, f one ulp apart the rounded z0 equals
+     * f and gave a radius 0 */
+    double d_far = k < 1.0 ? 0.5 * (f - n) - 0.5 * (n + f) * (k * k) : 0.0;
+    if (!(d_far > 0.0)) d_far = 0.0;
+    double z0 = f - d_far;
     *c = sw_add(fr->eye, sw_scale(fr->f, z0));
-    *r = hypot(f - z0, f * k);
+    *r = hypot(d_far, fk);
     /* Centroid of the 8 corners is on the axis at (n + f)/2; the far
      * corners are the farther ones. */
-    if (r_centroid) *r_centroid = hypot(0.5 * (f - n), f * k);
+    if (r_centroid) *r_centroid = hypot(0.5 * (f - n), fk);
 }
 
 /* The camera's frame, then the split range [n, f] checked (in that order). */
@@ -49,7 +59,9 @@ SWARP_API swarp_status swarp_stabilize_sphere(const swarp_camera* cam, double n_
     swarp_vec3 c;
     double r, rc;
     sw_min_sphere(&fr, n_i, f_i, &c, &r, &rc);
-    if (!sw_finite3(&c) || !sw_finite(r) || !sw_finite(rc)) return SWARP_ERR_NON_FINITE;
+    /* finite inputs, sphere beyond DBL_MAX (f tan(fovy/2) aspect, or eye +
+     * f dir, too large): not representable */
+    if (!sw_finite3(&c) || !sw_finite(r) || !sw_finite(rc)) return SWARP_ERR_OVERFLOW;
     *out_center = c;
     *out_radius = r;
     if (out_centroid_radius) *out_centroid_radius = rc;

@@ -495,7 +495,8 @@ START_TEST(stabilize_snap_and_sphere_edges) {
     ck_assert_int_eq(swarp_stabilize_sphere(&cam, 1, 10, &c, NULL, NULL), SWARP_ERR_NULL_POINTER);
     swarp_camera wide = cam; /* k = tan(1.25) sqrt(1 + aspect^2) > 5: f k overflows */
     wide.fovy = 2.5;
-    ck_assert_int_eq(swarp_stabilize_sphere(&wide, 1, DBL_MAX, &c, &r, NULL), SWARP_ERR_NON_FINITE);
+    /* finite inputs, unrepresentable sphere: the documented OVERFLOW */
+    ck_assert_int_eq(swarp_stabilize_sphere(&wide, 1, DBL_MAX, &c, &r, NULL), SWARP_ERR_OVERFLOW);
     ck_assert(tu_untouched(&c.x, 3, SENTINEL) && tu_untouched(&r, 1, SENTINEL));
     /* light view: zero and NaN directions, and a vertical light */
     swarp_mat4 v;
@@ -651,6 +652,27 @@ START_TEST(cascade_select_blend_curve_edges) {
 }
 END_TEST
 
+/* The bounding sphere where k^2 = tan^2(fovy/2)(1 + aspect^2) overflows
+ * (aspect 1e167) but the sphere is representable (was NON_FINITE), and n, f
+ * one ulp apart with a vanishing fovy (the rounded centre landed on f: radius
+ * 0; the true radius is (f - n)/2). */
+START_TEST(stabilize_sphere_extreme_aspect_and_thin_range) {
+    swarp_camera cam = camera();
+    cam.aspect = 1e167;
+    swarp_vec3 c;
+    double r = -1, rc = -1;
+    ck_assert_int_eq(swarp_stabilize_sphere(&cam, 4.0, 3e7, &c, &r, &rc), SWARP_OK);
+    long double t = tanl(cam.fovy / 2.0L), ref = 3e7L * t * sqrtl(1.0L + 1e334L);
+    ck_assert(fabsl(r - ref) <= 1e-12L * ref);
+    ck_assert(rc >= r);
+    cam = camera();
+    cam.fovy = DBL_TRUE_MIN;
+    double n = 0.36532155520849535, f = nextafter(n, 1.0);
+    ck_assert_int_eq(swarp_stabilize_sphere(&cam, n, f, &c, &r, NULL), SWARP_OK);
+    ck_assert(r == 0.5 * (f - n));
+}
+END_TEST
+
 int main(void) {
     Suite* s = suite_create("edges_splits");
     TCase* t = tcase_create("bias");
@@ -660,6 +682,7 @@ int main(void) {
     t = tcase_create("stabilize");
     tcase_add_test(t, stabilize_directional_edges);
     tcase_add_test(t, stabilize_snap_and_sphere_edges);
+    tcase_add_test(t, stabilize_sphere_extreme_aspect_and_thin_range);
     tcase_add_test(t, cascade_select_blend_curve_edges);
     suite_add_tcase(s, t);
     return tu_run_suite(s) ? 1 : 0;

@@ -179,6 +179,14 @@ static void e_stabilize_sphere(swr_ctx* c) {
     swr_fill(&ctr, sizeof ctr);
     swr_fill(&rad, sizeof rad);
     swr_fill(&crad, sizeof crad);
+    swr_args(c, "eye (%g %g %g) dir (%g %g %g) fovy %.17g aspect %.17g n %.17g f %.17g", cam.eye.x, cam.eye.y,
+             cam.eye.z, cam.dir.x, cam.dir.y, cam.dir.z, cam.fovy, cam.aspect, n, f);
+    {   /* documented OVERFLOW: radius ~ f tan(fovy/2) sqrt(1 + aspect^2), centre
+         * within |eye| + f + radius; a margin of 4 for the library's roundings */
+        long double t = tanl(cam.fovy / 2.0L), rr = (long double)f * t * sqrtl(1.0L + (long double)cam.aspect * cam.aspect);
+        long double far_pt = fabsl((long double)cam.eye.x) + fabsl((long double)cam.eye.y) + fabsl((long double)cam.eye.z) + f + rr;
+        if (swr_isfin(f) && swr_isfin(cam.aspect) && !(far_pt < DBL_MAX / 4.0L)) swr_allow(c, SWARP_ERR_OVERFLOW);
+    }
     swarp_status st = SWR_CALL(c, swarp_stabilize_sphere(n_c ? NULL : &cam, n, f, n_ctr ? NULL : &ctr, n_r ? NULL : &rad,
                                                         n_cr ? NULL : &crad));
     if (!swr_verdict(c, st, 3, (void*)&ctr, sizeof ctr, (void*)&rad, sizeof rad, (void*)&crad, sizeof crad)) return;
