@@ -173,9 +173,18 @@ static double sw_layer_vis(const double* layer_moments, const double* splits, ui
                            uint32_t i, double delta, double t, double min_variance) {
     double p, q;
     sw_layer_pq(splits, n_layers, i, delta, &p, &q);
-    double s = 1.0 / (q - p);
-    return sw_chebyshev(layer_moments[2 * i], layer_moments[2 * i + 1], sw_phi(t, p, q),
-                        min_variance * s * s);
+    /* The floor in warped units can overflow (min_variance 1e304, or a layer
+     * ~1e-300 wide: s^2 = Inf) and Inf/Inf gave NaN.  Warped depths lie in
+     * [0, 1], so with d^2 <= 1 a floor >= 2^60 already yields
+     * floor/(floor + d^2) = 1 after rounding: capping it there changes no
+     * result for moments of warped depths and keeps the bound finite. */
+    double floor_w = 0.0;
+    if (min_variance > 0.0) {
+        double s = 1.0 / (q - p);
+        floor_w = (min_variance * s) * s;
+        if (!(floor_w <= 0x1p60)) floor_w = 0x1p60;
+    }
+    return sw_chebyshev(layer_moments[2 * i], layer_moments[2 * i + 1], sw_phi(t, p, q), floor_w);
 }
 
 SWARP_API swarp_status swarp_lvsm_visibility(const double* layer_moments, const double* splits,

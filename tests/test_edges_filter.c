@@ -123,6 +123,26 @@ START_TEST(msm_visibility_extreme_scales) {
 }
 END_TEST
 
+/* LVSM: a variance floor that overflows in warped units (min_variance near
+ * DBL_MAX, or a layer 1e-300 wide) made the Chebyshev bound Inf/Inf = NaN ->
+ * NON_FINITE; the bound's limit is 1 (a huge variance hides nothing). */
+START_TEST(lvsm_visibility_huge_variance_floor) {
+    const double splits[3] = {0.0, 1.0, 2.0};
+    const double mom[4] = {0.2, 0.05, 0.7, 0.5};
+    double v = -1;
+    ck_assert(!swarp_status_is_error(swarp_lvsm_visibility(mom, splits, 2, 0.1, 0.0, 0.5, DBL_MAX, &v)));
+    ck_assert(v == 1.0);
+    const double tiny[3] = {0.0, 1e-300, 2e-300};
+    v = -1;
+    ck_assert(!swarp_status_is_error(swarp_lvsm_visibility(mom, tiny, 2, 1e-301, 0.0, 0.5e-300, 1e-6, &v)));
+    ck_assert(v == 1.0);
+    /* an ordinary floor still bounds: well behind the mean, small variance */
+    v = -1;
+    ck_assert(!swarp_status_is_error(swarp_lvsm_visibility(mom, splits, 2, 0.1, 0.0, 0.95, 1e-6, &v)));
+    ck_assert(v > 0.0 && v < 1.0);
+}
+END_TEST
+
 int main(void) {
     Suite* s = suite_create("edges_filter");
     TCase* t = tcase_create("findings");
@@ -130,6 +150,7 @@ int main(void) {
     tcase_add_test(t, lloyd_gap_far_from_origin);
     tcase_add_test(t, pcss_penumbra_extreme_scales);
     tcase_add_test(t, msm_visibility_extreme_scales);
+    tcase_add_test(t, lvsm_visibility_huge_variance_floor);
     suite_add_tcase(s, t);
     return tu_run_suite(s) ? 1 : 0;
 }

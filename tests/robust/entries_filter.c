@@ -333,6 +333,8 @@ static void e_lvsm_visibility(swr_ctx* c) {
     if (swr_isfin(mv) && mv < 0) swr_expect(c, SWARP_ERR_OUT_OF_RANGE);
     if (fabs(band - delta) <= 4 * EPS * th || fabs(band - th / 2) <= 4 * EPS * th || fabs(delta - th) <= 4 * EPS * th)
         c->rounding_edge = 1; /* on a documented bound the library computes */
+    swr_args(c, "n %u s_0 %.17g s_k %.17g delta %.17g band %.17g t %.17g min_var %.17g m_0 %.17g %.17g", n, s[0], s[k],
+             delta, band, t, mv, mom[0], mom[1]);
     double v;
     swr_fill(&v, sizeof v);
     swarp_status st = SWR_CALL(c, swarp_lvsm_visibility(n_m ? NULL : mom, n_s ? NULL : s, n, delta, band, t, mv, n_o ? NULL : &v));
