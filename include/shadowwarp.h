@@ -1634,7 +1634,8 @@ SWARP_API swarp_status swarp_atlas_lsc(uint32_t m, double* out_l_sc);
  *  @param min_x, max_x, min_y, max_y  max > min
  *  @param[out] out_s  s_i (x, y)
  *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
- *          SWARP_ERR_OUT_OF_RANGE (r_l < 0, max <= min), SWARP_ERR_ATLAS_SPLITS. */
+ *          SWARP_ERR_OUT_OF_RANGE (r_l < 0, max <= min), SWARP_ERR_ATLAS_SPLITS,
+ *          SWARP_ERR_OVERFLOW (a scale beyond DBL_MAX: width ~ r_l/DBL_MAX). */
 SWARP_API swarp_status swarp_atlas_kernel_scale(double r_l, uint32_t m, double min_x,
                                                 double max_x, double min_y, double max_y,
                                                 double out_s[2]);

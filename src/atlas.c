@@ -79,6 +79,21 @@ SWARP_API swarp_status swarp_atlas_layout(uint32_t m, uint32_t tile_res, swarp_d
     return SWARP_OK;
 }
 
+/* num * 2/(hi - lo) without spurious overflow: the width of two finite
+ * coordinates can exceed DBL_MAX (then num/(hi/2 - lo/2), halves exact for
+ * such magnitudes), and 2/width can overflow for a subnormal width while
+ * num * 2/width does not: divide mantissas, add exponents, round once. */
+static double sw_kernel_axis(double num, double lo, double hi) {
+    double w = hi - lo;
+    int e_n, e_w, extra = 1;
+    if (!sw_finite(w)) {
+        w = 0.5 * hi - 0.5 * lo;
+        extra = 0;
+    }
+    double m_n = frexp(num, &e_n), m_w = frexp(w, &e_w);
+    return ldexp(m_n / m_w, e_n - e_w + extra);
+}
+
 SWARP_API swarp_status swarp_atlas_kernel_scale(double r_l, uint32_t m, double min_x,
                                                 double max_x, double min_y, double max_y,
                                                 double out_s[2]) {
@@ -88,13 +103,12 @@ SWARP_API swarp_status swarp_atlas_kernel_scale(double r_l, uint32_t m, double m
         return SWARP_ERR_NON_FINITE;
     if (m < 1 || m > SWARP_ATLAS_MAX_SPLITS) return SWARP_ERR_ATLAS_SPLITS;
     if (r_l < 0.0 || !(max_x > min_x) || !(max_y > min_y)) return SWARP_ERR_OUT_OF_RANGE;
-    const double w_x = max_x - min_x, w_y = max_y - min_y;
-    if (!sw_finite(w_x) || !sw_finite(w_y)) return SWARP_ERR_NON_FINITE;
     const double l_sc = 1.0 / (double)sw_atlas_grid(m);
     /* [RHS] (3.9): s_i = r_l l_sc (2/(max_x - min_x), 2/(max_y - min_y)) */
-    double s_x = r_l * l_sc * (2.0 / w_x);
-    double s_y = r_l * l_sc * (2.0 / w_y);
-    if (!sw_finite(s_x) || !sw_finite(s_y)) return SWARP_ERR_NON_FINITE;
+    double s_x = sw_kernel_axis(r_l * l_sc, min_x, max_x);
+    double s_y = sw_kernel_axis(r_l * l_sc, min_y, max_y);
+    /* finite inputs, scale beyond DBL_MAX (a width near DBL_TRUE_MIN) */
+    if (!sw_finite(s_x) || !sw_finite(s_y)) return SWARP_ERR_OVERFLOW;
     out_s[0] = s_x;
     out_s[1] = s_y;
     return SWARP_OK;

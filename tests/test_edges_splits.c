@@ -673,6 +673,23 @@ START_TEST(stabilize_sphere_extreme_aspect_and_thin_range) {
 }
 END_TEST
 
+/* Atlas kernel scale r_l l_sc 2/(max - min) without spurious overflow: a
+ * width -DBL_MAX..DBL_MAX (difference overflows) and a subnormal width with a
+ * small r_l (2/width overflows) are representable (were NON_FINITE); a truly
+ * unrepresentable scale is the documented SWARP_ERR_OVERFLOW. */
+START_TEST(atlas_kernel_scale_extreme_widths) {
+    double s[2] = {-1, -1};
+    ck_assert_int_eq(swarp_atlas_kernel_scale(1.0, 1, -DBL_MAX, DBL_MAX, 0.0, 2.0, s), SWARP_OK);
+    ck_assert(s[0] == 1.0 / DBL_MAX && s[1] == 1.0);
+    ck_assert_int_eq(swarp_atlas_kernel_scale(1e-300, 1, 0.0, 1e-320, 0.0, 2.0, s), SWARP_OK);
+    long double ref = 1e-300L * 2.0L / (long double)1e-320;
+    ck_assert(fabsl(s[0] - ref) <= 1e-15L * ref && s[1] == 1e-300);
+    s[0] = s[1] = 7.25;
+    ck_assert_int_eq(swarp_atlas_kernel_scale(10.0, 1, 0.0, DBL_TRUE_MIN, 0.0, 2.0, s), SWARP_ERR_OVERFLOW);
+    ck_assert(s[0] == 7.25 && s[1] == 7.25);
+}
+END_TEST
+
 int main(void) {
     Suite* s = suite_create("edges_splits");
     TCase* t = tcase_create("bias");
@@ -683,6 +700,7 @@ int main(void) {
     tcase_add_test(t, stabilize_directional_edges);
     tcase_add_test(t, stabilize_snap_and_sphere_edges);
     tcase_add_test(t, stabilize_sphere_extreme_aspect_and_thin_range);
+    tcase_add_test(t, atlas_kernel_scale_extreme_widths);
     tcase_add_test(t, cascade_select_blend_curve_edges);
     suite_add_tcase(s, t);
     return tu_run_suite(s) ? 1 : 0;
