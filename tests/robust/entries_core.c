@@ -38,15 +38,6 @@ SWR_WEAK(swarp_split_pseudo)
 
 #define PI_ 3.14159265358979323846
 #define HALF_PI 1.57079632679489661923
-#define SKIP_IF_MISSING(c, f)     \
-    do {                          \
-        if (!(f)) {               \
-            (c)->skipped = 1;     \
-            return;               \
-        }                         \
-    } while (0)
-#define FIN(c, x) \
-    do { if (!swr_isfin(x)) swr_expect((c), SWARP_ERR_NON_FINITE); } while (0)
 
 /* ------------------------------------------------------------------------ */
 /* status, version                                                           */

@@ -37,15 +37,6 @@ SWR_WEAK(swarp_pcss_search_width)
 SWR_WEAK(swarp_pcss_penumbra)
 SWR_WEAK(swarp_pcss_filter_width)
 
-#define SKIP_IF_MISSING(c, f) \
-    do {                      \
-        if (!(f)) {           \
-            (c)->skipped = 1; \
-            return;           \
-        }                     \
-    } while (0)
-#define FIN(c, x) \
-    do { if (!swr_isfin(x)) swr_expect((c), SWARP_ERR_NON_FINITE); } while (0)
 #define EPS DBL_EPSILON
 
 static const double brk01[] = {0.0, 1.0, 0.5};

@@ -25,15 +25,6 @@ SWR_WEAK(swarp_cascade_blend)
 SWR_WEAK(swarp_cascade_splits)
 SWR_WEAK(swarp_cascade_nopt)
 
-#define SKIP_IF_MISSING(c, f) \
-    do {                      \
-        if (!(f)) {           \
-            (c)->skipped = 1; \
-            return;           \
-        }                     \
-    } while (0)
-#define FIN(c, x) \
-    do { if (!swr_isfin(x)) swr_expect((c), SWARP_ERR_NON_FINITE); } while (0)
 
 static int fin3(const swarp_vec3* v) { return swr_isfin(v->x) && swr_isfin(v->y) && swr_isfin(v->z); }
 

@@ -48,9 +48,15 @@ typedef struct mode {
  * the rounding mode, and the planner's predictions built on the same
  * quantities move with it (swarp_plan_explain's text prints numbers in the
  * caller's rounding mode); differences of these entry points are counted and
- * printed, not failed, until that is fixed (SWARP_STRICT=1 fails them). */
+ * printed, not failed, until that is fixed (SWARP_STRICT=1 fails them).
+ * The same holds for the geometry steps behind swarp_setup that the sweep
+ * added later: swarp_setup_points and swarp_warp_lispsm (the warp parameter
+ * and status), swarp_body_from_h (which vertices the clips keep and merge)
+ * and swarp_poly_from_camera (a far corner moved by ~2e-9 relative under
+ * FE_UPWARD at far/near 5e6). */
 static const char* const known_sensitive[] = {"swarp_setup", "swarp_setup_range", "swarp_body_points", "swarp_plan",
-                                              "swarp_plan_evaluate", "swarp_plan_explain"};
+                                              "swarp_plan_evaluate", "swarp_plan_explain", "swarp_setup_points",
+                                              "swarp_warp_lispsm", "swarp_body_from_h", "swarp_poly_from_camera"};
 static int is_known(const char* name) {
     for (size_t i = 0; i < sizeof known_sensitive / sizeof known_sensitive[0]; ++i)
         if (strcmp(name, known_sensitive[i]) == 0) return 1;
@@ -60,7 +66,7 @@ static int is_known(const char* name) {
 /* counts a difference; 1 when it should be printed */
 static int note_fail(const char* name, int strict, unsigned long* fails, unsigned long* known) {
     if (!strict && is_known(name)) return (*known)++ < 3;
-    return (*fails)++ < 10;
+    return (*fails)++ < 10 || getenv("SWR_FENV_ALL");
 }
 
 int main(int argc, char** argv) {
