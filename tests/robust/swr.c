@@ -358,6 +358,12 @@ void swr_close(swr_ctx* c, const char* what, double got, long double ref, double
                      (long double)tol);
 }
 
+void swr_close_abs(swr_ctx* c, const char* what, double got, long double ref, double rel, double abs) {
+    long double err = fabsl((long double)got - ref);
+    if (!(err <= rel * fabsl(ref) + abs))
+        swr_fail_acc(c, "%s = %.17g, reference %.17Lg (error %.3Lg > %.3g relative + %.3g)", what, got, ref, err, rel, abs);
+}
+
 void swr_close_cond(swr_ctx* c, const char* what, double got, swr_ref_fn f, const double* args,
                     int nargs) {
     swr_close_cond_floor(c, what, got, f, args, nargs, 0.0);

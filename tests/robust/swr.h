@@ -244,6 +244,10 @@ void swr_rec_inf(swr_ctx* c, const char* what, double v);
 /* Relative comparison with a reference: |got - ref| <= tol * max(|ref|, floor) */
 void swr_close(swr_ctx* c, const char* what, double got, long double ref, double tol, double floor);
 
+/* |got - ref| <= rel |ref| + abs (a relative tolerance plus the absolute
+ * rounding of the inputs, e.g. eps times a coordinate offset) */
+void swr_close_abs(swr_ctx* c, const char* what, double got, long double ref, double rel, double abs);
+
 /* A reference function of up to 8 long double arguments, for
  * swr_close_cond: evaluated in long double from the paper's formula. */
 typedef long double (*swr_ref_fn)(const long double* a);
