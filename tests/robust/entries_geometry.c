@@ -1187,6 +1187,104 @@ static void e_setup_points(swr_ctx* c) {
     check_setup_result(c, &s, st, &r, pts, n, 1);
 }
 
+SWR_WEAK(swarp_cascade_setup)
+
+/* [RHS] §3.3-3.4: the cascade's one call.  Properties: split_count splits,
+ * C_0 = view_near < C_1 < ... < C_m = view_far, each split's [near, far] =
+ * [C_i, C_{i+1}], the configuration's maxima = the largest split maxima,
+ * finite matrices, tiles inside the atlas. */
+static void e_cascade_setup(swr_ctx* c) {
+    SKIP_IF_MISSING(c, swarp_cascade_setup);
+    scene_args s;
+    gen_setup_scene(c, &s);
+    swarp_cascade_options o;
+    memset(&o, 0, sizeof o);
+    if (s.use_opt) o.setup = s.opt;
+    o.split.count = swr_one_in(c, 16) ? 17 + swr_u8(c) % 4 : swr_u8(c) % 9;
+    o.split.scheme = (swarp_split_scheme)swr_enum(c, 5);
+    static const double brk01[] = {0.0, 1.0, 0.5};
+    o.split.lambda = swr_num(c, 0, 1, brk01, 3);
+    o.split.pseudo_near = swr_num_in(c, 0, 0.3, brk01, 1);
+    o.split.pseudo_far = swr_num_in(c, 0, 0.3, brk01, 1);
+    o.split._reserved[swr_u8(c) % 4] = swr_reserved(c);
+    if (swr_one_in(c, 4)) { /* stabilised: needs UNIFORM and a directional light */
+        o.stabilize.mode = (swarp_stabilize_mode)swr_enum(c, 4);
+        if (swr_one_in(c, 2)) o.setup.technique = SWARP_TECHNIQUE_UNIFORM;
+        o.stabilize.origin = v3(swr_offset(c), 0, swr_offset(c));
+    }
+    o.kernel_world_size = swr_one_in(c, 2) ? 0 : swr_num(c, 0, 10, brk01, 1);
+    for (int i = 0; i < 4; ++i) o.n_user[swr_u8(c) % SWARP_CASCADE_MAX_SPLITS] = swr_one_in(c, 2) ? 0 : swr_num(c, 0, 100, brk01, 1);
+    o.warp_per_split = (swarp_cascade_warp)swr_enum(c, 3);
+    o._reserved[swr_u8(c) % 3] = swr_reserved(c);
+    int use_o = !swr_one_in(c, 6);
+    uint32_t K = use_o && o.split.count ? o.split.count : 4;
+    size_t cap = swr_one_in(c, 10) ? swr_u8(c) % 8 : SWARP_CASCADE_MAX_SPLITS;
+    const swarp_camera* pc = swr_in(c, &s.cam);
+    const swarp_light* pl = swr_in(c, &s.light);
+    const swarp_aabb* pb = swr_in(c, &s.box);
+    swarp_cascade_result r;
+    swarp_cascade_split sp[SWARP_CASCADE_MAX_SPLITS];
+    size_t count;
+    swarp_cascade_result* pr = swr_out(c, &r, sizeof r, SWR_REQ);
+    swarp_cascade_split* psp = swr_out(c, sp, sizeof sp, cap ? SWR_REQ : SWR_OPT);
+    size_t* pcount = swr_out(c, &count, sizeof count, SWR_REQ);
+    s.opt = o.setup; /* what the call sees (technique may be UNIFORM now) */
+    s.use_opt = use_o;
+    expect_scene(c, &s, 1);
+    if (use_o) {
+        for (int i = 0; i < 3; ++i)
+            if (o._reserved[i]) swr_expect(c, SWARP_ERR_RESERVED_NONZERO);
+        for (int i = 0; i < 4; ++i)
+            if (o.split._reserved[i]) swr_expect(c, SWARP_ERR_RESERVED_NONZERO);
+        if ((int)o.warp_per_split < 0 || (int)o.warp_per_split > 2 || (int)o.split.scheme < 0 || (int)o.split.scheme > 4 ||
+            (int)o.stabilize.mode < 0 || (int)o.stabilize.mode > 3)
+            swr_expect(c, SWARP_ERR_UNKNOWN_ENUM);
+        if (o.split.count > SWARP_CASCADE_MAX_SPLITS) swr_expect(c, SWARP_ERR_SPLIT_COUNT);
+        if (!fin(o.kernel_world_size) || !fin(o.split.lambda)) swr_domain(c, SWARP_ERR_NON_FINITE);
+        static const swarp_status dom[] = {SWARP_ERR_OUT_OF_RANGE, SWARP_ERR_STABILIZE_WARPED, SWARP_ERR_STABILIZE_LIGHT,
+                                           SWARP_ERR_RESOLUTION};
+        for (size_t i = 0; i < sizeof dom / sizeof dom[0]; ++i) swr_domain(c, dom[i]);
+    }
+    if (K <= SWARP_CASCADE_MAX_SPLITS && cap < K) swr_expect(c, SWARP_ERR_CAPACITY);
+    if (!psp && cap == 0) swr_domain(c, SWARP_ERR_CAPACITY);
+    swr_domain(c, SWARP_ERR_SPLIT_EMPTY), swr_domain(c, SWARP_ERR_NEAR_FAR), swr_domain(c, SWARP_ERR_NON_FINITE);
+    scene_cond(c, &s, s.cam.near, s.cam.far);
+    swr_args(c, "K %u scheme %d stabilize %d warp_per_split %d technique %d param %d center %d depth %d", K, (int)o.split.scheme,
+             (int)o.stabilize.mode, (int)o.warp_per_split, (int)o.setup.technique, (int)o.setup.param, (int)o.setup.center,
+             (int)o.setup.depth_range);
+    swarp_status st = SWR_CALL(c, swarp_cascade_setup(pc, pl, pb, use_o ? &o : NULL, pr, psp, cap, pcount));
+    if (st == SWARP_ERR_CAPACITY) {
+        SWR_CHECK(c, count == K, "CAPACITY with count %zu, K %u", count, K);
+        swr_fill(&count, sizeof count);
+    }
+    if (!swr_done(c, st)) return;
+    SWR_CHECK(c, count == K && r.split_count == K, "count %zu, split_count %u, K %u", count, r.split_count, K);
+    if (count != K || K > SWARP_CASCADE_MAX_SPLITS) return;
+    swr_rec(c, "view_near", r.view_near), swr_rec(c, "view_far", r.view_far);
+    SWR_CHECK(c, r.splits[0] == r.view_near && r.splits[K] == r.view_far, "C_0 %.17g C_m %.17g, view [%.17g, %.17g]", r.splits[0],
+              r.splits[K], r.view_near, r.view_far);
+    double mx = 0, mz = 0;
+    for (uint32_t i = 0; i < K; ++i) {
+        const swarp_cascade_split* q = &sp[i];
+        SWR_CHECK(c, r.splits[i + 1] > r.splits[i], "splits not increasing at %u", i);
+        SWR_CHECK(c, q->near == r.splits[i] && q->far == r.splits[i + 1], "split %u [%g, %g], C [%g, %g]", i, q->near, q->far,
+                  r.splits[i], r.splits[i + 1]);
+        for (int e = 0; e < 16; ++e) swr_rec(c, "matrix", q->matrix.m[e]), swr_rec(c, "atlas_matrix", q->atlas_matrix.m[e]);
+        if (c->n_rec < SWR_MAX_REC) c->rec[c->n_rec++] = q->n_eye; /* +inf: a uniform split (documented per split) */
+        SWR_CHECK(c, q->n_eye > 0, "split %u n_eye %g", i, q->n_eye);
+        swr_rec(c, "max_mx", q->max_mx), swr_rec(c, "max_mz", q->max_mz);
+        SWR_CHECK(c, !swarp_status_is_error(q->status), "split %u status %s", i, swarp_status_name(q->status));
+        mx = fmax(mx, q->max_mx), mz = fmax(mz, q->max_mz);
+        double atlas = r.atlas.atlas_res;
+        SWR_CHECK(c, q->tile.viewport_x >= 0 && q->tile.viewport_y >= 0 && q->tile.viewport_x + q->tile.viewport_width <= atlas &&
+                         q->tile.viewport_y + q->tile.viewport_height <= atlas,
+                  "tile %u outside the atlas", i);
+    }
+    /* the configuration's maxima are the largest of the splits' */
+    SWR_CHECK(c, r.max_mx == mx && r.max_mz == mz, "max_mx %.17g max_mz %.17g, splits' %.17g %.17g", r.max_mx, r.max_mz, mx, mz);
+    if (K < SWARP_CASCADE_MAX_SPLITS) SWR_CHECK(c, swr_untouched(sp + K, sizeof sp - K * sizeof sp[0]), "wrote past count");
+}
+
 const swr_entry swr_entries_geometry[] = {
     {"swarp_setup", "geometry", e_setup},
     {"swarp_setup_range", "geometry", e_setup_range},
@@ -1205,5 +1303,6 @@ const swr_entry swr_entries_geometry[] = {
     {"swarp_focus_fit", "geometry", e_focus_fit},
     {"swarp_warp_lispsm", "geometry", e_warp_lispsm},
     {"swarp_setup_points", "geometry", e_setup_points},
+    {"swarp_cascade_setup", "splits", e_cascade_setup},
     {NULL, NULL, NULL},
 };
