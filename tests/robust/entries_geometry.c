@@ -623,10 +623,14 @@ static void e_poly_camera_common(swr_ctx* c, int range) {
     expect_parts(c, &s, !range, X_CAM);
     swr_domain(c, SWARP_ERR_DEGENERATE); /* up all but parallel to dir */
     scene_cond(c, &s, near, far);
+    swr_args(c, "eye (%.17g %.17g %.17g) dir (%.17g %.17g %.17g) up (%g %g %g) fovy %.17g aspect %.17g near %.17g far %.17g",
+             s.cam.eye.x, s.cam.eye.y, s.cam.eye.z, s.cam.dir.x, s.cam.dir.y, s.cam.dir.z, s.cam.up.x, s.cam.up.y, s.cam.up.z,
+             s.cam.fovy, s.cam.aspect, near, far);
     swarp_status st = range ? SWR_CALL(c, swarp_poly_from_camera_range(pc, near, far, po))
                             : SWR_CALL(c, swarp_poly_from_camera(pc, po));
     if (!swr_done(c, st)) return;
-    double tol = gtol(vmax(s.cam.eye) + far) + 64 * DBL_EPSILON * c->cond * near;
+    /* the frustum's own scale: a huge aspect (1e76 is valid) makes it wide */
+    double tol = gtol(fmax(vmax(s.cam.eye) + far, poly_scale(&P))) + 64 * DBL_EPSILON * c->cond * near;
     check_poly(c, &P, "V", tol);
     /* 8 corners; fewer where near-coincident ones merge (SWARP_POLY_EPS_REL) */
     SWR_CHECK(c, P.vertex_count >= 1 && P.vertex_count <= 8, "frustum with %u vertices", P.vertex_count);

@@ -10,6 +10,7 @@
  * per split, > 0 or +inf. */
 #include <float.h>
 #include <math.h>
+#include <stdio.h>
 #include <string.h>
 
 #include "swr.h"
@@ -597,11 +598,19 @@ static void gen_bias(swr_ctx* c, bias_args* b) {
     swr_args(c, "M cols (%.17g %.17g %.17g %.17g) (%.17g %.17g %.17g %.17g) (%.17g %.17g %.17g %.17g) (%.17g %.17g %.17g %.17g) res %g %g depth %d p (%.17g %.17g %.17g) light %d",
              M[0], M[1], M[2], M[3], M[4], M[5], M[6], M[7], M[8], M[9], M[10], M[11], M[12], M[13], M[14], M[15], b->map.res_s,
              b->map.res_t, (int)b->map.depth, b->p.x, b->p.y, b->p.z, (int)b->light.type);
+    {
+        size_t used = strlen(c->args);
+        snprintf(c->args + used, sizeof c->args - used, " normal (%.17g %.17g %.17g)", b->normal.x, b->normal.y, b->normal.z);
+    }
 }
 /* what the map and p call for; returns 1 when they are valid (references apply) */
 static int expect_map(swr_ctx* c, const bias_args* b) {
     const swarp_bias_map* m = &b->map;
     int ok = 1;
+    /* FINDING (docs/quality.md): a normal whose length overflows (components
+     * near DBL_MAX) is refused with SWARP_ERR_ZERO_VECTOR (sw_normalize
+     * takes the length before scaling) */
+    if (fin3(&b->normal) && vmax3(b->normal) > 1e300) swr_domain(c, SWARP_ERR_ZERO_VECTOR);
     for (int i = 0; i < 4; ++i)
         if (m->_reserved[i]) swr_expect(c, SWARP_ERR_RESERVED_NONZERO), ok = 0;
     if (m->_reserved0) swr_expect(c, SWARP_ERR_RESERVED_NONZERO), ok = 0;
@@ -834,12 +843,22 @@ static void e_bias_slope_scaled(swr_ctx* c) {
     if (pd) swr_rec(c, "depth bias", db);
     ld Ls, Lt;
     if (!ok || !ref_texel(c, &b.map, b.p, &Ls, &Lt)) return;
-    swarp_vec3 N = unit3(b.normal);
-    ld NL = (ld)N.x * L.x + (ld)N.y * L.y + (ld)N.z * L.z;
-    if (NL > 1) NL = 1;
-    ld tn = NL > 0 ? sqrtl(1 - NL * NL) / NL : 10;
+    /* tan from sin = |N x L| and cos = N.L of the raw vectors in long double
+     * (sqrt(1 - cos^2) of rounded unit vectors loses half the digits near N || L) */
+    const swarp_light* Lg = &b.light;
+    ld Lr[3], Nr[3] = {b.normal.x, b.normal.y, b.normal.z};
+    if (Lg->type == SWARP_LIGHT_POINT) Lr[0] = (ld)Lg->position.x - b.p.x, Lr[1] = (ld)Lg->position.y - b.p.y, Lr[2] = (ld)Lg->position.z - b.p.z;
+    else Lr[0] = -(ld)Lg->direction.x, Lr[1] = -(ld)Lg->direction.y, Lr[2] = -(ld)Lg->direction.z;
+    ld cr[3] = {Nr[1] * Lr[2] - Nr[2] * Lr[1], Nr[2] * Lr[0] - Nr[0] * Lr[2], Nr[0] * Lr[1] - Nr[1] * Lr[0]};
+    ld sn = sqrtl(cr[0] * cr[0] + cr[1] * cr[1] + cr[2] * cr[2]), cs = Nr[0] * Lr[0] + Nr[1] * Lr[1] + Nr[2] * Lr[2];
+    ld NL = cs / sqrtl((Nr[0] * Nr[0] + Nr[1] * Nr[1] + Nr[2] * Nr[2]) * (Lr[0] * Lr[0] + Lr[1] * Lr[1] + Lr[2] * Lr[2]));
+    ld tn = cs > 0 ? sn / cs : 10;
     if (tn > 10) tn = 10;
     ld want = cc + ss * (Ls > Lt ? Ls : Lt) * tn;
+    {
+        size_t used = strlen(c->args);
+        snprintf(c->args + used, sizeof c->args - used, " | c %.17g s %.17g N.L %.17Lg tan %.17Lg Ls %.17Lg Lt %.17Lg", cc, ss, NL, tn, Ls, Lt);
+    }
     double tol = 1e-6 + 64 * DBL_EPSILON * c->cond;
     if (fabsl(NL) < 1e-6L) tol = 1e-3; /* tan's clamp decided by N.L's last bits */
     if (pw) swr_close_abs(c, "world bias", wb, want, tol, 64 * DBL_EPSILON * c->cond * vmax3(b.p) * (ss + 1));

@@ -57,7 +57,7 @@ typedef struct swr_ctx {
     size_t n_rec;
     int failed;
     char msg[512];
-    char args[384]; /* the decoded arguments, for failure reports */
+    char args[768]; /* the decoded arguments, for failure reports */
     /* An input is extreme when a finite non-zero value has magnitude below
      * 1e-100 (incl. subnormals) or above 1e100.  There, accuracy checks
      * (reference comparisons, the huge-value rule, "valid input rejected")
