@@ -6,6 +6,11 @@ set -eu
 B=${1:-build}
 T=$(mktemp -d)
 "$B/examples/demo/demo" --out "$T" --size 960x540 --map 1024 >/dev/null
+# the comparison sheets (the default gallery ends with them): projective blur
+# vs PCF, single-map PSM vs the cube map, sun in front of and behind the camera
+for n in blur_sheet cube_sheet cube_sheet_behind; do
+    cp "$T/$n.png" "docs/img/demo_$n.png"
+done
 "$B/examples/demo/demo" --out "$T/measure" --camera measure --light-angle 90 --size 960x540 \
     --technique lispsm >/dev/null
 rm -f docs/img/demo_*.png

@@ -1,6 +1,6 @@
 #!/bin/sh
-# Regenerates docs/accuracy-cost.md, docs/plots/accuracy-cost*.dat and
-# docs/img/pareto.png from `swtool bench-report` (one command: run from the
+# Regenerates docs/accuracy-cost.md, docs/plots/accuracy-cost*.dat,
+# docs/plots/demo-clone.tsv and docs/img/pareto.png from `swtool bench-report` (one command: run from the
 # repository root after building, e.g. `ninja -C build`).
 #   sh docs/plots/regen_accuracy_cost.sh [build-dir] [reps]
 set -eu
@@ -40,7 +40,34 @@ if [ -x "$DEMO" ] && [ "${SWARP_NO_DEMO:-0}" != "1" ]; then
 fi
 # SWARP_NO_DEMO=1 (or no demo binary) keeps the last demo-measured.dat
 [ -f "$DEMO_DAT" ] && DEMO_ARG="--demo-data $DEMO_DAT"
-"$SWTOOL" bench-report --reps "$REPS" --out-dir docs $DEMO_ARG
+# Geometry cloning against the K + 1 pass version, K = 4, 8, 16 ([RHS] §3.3.6,
+# Tables 7.1/7.2): the demo times both in one frame loop (medians over
+# CLONE_FRAMES frames, default 31) and writes the rows as TSV.  Without OSMesa
+# the TSV only says why, and the report says so instead of giving numbers.
+# SWARP_NO_DEMO=1 reuses the last demo-clone.tsv too.
+CLONE_DAT=docs/plots/demo-clone.tsv
+if [ "${SWARP_NO_DEMO:-0}" = "1" ] && [ -f "$CLONE_DAT" ]; then
+    echo "regen_accuracy_cost: SWARP_NO_DEMO=1: reusing $CLONE_DAT"
+elif [ -x "$DEMO" ]; then
+    rc=0
+    "$DEMO" --test bench-clone --size 960x540 --map 1024 --frames "${CLONE_FRAMES:-31}" \
+        --bench-out "$CLONE_DAT.tmp" || rc=$?
+    if [ "$rc" = 0 ]; then
+        mv "$CLONE_DAT.tmp" "$CLONE_DAT"
+    elif [ "$rc" = 77 ]; then
+        rm -f "$CLONE_DAT.tmp"
+        printf '# unavailable\tOSMesa cannot create a GL 4.5 core context on this machine (the demo exits 77)\n' > "$CLONE_DAT"
+        echo "regen_accuracy_cost: no OSMesa context: the geometry-cloning table is left out of the report" >&2
+    else
+        rm -f "$CLONE_DAT.tmp"
+        echo "regen_accuracy_cost: demo --test bench-clone failed (exit $rc)" >&2
+        exit 1
+    fi
+else
+    printf '# unavailable\tthe demo was not built (OSMesa, libpng, cglm or stb missing)\n' > "$CLONE_DAT"
+    echo "regen_accuracy_cost: no demo binary: the geometry-cloning table is left out of the report" >&2
+fi
+"$SWTOOL" bench-report --reps "$REPS" --out-dir docs $DEMO_ARG --clone-data "$CLONE_DAT"
 gnuplot <<'GP'
 set terminal pngcairo size 1500,1200 font "DejaVu Sans,10"
 set output 'docs/img/pareto.png'

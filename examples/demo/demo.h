@@ -17,6 +17,13 @@ typedef struct demo_view {
 /** Fills view/proj from cam (cglm lookat + perspective). */
 void demo_view_update(demo_view* v);
 
+/** Main-pass parameters for view v with the gallery's defaults (grid 8,
+ *  normal offset 1 texel). */
+void demo_main_params_for(const demo_view* v, demo_mode mode, demo_filter filter, float blend,
+                          demo_main_params* p);
+/** Median of a[0..n) (sorts a); NAN for n <= 0. */
+double demo_median(double* a, int n);
+
 /** One row of the measured-vs-predicted table. */
 typedef struct demo_measure_row {
     double z;                     /**< eye depth (bin centre, median of samples) */
@@ -60,9 +67,22 @@ typedef struct demo_mindepth_result {
 int demo_mindepth(demo_renderer* r, const demo_view* v, demo_mindepth_result* out);
 
 /** The third-person visualisation view ([RHS] §5.2-5.3) of configuration
- *  sh: rendered with split colours from an outside camera, overlays drawn.
- *  Returns the number of GL errors (-1 on failure). */
+ *  sh: rendered with split colours from an outside camera, overlays drawn,
+ *  the bodies B (per split for cascades) from the library for `scene`.
+ *  *out_body_faces (may be NULL): faces of the bodies drawn.  Returns the
+ *  number of GL errors (-1 on failure). */
 int demo_third_person(demo_renderer* r, const demo_view* v, const demo_shadow* sh,
-                      const demo_main_params* base, demo_image* out);
+                      const swarp_aabb* scene, const demo_main_params* base, demo_image* out,
+                      int* out_body_faces);
+
+/** sheets.c: [KOZ] §14.3.2 projective blur against PCF 3x3 on view v
+ *  (out_dir/blur_sheet.png).  0 on success. */
+int demo_sheet_blur(demo_renderer* r, const demo_view* v, const demo_scene* scene, int map,
+                    const char* out_dir);
+/** sheets.c: single-map PSM against PSM with cube-map faces ([KOZ] §14.2.2,
+ *  Figs. 14-9/14-10) with the camera's and the measured near plane, for v's
+ *  sun (cube_sheet.png) and for `behind` (cube_sheet_behind.png). */
+int demo_sheet_cube(demo_renderer* r, const demo_view* v, const demo_scene* scene, int map,
+                    const swarp_light* behind, const char* out_dir);
 
 #endif

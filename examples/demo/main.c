@@ -12,6 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include "ctx.h"
 #include "demo.h"
@@ -47,12 +48,19 @@ typedef struct options {
     int path_count;
     int plan_only;              /**< --plan: print the plan and stop */
     const char* label_override; /**< run_technique's label (the planned entry) */
+    const char* bench_out;      /**< --bench-out: bench-clone's rows as TSV */
+    int sheets_only;            /**< --sheets: only the comparison sheets (sheets.c) */
+    int no_sheets;              /**< --no-sheets: the gallery without them */
 } options;
 
 static void usage(void) {
     printf(
         "usage: demo [options]\n"
-        "  (no options)            default gallery into ./out/ and a summary table\n"
+        "  (no options)            default gallery into ./out/ and a summary table, then the\n"
+        "                          comparison sheets (blur_sheet, cube_sheet, cube_sheet_behind)\n"
+        "  --sheets                only the sheets: projective blur vs PCF [KOZ] 14.3.2, PSM vs\n"
+        "                          cube map [KOZ] 14.2.2 (camera and measured near; sun in front\n"
+        "                          and behind); --no-sheets: the gallery without them\n"
         "  --technique T           uniform lispsm repar gmnpr pseudo psm pssm pssm-lispsm\n"
         "                          pssm-stable lixel planned (the chain swarp_plan chooses)\n"
         "  --plan                  print the plan for the view (swarp_plan) and stop\n"
@@ -77,9 +85,10 @@ static void usage(void) {
         "  --mindepth              [RHS] 4.3: min depth on GPU and CPU, LiSPSM sampling with the\n"
         "                          camera / adjusted / pseudo near plane (camera street)\n"
         "  --out DIR               output directory (default ./out)\n"
-        "  --test images|iou|measure|select|clone|mindepth|flicker|planned\n"
+        "  --test images|iou|measure|select|clone|mindepth|flicker|planned|blur\n"
         "                          headless checks (exit 0 pass, 1 fail, 77 skip)\n"
-        "  --test bench-clone      time K passes against geometry cloning for K = 4, 8, 16\n");
+        "  --test bench-clone      time K + 1 passes against geometry cloning (1 + 1), K = 4, 8, 16\n"
+        "                          (median of --frames, default 15; --bench-out FILE: rows as TSV)\n");
 }
 
 static int parse_options(int argc, char** argv, options* o) {
@@ -218,6 +227,13 @@ static int parse_options(int argc, char** argv, options* o) {
         } else if (!strcmp(a, "--obj")) {
             NEED();
             o->obj = val;
+        } else if (!strcmp(a, "--sheets")) {
+            o->sheets_only = 1;
+        } else if (!strcmp(a, "--no-sheets")) {
+            o->no_sheets = 1;
+        } else if (!strcmp(a, "--bench-out")) {
+            NEED();
+            o->bench_out = val;
         } else if (!strcmp(a, "--out")) {
             NEED();
             o->out = val;
@@ -314,6 +330,32 @@ static void light_from_options(const options* o, swarp_light* l) {
         l->direction = (swarp_vec3){-cos(e) * sin(a), -sin(e), -cos(e) * cos(a)};
         if (o->light_elev >= 90) l->direction = (swarp_vec3){0, -1, 0};
     }
+}
+
+/* View v of preset `camera` at --size with the --light-angle / --light-dir sun. */
+static int preset_view(const options* o, const char* camera, demo_view* v) {
+    memset(v, 0, sizeof *v);
+    v->w = o->w;
+    v->h = o->h;
+    if (camera_preset(camera, v->w, v->h, &v->cam)) return -1;
+    light_from_options(o, &v->light);
+    demo_view_update(v);
+    return 0;
+}
+
+/* demo_shadow_setup of technique t with K maps (practical scheme, lambda
+ * 0.5) for view v at --map. */
+static int setup_for(const options* o, const demo_view* v, const swarp_aabb* box, demo_technique t,
+                     int splits, demo_shadow* sh) {
+    demo_shadow_request req;
+    memset(&req, 0, sizeof req);
+    req.technique = t;
+    req.splits = splits;
+    req.scheme_lambda = 0.5;
+    req.map_res = o->map;
+    req.screen_w = v->w;
+    req.screen_h = v->h;
+    return demo_shadow_setup(&v->cam, &v->light, box, &req, sh);
 }
 
 static int mkdir_p(const char* dir) {
@@ -509,9 +551,15 @@ static int run_technique(const options* o, demo_renderer* r, const demo_view* v,
         res->gl_errors += e;
 
         demo_image third;
-        int e3 = demo_third_person(r, v, &sh, &p, &third);
+        int body_faces = 0;
+        int e3 = demo_third_person(r, v, &sh, box, &p, &third, &body_faces);
         if (e3 < 0) return -1;
         res->gl_errors += e3;
+        if (body_faces < 4) {
+            /* a body B is a polyhedron: the library gave none to draw */
+            fprintf(stderr, "demo: %s: no body B drawn in the third-person view\n", res->label);
+            ++res->gl_errors;
+        }
         char title[160];
         snprintf(title, sizeof title, "%s: m_x, m_z along the view vector", res->label);
         demo_image graph;
@@ -988,16 +1036,8 @@ static int test_iou(const options* o, demo_ctx* ctx) {
                 ++fails;
                 continue;
             }
-            demo_shadow_request req;
-            memset(&req, 0, sizeof req);
-            req.technique = techs[k];
-            req.splits = 4;
-            req.scheme_lambda = 0.5;
-            req.map_res = o->map;
-            req.screen_w = v.w;
-            req.screen_h = v.h;
             demo_shadow sh;
-            if (demo_shadow_setup(&v.cam, &v.light, &scene.box, &req, &sh)) {
+            if (setup_for(o, &v, &scene.box, techs[k], 4, &sh)) {
                 ++fails;
                 continue;
             }
@@ -1117,18 +1157,31 @@ static int test_select(const options* o) {
     float* tex = malloc(sizeof(float) * 4 * (size_t)v.w * v.h);
     float* pos = malloc(sizeof(float) * 4 * (size_t)v.w * v.h);
     int fails = 0;
+    /* the cube cases: four suns (elevation, azimuth), the light in the
+     * camera's post-projective space in front (w > 0) and behind (w < 0,
+     * Kozlov's inverse-projection faces); 0, 0 = --light-angle */
     struct {
         demo_technique t;
         demo_select sel;
         const char* camera;
-    } cases[4] = {{DEMO_TECH_PSSM, DEMO_SELECT_DEPTH, "default"},
-                  {DEMO_TECH_PSSM, DEMO_SELECT_BEST, "high"},
-                  {DEMO_TECH_LIXEL, DEMO_SELECT_LIXEL, "room"},
-                  {DEMO_TECH_PSM_CUBE, DEMO_SELECT_CUBE, "default"}};
+        double elev, azim;
+    } cases[7] = {{DEMO_TECH_PSSM, DEMO_SELECT_DEPTH, "default", 0, 0},
+                  {DEMO_TECH_PSSM, DEMO_SELECT_BEST, "high", 0, 0},
+                  {DEMO_TECH_LIXEL, DEMO_SELECT_LIXEL, "room", 0, 0},
+                  {DEMO_TECH_PSM_CUBE, DEMO_SELECT_CUBE, "default", 0, 0},
+                  {DEMO_TECH_PSM_CUBE, DEMO_SELECT_CUBE, "default", 60, 20},
+                  {DEMO_TECH_PSM_CUBE, DEMO_SELECT_CUBE, "default", 20, 200},
+                  {DEMO_TECH_PSM_CUBE, DEMO_SELECT_CUBE, "default", 80, 300}};
     const double band = 0.2; /* blend band of the depth case */
-    for (int c = 0; c < 4 && tex && pos; ++c) {
+    for (int c = 0; c < 7 && tex && pos; ++c) {
         if (camera_preset(cases[c].camera, v.w, v.h, &v.cam)) return 1;
-        light_from_options(o, &v.light);
+        options lo = *o;
+        if (cases[c].elev > 0) {
+            lo.have_light_dir = 0;
+            lo.light_elev = cases[c].elev;
+            lo.light_azim = cases[c].azim;
+        }
+        light_from_options(&lo, &v.light);
         demo_view_update(&v);
         demo_shadow_request req;
         memset(&req, 0, sizeof req);
@@ -1219,6 +1272,16 @@ static int test_select(const options* o) {
                    "from swarp_cascade_blend by > 2e-3\n", wn, wband, wdiff);
             ok = ok && wn > 1000 && wband > 500 && (double)wdiff / (double)wn <= 0.005;
         }
+        if (sh.select == DEMO_SELECT_CUBE) {
+            /* all faces drawn, and a cube map has 3 to 5 faces for a sun */
+            ok = ok && sh.count >= 3 && sh.count <= 5;
+            printf("cube light %2.0f,%3.0f: P w %+.3f, %d faces:", lo.light_elev, lo.light_azim,
+                   sh.cube_light.w, sh.count);
+            for (int i = 0; i < sh.count; ++i)
+                printf(" %s%s", "+x\0-x\0+y\0-y\0+z\0-z" + 3 * (sh.cube_face[i] % 6),
+                       sh.cube_light.w < 0 ? " (inverse)" : "");
+            printf("\n");
+        }
         printf("select %-6s %-5s: %ld pixels, %ld differ from the library (%.3f%%), %d maps used %s\n",
                demo_technique_name(cases[c].t),
                cases[c].sel == DEMO_SELECT_DEPTH  ? "depth"
@@ -1235,63 +1298,47 @@ static int test_select(const options* o) {
     return fails ? 1 : 0;
 }
 
-/* Geometry cloning against K passes: the same depth in every texel of
- * every layer (the same triangles rasterised with the same matrices), and
- * the cost of both for K = 4, 8, 16 ([RHS] §3.3.6, Tables 7.1/7.2 for the
- * shape of the result). */
-static int test_clone(const options* o, int bench) {
-    demo_view v;
-    memset(&v, 0, sizeof v);
-    v.w = o->w;
-    v.h = o->h;
-    if (camera_preset("default", v.w, v.h, &v.cam)) return 1;
-    light_from_options(o, &v.light);
-    demo_view_update(&v);
+/* Geometry cloning against K passes ([RHS] §3.3.6, Listing A.1): the same
+ * depth in every texel of every layer (the same triangles rasterised with
+ * the same matrices) and the same shadow mask (the `lit` value the main pass
+ * writes for every pixel), bit for bit.  A control swaps the matrices of
+ * maps 0 and 1 for the clone and must see differing pixels, so the
+ * comparison can fail. */
+static int test_clone(const options* o) {
     demo_scene scene;
     if (demo_scene_default(&scene)) return 1;
     demo_renderer r;
-    if (demo_render_init(&r, &scene, v.w, v.h, o->map, DEMO_MAX_SPLITS)) return 1;
-    size_t n = (size_t)o->map * o->map;
+    if (demo_render_init(&r, &scene, o->w, o->h, o->map, DEMO_MAX_SPLITS)) return 1;
+    size_t n = (size_t)o->map * o->map, npx = (size_t)o->w * o->h;
     float* a = malloc(sizeof(float) * n);
+    float* multi_depth = malloc(sizeof(float) * n * DEMO_MAX_SPLITS);
+    float* pos_multi = malloc(sizeof(float) * 4 * npx);
+    float* pos_clone = malloc(sizeof(float) * 4 * npx);
     int fails = 0;
-    const int ks[3] = {4, 8, 16};
-    if (bench)
-        printf("%-4s %16s %16s %8s  (median of 5, ms, glFinish-bracketed, %d^2 maps, %zu triangles)\n",
-               "K", "K passes", "1 pass (clone)", "ratio", o->map, scene.count / 3);
-    for (int c = 0; c < 3 && a; ++c) {
-        demo_shadow_request req;
-        memset(&req, 0, sizeof req);
-        req.technique = DEMO_TECH_PSSM;
-        req.splits = ks[c];
-        req.scheme_lambda = 0.5;
-        req.map_res = o->map;
-        req.screen_w = v.w;
-        req.screen_h = v.h;
+    const struct {
+        demo_technique t;
+        int k;
+        const char* camera;
+    } cases[6] = {{DEMO_TECH_PSSM, 4, "default"},         {DEMO_TECH_PSSM, 8, "default"},
+                  {DEMO_TECH_PSSM, 16, "default"},        {DEMO_TECH_PSSM_LISPSM, 4, "default"},
+                  {DEMO_TECH_PSSM_LISPSM, 8, "high"},     {DEMO_TECH_PSSM_STABLE, 4, "street"}};
+    for (int c = 0; c < 6 && a && multi_depth && pos_multi && pos_clone; ++c) {
+        demo_view v;
         demo_shadow sh;
-        if (demo_shadow_setup(&v.cam, &v.light, &scene.box, &req, &sh)) {
+        if (preset_view(o, cases[c].camera, &v) ||
+            setup_for(o, &v, &scene.box, cases[c].t, cases[c].k, &sh)) {
             ++fails;
             continue;
         }
-        int errs = 0;
-        double multi[5], single[5];
-        for (int rep = 0; rep < (bench ? 5 : 1); ++rep) {
-            double ms[DEMO_MAX_SPLITS];
-            double t0 = demo_now_ms();
-            errs += demo_render_shadow(&r, &sh, DEMO_FILTER_PCF2, ms);
-            multi[rep] = demo_now_ms() - t0;
-            errs += demo_render_shadow_single(&r, &sh, &single[rep]);
-        }
-        if (bench) {
-            qsort(multi, 5, sizeof multi[0], cmp_d);
-            qsort(single, 5, sizeof single[0], cmp_d);
-            printf("%-4d %16.2f %16.2f %8.2f\n", ks[c], multi[2], single[2], single[2] / multi[2]);
-        }
-        /* K passes, read every layer back; then the clone, read again */
-        long differ = 0, covered = 0;
-        errs += demo_render_shadow(&r, &sh, DEMO_FILTER_PCF2, NULL);
-        float* multi_depth = malloc(sizeof(float) * n * (size_t)sh.count);
-        if (!multi_depth) return 1;
+        demo_main_params p;
+        demo_main_params_for(&v, DEMO_MODE_SHADED, DEMO_FILTER_PCF3, 0.1f, &p);
+        /* K passes: every layer read back, then the main pass's mask */
+        int errs = demo_render_shadow(&r, &sh, DEMO_FILTER_PCF3, NULL);
         for (int i = 0; i < sh.count; ++i) errs += demo_render_read_depth(&r, i, multi_depth + n * (size_t)i);
+        errs += demo_render_main(&r, &sh, &p, NULL);
+        demo_render_read_aux(&r, NULL, pos_multi);
+        /* one pass by cloning: the same again */
+        long differ = 0, covered = 0;
         errs += demo_render_shadow_single(&r, &sh, NULL);
         for (int i = 0; i < sh.count; ++i) {
             errs += demo_render_read_depth(&r, i, a);
@@ -1301,50 +1348,262 @@ static int test_clone(const options* o, int bench) {
                 differ += a[k] != m[k];
             }
         }
-        free(multi_depth);
-        int ok = errs == 0 && differ == 0 && covered > (long)n / 4;
-        if (!bench || !ok)
-            printf("clone K=%-2d: %ld texels with geometry, %ld differ from the K-pass maps, gl errors %d %s\n",
-                   ks[c], covered, differ, errs, ok ? "ok" : "FAIL");
+        errs += demo_render_main(&r, &sh, &p, NULL);
+        demo_render_read_aux(&r, NULL, pos_clone);
+        long mask_px = 0, mask_diff = 0, shadowed = 0;
+        for (size_t k = 0; k < npx; ++k) {
+            if (pos_multi[4 * k + 3] < 0) continue; /* sky */
+            ++mask_px;
+            shadowed += pos_multi[4 * k + 3] < 0.5f;
+            mask_diff += memcmp(&pos_multi[4 * k + 3], &pos_clone[4 * k + 3], sizeof(float)) != 0;
+        }
+        int ok = errs == 0 && differ == 0 && covered > (long)n / 4 && mask_diff == 0 &&
+                 shadowed > 100;
+        printf("clone %-11s K=%-2d %-7s: %ld texels with geometry, %ld differ from the K-pass maps; "
+               "shadow mask %ld pixels (%ld shadowed), %ld differ; gl errors %d %s\n",
+               demo_technique_name(cases[c].t), cases[c].k, cases[c].camera, covered, differ,
+               mask_px, shadowed, mask_diff, errs, ok ? "ok" : "FAIL");
         fails += !ok;
+        if (c == 0) {
+            /* control: maps 0 and 1 swapped for the clone only */
+            demo_shadow sw = sh;
+            sw.light[0] = sh.light[1];
+            sw.light[1] = sh.light[0];
+            errs = demo_render_shadow_single(&r, &sw, NULL);
+            errs += demo_render_main(&r, &sh, &p, NULL);
+            demo_render_read_aux(&r, NULL, pos_clone);
+            long cdiff = 0;
+            for (size_t k = 0; k < npx; ++k)
+                cdiff += pos_multi[4 * k + 3] >= 0 &&
+                         memcmp(&pos_multi[4 * k + 3], &pos_clone[4 * k + 3], sizeof(float)) != 0;
+            int cok = errs == 0 && cdiff > 100;
+            printf("clone control (maps 0 and 1 swapped): %ld mask pixels differ (must be > 100) %s\n",
+                   cdiff, cok ? "ok" : "FAIL");
+            fails += !cok;
+        }
     }
+    if (!a || !multi_depth || !pos_multi || !pos_clone) ++fails;
     free(a);
+    free(multi_depth);
+    free(pos_multi);
+    free(pos_clone);
     demo_render_free(&r);
     demo_scene_free(&scene);
     return fails ? 1 : 0;
 }
 
+/* The machine line of the timing tables: cores, CPU, GL renderer. */
+static void machine_line(char* out, size_t cap) {
+    char model[160] = "unknown CPU";
+    FILE* f = fopen("/proc/cpuinfo", "r");
+    if (f) {
+        char line[256];
+        while (fgets(line, sizeof line, f))
+            if (!strncmp(line, "model name", 10)) {
+                char* c = strchr(line, ':');
+                if (c) {
+                    c += 2;
+                    c[strcspn(c, "\n")] = 0;
+                    snprintf(model, sizeof model, "%s", c);
+                }
+                break;
+            }
+        fclose(f);
+    }
+    snprintf(out, cap, "%ld cores (nproc), %s; %s, OpenGL %s", sysconf(_SC_NPROCESSORS_ONLN), model,
+             (const char*)glGetString(GL_RENDERER), (const char*)glGetString(GL_VERSION));
+}
+
+/* K + 1 passes against geometry cloning (1 + 1), K = 4, 8, 16, PSSM(K) +
+ * LiSPSM on the default view: per frame the shadow passes and the main
+ * pass, both glFinish-bracketed, both variants of one K in the same frame
+ * loop (alternating which goes first) so load changes hit them alike;
+ * medians over --frames (default 15).  Shaped like [RHS] Tables 7.1/7.2;
+ * --bench-out FILE also writes the rows as TSV for swtool bench-report. */
+static int bench_clone(const options* o) {
+    demo_view v;
+    if (preset_view(o, "default", &v)) return 1;
+    demo_scene scene;
+    if (demo_scene_default(&scene)) return 1;
+    demo_renderer r;
+    if (demo_render_init(&r, &scene, v.w, v.h, o->map, DEMO_MAX_SPLITS)) return 1;
+    const int F = o->frames > 0 ? o->frames : 15;
+    double* t = malloc(sizeof(double) * 6 * (size_t)F);
+    char machine[512];
+    machine_line(machine, sizeof machine);
+    FILE* tsv = NULL;
+    if (o->bench_out && !(tsv = fopen(o->bench_out, "w"))) {
+        fprintf(stderr, "demo: cannot write %s\n", o->bench_out);
+        free(t);
+        demo_render_free(&r);
+        demo_scene_free(&scene);
+        return 2;
+    }
+    if (tsv) {
+        fprintf(tsv, "# demo --test bench-clone: geometry cloning vs K + 1 passes ([RHS] 3.3.6, Tables 7.1/7.2)\n");
+        fprintf(tsv, "# machine\t%s\n", machine);
+        fprintf(tsv, "# setup\t%dx%d\t%d\t%d\t%zu\n", v.w, v.h, o->map, F, scene.count / 3);
+        fprintf(tsv, "# K\tvariant\tpasses\tshadow_ms\tmain_ms\tframe_ms\n");
+    }
+    printf("geometry cloning vs K + 1 passes: PSSM(K) + LiSPSM, default view, %dx%d, %d^2 maps, %zu "
+           "triangles;\nmedian of %d frames, glFinish-bracketed ms; %s\n",
+           v.w, v.h, o->map, scene.count / 3, F, machine);
+    printf("%-40s %-9s %10s %10s %10s %7s %13s\n", "applied techniques", "3D passes", "shadow_ms",
+           "main_ms", "frame_ms", "fps", "shadow ratio");
+    int fails = 0;
+    const int ks[3] = {4, 8, 16};
+    for (int c = 0; c < 3 && t; ++c) {
+        demo_shadow sh;
+        if (setup_for(o, &v, &scene.box, DEMO_TECH_PSSM_LISPSM, ks[c], &sh)) {
+            ++fails;
+            continue;
+        }
+        demo_main_params p;
+        demo_main_params_for(&v, DEMO_MODE_SHADED, DEMO_FILTER_PCF3, 0.1f, &p);
+        int errs = 0;
+        /* t: [shadow, main, frame] x [K passes, clone] x F */
+        for (int f = 0; f < F; ++f) {
+            for (int j = 0; j < 2; ++j) {
+                int clone = (j + f) % 2;
+                double s = 0, m = 0;
+                if (clone) {
+                    errs += demo_render_shadow_single(&r, &sh, &s);
+                } else {
+                    double ms[DEMO_MAX_SPLITS];
+                    errs += demo_render_shadow(&r, &sh, DEMO_FILTER_PCF3, ms);
+                    for (int i = 0; i < sh.count; ++i) s += ms[i];
+                }
+                errs += demo_render_main(&r, &sh, &p, &m);
+                t[(0 * 2 + clone) * F + f] = s;
+                t[(1 * 2 + clone) * F + f] = m;
+                t[(2 * 2 + clone) * F + f] = s + m;
+            }
+        }
+        double med[3][2];
+        for (int q = 0; q < 3; ++q)
+            for (int cl = 0; cl < 2; ++cl) med[q][cl] = demo_median(t + (q * 2 + cl) * F, F);
+        for (int cl = 0; cl < 2; ++cl) {
+            char name[64], passes[16];
+            snprintf(name, sizeof name, "%sPSSM(%d) + LiSPSM", cl ? "Geometry Cloning " : "", ks[c]);
+            snprintf(passes, sizeof passes, cl ? "1 + 1" : "%d + 1", ks[c]);
+            printf("%-40s %-9s %10.2f %10.2f %10.2f %7.2f %13.2f\n", name, passes, med[0][cl], med[1][cl],
+                   med[2][cl], 1000.0 / med[2][cl], med[0][cl] / med[0][0]);
+            if (tsv)
+                fprintf(tsv, "%d\t%s\t%s\t%.4f\t%.4f\t%.4f\n", ks[c], cl ? "clone" : "passes", passes,
+                        med[0][cl], med[1][cl], med[2][cl]);
+        }
+        if (errs) {
+            printf("K=%d: %d GL errors FAIL\n", ks[c], errs);
+            ++fails;
+        }
+    }
+    if (!t) ++fails;
+    if (tsv && fclose(tsv)) ++fails;
+    free(t);
+    demo_render_free(&r);
+    demo_scene_free(&scene);
+    return fails ? 1 : 0;
+}
+
+/* Eye depth of every pixel of view v (INFINITY for sky) from the main
+ * pass's float target: what the depth buffer saw. */
+static int eye_depths(demo_renderer* r, const demo_view* v, const demo_shadow* sh, float* tex,
+                      float* pos, float* out) {
+    demo_main_params p;
+    demo_main_params_for(v, DEMO_MODE_SHADED, DEMO_FILTER_NONE, 0, &p);
+    int errs = demo_render_main(r, sh, &p, NULL);
+    demo_render_read_aux(r, tex, pos);
+    for (size_t k = 0; k < (size_t)v->w * v->h; ++k)
+        out[k] = pos[4 * k + 3] < 0 ? INFINITY : tex[4 * k + 3];
+    return errs;
+}
+
+/* Pixels whose eye depth differs (relative rel; sky against geometry counts). */
+static long depth_changes(const float* a, const float* b, size_t n, double rel) {
+    long d = 0;
+    for (size_t k = 0; k < n; ++k) {
+        if (isinf(a[k]) || isinf(b[k])) d += isinf(a[k]) != isinf(b[k]);
+        else d += fabs((double)a[k] - b[k]) > rel * fabs((double)a[k]);
+    }
+    return d;
+}
+
+/* [RHS] §4.3: the minimum the GPU chain found equals the library's CPU
+ * reductions bit for bit, the adjusted near plane lies in [camera near, min],
+ * and re-rendering with it changes no pixel's depth (it clips nothing the
+ * depth buffer saw), while a control near plane 5 % beyond the minimum
+ * changes some. */
+static int check_mindepth(const options* o, demo_renderer* r, const demo_scene* scene,
+                          const demo_view* v, const demo_mindepth_result* md, int clip_check) {
+    int same = md->gpu_min == md->cpu_pyramid_min && md->gpu_min == md->cpu_direct_min;
+    int safe = md->adjusted_near <= md->gpu_min && md->adjusted_near >= v->cam.near;
+    int ok = same && safe && md->gl_errors == 0;
+    if (!same || !safe || md->gl_errors)
+        printf("  FAIL: %s%s%s\n", same ? "" : "GPU and CPU minima differ; ",
+               safe ? "" : "adjusted near clips what the camera saw; ", md->gl_errors ? "GL errors" : "");
+    if (!clip_check || !ok) return ok ? 0 : 1;
+    size_t npx = (size_t)v->w * v->h;
+    float* tex = malloc(sizeof(float) * 4 * npx);
+    float* pos = malloc(sizeof(float) * 4 * npx);
+    float* d[3] = {malloc(sizeof(float) * npx), malloc(sizeof(float) * npx), malloc(sizeof(float) * npx)};
+    demo_shadow sh;
+    int errs = 0;
+    if (!tex || !pos || !d[0] || !d[1] || !d[2] || setup_for(o, v, &scene->box, DEMO_TECH_UNIFORM, 1, &sh)) {
+        ok = 0;
+    } else {
+        errs += demo_render_shadow(r, &sh, DEMO_FILTER_NONE, NULL);
+        const double nears[3] = {v->cam.near, md->adjusted_near, 1.05 * md->gpu_min};
+        for (int k = 0; k < 3; ++k) {
+            demo_view vk = *v;
+            vk.cam.near = nears[k];
+            demo_view_update(&vk);
+            errs += eye_depths(r, &vk, &sh, tex, pos, d[k]);
+        }
+        long adj = depth_changes(d[0], d[1], npx, 1e-4), ctl = depth_changes(d[0], d[2], npx, 1e-4);
+        ok = errs == 0 && adj == 0 && ctl > 100;
+        printf("  re-rendered with the adjusted near %.4f: %ld pixels change depth (must be 0); "
+               "control near %.4f (min + 5%%): %ld change (must be > 100) %s\n",
+               md->adjusted_near, adj, nears[2], ctl, ok ? "ok" : "FAIL");
+    }
+    free(tex);
+    free(pos);
+    for (int k = 0; k < 3; ++k) free(d[k]);
+    return ok ? 0 : 1;
+}
+
 /* [RHS] §4.3 / Figs. 7.8-7.9: the min-depth near plane measured on the GPU
  * and on the CPU, and the sampling rate of LiSPSM with the camera's near
- * plane, the adjusted near plane and the pseudo-near plane side by side. */
+ * plane, the adjusted near plane and the pseudo-near plane side by side.
+ * The test runs the checks of check_mindepth for the cameras default,
+ * street, high and measure (or --camera). */
 static int run_mindepth(const options* o, int test) {
     demo_view v;
     memset(&v, 0, sizeof v);
     v.w = o->w;
     v.h = o->h;
-    if (camera_preset(o->camera_given ? o->camera : "street", v.w, v.h, &v.cam)) return 2;
-    light_from_options(o, &v.light);
-    demo_view_update(&v);
     demo_scene scene;
     if (load_scene(o, &scene)) return 2;
     demo_renderer r;
     if (demo_render_init(&r, &scene, v.w, v.h, o->map, DEMO_MAX_SPLITS)) return 2;
+    const char* cams[4] = {"default", "street", "high", "measure"};
+    int ncam = test && !o->camera_given ? 4 : 1;
+    int rc = 0;
     demo_mindepth_result md;
-    int rc = demo_mindepth(&r, &v, &md) ? 1 : 0;
-    printf("min depth of the view (camera near %.3g, far %.3g):\n", v.cam.near, v.cam.far);
-    printf("  GPU 2x2 min chain (%d passes) %.6f   [depth pass %.2f ms, chain + 1-texel read-back %.2f ms]\n",
-           md.levels, md.gpu_min, md.depth_pass_ms, md.chain_ms);
-    printf("  CPU swarp_mindepth_pyramid    %.6f   [full read-back %.2f ms, reduction %.3f ms]\n",
-           md.cpu_pyramid_min, md.readback_ms, md.cpu_pyramid_ms);
-    printf("  CPU swarp_mindepth_direct     %.6f   [reduction %.3f ms]\n", md.cpu_direct_min,
-           md.cpu_direct_ms);
-    printf("  adjusted near plane (swarp_mindepth_near) %.6f\n", md.adjusted_near);
-    int same = md.gpu_min == md.cpu_pyramid_min && md.gpu_min == md.cpu_direct_min;
-    int safe = md.adjusted_near <= md.gpu_min && md.adjusted_near >= v.cam.near;
-    if (!same || !safe || md.gl_errors) {
-        printf("  FAIL: %s%s%s\n", same ? "" : "GPU and CPU minima differ; ",
-               safe ? "" : "adjusted near clips what the camera saw; ", md.gl_errors ? "GL errors" : "");
-        rc = 1;
+    for (int c = 0; c < ncam; ++c) {
+        const char* cam = ncam > 1 ? cams[c] : o->camera_given ? o->camera : "street";
+        if (camera_preset(cam, v.w, v.h, &v.cam)) return 2;
+        light_from_options(o, &v.light);
+        demo_view_update(&v);
+        if (demo_mindepth(&r, &v, &md)) rc = 1;
+        printf("min depth of the view, camera %s (near %.3g, far %.3g):\n", cam, v.cam.near, v.cam.far);
+        printf("  GPU 2x2 min chain (%d passes) %.6f   [depth pass %.2f ms, chain + 1-texel read-back %.2f ms]\n",
+               md.levels, md.gpu_min, md.depth_pass_ms, md.chain_ms);
+        printf("  CPU swarp_mindepth_pyramid    %.6f   [full read-back %.2f ms, reduction %.3f ms]\n",
+               md.cpu_pyramid_min, md.readback_ms, md.cpu_pyramid_ms);
+        printf("  CPU swarp_mindepth_direct     %.6f   [reduction %.3f ms]\n", md.cpu_direct_min,
+               md.cpu_direct_ms);
+        printf("  adjusted near plane (swarp_mindepth_near) %.6f\n", md.adjusted_near);
+        rc |= check_mindepth(o, &r, &scene, &v, &md, test);
     }
     if (!test && rc == 0) {
         /* sampling rate: camera near | adjusted near | pseudo-near */
@@ -1399,6 +1658,60 @@ static int run_mindepth(const options* o, int test) {
     demo_render_free(&r);
     demo_scene_free(&scene);
     return rc;
+}
+
+/* [KOZ] §14.3.2 projective blur (--filter projblur): on the ground, the raw
+ * colour part of the shadow map (1 receiver, 0 caster; blur switched off)
+ * projected as a texture agrees with the ordinary depth compare, and the
+ * blurred one has a penumbra (lit strictly between 0.05 and 0.95) several
+ * times wider than the raw texture's one-texel bilinear edge. */
+static int test_blur(const options* o) {
+    demo_view v;
+    if (preset_view(o, "default", &v)) return 1;
+    demo_scene scene;
+    if (demo_scene_default(&scene)) return 1;
+    demo_renderer r;
+    if (demo_render_init(&r, &scene, v.w, v.h, o->map, DEMO_MAX_SPLITS)) return 1;
+    size_t npx = (size_t)v.w * v.h;
+    float* pos[3] = {malloc(sizeof(float) * 4 * npx), malloc(sizeof(float) * 4 * npx),
+                     malloc(sizeof(float) * 4 * npx)};
+    int ok = 0;
+    demo_shadow sh;
+    if (pos[0] && pos[1] && pos[2] && !setup_for(o, &v, &scene.box, DEMO_TECH_UNIFORM, 1, &sh)) {
+        /* 0: depth compare, 1 nearest tap; 1: raw colour part; 2: blurred */
+        const demo_filter f[3] = {DEMO_FILTER_NONE, DEMO_FILTER_PROJBLUR, DEMO_FILTER_PROJBLUR};
+        int errs = 0;
+        for (int k = 0; k < 3; ++k) {
+            r.blur_off = k == 1;
+            errs += demo_render_shadow(&r, &sh, f[k], NULL);
+            demo_main_params p;
+            demo_main_params_for(&v, DEMO_MODE_SHADED, f[k], 0, &p);
+            errs += demo_render_main(&r, &sh, &p, NULL);
+            demo_render_read_aux(&r, NULL, pos[k]);
+        }
+        r.blur_off = 0;
+        long ground = 0, agree = 0, soft_raw = 0, soft_blur = 0, shadowed = 0;
+        for (size_t k = 0; k < npx; ++k) {
+            const float* q = pos[0] + 4 * k;
+            if (q[3] < 0 || fabsf(q[1]) > 1e-3f) continue; /* sky, not the ground */
+            float depth = q[3], raw = pos[1][4 * k + 3], blur = pos[2][4 * k + 3];
+            ++ground;
+            shadowed += depth < 0.5f;
+            agree += (depth > 0.5f) == (raw > 0.5f);
+            soft_raw += raw > 0.05f && raw < 0.95f;
+            soft_blur += blur > 0.05f && blur < 0.95f;
+        }
+        double fa = ground ? (double)agree / ground : 0;
+        ok = errs == 0 && ground > 1000 && shadowed > 100 && fa >= 0.98 && soft_blur > 3 * soft_raw &&
+             soft_blur > 100;
+        printf("blur: %ld ground pixels (%ld shadowed by the depth compare); raw colour part agrees "
+               "on %.2f%% (>= 98%%); penumbra pixels: raw %ld, blurred %ld (> 3x raw) %s\n",
+               ground, shadowed, 100 * fa, soft_raw, soft_blur, ok ? "ok" : "FAIL");
+    }
+    for (int k = 0; k < 3; ++k) free(pos[k]);
+    demo_render_free(&r);
+    demo_scene_free(&scene);
+    return ok ? 0 : 1;
 }
 
 /* [RHS] §3.5: a fixed ground point keeps its place inside its texel while
@@ -1523,6 +1836,45 @@ static int test_planned(const options* o) {
     return ok ? 0 : 1;
 }
 
+/* The two comparison sheets of issue 10 (sheets.c): projective blur vs PCF,
+ * and single-map PSM vs the cube map with the sun in front of the camera
+ * (--light-angle) and behind it (the same elevation, azimuth 10). */
+static int run_sheets(const options* o) {
+    if (mkdir_p(o->out)) {
+        fprintf(stderr, "demo: cannot create %s\n", o->out);
+        return 2;
+    }
+    demo_ctx* ctx = open_context();
+    if (!ctx) return 2;
+    demo_view v;
+    memset(&v, 0, sizeof v);
+    v.w = o->w;
+    v.h = o->h;
+    demo_scene scene;
+    demo_renderer r;
+    int rc = 2;
+    if (setup_camera(o, &v.cam) == 0 && load_scene(o, &scene) == 0) {
+        light_from_options(o, &v.light);
+        demo_view_update(&v);
+        if (demo_render_init(&r, &scene, v.w, v.h, o->map, DEMO_MAX_SPLITS) == 0) {
+            double t0 = demo_now_ms();
+            printf("\ncomparison sheets (%s camera):\n", o->camera);
+            rc = demo_sheet_blur(&r, &v, &scene, o->map, o->out);
+            options b = *o;
+            b.have_light_dir = 0;
+            b.light_azim = 10;
+            swarp_light behind;
+            light_from_options(&b, &behind);
+            rc |= demo_sheet_cube(&r, &v, &scene, o->map, &behind, o->out);
+            printf("sheets %.1f s\n", (demo_now_ms() - t0) / 1e3);
+            demo_render_free(&r);
+        }
+        demo_scene_free(&scene);
+    }
+    demo_ctx_destroy(ctx);
+    return rc;
+}
+
 int main(int argc, char** argv) {
     options o;
     if (parse_options(argc, argv, &o)) return 2;
@@ -1544,10 +1896,11 @@ int main(int argc, char** argv) {
         if (!strcmp(o.test, "iou")) rc = test_iou(&o, ctx);
         else if (!strcmp(o.test, "measure")) rc = test_measure(&o);
         else if (!strcmp(o.test, "select")) rc = test_select(&o);
-        else if (!strcmp(o.test, "clone")) rc = test_clone(&o, 0);
+        else if (!strcmp(o.test, "clone")) rc = test_clone(&o);
         else if (!strcmp(o.test, "mindepth")) rc = run_mindepth(&o, 1);
         else if (!strcmp(o.test, "flicker")) rc = test_flicker(&o);
-        else if (!strcmp(o.test, "bench-clone")) rc = test_clone(&o, 1);
+        else if (!strcmp(o.test, "blur")) rc = test_blur(&o);
+        else if (!strcmp(o.test, "bench-clone")) rc = bench_clone(&o);
         else {
             fprintf(stderr, "demo: unknown test %s\n", o.test);
             rc = 2;
@@ -1568,5 +1921,9 @@ int main(int argc, char** argv) {
         demo_ctx_destroy(ctx);
         return rc;
     }
-    return run_gallery(&o, o.technique >= 0, NULL);
+    if (o.sheets_only) return run_sheets(&o);
+    int rc = run_gallery(&o, o.technique >= 0, NULL);
+    /* the default gallery ends with the comparison sheets */
+    if (rc == 0 && o.technique < 0 && !o.no_sheets) rc = run_sheets(&o);
+    return rc;
 }

@@ -26,10 +26,27 @@ static int cmp_double(const void* a, const void* b) {
     return (x > y) - (x < y);
 }
 
-static double median(double* a, int n) {
+double demo_median(double* a, int n) {
     if (n <= 0) return NAN;
     qsort(a, (size_t)n, sizeof *a, cmp_double);
     return n % 2 ? a[n / 2] : 0.5 * (a[n / 2 - 1] + a[n / 2]);
+}
+
+void demo_main_params_for(const demo_view* v, demo_mode mode, demo_filter filter, float blend,
+                          demo_main_params* p) {
+    memset(p, 0, sizeof *p);
+    memcpy(p->view, v->view, sizeof p->view);
+    memcpy(p->proj, v->proj, sizeof p->proj);
+    p->light_dir[0] = (float)v->light.direction.x;
+    p->light_dir[1] = (float)v->light.direction.y;
+    p->light_dir[2] = (float)v->light.direction.z;
+    p->mode = mode;
+    p->filter = filter;
+    p->blend = blend;
+    p->grid = 8;
+    p->normal_offset = 1;
+    p->vw = v->w;
+    p->vh = v->h;
 }
 
 /* The model's pixel footprint at eye depth z: 2 z tan(Θ) / res_iy, the same
@@ -119,19 +136,19 @@ int demo_measure(const demo_view* v, const demo_shadow* sh, int map_res, const f
             demo_measure_row r;
             r.samples = cnt;
             for (int k = 0; k < cnt; ++k) tmp[k] = all[i + k].z;
-            r.z = median(tmp, cnt);
+            r.z = demo_median(tmp, cnt);
             for (int k = 0; k < cnt; ++k) tmp[k] = all[i + k].mx;
-            r.mx = median(tmp, cnt);
+            r.mx = demo_median(tmp, cnt);
             for (int k = 0; k < cnt; ++k) tmp[k] = all[i + k].mz;
-            r.mz = median(tmp, cnt);
+            r.mz = demo_median(tmp, cnt);
             for (int k = 0; k < cnt; ++k) tmp[k] = all[i + k].pmx;
-            r.pred_mx = median(tmp, cnt);
+            r.pred_mx = demo_median(tmp, cnt);
             for (int k = 0; k < cnt; ++k) tmp[k] = all[i + k].pmz;
-            r.pred_mz = median(tmp, cnt);
+            r.pred_mz = demo_median(tmp, cnt);
             for (int k = 0; k < cnt; ++k) tmp[k] = all[i + k].mx / all[i + k].pmx;
-            r.ratio_mx = median(tmp, cnt);
+            r.ratio_mx = demo_median(tmp, cnt);
             for (int k = 0; k < cnt; ++k) tmp[k] = all[i + k].mz / all[i + k].pmz;
-            r.ratio_mz = median(tmp, cnt);
+            r.ratio_mz = demo_median(tmp, cnt);
             r.split = all[i].key % DEMO_MAX_SPLITS;
             rows[n++] = r;
         }

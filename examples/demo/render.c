@@ -474,7 +474,7 @@ int demo_render_shadow(demo_renderer* r, const demo_shadow* sh, demo_filter filt
     glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, 0, 0, 0);
     glDisable(GL_POLYGON_OFFSET_FILL);
     glDisable(GL_DEPTH_CLAMP);
-    if (blur) {
+    if (blur && !r->blur_off) {
         /* ping-pong: moment_tex -> blur_tex (x) -> moment_tex (y), per map */
         if (!r->blur_tex) r->blur_tex = float_array(r->map_res, r->layers);
         glDisable(GL_DEPTH_TEST);

@@ -38,6 +38,7 @@ typedef struct demo_renderer {
     GLuint prog_receiver, prog_blur;
     float blur_sigma;          /**< projective blur Gaussian sigma, texels */
     double blur_ms;            /**< time of the last blur passes */
+    int blur_off;              /**< 1: keep the raw colour part (the blur test) */
     float poisson[32];         /**< 16 unit-disk points (swarp_pcf_poisson_disk) */
     float evsm_c;              /**< EVSM exponent (swarp_evsm_max_exponent, fp32) */
     int map_res, layers;

@@ -1,8 +1,10 @@
 /* third.c -- the third-person "visualization view" ([RHS] §5.2-5.3, Fig. 5.1,
  * 5.2, 5.4b): the scene from an outside camera, coloured by the map that
  * shades each point (5.1), with the viewer's frustum and split frusta, the
- * light direction, each map's footprint on the ground and the points of the
- * intersection body B that the library returned. */
+ * light direction, each map's footprint on the ground, the intersection body
+ * B of every map as a polyhedron (per split B_i for the cascades:
+ * swarp_body_h + swarp_body_from_h, the polyhedra behind swarp_body_points)
+ * and the points of B that the setup returned. */
 #include <cglm/cglm.h>
 #include <math.h>
 #include <string.h>
@@ -76,8 +78,65 @@ static void segment(demo_image* im, const swarp_mat4* m, swarp_vec3 a, swarp_vec
         demo_image_line(im, x0, y0, x1, y1, thick, rgb);
 }
 
+/* convex polygon with every vertex in front of the camera (w > 0), blended
+ * with alpha: one scanline fill */
+static void fill_polygon(demo_image* im, const swarp_mat4* m, const swarp_vec3* pts, int n,
+                         const uint8_t c[3], double alpha) {
+    double x[SWARP_POLY_MAX_FACE_VERTICES], y[SWARP_POLY_MAX_FACE_VERTICES];
+    if (n < 3 || n > SWARP_POLY_MAX_FACE_VERTICES) return;
+    double ymin = INFINITY, ymax = -INFINITY;
+    for (int i = 0; i < n; ++i)
+        if (!project(m, im, pts[i], &x[i], &y[i])) return;
+    for (int i = 0; i < n; ++i) {
+        ymin = fmin(ymin, y[i]);
+        ymax = fmax(ymax, y[i]);
+    }
+    int y0 = (int)fmax(0, ceil(ymin - 0.5)), y1 = (int)fmin(im->h - 1, floor(ymax - 0.5));
+    for (int yy = y0; yy <= y1; ++yy) {
+        double sy = yy + 0.5, lo = INFINITY, hi = -INFINITY;
+        for (int i = 0; i < n; ++i) {
+            int j = (i + 1) % n;
+            if ((sy < y[i]) == (sy < y[j])) continue;
+            double xx = x[i] + (sy - y[i]) / (y[j] - y[i]) * (x[j] - x[i]);
+            lo = fmin(lo, xx);
+            hi = fmax(hi, xx);
+        }
+        if (!(hi >= lo)) continue;
+        int xa = (int)fmax(0, ceil(lo - 0.5)), xb = (int)fmin(im->w - 1, floor(hi - 0.5));
+        for (int xx = xa; xx <= xb; ++xx) {
+            uint8_t* px = im->px + 4 * ((size_t)yy * im->w + xx);
+            for (int k = 0; k < 3; ++k) px[k] = (uint8_t)lround((1 - alpha) * px[k] + alpha * c[k]);
+        }
+    }
+}
+
+/* B over the view depths [d0, d1]: translucent faces, darker edges.
+ * Returns the number of faces drawn (-1 if the library refused). */
+static int draw_body(demo_image* im, const swarp_mat4* m, const demo_view* v,
+                     const swarp_aabb* scene, double d0, double d1, const uint8_t c[3]) {
+    swarp_polyhedron H, B;
+    swarp_status st = swarp_body_h(&v->cam, d0, d1, scene, &H);
+    if (!swarp_status_is_error(st)) st = swarp_body_from_h(&H, &v->light, scene, &B);
+    if (swarp_status_is_error(st)) return -1;
+    for (uint32_t f = 0; f < B.face_count; ++f) {
+        swarp_vec3 pts[SWARP_POLY_MAX_FACE_VERTICES];
+        uint32_t n = B.face_vertex_count[f];
+        for (uint32_t k = 0; k < n; ++k) pts[k] = B.vertices[B.face_vertices[f][k]];
+        fill_polygon(im, m, pts, (int)n, c, 0.12);
+    }
+    const uint8_t dark[3] = {(uint8_t)(c[0] * 0.6), (uint8_t)(c[1] * 0.6), (uint8_t)(c[2] * 0.6)};
+    for (uint32_t f = 0; f < B.face_count; ++f) {
+        uint32_t n = B.face_vertex_count[f];
+        for (uint32_t k = 0; k < n; ++k)
+            segment(im, m, B.vertices[B.face_vertices[f][k]], B.vertices[B.face_vertices[f][(k + 1) % n]],
+                    2, dark);
+    }
+    return (int)B.face_count;
+}
+
 int demo_third_person(demo_renderer* r, const demo_view* v, const demo_shadow* sh,
-                      const demo_main_params* base, demo_image* out) {
+                      const swarp_aabb* scene, const demo_main_params* base, demo_image* out,
+                      int* out_body_faces) {
     /* the outside camera: behind, to the right of and above the viewer */
     const swarp_camera* c = &v->cam;
     double len = sqrt(c->dir.x * c->dir.x + c->dir.y * c->dir.y + c->dir.z * c->dir.z);
@@ -124,8 +183,20 @@ int demo_third_person(demo_renderer* r, const demo_view* v, const demo_shadow* s
             segment(out, &M3, a, b, 3, split_rgb[i % 4]);
         }
     }
-    /* the view frustum (black) with the view vector (blue) */
+    /* the intersection body B of every map: per split B_i over [C_i, C_i+1]
+     * for the cascades (with the split frustum in its colour), else one B
+     * over the maps' whole range (magenta) */
+    int cascade = sh->count > 1 && (sh->select == DEMO_SELECT_DEPTH || sh->select == DEMO_SELECT_BEST);
+    int faces = 0;
     const uint8_t black[3] = {0, 0, 0}, magenta[3] = {230, 0, 230}, yellow[3] = {255, 230, 0};
+    for (int i = 0; i < (cascade ? sh->count : 1); ++i) {
+        double d0 = cascade ? sh->split[i] : sh->near, d1 = cascade ? sh->split[i + 1] : sh->far;
+        int nf = draw_body(out, &M3, v, scene, d0, d1, cascade ? split_rgb[i % 4] : magenta);
+        faces += nf > 0 ? nf : 0;
+        if (cascade) demo_draw_frustum(out, &M3, v, d0, d1, split_rgb[i % 4], 0);
+    }
+    if (out_body_faces) *out_body_faces = faces;
+    /* the view frustum (black) with the view vector (blue) */
     demo_draw_frustum(out, &M3, v, sh->near, sh->far, black, 1);
     /* the points of B (magenta) */
     for (int i = 0; i < sh->body_count; ++i) {
@@ -142,6 +213,7 @@ int demo_third_person(demo_renderer* r, const demo_view* v, const demo_shadow* s
     double x, y;
     if (project(&M3, out, target, &x, &y)) demo_image_fill(out, (int)x - 5, (int)y - 5, 11, 11, yellow);
     demo_image_label(out, 8, v->h - 22, 1,
-                     "third person: map colours (5.1), footprints, view frustum, light, points of B");
+                     cascade ? "third person: map colours (5.1), footprints, bodies B_i and split frusta, view frustum, light, points of B"
+                             : "third person: map colours (5.1), footprints, body B, view frustum, light, points of B");
     return errors;
 }
