@@ -1202,7 +1202,7 @@ static void e_stabilize_directional(swr_ctx* c) {
     swr_domain(c, SWARP_ERR_DEGENERATE);
     /* FINDING (docs/quality.md): NON_FINITE for finite arguments (e.g. LEVELS
      * with one body point of a 1e-6..7e-5 split at origin 3e6) */
-    swr_finding_status(c, SWARP_ERR_NON_FINITE);
+    if (!use_o || swr_isfin(o.level_max_size)) swr_finding_status(c, SWARP_ERR_NON_FINITE);
     swr_cond(c, (vmax3(cam.eye) + vmax3(o.origin) + f) / n);
     swr_args(c, "eye (%g %g %g) dir (%g %g %g) fovy %g aspect %g n %.17g f %.17g light (%g %g %g) np %zu res %u mode %d levels %u origin (%g %g %g) lms %g box %d",
              cam.eye.x, cam.eye.y, cam.eye.z, cam.dir.x, cam.dir.y, cam.dir.z, cam.fovy, cam.aspect, n, f, ld_.x, ld_.y, ld_.z, np, res,
