@@ -85,13 +85,11 @@ static void e_atlas_layout(swr_ctx* c) {
 static void e_atlas_lsc(swr_ctx* c) {
     SKIP_IF_MISSING(c, swarp_atlas_lsc);
     uint32_t m = swr_one_in(c, 8) ? swr_u32(c) : swr_u8(c) % 18;
-    int nul = swr_null(c);
-    if (nul) swr_expect(c, SWARP_ERR_NULL_POINTER);
-    if (m == 0 || m > SWARP_ATLAS_MAX_SPLITS) swr_expect(c, SWARP_ERR_ATLAS_SPLITS);
     double l;
-    swr_fill(&l, sizeof l);
-    swarp_status st = SWR_CALL(c, swarp_atlas_lsc(m, nul ? NULL : &l));
-    if (!swr_verdict(c, st, 1, (void*)&l, sizeof l)) return;
+    double* po = swr_out(c, &l, sizeof l, SWR_REQ);
+    if (m == 0 || m > SWARP_ATLAS_MAX_SPLITS) swr_expect(c, SWARP_ERR_ATLAS_SPLITS);
+    swarp_status st = SWR_CALL(c, swarp_atlas_lsc(m, po));
+    if (!swr_done(c, st)) return;
     swr_rec(c, "l_sc", l);
     double want = m == 1 ? 1.0 : m <= 4 ? 0.5 : m <= 9 ? 1.0 / 3 : 0.25; /* [RHS] (3.9) */
     SWR_CHECK(c, fabs(l - want) <= 2 * DBL_EPSILON * want, "l_sc(%u) = %.17g, want %.17g", m, l, want);
@@ -104,8 +102,8 @@ static void e_atlas_kernel_scale(swr_ctx* c) {
     uint32_t m = swr_one_in(c, 12) ? swr_u8(c) % 40 : 1 + swr_u8(c) % 16;
     double x0 = swr_num(c, -1, 1, brk, 3), x1 = swr_one_in(c, 10) ? x0 : swr_num(c, -1, 1, brk, 3);
     double y0 = swr_num(c, -1, 1, brk, 3), y1 = swr_one_in(c, 10) ? y0 : swr_num(c, -1, 1, brk, 3);
-    int nul = swr_null(c);
-    if (nul) swr_expect(c, SWARP_ERR_NULL_POINTER);
+    double s[2];
+    double* po = swr_out(c, s, sizeof s, SWR_REQ);
     FIN(c, r);
     FIN(c, x0);
     FIN(c, x1);
@@ -116,10 +114,8 @@ static void e_atlas_kernel_scale(swr_ctx* c) {
     if (swr_isfin(y0) && swr_isfin(y1) && !(y1 > y0)) swr_expect(c, SWARP_ERR_OUT_OF_RANGE);
     if (m == 0 || m > SWARP_ATLAS_MAX_SPLITS) swr_expect(c, SWARP_ERR_ATLAS_SPLITS);
     swr_domain(c, SWARP_ERR_OVERFLOW);
-    double s[2];
-    swr_fill(s, sizeof s);
-    swarp_status st = SWR_CALL(c, swarp_atlas_kernel_scale(r, m, x0, x1, y0, y1, nul ? NULL : s));
-    if (!swr_verdict(c, st, 1, (void*)s, sizeof s)) return;
+    swarp_status st = SWR_CALL(c, swarp_atlas_kernel_scale(r, m, x0, x1, y0, y1, po));
+    if (!swr_done(c, st)) return;
     swr_rec(c, "s_x", s[0]);
     swr_rec(c, "s_y", s[1]);
     SWR_CHECK(c, s[0] >= 0 && s[1] >= 0, "kernel scale (%g, %g) negative", s[0], s[1]);
@@ -604,13 +600,9 @@ static void gen_bias(swr_ctx* c, bias_args* b) {
     }
 }
 /* what the map and p call for; returns 1 when they are valid (references apply) */
-static int expect_map(swr_ctx* c, const bias_args* b) {
-    const swarp_bias_map* m = &b->map;
+/* the map's own fields; returns 1 when they are valid */
+static int expect_map_fields(swr_ctx* c, const swarp_bias_map* m) {
     int ok = 1;
-    /* FINDING (docs/quality.md): a normal whose length overflows (components
-     * near DBL_MAX) is refused with SWARP_ERR_ZERO_VECTOR (sw_normalize
-     * takes the length before scaling) */
-    if (fin3(&b->normal) && vmax3(b->normal) > 1e300) swr_domain(c, SWARP_ERR_ZERO_VECTOR);
     for (int i = 0; i < 4; ++i)
         if (m->_reserved[i]) swr_expect(c, SWARP_ERR_RESERVED_NONZERO), ok = 0;
     if (m->_reserved0) swr_expect(c, SWARP_ERR_RESERVED_NONZERO), ok = 0;
@@ -619,6 +611,16 @@ static int expect_map(swr_ctx* c, const bias_args* b) {
         if (!swr_isfin(m->world_to_clip.m[i])) swr_expect(c, SWARP_ERR_NON_FINITE), ok = 0;
     if (!(m->res_s > 0) || !(m->res_t > 0) || !swr_isfin(m->res_s) || !swr_isfin(m->res_t))
         swr_expect(c, SWARP_ERR_RESOLUTION), ok = 0;
+    return ok;
+}
+static int expect_map(swr_ctx* c, const bias_args* b) {
+    const swarp_bias_map* m = &b->map;
+    int ok = 1;
+    /* FINDING (docs/quality.md): a normal whose length overflows (components
+     * near DBL_MAX) is refused with SWARP_ERR_ZERO_VECTOR (sw_normalize
+     * takes the length before scaling) */
+    if (fin3(&b->normal) && vmax3(b->normal) > 1e300) swr_domain(c, SWARP_ERR_ZERO_VECTOR);
+    ok = expect_map_fields(c, m);
     if (!fin3(&b->p)) swr_expect(c, SWARP_ERR_NON_FINITE), ok = 0;
     if (ok) {
         ld h[4], mag = clip_mag(&m->world_to_clip, b->p, 3);
@@ -977,21 +979,8 @@ static void e_cascade_select_best(swr_ctx* c) {
     if (m == 0 || m > SWARP_SPLIT_MAX_COUNT) swr_expect(c, SWARP_ERR_SPLIT_COUNT);
     else if (fb >= m) swr_expect(c, SWARP_ERR_OUT_OF_RANGE);
     int ok = 1;
-    for (size_t i = 0; i < m && i < 17; ++i) {
-        bias_args t = b[i % 4];
-        t.p = p;
-        swr_ctx scratch; /* the map's own errors, without the point's BEHIND (p need not be in front of every map) */
-        (void)scratch;
-        const swarp_bias_map* mm = &t.map;
-        for (int k = 0; k < 4; ++k)
-            if (mm->_reserved[k]) swr_expect(c, SWARP_ERR_RESERVED_NONZERO), ok = 0;
-        if (mm->_reserved0) swr_expect(c, SWARP_ERR_RESERVED_NONZERO), ok = 0;
-        if ((int)mm->depth < 0 || (int)mm->depth > 2) swr_expect(c, SWARP_ERR_UNKNOWN_ENUM), ok = 0;
-        for (int k = 0; k < 16; ++k)
-            if (!swr_isfin(mm->world_to_clip.m[k])) swr_expect(c, SWARP_ERR_NON_FINITE), ok = 0;
-        if (!(mm->res_s > 0) || !(mm->res_t > 0) || !swr_isfin(mm->res_s) || !swr_isfin(mm->res_t))
-            swr_expect(c, SWARP_ERR_RESOLUTION), ok = 0;
-    }
+    for (size_t i = 0; i < m && i < 17; ++i) /* the maps' own errors (p need not be in front of every map) */
+        ok &= expect_map_fields(c, &maps[i]);
     if (!fin3(&p)) swr_expect(c, SWARP_ERR_NON_FINITE), ok = 0;
     swr_domain(c, SWARP_ERR_SINGULAR), swr_domain(c, SWARP_ERR_NON_FINITE), swr_domain(c, SWARP_ERR_BEHIND_PROJECTION);
     if (!swr_done(c, SWR_CALL(c, swarp_cascade_select_best(pm, m, pp, fb, pi, pl)))) return;

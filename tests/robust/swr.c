@@ -202,9 +202,7 @@ static void known_as(swr_ctx* c, const char* fmt, va_list ap) {
     }
     c->finding++;
 }
-void swr_fail(swr_ctx* c, const char* fmt, ...) {
-    va_list ap;
-    va_start(ap, fmt);
+static void vfail(swr_ctx* c, const char* fmt, va_list ap) {
     if (c->known_as) known_as(c, fmt, ap);
     else if (c->extreme) {
         if (!c->finding) vsnprintf(c->finding_msg, sizeof c->finding_msg, fmt, ap);
@@ -213,6 +211,11 @@ void swr_fail(swr_ctx* c, const char* fmt, ...) {
         if (!c->failed) vsnprintf(c->msg, sizeof c->msg, fmt, ap);
         c->failed++;
     }
+}
+void swr_fail(swr_ctx* c, const char* fmt, ...) {
+    va_list ap;
+    va_start(ap, fmt);
+    vfail(c, fmt, ap);
     va_end(ap);
 }
 /* A structural failure (status, untouched outputs): strict on every input. */
@@ -241,17 +244,10 @@ void swr_known(swr_ctx* c, const char* fmt, ...) {
     va_end(ap);
 }
 
-void swr_fail_acc(swr_ctx* c, const char* fmt, ...) {
+void swr_fail_acc(swr_ctx* c, const char* fmt, ...) { /* the same rule as swr_fail (kept as a name for accuracy checks) */
     va_list ap;
     va_start(ap, fmt);
-    if (c->known_as) known_as(c, fmt, ap);
-    else if (c->extreme) {
-        if (!c->finding) vsnprintf(c->finding_msg, sizeof c->finding_msg, fmt, ap);
-        c->finding++;
-    } else {
-        if (!c->failed) vsnprintf(c->msg, sizeof c->msg, fmt, ap);
-        c->failed++;
-    }
+    vfail(c, fmt, ap);
     va_end(ap);
 }
 
