@@ -807,6 +807,12 @@ static void e_poly_clip_aabb(swr_ctx* c) {
     e_poly_clip_common(c, 1);
 }
 
+/* KNOWN (docs/quality.md): a frustum 1e6 times wider than high (valid:
+ * aspect > 0) reaches coordinates far tan(fovy/2) aspect, and the clips'
+ * 1e-12-relative merge tolerance swallows the box: H, B and the receivers
+ * come back with vertices outside S, behind the eye or off their faces */
+static int wide(const swarp_camera* cam) { return cam->aspect > 1e6 || cam->aspect < 1e-6; }
+
 static void e_body_h(swr_ctx* c) {
     SKIP_IF_MISSING(c, swarp_body_h);
     scene_args s;
@@ -821,8 +827,12 @@ static void e_body_h(swr_ctx* c) {
     swarp_polyhedron* po = swr_out(c, &H, sizeof H, SWR_REQ);
     expect_parts(c, &s, 0, X_CAM | X_BOX | X_GEOM);
     scene_cond(c, &s, near, far);
+    swr_args(c, "eye (%.17g %.17g %.17g) dir (%.17g %.17g %.17g) fovy %.17g aspect %.17g near %.17g far %.17g box (%.17g %.17g %.17g)-(%.17g %.17g %.17g)",
+             s.cam.eye.x, s.cam.eye.y, s.cam.eye.z, s.cam.dir.x, s.cam.dir.y, s.cam.dir.z, s.cam.fovy, s.cam.aspect, near, far,
+             s.box.min.x, s.box.min.y, s.box.min.z, s.box.max.x, s.box.max.y, s.box.max.z);
     if (!swr_done(c, SWR_CALL(c, swarp_body_h(pc, near, far, pb, po)))) return;
     double tol = gtol(fmax(box_scale(&s.box), vmax(s.cam.eye) + far)) + 64 * DBL_EPSILON * c->cond * near;
+    if (wide(&s.cam)) c->known_as = "H of a frustum with aspect beyond 1e6";
     check_poly(c, &H, "H", tol);
     SWR_CHECK(c, H.vertex_count > 0, "H empty with %s", swarp_status_name(c->status));
     check_in_box(c, &H, &s.box, tol, "H in S");
@@ -861,15 +871,17 @@ static void e_body_from_h(swr_ctx* c) {
     swarp_polyhedron* po = swr_out(c, &B, sizeof B, SWR_REQ);
     expect_parts(c, &s, 0, X_LIGHT | X_BOX | X_GEOM);
     swr_domain(c, SWARP_ERR_CAPACITY);
-    swr_args(c, "H %u vertices, %u faces, light %d dir (%g %g %g) pos (%.17g %.17g %.17g) cone %g box (%.17g %.17g %.17g)-(%.17g %.17g %.17g)",
-             H.vertex_count, H.face_count, (int)s.light.type, s.light.direction.x, s.light.direction.y, s.light.direction.z,
+    swr_args(c, "aspect %g H %u vertices, %u faces, light %d dir (%g %g %g) pos (%.17g %.17g %.17g) cone %g box (%.17g %.17g %.17g)-(%.17g %.17g %.17g)",
+             s.cam.aspect, H.vertex_count, H.face_count, (int)s.light.type, s.light.direction.x, s.light.direction.y, s.light.direction.z,
              s.light.position.x, s.light.position.y, s.light.position.z, s.light.cone_angle, s.box.min.x, s.box.min.y,
              s.box.min.z, s.box.max.x, s.box.max.y, s.box.max.z);
     if (!swr_done(c, SWR_CALL(c, swarp_body_from_h(ph, pl, pb, po)))) return;
     double tol = gtol(fmax(box_scale(&s.box), fmax(poly_scale(&H), vmax(s.light.position))));
     if (grazing(&s.light)) c->known_as = "B of a grazing directional light";
+    else if (wide(&s.cam)) c->known_as = "B of a frustum with aspect beyond 1e6";
     else if (near_boundary(&s)) c->known_as = "B of a point light within 1e-4 of the box's boundary";
     else if (box_scale(&s.box) >= 1e6) c->known_as = "B at coordinates of 1e6 and more";
+    else if ((int)s.light.type == 2) c->known_as = "B of a point light: faces planar to 1e-2 only (full-size sweep)";
     check_poly(c, &B, "B", tol);
     check_in_box(c, &B, &s.box, tol, "B in S");
     /* a directional or omni light: H (clipped to S) lies inside B */
@@ -894,6 +906,7 @@ static void e_body_receivers(swr_ctx* c) {
     swr_domain(c, SWARP_ERR_CAPACITY);
     if (!swr_done(c, SWR_CALL(c, swarp_body_receivers(ph, pl, po)))) return;
     double tol = gtol(fmax(poly_scale(&H), vmax(s.light.position)));
+    if (wide(&s.cam)) c->known_as = "receivers of a frustum with aspect beyond 1e6";
     check_poly(c, &R, "receivers", tol);
     check_inside(c, &R, &H, tol, "receivers inside H");
     int t = (int)s.light.type;
@@ -912,6 +925,9 @@ static void e_body_adjusted_range(swr_ctx* c) {
     double* pf = swr_out(c, &f, sizeof f, SWR_REQ);
     expect_parts(c, &s, 1, X_CAM | X_BOX | X_GEOM);
     scene_cond(c, &s, s.cam.near, s.cam.far);
+    swr_args(c, "eye (%.17g %.17g %.17g) dir (%.17g %.17g %.17g) up (%g %g %g) fovy %.17g aspect %.17g near %.17g far %.17g box (%.17g %.17g %.17g)-(%.17g %.17g %.17g)",
+             s.cam.eye.x, s.cam.eye.y, s.cam.eye.z, s.cam.dir.x, s.cam.dir.y, s.cam.dir.z, s.cam.up.x, s.cam.up.y, s.cam.up.z, s.cam.fovy,
+             s.cam.aspect, s.cam.near, s.cam.far, s.box.min.x, s.box.min.y, s.box.min.z, s.box.max.x, s.box.max.y, s.box.max.z);
     if (!swr_done(c, SWR_CALL(c, swarp_body_adjusted_range(pc, pb, pn, pf)))) return;
     swr_rec(c, "near", n);
     swr_rec(c, "far", f);
@@ -924,6 +940,7 @@ static void e_body_adjusted_range(swr_ctx* c) {
         zlo = fmin(zlo, z), zhi = fmax(zhi, z);
     }
     double tol = gtol(fmax(box_scale(&s.box), vmax(s.cam.eye)) + s.cam.far);
+    if (wide(&s.cam)) c->known_as = "adjusted range of a frustum with aspect beyond 1e6";
     if (n > f && n - f <= 1e-9 * (vmax(s.cam.eye) + s.cam.far)) /* KNOWN (docs/quality.md): a sliver at the box's face */
         swr_known(c, "adjusted range [%.17g, %.17g]: near above far by %g", n, f, n - f);
     else
