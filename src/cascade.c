@@ -321,6 +321,8 @@ SWARP_API swarp_status swarp_cascade_setup(const swarp_camera* cam, const swarp_
     /* the setup's enums up front: the split path overrides technique and
      * param per split (user warps), so a bad value could otherwise pass
      * (found by the hard-case sweep: SWARP_OK with technique 367000474) */
+    if (!sw_reserved_zero(o.setup._reserved, 2) || o.setup._pad0 != 0 || o.setup._pad1 != 0)
+        return SWARP_ERR_RESERVED_NONZERO; /* the stabilised path never reaches swarp_setup's check */
     if ((uint32_t)o.setup.technique > (uint32_t)SWARP_TECHNIQUE_PSM ||
         (uint32_t)o.setup.param > (uint32_t)SWARP_WARP_PARAM_USER ||
         (uint32_t)o.setup.center > (uint32_t)SWARP_WARP_CENTER_NEAREST_VERTEX ||

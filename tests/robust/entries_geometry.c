@@ -1273,9 +1273,12 @@ static void e_cascade_setup(swr_ctx* c) {
     if (!psp && cap == 0) swr_domain(c, SWARP_ERR_CAPACITY);
     swr_domain(c, SWARP_ERR_SPLIT_EMPTY), swr_domain(c, SWARP_ERR_NEAR_FAR), swr_domain(c, SWARP_ERR_NON_FINITE);
     scene_cond(c, &s, s.cam.near, s.cam.far);
-    swr_args(c, "K %u scheme %d stabilize %d warp_per_split %d technique %d param %d center %d depth %d", K, (int)o.split.scheme,
-             (int)o.stabilize.mode, (int)o.warp_per_split, (int)o.setup.technique, (int)o.setup.param, (int)o.setup.center,
-             (int)o.setup.depth_range);
+    swr_args(c, "K %u scheme %d stabilize %d warp_per_split %d technique %d param %d center %d depth %d reserved: cam %u %u %u %u light %u %u %u %u %u setup %u %u split %u %u %u %u cascade %u %u %u use_o %d",
+             K, (int)o.split.scheme, (int)o.stabilize.mode, (int)o.warp_per_split, (int)o.setup.technique, (int)o.setup.param,
+             (int)o.setup.center, (int)o.setup.depth_range, s.cam._reserved[0], s.cam._reserved[1], s.cam._reserved[2],
+             s.cam._reserved[3], s.light._reserved0, s.light._reserved[0], s.light._reserved[1], s.light._reserved[2],
+             s.light._reserved[3], o.setup._reserved[0], o.setup._reserved[1], o.split._reserved[0], o.split._reserved[1],
+             o.split._reserved[2], o.split._reserved[3], o._reserved[0], o._reserved[1], o._reserved[2], use_o);
     swarp_status st = SWR_CALL(c, swarp_cascade_setup(pc, pl, pb, use_o ? &o : NULL, pr, psp, cap, pcount));
     if (st == SWARP_ERR_CAPACITY) {
         SWR_CHECK(c, count == K, "CAPACITY with count %zu, K %u", count, K);

@@ -961,8 +961,11 @@ static int covers(const swarp_bias_map* m, swarp_vec3 p) {
     ld h[4];
     clip_of(&m->world_to_clip, p, h);
     if (!(h[3] > 0)) return h[3] > -1e-9L * (fabsl(h[0]) + fabsl(h[1])) ? -1 : 0;
-    ld lo = (int)m->depth == 2 ? 0 : -h[3], e = 1e-9L * h[3];
-    ld v[3] = {fabsl(h[0]) - h[3], fabsl(h[1]) - h[3], h[2] > h[3] ? h[2] - h[3] : lo - h[2]};
+    /* the margin: 1e-9 of w plus the rounding of the rows' double evaluation */
+    ld mag = 0;
+    for (int r = 0; r < 4; ++r) mag = fmaxl(mag, clip_mag(&m->world_to_clip, p, r));
+    ld lo = (int)m->depth == 2 ? 0 : -h[3], e = 1e-9L * h[3] + 64 * (ld)DBL_EPSILON * mag;
+    ld v[3] = {fabsl(h[0]) - h[3], fabsl(h[1]) - h[3], fmaxl(h[2] - h[3], lo - h[2])};
     ld worst = fmaxl(v[0], fmaxl(v[1], v[2]));
     return worst > e ? 0 : worst < -e ? 1 : -1;
 }
