@@ -1134,11 +1134,11 @@ static void e_stabilize_snap_matrix(swr_ctx* c) {
         {   /* before the snap: half-way between two corners is a tie the rounding decides */
             ld h0 = h - shift, u0 = (h0 / w + 1) * res[a] / 2;
             ld hm = fabsl((ld)keep.m[a] * o.x) + fabsl((ld)keep.m[4 + a] * o.y) + fabsl((ld)keep.m[8 + a] * o.z) + fabsl((ld)keep.m[12 + a]);
-            if (fabsl(u0 - floorl(u0) - 0.5L) < 1e-6L + 64 * DBL_EPSILON * hm / fabsl((ld)w) * res[a]) c->rounding_edge = 1;
+            if (fabsl(u0 - floorl(u0) - 0.5L) < 1e-6L + 64 * DBL_EPSILON * (hm / fabsl((ld)w) + 1) * res[a]) c->rounding_edge = 1;
         }
         /* the origin's clip x is resolved to eps times the sum of its terms */
         ld hmag = fabsl((ld)out.m[a] * o.x) + fabsl((ld)out.m[4 + a] * o.y) + fabsl((ld)out.m[8 + a] * o.z) + fabsl((ld)out.m[12 + a]);
-        ld lin = hmag / fabsl((ld)w) * res[a];
+        ld lin = (hmag / fabsl((ld)w) + 1) * res[a]; /* (x/w + 1) res/2: the + 1 rounds too */
         SWR_CHECK_ACC(c, fabsl(shift) <= fabsl((ld)w) / res[a] * (1 + 1e-9L) + 16 * DBL_EPSILON * hmag, "axis %d: shifted by %Lg > half a texel", a,
                       shift);
         SWR_CHECK_ACC(c, fabsl(u - roundl(u)) <= 1e-6L + 8 * DBL_EPSILON * lin, "axis %d: the origin at texel %.17Lg, not a corner", a, u);
@@ -1202,6 +1202,7 @@ static void e_stabilize_directional(swr_ctx* c) {
     /* FINDING (docs/quality.md): NON_FINITE for finite arguments (e.g. LEVELS
      * with one body point of a 1e-6..7e-5 split at origin 3e6) */
     if (!use_o || swr_isfin(o.level_max_size)) swr_finding_status(c, SWARP_ERR_NON_FINITE);
+    if (vmax3(cam.eye) > 1e300 || f > 1e300) swr_domain(c, SWARP_ERR_NON_FINITE); /* an overflow before the other checks */
     swr_cond(c, (vmax3(cam.eye) + vmax3(o.origin) + f) / n);
     swr_args(c, "eye (%g %g %g) dir (%g %g %g) fovy %g aspect %g n %.17g f %.17g light (%g %g %g) np %zu res %u mode %d levels %u origin (%g %g %g) lms %g box %d",
              cam.eye.x, cam.eye.y, cam.eye.z, cam.dir.x, cam.dir.y, cam.dir.z, cam.fovy, cam.aspect, n, f, ld_.x, ld_.y, ld_.z, np, res,
