@@ -898,7 +898,8 @@ static void e_bias_depth_per_world(swr_ctx* c) {
     jac_along(c, &b.map, b.p, L, J); /* minus the derivative of d along L, exactly */
     ld h[4];
     clip_of(&b.map.world_to_clip, b.p, h);
-    swr_close(c, "depth per world", k, -J[2], 1e-6 + 64 * DBL_EPSILON * c->cond, 1e-9 * (fabsl(h[2] / h[3]) + 1) / (vmax3(b.p) + 1));
+    if (64 * DBL_EPSILON * c->cond < 1) /* else numerically singular: no claim */
+        swr_close(c, "depth per world", k, -J[2], 1e-6 + 64 * DBL_EPSILON * c->cond, 1e-9 * (fabsl(h[2] / h[3]) + 1) / (vmax3(b.p) + 1));
 }
 
 static void e_bias_receiver_plane(swr_ctx* c) {
@@ -932,6 +933,7 @@ static void e_bias_receiver_plane(swr_ctx* c) {
     /* d_a = g_s s_a + g_t t_a, d_b = g_s s_b + g_t t_b (Cramer) */
     ld gs = (Ja[2] * Jb[1] - Jb[2] * Ja[1]) / det, gt = (Ja[0] * Jb[2] - Jb[0] * Ja[2]) / det;
     double fl = 1e-9 * (double)(fabsl(gs) + fabsl(gt)) + 1e-300;
+    if (64 * DBL_EPSILON * c->cond >= 1) return; /* numerically singular: no claim */
     swr_close(c, "dd/ds", g[0], gs, 1e-6 + 64 * DBL_EPSILON * c->cond, fl);
     swr_close(c, "dd/dt", g[1], gt, 1e-6 + 64 * DBL_EPSILON * c->cond, fl);
 }
