@@ -864,6 +864,10 @@ static int grazing(const swarp_light* L) {
     return 0;
 }
 
+/* a directional light with an exactly zero component: parallel to two faces of the box */
+static int axis_parallel(const swarp_light* L) {
+    return L->type != SWARP_LIGHT_POINT && (L->direction.x == 0 || L->direction.y == 0 || L->direction.z == 0);
+}
 /* a point light within 1e-4 (relative to the box) of one of its face planes */
 static int near_boundary(const scene_args* s) {
     if (s->light.type != SWARP_LIGHT_POINT) return 0;
@@ -892,6 +896,7 @@ static void e_body_from_h(swr_ctx* c) {
     if (!swr_done(c, SWR_CALL(c, swarp_body_from_h(ph, pl, pb, po)))) return;
     double tol = gtol(fmax(box_scale(&s.box), fmax(poly_scale(&H), vmax(s.light.position))));
     if (grazing(&s.light)) c->known_as = "B of a grazing directional light";
+    else if (axis_parallel(&s.light)) c->known_as = "B of a directional light parallel to a box face (a zero component)";
     else if (wide(&s.cam)) c->known_as = "B of a frustum with aspect beyond 1e6";
     else if (near_boundary(&s)) c->known_as = "B of a point light within 1e-4 of the box's boundary";
     else if (box_scale(&s.box) >= 1e6) c->known_as = "B at coordinates of 1e6 and more";

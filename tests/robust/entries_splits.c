@@ -925,7 +925,7 @@ static void e_bias_receiver_plane(swr_ctx* c) {
         if (det == 0) swr_expect(c, SWARP_ERR_DEGENERATE);
         if (fabsl(det) < 1e-6L * sc) c->rounding_edge = 1;
         swr_domain(c, SWARP_ERR_DEGENERATE); /* edge-on within the library's 1e-12 */
-        swr_cond(c, (double)(sc / fabsl(det)));
+        swr_cond(c, (double)(sc / fabsl(det)) * (c->cond > 1 ? c->cond : 1)); /* the solve amplifies the derivatives' errors */
     }
     if (!swr_done(c, SWR_CALL(c, swarp_bias_receiver_plane(pm, pp, pa, pb, pg)))) return;
     swr_rec(c, "dd/ds", g[0]), swr_rec(c, "dd/dt", g[1]);
@@ -934,8 +934,12 @@ static void e_bias_receiver_plane(swr_ctx* c) {
     ld gs = (Ja[2] * Jb[1] - Jb[2] * Ja[1]) / det, gt = (Ja[0] * Jb[2] - Jb[0] * Ja[2]) / det;
     double fl = 1e-9 * (double)(fabsl(gs) + fabsl(gt)) + 1e-300;
     if (64 * DBL_EPSILON * c->cond >= 1) return; /* numerically singular: no claim */
-    swr_close(c, "dd/ds", g[0], gs, 1e-6 + 64 * DBL_EPSILON * c->cond, fl);
-    swr_close(c, "dd/dt", g[1], gt, 1e-6 + 64 * DBL_EPSILON * c->cond, fl);
+    /* Cramer's numerators cancel too (a gradient near 0): their own factor */
+    ld ns = fabsl(Ja[2] * Jb[1] - Jb[2] * Ja[1]), nt = fabsl(Ja[0] * Jb[2] - Jb[0] * Ja[2]);
+    double ks = ns > 0 ? (double)((fabsl(Ja[2] * Jb[1]) + fabsl(Jb[2] * Ja[1])) / ns) : 1e300;
+    double kt = nt > 0 ? (double)((fabsl(Ja[0] * Jb[2]) + fabsl(Jb[0] * Ja[2])) / nt) : 1e300;
+    swr_close(c, "dd/ds", g[0], gs, 1e-6 + 64 * DBL_EPSILON * c->cond * ks, fl);
+    swr_close(c, "dd/dt", g[1], gt, 1e-6 + 64 * DBL_EPSILON * c->cond * kt, fl);
 }
 
 static void e_cascade_view_depth(swr_ctx* c) {
@@ -1019,7 +1023,7 @@ static void e_cascade_select_best(swr_ctx* c) {
         return;
     }
     SWR_CHECK(c, cov[idx] == 1, "map %u chosen but it does not cover p", idx);
-    for (size_t i = 0; i < m; ++i)
+    for (size_t i = 0; i < m && isfinite((double)L[idx]); ++i) /* (L = inf: no reference for the chosen map) */
         if (cov[i] == 1 && i != idx)
             SWR_CHECK_ACC(c, L[i] >= L[idx] * (1 - 1e-6L), "map %zu has the finer texel (%Lg < %Lg of map %u)", i, L[i], L[idx], idx);
     if (pl && isfinite((double)L[idx]))
