@@ -903,7 +903,7 @@ typedef struct swarp_setup_result {
 /** @brief The one call: H = V ∩ S, adjusted near/far [RHS] §3.3.1, B
  *  [RHS] §3.1.1, light view with light-space alignment, the technique's
  *  warp ([RHS] §3.2.1 / [KOZ]), focusing [RHS] (3.1) and the error model's
- *  prediction [RHS] (2.3)-(2.8).  No allocation; about 2-2.5 µs per call
+ *  prediction [RHS] (2.3)-(2.8).  No allocation; about 2 µs per call
  *  (docs/performance.md).
  *  @param[in] cam, light, scene  (scene: the box S of casters and receivers)
  *  @param[in] opts     NULL or zeroed for defaults
@@ -918,7 +918,11 @@ typedef struct swarp_setup_result {
  *          SWARP_ERR_LIGHT_INSIDE_BODY, SWARP_ERR_BOX_INVERTED,
  *          SWARP_ERR_BOX_DEGENERATE, SWARP_ERR_CAPACITY, and the argument
  *          errors (NULL, NON_FINITE, FOV, NEAR_FAR, ZERO_VECTOR, DEGENERATE,
- *          UNKNOWN_ENUM, RESERVED_NONZERO, OUT_OF_RANGE). */
+ *          UNKNOWN_ENUM, RESERVED_NONZERO, OUT_OF_RANGE); SWARP_ERR_DEGENERATE
+ *          also when the map is finer than world coordinates resolve (B far
+ *          below the rounding of coordinates of size |eye|: its world-space
+ *          matrix cannot be evaluated in double).  Computed relative to the
+ *          eye (the translation is folded into light_view and matrix). */
 SWARP_API swarp_status swarp_setup(const swarp_camera* cam, const swarp_light* light,
                                    const swarp_aabb* scene, const swarp_setup_options* opts,
                                    swarp_setup_result* out, swarp_vec3* out_points,

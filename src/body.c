@@ -131,7 +131,7 @@ static int sw_loops_tidy(const swarp_polyhedron* H) {
  * vertex of H and of its copy (or the apex) is written and the caller
  * finalizes. */
 static swarp_status sw_extend(const swarp_polyhedron* H, swarp_vec3 u, double T, const swarp_vec3* apex,
-                              swarp_polyhedron* out, int* finalized) {
+                              int h_tidy, swarp_polyhedron* out, int* finalized) {
     const uint32_t nv = H->vertex_count;
     int front[SWARP_POLY_MAX_FACES];
     int any_front = 0;
@@ -156,7 +156,7 @@ static swarp_status sw_extend(const swarp_polyhedron* H, swarp_vec3 u, double T,
     uint32_t tv = apex ? nv + 1 : 2 * nv;
     if (tv > SWARP_POLY_MAX_VERTICES) return SWARP_ERR_CAPACITY;
     uint8_t id[SWARP_POLY_MAX_VERTICES];
-    if (!apex && sw_loops_tidy(H)) {
+    if (!apex && (h_tidy || sw_loops_tidy(H))) {
         uint8_t on_back[SWARP_POLY_MAX_VERTICES], on_front[SWARP_POLY_MAX_VERTICES];
         memset(on_back, 0, nv);
         memset(on_front, 0, nv);
@@ -271,11 +271,44 @@ swarp_status sw_body_h(const swarp_camera* cam, double near, double far, const s
     /* box first: it is usually the smaller, and clipping the frustum by the
      * box's planes keeps the exact axis planes */
     swarp_polyhedron V;
+    /* H lies in S: a far plane beyond every corner of S (say far = 1e308,
+     * whose corners overflow) is moved in to twice the deepest corner's
+     * view depth, where it still cuts nothing of S; S wholly before the near
+     * plane leaves H empty */
+    {
+        swarp_vec3 f = {0, 0, -1};
+        sw_gnormalize(cam->dir, &f);
+        double zbox = -INFINITY;
+        for (int i = 0; i < 8; ++i) {
+            swarp_vec3 c = sw_v3((i & 1) ? box->max.x : box->min.x, (i & 2) ? box->max.y : box->min.y,
+                                 (i & 4) ? box->max.z : box->min.z);
+            zbox = sw_max(zbox, sw_dot(sw_sub(c, cam->eye), f));
+        }
+        if (zbox < near) return SWARP_ERR_BODY_EMPTY; /* S lies wholly before the near plane */
+        if (far > 2.0 * zbox) far = 2.0 * zbox;
+    }
     swarp_status s = sw_poly_from_frustum(cam, near, far, &V); /* the callers checked cam, near, far */
     if (s != SWARP_OK) return s;
     s = sw_poly_clip_box(&V, box, H);
     if (s != SWARP_OK) return s;
     if (H->vertex_count == 0) return SWARP_ERR_BODY_EMPTY;
+    return SWARP_OK;
+}
+
+/* H = V ∩ S computed with the eye at the origin (as swarp_setup works, see
+ * src/setup.c: coordinates of the size of H, not of the world) and its view
+ * depth range [zmin, zmax]; H_rel is in those camera-relative coordinates. */
+swarp_status sw_body_h_eye(const swarp_camera* cam, double near, double far, const swarp_aabb* box,
+                           swarp_polyhedron* H_rel, double* zmin, double* zmax) {
+    swarp_camera rc = *cam;
+    rc.eye = sw_v3(0.0, 0.0, 0.0);
+    swarp_aabb rb = {sw_sub(box->min, cam->eye), sw_sub(box->max, cam->eye)};
+    if (!sw_finite3(&rb.min) || !sw_finite3(&rb.max)) return SWARP_ERR_NON_FINITE;
+    swarp_status s = sw_body_h(&rc, near, far, &rb, H_rel);
+    if (s != SWARP_OK) return s;
+    swarp_vec3 f, r, u;
+    sw_camera_basis(&rc, &f, &r, &u);
+    sw_depth_range_of(H_rel, rc.eye, f, zmin, zmax);
     return SWARP_OK;
 }
 
@@ -321,8 +354,23 @@ static void sw_sweep_clip_order(swarp_vec3 u, const swarp_aabb* box, uint8_t ord
     }
 }
 
+static swarp_status sw_body_from_h_ex(const swarp_polyhedron* H, const swarp_light* light, const swarp_aabb* box,
+                                      int h_tidy, swarp_polyhedron* B);
+
 swarp_status sw_body_from_h(const swarp_polyhedron* H, const swarp_light* light, const swarp_aabb* box,
                             swarp_polyhedron* B) {
+    return sw_body_from_h_ex(H, light, box, 0, B);
+}
+
+/* H built by the clipper (sw_body_h and clips of it): its loops are tidy
+ * (no index next to itself, at least 3 entries), see sw_loops_tidy. */
+swarp_status sw_body_from_h_clipped(const swarp_polyhedron* H, const swarp_light* light, const swarp_aabb* box,
+                                    swarp_polyhedron* B) {
+    return sw_body_from_h_ex(H, light, box, 1, B);
+}
+
+static swarp_status sw_body_from_h_ex(const swarp_polyhedron* H, const swarp_light* light, const swarp_aabb* box,
+                                      int h_tidy, swarp_polyhedron* B) {
     swarp_polyhedron M;
     swarp_status s;
     /* the in-plane construction only when H is flat AND the light lies in
@@ -345,7 +393,7 @@ swarp_status sw_body_from_h(const swarp_polyhedron* H, const swarp_light* light,
         swarp_vec3 l = light->position;
         int finalized = 0;
         s = flat ? sw_flat_extend(H, sw_v3(0, 0, 0), 0.0, &l, &M)
-                 : sw_extend(H, sw_v3(0, 0, 0), 0.0, &l, &M, &finalized);
+                 : sw_extend(H, sw_v3(0, 0, 0), 0.0, &l, h_tidy, &M, &finalized);
         if (s != SWARP_OK) return s;
         sw_poly_finalize(&M, H->vertex_count, 0.0); /* the apex may sit on a vertex of H */
         s = sw_poly_clip_box(&M, box, B);
@@ -361,7 +409,7 @@ swarp_status sw_body_from_h(const swarp_polyhedron* H, const swarp_light* light,
         double diag = sw_glen(sw_sub(box->max, box->min));
         double T = 2.0 * diag + 1e-300;
         int finalized = 0;
-        s = flat ? sw_flat_extend(H, u, T, NULL, &M) : sw_extend(H, u, T, NULL, &M, &finalized);
+        s = flat ? sw_flat_extend(H, u, T, NULL, &M) : sw_extend(H, u, T, NULL, h_tidy, &M, &finalized);
         if (s != SWARP_OK) return s;
         /* the translated copies are T > diag(S) away from H and as far apart
          * as H's vertices: nothing to merge, only faces to tidy (sw_extend
@@ -438,13 +486,13 @@ SWARP_API swarp_status swarp_body_adjusted_range(const swarp_camera* cam, const 
     if (!cam || !scene || !out_near || !out_far) return SWARP_ERR_NULL_POINTER;
     swarp_status s = sw_check_camera(cam);
     if (s != SWARP_OK) return s;
-    swarp_polyhedron H;
-    s = swarp_body_h(cam, cam->near, cam->far, scene, &H);
+    s = sw_check_box(scene);
     if (s != SWARP_OK) return s;
-    swarp_vec3 f, r, u;
-    sw_camera_basis(cam, &f, &r, &u);
+    /* camera-relative, as swarp_setup: the same adjusted range */
+    swarp_polyhedron H;
     double mn, mx;
-    sw_depth_range_of(&H, cam->eye, f, &mn, &mx);
+    s = sw_body_h_eye(cam, cam->near, cam->far, scene, &H, &mn, &mx);
+    if (s != SWARP_OK) return s;
     /* H ⊂ V: clamp rounding to the frustum's own range */
     *out_near = sw_max(mn, cam->near);
     *out_far = sw_min(sw_max(mx, *out_near), cam->far);

@@ -411,10 +411,12 @@ SWARP_API swarp_status swarp_cascade_setup(const swarp_camera* cam, const swarp_
             st = swarp_mindepth_near(cam->near, cam->far, o.setup.min_depth, NULL, &cam_near);
             if (swarp_status_is_error(st)) return st;
         }
-        if ((st = sw_body_h(cam, cam_near, cam->far, scene, &H)) != SWARP_OK) return st;
-        sw_camera_basis(cam, &cam_f, &cam_r, &cam_u);
+        /* H and the adjusted range camera-relative, as swarp_setup computes
+         * them (the same view range); H then back in world coordinates */
         double n_adj, f_adj;
-        sw_depth_range_of(&H, cam->eye, cam_f, &n_adj, &f_adj);
+        if ((st = sw_body_h_eye(cam, cam_near, cam->far, scene, &H, &n_adj, &f_adj)) != SWARP_OK) return st;
+        sw_poly_translate(&H, cam->eye);
+        sw_camera_basis(cam, &cam_f, &cam_r, &cam_u);
         n_adj = sw_max(n_adj, cam_near);
         f_adj = sw_min(sw_max(f_adj, n_adj), cam->far);
         if (smode != SWARP_STABILIZE_NONE) {

@@ -84,6 +84,13 @@ SWARP_API swarp_status swarp_focus_light_view(const swarp_camera* cam, const swa
 
 /* ---- A_fit ------------------------------------------------------------------ */
 
+/* An extent below this fraction of its coordinates' magnitude or of the
+ * widest extent is flat (SWARP_INFO_FLAT_EXTENT).  Coordinates carry a few
+ * eps (1e-16) of the magnitudes they were computed from; 1e-12 leaves a
+ * factor 1e4 for that, and an aspect ratio of 1e12 is far beyond what a
+ * shadow map (or a float depth buffer, 2^-24) resolves. */
+#define SW_FIT_FLAT_REL 1e-12
+
 static int sw_extent(const swarp_mat4* m, const swarp_vec3* pts, size_t n, double lo[3], double hi[3]) {
     double lx = INFINITY, ly = INFINITY, lz = INFINITY, hx = -INFINITY, hy = -INFINITY, hz = -INFINITY;
     int ok = 1;
@@ -122,9 +129,12 @@ swarp_status sw_focus_fit(const swarp_mat4* m, const swarp_vec3* pts, size_t n, 
     if (!(wmax > 0.0)) wmax = 1.0;
     swarp_status st = SWARP_OK;
     for (int k = 0; k < 3; ++k) {
-        /* below 1e-14 of the value's magnitude the width is rounding noise */
-        double mag = fmax(fabs(lo[k]), fabs(hi[k]));
-        if (!(w[k] > 1e-14 * mag) || !(w[k] > 0.0)) {
+        /* below SW_FIT_FLAT_REL of the value's magnitude, or of the widest
+         * extent, the width is rounding noise: fitted, the noise would fill
+         * the map and points of B computed along another path (the final
+         * matrix) land outside it */
+        double mag = fmax(fmax(fabs(lo[k]), fabs(hi[k])), wmax);
+        if (!(w[k] > SW_FIT_FLAT_REL * mag) || !(w[k] > 0.0)) {
             double c = 0.5 * (lo[k] + hi[k]);
             lo[k] = c - 0.5 * wmax;
             hi[k] = c + 0.5 * wmax;

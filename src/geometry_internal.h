@@ -58,6 +58,15 @@ swarp_status sw_body_h(const swarp_camera* cam, double near, double far, const s
                        swarp_polyhedron* H);
 swarp_status sw_body_from_h(const swarp_polyhedron* H, const swarp_light* light,
                             const swarp_aabb* box, swarp_polyhedron* B);
+/* the same for an H the clipper built (its face loops are tidy) */
+swarp_status sw_body_from_h_clipped(const swarp_polyhedron* H, const swarp_light* light, const swarp_aabb* box,
+                                    swarp_polyhedron* B);
+/* H = V ∩ S with the eye at the origin (H_rel camera-relative) and its view
+ * depth range: the adjusted near/far of swarp_setup (src/body.c) */
+swarp_status sw_body_h_eye(const swarp_camera* cam, double near, double far, const swarp_aabb* box,
+                           swarp_polyhedron* H_rel, double* zmin, double* zmax);
+/* p + t (vertices and planes) */
+void sw_poly_translate(swarp_polyhedron* p, swarp_vec3 t);
 /* P ∩ L for a spot light (the square pyramid around its cone), in place */
 swarp_status sw_clip_light_pyramid(swarp_polyhedron* P, const swarp_light* light);
 /* min/max of dot(p - eye, f) over the vertices */

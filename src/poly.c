@@ -198,7 +198,9 @@ static void sw_poly_merge_on_plane(swarp_polyhedron* p, const uint8_t* on, uint3
         for (uint32_t b = 0; b < a; ++b) {
             if (into[b] != b) continue; /* merged itself: compare with survivors only */
             swarp_vec3 w = p->vertices[on[b]];
-            double dx = v.x - w.x, dy = v.y - w.y, dz = v.z - w.z;
+            double dx = v.x - w.x;
+            if (fabs(dx) > eps) continue; /* the usual case: apart in x already */
+            double dy = v.y - w.y, dz = v.z - w.z;
             if (dx * dx + dy * dy + dz * dz <= eps2) {
                 into[a] = (uint8_t)b;
                 merged = 1;
@@ -293,10 +295,11 @@ SWARP_API swarp_status swarp_poly_from_aabb(const swarp_aabb* box, swarp_polyhed
     return SWARP_OK;
 }
 
-static void sw_frustum_corners(const swarp_camera* cam, double near, double far, swarp_vec3 c[8]) {
-    swarp_vec3 f, r, u;
-    sw_camera_basis(cam, &f, &r, &u);
-    double ty = tan(0.5 * cam->fovy), tx = ty * cam->aspect;
+/* Largest tangent of a frustum half-angle used (90° - 1e-12 rad). */
+#define SW_FRUSTUM_MAX_TAN 1e12
+
+static void sw_frustum_corners_b(const swarp_camera* cam, swarp_vec3 f, swarp_vec3 r, swarp_vec3 u, double tx,
+                                 double ty, double near, double far, swarp_vec3 c[8]) {
     for (int i = 0; i < 8; ++i) {
         double z = (i & 4) ? far : near;
         double sx = (i & 1) ? 1.0 : -1.0, sy = (i & 2) ? 1.0 : -1.0;
@@ -306,12 +309,58 @@ static void sw_frustum_corners(const swarp_camera* cam, double near, double far,
     }
 }
 
+/* The frustum's faces, corner index = x | y<<1 | z<<2 (x: right, y: up,
+ * z: far), each loop counter-clockwise seen from outside: the loops
+ * sw_poly_from_corners finds for every camera (its basis is always
+ * right-handed the same way). */
+static const uint8_t sw_frustum_loops[6][4] = {{0, 2, 6, 4}, {1, 5, 7, 3}, {0, 4, 5, 1},
+                                               {2, 3, 7, 6}, {0, 1, 3, 2}, {4, 6, 7, 5}};
+
 swarp_status sw_poly_from_frustum(const swarp_camera* cam, double near, double far, swarp_polyhedron* out) {
+    swarp_vec3 f, r, u;
+    sw_camera_basis(cam, &f, &r, &u);
+    /* an aspect of 1e308 asks for a half-angle of 90° - 1e-308 rad: the
+     * frustum is kept within 90° - 1e-12 rad, whose corners stay finite
+     * (SW_FRUSTUM_MAX_TAN) */
+    double ty = fmin(tan(0.5 * cam->fovy), SW_FRUSTUM_MAX_TAN), tx = fmin(ty * cam->aspect, SW_FRUSTUM_MAX_TAN);
     swarp_vec3 c[8];
-    sw_frustum_corners(cam, near, far, c);
-    for (int i = 0; i < 8; ++i)
+    sw_frustum_corners_b(cam, f, r, u, tx, ty, near, far, c);
+    double scale = 1e-300;
+    for (int i = 0; i < 8; ++i) {
         if (!sw_finite3(&c[i])) return SWARP_ERR_NON_FINITE;
-    sw_poly_from_corners(c, out);
+        scale = sw_max(scale, sw_max(fabs(c[i].x), sw_max(fabs(c[i].y), fabs(c[i].z))));
+    }
+    /* The corners are at least min(2 near tx, 2 near ty, far - near) apart
+     * (the near quad's sides; near and far corners differ by far - near
+     * along f); above 2 eps (the merge test is eps per coordinate, sqrt(3)
+     * eps in distance) nothing merges, and the planes come from the basis
+     * directly instead of Newell's normals of the corners. */
+    const double sep = sw_min(2.0 * near * sw_min(tx, ty), far - near);
+    if (!(sep > 2.0 * SWARP_POLY_EPS_REL * scale)) {
+        sw_poly_from_corners(c, out);
+        return SWARP_OK;
+    }
+    const double kx = 1.0 / sqrt(1.0 + tx * tx), ky = 1.0 / sqrt(1.0 + ty * ty);
+    const double fe = sw_dot(f, cam->eye);
+    swarp_vec3 n[6];
+    double d[6];
+    n[0] = sw_scale(sw_add(r, sw_scale(f, tx)), -kx); /* left: -(r + tx f) */
+    n[1] = sw_scale(sw_sub(r, sw_scale(f, tx)), kx);  /* right: r - tx f */
+    n[2] = sw_scale(sw_add(u, sw_scale(f, ty)), -ky); /* bottom: -(u + ty f) */
+    n[3] = sw_scale(sw_sub(u, sw_scale(f, ty)), ky);  /* top: u - ty f */
+    for (int k = 0; k < 4; ++k) d[k] = -sw_dot(n[k], cam->eye); /* the side planes pass through the eye */
+    n[4] = sw_scale(f, -1.0);
+    d[4] = fe + near;
+    n[5] = f;
+    d[5] = -(fe + far);
+    out->vertex_count = 8;
+    for (int i = 0; i < 8; ++i) out->vertices[i] = c[i];
+    for (int k = 0; k < 6; ++k) {
+        out->planes[k] = (swarp_plane){n[k].x, n[k].y, n[k].z, d[k]};
+        memcpy(out->face_vertices[k], sw_frustum_loops[k], 4);
+        out->face_vertex_count[k] = 4;
+    }
+    out->face_count = 6;
     return SWARP_OK;
 }
 
@@ -363,6 +412,13 @@ void sw_poly_copy(const swarp_polyhedron* in, swarp_polyhedron* out) {
     memcpy(out->face_vertices, in->face_vertices, in->face_count * sizeof in->face_vertices[0]);
 }
 
+/* p + t: vertices moved, plane offsets d' = d - n·t */
+void sw_poly_translate(swarp_polyhedron* p, swarp_vec3 t) {
+    for (uint32_t i = 0; i < p->vertex_count; ++i) p->vertices[i] = sw_add(p->vertices[i], t);
+    for (uint32_t f = 0; f < p->face_count; ++f)
+        p->planes[f].d -= p->planes[f].a * t.x + p->planes[f].b * t.y + p->planes[f].c * t.z;
+}
+
 /* Vertex classes of a clip (bits, so a face's classes can be OR-ed). */
 enum { SW_IN = 1, SW_ON = 2, SW_OUT = 4 };
 
@@ -401,8 +457,18 @@ static swarp_status sw_poly_clip_to(const swarp_polyhedron* in, swarp_vec3 n_raw
     /* class bits per vertex: SW_IN, SW_ON (within eps of the plane), SW_OUT */
     uint8_t cls[SWARP_POLY_MAX_VERTICES];
     int any_out = 0, any_in = 0;
+    if (unit_normal) { /* ±(one coordinate) + d: the same values as the dot with the axis */
+        const swarp_vec3* v = in->vertices;
+        if (n.x != 0.0)
+            for (uint32_t i = 0; i < nv; ++i) dist[i] = n.x * v[i].x + d;
+        else if (n.y != 0.0)
+            for (uint32_t i = 0; i < nv; ++i) dist[i] = n.y * v[i].y + d;
+        else
+            for (uint32_t i = 0; i < nv; ++i) dist[i] = n.z * v[i].z + d;
+    } else {
+        for (uint32_t i = 0; i < nv; ++i) dist[i] = sw_dot(n, in->vertices[i]) + d;
+    }
     for (uint32_t i = 0; i < nv; ++i) {
-        dist[i] = sw_dot(n, in->vertices[i]) + d;
         int o = dist[i] > eps, u = dist[i] < -eps; /* branch-free */
         cls[i] = (uint8_t)(SW_ON + 2 * o - u);     /* 4, 2 or 1 */
         any_out |= o;
@@ -423,10 +489,17 @@ static swarp_status sw_poly_clip_to(const swarp_polyhedron* in, swarp_vec3 n_raw
     uint32_t tv = 0;
     uint8_t on_plane[SWARP_POLY_MAX_VERTICES];
     uint32_t n_on = 0;
+    /* per output vertex: on the plane?  and its successor on the cap (the
+     * cap's edges are the in-plane edges of the kept faces, reversed) */
+    uint8_t onf[SWARP_POLY_MAX_VERTICES], nxt[SWARP_POLY_MAX_VERTICES];
+    uint32_t n_cap = 0;
+    int cap_bad = 0;
     for (uint32_t i = 0; i < nv; ++i) {
         if (cls[i] != SW_OUT) {
             map[i] = (uint8_t)tv;
             t->vertices[tv] = in->vertices[i];
+            onf[tv] = cls[i] == SW_ON;
+            nxt[tv] = 0xFF;
             if (cls[i] == SW_ON) on_plane[n_on++] = (uint8_t)tv;
             ++tv;
         }
@@ -471,6 +544,8 @@ static swarp_status sw_poly_clip_to(const swarp_polyhedron* in, swarp_vec3 n_raw
                         edge_lo[e] = lo;
                         edge_hi[e] = hi;
                         edge_v[e] = (uint8_t)tv;
+                        onf[tv] = 1;
+                        nxt[tv] = 0xFF;
                         on_plane[n_on++] = (uint8_t)tv;
                         ++tv;
                         ++n_edges;
@@ -485,6 +560,18 @@ static swarp_status sw_poly_clip_to(const swarp_polyhedron* in, swarp_vec3 n_raw
             swarp_vec3 fnrm = {in->planes[f].a, in->planes[f].b, in->planes[f].c};
             if (sw_dot(fnrm, n) > 0.0) cap_coincides = 1;
         }
+        if (any & (SW_ON | SW_OUT)) { /* its in-plane edges p -> q: cap edges q -> p */
+            uint8_t p = loop[m - 1];
+            for (uint32_t k = 0; k < m; ++k) {
+                const uint8_t q = loop[k];
+                if (onf[p] & onf[q]) {
+                    cap_bad |= nxt[q] != 0xFF;
+                    nxt[q] = p;
+                    ++n_cap;
+                }
+                p = q;
+            }
+        }
         t->face_vertex_count[tf] = m;
         t->planes[tf] = in->planes[f];
         ++tf;
@@ -494,6 +581,21 @@ static swarp_status sw_poly_clip_to(const swarp_polyhedron* in, swarp_vec3 n_raw
     if (n_on >= 3 && !cap_coincides) {
         if (n_on > SWARP_POLY_MAX_FACE_VERTICES) return SWARP_ERR_CAPACITY;
         if (tf >= SWARP_POLY_MAX_FACES) return SWARP_ERR_CAPACITY;
+        uint8_t* idx = t->face_vertices[tf];
+        /* usually the in-plane edges chain into the cap's loop: one cycle
+         * through all n_on on-plane vertices */
+        int chained = !cap_bad && n_cap == n_on;
+        if (chained) {
+            uint8_t v = on_plane[0];
+            idx[0] = v;
+            for (uint32_t k = 1; k < n_on && chained; ++k) {
+                v = nxt[v];
+                chained = v != 0xFF && v != on_plane[0];
+                idx[k] = v;
+            }
+            chained = chained && nxt[v] == on_plane[0];
+        }
+        if (!chained) { /* degenerate: sort by angle around the centroid */
         swarp_vec3 c = {0, 0, 0};
         for (uint32_t k = 0; k < n_on; ++k) c = sw_add(c, t->vertices[on_plane[k]]);
         c = sw_scale(c, 1.0 / n_on);
@@ -506,7 +608,6 @@ static swarp_status sw_poly_clip_to(const swarp_polyhedron* in, swarp_vec3 n_raw
             sw_gnormalize(sw_cross(ref, n), &e1);
         e2 = sw_cross(n, e1);
         double key[SWARP_POLY_MAX_FACE_VERTICES];
-        uint8_t* idx = t->face_vertices[tf];
         for (uint32_t k = 0; k < n_on; ++k) {
             swarp_vec3 q = sw_sub(t->vertices[on_plane[k]], c);
             double kk = sw_pseudo_angle(sw_dot(q, e1), sw_dot(q, e2));
@@ -518,6 +619,7 @@ static swarp_status sw_poly_clip_to(const swarp_polyhedron* in, swarp_vec3 n_raw
             }
             key[j] = kk;
             idx[j] = on_plane[k];
+        }
         }
         t->face_vertex_count[tf] = n_on;
         t->planes[tf].a = n.x;
@@ -559,6 +661,21 @@ static void sw_poly_bounds(const swarp_polyhedron* p, double lo[3], double hi[3]
     hi[0] = hx, hi[1] = hy, hi[2] = hz;
 }
 
+/* min/max of one coordinate (0: x, 1: y, 2: z) over the vertices */
+static void sw_poly_axis_bounds(const swarp_polyhedron* p, int c, double* lo, double* hi) {
+    double l = INFINITY, h = -INFINITY;
+    const uint32_t n = p->vertex_count;
+    const swarp_vec3* v = p->vertices;
+    if (c == 0)
+        for (uint32_t i = 0; i < n; ++i) l = v[i].x < l ? v[i].x : l, h = v[i].x > h ? v[i].x : h;
+    else if (c == 1)
+        for (uint32_t i = 0; i < n; ++i) l = v[i].y < l ? v[i].y : l, h = v[i].y > h ? v[i].y : h;
+    else
+        for (uint32_t i = 0; i < n; ++i) l = v[i].z < l ? v[i].z : l, h = v[i].z > h ? v[i].z : h;
+    *lo = l;
+    *hi = h;
+}
+
 swarp_status sw_poly_clip_box_order(const swarp_polyhedron* in, const swarp_aabb* box, const uint8_t order[6],
                                     swarp_polyhedron* out) {
     const swarp_vec3 ns[6] = {{-1, 0, 0}, {1, 0, 0}, {0, -1, 0}, {0, 1, 0}, {0, 0, -1}, {0, 0, 1}};
@@ -571,8 +688,15 @@ swarp_status sw_poly_clip_box_order(const swarp_polyhedron* in, const swarp_aabb
     const swarp_polyhedron* src = in;
     double lo[3], hi[3];
     sw_poly_bounds(in, lo, hi);
+    /* after a clip only the bounds of the axis the next plane needs are
+     * recomputed (stale ones are still bounds: clipping only shrinks) */
+    int stale = 0;
     for (int q = 0; q < 6; ++q) {
         const int k = order[q], c = k / 2;
+        if (stale & (1 << c)) {
+            sw_poly_axis_bounds(src, c, &lo[c], &hi[c]);
+            stale &= ~(1 << c);
+        }
         if ((k & 1) ? !(hi[c] > bmax[c]) : !(lo[c] < bmin[c])) continue;
         swarp_polyhedron* dst = (src == out) ? &buf : out;
         int unchanged = 0;
@@ -584,7 +708,7 @@ swarp_status sw_poly_clip_box_order(const swarp_polyhedron* in, const swarp_aabb
         if (unchanged) continue;
         src = dst;
         if (src->vertex_count == 0) break;
-        sw_poly_bounds(src, lo, hi);
+        stale = 7;
     }
     if (src != out) sw_poly_copy(src, out);
     return SWARP_OK;

@@ -7,6 +7,8 @@
  *                      without adjusting it, then
  *   swarp_setup_points the light matrix for given points of B (and of the
  *                      receivers H, for pancaking and the nearest vertex). */
+#include <float.h>
+
 #include "geometry_internal.h"
 
 /* min_depth took two of the four reserved words: the size is unchanged */
@@ -83,9 +85,53 @@ static int sw_point_axis(const swarp_light* light, const swarp_vec3* pts, size_t
 }
 
 /* Everything after B: light view, warp, fit, error model. */
+/* r = a b for an affine b (last row 0 0 0 1: a look-at, or A_fit's
+ * columns): 12 fewer products than sw_mul and no loop overhead; the same
+ * sums in the same order as sw_mul (the dropped terms are exact zeros,
+ * products with b's 0 0 0 1 row exact), so the values are sw_mul's (a zero
+ * may differ in sign). */
+static void sw_mul_affine_b(const swarp_mat4* a, const swarp_mat4* b, swarp_mat4* r) {
+    swarp_mat4 t;
+    const double* A = a->m;
+    const double* B = b->m;
+    for (int c = 0; c < 3; ++c) {
+        const double b0 = B[c * 4], b1 = B[c * 4 + 1], b2 = B[c * 4 + 2];
+        t.m[c * 4 + 0] = A[0] * b0 + A[4] * b1 + A[8] * b2;
+        t.m[c * 4 + 1] = A[1] * b0 + A[5] * b1 + A[9] * b2;
+        t.m[c * 4 + 2] = A[2] * b0 + A[6] * b1 + A[10] * b2;
+        t.m[c * 4 + 3] = A[3] * b0 + A[7] * b1 + A[11] * b2;
+    }
+    const double b0 = B[12], b1 = B[13], b2 = B[14];
+    t.m[12] = A[0] * b0 + A[4] * b1 + A[8] * b2 + A[12];
+    t.m[13] = A[1] * b0 + A[5] * b1 + A[9] * b2 + A[13];
+    t.m[14] = A[2] * b0 + A[6] * b1 + A[10] * b2 + A[14];
+    t.m[15] = A[3] * b0 + A[7] * b1 + A[11] * b2 + A[15];
+    *r = t;
+}
+
+/* Can the world-space matrix (m · T(-eye), applied to p + eye) be evaluated
+ * in double at the camera-relative points p?  Its w carries rounding of
+ * about eps times the sizes of the terms summed; when that reaches w itself
+ * (a map of a body far below the resolution of world coordinates of size
+ * |eye|: B a 1e-21 sliver at 25 units, or a 1e-9 rad grazing light
+ * stretching a 1e6-offset scene 1e10 times) the map is meaningless in world
+ * coordinates.  64 eps of margin. */
+static int sw_world_resolves(const swarp_mat4* m, const swarp_vec3* p, size_t n, swarp_vec3 eye) {
+    const double ax = fabs(eye.x), ay = fabs(eye.y), az = fabs(eye.z);
+    const double m30 = sw_at(m, 3, 0), m31 = sw_at(m, 3, 1), m32 = sw_at(m, 3, 2), m33 = sw_at(m, 3, 3);
+    for (size_t i = 0; i < n; ++i) {
+        double w = m30 * p[i].x + m31 * p[i].y + m32 * p[i].z + m33;
+        double k = fabs(m30) * (fabs(p[i].x) + 2.0 * ax) + fabs(m31) * (fabs(p[i].y) + 2.0 * ay) +
+                   fabs(m32) * (fabs(p[i].z) + 2.0 * az) + fabs(m33);
+        if (!(w > 64.0 * DBL_EPSILON * k)) return 0;
+    }
+    return 1;
+}
+
+/* cam, light, B, H: camera-relative (src: sw_rel_camera); eye: the world eye */
 static swarp_status sw_setup_points(const swarp_camera* cam, const swarp_light* light, const swarp_vec3* B,
                                     size_t nb, const swarp_polyhedron* B_poly, const swarp_vec3* H, size_t nh, double near, double far,
-                                    const swarp_setup_options* o, swarp_setup_result* out) {
+                                    const swarp_setup_options* o, swarp_vec3 eye, swarp_setup_result* out) {
     swarp_status info = SWARP_OK, s;
     swarp_technique tech = o->technique == SWARP_TECHNIQUE_DEFAULT ? SWARP_TECHNIQUE_LISPSM : o->technique;
     swarp_depth_range dr = o->depth_range == SWARP_DEPTH_DEFAULT ? SWARP_DEPTH_NEG_ONE_TO_ONE : o->depth_range;
@@ -93,7 +139,7 @@ static swarp_status sw_setup_points(const swarp_camera* cam, const swarp_light* 
     sw_camera_basis(cam, &v, &r, &u);
     /* nearest vertex e of H (the receivers) for the WS06 centre */
     const swarp_vec3* ep = NULL;
-    {
+    if (o->center == SWARP_WARP_CENTER_NEAREST_VERTEX) { /* only the WS06 centre uses it */
         const swarp_vec3* src = H ? H : B;
         size_t ns = H ? nh : nb;
         double best = INFINITY;
@@ -223,7 +269,10 @@ static swarp_status sw_setup_points(const swarp_camera* cam, const swarp_light* 
             wi.n_light = wi.n_eye = INFINITY;
         }
         swarp_mat4 PM, A;
-        sw_mul(&P, &M, &PM);
+        if (light->type == SWARP_LIGHT_POINT)
+            sw_mul(&P, &M, &PM);
+        else
+            sw_mul_affine_b(&P, &M, &PM); /* M = L, a look-at */
         /* pancaking: the depth range covers the receivers H only; casters
          * nearer the light are clamped to the near plane by the renderer */
         const swarp_vec3* zp = (o->pancake && nhk > 0) ? Hp : NULL;
@@ -234,7 +283,8 @@ static swarp_status sw_setup_points(const swarp_camera* cam, const swarp_light* 
         if (light->type == SWARP_LIGHT_POINT) sw_mul(&P, &P0, &proj);
         sw_mul(&A, &proj, &res.light_proj);
         res.light_view = L;
-        sw_mul(&res.light_proj, &L, &res.matrix);
+        sw_mul_affine_b(&res.light_proj, &L, &res.matrix); /* L: a look-at */
+        if (!sw_world_resolves(&res.matrix, Bp, nbk, eye)) return SWARP_ERR_DEGENERATE;
         res.n_light = wi.n_light;
         res.n_eye = wi.n_eye;
         res.gamma = wi.gamma;
@@ -286,6 +336,46 @@ static swarp_status sw_setup_points(const swarp_camera* cam, const swarp_light* 
     return info;
 }
 
+/* ---- camera-relative coordinates -------------------------------------------
+ * Everything is computed with the eye at the origin: the box, the light
+ * position and the points of B are translated by -eye first, and the
+ * translation is folded back into the light view and the matrix at the end
+ * (only their last columns change).  In world coordinates of magnitude X
+ * (large worlds: 1e5..1e6) every light-space coordinate carries rounding of
+ * eps X, which is the whole extent of a small body B (near = 1e-6, or a
+ * flat box seen edge-on: a zero extent then looks like rounding noise and
+ * the fit stretched the noise over the map, putting points of B outside
+ * it); relative to the eye the coordinates are of the size of B and of its
+ * distance from the eye.  Issue 9, hard-case sweep. */
+static void sw_rel_camera(const swarp_camera* cam, swarp_camera* rc) {
+    *rc = *cam;
+    rc->eye = sw_v3(0.0, 0.0, 0.0);
+}
+static void sw_rel_light(const swarp_light* light, swarp_vec3 eye, swarp_light* rl) {
+    *rl = *light;
+    /* a directional light's position is not used (and need not be finite) */
+    rl->position = light->type == SWARP_LIGHT_POINT ? sw_sub(light->position, eye) : sw_v3(0.0, 0.0, 0.0);
+}
+static void sw_rel_box(const swarp_aabb* box, swarp_vec3 eye, swarp_aabb* rb) {
+    rb->min = sw_sub(box->min, eye);
+    rb->max = sw_sub(box->max, eye);
+}
+/* m · T(-eye): the last column gets -m[:, 0..2] · eye */
+static void sw_fold_eye(swarp_mat4* m, swarp_vec3 eye) {
+    for (int r = 0; r < 4; ++r)
+        sw_set(m, r, 3,
+               sw_at(m, r, 3) - (sw_at(m, r, 0) * eye.x + sw_at(m, r, 1) * eye.y + sw_at(m, r, 2) * eye.z));
+}
+/* Folds the eye back into light_view and matrix; 0 when a changed entry
+ * (their last columns, the rest was checked before) overflowed. */
+static int sw_fold_result(swarp_setup_result* res, swarp_vec3 eye) {
+    sw_fold_eye(&res->light_view, eye);
+    sw_fold_eye(&res->matrix, eye);
+    int ok = 1;
+    for (int i = 12; i < 16; ++i) ok &= sw_finite(res->light_view.m[i]) & sw_finite(res->matrix.m[i]);
+    return ok;
+}
+
 static swarp_status sw_setup_defaults(const swarp_setup_options* opts, swarp_setup_options* o) {
     memset(o, 0, sizeof *o);
     if (opts) *o = *opts;
@@ -313,9 +403,11 @@ static swarp_status sw_check_points_capacity(const swarp_polyhedron* B, const sw
     return SWARP_OK;
 }
 
+/* cam, light, scene: camera-relative (eye at the origin); eye: the world
+ * eye, folded back into the results */
 static swarp_status sw_setup_range(const swarp_camera* cam, const swarp_light* light, const swarp_aabb* scene,
                                    double near, double far, const swarp_polyhedron* Hin,
-                                   const swarp_setup_options* o, swarp_setup_result* out,
+                                   const swarp_setup_options* o, swarp_vec3 eye, swarp_setup_result* out,
                                    swarp_vec3* out_points, size_t capacity, size_t* out_count) {
     swarp_polyhedron Hl, B;
     const swarp_polyhedron* Hp = Hin;
@@ -325,7 +417,7 @@ static swarp_status sw_setup_range(const swarp_camera* cam, const swarp_light* l
         if (s != SWARP_OK) return s;
         Hp = &Hl;
     }
-    s = sw_body_from_h(Hp, light, scene, &B);
+    s = sw_body_from_h_clipped(Hp, light, scene, &B); /* H from sw_body_h: the clipper's */
     if (s != SWARP_OK) return s;
     s = sw_check_points_capacity(&B, out_points, capacity, out_count);
     if (s != SWARP_OK) return s;
@@ -340,10 +432,12 @@ static swarp_status sw_setup_range(const swarp_camera* cam, const swarp_light* l
     }
     swarp_setup_result res;
     swarp_status info = sw_setup_points(cam, light, B.vertices, B.vertex_count, &B, Hp->vertices, Hp->vertex_count, near,
-                                        far, o, &res);
+                                        far, o, eye, &res);
     if (swarp_status_is_error(info)) return info;
+    if (!sw_fold_result(&res, eye)) return SWARP_ERR_DEGENERATE;
     *out = res;
-    if (out_points) memcpy(out_points, B.vertices, B.vertex_count * sizeof(swarp_vec3));
+    if (out_points)
+        for (uint32_t i = 0; i < B.vertex_count; ++i) out_points[i] = sw_add(B.vertices[i], eye);
     if (out_count) *out_count = B.vertex_count;
     return info;
 }
@@ -366,14 +460,18 @@ SWARP_API swarp_status swarp_setup(const swarp_camera* cam, const swarp_light* l
         s = swarp_mindepth_near(cam->near, cam->far, o.min_depth, NULL, &cam_near);
         if (swarp_status_is_error(s)) return s;
     }
-    swarp_polyhedron H;
-    s = sw_body_h(cam, cam_near, cam->far, scene, &H);
-    if (s != SWARP_OK) return s;
+    swarp_camera rc;
+    swarp_light rl;
+    swarp_aabb rs;
+    sw_rel_camera(cam, &rc);
+    sw_rel_light(light, cam->eye, &rl);
+    sw_rel_box(scene, cam->eye, &rs);
+    if (!sw_finite3(&rl.position) || !sw_finite3(&rs.min) || !sw_finite3(&rs.max)) return SWARP_ERR_NON_FINITE;
     /* adjusted near/far [RHS] §3.3.1: V ∩ S over [near', far'] is H itself */
-    swarp_vec3 f, r, u;
-    sw_camera_basis(cam, &f, &r, &u);
+    swarp_polyhedron H;
     double zn, zf;
-    sw_depth_range_of(&H, cam->eye, f, &zn, &zf);
+    s = sw_body_h_eye(cam, cam_near, cam->far, scene, &H, &zn, &zf);
+    if (s != SWARP_OK) return s;
     zn = fmin(fmax(zn, cam_near), cam->far);
     zf = fmin(fmax(zf, zn), cam->far);
     if (!(zf > zn)) { /* H lies in one depth plane (box face on a view plane): keep a sliver */
@@ -381,7 +479,7 @@ SWARP_API swarp_status swarp_setup(const swarp_camera* cam, const swarp_light* l
         if (zn - pad > cam_near) zn -= pad;
         else zf += pad;
     }
-    return sw_setup_range(cam, light, scene, zn, zf, &H, &o, out, out_points, capacity, out_count);
+    return sw_setup_range(&rc, &rl, &rs, zn, zf, &H, &o, cam->eye, out, out_points, capacity, out_count);
 }
 
 SWARP_API swarp_status swarp_setup_range(const swarp_camera* cam, const swarp_light* light,
@@ -396,7 +494,14 @@ SWARP_API swarp_status swarp_setup_range(const swarp_camera* cam, const swarp_li
     if (!(near > 0.0 && far > near)) return SWARP_ERR_NEAR_FAR;
     s = sw_check_box(scene);
     if (s != SWARP_OK) return s;
-    return sw_setup_range(cam, light, scene, near, far, NULL, &o, out, out_points, capacity, out_count);
+    swarp_camera rc;
+    swarp_light rl;
+    swarp_aabb rs;
+    sw_rel_camera(cam, &rc);
+    sw_rel_light(light, cam->eye, &rl);
+    sw_rel_box(scene, cam->eye, &rs);
+    if (!sw_finite3(&rl.position) || !sw_finite3(&rs.min) || !sw_finite3(&rs.max)) return SWARP_ERR_NON_FINITE;
+    return sw_setup_range(&rc, &rl, &rs, near, far, NULL, &o, cam->eye, out, out_points, capacity, out_count);
 }
 
 SWARP_API swarp_status swarp_setup_points(const swarp_camera* cam, const swarp_light* light,
@@ -417,9 +522,24 @@ SWARP_API swarp_status swarp_setup_points(const swarp_camera* cam, const swarp_l
     if (receivers)
         for (size_t i = 0; i < receiver_count; ++i)
             if (!sw_finite3(&receivers[i])) return SWARP_ERR_NON_FINITE;
+    /* camera-relative, as swarp_setup (see sw_rel_camera) */
+    swarp_camera rc;
+    swarp_light rl;
+    sw_rel_camera(cam, &rc);
+    sw_rel_light(light, cam->eye, &rl);
+    swarp_vec3 Br[SWARP_BODY_MAX_POINTS], Hr[SWARP_BODY_MAX_POINTS];
+    for (size_t i = 0; i < count; ++i) Br[i] = sw_sub(points[i], cam->eye);
+    for (size_t i = 0; receivers && i < receiver_count; ++i) Hr[i] = sw_sub(receivers[i], cam->eye);
+    if (!sw_finite3(&rl.position)) return SWARP_ERR_NON_FINITE;
+    for (size_t i = 0; i < count; ++i)
+        if (!sw_finite3(&Br[i])) return SWARP_ERR_NON_FINITE;
+    for (size_t i = 0; receivers && i < receiver_count; ++i)
+        if (!sw_finite3(&Hr[i])) return SWARP_ERR_NON_FINITE;
     swarp_setup_result res;
-    s = sw_setup_points(cam, light, points, count, NULL, receivers, receivers ? receiver_count : 0, near, far, &o, &res);
+    s = sw_setup_points(&rc, &rl, Br, count, NULL, receivers ? Hr : NULL, receivers ? receiver_count : 0, near, far,
+                        &o, cam->eye, &res);
     if (swarp_status_is_error(s)) return s;
+    if (!sw_fold_result(&res, cam->eye)) return SWARP_ERR_DEGENERATE;
     *out = res;
     return s;
 }

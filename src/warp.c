@@ -18,6 +18,10 @@
  * ray (fixed x, y) keeps its w, so depth order along it is kept. */
 #include "geometry_internal.h"
 
+/* An extent of B along the warp axis below this fraction of B's light-space
+ * size is flat (as SW_FIT_FLAT_REL of the fit, src/focus.c). */
+#define SW_WARP_FLAT_REL 1e-12
+
 static void sw_warp_matrix(double eps, double ymin, double d, double cx, double cz, swarp_mat4* P) {
     double A = (2.0 + eps * d) / d;
     memset(P, 0, sizeof *P);
@@ -147,14 +151,21 @@ swarp_status sw_warp_lispsm(const swarp_mat4* M, const swarp_mat4* M_inv, const 
     swarp_vec3 v, r, u;
     sw_camera_basis(cam, &v, &r, &u);
     /* B in light space: extent along the warp axis y */
-    double ymin = INFINITY, ymax = -INFINITY;
+    double ymin = INFINITY, ymax = -INFINITY, size = 0.0;
     for (size_t i = 0; i < count; ++i) {
         swarp_vec4 h = sw_xform_point(M, points[i]);
-        double y = h.y / h.w;
+        double y = h.y / h.w, ax = fabs(h.x / h.w), ay = fabs(y);
         if (y < ymin) ymin = y;
         if (y > ymax) ymax = y;
+        size = ax > size ? ax : size;
+        size = ay > size ? ay : size;
     }
     double d = ymax - ymin;
+    /* B flat across the warp axis (its extent there is rounding noise of
+     * its coordinates): no warp, P normalises nothing, the fit pads the
+     * flat extent (SWARP_INFO_FLAT_EXTENT).  Dividing by the noise would
+     * stretch it over the whole map. */
+    if (!(d > SW_WARP_FLAT_REL * size)) d = 0.0;
     /* γ: angle between the view direction and the light axis (-z of the
      * light view; for a point light the axis of its view) */
     double vx = sw_at(M, 0, 0) * v.x + sw_at(M, 0, 1) * v.y + sw_at(M, 0, 2) * v.z;
@@ -189,6 +200,8 @@ swarp_status sw_warp_lispsm(const swarp_mat4* M, const swarp_mat4* M_inv, const 
         n_light = INFINITY;
         st = SWARP_INFO_WARP_UNIFORM;
     }
+    /* n' in eye units must exist too (far - near of 1e300: it overflows) */
+    if (eps != 0.0 && !sw_finite(n_light * (far - near) / d)) return SWARP_ERR_DEGENERATE;
     swarp_mat4 P;
     sw_warp_matrix(eps, ymin, d > 0.0 ? d : 1.0, c_ls.x, c_ls.z, &P);
     if (!sw_mat_finite(&P)) return SWARP_ERR_DEGENERATE;

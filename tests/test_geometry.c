@@ -2,6 +2,7 @@
  * the LiSPSM warp [RHS] §3.2.1 / (3.2) / §4.1, PSM [KOZ] and the one call.
  * Properties over seeded random configurations plus hand-made cases. */
 #include <check.h>
+#include <float.h>
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -1164,6 +1165,226 @@ START_TEST(psm_light_behind_camera) {
 }
 END_TEST
 
+/* ---- regressions of the hard-case sweep (issue 9), geometry findings ------
+ * Each scene is a case the sweep (tests/hard_cases.c) reported before the
+ * fix, with its arguments at full precision. */
+
+/* Every point of B maps into the map: w > 0 and |x/w|, |y/w| <= 1 within
+ * 1e-6, plus (cond != 0) the rounding of evaluating the world-space double
+ * matrix at p (64 eps times its condition number, as the sweep allows).
+ * The scenes of the fixed findings are well conditioned after the fix and
+ * are checked without that term: the old results were ill-conditioned
+ * matrices (entries up to 1e15) that the term alone would have excused. */
+static void sweep_check_inside_c(const swarp_setup_result* r, const swarp_vec3* p, size_t n, const char* what,
+                                 int cond) {
+    for (size_t i = 0; i < n; ++i) {
+        const double* m = r->matrix.m;
+        double q[4], a[4];
+        for (int k = 0; k < 4; ++k) {
+            q[k] = m[k] * p[i].x + m[4 + k] * p[i].y + m[8 + k] * p[i].z + m[12 + k];
+            a[k] = fabs(m[k] * p[i].x) + fabs(m[4 + k] * p[i].y) + fabs(m[8 + k] * p[i].z) + fabs(m[12 + k]);
+        }
+        ck_assert_msg(q[3] > 0, "%s: point %zu has w = %g", what, i, q[3]);
+        double x = q[0] / q[3], y = q[1] / q[3];
+        double kx = (a[0] + fabs(x) * a[3]) / q[3], ky = (a[1] + fabs(y) * a[3]) / q[3];
+        double tol = 1e-6 + (cond ? 64 * DBL_EPSILON * fmax(kx, ky) : 0.0);
+        ck_assert_msg(fabs(x) <= 1 + tol && fabs(y) <= 1 + tol, "%s: point %zu maps to (%g, %g), tolerance %g", what, i,
+                      x, y, tol);
+    }
+}
+
+static void sweep_check_inside(const swarp_setup_result* r, const swarp_vec3* p, size_t n, const char* what) {
+    sweep_check_inside_c(r, p, n, what, 0);
+}
+
+/* A flat box (zero depth in z) and a directional light within 1.2e-16 of its
+ * plane: B's extent across the warp axis was rounding noise (1e-15), the
+ * warp divided by it and points of B landed at y = 4.  Now flat: uniform
+ * across it, the fit pads the extent. */
+START_TEST(sweep_grazing_light_flat_box) {
+    swarp_camera cam = {{2.5527718668437753, -0.80185209559958159, -12.101852857609369},
+                        {0.95985551529399782, 0.28049490148609446, 0},
+                        {0, 1, 0},
+                        0.50105103680853991,
+                        1.2815032501546098,
+                        1.0000000000000002e-06,
+                        10,
+                        {0, 0, 0, 0}};
+    swarp_light light;
+    memset(&light, 0, sizeof light);
+    light.type = SWARP_LIGHT_DIRECTIONAL;
+    light.direction = (swarp_vec3){-0.95985551529399793, -0.28049490148609452, 1.2246467991473532e-16};
+    swarp_aabb box = {{-8.983287324592359, -2.2136621784064827, -12.101852857609369},
+                      {80.440514357465887, 21.8681511655824, -12.101852857609369}};
+    swarp_setup_result r;
+    swarp_vec3 pts[SWARP_BODY_MAX_POINTS];
+    size_t n = 0;
+    swarp_status st = swarp_setup(&cam, &light, &box, NULL, &r, pts, SWARP_BODY_MAX_POINTS, &n);
+    ck_assert_msg(!swarp_status_is_error(st), "%s", swarp_status_name(st));
+    sweep_check_inside(&r, pts, n, "grazing light, flat box");
+}
+END_TEST
+
+/* Eye at a 1e6 offset, near 1, far 2, light within 1e-9 of the view
+ * direction: in world coordinates the body's light-space extent was a few
+ * ulps of 1e6 and a point of B mapped to y = 1.25.  Now computed relative
+ * to the eye. */
+START_TEST(sweep_large_offset_parallel_light) {
+    swarp_camera cam = {{999988.91868873662, 0.23033861672625111, 999986.04749523092},
+                        {0.41324454888588158, -0.23278984443987108, -0.88036232946541104},
+                        {0, 1, 0},
+                        1.448604677345914,
+                        1.111418923391395e-111,
+                        1,
+                        2,
+                        {0, 0, 0, 0}};
+    swarp_light light;
+    memset(&light, 0, sizeof light);
+    light.type = SWARP_LIGHT_DIRECTIONAL;
+    light.direction = (swarp_vec3){0.4132445497911133, -0.23278984443987108, -0.88036232904049272};
+    swarp_aabb box = {{999988.85216095881, -5.837741832916965, 999966.62847703311},
+                      {999994.71205076785, 2.1788063412071512, 999989.8870028021}};
+    swarp_setup_options o;
+    memset(&o, 0, sizeof o);
+    o.param = SWARP_WARP_PARAM_NOPT;
+    o.center = SWARP_WARP_CENTER_NEAREST_VERTEX;
+    o.pancake = 1;
+    o.depth_range = SWARP_DEPTH_ZERO_TO_ONE;
+    swarp_setup_result r;
+    swarp_vec3 pts[SWARP_BODY_MAX_POINTS];
+    size_t n = 0;
+    swarp_status st = swarp_setup(&cam, &light, &box, &o, &r, pts, SWARP_BODY_MAX_POINTS, &n);
+    ck_assert_msg(!swarp_status_is_error(st), "%s", swarp_status_name(st));
+    sweep_check_inside(&r, pts, n, "1e6 offset, light parallel to the view");
+    /* the same scene moved to the origin gives the same map (the library
+     * works relative to the eye): equal matrices up to the translation */
+    swarp_camera c0 = cam;
+    c0.eye = (swarp_vec3){0, 0, 0};
+    swarp_aabb b0 = {{box.min.x - cam.eye.x, box.min.y - cam.eye.y, box.min.z - cam.eye.z},
+                     {box.max.x - cam.eye.x, box.max.y - cam.eye.y, box.max.z - cam.eye.z}};
+    swarp_setup_result r0;
+    ck_assert_int_eq(swarp_setup(&c0, &light, &b0, &o, &r0, NULL, 0, NULL), st);
+    for (int k = 0; k < 12; ++k) ck_assert(r.light_proj.m[k] == r0.light_proj.m[k]);
+}
+END_TEST
+
+/* far = DBL_MAX (or 1e308): the frustum's far corners overflowed and valid
+ * arguments got SWARP_ERR_NON_FINITE.  H lies in S, so the far plane only
+ * has to lie beyond S: the result equals that of far = 1e4. */
+START_TEST(sweep_far_dbl_max) {
+    swarp_camera cam = {{0, 10, 0}, {0, -0.3, -1}, {0, 1, 0}, 1.0, 1.5, 0.5, DBL_MAX, {0, 0, 0, 0}};
+    swarp_light light;
+    memset(&light, 0, sizeof light);
+    light.type = SWARP_LIGHT_DIRECTIONAL;
+    light.direction = (swarp_vec3){0.3, -1, 0.2};
+    swarp_aabb box = {{-200, -5, -300}, {200, 30, 60}};
+    swarp_setup_result r, r4;
+    swarp_vec3 pts[SWARP_BODY_MAX_POINTS];
+    size_t n = 0;
+    swarp_status st = swarp_setup(&cam, &light, &box, NULL, &r, pts, SWARP_BODY_MAX_POINTS, &n);
+    ck_assert_msg(!swarp_status_is_error(st), "%s", swarp_status_name(st));
+    sweep_check_inside(&r, pts, n, "far = DBL_MAX");
+    cam.far = 1e4;
+    ck_assert_int_eq(swarp_setup(&cam, &light, &box, NULL, &r4, NULL, 0, NULL), st);
+    ck_assert(fabs(r.view_far - r4.view_far) <= 1e-9 * r4.view_far && r.view_near == r4.view_near);
+    /* a box wholly before the near plane: H is empty */
+    cam.far = DBL_MAX;
+    cam.near = 1e4;
+    ck_assert_int_eq(swarp_setup(&cam, &light, &box, NULL, &r, NULL, 0, NULL), SWARP_ERR_BODY_EMPTY);
+}
+END_TEST
+
+/* aspect = DBL_MAX: the frustum's corners overflowed (SWARP_ERR_NON_FINITE
+ * on valid arguments); the half-angle is kept below 90° - 1e-12 rad. */
+START_TEST(sweep_aspect_huge) {
+    swarp_camera cam = {{0, 10, 0}, {0, -0.3, -1}, {0, 1, 0}, 1.0, DBL_MAX, 0.5, 300, {0, 0, 0, 0}};
+    swarp_light light;
+    memset(&light, 0, sizeof light);
+    light.type = SWARP_LIGHT_DIRECTIONAL;
+    light.direction = (swarp_vec3){0.3, -1, 0.2};
+    swarp_aabb box = {{-200, -5, -300}, {200, 30, 60}};
+    swarp_setup_result r;
+    swarp_vec3 pts[SWARP_BODY_MAX_POINTS];
+    size_t n = 0;
+    swarp_status st = swarp_setup(&cam, &light, &box, NULL, &r, pts, SWARP_BODY_MAX_POINTS, &n);
+    ck_assert_msg(!swarp_status_is_error(st), "%s", swarp_status_name(st));
+    sweep_check_inside(&r, pts, n, "aspect = DBL_MAX");
+}
+END_TEST
+
+/* A view range of 1e-22..1e-21 at 100 units from the origin: B is far below
+ * the resolution of world coordinates (all its points round to the eye) and
+ * the world-space matrix (entries 1e22) mapped it to w = 0 with a success
+ * status.  Now SWARP_ERR_DEGENERATE, outputs untouched. */
+START_TEST(sweep_body_below_world_resolution) {
+    swarp_camera cam = {{100, 5, 100}, {1, 0.1, 0.3}, {0, 1, 0}, 1.0, 1.5, 0.5, 300, {0, 0, 0, 0}};
+    swarp_light light;
+    memset(&light, 0, sizeof light);
+    light.type = SWARP_LIGHT_DIRECTIONAL;
+    light.direction = (swarp_vec3){0.3, -1, 0.2};
+    swarp_aabb box = {{0, 0, 0}, {200, 10, 200}};
+    swarp_setup_result r, sentinel;
+    memset(&sentinel, 0xA5, sizeof sentinel);
+    r = sentinel;
+    swarp_status st = swarp_setup_range(&cam, &light, &box, 1e-22, 1e-21, NULL, &r, NULL, 0, NULL);
+    ck_assert_msg(st == SWARP_ERR_DEGENERATE, "%s", swarp_status_name(st));
+    ck_assert(memcmp(&r, &sentinel, sizeof r) == 0);
+    /* a resolvable range at the same place still works */
+    swarp_vec3 pts[SWARP_BODY_MAX_POINTS];
+    size_t n = 0;
+    st = swarp_setup_range(&cam, &light, &box, 1.0, 50.0, NULL, &r, pts, SWARP_BODY_MAX_POINTS, &n);
+    ck_assert_msg(!swarp_status_is_error(st), "%s", swarp_status_name(st));
+    sweep_check_inside(&r, pts, n, "range [1, 50]");
+}
+END_TEST
+
+/* A spot light at the eye: B's apex is the light itself (w = 0 there).
+ * Documented: the points nearer than the light's near plane (distance below
+ * light_near) are left out, status SWARP_INFO_LIGHT_NEAR_CLIPPED (or the
+ * more important SWARP_INFO_WARP_UNIFORM); every other point is in the map.
+ * (Behaviour unchanged by the sweep's fixes; the sweep's check now follows
+ * the documentation.) */
+START_TEST(sweep_spot_light_at_eye) {
+    swarp_camera cam = {{0, 10, 0}, {0, -0.3, -1}, {0, 1, 0}, 1.0, 1.5, 0.5, 300, {0, 0, 0, 0}};
+    swarp_light light;
+    memset(&light, 0, sizeof light);
+    light.type = SWARP_LIGHT_POINT;
+    light.position = cam.eye;
+    light.direction = (swarp_vec3){0, -0.3, -1};
+    light.cone_angle = 0.9;
+    swarp_aabb box = {{-200, -5, -300}, {200, 30, 60}};
+    for (int on_near = 0; on_near < 2; ++on_near) {
+        if (on_near) light.position = (swarp_vec3){0, 10 - 0.5 * 0.3 / sqrt(1.09), -0.5 / sqrt(1.09)};
+        swarp_setup_result r;
+        swarp_vec3 pts[SWARP_BODY_MAX_POINTS], kept[SWARP_BODY_MAX_POINTS];
+        size_t n = 0, nk = 0, left = 0;
+        swarp_status st = swarp_setup(&cam, &light, &box, NULL, &r, pts, SWARP_BODY_MAX_POINTS, &n);
+        ck_assert_msg(st == SWARP_INFO_LIGHT_NEAR_CLIPPED || st == SWARP_INFO_WARP_UNIFORM, "%s",
+                      swarp_status_name(st));
+        ck_assert(r.light_near > 0);
+        for (size_t i = 0; i < n; ++i) {
+            const double* v = r.light_view.m;
+            double D = -(v[2] * pts[i].x + v[6] * pts[i].y + v[10] * pts[i].z + v[14]);
+            if (D < r.light_near) ++left;
+            else kept[nk++] = pts[i];
+        }
+        ck_assert(left >= 1 && nk >= 4);
+        sweep_check_inside(&r, kept, nk, on_near ? "spot light on the near plane" : "spot light at the eye");
+    }
+}
+END_TEST
+
+static void add_sweep_regressions(Suite* s) {
+    TCase* tc = tcase_create("sweep_regressions");
+    tcase_add_test(tc, sweep_grazing_light_flat_box);
+    tcase_add_test(tc, sweep_large_offset_parallel_light);
+    tcase_add_test(tc, sweep_far_dbl_max);
+    tcase_add_test(tc, sweep_aspect_huge);
+    tcase_add_test(tc, sweep_body_below_world_resolution);
+    tcase_add_test(tc, sweep_spot_light_at_eye);
+    suite_add_tcase(s, tc);
+}
+
 Suite* geometry_suite(void) {
     Suite* s = suite_create("geometry");
     TCase* tc = tcase_create("properties");
@@ -1187,6 +1408,7 @@ Suite* geometry_suite(void) {
     tcase_add_test(tc, warp_lispsm_direct);
     tcase_add_test(tc, psm_light_behind_camera);
     suite_add_tcase(s, tc);
+    add_sweep_regressions(s);
     return s;
 }
 

@@ -326,6 +326,16 @@ static void check_setup_result(swr_ctx* c, const scene_args* s, swarp_status st,
                       "point %zu of B (%g %g %g) outside the scene box", i, p->x, p->y, p->z);
         if (psm || st == SWARP_INFO_PSM_INVERSE) continue;
         swarp_vec4 q = xf(&r->matrix, *p);
+        /* A spot light on or inside B: the points nearer to it than its near
+         * plane (distance along its axis below light_near) are left out of
+         * the map, as SWARP_INFO_LIGHT_NEAR_CLIPPED documents (the status
+         * may be hidden by the more important SWARP_INFO_WARP_UNIFORM). */
+        if (s->light.type == SWARP_LIGHT_POINT && (st == SWARP_INFO_LIGHT_NEAR_CLIPPED || st == SWARP_INFO_WARP_UNIFORM)) {
+            swarp_vec4 lv = xf(&r->light_view, *p);
+            double lmag = fabs(r->light_view.m[2] * p->x) + fabs(r->light_view.m[6] * p->y) +
+                          fabs(r->light_view.m[10] * p->z) + fabs(r->light_view.m[14]);
+            if (-lv.z < r->light_near + 64 * DBL_EPSILON * lmag) continue;
+        }
         if (!(q.w > 0)) {
             /* KNOWN (docs/quality.md): a point light on the boundary of B (at
              * the eye, on the near plane, on a face of a flat box) */
@@ -334,6 +344,21 @@ static void check_setup_result(swr_ctx* c, const scene_args* s, swarp_status st,
             return;
         }
         double x = q.x / q.w, y = q.y / q.w, tol = fit_tol;
+        /* The matrix is a world-space double matrix: each of its elements
+         * is rounded (relative eps) and evaluating it at p rounds again, so
+         * even an exact result maps p with an error up to eps times the
+         * sizes of the terms summed (large offsets times a strongly
+         * stretched map of a tiny body), whatever the library does.
+         * The tolerance is that condition number (64 eps of it). */
+        {
+            const swarp_mat4* m = &r->matrix;
+            double sw = fabs(m->m[3] * p->x) + fabs(m->m[7] * p->y) + fabs(m->m[11] * p->z) + fabs(m->m[15]);
+            double sx = fabs(m->m[0] * p->x) + fabs(m->m[4] * p->y) + fabs(m->m[8] * p->z) + fabs(m->m[12]);
+            double sy = fabs(m->m[1] * p->x) + fabs(m->m[5] * p->y) + fabs(m->m[9] * p->z) + fabs(m->m[13]);
+            double aw = fabs(q.w);
+            double kx = (sx + fabs(x) * sw) / aw, ky = (sy + fabs(y) * sw) / aw;
+            tol = fmax(tol, 1e-6 + 64 * DBL_EPSILON * fmax(kx, ky));
+        }
         if (!(fabs(x) <= 1 + tol && fabs(y) <= 1 + tol)) {
             /* KNOWN (docs/quality.md, reported to the geometry stage): met at
              * 1e5..1e6 offsets, lights (anti)parallel to the view, lights with
