@@ -820,7 +820,7 @@ static void e_poly_clip_common(swr_ctx* c, int with_box) {
     if (!clip_call(c, &in, &out, in_place, with_box ? NULL : &pl, &box, n_in, n_x, n_out)) return;
     double sc = fmax(poly_scale(&in), with_box ? box_scale(&box) : fabs(pl.d) / sqrt(pl.a * pl.a + pl.b * pl.b + pl.c * pl.c));
     double tol = gtol(sc);
-    if (wide(&s.cam)) c->known_as = "clip of a body of a frustum with aspect beyond 1e6 (not a valid input polyhedron)";
+    if (wide(&s.cam)) c->rounding_edge = 1, c->known_as = "clip of a body of a frustum with aspect beyond 1e6 (not a valid input polyhedron)";
     check_poly(c, &out, "clip", tol);
     check_inside(c, &out, &in, tol, "clip result in the input");
     if (with_box) {
@@ -871,7 +871,7 @@ static void e_body_h(swr_ctx* c) {
              s.box.min.x, s.box.min.y, s.box.min.z, s.box.max.x, s.box.max.y, s.box.max.z);
     if (!swr_done(c, SWR_CALL(c, swarp_body_h(pc, near, far, pb, po)))) return;
     double tol = gtol(fmax(box_scale(&s.box), vmax(s.cam.eye) + far)) + 64 * DBL_EPSILON * c->cond * near;
-    if (wide(&s.cam)) c->known_as = "H of a frustum with aspect beyond 1e6";
+    if (wide(&s.cam)) c->rounding_edge = 1, c->known_as = "H of a frustum with aspect beyond 1e6";
     check_poly(c, &H, "H", tol);
     SWR_CHECK(c, H.vertex_count > 0, "H empty with %s", swarp_status_name(c->status));
     check_in_box(c, &H, &s.box, tol, "H in S");
@@ -922,7 +922,7 @@ static void e_body_from_h(swr_ctx* c) {
     double tol = gtol(fmax(box_scale(&s.box), fmax(poly_scale(&H), vmax(s.light.position))));
     if (grazing(&s.light)) c->known_as = "B of a grazing directional light";
     else if (axis_parallel(&s.light)) c->known_as = "B of a directional light parallel to a box face (a zero component)";
-    else if (wide(&s.cam)) c->known_as = "B of a frustum with aspect beyond 1e6";
+    else if (wide(&s.cam)) c->rounding_edge = 1, c->known_as = "B of a frustum with aspect beyond 1e6";
     else if (near_boundary(&s)) c->known_as = "B of a point light within 1e-4 of the box's boundary";
     else if (box_scale(&s.box) >= 1e6) c->known_as = "B at coordinates of 1e6 and more";
     else if ((int)s.light.type == 2) c->known_as = "B of a point light: faces planar to 1e-2 only (full-size sweep)";
@@ -950,7 +950,7 @@ static void e_body_receivers(swr_ctx* c) {
     swr_domain(c, SWARP_ERR_CAPACITY);
     if (!swr_done(c, SWR_CALL(c, swarp_body_receivers(ph, pl, po)))) return;
     double tol = gtol(fmax(poly_scale(&H), vmax(s.light.position)));
-    if (wide(&s.cam)) c->known_as = "receivers of a frustum with aspect beyond 1e6";
+    if (wide(&s.cam)) c->rounding_edge = 1, c->known_as = "receivers of a frustum with aspect beyond 1e6";
     check_poly(c, &R, "receivers", tol);
     check_inside(c, &R, &H, tol, "receivers inside H");
     int t = (int)s.light.type;
@@ -984,7 +984,7 @@ static void e_body_adjusted_range(swr_ctx* c) {
         zlo = fmin(zlo, z), zhi = fmax(zhi, z);
     }
     double tol = gtol(fmax(box_scale(&s.box), vmax(s.cam.eye)) + s.cam.far);
-    if (wide(&s.cam)) c->known_as = "adjusted range of a frustum with aspect beyond 1e6";
+    if (wide(&s.cam)) c->rounding_edge = 1, c->known_as = "adjusted range of a frustum with aspect beyond 1e6";
     if (n > f && n - f <= 1e-9 * (vmax(s.cam.eye) + s.cam.far)) /* KNOWN (docs/quality.md): a sliver at the box's face */
         swr_known(c, "adjusted range [%.17g, %.17g]: near above far by %g", n, f, n - f);
     else
