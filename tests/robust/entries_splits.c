@@ -626,6 +626,7 @@ static int expect_map(swr_ctx* c, const bias_args* b) {
         ld h[4], mag = clip_mag(&m->world_to_clip, b->p, 3);
         clip_of(&m->world_to_clip, b->p, h);
         /* w within the rounding of its terms: either side */
+        if (fabsl(h[3]) <= 1e-299L) swr_domain(c, SWARP_ERR_BEHIND_PROJECTION); /* the library's w threshold is 1e-300 */
         if (fabsl(h[3]) <= 1024 * DBL_EPSILON * mag) swr_domain(c, SWARP_ERR_BEHIND_PROJECTION), c->rounding_edge = 1;
         else if (!(h[3] > 0)) swr_expect(c, SWARP_ERR_BEHIND_PROJECTION), ok = 0;
         if (h[3] > 0) { /* conditioning: the matrix (texel steps map back through M^-1), the rows' cancellation */
