@@ -446,6 +446,7 @@ static ld clip_mag(const swarp_mat4* M, swarp_vec3 p, int r) {
     return fabsl((ld)M->m[r] * p.x) + fabsl((ld)M->m[4 + r] * p.y) + fabsl((ld)M->m[8 + r] * p.z) + fabsl((ld)M->m[12 + r]);
 }
 /* kappa of M (infinity norm, long double Gauss-Jordan); 1e300 when singular */
+static int gauss_jordan(ld A[4][8], int ncols);
 static double mat_cond_inv(const swarp_mat4* M, ld inv[4][4]);
 static double mat_cond(const swarp_mat4* M) {
     ld inv[4][4];
@@ -459,21 +460,7 @@ static double mat_cond_inv(const swarp_mat4* M, ld inv[4][4]) {
         for (int k = 0; k < 4; ++k) A[r][k] = M->m[k * 4 + r], A[r][4 + k] = r == k, row += fabsl(A[r][k]);
         nm = fmaxl(nm, row);
     }
-    for (int col = 0; col < 4; ++col) {
-        int piv = col;
-        for (int r = col + 1; r < 4; ++r)
-            if (fabsl(A[r][col]) > fabsl(A[piv][col])) piv = r;
-        if (!(fabsl(A[piv][col]) > 0)) return 1e300;
-        for (int k = 0; k < 8; ++k) {
-            ld t = A[col][k];
-            A[col][k] = A[piv][k], A[piv][k] = t;
-        }
-        for (int r = 0; r < 4; ++r)
-            if (r != col) {
-                ld f = A[r][col] / A[col][col];
-                for (int k = col; k < 8; ++k) A[r][k] -= f * A[col][k];
-            }
-    }
+    if (!gauss_jordan(A, 8)) return 1e300;
     for (int r = 0; r < 4; ++r) {
         ld row = 0;
         for (int k = 0; k < 4; ++k) row += fabsl(inv[r][k] = A[r][4 + k] / A[r][r]);
@@ -481,33 +468,39 @@ static double mat_cond_inv(const swarp_mat4* M, ld inv[4][4]) {
     }
     return (double)(nm * ni);
 }
+/* Gauss-Jordan with partial pivoting on the 4 rows of A, columns [0, ncols):
+ * afterwards A[r][r] is the pivot and the right-hand columns hold A[r][r] x;
+ * 0 when singular */
+static int gauss_jordan(ld A[4][8], int ncols) {
+    for (int col = 0; col < 4; ++col) {
+        int piv = col;
+        for (int r = col + 1; r < 4; ++r)
+            if (fabsl(A[r][col]) > fabsl(A[piv][col])) piv = r;
+        if (!(fabsl(A[piv][col]) > 0)) return 0;
+        for (int k = 0; k < ncols; ++k) {
+            ld t = A[col][k];
+            A[col][k] = A[piv][k], A[piv][k] = t;
+        }
+        for (int r = 0; r < 4; ++r)
+            if (r != col) {
+                ld f = A[r][col] / A[col][col];
+                for (int k = col; k < ncols; ++k) A[r][k] -= f * A[col][k];
+            }
+    }
+    return 1;
+}
 /* the world point whose NDC is (x, y, z): solves M q = w (x, y, z, 1) for
- * q = (q, 1) by Gaussian elimination with partial pivoting (long double) */
+ * q = (q, 1) (long double) */
 static int world_of(const swarp_mat4* M, ld x, ld y, ld z, ld q[3]) {
     /* unknowns q0 q1 q2 and w: M(r,0..2) q - w ndc_r = -M(r,3) */
-    ld A[4][5];
+    ld A[4][8];
     const ld ndc[4] = {x, y, z, 1};
     for (int r = 0; r < 4; ++r) {
         for (int k = 0; k < 3; ++k) A[r][k] = M->m[k * 4 + r];
         A[r][3] = -ndc[r];
         A[r][4] = -(ld)M->m[12 + r];
     }
-    for (int col = 0; col < 4; ++col) {
-        int piv = col;
-        for (int r = col + 1; r < 4; ++r)
-            if (fabsl(A[r][col]) > fabsl(A[piv][col])) piv = r;
-        if (!(fabsl(A[piv][col]) > 0)) return 0;
-        for (int k = 0; k < 5; ++k) {
-            ld t = A[col][k];
-            A[col][k] = A[piv][k];
-            A[piv][k] = t;
-        }
-        for (int r = 0; r < 4; ++r)
-            if (r != col) {
-                ld f = A[r][col] / A[col][col];
-                for (int k = col; k < 5; ++k) A[r][k] -= f * A[col][k];
-            }
-    }
+    if (!gauss_jordan(A, 5)) return 0;
     for (int k = 0; k < 3; ++k) q[k] = A[k][4] / A[k][k];
     return isfinite((double)q[0]) && isfinite((double)q[1]) && isfinite((double)q[2]);
 }
