@@ -536,7 +536,7 @@ static double gtol(double s) { return 1e-9 * s + 1e-300; }
  * aspect > 0) reaches coordinates far tan(fovy/2) aspect, and the clips'
  * 1e-12-relative merge tolerance swallows the box: H, B and the receivers
  * come back with vertices outside S, behind the eye or off their faces */
-static int wide(const swarp_camera* cam) { return cam->aspect > 1e6 || cam->aspect < 1e-6; }
+static int wide(const swarp_camera* cam) { return cam->aspect >= 1e6 || cam->aspect <= 1e-6; }
 
 /* A valid polyhedron (header: counts within the maxima, face indices valid,
  * outward unit normals, every vertex on the inner side of every face plane,
