@@ -133,6 +133,8 @@ extern "C" {
       "scene box has zero extent along two or more axes")                               \
     X(SWARP_ERR_LIGHT_INSIDE_BODY, 103,                                                 \
       "point light inside the body B: one perspective map cannot cover it")             \
+    X(SWARP_ERR_FOLLOW_FRAME, 104,                                                      \
+      "the previous result's light frame is not orthonormal or not from this technique")  \
     X(SWARP_INFO_LIGHT_PARALLEL, 1100,                                                  \
       "light nearly parallel to the view: light-space up blended toward camera right")  \
     X(SWARP_INFO_FLAT_EXTENT, 1101,                                                     \
@@ -140,7 +142,9 @@ extern "C" {
     X(SWARP_INFO_PSM_INVERSE, 1102,                                                     \
       "light behind the camera: PSM uses the inverse projection (near < 0 < far)")      \
     X(SWARP_INFO_LIGHT_NEAR_CLIPPED, 1103,                                              \
-      "spot light on or inside B: points nearer than its near plane left out")
+      "spot light on or inside B: points nearer than its near plane left out")          \
+    X(SWARP_INFO_FOLLOW_LAG, 1104,                                                      \
+      "followed light frame still turning toward the aligned one (light near the view axis; LiSPSM weaker)")
 /* <<< status: geometry */
 
 /* >>> status: lixel (200..299, 1200..1299) */
@@ -736,8 +740,8 @@ SWARP_API swarp_status swarp_body_adjusted_range(const swarp_camera* cam, const 
  * antiparallel to the view in the plane of v and the camera's up vector.
  * (Every continuous tangent field on the sphere has a zero: this one's lies
  * off that plane, on the v-r great circle, at γ ≈ 5.6° (sin γ ≈ 0.097); see
- * docs/geometry.md.)  SWARP_INFO_LIGHT_PARALLEL reports that the blend is
- * active.
+ * docs/geometry.md; swarp_setup_follow below has no such point.)
+ * SWARP_INFO_LIGHT_PARALLEL reports that the blend is active.
  */
 #define SWARP_FOCUS_BLEND_SIN 0.17364817766693033 /* sin 10° */
 #define SWARP_FOCUS_BLEND_WEIGHT 0.5
@@ -949,6 +953,83 @@ SWARP_API swarp_status swarp_setup_points(const swarp_camera* cam, const swarp_l
                                           double near, double far,
                                           const swarp_setup_options* opts,
                                           swarp_setup_result* out);
+
+/* ======================================================================== */
+/* Geometry: coherent light frames over time     (src/follow.c)             */
+/* ======================================================================== */
+/*
+ * Continuity over the whole sphere of light directions (docs/geometry.md,
+ * "Continuity over the whole sphere").  No stateless rule can give the light
+ * view an up vector that is continuous in the light direction everywhere
+ * (hairy-ball theorem): swarp_setup's rule is singular where
+ * SWARP_FOCUS_BLEND_SIN says.  swarp_setup_follow takes the previous frame's
+ * result and keeps the light frame coherent along ANY path of the light
+ * (and of the camera):
+ *
+ *   h   = the previous up (light_view row 1; PSM: the light camera's right
+ *         in post-perspective space) projected onto the plane perpendicular
+ *         to the new light axis a;
+ *   t   = ±v̂, v̂ = v_perp/|v_perp| ([RHS] §3.2.1 light-space alignment; PSM:
+ *         the post-perspective x axis projected perpendicular to the light
+ *         camera's axis), the sign that agrees with h;
+ *   h' = h turned about a toward t by at most SWARP_FOLLOW_KAPPA · Δ, where
+ *         Δ = angle(previous axis, a) + angle(previous view dir, view dir)
+ *         (PSM: the angle the post-perspective axis turned).
+ *
+ * The frame changes per call by O(Δ), whatever the path; wherever the target
+ * moves slower than κ·Δ (sin γ > 1/κ along a smooth path, γ ≥ 14.5° for
+ * κ = 4) it is exactly the aligned frame.  LiSPSM then warps along the
+ * frame's y axis with orientation σ = sign(y·v) and the strength of
+ * γ_eff = asin|y·v| (as swarp_setup's warp does with its own frame), so it
+ * is exactly [RHS]'s LiSPSM when aligned and fades to uniform where
+ * y ⟂ v_perp (SWARP_INFO_FOLLOW_LAG says the frame lags).
+ * The followed map may be turned 180° about the light axis relative to
+ * swarp_setup's (y = -v̂); it is the same LiSPSM map, rotated.
+ */
+#define SWARP_FOLLOW_KAPPA 4.0
+
+/** @brief swarp_setup with a light frame that follows the previous frame's
+ *  continuously (no flips anywhere on the sphere of light directions).
+ *  @param[in] cam, light, scene, opts  as swarp_setup
+ *  @param[in] previous_cam  the camera of the previous frame (its view
+ *                     direction lets the frame realign as the camera turns);
+ *                     NULL: the same as cam (only the light's motion counts)
+ *  @param[in] previous  the previous frame's result of swarp_setup or
+ *                     swarp_setup_follow with the SAME technique and light
+ *                     type; NULL: exactly swarp_setup's result (bit for bit).
+ *                     Read: light_view's rotation rows; PSM also light_proj,
+ *                     view_near, view_far and n_eye (with previous_cam's, or
+ *                     cam's, fovy and aspect) to recover its light camera
+ *  @param[out] out, out_points, out_count  as swarp_setup
+ *  @return as swarp_setup, plus SWARP_INFO_FOLLOW_LAG (the frame is still
+ *          turning toward the aligned one); SWARP_ERR_NON_FINITE (NaN/Inf in
+ *          the rows of previous that are read), SWARP_ERR_ZERO_VECTOR (a zero
+ *          row), SWARP_ERR_FOLLOW_FRAME (rows not orthonormal within 1e-6 or
+ *          left-handed, or a PSM result whose ranges are invalid).  Outputs untouched on
+ *          error.  [RHS] §3.2.1, [KOZ] §14.2.2 */
+SWARP_API swarp_status swarp_setup_follow(const swarp_camera* cam, const swarp_light* light,
+                                          const swarp_aabb* scene, const swarp_setup_options* opts,
+                                          const swarp_camera* previous_cam,
+                                          const swarp_setup_result* previous,
+                                          swarp_setup_result* out, swarp_vec3* out_points,
+                                          size_t capacity, size_t* out_count);
+
+/** @brief swarp_focus_light_view whose up vector follows a previous light
+ *  view continuously (the rule of swarp_setup_follow: the previous up turned
+ *  toward ±v̂ by at most SWARP_FOLLOW_KAPPA times the angle the light axis
+ *  and the view direction turned).  [RHS] §3.2.1
+ *  @param[in] cam, light, axis  as swarp_focus_light_view
+ *  @param[in] previous_cam   the previous frame's camera (NULL: cam)
+ *  @param[in] previous_view  the previous light view (its rotation rows are
+ *                            read); NULL: exactly swarp_focus_light_view
+ *  @param[out] out_view      the light view
+ *  @return as swarp_focus_light_view (SWARP_INFO_LIGHT_PARALLEL only with
+ *          previous_view NULL), SWARP_INFO_FOLLOW_LAG, SWARP_ERR_ZERO_VECTOR,
+ *          SWARP_ERR_NON_FINITE, SWARP_ERR_FOLLOW_FRAME (rows not a rigid
+ *          right-handed frame within 1e-6). */
+SWARP_API swarp_status swarp_focus_light_view_follow(const swarp_camera* cam, const swarp_light* light,
+                                                     const swarp_vec3* axis, const swarp_camera* previous_cam,
+                                                     const swarp_mat4* previous_view, swarp_mat4* out_view);
 /* <<< api: geometry */
 
 /* >>> api: lixel (src/lixel.c) */

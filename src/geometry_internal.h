@@ -94,10 +94,37 @@ static inline swarp_vec3 sw_project(const swarp_mat4* m, swarp_vec3 p) {
     return sw_v3(h.x / h.w, h.y / h.w, h.z / h.w);
 }
 
+struct sw_follow; /* src/follow.c, below */
 /* PSM [KOZ] for the one call (src/psm.c); fills light_view, light_proj,
  * matrix, n_eye, n_light, gamma, light_near/far of res. */
 swarp_status sw_psm_setup(const swarp_camera* cam, const swarp_light* light, const swarp_vec3* B, size_t nb,
                           const swarp_polyhedron* B_poly, const swarp_vec3* H, size_t nh, double near, double far,
-                          const swarp_setup_options* o, swarp_setup_result* res);
+                          const swarp_setup_options* o, const struct sw_follow* fw, swarp_setup_result* res);
+
+/* ---- coherent light frames (src/follow.c) -------------------------------
+ * The previous frame's light frame for swarp_setup_follow: directional and
+ * point lights: the light view's axis and up (world); PSM: the light
+ * camera's axis (sign free) and right vector in post-perspective space. */
+typedef struct sw_follow {
+    swarp_vec3 axis; /* unit */
+    swarp_vec3 up;   /* unit, perpendicular to axis */
+    swarp_vec3 view; /* the previous view direction (unit) */
+} sw_follow;
+/* h (unit, perpendicular to a) turned about a toward t (unit, perpendicular
+ * to a, t·h >= 0) by at most budget radians; *lag = 1 when it stopped short */
+swarp_vec3 sw_follow_turn(swarp_vec3 h, swarp_vec3 t, swarp_vec3 a, double budget, int* lag);
+/* the angle between two unit vectors, accurate at 0 and pi */
+double sw_follow_angle(swarp_vec3 a, swarp_vec3 b);
+/* the light view from origin along forward whose up follows fw */
+swarp_status sw_follow_light_view(const swarp_camera* cam, swarp_vec3 origin, swarp_vec3 forward,
+                                  const sw_follow* fw, swarp_mat4* out);
+/* LiSPSM along the light frame's y axis, oriented by σ = sign(y·v) (the
+ * one call's warp; with y = v̂ it is sw_warp_lispsm); P applies after M */
+swarp_status sw_warp_lispsm_oriented(const swarp_mat4* M, const swarp_mat4* M_inv, const swarp_camera* cam, double near,
+                            double far, const swarp_vec3* points, size_t count, const swarp_vec3* nearest,
+                            const swarp_warp_options* o, swarp_mat4* out_P, swarp_warp_info* out_info);
+/* the previous frame of a result, checked (previous_cam may be NULL) */
+swarp_status sw_follow_from_result(const swarp_setup_result* previous, const swarp_camera* cam,
+                                   const swarp_camera* previous_cam, swarp_technique tech, sw_follow* out);
 
 #endif

@@ -102,6 +102,32 @@ static swarp_vec3 sw_perp_ref(swarp_vec3 n) {
     return b;
 }
 
+/* swarp_setup_follow: the light camera's right vector e1 follows the
+ * previous one (src/follow.c) toward the stateless e1 (given in *e1: the
+ * post-perspective x axis projected perpendicular to the axis, sw_perp_ref),
+ * by at most SWARP_FOLLOW_KAPPA times the angle the axis turned; the sign of
+ * the target is free (PSM has no preferred orientation).  Returns 0 when
+ * the previous right vector lies along the axis (e1 stays the target). */
+static int sw_psm_follow_e1(const sw_follow* fw, swarp_vec3 a, swarp_vec3* e1, int* lag) {
+    swarp_vec3 h, t = *e1;
+    *lag = 0;
+    swarp_vec3 ph = sw_sub(fw->up, sw_scale(a, sw_dot(fw->up, a)));
+    /* 1e-8: below it the projected direction is rounding noise (the
+     * previous axis was 90° away: nothing to follow, take the target) */
+    if (!(sw_glen(ph) > 1e-8) || !sw_gnormalize(ph, &h)) return 0;
+    /* the axis' sign is free in a previous result: the angle between lines */
+    double delta = atan2(sw_glen(sw_cross(fw->axis, a)), fabs(sw_dot(fw->axis, a)));
+    if (sw_dot(h, t) < 0.0) t = sw_scale(t, -1.0);
+    h = sw_follow_turn(h, t, a, SWARP_FOLLOW_KAPPA * delta, lag);
+    swarp_vec3 p = sw_sub(h, sw_scale(a, sw_dot(h, a)));
+    return sw_gnormalize(p, e1);
+}
+
+/* PSM_INVERSE is the more important information */
+static swarp_status sw_info_follow(swarp_status info) {
+    return info == SWARP_OK ? SWARP_INFO_FOLLOW_LAG : info;
+}
+
 /* The camera (possibly slid back by delta) as M_c = P_c V_c, GL depth. */
 static void sw_camera_matrix(const swarp_camera* cam, double near, double far, double delta, swarp_mat4* Mc,
                              swarp_mat4* Vc) {
@@ -123,7 +149,7 @@ static void sw_camera_matrix(const swarp_camera* cam, double near, double far, d
 
 swarp_status sw_psm_setup(const swarp_camera* cam, const swarp_light* light, const swarp_vec3* B, size_t nb,
                           const swarp_polyhedron* B_poly, const swarp_vec3* H, size_t nh, double near, double far,
-                          const swarp_setup_options* o, swarp_setup_result* res) {
+                          const swarp_setup_options* o, const sw_follow* fw, swarp_setup_result* res) {
     swarp_depth_range dr = o->depth_range == SWARP_DEPTH_DEFAULT ? SWARP_DEPTH_NEG_ONE_TO_ONE : o->depth_range;
     swarp_status info = SWARP_OK;
     if (!H) H = B, nh = nb;
@@ -151,8 +177,8 @@ swarp_status sw_psm_setup(const swarp_camera* cam, const swarp_light* light, con
     swarp_vec3 qn = sw_scale(qh, 1.0 / qlen);
     double tau = Lh.w / qlen; /* w_l / |q_h|: 0 = light at infinity in PPS */
     if (Lh.w < 0.0) info = SWARP_INFO_PSM_INVERSE;
-    swarp_vec3 b1 = sw_perp_ref(qn); /* roll reference, continuous in q̂ */
     swarp_vec3 a, e1, e2;
+    int lag = 0;
     /* the receivers' centroid in PPS (reference point of the depth row) */
     swarp_vec3 p0 = {0, 0, 0};
     for (size_t i = 0; i < nh; ++i) {
@@ -167,7 +193,8 @@ swarp_status sw_psm_setup(const swarp_camera* cam, const swarp_light* light, con
         /* the light is at infinity in PPS: orthographic along -q̂ (the limit
          * of the general rows below, up to a translation A_fit absorbs) */
         a = sw_scale(qn, -1.0);
-        e1 = b1;
+        e1 = sw_perp_ref(a); /* roll reference, continuous in the axis */
+        if (fw && sw_psm_follow_e1(fw, a, &e1, &lag) && lag) info = sw_info_follow(info);
         e2 = sw_cross(a, e1);
     } else {
         /* light-to-receiver directions R = τ x - q̂ (homogeneous-safe, w_c = 1)
@@ -187,7 +214,11 @@ swarp_status sw_psm_setup(const swarp_camera* cam, const swarp_light* light, con
         /* a cone of 90° or more: the light sits among the receivers */
         if (!(cap.cosr > SW_PSM_MIN_COS)) return SWARP_ERR_LIGHT_INSIDE_BODY;
         a = cap.c;
-        if (!sw_gnormalize(sw_sub(b1, sw_scale(a, sw_dot(b1, a))), &e1)) return SWARP_ERR_DEGENERATE;
+        /* roll: the PPS x axis projected perpendicular to the axis (blended
+         * near a = ±x), a function of the axis alone, so that the follow
+         * rule's budget κΔ (Δ: the axis' turn) covers the target's motion */
+        e1 = sw_perp_ref(a);
+        if (fw && sw_psm_follow_e1(fw, a, &e1, &lag) && lag) info = sw_info_follow(info);
         e2 = sw_cross(a, e1);
         /* rows: x = e1·R/w_l = e1·X - w_c (e1·q̂)/τ (finite as τ -> 0: the
          * axis tilts away from -q̂ by O(τ); the rounding of e1·q̂ only moves

@@ -131,7 +131,8 @@ static int sw_world_resolves(const swarp_mat4* m, const swarp_vec3* p, size_t n,
 /* cam, light, B, H: camera-relative (src: sw_rel_camera); eye: the world eye */
 static swarp_status sw_setup_points(const swarp_camera* cam, const swarp_light* light, const swarp_vec3* B,
                                     size_t nb, const swarp_polyhedron* B_poly, const swarp_vec3* H, size_t nh, double near, double far,
-                                    const swarp_setup_options* o, swarp_vec3 eye, swarp_setup_result* out) {
+                                    const swarp_setup_options* o, swarp_vec3 eye, const sw_follow* fw,
+                                    swarp_setup_result* out) {
     swarp_status info = SWARP_OK, s;
     swarp_technique tech = o->technique == SWARP_TECHNIQUE_DEFAULT ? SWARP_TECHNIQUE_LISPSM : o->technique;
     swarp_depth_range dr = o->depth_range == SWARP_DEPTH_DEFAULT ? SWARP_DEPTH_NEG_ONE_TO_ONE : o->depth_range;
@@ -154,7 +155,7 @@ static swarp_status sw_setup_points(const swarp_camera* cam, const swarp_light* 
     res.view_far = far;
 
     if (tech == SWARP_TECHNIQUE_PSM) {
-        s = sw_psm_setup(cam, light, B, nb, B_poly, H, nh, near, far, o, &res);
+        s = sw_psm_setup(cam, light, B, nb, B_poly, H, nh, near, far, o, fw, &res);
         if (swarp_status_is_error(s)) return s;
         info = sw_info_merge(info, s);
     } else {
@@ -163,7 +164,7 @@ static swarp_status sw_setup_points(const swarp_camera* cam, const swarp_light* 
         if (light->type == SWARP_LIGHT_POINT) {
             swarp_vec3 a = {0, 0, -1};
             if (!sw_point_axis(light, B, nb, &a)) return SWARP_ERR_LIGHT_INSIDE_BODY;
-            s = sw_light_view(cam, light->position, a, &L);
+            s = fw ? sw_follow_light_view(cam, light->position, a, fw, &L) : sw_light_view(cam, light->position, a, &L);
             if (swarp_status_is_error(s)) return s;
             info = sw_info_merge(info, s);
             /* every point must lie in front of the light within the widest
@@ -197,7 +198,8 @@ static swarp_status sw_setup_points(const swarp_camera* cam, const swarp_light* 
             res.light_near = fmax(dmin_allowed, 0.0);
             res.light_far = dmax;
         } else {
-            s = sw_light_view(cam, cam->eye, light->direction, &L);
+            s = fw ? sw_follow_light_view(cam, cam->eye, light->direction, fw, &L)
+                   : sw_light_view(cam, cam->eye, light->direction, &L);
             if (swarp_status_is_error(s)) return s;
             info = sw_info_merge(info, s);
         }
@@ -259,7 +261,7 @@ static swarp_status sw_setup_points(const swarp_camera* cam, const swarp_light* 
             w.n_user = o->n_user;
             w.pseudo_near = o->pseudo_near;
             w.pseudo_far = o->pseudo_far;
-            s = sw_warp_lispsm(&M, &M_inv, cam, near, far, Bp, nbk, ep, &w, &P, &wi);
+            s = sw_warp_lispsm_oriented(&M, &M_inv, cam, near, far, Bp, nbk, ep, &w, &P, &wi);
             if (swarp_status_is_error(s)) return s;
             info = sw_info_merge(info, s);
         } else {
@@ -407,7 +409,8 @@ static swarp_status sw_check_points_capacity(const swarp_polyhedron* B, const sw
  * eye, folded back into the results */
 static swarp_status sw_setup_range(const swarp_camera* cam, const swarp_light* light, const swarp_aabb* scene,
                                    double near, double far, const swarp_polyhedron* Hin,
-                                   const swarp_setup_options* o, swarp_vec3 eye, swarp_setup_result* out,
+                                   const swarp_setup_options* o, swarp_vec3 eye, const sw_follow* fw,
+                                   swarp_setup_result* out,
                                    swarp_vec3* out_points, size_t capacity, size_t* out_count) {
     swarp_polyhedron Hl, B;
     const swarp_polyhedron* Hp = Hin;
@@ -432,7 +435,7 @@ static swarp_status sw_setup_range(const swarp_camera* cam, const swarp_light* l
     }
     swarp_setup_result res;
     swarp_status info = sw_setup_points(cam, light, B.vertices, B.vertex_count, &B, Hp->vertices, Hp->vertex_count, near,
-                                        far, o, eye, &res);
+                                        far, o, eye, fw, &res);
     if (swarp_status_is_error(info)) return info;
     if (!sw_fold_result(&res, eye)) return SWARP_ERR_DEGENERATE;
     *out = res;
@@ -442,9 +445,10 @@ static swarp_status sw_setup_range(const swarp_camera* cam, const swarp_light* l
     return info;
 }
 
-SWARP_API swarp_status swarp_setup(const swarp_camera* cam, const swarp_light* light, const swarp_aabb* scene,
-                                   const swarp_setup_options* opts, swarp_setup_result* out,
-                                   swarp_vec3* out_points, size_t capacity, size_t* out_count) {
+/* swarp_setup, with the previous light frame to follow (NULL: stateless) */
+static swarp_status sw_setup_main(const swarp_camera* cam, const swarp_light* light, const swarp_aabb* scene,
+                                  const swarp_setup_options* opts, const sw_follow* fw, swarp_setup_result* out,
+                                  swarp_vec3* out_points, size_t capacity, size_t* out_count) {
     if (!cam || !light || !scene || !out) return SWARP_ERR_NULL_POINTER;
     swarp_setup_options o;
     swarp_status s = sw_check_common(cam, light, opts, &o);
@@ -479,7 +483,35 @@ SWARP_API swarp_status swarp_setup(const swarp_camera* cam, const swarp_light* l
         if (zn - pad > cam_near) zn -= pad;
         else zf += pad;
     }
-    return sw_setup_range(&rc, &rl, &rs, zn, zf, &H, &o, cam->eye, out, out_points, capacity, out_count);
+    return sw_setup_range(&rc, &rl, &rs, zn, zf, &H, &o, cam->eye, fw, out, out_points, capacity, out_count);
+}
+
+SWARP_API swarp_status swarp_setup(const swarp_camera* cam, const swarp_light* light, const swarp_aabb* scene,
+                                   const swarp_setup_options* opts, swarp_setup_result* out,
+                                   swarp_vec3* out_points, size_t capacity, size_t* out_count) {
+    return sw_setup_main(cam, light, scene, opts, NULL, out, out_points, capacity, out_count);
+}
+
+/* [RHS] §3.2.1 light-space alignment kept coherent over time (src/follow.c) */
+SWARP_API swarp_status swarp_setup_follow(const swarp_camera* cam, const swarp_light* light,
+                                          const swarp_aabb* scene, const swarp_setup_options* opts,
+                                          const swarp_camera* previous_cam, const swarp_setup_result* previous,
+                                          swarp_setup_result* out, swarp_vec3* out_points, size_t capacity,
+                                          size_t* out_count) {
+    if (!previous) return sw_setup_main(cam, light, scene, opts, NULL, out, out_points, capacity, out_count);
+    if (!cam || !light || !scene || !out) return SWARP_ERR_NULL_POINTER;
+    swarp_setup_options o;
+    swarp_status s = sw_check_common(cam, light, opts, &o);
+    if (s != SWARP_OK) return s;
+    if (previous_cam) {
+        s = sw_check_camera_shape(previous_cam);
+        if (s != SWARP_OK) return s;
+    }
+    swarp_technique tech = o.technique == SWARP_TECHNIQUE_DEFAULT ? SWARP_TECHNIQUE_LISPSM : o.technique;
+    sw_follow fw;
+    s = sw_follow_from_result(previous, cam, previous_cam, tech, &fw);
+    if (s != SWARP_OK) return s;
+    return sw_setup_main(cam, light, scene, opts, &fw, out, out_points, capacity, out_count);
 }
 
 SWARP_API swarp_status swarp_setup_range(const swarp_camera* cam, const swarp_light* light,
@@ -501,7 +533,7 @@ SWARP_API swarp_status swarp_setup_range(const swarp_camera* cam, const swarp_li
     sw_rel_light(light, cam->eye, &rl);
     sw_rel_box(scene, cam->eye, &rs);
     if (!sw_finite3(&rl.position) || !sw_finite3(&rs.min) || !sw_finite3(&rs.max)) return SWARP_ERR_NON_FINITE;
-    return sw_setup_range(&rc, &rl, &rs, near, far, NULL, &o, cam->eye, out, out_points, capacity, out_count);
+    return sw_setup_range(&rc, &rl, &rs, near, far, NULL, &o, cam->eye, NULL, out, out_points, capacity, out_count);
 }
 
 SWARP_API swarp_status swarp_setup_points(const swarp_camera* cam, const swarp_light* light,
@@ -537,7 +569,7 @@ SWARP_API swarp_status swarp_setup_points(const swarp_camera* cam, const swarp_l
         if (!sw_finite3(&Hr[i])) return SWARP_ERR_NON_FINITE;
     swarp_setup_result res;
     s = sw_setup_points(&rc, &rl, Br, count, NULL, receivers ? Hr : NULL, receivers ? receiver_count : 0, near, far,
-                        &o, cam->eye, &res);
+                        &o, cam->eye, NULL, &res);
     if (swarp_status_is_error(s)) return s;
     if (!sw_fold_result(&res, cam->eye)) return SWARP_ERR_DEGENERATE;
     *out = res;

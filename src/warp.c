@@ -171,11 +171,21 @@ swarp_status sw_warp_lispsm(const swarp_mat4* M, const swarp_mat4* M_inv, const 
     double vx = sw_at(M, 0, 0) * v.x + sw_at(M, 0, 1) * v.y + sw_at(M, 0, 2) * v.z;
     double vy = sw_at(M, 1, 0) * v.x + sw_at(M, 1, 1) * v.y + sw_at(M, 1, 2) * v.z;
     double vz = sw_at(M, 2, 0) * v.x + sw_at(M, 2, 1) * v.y + sw_at(M, 2, 2) * v.z;
-    double gamma = atan2(hypot(vx, vy), -vz);
+    double va = -vz; /* v along the light axis */
     if (sw_at(M, 3, 2) != 0.0) { /* point light: M = P0·L, P0's w row is -z of L */
-        double vw = sw_at(M, 3, 0) * v.x + sw_at(M, 3, 1) * v.y + sw_at(M, 3, 2) * v.z;
-        gamma = atan2(hypot(vx, vy), vw);
+        va = sw_at(M, 3, 0) * v.x + sw_at(M, 3, 1) * v.y + sw_at(M, 3, 2) * v.z;
     }
+    double gamma = atan2(hypot(vx, vy), va);
+    /* The angle the parameter functions see: γ_eff with sin γ_eff = |y·v|,
+     * the view direction's component along the warp axis y.  With y = v̂
+     * (light-space alignment) it is γ folded to [0, pi/2]; where the frame
+     * is turned away from v̂ (the blend near parallel, or a followed frame
+     * of swarp_setup_follow) the warp is as strong as the view's slope
+     * along its own axis, like n_opt's z_0, z_1 below, and uniform where
+     * y ⟂ v. */
+    double gamma_eff = (o->param == SWARP_WARP_PARAM_NREPAR || o->param == SWARP_WARP_PARAM_GMNPR)
+                           ? atan2(fabs(vy), hypot(vx, va))
+                           : gamma; /* unused by n_opt, (4.2) and the caller's n */
     /* C_start: [RHS] §4.1 takes s on the view vector at the depth of the
      * nearest vertex e (the given near); [WS06] takes e itself. */
     swarp_vec3 c_ws = sw_add(cam->eye, sw_scale(v, near));
@@ -192,7 +202,7 @@ swarp_status sw_warp_lispsm(const swarp_mat4* M, const swarp_mat4* M_inv, const 
     double n_light = INFINITY;
     swarp_status st = SWARP_OK;
     if (d > 0.0) {
-        swarp_status s = sw_warp_n(o, d, z0, z1, gamma, theta, near, far, &n_light);
+        swarp_status s = sw_warp_n(o, d, z0, z1, gamma_eff, theta, near, far, &n_light);
         if (s != SWARP_OK) return s;
     }
     double eps = (d > 0.0 && sw_finite(n_light)) ? 1.0 / n_light : 0.0;

@@ -490,6 +490,31 @@ def setup(camera, light, scene, options=None, near_far=None):
     return _result([res, [tuple(p) for p in pts[:count.value]]], st)
 
 
+_setup_follow = _fn("swarp_setup_follow", [_P(Camera), _P(Light), _P(AABB), _P(SetupOptions), _P(Camera),
+                                          _P(SetupResult), _P(SetupResult), _P(Vec3), ctypes.c_size_t,
+                                          _c_size_p])
+
+
+def setup_follow(camera, light, scene, previous, options=None, previous_camera=None):
+    """swarp_setup whose light frame follows the previous frame's continuously
+    (docs/geometry.md, "Continuity over the whole sphere"; [RHS] §3.2.1).
+    previous: the SetupResult of the previous frame (same technique), or
+    None for exactly swarp_setup's result; previous_camera: the previous
+    frame's Camera (None: the same as camera).  Returns (SetupResult,
+    [points of B]) with .status, like setup()."""
+    res = SetupResult()
+    pts = (Vec3 * BODY_MAX_POINTS)()
+    count = ctypes.c_size_t()
+    opt = ctypes.byref(options) if options is not None else None
+    prev = ctypes.byref(previous) if previous is not None else None
+    pcam = ctypes.byref(previous_camera) if previous_camera is not None else None
+    box = _aabb(scene)
+    code = _setup_follow(ctypes.byref(camera), ctypes.byref(light), ctypes.byref(box), opt, pcam, prev,
+                         ctypes.byref(res), pts, BODY_MAX_POINTS, ctypes.byref(count))
+    st = _check(code, "swarp_setup_follow")
+    return _result([res, [tuple(p) for p in pts[:count.value]]], st)
+
+
 # ---- splits stage: cascades, atlas ---------------------------------------------------
 SCHEME_DEFAULT, SCHEME_UNIFORM, SCHEME_LOG, SCHEME_PRACTICAL, SCHEME_PSEUDO = 0, 1, 2, 3, 4
 

@@ -21,7 +21,8 @@ static double now_ns(void) {
 int cmd_setup(sw_args* a) {
     static const char* const known[] = {"eye",   "dir",    "up",        "fovy",  "aspect", "near",
                                         "far",   "light-dir", "light-pos", "box", "map",    "screen",
-                                        "technique", "depth", "reps", "min-depth", NULL};
+                                        "technique", "depth", "reps", "min-depth", "prev-view", "prev-proj",
+                                        "prev-range", "prev-dir", NULL};
     /* stage: splits -- `setup --splits K` is the cascade (cmd_cascade.c) */
     if (cli_opt(a, "splits")) return cmd_cascade(a);
     if (!cli_check_known(a, known)) return 2;
@@ -97,19 +98,54 @@ int cmd_setup(sw_args* a) {
         fprintf(stderr, "swtool setup: --depth gl|zo, got '%s'\n", depth);
         return 2;
     }
+    /* swarp_setup_follow: the previous frame's light_view (and for PSM its
+     * light_proj and view range) as printed by an earlier `swtool setup --json` */
+    swarp_setup_result prev;
+    memset(&prev, 0, sizeof prev);
+    swarp_camera prev_cam = cam;
+    const char* pv = cli_opt(a, "prev-view");
+    if (pv && !cli_parse_list(pv, prev.light_view.m, 16)) {
+        fprintf(stderr, "swtool setup: --prev-view takes 16 numbers (column-major light_view)\n");
+        return 2;
+    }
+    const char* pp = cli_opt(a, "prev-proj");
+    if (pp && !cli_parse_list(pp, prev.light_proj.m, 16)) {
+        fprintf(stderr, "swtool setup: --prev-proj takes 16 numbers (column-major light_proj)\n");
+        return 2;
+    }
+    const char* pr = cli_opt(a, "prev-range");
+    double prv[3];
+    if (pr) {
+        if (!cli_parse_list(pr, prv, 3)) {
+            fprintf(stderr, "swtool setup: --prev-range near,far,n_param of the previous output\n");
+            return 2;
+        }
+        prev.view_near = prv[0], prev.view_far = prv[1], prev.n_eye = prv[2];
+    }
+    if ((pp || pr || cli_opt(a, "prev-dir")) && !pv) {
+        fprintf(stderr, "swtool setup: --prev-proj, --prev-range and --prev-dir need --prev-view\n");
+        return 2;
+    }
+    if (pv && o.technique == SWARP_TECHNIQUE_PSM && (!pp || !pr)) {
+        fprintf(stderr, "swtool setup: PSM follows its light camera: give --prev-proj and --prev-range too\n");
+        return 2;
+    }
+    if (!cli_vec3(a, "prev-dir", 0, &prev_cam.dir)) return 2;
     double* ns = malloc(sizeof(double) * reps);
     if (!ns) return 1;
     swarp_setup_result r;
     swarp_status s = SWARP_OK;
     for (unsigned k = 0; k < reps; ++k) {
         double t0 = now_ns();
-        s = swarp_setup(&cam, &light, &box, &o, &r, NULL, 0, NULL);
+        s = pv ? swarp_setup_follow(&cam, &light, &box, &o, &prev_cam, &prev, &r, NULL, 0, NULL)
+               : swarp_setup(&cam, &light, &box, &o, &r, NULL, 0, NULL);
         ns[k] = now_ns() - t0;
     }
     qsort(ns, reps, sizeof(double), cmp_double);
     double median = reps % 2 ? ns[reps / 2] : 0.5 * (ns[reps / 2 - 1] + ns[reps / 2]);
     free(ns);
-    if (swarp_status_is_error(s)) return cli_report_status(a, s, "swarp_setup");
+    const char* where = pv ? "swarp_setup_follow" : "swarp_setup";
+    if (swarp_status_is_error(s)) return cli_report_status(a, s, where);
     if (a->json) {
         json_begin();
         json_kv_status(s);
@@ -138,5 +174,5 @@ int cmd_setup(sw_args* a) {
             printf("  %14.8g %14.8g %14.8g %14.8g\n", r.matrix.m[row], r.matrix.m[4 + row], r.matrix.m[8 + row],
                    r.matrix.m[12 + row]);
     }
-    return cli_report_status(a, s, "swarp_setup");
+    return cli_report_status(a, s, where);
 }

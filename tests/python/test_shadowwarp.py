@@ -207,6 +207,44 @@ class LaterStages(unittest.TestCase):
             sw.setup(sw.Camera(near=2.0, far=1.0), light, ((-1, -1, -1), (1, 1, 1)))
         self.assertEqual(cm.exception.status, "SWARP_ERR_NEAR_FAR")
 
+    @need("swarp_setup_follow")
+    def test_setup_follow_is_continuous_through_the_view_axis(self):
+        # the light turns through the stateless rule's zero (5.57 degrees from
+        # the view direction toward the camera's right, docs/geometry.md
+        # section 7) in 0.01 degree steps, fed back through setup_follow
+        cam = sw.Camera(eye=(0, 10, 0), dir=(0, 0, -1), up=(0, 1, 0), fovy=1.0, aspect=16 / 9,
+                        near=1.0, far=100.0)
+        box = ((-300, -5, -150), (300, 40, 50))
+        opts = sw.SetupOptions(technique=sw.TECHNIQUE_UNIFORM)
+
+        def light(deg):
+            g = math.radians(deg)
+            return sw.Light(direction=(math.sin(g), 0, -math.cos(g)))  # v = -z, r = +x
+
+        def up(res):
+            m = res.light_view
+            return (m.m[1], m.m[5], m.m[9])
+
+        a = sw.setup(cam, light(5.5), box, opts)[0]
+        b = sw.setup(cam, light(5.63), box, opts)[0]
+        self.assertLess(sum(x * y for x, y in zip(up(a), up(b))), -0.9)  # the stateless flip
+        prev = None
+        for k in range(540, 571):
+            r = sw.setup_follow(cam, light(k * 0.01), box, prev, opts)  # errors raise
+            res = r[0]
+            self.assertIn(r.status, sw.STATUS)
+            if prev is not None:
+                self.assertGreater(sum(x * y for x, y in zip(up(prev), up(res))), math.cos(math.radians(0.1)))
+            prev = res
+        # previous = None is swarp_setup's result
+        p0 = sw.setup_follow(cam, light(30), box, None, opts)[0]
+        p1 = sw.setup(cam, light(30), box, opts)[0]
+        self.assertEqual(bytes(p0), bytes(p1))
+        bad = sw.SetupResult()
+        with self.assertRaises(sw.SwarpError) as cm:
+            sw.setup_follow(cam, light(30), box, bad, opts)
+        self.assertEqual(cm.exception.status, "SWARP_ERR_ZERO_VECTOR")
+
     @need("swarp_cascade_splits")
     def test_cascade_splits_and_selection(self):
         s = sw.cascade_splits(1.0, 100.0, count=4, scheme=sw.SCHEME_LOG)
