@@ -1356,6 +1356,133 @@ static void e_cascade_setup(swr_ctx* c) {
     if (K < SWARP_CASCADE_MAX_SPLITS) SWR_CHECK(c, swr_untouched(sp + K, sizeof sp - K * sizeof sp[0]), "wrote past count");
 }
 
+/* ------------------------------------------------------------------------ */
+/* coherent light frames over time (src/follow.c)                           */
+/* ------------------------------------------------------------------------ */
+SWR_WEAK(swarp_setup_follow)
+SWR_WEAK(swarp_focus_light_view_follow)
+
+/* The previous frame: the scene with the light turned by an angle (0, 1e-9,
+ * small, large) and the camera turned too; its camera and light in *p. */
+static void gen_previous_scene(swr_ctx* c, const scene_args* s, scene_args* p) {
+    *p = *s;
+    static const double brk[] = {0.0, 1e-9, 1e-6};
+    double dl = swr_one_in(c, 4) ? swr_num_in(c, 0, PI_, brk, 3) : swr_num_in(c, 0, 0.05, brk, 3);
+    double dc = swr_one_in(c, 2) ? 0 : swr_num_in(c, 0, 0.05, brk, 3);
+    if (fin3(&s->light.direction) && vmax(s->light.direction) > 0) p->light.direction = tilt(unit(s->light.direction), dl);
+    p->light.position.x += swr_num_in(c, -1, 1, NULL, 0) * dl;
+    if (fin3(&s->cam.dir) && vmax(s->cam.dir) > 0) p->cam.dir = tilt(unit(s->cam.dir), dc);
+}
+/* A previous light view whose rotation rows are broken: NaN, a zero row, not
+ * orthonormal, left-handed; the status each calls for. */
+static void corrupt_rows(swr_ctx* c, swarp_mat4* V) {
+    if (!swr_one_in(c, 12)) return;
+    int r = swr_u8(c) % 3;
+    switch (swr_u8(c) % 4) {
+        case 0: V->m[4 * (swr_u8(c) % 3) + r] = NAN, swr_expect(c, SWARP_ERR_NON_FINITE); break;
+        case 1: V->m[r] = V->m[4 + r] = V->m[8 + r] = 0, swr_expect(c, SWARP_ERR_ZERO_VECTOR), swr_domain(c, SWARP_ERR_FOLLOW_FRAME); break;
+        case 2: V->m[r] *= 1.1, V->m[4 + r] *= 1.1, V->m[8 + r] *= 1.1, swr_expect(c, SWARP_ERR_FOLLOW_FRAME); break;
+        default: V->m[r] = -V->m[r], V->m[4 + r] = -V->m[4 + r], V->m[8 + r] = -V->m[8 + r], swr_expect(c, SWARP_ERR_FOLLOW_FRAME); break;
+    }
+}
+static double angle_between(swarp_vec3 a, swarp_vec3 b) {
+    a = unit(a), b = unit(b);
+    return 2 * atan2(sqrt(dot(v3(a.x - b.x, a.y - b.y, a.z - b.z), v3(a.x - b.x, a.y - b.y, a.z - b.z))),
+                     sqrt(dot(v3(a.x + b.x, a.y + b.y, a.z + b.z), v3(a.x + b.x, a.y + b.y, a.z + b.z))));
+}
+/* The follow rule's bound: the new up (row 1) is the previous up, projected
+ * normal to the new axis, turned by at most SWARP_FOLLOW_KAPPA (angle the
+ * axis turned + angle the view direction turned) */
+static void check_follow_bound(swr_ctx* c, const swarp_mat4* V, const swarp_mat4* P, swarp_vec3 dir_prev, swarp_vec3 dir) {
+    swarp_vec3 a = v3(-V->m[2], -V->m[6], -V->m[10]), ap = v3(-P->m[2], -P->m[6], -P->m[10]);
+    swarp_vec3 up = v3(V->m[1], V->m[5], V->m[9]), upp = v3(P->m[1], P->m[5], P->m[9]);
+    double k = dot(upp, a);
+    swarp_vec3 h = v3(upp.x - k * a.x, upp.y - k * a.y, upp.z - k * a.z);
+    if (sqrt(dot(h, h)) < 1e-3) return; /* the previous up along the new axis: no direction to keep */
+    double delta = angle_between(ap, a) + angle_between(dir_prev, dir);
+    double turned = angle_between(h, up);
+    SWR_CHECK_ACC(c, turned <= SWARP_FOLLOW_KAPPA * delta + 1e-6, "the up vector turned %.9g rad, the bound is %g x %.9g", turned,
+                  SWARP_FOLLOW_KAPPA, delta);
+}
+
+static void e_setup_follow(swr_ctx* c) {
+    SKIP_IF_MISSING(c, swarp_setup_follow);
+    scene_args s, p;
+    gen_setup_scene(c, &s);
+    gen_previous_scene(c, &s, &p);
+    const swarp_setup_options* po = s.use_opt ? &s.opt : NULL;
+    swarp_setup_result prev;
+    int have_prev = !swr_one_in(c, 4) && !swarp_status_is_error(swarp_setup(&p.cam, &p.light, &p.box, po, &prev, NULL, 0, NULL));
+    int use_pcam = swr_one_in(c, 2);
+    if (have_prev) corrupt_rows(c, &prev.light_view);
+    const swarp_camera* pc = swr_in(c, &s.cam);
+    const swarp_light* pl = swr_in(c, &s.light);
+    const swarp_aabb* pb = swr_in(c, &s.box);
+    swarp_setup_result r;
+    swarp_vec3 pts[SWARP_BODY_MAX_POINTS];
+    size_t count;
+    swarp_setup_result* pr = swr_out(c, &r, sizeof r, SWR_REQ);
+    swarp_vec3* pp = swr_out(c, pts, sizeof pts, SWR_NONULL);
+    size_t* pn = swr_out(c, &count, sizeof count, SWR_NONULL);
+    expect_scene(c, &s, 1);
+    swr_domain(c, SWARP_ERR_CAPACITY), swr_domain(c, SWARP_ERR_FOLLOW_FRAME); /* PSM: a previous light camera out of range */
+    scene_cond(c, &s, s.cam.near, s.cam.far);
+    swarp_status st = SWR_CALL(c, swarp_setup_follow(pc, pl, pb, po, use_pcam ? &p.cam : NULL, have_prev ? &prev : NULL, pr, pp,
+                                                    SWARP_BODY_MAX_POINTS, pn));
+    if (!swr_done(c, st)) return;
+    check_setup_result(c, &s, st, &r, pts, count, 1);
+    if (!have_prev) { /* "NULL: exactly swarp_setup's result (bit for bit)" */
+        swarp_setup_result q;
+        memset(&q, 0, sizeof q);
+        swarp_status sq = SWR_CALL(c, swarp_setup(&s.cam, &s.light, &s.box, po, &q, NULL, 0, NULL));
+        SWR_CHECK(c, sq == st && memcmp(&q.matrix, &r.matrix, sizeof q.matrix) == 0 && q.n_eye == r.n_eye,
+                  "previous NULL: %s and a matrix other than swarp_setup's (%s)", swarp_status_name(st), swarp_status_name(sq));
+    } else if (!(s.use_opt && s.opt.technique == SWARP_TECHNIQUE_PSM) && st != SWARP_INFO_PSM_INVERSE) {
+        check_follow_bound(c, &r.light_view, &prev.light_view, use_pcam ? p.cam.dir : s.cam.dir, s.cam.dir);
+    }
+}
+
+static void e_focus_light_view_follow(swr_ctx* c) {
+    SKIP_IF_MISSING(c, swarp_focus_light_view_follow);
+    scene_args s, p;
+    gen_setup_scene(c, &s);
+    gen_previous_scene(c, &s, &p);
+    swarp_mat4 prev;
+    memset(&prev, 0, sizeof prev);
+    int have_prev = !swr_one_in(c, 4) && swarp_focus_light_view &&
+                    !swarp_status_is_error(swarp_focus_light_view(&p.cam, &p.light, NULL, &prev));
+    int use_pcam = swr_one_in(c, 2);
+    /* a previous view that is not finite (swarp_focus_light_view on an
+     * extreme input: a finding of that entry) is not a valid "previous" */
+    for (int i = 0; i < 16 && have_prev; ++i) have_prev = fin(prev.m[i]);
+    if (have_prev) corrupt_rows(c, &prev);
+    const swarp_camera* pc = swr_in(c, &s.cam);
+    const swarp_light* pl = swr_in(c, &s.light);
+    swarp_mat4 V;
+    swarp_mat4* pv = swr_out(c, &V, sizeof V, SWR_REQ);
+    expect_parts(c, &s, 0, X_CAM | X_LIGHT);
+    swr_domain(c, SWARP_ERR_ZERO_VECTOR), swr_domain(c, SWARP_ERR_DEGENERATE), swr_domain(c, SWARP_ERR_NEAR_FAR);
+    swr_args(c, "eye (%g %g %g) dir (%g %g %g) up (%g %g %g) light %d dir (%g %g %g) pos (%g %g %g) cone %g prev %d rows (%g %g %g / %g %g %g / %g %g %g) pcam %d",
+             s.cam.eye.x, s.cam.eye.y, s.cam.eye.z, s.cam.dir.x, s.cam.dir.y, s.cam.dir.z, s.cam.up.x, s.cam.up.y, s.cam.up.z,
+             (int)s.light.type, s.light.direction.x, s.light.direction.y, s.light.direction.z, s.light.position.x,
+             s.light.position.y, s.light.position.z, s.light.cone_angle, have_prev, prev.m[0], prev.m[4], prev.m[8], prev.m[1],
+             prev.m[5], prev.m[9], prev.m[2], prev.m[6], prev.m[10], use_pcam);
+    if (!swr_done(c, SWR_CALL(c, swarp_focus_light_view_follow(pc, pl, NULL, use_pcam ? &p.cam : NULL, have_prev ? &prev : NULL, pv))))
+        return;
+    for (int i = 0; i < 16; ++i) swr_rec(c, "view", V.m[i]);
+    for (int a = 0; a < 3; ++a)
+        for (int b = 0; b < 3; ++b)
+            SWR_CHECK(c, fabs(dot(row3(&V, a), row3(&V, b)) - (a == b)) <= 1e-12, "rows %d, %d not orthonormal", a, b);
+    SWR_CHECK(c, dot(cross(row3(&V, 0), row3(&V, 1)), row3(&V, 2)) > 0, "left-handed light view");
+    if (!have_prev) { /* "NULL: exactly swarp_focus_light_view" */
+        swarp_mat4 q;
+        swarp_status sq = SWR_CALL(c, swarp_focus_light_view(&s.cam, &s.light, NULL, &q));
+        SWR_CHECK(c, sq == c->status && memcmp(&q, &V, sizeof q) == 0, "previous NULL: not swarp_focus_light_view's view");
+    } else {
+        check_follow_bound(c, &V, &prev, use_pcam ? p.cam.dir : s.cam.dir, s.cam.dir);
+    }
+}
+
 const swr_entry swr_entries_geometry[] = {
     {"swarp_setup", "geometry", e_setup},
     {"swarp_setup_range", "geometry", e_setup_range},
@@ -1375,5 +1502,7 @@ const swr_entry swr_entries_geometry[] = {
     {"swarp_warp_lispsm", "geometry", e_warp_lispsm},
     {"swarp_setup_points", "geometry", e_setup_points},
     {"swarp_cascade_setup", "splits", e_cascade_setup},
+    {"swarp_setup_follow", "geometry", e_setup_follow},
+    {"swarp_focus_light_view_follow", "geometry", e_focus_light_view_follow},
     {NULL, NULL, NULL},
 };
