@@ -104,7 +104,9 @@ static double sw_round_up_coarse(double h) {
 /* Quantise a padded full size up to a whole number of level steps. */
 static double sw_quantise(double size, double step, uint32_t* level) {
     double k = ceil(size / step);
-    if (k < 1.0) k = 1.0;
+    /* !(k >= 1), not k < 1: a NaN (step 0 or inf) must not reach the
+     * uint32_t cast below (undefined behaviour; UBSan in the fuzz build) */
+    if (!(k >= 1.0)) k = 1.0;
     *level = k > 4294967295.0 ? 4294967295u : (uint32_t)k;
     return k * step;
 }
