@@ -335,9 +335,20 @@ SWARP_API swarp_status swarp_mat4_to_float(const swarp_mat4* m, float out[16]);
 /** @brief r = a * b (column-major). r may alias a or b. */
 SWARP_API swarp_status swarp_mat4_mul(const swarp_mat4* a, const swarp_mat4* b, swarp_mat4* r);
 
+/** Largest condition number swarp_mat4_invert accepts: 2^47 (about 1.4e14),
+ *  where kappa * DBL_EPSILON = 1/32 and the inverse keeps only a few correct
+ *  bits.  kappa = |a'|_inf |a'^-1|_inf (row-sum norms) of a' = R a C, the
+ *  matrix with every row and then every column scaled by a power of two to a
+ *  largest entry in [1, 2): badly scaled but well-conditioned matrices
+ *  (diag(1e30, 1, 1, 1e-30)) are accepted. */
+#define SWARP_MAT4_MAX_CONDITION 0x1p47
+
 /** @brief r = inverse(a), Gauss-Jordan with partial pivoting in double.
- *  @return SWARP_ERR_SINGULAR when the pivot falls below 1e-300 relative to
- *  the largest element. */
+ *  @param[in] a matrix; @param[out] r its inverse (may alias a).
+ *  @return SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE (an element of a is
+ *  NaN/Inf), SWARP_ERR_SINGULAR (a pivot is 0 or below 1e-300 of the largest
+ *  element, the inverse overflows, or the computed condition number exceeds
+ *  SWARP_MAT4_MAX_CONDITION: numerically singular; r untouched), SWARP_OK. */
 SWARP_API swarp_status swarp_mat4_invert(const swarp_mat4* a, swarp_mat4* r);
 
 /** @brief Apply a matrix to a point (w = 1) and return the homogeneous result. */
@@ -1396,7 +1407,9 @@ typedef struct swarp_lloyd_report {
  *  zero total weight is removed (its two adjacent layers merge) and the
  *  heaviest cluster is split in two at its weighted mean -/+ its weighted
  *  standard deviation.  s_0 and s_N stay fixed; splits are kept strictly
- *  increasing (minimum gap 1e-9 (s_N - s_0)).  Deterministic, no allocation.
+ *  increasing (minimum gap max(1e-9 (s_N - s_0), 2 ulp(max(|s_0|, |s_N|))),
+ *  at least one ulp when the range holds too few doubles for that).
+ *  Deterministic, no allocation.
  *  @param[in] mu, sigma2  count samples of an unwarped VSM (e.g. 2x2 filtered)
  *  @param[in] opt  may be NULL (all defaults)
  *  @param[in] splits_in  N + 1 strictly increasing initial splits
@@ -1436,9 +1449,11 @@ SWARP_API swarp_status swarp_evsm_max_exponent(swarp_texel_format format, double
 /** @brief EVSM moments of depth x ([VSM] §4.2): positive warp e^{c_pos x}
  *  and negative warp -e^{-c_neg x}, each with its square:
  *  out = (e^{c_pos x}, e^{2 c_pos x}, -e^{-c_neg x}, e^{-2 c_neg x}).
- *  @param[in] c_pos, c_neg  > 0 with e^{2c|x|} finite in double
- *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
- *          SWARP_ERR_FILTER_EXPONENT. */
+ *  @param[in] c_pos, c_neg  in (0, 354]: e^{2c} finite in double, so every
+ *                 depth in [0, 1] has finite moments
+ *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE (x, c_pos or
+ *          c_neg NaN/Inf), SWARP_ERR_FILTER_EXPONENT (c_pos or c_neg <= 0 or
+ *          > 354, or a moment e^{2c|x|} overflows for this x, |x| > 1). */
 SWARP_API swarp_status swarp_evsm_moments(double x, double c_pos, double c_neg,
                                           double out_moments[4]);
 
@@ -1447,7 +1462,11 @@ SWARP_API swarp_status swarp_evsm_moments(double x, double c_pos, double c_neg,
  *  variance is given in depth units and mapped into each warp by its
  *  derivative at t: min_variance (c e^{+-c t})^2.
  *  @param[in] moments  filtered moments laid out as swarp_evsm_moments
- *  @return as swarp_evsm_moments, plus SWARP_ERR_OUT_OF_RANGE (min_variance < 0). */
+ *  @return as swarp_evsm_moments (SWARP_ERR_FILTER_EXPONENT also when
+ *          e^{c|t|} overflows for the receiver depth t), plus
+ *          SWARP_ERR_OUT_OF_RANGE (min_variance < 0) and SWARP_ERR_NON_FINITE
+ *          (a moment NaN/Inf, or moments beyond ~1e154 whose variance
+ *          overflows). */
 SWARP_API swarp_status swarp_evsm_visibility(const double moments[4], double t, double c_pos,
                                              double c_neg, double min_variance,
                                              double* out_visibility);

@@ -57,8 +57,10 @@ SWARP_API swarp_status swarp_evsm_moments(double x, double c_pos, double c_neg,
     double e_pos = exp(c_pos * x);  /* positive warp e^{c x} */
     double e_neg = exp(-c_neg * x); /* magnitude of the negative warp -e^{-c x} */
     double m[4] = {e_pos, e_pos * e_pos, -e_neg, e_neg * e_neg};
+    /* |x| too large for c: e^{2c|x|} overflows, the documented exponent
+     * error (x itself is finite, so NON_FINITE would blame the input) */
     for (int i = 0; i < 4; ++i)
-        if (!sw_finite(m[i])) return SWARP_ERR_NON_FINITE; /* |x| too large for c */
+        if (!sw_finite(m[i])) return SWARP_ERR_FILTER_EXPONENT;
     memcpy(out_moments, m, sizeof m);
     return SWARP_OK;
 }
@@ -74,13 +76,13 @@ SWARP_API swarp_status swarp_evsm_visibility(const double moments[4], double t, 
     if (st != SWARP_OK) return st;
     if (min_variance < 0.0) return SWARP_ERR_OUT_OF_RANGE;
     double w_pos = exp(c_pos * t), w_neg = -exp(-c_neg * t);
-    if (!sw_finite(w_pos) || !sw_finite(w_neg)) return SWARP_ERR_NON_FINITE;
+    if (!sw_finite(w_pos) || !sw_finite(w_neg)) return SWARP_ERR_FILTER_EXPONENT; /* e^{c|t|} overflows */
     /* the variance floor mapped through each warp's slope at t */
     double k_pos = c_pos * w_pos, k_neg = c_neg * w_neg;
     double v_pos = sw_chebyshev(moments[0], moments[1], w_pos, min_variance * k_pos * k_pos);
     double v_neg = sw_chebyshev(moments[2], moments[3], w_neg, min_variance * k_neg * k_neg);
     double v = v_pos < v_neg ? v_pos : v_neg; /* both are upper bounds: keep the tighter */
-    if (!sw_finite(v)) return SWARP_ERR_NON_FINITE;
+    if (!sw_finite(v)) return SWARP_ERR_NON_FINITE; /* moments beyond ~1e154: variance overflows */
     *out_visibility = v;
     return SWARP_OK;
 }

@@ -94,8 +94,17 @@ SWARP_API swarp_status swarp_lvsm_lloyd(const double* mu, const double* sigma2, 
     const double range = s_N - s_0;
     const uint32_t max_it = o.max_iterations ? o.max_iterations : SW_LLOYD_DEFAULT_ITERATIONS;
     const double tol = o.tolerance > 0.0 ? o.tolerance / range : SW_LLOYD_REL_TOL;
-    const double gap = SW_LLOYD_REL_GAP;
     const uint32_t k = n_layers - 1; /* inner splits = cluster means */
+    /* The minimum gap in normalised units: 1e-9 of the range, but at least
+     * two ulps of the splits' magnitude, else a 1e-9 gap far from the origin
+     * (s_0 = 1e6 over a range of 4.5e-3: 1e-9 of it is 4.5e-12, one ulp of
+     * 1e6 is 1.2e-10) rounds away when the splits go back to depth units and
+     * neighbouring splits collapse.  Capped so that k gaps still fit in
+     * [0, 1] (a range of only a few ulps: the final pass below steps apart). */
+    const double s_mag = fmax(fabs(s_0), fabs(s_N));
+    const double ulp = nextafter(s_mag, INFINITY) - s_mag;
+    double gap = fmax(SW_LLOYD_REL_GAP, 2.0 * ulp / range);
+    if (gap > 0.5 / (double)(k + 1)) gap = 0.5 / (double)(k + 1);
     double w_max = 0.0;
     for (size_t j = 0; j < count; ++j) {
         double w = sw_weight(sigma2[j], o.weight_clamp_lo, o.weight_clamp_hi);
@@ -120,7 +129,6 @@ SWARP_API swarp_status swarp_lvsm_lloyd(const double* mu, const double* sigma2, 
             }
             ++rep.iterations;
             double W[SWARP_LVSM_MAX_LAYERS], X[SWARP_LVSM_MAX_LAYERS], X2[SWARP_LVSM_MAX_LAYERS];
-            double W_total = 0.0;
             for (uint32_t i = 0; i < k; ++i) W[i] = X[i] = X2[i] = 0.0;
             for (size_t j = 0; j < count; ++j) {
                 double w = sw_weight(sigma2[j], o.weight_clamp_lo, o.weight_clamp_hi) / w_max;
@@ -133,12 +141,10 @@ SWARP_API swarp_status swarp_lvsm_lloyd(const double* mu, const double* sigma2, 
                 W[i] += w;
                 X[i] += w * x;
                 X2[i] += w * x * x;
-                W_total += w;
             }
-            if (!(W_total > 0.0)) {
-                result = SWARP_INFO_FILTER_NO_WEIGHT;
-                break;
-            }
+            /* Sum of W >= 1 here: the sample of weight w_max contributes
+             * w_max / w_max = 1, and w_max = 0 returned NO_WEIGHT before the
+             * loop (a check here was dead code, issue 9 coverage). */
             /* Teleportation: the first empty cluster is removed (its two
              * layers merge) and the heaviest cluster is split in two. */
             uint32_t empty = k, heavy = 0;
@@ -192,9 +198,10 @@ SWARP_API swarp_status swarp_lvsm_lloyd(const double* mu, const double* sigma2, 
         out[i + 1] = (result == SWARP_INFO_FILTER_NO_WEIGHT) ? splits_in[i + 1] : s_0 + c[i] * range;
     }
     out[n_layers] = s_N;
-    /* The 1e-9 gap may be below one ulp of s_0 (say s_0 = 1e6 over a range of
-     * 1e-3): step to the next representable value so the splits stay strictly
-     * increasing (possible: the input had N + 1 distinct values in range). */
+    /* A range of only a few ulps (the capped gap above) can still round two
+     * splits together: step to the next representable value so the splits
+     * stay strictly increasing (possible: the input had N + 1 distinct values
+     * in range). */
     for (uint32_t i = 1; i < n_layers; ++i)
         if (!(out[i] > out[i - 1])) out[i] = nextafter(out[i - 1], s_N);
     for (uint32_t i = n_layers - 1; i > 0; --i)

@@ -38,6 +38,18 @@ static swarp_status sw_put_warp(double v, swarp_status ok_status, double* out) {
     return ok_status;
 }
 
+/* a * b / c for finite a, b and c != 0, with one rounding into the
+ * subnormal range or to overflow at the end: the mantissas are multiplied
+ * (|m| in [0.5, 1)) and the exponents added, so no intermediate overflows or
+ * underflows when the result itself is representable.  Used where the
+ * factors of a warp parameter span more than the double range (extreme
+ * inputs beyond 1e+-100, docs/quality.md). */
+static double sw_mul_div(double a, double b, double c) {
+    int ea, eb, ec;
+    double ma = frexp(a, &ea), mb = frexp(b, &eb), mc = frexp(c, &ec);
+    return ldexp(ma * mb / mc, ea + eb - ec);
+}
+
 /* ---- [RHS] (3.2) and (4.2) --------------------------------------------- */
 
 /* (3.2) rewritten without the cancellation in sqrt(z_1/z_0) - 1:
@@ -47,16 +59,26 @@ static swarp_status sw_put_warp(double v, swarp_status ok_status, double* out) {
  * at n_p = f_p = 0, so both share sw_nopt_core. */
 static swarp_status sw_nopt_core(double d, double z_0, double z_1, double n_p, double f_p,
                                  double* out_n_opt) {
-    double dz = z_1 - z_0;
+    double dz = z_1 - z_0; /* exact for subnormals and (Sterbenz) for z_1 ~ z_0 */
     if (dz == 0.0) {
         *out_n_opt = INFINITY; /* duelling frusta: uniform is optimal [RHS] §3.2.1 */
         return SWARP_INFO_WARP_UNIFORM;
     }
-    /* pseudo-near and pseudo-far as eye-space depths */
-    double z_pn = z_0 + n_p * dz;
-    double z_pf = z_1 - f_p * dz;
-    double root = sqrt(z_pn) * sqrt(z_pf); /* no overflow of the product */
-    double n_opt = (d / dz) * (z_0 + root);
+    /* The ratio (z_0 + root) / dz is homogeneous of degree 0 in the depths,
+     * so they are scaled by s = 2^(-2k) (exact) to put z_1 s in [1, 4): the
+     * subnormal depths and depths near DBL_MAX neither lose bits nor
+     * overflow (d / dz used to overflow for z_1 = 4e-319).  sqrt(z s) =
+     * sqrt(z) 2^-k keeps the root exact even where z_0 s would be subnormal. */
+    int e = ilogb(z_1);
+    int k = (e - (e & 1)) / 2; /* floor(e / 2): scaling z by 4^j changes k by exactly j */
+    double sh = ldexp(1.0, -k);
+    double dz_s = (dz * sh) * sh; /* dz >= ulp(z_1): normal after scaling */
+    /* pseudo-near and pseudo-far as scaled eye-space depths */
+    double z_0s = (z_0 * sh) * sh, z_1s = (z_1 * sh) * sh;
+    double rn = n_p == 0.0 ? sqrt(z_0) * sh : sqrt(z_0s + n_p * dz_s);
+    double rf = f_p == 0.0 ? sqrt(z_1) * sh : sqrt(z_1s - f_p * dz_s);
+    double ratio = (z_0s + rn * rf) / dz_s; /* in [~sqrt(z_0/z_1), 2^54] */
+    double n_opt = d * ratio;               /* over/underflows only when the value does */
     return sw_put_warp(n_opt, SWARP_OK, out_n_opt);
 }
 
@@ -108,7 +130,9 @@ SWARP_API swarp_status swarp_warp_eta(double gamma, double theta, double* out_et
     if (gamma <= gamma_a)
         eta = -1.0;
     else if (gamma <= gamma_b)
-        eta = -1.0 + (SW_ETA_B + 1.0) * (gamma - gamma_a) / (gamma_b - gamma_a);
+        /* the ratio in [0, 1] first: (0.8 (gamma - gamma_a)) / ... rounds
+         * 0.8 x 4.9e-324 up to 4.9e-324 for subnormal angles (eta 0, not -0.2) */
+        eta = -1.0 + (SW_ETA_B + 1.0) * ((gamma - gamma_a) / (gamma_b - gamma_a));
     else if (gamma <= gamma_c) /* sin(90 deg * t), t in (0, 1] */
         eta = SW_ETA_B + (SW_ETA_C - SW_ETA_B) * sin(SW_HALF_PI * (gamma - gamma_b) / (gamma_c - gamma_b));
     else
@@ -148,14 +172,23 @@ SWARP_API swarp_status swarp_warp_nrepar(double eta, double alpha, double W_lz, 
         *out_n = INFINITY; /* eta = -1 is uniform by construction */
         return SWARP_INFO_WARP_UNIFORM;
     }
+    /* W_lz/(alpha - 1) (1 + sqrt(alpha) - eta (alpha - 1))/(eta + 1) with
+     * 1/(sqrt(alpha) - 1) = (1 + sqrt(alpha))/(alpha - 1) = r factored out:
+     *   eta < 0:  n = W_lz (r - eta) / (eta + 1)
+     *   eta >= 0: n = W_lz r / (eta sqrt(alpha) + 1)
+     * r - eta and both denominators are sums of non-negative terms (no
+     * cancellation; eta + 1 is exact by Sterbenz near -1), r is in
+     * [7e-155, 1e16] for every double alpha > 1, and sw_mul_div rounds into
+     * the subnormal range or to overflow only at the end: alpha = DBL_MAX or
+     * eta = -1 + 1e-16 no longer overflow or underflow in between. */
     double sqrt_alpha = sqrt(alpha);
-    double scale = W_lz / (alpha - 1.0);
-    double g;
+    double r = (1.0 + sqrt_alpha) / (alpha - 1.0);
+    double n;
     if (eta < 0.0)
-        g = (1.0 + sqrt_alpha - eta * (alpha - 1.0)) / (eta + 1.0);
+        n = sw_mul_div(W_lz, r - eta, eta + 1.0);
     else
-        g = (1.0 + sqrt_alpha) / (eta * sqrt_alpha + 1.0);
-    return sw_put_warp(scale * g, SWARP_OK, out_n);
+        n = sw_mul_div(W_lz, r, eta * sqrt_alpha + 1.0);
+    return sw_put_warp(n, SWARP_OK, out_n);
 }
 
 /* ---- [GMNPR] ------------------------------------------------------------ */
@@ -171,6 +204,16 @@ static double sw_u_ratio(double theta, double phi) { return sin(theta) / (cos(th
 
 /* D = f - n + (f + n) tan(phi)/tan(theta): the normalising depth of case 1. */
 static double sw_case1_D(double t, double n, double f) { return (f - n) + (f + n) * t; }
+
+/* D / two with two = 1, or 2 when D itself overflows (f near DBL_MAX); the
+ * halved form is used only then, since halving subnormal n, f loses bits. */
+static double sw_case1_D_half(double t, double n, double f, double* two) {
+    double D = sw_case1_D(t, n, f);
+    *two = 1.0;
+    if (sw_finite(D)) return D;
+    *two = 2.0;
+    return 0.5 * (f - n) + (0.5 * f + 0.5 * n) * t;
+}
 
 static swarp_status sw_gmnpr_frame(double phi, double n, double f) {
     if (!sw_finite(phi) || !sw_finite(n) || !sw_finite(f)) return SWARP_ERR_NON_FINITE;
@@ -188,45 +231,130 @@ static swarp_status sw_gmnpr_args(double lambda, double theta, double phi, doubl
     return SWARP_OK;
 }
 
-/* psi and offset of (2) without checks; 0 on overflow of either. */
-static int sw_gmnpr_psi_offset(double lambda, double theta, double phi, double n, double f,
-                               double* psi, double* offset) {
-    double ll = lambda * (lambda + 1.0);
-    double p, o;
+/* prod(num) / prod(den) for finite factors (den non-zero): mantissas
+ * multiplied, exponents added, one rounding into the subnormal range or to
+ * overflow at the end.  [GMNPR] (2) multiplies up to six factors (lambda^2,
+ * tan, f, z) that overflow or underflow in pairs for lambda beyond 1e150
+ * while psi and F stay representable. */
+static double sw_ratio(const double* num, int n_num, const double* den, int n_den) {
+    double m = 1.0;
+    int e = 0, k;
+    for (int i = 0; i < n_num; ++i) {
+        m *= frexp(num[i], &k);
+        e += k;
+        m = frexp(m, &k);
+        e += k;
+    }
+    for (int i = 0; i < n_den; ++i) {
+        m /= frexp(den[i], &k);
+        e -= k;
+        m = frexp(m, &k);
+        e += k;
+    }
+    return ldexp(m, e);
+}
+
+/* Appends lambda (lambda + 1) to a list of denominators as lambda, lambda + 1
+ * for lambda < 1 and as lambda, lambda, 1 + 1/lambda above (lambda + 1
+ * rounds to +inf for lambda = DBL_MAX under FE_UPWARD); returns the count. */
+static int sw_put_ll(double lambda, double* den) {
+    if (lambda < 1.0) {
+        den[0] = lambda;
+        den[1] = lambda + 1.0;
+        return 2;
+    }
+    den[0] = den[1] = lambda;
+    den[2] = 1.0 + 1.0 / lambda;
+    return 3;
+}
+
+/* psi and offset of (2) without checks; each flag is 0 on overflow.
+ * psi = 1/(tan(phi) D lambda (lambda + 1)) (case 1) or
+ * 1/(2 f lambda (lambda + 1) tan(theta)) (case 2), as a ratio of factors so
+ * that lambda (lambda + 1) overflowing does not make psi 0. */
+static void sw_gmnpr_psi_offset(double lambda, double theta, double phi, double n, double f,
+                                double* psi, int* psi_ok, double* offset, int* offset_ok) {
+    double p, o, den[6];
+    const double one = 1.0;
     if (theta >= phi) {
-        double t = sw_t_ratio(theta, phi);
-        double D = sw_case1_D(t, n, f);
-        p = 1.0 / (tan(phi) * D * ll);
-        o = D * lambda + n * t - n;
+        double t = sw_t_ratio(theta, phi), two;
+        double Dh = sw_case1_D_half(t, n, f, &two);
+        den[0] = tan(phi);
+        den[1] = Dh;
+        den[2] = two;
+        p = sw_ratio(&one, 1, den, 3 + sw_put_ll(lambda, den + 3));
+        o = sw_case1_D(t, n, f) * lambda + n * t - n;
     } else {
         /* 1/(tan(phi) 2 f lambda (lambda+1) tan(theta)/tan(phi)) = 1/(2 f ll tan(theta)) */
         double u = sw_u_ratio(theta, phi);
-        p = 1.0 / (2.0 * f * ll * tan(theta));
+        den[0] = 2.0;
+        den[1] = f;
+        den[2] = tan(theta);
+        p = sw_ratio(&one, 1, den, 3 + sw_put_ll(lambda, den + 3));
         o = f * ((2.0 * lambda + 1.0) / u - 1.0);
     }
-    if (!sw_finite(p) || !sw_finite(o)) return 0;
     *psi = p;
+    *psi_ok = sw_finite(p);
     *offset = o;
-    return 1;
+    *offset_ok = sw_finite(o);
 }
 
-/* psi and varphi of [GMNPR] (2) after the argument checks (the same for both
- * public queries); SWARP_ERR_OVERFLOW when either is not finite. */
-static swarp_status sw_gmnpr_checked(double lambda, double theta, double phi, double n, double f,
-                                     double* psi, double* offset) {
-    swarp_status s = sw_gmnpr_args(lambda, theta, phi, n, f);
-    if (s != SWARP_OK) return s;
-    if (!sw_gmnpr_psi_offset(lambda, theta, phi, n, f, psi, offset)) return SWARP_ERR_OVERFLOW;
-    return SWARP_OK;
+/* F = psi (z + varphi)^2 / z of (2) without checks; 0 when it overflows.
+ * The square (z + varphi)^2 ~ lambda^2 is never formed: for lambda >= 1,
+ * a = (z + varphi)/lambda stays bounded and
+ *   F = a^2 / ((1 + 1/lambda) tan(phi) D z)          (case 1),
+ *   F = a^2 / ((1 + 1/lambda) 2 f tan(theta) z)      (case 2);
+ * for lambda < 1, zo = z + varphi itself is bounded and
+ *   F = zo^2 / (lambda (lambda + 1) tan(phi) D z)    (likewise case 2).
+ * In case 1, z + varphi = D lambda + c with c = (z - n) + n t >= 0 (no
+ * cancellation); in case 2 it is (z - f) + f (2 lambda + 1)/u >= z. */
+static int sw_gmnpr_F_value(double lambda, double theta, double phi, double n, double f, double z,
+                            double* out_F) {
+    double a, two = 1.0, den[7];
+    int n_den;
+    if (theta >= phi) {
+        /* with D = two Dh: F = (a/two)^2 two / (... Dh ...) */
+        double t = sw_t_ratio(theta, phi);
+        double Dh = sw_case1_D_half(t, n, f, &two);
+        double c = ((z - n) + n * t) / two;
+        den[0] = tan(phi);
+        den[1] = Dh;
+        n_den = 2;
+        a = lambda >= 1.0 ? Dh + c / lambda : Dh * lambda + c;
+    } else {
+        double u = sw_u_ratio(theta, phi);
+        den[0] = 2.0;
+        den[1] = f;
+        den[2] = tan(theta);
+        n_den = 3;
+        a = lambda >= 1.0 ? (z - f) / lambda + sw_mul_div(f, 2.0 + 1.0 / lambda, u)
+                          : (z - f) + sw_mul_div(f, 2.0 * lambda + 1.0, u);
+    }
+    den[n_den++] = z;
+    if (lambda >= 1.0) {
+        den[n_den++] = 1.0 + 1.0 / lambda; /* a = zo / lambda */
+    } else {
+        den[n_den++] = lambda; /* a = zo */
+        den[n_den++] = lambda + 1.0;
+    }
+    if (!sw_finite(a) || !(a > 0.0)) return 0;
+    const double num[3] = {a, a, two};
+    double F = sw_ratio(num, 3, den, n_den);
+    if (!sw_finite(F)) return 0;
+    *out_F = F;
+    return 1;
 }
 
 /* [GMNPR] (2), psi */
 SWARP_API swarp_status swarp_gmnpr_psi(double lambda, double theta, double phi, double n,
                                        double f, double* out_psi) {
     if (!out_psi) return SWARP_ERR_NULL_POINTER;
-    double psi, offset;
-    swarp_status s = sw_gmnpr_checked(lambda, theta, phi, n, f, &psi, &offset);
+    swarp_status s = sw_gmnpr_args(lambda, theta, phi, n, f);
     if (s != SWARP_OK) return s;
+    double psi, offset;
+    int psi_ok, offset_ok;
+    sw_gmnpr_psi_offset(lambda, theta, phi, n, f, &psi, &psi_ok, &offset, &offset_ok);
+    if (!psi_ok) return SWARP_ERR_OVERFLOW; /* above DBL_MAX, or below the subnormals */
     *out_psi = psi;
     return SWARP_OK;
 }
@@ -235,15 +363,20 @@ SWARP_API swarp_status swarp_gmnpr_psi(double lambda, double theta, double phi, 
 SWARP_API swarp_status swarp_gmnpr_offset(double lambda, double theta, double phi, double n,
                                           double f, double* out_offset) {
     if (!out_offset) return SWARP_ERR_NULL_POINTER;
-    double psi, offset;
-    swarp_status s = sw_gmnpr_checked(lambda, theta, phi, n, f, &psi, &offset);
+    swarp_status s = sw_gmnpr_args(lambda, theta, phi, n, f);
     if (s != SWARP_OK) return s;
+    double psi, offset;
+    int psi_ok, offset_ok;
+    sw_gmnpr_psi_offset(lambda, theta, phi, n, f, &psi, &psi_ok, &offset, &offset_ok);
+    if (!offset_ok) return SWARP_ERR_OVERFLOW;
     *out_offset = offset;
     return SWARP_OK;
 }
 
-/* [GMNPR] (2), F = psi (z + varphi)^2 / z, evaluated as (psi (z+varphi)) ((z+varphi)/z)
- * so large lambda (psi ~ 1/lambda^2, varphi ~ lambda) does not overflow. */
+/* [GMNPR] (2), F = psi (z + varphi)^2 / z, evaluated by sw_gmnpr_F_value so
+ * large lambda (psi ~ 1/lambda^2, varphi ~ lambda) and huge f, z neither
+ * overflow nor underflow in between (F used to come out 0 with SWARP_OK for
+ * lambda ~ 1e274). */
 SWARP_API swarp_status swarp_gmnpr_F(double lambda, double theta, double phi, double n,
                                      double f, double z, double* out_F) {
     if (!out_F) return SWARP_ERR_NULL_POINTER;
@@ -251,11 +384,21 @@ SWARP_API swarp_status swarp_gmnpr_F(double lambda, double theta, double phi, do
     swarp_status s = sw_gmnpr_args(lambda, theta, phi, n, f);
     if (s != SWARP_OK) return s;
     if (!(z >= n && z <= f)) return SWARP_ERR_OUT_OF_RANGE;
-    double psi, offset;
-    if (!sw_gmnpr_psi_offset(lambda, theta, phi, n, f, &psi, &offset)) return SWARP_ERR_OVERFLOW;
-    double zo = z + offset; /* > 0 on [n, f] in both cases */
-    double F = (psi * zo) * (zo / z);
-    if (!sw_finite(F)) return SWARP_ERR_OVERFLOW;
+    /* F is homogeneous of degree 0 in (n, f, z): the same exact 4^-k
+     * scaling as sw_normalise_nf, so subnormal depths keep their bits */
+    {
+        int e = ilogb(f);
+        int k = (e - (e & 1)) / 2;
+        double sc = ldexp(1.0, -k);
+        double n_s = (n * sc) * sc, z_s = (z * sc) * sc;
+        if (!(k > 0 && n_s < DBL_MIN)) {
+            n = n_s;
+            z = z_s;
+            f = (f * sc) * sc;
+        }
+    }
+    double F;
+    if (!sw_gmnpr_F_value(lambda, theta, phi, n, f, z, &F)) return SWARP_ERR_OVERFLOW;
     *out_F = F;
     return SWARP_OK;
 }
@@ -267,11 +410,15 @@ SWARP_API swarp_status swarp_gmnpr_F(double lambda, double theta, double phi, do
 static double sw_lambda_1(double theta, double phi, double n, double f) {
     double sqrt_fn = sqrt(f) * sqrt(n);
     if (theta >= phi) { /* t form: bounded for theta -> pi/2 */
-        double t = sw_t_ratio(theta, phi);
-        return (n + sqrt_fn - n * t) / sw_case1_D(t, n, f);
+        double t = sw_t_ratio(theta, phi), two;
+        double Dh = sw_case1_D_half(t, n, f, &two); /* D = two Dh: f near DBL_MAX */
+        return ((n + sqrt_fn - n * t) / two) / Dh;
     }
     double u = sw_u_ratio(theta, phi);
-    return (u * (n + sqrt_fn) - n) / ((f - n) * u + (f + n));
+    double den = (f - n) * u + (f + n);
+    if (!sw_finite(den)) /* f near DBL_MAX: both halved */
+        return (0.5 * (u * (n + sqrt_fn) - n)) / (0.5 * (f - n) * u + (0.5 * f + 0.5 * n));
+    return (u * (n + sqrt_fn) - n) / den;
 }
 
 /* lambda_2 of [GMNPR] (4): (f + sqrt(fn))/(2f) tan(theta)/tan(phi) - 1/2. */
@@ -279,6 +426,21 @@ static double sw_lambda_2(double theta, double phi, double n, double f) {
     double c = 0.5 * (1.0 + sqrt(n) / sqrt(f)); /* (f + sqrt(fn)) / (2f) */
     if (theta >= phi) return c / sw_t_ratio(theta, phi) - 0.5;
     return c * sw_u_ratio(theta, phi) - 0.5;
+}
+
+/* lambda_1, lambda_2, lambda_GMNPR, lambda_LiSPSM and lambda_GLPR are
+ * homogeneous of degree 0 in (n, f): scaling both by 4^-k (exact) to put f in
+ * [1, 4) changes nothing in exact arithmetic but keeps subnormal depths
+ * (n = 4.9e-324, f = 3e-317: sqrt(f) sqrt(n) had ~6 bits) and huge ones at
+ * full precision.  Skipped when it would push n into the subnormals. */
+static void sw_normalise_nf(double* n, double* f) {
+    int e = ilogb(*f);
+    int k = (e - (e & 1)) / 2; /* floor(e / 2) */
+    double s = ldexp(1.0, -k);
+    double n_s = (*n * s) * s;
+    if (k > 0 && n_s < DBL_MIN) return;
+    *n = n_s;
+    *f = (*f * s) * s;
 }
 
 /* [GMNPR] (4) */
@@ -289,6 +451,7 @@ SWARP_API swarp_status swarp_gmnpr_lambda12(double theta, double phi, double n, 
     swarp_status s = sw_gmnpr_frame(phi, n, f);
     if (s != SWARP_OK) return s;
     if (!(theta > 0.0 && theta <= SW_HALF_PI)) return SWARP_ERR_OUT_OF_RANGE;
+    sw_normalise_nf(&n, &f);
     double l1 = sw_lambda_1(theta, phi, n, f);
     double l2 = sw_lambda_2(theta, phi, n, f);
     if (!sw_finite(l1) || !sw_finite(l2)) return SWARP_ERR_OVERFLOW;
@@ -321,7 +484,16 @@ static swarp_status sw_lambda_gmnpr(double theta, double phi, double n, double f
     }
     /* [GMNPR] (7): lambda_2* = lambda_1(phi) / tan(theta pi / (4 phi)), lambda_1(phi) = sqrt(fn)/(2f) */
     double lambda_1_phi = 0.5 * sqrt(n) / sqrt(f);
-    double lambda = lambda_1_phi / tan(theta * SWARP_PI / (4.0 * phi));
+    double lambda;
+    if (theta < 1e-8 * (4.0 * phi / SWARP_PI)) {
+        /* tan(x) = x (1 + x^2/3 + ...) = x to 1e-16 for x < 1e-8; as a ratio
+         * of factors, since x itself is subnormal for theta ~ 1e-323 and
+         * lambda ~ 1e-300 / theta overflows only when it does */
+        const double num[3] = {lambda_1_phi, 4.0, phi}, den[2] = {SWARP_PI, theta};
+        lambda = sw_ratio(num, 3, den, 2);
+    } else {
+        lambda = lambda_1_phi / tan(theta * SWARP_PI / (4.0 * phi));
+    }
     return sw_put_warp(lambda, SWARP_INFO_GMNPR_ADJUSTED, out);
 }
 
@@ -331,6 +503,7 @@ SWARP_API swarp_status swarp_gmnpr_lambda(double theta, double phi, double n, do
     if (!out_lambda) return SWARP_ERR_NULL_POINTER;
     swarp_status s = sw_theta_closed_check(theta, phi, n, f);
     if (s != SWARP_OK) return s;
+    sw_normalise_nf(&n, &f);
     return sw_lambda_gmnpr(theta, phi, n, f, out_lambda);
 }
 
@@ -340,19 +513,37 @@ SWARP_API swarp_status swarp_gmnpr_lambda_lispsm(double theta, double phi, doubl
     if (!out_lambda) return SWARP_ERR_NULL_POINTER;
     swarp_status s = sw_theta_closed_check(theta, phi, n, f);
     if (s != SWARP_OK) return s;
+    sw_normalise_nf(&n, &f);
     if (theta == 0.0) {
         *out_lambda = DBL_MAX; /* P_n = inf: duelling frusta; finite, like lambda_GMNPR */
         return SWARP_INFO_WARP_UNIFORM;
     }
-    double P_n = (n + sqrt(f) * sqrt(n)) / sin(theta);
-    double depth; /* P_f - P_n of [GMNPR] (9) */
+    /* lambda = P_n / (P_f - P_n) with P_n = (n + sqrt(fn))/sin(theta) and
+     * P_f - P_n = D sin(theta) (theta >= phi; (n t + f - n + f t) sin(theta))
+     * or 2 f tan(phi) cos(theta), as one ratio of factors (sw_ratio): P_n
+     * alone overflows for theta ~ 1e-308 and the depth for f ~ DBL_MAX while
+     * lambda is representable.  The numerator n + sqrt(fn) <= 2f cannot
+     * overflow: sw_normalise_nf brought f into [1, 4), or it left f huge
+     * only for n < f 2^-1020, where sqrt(fn) < 2^-510 f. */
+    const double num[1] = {n + sqrt(f) * sqrt(n)};
+    double den[5];
+    int n_den;
     if (theta >= phi) {
-        /* (n t + f - n + f t) sin(theta) = D sin(theta) */
-        depth = sw_case1_D(sw_t_ratio(theta, phi), n, f) * sin(theta);
+        double two;
+        den[0] = sin(theta);
+        den[1] = sin(theta);
+        den[2] = sw_case1_D_half(sw_t_ratio(theta, phi), n, f, &two);
+        den[3] = two;
+        n_den = 4;
     } else {
-        depth = 2.0 * f * tan(phi) * cos(theta);
+        den[0] = sin(theta);
+        den[1] = 2.0;
+        den[2] = f;
+        den[3] = tan(phi);
+        den[4] = cos(theta);
+        n_den = 5;
     }
-    return sw_put_warp(P_n / depth, SWARP_OK, out_lambda);
+    return sw_put_warp(sw_ratio(num, 1, den, n_den), SWARP_OK, out_lambda);
 }
 
 /* GLPR from [GMNPR] (2), derivation in docs/parameters.md:
@@ -369,6 +560,7 @@ SWARP_API swarp_status swarp_gmnpr_lambda_glpr(double theta, double phi, double 
     if (!out_lambda) return SWARP_ERR_NULL_POINTER;
     swarp_status s = sw_theta_closed_check(theta, phi, n, f);
     if (s != SWARP_OK) return s;
+    sw_normalise_nf(&n, &f);
     if (theta > phi) {
         double D = sw_case1_D(sw_t_ratio(theta, phi), n, f);
         double one_minus_t = sin(theta - phi) / (sin(theta) * cos(phi));

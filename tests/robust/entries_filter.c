@@ -451,16 +451,16 @@ static void e_evsm_moments(swr_ctx* c) {
     FIN(c, cn);
     if (swr_isfin(cp) && swr_isfin(cn) && swr_isfin(x)) {
         if (!(cp > 0) || !(cn > 0)) swr_expect(c, SWARP_ERR_FILTER_EXPONENT);
-        else if (!swr_isfin((double)expl(2.0L * cp * x)) || !swr_isfin((double)expl(-2.0L * cn * x))) {
+        else if (fmaxl(2.0L * cp * x, -2.0L * cn * x) > logl(DBL_MAX) + 1e-12L) {
+            /* (the bound is ln DBL_MAX = 709.78..., not 709: e^{709.2} is a
+             * finite double, crash-6e110d38ab22e9f6; 1e-12 covers the rounding
+             * of c·x and of the squared exponential) */
             /* a moment overflows: documented FILTER_EXPONENT; the library says
              * NON_FINITE (doc/implementation mismatch, docs/quality.md) */
             swr_expect(c, SWARP_ERR_FILTER_EXPONENT);
             swr_domain(c, SWARP_ERR_NON_FINITE);
             c->rounding_edge = 1; /* an overflow: directed rounding gives DBL_MAX */
         } else if (2 * fmax(cp, cn) * fabs(x) > 700 || fmax(cp, cn) > 354) {
-            /* (e^{2 c |x|} finite up to 2 c |x| = ln DBL_MAX = 709.78: the
-             * old "> 709" here called for an error on valid input; the
-             * fuzzer found x = 28.25, c_pos = 12.55, with SWARP_OK) */
             /* the library refuses an exponent whose e^{2c} overflows even when
              * e^{2c|x|} is finite for this x (doc: "e^{2c|x|} finite") */
             swr_domain(c, SWARP_ERR_FILTER_EXPONENT);

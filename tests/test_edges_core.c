@@ -1,0 +1,399 @@
+#define _POSIX_C_SOURCE 200809L
+/* Edge cases of the core stage found by the robustness sweep (issue 9,
+ * docs/quality.md "Findings"): the condition test of swarp_mat4_invert and
+ * the overflow/underflow-safe forms of n_opt, n_repar, psi and F at
+ * magnitudes beyond 1e100.  References are evaluated independently in long
+ * double (64-bit mantissa, 15-bit exponent: no intermediate overflow for
+ * double inputs) from the papers' printed forms, not from the library's
+ * rearranged ones. */
+#include <check.h>
+#include <fenv.h>
+#include <float.h>
+#include <math.h>
+#include <stdint.h>
+#include <string.h>
+
+#include "shadowwarp.h"
+#include "test_util.h"
+
+#define SENTINEL (-7.25e33)
+
+static double at(const swarp_mat4* m, int r, int c) { return m->m[c * 4 + r]; }
+static void set(swarp_mat4* m, int r, int c, double v) { m->m[c * 4 + r] = v; }
+static swarp_mat4 identity(void) {
+    swarp_mat4 m;
+    memset(&m, 0, sizeof m);
+    for (int i = 0; i < 4; ++i) set(&m, i, i, 1.0);
+    return m;
+}
+
+/* |A X - I| in long double, relative to |A| |X| (backward-style residual) */
+static long double residual(const swarp_mat4* a, const swarp_mat4* x) {
+    long double worst = 0;
+    for (int r = 0; r < 4; ++r)
+        for (int c = 0; c < 4; ++c) {
+            long double s = 0, sa = 0;
+            for (int k = 0; k < 4; ++k) {
+                s += (long double)at(a, r, k) * at(x, k, c);
+                sa += fabsl((long double)at(a, r, k) * at(x, k, c));
+            }
+            long double d = fabsl(s - (r == c)) / (sa > 0 ? sa : 1);
+            if (d > worst) worst = d;
+        }
+    return worst;
+}
+
+/* [[1, 1], [1, 1 + delta]] in the upper-left block: kappa_inf ~ 4 / delta,
+ * inverse 1/delta [[1 + delta, -1], [-1, 1]] (exact algebra) */
+static swarp_mat4 near_singular(double delta) {
+    swarp_mat4 m = identity();
+    set(&m, 0, 1, 1.0);
+    set(&m, 1, 0, 1.0);
+    set(&m, 1, 1, 1.0 + delta);
+    return m;
+}
+
+START_TEST(invert_refuses_numerically_singular) {
+    /* kappa ~ 2^51 (> SWARP_MAT4_MAX_CONDITION = 2^47): the old 1e-300 pivot
+     * test accepted it and returned an inverse with ~2 correct bits */
+    swarp_mat4 a = near_singular(0x1p-49), r;
+    tu_fill(r.m, 16, SENTINEL);
+    ck_assert_int_eq(swarp_mat4_invert(&a, &r), SWARP_ERR_SINGULAR);
+    ck_assert(tu_untouched(r.m, 16, SENTINEL));
+    /* kappa ~ 2^42 < 2^47: accepted, inverse within kappa eps of the exact one */
+    a = near_singular(0x1p-40);
+    ck_assert_int_eq(swarp_mat4_invert(&a, &r), SWARP_OK);
+    const double d = 0x1p-40, kappa = 4.0 / d;
+    const double want[2][2] = {{(1 + d) / d, -1 / d}, {-1 / d, 1 / d}};
+    for (int i = 0; i < 2; ++i)
+        for (int j = 0; j < 2; ++j) ck_assert_double_le(tu_rel(at(&r, i, j), want[i][j]), 8 * kappa * DBL_EPSILON);
+}
+END_TEST
+
+/* An exactly rank-deficient matrix (one column twice another) under every
+ * rounding mode: the old test let directed rounding leave a pivot of a few
+ * eps and "inverted" it. */
+START_TEST(invert_rank_deficient_every_rounding_mode) {
+    static const int modes[] = {FE_TONEAREST, FE_UPWARD, FE_DOWNWARD, FE_TOWARDZERO};
+    uint64_t s = 0xED6E5C0DEull;
+    int refused = 0, total = 0;
+    for (int n = 0; n < 500; ++n) {
+        swarp_mat4 a, r;
+        for (int i = 0; i < 16; ++i) a.m[i] = tu_uniform(&s, -10, 10);
+        int ca = (int)(tu_splitmix64(&s) % 4), cb = (ca + 1 + (int)(tu_splitmix64(&s) % 3)) % 4;
+        for (int i = 0; i < 4; ++i) set(&a, i, cb, 2.0 * at(&a, i, ca) * (n % 2 ? 1.0 : 3.0 / 8.0));
+        for (size_t m = 0; m < sizeof modes / sizeof modes[0]; ++m) {
+            tu_fill(r.m, 16, SENTINEL);
+            fesetround(modes[m]);
+            swarp_status st = swarp_mat4_invert(&a, &r);
+            fesetround(FE_TONEAREST);
+            ++total;
+            if (st == SWARP_ERR_SINGULAR && tu_untouched(r.m, 16, SENTINEL)) ++refused;
+        }
+    }
+    ck_assert_int_eq(refused, total);
+}
+END_TEST
+
+/* Badly scaled but well conditioned: rows and columns scaled by 1e+-30, a
+ * translation by 1e6 with a near = 1e-6 projection.  kappa_inf unscaled is
+ * up to 1e60; the equilibrated condition is small and the inverse accurate. */
+START_TEST(invert_accepts_badly_scaled) {
+    uint64_t s = 0x5CA1Eull;
+    for (int n = 0; n < 300; ++n) {
+        swarp_mat4 a = identity(), r;
+        /* a well-conditioned core: I + small random part */
+        for (int i = 0; i < 4; ++i)
+            for (int j = 0; j < 4; ++j) set(&a, i, j, at(&a, i, j) + tu_uniform(&s, -0.2, 0.2));
+        double rs[4], cs[4];
+        for (int i = 0; i < 4; ++i) {
+            rs[i] = pow(10.0, tu_uniform(&s, -30, 30));
+            cs[i] = pow(10.0, tu_uniform(&s, -30, 30));
+        }
+        swarp_mat4 core = a;
+        for (int i = 0; i < 4; ++i)
+            for (int j = 0; j < 4; ++j) set(&a, i, j, at(&a, i, j) * rs[i] * cs[j]);
+        ck_assert_int_eq(swarp_mat4_invert(&a, &r), SWARP_OK);
+        /* (R K C)^-1 = C^-1 K^-1 R^-1, K^-1 by Gauss-Jordan in long double */
+        long double w[4][8], kmax = 0;
+        for (int i = 0; i < 4; ++i)
+            for (int j = 0; j < 8; ++j) w[i][j] = j < 4 ? at(&core, i, j) : (j - 4 == i);
+        for (int c = 0; c < 4; ++c) {
+            int p = c;
+            for (int i = c + 1; i < 4; ++i)
+                if (fabsl(w[i][c]) > fabsl(w[p][c])) p = i;
+            for (int j = 0; j < 8; ++j) {
+                long double tmp = w[c][j];
+                w[c][j] = w[p][j];
+                w[p][j] = tmp;
+            }
+            for (int j = 7; j >= c; --j) w[c][j] /= w[c][c];
+            for (int i = 0; i < 4; ++i)
+                if (i != c)
+                    for (int j = 7; j >= c; --j) w[i][j] -= w[i][c] * w[c][j];
+        }
+        for (int i = 0; i < 4; ++i)
+            for (int j = 0; j < 4; ++j) kmax = fmaxl(kmax, fabsl(w[i][j + 4]));
+        for (int i = 0; i < 4; ++i)
+            for (int j = 0; j < 4; ++j) {
+                long double got = (long double)at(&r, i, j) * cs[i] * rs[j];
+                ck_assert_msg(fabsl(got - w[i][j + 4]) <= 1e-10L * kmax, "inverse[%d][%d]", i, j);
+            }
+    }
+    /* translation by (1e6, -3e6, 1e5) times a projection with near 1e-6, far 1e7 */
+    const double n = 1e-6, f = 1e7;
+    swarp_mat4 P, T = identity(), PT, r;
+    memset(&P, 0, sizeof P);
+    set(&P, 0, 0, 1.2);
+    set(&P, 1, 1, 1.7);
+    set(&P, 2, 2, -(f + n) / (f - n));
+    set(&P, 2, 3, -2 * f * n / (f - n));
+    set(&P, 3, 2, -1.0);
+    set(&T, 0, 3, 1e6);
+    set(&T, 1, 3, -3e6);
+    set(&T, 2, 3, 1e5);
+    ck_assert_int_eq(swarp_mat4_mul(&P, &T, &PT), SWARP_OK);
+    ck_assert_int_eq(swarp_mat4_invert(&PT, &r), SWARP_OK);
+    ck_assert(residual(&PT, &r) < 1e-12L);
+    /* diag(FLT_MAX, 1, 1, 1/FLT_MAX): exact inverse */
+    swarp_mat4 d = identity();
+    set(&d, 0, 0, FLT_MAX);
+    set(&d, 3, 3, 1.0 / FLT_MAX);
+    ck_assert_int_eq(swarp_mat4_invert(&d, &r), SWARP_OK);
+    ck_assert(at(&r, 0, 0) == 1.0 / FLT_MAX && at(&r, 3, 3) == 1.0 / (1.0 / FLT_MAX));
+}
+END_TEST
+
+/* [RHS] (3.2) in long double: d / (sqrt(z_1/z_0) - 1) = d sqrt(z_0) / (sqrt(z_1) - sqrt(z_0)) */
+static long double ref_nopt(double d, double z0, double z1) {
+    long double s0 = sqrtl(z0), s1 = sqrtl(z1);
+    return (long double)d * s0 * (s1 + s0) / ((long double)z1 - z0);
+}
+
+START_TEST(nopt_subnormal_and_huge_depths) {
+    const double cases[][3] = {
+        {0.19323405592958692, 4.9406564584124654e-324, 4.9406564584124654e-317}, /* was DBL_MAX */
+        {9999.9999999999982, 2.2250738585072009e-308, 2.2250738585072014e-308},  /* was DBL_MAX */
+        {1e-300, 4.0492795740303305e+171, 3.4123093990295732e+178},               /* was 0 */
+        {3.0, 1e300, 1.7e308},
+        {2.5, 1e-310, 3e-300},
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; ++i) {
+        double out = SENTINEL;
+        ck_assert_int_eq(swarp_warp_nopt(cases[i][0], cases[i][1], cases[i][2], &out), SWARP_OK);
+        long double ref = ref_nopt(cases[i][0], cases[i][1], cases[i][2]);
+        ck_assert_msg(fabsl(out - ref) <= 1e-14L * ref, "case %zu: %.17g vs %.17Lg", i, out, ref);
+        /* (4.2) at n_p = f_p = 0 is (3.2) */
+        double pseudo = SENTINEL;
+        ck_assert_int_eq(swarp_warp_nopt_pseudo(cases[i][0], cases[i][1], cases[i][2], 0.0, 0.0, &pseudo), SWARP_OK);
+        ck_assert(pseudo == out);
+    }
+    /* degree-0 homogeneity in the depths: scaling z_0, z_1 by 4^j changes
+     * nothing (exactly, as long as z_0 4^j stays normal) */
+    uint64_t s = 0x40B7ull;
+    for (int n = 0; n < 2000; ++n) {
+        double d = tu_uniform(&s, 0.1, 100), z0 = tu_uniform(&s, 0.5, 2), z1 = z0 * tu_uniform(&s, 1.0, 1e4);
+        int k = 2 * ((int)(tu_splitmix64(&s) % 800) - 400);
+        if (z0 * ldexp(1.0, k) < DBL_MIN || !isfinite(z1 * ldexp(1.0, k))) continue;
+        double a, b;
+        ck_assert_int_eq(swarp_warp_nopt(d, z0, z1, &a), SWARP_OK);
+        ck_assert_int_eq(swarp_warp_nopt(d, ldexp(z0, k), ldexp(z1, k), &b), SWARP_OK);
+        ck_assert_msg(a == b, "n_opt(%g, %g, %g) = %.17g but scaled by 2^%d: %.17g", d, z0, z1, a, k, b);
+    }
+}
+END_TEST
+
+/* [RHS] (3.4) as printed (second case eta sqrt(alpha) + 1), long double */
+static long double ref_nrepar(double eta, double alpha, double W) {
+    long double al = alpha, sa = sqrtl(al);
+    if (eta < 0) return W / (al - 1) * (1 + sa - eta * (al - 1)) / (eta + 1);
+    return W / (al - 1) * (1 + sa) / (eta * sa + 1);
+}
+
+START_TEST(nrepar_extreme_alpha) {
+    const double cases[][3] = {
+        {-0.14846982218324345, 1.7976931348623157e+308, 1.0000000000000002e-06}, /* W/(alpha-1) was subnormal */
+        {-0.35601037187359519, 1.7976931348623157e+308, 1.5948425457844012e-06},
+        {-1.0 + 0x1p-52, 1e300, 1.0},                                             /* eta (alpha - 1) overflowed */
+        {-1.0850344206875686e-63, 1.5388407449206508e+185, 1.5336797372969295e-232}, /* was 0 */
+        {0.5, 1.7976931348623157e+308, 3.0},
+        {0.0, 1.0 + 0x1p-52, 1e-3},
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; ++i) {
+        double out = SENTINEL;
+        ck_assert_int_eq(swarp_warp_nrepar(cases[i][0], cases[i][1], cases[i][2], &out), SWARP_OK);
+        long double ref = ref_nrepar(cases[i][0], cases[i][1], cases[i][2]);
+        ck_assert_msg(fabsl(out - ref) <= 1e-14L * ref, "case %zu: %.17g vs %.17Lg", i, out, ref);
+    }
+    /* a value that really exceeds DBL_MAX: DBL_MAX with INFO_WARP_UNIFORM */
+    double out;
+    ck_assert_int_eq(swarp_warp_nrepar(-1.0 + 0x1p-53, 1.0 + 0x1p-52, 1e280, &out), SWARP_INFO_WARP_UNIFORM);
+    ck_assert(out == DBL_MAX);
+}
+END_TEST
+
+/* [GMNPR] (2) in long double, as printed: t = tan(phi)/tan(theta),
+ * psi = 1/(tan(phi) (f - n + (f + n) t) lambda (lambda + 1)) for theta >= phi,
+ * 1/(tan(phi) 2 f lambda (lambda + 1) tan(theta)/tan(phi)) otherwise;
+ * varphi = (f - n + (f + n) t) lambda + n t - n, or f (2 lambda + 1) t - f;
+ * F = psi (z + varphi)^2 / z. */
+static long double ref_F(double l_, double th_, double ph_, double n_, double f_, double z_, long double* psi) {
+    long double l = l_, th = th_, ph = ph_, n = n_, f = f_, z = z_, t = tanl(ph) / tanl(th), p, o;
+    if (th >= ph) {
+        p = 1.0L / tanl(ph) / ((f - n + (f + n) * t) * l * (l + 1));
+        o = (f - n + (f + n) * t) * l + n * t - n;
+    } else {
+        p = 1.0L / tanl(ph) / (2 * f * l * (l + 1) * tanl(th) / tanl(ph));
+        o = f * (2 * l + 1) * t - f;
+    }
+    if (psi) *psi = p;
+    return p * (z + o) * (z + o) / z;
+}
+
+START_TEST(gmnpr_F_and_psi_huge_lambda) {
+    const double cases[][6] = {
+        /* lambda, theta, phi, n, f, z: F came out 0 with SWARP_OK */
+        {1.6077200186449224e+274, 1.4568674924698055, 1.5607963267948963, 1.0000000000000002, 6044747.6222206205,
+         35.312656685534016},
+        {1.9580203865100371e+223, 0.85431485665607443, 1.3879348321975787e-196, 502.26804758778741,
+         617575060.54135489, 148908274.44003168},
+        {1.0000000000000001e-09, 1.5707953267948969, 1.5707953267948969, 9.9999999999999974e-07,
+         1.7976931348623151e+302, 6.336943674283251e+301},
+        {2.9785264772904756e+216, 0.30288778479810863, 0.30288778479810863, 0.34454779585818335, 3445477.9585818336,
+         793889.72832924419},
+        {1e200, 0.2, 0.6, 1.0, 100.0, 50.0}, /* case 2 (theta < phi) */
+        {1e-200, 0.2, 0.6, 1.0, 100.0, 50.0},
+        {3.0, 0.9, 0.5, 1e-3, 1.7e308, 1e308}, /* D = f - n + (f + n) t overflows */
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; ++i) {
+        const double* a = cases[i];
+        long double psi_ref;
+        long double ref = ref_F(a[0], a[1], a[2], a[3], a[4], a[5], &psi_ref);
+        double F = SENTINEL, psi = SENTINEL;
+        ck_assert_int_eq(swarp_gmnpr_F(a[0], a[1], a[2], a[3], a[4], a[5], &F), SWARP_OK);
+        /* the sum z + varphi and the tangents carry a few ulps each */
+        ck_assert_msg(fabsl(F - ref) <= 1e-12L * ref, "case %zu: F = %.17g vs %.17Lg", i, F, ref);
+        ck_assert_int_eq(swarp_gmnpr_psi(a[0], a[1], a[2], a[3], a[4], &psi), SWARP_OK);
+        if (psi_ref >= DBL_MIN)
+            ck_assert_msg(fabsl(psi - psi_ref) <= 1e-12L * psi_ref, "case %zu: psi = %.17g vs %.17Lg", i, psi,
+                          psi_ref);
+        else /* below the normal range: the correctly rounded subnormal, within its spacing */
+            ck_assert(fabsl(psi - psi_ref) <= 0x1p-1074L + 1e-12L * psi_ref);
+    }
+    /* psi no longer fails because the offset overflows: lambda = 1e300 */
+    double psi = SENTINEL, off = SENTINEL;
+    ck_assert_int_eq(swarp_gmnpr_psi(1e300, 0.9, 0.5, 1.0, 1e9, &psi), SWARP_OK);
+    ck_assert_int_eq(swarp_gmnpr_offset(1e300, 0.9, 0.5, 1.0, 1e9, &off), SWARP_ERR_OVERFLOW);
+    ck_assert(off == SENTINEL);
+    long double psi_ref;
+    ref_F(1e300, 0.9, 0.5, 1.0, 1e9, 1.0, &psi_ref);
+    ck_assert(fabsl(psi - psi_ref) <= 0x1p-1074L + 1e-12L * psi_ref);
+}
+END_TEST
+
+/* Ordinary inputs: the rearranged F still is psi (z + varphi)^2 / z of the
+ * three entry points (a random sweep over both cases of (2)). */
+START_TEST(gmnpr_F_matches_psi_offset) {
+    uint64_t s = 0xF00Dull;
+    for (int k = 0; k < 3000; ++k) {
+        double lambda = pow(10.0, tu_uniform(&s, -6, 6)), theta = tu_uniform(&s, 0.01, 1.5707963267948966);
+        double phi = tu_uniform(&s, 0.05, 1.5), n = tu_uniform(&s, 0.01, 10), f = n * tu_uniform(&s, 1.5, 1e5);
+        double z = tu_uniform(&s, n, f);
+        double F, psi, off;
+        ck_assert_int_eq(swarp_gmnpr_F(lambda, theta, phi, n, f, z, &F), SWARP_OK);
+        ck_assert_int_eq(swarp_gmnpr_psi(lambda, theta, phi, n, f, &psi), SWARP_OK);
+        ck_assert_int_eq(swarp_gmnpr_offset(lambda, theta, phi, n, f, &off), SWARP_OK);
+        long double via = (long double)psi * ((long double)z + off) * ((long double)z + off) / z;
+        long double ref = ref_F(lambda, theta, phi, n, f, z, NULL);
+        ck_assert_msg(fabsl(F - ref) <= 1e-11L * ref, "F = %.17g vs %.17Lg", F, ref);
+        ck_assert(fabsl(F - via) <= 1e-11L * via);
+    }
+}
+END_TEST
+
+/* [RHS] (3.3) at subnormal angles: eta(theta, theta) = -0.2 (to rounding) as
+ * for any theta (the linear piece ends at -0.2 at gamma_b = theta); the old
+ * order of operations gave 0 for theta = 4.9e-324. */
+START_TEST(eta_subnormal_angles) {
+    for (int k = 1; k < 2000; k += 7) {
+        const double th = k * 4.9406564584124654e-324;
+        double eta = 5.0;
+        ck_assert_int_eq(swarp_warp_eta(th, th, &eta), SWARP_OK);
+        ck_assert_msg(fabs(eta + 0.2) <= 4 * DBL_EPSILON, "theta = %g: eta %.17g", th, eta);
+        ck_assert_int_eq(swarp_warp_eta(0.0, th, &eta), SWARP_OK);
+        ck_assert(eta == -1.0);
+    }
+}
+END_TEST
+
+/* [GMNPR] (4), (7)-(9) in long double as printed (t = tan(phi)/tan(theta)):
+ * lambda_1 = (n + sqrt(fn) - n t)/(f - n + (f + n) t) for theta >= phi,
+ * lambda_1 = (u (n + sqrt(fn)) - n)/((f - n) u + f + n) otherwise (u = 1/t);
+ * lambda_2* = sqrt(fn)/(2f) / tan(theta pi / (4 phi));
+ * lambda_LiSPSM = ((n + sqrt(fn))/sin(theta)) / (P_f - P_n). */
+static long double ref_lambda_1(long double th, long double ph, long double n, long double f) {
+    long double t = tanl(ph) / tanl(th), r = sqrtl(f * n);
+    if (th >= ph) return (n + r - n * t) / (f - n + (f + n) * t);
+    return ((n + r) / t - n) / ((f - n) / t + f + n);
+}
+static long double ref_lispsm(long double th, long double ph, long double n, long double f) {
+    long double Pn = (n + sqrtl(f * n)) / sinl(th), t = tanl(ph) / tanl(th);
+    long double depth = th >= ph ? (f - n + (f + n) * t) * sinl(th) : 2 * f * tanl(ph) * cosl(th);
+    return Pn / depth;
+}
+
+START_TEST(gmnpr_lambdas_extreme_depths) {
+    /* theta, phi, n, f: subnormal depths, f near DBL_MAX, theta ~ DBL_MIN */
+    const double cases[][4] = {
+        {1.4779317867858497, 0.50534738244393917, 4.9406564584124654e-324, 4.2141857912270174e-317},
+        {0.80206375646367467, 0.52359877559829893, 4.9406564584124654e-324, 3.1805446307091496e-317},
+        {0.035267093095253228, 0.035267093095253228, 4.9406564584124654e-324, 5.6406338434709683e-318},
+        {0.5235987755982987, 0.5235987755982987, 0.99999999900000003, 1.7976931330646226e+308},
+        {1.0496482061068264, 0.0099999999999999985, 0.99999999999999989, 1.7976931348623155e+308},
+        {2.2250738585072009e-308, 1.2492253675820186, 168.9258917337595, 22425.738223714543},
+        {0.3, 0.6, 1.0, 1.7e308},
+        {0.3, 0.6, 0.5, 1.79e308},  /* n/f below 2^-1020, not normalised: (f - n) u + f + n overflows */
+        {1.2, 0.6, 0.5, 1.79e308},  /* likewise D = f - n + (f + n) t */
+        {1.0, 0.5, 1e308, 1.7e308}, /* n + sqrt(f n) would overflow without the normalisation */
+        {0.2, 0.7, 1e308, 1.7e308},
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; ++i) {
+        const double* a = cases[i];
+        double l1, l2, lg, ll;
+        ck_assert_int_eq(swarp_gmnpr_lambda12(a[0], a[1], a[2], a[3], &l1, &l2), SWARP_OK);
+        long double r1 = ref_lambda_1(a[0], a[1], a[2], a[3]);
+        ck_assert_msg(fabsl(l1 - r1) <= 1e-12L * fabsl(r1), "case %zu: lambda_1 %.17g vs %.17Lg", i, l1, r1);
+        ck_assert_int_eq(swarp_gmnpr_lambda_lispsm(a[0], a[1], a[2], a[3], &ll), SWARP_OK);
+        long double rl = ref_lispsm(a[0], a[1], a[2], a[3]);
+        ck_assert_msg(fabsl(ll - rl) <= 1e-12L * rl, "case %zu: lambda_LiSPSM %.17g vs %.17Lg", i, ll, rl);
+        swarp_status st = swarp_gmnpr_lambda(a[0], a[1], a[2], a[3], &lg);
+        ck_assert(st == SWARP_OK || st == SWARP_INFO_GMNPR_ADJUSTED);
+        if (a[0] >= a[1]) ck_assert(lg == l1); /* (8), first case */
+    }
+    /* (7) at a subnormal theta: lambda_1(phi) / tan(theta pi / (4 phi)) */
+    const double th = 4.9406564584124654e-324, ph = 1.1877003556401658e-108, n = 200.99237085786692,
+                 f = 2769.682718713424;
+    double lg;
+    ck_assert_int_eq(swarp_gmnpr_lambda(th, ph, n, f, &lg), SWARP_INFO_GMNPR_ADJUSTED);
+    long double ref = sqrtl((long double)f * n) / (2.0L * f) / tanl((long double)th * 3.14159265358979323846L / (4.0L * ph));
+    ck_assert_msg(fabsl(lg - ref) <= 1e-13L * ref, "lambda_GMNPR %.17g vs %.17Lg", lg, ref);
+}
+END_TEST
+
+int main(void) {
+    Suite* s = suite_create("edges_core");
+    TCase* t = tcase_create("mat4_invert");
+    tcase_add_test(t, invert_refuses_numerically_singular);
+    tcase_add_test(t, invert_rank_deficient_every_rounding_mode);
+    tcase_add_test(t, invert_accepts_badly_scaled);
+    suite_add_tcase(s, t);
+    t = tcase_create("params_extreme");
+    tcase_add_test(t, nopt_subnormal_and_huge_depths);
+    tcase_add_test(t, nrepar_extreme_alpha);
+    tcase_add_test(t, gmnpr_F_and_psi_huge_lambda);
+    tcase_add_test(t, gmnpr_F_matches_psi_offset);
+    tcase_add_test(t, eta_subnormal_angles);
+    tcase_add_test(t, gmnpr_lambdas_extreme_depths);
+    suite_add_tcase(s, t);
+    return tu_run_suite(s) ? 1 : 0;
+}

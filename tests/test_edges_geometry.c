@@ -1,0 +1,290 @@
+#define _POSIX_C_SOURCE 200809L
+/* Public geometry functions the sweep does not call (issue 9, branch
+ * coverage): swarp_poly_clip_aabb, swarp_body_from_h, swarp_focus_light_view
+ * with point lights, swarp_warp_lispsm's options.  Valid results against an
+ * independent evaluation (box intersections by hand, the extrusion's
+ * bounding box, the view axis, (4.2) through swarp_warp_nopt_pseudo), bad
+ * input with its status and outputs untouched. */
+#include <check.h>
+#include <float.h>
+#include <math.h>
+#include <stdint.h>
+#include <string.h>
+
+#include "shadowwarp.h"
+#include "test_util.h"
+
+static swarp_polyhedron poly_sentinel(void) {
+    swarp_polyhedron p;
+    memset(&p, 0xA5, sizeof p);
+    return p;
+}
+static int poly_untouched(const swarp_polyhedron* p) {
+    swarp_polyhedron s = poly_sentinel();
+    return memcmp(p, &s, sizeof s) == 0;
+}
+static void bbox(const swarp_polyhedron* p, double lo[3], double hi[3]) {
+    for (int k = 0; k < 3; ++k) lo[k] = INFINITY, hi[k] = -INFINITY;
+    for (uint32_t i = 0; i < p->vertex_count; ++i) {
+        const double v[3] = {p->vertices[i].x, p->vertices[i].y, p->vertices[i].z};
+        for (int k = 0; k < 3; ++k) lo[k] = fmin(lo[k], v[k]), hi[k] = fmax(hi[k], v[k]);
+    }
+}
+
+START_TEST(poly_clip_aabb_edges) {
+    uint64_t s = 0xB0C5ull;
+    for (int n = 0; n < 300; ++n) {
+        swarp_aabb a, b;
+        double* pa = &a.min.x;
+        double* pb = &b.min.x;
+        for (int k = 0; k < 3; ++k) {
+            double x0 = tu_uniform(&s, -10, 10), x1 = tu_uniform(&s, -10, 10);
+            pa[k] = fmin(x0, x1), pa[k + 3] = fmax(x0, x1) + 0.5;
+            x0 = tu_uniform(&s, -10, 10), x1 = tu_uniform(&s, -10, 10);
+            pb[k] = fmin(x0, x1), pb[k + 3] = fmax(x0, x1) + 0.5;
+        }
+        swarp_polyhedron P, out;
+        ck_assert_int_eq(swarp_poly_from_aabb(&a, &P), SWARP_OK);
+        ck_assert_int_eq(swarp_poly_clip_aabb(&P, &b, &out), SWARP_OK);
+        /* the intersection of two boxes is the box of the max of mins, min of maxes */
+        int empty = 0;
+        double lo_w[3], hi_w[3];
+        for (int k = 0; k < 3; ++k) {
+            lo_w[k] = fmax(pa[k], pb[k]);
+            hi_w[k] = fmin(pa[k + 3], pb[k + 3]);
+            if (!(hi_w[k] > lo_w[k] + 1e-9)) empty |= !(hi_w[k] >= lo_w[k]);
+        }
+        if (empty) {
+            ck_assert_uint_eq(out.vertex_count, 0);
+            continue;
+        }
+        double lo[3], hi[3];
+        bbox(&out, lo, hi);
+        for (int k = 0; k < 3; ++k) ck_assert(fabs(lo[k] - lo_w[k]) < 1e-9 && fabs(hi[k] - hi_w[k]) < 1e-9);
+        /* out may equal in */
+        ck_assert_int_eq(swarp_poly_clip_aabb(&P, &b, &P), SWARP_OK);
+        ck_assert_uint_eq(P.vertex_count, out.vertex_count);
+    }
+    swarp_aabb box = {{-1, -1, -1}, {1, 1, 1}};
+    swarp_polyhedron P, out = poly_sentinel();
+    ck_assert_int_eq(swarp_poly_from_aabb(&box, &P), SWARP_OK);
+    swarp_aabb inv = box;
+    inv.min.y = 2.0;
+    ck_assert_int_eq(swarp_poly_clip_aabb(&P, &inv, &out), SWARP_ERR_BOX_INVERTED);
+    swarp_aabb nan_b = box;
+    nan_b.max.z = NAN;
+    ck_assert_int_eq(swarp_poly_clip_aabb(&P, &nan_b, &out), SWARP_ERR_NON_FINITE);
+    ck_assert_int_eq(swarp_poly_clip_aabb(NULL, &box, &out), SWARP_ERR_NULL_POINTER);
+    ck_assert_int_eq(swarp_poly_clip_aabb(&P, NULL, &out), SWARP_ERR_NULL_POINTER);
+    ck_assert_int_eq(swarp_poly_clip_aabb(&P, &box, NULL), SWARP_ERR_NULL_POINTER);
+    swarp_polyhedron bad = P;
+    bad.vertex_count = SWARP_POLY_MAX_VERTICES + 1;
+    ck_assert_int_eq(swarp_poly_clip_aabb(&bad, &box, &out), SWARP_ERR_INVALID_ARGUMENT);
+    ck_assert(poly_untouched(&out));
+}
+END_TEST
+
+static swarp_light sun(double x, double y, double z) {
+    swarp_light l;
+    memset(&l, 0, sizeof l);
+    l.type = SWARP_LIGHT_DIRECTIONAL;
+    l.direction = (swarp_vec3){x, y, z};
+    return l;
+}
+
+START_TEST(body_from_h_edges) {
+    /* H a box inside the scene, the light straight down: B is H extruded up
+     * to the scene's top, i.e. the box [H.x] x [H.ymin, scene.ymax] x [H.z] */
+    const swarp_aabb scene = {{-50, -2, -50}, {50, 30, 50}}, hb = {{-3, 0, -8}, {4, 5, -1}};
+    swarp_polyhedron H, B;
+    ck_assert_int_eq(swarp_poly_from_aabb(&hb, &H), SWARP_OK);
+    const swarp_light down = sun(0, -1, 0);
+    ck_assert_int_eq(swarp_body_from_h(&H, &down, &scene, &B), SWARP_OK);
+    double lo[3], hi[3];
+    bbox(&B, lo, hi);
+    const double want_lo[3] = {-3, 0, -8}, want_hi[3] = {4, 30, -1};
+    for (int k = 0; k < 3; ++k) ck_assert(fabs(lo[k] - want_lo[k]) < 1e-9 && fabs(hi[k] - want_hi[k]) < 1e-9);
+    /* a point light above: B = conv(H + l) within S, its top is l itself */
+    swarp_light pl;
+    memset(&pl, 0, sizeof pl);
+    pl.type = SWARP_LIGHT_POINT;
+    pl.position = (swarp_vec3){0.5, 20, -4};
+    ck_assert_int_eq(swarp_body_from_h(&H, &pl, &scene, &B), SWARP_OK);
+    bbox(&B, lo, hi);
+    ck_assert(fabs(hi[1] - 20) < 1e-9 && fabs(lo[1]) < 1e-9);
+
+    swarp_polyhedron out = poly_sentinel();
+    ck_assert_int_eq(swarp_body_from_h(NULL, &down, &scene, &out), SWARP_ERR_NULL_POINTER);
+    ck_assert_int_eq(swarp_body_from_h(&H, NULL, &scene, &out), SWARP_ERR_NULL_POINTER);
+    ck_assert_int_eq(swarp_body_from_h(&H, &down, NULL, &out), SWARP_ERR_NULL_POINTER);
+    ck_assert_int_eq(swarp_body_from_h(&H, &down, &scene, NULL), SWARP_ERR_NULL_POINTER);
+    swarp_light bl = down;
+    bl._reserved[1] = 1;
+    ck_assert_int_eq(swarp_body_from_h(&H, &bl, &scene, &out), SWARP_ERR_RESERVED_NONZERO);
+    bl = down;
+    bl.type = (swarp_light_type)4;
+    ck_assert_int_eq(swarp_body_from_h(&H, &bl, &scene, &out), SWARP_ERR_UNKNOWN_ENUM);
+    bl = down;
+    bl.direction.x = NAN;
+    ck_assert_int_eq(swarp_body_from_h(&H, &bl, &scene, &out), SWARP_ERR_NON_FINITE);
+    bl = down;
+    bl.direction = (swarp_vec3){0, 0, 0};
+    ck_assert_int_eq(swarp_body_from_h(&H, &bl, &scene, &out), SWARP_ERR_ZERO_VECTOR);
+    bl = pl;
+    bl.cone_angle = 2.0;
+    bl.direction = (swarp_vec3){0, -1, 0};
+    ck_assert_int_eq(swarp_body_from_h(&H, &bl, &scene, &out), SWARP_ERR_OUT_OF_RANGE);
+    swarp_aabb bs = scene;
+    bs.min.x = 60;
+    ck_assert_int_eq(swarp_body_from_h(&H, &down, &bs, &out), SWARP_ERR_BOX_INVERTED);
+    bs = scene;
+    bs.max.y = INFINITY;
+    ck_assert_int_eq(swarp_body_from_h(&H, &down, &bs, &out), SWARP_ERR_NON_FINITE);
+    /* malformed polyhedra (not documented in the header: reported) */
+    swarp_polyhedron bad = H;
+    bad.vertex_count = SWARP_POLY_MAX_VERTICES + 1;
+    ck_assert_int_eq(swarp_body_from_h(&bad, &down, &scene, &out), SWARP_ERR_INVALID_ARGUMENT);
+    bad = H;
+    bad.face_count = SWARP_POLY_MAX_FACES + 1;
+    ck_assert_int_eq(swarp_body_from_h(&bad, &down, &scene, &out), SWARP_ERR_INVALID_ARGUMENT);
+    bad = H;
+    bad.face_vertex_count[0] = SWARP_POLY_MAX_FACE_VERTICES + 1;
+    ck_assert_int_eq(swarp_body_from_h(&bad, &down, &scene, &out), SWARP_ERR_INVALID_ARGUMENT);
+    bad = H;
+    bad.face_vertices[2][1] = (uint8_t)H.vertex_count;
+    ck_assert_int_eq(swarp_body_from_h(&bad, &down, &scene, &out), SWARP_ERR_INVALID_ARGUMENT);
+    bad = H;
+    bad.vertices[3].z = NAN;
+    ck_assert_int_eq(swarp_body_from_h(&bad, &down, &scene, &out), SWARP_ERR_NON_FINITE);
+    bad = H;
+    bad.vertex_count = 0;
+    bad.face_count = 0;
+    ck_assert_int_eq(swarp_body_from_h(&bad, &down, &scene, &out), SWARP_ERR_BODY_EMPTY);
+    ck_assert(poly_untouched(&out));
+}
+END_TEST
+
+static swarp_camera camera(void) {
+    swarp_camera c;
+    memset(&c, 0, sizeof c);
+    c.eye = (swarp_vec3){0, 10, 0};
+    c.dir = (swarp_vec3){0, -0.2, -1};
+    c.up = (swarp_vec3){0, 1, 0};
+    c.fovy = 1.0;
+    c.aspect = 1.5;
+    c.near = 1.0;
+    c.far = 100.0;
+    return c;
+}
+
+/* the light view looks down -z: its third row is minus the unit axis */
+static void check_axis(const swarp_mat4* v, swarp_vec3 a) {
+    double l = sqrt(a.x * a.x + a.y * a.y + a.z * a.z);
+    ck_assert(fabs(v->m[2] + a.x / l) < 1e-12 && fabs(v->m[6] + a.y / l) < 1e-12 && fabs(v->m[10] + a.z / l) < 1e-12);
+}
+
+START_TEST(focus_light_view_point_lights) {
+    const swarp_camera cam = camera();
+    swarp_light pl;
+    memset(&pl, 0, sizeof pl);
+    pl.type = SWARP_LIGHT_POINT;
+    pl.position = (swarp_vec3){20, 50, -30};
+    swarp_mat4 v;
+    /* omni light, no axis: looks at the eye */
+    ck_assert(!swarp_status_is_error(swarp_focus_light_view(&cam, &pl, NULL, &v)));
+    check_axis(&v, (swarp_vec3){0 - 20, 10 - 50, 0 + 30});
+    /* the light's position maps to the origin */
+    swarp_vec4 h;
+    ck_assert_int_eq(swarp_mat4_transform(&v, &pl.position, &h), SWARP_OK);
+    ck_assert(fabs(h.x) < 1e-12 && fabs(h.y) < 1e-12 && fabs(h.z) < 1e-12);
+    /* explicit axis */
+    const swarp_vec3 axis = {0.1, -2.0, 0.3};
+    ck_assert(!swarp_status_is_error(swarp_focus_light_view(&cam, &pl, &axis, &v)));
+    check_axis(&v, axis);
+    /* spot: its direction */
+    swarp_light spot = pl;
+    spot.cone_angle = 0.5;
+    spot.direction = (swarp_vec3){-0.3, -1, 0.2};
+    ck_assert(!swarp_status_is_error(swarp_focus_light_view(&cam, &spot, NULL, &v)));
+    check_axis(&v, spot.direction);
+
+    swarp_mat4 out;
+    tu_fill(out.m, 16, -7.25e33);
+    const swarp_vec3 nan_axis = {NAN, 1, 0}, zero = {0, 0, 0};
+    ck_assert_int_eq(swarp_focus_light_view(&cam, &pl, &nan_axis, &out), SWARP_ERR_NON_FINITE);
+    ck_assert_int_eq(swarp_focus_light_view(&cam, &pl, &zero, &out), SWARP_ERR_ZERO_VECTOR);
+    swarp_light at_eye = pl;
+    at_eye.position = cam.eye; /* omni light at the eye: no direction to look along */
+    ck_assert_int_eq(swarp_focus_light_view(&cam, &at_eye, NULL, &out), SWARP_ERR_ZERO_VECTOR);
+    ck_assert_int_eq(swarp_focus_light_view(NULL, &pl, NULL, &out), SWARP_ERR_NULL_POINTER);
+    ck_assert_int_eq(swarp_focus_light_view(&cam, NULL, NULL, &out), SWARP_ERR_NULL_POINTER);
+    ck_assert(tu_untouched(out.m, 16, -7.25e33));
+    ck_assert_int_eq(swarp_focus_light_view(&cam, &pl, NULL, NULL), SWARP_ERR_NULL_POINTER);
+}
+END_TEST
+
+START_TEST(warp_lispsm_options) {
+    const swarp_camera cam = camera();
+    const swarp_light l = sun(0.3, -1, 0.2);
+    const swarp_aabb scene = {{-200, -5, -300}, {200, 30, 60}};
+    swarp_mat4 L, P;
+    ck_assert(!swarp_status_is_error(swarp_focus_light_view(&cam, &l, NULL, &L)));
+    swarp_vec3 pts[SWARP_BODY_MAX_POINTS];
+    size_t np = 0;
+    ck_assert(!swarp_status_is_error(
+        swarp_body_points(&cam, 1.0, 100.0, &l, &scene, pts, SWARP_BODY_MAX_POINTS, &np)));
+    swarp_warp_options o;
+    memset(&o, 0, sizeof o);
+    o.param = SWARP_WARP_PARAM_PSEUDO;
+    o.pseudo_near = 0.1;
+    o.pseudo_far = 0.2;
+    swarp_warp_info info;
+    ck_assert_int_eq(swarp_warp_lispsm(&L, &cam, 1.0, 100.0, pts, np, NULL, &o, &P, &info), SWARP_OK);
+    /* n in light units is (4.2) of the warp's own d, z_0, z_1 */
+    double want;
+    ck_assert_int_eq(swarp_warp_nopt_pseudo(info.d, info.z_0, info.z_1, 0.1, 0.2, &want), SWARP_OK);
+    ck_assert_msg(tu_rel(info.n_light, want) < 1e-9, "n %.17g vs (4.2) %.17g", info.n_light, want);
+
+    swarp_mat4 out;
+    swarp_warp_info oi;
+    tu_fill(out.m, 16, -7.25e33);
+    tu_fill(&oi.n_light, 1, -7.25e33);
+#define BAD(want_status)                                                                          \
+    do {                                                                                          \
+        ck_assert_int_eq(swarp_warp_lispsm(&L, &cam, 1.0, 100.0, pts, np, NULL, &o, &out, &oi), \
+                         (want_status));                                                          \
+        ck_assert(tu_untouched(out.m, 16, -7.25e33) && tu_untouched(&oi.n_light, 1, -7.25e33));   \
+    } while (0)
+    o.pseudo_near = NAN;
+    BAD(SWARP_ERR_NON_FINITE);
+    o.pseudo_near = 0.1;
+    o.pseudo_far = INFINITY;
+    BAD(SWARP_ERR_NON_FINITE);
+    o.pseudo_far = 0.9;
+    BAD(SWARP_ERR_OUT_OF_RANGE);
+    o.pseudo_far = -0.1;
+    BAD(SWARP_ERR_OUT_OF_RANGE);
+    o.pseudo_far = 0.2;
+    o.center = (swarp_warp_center)7;
+    BAD(SWARP_ERR_UNKNOWN_ENUM);
+    o.center = SWARP_WARP_CENTER_DEFAULT;
+    o.param = (swarp_warp_param)9;
+    BAD(SWARP_ERR_UNKNOWN_ENUM);
+    o.param = SWARP_WARP_PARAM_DEFAULT;
+    o._reserved[0] = 1;
+    BAD(SWARP_ERR_RESERVED_NONZERO);
+#undef BAD
+}
+END_TEST
+
+int main(void) {
+    Suite* s = suite_create("edges_geometry");
+    TCase* t = tcase_create("geometry");
+    tcase_set_timeout(t, 60);
+    tcase_add_test(t, poly_clip_aabb_edges);
+    tcase_add_test(t, body_from_h_edges);
+    tcase_add_test(t, focus_light_view_point_lights);
+    tcase_add_test(t, warp_lispsm_options);
+    suite_add_tcase(s, t);
+    return tu_run_suite(s) ? 1 : 0;
+}

@@ -1,0 +1,666 @@
+#define _POSIX_C_SOURCE 200809L
+/* Argument checks and edge branches of the swarp_bias_* functions (issue 9,
+ * branch coverage): every bad input gives its documented status with the
+ * outputs untouched, and the valid results are compared with an independent
+ * evaluation (an orthographic map, where the world-space texel is
+ * width / resolution and depth is linear in the light's z). */
+#include <check.h>
+#include <float.h>
+#include <math.h>
+#include <stdint.h>
+#include <string.h>
+
+#include "shadowwarp.h"
+#include "test_util.h"
+
+#define SENTINEL (-7.25e33)
+
+/* An orthographic light map looking down -y: x in [-W/2, W/2] -> s, z in
+ * [-W/2, W/2] -> t (clip y = -z... any sign), light-space depth along -y:
+ * world y = Y0 -> clip z = -1, y = Y0 - D -> +1 (NEG_ONE_TO_ONE). */
+static const double W = 20.0, Y0 = 10.0, D = 40.0;
+static swarp_bias_map ortho_map(swarp_depth_range depth) {
+    swarp_bias_map m;
+    memset(&m, 0, sizeof m);
+    double* a = m.world_to_clip.m; /* column-major: a[c * 4 + r] */
+    a[0 * 4 + 0] = 2.0 / W;        /* clip x = 2 x / W */
+    a[2 * 4 + 1] = 2.0 / W;        /* clip y = 2 z / W */
+    if (depth == SWARP_DEPTH_ZERO_TO_ONE) { /* clip z = (Y0 - y) / D */
+        a[1 * 4 + 2] = -1.0 / D;
+        a[3 * 4 + 2] = Y0 / D;
+    } else { /* clip z = 2 (Y0 - y) / D - 1 */
+        a[1 * 4 + 2] = -2.0 / D;
+        a[3 * 4 + 2] = 2.0 * Y0 / D - 1.0;
+    }
+    a[3 * 4 + 3] = 1.0;
+    m.res_s = 1024.0;
+    m.res_t = 512.0;
+    m.depth = depth;
+    return m;
+}
+static swarp_light sun(void) {
+    swarp_light l;
+    memset(&l, 0, sizeof l);
+    l.type = SWARP_LIGHT_DIRECTIONAL;
+    l.direction = (swarp_vec3){0.0, -1.0, 0.0};
+    return l;
+}
+
+START_TEST(bias_valid_against_orthographic_closed_form) {
+    const swarp_depth_range ranges[2] = {SWARP_DEPTH_NEG_ONE_TO_ONE, SWARP_DEPTH_ZERO_TO_ONE};
+    for (int r = 0; r < 2; ++r) {
+        swarp_bias_map m = ortho_map(ranges[r]);
+        swarp_light l = sun();
+        swarp_vec3 p = {1.5, -3.0, 2.0};
+        double Lt = SENTINEL, Ls = SENTINEL, Ltt = SENTINEL;
+        ck_assert_int_eq(swarp_bias_texel_size(&m, &p, &Lt, &Ls, &Ltt), SWARP_OK);
+        ck_assert(tu_rel(Ls, W / 1024.0) < 1e-12 && tu_rel(Ltt, W / 512.0) < 1e-12 && Lt == Ltt);
+        /* only one output requested */
+        double only = SENTINEL;
+        ck_assert_int_eq(swarp_bias_texel_size(&m, &p, NULL, &only, NULL), SWARP_OK);
+        ck_assert(only == Ls);
+        /* kozlov: p + L (a + b L_texel), L = +y */
+        swarp_vec3 q;
+        double amount;
+        ck_assert_int_eq(swarp_bias_kozlov(&m, &l, &p, 0.01, 2.0, &q, &amount), SWARP_OK);
+        ck_assert(tu_rel(amount, 0.01 + 2.0 * W / 512.0) < 1e-12);
+        ck_assert(q.x == p.x && q.z == p.z && tu_rel(q.y, p.y + amount) < 1e-12);
+        ck_assert_int_eq(swarp_bias_kozlov(&m, &l, &p, 0.01, 2.0, &q, NULL), SWARP_OK);
+        /* normal offset: k L_texel (1 - N.L) along N; N tilted 60 degrees */
+        swarp_vec3 N = {sin(1.0471975511965976), cos(1.0471975511965976), 0.0};
+        ck_assert_int_eq(swarp_bias_normal_offset(&m, &l, &p, &N, 1.5, &q, &amount), SWARP_OK);
+        ck_assert(tu_rel(amount, 1.5 * (W / 512.0) * (1.0 - 0.5)) < 1e-12);
+        ck_assert(fabs(q.x - (p.x + amount * N.x)) < 1e-12);
+        /* back-facing normal: N.L clamped to 0, informational status */
+        swarp_vec3 Nb = {0.0, -1.0, 0.0};
+        ck_assert_int_eq(swarp_bias_normal_offset(&m, &l, &p, &Nb, 1.0, &q, NULL), SWARP_INFO_BACKFACING);
+        ck_assert(tu_rel(q.y, p.y - W / 512.0) < 1e-12);
+        /* slope-scaled: c + s L_texel tan(angle), depth bias = world bias
+         * times the depth scale (2/D for [-1,1] then *0.5 to window = 1/D) */
+        double wb = SENTINEL, db = SENTINEL;
+        ck_assert_int_eq(swarp_bias_slope_scaled(&m, &l, &p, &N, 0.02, 1.0, &wb, &db), SWARP_OK);
+        ck_assert(tu_rel(wb, 0.02 + (W / 512.0) * tan(1.0471975511965976)) < 1e-12);
+        ck_assert(tu_rel(db, wb / D) < 1e-10);
+        /* grazing: slope capped at 10 */
+        swarp_vec3 Ng = {1.0, 1e-9, 0.0};
+        ck_assert_int_eq(swarp_bias_slope_scaled(&m, &l, &p, &Ng, 0.0, 1.0, &wb, NULL), SWARP_OK);
+        ck_assert(tu_rel(wb, 10.0 * W / 512.0) < 1e-12);
+        ck_assert_int_eq(swarp_bias_slope_scaled(&m, &l, &p, &Nb, 0.0, 1.0, NULL, &db), SWARP_INFO_BACKFACING);
+        /* depth per world unit toward the light: 1/D in window depth */
+        double dpw = SENTINEL;
+        ck_assert_int_eq(swarp_bias_depth_per_world(&m, &l, &p, &dpw), SWARP_OK);
+        ck_assert(tu_rel(dpw, 1.0 / D) < 1e-12);
+        /* receiver plane tilted: depth changes 0.5 world per world x */
+        swarp_vec3 ta = {1.0, 0.5, 0.0}, tb = {0.0, 0.0, 1.0};
+        double g[2] = {SENTINEL, SENTINEL};
+        ck_assert_int_eq(swarp_bias_receiver_plane(&m, &p, &ta, &tb, g), SWARP_OK);
+        /* per texel along s: dx = W/1024 world, dy = 0.5 dx, depth -0.5 dx / D */
+        ck_assert(tu_rel(g[0], -0.5 * (W / 1024.0) / D) < 1e-10);
+        ck_assert(fabs(g[1]) < 1e-15);
+        /* point light: L toward the position */
+        swarp_light pl = sun();
+        pl.type = SWARP_LIGHT_POINT;
+        pl.position = (swarp_vec3){p.x, p.y + 5.0, p.z};
+        swarp_vec3 L;
+        ck_assert_int_eq(swarp_bias_to_light(&pl, &p, &L), SWARP_OK);
+        ck_assert(fabs(L.y - 1.0) < 1e-15 && L.x == 0.0 && L.z == 0.0);
+        swarp_light dl = sun();
+        dl.type = SWARP_LIGHT_DEFAULT;
+        ck_assert_int_eq(swarp_bias_to_light(&dl, &p, &L), SWARP_OK);
+        ck_assert(L.y == 1.0);
+    }
+}
+END_TEST
+
+/* Every bad input of every bias function: its status, outputs untouched. */
+START_TEST(bias_bad_inputs_untouched) {
+    const swarp_bias_map good = ortho_map(SWARP_DEPTH_NEG_ONE_TO_ONE);
+    const swarp_light sl = sun();
+    const swarp_vec3 p = {1.5, -3.0, 2.0}, N = {0.0, 1.0, 0.0}, ta = {1.0, 0.0, 0.0}, tb = {0.0, 0.0, 1.0};
+    swarp_bias_map maps[8];
+    swarp_status map_st[8];
+    int nm = 0;
+    maps[nm] = good;
+    maps[nm]._reserved[2] = 1;
+    map_st[nm++] = SWARP_ERR_RESERVED_NONZERO;
+    maps[nm] = good;
+    maps[nm]._reserved0 = 1;
+    map_st[nm++] = SWARP_ERR_RESERVED_NONZERO;
+    maps[nm] = good;
+    maps[nm].depth = (swarp_depth_range)9;
+    map_st[nm++] = SWARP_ERR_UNKNOWN_ENUM;
+    maps[nm] = good;
+    maps[nm].world_to_clip.m[5] = NAN;
+    map_st[nm++] = SWARP_ERR_NON_FINITE;
+    maps[nm] = good;
+    maps[nm].res_s = INFINITY;
+    map_st[nm++] = SWARP_ERR_RESOLUTION;
+    maps[nm] = good;
+    maps[nm].res_t = 0.0;
+    map_st[nm++] = SWARP_ERR_RESOLUTION;
+    maps[nm] = good;
+    maps[nm].res_t = NAN;
+    map_st[nm++] = SWARP_ERR_RESOLUTION;
+    maps[nm] = good;
+    maps[nm].res_s = -1.0;
+    map_st[nm++] = SWARP_ERR_RESOLUTION;
+
+    swarp_light lights[6];
+    swarp_status light_st[6];
+    int nl = 0;
+    lights[nl] = sl;
+    lights[nl]._reserved[0] = 3;
+    light_st[nl++] = SWARP_ERR_RESERVED_NONZERO;
+    lights[nl] = sl;
+    lights[nl]._reserved0 = 3;
+    light_st[nl++] = SWARP_ERR_RESERVED_NONZERO;
+    lights[nl] = sl;
+    lights[nl].type = (swarp_light_type)7;
+    light_st[nl++] = SWARP_ERR_UNKNOWN_ENUM;
+    lights[nl] = sl;
+    lights[nl].direction.y = NAN;
+    light_st[nl++] = SWARP_ERR_NON_FINITE;
+    lights[nl] = sl;
+    lights[nl].type = SWARP_LIGHT_POINT;
+    lights[nl].position.x = INFINITY;
+    light_st[nl++] = SWARP_ERR_NON_FINITE;
+    lights[nl] = sl;
+    lights[nl].direction = (swarp_vec3){0, 0, 0};
+    light_st[nl++] = SWARP_ERR_ZERO_VECTOR;
+
+    double o[4];
+    swarp_vec3 q;
+#define RESET() (tu_fill(o, 4, SENTINEL), tu_fill(&q.x, 3, SENTINEL))
+#define UNTOUCHED() (tu_untouched(o, 4, SENTINEL) && tu_untouched(&q.x, 3, SENTINEL))
+#define EXPECT(call, want)                                                   \
+    do {                                                                     \
+        RESET();                                                             \
+        swarp_status st_ = (call);                                           \
+        ck_assert_msg(st_ == (want), "%s: %s, want %s", #call,               \
+                      swarp_status_name(st_), swarp_status_name(want));      \
+        ck_assert_msg(UNTOUCHED(), "%s wrote its outputs", #call);           \
+    } while (0)
+
+    for (int i = 0; i < nm; ++i) {
+        const swarp_bias_map* m = &maps[i];
+        swarp_status w = map_st[i];
+        EXPECT(swarp_bias_texel_size(m, &p, &o[0], &o[1], &o[2]), w);
+        EXPECT(swarp_bias_kozlov(m, &sl, &p, 0.1, 1.0, &q, &o[0]), w);
+        EXPECT(swarp_bias_normal_offset(m, &sl, &p, &N, 1.0, &q, &o[0]), w);
+        EXPECT(swarp_bias_slope_scaled(m, &sl, &p, &N, 0.1, 1.0, &o[0], &o[1]), w);
+        EXPECT(swarp_bias_depth_per_world(m, &sl, &p, &o[0]), w);
+        EXPECT(swarp_bias_receiver_plane(m, &p, &ta, &tb, o), w);
+    }
+    for (int i = 0; i < nl; ++i) {
+        const swarp_light* l = &lights[i];
+        swarp_status w = light_st[i];
+        EXPECT(swarp_bias_to_light(l, &p, &q), w);
+        EXPECT(swarp_bias_kozlov(&good, l, &p, 0.1, 1.0, &q, &o[0]), w);
+        EXPECT(swarp_bias_normal_offset(&good, l, &p, &N, 1.0, &q, &o[0]), w);
+        EXPECT(swarp_bias_slope_scaled(&good, l, &p, &N, 0.1, 1.0, &o[0], &o[1]), w);
+        EXPECT(swarp_bias_depth_per_world(&good, l, &p, &o[0]), w);
+    }
+    /* NULL pointers */
+    EXPECT(swarp_bias_texel_size(NULL, &p, &o[0], NULL, NULL), SWARP_ERR_NULL_POINTER);
+    EXPECT(swarp_bias_texel_size(&good, NULL, &o[0], NULL, NULL), SWARP_ERR_NULL_POINTER);
+    EXPECT(swarp_bias_texel_size(&good, &p, NULL, NULL, NULL), SWARP_ERR_NULL_POINTER);
+    EXPECT(swarp_bias_to_light(NULL, &p, &q), SWARP_ERR_NULL_POINTER);
+    EXPECT(swarp_bias_to_light(&sl, NULL, &q), SWARP_ERR_NULL_POINTER);
+    EXPECT(swarp_bias_to_light(&sl, &p, NULL), SWARP_ERR_NULL_POINTER);
+    EXPECT(swarp_bias_kozlov(NULL, &sl, &p, 0, 0, &q, NULL), SWARP_ERR_NULL_POINTER);
+    EXPECT(swarp_bias_kozlov(&good, NULL, &p, 0, 0, &q, NULL), SWARP_ERR_NULL_POINTER);
+    EXPECT(swarp_bias_kozlov(&good, &sl, NULL, 0, 0, &q, NULL), SWARP_ERR_NULL_POINTER);
+    EXPECT(swarp_bias_kozlov(&good, &sl, &p, 0, 0, NULL, NULL), SWARP_ERR_NULL_POINTER);
+    EXPECT(swarp_bias_normal_offset(NULL, &sl, &p, &N, 1, &q, NULL), SWARP_ERR_NULL_POINTER);
+    EXPECT(swarp_bias_normal_offset(&good, NULL, &p, &N, 1, &q, NULL), SWARP_ERR_NULL_POINTER);
+    EXPECT(swarp_bias_normal_offset(&good, &sl, NULL, &N, 1, &q, NULL), SWARP_ERR_NULL_POINTER);
+    EXPECT(swarp_bias_normal_offset(&good, &sl, &p, NULL, 1, &q, NULL), SWARP_ERR_NULL_POINTER);
+    EXPECT(swarp_bias_normal_offset(&good, &sl, &p, &N, 1, NULL, NULL), SWARP_ERR_NULL_POINTER);
+    EXPECT(swarp_bias_slope_scaled(NULL, &sl, &p, &N, 0, 1, &o[0], NULL), SWARP_ERR_NULL_POINTER);
+    EXPECT(swarp_bias_slope_scaled(&good, NULL, &p, &N, 0, 1, &o[0], NULL), SWARP_ERR_NULL_POINTER);
+    EXPECT(swarp_bias_slope_scaled(&good, &sl, NULL, &N, 0, 1, &o[0], NULL), SWARP_ERR_NULL_POINTER);
+    EXPECT(swarp_bias_slope_scaled(&good, &sl, &p, NULL, 0, 1, &o[0], NULL), SWARP_ERR_NULL_POINTER);
+    EXPECT(swarp_bias_slope_scaled(&good, &sl, &p, &N, 0, 1, NULL, NULL), SWARP_ERR_NULL_POINTER);
+    EXPECT(swarp_bias_depth_per_world(NULL, &sl, &p, &o[0]), SWARP_ERR_NULL_POINTER);
+    EXPECT(swarp_bias_depth_per_world(&good, NULL, &p, &o[0]), SWARP_ERR_NULL_POINTER);
+    EXPECT(swarp_bias_depth_per_world(&good, &sl, NULL, &o[0]), SWARP_ERR_NULL_POINTER);
+    EXPECT(swarp_bias_depth_per_world(&good, &sl, &p, NULL), SWARP_ERR_NULL_POINTER);
+    EXPECT(swarp_bias_receiver_plane(NULL, &p, &ta, &tb, o), SWARP_ERR_NULL_POINTER);
+    EXPECT(swarp_bias_receiver_plane(&good, NULL, &ta, &tb, o), SWARP_ERR_NULL_POINTER);
+    EXPECT(swarp_bias_receiver_plane(&good, &p, NULL, &tb, o), SWARP_ERR_NULL_POINTER);
+    EXPECT(swarp_bias_receiver_plane(&good, &p, &ta, NULL, o), SWARP_ERR_NULL_POINTER);
+    EXPECT(swarp_bias_receiver_plane(&good, &p, &ta, &tb, NULL), SWARP_ERR_NULL_POINTER);
+    /* non-finite and out-of-range scalars, points, normals, tangents */
+    const swarp_vec3 bad = {NAN, 0, 0}, zero = {0, 0, 0};
+    EXPECT(swarp_bias_texel_size(&good, &bad, &o[0], NULL, NULL), SWARP_ERR_NON_FINITE);
+    EXPECT(swarp_bias_to_light(&sl, &bad, &q), SWARP_ERR_NON_FINITE);
+    EXPECT(swarp_bias_kozlov(&good, &sl, &p, NAN, 1, &q, NULL), SWARP_ERR_NON_FINITE);
+    EXPECT(swarp_bias_kozlov(&good, &sl, &p, 0, INFINITY, &q, NULL), SWARP_ERR_NON_FINITE);
+    EXPECT(swarp_bias_kozlov(&good, &sl, &p, -1.0, 0.0, &q, NULL), SWARP_ERR_OUT_OF_RANGE);
+    EXPECT(swarp_bias_kozlov(&good, &sl, &p, DBL_MAX, DBL_MAX, &q, NULL), SWARP_ERR_NON_FINITE);
+    EXPECT(swarp_bias_normal_offset(&good, &sl, &p, &N, NAN, &q, NULL), SWARP_ERR_NON_FINITE);
+    EXPECT(swarp_bias_normal_offset(&good, &sl, &p, &bad, 1, &q, NULL), SWARP_ERR_NON_FINITE);
+    EXPECT(swarp_bias_normal_offset(&good, &sl, &p, &N, -1, &q, NULL), SWARP_ERR_OUT_OF_RANGE);
+    EXPECT(swarp_bias_normal_offset(&good, &sl, &p, &zero, 1, &q, NULL), SWARP_ERR_ZERO_VECTOR);
+    EXPECT(swarp_bias_slope_scaled(&good, &sl, &p, &N, NAN, 1, &o[0], NULL), SWARP_ERR_NON_FINITE);
+    EXPECT(swarp_bias_slope_scaled(&good, &sl, &p, &N, 0, NAN, &o[0], NULL), SWARP_ERR_NON_FINITE);
+    EXPECT(swarp_bias_slope_scaled(&good, &sl, &p, &bad, 0, 1, &o[0], NULL), SWARP_ERR_NON_FINITE);
+    EXPECT(swarp_bias_slope_scaled(&good, &sl, &p, &N, -1, 1, &o[0], NULL), SWARP_ERR_OUT_OF_RANGE);
+    EXPECT(swarp_bias_slope_scaled(&good, &sl, &p, &N, 0, -1, &o[0], NULL), SWARP_ERR_OUT_OF_RANGE);
+    EXPECT(swarp_bias_slope_scaled(&good, &sl, &p, &zero, 0, 1, &o[0], NULL), SWARP_ERR_ZERO_VECTOR);
+    EXPECT(swarp_bias_depth_per_world(&good, &sl, &bad, &o[0]), SWARP_ERR_NON_FINITE);
+    EXPECT(swarp_bias_receiver_plane(&good, &bad, &ta, &tb, o), SWARP_ERR_NON_FINITE);
+    EXPECT(swarp_bias_receiver_plane(&good, &p, &bad, &tb, o), SWARP_ERR_NON_FINITE);
+    EXPECT(swarp_bias_receiver_plane(&good, &p, &ta, &bad, o), SWARP_ERR_NON_FINITE);
+    EXPECT(swarp_bias_receiver_plane(&good, &p, &zero, &tb, o), SWARP_ERR_ZERO_VECTOR);
+    EXPECT(swarp_bias_receiver_plane(&good, &p, &ta, &zero, o), SWARP_ERR_ZERO_VECTOR);
+    /* edge-on receiver: both tangents map to the same texel direction */
+    const swarp_vec3 ta2 = {2.0, 5.0, 0.0};
+    EXPECT(swarp_bias_receiver_plane(&good, &p, &ta, &ta2, o), SWARP_ERR_DEGENERATE);
+    /* a point light at p: no direction */
+    swarp_light at_p = sl;
+    at_p.type = SWARP_LIGHT_POINT;
+    at_p.position = p;
+    EXPECT(swarp_bias_to_light(&at_p, &p, &q), SWARP_ERR_ZERO_VECTOR);
+    EXPECT(swarp_bias_kozlov(&good, &at_p, &p, 0.1, 1, &q, NULL), SWARP_ERR_ZERO_VECTOR);
+
+    /* a perspective map: points behind its centre of projection (w <= 0) */
+    swarp_bias_map persp = good;
+    memset(persp.world_to_clip.m, 0, sizeof persp.world_to_clip.m);
+    double* a = persp.world_to_clip.m;
+    a[0] = 1.0;                 /* x */
+    a[2 * 4 + 1] = 1.0;         /* y = z */
+    a[1 * 4 + 2] = -1.0;        /* z = -y - 1 ... */
+    a[3 * 4 + 2] = -1.0;
+    a[1 * 4 + 3] = -1.0;        /* w = -y: in front for y < 0 */
+    const swarp_vec3 behind = {0.0, 2.0, 0.0};
+    EXPECT(swarp_bias_texel_size(&persp, &behind, &o[0], NULL, NULL), SWARP_ERR_BEHIND_PROJECTION);
+    EXPECT(swarp_bias_depth_per_world(&persp, &sl, &behind, &o[0]), SWARP_ERR_BEHIND_PROJECTION);
+    EXPECT(swarp_bias_receiver_plane(&persp, &behind, &ta, &tb, o), SWARP_ERR_BEHIND_PROJECTION);
+    EXPECT(swarp_bias_slope_scaled(&persp, &sl, &behind, &N, 0, 1, &o[0], NULL), SWARP_ERR_BEHIND_PROJECTION);
+    /* slope-scaled: the biased point crosses the centre of projection */
+    const swarp_vec3 near_c = {0.0, -0.5, 0.0};
+    EXPECT(swarp_bias_slope_scaled(&persp, &sl, &near_c, &N, 5.0, 0.0, &o[0], &o[1]), SWARP_ERR_BEHIND_PROJECTION);
+    /* a singular map (rank 3) */
+    swarp_bias_map sing = good;
+    memset(sing.world_to_clip.m + 8, 0, 4 * sizeof(double)); /* column 2 (z) zero */
+    EXPECT(swarp_bias_texel_size(&sing, &p, &o[0], NULL, NULL), SWARP_ERR_SINGULAR);
+    EXPECT(swarp_bias_kozlov(&sing, &sl, &p, 0.1, 1.0, &q, NULL), SWARP_ERR_SINGULAR);
+    /* huge coordinates: the biased point overflows */
+    /* a texel of 2e4 world units times k = DBL_MAX: the offset overflows */
+    swarp_bias_map coarse = good;
+    coarse.res_s = coarse.res_t = 1e-3;
+    const swarp_vec3 Nx = {1.0, 0.0, 0.0};
+    EXPECT(swarp_bias_normal_offset(&coarse, &sl, &p, &Nx, DBL_MAX, &q, NULL), SWARP_ERR_NON_FINITE);
+    EXPECT(swarp_bias_slope_scaled(&coarse, &sl, &p, &Nx, 0.0, DBL_MAX, &o[0], &o[1]), SWARP_ERR_NON_FINITE);
+#undef EXPECT
+#undef RESET
+#undef UNTOUCHED
+}
+END_TEST
+
+static swarp_camera camera(void) {
+    swarp_camera c;
+    memset(&c, 0, sizeof c);
+    c.eye = (swarp_vec3){0.0, 5.0, 0.0};
+    c.dir = (swarp_vec3){0.0, 0.0, -1.0};
+    c.up = (swarp_vec3){0.0, 1.0, 0.0};
+    c.fovy = 1.0;
+    c.aspect = 1.5;
+    c.near = 0.5;
+    c.far = 200.0;
+    return c;
+}
+
+/* swarp_stabilize_directional: NONE focuses exactly on the body's light-space
+ * box (its corners map to the clip square's edges), LEVELS snaps the centre
+ * to whole texels and reports levels above range, and every bad argument
+ * gives its status with the matrix and report untouched. */
+START_TEST(stabilize_directional_edges) {
+    const swarp_camera cam = camera();
+    const swarp_vec3 ld = {0.0, -1.0, 0.0}; /* straight down: helper axis x */
+    const swarp_vec3 body[4] = {{-3, 0, -1}, {4, 0, -1}, {-3, 0, -9}, {4, 2, -9}};
+    swarp_mat4 m;
+    swarp_stabilize_report rep;
+    swarp_stabilize_options o;
+    memset(&o, 0, sizeof o);
+    ck_assert_int_eq(swarp_stabilize_directional(&cam, 1, 10, &ld, body, 4, NULL, 512, NULL, &m, &rep), SWARP_OK);
+    /* every body point inside [-1, 1]^2 and the extremes on the border */
+    double xmin = 1e9, xmax = -1e9;
+    for (int i = 0; i < 4; ++i) {
+        swarp_vec4 h;
+        ck_assert_int_eq(swarp_mat4_transform(&m, &body[i], &h), SWARP_OK);
+        ck_assert(fabs(h.x) <= 1 + 1e-12 && fabs(h.y) <= 1 + 1e-12 && fabs(h.z) <= 1 + 1e-12);
+        xmin = fmin(xmin, h.x);
+        xmax = fmax(xmax, h.x);
+    }
+    ck_assert(fabs(xmin + 1) < 1e-12 && fabs(xmax - 1) < 1e-12);
+    /* LEVELS with a tiny level_max_size: every level is above the range */
+    o.mode = SWARP_STABILIZE_LEVELS;
+    o.level_max_size = 1e-3;
+    o.depth = SWARP_DEPTH_ZERO_TO_ONE;
+    swarp_aabb scene = {{-50, -1, -50}, {50, 30, 50}};
+    ck_assert_int_eq(swarp_stabilize_directional(&cam, 1, 10, &ld, body, 4, &scene, 512, &o, &m, &rep),
+                     SWARP_INFO_LEVEL_ABOVE_RANGE);
+    ck_assert(rep.level_x > 64 && rep.level_y > 64);
+    /* snapped: the centre offset is a whole number of texels */
+    ck_assert(fabs(rep.offset_x / rep.texel_size_x - nearbyint(rep.offset_x / rep.texel_size_x)) < 1e-9);
+    /* the scene box extends depth toward the light: its top (y = 30) maps to 0 */
+    swarp_vec3 top = {0, 30, 0};
+    swarp_vec4 h;
+    ck_assert_int_eq(swarp_mat4_transform(&m, &top, &h), SWARP_OK);
+    ck_assert(fabs(h.z) < 1e-12);
+    /* a light along +z: the helper axis y; a flat body across the light */
+    const swarp_vec3 lz = {0.0, 0.0, -1.0};
+    const swarp_vec3 flat[3] = {{0, 0, -5}, {1, 0, -5}, {0, 1, -5}};
+    o.mode = SWARP_STABILIZE_LEVELS;
+    o.level_max_size = 0.0;
+    o.depth = SWARP_DEPTH_DEFAULT;
+    ck_assert_int_eq(swarp_stabilize_directional(&cam, 1, 10, &lz, flat, 3, NULL, 256, &o, &m, &rep), SWARP_OK);
+    ck_assert(swarp_mat4_transform(&m, &flat[0], &h) == SWARP_OK && fabs(h.z) < 1e-12); /* centred in depth */
+    /* SPHERE needs no body */
+    o.mode = SWARP_STABILIZE_SPHERE;
+    ck_assert_int_eq(swarp_stabilize_directional(&cam, 1, 10, &ld, NULL, 0, NULL, 256, &o, &m, &rep), SWARP_OK);
+
+    /* bad arguments */
+    swarp_mat4 out;
+    swarp_stabilize_report r2;
+#define BAD(call, want)                                                                      \
+    do {                                                                                     \
+        tu_fill(out.m, 16, SENTINEL);                                                        \
+        tu_fill(&r2.sphere_center.x, 3, SENTINEL);                                           \
+        swarp_status st_ = (call);                                                           \
+        ck_assert_msg(st_ == (want), "%s: %s", #call, swarp_status_name(st_));              \
+        ck_assert(tu_untouched(out.m, 16, SENTINEL) && tu_untouched(&r2.sphere_center.x, 3, SENTINEL)); \
+    } while (0)
+    BAD(swarp_stabilize_directional(NULL, 1, 10, &ld, body, 4, NULL, 512, NULL, &out, &r2), SWARP_ERR_NULL_POINTER);
+    BAD(swarp_stabilize_directional(&cam, 1, 10, NULL, body, 4, NULL, 512, NULL, &out, &r2), SWARP_ERR_NULL_POINTER);
+    BAD(swarp_stabilize_directional(&cam, 1, 10, &ld, body, 4, NULL, 512, NULL, NULL, &r2), SWARP_ERR_NULL_POINTER);
+    BAD(swarp_stabilize_directional(&cam, 1, 10, &ld, NULL, 0, NULL, 512, NULL, &out, &r2), SWARP_ERR_NULL_POINTER);
+    BAD(swarp_stabilize_directional(&cam, 1, 10, &ld, body, 0, NULL, 512, NULL, &out, &r2), SWARP_ERR_NULL_POINTER);
+    swarp_stabilize_options b;
+    memset(&b, 0, sizeof b);
+    b._reserved[3] = 1;
+    BAD(swarp_stabilize_directional(&cam, 1, 10, &ld, body, 4, NULL, 512, &b, &out, &r2), SWARP_ERR_RESERVED_NONZERO);
+    memset(&b, 0, sizeof b);
+    b._reserved0 = 1;
+    BAD(swarp_stabilize_directional(&cam, 1, 10, &ld, body, 4, NULL, 512, &b, &out, &r2), SWARP_ERR_RESERVED_NONZERO);
+    memset(&b, 0, sizeof b);
+    b.mode = (swarp_stabilize_mode)9;
+    BAD(swarp_stabilize_directional(&cam, 1, 10, &ld, body, 4, NULL, 512, &b, &out, &r2), SWARP_ERR_UNKNOWN_ENUM);
+    memset(&b, 0, sizeof b);
+    b.depth = (swarp_depth_range)9;
+    BAD(swarp_stabilize_directional(&cam, 1, 10, &ld, body, 4, NULL, 512, &b, &out, &r2), SWARP_ERR_UNKNOWN_ENUM);
+    memset(&b, 0, sizeof b);
+    b.origin.z = NAN;
+    BAD(swarp_stabilize_directional(&cam, 1, 10, &ld, body, 4, NULL, 512, &b, &out, &r2), SWARP_ERR_NON_FINITE);
+    memset(&b, 0, sizeof b);
+    b.level_max_size = INFINITY;
+    BAD(swarp_stabilize_directional(&cam, 1, 10, &ld, body, 4, NULL, 512, &b, &out, &r2), SWARP_ERR_NON_FINITE);
+    b.level_max_size = -1.0;
+    BAD(swarp_stabilize_directional(&cam, 1, 10, &ld, body, 4, NULL, 512, &b, &out, &r2), SWARP_ERR_OUT_OF_RANGE);
+    BAD(swarp_stabilize_directional(&cam, NAN, 10, &ld, body, 4, NULL, 512, NULL, &out, &r2), SWARP_ERR_NON_FINITE);
+    BAD(swarp_stabilize_directional(&cam, 10, 1, &ld, body, 4, NULL, 512, NULL, &out, &r2), SWARP_ERR_NEAR_FAR);
+    const swarp_vec3 nan_d = {NAN, 0, 0}, zero = {0, 0, 0};
+    BAD(swarp_stabilize_directional(&cam, 1, 10, &nan_d, body, 4, NULL, 512, NULL, &out, &r2), SWARP_ERR_NON_FINITE);
+    BAD(swarp_stabilize_directional(&cam, 1, 10, &zero, body, 4, NULL, 512, NULL, &out, &r2), SWARP_ERR_ZERO_VECTOR);
+    BAD(swarp_stabilize_directional(&cam, 1, 10, &ld, body, 4, NULL, 1, NULL, &out, &r2), SWARP_ERR_RESOLUTION);
+    const swarp_vec3 badbody[2] = {{0, 0, 0}, {INFINITY, 0, 0}};
+    BAD(swarp_stabilize_directional(&cam, 1, 10, &ld, badbody, 2, NULL, 512, NULL, &out, &r2), SWARP_ERR_NON_FINITE);
+    swarp_aabb bs = scene;
+    bs.max.y = NAN;
+    BAD(swarp_stabilize_directional(&cam, 1, 10, &ld, body, 4, &bs, 512, NULL, &out, &r2), SWARP_ERR_NON_FINITE);
+    bs = scene;
+    bs.min.x = 100;
+    BAD(swarp_stabilize_directional(&cam, 1, 10, &ld, body, 4, &bs, 512, NULL, &out, &r2), SWARP_ERR_OUT_OF_RANGE);
+    bs = scene;
+    bs.min.y = 100;
+    BAD(swarp_stabilize_directional(&cam, 1, 10, &ld, body, 4, &bs, 512, NULL, &out, &r2), SWARP_ERR_OUT_OF_RANGE);
+    bs = scene;
+    bs.min.z = 100;
+    BAD(swarp_stabilize_directional(&cam, 1, 10, &ld, body, 4, &bs, 512, NULL, &out, &r2), SWARP_ERR_OUT_OF_RANGE);
+    /* NONE with a body that is a line in light space: no extent to fit */
+    const swarp_vec3 line[2] = {{0, 0, -1}, {0, 3, -1}};
+    BAD(swarp_stabilize_directional(&cam, 1, 10, &ld, line, 2, NULL, 512, NULL, &out, &r2), SWARP_ERR_DEGENERATE);
+    /* a body near DBL_MAX: the matrix overflows */
+    const swarp_vec3 huge[2] = {{-1e308, 0, -1e308}, {1e308, 0, 1e308}};
+    BAD(swarp_stabilize_directional(&cam, 1, 10, &ld, huge, 2, NULL, 512, NULL, &out, &r2), SWARP_ERR_NON_FINITE);
+    /* camera errors come first */
+    swarp_camera bc = cam;
+    bc.fovy = 4.0;
+    BAD(swarp_stabilize_directional(&bc, 1, 10, &ld, body, 4, NULL, 512, NULL, &out, &r2), SWARP_ERR_FOV);
+#undef BAD
+}
+END_TEST
+
+/* swarp_stabilize_snap_matrix and swarp_stabilize_sphere argument checks. */
+START_TEST(stabilize_snap_and_sphere_edges) {
+    swarp_mat4 m, out;
+    memset(&m, 0, sizeof m);
+    m.m[0] = 0.1;
+    m.m[5] = 0.1;
+    m.m[10] = -0.01;
+    m.m[15] = 1.0;
+    m.m[12] = 0.123456;
+    const swarp_vec3 origin = {0, 0, 0};
+    /* the origin lands on a whole texel afterwards */
+    ck_assert_int_eq(swarp_stabilize_snap_matrix(&m, 1024, 1024, &origin, &out), SWARP_OK);
+    double s = (out.m[12] + 1.0) * 0.5 * 1024;
+    ck_assert(fabs(s - nearbyint(s)) < 1e-9);
+    ck_assert(fabs(out.m[12] - m.m[12]) <= 1.0 / 1024 + 1e-15);
+#define BAD(call, want)                                                         \
+    do {                                                                        \
+        tu_fill(out.m, 16, SENTINEL);                                           \
+        ck_assert_int_eq((call), (want));                                      \
+        ck_assert(tu_untouched(out.m, 16, SENTINEL));                           \
+    } while (0)
+    BAD(swarp_stabilize_snap_matrix(NULL, 1024, 1024, &origin, &out), SWARP_ERR_NULL_POINTER);
+    BAD(swarp_stabilize_snap_matrix(&m, 1024, 1024, NULL, &out), SWARP_ERR_NULL_POINTER);
+    ck_assert_int_eq(swarp_stabilize_snap_matrix(&m, 1024, 1024, &origin, NULL), SWARP_ERR_NULL_POINTER);
+    const swarp_vec3 nan_o = {NAN, 0, 0};
+    BAD(swarp_stabilize_snap_matrix(&m, 1024, 1024, &nan_o, &out), SWARP_ERR_NON_FINITE);
+    BAD(swarp_stabilize_snap_matrix(&m, NAN, 1024, &origin, &out), SWARP_ERR_RESOLUTION);
+    BAD(swarp_stabilize_snap_matrix(&m, 1024, INFINITY, &origin, &out), SWARP_ERR_RESOLUTION);
+    BAD(swarp_stabilize_snap_matrix(&m, 0, 1024, &origin, &out), SWARP_ERR_RESOLUTION);
+    BAD(swarp_stabilize_snap_matrix(&m, 1024, -2, &origin, &out), SWARP_ERR_RESOLUTION);
+    swarp_mat4 w = m;
+    w.m[7] = 0.5;
+    BAD(swarp_stabilize_snap_matrix(&w, 1024, 1024, &origin, &out), SWARP_ERR_STABILIZE_WARPED);
+    w = m;
+    w.m[3] = 0.5;
+    BAD(swarp_stabilize_snap_matrix(&w, 1024, 1024, &origin, &out), SWARP_ERR_STABILIZE_WARPED);
+    w = m;
+    w.m[11] = 0.5;
+    BAD(swarp_stabilize_snap_matrix(&w, 1024, 1024, &origin, &out), SWARP_ERR_STABILIZE_WARPED);
+    w = m;
+    w.m[15] = 0.0;
+    BAD(swarp_stabilize_snap_matrix(&w, 1024, 1024, &origin, &out), SWARP_ERR_SINGULAR);
+    /* a snap step that overflows the matrix */
+    w = m;
+    w.m[15] = 1e308;
+    w.m[12] = 1e308;
+    BAD(swarp_stabilize_snap_matrix(&w, 1e-300, 1024, &origin, &out), SWARP_ERR_NON_FINITE);
+#undef BAD
+    /* the sphere: minimal, and the centroid one is never smaller */
+    const swarp_camera cam = camera();
+    swarp_vec3 c = {SENTINEL, SENTINEL, SENTINEL};
+    double r = SENTINEL, rc = SENTINEL;
+    ck_assert_int_eq(swarp_stabilize_sphere(&cam, 1, 10, &c, &r, NULL), SWARP_OK);
+    ck_assert_int_eq(swarp_stabilize_sphere(&cam, 1, 10, &c, &r, &rc), SWARP_OK);
+    ck_assert(rc >= r);
+    c = (swarp_vec3){SENTINEL, SENTINEL, SENTINEL};
+    r = SENTINEL;
+    ck_assert_int_eq(swarp_stabilize_sphere(NULL, 1, 10, &c, &r, NULL), SWARP_ERR_NULL_POINTER);
+    ck_assert_int_eq(swarp_stabilize_sphere(&cam, 1, 10, NULL, &r, NULL), SWARP_ERR_NULL_POINTER);
+    ck_assert_int_eq(swarp_stabilize_sphere(&cam, 1, 10, &c, NULL, NULL), SWARP_ERR_NULL_POINTER);
+    swarp_camera wide = cam; /* k = tan(1.25) sqrt(1 + aspect^2) > 5: f k overflows */
+    wide.fovy = 2.5;
+    ck_assert_int_eq(swarp_stabilize_sphere(&wide, 1, DBL_MAX, &c, &r, NULL), SWARP_ERR_NON_FINITE);
+    ck_assert(tu_untouched(&c.x, 3, SENTINEL) && tu_untouched(&r, 1, SENTINEL));
+    /* light view: zero and NaN directions, and a vertical light */
+    swarp_mat4 v;
+    tu_fill(v.m, 16, SENTINEL);
+    const swarp_vec3 zero = {0, 0, 0}, nan_d = {0, NAN, 0}, down = {0, -1, 0};
+    ck_assert_int_eq(swarp_stabilize_light_view(&zero, &v), SWARP_ERR_ZERO_VECTOR);
+    ck_assert_int_eq(swarp_stabilize_light_view(&nan_d, &v), SWARP_ERR_NON_FINITE);
+    ck_assert_int_eq(swarp_stabilize_light_view(NULL, &v), SWARP_ERR_NULL_POINTER);
+    ck_assert(tu_untouched(v.m, 16, SENTINEL));
+    ck_assert_int_eq(swarp_stabilize_light_view(&down, &v), SWARP_OK);
+    /* orthonormal rows */
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) {
+            double d = v.m[i] * v.m[j] + v.m[4 + i] * v.m[4 + j] + v.m[8 + i] * v.m[8 + j];
+            ck_assert(fabs(d - (i == j)) < 1e-15);
+        }
+}
+END_TEST
+
+/* Cascade selection, blending and the error curve: values against direct
+ * evaluation, every bad argument with its status and outputs untouched. */
+START_TEST(cascade_select_blend_curve_edges) {
+    const double splits[5] = {1.0, 4.0, 16.0, 64.0, 256.0};
+    uint32_t idx = 99;
+    double w = SENTINEL;
+    /* depth selection: brute force */
+    uint64_t s = 0xCA5Cull;
+    for (int n = 0; n < 1000; ++n) {
+        double z = tu_uniform(&s, 0.0, 300.0);
+        uint32_t want = 0;
+        while (want + 1 < 4 && z >= splits[want + 1]) ++want;
+        swarp_status st = swarp_cascade_select_depth(splits, 4, z, &idx);
+        ck_assert_uint_eq(idx, want);
+        ck_assert_int_eq(st, (z < 1.0 || z > 256.0) ? SWARP_INFO_OUTSIDE_SPLITS : SWARP_OK);
+        /* blend: weight 1 outside the last 25 % of the split, then linear to 0 */
+        st = swarp_cascade_blend(splits, 4, z, 0.25, &idx, &w);
+        ck_assert_uint_eq(idx, want);
+        double want_w = 1.0;
+        if (want < 3) {
+            double border = splits[want + 1], width = 0.25 * (border - splits[want]);
+            want_w = fmin(1.0, fmax(0.0, (border - z) / width));
+        }
+        ck_assert(fabs(w - want_w) < 1e-12);
+    }
+    ck_assert_int_eq(swarp_cascade_blend(splits, 4, 10.0, 0.0, &idx, &w), SWARP_OK);
+    ck_assert(w == 1.0);
+    const double nan_s[3] = {1, NAN, 3}, flat[3] = {1, 2, 2};
+    idx = 99;
+    w = SENTINEL;
+    ck_assert_int_eq(swarp_cascade_select_depth(splits, 0, 2.0, &idx), SWARP_ERR_SPLIT_COUNT);
+    ck_assert_int_eq(swarp_cascade_select_depth(splits, SWARP_SPLIT_MAX_COUNT + 1, 2.0, &idx), SWARP_ERR_SPLIT_COUNT);
+    ck_assert_int_eq(swarp_cascade_select_depth(NULL, 2, 2.0, &idx), SWARP_ERR_NULL_POINTER);
+    ck_assert_int_eq(swarp_cascade_select_depth(nan_s, 2, 2.0, &idx), SWARP_ERR_NON_FINITE);
+    ck_assert_int_eq(swarp_cascade_select_depth(flat, 2, 2.0, &idx), SWARP_ERR_NOT_INCREASING);
+    ck_assert_int_eq(swarp_cascade_select_depth(splits, 4, NAN, &idx), SWARP_ERR_NON_FINITE);
+    ck_assert_int_eq(swarp_cascade_select_depth(splits, 4, 2.0, NULL), SWARP_ERR_NULL_POINTER);
+    ck_assert_int_eq(swarp_cascade_blend(splits, 4, 2.0, 1.0, &idx, &w), SWARP_ERR_OUT_OF_RANGE);
+    ck_assert_int_eq(swarp_cascade_blend(splits, 4, 2.0, -0.1, &idx, &w), SWARP_ERR_OUT_OF_RANGE);
+    ck_assert_int_eq(swarp_cascade_blend(splits, 4, 2.0, NAN, &idx, &w), SWARP_ERR_NON_FINITE);
+    ck_assert_int_eq(swarp_cascade_blend(splits, 4, INFINITY, 0.1, &idx, &w), SWARP_ERR_NON_FINITE);
+    ck_assert_int_eq(swarp_cascade_blend(flat, 2, 2.0, 0.1, &idx, &w), SWARP_ERR_NOT_INCREASING);
+    ck_assert_int_eq(swarp_cascade_blend(splits, 4, 2.0, 0.1, NULL, &w), SWARP_ERR_NULL_POINTER);
+    ck_assert_int_eq(swarp_cascade_blend(splits, 4, 2.0, 0.1, &idx, NULL), SWARP_ERR_NULL_POINTER);
+    ck_assert(idx == 99 && tu_untouched(&w, 1, SENTINEL));
+
+    /* view depth: the distance along the normalised view direction */
+    swarp_camera cam = camera();
+    cam.dir = (swarp_vec3){0.0, 0.0, -3.0};
+    const swarp_vec3 p = {7.0, 2.0, -11.0};
+    double d = SENTINEL;
+    ck_assert_int_eq(swarp_cascade_view_depth(&cam, &p, &d), SWARP_OK);
+    ck_assert(d == 11.0);
+    d = SENTINEL;
+    swarp_camera bad = cam;
+    bad.dir = (swarp_vec3){0, 0, 0};
+    ck_assert_int_eq(swarp_cascade_view_depth(&bad, &p, &d), SWARP_ERR_ZERO_VECTOR);
+    bad = cam;
+    bad.eye.x = NAN;
+    ck_assert_int_eq(swarp_cascade_view_depth(&bad, &p, &d), SWARP_ERR_NON_FINITE);
+    const swarp_vec3 nan_p = {0, INFINITY, 0}, huge = {0, 0, -DBL_MAX};
+    ck_assert_int_eq(swarp_cascade_view_depth(&cam, &nan_p, &d), SWARP_ERR_NON_FINITE);
+    bad = cam;
+    bad.eye.z = DBL_MAX; /* p - eye overflows */
+    ck_assert_int_eq(swarp_cascade_view_depth(&bad, &huge, &d), SWARP_ERR_NON_FINITE);
+    ck_assert_int_eq(swarp_cascade_view_depth(NULL, &p, &d), SWARP_ERR_NULL_POINTER);
+    ck_assert_int_eq(swarp_cascade_view_depth(&cam, NULL, &d), SWARP_ERR_NULL_POINTER);
+    ck_assert_int_eq(swarp_cascade_view_depth(&cam, &p, NULL), SWARP_ERR_NULL_POINTER);
+    ck_assert(tu_untouched(&d, 1, SENTINEL));
+
+    /* select_best: the finest map covering p; none covering -> the fallback */
+    swarp_bias_map maps[3] = {ortho_map(SWARP_DEPTH_NEG_ONE_TO_ONE), ortho_map(SWARP_DEPTH_ZERO_TO_ONE),
+                              ortho_map(SWARP_DEPTH_NEG_ONE_TO_ONE)};
+    maps[1].res_s = maps[1].res_t = 4096.0; /* finer */
+    maps[2].res_s = maps[2].res_t = 8192.0;
+    maps[2].world_to_clip.m[12] = 50.0; /* moved away: does not cover */
+    const swarp_vec3 q = {1.5, -3.0, 2.0}, outside = {500.0, 0.0, 0.0};
+    double L = SENTINEL;
+    ck_assert_int_eq(swarp_cascade_select_best(maps, 3, &q, 0, &idx, &L), SWARP_OK);
+    ck_assert_uint_eq(idx, 1);
+    ck_assert(tu_rel(L, W / 4096.0) < 1e-12);
+    ck_assert_int_eq(swarp_cascade_select_best(maps, 3, &q, 0, &idx, NULL), SWARP_OK);
+    ck_assert_int_eq(swarp_cascade_select_best(maps, 3, &outside, 2, &idx, &L), SWARP_INFO_OUTSIDE_SPLITS);
+    ck_assert(idx == 2 && L == 0.0);
+    ck_assert_int_eq(swarp_cascade_select_best(maps, 3, &outside, 2, &idx, NULL), SWARP_INFO_OUTSIDE_SPLITS);
+    idx = 99;
+    L = SENTINEL;
+    ck_assert_int_eq(swarp_cascade_select_best(maps, 3, &q, 3, &idx, &L), SWARP_ERR_OUT_OF_RANGE);
+    ck_assert_int_eq(swarp_cascade_select_best(maps, 0, &q, 0, &idx, &L), SWARP_ERR_SPLIT_COUNT);
+    ck_assert_int_eq(swarp_cascade_select_best(maps, 3, &nan_p, 0, &idx, &L), SWARP_ERR_NON_FINITE);
+    ck_assert_int_eq(swarp_cascade_select_best(NULL, 3, &q, 0, &idx, &L), SWARP_ERR_NULL_POINTER);
+    ck_assert_int_eq(swarp_cascade_select_best(maps, 3, &q, 0, NULL, &L), SWARP_ERR_NULL_POINTER);
+    swarp_bias_map bm[2] = {maps[0], maps[2]};
+    bm[1].res_s = -1.0; /* a bad map that does not cover p is still refused */
+    ck_assert_int_eq(swarp_cascade_select_best(bm, 2, &q, 0, &idx, &L), SWARP_ERR_RESOLUTION);
+    bm[0].res_t = 0.0; /* a bad map that covers p */
+    ck_assert_int_eq(swarp_cascade_select_best(bm, 1, &q, 0, &idx, &L), SWARP_ERR_RESOLUTION);
+    ck_assert(idx == 99 && tu_untouched(&L, 1, SENTINEL));
+
+    /* error curve: arguments; values equal swarp_error_split_curve's */
+    swarp_error_config cfg;
+    memset(&cfg, 0, sizeof cfg);
+    cfg.near = 1.0;
+    cfg.far = 256.0;
+    cfg.theta = 0.8;
+    cfg.res_ix = cfg.res_iy = 1024.0;
+    cfg.res_s = cfg.res_t = 2048.0;
+    const double np[4] = {2.0, 8.0, INFINITY, 100.0};
+    double z[16], mx[16], mz[16];
+    size_t count = 0;
+    ck_assert(!swarp_status_is_error(swarp_cascade_error_curve(&cfg, splits, np, 4, 4, z, mx, mz, 16, &count)));
+    ck_assert_uint_eq(count, 16);
+    double mx1, mz1;
+    for (int i = 0; i < 16; ++i) {
+        ck_assert(!swarp_status_is_error(swarp_error_split_curve(&cfg, splits, np, 4, &z[i], 1, &mx1, &mz1)));
+        ck_assert(mx1 == mx[i] && mz1 == mz[i]);
+    }
+    ck_assert(!swarp_status_is_error(swarp_cascade_error_curve(&cfg, splits, np, 4, 4, z, NULL, NULL, 16, &count)));
+    tu_fill(z, 16, SENTINEL);
+    count = 7;
+    ck_assert_int_eq(swarp_cascade_error_curve(&cfg, splits, np, 4, 4, z, mx, mz, 15, &count), SWARP_ERR_CAPACITY);
+    ck_assert_uint_eq(count, 16);
+    count = 7;
+    ck_assert_int_eq(swarp_cascade_error_curve(&cfg, splits, np, 4, 1, z, mx, mz, 16, &count), SWARP_ERR_OUT_OF_RANGE);
+    ck_assert_int_eq(swarp_cascade_error_curve(NULL, splits, np, 4, 4, z, mx, mz, 16, &count), SWARP_ERR_NULL_POINTER);
+    ck_assert_int_eq(swarp_cascade_error_curve(&cfg, splits, NULL, 4, 4, z, mx, mz, 16, &count), SWARP_ERR_NULL_POINTER);
+    ck_assert_int_eq(swarp_cascade_error_curve(&cfg, splits, np, 4, 4, NULL, mx, mz, 16, &count), SWARP_ERR_NULL_POINTER);
+    ck_assert_int_eq(swarp_cascade_error_curve(&cfg, splits, np, 4, 4, z, mx, mz, 16, NULL), SWARP_ERR_NULL_POINTER);
+    ck_assert_int_eq(swarp_cascade_error_curve(&cfg, flat, np, 2, 4, z, mx, mz, 16, &count), SWARP_ERR_NOT_INCREASING);
+    swarp_error_config bc = cfg;
+    bc.res_s = -1.0; /* the pre-flight call refuses it before any output */
+    ck_assert(swarp_status_is_error(swarp_cascade_error_curve(&bc, splits, np, 4, 4, z, mx, mz, 16, &count)));
+    ck_assert(count == 7 && tu_untouched(z, 16, SENTINEL));
+}
+END_TEST
+
+int main(void) {
+    Suite* s = suite_create("edges_splits");
+    TCase* t = tcase_create("bias");
+    tcase_add_test(t, bias_valid_against_orthographic_closed_form);
+    tcase_add_test(t, bias_bad_inputs_untouched);
+    suite_add_tcase(s, t);
+    t = tcase_create("stabilize");
+    tcase_add_test(t, stabilize_directional_edges);
+    tcase_add_test(t, stabilize_snap_and_sphere_edges);
+    tcase_add_test(t, cascade_select_blend_curve_edges);
+    suite_add_tcase(s, t);
+    return tu_run_suite(s) ? 1 : 0;
+}
