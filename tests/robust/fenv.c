@@ -69,7 +69,7 @@ static int is_known(const char* name) {
 /* counts a difference; 1 when it should be printed */
 static int note_fail(const char* name, int strict, unsigned long* fails, unsigned long* known) {
     if (!strict && is_known(name)) return (*known)++ < 3;
-    return (*fails)++ < 10 || getenv("SWR_FENV_ALL");
+    return (*fails)++ < (getenv("SWARP_FENV_SHOW") ? 100000ul : 10ul);
 }
 
 int main(int argc, char** argv) {
@@ -141,8 +141,8 @@ int main(int argc, char** argv) {
                     double d = fabs(a - b) / scale;
                     if (!(d <= tol)) {
                         if (note_fail(e->name, strict, &fails, &known))
-                            printf("%s %s case %lu under %s: output %zu = %.17g, default %.17g\n", is_known(e->name) && !strict ? "KNOWN" : "FAIL", e->name, j,
-                                   modes[m].name, i, a, b);
+                            printf("%s %s case %lu under %s: output %zu = %.17g, default %.17g\n     arguments: %s\n", is_known(e->name) && !strict ? "KNOWN" : "FAIL", e->name, j,
+                                   modes[m].name, i, a, b, base->args);
                     }
                     d /= tol / SWR_FENV_TOL; /* in units of the 1e-9 tolerance */
                     if (!is_known(e->name) && (d > worst[m] || d != d)) {
