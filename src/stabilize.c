@@ -24,7 +24,9 @@ static void sw_min_sphere(const sw_cam_frame* fr, double n, double f, swarp_vec3
      * the clamp below applies without forming k^2. */
     const double t = fr->tan_half, a = fr->aspect;
     const double k = hypot(t, t * a);
-    const double fk = hypot(f * t, (f * t) * a);
+    /* f k directly (f t is subnormal for subnormal f and would keep few
+     * bits); only when k itself overflows, f t first */
+    const double fk = sw_finite(k) ? f * k : hypot(f * t, (f * t) * a);
     /* z0 = (n + f)(1 + k^2)/2 clamped to f, through its distance to the far
      * plane f - z0 = (f - n)/2 - (n + f) k^2/2, formed from f - n (exact for
      * n, f within a factor 2): with n, f one ulp apart the rounded z0 equals
