@@ -621,6 +621,23 @@ static void check_depths(swr_ctx* c, const swarp_polyhedron* P, const swarp_came
  * box), for the functions that take one; rarely a corrupted one (a caller's
  * bad struct: counts above the maxima, an index past the vertices, a NaN
  * vertex) with the status it calls for. */
+/* The library leaves a polyhedron's unused slots unspecified (it may copy
+ * a stack temporary whole); the corruptions below and poly_scale read past
+ * the counts, so the generated polyhedron keeps only its used slots, the
+ * rest zero (valgrind: uninitialised reads otherwise). */
+static void poly_keep_used(swarp_polyhedron* P) {
+    swarp_polyhedron T = *P;
+    memset(P, 0, sizeof *P);
+    P->vertex_count = T.vertex_count, P->face_count = T.face_count;
+    for (uint32_t i = 0; i < T.vertex_count && i < SWARP_POLY_MAX_VERTICES; ++i) P->vertices[i] = T.vertices[i];
+    for (uint32_t f = 0; f < T.face_count && f < SWARP_POLY_MAX_FACES; ++f) {
+        P->planes[f] = T.planes[f];
+        P->face_vertex_count[f] = T.face_vertex_count[f];
+        for (uint32_t k = 0; k < T.face_vertex_count[f] && k < SWARP_POLY_MAX_FACE_VERTICES; ++k)
+            P->face_vertices[f][k] = T.face_vertices[f][k];
+    }
+}
+
 static void gen_poly(swr_ctx* c, const scene_args* s, swarp_polyhedron* P) {
     memset(P, 0, sizeof *P);
     uint8_t k = swr_u8(c) % 4;
@@ -632,6 +649,7 @@ static void gen_poly(swr_ctx* c, const scene_args* s, swarp_polyhedron* P) {
         swarp_aabb b = {{0, 0, 0}, {1, 1, 1}};
         if (swarp_poly_from_aabb) swarp_poly_from_aabb(&b, P);
     }
+    poly_keep_used(P);
     if (swr_one_in(c, 48)) { /* corrupt */
         uint8_t how = swr_u8(c) % 4;
         if (how == 0) P->vertex_count = SWARP_POLY_MAX_VERTICES + 1 + swr_u8(c);
