@@ -6,6 +6,7 @@
  * bounding box, the view axis, (4.2) through swarp_warp_nopt_pseudo), bad
  * input with its status and outputs untouched. */
 #include <check.h>
+#include <fenv.h>
 #include <float.h>
 #include <math.h>
 #include <stdint.h>
@@ -277,6 +278,61 @@ START_TEST(warp_lispsm_options) {
 }
 END_TEST
 
+/* ---- the caller's rounding mode (issue 9, tests/robust/fenv.c) ------------
+ * Each test runs the library under FE_UPWARD / FE_DOWNWARD / FE_TOWARDZERO
+ * and compares with the default mode: the outputs must agree within 1e-9 of
+ * their largest magnitude (the scenes are well conditioned). */
+static const int tu_modes[] = {FE_UPWARD, FE_DOWNWARD, FE_TOWARDZERO};
+static double mat_rel_diff(const swarp_mat4* a, const swarp_mat4* b) {
+    double scale = 0.0, d = 0.0;
+    for (int i = 0; i < 16; ++i) scale = fmax(scale, fmax(fabs(a->m[i]), fabs(b->m[i])));
+    for (int i = 0; i < 16; ++i) d = fmax(d, fabs(a->m[i] - b->m[i]));
+    return scale > 0 ? d / scale : d;
+}
+
+/* [WS06] nearest vertex e: H cut by the near plane has several vertices at
+ * exactly the near depth; picking one by comparing rounded depths made the
+ * WS06 centre (and light_proj, by 60 %) depend on the rounding mode. */
+START_TEST(setup_nearest_vertex_rounding_mode) {
+    swarp_camera cam;
+    memset(&cam, 0, sizeof cam);
+    cam.eye = (swarp_vec3){0.3, 0.1, -0.2};
+    double dl = sqrt(1.0 + 0.3 * 0.3 + 0.3 * 0.3);
+    cam.dir = (swarp_vec3){1.0 / dl, -0.3 / dl, 0.3 / dl};
+    cam.up = (swarp_vec3){0, 1, 0};
+    cam.fovy = 1.0;
+    cam.aspect = 1.5;
+    cam.near = 1.0;
+    cam.far = 300.0;
+    swarp_light l;
+    memset(&l, 0, sizeof l);
+    l.type = SWARP_LIGHT_DIRECTIONAL;
+    l.direction = (swarp_vec3){-0.889186, -0.156768, 0.542136};
+    swarp_aabb box = {{-20, -10, -40}, {40, 10, 40}};
+    for (int flat = 0; flat < 2; ++flat) {
+        if (flat) { /* a flat box with the eye 1 ulp above it (the fenv case) */
+            box.min.y = box.max.y = -10.0;
+            cam.eye.y = nextafter(-10.0, 0.0);
+        }
+        swarp_setup_options o;
+        memset(&o, 0, sizeof o);
+        o.technique = SWARP_TECHNIQUE_LISPSM;
+        o.center = SWARP_WARP_CENTER_NEAREST_VERTEX;
+        swarp_setup_result r0, r;
+        swarp_status s0 = swarp_setup(&cam, &l, &box, &o, &r0, NULL, 0, NULL);
+        ck_assert_msg(!swarp_status_is_error(s0), "%s", swarp_status_name(s0));
+        for (size_t m = 0; m < sizeof tu_modes / sizeof tu_modes[0]; ++m) {
+            fesetround(tu_modes[m]);
+            swarp_status s = swarp_setup(&cam, &l, &box, &o, &r, NULL, 0, NULL);
+            fesetround(FE_TONEAREST);
+            ck_assert_int_eq(s, s0);
+            double dp = mat_rel_diff(&r.light_proj, &r0.light_proj), dm = mat_rel_diff(&r.matrix, &r0.matrix);
+            ck_assert_msg(dp < 1e-9 && dm < 1e-9, "flat %d mode %zu: light_proj differs by %g, matrix by %g", flat, m, dp, dm);
+        }
+    }
+}
+END_TEST
+
 int main(void) {
     Suite* s = suite_create("edges_geometry");
     TCase* t = tcase_create("geometry");
@@ -285,6 +341,7 @@ int main(void) {
     tcase_add_test(t, body_from_h_edges);
     tcase_add_test(t, focus_light_view_point_lights);
     tcase_add_test(t, warp_lispsm_options);
+    tcase_add_test(t, setup_nearest_vertex_rounding_mode);
     suite_add_tcase(s, t);
     return tu_run_suite(s) ? 1 : 0;
 }
