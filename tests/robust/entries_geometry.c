@@ -242,6 +242,17 @@ static void expect_scene(swr_ctx* c, const scene_args* s, int uses_cam_range) {
                                        SWARP_ERR_DEGENERATE};
     for (size_t i = 0; i < sizeof dom / sizeof dom[0]; ++i) swr_domain(c, dom[i]);
     if (s->degenerate_light) c->rounding_edge = 1;
+    /* PSM with a directional light perpendicular to the view (γ = 90°, the
+     * drawn angle pi/2): the light is at infinity in post-perspective space
+     * (τ = w_l/|q_h| = 0, src/psm.c), and SWARP_INFO_PSM_INVERSE (w_l < 0,
+     * the light behind the viewer) is the sign of rounding noise there.  The
+     * matrices are continuous across it (orthographic rows for |τ| < 1e-9);
+     * the status is a documented threshold decision. */
+    if (s->use_opt && s->opt.technique == SWARP_TECHNIQUE_PSM && (t == 0 || t == 1) && fin3(&s->light.direction) &&
+        fin3(&cam->dir)) {
+        swarp_vec3 a = unit(cam->dir), b = unit(s->light.direction);
+        if (fabs(dot(a, b)) < 1e-12) c->rounding_edge = 1;
+    }
 }
 
 static swarp_vec4 xf(const swarp_mat4* m, swarp_vec3 p) {
