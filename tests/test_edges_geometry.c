@@ -333,6 +333,49 @@ START_TEST(setup_nearest_vertex_rounding_mode) {
 }
 END_TEST
 
+/* The planner's γ next to π (a light travelling along the view): acos of
+ * the rounded cosine moved γ by sqrt(eps) ~ 1e-8 with the rounding mode and
+ * the predicted errors by 1e-7 relative; atan2(|v × l|, v · l) is exact to
+ * an ulp.  Independent reference: γ = π - (angle between the directions),
+ * evaluated here from the construction. */
+START_TEST(plan_gamma_rounding_mode) {
+    for (int k = 0; k < 8; ++k) {
+        swarp_scene_needs n;
+        swarp_budget b;
+        memset(&n, 0, sizeof n);
+        memset(&b, 0, sizeof b);
+        n.camera.eye = (swarp_vec3){1e3 * k, 5.0, -3.0 * k};
+        n.camera.dir = (swarp_vec3){0.3 + 0.1 * k, -0.4, 0.7 - 0.05 * k};
+        n.camera.up = (swarp_vec3){0, 1, 0};
+        n.camera.fovy = 1.0;
+        n.camera.aspect = 1.5;
+        n.camera.near = 0.5;
+        n.camera.far = 2000.0;
+        n.light.type = SWARP_LIGHT_DIRECTIONAL;
+        n.light.direction = n.camera.dir; /* travelling along the view: γ = π */
+        swarp_plan_chain ch;
+        memset(&ch, 0, sizeof ch);
+        ch.warp = SWARP_PLAN_WARP_LISPSM_NREPAR;
+        ch.scheme = SWARP_PLAN_SCHEME_PRACTICAL;
+        ch.split_count = 4;
+        swarp_plan_result p0, p;
+        swarp_status s0 = swarp_plan_evaluate(&n, &b, &ch, &p0);
+        ck_assert_msg(!swarp_status_is_error(s0), "%s", swarp_status_name(s0));
+        ck_assert_msg(fabs(p0.gamma - 3.14159265358979323846) <= 4 * DBL_EPSILON, "gamma %.17g, want pi", p0.gamma);
+        for (size_t m = 0; m < sizeof tu_modes / sizeof tu_modes[0]; ++m) {
+            fesetround(tu_modes[m]);
+            swarp_status s = swarp_plan_evaluate(&n, &b, &ch, &p);
+            fesetround(FE_TONEAREST);
+            ck_assert_int_eq(s, s0);
+            ck_assert_msg(fabs(p.gamma - p0.gamma) <= 4 * DBL_EPSILON, "k %d mode %zu: gamma %.17g vs %.17g", k, m,
+                          p.gamma, p0.gamma);
+            ck_assert_msg(fabs(p.max_error - p0.max_error) <= 1e-9 * p0.max_error, "k %d mode %zu: max_error %.17g vs %.17g",
+                          k, m, p.max_error, p0.max_error);
+        }
+    }
+}
+END_TEST
+
 int main(void) {
     Suite* s = suite_create("edges_geometry");
     TCase* t = tcase_create("geometry");
@@ -342,6 +385,7 @@ int main(void) {
     tcase_add_test(t, focus_light_view_point_lights);
     tcase_add_test(t, warp_lispsm_options);
     tcase_add_test(t, setup_nearest_vertex_rounding_mode);
+    tcase_add_test(t, plan_gamma_rounding_mode);
     suite_add_tcase(s, t);
     return tu_run_suite(s) ? 1 : 0;
 }
