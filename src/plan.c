@@ -248,8 +248,12 @@ static swarp_status sw_resolve(const swarp_scene_needs* needs, const swarp_budge
      * the centre of the (adjusted) view frustum ([RHS] §3.2.2 treats a
      * narrow point light as directional) */
     if (in->point_light) {
-        swarp_vec3 centre = sw_add(in->eye, sw_scale(in->view, 0.5 * (in->near + in->far)));
-        if (!sw_normalize(sw_sub(in->light_pos, centre), &in->to_light)) return SWARP_ERR_DEGENERATE;
+        /* relative to the eye first: light - (eye + c v) rounded the centre
+         * at the eye's magnitude (1e6 worlds: 1e-10), which turned a light
+         * at the eye (exactly γ = π) by 1e-14 rad with the caller's rounding
+         * mode; (light - eye) is exact there and small nearby */
+        swarp_vec3 to = sw_sub(sw_sub(in->light_pos, in->eye), sw_scale(in->view, 0.5 * (in->near + in->far)));
+        if (!sw_normalize(to, &in->to_light)) return SWARP_ERR_DEGENERATE;
     }
     /* γ = atan2(|v × l|, v · l), not acos(v · l): acos is ill-conditioned
      * next to 0 and π (d acos/dc = -1/sin γ), where a light along the view

@@ -336,7 +336,9 @@ END_TEST
 /* The planner's γ next to π (a light travelling along the view): acos of
  * the rounded cosine moved γ by sqrt(eps) ~ 1e-8 with the rounding mode and
  * the predicted errors by 1e-7 relative; atan2(|v × l|, v · l) is exact to
- * an ulp.  Independent reference: γ = π - (angle between the directions),
+ * an ulp.  A point light at the eye of a 1e6 world: the direction to the
+ * frustum centre was rounded at the eye's magnitude (γ off π by 1e-14,
+ * max_error by 3e-9 between modes); relative to the eye it is exact.  Independent reference: γ = π - (angle between the directions),
  * evaluated here from the construction. */
 START_TEST(plan_gamma_rounding_mode) {
     for (int k = 0; k < 8; ++k) {
@@ -351,8 +353,15 @@ START_TEST(plan_gamma_rounding_mode) {
         n.camera.aspect = 1.5;
         n.camera.near = 0.5;
         n.camera.far = 2000.0;
-        n.light.type = SWARP_LIGHT_DIRECTIONAL;
-        n.light.direction = n.camera.dir; /* travelling along the view: γ = π */
+        if (k < 4) {
+            n.light.type = SWARP_LIGHT_DIRECTIONAL;
+            n.light.direction = n.camera.dir; /* travelling along the view: γ = π */
+        } else { /* a point light at the eye of a 1e6 world: γ = π too */
+            n.camera.eye.x += 1e6;
+            n.camera.eye.z -= 1e6;
+            n.light.type = SWARP_LIGHT_POINT;
+            n.light.position = n.camera.eye;
+        }
         swarp_plan_chain ch;
         memset(&ch, 0, sizeof ch);
         ch.warp = SWARP_PLAN_WARP_LISPSM_NREPAR;
