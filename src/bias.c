@@ -206,10 +206,13 @@ SWARP_API swarp_status swarp_bias_slope_scaled(const swarp_bias_map* map, const 
     sw_bias_frame fr;
     swarp_status st = sw_bias_prep_normal(map, light, p, normal, &fr);
     if (st != SWARP_OK) return st;
-    /* tan of the angle between N and L: depth step per unit of lateral move */
-    const double ndl = fr.ndl;
+    /* tan of the angle between N and L: depth step per unit of lateral move.
+     * sin from |N x L|, not sqrt(1 - (N.L)^2): that loses half the digits
+     * when N is almost parallel to L (an error of ~1e-8 in tan that moved
+     * with the rounding mode; found by the fenv sweep) */
+    const double ndl = fr.ndl, sin_nl = sw_len(sw_cross(fr.N, fr.L));
     double slope = SW_BIAS_MAX_SLOPE;
-    if (ndl * SW_BIAS_MAX_SLOPE > sqrt(1.0 - ndl * ndl)) slope = sqrt(1.0 - ndl * ndl) / ndl;
+    if (ndl * SW_BIAS_MAX_SLOPE > sin_nl) slope = sin_nl / ndl;
     const double world_bias = c + s * fr.L_texel * slope;
     double d0, d1;
     if ((st = sw_window_depth(map, *p, &d0)) != SWARP_OK) return st;

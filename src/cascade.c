@@ -318,6 +318,16 @@ SWARP_API swarp_status swarp_cascade_setup(const swarp_camera* cam, const swarp_
         o.warp_per_split == SWARP_CASCADE_WARP_DEFAULT ? SWARP_CASCADE_WARP_EACH : o.warp_per_split;
     if (wmode != SWARP_CASCADE_WARP_EACH && wmode != SWARP_CASCADE_WARP_FROM_FIRST)
         return SWARP_ERR_UNKNOWN_ENUM;
+    /* the setup's enums up front: the split path overrides technique and
+     * param per split (user warps), so a bad value could otherwise pass
+     * (found by the hard-case sweep: SWARP_OK with technique 367000474) */
+    if (!sw_reserved_zero(o.setup._reserved, 2) || o.setup._pad0 != 0 || o.setup._pad1 != 0)
+        return SWARP_ERR_RESERVED_NONZERO; /* the stabilised path never reaches swarp_setup's check */
+    if ((uint32_t)o.setup.technique > (uint32_t)SWARP_TECHNIQUE_PSM ||
+        (uint32_t)o.setup.param > (uint32_t)SWARP_WARP_PARAM_USER ||
+        (uint32_t)o.setup.center > (uint32_t)SWARP_WARP_CENTER_NEAREST_VERTEX ||
+        (uint32_t)o.setup.depth_range > (uint32_t)SWARP_DEPTH_ZERO_TO_ONE)
+        return SWARP_ERR_UNKNOWN_ENUM;
     const uint32_t K = o.split.count ? o.split.count : 4;
     if (K > SWARP_CASCADE_MAX_SPLITS) return SWARP_ERR_SPLIT_COUNT;
     if (capacity < K) {

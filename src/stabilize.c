@@ -104,7 +104,9 @@ static double sw_round_up_coarse(double h) {
 /* Quantise a padded full size up to a whole number of level steps. */
 static double sw_quantise(double size, double step, uint32_t* level) {
     double k = ceil(size / step);
-    if (k < 1.0) k = 1.0;
+    /* !(k >= 1), not k < 1: a NaN (step 0 or inf) must not reach the
+     * uint32_t cast below (undefined behaviour; UBSan in the fuzz build) */
+    if (!(k >= 1.0)) k = 1.0;
     *level = k > 4294967295.0 ? 4294967295u : (uint32_t)k;
     return k * step;
 }
@@ -198,9 +200,13 @@ SWARP_API swarp_status swarp_stabilize_directional(const swarp_camera* cam, doub
     rep.texel_size_x = 2.0 * hx / dres;
     rep.texel_size_y = 2.0 * hy / dres;
     if (o.mode != SWARP_STABILIZE_NONE) {
-        /* the offset problem: the map centre moves in whole texels only */
-        cx = nearbyint(cx / rep.texel_size_x) * rep.texel_size_x;
-        cy = nearbyint(cy / rep.texel_size_y) * rep.texel_size_y;
+        /* the offset problem: the map centre moves in whole texels only.
+         * round(), not nearbyint(): the nearest whole texel whatever the
+         * caller's rounding mode (nearbyint under FE_UPWARD is ceil, and the
+         * map then misses up to a whole texel of the sphere; found by the
+         * fenv sweep) */
+        cx = round(cx / rep.texel_size_x) * rep.texel_size_x;
+        cy = round(cy / rep.texel_size_y) * rep.texel_size_y;
     }
     rep.offset_x = cx;
     rep.offset_y = cy;
@@ -257,7 +263,8 @@ SWARP_API swarp_status swarp_stabilize_snap_matrix(const swarp_mat4* m, double r
     /* texel coordinate of the origin; move it to the nearest whole texel */
     const swarp_vec4 h = sw_xform_point(m, *origin);
     const double s = (h.x / w + 1.0) * 0.5 * res_s, t = (h.y / w + 1.0) * 0.5 * res_t;
-    const double ds = nearbyint(s) - s, dt = nearbyint(t) - t;
+    /* round(): the nearest corner in every rounding mode (see above) */
+    const double ds = round(s) - s, dt = round(t) - t;
     swarp_mat4 r = *m;
     r.m[12] += 2.0 * ds / res_s * w;
     r.m[13] += 2.0 * dt / res_t * w;

@@ -11,6 +11,7 @@ extern const swr_entry swr_entries_filter[];
 extern const swr_entry swr_entries_geometry[];
 extern const swr_entry swr_entries_plan[];
 extern const swr_entry swr_entries_splits[];
+extern const swr_entry swr_entries_extras[];
 
 static const swr_entry* const tables[] = {
     swr_entries_core,
@@ -19,6 +20,7 @@ static const swr_entry* const tables[] = {
     swr_entries_geometry,
     swr_entries_splits,
     swr_entries_plan,
+    swr_entries_extras,
 };
 
 size_t swr_entry_count(void) {

@@ -38,15 +38,6 @@ SWR_WEAK(swarp_split_pseudo)
 
 #define PI_ 3.14159265358979323846
 #define HALF_PI 1.57079632679489661923
-#define SKIP_IF_MISSING(c, f)     \
-    do {                          \
-        if (!(f)) {               \
-            (c)->skipped = 1;     \
-            return;               \
-        }                         \
-    } while (0)
-#define FIN(c, x) \
-    do { if (!swr_isfin(x)) swr_expect((c), SWARP_ERR_NON_FINITE); } while (0)
 
 /* ------------------------------------------------------------------------ */
 /* status, version                                                           */
@@ -378,14 +369,12 @@ static void e_warp_nopt(swr_ctx* c) {
     SKIP_IF_MISSING(c, swarp_warp_nopt);
     double d, z0, z1;
     gen_depths(c, &d, &z0, &z1);
-    int nul = swr_null(c);
-    if (nul) swr_expect(c, SWARP_ERR_NULL_POINTER);
+    double out;
+    double* po = swr_out(c, &out, sizeof out, SWR_REQ);
     expect_depths(c, d, z0, z1);
     swr_args(c, "d=%.17g z_0=%.17g z_1=%.17g", d, z0, z1);
-    double out;
-    swr_fill(&out, sizeof out);
-    swarp_status st = SWR_CALL(c, swarp_warp_nopt(d, z0, z1, nul ? NULL : &out));
-    if (!swr_verdict(c, st, 1, (void*)&out, sizeof out)) return;
+    swarp_status st = SWR_CALL(c, swarp_warp_nopt(d, z0, z1, po));
+    if (!swr_done(c, st)) return;
     const double args[3] = {d, z0, z1};
     long double ref = ref_nopt((const long double[]){d, z0, z1});
     check_nprime(c, out, z0, z1, ref);
@@ -400,18 +389,16 @@ static void e_warp_nopt_pseudo(swr_ctx* c) {
     double np = swr_num(c, 0.0, 1.0, brk, 3);
     double fp = swr_one_in(c, 8) ? 1.0 - np : swr_num(c, 0.0, 1.0, brk, 3);
     if (swr_one_in(c, 4)) np = fp = 0.0;
-    int nul = swr_null(c);
-    if (nul) swr_expect(c, SWARP_ERR_NULL_POINTER);
+    double out;
+    double* po = swr_out(c, &out, sizeof out, SWR_REQ);
     expect_depths(c, d, z0, z1);
     FIN(c, np);
     FIN(c, fp);
     if (np < 0 || np > 1 || fp < 0 || fp > 1 || !(np + fp < 1)) swr_expect(c, SWARP_ERR_OUT_OF_RANGE);
     if (fabs(np + fp - 1.0) <= 4 * DBL_EPSILON) c->rounding_edge = 1; /* n_p + f_p < 1 decided by rounding */
     swr_args(c, "d=%.17g z_0=%.17g z_1=%.17g n_p=%.17g f_p=%.17g", d, z0, z1, np, fp);
-    double out;
-    swr_fill(&out, sizeof out);
-    swarp_status st = SWR_CALL(c, swarp_warp_nopt_pseudo(d, z0, z1, np, fp, nul ? NULL : &out));
-    if (!swr_verdict(c, st, 1, (void*)&out, sizeof out)) return;
+    swarp_status st = SWR_CALL(c, swarp_warp_nopt_pseudo(d, z0, z1, np, fp, po));
+    if (!swr_done(c, st)) return;
     const double args[5] = {d, z0, z1, np, fp};
     long double ref = ref_nopt_pseudo((const long double[]){d, z0, z1, np, fp});
     check_nprime(c, out, z0, z1, ref);
@@ -448,15 +435,13 @@ static void expect_gamma(swr_ctx* c, double g) {
 static void e_warp_eta(swr_ctx* c) {
     SKIP_IF_MISSING(c, swarp_warp_eta);
     double th = gen_theta(c), g = gen_gamma(c, th);
-    int nul = swr_null(c);
-    if (nul) swr_expect(c, SWARP_ERR_NULL_POINTER);
+    double out;
+    double* po = swr_out(c, &out, sizeof out, SWR_REQ);
     expect_theta(c, th);
     expect_gamma(c, g);
     swr_args(c, "gamma=%.17g theta=%.17g", g, th);
-    double out;
-    swr_fill(&out, sizeof out);
-    swarp_status st = SWR_CALL(c, swarp_warp_eta(g, th, nul ? NULL : &out));
-    if (!swr_verdict(c, st, 1, (void*)&out, sizeof out)) return;
+    swarp_status st = SWR_CALL(c, swarp_warp_eta(g, th, po));
+    if (!swr_done(c, st)) return;
     swr_rec(c, "eta", out);
     SWR_CHECK(c, out >= -1.0 && out <= 0.0, "eta = %.17g outside [-1, 0]", out);
     const double args[2] = {g, th};
@@ -490,8 +475,8 @@ static void e_warp_wlz(swr_ctx* c) {
     double th = gen_theta(c), g = gen_gamma(c, th), n, f;
     gen_near_far(c, &n, &f);
     double We = swr_num(c, 1e-6, 1e6, NULL, 0);
-    int nul = swr_null(c);
-    if (nul) swr_expect(c, SWARP_ERR_NULL_POINTER);
+    double out;
+    double* po = swr_out(c, &out, sizeof out, SWR_REQ);
     expect_theta(c, th);
     expect_gamma(c, g);
     expect_near_far(c, n, f);
@@ -500,10 +485,8 @@ static void e_warp_wlz(swr_ctx* c) {
     const double args[5] = {g, th, n, f, We};
     swr_args(c, "gamma=%.17g theta=%.17g n_e=%.17g f_e=%.17g W_e=%.17g", g, th, n, f, We);
     allow_overflow(c, ref_wlz((const long double[]){g, th, n, f, We}));
-    double out;
-    swr_fill(&out, sizeof out);
-    swarp_status st = SWR_CALL(c, swarp_warp_wlz(g, th, n, f, We, nul ? NULL : &out));
-    if (!swr_verdict(c, st, 1, (void*)&out, sizeof out)) return;
+    swarp_status st = SWR_CALL(c, swarp_warp_wlz(g, th, n, f, We, po));
+    if (!swr_done(c, st)) return;
     swr_rec(c, "W_lz", out);
     SWR_CHECK_ACC(c, out > 0 || (out == 0 && ref_wlz((const long double[]){g, th, n, f, We}) < DBL_MIN), "W_lz = %g <= 0", out);
     /* a sum of W_e cos and W_s (sin, 1 - cos) terms: scale W_e + 2 W_s */
@@ -523,17 +506,15 @@ static void e_warp_nrepar(swr_ctx* c) {
     double eta = swr_num(c, -1.0, 1.0, brk_e, 4);
     double al = swr_num(c, 1.0 + 1e-9, 1e7, brk_a, 2);
     double W = swr_num(c, 1e-6, 1e6, NULL, 0);
-    int nul = swr_null(c);
-    if (nul) swr_expect(c, SWARP_ERR_NULL_POINTER);
+    double out;
+    double* po = swr_out(c, &out, sizeof out, SWR_REQ);
     FIN(c, eta);
     FIN(c, al);
     FIN(c, W);
     if (!(eta >= -1 && eta <= 1) || !(al > 1) || !(W > 0)) swr_expect(c, SWARP_ERR_OUT_OF_RANGE);
     swr_args(c, "eta=%.17g alpha=%.17g W_lz=%.17g", eta, al, W);
-    double out;
-    swr_fill(&out, sizeof out);
-    swarp_status st = SWR_CALL(c, swarp_warp_nrepar(eta, al, W, nul ? NULL : &out));
-    if (!swr_verdict(c, st, 1, (void*)&out, sizeof out)) return;
+    swarp_status st = SWR_CALL(c, swarp_warp_nrepar(eta, al, W, po));
+    if (!swr_done(c, st)) return;
     const double args[3] = {eta, al, W};
     long double ref = ref_nrepar((const long double[]){eta, al, W});
     if (!check_huge(c, "n_repar", out, eta == -1.0, ref)) return;
@@ -637,14 +618,12 @@ static void e_gmnpr_psi(swr_ctx* c) {
     SKIP_IF_MISSING(c, swarp_gmnpr_psi);
     gm_args g;
     gen_gm(c, &g, 0);
-    int nul = swr_null(c);
-    if (nul) swr_expect(c, SWARP_ERR_NULL_POINTER);
+    double out;
+    double* po = swr_out(c, &out, sizeof out, SWR_REQ);
     expect_gm(c, &g, 0, 1, 0);
     allow_overflow(c, ref_psi((const long double[]){g.lambda, g.theta, g.phi, g.n, g.f}));
-    double out;
-    swr_fill(&out, sizeof out);
-    swarp_status st = SWR_CALL(c, swarp_gmnpr_psi(g.lambda, g.theta, g.phi, g.n, g.f, nul ? NULL : &out));
-    if (!swr_verdict(c, st, 1, (void*)&out, sizeof out)) return;
+    swarp_status st = SWR_CALL(c, swarp_gmnpr_psi(g.lambda, g.theta, g.phi, g.n, g.f, po));
+    if (!swr_done(c, st)) return;
     swr_rec(c, "psi", out);
     SWR_CHECK(c, out >= 0, "psi = %g < 0", out);
     const double args[5] = {g.lambda, g.theta, g.phi, g.n, g.f};
@@ -655,14 +634,12 @@ static void e_gmnpr_offset(swr_ctx* c) {
     SKIP_IF_MISSING(c, swarp_gmnpr_offset);
     gm_args g;
     gen_gm(c, &g, 0);
-    int nul = swr_null(c);
-    if (nul) swr_expect(c, SWARP_ERR_NULL_POINTER);
+    double out;
+    double* po = swr_out(c, &out, sizeof out, SWR_REQ);
     expect_gm(c, &g, 0, 1, 0);
     allow_overflow(c, -1);
-    double out;
-    swr_fill(&out, sizeof out);
-    swarp_status st = SWR_CALL(c, swarp_gmnpr_offset(g.lambda, g.theta, g.phi, g.n, g.f, nul ? NULL : &out));
-    if (!swr_verdict(c, st, 1, (void*)&out, sizeof out)) return;
+    swarp_status st = SWR_CALL(c, swarp_gmnpr_offset(g.lambda, g.theta, g.phi, g.n, g.f, po));
+    if (!swr_done(c, st)) return;
     swr_rec(c, "offset", out);
     const double args[5] = {g.lambda, g.theta, g.phi, g.n, g.f};
     swr_close_cond_floor(c, "offset [GMNPR] (2)", out, ref_offset, args, 5,
@@ -673,14 +650,12 @@ static void e_gmnpr_F(swr_ctx* c) {
     SKIP_IF_MISSING(c, swarp_gmnpr_F);
     gm_args g;
     gen_gm(c, &g, 0);
-    int nul = swr_null(c);
-    if (nul) swr_expect(c, SWARP_ERR_NULL_POINTER);
+    double out;
+    double* po = swr_out(c, &out, sizeof out, SWR_REQ);
     expect_gm(c, &g, 0, 1, 1);
     allow_overflow(c, -1);
-    double out;
-    swr_fill(&out, sizeof out);
-    swarp_status st = SWR_CALL(c, swarp_gmnpr_F(g.lambda, g.theta, g.phi, g.n, g.f, g.z, nul ? NULL : &out));
-    if (!swr_verdict(c, st, 1, (void*)&out, sizeof out)) return;
+    swarp_status st = SWR_CALL(c, swarp_gmnpr_F(g.lambda, g.theta, g.phi, g.n, g.f, g.z, po));
+    if (!swr_done(c, st)) return;
     swr_rec(c, "F", out);
     SWR_CHECK(c, out >= 0, "F = %g < 0", out);
     {
@@ -740,13 +715,11 @@ static void e_gmnpr_lambda(swr_ctx* c) {
     SKIP_IF_MISSING(c, swarp_gmnpr_lambda);
     gm_args g;
     gen_gm(c, &g, 1);
-    int nul = swr_null(c);
-    if (nul) swr_expect(c, SWARP_ERR_NULL_POINTER);
-    expect_gm(c, &g, 1, 0, 0);
     double out;
-    swr_fill(&out, sizeof out);
-    swarp_status st = SWR_CALL(c, swarp_gmnpr_lambda(g.theta, g.phi, g.n, g.f, nul ? NULL : &out));
-    if (!swr_verdict(c, st, 1, (void*)&out, sizeof out)) return;
+    double* po = swr_out(c, &out, sizeof out, SWR_REQ);
+    expect_gm(c, &g, 1, 0, 0);
+    swarp_status st = SWR_CALL(c, swarp_gmnpr_lambda(g.theta, g.phi, g.n, g.f, po));
+    if (!swr_done(c, st)) return;
     const double args[4] = {g.theta, g.phi, g.n, g.f};
     long double ref = g.theta > 0 ? ref_lgmnpr((const long double[]){g.theta, g.phi, g.n, g.f}) : INFINITY;
     /* theta = 0 is finite by contract (DBL_MAX + INFO_WARP_UNIFORM, issue 2): not "degenerate" */
@@ -762,13 +735,11 @@ static void e_gmnpr_lambda_lispsm(swr_ctx* c) {
     SKIP_IF_MISSING(c, swarp_gmnpr_lambda_lispsm);
     gm_args g;
     gen_gm(c, &g, 1);
-    int nul = swr_null(c);
-    if (nul) swr_expect(c, SWARP_ERR_NULL_POINTER);
-    expect_gm(c, &g, 1, 0, 0);
     double out;
-    swr_fill(&out, sizeof out);
-    swarp_status st = SWR_CALL(c, swarp_gmnpr_lambda_lispsm(g.theta, g.phi, g.n, g.f, nul ? NULL : &out));
-    if (!swr_verdict(c, st, 1, (void*)&out, sizeof out)) return;
+    double* po = swr_out(c, &out, sizeof out, SWR_REQ);
+    expect_gm(c, &g, 1, 0, 0);
+    swarp_status st = SWR_CALL(c, swarp_gmnpr_lambda_lispsm(g.theta, g.phi, g.n, g.f, po));
+    if (!swr_done(c, st)) return;
     const double args[4] = {g.theta, g.phi, g.n, g.f};
     long double ref = g.theta > 0 ? ref_llispsm((const long double[]){g.theta, g.phi, g.n, g.f}) : INFINITY;
     if (!check_huge(c, "lambda_LiSPSM", out, 0, ref)) return;
@@ -780,13 +751,11 @@ static void e_gmnpr_lambda_glpr(swr_ctx* c) {
     SKIP_IF_MISSING(c, swarp_gmnpr_lambda_glpr);
     gm_args g;
     gen_gm(c, &g, 1);
-    int nul = swr_null(c);
-    if (nul) swr_expect(c, SWARP_ERR_NULL_POINTER);
-    expect_gm(c, &g, 1, 0, 0);
     double out;
-    swr_fill(&out, sizeof out);
-    swarp_status st = SWR_CALL(c, swarp_gmnpr_lambda_glpr(g.theta, g.phi, g.n, g.f, nul ? NULL : &out));
-    if (!swr_verdict(c, st, 1, (void*)&out, sizeof out)) return;
+    double* po = swr_out(c, &out, sizeof out, SWR_REQ);
+    expect_gm(c, &g, 1, 0, 0);
+    swarp_status st = SWR_CALL(c, swarp_gmnpr_lambda_glpr(g.theta, g.phi, g.n, g.f, po));
+    if (!swr_done(c, st)) return;
     if (g.theta <= g.phi) {
         /* no positive solution: lambda_GMNPR is written instead */
         double lg = 0;

@@ -37,15 +37,6 @@ SWR_WEAK(swarp_pcss_search_width)
 SWR_WEAK(swarp_pcss_penumbra)
 SWR_WEAK(swarp_pcss_filter_width)
 
-#define SKIP_IF_MISSING(c, f) \
-    do {                      \
-        if (!(f)) {           \
-            (c)->skipped = 1; \
-            return;           \
-        }                     \
-    } while (0)
-#define FIN(c, x) \
-    do { if (!swr_isfin(x)) swr_expect((c), SWARP_ERR_NON_FINITE); } while (0)
 #define EPS DBL_EPSILON
 
 static const double brk01[] = {0.0, 1.0, 0.5};
@@ -53,14 +44,12 @@ static const double brk01[] = {0.0, 1.0, 0.5};
 static void e_vsm_moments(swr_ctx* c) {
     SKIP_IF_MISSING(c, swarp_vsm_moments);
     double x = swr_num(c, -1, 2, brk01, 3);
-    int nul = swr_null(c);
-    if (nul) swr_expect(c, SWARP_ERR_NULL_POINTER);
+    double m[2];
+    double* po = swr_out(c, m, sizeof m, SWR_REQ);
     FIN(c, x);
     if (swr_isfin(x) && !swr_isfin(x * x)) swr_allow(c, SWARP_ERR_OVERFLOW), swr_allow(c, SWARP_ERR_NON_FINITE);
-    double m[2];
-    swr_fill(m, sizeof m);
-    swarp_status st = SWR_CALL(c, swarp_vsm_moments(x, nul ? NULL : m));
-    if (!swr_verdict(c, st, 1, (void*)m, sizeof m)) return;
+    swarp_status st = SWR_CALL(c, swarp_vsm_moments(x, po));
+    if (!swr_done(c, st)) return;
     swr_rec(c, "M_1", m[0]);
     swr_rec(c, "M_2", m[1]);
     /* [VSM] (3.1); x^2 to within its rounding (any rounding mode) */
@@ -104,16 +93,14 @@ static void e_vsm_chebyshev(swr_ctx* c) {
 static void e_vsm_reduce_bleeding(swr_ctx* c) {
     SKIP_IF_MISSING(c, swarp_vsm_reduce_bleeding);
     double p = swr_num(c, 0, 1, brk01, 3), a = swr_num(c, 0, 1, brk01, 3);
-    int nul = swr_null(c);
-    if (nul) swr_expect(c, SWARP_ERR_NULL_POINTER);
+    double o;
+    double* po = swr_out(c, &o, sizeof o, SWR_REQ);
     FIN(c, p);
     FIN(c, a);
     if (swr_isfin(p) && !(p >= 0 && p <= 1)) swr_expect(c, SWARP_ERR_OUT_OF_RANGE);
     if (swr_isfin(a) && !(a >= 0 && a < 1)) swr_expect(c, SWARP_ERR_OUT_OF_RANGE);
-    double o;
-    swr_fill(&o, sizeof o);
-    swarp_status st = SWR_CALL(c, swarp_vsm_reduce_bleeding(p, a, nul ? NULL : &o));
-    if (!swr_verdict(c, st, 1, (void*)&o, sizeof o)) return;
+    swarp_status st = SWR_CALL(c, swarp_vsm_reduce_bleeding(p, a, po));
+    if (!swr_done(c, st)) return;
     c->out_scale = 1; /* a fraction in [0, 1] */
     swr_rec(c, "p", o);
     long double ref = ((long double)p - a) / (1.0L - a);
@@ -228,8 +215,8 @@ static void e_lvsm_layer_uniform(swr_ctx* c) {
     uint32_t n = swr_one_in(c, 24) ? 0 : 1 + swr_u8(c) % 64;
     const double brk[] = {s0, sN, s0 + (sN - s0) / 2, s0 + (sN - s0) / 3};
     double t = swr_num(c, s0 - 1, sN + 1, brk, 4);
-    int nul = swr_null(c);
-    if (nul) swr_expect(c, SWARP_ERR_NULL_POINTER);
+    uint32_t L;
+    uint32_t* po = swr_out(c, &L, sizeof L, SWR_REQ);
     FIN(c, t);
     FIN(c, s0);
     FIN(c, sN);
@@ -239,10 +226,8 @@ static void e_lvsm_layer_uniform(swr_ctx* c) {
         double u = (t - s0) / (sN - s0) * n;
         if (fabs(u - nearbyint(u)) < 1e-9 * (1 + fabs(u))) c->rounding_edge = 1;
     }
-    uint32_t L;
-    swr_fill(&L, sizeof L);
-    swarp_status st = SWR_CALL(c, swarp_lvsm_layer_uniform(t, s0, sN, n, nul ? NULL : &L));
-    if (!swr_verdict(c, st, 1, (void*)&L, sizeof L)) return;
+    swarp_status st = SWR_CALL(c, swarp_lvsm_layer_uniform(t, s0, sN, n, po));
+    if (!swr_done(c, st)) return;
     c->rec[c->n_rec < SWR_MAX_REC ? c->n_rec++ : 0] = L;
     SWR_CHECK(c, L < n, "layer %u of %u", L, n);
     SWR_CHECK(c, (st == SWARP_INFO_FILTER_DEPTH_CLAMPED) == (t < s0 || t > sN), "%s for t %s [s_0, s_N]",
@@ -345,14 +330,12 @@ static void e_lvsm_visibility(swr_ctx* c) {
 static void e_lvsm_second_occluder(swr_ctx* c) {
     SKIP_IF_MISSING(c, swarp_lvsm_second_occluder);
     double mu = swr_num(c, 0, 1, brk01, 3), s2 = swr_num(c, -1e-9, 0.25, brk01, 2);
-    int nul = swr_null(c);
-    if (nul) swr_expect(c, SWARP_ERR_NULL_POINTER);
+    double o;
+    double* po = swr_out(c, &o, sizeof o, SWR_REQ);
     FIN(c, mu);
     FIN(c, s2);
-    double o;
-    swr_fill(&o, sizeof o);
-    swarp_status st = SWR_CALL(c, swarp_lvsm_second_occluder(mu, s2, nul ? NULL : &o));
-    if (!swr_verdict(c, st, 1, (void*)&o, sizeof o)) return;
+    swarp_status st = SWR_CALL(c, swarp_lvsm_second_occluder(mu, s2, po));
+    if (!swr_done(c, st)) return;
     swr_rec(c, "depth", o);
     long double ref = (long double)mu + sqrtl(s2 > 0 ? s2 : 0);
     SWR_CHECK_ACC(c, fabsl(o - ref) <= 4 * EPS * (fabsl(ref) + fabs(mu)), "mu + sigma = %.17g, want %.17Lg", o, ref);
@@ -442,13 +425,11 @@ static void e_lvsm_lloyd(swr_ctx* c) {
 static void e_evsm_max_exponent(swr_ctx* c) {
     SKIP_IF_MISSING(c, swarp_evsm_max_exponent);
     int32_t f = swr_enum(c, 3);
-    int nul = swr_null(c);
-    if (nul) swr_expect(c, SWARP_ERR_NULL_POINTER);
-    if (f < 0 || f > 2) swr_expect(c, SWARP_ERR_UNKNOWN_ENUM);
     double e;
-    swr_fill(&e, sizeof e);
-    swarp_status st = SWR_CALL(c, swarp_evsm_max_exponent((swarp_texel_format)f, nul ? NULL : &e));
-    if (!swr_verdict(c, st, 1, (void*)&e, sizeof e)) return;
+    double* po = swr_out(c, &e, sizeof e, SWR_REQ);
+    if (f < 0 || f > 2) swr_expect(c, SWARP_ERR_UNKNOWN_ENUM);
+    swarp_status st = SWR_CALL(c, swarp_evsm_max_exponent((swarp_texel_format)f, po));
+    if (!swr_done(c, st)) return;
     swr_rec(c, "c", e);
     /* c = (ln F_max - 4u)/2, u = 2^-(p+1): fp16 p = 10, F_max = 65504; fp32
      * p = 23, F_max = (2 - 2^-23) 2^127 -- computed here from p and e_max */
@@ -463,8 +444,8 @@ static void e_evsm_moments(swr_ctx* c) {
     SKIP_IF_MISSING(c, swarp_evsm_moments);
     const double brk_c[] = {44.36, 5.545, 0.0};
     double x = swr_num(c, 0, 1, brk01, 3), cp = swr_num(c, 0, 50, brk_c, 3), cn = swr_num(c, 0, 50, brk_c, 3);
-    int nul = swr_null(c);
-    if (nul) swr_expect(c, SWARP_ERR_NULL_POINTER);
+    double m[4];
+    double* po = swr_out(c, m, sizeof m, SWR_REQ);
     FIN(c, x);
     FIN(c, cp);
     FIN(c, cn);
@@ -488,10 +469,8 @@ static void e_evsm_moments(swr_ctx* c) {
         }
     }
     swr_args(c, "x=%.17g c_pos=%.17g c_neg=%.17g", x, cp, cn);
-    double m[4];
-    swr_fill(m, sizeof m);
-    swarp_status st = SWR_CALL(c, swarp_evsm_moments(x, cp, cn, nul ? NULL : m));
-    if (!swr_verdict(c, st, 1, (void*)m, sizeof m)) return;
+    swarp_status st = SWR_CALL(c, swarp_evsm_moments(x, cp, cn, po));
+    if (!swr_done(c, st)) return;
     for (int i = 0; i < 4; ++i) swr_rec(c, "moment", m[i]);
     long double r[4] = {expl((long double)cp * x), expl(2.0L * cp * x), -expl(-(long double)cn * x), expl(-2.0L * cn * x)};
     for (int i = 0; i < 4; ++i) /* exp's condition number is |argument| */
@@ -544,14 +523,12 @@ static void e_evsm_visibility(swr_ctx* c) {
 static void e_msm_moments(swr_ctx* c) {
     SKIP_IF_MISSING(c, swarp_msm_moments);
     double z = swr_num(c, 0, 1, brk01, 3);
-    int nul = swr_null(c);
-    if (nul) swr_expect(c, SWARP_ERR_NULL_POINTER);
+    double b[4];
+    double* po = swr_out(c, b, sizeof b, SWR_REQ);
     FIN(c, z);
     if (swr_isfin(z) && !(z >= 0 && z <= 1)) swr_expect(c, SWARP_ERR_OUT_OF_RANGE);
-    double b[4];
-    swr_fill(b, sizeof b);
-    swarp_status st = SWR_CALL(c, swarp_msm_moments(z, nul ? NULL : b));
-    if (!swr_verdict(c, st, 1, (void*)b, sizeof b)) return;
+    swarp_status st = SWR_CALL(c, swarp_msm_moments(z, po));
+    if (!swr_done(c, st)) return;
     long double p = 1;
     for (int i = 0; i < 4; ++i) {
         p *= z;

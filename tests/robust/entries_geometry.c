@@ -20,13 +20,6 @@ SWR_WEAK(swarp_setup_range)
 SWR_WEAK(swarp_body_points)
 SWR_WEAK(swarp_poly_from_aabb)
 
-#define SKIP_IF_MISSING(c, f) \
-    do {                      \
-        if (!(f)) {           \
-            (c)->skipped = 1; \
-            return;           \
-        }                     \
-    } while (0)
 #define PI_ 3.14159265358979323846
 
 static int fin(double x) { return swr_isfin(x); }
@@ -179,8 +172,16 @@ static void scene_cond(swr_ctx* c, const scene_args* s, double near, double far)
     if (near > 0 && swr_isfin(cmax + far)) swr_cond(c, (cmax + far) / near);
 }
 
-static void expect_scene(swr_ctx* c, const scene_args* s, int uses_cam_range) {
+/* what the arguments call for; `parts` says which ones the function reads */
+#define X_CAM 1
+#define X_LIGHT 2
+#define X_BOX 4
+#define X_OPT 8
+#define X_GEOM 16 /* the statuses only the geometry can tell */
+#define X_ALL 31
+static void expect_parts(swr_ctx* c, const scene_args* s, int uses_cam_range, int parts) {
     const swarp_camera* cam = &s->cam;
+    if (parts & X_CAM) {
     if (!fin3(&cam->eye) || !fin3(&cam->dir) || !fin3(&cam->up) || !fin(cam->fovy) || !fin(cam->aspect) ||
         (uses_cam_range && (!fin(cam->near) || !fin(cam->far))))
         swr_expect(c, SWARP_ERR_NON_FINITE);
@@ -204,7 +205,11 @@ static void expect_scene(swr_ctx* c, const scene_args* s, int uses_cam_range) {
         }
     }
     for (int i = 0; i < 4; ++i)
-        if (cam->_reserved[i] || s->light._reserved[i]) swr_expect(c, SWARP_ERR_RESERVED_NONZERO);
+        if (cam->_reserved[i]) swr_expect(c, SWARP_ERR_RESERVED_NONZERO);
+    }
+    if (parts & X_LIGHT) {
+    for (int i = 0; i < 4; ++i)
+        if (s->light._reserved[i]) swr_expect(c, SWARP_ERR_RESERVED_NONZERO);
     if (s->light._reserved0) swr_expect(c, SWARP_ERR_RESERVED_NONZERO);
     int t = (int)s->light.type;
     if (t < 0 || t > 2) swr_expect(c, SWARP_ERR_UNKNOWN_ENUM);
@@ -221,10 +226,13 @@ static void expect_scene(swr_ctx* c, const scene_args* s, int uses_cam_range) {
         if (!fin(s->light.cone_angle)) swr_expect(c, SWARP_ERR_NON_FINITE);
         else if (!(s->light.cone_angle >= 0 && s->light.cone_angle < PI_ / 2)) swr_expect(c, SWARP_ERR_OUT_OF_RANGE);
     }
+    }
+    if (parts & X_BOX) {
     if (!fin3(&s->box.min) || !fin3(&s->box.max)) swr_expect(c, SWARP_ERR_NON_FINITE);
     else if (s->box.min.x > s->box.max.x || s->box.min.y > s->box.max.y || s->box.min.z > s->box.max.z)
         swr_expect(c, SWARP_ERR_BOX_INVERTED);
-    if (s->use_opt) {
+    }
+    if ((parts & X_OPT) && s->use_opt) {
         const swarp_setup_options* o = &s->opt;
         if ((int)o->technique < 0 || (int)o->technique > 3 || (int)o->param < 0 || (int)o->param > 5 ||
             (int)o->center < 0 || (int)o->center > 2 || (int)o->depth_range < 0 || (int)o->depth_range > 2)
@@ -237,6 +245,7 @@ static void expect_scene(swr_ctx* c, const scene_args* s, int uses_cam_range) {
             swr_domain(c, SWARP_ERR_NON_FINITE);
         swr_domain(c, SWARP_ERR_OUT_OF_RANGE); /* n_user, pseudo planes, slide-back, map sizes */
     }
+    if (!(parts & X_GEOM)) return;
     /* what only the geometry can tell */
     static const swarp_status dom[] = {SWARP_ERR_BODY_EMPTY, SWARP_ERR_LIGHT_INSIDE_BODY, SWARP_ERR_BOX_DEGENERATE,
                                        SWARP_ERR_DEGENERATE};
@@ -248,11 +257,15 @@ static void expect_scene(swr_ctx* c, const scene_args* s, int uses_cam_range) {
      * the light behind the viewer) is the sign of rounding noise there.  The
      * matrices are continuous across it (orthographic rows for |τ| < 1e-9);
      * the status is a documented threshold decision. */
-    if (s->use_opt && s->opt.technique == SWARP_TECHNIQUE_PSM && (t == 0 || t == 1) && fin3(&s->light.direction) &&
-        fin3(&cam->dir)) {
-        swarp_vec3 a = unit(cam->dir), b = unit(s->light.direction);
+    if (s->use_opt && s->opt.technique == SWARP_TECHNIQUE_PSM && ((int)s->light.type == 0 || (int)s->light.type == 1) &&
+        fin3(&s->light.direction) && fin3(&s->cam.dir)) {
+        swarp_vec3 a = unit(s->cam.dir), b = unit(s->light.direction);
         if (fabs(dot(a, b)) < 1e-12) c->rounding_edge = 1;
     }
+}
+
+static void expect_scene(swr_ctx* c, const scene_args* s, int uses_cam_range) {
+    expect_parts(c, s, uses_cam_range, X_ALL);
 }
 
 static swarp_vec4 xf(const swarp_mat4* m, swarp_vec3 p) {
@@ -555,10 +568,1006 @@ static void e_poly_from_aabb(swr_ctx* c) {
     }
 }
 
+/* ------------------------------------------------------------------------ */
+/* polyhedra, the bodies H and B, focusing, the LiSPSM warp, setup_points   */
+/* (the remaining geometry entry points, in the table-driven shape of swr.h) */
+/* ------------------------------------------------------------------------ */
+SWR_WEAK(swarp_poly_from_camera_range)
+SWR_WEAK(swarp_poly_from_camera)
+SWR_WEAK(swarp_poly_from_inverse_matrix)
+SWR_WEAK(swarp_poly_clip)
+SWR_WEAK(swarp_poly_clip_aabb)
+SWR_WEAK(swarp_body_h)
+SWR_WEAK(swarp_body_from_h)
+SWR_WEAK(swarp_body_receivers)
+SWR_WEAK(swarp_body_adjusted_range)
+SWR_WEAK(swarp_focus_light_view)
+SWR_WEAK(swarp_focus_fit)
+SWR_WEAK(swarp_warp_lispsm)
+SWR_WEAK(swarp_setup_points)
+
+static double plane_at(const swarp_plane* p, swarp_vec3 v) { return p->a * v.x + p->b * v.y + p->c * v.z + p->d; }
+static double vmax(swarp_vec3 v) { return fmax(fabs(v.x), fmax(fabs(v.y), fabs(v.z))); }
+static double poly_scale(const swarp_polyhedron* P) {
+    double s = 0;
+    for (uint32_t i = 0; i < P->vertex_count && i < SWARP_POLY_MAX_VERTICES; ++i) s = fmax(s, vmax(P->vertices[i]));
+    return s;
+}
+static double box_scale(const swarp_aabb* b) { return fmax(vmax(b->min), vmax(b->max)); }
+/* tolerance of a geometric predicate on coordinates of magnitude s:
+ * 1e-9 relative (the library merges vertices closer than 1e-12 s) */
+static double gtol(double s) { return 1e-9 * s + 1e-300; }
+/* KNOWN (docs/quality.md): a frustum 1e6 times wider than high (valid:
+ * aspect > 0) reaches coordinates far tan(fovy/2) aspect, and the clips'
+ * 1e-12-relative merge tolerance swallows the box: H, B and the receivers
+ * come back with vertices outside S, behind the eye or off their faces */
+static int wide(const swarp_camera* cam) { return cam->aspect >= 1e6 || cam->aspect <= 1e-6; }
+
+/* A valid polyhedron (header: counts within the maxima, face indices valid,
+ * outward unit normals, every vertex on the inner side of every face plane,
+ * each face's vertices on its plane); records up to 32 vertices. */
+static void check_poly(swr_ctx* c, const swarp_polyhedron* P, const char* what, double tol) {
+    SWR_CHECK(c, P->vertex_count <= SWARP_POLY_MAX_VERTICES && P->face_count <= SWARP_POLY_MAX_FACES,
+              "%s: %u vertices, %u faces", what, P->vertex_count, P->face_count);
+    if (P->vertex_count > SWARP_POLY_MAX_VERTICES || P->face_count > SWARP_POLY_MAX_FACES) return;
+    /* recorded: what does not depend on the order of the vertices (a SET; the
+     * order may change with the rounding): per axis min, max and mean */
+    double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY}, sum[3] = {0, 0, 0};
+    for (uint32_t i = 0; i < P->vertex_count; ++i) {
+        const double v[3] = {P->vertices[i].x, P->vertices[i].y, P->vertices[i].z};
+        for (int k = 0; k < 3; ++k) lo[k] = fmin(lo[k], v[k]), hi[k] = fmax(hi[k], v[k]), sum[k] += v[k];
+        SWR_CHECK(c, fin3(&P->vertices[i]), "%s: vertex %u not finite", what, i);
+    }
+    for (int k = 0; k < 3 && P->vertex_count; ++k)
+        swr_rec(c, what, lo[k]), swr_rec(c, what, hi[k]), swr_rec(c, what, sum[k] / P->vertex_count);
+    for (uint32_t f = 0; f < P->face_count; ++f) {
+        const swarp_plane* pl = &P->planes[f];
+        double nl = sqrt(pl->a * pl->a + pl->b * pl->b + pl->c * pl->c);
+        SWR_CHECK(c, fabs(nl - 1) <= 1e-9, "%s: face %u normal length %.17g", what, f, nl);
+        SWR_CHECK(c, P->face_vertex_count[f] <= SWARP_POLY_MAX_FACE_VERTICES, "%s: face %u has %u vertices", what, f,
+                  P->face_vertex_count[f]);
+        for (uint32_t k = 0; k < P->face_vertex_count[f] && k < SWARP_POLY_MAX_FACE_VERTICES; ++k) {
+            uint32_t v = P->face_vertices[f][k];
+            SWR_CHECK(c, v < P->vertex_count, "%s: face %u index %u", what, f, v);
+            if (v >= P->vertex_count) continue;
+            double dev = fabs(plane_at(pl, P->vertices[v]));
+            if (dev > tol && dev <= 1e3 * tol && !c->known_as) { /* KNOWN (docs/quality.md): faces planar to ~1e-8 only */
+                swr_known(c, "%s: vertex %u off face %u by %g (tol %g)", what, v, f, dev, tol);
+                continue;
+            }
+            SWR_CHECK_ACC(c, dev <= tol, "%s: vertex %u off face %u by %g (tol %g)", what, v, f, dev, tol);
+        }
+        for (uint32_t v = 0; v < P->vertex_count; ++v) {
+            double out = plane_at(pl, P->vertices[v]);
+            if (out > tol && out <= 1e3 * tol && !c->known_as) { /* KNOWN: the same 1e-8..1e-6-relative band */
+                swr_known(c, "%s: vertex %u outside face %u by %g (tol %g)", what, v, f, out, tol);
+                continue;
+            }
+            SWR_CHECK_ACC(c, out <= tol, "%s: vertex %u outside face %u by %g (tol %g)", what, v, f, out, tol);
+        }
+    }
+}
+/* every vertex of P on the inner side of every plane of Q (P inside the convex Q) */
+static void check_inside(swr_ctx* c, const swarp_polyhedron* P, const swarp_polyhedron* Q, double tol, const char* what) {
+    for (uint32_t f = 0; f < Q->face_count && f < SWARP_POLY_MAX_FACES; ++f)
+        for (uint32_t v = 0; v < P->vertex_count && v < SWARP_POLY_MAX_VERTICES; ++v) {
+            double out = plane_at(&Q->planes[f], P->vertices[v]);
+            if (out > tol && out <= 1e3 * tol && !c->known_as) { /* KNOWN: the faces' 1e-8..1e-6-relative band (check_poly) */
+                swr_known(c, "%s: vertex %u outside plane %u by %g (tol %g)", what, v, f, out, tol);
+                continue;
+            }
+            SWR_CHECK_ACC(c, out <= tol, "%s: vertex %u outside plane %u by %g (tol %g)", what, v, f, out, tol);
+        }
+}
+static void check_in_box(swr_ctx* c, const swarp_polyhedron* P, const swarp_aabb* b, double tol, const char* what) {
+    for (uint32_t v = 0; v < P->vertex_count && v < SWARP_POLY_MAX_VERTICES; ++v) {
+        swarp_vec3 p = P->vertices[v];
+        SWR_CHECK_ACC(c, p.x >= b->min.x - tol && p.x <= b->max.x + tol && p.y >= b->min.y - tol && p.y <= b->max.y + tol &&
+                             p.z >= b->min.z - tol && p.z <= b->max.z + tol,
+                      "%s: vertex %u (%.17g %.17g %.17g) outside the box", what, v, p.x, p.y, p.z);
+    }
+}
+/* view depth (p - eye) . dir/|dir|, in long double */
+static double depth_of(const swarp_camera* cam, swarp_vec3 p) {
+    long double dl = sqrtl((long double)cam->dir.x * cam->dir.x + (long double)cam->dir.y * cam->dir.y +
+                           (long double)cam->dir.z * cam->dir.z);
+    return (double)((((long double)p.x - cam->eye.x) * cam->dir.x + ((long double)p.y - cam->eye.y) * cam->dir.y +
+                     ((long double)p.z - cam->eye.z) * cam->dir.z) / dl);
+}
+static void check_depths(swr_ctx* c, const swarp_polyhedron* P, const swarp_camera* cam, double near, double far,
+                         double tol, const char* what) {
+    for (uint32_t v = 0; v < P->vertex_count && v < SWARP_POLY_MAX_VERTICES; ++v) {
+        double z = depth_of(cam, P->vertices[v]);
+        SWR_CHECK_ACC(c, z >= near - tol && z <= far + tol, "%s: vertex %u at view depth %.17g outside [%.17g, %.17g]", what,
+                      v, z, near, far);
+    }
+}
+/* A polyhedron built by the library from a scene (H, the frustum or the
+ * box), for the functions that take one; rarely a corrupted one (a caller's
+ * bad struct: counts above the maxima, an index past the vertices, a NaN
+ * vertex) with the status it calls for. */
+static void gen_poly(swr_ctx* c, const scene_args* s, swarp_polyhedron* P) {
+    memset(P, 0, sizeof *P);
+    uint8_t k = swr_u8(c) % 4;
+    swarp_status st = SWARP_ERR_INVALID_ARGUMENT;
+    if (k == 0 && swarp_body_h) st = swarp_body_h(&s->cam, s->cam.near, s->cam.far, &s->box, P);
+    if (k == 1 && swarp_poly_from_camera) st = swarp_poly_from_camera(&s->cam, P);
+    if (swarp_status_is_error(st) && swarp_poly_from_aabb) st = swarp_poly_from_aabb(&s->box, P);
+    if (swarp_status_is_error(st)) { /* a unit box */
+        swarp_aabb b = {{0, 0, 0}, {1, 1, 1}};
+        if (swarp_poly_from_aabb) swarp_poly_from_aabb(&b, P);
+    }
+    if (swr_one_in(c, 48)) { /* corrupt */
+        uint8_t how = swr_u8(c) % 4;
+        if (how == 0) P->vertex_count = SWARP_POLY_MAX_VERTICES + 1 + swr_u8(c);
+        if (how == 1) P->face_count = SWARP_POLY_MAX_FACES + 1;
+        if (how == 2 && P->face_count) P->face_vertices[0][0] = (uint8_t)(P->vertex_count + swr_u8(c) % 8);
+        if (how == 3 && P->face_count) P->face_vertex_count[0] = SWARP_POLY_MAX_FACE_VERTICES + 1;
+        if (how <= 1 || P->face_count) swr_expect(c, SWARP_ERR_INVALID_ARGUMENT);
+    } else if (swr_one_in(c, 48) && P->vertex_count) {
+        P->vertices[swr_u8(c) % P->vertex_count].y = NAN;
+        swr_expect(c, SWARP_ERR_NON_FINITE);
+    }
+}
+
+static void e_poly_camera_common(swr_ctx* c, int range) {
+    scene_args s;
+    gen_setup_scene(c, &s);
+    double near = s.cam.near, far = s.cam.far;
+    if (range) {
+        static const double brk[] = {1e-6, 0.0};
+        near = swr_num(c, 1e-6, 10, brk, 2);
+        far = swr_one_in(c, 16) ? near : near * swr_num(c, 1.01, 1e7, NULL, 0);
+        FIN(c, near);
+        FIN(c, far);
+        if (fin(near) && fin(far) && !(near > 0 && far > near)) swr_expect(c, SWARP_ERR_NEAR_FAR);
+    }
+    const swarp_camera* pc = swr_in(c, &s.cam);
+    swarp_polyhedron P;
+    swarp_polyhedron* po = swr_out(c, &P, sizeof P, SWR_REQ);
+    expect_parts(c, &s, !range, X_CAM);
+    swr_domain(c, SWARP_ERR_DEGENERATE); /* up all but parallel to dir */
+    scene_cond(c, &s, near, far);
+    swr_args(c, "eye (%.17g %.17g %.17g) dir (%.17g %.17g %.17g) up (%g %g %g) fovy %.17g aspect %.17g near %.17g far %.17g",
+             s.cam.eye.x, s.cam.eye.y, s.cam.eye.z, s.cam.dir.x, s.cam.dir.y, s.cam.dir.z, s.cam.up.x, s.cam.up.y, s.cam.up.z,
+             s.cam.fovy, s.cam.aspect, near, far);
+    swarp_status st = range ? SWR_CALL(c, swarp_poly_from_camera_range(pc, near, far, po))
+                            : SWR_CALL(c, swarp_poly_from_camera(pc, po));
+    if (!swr_done(c, st)) return;
+    /* the frustum's own scale: a huge aspect (1e76 is valid) makes it wide */
+    double tol = gtol(fmax(vmax(s.cam.eye) + far, poly_scale(&P))) + 64 * DBL_EPSILON * c->cond * near;
+    check_poly(c, &P, "V", tol);
+    /* 8 corners; fewer where near-coincident ones merge (SWARP_POLY_EPS_REL) */
+    SWR_CHECK(c, P.vertex_count >= 1 && P.vertex_count <= 8, "frustum with %u vertices", P.vertex_count);
+    check_depths(c, &P, &s.cam, near, far, tol, "V");
+    /* the point on the view axis halfway through is inside V */
+    swarp_vec3 d = unit(s.cam.dir);
+    double zm = 0.5 * (near + far);
+    swarp_vec3 mid = v3(s.cam.eye.x + zm * d.x, s.cam.eye.y + zm * d.y, s.cam.eye.z + zm * d.z);
+    for (uint32_t f = 0; f < P.face_count && f < SWARP_POLY_MAX_FACES; ++f)
+        SWR_CHECK_ACC(c, plane_at(&P.planes[f], mid) <= tol, "the view axis at depth %g is outside face %u", zm, f);
+}
+static void e_poly_from_camera_range(swr_ctx* c) {
+    SKIP_IF_MISSING(c, swarp_poly_from_camera_range);
+    e_poly_camera_common(c, 1);
+}
+static void e_poly_from_camera(swr_ctx* c) {
+    SKIP_IF_MISSING(c, swarp_poly_from_camera);
+    e_poly_camera_common(c, 0);
+}
+
+static void e_poly_from_inverse_matrix(swr_ctx* c) {
+    SKIP_IF_MISSING(c, swarp_poly_from_inverse_matrix);
+    swarp_mat4 M;
+    static const double brk[] = {0.0, 1.0, -1.0};
+    double off = swr_offset(c);
+    for (int i = 0; i < 16; ++i) M.m[i] = swr_num_in(c, -2, 2, brk, 3) + (i % 5 == 0 ? 3.0 : 0.0);
+    uint8_t kind = swr_u8(c) % 4;
+    if (kind == 0) M.m[3] = M.m[7] = M.m[11] = 0, M.m[15] = 1; /* affine (an ortho inverse) */
+    if (kind == 1) M.m[3] = M.m[7] = 0, M.m[11] = swr_num_in(c, -0.5, 0.5, brk, 1), M.m[15] = 1; /* projective */
+    M.m[12] += off, M.m[14] += off;
+    if (swr_one_in(c, 16)) M.m[swr_u8(c) % 16] = swr_num(c, -10, 10, brk, 3);
+    int32_t dr = swr_enum(c, 3);
+    const swarp_mat4* pm = swr_in(c, &M);
+    swarp_polyhedron P;
+    swarp_polyhedron* po = swr_out(c, &P, sizeof P, SWR_REQ);
+    int finite = 1;
+    for (int i = 0; i < 16; ++i) finite &= fin(M.m[i]);
+    if (!finite) swr_expect(c, SWARP_ERR_NON_FINITE);
+    if (dr < 0 || dr > 2) swr_expect(c, SWARP_ERR_UNKNOWN_ENUM);
+    /* the 8 corners, independently (long double) */
+    swarp_vec3 corner[8];
+    double z0 = dr == 2 ? 0.0 : -1.0, scale = 0;
+    int pos = 0, neg = 0, mixed;
+    double wmin = INFINITY, wmax = 0;
+    for (int k = 0; k < 8; ++k) {
+        long double x = (k & 1) ? 1 : -1, y = (k & 2) ? 1 : -1, z = (k & 4) ? 1 : z0, q[4];
+        for (int r = 0; r < 4; ++r) q[r] = M.m[r] * x + M.m[4 + r] * y + M.m[8 + r] * z + M.m[12 + r];
+        pos += q[3] > 0, neg += q[3] < 0; /* all corners on one side of w = 0: a finite frustum */
+        wmin = fmin(wmin, fabsl(q[3])), wmax = fmax(wmax, fabsl(q[3]));
+        corner[k] = v3((double)(q[0] / q[3]), (double)(q[1] / q[3]), (double)(q[2] / q[3]));
+        scale = fmax(scale, vmax(corner[k]));
+    }
+    mixed = pos != 8 && neg != 8;
+    if (finite && mixed) swr_expect(c, SWARP_ERR_DEGENERATE);
+    swr_args(c, "M = %.17g %.17g %.17g %.17g / %.17g %.17g %.17g %.17g / %.17g %.17g %.17g %.17g / %.17g %.17g %.17g %.17g (columns) dr %d",
+             M.m[0], M.m[1], M.m[2], M.m[3], M.m[4], M.m[5], M.m[6], M.m[7], M.m[8], M.m[9], M.m[10], M.m[11], M.m[12], M.m[13],
+             M.m[14], M.m[15], (int)dr);
+    swr_domain(c, SWARP_ERR_DEGENERATE); /* w = 0 by a hair, singular matrices */
+    swr_domain(c, SWARP_ERR_NON_FINITE); /* a corner overflows */
+    if (!swr_done(c, SWR_CALL(c, swarp_poly_from_inverse_matrix(pm, (swarp_depth_range)dr, po)))) return;
+    /* corners near w = 0 are far away and resolved only to eps (w_max / w_min) */
+    swr_cond(c, wmax / wmin);
+    double tol = gtol(scale) + 64 * DBL_EPSILON * c->cond * scale;
+    check_poly(c, &P, "frustum", tol);
+    SWR_CHECK(c, P.vertex_count <= 8, "%u vertices", P.vertex_count);
+    for (uint32_t v = 0; v < P.vertex_count && v < 8; ++v) { /* each vertex is a corner */
+        double best = INFINITY;
+        for (int k = 0; k < 8; ++k) {
+            swarp_vec3 e = v3(P.vertices[v].x - corner[k].x, P.vertices[v].y - corner[k].y, P.vertices[v].z - corner[k].z);
+            best = fmin(best, vmax(e));
+        }
+        SWR_CHECK_ACC(c, best <= 1e3 * tol, "vertex %u is %g from every corner of the NDC cube's image", v, best);
+    }
+}
+
+/* the plane for a clip: random, through a vertex, through the eye, zero or non-finite */
+static swarp_plane gen_plane(swr_ctx* c, const scene_args* s, const swarp_polyhedron* P) {
+    swarp_vec3 n = unit(v3(swr_num_in(c, -1, 1, NULL, 0), swr_num_in(c, -1, 1, NULL, 0), swr_num_in(c, -1, 1, NULL, 0)));
+    uint8_t k = swr_u8(c) % 8;
+    swarp_vec3 through = s->cam.eye;                                           /* k 0: through the eye */
+    if (k >= 1 && k <= 3 && P->vertex_count && P->vertex_count <= SWARP_POLY_MAX_VERTICES)
+        through = P->vertices[swr_u8(c) % P->vertex_count];                    /* through a vertex */
+    if (k == 4 && P->face_count && P->face_count <= SWARP_POLY_MAX_FACES) {    /* a face's own plane, maybe flipped */
+        swarp_plane q = P->planes[swr_u8(c) % P->face_count];
+        if (swr_one_in(c, 2)) q.a = -q.a, q.b = -q.b, q.c = -q.c, q.d = -q.d;
+        return q;
+    }
+    if (k >= 5) through = v3(s->box.min.x + swr_num_in(c, 0, 1, NULL, 0) * (s->box.max.x - s->box.min.x), s->box.min.y,
+                             s->box.min.z + swr_num_in(c, 0, 1, NULL, 0) * (s->box.max.z - s->box.min.z));
+    double len = swr_num_in(c, 1e-3, 1e3, NULL, 0);
+    swarp_plane q = {n.x * len, n.y * len, n.z * len, -len * dot(n, through)};
+    if (swr_one_in(c, 32)) q.a = q.b = q.c = 0;
+    if (swr_one_in(c, 16)) {
+        double* f[] = {&q.a, &q.b, &q.c, &q.d};
+        *f[swr_u8(c) % 4] = swr_num(c, -1, 1, NULL, 0);
+    }
+    return q;
+}
+
+/* in -> out in place (out may equal in) or into a separate polyhedron;
+ * error => the output untouched (in place: still equal to in) */
+static int clip_call(swr_ctx* c, const swarp_polyhedron* in, swarp_polyhedron* out, int in_place, const swarp_plane* pl,
+                     const swarp_aabb* box, int n_in, int n_x, int n_out) {
+    if (in_place) *out = *in;
+    else swr_fill(out, sizeof *out);
+    const swarp_polyhedron* pin = n_in ? NULL : in_place ? out : in;
+    swarp_polyhedron* po = n_out ? NULL : out;
+    swarp_status st = pl ? SWR_CALL(c, swarp_poly_clip(pin, n_x ? NULL : pl, po))
+                         : SWR_CALL(c, swarp_poly_clip_aabb(pin, n_x ? NULL : box, po));
+    int ok = swr_verdict(c, st, 0);
+    if (swarp_status_is_error(st))
+        SWR_CHECK(c, in_place ? memcmp(out, in, sizeof *in) == 0 : swr_untouched(out, sizeof *out),
+                  "error %s but the output was written%s", swarp_status_name(st), in_place ? " (in place)" : "");
+    return ok;
+}
+
+static void e_poly_clip_common(swr_ctx* c, int with_box) {
+    scene_args s;
+    gen_setup_scene(c, &s);
+    swarp_polyhedron in, out;
+    gen_poly(c, &s, &in);
+    swarp_plane pl = gen_plane(c, &s, &in);
+    swarp_aabb box = s.box;
+    if (with_box) { /* a box around part of it, sometimes flat or a point */
+        double sc = fmax(poly_scale(&in), 1);
+        box.min.x += 0.3 * (box.max.x - box.min.x);
+        if (swr_one_in(c, 4)) box.max.y = box.min.y;
+        if (swr_one_in(c, 8)) box.max = box.min;
+        if (swr_one_in(c, 16)) box.min.z = box.max.z + 1;
+        if (swr_one_in(c, 32)) box.max.x = swr_num(c, -sc, sc, NULL, 0);
+    }
+    int in_place = swr_one_in(c, 6);
+    int n_in = swr_null(c), n_x = swr_null(c), n_out = !in_place && swr_null(c);
+    if (n_in || n_x || n_out) swr_expect(c, SWARP_ERR_NULL_POINTER);
+    if (with_box) {
+        if (!fin3(&box.min) || !fin3(&box.max)) swr_expect(c, SWARP_ERR_NON_FINITE);
+        else if (!(box.min.x <= box.max.x && box.min.y <= box.max.y && box.min.z <= box.max.z))
+            swr_expect(c, SWARP_ERR_BOX_INVERTED);
+    } else {
+        if (!fin(pl.a) || !fin(pl.b) || !fin(pl.c) || !fin(pl.d)) swr_expect(c, SWARP_ERR_NON_FINITE);
+        else if (pl.a == 0 && pl.b == 0 && pl.c == 0) swr_expect(c, SWARP_ERR_ZERO_VECTOR);
+    }
+    swr_domain(c, SWARP_ERR_CAPACITY);
+    swr_args(c, "aspect %g in %u vertices scale %g plane (%.17g %.17g %.17g %.17g) box (%.17g %.17g %.17g)-(%.17g %.17g %.17g) in place %d",
+             s.cam.aspect, in.vertex_count, poly_scale(&in), pl.a, pl.b, pl.c, pl.d, box.min.x, box.min.y, box.min.z, box.max.x,
+             box.max.y, box.max.z, in_place);
+    if (!clip_call(c, &in, &out, in_place, with_box ? NULL : &pl, &box, n_in, n_x, n_out)) return;
+    double sc = fmax(poly_scale(&in), with_box ? box_scale(&box) : fabs(pl.d) / sqrt(pl.a * pl.a + pl.b * pl.b + pl.c * pl.c));
+    double tol = gtol(sc);
+    if (wide(&s.cam)) c->rounding_edge = 1, c->known_as = "clip of a body of a frustum with aspect beyond 1e6 (not a valid input polyhedron)";
+    check_poly(c, &out, "clip", tol);
+    check_inside(c, &out, &in, tol, "clip result in the input");
+    if (with_box) {
+        check_in_box(c, &out, &box, tol, "clip result in the box");
+        return;
+    }
+    double nl = sqrt(pl.a * pl.a + pl.b * pl.b + pl.c * pl.c);
+    int all_in = 1, all_out = in.vertex_count > 0;
+    for (uint32_t v = 0; v < out.vertex_count && v < SWARP_POLY_MAX_VERTICES; ++v)
+        SWR_CHECK_ACC(c, plane_at(&pl, out.vertices[v]) / nl <= tol, "clip: vertex %u on the removed side by %g", v,
+                      plane_at(&pl, out.vertices[v]) / nl);
+    for (uint32_t v = 0; v < in.vertex_count && v < SWARP_POLY_MAX_VERTICES; ++v) {
+        double e = plane_at(&pl, in.vertices[v]) / nl;
+        all_in &= e < -tol;
+        all_out &= e > tol;
+    }
+    if (all_in) SWR_CHECK(c, out.vertex_count == in.vertex_count, "a plane missing the polyhedron changed it (%u -> %u vertices)",
+                          in.vertex_count, out.vertex_count);
+    if (all_out) SWR_CHECK(c, out.vertex_count == 0, "a plane with the polyhedron on its removed side left %u vertices",
+                           out.vertex_count);
+}
+static void e_poly_clip(swr_ctx* c) {
+    SKIP_IF_MISSING(c, swarp_poly_clip);
+    e_poly_clip_common(c, 0);
+}
+static void e_poly_clip_aabb(swr_ctx* c) {
+    SKIP_IF_MISSING(c, swarp_poly_clip_aabb);
+    e_poly_clip_common(c, 1);
+}
+
+
+static void e_body_h(swr_ctx* c) {
+    SKIP_IF_MISSING(c, swarp_body_h);
+    scene_args s;
+    gen_setup_scene(c, &s);
+    double near = s.cam.near, far = swr_one_in(c, 16) ? near : s.cam.far;
+    FIN(c, near);
+    FIN(c, far);
+    if (fin(near) && fin(far) && !(near > 0 && far > near)) swr_expect(c, SWARP_ERR_NEAR_FAR);
+    const swarp_camera* pc = swr_in(c, &s.cam);
+    const swarp_aabb* pb = swr_in(c, &s.box);
+    swarp_polyhedron H;
+    swarp_polyhedron* po = swr_out(c, &H, sizeof H, SWR_REQ);
+    expect_parts(c, &s, 0, X_CAM | X_BOX | X_GEOM);
+    scene_cond(c, &s, near, far);
+    swr_args(c, "eye (%.17g %.17g %.17g) dir (%.17g %.17g %.17g) fovy %.17g aspect %.17g near %.17g far %.17g box (%.17g %.17g %.17g)-(%.17g %.17g %.17g)",
+             s.cam.eye.x, s.cam.eye.y, s.cam.eye.z, s.cam.dir.x, s.cam.dir.y, s.cam.dir.z, s.cam.fovy, s.cam.aspect, near, far,
+             s.box.min.x, s.box.min.y, s.box.min.z, s.box.max.x, s.box.max.y, s.box.max.z);
+    if (!swr_done(c, SWR_CALL(c, swarp_body_h(pc, near, far, pb, po)))) return;
+    double tol = gtol(fmax(box_scale(&s.box), vmax(s.cam.eye) + far)) + 64 * DBL_EPSILON * c->cond * near;
+    if (wide(&s.cam)) c->rounding_edge = 1, c->known_as = "H of a frustum with aspect beyond 1e6";
+    check_poly(c, &H, "H", tol);
+    SWR_CHECK(c, H.vertex_count > 0, "H empty with %s", swarp_status_name(c->status));
+    check_in_box(c, &H, &s.box, tol, "H in S");
+    check_depths(c, &H, &s.cam, near, far, tol, "H in V");
+}
+
+/* a directional light with a component below 1e-12 of its length (but not
+ * zero): almost parallel to a face of the box */
+static int grazing(const swarp_light* L) {
+    if (L->type == SWARP_LIGHT_POINT) return 0;
+    const double d[3] = {L->direction.x, L->direction.y, L->direction.z};
+    double m = vmax(L->direction);
+    for (int k = 0; k < 3; ++k)
+        if (d[k] != 0 && fabs(d[k]) < 1e-12 * m) return 1;
+    return 0;
+}
+
+/* a directional light with an exactly zero component: parallel to two faces of the box */
+static int axis_parallel(const swarp_light* L) {
+    return L->type != SWARP_LIGHT_POINT && (L->direction.x == 0 || L->direction.y == 0 || L->direction.z == 0);
+}
+/* a point light within 1e-4 (relative to the box) of one of its face planes */
+static int near_boundary(const scene_args* s) {
+    if (s->light.type != SWARP_LIGHT_POINT) return 0;
+    const swarp_vec3 *p = &s->light.position, *a = &s->box.min, *b = &s->box.max;
+    double e = 1e-4 * fmax(fmax(b->x - a->x, b->y - a->y), fmax(b->z - a->z, 1e-300));
+    return fabs(p->x - a->x) < e || fabs(p->x - b->x) < e || fabs(p->y - a->y) < e || fabs(p->y - b->y) < e ||
+           fabs(p->z - a->z) < e || fabs(p->z - b->z) < e;
+}
+
+static void e_body_from_h(swr_ctx* c) {
+    SKIP_IF_MISSING(c, swarp_body_from_h);
+    scene_args s;
+    gen_setup_scene(c, &s);
+    swarp_polyhedron H, B;
+    gen_poly(c, &s, &H);
+    const swarp_polyhedron* ph = swr_in(c, &H);
+    const swarp_light* pl = swr_in(c, &s.light);
+    const swarp_aabb* pb = swr_in(c, &s.box);
+    swarp_polyhedron* po = swr_out(c, &B, sizeof B, SWR_REQ);
+    expect_parts(c, &s, 0, X_LIGHT | X_BOX | X_GEOM);
+    swr_domain(c, SWARP_ERR_CAPACITY);
+    swr_args(c, "aspect %g H %u vertices, %u faces, light %d dir (%g %g %g) pos (%.17g %.17g %.17g) cone %g box (%.17g %.17g %.17g)-(%.17g %.17g %.17g)",
+             s.cam.aspect, H.vertex_count, H.face_count, (int)s.light.type, s.light.direction.x, s.light.direction.y, s.light.direction.z,
+             s.light.position.x, s.light.position.y, s.light.position.z, s.light.cone_angle, s.box.min.x, s.box.min.y,
+             s.box.min.z, s.box.max.x, s.box.max.y, s.box.max.z);
+    if (!swr_done(c, SWR_CALL(c, swarp_body_from_h(ph, pl, pb, po)))) return;
+    double tol = gtol(fmax(box_scale(&s.box), fmax(poly_scale(&H), vmax(s.light.position))));
+    if (grazing(&s.light)) c->known_as = "B of a grazing directional light";
+    else if (axis_parallel(&s.light)) c->known_as = "B of a directional light parallel to a box face (a zero component)";
+    else if (wide(&s.cam)) c->rounding_edge = 1, c->known_as = "B of a frustum with aspect beyond 1e6";
+    else if (near_boundary(&s)) c->known_as = "B of a point light within 1e-4 of the box's boundary";
+    else if (box_scale(&s.box) >= 1e6) c->known_as = "B at coordinates of 1e6 and more";
+    else if ((int)s.light.type == 2) c->known_as = "B of a point light: faces planar to 1e-2 only (full-size sweep)";
+    check_poly(c, &B, "B", tol);
+    check_in_box(c, &B, &s.box, tol, "B in S");
+    /* a directional or omni light: H (clipped to S) lies inside B */
+    int t = (int)s.light.type;
+    if (t != 2 || s.light.cone_angle == 0) {
+        swarp_polyhedron HS;
+        if (swarp_poly_clip_aabb && swarp_poly_clip_aabb(&H, &s.box, &HS) == SWARP_OK)
+            check_inside(c, &HS, &B, tol, "H inside B");
+    }
+}
+
+static void e_body_receivers(swr_ctx* c) {
+    SKIP_IF_MISSING(c, swarp_body_receivers);
+    scene_args s;
+    gen_setup_scene(c, &s);
+    swarp_polyhedron H, R;
+    gen_poly(c, &s, &H);
+    const swarp_polyhedron* ph = swr_in(c, &H);
+    const swarp_light* pl = swr_in(c, &s.light);
+    swarp_polyhedron* po = swr_out(c, &R, sizeof R, SWR_REQ);
+    expect_parts(c, &s, 0, X_LIGHT | X_GEOM);
+    swr_domain(c, SWARP_ERR_CAPACITY);
+    if (!swr_done(c, SWR_CALL(c, swarp_body_receivers(ph, pl, po)))) return;
+    double tol = gtol(fmax(poly_scale(&H), vmax(s.light.position)));
+    if (wide(&s.cam)) c->rounding_edge = 1, c->known_as = "receivers of a frustum with aspect beyond 1e6";
+    check_poly(c, &R, "receivers", tol);
+    check_inside(c, &R, &H, tol, "receivers inside H");
+    int t = (int)s.light.type;
+    if (t != 2 || s.light.cone_angle == 0)
+        SWR_CHECK(c, R.vertex_count == H.vertex_count, "no cone but %u of %u vertices of H", R.vertex_count, H.vertex_count);
+}
+
+static void e_body_adjusted_range(swr_ctx* c) {
+    SKIP_IF_MISSING(c, swarp_body_adjusted_range);
+    scene_args s;
+    gen_setup_scene(c, &s);
+    const swarp_camera* pc = swr_in(c, &s.cam);
+    const swarp_aabb* pb = swr_in(c, &s.box);
+    double n, f;
+    double* pn = swr_out(c, &n, sizeof n, SWR_REQ);
+    double* pf = swr_out(c, &f, sizeof f, SWR_REQ);
+    expect_parts(c, &s, 1, X_CAM | X_BOX | X_GEOM);
+    scene_cond(c, &s, s.cam.near, s.cam.far);
+    swr_args(c, "eye (%.17g %.17g %.17g) dir (%.17g %.17g %.17g) up (%g %g %g) fovy %.17g aspect %.17g near %.17g far %.17g box (%.17g %.17g %.17g)-(%.17g %.17g %.17g)",
+             s.cam.eye.x, s.cam.eye.y, s.cam.eye.z, s.cam.dir.x, s.cam.dir.y, s.cam.dir.z, s.cam.up.x, s.cam.up.y, s.cam.up.z, s.cam.fovy,
+             s.cam.aspect, s.cam.near, s.cam.far, s.box.min.x, s.box.min.y, s.box.min.z, s.box.max.x, s.box.max.y, s.box.max.z);
+    if (!swr_done(c, SWR_CALL(c, swarp_body_adjusted_range(pc, pb, pn, pf)))) return;
+    swr_rec(c, "near", n);
+    swr_rec(c, "far", f);
+    /* inside the camera's range and inside the box corners' depth range */
+    double zlo = INFINITY, zhi = -INFINITY;
+    for (int k = 0; k < 8; ++k) {
+        swarp_vec3 p = v3((k & 1) ? s.box.max.x : s.box.min.x, (k & 2) ? s.box.max.y : s.box.min.y,
+                          (k & 4) ? s.box.max.z : s.box.min.z);
+        double z = depth_of(&s.cam, p);
+        zlo = fmin(zlo, z), zhi = fmax(zhi, z);
+    }
+    double tol = gtol(fmax(box_scale(&s.box), vmax(s.cam.eye)) + s.cam.far);
+    if (wide(&s.cam)) c->rounding_edge = 1, c->known_as = "adjusted range of a frustum with aspect beyond 1e6";
+    if (n > f && n - f <= 1e-9 * (vmax(s.cam.eye) + s.cam.far)) /* KNOWN (docs/quality.md): a sliver at the box's face */
+        swr_known(c, "adjusted range [%.17g, %.17g]: near above far by %g", n, f, n - f);
+    else
+        SWR_CHECK(c, n > 0 && n <= f, "adjusted range [%.17g, %.17g]", n, f);
+    SWR_CHECK_ACC(c, n >= s.cam.near - tol && f <= s.cam.far + tol, "adjusted [%.17g, %.17g] outside the camera's [%.17g, %.17g]",
+                  n, f, s.cam.near, s.cam.far);
+    SWR_CHECK_ACC(c, n >= zlo - tol && f <= zhi + tol, "adjusted [%.17g, %.17g] outside the box's depths [%.17g, %.17g]", n, f,
+                  zlo, zhi);
+}
+
+/* row r of the upper 3x3 of a column-major matrix */
+static swarp_vec3 row3(const swarp_mat4* m, int r) { return v3(m->m[r], m->m[4 + r], m->m[8 + r]); }
+
+static void e_focus_light_view(swr_ctx* c) {
+    SKIP_IF_MISSING(c, swarp_focus_light_view);
+    scene_args s;
+    gen_setup_scene(c, &s);
+    swarp_vec3 axis = unit(v3(swr_num(c, -1, 1, NULL, 0), swr_num(c, -1, 1, NULL, 0), swr_num(c, -1, 1, NULL, 0)));
+    if (swr_one_in(c, 32)) axis = v3(0, 0, 0);
+    int n_axis = swr_one_in(c, 2);
+    const swarp_camera* pc = swr_in(c, &s.cam);
+    const swarp_light* pl = swr_in(c, &s.light);
+    swarp_mat4 V;
+    swarp_mat4* po = swr_out(c, &V, sizeof V, SWR_REQ);
+    expect_parts(c, &s, 0, X_CAM | X_LIGHT);
+    int t = (int)s.light.type, point = t == 2;
+    if (point && !n_axis) {
+        if (!fin3(&axis)) swr_expect(c, SWARP_ERR_NON_FINITE);
+        else if (axis.x == 0 && axis.y == 0 && axis.z == 0) swr_expect(c, SWARP_ERR_ZERO_VECTOR);
+    }
+    swr_domain(c, SWARP_ERR_ZERO_VECTOR); /* omni light at the eye */
+    swr_domain(c, SWARP_ERR_DEGENERATE);
+    swr_domain(c, SWARP_ERR_NEAR_FAR);
+    if (!swr_done(c, SWR_CALL(c, swarp_focus_light_view(pc, pl, n_axis ? NULL : &axis, po)))) return;
+    for (int i = 0; i < 16; ++i) swr_rec(c, "view", V.m[i]);
+    /* a rigid motion: orthonormal rows, det +1, last row 0 0 0 1 */
+    swarp_vec3 r0 = row3(&V, 0), r1 = row3(&V, 1), r2 = row3(&V, 2);
+    for (int a = 0; a < 3; ++a)
+        for (int b = 0; b < 3; ++b) {
+            swarp_vec3 ra = row3(&V, a), rb = row3(&V, b);
+            SWR_CHECK(c, fabs(dot(ra, rb) - (a == b)) <= 1e-12, "rows %d, %d: dot %.17g", a, b, dot(ra, rb));
+        }
+    SWR_CHECK(c, dot(cross(r0, r1), r2) > 0, "left-handed light view");
+    SWR_CHECK(c, V.m[3] == 0 && V.m[7] == 0 && V.m[11] == 0 && V.m[15] == 1, "last row not 0 0 0 1");
+    /* it looks along the light (down -z) from its origin */
+    swarp_vec3 look = point ? (n_axis ? (s.light.cone_angle > 0 ? s.light.direction
+                                                               : v3(s.cam.eye.x - s.light.position.x, s.cam.eye.y - s.light.position.y,
+                                                                    s.cam.eye.z - s.light.position.z))
+                                      : axis)
+                            : s.light.direction;
+    swarp_vec3 o = point ? s.light.position : s.cam.eye;
+    look = unit(look);
+    SWR_CHECK_ACC(c, fabs(dot(r2, look) + 1) <= 1e-9, "the light view's -z is not the light axis (dot %.17g)", -dot(r2, look));
+    swarp_vec4 q = xf(&V, o);
+    SWR_CHECK_ACC(c, vmax(v3(q.x, q.y, q.z)) <= gtol(vmax(o)) + 1e-12, "the origin maps to (%g %g %g)", q.x, q.y, q.z);
+    /* light-space alignment [RHS] §3.2.1: away from the blend zone the up
+     * vector is the view direction projected on the plane normal to the axis */
+    swarp_vec3 vd = unit(s.cam.dir);
+    double cg = dot(vd, look);
+    swarp_vec3 vp = v3(vd.x - cg * look.x, vd.y - cg * look.y, vd.z - cg * look.z);
+    if (sqrt(dot(vp, vp)) > 0.2) SWR_CHECK_ACC(c, dot(unit(vp), r1) >= 1 - 1e-9, "up is not the projected view direction (dot %.17g)",
+                                          dot(unit(vp), r1));
+}
+
+static void e_focus_fit(swr_ctx* c) {
+    SKIP_IF_MISSING(c, swarp_focus_fit);
+    swarp_mat4 m;
+    memset(&m, 0, sizeof m);
+    double sx = swr_num_in(c, 1e-3, 1e3, NULL, 0), sy = swr_num_in(c, 1e-3, 1e3, NULL, 0);
+    m.m[0] = sx, m.m[5] = sy, m.m[10] = 1, m.m[15] = 1;
+    if (swr_one_in(c, 2)) m.m[11] = -1, m.m[15] = 0; /* perspective: w = -z */
+    m.m[12] = swr_offset(c);
+    m.m[1] = swr_num_in(c, -1, 1, NULL, 0); /* a shear */
+    size_t n = swr_one_in(c, 16) ? 0 : 1 + swr_u8(c) % 16, nz = swr_u8(c) % 8;
+    swarp_vec3 pts[16], zp[8];
+    double off = swr_offset(c);
+    swarp_vec3 ctr = v3(off + swr_num_in(c, -10, 10, NULL, 0), swr_num_in(c, -10, 10, NULL, 0), -swr_num_in(c, 1e-3, 1e3, NULL, 0));
+    double ext = swr_num_in(c, 0, 10, NULL, 0) * (swr_one_in(c, 8) ? 0 : 1);
+    for (size_t i = 0; i < 16; ++i)
+        pts[i] = v3(ctr.x + ext * swr_num_in(c, -1, 1, NULL, 0), ctr.y + ext * swr_num_in(c, -1, 1, NULL, 0),
+                    ctr.z + (swr_one_in(c, 4) ? 0 : fmin(ext, -ctr.z / 2) * swr_num_in(c, -1, 1, NULL, 0)));
+    for (size_t i = 0; i < 8; ++i) zp[i] = pts[swr_u8(c) % 16], zp[i].z *= swr_num_in(c, 0.5, 2, NULL, 0);
+    if (swr_one_in(c, 16)) pts[swr_u8(c) % 16].x = swr_num(c, -1, 1, NULL, 0);
+    if (swr_one_in(c, 16)) m.m[swr_u8(c) % 16] = swr_num(c, -1, 1, NULL, 0);
+    int32_t dr = swr_enum(c, 3);
+    int n_z = swr_one_in(c, 2);
+    if (n_z) nz = 0;
+    const swarp_mat4* pm = swr_in(c, &m);
+    const swarp_vec3* pp = swr_in(c, pts);
+    swarp_mat4 A;
+    swarp_mat4* po = swr_out(c, &A, sizeof A, SWR_REQ);
+    int finite = 1, behind = 0;
+    for (int i = 0; i < 16; ++i) finite &= fin(m.m[i]);
+    for (size_t i = 0; i < n + nz; ++i) {
+        const swarp_vec3* p = i < n ? &pts[i] : &zp[i - n];
+        finite &= fin3(p);
+        if (fin3(p) && !(xf(&m, *p).w > 0)) behind = 1;
+    }
+    if (!finite) swr_expect(c, SWARP_ERR_NON_FINITE);
+    if (dr < 0 || dr > 2) swr_expect(c, SWARP_ERR_UNKNOWN_ENUM);
+    /* count 0, or z_points with z_count 0: SWARP_ERR_INVALID_ARGUMENT (not
+     * in the header's @return list: a documentation finding) */
+    if (n == 0 || (!n_z && nz == 0)) swr_expect(c, SWARP_ERR_INVALID_ARGUMENT), swr_domain(c, SWARP_ERR_NULL_POINTER);
+    if (finite && behind) swr_expect(c, SWARP_ERR_DEGENERATE);
+    swr_domain(c, SWARP_ERR_DEGENERATE), swr_domain(c, SWARP_ERR_NON_FINITE);
+    if (!swr_done(c, SWR_CALL(c, swarp_focus_fit(pm, pp, n, n_z ? NULL : zp, nz, (swarp_depth_range)dr, po)))) return;
+    for (int i = 0; i < 16; ++i) swr_rec(c, "A_fit", A.m[i]);
+    /* every point maps into the unit square (and depth range), the extremes onto its edges */
+    double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY}, cmax = 0, emax[3] = {0, 0, 0};
+    double ulo[3] = {INFINITY, INFINITY, INFINITY}, uhi[3] = {-INFINITY, -INFINITY, -INFINITY};
+    double zlo = dr == 2 ? 0 : -1;
+    for (size_t i = 0; i < n + (n_z ? n : nz); ++i) {
+        int is_z = i >= n;
+        const swarp_vec3* p = !is_z ? &pts[i] : n_z ? &pts[i - n] : &zp[i - n];
+        swarp_vec4 q = xf(&m, *p);
+        swarp_vec3 u = v3(q.x / q.w, q.y / q.w, q.z / q.w);
+        cmax = fmax(cmax, vmax(u));
+        swarp_vec4 a = xf(&A, u);
+        double r[3] = {a.x / a.w, a.y / a.w, a.z / a.w};
+        for (int k = is_z ? 2 : 0; k < (is_z ? 3 : 2); ++k) lo[k] = fmin(lo[k], r[k]), hi[k] = fmax(hi[k], r[k]);
+        const double uk[3] = {u.x, u.y, u.z};
+        for (int k = 0; k < 3; ++k) emax[k] = fmax(emax[k], fabs(uk[k])), ulo[k] = fmin(ulo[k], uk[k]), uhi[k] = fmax(uhi[k], uk[k]);
+    }
+    /* the fit's translation is -(lo + hi)/(hi - lo): coordinates of magnitude
+     * X over an extent E are resolved to eps X/E */
+    for (int k = 0; k < 3; ++k) {
+        if (uhi[k] > ulo[k]) swr_cond(c, emax[k] / (uhi[k] - ulo[k]));
+        /* an extent of a few ulps: zero (width 1, FLAT_EXTENT) or not is up to the rounding */
+        if (uhi[k] - ulo[k] <= 1024 * DBL_EPSILON * emax[k]) c->rounding_edge = 1;
+    }
+    for (int k = 0; k < 3; ++k) {
+        double w0 = k == 2 ? zlo : -1;
+        double tol = 1e-9 + 64 * DBL_EPSILON * emax[k] * fmax(fabs(A.m[k * 5]), 1);
+        SWR_CHECK_ACC(c, lo[k] >= w0 - tol && hi[k] <= 1 + tol, "axis %d: points map to [%.17g, %.17g]", k, lo[k], hi[k]);
+        if (hi[k] - lo[k] > 1e-6 && c->status == SWARP_OK)
+            SWR_CHECK_ACC(c, fabs(lo[k] - w0) <= tol && fabs(hi[k] - 1) <= tol, "axis %d: the fit [%.17g, %.17g] is not tight", k,
+                          lo[k], hi[k]);
+    }
+    (void)cmax;
+}
+
+static void e_warp_lispsm(swr_ctx* c) {
+    SKIP_IF_MISSING(c, swarp_warp_lispsm);
+    scene_args s;
+    gen_setup_scene(c, &s);
+    swarp_mat4 L;
+    swarp_vec3 pts[SWARP_BODY_MAX_POINTS];
+    size_t n = 0;
+    if (!swarp_focus_light_view || swarp_status_is_error(swarp_focus_light_view(&s.cam, &s.light, NULL, &L)) ||
+        !swarp_body_points ||
+        swarp_status_is_error(swarp_body_points(&s.cam, s.cam.near, s.cam.far, &s.light, &s.box, pts, SWARP_BODY_MAX_POINTS, &n))) {
+        /* a plain overhead light and a few points in front of the camera */
+        s.cam = (swarp_camera){{0, 5, 0}, {0, 0, -1}, {0, 1, 0}, 1.0, 1.5, 1, 100, {0, 0, 0, 0}};
+        L = (swarp_mat4){{1, 0, 0, 0, 0, 0, -1, 0, 0, 1, 0, 0, 0, 0, 5, 1}}; /* looks down -y */
+        n = 1 + swr_u8(c) % 8;
+        for (size_t i = 0; i < n; ++i) pts[i] = v3(swr_num_in(c, -50, 50, NULL, 0), swr_num_in(c, 0, 5, NULL, 0), -swr_num_in(c, 1, 100, NULL, 0));
+    }
+    double near = s.cam.near, far = s.cam.far;
+    if (swr_one_in(c, 16)) far = swr_one_in(c, 2) ? near : NAN;
+    if (swr_one_in(c, 32)) n = 0;
+    if (swr_one_in(c, 32) && n) pts[swr_u8(c) % n].z = swr_num(c, -1, 1, NULL, 0);
+    swarp_warp_options o;
+    memset(&o, 0, sizeof o);
+    o.param = (swarp_warp_param)swr_enum(c, 6);
+    o.center = (swarp_warp_center)swr_enum(c, 3);
+    static const double brk_u[] = {0.0, INFINITY, 1e-9};
+    o.n_user = swr_num(c, 1e-3, 1e3, brk_u, 3);
+    static const double brk01[] = {0.0, 0.5, 1.0};
+    o.pseudo_near = swr_num(c, 0, 0.6, brk01, 3);
+    o.pseudo_far = swr_num(c, 0, 0.6, brk01, 3);
+    o._reserved[swr_u8(c) % 4] = swr_reserved(c);
+    int use_o = !swr_one_in(c, 4), use_near = swr_one_in(c, 3);
+    swarp_vec3 nearest = n ? pts[0] : s.cam.eye;
+    const swarp_mat4* pL = swr_in(c, &L);
+    const swarp_camera* pc = swr_in(c, &s.cam);
+    const swarp_vec3* pp = swr_in(c, pts);
+    swarp_mat4 P;
+    swarp_warp_info info;
+    swarp_mat4* pP = swr_out(c, &P, sizeof P, SWR_REQ);
+    swarp_warp_info* pi = swr_out(c, &info, sizeof info, SWR_OPT);
+    expect_parts(c, &s, 0, X_CAM);
+    FIN(c, near);
+    FIN(c, far);
+    if (fin(near) && fin(far) && !(near > 0 && far > near)) swr_expect(c, SWARP_ERR_NEAR_FAR);
+    for (size_t i = 0; i < n; ++i) FIN(c, pts[i].z);
+    if (n == 0) swr_expect(c, SWARP_ERR_INVALID_ARGUMENT), swr_domain(c, SWARP_ERR_NULL_POINTER);
+    if (use_o) {
+        if ((int)o.param < 0 || (int)o.param > 5 || (int)o.center < 0 || (int)o.center > 2) swr_expect(c, SWARP_ERR_UNKNOWN_ENUM);
+        for (int i = 0; i < 4; ++i)
+            if (o._reserved[i]) swr_expect(c, SWARP_ERR_RESERVED_NONZERO);
+        if ((int)o.param == 5 && !(o.n_user > 0)) swr_expect(c, SWARP_ERR_OUT_OF_RANGE), swr_domain(c, SWARP_ERR_NON_FINITE);
+        if ((int)o.param == 4 && !(o.pseudo_near >= 0 && o.pseudo_far >= 0 && o.pseudo_near + o.pseudo_far < 1))
+            swr_expect(c, SWARP_ERR_OUT_OF_RANGE), swr_domain(c, SWARP_ERR_NON_FINITE);
+        swr_domain(c, SWARP_ERR_OUT_OF_RANGE), swr_domain(c, SWARP_ERR_NON_FINITE);
+    }
+    swr_domain(c, SWARP_ERR_DEGENERATE);
+    swr_domain(c, SWARP_ERR_OUT_OF_RANGE); /* n_opt of a degenerate body */
+    if (s.degenerate_light) c->rounding_edge = 1;
+    scene_cond(c, &s, near, far);
+    if (!swr_done(c, SWR_CALL(c, swarp_warp_lispsm(pL, pc, near, far, pp, n, use_near ? &nearest : NULL, use_o ? &o : NULL, pP,
+                                                  pi))))
+        return;
+    for (int i = 0; i < 16; ++i) swr_rec(c, "P", P.m[i]);
+    if (pi) {
+        swr_rec_inf(c, "n_light", info.n_light);
+        swr_rec_inf(c, "n_eye", info.n_eye);
+        swr_rec(c, "d", info.d);
+        swr_rec(c, "gamma", info.gamma);
+        SWR_CHECK(c, info.n_light > 0 && info.n_eye > 0 && info.d >= 0, "n %g n' %g d %g", info.n_light, info.n_eye, info.d);
+        SWR_CHECK(c, info.gamma >= 0 && info.gamma <= PI_, "gamma %g", info.gamma);
+        /* gamma = angle between the view direction and the light view's axis (-z) */
+        double cg = dot(unit(s.cam.dir), v3(-L.m[2], -L.m[6], -L.m[10]));
+        SWR_CHECK_ACC(c, fabs(cos(info.gamma) - cg) <= 1e-9, "cos gamma %.17g, view . light axis %.17g", cos(info.gamma), cg);
+    }
+    /* the warp is a perspective with its centre outside B: w = 1 + (y - y_min)/n >= 1 on B */
+    for (size_t i = 0; i < n; ++i) {
+        swarp_vec4 l = xf(&L, pts[i]);
+        swarp_vec4 q = xf(&P, v3(l.x / l.w, l.y / l.w, l.z / l.w));
+        if (q.w >= 0 && q.w < 1 - 1e-9)
+            c->known_as = "warp: w < 1 on B when n is below the rounding of light-space y (w = (y - y_min + n)/n loses the n)";
+        SWR_CHECK_ACC(c, q.w >= 1 - 1e-9, "point %zu of B (%.17g %.17g %.17g) has w = %.17g under the warp (P w row %g %g %g %g; %s)", i,
+                      pts[i].x, pts[i].y, pts[i].z, q.w, P.m[3], P.m[7], P.m[11], P.m[15], swarp_status_name(c->status));
+    }
+}
+
+static void e_setup_points(swr_ctx* c) {
+    SKIP_IF_MISSING(c, swarp_setup_points);
+    scene_args s;
+    gen_setup_scene(c, &s);
+    swarp_vec3 pts[SWARP_BODY_MAX_POINTS + 1], rcv[SWARP_BODY_MAX_POINTS];
+    size_t n = 0, nr = 0;
+    /* the box only bounds the points here: a valid one */
+    if (!fin3(&s.box.min) || !fin3(&s.box.max) || s.box.min.x > s.box.max.x || s.box.min.y > s.box.max.y ||
+        s.box.min.z > s.box.max.z)
+        s.box = (swarp_aabb){{-10, -10, -10}, {10, 10, 10}};
+    if (!swarp_body_points ||
+        swarp_status_is_error(swarp_body_points(&s.cam, s.cam.near, s.cam.far, &s.light, &s.box, pts, SWARP_BODY_MAX_POINTS, &n))) {
+        n = 1 + swr_u8(c) % 12; /* points in the box */
+        for (size_t i = 0; i < n; ++i)
+            pts[i] = v3(s.box.min.x + swr_num_in(c, 0, 1, NULL, 0) * (s.box.max.x - s.box.min.x),
+                        s.box.min.y + swr_num_in(c, 0, 1, NULL, 0) * (s.box.max.y - s.box.min.y),
+                        s.box.min.z + swr_num_in(c, 0, 1, NULL, 0) * (s.box.max.z - s.box.min.z));
+    }
+    if (swr_one_in(c, 2)) {
+        swarp_polyhedron H;
+        if (swarp_body_h && swarp_body_h(&s.cam, s.cam.near, s.cam.far, &s.box, &H) == SWARP_OK) {
+            nr = H.vertex_count;
+            memcpy(rcv, H.vertices, nr * sizeof rcv[0]);
+        }
+    }
+    if (swr_one_in(c, 32)) n = swr_one_in(c, 2) ? 0 : SWARP_BODY_MAX_POINTS + 1;
+    const swarp_light* pl = swr_in(c, &s.light);
+    const swarp_vec3* pp = swr_in(c, pts);
+    swarp_setup_result r;
+    const swarp_camera* pc = swr_in(c, &s.cam);
+    swarp_setup_result* pr = swr_out(c, &r, sizeof r, SWR_REQ);
+    expect_parts(c, &s, 0, X_CAM | X_LIGHT | X_OPT | X_GEOM);
+    if (!fin(s.cam.near) || !fin(s.cam.far)) swr_expect(c, SWARP_ERR_NON_FINITE);
+    else if (!(s.cam.near > 0 && s.cam.far > s.cam.near)) swr_expect(c, SWARP_ERR_NEAR_FAR);
+    if (n == 0 || n > SWARP_BODY_MAX_POINTS) swr_expect(c, SWARP_ERR_INVALID_ARGUMENT), swr_domain(c, SWARP_ERR_NULL_POINTER);
+    scene_cond(c, &s, s.cam.near, s.cam.far);
+    swr_args(c, "n %zu p0 (%g %g %g) nr %zu near %g far %g tech %d param %d n_user %g pseudo %g %g slideback %g", n, pts[0].x, pts[0].y,
+             pts[0].z, nr, s.cam.near, s.cam.far, s.use_opt ? (int)s.opt.technique : -1, (int)s.opt.param, s.opt.n_user,
+             s.opt.pseudo_near, s.opt.pseudo_far, s.opt.slideback);
+    swarp_status st = SWR_CALL(c, swarp_setup_points(pc, pl, pp, n, nr ? rcv : NULL, nr, s.cam.near, s.cam.far,
+                                                    s.use_opt ? &s.opt : NULL, pr));
+    if (!swr_done(c, st)) return;
+    check_setup_result(c, &s, st, &r, pts, n, 1);
+}
+
+SWR_WEAK(swarp_cascade_setup)
+
+/* [RHS] §3.3-3.4: the cascade's one call.  Properties: split_count splits,
+ * C_0 = view_near < C_1 < ... < C_m = view_far, each split's [near, far] =
+ * [C_i, C_{i+1}], the configuration's maxima = the largest split maxima,
+ * finite matrices, tiles inside the atlas. */
+static void e_cascade_setup(swr_ctx* c) {
+    SKIP_IF_MISSING(c, swarp_cascade_setup);
+    scene_args s;
+    gen_setup_scene(c, &s);
+    swarp_cascade_options o;
+    memset(&o, 0, sizeof o);
+    if (s.use_opt) o.setup = s.opt;
+    o.split.count = swr_one_in(c, 16) ? 17 + swr_u8(c) % 4 : swr_u8(c) % 9;
+    o.split.scheme = (swarp_split_scheme)swr_enum(c, 5);
+    static const double brk01[] = {0.0, 1.0, 0.5};
+    o.split.lambda = swr_num(c, 0, 1, brk01, 3);
+    o.split.pseudo_near = swr_num_in(c, 0, 0.3, brk01, 1);
+    o.split.pseudo_far = swr_num_in(c, 0, 0.3, brk01, 1);
+    o.split._reserved[swr_u8(c) % 4] = swr_reserved(c);
+    if (swr_one_in(c, 4)) { /* stabilised: needs UNIFORM and a directional light */
+        o.stabilize.mode = (swarp_stabilize_mode)swr_enum(c, 4);
+        if (swr_one_in(c, 2)) o.setup.technique = SWARP_TECHNIQUE_UNIFORM;
+        o.stabilize.origin = v3(swr_offset(c), 0, swr_offset(c));
+    }
+    o.kernel_world_size = swr_one_in(c, 2) ? 0 : swr_num(c, 0, 10, brk01, 1);
+    for (int i = 0; i < 4; ++i) o.n_user[swr_u8(c) % SWARP_CASCADE_MAX_SPLITS] = swr_one_in(c, 2) ? 0 : swr_num(c, 0, 100, brk01, 1);
+    o.warp_per_split = (swarp_cascade_warp)swr_enum(c, 3);
+    o._reserved[swr_u8(c) % 3] = swr_reserved(c);
+    int use_o = !swr_one_in(c, 6);
+    uint32_t K = use_o && o.split.count ? o.split.count : 4;
+    size_t cap = swr_one_in(c, 10) ? swr_u8(c) % 8 : SWARP_CASCADE_MAX_SPLITS;
+    const swarp_camera* pc = swr_in(c, &s.cam);
+    const swarp_light* pl = swr_in(c, &s.light);
+    const swarp_aabb* pb = swr_in(c, &s.box);
+    swarp_cascade_result r;
+    swarp_cascade_split sp[SWARP_CASCADE_MAX_SPLITS];
+    size_t count;
+    swarp_cascade_result* pr = swr_out(c, &r, sizeof r, SWR_REQ);
+    swarp_cascade_split* psp = swr_out(c, sp, sizeof sp, cap ? SWR_REQ : SWR_OPT);
+    size_t* pcount = swr_out(c, &count, sizeof count, SWR_REQ);
+    s.opt = o.setup; /* what the call sees (technique may be UNIFORM now) */
+    s.use_opt = use_o;
+    expect_scene(c, &s, 1);
+    if (use_o) {
+        for (int i = 0; i < 3; ++i)
+            if (o._reserved[i]) swr_expect(c, SWARP_ERR_RESERVED_NONZERO);
+        for (int i = 0; i < 4; ++i)
+            if (o.split._reserved[i]) swr_expect(c, SWARP_ERR_RESERVED_NONZERO);
+        if ((int)o.warp_per_split < 0 || (int)o.warp_per_split > 2 || (int)o.split.scheme < 0 || (int)o.split.scheme > 4 ||
+            (int)o.stabilize.mode < 0 || (int)o.stabilize.mode > 3)
+            swr_expect(c, SWARP_ERR_UNKNOWN_ENUM);
+        if (o.split.count > SWARP_CASCADE_MAX_SPLITS) swr_expect(c, SWARP_ERR_SPLIT_COUNT);
+        if (!fin(o.kernel_world_size) || !fin(o.split.lambda)) swr_domain(c, SWARP_ERR_NON_FINITE);
+        static const swarp_status dom[] = {SWARP_ERR_OUT_OF_RANGE, SWARP_ERR_STABILIZE_WARPED, SWARP_ERR_STABILIZE_LIGHT,
+                                           SWARP_ERR_RESOLUTION};
+        for (size_t i = 0; i < sizeof dom / sizeof dom[0]; ++i) swr_domain(c, dom[i]);
+    }
+    if (K <= SWARP_CASCADE_MAX_SPLITS && cap < K) swr_expect(c, SWARP_ERR_CAPACITY);
+    if (!psp && cap == 0) swr_domain(c, SWARP_ERR_CAPACITY);
+    swr_domain(c, SWARP_ERR_SPLIT_EMPTY), swr_domain(c, SWARP_ERR_NEAR_FAR), swr_domain(c, SWARP_ERR_NON_FINITE);
+    scene_cond(c, &s, s.cam.near, s.cam.far);
+    swr_args(c, "K %u scheme %d stabilize %d warp_per_split %d technique %d param %d center %d depth %d reserved: cam %u %u %u %u light %u %u %u %u %u setup %u %u split %u %u %u %u cascade %u %u %u use_o %d",
+             K, (int)o.split.scheme, (int)o.stabilize.mode, (int)o.warp_per_split, (int)o.setup.technique, (int)o.setup.param,
+             (int)o.setup.center, (int)o.setup.depth_range, s.cam._reserved[0], s.cam._reserved[1], s.cam._reserved[2],
+             s.cam._reserved[3], s.light._reserved0, s.light._reserved[0], s.light._reserved[1], s.light._reserved[2],
+             s.light._reserved[3], o.setup._reserved[0], o.setup._reserved[1], o.split._reserved[0], o.split._reserved[1],
+             o.split._reserved[2], o.split._reserved[3], o._reserved[0], o._reserved[1], o._reserved[2], use_o);
+    swarp_status st = SWR_CALL(c, swarp_cascade_setup(pc, pl, pb, use_o ? &o : NULL, pr, psp, cap, pcount));
+    if (st == SWARP_ERR_CAPACITY) {
+        SWR_CHECK(c, count == K, "CAPACITY with count %zu, K %u", count, K);
+        swr_fill(&count, sizeof count);
+    }
+    if (!swr_done(c, st)) return;
+    SWR_CHECK(c, count == K && r.split_count == K, "count %zu, split_count %u, K %u", count, r.split_count, K);
+    if (count != K || K > SWARP_CASCADE_MAX_SPLITS) return;
+    swr_rec(c, "view_near", r.view_near), swr_rec(c, "view_far", r.view_far);
+    SWR_CHECK(c, r.splits[0] == r.view_near && r.splits[K] == r.view_far, "C_0 %.17g C_m %.17g, view [%.17g, %.17g]", r.splits[0],
+              r.splits[K], r.view_near, r.view_far);
+    double mx = 0, mz = 0;
+    for (uint32_t i = 0; i < K; ++i) {
+        const swarp_cascade_split* q = &sp[i];
+        SWR_CHECK(c, r.splits[i + 1] > r.splits[i], "splits not increasing at %u", i);
+        SWR_CHECK(c, q->near == r.splits[i] && q->far == r.splits[i + 1], "split %u [%g, %g], C [%g, %g]", i, q->near, q->far,
+                  r.splits[i], r.splits[i + 1]);
+        for (int e = 0; e < 16; ++e) swr_rec(c, "matrix", q->matrix.m[e]), swr_rec(c, "atlas_matrix", q->atlas_matrix.m[e]);
+        if (c->n_rec < SWR_MAX_REC) c->rec[c->n_rec++] = q->n_eye; /* +inf: a uniform split (documented per split) */
+        SWR_CHECK(c, q->n_eye > 0, "split %u n_eye %g", i, q->n_eye);
+        swr_rec(c, "max_mx", q->max_mx), swr_rec(c, "max_mz", q->max_mz);
+        SWR_CHECK(c, !swarp_status_is_error(q->status), "split %u status %s", i, swarp_status_name(q->status));
+        mx = fmax(mx, q->max_mx), mz = fmax(mz, q->max_mz);
+        double atlas = r.atlas.atlas_res;
+        SWR_CHECK(c, q->tile.viewport_x >= 0 && q->tile.viewport_y >= 0 && q->tile.viewport_x + q->tile.viewport_width <= atlas &&
+                         q->tile.viewport_y + q->tile.viewport_height <= atlas,
+                  "tile %u outside the atlas", i);
+    }
+    /* the configuration's maxima are the largest of the splits' */
+    SWR_CHECK(c, r.max_mx == mx && r.max_mz == mz, "max_mx %.17g max_mz %.17g, splits' %.17g %.17g", r.max_mx, r.max_mz, mx, mz);
+    if (K < SWARP_CASCADE_MAX_SPLITS) SWR_CHECK(c, swr_untouched(sp + K, sizeof sp - K * sizeof sp[0]), "wrote past count");
+}
+
+/* ------------------------------------------------------------------------ */
+/* coherent light frames over time (src/follow.c)                           */
+/* ------------------------------------------------------------------------ */
+SWR_WEAK(swarp_setup_follow)
+SWR_WEAK(swarp_focus_light_view_follow)
+
+/* The previous frame: the scene with the light turned by an angle (0, 1e-9,
+ * small, large) and the camera turned too; its camera and light in *p. */
+static void gen_previous_scene(swr_ctx* c, const scene_args* s, scene_args* p) {
+    *p = *s;
+    static const double brk[] = {0.0, 1e-9, 1e-6};
+    double dl = swr_one_in(c, 4) ? swr_num_in(c, 0, PI_, brk, 3) : swr_num_in(c, 0, 0.05, brk, 3);
+    double dc = swr_one_in(c, 2) ? 0 : swr_num_in(c, 0, 0.05, brk, 3);
+    if (fin3(&s->light.direction) && vmax(s->light.direction) > 0) p->light.direction = tilt(unit(s->light.direction), dl);
+    p->light.position.x += swr_num_in(c, -1, 1, NULL, 0) * dl;
+    if (fin3(&s->cam.dir) && vmax(s->cam.dir) > 0) p->cam.dir = tilt(unit(s->cam.dir), dc);
+}
+/* A previous light view whose rotation rows are broken: NaN, a zero row, not
+ * orthonormal, left-handed; the status each calls for. */
+static void corrupt_rows(swr_ctx* c, swarp_mat4* V) {
+    if (!swr_one_in(c, 12)) return;
+    int r = swr_u8(c) % 3;
+    switch (swr_u8(c) % 4) {
+        case 0: V->m[4 * (swr_u8(c) % 3) + r] = NAN, swr_expect(c, SWARP_ERR_NON_FINITE); break;
+        case 1: V->m[r] = V->m[4 + r] = V->m[8 + r] = 0, swr_expect(c, SWARP_ERR_ZERO_VECTOR), swr_domain(c, SWARP_ERR_FOLLOW_FRAME); break;
+        case 2: V->m[r] *= 1.1, V->m[4 + r] *= 1.1, V->m[8 + r] *= 1.1, swr_expect(c, SWARP_ERR_FOLLOW_FRAME); break;
+        default: V->m[r] = -V->m[r], V->m[4 + r] = -V->m[4 + r], V->m[8 + r] = -V->m[8 + r], swr_expect(c, SWARP_ERR_FOLLOW_FRAME); break;
+    }
+}
+static double angle_between(swarp_vec3 a, swarp_vec3 b) {
+    a = unit(a), b = unit(b);
+    return 2 * atan2(sqrt(dot(v3(a.x - b.x, a.y - b.y, a.z - b.z), v3(a.x - b.x, a.y - b.y, a.z - b.z))),
+                     sqrt(dot(v3(a.x + b.x, a.y + b.y, a.z + b.z), v3(a.x + b.x, a.y + b.y, a.z + b.z))));
+}
+/* The follow rule's bound: the new up (row 1) is the previous up, projected
+ * normal to the new axis, turned by at most SWARP_FOLLOW_KAPPA (angle the
+ * axis turned + angle the view direction turned) */
+static void check_follow_bound(swr_ctx* c, const swarp_mat4* V, const swarp_mat4* P, swarp_vec3 dir_prev, swarp_vec3 dir) {
+    swarp_vec3 a = v3(-V->m[2], -V->m[6], -V->m[10]), ap = v3(-P->m[2], -P->m[6], -P->m[10]);
+    swarp_vec3 up = v3(V->m[1], V->m[5], V->m[9]), upp = v3(P->m[1], P->m[5], P->m[9]);
+    double k = dot(upp, a);
+    swarp_vec3 h = v3(upp.x - k * a.x, upp.y - k * a.y, upp.z - k * a.z);
+    if (sqrt(dot(h, h)) < 1e-3) return; /* the previous up along the new axis: no direction to keep */
+    double delta = angle_between(ap, a) + angle_between(dir_prev, dir);
+    double turned = angle_between(h, up);
+    SWR_CHECK_ACC(c, turned <= SWARP_FOLLOW_KAPPA * delta + 1e-6, "the up vector turned %.9g rad, the bound is %g x %.9g", turned,
+                  SWARP_FOLLOW_KAPPA, delta);
+}
+
+static void e_setup_follow(swr_ctx* c) {
+    SKIP_IF_MISSING(c, swarp_setup_follow);
+    scene_args s, p;
+    gen_setup_scene(c, &s);
+    gen_previous_scene(c, &s, &p);
+    const swarp_setup_options* po = s.use_opt ? &s.opt : NULL;
+    swarp_setup_result prev;
+    int have_prev = !swr_one_in(c, 4) && !swarp_status_is_error(swarp_setup(&p.cam, &p.light, &p.box, po, &prev, NULL, 0, NULL));
+    int use_pcam = swr_one_in(c, 2);
+    if (have_prev) corrupt_rows(c, &prev.light_view);
+    const swarp_camera* pc = swr_in(c, &s.cam);
+    const swarp_light* pl = swr_in(c, &s.light);
+    const swarp_aabb* pb = swr_in(c, &s.box);
+    swarp_setup_result r;
+    swarp_vec3 pts[SWARP_BODY_MAX_POINTS];
+    size_t count;
+    swarp_setup_result* pr = swr_out(c, &r, sizeof r, SWR_REQ);
+    swarp_vec3* pp = swr_out(c, pts, sizeof pts, SWR_NONULL);
+    size_t* pn = swr_out(c, &count, sizeof count, SWR_NONULL);
+    expect_scene(c, &s, 1);
+    swr_domain(c, SWARP_ERR_CAPACITY), swr_domain(c, SWARP_ERR_FOLLOW_FRAME); /* PSM: a previous light camera out of range */
+    scene_cond(c, &s, s.cam.near, s.cam.far);
+    swarp_status st = SWR_CALL(c, swarp_setup_follow(pc, pl, pb, po, use_pcam ? &p.cam : NULL, have_prev ? &prev : NULL, pr, pp,
+                                                    SWARP_BODY_MAX_POINTS, pn));
+    if (!swr_done(c, st)) return;
+    check_setup_result(c, &s, st, &r, pts, count, 1);
+    if (!have_prev) { /* "NULL: exactly swarp_setup's result (bit for bit)" */
+        swarp_setup_result q;
+        memset(&q, 0, sizeof q);
+        swarp_status sq = SWR_CALL(c, swarp_setup(&s.cam, &s.light, &s.box, po, &q, NULL, 0, NULL));
+        SWR_CHECK(c, sq == st && memcmp(&q.matrix, &r.matrix, sizeof q.matrix) == 0 && q.n_eye == r.n_eye,
+                  "previous NULL: %s and a matrix other than swarp_setup's (%s)", swarp_status_name(st), swarp_status_name(sq));
+    } else if (!(s.use_opt && s.opt.technique == SWARP_TECHNIQUE_PSM) && st != SWARP_INFO_PSM_INVERSE) {
+        check_follow_bound(c, &r.light_view, &prev.light_view, use_pcam ? p.cam.dir : s.cam.dir, s.cam.dir);
+    }
+}
+
+static void e_focus_light_view_follow(swr_ctx* c) {
+    SKIP_IF_MISSING(c, swarp_focus_light_view_follow);
+    scene_args s, p;
+    gen_setup_scene(c, &s);
+    gen_previous_scene(c, &s, &p);
+    swarp_mat4 prev;
+    memset(&prev, 0, sizeof prev);
+    int have_prev = !swr_one_in(c, 4) && swarp_focus_light_view &&
+                    !swarp_status_is_error(swarp_focus_light_view(&p.cam, &p.light, NULL, &prev));
+    int use_pcam = swr_one_in(c, 2);
+    /* a previous view that is not finite (swarp_focus_light_view on an
+     * extreme input: a finding of that entry) is not a valid "previous" */
+    for (int i = 0; i < 16 && have_prev; ++i) have_prev = fin(prev.m[i]);
+    if (have_prev) corrupt_rows(c, &prev);
+    const swarp_camera* pc = swr_in(c, &s.cam);
+    const swarp_light* pl = swr_in(c, &s.light);
+    swarp_mat4 V;
+    swarp_mat4* pv = swr_out(c, &V, sizeof V, SWR_REQ);
+    expect_parts(c, &s, 0, X_CAM | X_LIGHT);
+    swr_domain(c, SWARP_ERR_ZERO_VECTOR), swr_domain(c, SWARP_ERR_DEGENERATE), swr_domain(c, SWARP_ERR_NEAR_FAR);
+    swr_args(c, "eye (%g %g %g) dir (%g %g %g) up (%g %g %g) light %d dir (%g %g %g) pos (%g %g %g) cone %g prev %d rows (%g %g %g / %g %g %g / %g %g %g) pcam %d",
+             s.cam.eye.x, s.cam.eye.y, s.cam.eye.z, s.cam.dir.x, s.cam.dir.y, s.cam.dir.z, s.cam.up.x, s.cam.up.y, s.cam.up.z,
+             (int)s.light.type, s.light.direction.x, s.light.direction.y, s.light.direction.z, s.light.position.x,
+             s.light.position.y, s.light.position.z, s.light.cone_angle, have_prev, prev.m[0], prev.m[4], prev.m[8], prev.m[1],
+             prev.m[5], prev.m[9], prev.m[2], prev.m[6], prev.m[10], use_pcam);
+    if (!swr_done(c, SWR_CALL(c, swarp_focus_light_view_follow(pc, pl, NULL, use_pcam ? &p.cam : NULL, have_prev ? &prev : NULL, pv))))
+        return;
+    for (int i = 0; i < 16; ++i) swr_rec(c, "view", V.m[i]);
+    for (int a = 0; a < 3; ++a)
+        for (int b = 0; b < 3; ++b)
+            SWR_CHECK(c, fabs(dot(row3(&V, a), row3(&V, b)) - (a == b)) <= 1e-12, "rows %d, %d not orthonormal", a, b);
+    SWR_CHECK(c, dot(cross(row3(&V, 0), row3(&V, 1)), row3(&V, 2)) > 0, "left-handed light view");
+    if (!have_prev) { /* "NULL: exactly swarp_focus_light_view" */
+        swarp_mat4 q;
+        swarp_status sq = SWR_CALL(c, swarp_focus_light_view(&s.cam, &s.light, NULL, &q));
+        SWR_CHECK(c, sq == c->status && memcmp(&q, &V, sizeof q) == 0, "previous NULL: not swarp_focus_light_view's view");
+    } else {
+        check_follow_bound(c, &V, &prev, use_pcam ? p.cam.dir : s.cam.dir, s.cam.dir);
+    }
+}
+
 const swr_entry swr_entries_geometry[] = {
     {"swarp_setup", "geometry", e_setup},
     {"swarp_setup_range", "geometry", e_setup_range},
     {"swarp_body_points", "geometry", e_body_points},
     {"swarp_poly_from_aabb", "geometry", e_poly_from_aabb},
+    {"swarp_poly_from_camera_range", "geometry", e_poly_from_camera_range},
+    {"swarp_poly_from_camera", "geometry", e_poly_from_camera},
+    {"swarp_poly_from_inverse_matrix", "geometry", e_poly_from_inverse_matrix},
+    {"swarp_poly_clip", "geometry", e_poly_clip},
+    {"swarp_poly_clip_aabb", "geometry", e_poly_clip_aabb},
+    {"swarp_body_h", "geometry", e_body_h},
+    {"swarp_body_from_h", "geometry", e_body_from_h},
+    {"swarp_body_receivers", "geometry", e_body_receivers},
+    {"swarp_body_adjusted_range", "geometry", e_body_adjusted_range},
+    {"swarp_focus_light_view", "geometry", e_focus_light_view},
+    {"swarp_focus_fit", "geometry", e_focus_fit},
+    {"swarp_warp_lispsm", "geometry", e_warp_lispsm},
+    {"swarp_setup_points", "geometry", e_setup_points},
+    {"swarp_cascade_setup", "splits", e_cascade_setup},
+    {"swarp_setup_follow", "geometry", e_setup_follow},
+    {"swarp_focus_light_view_follow", "geometry", e_focus_light_view_follow},
     {NULL, NULL, NULL},
 };

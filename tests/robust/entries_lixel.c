@@ -20,13 +20,6 @@ SWR_WEAK(swarp_lixel_factor)
 SWR_WEAK(swarp_lixel_split)
 SWR_WEAK(swarp_lixel_select)
 
-#define SKIP_IF_MISSING(c, f) \
-    do {                      \
-        if (!(f)) {           \
-            (c)->skipped = 1; \
-            return;           \
-        }                     \
-    } while (0)
 
 static int fin(double x) { return swr_isfin(x); }
 static int fin3(const swarp_vec3* v) { return fin(v->x) && fin(v->y) && fin(v->z); }

@@ -18,13 +18,6 @@ SWR_WEAK(swarp_plan)
 SWR_WEAK(swarp_plan_evaluate)
 SWR_WEAK(swarp_plan_explain)
 
-#define SKIP_IF_MISSING(c, f) \
-    do {                      \
-        if (!(f)) {           \
-            (c)->skipped = 1; \
-            return;           \
-        }                     \
-    } while (0)
 
 static int fin(double x) { return swr_isfin(x); }
 

@@ -10,6 +10,7 @@
  * per split, > 0 or +inf. */
 #include <float.h>
 #include <math.h>
+#include <stdio.h>
 #include <string.h>
 
 #include "swr.h"
@@ -25,15 +26,6 @@ SWR_WEAK(swarp_cascade_blend)
 SWR_WEAK(swarp_cascade_splits)
 SWR_WEAK(swarp_cascade_nopt)
 
-#define SKIP_IF_MISSING(c, f) \
-    do {                      \
-        if (!(f)) {           \
-            (c)->skipped = 1; \
-            return;           \
-        }                     \
-    } while (0)
-#define FIN(c, x) \
-    do { if (!swr_isfin(x)) swr_expect((c), SWARP_ERR_NON_FINITE); } while (0)
 
 static int fin3(const swarp_vec3* v) { return swr_isfin(v->x) && swr_isfin(v->y) && swr_isfin(v->z); }
 
@@ -93,13 +85,11 @@ static void e_atlas_layout(swr_ctx* c) {
 static void e_atlas_lsc(swr_ctx* c) {
     SKIP_IF_MISSING(c, swarp_atlas_lsc);
     uint32_t m = swr_one_in(c, 8) ? swr_u32(c) : swr_u8(c) % 18;
-    int nul = swr_null(c);
-    if (nul) swr_expect(c, SWARP_ERR_NULL_POINTER);
-    if (m == 0 || m > SWARP_ATLAS_MAX_SPLITS) swr_expect(c, SWARP_ERR_ATLAS_SPLITS);
     double l;
-    swr_fill(&l, sizeof l);
-    swarp_status st = SWR_CALL(c, swarp_atlas_lsc(m, nul ? NULL : &l));
-    if (!swr_verdict(c, st, 1, (void*)&l, sizeof l)) return;
+    double* po = swr_out(c, &l, sizeof l, SWR_REQ);
+    if (m == 0 || m > SWARP_ATLAS_MAX_SPLITS) swr_expect(c, SWARP_ERR_ATLAS_SPLITS);
+    swarp_status st = SWR_CALL(c, swarp_atlas_lsc(m, po));
+    if (!swr_done(c, st)) return;
     swr_rec(c, "l_sc", l);
     double want = m == 1 ? 1.0 : m <= 4 ? 0.5 : m <= 9 ? 1.0 / 3 : 0.25; /* [RHS] (3.9) */
     SWR_CHECK(c, fabs(l - want) <= 2 * DBL_EPSILON * want, "l_sc(%u) = %.17g, want %.17g", m, l, want);
@@ -112,8 +102,8 @@ static void e_atlas_kernel_scale(swr_ctx* c) {
     uint32_t m = swr_one_in(c, 12) ? swr_u8(c) % 40 : 1 + swr_u8(c) % 16;
     double x0 = swr_num(c, -1, 1, brk, 3), x1 = swr_one_in(c, 10) ? x0 : swr_num(c, -1, 1, brk, 3);
     double y0 = swr_num(c, -1, 1, brk, 3), y1 = swr_one_in(c, 10) ? y0 : swr_num(c, -1, 1, brk, 3);
-    int nul = swr_null(c);
-    if (nul) swr_expect(c, SWARP_ERR_NULL_POINTER);
+    double s[2];
+    double* po = swr_out(c, s, sizeof s, SWR_REQ);
     FIN(c, r);
     FIN(c, x0);
     FIN(c, x1);
@@ -124,10 +114,8 @@ static void e_atlas_kernel_scale(swr_ctx* c) {
     if (swr_isfin(y0) && swr_isfin(y1) && !(y1 > y0)) swr_expect(c, SWARP_ERR_OUT_OF_RANGE);
     if (m == 0 || m > SWARP_ATLAS_MAX_SPLITS) swr_expect(c, SWARP_ERR_ATLAS_SPLITS);
     swr_domain(c, SWARP_ERR_OVERFLOW);
-    double s[2];
-    swr_fill(s, sizeof s);
-    swarp_status st = SWR_CALL(c, swarp_atlas_kernel_scale(r, m, x0, x1, y0, y1, nul ? NULL : s));
-    if (!swr_verdict(c, st, 1, (void*)s, sizeof s)) return;
+    swarp_status st = SWR_CALL(c, swarp_atlas_kernel_scale(r, m, x0, x1, y0, y1, po));
+    if (!swr_done(c, st)) return;
     swr_rec(c, "s_x", s[0]);
     swr_rec(c, "s_y", s[1]);
     SWR_CHECK(c, s[0] >= 0 && s[1] >= 0, "kernel scale (%g, %g) negative", s[0], s[1]);
@@ -418,6 +406,839 @@ static void e_cascade_nopt(swr_ctx* c) {
     SWR_CHECK(c, swr_untouched(out + m, sizeof out - m * sizeof out[0]), "wrote past m");
 }
 
+/* ------------------------------------------------------------------------ */
+/* stabilised matrices, bias, split selection by resolution, error curve     */
+/* (table-driven shape of swr.h; references in long double from the        */
+/* definitions, not from src/)                                              */
+/* ------------------------------------------------------------------------ */
+SWR_WEAK(swarp_stabilize_directional)
+SWR_WEAK(swarp_stabilize_snap_matrix)
+SWR_WEAK(swarp_bias_texel_size)
+SWR_WEAK(swarp_bias_kozlov)
+SWR_WEAK(swarp_bias_normal_offset)
+SWR_WEAK(swarp_bias_slope_scaled)
+SWR_WEAK(swarp_bias_depth_per_world)
+SWR_WEAK(swarp_bias_receiver_plane)
+SWR_WEAK(swarp_cascade_view_depth)
+SWR_WEAK(swarp_cascade_select_best)
+SWR_WEAK(swarp_cascade_error_curve)
+
+typedef long double ld;
+static swarp_vec3 V3(double x, double y, double z) {
+    swarp_vec3 v = {x, y, z};
+    return v;
+}
+static double vmax3(swarp_vec3 v) { return fmax(fabs(v.x), fmax(fabs(v.y), fabs(v.z))); }
+static double dot3(swarp_vec3 a, swarp_vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+static swarp_vec3 unit3(swarp_vec3 a) {
+    double m = vmax3(a); /* scaled first: tiny and huge vectors are valid */
+    if (!(m > 0)) return a;
+    a = V3(a.x / m, a.y / m, a.z / m);
+    double l = sqrt(dot3(a, a));
+    return V3(a.x / l, a.y / l, a.z / l);
+}
+/* clip coordinates of p: h[r] = sum_c M(r, c) p_c, in long double */
+static void clip_of(const swarp_mat4* M, swarp_vec3 p, ld h[4]) {
+    for (int r = 0; r < 4; ++r) h[r] = (ld)M->m[r] * p.x + (ld)M->m[4 + r] * p.y + (ld)M->m[8 + r] * p.z + M->m[12 + r];
+}
+/* sum of |terms| of clip row r: what the double evaluation of h[r] is rounded against */
+static ld clip_mag(const swarp_mat4* M, swarp_vec3 p, int r) {
+    return fabsl((ld)M->m[r] * p.x) + fabsl((ld)M->m[4 + r] * p.y) + fabsl((ld)M->m[8 + r] * p.z) + fabsl((ld)M->m[12 + r]);
+}
+/* kappa of M (infinity norm, long double Gauss-Jordan); 1e300 when singular */
+static int gauss_jordan(ld A[4][8], int ncols);
+static double mat_cond_inv(const swarp_mat4* M, ld inv[4][4]);
+static double mat_cond(const swarp_mat4* M) {
+    ld inv[4][4];
+    return mat_cond_inv(M, inv);
+}
+static double mat_cond_inv(const swarp_mat4* M, ld inv[4][4]) {
+    ld A[4][8];
+    ld nm = 0, ni = 0;
+    for (int r = 0; r < 4; ++r) {
+        ld row = 0;
+        for (int k = 0; k < 4; ++k) A[r][k] = M->m[k * 4 + r], A[r][4 + k] = r == k, row += fabsl(A[r][k]);
+        nm = fmaxl(nm, row);
+    }
+    if (!gauss_jordan(A, 8)) return 1e300;
+    for (int r = 0; r < 4; ++r) {
+        ld row = 0;
+        for (int k = 0; k < 4; ++k) row += fabsl(inv[r][k] = A[r][4 + k] / A[r][r]);
+        ni = fmaxl(ni, row);
+    }
+    return (double)(nm * ni);
+}
+/* Gauss-Jordan with partial pivoting on the 4 rows of A, columns [0, ncols):
+ * afterwards A[r][r] is the pivot and the right-hand columns hold A[r][r] x;
+ * 0 when singular */
+static int gauss_jordan(ld A[4][8], int ncols) {
+    for (int col = 0; col < 4; ++col) {
+        int piv = col;
+        for (int r = col + 1; r < 4; ++r)
+            if (fabsl(A[r][col]) > fabsl(A[piv][col])) piv = r;
+        if (!(fabsl(A[piv][col]) > 0)) return 0;
+        for (int k = 0; k < ncols; ++k) {
+            ld t = A[col][k];
+            A[col][k] = A[piv][k], A[piv][k] = t;
+        }
+        for (int r = 0; r < 4; ++r)
+            if (r != col) {
+                ld f = A[r][col] / A[col][col];
+                for (int k = col; k < ncols; ++k) A[r][k] -= f * A[col][k];
+            }
+    }
+    return 1;
+}
+/* the world point whose NDC is (x, y, z): solves M q = w (x, y, z, 1) for
+ * q = (q, 1) (long double) */
+static int world_of(const swarp_mat4* M, ld x, ld y, ld z, ld q[3]) {
+    /* unknowns q0 q1 q2 and w: M(r,0..2) q - w ndc_r = -M(r,3) */
+    ld A[4][8];
+    const ld ndc[4] = {x, y, z, 1};
+    for (int r = 0; r < 4; ++r) {
+        for (int k = 0; k < 3; ++k) A[r][k] = M->m[k * 4 + r];
+        A[r][3] = -ndc[r];
+        A[r][4] = -(ld)M->m[12 + r];
+    }
+    if (!gauss_jordan(A, 5)) return 0;
+    for (int k = 0; k < 3; ++k) q[k] = A[k][4] / A[k][k];
+    return isfinite((double)q[0]) && isfinite((double)q[1]) && isfinite((double)q[2]);
+}
+
+typedef struct bias_args {
+    swarp_bias_map map;
+    swarp_light light;
+    swarp_vec3 p, normal, ta, tb;
+    int perspective;
+} bias_args;
+
+/* A map: an ortho or perspective projection times a rigid view (rotation
+ * from a random unit quaternion, the eye offset by up to 1e6), a point in
+ * front of it (sometimes behind, on the eye plane, or outside the map), a
+ * light, a normal and two tangents. */
+static void gen_bias(swr_ctx* c, bias_args* b) {
+    memset(b, 0, sizeof *b);
+    double qw = swr_num_in(c, -1, 1, NULL, 0), qx = swr_num_in(c, -1, 1, NULL, 0), qy = swr_num_in(c, -1, 1, NULL, 0),
+           qz = swr_num_in(c, -1, 1, NULL, 0);
+    double ql = sqrt(qw * qw + qx * qx + qy * qy + qz * qz);
+    if (!(ql > 1e-3)) qw = 1, qx = qy = qz = 0, ql = 1;
+    qw /= ql, qx /= ql, qy /= ql, qz /= ql;
+    const double R[3][3] = {{1 - 2 * (qy * qy + qz * qz), 2 * (qx * qy - qz * qw), 2 * (qx * qz + qy * qw)},
+                            {2 * (qx * qy + qz * qw), 1 - 2 * (qx * qx + qz * qz), 2 * (qy * qz - qx * qw)},
+                            {2 * (qx * qz - qy * qw), 2 * (qy * qz + qx * qw), 1 - 2 * (qx * qx + qy * qy)}};
+    swarp_vec3 eye = V3(swr_offset(c) + swr_num_in(c, -50, 50, NULL, 0), swr_num_in(c, -50, 50, NULL, 0), swr_offset(c));
+    /* view = [R | -R eye] */
+    double V[16] = {0};
+    for (int r = 0; r < 3; ++r) {
+        for (int k = 0; k < 3; ++k) V[k * 4 + r] = R[r][k];
+        V[12 + r] = -(R[r][0] * eye.x + R[r][1] * eye.y + R[r][2] * eye.z);
+    }
+    V[15] = 1;
+    static const double brk_n[] = {1e-6, 1.0};
+    double n = swr_num_in(c, 1e-6, 10, brk_n, 2), f = n * swr_num_in(c, 1.5, 1e7, NULL, 0);
+    double P[16] = {0};
+    b->perspective = swr_one_in(c, 2);
+    double sx = swr_num_in(c, 1e-3, 10, NULL, 0), sy = swr_num_in(c, 1e-3, 10, NULL, 0);
+    if (b->perspective) { /* OpenGL-style frustum */
+        P[0] = sx, P[5] = sy, P[10] = -(f + n) / (f - n), P[11] = -1, P[14] = -2 * f * n / (f - n);
+    } else { /* ortho over depth [n, f] */
+        P[0] = sx / 10, P[5] = sy / 10, P[10] = -2 / (f - n), P[14] = -(f + n) / (f - n), P[15] = 1;
+    }
+    b->map.depth = (swarp_depth_range)swr_enum(c, 3);
+    if ((int)b->map.depth == 2) { /* [0, 1]: z' = (z + w)/2 */
+        for (int k = 0; k < 4; ++k) P[k * 4 + 2] = 0.5 * (P[k * 4 + 2] + P[k * 4 + 3]);
+    }
+    for (int col = 0; col < 4; ++col)
+        for (int r = 0; r < 4; ++r) {
+            double acc = 0;
+            for (int k = 0; k < 4; ++k) acc += P[k * 4 + r] * V[col * 4 + k];
+            b->map.world_to_clip.m[col * 4 + r] = acc;
+        }
+    static const double brk_res[] = {1.0, 2048.0};
+    b->map.res_s = swr_num(c, 1, 8192, brk_res, 2);
+    b->map.res_t = swr_one_in(c, 2) ? b->map.res_s : swr_num(c, 1, 8192, brk_res, 2);
+    b->map._reserved[swr_u8(c) % 4] = swr_reserved(c);
+    if (swr_one_in(c, 64)) b->map._reserved0 = 1;
+    if (swr_one_in(c, 32)) b->map.world_to_clip.m[swr_u8(c) % 16] = swr_num(c, -1, 1, NULL, 0);
+    /* the point: view space (x, y, -z) then world = R^T (v) + eye */
+    double z = swr_num_in(c, n, f, brk_n, 0), ext = b->perspective ? z : 10;
+    double vx = swr_num_in(c, -1.2, 1.2, NULL, 0) * ext / sx, vy = swr_num_in(c, -1.2, 1.2, NULL, 0) * ext / sy, vz = -z;
+    uint8_t where = swr_u8(c) % 32;
+    if (where == 0) vz = 0;        /* on the eye plane: w = 0 for a perspective map */
+    if (where == 1) vz = z;        /* behind */
+    b->p = V3(R[0][0] * vx + R[1][0] * vy + R[2][0] * vz + eye.x, R[0][1] * vx + R[1][1] * vy + R[2][1] * vz + eye.y,
+              R[0][2] * vx + R[1][2] * vy + R[2][2] * vz + eye.z);
+    if (swr_one_in(c, 32)) b->p.y = swr_num(c, -1, 1, NULL, 0);
+    /* the light: directional (often along the map's view axis) or a point */
+    swarp_light* L = &b->light;
+    L->type = (swarp_light_type)swr_enum(c, 3);
+    swarp_vec3 axis = V3(-R[2][0], -R[2][1], -R[2][2]); /* the map looks along -z of its view */
+    L->direction = swr_one_in(c, 2) ? axis : V3(swr_num(c, -1, 1, NULL, 0), swr_num(c, -1, 1, NULL, 0), swr_num(c, -1, 1, NULL, 0));
+    if (swr_one_in(c, 32)) L->direction = V3(0, 0, 0);
+    L->position = swr_one_in(c, 16) ? b->p : V3(eye.x + swr_num(c, -10, 10, NULL, 0), eye.y, eye.z + swr_num(c, -10, 10, NULL, 0));
+    L->_reserved[swr_u8(c) % 4] = swr_reserved(c);
+    b->normal = V3(swr_num(c, -1, 1, NULL, 0), swr_num(c, -1, 1, NULL, 0), swr_num(c, -1, 1, NULL, 0));
+    if (swr_one_in(c, 4)) b->normal = V3(-L->direction.x, -L->direction.y, -L->direction.z); /* facing the light */
+    if (swr_one_in(c, 32)) b->normal = V3(0, 0, 0);
+    b->ta = V3(swr_num(c, -1, 1, NULL, 0), swr_num(c, -1, 1, NULL, 0), swr_num(c, -1, 1, NULL, 0));
+    b->tb = swr_one_in(c, 16) ? b->ta : V3(swr_num(c, -1, 1, NULL, 0), swr_num(c, -1, 1, NULL, 0), swr_num(c, -1, 1, NULL, 0));
+    swr_cond(c, (vmax3(eye) + f) / fmin(n, 1)); /* positions of magnitude |eye| + f against the near plane */
+    const double* M = b->map.world_to_clip.m;
+    swr_args(c, "M cols (%.17g %.17g %.17g %.17g) (%.17g %.17g %.17g %.17g) (%.17g %.17g %.17g %.17g) (%.17g %.17g %.17g %.17g) res %g %g depth %d p (%.17g %.17g %.17g) light %d",
+             M[0], M[1], M[2], M[3], M[4], M[5], M[6], M[7], M[8], M[9], M[10], M[11], M[12], M[13], M[14], M[15], b->map.res_s,
+             b->map.res_t, (int)b->map.depth, b->p.x, b->p.y, b->p.z, (int)b->light.type);
+    {
+        size_t used = strlen(c->args);
+        snprintf(c->args + used, sizeof c->args - used, " normal (%.17g %.17g %.17g)", b->normal.x, b->normal.y, b->normal.z);
+    }
+}
+/* what the map and p call for; returns 1 when they are valid (references apply) */
+/* the map's own fields; returns 1 when they are valid */
+static int expect_map_fields(swr_ctx* c, const swarp_bias_map* m) {
+    int ok = 1;
+    for (int i = 0; i < 4; ++i)
+        if (m->_reserved[i]) swr_expect(c, SWARP_ERR_RESERVED_NONZERO), ok = 0;
+    if (m->_reserved0) swr_expect(c, SWARP_ERR_RESERVED_NONZERO), ok = 0;
+    if ((int)m->depth < 0 || (int)m->depth > 2) swr_expect(c, SWARP_ERR_UNKNOWN_ENUM), ok = 0;
+    for (int i = 0; i < 16; ++i)
+        if (!swr_isfin(m->world_to_clip.m[i])) swr_expect(c, SWARP_ERR_NON_FINITE), ok = 0;
+    if (!(m->res_s > 0) || !(m->res_t > 0) || !swr_isfin(m->res_s) || !swr_isfin(m->res_t))
+        swr_expect(c, SWARP_ERR_RESOLUTION), ok = 0;
+    return ok;
+}
+static int expect_map(swr_ctx* c, const bias_args* b) {
+    const swarp_bias_map* m = &b->map;
+    int ok = 1;
+    /* FINDING (docs/quality.md): a normal whose length overflows (components
+     * near DBL_MAX) is refused with SWARP_ERR_ZERO_VECTOR (sw_normalize
+     * takes the length before scaling) */
+    if (fin3(&b->normal) && vmax3(b->normal) > 1e300) swr_domain(c, SWARP_ERR_ZERO_VECTOR);
+    ok = expect_map_fields(c, m);
+    if (!fin3(&b->p)) swr_expect(c, SWARP_ERR_NON_FINITE), ok = 0;
+    if (ok) {
+        ld h[4], mag = clip_mag(&m->world_to_clip, b->p, 3);
+        clip_of(&m->world_to_clip, b->p, h);
+        /* w within the rounding of its terms: either side */
+        if (fabsl(h[3]) <= 1e-299L) swr_domain(c, SWARP_ERR_BEHIND_PROJECTION); /* the library's w threshold is 1e-300 */
+        if (fabsl(h[3]) <= 1024 * DBL_EPSILON * mag) swr_domain(c, SWARP_ERR_BEHIND_PROJECTION), c->rounding_edge = 1;
+        else if (!(h[3] > 0)) swr_expect(c, SWARP_ERR_BEHIND_PROJECTION), ok = 0;
+        if (h[3] > 0) { /* conditioning: the matrix (texel steps map back through M^-1), the rows' cancellation */
+            ld k = 1;
+            for (int r = 0; r < 4; ++r)
+                if (h[r] != 0) k = fmaxl(k, clip_mag(&m->world_to_clip, b->p, r) / fabsl(h[r]));
+            swr_cond(c, (double)k * mat_cond(&m->world_to_clip));
+        }
+    }
+    swr_domain(c, SWARP_ERR_SINGULAR);
+    swr_domain(c, SWARP_ERR_NON_FINITE); /* a step that overflows */
+    return ok;
+}
+/* the light's part; returns 1 when valid; *Lv = unit vector toward the light */
+static int expect_light(swr_ctx* c, const swarp_light* L, swarp_vec3 p, swarp_vec3* Lv) {
+    int t = (int)L->type, ok = 1;
+    for (int i = 0; i < 4; ++i)
+        if (L->_reserved[i]) swr_expect(c, SWARP_ERR_RESERVED_NONZERO), ok = 0;
+    if (L->_reserved0) swr_expect(c, SWARP_ERR_RESERVED_NONZERO), ok = 0;
+    if (t < 0 || t > 2) return swr_expect(c, SWARP_ERR_UNKNOWN_ENUM), 0;
+    swarp_vec3 d = t == 2 ? V3(L->position.x - p.x, L->position.y - p.y, L->position.z - p.z)
+                          : V3(-L->direction.x, -L->direction.y, -L->direction.z);
+    if (!fin3(t == 2 ? &L->position : &L->direction)) return swr_expect(c, SWARP_ERR_NON_FINITE), 0;
+    if (d.x == 0 && d.y == 0 && d.z == 0) return swr_expect(c, SWARP_ERR_ZERO_VECTOR), 0;
+    *Lv = unit3(d);
+    swr_domain(c, SWARP_ERR_ZERO_VECTOR); /* a difference that underflows */
+    return ok;
+}
+/* window depth of p (long double) */
+static ld window_depth(const swarp_bias_map* m, swarp_vec3 p) {
+    ld h[4];
+    clip_of(&m->world_to_clip, p, h);
+    ld zn = h[2] / h[3];
+    return (int)m->depth == 2 ? zn : (zn + 1) / 2;
+}
+/* d(s, t, d)/d(world) along u: s = (x/w + 1) res_s/2 texels, exact quotient rule */
+static void jac_along(swr_ctx* cc_, const swarp_bias_map* m, swarp_vec3 p, swarp_vec3 u, ld out[3]) {
+    ld h[4], g[4];
+    clip_of(&m->world_to_clip, p, h);
+    for (int r = 0; r < 4; ++r) g[r] = (ld)m->world_to_clip.m[r] * u.x + (ld)m->world_to_clip.m[4 + r] * u.y + (ld)m->world_to_clip.m[8 + r] * u.z;
+    ld dq[3];
+    /* the double evaluation of h = M p carries eps sum|terms| per row: that
+     * relative error (k_h) is amplified by the quotient rule's cancellation */
+    ld k_h = 1;
+    for (int r = 0; r < 4; ++r)
+        if (h[r] != 0) k_h = fmaxl(k_h, clip_mag(&m->world_to_clip, p, r) / fabsl(h[r]));
+    for (int r = 0; r < 3; ++r) {
+        dq[r] = (g[r] * h[3] - h[r] * g[3]) / (h[3] * h[3]);
+        ld num = fabsl(g[r] * h[3] - h[r] * g[3]);
+        if (num > 0) swr_cond(cc_, (double)(k_h * (fabsl(g[r] * h[3]) + fabsl(h[r] * g[3])) / num));
+    }
+    out[0] = dq[0] * m->res_s / 2, out[1] = dq[1] * m->res_t / 2, out[2] = (int)m->depth == 2 ? dq[2] : dq[2] / 2;
+}
+/* the world lengths of one texel step along s and t at constant depth */
+static int ref_texel_z(const swarp_bias_map* m, swarp_vec3 p, ld* Ls, ld* Lt, ld zrel, double* kappa_out) {
+    ld h[4], q[3];
+    clip_of(&m->world_to_clip, p, h);
+    ld x = h[0] / h[3], y = h[1] / h[3], z = h[2] / h[3] * zrel;
+    /* a texel wider than the map (res < 1): the step leaves the map's frustum and
+     * may cross w = 0; no reference */
+    if (fabsl(x) + 2.0L / m->res_s > 3 || fabsl(y) + 2.0L / m->res_t > 3) return 0;
+    /* mapping an NDC point back divides by w' = row 3 of M^-1 . ndc: its
+     * cancellation (a far point has a tiny w') and M's condition number
+     * are how much the library's double back-projection may lose */
+    if (kappa_out) {
+        ld inv[4][4];
+        double km = mat_cond_inv(&m->world_to_clip, inv);
+        const ld nd[4] = {x + 2.0L / m->res_s, y, z, 1};
+        ld w2 = 0, mag = 0;
+        for (int k = 0; k < 4; ++k) w2 += inv[3][k] * nd[k], mag += fabsl(inv[3][k] * nd[k]);
+        *kappa_out = w2 != 0 ? (double)(mag / fabsl(w2)) * km : 1e300;
+    }
+    if (!world_of(&m->world_to_clip, x + 2.0L / m->res_s, y, z, q)) return 0;
+    *Ls = sqrtl((q[0] - p.x) * (q[0] - p.x) + (q[1] - p.y) * (q[1] - p.y) + (q[2] - p.z) * (q[2] - p.z));
+    if (!world_of(&m->world_to_clip, x, y + 2.0L / m->res_t, z, q)) return 0;
+    *Lt = sqrtl((q[0] - p.x) * (q[0] - p.x) + (q[1] - p.y) * (q[1] - p.y) + (q[2] - p.z) * (q[2] - p.z));
+    return 1;
+}
+/* ... and its sensitivity to the rounding of NDC z (a double in the library:
+ * far depths of a perspective map resolve the world position coarsely),
+ * raised into c->cond */
+static int ref_texel(swr_ctx* c, const swarp_bias_map* m, swarp_vec3 p, ld* Ls, ld* Lt) {
+    double kb = 0;
+    if (!ref_texel_z(m, p, Ls, Lt, 1, &kb)) return swr_cond(c, 1e300), 0; /* ill-posed: no claim, any sensitivity */
+    swr_cond(c, kb);
+    for (int sgn = -1; sgn <= 1; sgn += 2) {
+        ld s2, t2;
+        if (!ref_texel_z(m, p, &s2, &t2, 1 + sgn * 4 * (ld)DBL_EPSILON, NULL) || !(*Ls > 0 && *Lt > 0)) {
+            swr_cond(c, 1e300);
+            continue;
+        }
+        swr_cond(c, (double)(fmaxl(fabsl(s2 - *Ls) / *Ls, fabsl(t2 - *Lt) / *Lt) / (4 * (ld)DBL_EPSILON)));
+    }
+    /* beyond 1e10 double keeps fewer than 6 digits and the estimate above is
+     * a lower bound (the library's own cancellations come on top): the
+     * rounding mode may move the result; the fenv test leaves it out */
+    if (c->cond > 1e10) c->rounding_edge = 1;
+    return 1;
+}
+/* the texel-size check shared by the bias entries: got vs the reference, relative 1e-6 (the
+ * library inverts the matrix in double: conditioning c->cond) */
+static void check_texel(swr_ctx* c, const bias_args* b, double got, int which, const char* what) {
+    ld Ls, Lt;
+    if (!ref_texel(c, &b->map, b->p, &Ls, &Lt)) return;
+    ld ref = which == 0 ? (Ls > Lt ? Ls : Lt) : which == 1 ? Ls : Lt;
+    /* a difference of two points of magnitude |p|, each resolved to eps |p| kappa */
+    swr_close_abs(c, what, got, ref, 1e-6 + 64 * DBL_EPSILON * c->cond, 64 * DBL_EPSILON * c->cond * vmax3(b->p));
+}
+
+static void e_bias_texel_size(swr_ctx* c) {
+    SKIP_IF_MISSING(c, swarp_bias_texel_size);
+    bias_args b;
+    gen_bias(c, &b);
+    const swarp_bias_map* pm = swr_in(c, &b.map);
+    const swarp_vec3* pp = swr_in(c, &b.p);
+    double o[3];
+    double* po[3];
+    for (int k = 0; k < 3; ++k) po[k] = swr_out(c, &o[k], sizeof o[k], SWR_OPT);
+    if (!po[0] && !po[1] && !po[2]) swr_expect(c, SWARP_ERR_NULL_POINTER);
+    expect_map(c, &b);
+    if (!swr_done(c, SWR_CALL(c, swarp_bias_texel_size(pm, pp, po[0], po[1], po[2])))) return;
+    static const char* const names[] = {"L_texel", "L_s", "L_t"};
+    for (int k = 0; k < 3; ++k)
+        if (po[k]) {
+            swr_rec(c, names[k], o[k]);
+            /* >= 0: a texel below the resolution of p's coordinates (res 1e84)
+             * rounds to 0; the reference comparison's absolute part covers it */
+            SWR_CHECK(c, o[k] >= 0, "%s = %g", names[k], o[k]);
+            check_texel(c, &b, o[k], k, names[k]);
+        }
+}
+
+/* the entries that move p toward the light: kozlov (0), normal offset (1) */
+static void e_bias_move(swr_ctx* c, int normal_offset) {
+    bias_args b;
+    gen_bias(c, &b);
+    static const double brk[] = {0.0, -1e-9};
+    double a = swr_num(c, 0, 0.1, brk, 2), k = swr_num(c, 0, 2, brk, 2);
+    const swarp_bias_map* pm = swr_in(c, &b.map);
+    const swarp_light* pl = swr_in(c, &b.light);
+    const swarp_vec3* pp = swr_in(c, &b.p);
+    const swarp_vec3* pn = normal_offset ? swr_in(c, &b.normal) : NULL;
+    swarp_vec3 q;
+    double amount;
+    swarp_vec3* pq = swr_out(c, &q, sizeof q, SWR_REQ);
+    double* pa = swr_out(c, &amount, sizeof amount, SWR_OPT);
+    int ok = expect_map(c, &b);
+    swarp_vec3 L = {0, 0, 0}, N = {0, 0, 0};
+    ok &= expect_light(c, &b.light, b.p, &L);
+    if (!normal_offset) FIN(c, a); /* a: Kozlov's only */
+    FIN(c, k);
+    if (normal_offset) {
+        if (!fin3(&b.normal)) swr_expect(c, SWARP_ERR_NON_FINITE);
+        else if (b.normal.x == 0 && b.normal.y == 0 && b.normal.z == 0) swr_expect(c, SWARP_ERR_ZERO_VECTOR);
+        else N = unit3(b.normal);
+        if (k < 0) swr_expect(c, SWARP_ERR_OUT_OF_RANGE);
+    } else {
+        swr_domain(c, SWARP_ERR_OUT_OF_RANGE); /* a + b L_texel < 0: predicted below */
+    }
+    ld Ls = 0, Lt = 0;
+    int have_ref = ok && ref_texel(c, &b.map, b.p, &Ls, &Lt);
+    ld Ltex = Ls > Lt ? Ls : Lt;
+    if (!normal_offset && have_ref && swr_isfin(a) && swr_isfin(k)) {
+        ld want = a + k * Ltex;
+        /* predicted only when L_texel's own error (conditioning) cannot flip the sign */
+        if (want < 0 && fabsl(k * Ltex) < 0.5L * fabsl(a) && 64 * DBL_EPSILON * c->cond < 0.1) swr_expect(c, SWARP_ERR_OUT_OF_RANGE);
+    }
+    swarp_status st = normal_offset ? SWR_CALL(c, swarp_bias_normal_offset(pm, pl, pp, pn, k, pq, pa))
+                                    : SWR_CALL(c, swarp_bias_kozlov(pm, pl, pp, a, k, pq, pa));
+    if (!swr_done(c, st)) return;
+    swr_rec(c, "p'", q.x), swr_rec(c, "p'", q.y), swr_rec(c, "p'", q.z);
+    if (!have_ref) return;
+    /* the move: along L by a + b L_texel (Kozlov), along N by k L_texel (1 - clamp(N.L)) */
+    ld NL = (ld)N.x * L.x + (ld)N.y * L.y + (ld)N.z * L.z;
+    ld amt = normal_offset ? k * Ltex * (1 - (NL < 0 ? 0 : NL > 1 ? 1 : NL)) : a + k * Ltex;
+    swarp_vec3 dir = normal_offset ? N : L;
+    double tol = 1e-6 + 64 * DBL_EPSILON * c->cond, pscale = vmax3(b.p);
+    double abs_tol = 64 * DBL_EPSILON * c->cond * pscale * (fabs(k) + 1);
+    if (pa) swr_close_abs(c, "amount", amount, amt, tol, abs_tol);
+    const double got[3] = {q.x - b.p.x, q.y - b.p.y, q.z - b.p.z}, d[3] = {dir.x, dir.y, dir.z};
+    for (int i = 0; i < 3; ++i) swr_close_abs(c, "p' - p", got[i], amt * d[i], tol, (double)fabsl(amt) * tol + abs_tol + 4 * DBL_EPSILON * pscale);
+    if (normal_offset) {
+        if (c->status == SWARP_INFO_BACKFACING) SWR_CHECK(c, NL <= 1e-12L, "BACKFACING with N.L = %Lg", NL);
+        else SWR_CHECK(c, NL >= -1e-12L, "N.L = %Lg < 0 without SWARP_INFO_BACKFACING", NL);
+    }
+}
+static void e_bias_kozlov(swr_ctx* c) {
+    SKIP_IF_MISSING(c, swarp_bias_kozlov);
+    e_bias_move(c, 0);
+}
+static void e_bias_normal_offset(swr_ctx* c) {
+    SKIP_IF_MISSING(c, swarp_bias_normal_offset);
+    e_bias_move(c, 1);
+}
+
+static void e_bias_slope_scaled(swr_ctx* c) {
+    SKIP_IF_MISSING(c, swarp_bias_slope_scaled);
+    bias_args b;
+    gen_bias(c, &b);
+    static const double brk[] = {0.0, -1e-9};
+    double cc = swr_num(c, 0, 0.1, brk, 2), ss = swr_num(c, 0, 4, brk, 2);
+    const swarp_bias_map* pm = swr_in(c, &b.map);
+    const swarp_light* pl = swr_in(c, &b.light);
+    const swarp_vec3* pp = swr_in(c, &b.p);
+    const swarp_vec3* pn = swr_in(c, &b.normal);
+    double wb, db;
+    double* pw = swr_out(c, &wb, sizeof wb, SWR_OPT);
+    double* pd = swr_out(c, &db, sizeof db, SWR_OPT);
+    if (!pw && !pd) swr_expect(c, SWARP_ERR_NULL_POINTER);
+    int ok = expect_map(c, &b);
+    swarp_vec3 L = {0, 0, 0};
+    ok &= expect_light(c, &b.light, b.p, &L);
+    FIN(c, cc);
+    FIN(c, ss);
+    if (cc < 0 || ss < 0) swr_expect(c, SWARP_ERR_OUT_OF_RANGE);
+    if (!fin3(&b.normal)) swr_expect(c, SWARP_ERR_NON_FINITE), ok = 0;
+    else if (b.normal.x == 0 && b.normal.y == 0 && b.normal.z == 0) swr_expect(c, SWARP_ERR_ZERO_VECTOR), ok = 0;
+    swr_domain(c, SWARP_ERR_BEHIND_PROJECTION); /* p moved toward the light leaves the map's front */
+    if (!swr_done(c, SWR_CALL(c, swarp_bias_slope_scaled(pm, pl, pp, pn, cc, ss, pw, pd)))) return;
+    if (pw) {
+        swr_rec(c, "world bias", wb);
+        SWR_CHECK(c, wb >= 0, "world bias %g", wb);
+    }
+    if (pd) swr_rec(c, "depth bias", db);
+    ld Ls, Lt;
+    if (!ok || !ref_texel(c, &b.map, b.p, &Ls, &Lt)) return;
+    /* tan from sin = |N x L| and cos = N.L of the raw vectors in long double
+     * (sqrt(1 - cos^2) of rounded unit vectors loses half the digits near N || L) */
+    const swarp_light* Lg = &b.light;
+    ld Lr[3], Nr[3] = {b.normal.x, b.normal.y, b.normal.z};
+    if (Lg->type == SWARP_LIGHT_POINT) Lr[0] = (ld)Lg->position.x - b.p.x, Lr[1] = (ld)Lg->position.y - b.p.y, Lr[2] = (ld)Lg->position.z - b.p.z;
+    else Lr[0] = -(ld)Lg->direction.x, Lr[1] = -(ld)Lg->direction.y, Lr[2] = -(ld)Lg->direction.z;
+    ld cr[3] = {Nr[1] * Lr[2] - Nr[2] * Lr[1], Nr[2] * Lr[0] - Nr[0] * Lr[2], Nr[0] * Lr[1] - Nr[1] * Lr[0]};
+    ld sn = sqrtl(cr[0] * cr[0] + cr[1] * cr[1] + cr[2] * cr[2]), cs = Nr[0] * Lr[0] + Nr[1] * Lr[1] + Nr[2] * Lr[2];
+    ld NL = cs / sqrtl((Nr[0] * Nr[0] + Nr[1] * Nr[1] + Nr[2] * Nr[2]) * (Lr[0] * Lr[0] + Lr[1] * Lr[1] + Lr[2] * Lr[2]));
+    ld tn = cs > 0 ? sn / cs : 10;
+    if (tn > 10) tn = 10;
+    ld want = cc + ss * (Ls > Lt ? Ls : Lt) * tn;
+    {
+        size_t used = strlen(c->args);
+        snprintf(c->args + used, sizeof c->args - used, " | c %.17g s %.17g N.L %.17Lg tan %.17Lg Ls %.17Lg Lt %.17Lg", cc, ss, NL, tn, Ls, Lt);
+    }
+    double tol = 1e-6 + 64 * DBL_EPSILON * c->cond;
+    if (fabsl(NL) < 1e-6L) tol = 1e-3; /* tan's clamp decided by N.L's last bits */
+    if (pw) swr_close_abs(c, "world bias", wb, want, tol, 64 * DBL_EPSILON * c->cond * vmax3(b.p) * (ss + 1));
+    if (pd && pw) { /* the window-depth difference over the world bias toward the light */
+        swarp_vec3 q = V3(b.p.x + wb * L.x, b.p.y + wb * L.y, b.p.z + wb * L.z);
+        ld dd = window_depth(&b.map, b.p) - window_depth(&b.map, q);
+        /* a difference of two window depths, each rounded to eps kappa */
+        swr_close_abs(c, "|depth bias|", fabs(db), fabsl(dd), 1e-5 + 64 * DBL_EPSILON * c->cond, 64 * DBL_EPSILON * c->cond);
+    }
+}
+
+static void e_bias_depth_per_world(swr_ctx* c) {
+    SKIP_IF_MISSING(c, swarp_bias_depth_per_world);
+    bias_args b;
+    gen_bias(c, &b);
+    const swarp_bias_map* pm = swr_in(c, &b.map);
+    const swarp_light* pl = swr_in(c, &b.light);
+    const swarp_vec3* pp = swr_in(c, &b.p);
+    double k;
+    double* pk = swr_out(c, &k, sizeof k, SWR_REQ);
+    int ok = expect_map(c, &b);
+    swarp_vec3 L = {0, 0, 0};
+    ok &= expect_light(c, &b.light, b.p, &L);
+    if (!swr_done(c, SWR_CALL(c, swarp_bias_depth_per_world(pm, pl, pp, pk)))) return;
+    swr_rec(c, "depth per world", k);
+    if (!ok) return;
+    ld J[3];
+    jac_along(c, &b.map, b.p, L, J); /* minus the derivative of d along L, exactly */
+    ld h[4];
+    clip_of(&b.map.world_to_clip, b.p, h);
+    if (64 * DBL_EPSILON * c->cond < 1) /* else numerically singular: no claim */
+        swr_close(c, "depth per world", k, -J[2], 1e-6 + 64 * DBL_EPSILON * c->cond, 1e-9 * (fabsl(h[2] / h[3]) + 1) / (vmax3(b.p) + 1));
+}
+
+static void e_bias_receiver_plane(swr_ctx* c) {
+    SKIP_IF_MISSING(c, swarp_bias_receiver_plane);
+    bias_args b;
+    gen_bias(c, &b);
+    const swarp_bias_map* pm = swr_in(c, &b.map);
+    const swarp_vec3* pp = swr_in(c, &b.p);
+    const swarp_vec3* pa = swr_in(c, &b.ta);
+    const swarp_vec3* pb = swr_in(c, &b.tb);
+    double g[2];
+    double* pg = swr_out(c, g, sizeof g, SWR_REQ);
+    int ok = expect_map(c, &b);
+    if (!fin3(&b.ta) || !fin3(&b.tb)) swr_expect(c, SWARP_ERR_NON_FINITE), ok = 0;
+    else if ((b.ta.x == 0 && b.ta.y == 0 && b.ta.z == 0) || (b.tb.x == 0 && b.tb.y == 0 && b.tb.z == 0))
+        swr_expect(c, SWARP_ERR_ZERO_VECTOR), ok = 0;
+    ld Ja[3] = {0}, Jb[3] = {0}, det = 0;
+    if (ok) {
+        jac_along(c, &b.map, b.p, b.ta, Ja);
+        jac_along(c, &b.map, b.p, b.tb, Jb);
+        det = Ja[0] * Jb[1] - Ja[1] * Jb[0];
+        ld sc = (fabsl(Ja[0]) + fabsl(Ja[1])) * (fabsl(Jb[0]) + fabsl(Jb[1]));
+        if (det == 0) swr_expect(c, SWARP_ERR_DEGENERATE);
+        if (fabsl(det) < 1e-6L * sc) c->rounding_edge = 1;
+        swr_domain(c, SWARP_ERR_DEGENERATE); /* edge-on within the library's 1e-12 */
+        swr_cond(c, (double)(sc / fabsl(det)) * (c->cond > 1 ? c->cond : 1)); /* the solve amplifies the derivatives' errors */
+    }
+    if (!swr_done(c, SWR_CALL(c, swarp_bias_receiver_plane(pm, pp, pa, pb, pg)))) return;
+    swr_rec(c, "dd/ds", g[0]), swr_rec(c, "dd/dt", g[1]);
+    if (!ok || det == 0) return;
+    /* d_a = g_s s_a + g_t t_a, d_b = g_s s_b + g_t t_b (Cramer) */
+    ld gs = (Ja[2] * Jb[1] - Jb[2] * Ja[1]) / det, gt = (Ja[0] * Jb[2] - Jb[0] * Ja[2]) / det;
+    double fl = 1e-9 * (double)(fabsl(gs) + fabsl(gt)) + 1e-300;
+    if (64 * DBL_EPSILON * c->cond >= 1) return; /* numerically singular: no claim */
+    /* Cramer's numerators cancel too (a gradient near 0): their own factor */
+    ld ns = fabsl(Ja[2] * Jb[1] - Jb[2] * Ja[1]), nt = fabsl(Ja[0] * Jb[2] - Jb[0] * Ja[2]);
+    double ks = ns > 0 ? (double)((fabsl(Ja[2] * Jb[1]) + fabsl(Jb[2] * Ja[1])) / ns) : 1e300;
+    double kt = nt > 0 ? (double)((fabsl(Ja[0] * Jb[2]) + fabsl(Jb[0] * Ja[2])) / nt) : 1e300;
+    swr_close(c, "dd/ds", g[0], gs, 1e-6 + 64 * DBL_EPSILON * c->cond * ks, fl);
+    swr_close(c, "dd/dt", g[1], gt, 1e-6 + 64 * DBL_EPSILON * c->cond * kt, fl);
+}
+
+static void e_cascade_view_depth(swr_ctx* c) {
+    SKIP_IF_MISSING(c, swarp_cascade_view_depth);
+    swarp_camera cam;
+    gen_cam(c, &cam);
+    swarp_vec3 p = V3(cam.eye.x + swr_num(c, -100, 100, NULL, 0), cam.eye.y + swr_num(c, -100, 100, NULL, 0),
+                      cam.eye.z + swr_num(c, -100, 100, NULL, 0));
+    const swarp_camera* pc = swr_in(c, &cam);
+    const swarp_vec3* pp = swr_in(c, &p);
+    double z;
+    double* pz = swr_out(c, &z, sizeof z, SWR_REQ);
+    if (!fin3(&cam.eye) || !fin3(&cam.dir) || !fin3(&p)) swr_expect(c, SWARP_ERR_NON_FINITE);
+    else if (cam.dir.x == 0 && cam.dir.y == 0 && cam.dir.z == 0) swr_expect(c, SWARP_ERR_ZERO_VECTOR);
+    if (!swr_done(c, SWR_CALL(c, swarp_cascade_view_depth(pc, pp, pz)))) return;
+    swr_rec(c, "view depth", z);
+    swarp_vec3 d = unit3(cam.dir);
+    ld ref = ((ld)p.x - cam.eye.x) * d.x + ((ld)p.y - cam.eye.y) * d.y + ((ld)p.z - cam.eye.z) * d.z;
+    if (ref != 0) swr_cond(c, (vmax3(p) + vmax3(cam.eye)) / (double)fabsl(ref)); /* p - eye cancels */
+    swr_close_abs(c, "view depth", z, ref, 1e-12, 8 * DBL_EPSILON * (vmax3(p) + vmax3(cam.eye)));
+}
+
+/* p covered by the map: w > 0, |x|, |y| <= w, depth inside; -1 when too close to call */
+static int covers(const swarp_bias_map* m, swarp_vec3 p) {
+    ld h[4];
+    clip_of(&m->world_to_clip, p, h);
+    if (!(h[3] > 0)) return h[3] > -1e-9L * (fabsl(h[0]) + fabsl(h[1])) ? -1 : 0;
+    /* the margin: 1e-9 of w plus the rounding of the rows' double evaluation */
+    ld mag = 0;
+    for (int r = 0; r < 4; ++r) mag = fmaxl(mag, clip_mag(&m->world_to_clip, p, r));
+    ld lo = (int)m->depth == 2 ? 0 : -h[3], e = 1e-9L * h[3] + 64 * (ld)DBL_EPSILON * mag;
+    ld v[3] = {fabsl(h[0]) - h[3], fabsl(h[1]) - h[3], fmaxl(h[2] - h[3], lo - h[2])};
+    ld worst = fmaxl(v[0], fmaxl(v[1], v[2]));
+    return worst > e ? 0 : worst < -e ? 1 : -1;
+}
+
+static void e_cascade_select_best(swr_ctx* c) {
+    SKIP_IF_MISSING(c, swarp_cascade_select_best);
+    bias_args b[4];
+    size_t m = swr_one_in(c, 32) ? (swr_one_in(c, 2) ? 0 : 17) : 1 + swr_u8(c) % 4;
+    for (size_t i = 0; i < 4; ++i) gen_bias(c, &b[i]);
+    swarp_bias_map maps[17];
+    memset(maps, 0, sizeof maps);
+    for (size_t i = 0; i < 17; ++i) maps[i] = b[i % 4].map;
+    swarp_vec3 p = b[swr_u8(c) % 4].p;
+    uint32_t fb = swr_one_in(c, 16) ? (uint32_t)m + swr_u8(c) % 3 : (uint32_t)(m ? swr_u8(c) % m : 0);
+    const swarp_bias_map* pm = swr_in(c, maps);
+    const swarp_vec3* pp = swr_in(c, &p);
+    uint32_t idx;
+    double Lt;
+    uint32_t* pi = swr_out(c, &idx, sizeof idx, SWR_REQ);
+    double* pl = swr_out(c, &Lt, sizeof Lt, SWR_OPT);
+    if (m == 0 || m > SWARP_SPLIT_MAX_COUNT) swr_expect(c, SWARP_ERR_SPLIT_COUNT);
+    else if (fb >= m) swr_expect(c, SWARP_ERR_OUT_OF_RANGE);
+    int ok = 1;
+    for (size_t i = 0; i < m && i < 17; ++i) /* the maps' own errors (p need not be in front of every map) */
+        ok &= expect_map_fields(c, &maps[i]);
+    if (!fin3(&p)) swr_expect(c, SWARP_ERR_NON_FINITE), ok = 0;
+    swr_domain(c, SWARP_ERR_SINGULAR), swr_domain(c, SWARP_ERR_NON_FINITE), swr_domain(c, SWARP_ERR_BEHIND_PROJECTION);
+    if (!swr_done(c, SWR_CALL(c, swarp_cascade_select_best(pm, m, pp, fb, pi, pl)))) return;
+    if (c->n_rec < SWR_MAX_REC) c->rec[c->n_rec++] = idx;
+    if (pl) swr_rec(c, "L_texel", Lt);
+    SWR_CHECK(c, idx < m, "index %u of %zu", idx, m);
+    if (!ok || idx >= m) return;
+    for (size_t i = 0; i < m; ++i) swr_cond(c, mat_cond(&maps[i].world_to_clip));
+    int cov[17], unsure = 0, any = 0;
+    ld L[17];
+    for (size_t i = 0; i < m; ++i) {
+        cov[i] = covers(&maps[i], p);
+        ld Ls, Lt2;
+        L[i] = cov[i] && ref_texel(c, &maps[i], p, &Ls, &Lt2) ? (Ls > Lt2 ? Ls : Lt2) : INFINITY;
+        unsure |= cov[i] < 0, any |= cov[i] == 1;
+    }
+    if (unsure) { /* a border decided by rounding */
+        c->rounding_edge = 1;
+        return;
+    }
+    if (c->status == SWARP_INFO_OUTSIDE_SPLITS) {
+        SWR_CHECK(c, !any && idx == fb, "OUTSIDE_SPLITS with a covering map (index %u, fallback %u)", idx, fb);
+        if (pl) SWR_CHECK(c, Lt == 0, "fallback with L_texel %g", Lt);
+        return;
+    }
+    SWR_CHECK(c, cov[idx] == 1, "map %u chosen but it does not cover p", idx);
+    for (size_t i = 0; i < m && isfinite((double)L[idx]); ++i) /* (L = inf: no reference for the chosen map) */
+        if (cov[i] == 1 && i != idx)
+            SWR_CHECK_ACC(c, L[i] >= L[idx] * (1 - 1e-6L), "map %zu has the finer texel (%Lg < %Lg of map %u)", i, L[i], L[idx], idx);
+    if (pl && isfinite((double)L[idx]))
+        swr_close_abs(c, "L_texel", Lt, L[idx], 1e-6 + 64 * DBL_EPSILON * c->cond, 64 * DBL_EPSILON * c->cond * vmax3(p));
+}
+
+static void e_cascade_error_curve(swr_ctx* c) {
+    SKIP_IF_MISSING(c, swarp_cascade_error_curve);
+    double s[9] = {0}, np[9];
+    size_t m = gen_cascade(c, s, 8);
+    swarp_error_config cfg;
+    memset(&cfg, 0, sizeof cfg);
+    static const double brk_th[] = {1e-9, 1.5707963267948966};
+    cfg.theta = swr_num(c, 0.05, 1.5, brk_th, 2);
+    cfg.res_ix = swr_num(c, 1, 4096, NULL, 0), cfg.res_iy = swr_num_in(c, 1, cfg.res_ix > 1 ? cfg.res_ix : 1, NULL, 0);
+    cfg.res_s = swr_num(c, 1, 8192, NULL, 0), cfg.res_t = swr_num_in(c, 1, cfg.res_s > 1 ? cfg.res_s : 1, NULL, 0);
+    cfg._reserved[swr_u8(c) % 4] = swr_reserved(c);
+    for (size_t i = 0; i < 9; ++i) np[i] = swr_one_in(c, 8) ? INFINITY : swr_num(c, 1e-3, 1e3, NULL, 0);
+    size_t sps = swr_one_in(c, 16) ? swr_u8(c) % 3 : 2 + swr_u8(c) % 24;
+    size_t total = m * sps, cap = swr_one_in(c, 8) ? swr_u8(c) % 64 : 8 * 26;
+    const swarp_error_config* pc = swr_in(c, &cfg);
+    const double* pn = swr_in(c, np);
+    double z[8 * 26], mx[8 * 26], mz[8 * 26];
+    size_t count;
+    double* pz = swr_out(c, z, sizeof z, SWR_REQ);
+    double* px = swr_out(c, mx, sizeof mx, SWR_OPT);
+    double* pm = swr_out(c, mz, sizeof mz, SWR_OPT);
+    size_t* pcount = swr_out(c, &count, sizeof count, SWR_REQ);
+    expect_cascade(c, s, m);
+    int valid = m >= 1 && m <= SWARP_SPLIT_MAX_COUNT;
+    if (valid && (sps < 2)) swr_expect(c, SWARP_ERR_OUT_OF_RANGE);
+    else if (valid && cap < total) swr_expect(c, SWARP_ERR_CAPACITY);
+    for (int i = 0; i < 4; ++i)
+        if (cfg._reserved[i]) swr_domain(c, SWARP_ERR_RESERVED_NONZERO);
+    static const swarp_status dom[] = {SWARP_ERR_NON_FINITE, SWARP_ERR_FOV, SWARP_ERR_RESOLUTION, SWARP_ERR_OUT_OF_RANGE,
+                                       SWARP_ERR_OVERFLOW, SWARP_ERR_NEAR_FAR};
+    for (size_t i = 0; i < sizeof dom / sizeof dom[0]; ++i) swr_domain(c, dom[i]);
+    swarp_status st = SWR_CALL(c, swarp_cascade_error_curve(pc, s, pn, m, sps, pz, px, pm, cap, pcount));
+    if (st == SWARP_ERR_CAPACITY) { /* the needed count is written */
+        SWR_CHECK(c, count == total, "CAPACITY with count %zu, needed %zu", count, total);
+        swr_fill(&count, sizeof count);
+    }
+    if (!swr_done(c, st)) return;
+    SWR_CHECK(c, count == total, "count %zu, want %zu", count, total);
+    if (count != total) return;
+    /* the depths: from C_i (inclusive) to just below C_{i+1}, the last one C_m; non-decreasing */
+    for (size_t i = 0; i < m; ++i)
+        for (size_t j = 0; j < sps; ++j) {
+            size_t g = i * sps + j;
+            if (g < 64) swr_rec(c, "z", z[g]);
+            if (j == 0) SWR_CHECK(c, z[g] == s[i], "split %zu starts at %.17g, not C_i = %.17g", i, z[g], s[i]);
+            if (g) SWR_CHECK(c, z[g] >= z[g - 1], "depths decrease at %zu", g);
+            int last = i + 1 == m;
+            SWR_CHECK(c, z[g] >= s[i] && (last ? z[g] <= s[i + 1] : z[g] < s[i + 1]), "sample %zu (%.17g) outside split %zu", g,
+                      z[g], i);
+            if (px && g < 64) swr_rec_inf(c, "m_x", mx[g]);
+            if (pm && g < 64) swr_rec_inf(c, "m_z", mz[g]);
+            if (px) SWR_CHECK(c, mx[g] >= 0, "m_x %g", mx[g]);
+            if (pm) SWR_CHECK(c, mz[g] >= 0, "m_z %g", mz[g]);
+        }
+    SWR_CHECK(c, z[total - 1] == s[m], "the curve ends at %.17g, not C_m = %.17g", z[total - 1], s[m]);
+}
+
+static swarp_mat4 uniform_matrix(swr_ctx* c, double* w) {
+    swarp_mat4 m;
+    memset(&m, 0, sizeof m);
+    for (int col = 0; col < 3; ++col)
+        for (int r = 0; r < 3; ++r) m.m[col * 4 + r] = swr_num_in(c, -1, 1, NULL, 0) * (r == col ? 1 : 0.3) * 1e-2;
+    for (int r = 0; r < 3; ++r) m.m[12 + r] = swr_num_in(c, -2, 2, NULL, 0);
+    static const double brk_w[] = {0.0, 1.0, -1.0};
+    *w = m.m[15] = swr_one_in(c, 2) ? 1.0 : swr_num(c, 0.5, 2, brk_w, 3);
+    if (swr_one_in(c, 16)) m.m[3 + 4 * (swr_u8(c) % 3)] = swr_num(c, -1e-3, 1e-3, NULL, 0); /* projective */
+    return m;
+}
+
+static void e_stabilize_snap_matrix(swr_ctx* c) {
+    SKIP_IF_MISSING(c, swarp_stabilize_snap_matrix);
+    double w;
+    swarp_mat4 m = uniform_matrix(c, &w);
+    static const double brk_r[] = {1.0, 0.0, 2048.0};
+    double rs = swr_num(c, 1, 8192, brk_r, 3), rt = swr_one_in(c, 2) ? rs : swr_num(c, 1, 8192, brk_r, 3);
+    swarp_vec3 o = V3(swr_offset(c) + swr_num(c, -100, 100, NULL, 0), swr_num(c, -100, 100, NULL, 0), swr_offset(c));
+    if (swr_one_in(c, 32)) m.m[swr_u8(c) % 16] = swr_num(c, -1, 1, NULL, 0);
+    int in_place = swr_one_in(c, 8);
+    const swarp_mat4* pm = swr_in(c, &m);
+    const swarp_vec3* po = swr_in(c, &o);
+    swarp_mat4 out;
+    swarp_mat4* pout = in_place ? NULL : swr_out(c, &out, sizeof out, SWR_REQ);
+    int finite = fin3(&o);
+    for (int i = 0; i < 16; ++i) finite &= swr_isfin(m.m[i]);
+    if (!finite) swr_expect(c, SWARP_ERR_NON_FINITE);
+    if (!(rs > 0) || !(rt > 0) || !swr_isfin(rs) || !swr_isfin(rt)) swr_expect(c, SWARP_ERR_RESOLUTION);
+    if (finite && (m.m[3] != 0 || m.m[7] != 0 || m.m[11] != 0)) swr_expect(c, SWARP_ERR_STABILIZE_WARPED);
+    else if (finite && m.m[15] == 0) swr_expect(c, SWARP_ERR_SINGULAR);
+    swr_domain(c, SWARP_ERR_NON_FINITE);
+    swarp_mat4 keep = m;
+    if (in_place) out = m, pout = pm ? &out : NULL, pm = pm ? &out : NULL; /* out may alias m */
+    if (in_place && !pout) swr_expect(c, SWARP_ERR_NULL_POINTER);
+    swarp_status st = SWR_CALL(c, swarp_stabilize_snap_matrix(pm, rs, rt, po, pout));
+    if (in_place && swarp_status_is_error(st))
+        SWR_CHECK(c, memcmp(&out, &keep, sizeof out) == 0, "error %s but the matrix (in place) was written", swarp_status_name(st));
+    if (!swr_done(c, st)) return;
+    for (int i = 0; i < 16; ++i) swr_rec(c, "snapped", out.m[i]);
+    /* the linear part is kept, the translation moves by at most half a texel,
+     * and the origin lands on a texel corner */
+    for (int i = 0; i < 12; ++i) SWR_CHECK(c, out.m[i] == keep.m[i], "element %d changed", i);
+    SWR_CHECK(c, out.m[15] == keep.m[15] && out.m[14] == keep.m[14], "w or z translation changed");
+    const double res[2] = {rs, rt};
+    w = keep.m[15];
+    for (int a = 0; a < 2; ++a) {
+        ld shift = (ld)out.m[12 + a] - keep.m[12 + a];
+        ld h = (ld)out.m[a] * o.x + (ld)out.m[4 + a] * o.y + (ld)out.m[8 + a] * o.z + out.m[12 + a];
+        ld u = (h / w + 1) * res[a] / 2; /* texel coordinate of the origin */
+        {   /* before the snap: half-way between two corners is a tie the rounding decides */
+            ld h0 = h - shift, u0 = (h0 / w + 1) * res[a] / 2;
+            ld hm = fabsl((ld)keep.m[a] * o.x) + fabsl((ld)keep.m[4 + a] * o.y) + fabsl((ld)keep.m[8 + a] * o.z) + fabsl((ld)keep.m[12 + a]);
+            if (fabsl(u0 - floorl(u0) - 0.5L) < 1e-6L + 64 * DBL_EPSILON * (hm / fabsl((ld)w) + 1) * res[a]) c->rounding_edge = 1;
+        }
+        /* the origin's clip x is resolved to eps times the sum of its terms */
+        ld hmag = fabsl((ld)out.m[a] * o.x) + fabsl((ld)out.m[4 + a] * o.y) + fabsl((ld)out.m[8 + a] * o.z) + fabsl((ld)out.m[12 + a]);
+        ld lin = (hmag / fabsl((ld)w) + 1) * res[a]; /* (x/w + 1) res/2: the + 1 rounds too */
+        SWR_CHECK_ACC(c, fabsl(shift) <= fabsl((ld)w) / res[a] * (1 + 1e-9L) + 16 * DBL_EPSILON * hmag, "axis %d: shifted by %Lg > half a texel", a,
+                      shift);
+        SWR_CHECK_ACC(c, fabsl(u - roundl(u)) <= 1e-6L + 8 * DBL_EPSILON * lin, "axis %d: the origin at texel %.17Lg, not a corner", a, u);
+    }
+}
+
+static void e_stabilize_directional(swr_ctx* c) {
+    SKIP_IF_MISSING(c, swarp_stabilize_directional);
+    swarp_camera cam;
+    gen_cam(c, &cam);
+    static const double brk_n[] = {1e-6, 1.0};
+    double n = swr_num(c, 1e-6, 10, brk_n, 2), f = swr_one_in(c, 16) ? n : n * swr_num(c, 1.5, 1e5, NULL, 0);
+    swarp_vec3 ld_ = V3(swr_num(c, -1, 1, NULL, 0), swr_num(c, -1, -0.05, NULL, 0), swr_num(c, -1, 1, NULL, 0));
+    if (swr_one_in(c, 8)) ld_ = unit3(cam.dir); /* along the view */
+    if (swr_one_in(c, 32)) ld_ = V3(0, 0, 0);
+    swarp_vec3 pts[8];
+    size_t np = swr_one_in(c, 8) ? 0 : 1 + swr_u8(c) % 8;
+    for (size_t i = 0; i < 8; ++i)
+        pts[i] = V3(cam.eye.x + swr_num_in(c, -1, 1, NULL, 0) * f, cam.eye.y + swr_num_in(c, -1, 1, NULL, 0) * f,
+                    cam.eye.z + swr_num_in(c, -1, 1, NULL, 0) * f);
+    swarp_aabb box = {V3(cam.eye.x - 2 * f, cam.eye.y - 2 * f, cam.eye.z - 2 * f), V3(cam.eye.x + 2 * f, cam.eye.y + f, cam.eye.z + 2 * f)};
+    if (swr_one_in(c, 16)) box.min.x = box.max.x + 1;
+    int use_box = swr_one_in(c, 2);
+    static const double brk_res[] = {2.0, 1.0, 2048.0};
+    uint32_t res = swr_one_in(c, 16) ? swr_u8(c) % 3 : (uint32_t)swr_num_in(c, 2, 8192, brk_res, 3);
+    swarp_stabilize_options o;
+    memset(&o, 0, sizeof o);
+    o.mode = (swarp_stabilize_mode)swr_enum(c, 4);
+    o.levels = swr_one_in(c, 2) ? 0 : swr_u8(c);
+    o.origin = V3(swr_offset(c), 0, swr_offset(c));
+    o.level_max_size = swr_one_in(c, 2) ? 0 : swr_num(c, 0, 1e4, NULL, 0);
+    o.depth = (swarp_depth_range)swr_enum(c, 3);
+    o._reserved[swr_u8(c) % 4] = swr_reserved(c);
+    int use_o = !swr_one_in(c, 4);
+    int mode = use_o ? (int)o.mode : 0;
+    const swarp_camera* pc = swr_in(c, &cam);
+    const swarp_vec3* pd = swr_in(c, &ld_);
+    const swarp_vec3* pp = np ? (swr_null(c) ? NULL : pts) : NULL;
+    if (np && !pp) (mode == 2 ? swr_domain : swr_expect)(c, SWARP_ERR_NULL_POINTER); /* SPHERE: points may be NULL */
+    swarp_mat4 M;
+    swarp_stabilize_report rep;
+    swarp_mat4* pm = swr_out(c, &M, sizeof M, SWR_REQ);
+    swarp_stabilize_report* pr = swr_out(c, &rep, sizeof rep, SWR_OPT);
+    expect_cam(c, &cam);
+    FIN(c, n);
+    FIN(c, f);
+    if (swr_isfin(n) && swr_isfin(f) && !(n > 0 && f > n)) swr_expect(c, SWARP_ERR_NEAR_FAR);
+    if (!fin3(&ld_)) swr_expect(c, SWARP_ERR_NON_FINITE);
+    else if (ld_.x == 0 && ld_.y == 0 && ld_.z == 0) swr_expect(c, SWARP_ERR_ZERO_VECTOR);
+    if (res < 2) swr_expect(c, SWARP_ERR_RESOLUTION);
+    if (use_o) {
+        if (mode < 0 || mode > 3 || (int)o.depth < 0 || (int)o.depth > 2) swr_expect(c, SWARP_ERR_UNKNOWN_ENUM);
+        for (int i = 0; i < 4; ++i)
+            if (o._reserved[i]) swr_expect(c, SWARP_ERR_RESERVED_NONZERO);
+        if (!swr_isfin(o.level_max_size)) swr_domain(c, SWARP_ERR_NON_FINITE);
+        swr_domain(c, SWARP_ERR_OUT_OF_RANGE);
+    }
+    if (np == 0 && mode != 2) swr_domain(c, SWARP_ERR_NULL_POINTER), swr_domain(c, SWARP_ERR_INVALID_ARGUMENT), swr_domain(c, SWARP_ERR_OUT_OF_RANGE);
+    if (use_box && box.min.x > box.max.x) swr_domain(c, SWARP_ERR_BOX_INVERTED), swr_domain(c, SWARP_ERR_OUT_OF_RANGE);
+    swr_domain(c, SWARP_ERR_DEGENERATE);
+    /* FINDING (docs/quality.md): NON_FINITE for finite arguments (e.g. LEVELS
+     * with one body point of a 1e-6..7e-5 split at origin 3e6) */
+    if (!use_o || swr_isfin(o.level_max_size)) swr_finding_status(c, SWARP_ERR_NON_FINITE);
+    if (vmax3(cam.eye) > 1e300 || f > 1e300) swr_domain(c, SWARP_ERR_NON_FINITE); /* an overflow before the other checks */
+    swr_cond(c, (vmax3(cam.eye) + vmax3(o.origin) + f) / n);
+    swr_args(c, "eye (%g %g %g) dir (%g %g %g) fovy %g aspect %g n %.17g f %.17g light (%g %g %g) np %zu res %u mode %d levels %u origin (%g %g %g) lms %g box %d",
+             cam.eye.x, cam.eye.y, cam.eye.z, cam.dir.x, cam.dir.y, cam.dir.z, cam.fovy, cam.aspect, n, f, ld_.x, ld_.y, ld_.z, np, res,
+             mode, o.levels, o.origin.x, o.origin.y, o.origin.z, o.level_max_size, use_box);
+    swarp_status st = SWR_CALL(c, swarp_stabilize_directional(pc, n, f, pd, pp, np, use_box ? &box : NULL, res, use_o ? &o : NULL, pm, pr));
+    if (!swr_done(c, st)) return;
+    for (int i = 0; i < 16; ++i) swr_rec(c, "matrix", M.m[i]);
+    if (!pr) return;
+    swr_rec(c, "texel x", rep.texel_size_x), swr_rec(c, "texel y", rep.texel_size_y);
+    swr_rec(c, "offset x", rep.offset_x), swr_rec(c, "offset y", rep.offset_y);
+    SWR_CHECK(c, rep.texel_size_x > 0 && rep.texel_size_y > 0, "texel sizes %g %g", rep.texel_size_x, rep.texel_size_y);
+    if (mode == 2 || mode == 3) { /* snapped: the centre offsets are whole texels */
+        ld ux = (ld)rep.offset_x / rep.texel_size_x, uy = (ld)rep.offset_y / rep.texel_size_y;
+        SWR_CHECK_ACC(c, fabsl(ux - roundl(ux)) <= 1e-6L + 8 * DBL_EPSILON * fabsl(ux) && fabsl(uy - roundl(uy)) <= 1e-6L + 8 * DBL_EPSILON * fabsl(uy),
+                      "offsets %.17Lg, %.17Lg texels: not whole", ux, uy);
+    }
+    if (mode == 2) { /* the split frustum's corners map into the square (matrix takes p - origin) */
+        swarp_vec3 d = unit3(cam.dir), up = unit3(cam.up), r;
+        r = V3(d.y * up.z - d.z * up.y, d.z * up.x - d.x * up.z, d.x * up.y - d.y * up.x);
+        r = unit3(r);
+        up = V3(r.y * d.z - r.z * d.y, r.z * d.x - r.x * d.z, r.x * d.y - r.y * d.x);
+        double ty = tan(cam.fovy / 2), tx = ty * cam.aspect;
+        for (int k = 0; k < 8; ++k) {
+            double z = (k & 4) ? f : n, sx = (k & 1) ? 1 : -1, sy = (k & 2) ? 1 : -1;
+            ld q[3] = {(ld)cam.eye.x + z * (d.x + sx * tx * r.x + sy * ty * up.x) - o.origin.x,
+                       (ld)cam.eye.y + z * (d.y + sx * tx * r.y + sy * ty * up.y) - o.origin.y,
+                       (ld)cam.eye.z + z * (d.z + sx * tx * r.z + sy * ty * up.z) - o.origin.z};
+            ld h[4];
+            for (int row = 0; row < 4; ++row) h[row] = M.m[row] * q[0] + M.m[4 + row] * q[1] + M.m[8 + row] * q[2] + M.m[12 + row];
+            double tol = 1e-6 + 64 * DBL_EPSILON * c->cond;
+            SWR_CHECK_ACC(c, fabsl(h[0] / h[3]) <= 1 + tol && fabsl(h[1] / h[3]) <= 1 + tol, "corner %d maps to (%Lg, %Lg)", k,
+                          h[0] / h[3], h[1] / h[3]);
+        }
+    }
+}
+
 const swr_entry swr_entries_splits[] = {
     {"swarp_atlas_layout", "splits", e_atlas_layout},
     {"swarp_atlas_lsc", "splits", e_atlas_lsc},
@@ -429,5 +1250,16 @@ const swr_entry swr_entries_splits[] = {
     {"swarp_cascade_blend", "splits", e_cascade_blend},
     {"swarp_cascade_splits", "splits", e_cascade_splits},
     {"swarp_cascade_nopt", "splits", e_cascade_nopt},
+    {"swarp_stabilize_directional", "splits", e_stabilize_directional},
+    {"swarp_stabilize_snap_matrix", "splits", e_stabilize_snap_matrix},
+    {"swarp_bias_texel_size", "splits", e_bias_texel_size},
+    {"swarp_bias_kozlov", "splits", e_bias_kozlov},
+    {"swarp_bias_normal_offset", "splits", e_bias_normal_offset},
+    {"swarp_bias_slope_scaled", "splits", e_bias_slope_scaled},
+    {"swarp_bias_depth_per_world", "splits", e_bias_depth_per_world},
+    {"swarp_bias_receiver_plane", "splits", e_bias_receiver_plane},
+    {"swarp_cascade_view_depth", "splits", e_cascade_view_depth},
+    {"swarp_cascade_select_best", "splits", e_cascade_select_best},
+    {"swarp_cascade_error_curve", "splits", e_cascade_error_curve},
     {NULL, NULL, NULL},
 };

@@ -194,16 +194,28 @@ int swr_untouched(const void* p, size_t n) {
 }
 
 /* A property failure: on extreme inputs a finding (see swr.h). */
-void swr_fail(swr_ctx* c, const char* fmt, ...) {
-    va_list ap;
-    va_start(ap, fmt);
-    if (c->extreme) {
+static void known_as(swr_ctx* c, const char* fmt, va_list ap) {
+    if (!c->finding) {
+        int w = snprintf(c->finding_msg, sizeof c->finding_msg, "KNOWN (%s): ", c->known_as);
+        if (w >= 0 && (size_t)w < sizeof c->finding_msg)
+            vsnprintf(c->finding_msg + w, sizeof c->finding_msg - (size_t)w, fmt, ap);
+    }
+    c->finding++;
+}
+static void vfail(swr_ctx* c, const char* fmt, va_list ap) {
+    if (c->known_as) known_as(c, fmt, ap);
+    else if (c->extreme) {
         if (!c->finding) vsnprintf(c->finding_msg, sizeof c->finding_msg, fmt, ap);
         c->finding++;
     } else {
         if (!c->failed) vsnprintf(c->msg, sizeof c->msg, fmt, ap);
         c->failed++;
     }
+}
+void swr_fail(swr_ctx* c, const char* fmt, ...) {
+    va_list ap;
+    va_start(ap, fmt);
+    vfail(c, fmt, ap);
     va_end(ap);
 }
 /* A structural failure (status, untouched outputs): strict on every input. */
@@ -232,16 +244,10 @@ void swr_known(swr_ctx* c, const char* fmt, ...) {
     va_end(ap);
 }
 
-void swr_fail_acc(swr_ctx* c, const char* fmt, ...) {
+void swr_fail_acc(swr_ctx* c, const char* fmt, ...) { /* the same rule as swr_fail (kept as a name for accuracy checks) */
     va_list ap;
     va_start(ap, fmt);
-    if (c->extreme) {
-        if (!c->finding) vsnprintf(c->finding_msg, sizeof c->finding_msg, fmt, ap);
-        c->finding++;
-    } else {
-        if (!c->failed) vsnprintf(c->msg, sizeof c->msg, fmt, ap);
-        c->failed++;
-    }
+    vfail(c, fmt, ap);
     va_end(ap);
 }
 
@@ -251,20 +257,16 @@ static int in_list(const swarp_status* l, int n, swarp_status s) {
     return 0;
 }
 
-int swr_verdict(swr_ctx* c, swarp_status st, int nout, ...) {
+/* The verdict on regions outs[0..nout) (NULL entries: not passed). */
+static int verdict(swr_ctx* c, swarp_status st, int nout, void* const* outs, const size_t* sizes) {
     c->called = 1;
     c->status = st;
     c->rec[c->n_rec++] = (double)st;
     int is_err = swarp_status_is_error(st);
     if (is_err) {
-        va_list ap;
-        va_start(ap, nout);
-        for (int i = 0; i < nout; ++i) {
-            const void* p = va_arg(ap, const void*);
-            size_t n = va_arg(ap, size_t);
-            if (p && !swr_untouched(p, n)) swr_fail_strict(c, "error %s but output %d was written", swarp_status_name(st), i);
-        }
-        va_end(ap);
+        for (int i = 0; i < nout; ++i)
+            if (outs[i] && !swr_untouched(outs[i], sizes[i]))
+                swr_fail_strict(c, "error %s but output %d was written", swarp_status_name(st), i);
         if (c->n_expect > 0) {
             if (!in_list(c->expect, c->n_expect, st) && !in_list(c->domain, c->n_domain, st)) {
                 char buf[256] = "";
@@ -296,6 +298,37 @@ int swr_verdict(swr_ctx* c, swarp_status st, int nout, ...) {
     return 1;
 }
 
+int swr_verdict(swr_ctx* c, swarp_status st, int nout, ...) {
+    void* outs[16];
+    size_t sizes[16];
+    va_list ap;
+    va_start(ap, nout);
+    for (int i = 0; i < nout && i < 16; ++i) {
+        outs[i] = va_arg(ap, void*);
+        sizes[i] = va_arg(ap, size_t);
+    }
+    va_end(ap);
+    return verdict(c, st, nout < 16 ? nout : 16, outs, sizes);
+}
+
+const void* swr_in(swr_ctx* c, const void* p) {
+    if (!swr_null(c)) return p;
+    swr_expect(c, SWARP_ERR_NULL_POINTER);
+    return NULL;
+}
+void* swr_out(swr_ctx* c, void* p, size_t n, int kind) {
+    swr_fill(p, n);
+    if (c->n_out < (int)(sizeof c->out_p / sizeof c->out_p[0])) {
+        c->out_p[c->n_out] = p;
+        c->out_n[c->n_out++] = n;
+    }
+    if (kind == SWR_NONULL) return p;
+    if (kind == SWR_OPT ? !swr_one_in(c, 4) : !swr_null(c)) return p;
+    if (kind == SWR_REQ) swr_expect(c, SWARP_ERR_NULL_POINTER);
+    return NULL;
+}
+int swr_done(swr_ctx* c, swarp_status st) { return verdict(c, st, c->n_out, c->out_p, c->out_n); }
+
 /* ---- checks ------------------------------------------------------------------ */
 void swr_cond(swr_ctx* c, double k) {
     if (k > c->cond || k != k) c->cond = k;
@@ -319,6 +352,14 @@ void swr_close(swr_ctx* c, const char* what, double got, long double ref, double
     if (!(err <= tol * scale))
         swr_fail_acc(c, "%s = %.17g, reference %.17Lg (error %.3Lg > tol %.3Lg)", what, got, ref, err / scale,
                      (long double)tol);
+}
+
+void swr_close_abs(swr_ctx* c, const char* what, double got, long double ref, double rel, double abs) {
+    /* numerically singular at double precision (64 eps kappa >= 1): no claim */
+    if (64 * DBL_EPSILON * c->cond >= 1) return;
+    long double err = fabsl((long double)got - ref);
+    if (!(err <= rel * fabsl(ref) + abs))
+        swr_fail_acc(c, "%s = %.17g, reference %.17Lg (error %.3Lg > %.3g relative + %.3g)", what, got, ref, err, rel, abs);
 }
 
 void swr_close_cond(swr_ctx* c, const char* what, double got, swr_ref_fn f, const double* args,

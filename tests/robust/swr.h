@@ -57,7 +57,7 @@ typedef struct swr_ctx {
     size_t n_rec;
     int failed;
     char msg[512];
-    char args[384]; /* the decoded arguments, for failure reports */
+    char args[768]; /* the decoded arguments, for failure reports */
     /* An input is extreme when a finite non-zero value has magnitude below
      * 1e-100 (incl. subnormals) or above 1e100.  There, accuracy checks
      * (reference comparisons, the huge-value rule, "valid input rejected")
@@ -90,6 +90,13 @@ typedef struct swr_ctx {
     /* the natural scale of the outputs when larger than the outputs
      * themselves (eta in [-1, 0]: 1); swr_close_cond_floor sets it */
     double out_scale;
+    /* the output regions registered with swr_out (checked by swr_done) */
+    /* non-NULL: property failures are a known problem of the library (this
+     * text says which, docs/quality.md lists it), counted as findings */
+    const char* known_as;
+    int n_out;
+    void* out_p[8];
+    size_t out_n[8];
 } swr_ctx;
 #define SWR_FENV_SET 0x10000
 #define SWR_FENV_FTZ_DAZ 0x20000
@@ -169,6 +176,30 @@ int swr_untouched(const void* p, size_t n);
  * properties; 0 otherwise. */
 int swr_verdict(swr_ctx* c, swarp_status st, int nout, ...);
 
+/* ---- the table-driven shape of an entry (most newer entries) --------------
+ * An entry decodes its arguments, passes every input pointer through swr_in
+ * and every output through swr_out, calls the library inside SWR_CALL and
+ * hands the status to swr_done, which checks it against the expectations and
+ * the registered outputs against the sentinel:
+ *     const swarp_camera* pc = swr_in(c, &cam);          NULL about 1/48: expects NULL_POINTER
+ *     double* po = swr_out(c, &o, sizeof o, SWR_REQ);    prefilled, maybe NULL
+ *     if (!swr_done(c, SWR_CALL(c, swarp_f(pc, po)))) return;   then the properties */
+#define SWR_REQ 0   /* required output: NULL expects SWARP_ERR_NULL_POINTER */
+#define SWR_OPT 1   /* optional output: NULL is valid */
+#define SWR_NONULL 2 /* never passed as NULL */
+const void* swr_in(swr_ctx* c, const void* p);
+void* swr_out(swr_ctx* c, void* p, size_t n, int kind);
+int swr_done(swr_ctx* c, swarp_status st);
+#define SKIP_IF_MISSING(c, f) \
+    do {                      \
+        if (!(f)) {           \
+            (c)->skipped = 1; \
+            return;           \
+        }                     \
+    } while (0)
+#define FIN(c, x) \
+    do { if (!swr_isfin(x)) swr_expect((c), SWARP_ERR_NON_FINITE); } while (0)
+
 /* ---- checks -------------------------------------------------------------- */
 /* Notes the decoded arguments (printed with a failure). */
 void swr_args(swr_ctx* c, const char* fmt, ...)
@@ -212,6 +243,10 @@ void swr_rec(swr_ctx* c, const char* what, double v);
 void swr_rec_inf(swr_ctx* c, const char* what, double v);
 /* Relative comparison with a reference: |got - ref| <= tol * max(|ref|, floor) */
 void swr_close(swr_ctx* c, const char* what, double got, long double ref, double tol, double floor);
+
+/* |got - ref| <= rel |ref| + abs (a relative tolerance plus the absolute
+ * rounding of the inputs, e.g. eps times a coordinate offset) */
+void swr_close_abs(swr_ctx* c, const char* what, double got, long double ref, double rel, double abs);
 
 /* A reference function of up to 8 long double arguments, for
  * swr_close_cond: evaluated in long double from the paper's formula. */
