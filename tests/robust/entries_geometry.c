@@ -611,15 +611,14 @@ static void check_poly(swr_ctx* c, const swarp_polyhedron* P, const char* what, 
               "%s: %u vertices, %u faces", what, P->vertex_count, P->face_count);
     if (P->vertex_count > SWARP_POLY_MAX_VERTICES || P->face_count > SWARP_POLY_MAX_FACES) return;
     /* recorded: what does not depend on the order of the vertices (a SET; the
-     * order may change with the rounding): per axis min, max and mean */
-    double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY}, sum[3] = {0, 0, 0};
-    for (uint32_t i = 0; i < P->vertex_count; ++i) {
-        const double v[3] = {P->vertices[i].x, P->vertices[i].y, P->vertices[i].z};
-        for (int k = 0; k < 3; ++k) lo[k] = fmin(lo[k], v[k]), hi[k] = fmax(hi[k], v[k]), sum[k] += v[k];
+     * order may change with the rounding) nor on near-duplicates: the
+     * support function in 26 directions (rec_point_set; it includes the
+     * per-axis min and max).  The per-axis MEAN recorded before moved by
+     * 3 % of B when a clip's vertex on a face plane came out as one vertex
+     * or as two 1e-12 apart with the rounding mode (the same body). */
+    for (uint32_t i = 0; i < P->vertex_count; ++i)
         SWR_CHECK(c, fin3(&P->vertices[i]), "%s: vertex %u not finite", what, i);
-    }
-    for (int k = 0; k < 3 && P->vertex_count; ++k)
-        swr_rec(c, what, lo[k]), swr_rec(c, what, hi[k]), swr_rec(c, what, sum[k] / P->vertex_count);
+    rec_point_set(c, P->vertices, P->vertex_count);
     for (uint32_t f = 0; f < P->face_count; ++f) {
         const swarp_plane* pl = &P->planes[f];
         double nl = sqrt(pl->a * pl->a + pl->b * pl->b + pl->c * pl->c);
