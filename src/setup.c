@@ -91,9 +91,10 @@ static int sw_point_axis(const swarp_light* light, const swarp_vec3* pts, size_t
  * hence the whole map) jumped between them with the caller's rounding mode
  * (issue 9, fenv test: light_proj 1.04 <-> 1.70 for a flat box seen from
  * its face).  Instead e is the average of the vertices weighted by
- * max(0, 1 - (z_i - z_min) / (SW_NEAREST_TIE_REL · span)), span = the depth
- * extent of the points: exactly the nearest vertex when it is alone (every
- * other vertex deeper by more than the band), the middle of the near-plane
+ * max(0, 1 - (z_i - z_min) / (SW_NEAREST_TIE_REL · span)), span = the
+ * larger of the points' depth extent and their largest coordinate: exactly
+ * the nearest vertex when it is alone (every other vertex deeper by more
+ * than the band), the middle of the near-plane
  * polygon when the vertices tie, and continuous in the inputs in between.
  * The band is 1e-6 of the span: far above the rounding of the depths (a few
  * eps of |z|), so a rounding change moves e by ~eps/1e-6 = 2e-10 of the
@@ -101,14 +102,19 @@ static int sw_point_axis(const swarp_light* light, const swarp_vec3* pts, size_t
  * Depths relative to the eye (the points are camera-relative). */
 #define SW_NEAREST_TIE_REL 1e-6
 static int sw_nearest_vertex(const swarp_vec3* p, size_t n, swarp_vec3 eye, swarp_vec3 v, swarp_vec3* e) {
-    double zmin = INFINITY, zmax = -INFINITY;
+    double zmin = INFINITY, zmax = -INFINITY, mag = 0.0;
     for (size_t i = 0; i < n; ++i) {
-        double z = sw_dot(sw_sub(p[i], eye), v);
+        swarp_vec3 q = sw_sub(p[i], eye);
+        double z = sw_dot(q, v);
         zmin = fmin(zmin, z);
         zmax = fmax(zmax, z);
+        mag = fmax(mag, fmax(fabs(q.x), fmax(fabs(q.y), fabs(q.z))));
     }
     if (!(zmin <= zmax)) return 0;
-    double band = SW_NEAREST_TIE_REL * (zmax - zmin);
+    /* the depths carry rounding of eps times the coordinates' magnitude
+     * (which exceeds the depth extent of a thin split): the band is 1e-6 of
+     * the larger of the two */
+    double band = SW_NEAREST_TIE_REL * fmax(zmax - zmin, mag);
     swarp_vec3 acc = {0, 0, 0};
     double wsum = 0.0;
     for (size_t i = 0; i < n; ++i) {
