@@ -279,6 +279,12 @@ static swarp_vec4 xf(const swarp_mat4* m, swarp_vec3 p) {
 
 static void check_setup_result(swr_ctx* c, const scene_args* s, swarp_status st, const swarp_setup_result* r,
                                const swarp_vec3* pts, size_t count, int have_pts) {
+    /* B of one or two points: the view frustum and the box (or the spot's
+     * pyramid) only touch, in a corner or along an edge; whether they touch
+     * or miss each other (SWARP_ERR_BODY_EMPTY, documented) is decided by the
+     * rounding of the clips (fenv: a 1e6-world box corner at depth 5e-4,
+     * empty under FE_DOWNWARD only). */
+    if (r->point_count <= 2) c->rounding_edge = 1;
     for (int i = 0; i < 16; ++i) {
         swr_rec(c, "light_view", r->light_view.m[i]);
         swr_rec(c, "light_proj", r->light_proj.m[i]);
@@ -1491,6 +1497,11 @@ static void e_setup_follow(swr_ctx* c) {
     expect_scene(c, &s, 1);
     swr_domain(c, SWARP_ERR_CAPACITY), swr_domain(c, SWARP_ERR_FOLLOW_FRAME); /* PSM: a previous light camera out of range */
     scene_cond(c, &s, s.cam.near, s.cam.far);
+    swr_args(c, "eye=(%.17g %.17g %.17g) dir=(%g %g %g) near=%g far=%g light %d dir=(%g %g %g) pos=(%.9g %.9g %.9g) cone %g box=(%.17g %.17g %.17g)-(%.17g %.17g %.17g) tech %d prev %d pcam %d",
+             s.cam.eye.x, s.cam.eye.y, s.cam.eye.z, s.cam.dir.x, s.cam.dir.y, s.cam.dir.z, s.cam.near, s.cam.far, (int)s.light.type,
+             s.light.direction.x, s.light.direction.y, s.light.direction.z, s.light.position.x, s.light.position.y,
+             s.light.position.z, s.light.cone_angle, s.box.min.x, s.box.min.y, s.box.min.z, s.box.max.x, s.box.max.y, s.box.max.z,
+             s.use_opt ? (int)s.opt.technique : -1, have_prev, use_pcam);
     swarp_status st = SWR_CALL(c, swarp_setup_follow(pc, pl, pb, po, use_pcam ? &p.cam : NULL, have_prev ? &prev : NULL, pr, pp,
                                                     SWARP_BODY_MAX_POINTS, pn));
     if (!swr_done(c, st)) return;
