@@ -203,6 +203,9 @@ static void expect_parts(swr_ctx* c, const scene_args* s, int uses_cam_range, in
             swr_expect(c, SWARP_ERR_DEGENERATE);
             swr_domain(c, SWARP_ERR_ZERO_VECTOR);
         }
+        /* sin(angle(dir, up)) on the documented 1e-9 bound (dir drawn 1e-9
+         * from up): DEGENERATE or not is decided by rounding */
+        if (mu > 0 && fabs(sqrt(dot(cr, cr) / (dot(dn, dn) * dot(un, un))) / 1e-9 - 1) < 1e-9) c->rounding_edge = 1;
     }
     for (int i = 0; i < 4; ++i)
         if (cam->_reserved[i]) swr_expect(c, SWARP_ERR_RESERVED_NONZERO);
