@@ -248,13 +248,20 @@ static swarp_status sw_resolve(const swarp_scene_needs* needs, const swarp_budge
      * the centre of the (adjusted) view frustum ([RHS] §3.2.2 treats a
      * narrow point light as directional) */
     if (in->point_light) {
-        swarp_vec3 centre = sw_add(in->eye, sw_scale(in->view, 0.5 * (in->near + in->far)));
-        if (!sw_normalize(sw_sub(in->light_pos, centre), &in->to_light)) return SWARP_ERR_DEGENERATE;
+        /* relative to the eye first: light - (eye + c v) rounded the centre
+         * at the eye's magnitude (1e6 worlds: 1e-10), which turned a light
+         * at the eye (exactly γ = π) by 1e-14 rad with the caller's rounding
+         * mode; (light - eye) is exact there and small nearby */
+        swarp_vec3 to = sw_sub(sw_sub(in->light_pos, in->eye), sw_scale(in->view, 0.5 * (in->near + in->far)));
+        if (!sw_normalize(to, &in->to_light)) return SWARP_ERR_DEGENERATE;
     }
-    double c = sw_dot(in->view, in->to_light);
-    if (c > 1.0) c = 1.0;
-    if (c < -1.0) c = -1.0;
-    in->gamma = acos(c);
+    /* γ = atan2(|v × l|, v · l), not acos(v · l): acos is ill-conditioned
+     * next to 0 and π (d acos/dc = -1/sin γ), where a light along the view
+     * (or a point light at the eye) puts γ; an ulp of c there moved γ by
+     * sqrt(eps) ~ 1.5e-8 and the planner's n' and errors with it (the
+     * caller's rounding mode changed max_error by 1e-7 relative, issue 9).
+     * atan2 of the two components is accurate to an ulp everywhere. */
+    in->gamma = atan2(sw_len(sw_cross(in->view, in->to_light)), sw_dot(in->view, in->to_light));
     in->gamma_f = in->gamma > 0.5 * SWARP_PI ? SWARP_PI - in->gamma : in->gamma;
     return SWARP_OK;
 }

@@ -84,6 +84,51 @@ static int sw_point_axis(const swarp_light* light, const swarp_vec3* pts, size_t
     return sw_gnormalize(sw_sub(c, light->position), a);
 }
 
+/* The nearest vertex e of [WS06] (the WS06 warp centre): the vertex of
+ * least eye depth.  H is usually cut by the near plane, and then several
+ * vertices share that depth exactly: which one is "the" nearest was decided
+ * by the rounding of their depths, and the centre (P's lateral position,
+ * hence the whole map) jumped between them with the caller's rounding mode
+ * (issue 9, fenv test: light_proj 1.04 <-> 1.70 for a flat box seen from
+ * its face).  Instead e is the average of the vertices weighted by
+ * max(0, 1 - (z_i - z_min) / (SW_NEAREST_TIE_REL · span)), span = the
+ * larger of the points' depth extent and their largest coordinate: exactly
+ * the nearest vertex when it is alone (every other vertex deeper by more
+ * than the band), the middle of the near-plane
+ * polygon when the vertices tie, and continuous in the inputs in between.
+ * The band is 1e-6 of the span: far above the rounding of the depths (a few
+ * eps of |z|), so a rounding change moves e by ~eps/1e-6 = 2e-10 of the
+ * polygon's size at most, and far below any real difference in depth.
+ * Depths relative to the eye (the points are camera-relative). */
+#define SW_NEAREST_TIE_REL 1e-6
+static int sw_nearest_vertex(const swarp_vec3* p, size_t n, swarp_vec3 eye, swarp_vec3 v, swarp_vec3* e) {
+    double zmin = INFINITY, zmax = -INFINITY, mag = 0.0;
+    for (size_t i = 0; i < n; ++i) {
+        swarp_vec3 q = sw_sub(p[i], eye);
+        double z = sw_dot(q, v);
+        zmin = fmin(zmin, z);
+        zmax = fmax(zmax, z);
+        mag = fmax(mag, fmax(fabs(q.x), fmax(fabs(q.y), fabs(q.z))));
+    }
+    if (!(zmin <= zmax)) return 0;
+    /* the depths carry rounding of eps times the coordinates' magnitude
+     * (which exceeds the depth extent of a thin split): the band is 1e-6 of
+     * the larger of the two */
+    double band = SW_NEAREST_TIE_REL * fmax(zmax - zmin, mag);
+    swarp_vec3 acc = {0, 0, 0};
+    double wsum = 0.0;
+    for (size_t i = 0; i < n; ++i) {
+        double z = sw_dot(sw_sub(p[i], eye), v);
+        double w = band > 0.0 ? fmax(0.0, 1.0 - (z - zmin) / band) : 1.0;
+        if (!(w > 0.0)) continue;
+        acc = sw_add(acc, sw_scale(sw_sub(p[i], eye), w));
+        wsum += w;
+    }
+    if (!(wsum > 0.0)) return 0;
+    *e = sw_add(eye, sw_scale(acc, 1.0 / wsum));
+    return 1;
+}
+
 /* Everything after B: light view, warp, fit, error model. */
 /* r = a b for an affine b (last row 0 0 0 1: a look-at, or A_fit's
  * columns): 12 fewer products than sw_mul and no loop overhead; the same
@@ -140,14 +185,11 @@ static swarp_status sw_setup_points(const swarp_camera* cam, const swarp_light* 
     sw_camera_basis(cam, &v, &r, &u);
     /* nearest vertex e of H (the receivers) for the WS06 centre */
     const swarp_vec3* ep = NULL;
+    swarp_vec3 e_near;
     if (o->center == SWARP_WARP_CENTER_NEAREST_VERTEX) { /* only the WS06 centre uses it */
         const swarp_vec3* src = H ? H : B;
         size_t ns = H ? nh : nb;
-        double best = INFINITY;
-        for (size_t i = 0; i < ns; ++i) {
-            double z = sw_dot(sw_sub(src[i], cam->eye), v);
-            if (z < best) best = z, ep = &src[i];
-        }
+        if (sw_nearest_vertex(src, ns, cam->eye, v, &e_near)) ep = &e_near;
     }
     swarp_setup_result res;
     memset(&res, 0, sizeof res);

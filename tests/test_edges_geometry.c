@@ -6,6 +6,7 @@
  * bounding box, the view axis, (4.2) through swarp_warp_nopt_pseudo), bad
  * input with its status and outputs untouched. */
 #include <check.h>
+#include <fenv.h>
 #include <float.h>
 #include <math.h>
 #include <stdint.h>
@@ -277,6 +278,113 @@ START_TEST(warp_lispsm_options) {
 }
 END_TEST
 
+/* ---- the caller's rounding mode (issue 9, tests/robust/fenv.c) ------------
+ * Each test runs the library under FE_UPWARD / FE_DOWNWARD / FE_TOWARDZERO
+ * and compares with the default mode: the outputs must agree within 1e-9 of
+ * their largest magnitude (the scenes are well conditioned). */
+static const int tu_modes[] = {FE_UPWARD, FE_DOWNWARD, FE_TOWARDZERO};
+static double mat_rel_diff(const swarp_mat4* a, const swarp_mat4* b) {
+    double scale = 0.0, d = 0.0;
+    for (int i = 0; i < 16; ++i) scale = fmax(scale, fmax(fabs(a->m[i]), fabs(b->m[i])));
+    for (int i = 0; i < 16; ++i) d = fmax(d, fabs(a->m[i] - b->m[i]));
+    return scale > 0 ? d / scale : d;
+}
+
+/* [WS06] nearest vertex e: H cut by the near plane has several vertices at
+ * exactly the near depth; picking one by comparing rounded depths made the
+ * WS06 centre (and light_proj, by 60 %) depend on the rounding mode. */
+START_TEST(setup_nearest_vertex_rounding_mode) {
+    swarp_camera cam;
+    memset(&cam, 0, sizeof cam);
+    cam.eye = (swarp_vec3){0.3, 0.1, -0.2};
+    double dl = sqrt(1.0 + 0.3 * 0.3 + 0.3 * 0.3);
+    cam.dir = (swarp_vec3){1.0 / dl, -0.3 / dl, 0.3 / dl};
+    cam.up = (swarp_vec3){0, 1, 0};
+    cam.fovy = 1.0;
+    cam.aspect = 1.5;
+    cam.near = 1.0;
+    cam.far = 300.0;
+    swarp_light l;
+    memset(&l, 0, sizeof l);
+    l.type = SWARP_LIGHT_DIRECTIONAL;
+    l.direction = (swarp_vec3){-0.889186, -0.156768, 0.542136};
+    swarp_aabb box = {{-20, -10, -40}, {40, 10, 40}};
+    for (int flat = 0; flat < 2; ++flat) {
+        if (flat) { /* a flat box with the eye 1 ulp above it (the fenv case) */
+            box.min.y = box.max.y = -10.0;
+            cam.eye.y = nextafter(-10.0, 0.0);
+        }
+        swarp_setup_options o;
+        memset(&o, 0, sizeof o);
+        o.technique = SWARP_TECHNIQUE_LISPSM;
+        o.center = SWARP_WARP_CENTER_NEAREST_VERTEX;
+        swarp_setup_result r0, r;
+        swarp_status s0 = swarp_setup(&cam, &l, &box, &o, &r0, NULL, 0, NULL);
+        ck_assert_msg(!swarp_status_is_error(s0), "%s", swarp_status_name(s0));
+        for (size_t m = 0; m < sizeof tu_modes / sizeof tu_modes[0]; ++m) {
+            fesetround(tu_modes[m]);
+            swarp_status s = swarp_setup(&cam, &l, &box, &o, &r, NULL, 0, NULL);
+            fesetround(FE_TONEAREST);
+            ck_assert_int_eq(s, s0);
+            double dp = mat_rel_diff(&r.light_proj, &r0.light_proj), dm = mat_rel_diff(&r.matrix, &r0.matrix);
+            ck_assert_msg(dp < 1e-9 && dm < 1e-9, "flat %d mode %zu: light_proj differs by %g, matrix by %g", flat, m, dp, dm);
+        }
+    }
+}
+END_TEST
+
+/* The planner's γ next to π (a light travelling along the view): acos of
+ * the rounded cosine moved γ by sqrt(eps) ~ 1e-8 with the rounding mode and
+ * the predicted errors by 1e-7 relative; atan2(|v × l|, v · l) is exact to
+ * an ulp.  A point light at the eye of a 1e6 world: the direction to the
+ * frustum centre was rounded at the eye's magnitude (γ off π by 1e-14,
+ * max_error by 3e-9 between modes); relative to the eye it is exact.  Independent reference: γ = π - (angle between the directions),
+ * evaluated here from the construction. */
+START_TEST(plan_gamma_rounding_mode) {
+    for (int k = 0; k < 8; ++k) {
+        swarp_scene_needs n;
+        swarp_budget b;
+        memset(&n, 0, sizeof n);
+        memset(&b, 0, sizeof b);
+        n.camera.eye = (swarp_vec3){1e3 * k, 5.0, -3.0 * k};
+        n.camera.dir = (swarp_vec3){0.3 + 0.1 * k, -0.4, 0.7 - 0.05 * k};
+        n.camera.up = (swarp_vec3){0, 1, 0};
+        n.camera.fovy = 1.0;
+        n.camera.aspect = 1.5;
+        n.camera.near = 0.5;
+        n.camera.far = 2000.0;
+        if (k < 4) {
+            n.light.type = SWARP_LIGHT_DIRECTIONAL;
+            n.light.direction = n.camera.dir; /* travelling along the view: γ = π */
+        } else { /* a point light at the eye of a 1e6 world: γ = π too */
+            n.camera.eye.x += 1e6;
+            n.camera.eye.z -= 1e6;
+            n.light.type = SWARP_LIGHT_POINT;
+            n.light.position = n.camera.eye;
+        }
+        swarp_plan_chain ch;
+        memset(&ch, 0, sizeof ch);
+        ch.warp = SWARP_PLAN_WARP_LISPSM_NREPAR;
+        ch.scheme = SWARP_PLAN_SCHEME_PRACTICAL;
+        ch.split_count = 4;
+        swarp_plan_result p0, p;
+        swarp_status s0 = swarp_plan_evaluate(&n, &b, &ch, &p0);
+        ck_assert_msg(!swarp_status_is_error(s0), "%s", swarp_status_name(s0));
+        ck_assert_msg(fabs(p0.gamma - 3.14159265358979323846) <= 4 * DBL_EPSILON, "gamma %.17g, want pi", p0.gamma);
+        for (size_t m = 0; m < sizeof tu_modes / sizeof tu_modes[0]; ++m) {
+            fesetround(tu_modes[m]);
+            swarp_status s = swarp_plan_evaluate(&n, &b, &ch, &p);
+            fesetround(FE_TONEAREST);
+            ck_assert_int_eq(s, s0);
+            ck_assert_msg(fabs(p.gamma - p0.gamma) <= 4 * DBL_EPSILON, "k %d mode %zu: gamma %.17g vs %.17g", k, m,
+                          p.gamma, p0.gamma);
+            ck_assert_msg(fabs(p.max_error - p0.max_error) <= 1e-9 * p0.max_error, "k %d mode %zu: max_error %.17g vs %.17g",
+                          k, m, p.max_error, p0.max_error);
+        }
+    }
+}
+END_TEST
+
 int main(void) {
     Suite* s = suite_create("edges_geometry");
     TCase* t = tcase_create("geometry");
@@ -285,6 +393,8 @@ int main(void) {
     tcase_add_test(t, body_from_h_edges);
     tcase_add_test(t, focus_light_view_point_lights);
     tcase_add_test(t, warp_lispsm_options);
+    tcase_add_test(t, setup_nearest_vertex_rounding_mode);
+    tcase_add_test(t, plan_gamma_rounding_mode);
     suite_add_tcase(s, t);
     return tu_run_suite(s) ? 1 : 0;
 }

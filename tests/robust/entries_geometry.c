@@ -104,6 +104,14 @@ static void gen_setup_scene(swr_ctx* c, scene_args* s) {
     double ang = ak < 5 ? angles[ak] : swr_num_in(c, 0, PI_, NULL, 0);
     if (ak == 0 || ak == 3) s->degenerate_light = 1;
     if (ak == 1 || ak == 2) s->degenerate_light = 1;
+    /* the drawn angle lands on the ends too (swr_num_in: exactly 0 or pi, or
+     * within 1e-9/1e-12 of them): the same degenerate configurations.  At
+     * γ = 0 / π the warp axis y is perpendicular to the view, and two
+     * documented decisions take the sign of rounding noise there: which of
+     * ±y the warp runs along (σ = sign(y·v), src/follow.c; a user or
+     * pseudo-near n keeps a strong warp there, so the map flips by 180°)
+     * and whether z_1 > z_0 (n_opt finite, ~1e16, or +inf: uniform) */
+    if (fmin(ang, PI_ - ang) <= 1.000001e-9) s->degenerate_light = 1;
     L->direction = tilt(unit(cam->dir), ang);
     if (swr_one_in(c, 64)) L->direction = v3(0, 0, 0);
     if (swr_one_in(c, 3)) L->direction = v3(swr_num_in(c, -1, 1, NULL, 0), swr_num_in(c, -1, -0.1, NULL, 0), swr_num_in(c, -1, 1, NULL, 0));
@@ -195,6 +203,9 @@ static void expect_parts(swr_ctx* c, const scene_args* s, int uses_cam_range, in
             swr_expect(c, SWARP_ERR_DEGENERATE);
             swr_domain(c, SWARP_ERR_ZERO_VECTOR);
         }
+        /* sin(angle(dir, up)) on the documented 1e-9 bound (dir drawn 1e-9
+         * from up): DEGENERATE or not is decided by rounding */
+        if (mu > 0 && fabs(sqrt(dot(cr, cr) / (dot(dn, dn) * dot(un, un))) / 1e-9 - 1) < 1e-9) c->rounding_edge = 1;
     }
     for (int i = 0; i < 4; ++i)
         if (cam->_reserved[i]) swr_expect(c, SWARP_ERR_RESERVED_NONZERO);
@@ -243,6 +254,17 @@ static void expect_parts(swr_ctx* c, const scene_args* s, int uses_cam_range, in
                                        SWARP_ERR_DEGENERATE};
     for (size_t i = 0; i < sizeof dom / sizeof dom[0]; ++i) swr_domain(c, dom[i]);
     if (s->degenerate_light) c->rounding_edge = 1;
+    /* PSM with a directional light perpendicular to the view (γ = 90°, the
+     * drawn angle pi/2): the light is at infinity in post-perspective space
+     * (τ = w_l/|q_h| = 0, src/psm.c), and SWARP_INFO_PSM_INVERSE (w_l < 0,
+     * the light behind the viewer) is the sign of rounding noise there.  The
+     * matrices are continuous across it (orthographic rows for |τ| < 1e-9);
+     * the status is a documented threshold decision. */
+    if (s->use_opt && s->opt.technique == SWARP_TECHNIQUE_PSM && ((int)s->light.type == 0 || (int)s->light.type == 1) &&
+        fin3(&s->light.direction) && fin3(&s->cam.dir)) {
+        swarp_vec3 a = unit(s->cam.dir), b = unit(s->light.direction);
+        if (fabs(dot(a, b)) < 1e-12) c->rounding_edge = 1;
+    }
 }
 
 static void expect_scene(swr_ctx* c, const scene_args* s, int uses_cam_range) {
@@ -260,22 +282,40 @@ static swarp_vec4 xf(const swarp_mat4* m, swarp_vec3 p) {
 
 static void check_setup_result(swr_ctx* c, const scene_args* s, swarp_status st, const swarp_setup_result* r,
                                const swarp_vec3* pts, size_t count, int have_pts) {
+    /* B of one or two points: the view frustum and the box (or the spot's
+     * pyramid) only touch, in a corner or along an edge; whether they touch
+     * or miss each other (SWARP_ERR_BODY_EMPTY, documented) is decided by the
+     * rounding of the clips (fenv: a 1e6-world box corner at depth 5e-4,
+     * empty under FE_DOWNWARD only). */
+    if (r->point_count <= 2) c->rounding_edge = 1;
     for (int i = 0; i < 16; ++i) {
         swr_rec(c, "light_view", r->light_view.m[i]);
         swr_rec(c, "light_proj", r->light_proj.m[i]);
         swr_rec(c, "matrix", r->matrix.m[i]);
     }
     /* n_eye, n_light: "+inf uniform" (documented for the uniform technique
-     * and for SWARP_INFO_WARP_UNIFORM) */
-    int uniform = s->use_opt && s->opt.technique == SWARP_TECHNIQUE_UNIFORM;
-    if (uniform && (r->n_eye == INFINITY || r->n_light == INFINITY)) {
-        if (c->n_rec + 2 <= SWR_MAX_REC) {
-            c->rec[c->n_rec++] = r->n_eye;
-            c->rec[c->n_rec++] = r->n_light;
+     * and for SWARP_INFO_WARP_UNIFORM).  Recorded as the warp strengths
+     * e = (view_far - view_near)/n (0: uniform), not as n: the map depends
+     * on 1/n continuously (src/warp.c: w = 1 + (y - y_min)/n, the uniform
+     * map exactly at 1/n = 0), and as the view turns perpendicular to the
+     * warp axis (a light (anti)parallel to the view) n_opt -> inf with
+     * z_1 - z_0 -> 0: n = 5e15 and n = 1.6e16 there are both "uniform to
+     * 1e-13" and give the same map, but compared as n they differ by 200 %.
+     * e keeps n's relative precision where the warp is strong (e large,
+     * itself the call's scale) and is compared to the map's own precision
+     * where it is weak (e small against the other outputs). */
+    {
+        int uniform = s->use_opt && s->opt.technique == SWARP_TECHNIQUE_UNIFORM;
+        const double n2[2] = {r->n_eye, r->n_light};
+        for (int k = 0; k < 2; ++k) {
+            double n = n2[k];
+            SWR_CHECK(c, n == n && n != -INFINITY, "%s = %g", k ? "n_light" : "n_eye", n);
+            SWR_CHECK(c, n != INFINITY || uniform || st == SWARP_INFO_WARP_UNIFORM,
+                      "%s = +inf with %s (only SWARP_INFO_WARP_UNIFORM may give +inf)", k ? "n_light" : "n_eye",
+                      swarp_status_name(st));
+            double e = n == INFINITY ? 0.0 : (r->view_far - r->view_near) / n;
+            if (c->n_rec < SWR_MAX_REC) c->rec[c->n_rec++] = e;
         }
-    } else {
-        swr_rec_inf(c, "n_eye", r->n_eye);
-        swr_rec_inf(c, "n_light", r->n_light);
     }
     swr_rec(c, "max_mx", r->max_mx);
     swr_rec(c, "max_mz", r->max_mz);
@@ -435,6 +475,31 @@ static void e_setup_range(swr_ctx* c) {
     e_setup_common(c, 1);
 }
 
+/* B is a point SET: the order in which the clipper emits the vertices and
+ * whether two vertices 1e-12 apart are merged into one (poly.c) follow from
+ * comparisons of rounded values, so another rounding mode may list the same
+ * body in another order or with one near-duplicate more or less.  Comparing
+ * the points index by index (as this entry did) then reports a permutation
+ * as a difference of the size of B.  What is recorded instead is B's support
+ * function h(u) = max_i u.p_i in 26 fixed directions (the axes, the face and
+ * the corner diagonals): it does not depend on the order or on duplicates,
+ * and |h_A(u) - h_B(u)| <= d_H(A, B) for unit u, so equal records within the
+ * fenv tolerance mean the hulls agree to that Hausdorff distance in these
+ * directions (and bit-identical points give bit-identical records: the
+ * threads test keeps its meaning).  The count is not recorded (a merged
+ * near-duplicate changes it without changing the body). */
+static void rec_point_set(swr_ctx* c, const swarp_vec3* pts, size_t n) {
+    for (int a = -1; a <= 1; ++a)
+        for (int b = -1; b <= 1; ++b)
+            for (int d = -1; d <= 1; ++d) {
+                if (!a && !b && !d) continue;
+                double inv = 1.0 / sqrt((double)(a * a + b * b + d * d));
+                double h = -INFINITY;
+                for (size_t i = 0; i < n; ++i) h = fmax(h, (a * pts[i].x + b * pts[i].y + d * pts[i].z) * inv);
+                if (n) swr_rec(c, "h_B(u)", h);
+            }
+}
+
 static void e_body_points(swr_ctx* c) {
     SKIP_IF_MISSING(c, swarp_body_points);
     scene_args s;
@@ -450,12 +515,23 @@ static void e_body_points(swr_ctx* c) {
     else if (!(near > 0 && far > near)) swr_expect(c, SWARP_ERR_NEAR_FAR);
     swr_domain(c, SWARP_ERR_CAPACITY);
     scene_cond(c, &s, near, far);
+    swr_args(c, "eye=(%.17g %.17g %.17g) dir=(%g %g %g) near=%g far=%g light %d dir=(%g %g %g) pos=(%.9g %.9g %.9g) cone %g box=(%g %g %g)-(%g %g %g)",
+             s.cam.eye.x, s.cam.eye.y, s.cam.eye.z, s.cam.dir.x, s.cam.dir.y, s.cam.dir.z, near, far, (int)s.light.type,
+             s.light.direction.x, s.light.direction.y, s.light.direction.z, s.light.position.x, s.light.position.y,
+             s.light.position.z, s.light.cone_angle, s.box.min.x, s.box.min.y, s.box.min.z, s.box.max.x, s.box.max.y, s.box.max.z);
     swarp_vec3 pts[SWARP_BODY_MAX_POINTS];
     size_t count;
     swr_fill(pts, sizeof pts);
     swr_fill(&count, sizeof count);
     swarp_status st = SWR_CALL(c, swarp_body_points(n_cam ? NULL : &s.cam, near, far, n_l ? NULL : &s.light,
                                                    n_b ? NULL : &s.box, n_o ? NULL : pts, cap, n_cnt ? NULL : &count));
+    /* How many vertices B has is decided by rounding when two of them are
+     * within the 1e-12 merge distance or a vertex lies on a clip plane (see
+     * rec_point_set), so a capacity within 2 of the count may give OK in one
+     * rounding mode and CAPACITY in another: a threshold decision. */
+    if (!n_cnt && (st == SWARP_ERR_CAPACITY || !swarp_status_is_error(st)) && count + 2 >= cap && count <= cap + 2 &&
+        cap < SWARP_BODY_MAX_POINTS)
+        c->rounding_edge = 1;
     if (st == SWARP_ERR_CAPACITY) {
         SWR_CHECK(c, swr_untouched(pts, sizeof pts), "CAPACITY but points written");
         if (!n_cnt) SWR_CHECK(c, count > cap && count <= SWARP_BODY_MAX_POINTS, "needed %zu, capacity %zu", count, cap);
@@ -465,10 +541,8 @@ static void e_body_points(swr_ctx* c) {
     SWR_CHECK(c, count <= cap && count <= SWARP_BODY_MAX_POINTS, "count %zu", count);
     double tol = 1e-9 * (fabs(s.box.min.x) + fabs(s.box.max.x) + fabs(s.box.min.y) + fabs(s.box.max.y) +
                          fabs(s.box.min.z) + fabs(s.box.max.z) + 1);
+    rec_point_set(c, pts, count < SWARP_BODY_MAX_POINTS ? count : SWARP_BODY_MAX_POINTS);
     for (size_t i = 0; i < count && i < SWARP_BODY_MAX_POINTS; ++i) {
-        swr_rec(c, "B.x", pts[i].x);
-        swr_rec(c, "B.y", pts[i].y);
-        swr_rec(c, "B.z", pts[i].z);
         SWR_CHECK_ACC(c, pts[i].x >= s.box.min.x - tol && pts[i].x <= s.box.max.x + tol && pts[i].y >= s.box.min.y - tol &&
                              pts[i].y <= s.box.max.y + tol && pts[i].z >= s.box.min.z - tol && pts[i].z <= s.box.max.z + tol,
                       "point %zu of B outside the scene box", i);
@@ -546,15 +620,14 @@ static void check_poly(swr_ctx* c, const swarp_polyhedron* P, const char* what, 
               "%s: %u vertices, %u faces", what, P->vertex_count, P->face_count);
     if (P->vertex_count > SWARP_POLY_MAX_VERTICES || P->face_count > SWARP_POLY_MAX_FACES) return;
     /* recorded: what does not depend on the order of the vertices (a SET; the
-     * order may change with the rounding): per axis min, max and mean */
-    double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY}, sum[3] = {0, 0, 0};
-    for (uint32_t i = 0; i < P->vertex_count; ++i) {
-        const double v[3] = {P->vertices[i].x, P->vertices[i].y, P->vertices[i].z};
-        for (int k = 0; k < 3; ++k) lo[k] = fmin(lo[k], v[k]), hi[k] = fmax(hi[k], v[k]), sum[k] += v[k];
+     * order may change with the rounding) nor on near-duplicates: the
+     * support function in 26 directions (rec_point_set; it includes the
+     * per-axis min and max).  The per-axis MEAN recorded before moved by
+     * 3 % of B when a clip's vertex on a face plane came out as one vertex
+     * or as two 1e-12 apart with the rounding mode (the same body). */
+    for (uint32_t i = 0; i < P->vertex_count; ++i)
         SWR_CHECK(c, fin3(&P->vertices[i]), "%s: vertex %u not finite", what, i);
-    }
-    for (int k = 0; k < 3 && P->vertex_count; ++k)
-        swr_rec(c, what, lo[k]), swr_rec(c, what, hi[k]), swr_rec(c, what, sum[k] / P->vertex_count);
+    rec_point_set(c, P->vertices, P->vertex_count);
     for (uint32_t f = 0; f < P->face_count; ++f) {
         const swarp_plane* pl = &P->planes[f];
         double nl = sqrt(pl->a * pl->a + pl->b * pl->b + pl->c * pl->c);
@@ -621,6 +694,23 @@ static void check_depths(swr_ctx* c, const swarp_polyhedron* P, const swarp_came
  * box), for the functions that take one; rarely a corrupted one (a caller's
  * bad struct: counts above the maxima, an index past the vertices, a NaN
  * vertex) with the status it calls for. */
+/* The library leaves a polyhedron's unused slots unspecified (it may copy
+ * a stack temporary whole); the corruptions below and poly_scale read past
+ * the counts, so the generated polyhedron keeps only its used slots, the
+ * rest zero (valgrind: uninitialised reads otherwise). */
+static void poly_keep_used(swarp_polyhedron* P) {
+    swarp_polyhedron T = *P;
+    memset(P, 0, sizeof *P);
+    P->vertex_count = T.vertex_count, P->face_count = T.face_count;
+    for (uint32_t i = 0; i < T.vertex_count && i < SWARP_POLY_MAX_VERTICES; ++i) P->vertices[i] = T.vertices[i];
+    for (uint32_t f = 0; f < T.face_count && f < SWARP_POLY_MAX_FACES; ++f) {
+        P->planes[f] = T.planes[f];
+        P->face_vertex_count[f] = T.face_vertex_count[f];
+        for (uint32_t k = 0; k < T.face_vertex_count[f] && k < SWARP_POLY_MAX_FACE_VERTICES; ++k)
+            P->face_vertices[f][k] = T.face_vertices[f][k];
+    }
+}
+
 static void gen_poly(swr_ctx* c, const scene_args* s, swarp_polyhedron* P) {
     memset(P, 0, sizeof *P);
     uint8_t k = swr_u8(c) % 4;
@@ -632,6 +722,7 @@ static void gen_poly(swr_ctx* c, const scene_args* s, swarp_polyhedron* P) {
         swarp_aabb b = {{0, 0, 0}, {1, 1, 1}};
         if (swarp_poly_from_aabb) swarp_poly_from_aabb(&b, P);
     }
+    poly_keep_used(P);
     if (swr_one_in(c, 48)) { /* corrupt */
         uint8_t how = swr_u8(c) % 4;
         if (how == 0) P->vertex_count = SWARP_POLY_MAX_VERTICES + 1 + swr_u8(c);
@@ -1427,6 +1518,11 @@ static void e_setup_follow(swr_ctx* c) {
     expect_scene(c, &s, 1);
     swr_domain(c, SWARP_ERR_CAPACITY), swr_domain(c, SWARP_ERR_FOLLOW_FRAME); /* PSM: a previous light camera out of range */
     scene_cond(c, &s, s.cam.near, s.cam.far);
+    swr_args(c, "eye=(%.17g %.17g %.17g) dir=(%g %g %g) near=%g far=%g light %d dir=(%g %g %g) pos=(%.9g %.9g %.9g) cone %g box=(%.17g %.17g %.17g)-(%.17g %.17g %.17g) tech %d prev %d pcam %d",
+             s.cam.eye.x, s.cam.eye.y, s.cam.eye.z, s.cam.dir.x, s.cam.dir.y, s.cam.dir.z, s.cam.near, s.cam.far, (int)s.light.type,
+             s.light.direction.x, s.light.direction.y, s.light.direction.z, s.light.position.x, s.light.position.y,
+             s.light.position.z, s.light.cone_angle, s.box.min.x, s.box.min.y, s.box.min.z, s.box.max.x, s.box.max.y, s.box.max.z,
+             s.use_opt ? (int)s.opt.technique : -1, have_prev, use_pcam);
     swarp_status st = SWR_CALL(c, swarp_setup_follow(pc, pl, pb, po, use_pcam ? &p.cam : NULL, have_prev ? &prev : NULL, pr, pp,
                                                     SWARP_BODY_MAX_POINTS, pn));
     if (!swr_done(c, st)) return;

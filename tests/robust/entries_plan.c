@@ -118,7 +118,15 @@ static void check_plan(swr_ctx* c, swarp_status st, const swarp_budget* b, const
     swr_rec(c, "gamma", p->gamma);
     for (uint32_t i = 0; i <= K; ++i) swr_rec(c, "split", p->splits[i]);
     for (uint32_t i = 0; i < K; ++i) {
-        if (c->n_rec < SWR_MAX_REC) c->rec[c->n_rec++] = p->n_prime[i]; /* +inf = uniform (documented) */
+        /* n' (+inf = uniform, documented) recorded as the warp strength
+         * (split length)/n', 0 for uniform: the map depends on 1/n'
+         * continuously, and next to the uniform limit n' is as large as the
+         * rounding noise makes it (4e6 vs 4e7, or DBL_MAX vs +inf when the
+         * caller's directed rounding turns the overflow into DBL_MAX), all
+         * the same map; compared as n' they differ by 100 % (as in
+         * swarp_setup's entry, entries_geometry.c). */
+        if (c->n_rec < SWR_MAX_REC)
+            c->rec[c->n_rec++] = p->n_prime[i] == INFINITY ? 0.0 : (p->splits[i + 1] - p->splits[i]) / p->n_prime[i];
         SWR_CHECK(c, p->n_prime[i] > 0, "n_prime[%u] = %g", i, p->n_prime[i]);
         swr_rec(c, "split_max_mx", p->split_max_mx[i]);
         swr_rec(c, "split_max_mz", p->split_max_mz[i]);
