@@ -25,16 +25,6 @@
 /* Under AddressSanitizer (about 20x slower) the walks take every 20th step
  * (the follow rule then sees 0.2° steps, still continuous: the refinement
  * checks run on the steep ones); the 0.01° walks run in the normal build. */
-#if defined(__SANITIZE_ADDRESS__)
-#define SW_UNDER_ASAN 1
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define SW_UNDER_ASAN 1
-#endif
-#endif
-#ifndef SW_UNDER_ASAN
-#define SW_UNDER_ASAN 0
-#endif
 
 /* Check's ck_assert writes its location to a pipe on every call (15 million
  * writes for the walks): the hot loops use this, which only calls Check on

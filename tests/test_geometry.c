@@ -17,16 +17,6 @@
 /* Under AddressSanitizer (about 20x slower) the full-circle continuity sweep
  * keeps the 0.01° steps only within 10° of parallel and antiparallel and
  * takes every 10th step elsewhere, so the suite stays within seconds. */
-#if defined(__SANITIZE_ADDRESS__)
-#define SW_UNDER_ASAN 1
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define SW_UNDER_ASAN 1
-#endif
-#endif
-#ifndef SW_UNDER_ASAN
-#define SW_UNDER_ASAN 0
-#endif
 #define DEG (PI / 180.0)
 
 /* ---- PRNG (splitmix64) ---------------------------------------------------- */

@@ -9,6 +9,19 @@
 #ifndef TEST_UTIL_H
 #define TEST_UTIL_H
 
+/* SW_UNDER_ASAN: 1 in an AddressSanitizer build (about 20x slower), where
+ * the long sweeps subsample (each test says how). */
+#if defined(__SANITIZE_ADDRESS__)
+#define SW_UNDER_ASAN 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define SW_UNDER_ASAN 1
+#endif
+#endif
+#ifndef SW_UNDER_ASAN
+#define SW_UNDER_ASAN 0
+#endif
+
 #include <math.h>
 #include <stddef.h>
 #include <stdint.h>
