@@ -909,7 +909,15 @@ static void e_poly_clip_common(swr_ctx* c, int with_box) {
              s.cam.aspect, in.vertex_count, poly_scale(&in), pl.a, pl.b, pl.c, pl.d, box.min.x, box.min.y, box.min.z, box.max.x,
              box.max.y, box.max.z, in_place);
     if (!clip_call(c, &in, &out, in_place, with_box ? NULL : &pl, &box, n_in, n_x, n_out)) return;
-    double sc = fmax(poly_scale(&in), with_box ? box_scale(&box) : fabs(pl.d) / sqrt(pl.a * pl.a + pl.b * pl.b + pl.c * pl.c));
+    /* the plane scaled by its largest normal coefficient (a power-free division, exact enough):
+       a coefficient near DBL_MAX is valid input, and |n|^2 of the raw plane overflows to inf,
+       which made inf/inf = NaN distances here (the library result itself was fine) */
+    swarp_plane pn = pl;
+    if (!with_box) {
+        double m = fmax(fabs(pl.a), fmax(fabs(pl.b), fabs(pl.c)));
+        if (m > 0) pn.a = pl.a / m, pn.b = pl.b / m, pn.c = pl.c / m, pn.d = pl.d / m;
+    }
+    double sc = fmax(poly_scale(&in), with_box ? box_scale(&box) : fabs(pn.d) / sqrt(pn.a * pn.a + pn.b * pn.b + pn.c * pn.c));
     double tol = gtol(sc);
     if (wide(&s.cam)) c->rounding_edge = 1, c->known_as = "clip of a body of a frustum with aspect beyond 1e6 (not a valid input polyhedron)";
     check_poly(c, &out, "clip", tol);
@@ -918,13 +926,13 @@ static void e_poly_clip_common(swr_ctx* c, int with_box) {
         check_in_box(c, &out, &box, tol, "clip result in the box");
         return;
     }
-    double nl = sqrt(pl.a * pl.a + pl.b * pl.b + pl.c * pl.c);
+    double nl = sqrt(pn.a * pn.a + pn.b * pn.b + pn.c * pn.c);
     int all_in = 1, all_out = in.vertex_count > 0;
     for (uint32_t v = 0; v < out.vertex_count && v < SWARP_POLY_MAX_VERTICES; ++v)
-        SWR_CHECK_ACC(c, plane_at(&pl, out.vertices[v]) / nl <= tol, "clip: vertex %u on the removed side by %g", v,
-                      plane_at(&pl, out.vertices[v]) / nl);
+        SWR_CHECK_ACC(c, plane_at(&pn, out.vertices[v]) / nl <= tol, "clip: vertex %u on the removed side by %g", v,
+                      plane_at(&pn, out.vertices[v]) / nl);
     for (uint32_t v = 0; v < in.vertex_count && v < SWARP_POLY_MAX_VERTICES; ++v) {
-        double e = plane_at(&pl, in.vertices[v]) / nl;
+        double e = plane_at(&pn, in.vertices[v]) / nl;
         all_in &= e < -tol;
         all_out &= e > tol;
     }
