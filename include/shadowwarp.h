@@ -837,7 +837,10 @@ typedef struct swarp_warp_info {
  *  P is a perspective along light-space +y with projection centre C, written
  *  in the normalised form w = 1 + (y - y_min)/n, so n = +inf is exactly the
  *  identity-like uniform map (continuous fade as γ -> 0).  Follow it with
- *  swarp_focus_fit(P·L, ...).
+ *  swarp_focus_fit(P·L, ...).  n (out_info->n_light) is at least 1e-6 times
+ *  the largest |y| of B in light space: below that the matrix cannot carry
+ *  the 1 of w next to the rounding of y (w would reach 0 on B), so a smaller
+ *  parameter is raised to this bound (w >= 1 on B to ~1e-9 relative).
  *  @param[in] light_view  L from swarp_focus_light_view
  *  @param[in] cam         the viewer (eye, dir, fovy)
  *  @param[in] near, far   the view depth range the warp refers to (adjusted
