@@ -662,7 +662,9 @@ SWARP_API swarp_status swarp_poly_from_aabb(const swarp_aabb* box, swarp_polyhed
  *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
  *          SWARP_ERR_FOV, SWARP_ERR_NEAR_FAR, SWARP_ERR_ZERO_VECTOR,
  *          SWARP_ERR_DEGENERATE (up parallel to dir),
- *          SWARP_ERR_RESERVED_NONZERO, SWARP_ERR_OUT_OF_RANGE (aspect <= 0). */
+ *          SWARP_ERR_RESERVED_NONZERO, SWARP_ERR_OUT_OF_RANGE (aspect <= 0, or a
+ *          corner beyond the double range: |eye| + far·|(1, tan, aspect·tan)|
+ *          over DBL_MAX). */
 SWARP_API swarp_status swarp_poly_from_camera_range(const swarp_camera* cam, double near,
                                                     double far, swarp_polyhedron* out);
 /** @brief The camera's view frustum V between cam->near and cam->far. */

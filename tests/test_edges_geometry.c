@@ -430,6 +430,25 @@ START_TEST(warp_lispsm_tiny_n) {
 }
 END_TEST
 
+/* Issue 9 finding (swarp_poly_from_camera(_range), hard_cases): far = DBL_MAX
+ * is finite, valid input; its corners overflow, which was reported as
+ * SWARP_ERR_NON_FINITE.  Now the documented SWARP_ERR_OUT_OF_RANGE, output
+ * untouched; just inside the range the frustum is finite. */
+START_TEST(poly_from_camera_overflow) {
+    swarp_camera cam = camera();
+    swarp_polyhedron P;
+    tu_fill(&P.vertices[0].x, 3, -7.25e33);
+    ck_assert_int_eq(swarp_poly_from_camera_range(&cam, 0.5, DBL_MAX, &P), SWARP_ERR_OUT_OF_RANGE);
+    ck_assert(tu_untouched(&P.vertices[0].x, 3, -7.25e33));
+    cam.far = DBL_MAX;
+    ck_assert_int_eq(swarp_poly_from_camera(&cam, &P), SWARP_ERR_OUT_OF_RANGE);
+    ck_assert(tu_untouched(&P.vertices[0].x, 3, -7.25e33));
+    ck_assert_int_eq(swarp_poly_from_camera_range(&cam, 0.5, 1e300, &P), SWARP_OK);
+    for (uint32_t i = 0; i < P.vertex_count; ++i)
+        ck_assert(isfinite(P.vertices[i].x) && isfinite(P.vertices[i].y) && isfinite(P.vertices[i].z));
+}
+END_TEST
+
 int main(void) {
     Suite* s = suite_create("edges_geometry");
     TCase* t = tcase_create("geometry");
@@ -441,6 +460,7 @@ int main(void) {
     tcase_add_test(t, setup_nearest_vertex_rounding_mode);
     tcase_add_test(t, plan_gamma_rounding_mode);
     tcase_add_test(t, warp_lispsm_tiny_n);
+    tcase_add_test(t, poly_from_camera_overflow);
     suite_add_tcase(s, t);
     return tu_run_suite(s) ? 1 : 0;
 }

@@ -494,9 +494,14 @@ static void rec_point_set(swr_ctx* c, const swarp_vec3* pts, size_t n) {
             for (int d = -1; d <= 1; ++d) {
                 if (!a && !b && !d) continue;
                 double inv = 1.0 / sqrt((double)(a * a + b * b + d * d));
-                double h = -INFINITY;
-                for (size_t i = 0; i < n; ++i) h = fmax(h, (a * pts[i].x + b * pts[i].y + d * pts[i].z) * inv);
-                if (n) swr_rec(c, "h_B(u)", h);
+                /* long double: for points near DBL_MAX the sum of three terms overflows
+                   a double (h = inf of finite points); a record beyond DBL_MAX is kept as h/4
+                   (a power of two: the same comparison) */
+                long double h = -INFINITY;
+                for (size_t i = 0; i < n; ++i)
+                    h = fmaxl(h, ((long double)a * pts[i].x + (long double)b * pts[i].y + (long double)d * pts[i].z) * inv);
+                if (fabsl(h) > DBL_MAX) h *= 0.25L;
+                if (n) swr_rec(c, "h_B(u)", (double)h);
             }
 }
 
@@ -753,6 +758,12 @@ static void e_poly_camera_common(swr_ctx* c, int range) {
     swarp_polyhedron* po = swr_out(c, &P, sizeof P, SWR_REQ);
     expect_parts(c, &s, !range, X_CAM);
     swr_domain(c, SWARP_ERR_DEGENERATE); /* up all but parallel to dir */
+    {   /* documented: a corner beyond the double range is SWARP_ERR_OUT_OF_RANGE (long double:
+           the bound itself must not overflow; /16 leaves room for the corners' rounding) */
+        long double ty = tanl(0.5L * s.cam.fovy), tx = ty * s.cam.aspect;
+        long double reach = (long double)vmax(s.cam.eye) + (long double)far * sqrtl(1 + tx * tx + ty * ty);
+        if (fin(far) && fin(s.cam.fovy) && fin(s.cam.aspect) && reach > DBL_MAX / 16) swr_domain(c, SWARP_ERR_OUT_OF_RANGE);
+    }
     scene_cond(c, &s, near, far);
     swr_args(c, "eye (%.17g %.17g %.17g) dir (%.17g %.17g %.17g) up (%g %g %g) fovy %.17g aspect %.17g near %.17g far %.17g",
              s.cam.eye.x, s.cam.eye.y, s.cam.eye.z, s.cam.dir.x, s.cam.dir.y, s.cam.dir.z, s.cam.up.x, s.cam.up.y, s.cam.up.z,
