@@ -449,6 +449,35 @@ START_TEST(poly_from_camera_overflow) {
 }
 END_TEST
 
+/* Issue 9 finding (swarp_setup_points, hard_cases): a scene box reaching to
+ * z = -DBL_MAX (valid) made the sweep length 2 diag(S) overflow, and
+ * swarp_body_points returned 10 inf vertices with SWARP_OK.  B must be
+ * finite: here it is H's 7 vertices swept the short way to the box's max
+ * faces, all inside the box. */
+START_TEST(body_points_box_to_dbl_max) {
+    const swarp_camera cam = {{1366439.6125760672, 20.539473778929995, 1366457.5993474743},
+                              {0.53707230541157913, -0.62290416505919799, -0.56880905399949},
+                              {0, 1, 0}, 1.323016600788782, 1.6748388954771427, 1.3462811061770266,
+                              13462811.061770264, {0, 0, 0, 0}};
+    swarp_light l;
+    memset(&l, 0, sizeof l);
+    l.type = SWARP_LIGHT_DIRECTIONAL;
+    l.direction = (swarp_vec3){-0.086309469311347087, -0.10000000000000001, -0.12764851323017479};
+    const swarp_aabb box = {{1366439.6125760672, -9.3839128190509395, -DBL_MAX},
+                            {1366538.0912439211, 20.539473778929995, 1366557.5993474743}};
+    swarp_vec3 p[SWARP_BODY_MAX_POINTS];
+    size_t n = 0;
+    swarp_status s = swarp_body_points(&cam, cam.near, cam.far, &l, &box, p, SWARP_BODY_MAX_POINTS, &n);
+    ck_assert_msg(!swarp_status_is_error(s), "%s", swarp_status_name(s));
+    ck_assert(n >= 1);
+    for (size_t i = 0; i < n; ++i) {
+        ck_assert_msg(isfinite(p[i].x) && isfinite(p[i].y) && isfinite(p[i].z), "point %zu (%g %g %g)", i, p[i].x, p[i].y, p[i].z);
+        ck_assert(p[i].x >= box.min.x - 1e-6 && p[i].x <= box.max.x + 1e-6 && p[i].y >= box.min.y - 1e-6 &&
+                  p[i].y <= box.max.y + 1e-6 && p[i].z <= box.max.z + 1e-6);
+    }
+}
+END_TEST
+
 int main(void) {
     Suite* s = suite_create("edges_geometry");
     TCase* t = tcase_create("geometry");
@@ -461,6 +490,7 @@ int main(void) {
     tcase_add_test(t, plan_gamma_rounding_mode);
     tcase_add_test(t, warp_lispsm_tiny_n);
     tcase_add_test(t, poly_from_camera_overflow);
+    tcase_add_test(t, body_points_box_to_dbl_max);
     suite_add_tcase(s, t);
     return tu_run_suite(s) ? 1 : 0;
 }
