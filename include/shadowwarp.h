@@ -713,7 +713,8 @@ SWARP_API swarp_status swarp_body_h(const swarp_camera* cam, double near, double
  *  circumscribes the spot cone (the spot's shadow-map frustum).
  *  @return SWARP_OK, SWARP_ERR_BODY_EMPTY, SWARP_ERR_NULL_POINTER,
  *          SWARP_ERR_NON_FINITE, SWARP_ERR_ZERO_VECTOR, SWARP_ERR_UNKNOWN_ENUM,
- *          SWARP_ERR_RESERVED_NONZERO, SWARP_ERR_OUT_OF_RANGE (cone angle). */
+ *          SWARP_ERR_RESERVED_NONZERO, SWARP_ERR_OUT_OF_RANGE (cone angle, or B
+ *          swept through a box reaching beyond DBL_MAX/4 leaves the double range). */
 SWARP_API swarp_status swarp_body_from_h(const swarp_polyhedron* H, const swarp_light* light,
                                          const swarp_aabb* scene, swarp_polyhedron* out_B);
 
