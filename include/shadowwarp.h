@@ -662,7 +662,9 @@ SWARP_API swarp_status swarp_poly_from_aabb(const swarp_aabb* box, swarp_polyhed
  *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
  *          SWARP_ERR_FOV, SWARP_ERR_NEAR_FAR, SWARP_ERR_ZERO_VECTOR,
  *          SWARP_ERR_DEGENERATE (up parallel to dir),
- *          SWARP_ERR_RESERVED_NONZERO, SWARP_ERR_OUT_OF_RANGE (aspect <= 0). */
+ *          SWARP_ERR_RESERVED_NONZERO, SWARP_ERR_OUT_OF_RANGE (aspect <= 0, or a
+ *          corner beyond the double range: |eye| + far·|(1, tan, aspect·tan)|
+ *          over DBL_MAX). */
 SWARP_API swarp_status swarp_poly_from_camera_range(const swarp_camera* cam, double near,
                                                     double far, swarp_polyhedron* out);
 /** @brief The camera's view frustum V between cam->near and cam->far. */
@@ -711,7 +713,8 @@ SWARP_API swarp_status swarp_body_h(const swarp_camera* cam, double near, double
  *  circumscribes the spot cone (the spot's shadow-map frustum).
  *  @return SWARP_OK, SWARP_ERR_BODY_EMPTY, SWARP_ERR_NULL_POINTER,
  *          SWARP_ERR_NON_FINITE, SWARP_ERR_ZERO_VECTOR, SWARP_ERR_UNKNOWN_ENUM,
- *          SWARP_ERR_RESERVED_NONZERO, SWARP_ERR_OUT_OF_RANGE (cone angle). */
+ *          SWARP_ERR_RESERVED_NONZERO, SWARP_ERR_OUT_OF_RANGE (cone angle, or B
+ *          swept through a box reaching beyond DBL_MAX/4 leaves the double range). */
 SWARP_API swarp_status swarp_body_from_h(const swarp_polyhedron* H, const swarp_light* light,
                                          const swarp_aabb* scene, swarp_polyhedron* out_B);
 
@@ -837,7 +840,10 @@ typedef struct swarp_warp_info {
  *  P is a perspective along light-space +y with projection centre C, written
  *  in the normalised form w = 1 + (y - y_min)/n, so n = +inf is exactly the
  *  identity-like uniform map (continuous fade as γ -> 0).  Follow it with
- *  swarp_focus_fit(P·L, ...).
+ *  swarp_focus_fit(P·L, ...).  n (out_info->n_light) is at least 1e-6 times
+ *  the largest |y| of B in light space: below that the matrix cannot carry
+ *  the 1 of w next to the rounding of y (w would reach 0 on B), so a smaller
+ *  parameter is raised to this bound (w >= 1 on B to ~1e-9 relative).
  *  @param[in] light_view  L from swarp_focus_light_view
  *  @param[in] cam         the viewer (eye, dir, fovy)
  *  @param[in] near, far   the view depth range the warp refers to (adjusted

@@ -14,6 +14,7 @@
  * from l replaced by triangles to l.  A flat H (flat scene box) is handled
  * as a polygon in its plane. */
 #include "geometry_internal.h"
+#include <float.h>
 
 /* Faces of H whose plane passes within this many scale units of the light
  * position count as not visible from it (the light lies on their plane). */
@@ -408,6 +409,14 @@ static swarp_status sw_body_from_h_ex(const swarp_polyhedron* H, const swarp_lig
         /* T: longer than any path inside S */
         double diag = sw_glen(sw_sub(box->max, box->min));
         double T = 2.0 * diag + 1e-300;
+        /* a box reaching to ±DBL_MAX (valid input) has diag(S) ~ DBL_MAX:
+         * 2 diag overflows and the extruded copies became inf (inf vertices
+         * of B with SWARP_OK; issue 9, found through swarp_setup_points).
+         * DBL_MAX/4 is as far as H + T u stays finite for |H| below
+         * DBL_MAX/2; the box clip then cuts the sweep where it leaves S, and
+         * a sweep longer than that inside S leaves the double range (checked
+         * below: SWARP_ERR_OUT_OF_RANGE). */
+        if (!(T <= 0.25 * DBL_MAX)) T = 0.25 * DBL_MAX;
         int finalized = 0;
         s = flat ? sw_flat_extend(H, u, T, NULL, &M) : sw_extend(H, u, T, NULL, h_tidy, &M, &finalized);
         if (s != SWARP_OK) return s;
@@ -421,6 +430,8 @@ static swarp_status sw_body_from_h_ex(const swarp_polyhedron* H, const swarp_lig
         if (s != SWARP_OK) return s;
     }
     if (B->vertex_count == 0) return SWARP_ERR_BODY_EMPTY;
+    for (uint32_t i = 0; i < B->vertex_count; ++i)
+        if (!sw_finite3(&B->vertices[i])) return SWARP_ERR_OUT_OF_RANGE;
     return SWARP_OK;
 }
 

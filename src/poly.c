@@ -371,7 +371,10 @@ SWARP_API swarp_status swarp_poly_from_camera_range(const swarp_camera* cam, dou
     if (s != SWARP_OK) return s;
     if (!sw_finite(near) || !sw_finite(far)) return SWARP_ERR_NON_FINITE;
     if (!(near > 0.0 && far > near)) return SWARP_ERR_NEAR_FAR;
-    return sw_poly_from_frustum(cam, near, far, out);
+    /* every input is finite here: a corner that is not (far tan of the
+     * half-angles beyond DBL_MAX) is a frustum out of the double range */
+    s = sw_poly_from_frustum(cam, near, far, out);
+    return s == SWARP_ERR_NON_FINITE ? SWARP_ERR_OUT_OF_RANGE : s;
 }
 
 SWARP_API swarp_status swarp_poly_from_camera(const swarp_camera* cam, swarp_polyhedron* out) {

@@ -22,6 +22,17 @@
  * size is flat (as SW_FIT_FLAT_REL of the fit, src/focus.c). */
 #define SW_WARP_FLAT_REL 1e-12
 
+/* The smallest n, relative to the largest |y| of B in light space.  P's w
+ * row evaluates ε y + (1 - ε y_min) on raw light-space y: each term carries a
+ * rounding error of about ε |y| u (u = 2^-53), so w = 1 + ε (y - y_min) keeps
+ * a relative accuracy of 2 u max|y| / n.  With n >= 1e-6 max|y| that is
+ * <= 2.3e-10 (w >= 1 on B to 1e-9 with the rounding of y itself); a smaller
+ * n (n below the rounding of y: the 1 of w is lost, w = 0 at y_min) is a
+ * warp the matrix cannot represent.  The warp is then already a full
+ * perspective at the resolution of the map, so raising n to this bound
+ * changes nothing visible. */
+#define SW_WARP_N_MIN_REL 1e-6
+
 static void sw_warp_matrix(double eps, double ymin, double d, double cx, double cz, swarp_mat4* P) {
     double A = (2.0 + eps * d) / d;
     memset(P, 0, sizeof *P);
@@ -204,6 +215,8 @@ swarp_status sw_warp_lispsm(const swarp_mat4* M, const swarp_mat4* M_inv, const 
     if (d > 0.0) {
         swarp_status s = sw_warp_n(o, d, z0, z1, gamma_eff, theta, near, far, &n_light);
         if (s != SWARP_OK) return s;
+        double n_min = SW_WARP_N_MIN_REL * fmax(fabs(ymin), fabs(ymax));
+        if (n_light < n_min) n_light = n_min;
     }
     double eps = (d > 0.0 && sw_finite(n_light)) ? 1.0 / n_light : 0.0;
     if (eps == 0.0) {

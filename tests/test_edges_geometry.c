@@ -385,6 +385,99 @@ START_TEST(plan_gamma_rounding_mode) {
 }
 END_TEST
 
+/* Issue 9 finding (swarp_warp_lispsm, hard_cases): a tiny n (here the
+ * caller's n' = 1e-200) made P's w row eps y + (1 - eps y_min) lose its 1,
+ * so w = 0 at y_min on B.  w = 1 + (y - y_min)/n >= 1 on B is the defining
+ * property of the warp; n is raised to 1e-6 max|y| (documented). */
+static swarp_vec4 tu_xform(const swarp_mat4* m, swarp_vec3 p) { /* column-major m·(p, 1) */
+    swarp_vec4 o;
+    o.x = m->m[0] * p.x + m->m[4] * p.y + m->m[8] * p.z + m->m[12];
+    o.y = m->m[1] * p.x + m->m[5] * p.y + m->m[9] * p.z + m->m[13];
+    o.z = m->m[2] * p.x + m->m[6] * p.y + m->m[10] * p.z + m->m[14];
+    o.w = m->m[3] * p.x + m->m[7] * p.y + m->m[11] * p.z + m->m[15];
+    return o;
+}
+START_TEST(warp_lispsm_tiny_n) {
+    const swarp_camera cam = camera();
+    const swarp_light l = sun(0.3, -1, 0.2);
+    const swarp_aabb scene = {{-200, -5, -300}, {200, 30, 60}};
+    swarp_mat4 L, P;
+    ck_assert(!swarp_status_is_error(swarp_focus_light_view(&cam, &l, NULL, &L)));
+    swarp_vec3 pts[SWARP_BODY_MAX_POINTS];
+    size_t np = 0;
+    ck_assert(!swarp_status_is_error(
+        swarp_body_points(&cam, 1.0, 100.0, &l, &scene, pts, SWARP_BODY_MAX_POINTS, &np)));
+    const double n_users[] = {1e-200, 1e-30, 1e-12};
+    for (size_t k = 0; k < sizeof n_users / sizeof n_users[0]; ++k) {
+        swarp_warp_options o;
+        memset(&o, 0, sizeof o);
+        o.param = SWARP_WARP_PARAM_USER;
+        o.n_user = n_users[k];
+        swarp_warp_info info;
+        ck_assert_int_eq(swarp_warp_lispsm(&L, &cam, 1.0, 100.0, pts, np, NULL, &o, &P, &info), SWARP_OK);
+        double ymax = 0;
+        for (size_t i = 0; i < np; ++i) {
+            swarp_vec4 h = tu_xform(&L, pts[i]);
+            ymax = fmax(ymax, fabs(h.y / h.w));
+        }
+        ck_assert_msg(info.n_light >= 1e-6 * ymax * (1 - 1e-12), "n %g below 1e-6 max|y| = %g", info.n_light, 1e-6 * ymax);
+        for (size_t i = 0; i < np; ++i) {
+            swarp_vec4 h = tu_xform(&L, pts[i]);
+            swarp_vec4 q = tu_xform(&P, (swarp_vec3){h.x / h.w, h.y / h.w, h.z / h.w});
+            ck_assert_msg(q.w >= 1 - 1e-9, "n_user %g: point %zu has w = %.17g", n_users[k], i, q.w);
+        }
+    }
+}
+END_TEST
+
+/* Issue 9 finding (swarp_poly_from_camera(_range), hard_cases): far = DBL_MAX
+ * is finite, valid input; its corners overflow, which was reported as
+ * SWARP_ERR_NON_FINITE.  Now the documented SWARP_ERR_OUT_OF_RANGE, output
+ * untouched; just inside the range the frustum is finite. */
+START_TEST(poly_from_camera_overflow) {
+    swarp_camera cam = camera();
+    swarp_polyhedron P;
+    tu_fill(&P.vertices[0].x, 3, -7.25e33);
+    ck_assert_int_eq(swarp_poly_from_camera_range(&cam, 0.5, DBL_MAX, &P), SWARP_ERR_OUT_OF_RANGE);
+    ck_assert(tu_untouched(&P.vertices[0].x, 3, -7.25e33));
+    cam.far = DBL_MAX;
+    ck_assert_int_eq(swarp_poly_from_camera(&cam, &P), SWARP_ERR_OUT_OF_RANGE);
+    ck_assert(tu_untouched(&P.vertices[0].x, 3, -7.25e33));
+    ck_assert_int_eq(swarp_poly_from_camera_range(&cam, 0.5, 1e300, &P), SWARP_OK);
+    for (uint32_t i = 0; i < P.vertex_count; ++i)
+        ck_assert(isfinite(P.vertices[i].x) && isfinite(P.vertices[i].y) && isfinite(P.vertices[i].z));
+}
+END_TEST
+
+/* Issue 9 finding (swarp_setup_points, hard_cases): a scene box reaching to
+ * z = -DBL_MAX (valid) made the sweep length 2 diag(S) overflow, and
+ * swarp_body_points returned 10 inf vertices with SWARP_OK.  B must be
+ * finite: here it is H's 7 vertices swept the short way to the box's max
+ * faces, all inside the box. */
+START_TEST(body_points_box_to_dbl_max) {
+    const swarp_camera cam = {{1366439.6125760672, 20.539473778929995, 1366457.5993474743},
+                              {0.53707230541157913, -0.62290416505919799, -0.56880905399949},
+                              {0, 1, 0}, 1.323016600788782, 1.6748388954771427, 1.3462811061770266,
+                              13462811.061770264, {0, 0, 0, 0}};
+    swarp_light l;
+    memset(&l, 0, sizeof l);
+    l.type = SWARP_LIGHT_DIRECTIONAL;
+    l.direction = (swarp_vec3){-0.086309469311347087, -0.10000000000000001, -0.12764851323017479};
+    const swarp_aabb box = {{1366439.6125760672, -9.3839128190509395, -DBL_MAX},
+                            {1366538.0912439211, 20.539473778929995, 1366557.5993474743}};
+    swarp_vec3 p[SWARP_BODY_MAX_POINTS];
+    size_t n = 0;
+    swarp_status s = swarp_body_points(&cam, cam.near, cam.far, &l, &box, p, SWARP_BODY_MAX_POINTS, &n);
+    ck_assert_msg(!swarp_status_is_error(s), "%s", swarp_status_name(s));
+    ck_assert(n >= 1);
+    for (size_t i = 0; i < n; ++i) {
+        ck_assert_msg(isfinite(p[i].x) && isfinite(p[i].y) && isfinite(p[i].z), "point %zu (%g %g %g)", i, p[i].x, p[i].y, p[i].z);
+        ck_assert(p[i].x >= box.min.x - 1e-6 && p[i].x <= box.max.x + 1e-6 && p[i].y >= box.min.y - 1e-6 &&
+                  p[i].y <= box.max.y + 1e-6 && p[i].z <= box.max.z + 1e-6);
+    }
+}
+END_TEST
+
 int main(void) {
     Suite* s = suite_create("edges_geometry");
     TCase* t = tcase_create("geometry");
@@ -395,6 +488,9 @@ int main(void) {
     tcase_add_test(t, warp_lispsm_options);
     tcase_add_test(t, setup_nearest_vertex_rounding_mode);
     tcase_add_test(t, plan_gamma_rounding_mode);
+    tcase_add_test(t, warp_lispsm_tiny_n);
+    tcase_add_test(t, poly_from_camera_overflow);
+    tcase_add_test(t, body_points_box_to_dbl_max);
     suite_add_tcase(s, t);
     return tu_run_suite(s) ? 1 : 0;
 }

@@ -494,9 +494,14 @@ static void rec_point_set(swr_ctx* c, const swarp_vec3* pts, size_t n) {
             for (int d = -1; d <= 1; ++d) {
                 if (!a && !b && !d) continue;
                 double inv = 1.0 / sqrt((double)(a * a + b * b + d * d));
-                double h = -INFINITY;
-                for (size_t i = 0; i < n; ++i) h = fmax(h, (a * pts[i].x + b * pts[i].y + d * pts[i].z) * inv);
-                if (n) swr_rec(c, "h_B(u)", h);
+                /* long double: for points near DBL_MAX the sum of three terms overflows
+                   a double (h = inf of finite points); a record beyond DBL_MAX is kept as h/4
+                   (a power of two: the same comparison) */
+                long double h = -INFINITY;
+                for (size_t i = 0; i < n; ++i)
+                    h = fmaxl(h, ((long double)a * pts[i].x + (long double)b * pts[i].y + (long double)d * pts[i].z) * inv);
+                if (fabsl(h) > DBL_MAX) h *= 0.25L;
+                if (n) swr_rec(c, "h_B(u)", (double)h);
             }
 }
 
@@ -753,6 +758,12 @@ static void e_poly_camera_common(swr_ctx* c, int range) {
     swarp_polyhedron* po = swr_out(c, &P, sizeof P, SWR_REQ);
     expect_parts(c, &s, !range, X_CAM);
     swr_domain(c, SWARP_ERR_DEGENERATE); /* up all but parallel to dir */
+    {   /* documented: a corner beyond the double range is SWARP_ERR_OUT_OF_RANGE (long double:
+           the bound itself must not overflow; /16 leaves room for the corners' rounding) */
+        long double ty = tanl(0.5L * s.cam.fovy), tx = ty * s.cam.aspect;
+        long double reach = (long double)vmax(s.cam.eye) + (long double)far * sqrtl(1 + tx * tx + ty * ty);
+        if (fin(far) && fin(s.cam.fovy) && fin(s.cam.aspect) && reach > DBL_MAX / 16) swr_domain(c, SWARP_ERR_OUT_OF_RANGE);
+    }
     scene_cond(c, &s, near, far);
     swr_args(c, "eye (%.17g %.17g %.17g) dir (%.17g %.17g %.17g) up (%g %g %g) fovy %.17g aspect %.17g near %.17g far %.17g",
              s.cam.eye.x, s.cam.eye.y, s.cam.eye.z, s.cam.dir.x, s.cam.dir.y, s.cam.dir.z, s.cam.up.x, s.cam.up.y, s.cam.up.z,
@@ -909,7 +920,15 @@ static void e_poly_clip_common(swr_ctx* c, int with_box) {
              s.cam.aspect, in.vertex_count, poly_scale(&in), pl.a, pl.b, pl.c, pl.d, box.min.x, box.min.y, box.min.z, box.max.x,
              box.max.y, box.max.z, in_place);
     if (!clip_call(c, &in, &out, in_place, with_box ? NULL : &pl, &box, n_in, n_x, n_out)) return;
-    double sc = fmax(poly_scale(&in), with_box ? box_scale(&box) : fabs(pl.d) / sqrt(pl.a * pl.a + pl.b * pl.b + pl.c * pl.c));
+    /* the plane scaled by its largest normal coefficient (a power-free division, exact enough):
+       a coefficient near DBL_MAX is valid input, and |n|^2 of the raw plane overflows to inf,
+       which made inf/inf = NaN distances here (the library result itself was fine) */
+    swarp_plane pn = pl;
+    if (!with_box) {
+        double m = fmax(fabs(pl.a), fmax(fabs(pl.b), fabs(pl.c)));
+        if (m > 0) pn.a = pl.a / m, pn.b = pl.b / m, pn.c = pl.c / m, pn.d = pl.d / m;
+    }
+    double sc = fmax(poly_scale(&in), with_box ? box_scale(&box) : fabs(pn.d) / sqrt(pn.a * pn.a + pn.b * pn.b + pn.c * pn.c));
     double tol = gtol(sc);
     if (wide(&s.cam)) c->rounding_edge = 1, c->known_as = "clip of a body of a frustum with aspect beyond 1e6 (not a valid input polyhedron)";
     check_poly(c, &out, "clip", tol);
@@ -918,13 +937,13 @@ static void e_poly_clip_common(swr_ctx* c, int with_box) {
         check_in_box(c, &out, &box, tol, "clip result in the box");
         return;
     }
-    double nl = sqrt(pl.a * pl.a + pl.b * pl.b + pl.c * pl.c);
+    double nl = sqrt(pn.a * pn.a + pn.b * pn.b + pn.c * pn.c);
     int all_in = 1, all_out = in.vertex_count > 0;
     for (uint32_t v = 0; v < out.vertex_count && v < SWARP_POLY_MAX_VERTICES; ++v)
-        SWR_CHECK_ACC(c, plane_at(&pl, out.vertices[v]) / nl <= tol, "clip: vertex %u on the removed side by %g", v,
-                      plane_at(&pl, out.vertices[v]) / nl);
+        SWR_CHECK_ACC(c, plane_at(&pn, out.vertices[v]) / nl <= tol, "clip: vertex %u on the removed side by %g", v,
+                      plane_at(&pn, out.vertices[v]) / nl);
     for (uint32_t v = 0; v < in.vertex_count && v < SWARP_POLY_MAX_VERTICES; ++v) {
-        double e = plane_at(&pl, in.vertices[v]) / nl;
+        double e = plane_at(&pn, in.vertices[v]) / nl;
         all_in &= e < -tol;
         all_out &= e > tol;
     }
