@@ -27,8 +27,13 @@ SWARP_API swarp_status swarp_cascade_view_depth(const swarp_camera* cam, const s
                                                 double* out_depth) {
     if (!cam || !p || !out_depth) return SWARP_ERR_NULL_POINTER;
     if (!sw_finite3(&cam->eye) || !sw_finite3(&cam->dir) || !sw_finite3(p)) return SWARP_ERR_NON_FINITE;
+    /* Scale dir by its largest component first: its length overflows for
+     * components near DBL_MAX, and any non-zero finite dir is valid. */
+    const swarp_vec3 d = cam->dir;
+    const double dmax = fmax(fabs(d.x), fmax(fabs(d.y), fabs(d.z)));
     swarp_vec3 f;
-    if (!sw_normalize(cam->dir, &f)) return SWARP_ERR_ZERO_VECTOR;
+    if (!(dmax > 0.0) || !sw_normalize(sw_v3(d.x / dmax, d.y / dmax, d.z / dmax), &f))
+        return SWARP_ERR_ZERO_VECTOR;
     const double z = sw_dot(sw_sub(*p, cam->eye), f);
     if (!sw_finite(z)) return SWARP_ERR_NON_FINITE;
     *out_depth = z;

@@ -690,6 +690,20 @@ START_TEST(atlas_kernel_scale_extreme_widths) {
 }
 END_TEST
 
+/* View depth with a direction whose length overflows (components near
+ * DBL_MAX): any non-zero finite dir is valid (was SWARP_ERR_ZERO_VECTOR). */
+START_TEST(cascade_view_depth_huge_dir) {
+    swarp_camera cam = camera();
+    cam.eye = (swarp_vec3){0, 0, 0};
+    cam.dir = (swarp_vec3){-DBL_MAX, DBL_MAX, -1.0};
+    swarp_vec3 p = {-3.0, 4.0, 100.0};
+    double z = -7.0;
+    ck_assert_int_eq(swarp_cascade_view_depth(&cam, &p, &z), SWARP_OK);
+    /* independent: unit dir (-1, 1, -1/DBL_MAX)/sqrt(2), depth (3 + 4)/sqrt(2) */
+    ck_assert(fabs(z - 7.0 / sqrt(2.0)) <= 1e-14);
+}
+END_TEST
+
 int main(void) {
     Suite* s = suite_create("edges_splits");
     TCase* t = tcase_create("bias");
@@ -702,6 +716,7 @@ int main(void) {
     tcase_add_test(t, stabilize_sphere_extreme_aspect_and_thin_range);
     tcase_add_test(t, atlas_kernel_scale_extreme_widths);
     tcase_add_test(t, cascade_select_blend_curve_edges);
+    tcase_add_test(t, cascade_view_depth_huge_dir);
     suite_add_tcase(s, t);
     return tu_run_suite(s) ? 1 : 0;
 }
