@@ -222,8 +222,13 @@ SWARP_API swarp_status swarp_cascade_error_curve(const swarp_error_config* cfg,
             double z;
             if (j + 1 == samples_per_split)
                 z = (i + 1 == m) ? b : nextafter(b, a); /* left limit at the border */
-            else
+            else {
                 z = a + (b - a) * (double)j / (double)(samples_per_split - 1);
+                /* with a subnormal b - a the rounding can reach b: keep the
+                 * sample inside [C_i, C_i+1) (the border sample is nextafter(b, a)) */
+                const double below_b = nextafter(b, a);
+                if (z > below_b) z = below_b;
+            }
             z_buf[k] = z;
         }
         st = swarp_error_split_curve(cfg, splits, n_primes, m, z_buf, chunk,

@@ -704,6 +704,32 @@ START_TEST(cascade_view_depth_huge_dir) {
 }
 END_TEST
 
+/* Error curve samples at subnormal depths: a + (b - a) j/(s - 1) rounds up
+ * to b (here a = m, b = 3m, j = 3 of 5: m + 1.5m -> 3m) — the sample must
+ * stay in [C_i, C_{i+1}) (was exactly C_1, outside split 0). */
+START_TEST(cascade_error_curve_subnormal_splits) {
+    const double m = DBL_TRUE_MIN;
+    swarp_error_config cfg;
+    memset(&cfg, 0, sizeof cfg);
+    cfg.near = m;
+    cfg.far = 5 * m;
+    cfg.theta = 0.8;
+    cfg.res_ix = cfg.res_iy = 1024.0;
+    cfg.res_s = cfg.res_t = 2048.0;
+    const double splits[3] = {m, 3 * m, 5 * m};
+    const double np[2] = {m, 3 * m};
+    double z[10];
+    size_t count = 0;
+    ck_assert(!swarp_status_is_error(swarp_cascade_error_curve(&cfg, splits, np, 2, 5, z, NULL, NULL, 10, &count)));
+    ck_assert_uint_eq(count, 10);
+    for (size_t g = 0; g < 10; ++g) {
+        const size_t i = g / 5;
+        ck_assert(z[g] >= splits[i] && (i == 1 ? z[g] <= splits[2] : z[g] < splits[1]));
+        if (g) ck_assert(z[g] >= z[g - 1]);
+    }
+}
+END_TEST
+
 int main(void) {
     Suite* s = suite_create("edges_splits");
     TCase* t = tcase_create("bias");
@@ -717,6 +743,7 @@ int main(void) {
     tcase_add_test(t, atlas_kernel_scale_extreme_widths);
     tcase_add_test(t, cascade_select_blend_curve_edges);
     tcase_add_test(t, cascade_view_depth_huge_dir);
+    tcase_add_test(t, cascade_error_curve_subnormal_splits);
     suite_add_tcase(s, t);
     return tu_run_suite(s) ? 1 : 0;
 }
