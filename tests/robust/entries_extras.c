@@ -339,7 +339,11 @@ static void e_mindepth_near(swr_ctx* c) {
     long double want = fmaxl(n, (long double)md * (1 - (long double)margin));
     SWR_CHECK(c, out >= n && out < f, "near' %.17g outside [n, f) = [%.17g, %.17g)", out, n, f);
     if (md > n) SWR_CHECK(c, out <= md, "near' %.17g above min_depth %.17g (would clip)", out, md);
-    swr_close(c, "near'", out, want, 4 * DBL_EPSILON, 0);
+    /* near' = md (1 - margin) in double: 1 - margin rounds (eps/2 relative),
+     * the product rounds to eps/2 relative in the normal range but to half a
+     * subnormal ulp, DBL_TRUE_MIN/2 absolute, below DBL_MIN (fewer digits
+     * there); hence 4 eps relative plus DBL_TRUE_MIN absolute. */
+    swr_close_abs(c, "near'", out, want, 4 * DBL_EPSILON, DBL_TRUE_MIN);
 }
 
 /* ---- the plan's names --------------------------------------------------------- */
