@@ -424,7 +424,7 @@ START_TEST(stabilize_directional_edges) {
     BAD(swarp_stabilize_directional(&cam, 1, 10, &ld, line, 2, NULL, 512, NULL, &out, &r2), SWARP_ERR_DEGENERATE);
     /* a body near DBL_MAX: the matrix overflows */
     const swarp_vec3 huge[2] = {{-1e308, 0, -1e308}, {1e308, 0, 1e308}};
-    BAD(swarp_stabilize_directional(&cam, 1, 10, &ld, huge, 2, NULL, 512, NULL, &out, &r2), SWARP_ERR_NON_FINITE);
+    BAD(swarp_stabilize_directional(&cam, 1, 10, &ld, huge, 2, NULL, 512, NULL, &out, &r2), SWARP_ERR_OVERFLOW);
     /* camera errors come first */
     swarp_camera bc = cam;
     bc.fovy = 4.0;
@@ -730,6 +730,41 @@ START_TEST(cascade_error_curve_subnormal_splits) {
 }
 END_TEST
 
+/* A tiny split (1e-68) far from the origin along the light (1e6): the flat
+ * depth range's one-texel padding was absorbed by the ulp of t (1e-10) and
+ * 2/dt overflowed (was NON_FINITE); now padded by an ulp at least.  A truly
+ * unrepresentable matrix is SWARP_ERR_OVERFLOW, outputs untouched. */
+START_TEST(stabilize_directional_tiny_split_far_origin) {
+    swarp_camera cam = camera();
+    cam.eye = (swarp_vec3){0, 0, 0};
+    cam.dir = (swarp_vec3){0, 0, -1};
+    cam.up = (swarp_vec3){0, 1, 0};
+    const swarp_vec3 light = {0, -1, 0};
+    swarp_stabilize_options o;
+    memset(&o, 0, sizeof o);
+    o.mode = SWARP_STABILIZE_SPHERE;
+    o.origin = (swarp_vec3){0, 1e6, 0};
+    swarp_mat4 m;
+    ck_assert_int_eq(swarp_stabilize_directional(&cam, 1e-70, 1e-68, &light, NULL, 0, NULL, 1024, &o, &m, NULL),
+                     SWARP_OK);
+    for (int i = 0; i < 16; ++i) ck_assert(isfinite(m.m[i]));
+    /* the split's centre (0, 0, ~-5e-69), relative to the origin, maps inside */
+    const double q[3] = {0, -1e6, -5e-69};
+    for (int r = 0; r < 3; ++r) {
+        double h = m.m[r] * q[0] + m.m[4 + r] * q[1] + m.m[8 + r] * q[2] + m.m[12 + r];
+        ck_assert(fabs(h) <= 1.0 + 1e-9);
+    }
+    /* eye near DBL_MAX with a tiny split: 1/(map size) times the offset is beyond DBL_MAX */
+    cam.eye = (swarp_vec3){DBL_MAX / 2, 0, 0};
+    o.origin = (swarp_vec3){-DBL_MAX / 2, 0, 0};
+    const swarp_vec3 lx = {1, -1, 0};
+    tu_fill(m.m, 16, SENTINEL);
+    ck_assert_int_eq(swarp_stabilize_directional(&cam, 1e-70, 1e-68, &lx, NULL, 0, NULL, 1024, &o, &m, NULL),
+                     SWARP_ERR_OVERFLOW);
+    ck_assert(tu_untouched(m.m, 16, SENTINEL));
+}
+END_TEST
+
 int main(void) {
     Suite* s = suite_create("edges_splits");
     TCase* t = tcase_create("bias");
@@ -744,6 +779,7 @@ int main(void) {
     tcase_add_test(t, cascade_select_blend_curve_edges);
     tcase_add_test(t, cascade_view_depth_huge_dir);
     tcase_add_test(t, cascade_error_curve_subnormal_splits);
+    tcase_add_test(t, stabilize_directional_tiny_split_far_origin);
     suite_add_tcase(s, t);
     return tu_run_suite(s) ? 1 : 0;
 }
