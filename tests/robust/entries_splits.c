@@ -1207,6 +1207,8 @@ static void e_stabilize_directional(swr_ctx* c) {
     if (np == 0 && mode != 2) swr_domain(c, SWARP_ERR_NULL_POINTER), swr_domain(c, SWARP_ERR_INVALID_ARGUMENT), swr_domain(c, SWARP_ERR_OUT_OF_RANGE);
     if (use_box && box.min.x > box.max.x) swr_domain(c, SWARP_ERR_BOX_INVERTED), swr_domain(c, SWARP_ERR_OUT_OF_RANGE);
     if (use_box && (!fin3(&box.min) || !fin3(&box.max))) swr_expect(c, SWARP_ERR_NON_FINITE); /* eye +- 2f overflowed */
+    for (size_t i = 0; pp && i < np; ++i)
+        if (!fin3(&pts[i])) swr_expect(c, SWARP_ERR_NON_FINITE); /* eye + r f overflowed */
     swr_domain(c, SWARP_ERR_DEGENERATE);
     /* FINDING (docs/quality.md): NON_FINITE for finite arguments (e.g. LEVELS
      * with one body point of a 1e-6..7e-5 split at origin 3e6) */
