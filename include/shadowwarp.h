@@ -1736,7 +1736,9 @@ SWARP_API swarp_status swarp_stabilize_light_view(const swarp_vec3* light_dir, s
  *          SWARP_ERR_NON_FINITE, SWARP_ERR_NEAR_FAR, SWARP_ERR_FOV,
  *          SWARP_ERR_ZERO_VECTOR, SWARP_ERR_RESOLUTION, SWARP_ERR_UNKNOWN_ENUM,
  *          SWARP_ERR_RESERVED_NONZERO, SWARP_ERR_OUT_OF_RANGE,
- *          SWARP_ERR_DEGENERATE. */
+ *          SWARP_ERR_DEGENERATE, SWARP_ERR_OVERFLOW (finite arguments but a
+ *          matrix entry or texel size beyond DBL_MAX: coordinates near
+ *          DBL_MAX, or an extent tiny against the coordinates). */
 SWARP_API swarp_status swarp_stabilize_directional(const swarp_camera* cam, double n_i, double f_i,
                                                    const swarp_vec3* light_dir,
                                                    const swarp_vec3* body_points, size_t body_count,

@@ -27,8 +27,13 @@ SWARP_API swarp_status swarp_cascade_view_depth(const swarp_camera* cam, const s
                                                 double* out_depth) {
     if (!cam || !p || !out_depth) return SWARP_ERR_NULL_POINTER;
     if (!sw_finite3(&cam->eye) || !sw_finite3(&cam->dir) || !sw_finite3(p)) return SWARP_ERR_NON_FINITE;
+    /* Scale dir by its largest component first: its length overflows for
+     * components near DBL_MAX, and any non-zero finite dir is valid. */
+    const swarp_vec3 d = cam->dir;
+    const double dmax = fmax(fabs(d.x), fmax(fabs(d.y), fabs(d.z)));
     swarp_vec3 f;
-    if (!sw_normalize(cam->dir, &f)) return SWARP_ERR_ZERO_VECTOR;
+    if (!(dmax > 0.0) || !sw_normalize(sw_v3(d.x / dmax, d.y / dmax, d.z / dmax), &f))
+        return SWARP_ERR_ZERO_VECTOR;
     const double z = sw_dot(sw_sub(*p, cam->eye), f);
     if (!sw_finite(z)) return SWARP_ERR_NON_FINITE;
     *out_depth = z;
@@ -217,8 +222,13 @@ SWARP_API swarp_status swarp_cascade_error_curve(const swarp_error_config* cfg,
             double z;
             if (j + 1 == samples_per_split)
                 z = (i + 1 == m) ? b : nextafter(b, a); /* left limit at the border */
-            else
+            else {
                 z = a + (b - a) * (double)j / (double)(samples_per_split - 1);
+                /* with a subnormal b - a the rounding can reach b: keep the
+                 * sample inside [C_i, C_i+1) (the border sample is nextafter(b, a)) */
+                const double below_b = nextafter(b, a);
+                if (z > below_b) z = below_b;
+            }
             z_buf[k] = z;
         }
         st = swarp_error_split_curve(cfg, splits, n_primes, m, z_buf, chunk,

@@ -238,6 +238,12 @@ SWARP_API swarp_status swarp_stabilize_directional(const swarp_camera* cam, doub
         /* A body flat across the light: give depth one texel either side. */
         t_min -= rep.texel_size_x;
         t_max += rep.texel_size_x;
+        /* a texel below the ulp of t (a tiny split far from the origin) is
+         * absorbed: step one ulp at least, so that t_max - t_min > 0 */
+        if (!(t_max > t_min)) {
+            t_min = nextafter(t_min, -INFINITY);
+            t_max = nextafter(t_max, INFINITY);
+        }
     }
 
     /* clip = A_fit-style scale/translate of light coordinates ([RHS] (3.1)) */
@@ -255,8 +261,11 @@ SWARP_API swarp_status swarp_stabilize_directional(const swarp_camera* cam, doub
         sw_set(&m, r, 2, rows[r].z);
         sw_set(&m, r, 3, trans[r]);
     }
+    /* every input was checked finite above: a non-finite matrix or texel size
+     * here is a result beyond DBL_MAX (coordinates near DBL_MAX, or 1/extent
+     * of a subnormal extent), not representable: the documented OVERFLOW */
     if (!sw_mat_finite(&m) || !sw_finite(rep.texel_size_x) || !sw_finite(rep.texel_size_y))
-        return SWARP_ERR_NON_FINITE;
+        return SWARP_ERR_OVERFLOW;
     *out_matrix = m;
     if (out_report) *out_report = rep;
     return info;

@@ -424,7 +424,7 @@ START_TEST(stabilize_directional_edges) {
     BAD(swarp_stabilize_directional(&cam, 1, 10, &ld, line, 2, NULL, 512, NULL, &out, &r2), SWARP_ERR_DEGENERATE);
     /* a body near DBL_MAX: the matrix overflows */
     const swarp_vec3 huge[2] = {{-1e308, 0, -1e308}, {1e308, 0, 1e308}};
-    BAD(swarp_stabilize_directional(&cam, 1, 10, &ld, huge, 2, NULL, 512, NULL, &out, &r2), SWARP_ERR_NON_FINITE);
+    BAD(swarp_stabilize_directional(&cam, 1, 10, &ld, huge, 2, NULL, 512, NULL, &out, &r2), SWARP_ERR_OVERFLOW);
     /* camera errors come first */
     swarp_camera bc = cam;
     bc.fovy = 4.0;
@@ -690,6 +690,81 @@ START_TEST(atlas_kernel_scale_extreme_widths) {
 }
 END_TEST
 
+/* View depth with a direction whose length overflows (components near
+ * DBL_MAX): any non-zero finite dir is valid (was SWARP_ERR_ZERO_VECTOR). */
+START_TEST(cascade_view_depth_huge_dir) {
+    swarp_camera cam = camera();
+    cam.eye = (swarp_vec3){0, 0, 0};
+    cam.dir = (swarp_vec3){-DBL_MAX, DBL_MAX, -1.0};
+    swarp_vec3 p = {-3.0, 4.0, 100.0};
+    double z = -7.0;
+    ck_assert_int_eq(swarp_cascade_view_depth(&cam, &p, &z), SWARP_OK);
+    /* independent: unit dir (-1, 1, -1/DBL_MAX)/sqrt(2), depth (3 + 4)/sqrt(2) */
+    ck_assert(fabs(z - 7.0 / sqrt(2.0)) <= 1e-14);
+}
+END_TEST
+
+/* Error curve samples at subnormal depths: a + (b - a) j/(s - 1) rounds up
+ * to b (here a = m, b = 3m, j = 3 of 5: m + 1.5m -> 3m) — the sample must
+ * stay in [C_i, C_{i+1}) (was exactly C_1, outside split 0). */
+START_TEST(cascade_error_curve_subnormal_splits) {
+    const double m = DBL_TRUE_MIN;
+    swarp_error_config cfg;
+    memset(&cfg, 0, sizeof cfg);
+    cfg.near = m;
+    cfg.far = 5 * m;
+    cfg.theta = 0.8;
+    cfg.res_ix = cfg.res_iy = 1024.0;
+    cfg.res_s = cfg.res_t = 2048.0;
+    const double splits[3] = {m, 3 * m, 5 * m};
+    const double np[2] = {m, 3 * m};
+    double z[10];
+    size_t count = 0;
+    ck_assert(!swarp_status_is_error(swarp_cascade_error_curve(&cfg, splits, np, 2, 5, z, NULL, NULL, 10, &count)));
+    ck_assert_uint_eq(count, 10);
+    for (size_t g = 0; g < 10; ++g) {
+        const size_t i = g / 5;
+        ck_assert(z[g] >= splits[i] && (i == 1 ? z[g] <= splits[2] : z[g] < splits[1]));
+        if (g) ck_assert(z[g] >= z[g - 1]);
+    }
+}
+END_TEST
+
+/* A tiny split (1e-68) far from the origin along the light (1e6): the flat
+ * depth range's one-texel padding was absorbed by the ulp of t (1e-10) and
+ * 2/dt overflowed (was NON_FINITE); now padded by an ulp at least.  A truly
+ * unrepresentable matrix is SWARP_ERR_OVERFLOW, outputs untouched. */
+START_TEST(stabilize_directional_tiny_split_far_origin) {
+    swarp_camera cam = camera();
+    cam.eye = (swarp_vec3){0, 0, 0};
+    cam.dir = (swarp_vec3){0, 0, -1};
+    cam.up = (swarp_vec3){0, 1, 0};
+    const swarp_vec3 light = {0, -1, 0};
+    swarp_stabilize_options o;
+    memset(&o, 0, sizeof o);
+    o.mode = SWARP_STABILIZE_SPHERE;
+    o.origin = (swarp_vec3){0, 1e6, 0};
+    swarp_mat4 m;
+    ck_assert_int_eq(swarp_stabilize_directional(&cam, 1e-70, 1e-68, &light, NULL, 0, NULL, 1024, &o, &m, NULL),
+                     SWARP_OK);
+    for (int i = 0; i < 16; ++i) ck_assert(isfinite(m.m[i]));
+    /* the split's centre (0, 0, ~-5e-69), relative to the origin, maps inside */
+    const double q[3] = {0, -1e6, -5e-69};
+    for (int r = 0; r < 3; ++r) {
+        double h = m.m[r] * q[0] + m.m[4 + r] * q[1] + m.m[8 + r] * q[2] + m.m[12 + r];
+        ck_assert(fabs(h) <= 1.0 + 1e-9);
+    }
+    /* eye near DBL_MAX with a tiny split: 1/(map size) times the offset is beyond DBL_MAX */
+    cam.eye = (swarp_vec3){DBL_MAX / 2, 0, 0};
+    o.origin = (swarp_vec3){-DBL_MAX / 2, 0, 0};
+    const swarp_vec3 lx = {1, -1, 0};
+    tu_fill(m.m, 16, SENTINEL);
+    ck_assert_int_eq(swarp_stabilize_directional(&cam, 1e-70, 1e-68, &lx, NULL, 0, NULL, 1024, &o, &m, NULL),
+                     SWARP_ERR_OVERFLOW);
+    ck_assert(tu_untouched(m.m, 16, SENTINEL));
+}
+END_TEST
+
 int main(void) {
     Suite* s = suite_create("edges_splits");
     TCase* t = tcase_create("bias");
@@ -702,6 +777,9 @@ int main(void) {
     tcase_add_test(t, stabilize_sphere_extreme_aspect_and_thin_range);
     tcase_add_test(t, atlas_kernel_scale_extreme_widths);
     tcase_add_test(t, cascade_select_blend_curve_edges);
+    tcase_add_test(t, cascade_view_depth_huge_dir);
+    tcase_add_test(t, cascade_error_curve_subnormal_splits);
+    tcase_add_test(t, stabilize_directional_tiny_split_far_origin);
     suite_add_tcase(s, t);
     return tu_run_suite(s) ? 1 : 0;
 }

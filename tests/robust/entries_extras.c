@@ -185,6 +185,21 @@ static void e_cube_lookup(swr_ctx* c) {
         swr_cond(c, 1 + um); /* S = P + u/a: |P| and |u| cancel to a point of the unit cube */
         if (!(amax > 1e-9 * um)) swr_domain(c, SWARP_ERR_CUBE_POINT_UNCOVERED), c->rounding_edge = 1;
         if (amax < -1e-9 * um || arg < 0) swr_expect(c, SWARP_ERR_CUBE_POINT_UNCOVERED);
+        /* S = P + u/a is not representable for |u| near DBL_MAX and a < 1:
+         * evaluated independently in long double (wider exponent range), the
+         * documented SWARP_ERR_OVERFLOW beyond DBL_MAX, either way within
+         * 1e-12 of it (the double rounding of u and a) */
+        long double ul[3], al = -INFINITY;
+        for (int k = 0; k < 3; ++k) ul[k] = (long double)(&V.x)[k] - a.P[k];
+        for (int i = 0; i < 6; ++i)
+            if (a.d[i] > 0) al = fmaxl(al, (ul[0] * axis_n[i][0] + ul[1] * axis_n[i][1] + ul[2] * axis_n[i][2]) / a.d[i]);
+        if (al > 0) {
+            for (int k = 0; k < 3; ++k) {
+                long double Sk = fabsl(a.P[k] + ul[k] / al);
+                if (Sk > DBL_MAX * (1 + 1e-12L)) swr_expect(c, SWARP_ERR_OVERFLOW);
+                else if (Sk > DBL_MAX * (1 - 1e-12L)) swr_domain(c, SWARP_ERR_OVERFLOW);
+            }
+        }
     }
     swr_domain(c, SWARP_ERR_CUBE_POINT_UNCOVERED);
     if (!swr_done(c, SWR_CALL(c, swarp_cube_lookup(pl, a.use_o ? &a.o : NULL, pv, pf, ps, pd)))) return;
@@ -339,7 +354,11 @@ static void e_mindepth_near(swr_ctx* c) {
     long double want = fmaxl(n, (long double)md * (1 - (long double)margin));
     SWR_CHECK(c, out >= n && out < f, "near' %.17g outside [n, f) = [%.17g, %.17g)", out, n, f);
     if (md > n) SWR_CHECK(c, out <= md, "near' %.17g above min_depth %.17g (would clip)", out, md);
-    swr_close(c, "near'", out, want, 4 * DBL_EPSILON, 0);
+    /* near' = md (1 - margin) in double: 1 - margin rounds (eps/2 relative),
+     * the product rounds to eps/2 relative in the normal range but to half a
+     * subnormal ulp, DBL_TRUE_MIN/2 absolute, below DBL_MIN (fewer digits
+     * there); hence 4 eps relative plus DBL_TRUE_MIN absolute. */
+    swr_close_abs(c, "near'", out, want, 4 * DBL_EPSILON, DBL_TRUE_MIN);
 }
 
 /* ---- the plan's names --------------------------------------------------------- */

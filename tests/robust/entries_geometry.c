@@ -1108,6 +1108,14 @@ static void e_body_adjusted_range(swr_ctx* c) {
 /* row r of the upper 3x3 of a column-major matrix */
 static swarp_vec3 row3(const swarp_mat4* m, int r) { return v3(m->m[r], m->m[4 + r], m->m[8 + r]); }
 
+/* unit() scaled first: sqrt(dot(a, a)) overflows (to 0 after the divide) for
+ * |a| near DBL_MAX and underflows for subnormal a; both are valid axes. */
+static swarp_vec3 unit_scaled(swarp_vec3 a) {
+    double m = fmax(fabs(a.x), fmax(fabs(a.y), fabs(a.z)));
+    if (!(m > 0) || !isfinite(m)) return a;
+    return unit(v3(a.x / m, a.y / m, a.z / m));
+}
+
 static void e_focus_light_view(swr_ctx* c) {
     SKIP_IF_MISSING(c, swarp_focus_light_view);
     scene_args s;
@@ -1146,7 +1154,7 @@ static void e_focus_light_view(swr_ctx* c) {
                                       : axis)
                             : s.light.direction;
     swarp_vec3 o = point ? s.light.position : s.cam.eye;
-    look = unit(look);
+    look = unit_scaled(look);
     SWR_CHECK_ACC(c, fabs(dot(r2, look) + 1) <= 1e-9, "the light view's -z is not the light axis (dot %.17g)", -dot(r2, look));
     swarp_vec4 q = xf(&V, o);
     SWR_CHECK_ACC(c, vmax(v3(q.x, q.y, q.z)) <= gtol(vmax(o)) + 1e-12, "the origin maps to (%g %g %g)", q.x, q.y, q.z);

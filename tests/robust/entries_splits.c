@@ -1206,10 +1206,28 @@ static void e_stabilize_directional(swr_ctx* c) {
     }
     if (np == 0 && mode != 2) swr_domain(c, SWARP_ERR_NULL_POINTER), swr_domain(c, SWARP_ERR_INVALID_ARGUMENT), swr_domain(c, SWARP_ERR_OUT_OF_RANGE);
     if (use_box && box.min.x > box.max.x) swr_domain(c, SWARP_ERR_BOX_INVERTED), swr_domain(c, SWARP_ERR_OUT_OF_RANGE);
+    if (use_box && (!fin3(&box.min) || !fin3(&box.max))) swr_expect(c, SWARP_ERR_NON_FINITE); /* eye +- 2f overflowed */
+    for (size_t i = 0; pp && i < np; ++i)
+        if (!fin3(&pts[i])) swr_expect(c, SWARP_ERR_NON_FINITE); /* eye + r f overflowed */
     swr_domain(c, SWARP_ERR_DEGENERATE);
     /* FINDING (docs/quality.md): NON_FINITE for finite arguments (e.g. LEVELS
      * with one body point of a 1e-6..7e-5 split at origin 3e6) */
     if (!use_o || swr_isfin(o.level_max_size)) swr_finding_status(c, SWARP_ERR_NON_FINITE);
+    {   /* documented OVERFLOW: the matrix holds (coordinate)/(map half size)
+         * and 2/(depth extent); coordinates ~ |eye| + |origin| + f (1 + k),
+         * the map and depth extents >= ~ the split's size min(f - n, f tan),
+         * a texel (size/res) or a ulp of the coordinates.  Estimated in long
+         * double; allowed within a factor 1e6 of DBL_MAX (the extents of the
+         * body points and box are not bounded more tightly here), and when
+         * the coordinates themselves come within that factor of DBL_MAX. */
+        ld k = tanl((ld)cam.fovy / 2) * (1 + (ld)cam.aspect);
+        ld M = (ld)vmax3(cam.eye) + vmax3(o.origin) + (ld)f * (1 + k);
+        ld size = fminl((ld)f - n, (ld)f * tanl((ld)cam.fovy / 2)) / (res > 0 ? res : 1);
+        size = fminl(size, (ld)f * tanl((ld)cam.fovy / 2) * 2 / (o.levels ? o.levels : 64) / (res > 0 ? res : 1));
+        if (use_o && o.level_max_size > 0) size = fminl(size, (ld)o.level_max_size / (o.levels ? o.levels : 64));
+        if (swr_isfin(f) && swr_isfin(n) && fin3(&cam.eye) && (!(M / size < (ld)DBL_MAX * 1e-6L) || !(M < (ld)DBL_MAX * 1e-6L)))
+            swr_allow(c, SWARP_ERR_OVERFLOW);
+    }
     if (vmax3(cam.eye) > 1e300 || f > 1e300) swr_domain(c, SWARP_ERR_NON_FINITE); /* an overflow before the other checks */
     swr_cond(c, (vmax3(cam.eye) + vmax3(o.origin) + f) / n);
     swr_args(c, "eye (%g %g %g) dir (%g %g %g) fovy %g aspect %g n %.17g f %.17g light (%g %g %g) np %zu res %u mode %d levels %u origin (%g %g %g) lms %g box %d",
