@@ -52,6 +52,29 @@ swarp_status sw_light_view(const swarp_camera* cam, swarp_vec3 origin, swarp_vec
     return blend ? SWARP_INFO_LIGHT_PARALLEL : SWARP_OK;
 }
 
+/* The light view's origin and the direction it looks along, as
+ * swarp_focus_light_view documents them (shared with its follow twin):
+ * directional lights look along their direction from the eye; point lights
+ * along the caller's axis, else the spot direction, else toward the eye. */
+swarp_status sw_light_origin_axis(const swarp_camera* cam, const swarp_light* light, const swarp_vec3* axis,
+                                  swarp_vec3* origin, swarp_vec3* forward) {
+    if (light->type != SWARP_LIGHT_POINT) {
+        *origin = cam->eye;
+        *forward = light->direction;
+        return SWARP_OK;
+    }
+    *origin = light->position;
+    if (axis) {
+        if (!sw_finite3(axis)) return SWARP_ERR_NON_FINITE;
+        *forward = *axis;
+    } else if (light->cone_angle > 0.0) {
+        *forward = light->direction;
+    } else {
+        *forward = sw_sub(cam->eye, light->position);
+    }
+    return sw_glen(*forward) > 0.0 ? SWARP_OK : SWARP_ERR_ZERO_VECTOR;
+}
+
 SWARP_API swarp_status swarp_focus_light_view(const swarp_camera* cam, const swarp_light* light,
                                               const swarp_vec3* axis, swarp_mat4* out_view) {
     if (!cam || !light || !out_view) return SWARP_ERR_NULL_POINTER;
@@ -60,21 +83,8 @@ SWARP_API swarp_status swarp_focus_light_view(const swarp_camera* cam, const swa
     s = sw_check_light(light);
     if (s != SWARP_OK) return s;
     swarp_vec3 origin, forward;
-    if (light->type == SWARP_LIGHT_POINT) {
-        origin = light->position;
-        if (axis) {
-            if (!sw_finite3(axis)) return SWARP_ERR_NON_FINITE;
-            forward = *axis;
-        } else if (light->cone_angle > 0.0) {
-            forward = light->direction;
-        } else {
-            forward = sw_sub(cam->eye, light->position);
-        }
-        if (!(sw_glen(forward) > 0.0)) return SWARP_ERR_ZERO_VECTOR;
-    } else {
-        origin = cam->eye;
-        forward = light->direction;
-    }
+    s = sw_light_origin_axis(cam, light, axis, &origin, &forward);
+    if (s != SWARP_OK) return s;
     swarp_mat4 m;
     s = sw_light_view(cam, origin, forward, &m);
     if (swarp_status_is_error(s)) return s;

@@ -198,21 +198,8 @@ SWARP_API swarp_status swarp_focus_light_view_follow(const swarp_camera* cam, co
     fw.axis = sw_scale(rows[2], -1.0);
     fw.up = rows[1];
     swarp_vec3 origin, forward;
-    if (light->type == SWARP_LIGHT_POINT) {
-        origin = light->position;
-        if (axis) {
-            if (!sw_finite3(axis)) return SWARP_ERR_NON_FINITE;
-            forward = *axis;
-        } else if (light->cone_angle > 0.0) {
-            forward = light->direction;
-        } else {
-            forward = sw_sub(cam->eye, light->position);
-        }
-        if (!(sw_glen(forward) > 0.0)) return SWARP_ERR_ZERO_VECTOR;
-    } else {
-        origin = cam->eye;
-        forward = light->direction;
-    }
+    s = sw_light_origin_axis(cam, light, axis, &origin, &forward);
+    if (s != SWARP_OK) return s;
     swarp_mat4 m;
     s = sw_follow_light_view(cam, origin, forward, &fw, &m);
     if (swarp_status_is_error(s)) return s;

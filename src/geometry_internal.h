@@ -74,6 +74,8 @@ void sw_depth_range_of(const swarp_polyhedron* P, swarp_vec3 eye, swarp_vec3 f, 
                        double* mx);
 
 /* Light view (look-at) from origin along forward with the aligned up. */
+swarp_status sw_light_origin_axis(const swarp_camera* cam, const swarp_light* light, const swarp_vec3* axis,
+                                  swarp_vec3* origin, swarp_vec3* forward);
 swarp_status sw_light_view(const swarp_camera* cam, swarp_vec3 origin, swarp_vec3 forward,
                            swarp_mat4* out);
 void sw_look_at(swarp_vec3 origin, swarp_vec3 forward_unit, swarp_vec3 up_unit, swarp_mat4* out);
