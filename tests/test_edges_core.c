@@ -445,6 +445,7 @@ END_TEST
 /* res_iy/res_t below DBL_TRUE_MIN/2 while m_z itself is representable
  * (~1e-317): the product is kept as mantissa * 2^e (was 0 with SWARP_OK). */
 START_TEST(error_tiny_resolution_no_spurious_underflow) {
+    REQUIRE_WIDE_LONG_DOUBLE();
     swarp_error_config cfg;
     memset(&cfg, 0, sizeof cfg);
     cfg.near = 10.0;
