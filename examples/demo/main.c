@@ -332,6 +332,17 @@ static void light_from_options(const options* o, swarp_light* l) {
     }
 }
 
+/* View v of the command line: --camera (or the explicit eye/dir) at --size
+ * with the --light-angle / --light-dir sun.  Non-zero: a bad camera. */
+static int options_view(const options* o, demo_view* v) {
+    memset(v, 0, sizeof *v);
+    v->w = o->w;
+    v->h = o->h;
+    if (setup_camera(o, &v->cam)) return -1;
+    light_from_options(o, &v->light);
+    return 0;
+}
+
 /* View v of preset `camera` at --size with the --light-angle / --light-dir sun. */
 static int preset_view(const options* o, const char* camera, demo_view* v) {
     memset(v, 0, sizeof *v);
@@ -693,11 +704,7 @@ static int plan_view(const options* o, const demo_view* v, const swarp_aabb* box
 
 static int run_gallery(const options* o, int single, gallery_report* rep) {
     demo_view v;
-    memset(&v, 0, sizeof v);
-    v.w = o->w;
-    v.h = o->h;
-    if (setup_camera(o, &v.cam)) return 2;
-    light_from_options(o, &v.light);
+    if (options_view(o, &v)) return 2;
     demo_view_update(&v);
     demo_scene scene;
     if (load_scene(o, &scene)) return 2;
@@ -860,11 +867,7 @@ static int run_gallery(const options* o, int single, gallery_report* rep) {
 
 static int run_frames(const options* o, double* out_max_drift) {
     demo_view v;
-    memset(&v, 0, sizeof v);
-    v.w = o->w;
-    v.h = o->h;
-    if (setup_camera(o, &v.cam)) return 2;
-    light_from_options(o, &v.light);
+    if (options_view(o, &v)) return 2;
     demo_scene scene;
     if (load_scene(o, &scene)) return 2;
     demo_ctx* ctx = open_context();
@@ -1786,11 +1789,7 @@ static int test_images(const options* o) {
 /* --plan: what the view calls for, printed, nothing rendered (no GL). */
 static int print_plan_only(const options* o) {
     demo_view v;
-    memset(&v, 0, sizeof v);
-    v.w = o->w;
-    v.h = o->h;
-    if (setup_camera(o, &v.cam)) return 2;
-    light_from_options(o, &v.light);
+    if (options_view(o, &v)) return 2;
     demo_scene scene;
     if (load_scene(o, &scene)) return 2;
     demo_plan plan;
