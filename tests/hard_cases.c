@@ -4,7 +4,7 @@
  * tests/robust/entries_*.c for the per-entry generators and checks).
  *
  *   hard_cases [--size N] [--seed S] [--entry NAME] [--save DIR] [--list]
- *              [--emit DIR N] [--findings]
+ *              [--emit DIR N] [--findings [--findings-max K]] [--case I]
  *
  * N configurations per entry point (default 20000; `meson test` passes
  * -Dhard_cases_size; the full sweep is `meson test --benchmark
@@ -17,7 +17,8 @@
  * Exit status 1 when any invariant broke.  "finding" counts accuracy
  * departures on extreme inputs (magnitudes below 1e-100 or above 1e100, see
  * swr.h) and known problems of the library (swr_known, listed in
- * docs/quality.md); --findings prints the first three per entry point and
+ * docs/quality.md); --findings prints the first three per entry point
+ * (--findings-max K: the first K; --case I runs case I alone, to debug it) and
  * SWARP_STRICT=1 makes them fail.  --list prints every entry point
  * with "available" or "missing" (not in the library yet).  --emit DIR N
  * writes the bytes of the first N cases of each available entry point to
@@ -43,6 +44,7 @@ int main(int argc, char** argv) {
     const char* only = NULL;
     const char* save = NULL;
     int show_findings = 0;
+    unsigned long long findings_max = 3, first = 0, last = 0; /* last 0: up to size */
     /* SWARP_HARD_CASES_SIZE overrides --size (valgrind runs a smaller sweep) */
     const char* env_size = getenv("SWARP_HARD_CASES_SIZE");
     for (int i = 1; i < argc; ++i) {
@@ -51,6 +53,12 @@ int main(int argc, char** argv) {
         else if (!strcmp(argv[i], "--entry") && i + 1 < argc) only = argv[++i];
         else if (!strcmp(argv[i], "--save") && i + 1 < argc) save = argv[++i];
         else if (!strcmp(argv[i], "--findings")) show_findings = 1;
+        else if (!strcmp(argv[i], "--findings-max") && i + 1 < argc) findings_max = strtoull(argv[++i], NULL, 0);
+        else if (!strcmp(argv[i], "--case") && i + 1 < argc) {
+            first = strtoull(argv[++i], NULL, 0);
+            last = first + 1;
+            show_findings = 1;
+        }
         else if (!strcmp(argv[i], "--list")) {
             static swr_ctx lc;
             for (size_t k = 0; k < swr_entry_count(); ++k) {
@@ -81,7 +89,10 @@ int main(int argc, char** argv) {
             }
             return 0;
         } else {
-            fprintf(stderr, "usage: %s [--size N] [--seed S] [--entry NAME] [--save DIR] [--list]\n", argv[0]);
+            fprintf(stderr,
+                    "usage: %s [--size N] [--seed S] [--entry NAME] [--save DIR] [--list] [--emit DIR N]\n"
+                    "          [--findings [--findings-max K]] [--case I]\n",
+                    argv[0]);
             return 2;
         }
     }
@@ -100,7 +111,7 @@ int main(int argc, char** argv) {
         unsigned long long ok = 0, info = 0, err = 0, fail = 0, found = 0;
         double t0 = now();
         int skip = 0;
-        for (unsigned long long i = 0; i < size; ++i) {
+        for (unsigned long long i = first; i < (last ? last : size); ++i) {
             int bad = swr_run_seeded(e, &c, seed, i);
             if (c.skipped) {
                 skip = 1;
@@ -110,7 +121,7 @@ int main(int argc, char** argv) {
             else if (swarp_status_is_error(c.status)) ++err;
             else ++info;
             if (c.finding) {
-                if (found < 3 && show_findings) {
+                if (found < findings_max && show_findings) {
                     printf("  finding %s case %llu: %s\n", e->name, i, c.finding_msg);
                     if (c.args[0]) printf("       arguments: %s\n", c.args);
                 }
@@ -140,10 +151,10 @@ int main(int argc, char** argv) {
             continue;
         }
         ++n_entries;
-        total += size;
+        total += (last ? last : size) - first;
         total_fail += fail;
         total_found += found;
-        printf("%-34s %9llu %9llu %9llu %9llu %6llu %7llu %7.2f\n", e->name, size, ok, info, err, fail, found,
+        printf("%-34s %9llu %9llu %9llu %9llu %6llu %7llu %7.2f\n", e->name, (last ? last : size) - first, ok, info, err, fail, found,
                now() - t0);
     }
     printf("%llu entry points, %llu configurations, %llu invariant violations, %llu findings (extreme inputs, "
