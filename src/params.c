@@ -199,8 +199,17 @@ SWARP_API swarp_status swarp_warp_nrepar(double eta, double alpha, double W_lz, 
  * written with sin/cos so theta = pi/2 (tan huge) and theta -> 0 stay exact.
  * Both cases of (2) agree at theta = phi; the code uses case 1 there.
  */
-static double sw_t_ratio(double theta, double phi) { return tan(phi) * cos(theta) / sin(theta); }
-static double sw_u_ratio(double theta, double phi) { return sin(theta) / (cos(theta) * tan(phi)); }
+/* Both are clamped to 1: at theta == phi the rounded tan, cos and sin can
+ * give 1 + 2^-52, and then (f - n) + (f + n) t overflowed even in its halved
+ * form for f = DBL_MAX (lambda_1 came out 0 instead of ~1e-157). */
+static double sw_t_ratio(double theta, double phi) {
+    double t = tan(phi) * cos(theta) / sin(theta);
+    return t > 1.0 ? 1.0 : t;
+}
+static double sw_u_ratio(double theta, double phi) {
+    double u = sin(theta) / (cos(theta) * tan(phi));
+    return u > 1.0 ? 1.0 : u;
+}
 
 /* D = f - n + (f + n) tan(phi)/tan(theta): the normalising depth of case 1. */
 static double sw_case1_D(double t, double n, double f) { return (f - n) + (f + n) * t; }
@@ -421,11 +430,19 @@ static double sw_lambda_1(double theta, double phi, double n, double f) {
     return (u * (n + sqrt_fn) - n) / den;
 }
 
-/* lambda_2 of [GMNPR] (4): (f + sqrt(fn))/(2f) tan(theta)/tan(phi) - 1/2. */
+/* lambda_2 of [GMNPR] (4): (f + sqrt(fn))/(2f) tan(theta)/tan(phi) - 1/2,
+ * with (f + sqrt(fn))/(2f) = (1 + r)/2, r = sqrt(n/f), written as
+ *   ((1 - t) + r) / (2 t)   (theta >= phi)  and  ((u - 1) + u r) / 2:
+ * 1 - t and u - 1 are exact near theta = phi (Sterbenz), where the old
+ * c/t - 1/2 lost r < 2^-53 entirely (lambda_2 = 0 for f = DBL_MAX). */
 static double sw_lambda_2(double theta, double phi, double n, double f) {
-    double c = 0.5 * (1.0 + sqrt(n) / sqrt(f)); /* (f + sqrt(fn)) / (2f) */
-    if (theta >= phi) return c / sw_t_ratio(theta, phi) - 0.5;
-    return c * sw_u_ratio(theta, phi) - 0.5;
+    double r = sqrt(n) / sqrt(f);
+    if (theta >= phi) {
+        double t = sw_t_ratio(theta, phi);
+        return 0.5 * (((1.0 - t) + r) / t);
+    }
+    double u = sw_u_ratio(theta, phi);
+    return 0.5 * ((u - 1.0) + u * r);
 }
 
 /* lambda_1, lambda_2, lambda_GMNPR, lambda_LiSPSM and lambda_GLPR are

@@ -472,6 +472,33 @@ START_TEST(error_tiny_resolution_no_spurious_underflow) {
 }
 END_TEST
 
+/* ---- paramfix pass (issue 9, sweep findings at 10^6) -------------------- */
+
+/* theta == phi with f = DBL_MAX (hard_cases swarp_gmnpr_lambda12 seed 7 case
+ * 28753, swarp_gmnpr_lambda case 679648): the rounded tan/cos/sin gave
+ * t = 1 + 2^-52, the halved depth overflowed and lambda_1 came out 0;
+ * lambda_2 = r/2 with r = sqrt(n/f) < 2^-53 was lost to c - 1/2.  At t = 1
+ * both are sqrt(n/f)/2 exactly. */
+START_TEST(gmnpr_lambda_theta_eq_phi_huge_far) {
+    const double cases[][2] = {{0.01, 1.7023779630233584e-05},
+                               {0.50344839343569725, 0.00069428559076514925},
+                               {1.1596109125728185, 1.0000000000000002e-06},
+                               {1.5414340003159084, 1.1341023648905051e-05}};
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; ++i) {
+        double th = cases[i][0], n = cases[i][1], f = DBL_MAX;
+        long double ref = 0.5L * sqrtl((long double)n) / sqrtl((long double)f);
+        double l1 = SENTINEL, l2 = SENTINEL, l = SENTINEL, ll = SENTINEL;
+        ck_assert_int_eq(swarp_gmnpr_lambda12(th, th, n, f, &l1, &l2), SWARP_OK);
+        ck_assert_int_eq(swarp_gmnpr_lambda(th, th, n, f, &l), SWARP_OK);
+        ck_assert_int_eq(swarp_gmnpr_lambda_lispsm(th, th, n, f, &ll), SWARP_OK);
+        ck_assert_msg(fabsl(l1 - ref) <= 1e-14L * ref, "lambda_1 %g vs %Lg", l1, ref);
+        ck_assert_msg(fabsl(l2 - ref) <= 1e-14L * ref, "lambda_2 %g vs %Lg", l2, ref);
+        ck_assert_msg(fabsl(l - ref) <= 1e-14L * ref, "lambda %g vs %Lg", l, ref);
+        ck_assert_msg(ll > 0.0 && ll < 1e-100, "lambda_LiSPSM %g", ll);
+    }
+}
+END_TEST
+
 int main(void) {
     Suite* s = suite_create("edges_core");
     TCase* t = tcase_create("mat4_invert");
@@ -489,6 +516,10 @@ int main(void) {
     tcase_add_test(t, glpr_lambda_below_true_min);
     tcase_add_test(t, split_schemes_huge_ratio);
     tcase_add_test(t, error_tiny_resolution_no_spurious_underflow);
+    suite_add_tcase(s, t);
+    /* paramfix pass */
+    t = tcase_create("paramfix");
+    tcase_add_test(t, gmnpr_lambda_theta_eq_phi_huge_far);
     suite_add_tcase(s, t);
     return tu_run_suite(s) ? 1 : 0;
 }
