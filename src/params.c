@@ -245,22 +245,23 @@ static swarp_status sw_gmnpr_args(double lambda, double theta, double phi, doubl
  * overflow at the end.  [GMNPR] (2) multiplies up to six factors (lambda^2,
  * tan, f, z) that overflow or underflow in pairs for lambda beyond 1e150
  * while psi and F stay representable. */
+static sw_xd sw_ratio_xd(const double* num, int n_num, const double* den, int n_den) {
+    sw_xd r = sw_xd_of(1.0);
+    for (int i = 0; i < n_num; ++i) r = sw_xd_mul(r, sw_xd_of(num[i]));
+    for (int i = 0; i < n_den; ++i) r = sw_xd_div(r, sw_xd_of(den[i]));
+    return r;
+}
 static double sw_ratio(const double* num, int n_num, const double* den, int n_den) {
-    double m = 1.0;
-    int e = 0, k;
-    for (int i = 0; i < n_num; ++i) {
-        m *= frexp(num[i], &k);
-        e += k;
-        m = frexp(m, &k);
-        e += k;
-    }
-    for (int i = 0; i < n_den; ++i) {
-        m /= frexp(den[i], &k);
-        e -= k;
-        m = frexp(m, &k);
-        e += k;
-    }
-    return ldexp(m, e);
+    return sw_xd_get(sw_ratio_xd(num, n_num, den, n_den));
+}
+
+/* The exponent 2k that sw_normalise_nf-like scaling by 4^-k would use to
+ * bring f into [1, 4), or 0 when that would push n into the subnormals. */
+static int sw_depth_shift(double n, double f) {
+    int e = ilogb(f);
+    int k = (e - (e & 1)) / 2; /* floor(e / 2) */
+    if (k > 0 && ldexp(n, -2 * k) < DBL_MIN) return 0;
+    return 2 * k;
 }
 
 /* Appends lambda (lambda + 1) to a list of denominators as lambda, lambda + 1
@@ -280,27 +281,40 @@ static int sw_put_ll(double lambda, double* den) {
 /* psi and offset of (2) without checks; each flag is 0 on overflow.
  * psi = 1/(tan(phi) D lambda (lambda + 1)) (case 1) or
  * 1/(2 f lambda (lambda + 1) tan(theta)) (case 2), as a ratio of factors so
- * that lambda (lambda + 1) overflowing does not make psi 0. */
+ * that lambda (lambda + 1) overflowing does not make psi 0.  psi is of degree
+ * -1 and varphi of degree 1 in (n, f): both are evaluated on depths scaled
+ * exactly by 2^-sh into [1, 4) and scaled back by 2^sh in the exponent, so
+ * subnormal depths keep their bits (D of n = 5e-324, f = 2e-317 had ~10) and
+ * varphi ~ D lambda neither overflows nor underflows in between. */
 static void sw_gmnpr_psi_offset(double lambda, double theta, double phi, double n, double f,
                                 double* psi, int* psi_ok, double* offset, int* offset_ok) {
     double p, o, den[6];
     const double one = 1.0;
+    int sh = sw_depth_shift(n, f);
+    n = ldexp(n, -sh);
+    f = ldexp(f, -sh);
     if (theta >= phi) {
         double t = sw_t_ratio(theta, phi), two;
         double Dh = sw_case1_D_half(t, n, f, &two);
         den[0] = tan(phi);
         den[1] = Dh;
         den[2] = two;
-        p = sw_ratio(&one, 1, den, 3 + sw_put_ll(lambda, den + 3));
-        o = sw_case1_D(t, n, f) * lambda + n * t - n;
+        p = sw_xd_get(sw_xd_scale(sw_ratio_xd(&one, 1, den, 3 + sw_put_ll(lambda, den + 3)), -sh));
+        /* varphi = D lambda + n t - n with D = two Dh */
+        sw_xd v = sw_xd_mul(sw_xd_mul(sw_xd_of(Dh), sw_xd_of(two)), sw_xd_of(lambda));
+        v = sw_xd_add(sw_xd_add(v, sw_xd_of(n * t)), sw_xd_of(-n));
+        o = sw_xd_get(sw_xd_scale(v, sh));
     } else {
         /* 1/(tan(phi) 2 f lambda (lambda+1) tan(theta)/tan(phi)) = 1/(2 f ll tan(theta)) */
         double u = sw_u_ratio(theta, phi);
         den[0] = 2.0;
         den[1] = f;
         den[2] = tan(theta);
-        p = sw_ratio(&one, 1, den, 3 + sw_put_ll(lambda, den + 3));
-        o = f * ((2.0 * lambda + 1.0) / u - 1.0);
+        p = sw_xd_get(sw_xd_scale(sw_ratio_xd(&one, 1, den, 3 + sw_put_ll(lambda, den + 3)), -sh));
+        /* varphi = f ((2 lambda + 1)/u - 1), 2 lambda + 1 = 2 (lambda + 1/2) */
+        sw_xd q = sw_xd_div(sw_xd_scale(sw_xd_of(lambda + 0.5), 1), sw_xd_of(u));
+        sw_xd v = sw_xd_mul(sw_xd_of(f), sw_xd_add(q, sw_xd_of(-1.0)));
+        o = sw_xd_get(sw_xd_scale(v, sh));
     }
     *psi = p;
     *psi_ok = sw_finite(p);

@@ -499,6 +499,35 @@ START_TEST(gmnpr_lambda_theta_eq_phi_huge_far) {
 }
 END_TEST
 
+/* psi and varphi of [GMNPR] (2) at subnormal depths (hard_cases
+ * swarp_gmnpr_psi case 190150, swarp_gmnpr_offset case 292871, default
+ * seed): D = f - n + (f + n) t was formed from subnormals with a few bits;
+ * psi (degree -1) and varphi (degree 1) are now evaluated on depths scaled
+ * into [1, 4).  Case 1 of (2), reference in long double. */
+static long double ref_case1_D(double theta, double phi, double n, double f, long double* t) {
+    *t = tanl(phi) / tanl(theta);
+    return ((long double)f - n) + ((long double)f + n) * *t;
+}
+START_TEST(gmnpr_psi_offset_subnormal_depths) {
+    {
+        double lambda = 999999999.99899995, th = 1.3007923168931095, ph = 0.15899265989773426;
+        double n = 4.9406564584124654e-324, f = 8.3991159793011913e-323, psi = SENTINEL;
+        long double t, D = ref_case1_D(th, ph, n, f, &t);
+        long double ref = 1.0L / (tanl(ph) * D * lambda * ((long double)lambda + 1.0L));
+        ck_assert_int_eq(swarp_gmnpr_psi(lambda, th, ph, n, f, &psi), SWARP_OK);
+        ck_assert_msg(fabsl(psi - ref) <= 1e-13L * ref, "psi %g vs %Lg", psi, ref);
+    }
+    {
+        double lambda = 1.9467611181654738e+105, th = 1.1257702121125834, ph = 0.11637911357491466;
+        double n = 4.9406564584124654e-324, f = 1.1645127272478181e-319, off = SENTINEL;
+        long double t, D = ref_case1_D(th, ph, n, f, &t);
+        long double ref = D * lambda + n * t - n;
+        ck_assert_int_eq(swarp_gmnpr_offset(lambda, th, ph, n, f, &off), SWARP_OK);
+        ck_assert_msg(fabsl(off - ref) <= 1e-13L * ref, "offset %g vs %Lg", off, ref);
+    }
+}
+END_TEST
+
 int main(void) {
     Suite* s = suite_create("edges_core");
     TCase* t = tcase_create("mat4_invert");
@@ -520,6 +549,7 @@ int main(void) {
     /* paramfix pass */
     t = tcase_create("paramfix");
     tcase_add_test(t, gmnpr_lambda_theta_eq_phi_huge_far);
+    tcase_add_test(t, gmnpr_psi_offset_subnormal_depths);
     suite_add_tcase(s, t);
     return tu_run_suite(s) ? 1 : 0;
 }
