@@ -52,6 +52,22 @@ static double sw_mul_div(double a, double b, double c) {
 
 /* ---- [RHS] (3.2) and (4.2) --------------------------------------------- */
 
+/* sw_nopt_core for z_0 < 2^-900 z_1, all in mantissa/exponent form (sw_xd):
+ * there z_0 4^-k is subnormal or nearly, n_p (z_1 - z_0) 4^-k underflows for
+ * subnormal n_p, and z_0 + sqrt(.) sqrt(.) is no longer dominated by normal
+ * numbers (n_opt of z_0 = 5e-324, n_p = 5e-324 was 8% off).  The pseudo-far
+ * depth is written z_0 + (1 - f_p) dz, equal to z_1 - f_p dz in exact
+ * arithmetic, without its cancellation for f_p near 1 (1 - f_p is exact for
+ * f_p >= 1/2).  Off the hot path: only extreme depth ratios get here. */
+static swarp_status sw_nopt_tiny_near(double d, double z_0, double dz, double n_p, double f_p,
+                                      double* out_n_opt) {
+    sw_xd z0 = sw_xd_of(z_0), dzx = sw_xd_of(dz);
+    sw_xd rn = sw_xd_sqrt(sw_xd_add(z0, sw_xd_mul(sw_xd_of(n_p), dzx)));
+    sw_xd rf = sw_xd_sqrt(sw_xd_add(z0, sw_xd_mul(sw_xd_of(1.0 - f_p), dzx)));
+    sw_xd ratio = sw_xd_div(sw_xd_add(z0, sw_xd_mul(rn, rf)), dzx);
+    return sw_put_warp(sw_xd_get(sw_xd_mul(sw_xd_of(d), ratio)), SWARP_OK, out_n_opt);
+}
+
 /* (3.2) rewritten without the cancellation in sqrt(z_1/z_0) - 1:
  *   d / (sqrt(z_1/z_0) - 1) = d sqrt(z_0) / (sqrt(z_1) - sqrt(z_0))
  *                           = d (z_0 + sqrt(z_0 z_1)) / (z_1 - z_0),
@@ -75,6 +91,7 @@ static swarp_status sw_nopt_core(double d, double z_0, double z_1, double n_p, d
     double dz_s = (dz * sh) * sh; /* dz >= ulp(z_1): normal after scaling */
     /* pseudo-near and pseudo-far as scaled eye-space depths */
     double z_0s = (z_0 * sh) * sh, z_1s = (z_1 * sh) * sh;
+    if (z_0s < 0x1p-900) return sw_nopt_tiny_near(d, z_0, dz, n_p, f_p, out_n_opt);
     double rn = n_p == 0.0 ? sqrt(z_0) * sh : sqrt(z_0s + n_p * dz_s);
     double rf = f_p == 0.0 ? sqrt(z_1) * sh : sqrt(z_1s - f_p * dz_s);
     double ratio = (z_0s + rn * rf) / dz_s; /* in [~sqrt(z_0/z_1), 2^54] */

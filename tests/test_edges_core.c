@@ -509,6 +509,7 @@ static long double ref_case1_D(double theta, double phi, double n, double f, lon
     return ((long double)f - n) + ((long double)f + n) * *t;
 }
 START_TEST(gmnpr_psi_offset_subnormal_depths) {
+    REQUIRE_WIDE_LONG_DOUBLE();
     {
         double lambda = 999999999.99899995, th = 1.3007923168931095, ph = 0.15899265989773426;
         double n = 4.9406564584124654e-324, f = 8.3991159793011913e-323, psi = SENTINEL;
@@ -524,6 +525,32 @@ START_TEST(gmnpr_psi_offset_subnormal_depths) {
         long double ref = D * lambda + n * t - n;
         ck_assert_int_eq(swarp_gmnpr_offset(lambda, th, ph, n, f, &off), SWARP_OK);
         ck_assert_msg(fabsl(off - ref) <= 1e-13L * ref, "offset %g vs %Lg", off, ref);
+    }
+}
+END_TEST
+
+/* [RHS] (4.2) with a subnormal near depth and pseudo-near (hard_cases
+ * swarp_warp_nopt_pseudo case 39311 default seed, 25654 and 43815 seed 7):
+ * z_0 4^-k and n_p (z_1 - z_0) 4^-k underflowed, n_opt was up to 16% off. */
+START_TEST(nopt_pseudo_subnormal_near) {
+    REQUIRE_WIDE_LONG_DOUBLE();
+    const double cases[][5] = {
+        {1093.3471348809717, 4.9406564584124654e-324, 9808211.9071743283, 4.9406564584124654e-324,
+         0.61457263166602416},
+        {9999.9999999999982, 4.9406564584124654e-324, 5955096.6976366295, 4.9406564584124654e-324,
+         0.68350289016082955},
+        {39.535494428061021, 4.9406564584124654e-324, 0.012631233181843886, 4.9406564584124654e-324,
+         0.54391003549150718},
+        {3527.7245569144916, 2.2250738585072009e-308, 2589249.6732360446, 4.9406564584124654e-324,
+         0.52381102761587361}};
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; ++i) {
+        const double* a = cases[i];
+        long double dz = (long double)a[2] - a[1];
+        long double ref = (long double)a[0] / dz *
+                          (a[1] + sqrtl((a[1] + a[3] * dz) * ((long double)a[2] - a[4] * dz)));
+        double n = SENTINEL;
+        ck_assert_int_eq(swarp_warp_nopt_pseudo(a[0], a[1], a[2], a[3], a[4], &n), SWARP_OK);
+        ck_assert_msg(fabsl(n - ref) <= 1e-13L * ref, "case %zu: n_opt %.17g vs %.17Lg", i, n, ref);
     }
 }
 END_TEST
@@ -550,6 +577,7 @@ int main(void) {
     t = tcase_create("paramfix");
     tcase_add_test(t, gmnpr_lambda_theta_eq_phi_huge_far);
     tcase_add_test(t, gmnpr_psi_offset_subnormal_depths);
+    tcase_add_test(t, nopt_pseudo_subnormal_near);
     suite_add_tcase(s, t);
     return tu_run_suite(s) ? 1 : 0;
 }
