@@ -1479,8 +1479,9 @@ SWARP_API swarp_status swarp_evsm_moments(double x, double c_pos, double c_neg,
  *  @return as swarp_evsm_moments (SWARP_ERR_FILTER_EXPONENT also when
  *          e^{c|t|} overflows for the receiver depth t), plus
  *          SWARP_ERR_OUT_OF_RANGE (min_variance < 0) and SWARP_ERR_NON_FINITE
- *          (a moment NaN/Inf, or moments beyond ~1e154 whose variance
- *          overflows). */
+ *          (a moment, t or min_variance NaN/Inf; finite moments of any
+ *          magnitude and a floor min_variance (c e^{c t})^2 beyond DBL_MAX
+ *          give a bound in [0, 1]). */
 SWARP_API swarp_status swarp_evsm_visibility(const double moments[4], double t, double c_pos,
                                              double c_neg, double min_variance,
                                              double* out_visibility);
