@@ -206,6 +206,28 @@ START_TEST(evsm_visibility_huge_floor) {
 }
 END_TEST
 
+/* Uniform LVSM layers of a subnormal depth range (hard_cases
+ * swarp_lvsm_layer_uniform cases 196417 and 328273, default seed): the width
+ * h = (s_N - s_0)/N was 0 and t = s_0 landed in layer 1.  The range is now
+ * scaled by a power of two first (exact), so splits are where they belong. */
+START_TEST(lvsm_layer_uniform_subnormal_range) {
+    uint32_t L = 99;
+    ck_assert_int_eq(swarp_lvsm_layer_uniform(0.0, 0.0, DBL_TRUE_MIN, 3, &L), SWARP_OK);
+    ck_assert_uint_eq(L, 0);
+    ck_assert_int_eq(swarp_lvsm_layer_uniform(-0.0, -0.0, DBL_TRUE_MIN, 46, &L), SWARP_OK);
+    ck_assert_uint_eq(L, 0);
+    ck_assert_int_eq(swarp_lvsm_layer_uniform(DBL_TRUE_MIN, 0.0, DBL_TRUE_MIN, 3, &L), SWARP_OK);
+    ck_assert_uint_eq(L, 2);
+    /* s_j = j DBL_TRUE_MIN: a depth on a split belongs to the layer above */
+    for (uint32_t j = 0; j < 4; ++j) {
+        ck_assert_int_eq(swarp_lvsm_layer_uniform(j * DBL_TRUE_MIN, 0.0, 4 * DBL_TRUE_MIN, 4, &L), SWARP_OK);
+        ck_assert_uint_eq(L, j);
+    }
+    ck_assert_int_eq(swarp_lvsm_layer_uniform(3 * DBL_TRUE_MIN, DBL_TRUE_MIN, 5 * DBL_TRUE_MIN, 8, &L), SWARP_OK);
+    ck_assert_uint_eq(L, 4);
+}
+END_TEST
+
 int main(void) {
     Suite* s = suite_create("edges_filter");
     TCase* t = tcase_create("findings");
@@ -219,6 +241,7 @@ int main(void) {
     t = tcase_create("paramfix");
     tcase_add_test(t, vsm_chebyshev_ratio_form);
     tcase_add_test(t, evsm_visibility_huge_floor);
+    tcase_add_test(t, lvsm_layer_uniform_subnormal_range);
     suite_add_tcase(s, t);
     return tu_run_suite(s) ? 1 : 0;
 }
