@@ -1858,7 +1858,11 @@ SWARP_API swarp_status swarp_bias_depth_per_world(const swarp_bias_map* map, con
  *  projective) map at p.  A PCF tap offset by (ds, dt) texels compares
  *  against d + dd/ds ds + dd/dt dt.  GLSL twin in docs/splits.md.
  *  @return as swarp_bias_texel_size; SWARP_ERR_DEGENERATE when the plane is
- *          seen edge-on by the light (its texel-space image is a line). */
+ *          seen edge-on by the light (its texel-space image is a line): the
+ *          tangents' texel-space images parallel to 1e-12, or their
+ *          determinant within its own rounding bound (the double evaluation
+ *          of M p and M T cannot tell the plane from an edge-on one, e.g.
+ *          a point far from the map's centre of projection). */
 SWARP_API swarp_status swarp_bias_receiver_plane(const swarp_bias_map* map, const swarp_vec3* p,
                                                  const swarp_vec3* tangent_a,
                                                  const swarp_vec3* tangent_b, double out_grad[2]);
