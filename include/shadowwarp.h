@@ -1690,8 +1690,9 @@ typedef struct swarp_stabilize_report {
  *  [RHS] §3.5 exact solution (ZZB09).
  *  @param cam      camera (near/far ignored; the split range is n_i, f_i)
  *  @param n_i, f_i split range, 0 < n_i < f_i
- *  @param[out] out_center world centre; @param[out] out_radius radius;
- *  @param[out] out_centroid_radius may be NULL
+ *  @param[out] out_center world centre; @param[out] out_radius radius
+ *  (> 0: at least the smallest positive double, for a range of a few
+ *  subnormals); @param[out] out_centroid_radius may be NULL (>= radius)
  *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
  *          SWARP_ERR_NEAR_FAR, SWARP_ERR_FOV, SWARP_ERR_ZERO_VECTOR,
  *          SWARP_ERR_OUT_OF_RANGE (aspect <= 0), SWARP_ERR_DEGENERATE (up
