@@ -1250,9 +1250,11 @@ static void e_stabilize_directional(swr_ctx* c) {
         r = V3(d.y * up.z - d.z * up.y, d.z * up.x - d.x * up.z, d.x * up.y - d.y * up.x);
         r = unit3(r);
         up = V3(r.y * d.z - r.z * d.y, r.z * d.x - r.x * d.z, r.x * d.y - r.y * d.x);
-        double ty = tan(cam.fovy / 2), tx = ty * cam.aspect;
+        /* tx in long double: aspect near DBL_MAX overflows tan(fovy/2) aspect
+         * in double (the corners came out NaN) while f tx is finite */
+        ld ty = tanl((ld)cam.fovy / 2), tx = ty * cam.aspect;
         for (int k = 0; k < 8; ++k) {
-            double z = (k & 4) ? f : n, sx = (k & 1) ? 1 : -1, sy = (k & 2) ? 1 : -1;
+            ld z = (k & 4) ? f : n, sx = (k & 1) ? 1 : -1, sy = (k & 2) ? 1 : -1;
             ld q[3] = {(ld)cam.eye.x + z * (d.x + sx * tx * r.x + sy * ty * up.x) - o.origin.x,
                        (ld)cam.eye.y + z * (d.y + sx * tx * r.y + sy * ty * up.y) - o.origin.y,
                        (ld)cam.eye.z + z * (d.z + sx * tx * r.z + sy * ty * up.z) - o.origin.z};
