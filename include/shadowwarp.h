@@ -1691,8 +1691,9 @@ typedef struct swarp_stabilize_report {
  *  [RHS] §3.5 exact solution (ZZB09).
  *  @param cam      camera (near/far ignored; the split range is n_i, f_i)
  *  @param n_i, f_i split range, 0 < n_i < f_i
- *  @param[out] out_center world centre; @param[out] out_radius radius;
- *  @param[out] out_centroid_radius may be NULL
+ *  @param[out] out_center world centre; @param[out] out_radius radius
+ *  (> 0: at least the smallest positive double, for a range of a few
+ *  subnormals); @param[out] out_centroid_radius may be NULL (>= radius)
  *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
  *          SWARP_ERR_NEAR_FAR, SWARP_ERR_FOV, SWARP_ERR_ZERO_VECTOR,
  *          SWARP_ERR_OUT_OF_RANGE (aspect <= 0), SWARP_ERR_DEGENERATE (up
@@ -2154,6 +2155,12 @@ typedef struct swarp_scene_needs {
     uint32_t _reserved[4];
 } swarp_scene_needs;
 
+/** Largest time_budget_ns, pass_cost_ns and blur_pass_cost_ns swarp_plan()
+ *  accepts (1e15 ns, 11.6 days per frame), else SWARP_ERR_OUT_OF_RANGE: the
+ *  predicted cost (up to (16 + SWARP_PLAN_MAX_PLANES) passes and their blur
+ *  passes) then stays finite. */
+#define SWARP_PLAN_MAX_COST_NS 1e15
+
 /** What the caller can spend.  Zero means default for every field. */
 typedef struct swarp_budget {
     double max_error;         /**< max screen pixels per texel, max(m_x, m_z) over the
@@ -2316,8 +2323,8 @@ typedef struct swarp_plan_chain {
  *          SWARP_ERR_RESERVED_NONZERO, SWARP_ERR_UNKNOWN_ENUM,
  *          SWARP_ERR_ZERO_VECTOR, SWARP_ERR_DEGENERATE (up parallel to dir),
  *          SWARP_ERR_FOV, SWARP_ERR_NEAR_FAR, SWARP_ERR_OUT_OF_RANGE (aspect,
- *          cone, soft_width, max_error, time, costs, max_passes > 32, scene
- *          box min > max), SWARP_ERR_RESOLUTION (screen or map above 65536),
+ *          cone, soft_width, max_error, time, costs (negative or above
+ *          SWARP_PLAN_MAX_COST_NS), max_passes > 32, scene box min > max), SWARP_ERR_RESOLUTION (screen or map above 65536),
  *          SWARP_ERR_PLAN_TOO_MANY_PLANES, SWARP_ERR_PLAN_EMPTY_VIEW. */
 SWARP_API swarp_status swarp_plan(const swarp_scene_needs* needs, const swarp_budget* budget,
                                   struct swarp_plan* out_plan);

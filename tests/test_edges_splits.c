@@ -836,6 +836,21 @@ START_TEST(planfix_depth_per_world_far_point) {
 }
 END_TEST
 
+/* hard_cases --entry swarp_stabilize_sphere --case 771240: n, f the two
+ * smallest subnormals and a narrow fovy: the exact radius (~(f - n)/2) is
+ * below half the smallest subnormal and came back 0, a point instead of a
+ * sphere around the frustum.  Rounded up to DBL_TRUE_MIN. */
+START_TEST(planfix_stabilize_sphere_subnormal_range) {
+    swarp_camera cam = camera();
+    cam.fovy = 1.000001e-06;
+    cam.aspect = 1.2183229238794722;
+    swarp_vec3 c;
+    double r = -1, rc = -1;
+    ck_assert_int_eq(swarp_stabilize_sphere(&cam, DBL_TRUE_MIN, 2 * DBL_TRUE_MIN, &c, &r, &rc), SWARP_OK);
+    ck_assert(r > 0 && rc >= r);
+}
+END_TEST
+
 int main(void) {
     Suite* s = suite_create("edges_splits");
     TCase* t = tcase_create("bias");
@@ -857,6 +872,7 @@ int main(void) {
     tcase_add_test(t, planfix_receiver_plane_edge_on_far_point);
     tcase_add_test(t, planfix_receiver_plane_subnormal_resolution);
     tcase_add_test(t, planfix_depth_per_world_far_point);
+    tcase_add_test(t, planfix_stabilize_sphere_subnormal_range);
     suite_add_tcase(s, t);
     return tu_run_suite(s) ? 1 : 0;
 }
