@@ -775,7 +775,10 @@ SWARP_API swarp_status swarp_body_adjusted_range(const swarp_camera* cam, const 
  *  @param[out] out_view  light view; origin at cam->eye (directional) or at
  *                    the light position (point light).
  *  @return SWARP_OK, SWARP_INFO_LIGHT_PARALLEL, SWARP_ERR_NULL_POINTER,
- *          SWARP_ERR_NON_FINITE, SWARP_ERR_ZERO_VECTOR, ... */
+ *          SWARP_ERR_NON_FINITE, SWARP_ERR_ZERO_VECTOR, SWARP_ERR_OVERFLOW
+ *          (an origin so far out, |origin| near DBL_MAX, that its distance
+ *          along an axis of the view, the matrix's translation, exceeds
+ *          DBL_MAX), ... */
 SWARP_API swarp_status swarp_focus_light_view(const swarp_camera* cam, const swarp_light* light,
                                               const swarp_vec3* axis, swarp_mat4* out_view);
 
@@ -1047,7 +1050,8 @@ SWARP_API swarp_status swarp_setup_follow(const swarp_camera* cam, const swarp_l
  *  @return as swarp_focus_light_view (SWARP_INFO_LIGHT_PARALLEL only with
  *          previous_view NULL), SWARP_INFO_FOLLOW_LAG, SWARP_ERR_ZERO_VECTOR,
  *          SWARP_ERR_NON_FINITE, SWARP_ERR_FOLLOW_FRAME (rows not a rigid
- *          right-handed frame within 1e-6). */
+ *          right-handed frame within 1e-6), SWARP_ERR_OVERFLOW (as
+ *          swarp_focus_light_view: a translation beyond DBL_MAX). */
 SWARP_API swarp_status swarp_focus_light_view_follow(const swarp_camera* cam, const swarp_light* light,
                                                      const swarp_vec3* axis, const swarp_camera* previous_cam,
                                                      const swarp_mat4* previous_view, swarp_mat4* out_view);

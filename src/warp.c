@@ -134,7 +134,10 @@ SWARP_API swarp_status swarp_warp_lispsm(const swarp_mat4* light_view, const swa
     if (nearest && !sw_finite3(nearest)) return SWARP_ERR_NON_FINITE;
     swarp_mat4 P, L_inv;
     swarp_warp_info info;
-    if (!sw_invert(light_view, &L_inv)) return SWARP_ERR_SINGULAR;
+    /* a look-at (swarp_focus_light_view's): its exact rigid inverse; a
+     * general inversion called light views 1e300 from the origin singular */
+    if (sw_is_rigid(light_view)) sw_rigid_inverse(light_view, &L_inv);
+    else if (!sw_invert(light_view, &L_inv)) return SWARP_ERR_SINGULAR;
     for (size_t i = 0; i < count; ++i) {
         swarp_vec4 h = sw_xform_point(light_view, points[i]);
         if (!(h.w > 0.0)) return SWARP_ERR_DEGENERATE;
