@@ -1872,7 +1872,8 @@ SWARP_API swarp_status swarp_bias_receiver_plane(const swarp_bias_map* map, cons
  *  swarp_cascade_select_depth and swarp_cascade_blend take (in a shader:
  *  -view_space_position.z).
  *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
- *          SWARP_ERR_ZERO_VECTOR. */
+ *          SWARP_ERR_ZERO_VECTOR, SWARP_ERR_OVERFLOW (the depth exceeds
+ *          DBL_MAX: p and eye near opposite ends of the double range). */
 SWARP_API swarp_status swarp_cascade_view_depth(const swarp_camera* cam, const swarp_vec3* p,
                                                 double* out_depth);
 

@@ -31,6 +31,14 @@ static inline int sw_gnormalize(swarp_vec3 a, swarp_vec3* out) {
     *out = sw_scale(b, 1.0 / sqrt(sw_dot(b, b)));
     return 1;
 }
+/* Θ = fovy/2 for the error model and the parameters: the smallest
+ * subnormal fovy (valid, > 0) halves to 0, which they refuse as a field of
+ * view (SWARP_ERR_FOV on valid arguments, issue 9, hard-case sweep); it is
+ * kept at the smallest positive double instead. */
+static inline double sw_half_fovy(double fovy) {
+    double t = 0.5 * fovy;
+    return t > 0.0 ? t : 0x1p-1074;
+}
 static inline double sw_max(double a, double b) { return a > b ? a : b; }
 static inline double sw_min(double a, double b) { return a < b ? a : b; }
 

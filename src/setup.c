@@ -392,7 +392,7 @@ static swarp_status sw_setup_points(const swarp_camera* cam, const swarp_light* 
         memset(&cfg, 0, sizeof cfg);
         cfg.near = near;
         cfg.far = far;
-        cfg.theta = 0.5 * cam->fovy;
+        cfg.theta = sw_half_fovy(cam->fovy);
         cfg.res_ix = sw > sh ? sw : sh;
         cfg.res_iy = sw > sh ? sh : sw;
         cfg.res_s = mw > mh ? mw : mh;

@@ -212,7 +212,7 @@ swarp_status sw_warp_lispsm(const swarp_mat4* M, const swarp_mat4* M_inv, const 
     double z1 = sw_eye_depth(M_inv, cam, v, c_ls.x, ymax, c_ls.z);
     if (!sw_finite(z0) || !sw_finite(z1)) z0 = z1 = near; /* axis leaves the light's space: uniform */
     z0 = fmax(z0, near);
-    double theta = 0.5 * cam->fovy;
+    double theta = sw_half_fovy(cam->fovy);
     double n_light = INFINITY;
     swarp_status st = SWARP_OK;
     if (d > 0.0) {

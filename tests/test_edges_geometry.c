@@ -617,6 +617,37 @@ START_TEST(sf_setup_points_eye_far_from_body) {
 }
 END_TEST
 
+/* The smallest subnormal fovy is a valid field of view; halved it was 0 and
+ * the warp parameter refused it (SWARP_ERR_FOV, undocumented for a valid
+ * fovy).  Hard-case sweep swarp_setup_range case 184736 (seed default). */
+START_TEST(sf_setup_range_subnormal_fovy) {
+    swarp_camera cam = {{0x1.86c4978ef9536p+16, -0x1.7e12ad692e853p+1, 0x1.8683be8199ed1p+16},
+                        {-0x1.c6ae222b55f79p-1, 0x1.06ee28b51c309p-4, -0x1.d22cb9b34eeb2p-2},
+                        {0x0p+0, 0x1p+0, 0x0p+0},
+                        0x0.0000000000001p-1022,
+                        0x1.9c43c695bc526p+0,
+                        0x1.22d8dc3f15a5ap-14,
+                        0x1.8b97c10ffc18dp+5,
+                        {0, 0, 0, 0}};
+    swarp_light l = {SWARP_LIGHT_DIRECTIONAL, 0, {-0x1.c6ae222b55f79p-1, 0x1.06ee28b51c309p-4, -0x1.d22cb9b34eeb2p-2},
+                     {0, 0, 0}, 0, {0, 0, 0, 0}};
+    swarp_aabb box = {{0x1.869952dda13bdp+16, -0x1.7e12ad692e853p+1, 0x1.867e7b2560306p+16},
+                      {0x1.86c4978ef9536p+16, 0x1.9c6f29668f0aap+4, 0x1.869fdceae757ep+16}};
+    swarp_setup_options o;
+    memset(&o, 0, sizeof o);
+    o.param = SWARP_WARP_PARAM_NREPAR;
+    o.center = SWARP_WARP_CENTER_NEAREST_VERTEX;
+    o.pancake = 1;
+    o.depth_range = SWARP_DEPTH_ZERO_TO_ONE;
+    o.map_height = 811;
+    swarp_setup_result r;
+    swarp_status st = swarp_setup_range(&cam, &l, &box, 0x1.cfcb70fa39a15p-13, 0x1.280f1e4189b74p-1, &o, &r, NULL, 0, NULL);
+    /* a fovy of 5e-324 rad: the frustum is far narrower than its
+     * coordinates resolve, the documented DEGENERATE (or a map) */
+    ck_assert_msg(st == SWARP_ERR_DEGENERATE || !swarp_status_is_error(st), "%s", swarp_status_name(st));
+}
+END_TEST
+
 int main(void) {
     Suite* s = suite_create("edges_geometry");
     TCase* t = tcase_create("geometry");
@@ -636,6 +667,7 @@ int main(void) {
     tcase_add_test(t, sf_setup_point_light_far);
     tcase_add_test(t, sf_warp_lispsm_far_light_view);
     tcase_add_test(t, sf_setup_points_eye_far_from_body);
+    tcase_add_test(t, sf_setup_range_subnormal_fovy);
     suite_add_tcase(s, t);
     return tu_run_suite(s) ? 1 : 0;
 }
