@@ -2087,7 +2087,9 @@ typedef struct swarp_cascade_result {
  *          SWARP_ERR_STABILIZE_WARPED, SWARP_ERR_STABILIZE_LIGHT,
  *          SWARP_ERR_SPLIT_COUNT (count > 16), SWARP_ERR_SPLIT_EMPTY,
  *          SWARP_ERR_CAPACITY, and the errors of swarp_setup,
- *          swarp_cascade_splits and swarp_stabilize_directional. */
+ *          swarp_cascade_splits and swarp_stabilize_directional (with
+ *          stabilisation: SWARP_ERR_OVERFLOW when the split's sphere or
+ *          matrix exceeds DBL_MAX). */
 SWARP_API swarp_status swarp_cascade_setup(const swarp_camera* cam, const swarp_light* light,
                                            const swarp_aabb* scene,
                                            const swarp_cascade_options* opts,

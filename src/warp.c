@@ -16,6 +16,8 @@
  * (orthographic) map exactly at ε = 0: the warp fades continuously as
  * n -> inf.  The map's coordinates are (x'/w, y'/w), its depth z'/w; a light
  * ray (fixed x, y) keeps its w, so depth order along it is kept. */
+#include <float.h>
+
 #include "geometry_internal.h"
 
 /* An extent of B along the warp axis below this fraction of B's light-space
@@ -89,7 +91,10 @@ static swarp_status sw_warp_n(const swarp_warp_options* o, double d, double z0, 
             s = swarp_warp_eta(g, theta, &eta);
             if (swarp_status_is_error(s)) return s;
             if (!(z1 > z0) || eta <= -1.0) break;
-            s = swarp_warp_nrepar(eta, z1 / z0, d, &n);
+            /* α = z_1/z_0 overflows for a z_0 near DBL_MIN (near = 2e-308):
+             * the largest double is the same limit for (3.4) (issue 9,
+             * hard-case sweep: NON_FINITE for valid arguments) */
+            s = swarp_warp_nrepar(eta, fmin(z1 / z0, DBL_MAX), d, &n);
             if (swarp_status_is_error(s)) return s;
             break;
         }

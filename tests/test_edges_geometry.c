@@ -648,6 +648,36 @@ START_TEST(sf_setup_range_subnormal_fovy) {
 }
 END_TEST
 
+/* near = DBL_MIN: α = z_1/z_0 of [RHS] (3.4) overflowed and n_repar
+ * refused it (SWARP_ERR_NON_FINITE for valid arguments).  Hard-case sweep
+ * swarp_setup_follow case 471357 (seed default, previous NULL). */
+START_TEST(sf_setup_nrepar_near_dbl_min) {
+    swarp_camera cam = {{-0x1.1c9549fe5c6c1p+4, -0x1.f792bb36cd1f9p-1, 0x1.18d1b543d373ep+5},
+                        {0x1.a2ef07efc7027p-1, 0x1.9e45c0e4a9906p-4, -0x1.21c0d5e1e81edp-1},
+                        {0x0p+0, 0x1p+0, 0x0p+0},
+                        0x1.a6fbae82b6eefp+0,
+                        0x1.0d03d4f03839fp+1,
+                        0x1p-1022,
+                        0x1.71df582e33329p+15,
+                        {0, 0, 0, 0}};
+    swarp_light l = {SWARP_LIGHT_DIRECTIONAL, 0, {0x1.3f72c8ee79cap-2, -0x1.ffd84f5e70dbdp-1, 0x1.500aff69a3bd6p-1},
+                     {0, 0, 0}, 0, {0, 0, 0, 0}};
+    swarp_aabb box = {{-0x1.1c9549fe5c6c1p+4, -0x1.b3a9e9d4033b9p+0, -0x1.124c623a923d2p+5},
+                      {0x1.1dfc04dd52f24p+6, 0x1.69653482278b7p+3, 0x1.3e85ed0e8e98ap+5}};
+    swarp_setup_options o;
+    memset(&o, 0, sizeof o);
+    o.technique = SWARP_TECHNIQUE_LISPSM;
+    o.param = SWARP_WARP_PARAM_NREPAR;
+    o.center = SWARP_WARP_CENTER_NEAREST_VERTEX;
+    o.map_width = 697;
+    o.pancake = 1;
+    swarp_setup_result r;
+    swarp_status st = swarp_setup(&cam, &l, &box, &o, &r, NULL, 0, NULL);
+    ck_assert_msg(!swarp_status_is_error(st), "%s", swarp_status_name(st));
+    ck_assert(mat_finite(&r.matrix) && r.n_eye > 0);
+}
+END_TEST
+
 int main(void) {
     Suite* s = suite_create("edges_geometry");
     TCase* t = tcase_create("geometry");
@@ -668,6 +698,7 @@ int main(void) {
     tcase_add_test(t, sf_warp_lispsm_far_light_view);
     tcase_add_test(t, sf_setup_points_eye_far_from_body);
     tcase_add_test(t, sf_setup_range_subnormal_fovy);
+    tcase_add_test(t, sf_setup_nrepar_near_dbl_min);
     suite_add_tcase(s, t);
     return tu_run_suite(s) ? 1 : 0;
 }

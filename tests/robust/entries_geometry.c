@@ -1433,6 +1433,10 @@ static void e_cascade_setup(swr_ctx* c) {
         static const swarp_status dom[] = {SWARP_ERR_OUT_OF_RANGE, SWARP_ERR_STABILIZE_WARPED, SWARP_ERR_STABILIZE_LIGHT,
                                            SWARP_ERR_RESOLUTION};
         for (size_t i = 0; i < sizeof dom / sizeof dom[0]; ++i) swr_domain(c, dom[i]);
+        /* documented (the errors of swarp_stabilize_directional): the
+         * stabilised sphere or matrix beyond DBL_MAX (far 1e306, aspect
+         * DBL_MAX) */
+        if ((int)o.stabilize.mode != 0) swr_domain(c, SWARP_ERR_OVERFLOW);
     }
     if (K <= SWARP_CASCADE_MAX_SPLITS && cap < K) swr_expect(c, SWARP_ERR_CAPACITY);
     if (!psp && cap == 0) swr_domain(c, SWARP_ERR_CAPACITY);
