@@ -210,6 +210,25 @@ static void sw_p0_inverse_after(swarp_mat4* m) {
     }
 }
 
+/* PSM's matrices (a post-perspective space, maybe the inverse projection:
+ * w < 0 on B is fine) get the coarse form of sw_world_resolves' test: B's
+ * extent against the rounding of its camera-relative coordinates, eps |p|.
+ * An eye at -DBL_MAX from a 1e4 body made light_proj · light_view
+ * overflow (inf - inf) though matrix was finite (hard-case sweep,
+ * setup_points, PSM). */
+static int sw_rel_resolves(const swarp_vec3* p, size_t n) {
+    double mag = 0.0, lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+    for (size_t i = 0; i < n; ++i) {
+        const double c[3] = {p[i].x, p[i].y, p[i].z};
+        for (int k = 0; k < 3; ++k) {
+            lo[k] = fmin(lo[k], c[k]), hi[k] = fmax(hi[k], c[k]);
+            mag = fmax(mag, fabs(c[k]));
+        }
+    }
+    double ext = fmax(hi[0] - lo[0], fmax(hi[1] - lo[1], hi[2] - lo[2]));
+    return DBL_EPSILON * mag <= SW_REL_RESOLVE * ext;
+}
+
 /* cam, light, B, H: camera-relative (src: sw_rel_camera); eye: the world eye */
 static swarp_status sw_setup_points(const swarp_camera* cam, const swarp_light* light, const swarp_vec3* B,
                                     size_t nb, const swarp_polyhedron* B_poly, const swarp_vec3* H, size_t nh, double near, double far,
@@ -236,6 +255,7 @@ static swarp_status sw_setup_points(const swarp_camera* cam, const swarp_light* 
     if (tech == SWARP_TECHNIQUE_PSM) {
         s = sw_psm_setup(cam, light, B, nb, B_poly, H, nh, near, far, o, fw, &res);
         if (swarp_status_is_error(s)) return s;
+        if (!sw_rel_resolves(B, nb)) return SWARP_ERR_DEGENERATE;
         info = sw_info_merge(info, s);
     } else {
         swarp_mat4 L, P0, M, M_inv;

@@ -234,6 +234,12 @@ swarp_status sw_warp_lispsm(const swarp_mat4* M, const swarp_mat4* M_inv, const 
     /* n' in eye units must exist too (far - near of 1e300: it overflows) */
     if (eps != 0.0 && !sw_finite(n_light * (far - near) / d)) return SWARP_ERR_DEGENERATE;
     swarp_mat4 P;
+    /* The centre's lateral position only matters for a perspective warp:
+     * uniform (eps = 0), the x, z translations are A_fit's business, and
+     * C_start itself may be meaningless there (a point light whose plane
+     * through the light holds s: x/D = 1e17 swamped B's x in the map,
+     * hard-case sweep, setup_points case 56085) */
+    if (eps == 0.0) c_ls.x = c_ls.z = 0.0;
     sw_warp_matrix(eps, ymin, d > 0.0 ? d : 1.0, c_ls.x, c_ls.z, &P);
     if (!sw_mat_finite(&P)) return SWARP_ERR_DEGENERATE;
     *out_P = P;

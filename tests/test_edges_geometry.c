@@ -678,6 +678,81 @@ START_TEST(sf_setup_nrepar_near_dbl_min) {
 }
 END_TEST
 
+/* A spot light straight above the eye with a horizontal axis: s (on the
+ * view vector at the near depth) lies in the light's plane, its x/D = 1e17
+ * became the uniform warp's x translation and swamped B's x in the map
+ * (all points at x = 1.2).  Hard-case sweep swarp_setup_points case 56085. */
+START_TEST(sf_setup_points_uniform_warp_centre) {
+    swarp_camera cam = {{-0x1.e848247b8083p+19, 0x1.96ed5aa033d04p+2, -0x1.e84c2c75ac433p+19},
+                        {0x1.d02ea0429890ap-2, -0x1.e82c012416c1ep-4, 0x1.c446ceb05efc7p-1},
+                        {0x0p+0, 0x1p+0, 0x0p+0},
+                        0x1.d52e17ddcc899p-1,
+                        0x1.76afb27592d01p+1,
+                        0x1.9aaee41c21907p+0,
+                        0x1.90043a8556c02p+4,
+                        {0, 0, 0, 0}};
+    swarp_light l = {SWARP_LIGHT_POINT, 0, {-0x1.c785fd9e89c53p-1, -0x1.0d3e0ba095613p-57, 0x1.d383b06670932p-2},
+                     {-0x1.e848247b8083p+19, 0x1.3f4f1c1891c7fp+7, -0x1.e84c2c75ac433p+19}, 0x1.7ea6c495c137fp+0, {0, 0, 0, 0}};
+    swarp_vec3 pt[6] = {{-0x1.e848247b8083p+19, -0x1.f5f6145520c98p+0, -0x1.e848c6b2e6ccp+19},
+                        {-0x1.e848247b8083p+19, 0x1.96ed5aa033d02p+2, -0x1.e848a2c821459p+19},
+                        {-0x1.e84821da81143p+19, -0x1.f5f6145520c98p+0, -0x1.e848c80c421ffp+19},
+                        {-0x1.e8480136c66f2p+19, 0x1.96ed5aa033d02p+2, -0x1.e848b4e153dfcp+19},
+                        {-0x1.e848247b8083p+19, 0x1.96ed5aa033d02p+2, -0x1.e848f99ba2d63p+19},
+                        {-0x1.e848247b8083p+19, -0x1.f5f6145520c98p+0, -0x1.e848cd2bbb3p+19}};
+    swarp_setup_options o;
+    memset(&o, 0, sizeof o);
+    o.param = SWARP_WARP_PARAM_PSEUDO;
+    o.center = SWARP_WARP_CENTER_VIEW_VECTOR;
+    o.depth_range = SWARP_DEPTH_NEG_ONE_TO_ONE;
+    o.map_width = 6555;
+    o.pseudo_near = 0x1.664ad2a28c6f8p-2;
+    o.pseudo_far = 0x0.0000000000001p-1022;
+    swarp_setup_result r;
+    swarp_status st = swarp_setup_points(&cam, &l, pt, 6, NULL, 0, cam.near, cam.far, &o, &r);
+    ck_assert_msg(!swarp_status_is_error(st), "%s", swarp_status_name(st));
+    double xlo = INFINITY, xhi = -INFINITY;
+    for (int i = 0; i < 6; ++i) {
+        const double* m = r.matrix.m;
+        double w = m[3] * pt[i].x + m[7] * pt[i].y + m[11] * pt[i].z + m[15];
+        double x = (m[0] * pt[i].x + m[4] * pt[i].y + m[8] * pt[i].z + m[12]) / w;
+        double y = (m[1] * pt[i].x + m[5] * pt[i].y + m[9] * pt[i].z + m[13]) / w;
+        ck_assert_msg(fabs(x) <= 1 + 1e-6 && fabs(y) <= 1 + 1e-6, "point %d at (%g, %g)", i, x, y);
+        xlo = fmin(xlo, x), xhi = fmax(xhi, x);
+    }
+    ck_assert(xlo < -1 + 1e-6 && xhi > 1 - 1e-6); /* the fit is tight again */
+}
+END_TEST
+
+/* PSM with the eye 1e289 from a 50-unit body: relative to the eye the body
+ * is one point, and light_proj · light_view overflowed (inf - inf) while
+ * matrix was finite, with SWARP_INFO.  Now the documented DEGENERATE.
+ * Hard-case sweep swarp_setup_points case 742279 (seed default). */
+START_TEST(sf_setup_points_psm_eye_far_from_body) {
+    swarp_camera cam = {{0x1.aac211d559113p+959, 0x1.74fe32580155ep+1, 0x1.5d2432787951p+0},
+                        {-0x1.e6807cfbc537ep-1, -0x1.268e4e5a6a742p-2, -0x1.eb24e534fe96cp-4},
+                        {0x0p+0, 0x1p+0, 0x0p+0},
+                        0x1.3c95715169bb5p+1,
+                        0x1.3ed4427b72df2p-1,
+                        0x1.4732188490c3bp+0,
+                        0x1.00fa989f66b5ep+2,
+                        {0, 0, 0, 0}};
+    swarp_light l = {SWARP_LIGHT_DIRECTIONAL, 0, {-0x1.e6807cfab1e6ap-1, -0x1.268e4e5a6a742p-2, -0x1.eb24e5792c5ap-4},
+                     {0, 0, 0}, 0, {0, 0, 0, 0}};
+    swarp_vec3 pt[3] = {{0x1.9884397165cdcp+2, 0x1.53a5e2ab1c218p-1, -0x1.211ae2314cea2p+4},
+                        {0x1.cc86f78ba8c9cp+2, 0x1.8f9befc060f4ep+1, -0x1.b13f54738cb48p+4},
+                        {0x1.17a47874e096p-1, 0x1.55fd9c258512dp+2, 0x1.9e6558e8d9249p+4}};
+    swarp_setup_options o;
+    memset(&o, 0, sizeof o);
+    o.technique = SWARP_TECHNIQUE_PSM;
+    o.map_width = 4943;
+    swarp_setup_result r, s;
+    memset(&r, 0xA5, sizeof r);
+    s = r;
+    ck_assert_int_eq(swarp_setup_points(&cam, &l, pt, 3, NULL, 0, cam.near, cam.far, &o, &r), SWARP_ERR_DEGENERATE);
+    ck_assert(memcmp(&r, &s, sizeof r) == 0);
+}
+END_TEST
+
 int main(void) {
     Suite* s = suite_create("edges_geometry");
     TCase* t = tcase_create("geometry");
@@ -699,6 +774,8 @@ int main(void) {
     tcase_add_test(t, sf_setup_points_eye_far_from_body);
     tcase_add_test(t, sf_setup_range_subnormal_fovy);
     tcase_add_test(t, sf_setup_nrepar_near_dbl_min);
+    tcase_add_test(t, sf_setup_points_uniform_warp_centre);
+    tcase_add_test(t, sf_setup_points_psm_eye_far_from_body);
     suite_add_tcase(s, t);
     return tu_run_suite(s) ? 1 : 0;
 }
