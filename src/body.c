@@ -31,6 +31,7 @@ static int sw_face_is_front(swarp_plane p, swarp_vec3 u) {
 }
 
 static swarp_vec3 sw_plane_n(swarp_plane p) { return sw_v3(p.a, p.b, p.c); }
+static double sw_vmax_abs(swarp_vec3 v) { return sw_max(fabs(v.x), sw_max(fabs(v.y), fabs(v.z))); }
 
 /* Is H flat (all vertices on the plane of face 0)? */
 static int sw_poly_is_flat(const swarp_polyhedron* H) {
@@ -108,6 +109,66 @@ static swarp_status sw_flat_extend(const swarp_polyhedron* H, swarp_vec3 u, doub
     return sw_poly_flat_from_loop(pts, np, n, out);
 }
 
+/* The silhouette plane of the edge a -> b of the back face p_k (c_k <= 0;
+ * a c_k within the apex tolerance above 0 counts as 0) whose twin lies in
+ * the front face p_j (c_j > 0, or 0 with the tie-break of
+ * sw_face_is_front): the plane through the edge containing u (or the apex).
+ *
+ * Fourier–Motzkin elimination of t from H's inequalities p_i(x - t u) <= 0,
+ * t >= 0 (of λ from x = (1-λ) h + λ l for the apex) pairs them into
+ * -c_k p_j + c_j p_k <= 0: a non-negative combination of two of H's own
+ * planes, so H lies inside it whatever the rounding, and it contains u (or
+ * l) up to the rounding of the c.  The cross product (a - b) x u of the
+ * edge's end points used before flips when the edge is all but parallel to
+ * u (a grazing light, issue 9) and cut H.  The combination cancels in turn
+ * when p_j and p_k are all but opposite (an all but flat H): its normal is
+ * then |n| << w_j + w_k, and the cross product is taken when its own
+ * condition (coordinates / |(a - b) x u|) is the better one.  The weights
+ * are scaled to at most 1 first: c ~ 1e-17 must not underflow.  0: no side
+ * face (both weights 0, or an edge parallel to u: zero area). */
+static int sw_side_plane(const swarp_polyhedron* H, uint8_t a, uint8_t b, uint32_t j, double cj, uint32_t k,
+                         double ck, swarp_vec3 u, const swarp_vec3* apex, swarp_plane* out) {
+    const swarp_plane pj = H->planes[j], pk = H->planes[k];
+    double wj = ck < 0.0 ? -ck : 0.0, wk = cj > 0.0 ? cj : 0.0;
+    const double m = sw_max(wj, wk);
+    if (!(m > 0.0)) return 0;
+    wj /= m, wk /= m;
+    swarp_vec3 n = sw_v3(wj * pj.a + wk * pk.a, wj * pj.b + wk * pk.b, wj * pj.c + wk * pk.c);
+    double len = sw_glen(n), d = wj * pj.d + wk * pk.d;
+    if (!(len >= 1e-3 * (wj + wk))) { /* all but opposite faces: try the end points */
+        swarp_vec3 va = H->vertices[a], vb = H->vertices[b];
+        swarp_vec3 dir = apex ? sw_sub(*apex, va) : u;
+        swarp_vec3 nn = sw_cross(sw_sub(va, vb), dir); /* (a - b) x u: outward for CCW b->a->... */
+        double lc = sw_glen(nn), sc = sw_max(sw_vmax_abs(va), sw_vmax_abs(vb));
+        if (apex) sc = sw_max(sc, sw_vmax_abs(*apex));
+        /* relative errors: sc |dir| / lc (cross) against (w_j + w_k) / len */
+        if (lc > 0.0 && sw_finite(lc) && sc * sw_glen(dir) * len < (wj + wk) * lc) {
+            n = nn, len = lc;
+            d = -sw_dot(nn, va);
+        }
+    }
+    if (!(len > 0.0) || !sw_finite(len)) return 0;
+    const double il = 1.0 / len;
+    *out = (swarp_plane){n.x * il, n.y * il, n.z * il, d * il};
+    return 1;
+}
+
+/* The face among the set cand (bits, not empty) whose loop has the
+ * directed edge p -> q; usually cand has that one face only. */
+static uint32_t sw_face_with_edge(const swarp_polyhedron* H, uint64_t cand, uint8_t p, uint8_t q) {
+    uint32_t first = 0;
+    while (first < 63 && !((cand >> first) & 1u)) ++first;
+    if ((cand & (cand - 1)) == 0) return first;
+    for (uint32_t g = first; g < 64; ++g) {
+        if (!((cand >> g) & 1u)) continue;
+        const uint32_t m = H->face_vertex_count[g];
+        const uint8_t* l = H->face_vertices[g];
+        for (uint32_t k = 0; k < m; ++k)
+            if (l[k] == p && l[k + 1 == m ? 0 : k + 1] == q) return g;
+    }
+    return first;
+}
+
 /* Are H's loops tidy (at least 3 vertices, no index repeated next to
  * itself, also across the wrap)?  Then the sweep built from them needs no
  * sw_poly_finalize pass: see sw_extend. */
@@ -135,16 +196,21 @@ static swarp_status sw_extend(const swarp_polyhedron* H, swarp_vec3 u, double T,
                               int h_tidy, swarp_polyhedron* out, int* finalized) {
     const uint32_t nv = H->vertex_count;
     int front[SWARP_POLY_MAX_FACES];
+    /* c[f]: face f's plane at the apex, or n_f·u (its value at the point at
+     * infinity along u): the weights of the silhouette planes below */
+    double c[SWARP_POLY_MAX_FACES];
     int any_front = 0;
     *finalized = 0;
     /* the tolerance is only needed for the apex (a pass over H's vertices) */
     const double eps = apex ? SW_BODY_VISIBLE_EPS_REL * sw_poly_scale(H) : 0.0;
     for (uint32_t f = 0; f < H->face_count; ++f) {
+        swarp_plane p = H->planes[f];
         if (apex) {
-            swarp_plane p = H->planes[f];
-            front[f] = p.a * apex->x + p.b * apex->y + p.c * apex->z + p.d > eps;
+            c[f] = p.a * apex->x + p.b * apex->y + p.c * apex->z + p.d;
+            front[f] = c[f] > eps;
         } else {
-            front[f] = sw_face_is_front(H->planes[f], u);
+            c[f] = p.a * u.x + p.b * u.y + p.c * u.z;
+            front[f] = sw_face_is_front(p, u);
         }
         any_front |= front[f];
     }
@@ -188,13 +254,18 @@ static swarp_status sw_extend(const swarp_polyhedron* H, swarp_vec3 u, double T,
     }
     /* directed edges of the front faces, as bit sets per start vertex */
     uint64_t front_edge[SWARP_POLY_MAX_VERTICES][SWARP_POLY_MAX_VERTICES / 64];
+    /* front_faces[p]: the front faces at vertex p, as a bit set (64 faces) */
+    _Static_assert(SWARP_POLY_MAX_FACES <= 64, "face sets are 64-bit");
+    uint64_t front_faces[SWARP_POLY_MAX_VERTICES];
     memset(front_edge, 0, nv * sizeof front_edge[0]);
+    memset(front_faces, 0, nv * sizeof front_faces[0]);
     for (uint32_t g = 0; g < H->face_count; ++g) {
         if (!front[g]) continue;
         uint32_t m = H->face_vertex_count[g];
         for (uint32_t j = 0; j < m; ++j) {
             uint8_t p = H->face_vertices[g][j], q = H->face_vertices[g][j + 1 == m ? 0 : j + 1];
             front_edge[p][q >> 6] |= (uint64_t)1 << (q & 63);
+            front_faces[p] |= (uint64_t)1 << g;
         }
     }
     uint32_t tf = 0;
@@ -227,16 +298,9 @@ static swarp_status sw_extend(const swarp_polyhedron* H, swarp_vec3 u, double T,
                     q[3] = id[nv + b];
                     qn = 4;
                 }
-                swarp_vec3 nn;
-                {
-                    /* plane through the edge containing u (or the apex) */
-                    swarp_vec3 va = H->vertices[a], vb = H->vertices[b];
-                    swarp_vec3 dir = apex ? sw_sub(*apex, va) : u;
-                    nn = sw_cross(sw_sub(va, vb), dir); /* (a - b) x u: outward for CCW b->a->... */
-                }
-                swarp_vec3 nu = {0, 0, 1};
-                if (!sw_gnormalize(nn, &nu)) continue; /* edge parallel to u: zero-area side */
-                out->planes[tf] = (swarp_plane){nu.x, nu.y, nu.z, -sw_dot(nu, H->vertices[a])};
+                /* the plane through the edge containing u (or the apex) */
+                const uint32_t g = sw_face_with_edge(H, front_faces[a] & front_faces[b], b, a);
+                if (!sw_side_plane(H, a, b, g, c[g], f, c[f], u, apex, &out->planes[tf])) continue;
                 out->face_vertex_count[tf] = qn;
                 ++tf;
             }

@@ -478,6 +478,108 @@ START_TEST(body_points_box_to_dbl_max) {
 }
 END_TEST
 
+/* bodyfix pass: B of a light all but parallel to faces of H (issue 9).
+ * The side face through a silhouette edge came from the cross product of
+ * the edge and u; with the edge all but parallel to u its plane tilted at
+ * random and cut H (a vertex of B 1.9 outside its own face in a box of
+ * size 80).  H below are the sweep's, written out exactly. */
+static swarp_polyhedron poly_of(const swarp_vec3* v, uint32_t nv, const swarp_plane* pl, const uint8_t (*loops)[8],
+                                const uint32_t* counts, uint32_t nf) {
+    swarp_polyhedron p;
+    memset(&p, 0, sizeof p);
+    p.vertex_count = nv;
+    p.face_count = nf;
+    for (uint32_t i = 0; i < nv; ++i) p.vertices[i] = v[i];
+    for (uint32_t f = 0; f < nf; ++f) {
+        p.planes[f] = pl[f];
+        p.face_vertex_count[f] = counts[f];
+        for (uint32_t k = 0; k < counts[f]; ++k) p.face_vertices[f][k] = loops[f][k];
+    }
+    return p;
+}
+static double plane_at(const swarp_plane* p, swarp_vec3 v) { return p->a * v.x + p->b * v.y + p->c * v.z + p->d; }
+/* B a valid convex polyhedron holding H (tol: 1e-9 of the coordinates, the sweep's) */
+static void check_body(const swarp_polyhedron* B, const swarp_polyhedron* H, double tol) {
+    ck_assert(B->vertex_count > 0);
+    for (uint32_t f = 0; f < B->face_count; ++f) {
+        for (uint32_t v = 0; v < B->vertex_count; ++v)
+            ck_assert_msg(plane_at(&B->planes[f], B->vertices[v]) <= tol, "B: vertex %u outside face %u by %g", v, f,
+                          plane_at(&B->planes[f], B->vertices[v]));
+        for (uint32_t k = 0; k < B->face_vertex_count[f]; ++k)
+            ck_assert_msg(fabs(plane_at(&B->planes[f], B->vertices[B->face_vertices[f][k]])) <= tol, "B: face %u vertex %u off", f, k);
+        for (uint32_t v = 0; v < H->vertex_count; ++v)
+            ck_assert_msg(plane_at(&B->planes[f], H->vertices[v]) <= tol, "H: vertex %u outside face %u of B by %g", v, f,
+                          plane_at(&B->planes[f], H->vertices[v]));
+    }
+}
+START_TEST(body_from_h_grazing) {
+    { /* hard_cases --entry swarp_body_from_h --case 381: faces of H along u */
+        const swarp_vec3 v[8] = {{1000013.2954460557, -8.9844438238526063, 1000047.9719960216},
+                                 {1000013.2636823052, -8.9844438238526063, 1000048.0026541286},
+                                 {1000013.3525812096, -8.8624380987345592, 1000048.0311916781},
+                                 {1000013.3208174591, -8.8624380987345592, 1000048.0618497852},
+                                 {1000014.9888504959, -10, 1000049.5887847046},
+                                 {1000014.1419592315, -10, 1000048.7651116069},
+                                 {1000014.0263221718, -10, 1000048.8767235321},
+                                 {1000014.8194869936, -10, 1000049.7522529442}};
+        const swarp_plane pl[6] = {{0.69705353393728475, 0.021305661978565271, -0.71670247634091355, 19674.247833837289},
+                                   {-0.74093821012435601, 0.021305661978565271, 0.67123515815649182, 69680.84988727828},
+                                   {-0.4577813317784053, -0.75198715247401371, -0.47429060162437747, 932094.01629031124},
+                                   {0.3125613629799564, 0.89299343697151956, 0.32383346939114305, -636406.645880464},
+                                   {-0.57579407390566717, 0.5590869056707003, -0.59655931504141047, 1172394.6856121109},
+                                   {0, -1, 0, -10}};
+        const uint8_t loops[6][8] = {{0, 2, 4, 5}, {1, 6, 7, 3}, {0, 5, 6, 1}, {2, 3, 7, 4}, {0, 1, 3, 2}, {4, 7, 6, 5}};
+        const uint32_t counts[6] = {4, 4, 4, 4, 4, 4};
+        const swarp_polyhedron H = poly_of(v, 8, pl, loops, counts, 6);
+        const swarp_light l = sun(-0.71951851024007607, -3.4234199473741066e-17, 0.69447326328801262);
+        const swarp_aabb box = {{1000000, -10, 999995.49762011471}, {1000100, -8.0801787172850155, 1000095.4976201147}};
+        swarp_polyhedron B;
+        ck_assert_int_eq(swarp_body_from_h(&H, &l, &box, &B), SWARP_OK);
+        check_body(&B, &H, 1e-9 * 1000100.0);
+    }
+    { /* --seed 7 --case 114554: a sliver H (1.7e-7 thick at 1e5) in a flat box */
+        const swarp_vec3 v[6] = {{100048.25590152819, -2.0543779807876397, 99958.893644363838},
+                                 {100048.25590152819, -2.0543779807876397, 99958.893644190059},
+                                 {100048.25590162282, -2.054377543344311, 99958.893644363838},
+                                 {100048.25590162282, -2.054377543344311, 99958.893644190059},
+                                 {100040.32603357387, 1.613135543318911, 99958.893644276948},
+                                 {100039.53266287014, -2.054377973499284, 99958.893644276948}};
+        const swarp_plane pl[5] = {{0.41977270840732089, 0.9076292598172353, -0.0, -41995.662738083891},
+                                   {0.97739165452070753, -0.21143687869734071, -0.0, -97786.764738773694},
+                                   {0, -1, 0, -2.054377973499284},
+                                   {0, 0, -1, 99958.893644276948},
+                                   {0, 0, 1, -99958.893644276948}};
+        const uint8_t loops[5][8] = {{2, 3, 4}, {0, 1, 3, 2}, {0, 5, 1}, {2, 3, 0, 1, 5, 4}, {0, 1, 2, 3, 4, 5}};
+        const uint32_t counts[5] = {3, 4, 3, 6, 6};
+        const swarp_polyhedron H = poly_of(v, 6, pl, loops, counts, 5);
+        const swarp_light l = sun(-0.97739242680818161, 0.21143330867678684, -1.0000000000000001e-09);
+        const swarp_aabb box = {{99967.318617837038, -2.054377973499284, 99958.893644276948},
+                                {100048.25590255289, 16.564658620014637, 99958.893644276948}};
+        swarp_polyhedron B;
+        ck_assert_int_eq(swarp_body_from_h(&H, &l, &box, &B), SWARP_OK);
+        check_body(&B, &H, 1e-9 * 100048.25590255289);
+    }
+    { /* --case 221183: a flat H, u 1e-9 out of its plane: the two faces at a
+         silhouette edge are opposite, their combination cancels (the side
+         plane comes from the edge then) */
+        const swarp_vec3 v[4] = {{999957.33045117056, -2.4299542947557908, 999996.63614671386},
+                                 {999979.39726582309, -2.4299542947557908, 999996.63614671386},
+                                 {999957.33045117056, 20.09206042700847, 999996.63614671386},
+                                 {999979.39726582309, 20.09206042700847, 999996.63614671386}};
+        const swarp_plane pl[2] = {{0, 0, -0.99999999999999989, 999996.63614671375}, {0, 0, 1, -999996.63614671386}};
+        const uint8_t loops[2][8] = {{0, 2, 3, 1}, {0, 1, 3, 2}};
+        const uint32_t counts[2] = {4, 4};
+        const swarp_polyhedron H = poly_of(v, 4, pl, loops, counts, 2);
+        const swarp_light l = sun(0.7795, -0.626402, -1e-09);
+        const swarp_aabb box = {{999957.33045117056, -2.4299542947557908, 999996.63614671386},
+                                {999979.39726582309, 20.09206042700847, 999996.63614671386}};
+        swarp_polyhedron B;
+        ck_assert_int_eq(swarp_body_from_h(&H, &l, &box, &B), SWARP_OK);
+        check_body(&B, &H, 1e-9 * 999996.63614671386);
+    }
+}
+END_TEST
+
 int main(void) {
     Suite* s = suite_create("edges_geometry");
     TCase* t = tcase_create("geometry");
@@ -491,6 +593,8 @@ int main(void) {
     tcase_add_test(t, warp_lispsm_tiny_n);
     tcase_add_test(t, poly_from_camera_overflow);
     tcase_add_test(t, body_points_box_to_dbl_max);
+    /* bodyfix pass */
+    tcase_add_test(t, body_from_h_grazing);
     suite_add_tcase(s, t);
     return tu_run_suite(s) ? 1 : 0;
 }
