@@ -331,6 +331,33 @@ void sw_depth_range_of(const swarp_polyhedron* P, swarp_vec3 eye, swarp_vec3 f, 
     *mx = hi;
 }
 
+/* A half-angle of the frustum beyond atan(SW_WIDE_TAN) (89.94°): its
+ * corners reach far·tan, up to 1e12 far (an aspect of 1e300 is valid), and
+ * V clipped by the box works at that scale: the clipper's tolerance (1e-12
+ * of it) swallowed the box (H's vertices outside S, off their faces;
+ * issue 9).  Such an H is built the other way round (sw_body_h_wide).  The
+ * test costs no tan for the usual cameras. */
+#define SW_WIDE_TAN 1e3
+static int sw_frustum_is_wide(const swarp_camera* cam) {
+    if (!(cam->aspect > 1e2 || cam->fovy > 3.1)) return 0; /* tan(fovy/2) < 24.1: aspect 100 is short of 1e3 */
+    const double ty = tan(0.5 * cam->fovy);
+    return ty > SW_WIDE_TAN || ty * cam->aspect > SW_WIDE_TAN;
+}
+
+/* H = S clipped by the 6 planes of V: coordinates of the box's size. */
+static swarp_status sw_body_h_wide(const swarp_camera* cam, double near, double far, const swarp_aabb* box,
+                                   swarp_polyhedron* H) {
+    swarp_plane pl[6];
+    sw_frustum_planes(cam, near, far, pl);
+    swarp_status s = swarp_poly_from_aabb(box, H);
+    if (s != SWARP_OK) return s;
+    for (int k = 0; k < 6 && H->vertex_count > 0; ++k) {
+        s = sw_poly_clip(H, sw_v3(pl[k].a, pl[k].b, pl[k].c), pl[k].d, H);
+        if (s != SWARP_OK) return s;
+    }
+    return SWARP_OK;
+}
+
 swarp_status sw_body_h(const swarp_camera* cam, double near, double far, const swarp_aabb* box,
                        swarp_polyhedron* H) {
     /* box first: it is usually the smaller, and clipping the frustum by the
@@ -352,10 +379,16 @@ swarp_status sw_body_h(const swarp_camera* cam, double near, double far, const s
         if (zbox < near) return SWARP_ERR_BODY_EMPTY; /* S lies wholly before the near plane */
         if (far > 2.0 * zbox) far = 2.0 * zbox;
     }
-    swarp_status s = sw_poly_from_frustum(cam, near, far, &V); /* the callers checked cam, near, far */
-    if (s != SWARP_OK) return s;
-    s = sw_poly_clip_box(&V, box, H);
-    if (s != SWARP_OK) return s;
+    swarp_status s;
+    if (sw_frustum_is_wide(cam)) {
+        s = sw_body_h_wide(cam, near, far, box, H);
+        if (s != SWARP_OK) return s;
+    } else {
+        s = sw_poly_from_frustum(cam, near, far, &V); /* the callers checked cam, near, far */
+        if (s != SWARP_OK) return s;
+        s = sw_poly_clip_box(&V, box, H);
+        if (s != SWARP_OK) return s;
+    }
     if (H->vertex_count == 0) return SWARP_ERR_BODY_EMPTY;
     return SWARP_OK;
 }

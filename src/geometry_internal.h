@@ -37,6 +37,9 @@ void sw_poly_from_corners(const swarp_vec3 c[8], swarp_polyhedron* out);
 /* V for [near, far] of a camera its caller has checked (shape, 0 < near < far):
  * the checks of swarp_poly_from_camera_range are not repeated */
 swarp_status sw_poly_from_frustum(const swarp_camera* cam, double near, double far, swarp_polyhedron* out);
+/* the same frustum's 6 planes (outward unit normals; left, right, bottom,
+ * top, near, far) */
+void sw_frustum_planes(const swarp_camera* cam, double near, double far, swarp_plane pl[6]);
 swarp_status sw_poly_clip(const swarp_polyhedron* in, swarp_vec3 n, double d,
                           swarp_polyhedron* out);
 swarp_status sw_poly_clip_box(const swarp_polyhedron* in, const swarp_aabb* box,

@@ -580,6 +580,52 @@ START_TEST(body_from_h_grazing) {
 }
 END_TEST
 
+/* bodyfix pass: H of a frustum 1e308 times wider than high (aspect > 0 is
+ * valid).  Its corners reach 1e12 far, and V clipped by the box worked at
+ * that scale: H came back with vertices outside S (hard_cases --entry
+ * swarp_body_h --case 3032, 12049 off face by 0.016).  H is S clipped by V's
+ * planes now. */
+START_TEST(body_h_wide_frustum) {
+    const struct {
+        swarp_vec3 eye, dir;
+        double fovy, aspect, near, far;
+        swarp_aabb box;
+    } cs[2] = {{{-31.751584031759648, 100.45574252696035, 62.857658427288321},
+                {-0.018260733025294202, -0.95564929522641417, -0.29394041940950671},
+                2.2465414555918914, 599831027782.41699, 0.11888177530992466, 264256.68945755722,
+                {{-31.751584031759648, -6.8721496823754737, -14.170167836906506},
+                 {-31.751584031759648, 14.275260174198303, 80.365812504042381}}},
+               {{29.676834685905799, -4.030733603187139, 15.120412622492502},
+                {-0.25397572117364237, 0.3490883434295603, -0.90201644194323505},
+                1.2087456828278447, 1.7976931348623157e+308, 0.36992942317370747, 539.33774063933242,
+                {{-2.822924792926608e-87, -6.4778537620193246, -27.39234609960095},
+                 {48.621515276744233, 15.709044089674826, 30.299721219030182}}}};
+    for (int i = 0; i < 2; ++i) {
+        swarp_camera cam;
+        memset(&cam, 0, sizeof cam);
+        cam.eye = cs[i].eye, cam.dir = cs[i].dir, cam.up = (swarp_vec3){0, 1, 0};
+        cam.fovy = cs[i].fovy, cam.aspect = cs[i].aspect, cam.near = cs[i].near, cam.far = cs[i].far;
+        swarp_polyhedron H;
+        ck_assert_int_eq(swarp_body_h(&cam, cam.near, cam.far, &cs[i].box, &H), SWARP_OK);
+        const swarp_aabb* b = &cs[i].box;
+        const double tol = 1e-9 * (cam.far + 100);
+        const double dl = sqrt(cam.dir.x * cam.dir.x + cam.dir.y * cam.dir.y + cam.dir.z * cam.dir.z);
+        ck_assert(H.vertex_count > 0);
+        for (uint32_t v = 0; v < H.vertex_count; ++v) {
+            const swarp_vec3 p = H.vertices[v];
+            ck_assert_msg(p.x >= b->min.x - tol && p.x <= b->max.x + tol && p.y >= b->min.y - tol && p.y <= b->max.y + tol &&
+                              p.z >= b->min.z - tol && p.z <= b->max.z + tol,
+                          "case %d: vertex %u (%.17g %.17g %.17g) outside S", i, v, p.x, p.y, p.z);
+            const double z = ((p.x - cam.eye.x) * cam.dir.x + (p.y - cam.eye.y) * cam.dir.y + (p.z - cam.eye.z) * cam.dir.z) / dl;
+            ck_assert_msg(z >= cam.near - tol && z <= cam.far + tol, "case %d: vertex %u at depth %g", i, v, z);
+        }
+        for (uint32_t f = 0; f < H.face_count; ++f)
+            for (uint32_t k = 0; k < H.face_vertex_count[f]; ++k)
+                ck_assert_msg(fabs(plane_at(&H.planes[f], H.vertices[H.face_vertices[f][k]])) <= tol, "case %d: off face %u", i, f);
+    }
+}
+END_TEST
+
 int main(void) {
     Suite* s = suite_create("edges_geometry");
     TCase* t = tcase_create("geometry");
@@ -595,6 +641,7 @@ int main(void) {
     tcase_add_test(t, body_points_box_to_dbl_max);
     /* bodyfix pass */
     tcase_add_test(t, body_from_h_grazing);
+    tcase_add_test(t, body_h_wide_frustum);
     suite_add_tcase(s, t);
     return tu_run_suite(s) ? 1 : 0;
 }
