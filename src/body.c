@@ -31,7 +31,6 @@ static int sw_face_is_front(swarp_plane p, swarp_vec3 u) {
 }
 
 static swarp_vec3 sw_plane_n(swarp_plane p) { return sw_v3(p.a, p.b, p.c); }
-static double sw_vmax_abs(swarp_vec3 v) { return sw_max(fabs(v.x), sw_max(fabs(v.y), fabs(v.z))); }
 
 /* Is H flat (all vertices on the plane of face 0)? */
 static int sw_poly_is_flat(const swarp_polyhedron* H) {
@@ -122,8 +121,7 @@ static swarp_status sw_flat_extend(const swarp_polyhedron* H, swarp_vec3 u, doub
  * edge's end points used before flips when the edge is all but parallel to
  * u (a grazing light, issue 9) and cut H.  The combination cancels in turn
  * when p_j and p_k are all but opposite (an all but flat H): its normal is
- * then |n| << w_j + w_k, and the cross product is taken when its own
- * condition (coordinates / |(a - b) x u|) is the better one.  The weights
+ * then |n| << w_j + w_k, and the cross product is taken.  The weights
  * are scaled to at most 1 first: c ~ 1e-17 must not underflow.  0: no side
  * face (both weights 0, or an edge parallel to u: zero area). */
 static int sw_side_plane(const swarp_polyhedron* H, uint8_t a, uint8_t b, uint32_t j, double cj, uint32_t k,
@@ -135,16 +133,25 @@ static int sw_side_plane(const swarp_polyhedron* H, uint8_t a, uint8_t b, uint32
     wj /= m, wk /= m;
     swarp_vec3 n = sw_v3(wj * pj.a + wk * pk.a, wj * pj.b + wk * pk.b, wj * pj.c + wk * pk.c);
     double len = sw_glen(n), d = wj * pj.d + wk * pk.d;
-    if (!(len >= 1e-3 * (wj + wk))) { /* all but opposite faces: try the end points */
+    if (!(len >= 1e-3 * (wj + wk))) {
+        /* all but opposite faces (an all but flat H): the combination is
+         * the noise of the two normals; the plane through the end points
+         * and u holds the edge and its sweep whatever the noise.  Its side:
+         * H's vertices of the back face's loop inside (the farthest one
+         * decides), an edge all but parallel to u may flip it. */
         swarp_vec3 va = H->vertices[a], vb = H->vertices[b];
         swarp_vec3 dir = apex ? sw_sub(*apex, va) : u;
         swarp_vec3 nn = sw_cross(sw_sub(va, vb), dir); /* (a - b) x u: outward for CCW b->a->... */
-        double lc = sw_glen(nn), sc = sw_max(sw_vmax_abs(va), sw_vmax_abs(vb));
-        if (apex) sc = sw_max(sc, sw_vmax_abs(*apex));
-        /* relative errors: sc |dir| / lc (cross) against (w_j + w_k) / len */
-        if (lc > 0.0 && sw_finite(lc) && sc * sw_glen(dir) * len < (wj + wk) * lc) {
+        double lc = sw_glen(nn);
+        if (lc > 0.0 && sw_finite(lc)) {
             n = nn, len = lc;
             d = -sw_dot(nn, va);
+            double far_v = 0.0;
+            for (uint32_t i = 0; i < H->face_vertex_count[k]; ++i) {
+                const double e = sw_dot(nn, H->vertices[H->face_vertices[k][i]]) + d;
+                if (fabs(e) > fabs(far_v)) far_v = e;
+            }
+            if (far_v > 0.0) n = sw_scale(n, -1.0), d = -d;
         }
     }
     if (!(len > 0.0) || !sw_finite(len)) return 0;
@@ -369,7 +376,7 @@ swarp_status sw_body_h(const swarp_camera* cam, double near, double far, const s
      * plane leaves H empty */
     {
         swarp_vec3 f = {0, 0, -1};
-        sw_gnormalize(cam->dir, &f);
+        sw_unit_dir(cam->dir, &f);
         double zbox = -INFINITY;
         for (int i = 0; i < 8; ++i) {
             swarp_vec3 c = sw_v3((i & 1) ? box->max.x : box->min.x, (i & 2) ? box->max.y : box->min.y,
@@ -413,7 +420,7 @@ swarp_status sw_body_h_eye(const swarp_camera* cam, double near, double far, con
 /* The square pyramid L circumscribing the spot cone: 4 planes through l. */
 swarp_status sw_clip_light_pyramid(swarp_polyhedron* B, const swarp_light* light) {
     swarp_vec3 a = {0, 0, 1}, e1 = {1, 0, 0}, e2;
-    sw_gnormalize(light->direction, &a);
+    sw_unit_dir(light->direction, &a); /* subnormal directions are valid */
     swarp_vec3 ref = fabs(a.x) < 0.6 ? sw_v3(1, 0, 0) : (fabs(a.y) < 0.6 ? sw_v3(0, 1, 0) : sw_v3(0, 0, 1));
     sw_gnormalize(sw_cross(ref, a), &e1);
     e2 = sw_cross(a, e1);
@@ -483,7 +490,7 @@ static swarp_status sw_body_from_h_ex(const swarp_polyhedron* H, const swarp_lig
             flat = fabs(off) <= SW_BODY_VISIBLE_EPS_REL * sw_max(sw_poly_scale(H), sw_glen(*l));
         } else {
             swarp_vec3 dd = {0, -1, 0};
-            sw_gnormalize(light->direction, &dd);
+            sw_unit_dir(light->direction, &dd);
             flat = fabs(p.a * dd.x + p.b * dd.y + p.c * dd.z) <= 1e-15; /* exactly grazing */
         }
     }
@@ -502,7 +509,7 @@ static swarp_status sw_body_from_h_ex(const swarp_polyhedron* H, const swarp_lig
         }
     } else {
         swarp_vec3 u = {0, 0, 1};
-        sw_gnormalize(sw_scale(light->direction, -1.0), &u);
+        sw_unit_dir(sw_scale(light->direction, -1.0), &u);
         /* T: longer than any path inside S */
         double diag = sw_glen(sw_sub(box->max, box->min));
         double T = 2.0 * diag + 1e-300;

@@ -67,6 +67,15 @@ swarp_status sw_check_box(const swarp_aabb* box) {
     return SWARP_OK;
 }
 
+int sw_unit_dir(swarp_vec3 a, swarp_vec3* out) {
+    const double m = sw_max(fabs(a.x), sw_max(fabs(a.y), fabs(a.z)));
+    if (m < 1e-150) { /* |a|^2 would underflow: a / m is exact enough (one rounding per component) */
+        if (!(m > 0.0)) return 0;
+        a = sw_v3(a.x / m, a.y / m, a.z / m);
+    }
+    return sw_gnormalize(a, out);
+}
+
 void sw_camera_basis(const swarp_camera* cam, swarp_vec3* f, swarp_vec3* r, swarp_vec3* u) {
     swarp_vec3 ff = {0, 0, -1}, uu, rr = {1, 0, 0};
     sw_gnormalize(cam->dir, &ff);

@@ -577,6 +577,41 @@ START_TEST(body_from_h_grazing) {
         ck_assert_int_eq(swarp_body_from_h(&H, &l, &box, &B), SWARP_OK);
         check_body(&B, &H, 1e-9 * 999996.63614671386);
     }
+    { /* --case 86671: a flat H 1e-6 across at 1e6 (1e-12 relative): its two
+         faces' normals are noise 6e-6 apart, their combination was the
+         same plane for all four side faces (B's vertices 0.05 off them) */
+        const swarp_vec3 v[4] = {{1000019.2898066387, -9.6434890779410534, 999987.01980257814},
+                                 {1000019.2898077613, -9.6434890779410534, 999987.01980135264},
+                                 {1000019.2898066947, -9.6434866056056485, 999987.01980262937},
+                                 {1000019.2898078172, -9.6434866056056485, 999987.01980140386}};
+        const swarp_plane pl[2] = {{0.73706029448968602, -0.03066388804624055, 0.67513098599950572, -1412197.0306131393},
+                                   {-0.73705558950557382, 0.03065810914696479, -0.67513638497871231, 1412197.7243911668}};
+        const uint8_t loops[2][8] = {{0, 1, 3, 2}, {0, 2, 3, 1}};
+        const uint32_t counts[2] = {4, 4};
+        const swarp_polyhedron H = poly_of(v, 4, pl, loops, counts, 2);
+        const swarp_light l = sun(-0.737046, 0.030662, -0.675147);
+        const swarp_aabb box = {{999989.95603555243, -9.6434878724353403, 999967.10043944884},
+                                {1000019.289807965, 0.80153271073714905, 1000001.6590176614}};
+        swarp_polyhedron B;
+        ck_assert_int_eq(swarp_body_from_h(&H, &l, &box, &B), SWARP_OK);
+        check_body(&B, &H, 1e-9 * 1000019.289807965);
+    }
+    { /* --case 637158: a spot whose direction is (4.9e-324, 0, 0) (valid: not
+         zero) was rejected with SWARP_ERR_ZERO_VECTOR (its unit vector was inf) */
+        const swarp_aabb hb = {{-2, -8, -40}, {12, -8, 50}}, scene = {{-3, -9, -45}, {13, 10, 56}};
+        swarp_polyhedron H, B, R;
+        ck_assert_int_eq(swarp_poly_from_aabb(&hb, &H), SWARP_OK);
+        swarp_light spot;
+        memset(&spot, 0, sizeof spot);
+        spot.type = SWARP_LIGHT_POINT;
+        spot.position = (swarp_vec3){-30, -8, 5};
+        spot.direction = (swarp_vec3){4.9406564584124654e-324, 0, 0};
+        spot.cone_angle = 1.34;
+        ck_assert_int_eq(swarp_body_from_h(&H, &spot, &scene, &B), SWARP_OK);
+        ck_assert_int_eq(swarp_body_receivers(&H, &spot, &R), SWARP_OK);
+        ck_assert(R.vertex_count > 0);
+        for (uint32_t i = 0; i < R.vertex_count; ++i) ck_assert(isfinite(R.vertices[i].x) && R.vertices[i].x >= -2 - 1e-9);
+    }
 }
 END_TEST
 
