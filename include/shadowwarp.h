@@ -775,7 +775,10 @@ SWARP_API swarp_status swarp_body_adjusted_range(const swarp_camera* cam, const 
  *  @param[out] out_view  light view; origin at cam->eye (directional) or at
  *                    the light position (point light).
  *  @return SWARP_OK, SWARP_INFO_LIGHT_PARALLEL, SWARP_ERR_NULL_POINTER,
- *          SWARP_ERR_NON_FINITE, SWARP_ERR_ZERO_VECTOR, ... */
+ *          SWARP_ERR_NON_FINITE, SWARP_ERR_ZERO_VECTOR, SWARP_ERR_OVERFLOW
+ *          (an origin so far out, |origin| near DBL_MAX, that its distance
+ *          along an axis of the view, the matrix's translation, exceeds
+ *          DBL_MAX), ... */
 SWARP_API swarp_status swarp_focus_light_view(const swarp_camera* cam, const swarp_light* light,
                                               const swarp_vec3* axis, swarp_mat4* out_view);
 
@@ -1047,7 +1050,8 @@ SWARP_API swarp_status swarp_setup_follow(const swarp_camera* cam, const swarp_l
  *  @return as swarp_focus_light_view (SWARP_INFO_LIGHT_PARALLEL only with
  *          previous_view NULL), SWARP_INFO_FOLLOW_LAG, SWARP_ERR_ZERO_VECTOR,
  *          SWARP_ERR_NON_FINITE, SWARP_ERR_FOLLOW_FRAME (rows not a rigid
- *          right-handed frame within 1e-6). */
+ *          right-handed frame within 1e-6), SWARP_ERR_OVERFLOW (as
+ *          swarp_focus_light_view: a translation beyond DBL_MAX). */
 SWARP_API swarp_status swarp_focus_light_view_follow(const swarp_camera* cam, const swarp_light* light,
                                                      const swarp_vec3* axis, const swarp_camera* previous_cam,
                                                      const swarp_mat4* previous_view, swarp_mat4* out_view);
@@ -1479,8 +1483,9 @@ SWARP_API swarp_status swarp_evsm_moments(double x, double c_pos, double c_neg,
  *  @return as swarp_evsm_moments (SWARP_ERR_FILTER_EXPONENT also when
  *          e^{c|t|} overflows for the receiver depth t), plus
  *          SWARP_ERR_OUT_OF_RANGE (min_variance < 0) and SWARP_ERR_NON_FINITE
- *          (a moment NaN/Inf, or moments beyond ~1e154 whose variance
- *          overflows). */
+ *          (a moment, t or min_variance NaN/Inf; finite moments of any
+ *          magnitude and a floor min_variance (c e^{c t})^2 beyond DBL_MAX
+ *          give a bound in [0, 1]). */
 SWARP_API swarp_status swarp_evsm_visibility(const double moments[4], double t, double c_pos,
                                              double c_neg, double min_variance,
                                              double* out_visibility);
@@ -1873,7 +1878,8 @@ SWARP_API swarp_status swarp_bias_receiver_plane(const swarp_bias_map* map, cons
  *  swarp_cascade_select_depth and swarp_cascade_blend take (in a shader:
  *  -view_space_position.z).
  *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
- *          SWARP_ERR_ZERO_VECTOR. */
+ *          SWARP_ERR_ZERO_VECTOR, SWARP_ERR_OVERFLOW (the depth exceeds
+ *          DBL_MAX: p and eye near opposite ends of the double range). */
 SWARP_API swarp_status swarp_cascade_view_depth(const swarp_camera* cam, const swarp_vec3* p,
                                                 double* out_depth);
 
@@ -2087,7 +2093,9 @@ typedef struct swarp_cascade_result {
  *          SWARP_ERR_STABILIZE_WARPED, SWARP_ERR_STABILIZE_LIGHT,
  *          SWARP_ERR_SPLIT_COUNT (count > 16), SWARP_ERR_SPLIT_EMPTY,
  *          SWARP_ERR_CAPACITY, and the errors of swarp_setup,
- *          swarp_cascade_splits and swarp_stabilize_directional. */
+ *          swarp_cascade_splits and swarp_stabilize_directional (with
+ *          stabilisation: SWARP_ERR_OVERFLOW when the split's sphere or
+ *          matrix exceeds DBL_MAX). */
 SWARP_API swarp_status swarp_cascade_setup(const swarp_camera* cam, const swarp_light* light,
                                            const swarp_aabb* scene,
                                            const swarp_cascade_options* opts,

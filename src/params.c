@@ -174,6 +174,19 @@ SWARP_API swarp_status swarp_warp_wlz(double gamma, double theta, double n_e, do
     double Wp_s1 = W_s * (1.0 - cos(theta - gamma));
     double Wp_s2 = W_s * sin(theta + gamma);
     double W_lz = Wp_n + Wp_s2 + (gamma <= theta ? Wp_s1 : 0.0);
+    if (!sw_finite(W_s)) {
+        /* theta within 1e-16 of pi/2 with f_e - n_e beyond ~1e292: W_s
+         * overflows while its weight sin(theta + gamma) + (1 - cos(theta -
+         * gamma)) can be ~1e-16 (gamma ~ pi/2 too), so W_lz is representable:
+         * (f_e - n_e) weight / cos(theta) with one rounding (sw_mul_div).
+         * The weight without rounding theta + gamma near pi (28% off):
+         * sin(theta + gamma) = sin(theta) cos(gamma) + cos(theta) sin(gamma),
+         * two non-negative terms, and 1 - cos(x) = 2 sin^2(x/2). */
+        double h = sin(0.5 * (theta - gamma));
+        double weight = sin(theta) * cos(gamma) + cos(theta) * sin(gamma) +
+                        (gamma <= theta ? 2.0 * h * h : 0.0);
+        W_lz = Wp_n + sw_mul_div(f_e - n_e, weight, cos(theta));
+    }
     if (!sw_finite(W_lz)) return SWARP_ERR_OVERFLOW;
     *out_W_lz = W_lz;
     return SWARP_OK;

@@ -172,17 +172,7 @@ END_TEST
  * blame the library; those tests check at run time that long double really
  * is wider and skip (saying so) when it is not.  The -Werror and
  * ASan+UBSan runs do the checks. */
-static int long_double_is_wide(void) {
-    volatile long double one = 1.0L, eps = LDBL_EPSILON, tiny = DBL_MIN;
-    return one + eps != one && tiny * tiny > 0.0L;
-}
-#define REQUIRE_WIDE_LONG_DOUBLE()                                                              \
-    do {                                                                                       \
-        if (!long_double_is_wide()) {                                                          \
-            fprintf(stderr, "%s: skipped, long double is not wider than double here\n", __func__); \
-            return;                                                                            \
-        }                                                                                      \
-    } while (0)
+/* long_double_is_wide() and REQUIRE_WIDE_LONG_DOUBLE(): test_util.h */
 
 /* [RHS] (3.2) in long double: d / (sqrt(z_1/z_0) - 1) = d sqrt(z_0) / (sqrt(z_1) - sqrt(z_0)) */
 static long double ref_nopt(double d, double z0, double z1) {
@@ -555,6 +545,30 @@ START_TEST(nopt_pseudo_subnormal_near) {
 }
 END_TEST
 
+/* [RHS] (3.5) with theta and gamma within 1e-12 of pi/2 and f_e beyond
+ * 1e292 (hard_cases swarp_warp_wlz case 422843 default seed, 385998 seed 7):
+ * W_s = (f_e - n_e)/cos(theta) overflows but its weight sin(theta + gamma)
+ * is ~1e-12, so W_lz ~ 1e300 fits; it was SWARP_ERR_OVERFLOW.  The weight
+ * is formed without rounding theta + gamma near pi (that alone was 28% off
+ * in the second case). */
+START_TEST(wlz_side_face_overflow) {
+    REQUIRE_WIDE_LONG_DOUBLE();
+    const double cases[][5] = {
+        {1.5707963267948966, 1.5707963267933258, 1.5592589912618021e-05, 1.3133597697636303e+300,
+         0.24826051966515786},
+        {1.5707963267948961, 1.5707963267948963, 3.2926388120750315e+294, 2.5527408468792104e+298,
+         694594.81425827008}};
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; ++i) {
+        const double* a = cases[i];
+        long double g = a[0], th = a[1], Ws = ((long double)a[3] - a[2]) / cosl(th);
+        long double ref = a[4] * cosl(g) + Ws * sinl(th + g) + (g <= th ? Ws * (1.0L - cosl(th - g)) : 0.0L);
+        double w = SENTINEL;
+        ck_assert_int_eq(swarp_warp_wlz(a[0], a[1], a[2], a[3], a[4], &w), SWARP_OK);
+        ck_assert_msg(isfinite(w) && fabsl(w - ref) <= 1e-13L * ref, "case %zu: W_lz %g vs %Lg", i, w, ref);
+    }
+}
+END_TEST
+
 int main(void) {
     Suite* s = suite_create("edges_core");
     TCase* t = tcase_create("mat4_invert");
@@ -578,6 +592,7 @@ int main(void) {
     tcase_add_test(t, gmnpr_lambda_theta_eq_phi_huge_far);
     tcase_add_test(t, gmnpr_psi_offset_subnormal_depths);
     tcase_add_test(t, nopt_pseudo_subnormal_near);
+    tcase_add_test(t, wlz_side_face_overflow);
     suite_add_tcase(s, t);
     return tu_run_suite(s) ? 1 : 0;
 }

@@ -478,6 +478,464 @@ START_TEST(body_points_box_to_dbl_max) {
 }
 END_TEST
 
+/* ---- setupfix pass (issue 9, hard-case sweep findings) ------------------ */
+
+static int mat_finite(const swarp_mat4* m) {
+    for (int i = 0; i < 16; ++i)
+        if (!isfinite(m->m[i])) return 0;
+    return 1;
+}
+
+/* A subnormal light direction is a valid direction: the view was NaN with
+ * SWARP_OK (1/|a| overflowed in the normalisation, inf * 0). */
+START_TEST(sf_focus_light_view_subnormal_direction) {
+    swarp_camera cam = {{1, 2, 3}, {0, 0, -1}, {0, 1, 0}, 1.0, 1.5, 1, 100, {0, 0, 0, 0}};
+    swarp_light l;
+    memset(&l, 0, sizeof l);
+    l.type = SWARP_LIGHT_DIRECTIONAL;
+    l.direction = (swarp_vec3){4.9406564584124654e-324, 0, 0};
+    swarp_mat4 V, F;
+    swarp_status st = swarp_focus_light_view(&cam, &l, NULL, &V);
+    ck_assert_msg(!swarp_status_is_error(st), "%s", swarp_status_name(st));
+    ck_assert(mat_finite(&V));
+    /* it looks along +x: row 2 (-forward) is (-1, 0, 0) */
+    ck_assert(fabs(V.m[2] + 1) < 1e-15 && fabs(V.m[6]) < 1e-15 && fabs(V.m[10]) < 1e-15);
+    /* the same through the follow twin */
+    st = swarp_focus_light_view_follow(&cam, &l, NULL, NULL, &V, &F);
+    ck_assert_msg(!swarp_status_is_error(st), "%s", swarp_status_name(st));
+    ck_assert(mat_finite(&F));
+}
+END_TEST
+
+/* An origin near DBL_MAX whose distance along the view axis exceeds
+ * DBL_MAX: an infinite view came with SWARP_OK; now SWARP_ERR_OVERFLOW and
+ * the output untouched. */
+START_TEST(sf_focus_light_view_translation_overflow) {
+    swarp_camera cam = {{0, 0, 0}, {0, 0, -1}, {0, 1, 0}, 1.0, 1.5, 1, 100, {0, 0, 0, 0}};
+    swarp_light l;
+    memset(&l, 0, sizeof l);
+    l.type = SWARP_LIGHT_POINT;
+    l.position = (swarp_vec3){-DBL_MAX, -DBL_MAX, 0};
+    swarp_vec3 axis = {1, 1, 0};
+    swarp_mat4 V, P, S;
+    memset(&V, 0xA5, sizeof V);
+    S = V;
+    ck_assert_int_eq(swarp_focus_light_view(&cam, &l, &axis, &V), SWARP_ERR_OVERFLOW);
+    ck_assert(memcmp(&V, &S, sizeof V) == 0);
+    /* the follow twin, with a valid previous view */
+    swarp_light l0 = l;
+    l0.position = (swarp_vec3){0, 10, 0};
+    ck_assert(!swarp_status_is_error(swarp_focus_light_view(&cam, &l0, &axis, &P)));
+    ck_assert_int_eq(swarp_focus_light_view_follow(&cam, &l, &axis, NULL, &P, &V), SWARP_ERR_OVERFLOW);
+    ck_assert(memcmp(&V, &S, sizeof V) == 0);
+    /* representable: an origin at DBL_MAX straight along the axis */
+    l.position = (swarp_vec3){0, 0, DBL_MAX};
+    axis = (swarp_vec3){0, 0, -1};
+    ck_assert(!swarp_status_is_error(swarp_focus_light_view(&cam, &l, &axis, &V)));
+    ck_assert(mat_finite(&V));
+}
+END_TEST
+
+/* Point light 1e300 from the scene: the general inversion of P0 L called it
+ * singular (SWARP_ERR_SINGULAR, undocumented); the rigid inverse is exact.
+ * Hard-case sweep swarp_setup case 236679 (seed default). */
+START_TEST(sf_setup_point_light_far) {
+    swarp_camera cam = {{0x1.71e732314ff46p+4, 0x1.d359e7729f874p+3, -0x1.71ce7489ccf2p+4},
+                        {-0x1.793a0395a490fp-806, -0x1.c0bf34083786ep-1, 0x1.ed0849c0029adp-2},
+                        {0x0p+0, 0x1p+0, 0x0p+0},
+                        0x1.ff704895e684cp+0,
+                        0x1.11d1e11ac3f0bp+1,
+                        0x1p+0,
+                        0x1.98878bb1bb0e8p+20,
+                        {0, 0, 0, 0}};
+    swarp_light l = {SWARP_LIGHT_POINT, 0, {-0x1.1a62633145c07p-53, 0x1.c0bf34083786ep-1, -0x1.ed0849c0029adp-2},
+                     {0x1.71e732314ff46p+4, 0x1.7e43c8800759cp+996, -0x1.6a1a5362cce79p+4}, 0x0p+0, {0, 0, 0, 0}};
+    swarp_aabb box = {{-0x0.0000000000001p-1022, -0x1.b7139c483011cp-328, -0x1.b4203ac68cfcap+4},
+                      {0x1.2d049d7653df6p+6, 0x1.2896faf258974p+4, -0x1.543ba6e46a2cap+4}};
+    swarp_setup_result r;
+    swarp_status st = swarp_setup(&cam, &l, &box, NULL, &r, NULL, 0, NULL);
+    ck_assert_msg(!swarp_status_is_error(st), "%s", swarp_status_name(st));
+    ck_assert(mat_finite(&r.matrix) && mat_finite(&r.light_view) && mat_finite(&r.light_proj));
+}
+END_TEST
+
+/* swarp_warp_lispsm with the look-at of a spot light 1e302 above: its
+ * general inversion failed (SWARP_ERR_SINGULAR, undocumented). */
+START_TEST(sf_warp_lispsm_far_light_view) {
+    swarp_camera cam = {{0, 5, 0}, {0, 0, -1}, {0, 1, 0}, 1.0, 1.5, 1, 100, {0, 0, 0, 0}};
+    swarp_light l;
+    memset(&l, 0, sizeof l);
+    l.type = SWARP_LIGHT_POINT;
+    l.position = (swarp_vec3){0, 1e302, 0};
+    l.direction = (swarp_vec3){0.1, -1, 0.2};
+    l.cone_angle = 0.5;
+    swarp_mat4 L, P;
+    ck_assert(!swarp_status_is_error(swarp_focus_light_view(&cam, &l, NULL, &L)));
+    swarp_vec3 pts[4] = {{-10, 0, -5}, {10, 0, -5}, {-20, 1, -60}, {20, 2, -60}};
+    swarp_status st = swarp_warp_lispsm(&L, &cam, 1, 100, pts, 4, NULL, NULL, &P, NULL);
+    ck_assert_msg(!swarp_status_is_error(st), "%s", swarp_status_name(st));
+    ck_assert(mat_finite(&P));
+}
+END_TEST
+
+/* An eye 1e145 from a 40-unit body: relative to the eye its points are all
+ * equal, and the map put them at x = 1e4 with SWARP_OK.  Now the documented
+ * SWARP_ERR_DEGENERATE (the map is finer than the coordinates resolve).
+ * Hard-case sweep swarp_setup_points case 9279 (seed default). */
+START_TEST(sf_setup_points_eye_far_from_body) {
+    swarp_camera cam = {{0x1.49af6d2161444p+481, 0x1.898860b8bbd58p+3, -0x1.e848p+19},
+                        {0x1.159f5e7fdada8p-1, -0x1.6ec3667adb363p-6, -0x1.ae0b6b71f612ap-1},
+                        {0x0p+0, 0x1p+0, 0x0p+0},
+                        0x1.999999999999ap-4,
+                        0x1.8p+1,
+                        0x1.79bb7e9d955a3p-7,
+                        0x1.4524706a02c5dp-3,
+                        {0, 0, 0, 0}};
+    swarp_light l = {SWARP_LIGHT_DIRECTIONAL, 0, {0x1.1765708e644aep-1, 0x1.2b5d695975ae2p-7, 0x1.ad05a0439b166p-1},
+                     {0, 0, 0}, 0, {0, 0, 0, 0}};
+    swarp_vec3 pts[2] = {{-0x1.e848fe9d2ce6ep+19, -0x1.729dbec5c4df3p+2, -0x1.e844fadc383ebp+19},
+                         {-0x1.e84d93f0e5df1p+19, 0x1.8d33911d53ba4p+1, -0x1.e845401f1608dp+19}};
+    swarp_setup_options o;
+    memset(&o, 0, sizeof o);
+    o.technique = SWARP_TECHNIQUE_UNIFORM;
+    swarp_setup_result r, s;
+    memset(&r, 0xA5, sizeof r);
+    s = r;
+    ck_assert_int_eq(swarp_setup_points(&cam, &l, pts, 2, NULL, 0, cam.near, cam.far, &o, &r), SWARP_ERR_DEGENERATE);
+    ck_assert(memcmp(&r, &s, sizeof r) == 0);
+    /* the same body seen from 100 units: mapped into the unit square */
+    cam.eye = (swarp_vec3){-1000100, 5, -1000000};
+    swarp_status st = swarp_setup_points(&cam, &l, pts, 2, NULL, 0, cam.near, cam.far, &o, &r);
+    ck_assert_msg(!swarp_status_is_error(st), "%s", swarp_status_name(st));
+    for (int i = 0; i < 2; ++i) {
+        const swarp_mat4* m = &r.matrix;
+        double w = m->m[3] * pts[i].x + m->m[7] * pts[i].y + m->m[11] * pts[i].z + m->m[15];
+        double x = (m->m[0] * pts[i].x + m->m[4] * pts[i].y + m->m[8] * pts[i].z + m->m[12]) / w;
+        double y = (m->m[1] * pts[i].x + m->m[5] * pts[i].y + m->m[9] * pts[i].z + m->m[13]) / w;
+        ck_assert_msg(fabs(x) <= 1 + 1e-6 && fabs(y) <= 1 + 1e-6, "point %d at (%g, %g)", i, x, y);
+    }
+}
+END_TEST
+
+/* bodyfix pass: B of a light all but parallel to faces of H (issue 9).
+ * The side face through a silhouette edge came from the cross product of
+ * the edge and u; with the edge all but parallel to u its plane tilted at
+ * random and cut H (a vertex of B 1.9 outside its own face in a box of
+ * size 80).  H below are the sweep's, written out exactly. */
+static swarp_polyhedron poly_of(const swarp_vec3* v, uint32_t nv, const swarp_plane* pl, const uint8_t (*loops)[8],
+                                const uint32_t* counts, uint32_t nf) {
+    swarp_polyhedron p;
+    memset(&p, 0, sizeof p);
+    p.vertex_count = nv;
+    p.face_count = nf;
+    for (uint32_t i = 0; i < nv; ++i) p.vertices[i] = v[i];
+    for (uint32_t f = 0; f < nf; ++f) {
+        p.planes[f] = pl[f];
+        p.face_vertex_count[f] = counts[f];
+        for (uint32_t k = 0; k < counts[f]; ++k) p.face_vertices[f][k] = loops[f][k];
+    }
+    return p;
+}
+static double plane_at(const swarp_plane* p, swarp_vec3 v) { return p->a * v.x + p->b * v.y + p->c * v.z + p->d; }
+/* B a valid convex polyhedron holding H (tol: 1e-9 of the coordinates, the sweep's) */
+static void check_body(const swarp_polyhedron* B, const swarp_polyhedron* H, double tol) {
+    ck_assert(B->vertex_count > 0);
+    for (uint32_t f = 0; f < B->face_count; ++f) {
+        for (uint32_t v = 0; v < B->vertex_count; ++v)
+            ck_assert_msg(plane_at(&B->planes[f], B->vertices[v]) <= tol, "B: vertex %u outside face %u by %g", v, f,
+                          plane_at(&B->planes[f], B->vertices[v]));
+        for (uint32_t k = 0; k < B->face_vertex_count[f]; ++k)
+            ck_assert_msg(fabs(plane_at(&B->planes[f], B->vertices[B->face_vertices[f][k]])) <= tol, "B: face %u vertex %u off", f, k);
+        for (uint32_t v = 0; v < H->vertex_count; ++v)
+            ck_assert_msg(plane_at(&B->planes[f], H->vertices[v]) <= tol, "H: vertex %u outside face %u of B by %g", v, f,
+                          plane_at(&B->planes[f], H->vertices[v]));
+    }
+}
+START_TEST(body_from_h_grazing) {
+    { /* hard_cases --entry swarp_body_from_h --case 381: faces of H along u */
+        const swarp_vec3 v[8] = {{1000013.2954460557, -8.9844438238526063, 1000047.9719960216},
+                                 {1000013.2636823052, -8.9844438238526063, 1000048.0026541286},
+                                 {1000013.3525812096, -8.8624380987345592, 1000048.0311916781},
+                                 {1000013.3208174591, -8.8624380987345592, 1000048.0618497852},
+                                 {1000014.9888504959, -10, 1000049.5887847046},
+                                 {1000014.1419592315, -10, 1000048.7651116069},
+                                 {1000014.0263221718, -10, 1000048.8767235321},
+                                 {1000014.8194869936, -10, 1000049.7522529442}};
+        const swarp_plane pl[6] = {{0.69705353393728475, 0.021305661978565271, -0.71670247634091355, 19674.247833837289},
+                                   {-0.74093821012435601, 0.021305661978565271, 0.67123515815649182, 69680.84988727828},
+                                   {-0.4577813317784053, -0.75198715247401371, -0.47429060162437747, 932094.01629031124},
+                                   {0.3125613629799564, 0.89299343697151956, 0.32383346939114305, -636406.645880464},
+                                   {-0.57579407390566717, 0.5590869056707003, -0.59655931504141047, 1172394.6856121109},
+                                   {0, -1, 0, -10}};
+        const uint8_t loops[6][8] = {{0, 2, 4, 5}, {1, 6, 7, 3}, {0, 5, 6, 1}, {2, 3, 7, 4}, {0, 1, 3, 2}, {4, 7, 6, 5}};
+        const uint32_t counts[6] = {4, 4, 4, 4, 4, 4};
+        const swarp_polyhedron H = poly_of(v, 8, pl, loops, counts, 6);
+        const swarp_light l = sun(-0.71951851024007607, -3.4234199473741066e-17, 0.69447326328801262);
+        const swarp_aabb box = {{1000000, -10, 999995.49762011471}, {1000100, -8.0801787172850155, 1000095.4976201147}};
+        swarp_polyhedron B;
+        ck_assert_int_eq(swarp_body_from_h(&H, &l, &box, &B), SWARP_OK);
+        check_body(&B, &H, 1e-9 * 1000100.0);
+    }
+    { /* --seed 7 --case 114554: a sliver H (1.7e-7 thick at 1e5) in a flat box */
+        const swarp_vec3 v[6] = {{100048.25590152819, -2.0543779807876397, 99958.893644363838},
+                                 {100048.25590152819, -2.0543779807876397, 99958.893644190059},
+                                 {100048.25590162282, -2.054377543344311, 99958.893644363838},
+                                 {100048.25590162282, -2.054377543344311, 99958.893644190059},
+                                 {100040.32603357387, 1.613135543318911, 99958.893644276948},
+                                 {100039.53266287014, -2.054377973499284, 99958.893644276948}};
+        const swarp_plane pl[5] = {{0.41977270840732089, 0.9076292598172353, -0.0, -41995.662738083891},
+                                   {0.97739165452070753, -0.21143687869734071, -0.0, -97786.764738773694},
+                                   {0, -1, 0, -2.054377973499284},
+                                   {0, 0, -1, 99958.893644276948},
+                                   {0, 0, 1, -99958.893644276948}};
+        const uint8_t loops[5][8] = {{2, 3, 4}, {0, 1, 3, 2}, {0, 5, 1}, {2, 3, 0, 1, 5, 4}, {0, 1, 2, 3, 4, 5}};
+        const uint32_t counts[5] = {3, 4, 3, 6, 6};
+        const swarp_polyhedron H = poly_of(v, 6, pl, loops, counts, 5);
+        const swarp_light l = sun(-0.97739242680818161, 0.21143330867678684, -1.0000000000000001e-09);
+        const swarp_aabb box = {{99967.318617837038, -2.054377973499284, 99958.893644276948},
+                                {100048.25590255289, 16.564658620014637, 99958.893644276948}};
+        swarp_polyhedron B;
+        ck_assert_int_eq(swarp_body_from_h(&H, &l, &box, &B), SWARP_OK);
+        check_body(&B, &H, 1e-9 * 100048.25590255289);
+    }
+    { /* --case 221183: a flat H, u 1e-9 out of its plane: the two faces at a
+         silhouette edge are opposite, their combination cancels (the side
+         plane comes from the edge then) */
+        const swarp_vec3 v[4] = {{999957.33045117056, -2.4299542947557908, 999996.63614671386},
+                                 {999979.39726582309, -2.4299542947557908, 999996.63614671386},
+                                 {999957.33045117056, 20.09206042700847, 999996.63614671386},
+                                 {999979.39726582309, 20.09206042700847, 999996.63614671386}};
+        const swarp_plane pl[2] = {{0, 0, -0.99999999999999989, 999996.63614671375}, {0, 0, 1, -999996.63614671386}};
+        const uint8_t loops[2][8] = {{0, 2, 3, 1}, {0, 1, 3, 2}};
+        const uint32_t counts[2] = {4, 4};
+        const swarp_polyhedron H = poly_of(v, 4, pl, loops, counts, 2);
+        const swarp_light l = sun(0.7795, -0.626402, -1e-09);
+        const swarp_aabb box = {{999957.33045117056, -2.4299542947557908, 999996.63614671386},
+                                {999979.39726582309, 20.09206042700847, 999996.63614671386}};
+        swarp_polyhedron B;
+        ck_assert_int_eq(swarp_body_from_h(&H, &l, &box, &B), SWARP_OK);
+        check_body(&B, &H, 1e-9 * 999996.63614671386);
+    }
+    { /* --case 86671: a flat H 1e-6 across at 1e6 (1e-12 relative): its two
+         faces' normals are noise 6e-6 apart, their combination was the
+         same plane for all four side faces (B's vertices 0.05 off them) */
+        const swarp_vec3 v[4] = {{1000019.2898066387, -9.6434890779410534, 999987.01980257814},
+                                 {1000019.2898077613, -9.6434890779410534, 999987.01980135264},
+                                 {1000019.2898066947, -9.6434866056056485, 999987.01980262937},
+                                 {1000019.2898078172, -9.6434866056056485, 999987.01980140386}};
+        const swarp_plane pl[2] = {{0.73706029448968602, -0.03066388804624055, 0.67513098599950572, -1412197.0306131393},
+                                   {-0.73705558950557382, 0.03065810914696479, -0.67513638497871231, 1412197.7243911668}};
+        const uint8_t loops[2][8] = {{0, 1, 3, 2}, {0, 2, 3, 1}};
+        const uint32_t counts[2] = {4, 4};
+        const swarp_polyhedron H = poly_of(v, 4, pl, loops, counts, 2);
+        const swarp_light l = sun(-0.737046, 0.030662, -0.675147);
+        const swarp_aabb box = {{999989.95603555243, -9.6434878724353403, 999967.10043944884},
+                                {1000019.289807965, 0.80153271073714905, 1000001.6590176614}};
+        swarp_polyhedron B;
+        ck_assert_int_eq(swarp_body_from_h(&H, &l, &box, &B), SWARP_OK);
+        check_body(&B, &H, 1e-9 * 1000019.289807965);
+    }
+    { /* --case 637158: a spot whose direction is (4.9e-324, 0, 0) (valid: not
+         zero) was rejected with SWARP_ERR_ZERO_VECTOR (its unit vector was inf) */
+        const swarp_aabb hb = {{-2, -8, -40}, {12, -8, 50}}, scene = {{-3, -9, -45}, {13, 10, 56}};
+        swarp_polyhedron H, B, R;
+        ck_assert_int_eq(swarp_poly_from_aabb(&hb, &H), SWARP_OK);
+        swarp_light spot;
+        memset(&spot, 0, sizeof spot);
+        spot.type = SWARP_LIGHT_POINT;
+        spot.position = (swarp_vec3){-30, -8, 5};
+        spot.direction = (swarp_vec3){4.9406564584124654e-324, 0, 0};
+        spot.cone_angle = 1.34;
+        ck_assert_int_eq(swarp_body_from_h(&H, &spot, &scene, &B), SWARP_OK);
+        ck_assert_int_eq(swarp_body_receivers(&H, &spot, &R), SWARP_OK);
+        ck_assert(R.vertex_count > 0);
+        for (uint32_t i = 0; i < R.vertex_count; ++i) ck_assert(isfinite(R.vertices[i].x) && R.vertices[i].x >= -2 - 1e-9);
+    }
+}
+END_TEST
+
+/* bodyfix pass: H of a frustum 1e308 times wider than high (aspect > 0 is
+ * valid).  Its corners reach 1e12 far, and V clipped by the box worked at
+ * that scale: H came back with vertices outside S (hard_cases --entry
+ * swarp_body_h --case 3032, 12049 off face by 0.016).  H is S clipped by V's
+ * planes now. */
+START_TEST(body_h_wide_frustum) {
+    const struct {
+        swarp_vec3 eye, dir;
+        double fovy, aspect, near, far;
+        swarp_aabb box;
+    } cs[2] = {{{-31.751584031759648, 100.45574252696035, 62.857658427288321},
+                {-0.018260733025294202, -0.95564929522641417, -0.29394041940950671},
+                2.2465414555918914, 599831027782.41699, 0.11888177530992466, 264256.68945755722,
+                {{-31.751584031759648, -6.8721496823754737, -14.170167836906506},
+                 {-31.751584031759648, 14.275260174198303, 80.365812504042381}}},
+               {{29.676834685905799, -4.030733603187139, 15.120412622492502},
+                {-0.25397572117364237, 0.3490883434295603, -0.90201644194323505},
+                1.2087456828278447, 1.7976931348623157e+308, 0.36992942317370747, 539.33774063933242,
+                {{-2.822924792926608e-87, -6.4778537620193246, -27.39234609960095},
+                 {48.621515276744233, 15.709044089674826, 30.299721219030182}}}};
+    for (int i = 0; i < 2; ++i) {
+        swarp_camera cam;
+        memset(&cam, 0, sizeof cam);
+        cam.eye = cs[i].eye, cam.dir = cs[i].dir, cam.up = (swarp_vec3){0, 1, 0};
+        cam.fovy = cs[i].fovy, cam.aspect = cs[i].aspect, cam.near = cs[i].near, cam.far = cs[i].far;
+        swarp_polyhedron H;
+        ck_assert_int_eq(swarp_body_h(&cam, cam.near, cam.far, &cs[i].box, &H), SWARP_OK);
+        const swarp_aabb* b = &cs[i].box;
+        const double tol = 1e-9 * (cam.far + 100);
+        const double dl = sqrt(cam.dir.x * cam.dir.x + cam.dir.y * cam.dir.y + cam.dir.z * cam.dir.z);
+        ck_assert(H.vertex_count > 0);
+        for (uint32_t v = 0; v < H.vertex_count; ++v) {
+            const swarp_vec3 p = H.vertices[v];
+            ck_assert_msg(p.x >= b->min.x - tol && p.x <= b->max.x + tol && p.y >= b->min.y - tol && p.y <= b->max.y + tol &&
+                              p.z >= b->min.z - tol && p.z <= b->max.z + tol,
+                          "case %d: vertex %u (%.17g %.17g %.17g) outside S", i, v, p.x, p.y, p.z);
+            const double z = ((p.x - cam.eye.x) * cam.dir.x + (p.y - cam.eye.y) * cam.dir.y + (p.z - cam.eye.z) * cam.dir.z) / dl;
+            ck_assert_msg(z >= cam.near - tol && z <= cam.far + tol, "case %d: vertex %u at depth %g", i, v, z);
+        }
+        for (uint32_t f = 0; f < H.face_count; ++f)
+            for (uint32_t k = 0; k < H.face_vertex_count[f]; ++k)
+                ck_assert_msg(fabs(plane_at(&H.planes[f], H.vertices[H.face_vertices[f][k]])) <= tol, "case %d: off face %u", i, f);
+    }
+}
+END_TEST
+
+/* The smallest subnormal fovy is a valid field of view; halved it was 0 and
+ * the warp parameter refused it (SWARP_ERR_FOV, undocumented for a valid
+ * fovy).  Hard-case sweep swarp_setup_range case 184736 (seed default). */
+START_TEST(sf_setup_range_subnormal_fovy) {
+    swarp_camera cam = {{0x1.86c4978ef9536p+16, -0x1.7e12ad692e853p+1, 0x1.8683be8199ed1p+16},
+                        {-0x1.c6ae222b55f79p-1, 0x1.06ee28b51c309p-4, -0x1.d22cb9b34eeb2p-2},
+                        {0x0p+0, 0x1p+0, 0x0p+0},
+                        0x0.0000000000001p-1022,
+                        0x1.9c43c695bc526p+0,
+                        0x1.22d8dc3f15a5ap-14,
+                        0x1.8b97c10ffc18dp+5,
+                        {0, 0, 0, 0}};
+    swarp_light l = {SWARP_LIGHT_DIRECTIONAL, 0, {-0x1.c6ae222b55f79p-1, 0x1.06ee28b51c309p-4, -0x1.d22cb9b34eeb2p-2},
+                     {0, 0, 0}, 0, {0, 0, 0, 0}};
+    swarp_aabb box = {{0x1.869952dda13bdp+16, -0x1.7e12ad692e853p+1, 0x1.867e7b2560306p+16},
+                      {0x1.86c4978ef9536p+16, 0x1.9c6f29668f0aap+4, 0x1.869fdceae757ep+16}};
+    swarp_setup_options o;
+    memset(&o, 0, sizeof o);
+    o.param = SWARP_WARP_PARAM_NREPAR;
+    o.center = SWARP_WARP_CENTER_NEAREST_VERTEX;
+    o.pancake = 1;
+    o.depth_range = SWARP_DEPTH_ZERO_TO_ONE;
+    o.map_height = 811;
+    swarp_setup_result r;
+    swarp_status st = swarp_setup_range(&cam, &l, &box, 0x1.cfcb70fa39a15p-13, 0x1.280f1e4189b74p-1, &o, &r, NULL, 0, NULL);
+    /* a fovy of 5e-324 rad: the frustum is far narrower than its
+     * coordinates resolve, the documented DEGENERATE (or a map) */
+    ck_assert_msg(st == SWARP_ERR_DEGENERATE || !swarp_status_is_error(st), "%s", swarp_status_name(st));
+}
+END_TEST
+
+/* near = DBL_MIN: α = z_1/z_0 of [RHS] (3.4) overflowed and n_repar
+ * refused it (SWARP_ERR_NON_FINITE for valid arguments).  Hard-case sweep
+ * swarp_setup_follow case 471357 (seed default, previous NULL). */
+START_TEST(sf_setup_nrepar_near_dbl_min) {
+    swarp_camera cam = {{-0x1.1c9549fe5c6c1p+4, -0x1.f792bb36cd1f9p-1, 0x1.18d1b543d373ep+5},
+                        {0x1.a2ef07efc7027p-1, 0x1.9e45c0e4a9906p-4, -0x1.21c0d5e1e81edp-1},
+                        {0x0p+0, 0x1p+0, 0x0p+0},
+                        0x1.a6fbae82b6eefp+0,
+                        0x1.0d03d4f03839fp+1,
+                        0x1p-1022,
+                        0x1.71df582e33329p+15,
+                        {0, 0, 0, 0}};
+    swarp_light l = {SWARP_LIGHT_DIRECTIONAL, 0, {0x1.3f72c8ee79cap-2, -0x1.ffd84f5e70dbdp-1, 0x1.500aff69a3bd6p-1},
+                     {0, 0, 0}, 0, {0, 0, 0, 0}};
+    swarp_aabb box = {{-0x1.1c9549fe5c6c1p+4, -0x1.b3a9e9d4033b9p+0, -0x1.124c623a923d2p+5},
+                      {0x1.1dfc04dd52f24p+6, 0x1.69653482278b7p+3, 0x1.3e85ed0e8e98ap+5}};
+    swarp_setup_options o;
+    memset(&o, 0, sizeof o);
+    o.technique = SWARP_TECHNIQUE_LISPSM;
+    o.param = SWARP_WARP_PARAM_NREPAR;
+    o.center = SWARP_WARP_CENTER_NEAREST_VERTEX;
+    o.map_width = 697;
+    o.pancake = 1;
+    swarp_setup_result r;
+    swarp_status st = swarp_setup(&cam, &l, &box, &o, &r, NULL, 0, NULL);
+    ck_assert_msg(!swarp_status_is_error(st), "%s", swarp_status_name(st));
+    ck_assert(mat_finite(&r.matrix) && r.n_eye > 0);
+}
+END_TEST
+
+/* A spot light straight above the eye with a horizontal axis: s (on the
+ * view vector at the near depth) lies in the light's plane, its x/D = 1e17
+ * became the uniform warp's x translation and swamped B's x in the map
+ * (all points at x = 1.2).  Hard-case sweep swarp_setup_points case 56085. */
+START_TEST(sf_setup_points_uniform_warp_centre) {
+    swarp_camera cam = {{-0x1.e848247b8083p+19, 0x1.96ed5aa033d04p+2, -0x1.e84c2c75ac433p+19},
+                        {0x1.d02ea0429890ap-2, -0x1.e82c012416c1ep-4, 0x1.c446ceb05efc7p-1},
+                        {0x0p+0, 0x1p+0, 0x0p+0},
+                        0x1.d52e17ddcc899p-1,
+                        0x1.76afb27592d01p+1,
+                        0x1.9aaee41c21907p+0,
+                        0x1.90043a8556c02p+4,
+                        {0, 0, 0, 0}};
+    swarp_light l = {SWARP_LIGHT_POINT, 0, {-0x1.c785fd9e89c53p-1, -0x1.0d3e0ba095613p-57, 0x1.d383b06670932p-2},
+                     {-0x1.e848247b8083p+19, 0x1.3f4f1c1891c7fp+7, -0x1.e84c2c75ac433p+19}, 0x1.7ea6c495c137fp+0, {0, 0, 0, 0}};
+    swarp_vec3 pt[6] = {{-0x1.e848247b8083p+19, -0x1.f5f6145520c98p+0, -0x1.e848c6b2e6ccp+19},
+                        {-0x1.e848247b8083p+19, 0x1.96ed5aa033d02p+2, -0x1.e848a2c821459p+19},
+                        {-0x1.e84821da81143p+19, -0x1.f5f6145520c98p+0, -0x1.e848c80c421ffp+19},
+                        {-0x1.e8480136c66f2p+19, 0x1.96ed5aa033d02p+2, -0x1.e848b4e153dfcp+19},
+                        {-0x1.e848247b8083p+19, 0x1.96ed5aa033d02p+2, -0x1.e848f99ba2d63p+19},
+                        {-0x1.e848247b8083p+19, -0x1.f5f6145520c98p+0, -0x1.e848cd2bbb3p+19}};
+    swarp_setup_options o;
+    memset(&o, 0, sizeof o);
+    o.param = SWARP_WARP_PARAM_PSEUDO;
+    o.center = SWARP_WARP_CENTER_VIEW_VECTOR;
+    o.depth_range = SWARP_DEPTH_NEG_ONE_TO_ONE;
+    o.map_width = 6555;
+    o.pseudo_near = 0x1.664ad2a28c6f8p-2;
+    o.pseudo_far = 0x0.0000000000001p-1022;
+    swarp_setup_result r;
+    swarp_status st = swarp_setup_points(&cam, &l, pt, 6, NULL, 0, cam.near, cam.far, &o, &r);
+    ck_assert_msg(!swarp_status_is_error(st), "%s", swarp_status_name(st));
+    double xlo = INFINITY, xhi = -INFINITY;
+    for (int i = 0; i < 6; ++i) {
+        const double* m = r.matrix.m;
+        double w = m[3] * pt[i].x + m[7] * pt[i].y + m[11] * pt[i].z + m[15];
+        double x = (m[0] * pt[i].x + m[4] * pt[i].y + m[8] * pt[i].z + m[12]) / w;
+        double y = (m[1] * pt[i].x + m[5] * pt[i].y + m[9] * pt[i].z + m[13]) / w;
+        ck_assert_msg(fabs(x) <= 1 + 1e-6 && fabs(y) <= 1 + 1e-6, "point %d at (%g, %g)", i, x, y);
+        xlo = fmin(xlo, x), xhi = fmax(xhi, x);
+    }
+    ck_assert(xlo < -1 + 1e-6 && xhi > 1 - 1e-6); /* the fit is tight again */
+}
+END_TEST
+
+/* PSM with the eye 1e289 from a 50-unit body: relative to the eye the body
+ * is one point, and light_proj · light_view overflowed (inf - inf) while
+ * matrix was finite, with SWARP_INFO.  Now the documented DEGENERATE.
+ * Hard-case sweep swarp_setup_points case 742279 (seed default). */
+START_TEST(sf_setup_points_psm_eye_far_from_body) {
+    swarp_camera cam = {{0x1.aac211d559113p+959, 0x1.74fe32580155ep+1, 0x1.5d2432787951p+0},
+                        {-0x1.e6807cfbc537ep-1, -0x1.268e4e5a6a742p-2, -0x1.eb24e534fe96cp-4},
+                        {0x0p+0, 0x1p+0, 0x0p+0},
+                        0x1.3c95715169bb5p+1,
+                        0x1.3ed4427b72df2p-1,
+                        0x1.4732188490c3bp+0,
+                        0x1.00fa989f66b5ep+2,
+                        {0, 0, 0, 0}};
+    swarp_light l = {SWARP_LIGHT_DIRECTIONAL, 0, {-0x1.e6807cfab1e6ap-1, -0x1.268e4e5a6a742p-2, -0x1.eb24e5792c5ap-4},
+                     {0, 0, 0}, 0, {0, 0, 0, 0}};
+    swarp_vec3 pt[3] = {{0x1.9884397165cdcp+2, 0x1.53a5e2ab1c218p-1, -0x1.211ae2314cea2p+4},
+                        {0x1.cc86f78ba8c9cp+2, 0x1.8f9befc060f4ep+1, -0x1.b13f54738cb48p+4},
+                        {0x1.17a47874e096p-1, 0x1.55fd9c258512dp+2, 0x1.9e6558e8d9249p+4}};
+    swarp_setup_options o;
+    memset(&o, 0, sizeof o);
+    o.technique = SWARP_TECHNIQUE_PSM;
+    o.map_width = 4943;
+    swarp_setup_result r, s;
+    memset(&r, 0xA5, sizeof r);
+    s = r;
+    ck_assert_int_eq(swarp_setup_points(&cam, &l, pt, 3, NULL, 0, cam.near, cam.far, &o, &r), SWARP_ERR_DEGENERATE);
+    ck_assert(memcmp(&r, &s, sizeof r) == 0);
+}
+END_TEST
+
 int main(void) {
     Suite* s = suite_create("edges_geometry");
     TCase* t = tcase_create("geometry");
@@ -491,6 +949,19 @@ int main(void) {
     tcase_add_test(t, warp_lispsm_tiny_n);
     tcase_add_test(t, poly_from_camera_overflow);
     tcase_add_test(t, body_points_box_to_dbl_max);
+    /* setupfix pass */
+    tcase_add_test(t, sf_focus_light_view_subnormal_direction);
+    tcase_add_test(t, sf_focus_light_view_translation_overflow);
+    tcase_add_test(t, sf_setup_point_light_far);
+    tcase_add_test(t, sf_warp_lispsm_far_light_view);
+    tcase_add_test(t, sf_setup_points_eye_far_from_body);
+    tcase_add_test(t, sf_setup_range_subnormal_fovy);
+    tcase_add_test(t, sf_setup_nrepar_near_dbl_min);
+    tcase_add_test(t, sf_setup_points_uniform_warp_centre);
+    tcase_add_test(t, sf_setup_points_psm_eye_far_from_body);
+    /* bodyfix pass */
+    tcase_add_test(t, body_from_h_grazing);
+    tcase_add_test(t, body_h_wide_frustum);
     suite_add_tcase(s, t);
     return tu_run_suite(s) ? 1 : 0;
 }

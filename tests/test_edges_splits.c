@@ -579,8 +579,8 @@ START_TEST(cascade_select_blend_curve_edges) {
     const swarp_vec3 nan_p = {0, INFINITY, 0}, huge = {0, 0, -DBL_MAX};
     ck_assert_int_eq(swarp_cascade_view_depth(&cam, &nan_p, &d), SWARP_ERR_NON_FINITE);
     bad = cam;
-    bad.eye.z = DBL_MAX; /* p - eye overflows */
-    ck_assert_int_eq(swarp_cascade_view_depth(&bad, &huge, &d), SWARP_ERR_NON_FINITE);
+    bad.eye.z = DBL_MAX; /* the depth, 2 DBL_MAX, is not representable (documented OVERFLOW) */
+    ck_assert_int_eq(swarp_cascade_view_depth(&bad, &huge, &d), SWARP_ERR_OVERFLOW);
     ck_assert_int_eq(swarp_cascade_view_depth(NULL, &p, &d), SWARP_ERR_NULL_POINTER);
     ck_assert_int_eq(swarp_cascade_view_depth(&cam, NULL, &d), SWARP_ERR_NULL_POINTER);
     ck_assert_int_eq(swarp_cascade_view_depth(&cam, &p, NULL), SWARP_ERR_NULL_POINTER);
@@ -851,6 +851,30 @@ START_TEST(planfix_stabilize_sphere_subnormal_range) {
 }
 END_TEST
 
+/* setupfix pass: p - eye overflowing for coordinates near DBL_MAX gave
+ * SWARP_ERR_NON_FINITE for finite arguments.  A representable depth is
+ * computed (at a quarter scale); one beyond DBL_MAX is SWARP_ERR_OVERFLOW,
+ * the output untouched. */
+START_TEST(sf_cascade_view_depth_opposite_ends) {
+    swarp_camera cam = {{-DBL_MAX, 0, 0}, {0, 1, 0}, {0, 0, 1}, 1.0, 1.0, 1, 100, {0, 0, 0, 0}};
+    swarp_vec3 p = {DBL_MAX, 3, 0};
+    double z = -1;
+    ck_assert_int_eq(swarp_cascade_view_depth(&cam, &p, &z), SWARP_OK);
+    ck_assert(z == 3.0);
+    cam.dir = (swarp_vec3){1, 0, 0};
+    cam.up = (swarp_vec3){0, 1, 0};
+    z = -1;
+    ck_assert_int_eq(swarp_cascade_view_depth(&cam, &p, &z), SWARP_ERR_OVERFLOW);
+    ck_assert(z == -1);
+    /* the sum overflows, the depth does not: 0.9 DBL_MAX (1 + 1 - 1)/sqrt(3) */
+    cam.eye = (swarp_vec3){0, 0, 0};
+    cam.dir = (swarp_vec3){1, 1, -1};
+    p = (swarp_vec3){0.9 * DBL_MAX, 0.9 * DBL_MAX, 0.9 * DBL_MAX};
+    ck_assert_int_eq(swarp_cascade_view_depth(&cam, &p, &z), SWARP_OK);
+    ck_assert(fabs(z - 0.9 * DBL_MAX / sqrt(3.0)) <= 1e-15 * DBL_MAX);
+}
+END_TEST
+
 int main(void) {
     Suite* s = suite_create("edges_splits");
     TCase* t = tcase_create("bias");
@@ -866,6 +890,8 @@ int main(void) {
     tcase_add_test(t, cascade_view_depth_huge_dir);
     tcase_add_test(t, cascade_error_curve_subnormal_splits);
     tcase_add_test(t, stabilize_directional_tiny_split_far_origin);
+    /* setupfix pass */
+    tcase_add_test(t, sf_cascade_view_depth_opposite_ends);
     suite_add_tcase(s, t);
     /* planfix pass */
     t = tcase_create("planfix");

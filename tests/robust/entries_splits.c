@@ -956,6 +956,13 @@ static void e_cascade_view_depth(swr_ctx* c) {
     double* pz = swr_out(c, &z, sizeof z, SWR_REQ);
     if (!fin3(&cam.eye) || !fin3(&cam.dir) || !fin3(&p)) swr_expect(c, SWARP_ERR_NON_FINITE);
     else if (cam.dir.x == 0 && cam.dir.y == 0 && cam.dir.z == 0) swr_expect(c, SWARP_ERR_ZERO_VECTOR);
+    else {
+        /* documented: OVERFLOW when the depth itself exceeds DBL_MAX (near
+         * it, within rounding, either answer) */
+        swarp_vec3 d0 = unit3(cam.dir);
+        ld r0 = ((ld)p.x - cam.eye.x) * d0.x + ((ld)p.y - cam.eye.y) * d0.y + ((ld)p.z - cam.eye.z) * d0.z;
+        if (fabsl(r0) > 0.999 * (ld)DBL_MAX) swr_domain(c, SWARP_ERR_OVERFLOW);
+    }
     if (!swr_done(c, SWR_CALL(c, swarp_cascade_view_depth(pc, pp, pz)))) return;
     swr_rec(c, "view depth", z);
     swarp_vec3 d = unit3(cam.dir);
