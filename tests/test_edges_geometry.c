@@ -753,6 +753,77 @@ START_TEST(sf_setup_points_psm_eye_far_from_body) {
 }
 END_TEST
 
+/* A spot light 0.27 above a flat box, the eye in the box's plane: s (on the
+ * view vector at the near depth) lay on the light's plane (D ~ 1e-11), its
+ * x/D = 5e10 became the warp's lateral centre and the shear it brings put
+ * B's x below its rounding (a point at x = 1.00004).  Hard-case sweep
+ * swarp_setup seed 7 case 955443. */
+START_TEST(sf_setup_point_light_centre_on_light_plane) {
+    swarp_camera cam = {{0x1.e8489b298e53p+19, -0x1.4e03ed68df875p+2, 0x1.e846d0a22d44ap+19},
+                        {0x1.c3aec609db329p-1, 0x0p+0, 0x1.e230911a52e69p-2},
+                        {0x0p+0, 0x1p+0, 0x0p+0},
+                        0x1.05a47b3f24a56p+0,
+                        0x1.2c4ede2c738fdp+1,
+                        0x1.b8c4f5e60e437p+0,
+                        0x1.d77cd19ca582p+2,
+                        {0, 0, 0, 0}};
+    swarp_light l = {SWARP_LIGHT_POINT, 0, {0x1.8abb67e310fe8p-4, 0x0p+0, 0x1.fd9def25f410ap-1},
+                     {0x1.e848cbc48cd3dp+19, -0x1.3c8ef0cc86af4p+2, 0x1.e846ea93e0f29p+19}, 0x1.30cf338b35632p-3,
+                     {0, 0, 0, 0}};
+    swarp_aabb box = {{0x1.e848p+19, -0x1.4e03ed68df875p+2, 0x1.e841cp+19},
+                      {0x1.e84e2ade088ecp+19, -0x1.4e03ed68df875p+2, 0x1.e84e4p+19}};
+    swarp_setup_options o;
+    memset(&o, 0, sizeof o);
+    o.center = SWARP_WARP_CENTER_VIEW_VECTOR;
+    o.map_width = 1364;
+    o.psm_slideback = 1;
+    swarp_setup_result r;
+    swarp_vec3 pts[SWARP_BODY_MAX_POINTS];
+    size_t n = 0;
+    swarp_status st = swarp_setup(&cam, &l, &box, &o, &r, pts, SWARP_BODY_MAX_POINTS, &n);
+    ck_assert_msg(!swarp_status_is_error(st), "%s", swarp_status_name(st));
+    for (size_t i = 0; i < n; ++i) {
+        const double* m = r.matrix.m;
+        double w = m[3] * pts[i].x + m[7] * pts[i].y + m[11] * pts[i].z + m[15];
+        double x = (m[0] * pts[i].x + m[4] * pts[i].y + m[8] * pts[i].z + m[12]) / w;
+        double y = (m[1] * pts[i].x + m[5] * pts[i].y + m[9] * pts[i].z + m[13]) / w;
+        ck_assert_msg(fabs(x) <= 1 + 1e-6 && fabs(y) <= 1 + 1e-6, "point %zu at (%.9g, %.9g)", i, x, y);
+    }
+}
+END_TEST
+
+/* A spot light 2e154 above a 50-unit body: its light-view coordinates
+ * (the translation 2e154) do not resolve the body, and the map put a point
+ * at x = -2.1 with SWARP_INFO.  Now the documented DEGENERATE.  Hard-case
+ * sweep swarp_setup case 879764 (seed default). */
+START_TEST(sf_setup_point_light_2e154_away) {
+    swarp_camera cam = {{-0x1.6e3746b57bb8cp+21, 0x1.3330e86131c35p+5, -0x1.6e35e263c471ep+21},
+                        {-0x1.91a556151761bp-3, -0x1.bdc23e852900dp-1, -0x1.cdff9fb356447p-2},
+                        {0x0p+0, 0x1p+0, 0x0p+0},
+                        0x1.ae06408e7d94ep-1,
+                        0x1.3333333333333p-2,
+                        0x1.fffffffffdcd1p-1,
+                        0x1.21626596ca6bap+20,
+                        {0, 0, 0, 0}};
+    swarp_light l = {SWARP_LIGHT_POINT, 0, {-0x1.91a556151761bp-3, -0x1.bdc23e852900dp-1, -0x1.cdff9fb356447p-2},
+                     {-0x1.6e3746b57bb8cp+21, 0x1.99481b8e2d12dp+512, -0x1.6e374a0d1b9e4p+21}, 0x1.3b5949d5d655ap+0,
+                     {0, 0, 0, 0}};
+    swarp_aabb box = {{-0x1.6e3746b57bb8cp+21, -0x1.3258b0b4fb3ddp+0, -0x1.6e373408d8f68p+21},
+                      {-0x1.6e3746b57bb8cp+21, 0x1.051ec67767d45p+2, -0x1.6e35c32c84069p+21}};
+    swarp_setup_options o;
+    memset(&o, 0, sizeof o);
+    o.technique = SWARP_TECHNIQUE_UNIFORM;
+    o.depth_range = SWARP_DEPTH_ZERO_TO_ONE;
+    o.map_width = 4329;
+    o.min_depth = 0x1p-1022;
+    swarp_setup_result r, s;
+    memset(&r, 0xA5, sizeof r);
+    s = r;
+    ck_assert_int_eq(swarp_setup(&cam, &l, &box, &o, &r, NULL, 0, NULL), SWARP_ERR_DEGENERATE);
+    ck_assert(memcmp(&r, &s, sizeof r) == 0);
+}
+END_TEST
+
 int main(void) {
     Suite* s = suite_create("edges_geometry");
     TCase* t = tcase_create("geometry");
@@ -776,6 +847,8 @@ int main(void) {
     tcase_add_test(t, sf_setup_nrepar_near_dbl_min);
     tcase_add_test(t, sf_setup_points_uniform_warp_centre);
     tcase_add_test(t, sf_setup_points_psm_eye_far_from_body);
+    tcase_add_test(t, sf_setup_point_light_centre_on_light_plane);
+    tcase_add_test(t, sf_setup_point_light_2e154_away);
     suite_add_tcase(s, t);
     return tu_run_suite(s) ? 1 : 0;
 }
