@@ -824,6 +824,37 @@ START_TEST(sf_setup_point_light_2e154_away) {
 }
 END_TEST
 
+/* PSM with aspect = DBL_MAX: recovering the previous frame's light camera
+ * multiplied by t_x = t_y aspect = inf, and the follow call called a valid
+ * previous result a zero vector.  Hard-case sweep swarp_setup_follow seed 7
+ * case 112641. */
+START_TEST(sf_setup_follow_psm_huge_aspect) {
+    swarp_camera cam = {{0x1.240283d4ef769p+20, -0x1.1a29897f74798p-2, 0x1.23ffb15341e55p+20},
+                        {0x1.c8b217d9ea3b4p-2, -0x1.432dc5cd31b8cp-1, -0x1.44e51b6ce2b8dp-1},
+                        {0x0p+0, 0x1p+0, 0x0p+0},
+                        0x1.59d7e8f953599p+1,
+                        DBL_MAX,
+                        0x1.000004807ffd3p+0,
+                        0x1.85aab9035386ap+1,
+                        {0, 0, 0, 0}};
+    swarp_light l = {SWARP_LIGHT_DIRECTIONAL, 0, {-0x1.1c377cef048cep-1, -0x1.fb3d86895eabbp-2, -0x1.a8524d35126a8p-3},
+                     {0, 0, 0}, 0, {0, 0, 0, 0}};
+    swarp_aabb box = {{0x1.23ff6eaf7d3edp+20, -0x1.42dda5d8d41bap+1, 0x1.23fdbf7fabebap+20},
+                      {0x1.240356a61a942p+20, 0x1.f5e554cec5448p-1, 0x1.2400b737d307fp+20}};
+    swarp_setup_options o;
+    memset(&o, 0, sizeof o);
+    o.technique = SWARP_TECHNIQUE_PSM;
+    swarp_setup_result prev, r;
+    swarp_status s0 = swarp_setup(&cam, &l, &box, &o, &prev, NULL, 0, NULL);
+    ck_assert_msg(!swarp_status_is_error(s0), "%s", swarp_status_name(s0));
+    swarp_status st = swarp_setup_follow(&cam, &l, &box, &o, NULL, &prev, &r, NULL, 0, NULL);
+    /* the light camera's x axis is squashed to nothing by an aspect of
+     * DBL_MAX: no usable right vector, the documented FOLLOW_FRAME (or a
+     * frame), never an undocumented ZERO_VECTOR for a valid previous */
+    ck_assert_msg(st == SWARP_ERR_FOLLOW_FRAME || !swarp_status_is_error(st), "%s", swarp_status_name(st));
+}
+END_TEST
+
 int main(void) {
     Suite* s = suite_create("edges_geometry");
     TCase* t = tcase_create("geometry");
@@ -849,6 +880,7 @@ int main(void) {
     tcase_add_test(t, sf_setup_points_psm_eye_far_from_body);
     tcase_add_test(t, sf_setup_point_light_centre_on_light_plane);
     tcase_add_test(t, sf_setup_point_light_2e154_away);
+    tcase_add_test(t, sf_setup_follow_psm_huge_aspect);
     suite_add_tcase(s, t);
     return tu_run_suite(s) ? 1 : 0;
 }
