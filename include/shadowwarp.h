@@ -1483,8 +1483,9 @@ SWARP_API swarp_status swarp_evsm_moments(double x, double c_pos, double c_neg,
  *  @return as swarp_evsm_moments (SWARP_ERR_FILTER_EXPONENT also when
  *          e^{c|t|} overflows for the receiver depth t), plus
  *          SWARP_ERR_OUT_OF_RANGE (min_variance < 0) and SWARP_ERR_NON_FINITE
- *          (a moment NaN/Inf, or moments beyond ~1e154 whose variance
- *          overflows). */
+ *          (a moment, t or min_variance NaN/Inf; finite moments of any
+ *          magnitude and a floor min_variance (c e^{c t})^2 beyond DBL_MAX
+ *          give a bound in [0, 1]). */
 SWARP_API swarp_status swarp_evsm_visibility(const double moments[4], double t, double c_pos,
                                              double c_neg, double min_variance,
                                              double* out_visibility);
@@ -1694,8 +1695,9 @@ typedef struct swarp_stabilize_report {
  *  [RHS] §3.5 exact solution (ZZB09).
  *  @param cam      camera (near/far ignored; the split range is n_i, f_i)
  *  @param n_i, f_i split range, 0 < n_i < f_i
- *  @param[out] out_center world centre; @param[out] out_radius radius;
- *  @param[out] out_centroid_radius may be NULL
+ *  @param[out] out_center world centre; @param[out] out_radius radius
+ *  (> 0: at least the smallest positive double, for a range of a few
+ *  subnormals); @param[out] out_centroid_radius may be NULL (>= radius)
  *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
  *          SWARP_ERR_NEAR_FAR, SWARP_ERR_FOV, SWARP_ERR_ZERO_VECTOR,
  *          SWARP_ERR_OUT_OF_RANGE (aspect <= 0), SWARP_ERR_DEGENERATE (up
@@ -1861,7 +1863,11 @@ SWARP_API swarp_status swarp_bias_depth_per_world(const swarp_bias_map* map, con
  *  projective) map at p.  A PCF tap offset by (ds, dt) texels compares
  *  against d + dd/ds ds + dd/dt dt.  GLSL twin in docs/splits.md.
  *  @return as swarp_bias_texel_size; SWARP_ERR_DEGENERATE when the plane is
- *          seen edge-on by the light (its texel-space image is a line). */
+ *          seen edge-on by the light (its texel-space image is a line): the
+ *          tangents' texel-space images parallel to 1e-12, or their
+ *          determinant within its own rounding bound (the double evaluation
+ *          of M p and M T cannot tell the plane from an edge-on one, e.g.
+ *          a point far from the map's centre of projection). */
 SWARP_API swarp_status swarp_bias_receiver_plane(const swarp_bias_map* map, const swarp_vec3* p,
                                                  const swarp_vec3* tangent_a,
                                                  const swarp_vec3* tangent_b, double out_grad[2]);
@@ -2156,6 +2162,12 @@ typedef struct swarp_scene_needs {
     uint32_t _reserved[4];
 } swarp_scene_needs;
 
+/** Largest time_budget_ns, pass_cost_ns and blur_pass_cost_ns swarp_plan()
+ *  accepts (1e15 ns, 11.6 days per frame), else SWARP_ERR_OUT_OF_RANGE: the
+ *  predicted cost (up to (16 + SWARP_PLAN_MAX_PLANES) passes and their blur
+ *  passes) then stays finite. */
+#define SWARP_PLAN_MAX_COST_NS 1e15
+
 /** What the caller can spend.  Zero means default for every field. */
 typedef struct swarp_budget {
     double max_error;         /**< max screen pixels per texel, max(m_x, m_z) over the
@@ -2318,8 +2330,8 @@ typedef struct swarp_plan_chain {
  *          SWARP_ERR_RESERVED_NONZERO, SWARP_ERR_UNKNOWN_ENUM,
  *          SWARP_ERR_ZERO_VECTOR, SWARP_ERR_DEGENERATE (up parallel to dir),
  *          SWARP_ERR_FOV, SWARP_ERR_NEAR_FAR, SWARP_ERR_OUT_OF_RANGE (aspect,
- *          cone, soft_width, max_error, time, costs, max_passes > 32, scene
- *          box min > max), SWARP_ERR_RESOLUTION (screen or map above 65536),
+ *          cone, soft_width, max_error, time, costs (negative or above
+ *          SWARP_PLAN_MAX_COST_NS), max_passes > 32, scene box min > max), SWARP_ERR_RESOLUTION (screen or map above 65536),
  *          SWARP_ERR_PLAN_TOO_MANY_PLANES, SWARP_ERR_PLAN_EMPTY_VIEW. */
 SWARP_API swarp_status swarp_plan(const swarp_scene_needs* needs, const swarp_budget* budget,
                                   struct swarp_plan* out_plan);

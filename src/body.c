@@ -108,6 +108,74 @@ static swarp_status sw_flat_extend(const swarp_polyhedron* H, swarp_vec3 u, doub
     return sw_poly_flat_from_loop(pts, np, n, out);
 }
 
+/* The silhouette plane of the edge a -> b of the back face p_k (c_k <= 0;
+ * a c_k within the apex tolerance above 0 counts as 0) whose twin lies in
+ * the front face p_j (c_j > 0, or 0 with the tie-break of
+ * sw_face_is_front): the plane through the edge containing u (or the apex).
+ *
+ * Fourier–Motzkin elimination of t from H's inequalities p_i(x - t u) <= 0,
+ * t >= 0 (of λ from x = (1-λ) h + λ l for the apex) pairs them into
+ * -c_k p_j + c_j p_k <= 0: a non-negative combination of two of H's own
+ * planes, so H lies inside it whatever the rounding, and it contains u (or
+ * l) up to the rounding of the c.  The cross product (a - b) x u of the
+ * edge's end points used before flips when the edge is all but parallel to
+ * u (a grazing light, issue 9) and cut H.  The combination cancels in turn
+ * when p_j and p_k are all but opposite (an all but flat H): its normal is
+ * then |n| << w_j + w_k, and the cross product is taken.  The weights
+ * are scaled to at most 1 first: c ~ 1e-17 must not underflow.  0: no side
+ * face (both weights 0, or an edge parallel to u: zero area). */
+static int sw_side_plane(const swarp_polyhedron* H, uint8_t a, uint8_t b, uint32_t j, double cj, uint32_t k,
+                         double ck, swarp_vec3 u, const swarp_vec3* apex, swarp_plane* out) {
+    const swarp_plane pj = H->planes[j], pk = H->planes[k];
+    double wj = ck < 0.0 ? -ck : 0.0, wk = cj > 0.0 ? cj : 0.0;
+    const double m = sw_max(wj, wk);
+    if (!(m > 0.0)) return 0;
+    wj /= m, wk /= m;
+    swarp_vec3 n = sw_v3(wj * pj.a + wk * pk.a, wj * pj.b + wk * pk.b, wj * pj.c + wk * pk.c);
+    double len = sw_glen(n), d = wj * pj.d + wk * pk.d;
+    if (!(len >= 1e-3 * (wj + wk))) {
+        /* all but opposite faces (an all but flat H): the combination is
+         * the noise of the two normals; the plane through the end points
+         * and u holds the edge and its sweep whatever the noise.  Its side:
+         * H's vertices of the back face's loop inside (the farthest one
+         * decides), an edge all but parallel to u may flip it. */
+        swarp_vec3 va = H->vertices[a], vb = H->vertices[b];
+        swarp_vec3 dir = apex ? sw_sub(*apex, va) : u;
+        swarp_vec3 nn = sw_cross(sw_sub(va, vb), dir); /* (a - b) x u: outward for CCW b->a->... */
+        double lc = sw_glen(nn);
+        if (lc > 0.0 && sw_finite(lc)) {
+            n = nn, len = lc;
+            d = -sw_dot(nn, va);
+            double far_v = 0.0;
+            for (uint32_t i = 0; i < H->face_vertex_count[k]; ++i) {
+                const double e = sw_dot(nn, H->vertices[H->face_vertices[k][i]]) + d;
+                if (fabs(e) > fabs(far_v)) far_v = e;
+            }
+            if (far_v > 0.0) n = sw_scale(n, -1.0), d = -d;
+        }
+    }
+    if (!(len > 0.0) || !sw_finite(len)) return 0;
+    const double il = 1.0 / len;
+    *out = (swarp_plane){n.x * il, n.y * il, n.z * il, d * il};
+    return 1;
+}
+
+/* The face among the set cand (bits, not empty) whose loop has the
+ * directed edge p -> q; usually cand has that one face only. */
+static uint32_t sw_face_with_edge(const swarp_polyhedron* H, uint64_t cand, uint8_t p, uint8_t q) {
+    uint32_t first = 0;
+    while (first < 63 && !((cand >> first) & 1u)) ++first;
+    if ((cand & (cand - 1)) == 0) return first;
+    for (uint32_t g = first; g < 64; ++g) {
+        if (!((cand >> g) & 1u)) continue;
+        const uint32_t m = H->face_vertex_count[g];
+        const uint8_t* l = H->face_vertices[g];
+        for (uint32_t k = 0; k < m; ++k)
+            if (l[k] == p && l[k + 1 == m ? 0 : k + 1] == q) return g;
+    }
+    return first;
+}
+
 /* Are H's loops tidy (at least 3 vertices, no index repeated next to
  * itself, also across the wrap)?  Then the sweep built from them needs no
  * sw_poly_finalize pass: see sw_extend. */
@@ -135,16 +203,21 @@ static swarp_status sw_extend(const swarp_polyhedron* H, swarp_vec3 u, double T,
                               int h_tidy, swarp_polyhedron* out, int* finalized) {
     const uint32_t nv = H->vertex_count;
     int front[SWARP_POLY_MAX_FACES];
+    /* c[f]: face f's plane at the apex, or n_f·u (its value at the point at
+     * infinity along u): the weights of the silhouette planes below */
+    double c[SWARP_POLY_MAX_FACES];
     int any_front = 0;
     *finalized = 0;
     /* the tolerance is only needed for the apex (a pass over H's vertices) */
     const double eps = apex ? SW_BODY_VISIBLE_EPS_REL * sw_poly_scale(H) : 0.0;
     for (uint32_t f = 0; f < H->face_count; ++f) {
+        swarp_plane p = H->planes[f];
         if (apex) {
-            swarp_plane p = H->planes[f];
-            front[f] = p.a * apex->x + p.b * apex->y + p.c * apex->z + p.d > eps;
+            c[f] = p.a * apex->x + p.b * apex->y + p.c * apex->z + p.d;
+            front[f] = c[f] > eps;
         } else {
-            front[f] = sw_face_is_front(H->planes[f], u);
+            c[f] = p.a * u.x + p.b * u.y + p.c * u.z;
+            front[f] = sw_face_is_front(p, u);
         }
         any_front |= front[f];
     }
@@ -188,13 +261,18 @@ static swarp_status sw_extend(const swarp_polyhedron* H, swarp_vec3 u, double T,
     }
     /* directed edges of the front faces, as bit sets per start vertex */
     uint64_t front_edge[SWARP_POLY_MAX_VERTICES][SWARP_POLY_MAX_VERTICES / 64];
+    /* front_faces[p]: the front faces at vertex p, as a bit set (64 faces) */
+    _Static_assert(SWARP_POLY_MAX_FACES <= 64, "face sets are 64-bit");
+    uint64_t front_faces[SWARP_POLY_MAX_VERTICES];
     memset(front_edge, 0, nv * sizeof front_edge[0]);
+    memset(front_faces, 0, nv * sizeof front_faces[0]);
     for (uint32_t g = 0; g < H->face_count; ++g) {
         if (!front[g]) continue;
         uint32_t m = H->face_vertex_count[g];
         for (uint32_t j = 0; j < m; ++j) {
             uint8_t p = H->face_vertices[g][j], q = H->face_vertices[g][j + 1 == m ? 0 : j + 1];
             front_edge[p][q >> 6] |= (uint64_t)1 << (q & 63);
+            front_faces[p] |= (uint64_t)1 << g;
         }
     }
     uint32_t tf = 0;
@@ -227,16 +305,9 @@ static swarp_status sw_extend(const swarp_polyhedron* H, swarp_vec3 u, double T,
                     q[3] = id[nv + b];
                     qn = 4;
                 }
-                swarp_vec3 nn;
-                {
-                    /* plane through the edge containing u (or the apex) */
-                    swarp_vec3 va = H->vertices[a], vb = H->vertices[b];
-                    swarp_vec3 dir = apex ? sw_sub(*apex, va) : u;
-                    nn = sw_cross(sw_sub(va, vb), dir); /* (a - b) x u: outward for CCW b->a->... */
-                }
-                swarp_vec3 nu = {0, 0, 1};
-                if (!sw_gnormalize(nn, &nu)) continue; /* edge parallel to u: zero-area side */
-                out->planes[tf] = (swarp_plane){nu.x, nu.y, nu.z, -sw_dot(nu, H->vertices[a])};
+                /* the plane through the edge containing u (or the apex) */
+                const uint32_t g = sw_face_with_edge(H, front_faces[a] & front_faces[b], b, a);
+                if (!sw_side_plane(H, a, b, g, c[g], f, c[f], u, apex, &out->planes[tf])) continue;
                 out->face_vertex_count[tf] = qn;
                 ++tf;
             }
@@ -267,6 +338,33 @@ void sw_depth_range_of(const swarp_polyhedron* P, swarp_vec3 eye, swarp_vec3 f, 
     *mx = hi;
 }
 
+/* A half-angle of the frustum beyond atan(SW_WIDE_TAN) (89.94°): its
+ * corners reach far·tan, up to 1e12 far (an aspect of 1e300 is valid), and
+ * V clipped by the box works at that scale: the clipper's tolerance (1e-12
+ * of it) swallowed the box (H's vertices outside S, off their faces;
+ * issue 9).  Such an H is built the other way round (sw_body_h_wide).  The
+ * test costs no tan for the usual cameras. */
+#define SW_WIDE_TAN 1e3
+static int sw_frustum_is_wide(const swarp_camera* cam) {
+    if (!(cam->aspect > 1e2 || cam->fovy > 3.1)) return 0; /* tan(fovy/2) < 24.1: aspect 100 is short of 1e3 */
+    const double ty = tan(0.5 * cam->fovy);
+    return ty > SW_WIDE_TAN || ty * cam->aspect > SW_WIDE_TAN;
+}
+
+/* H = S clipped by the 6 planes of V: coordinates of the box's size. */
+static swarp_status sw_body_h_wide(const swarp_camera* cam, double near, double far, const swarp_aabb* box,
+                                   swarp_polyhedron* H) {
+    swarp_plane pl[6];
+    sw_frustum_planes(cam, near, far, pl);
+    swarp_status s = swarp_poly_from_aabb(box, H);
+    if (s != SWARP_OK) return s;
+    for (int k = 0; k < 6 && H->vertex_count > 0; ++k) {
+        s = sw_poly_clip(H, sw_v3(pl[k].a, pl[k].b, pl[k].c), pl[k].d, H);
+        if (s != SWARP_OK) return s;
+    }
+    return SWARP_OK;
+}
+
 swarp_status sw_body_h(const swarp_camera* cam, double near, double far, const swarp_aabb* box,
                        swarp_polyhedron* H) {
     /* box first: it is usually the smaller, and clipping the frustum by the
@@ -278,7 +376,7 @@ swarp_status sw_body_h(const swarp_camera* cam, double near, double far, const s
      * plane leaves H empty */
     {
         swarp_vec3 f = {0, 0, -1};
-        sw_gnormalize(cam->dir, &f);
+        sw_unit_dir(cam->dir, &f);
         double zbox = -INFINITY;
         for (int i = 0; i < 8; ++i) {
             swarp_vec3 c = sw_v3((i & 1) ? box->max.x : box->min.x, (i & 2) ? box->max.y : box->min.y,
@@ -288,10 +386,16 @@ swarp_status sw_body_h(const swarp_camera* cam, double near, double far, const s
         if (zbox < near) return SWARP_ERR_BODY_EMPTY; /* S lies wholly before the near plane */
         if (far > 2.0 * zbox) far = 2.0 * zbox;
     }
-    swarp_status s = sw_poly_from_frustum(cam, near, far, &V); /* the callers checked cam, near, far */
-    if (s != SWARP_OK) return s;
-    s = sw_poly_clip_box(&V, box, H);
-    if (s != SWARP_OK) return s;
+    swarp_status s;
+    if (sw_frustum_is_wide(cam)) {
+        s = sw_body_h_wide(cam, near, far, box, H);
+        if (s != SWARP_OK) return s;
+    } else {
+        s = sw_poly_from_frustum(cam, near, far, &V); /* the callers checked cam, near, far */
+        if (s != SWARP_OK) return s;
+        s = sw_poly_clip_box(&V, box, H);
+        if (s != SWARP_OK) return s;
+    }
     if (H->vertex_count == 0) return SWARP_ERR_BODY_EMPTY;
     return SWARP_OK;
 }
@@ -316,7 +420,7 @@ swarp_status sw_body_h_eye(const swarp_camera* cam, double near, double far, con
 /* The square pyramid L circumscribing the spot cone: 4 planes through l. */
 swarp_status sw_clip_light_pyramid(swarp_polyhedron* B, const swarp_light* light) {
     swarp_vec3 a = {0, 0, 1}, e1 = {1, 0, 0}, e2;
-    sw_gnormalize(light->direction, &a);
+    sw_unit_dir(light->direction, &a); /* subnormal directions are valid */
     swarp_vec3 ref = fabs(a.x) < 0.6 ? sw_v3(1, 0, 0) : (fabs(a.y) < 0.6 ? sw_v3(0, 1, 0) : sw_v3(0, 0, 1));
     sw_gnormalize(sw_cross(ref, a), &e1);
     e2 = sw_cross(a, e1);
@@ -386,7 +490,7 @@ static swarp_status sw_body_from_h_ex(const swarp_polyhedron* H, const swarp_lig
             flat = fabs(off) <= SW_BODY_VISIBLE_EPS_REL * sw_max(sw_poly_scale(H), sw_glen(*l));
         } else {
             swarp_vec3 dd = {0, -1, 0};
-            sw_gnormalize(light->direction, &dd);
+            sw_unit_dir(light->direction, &dd);
             flat = fabs(p.a * dd.x + p.b * dd.y + p.c * dd.z) <= 1e-15; /* exactly grazing */
         }
     }
@@ -405,7 +509,7 @@ static swarp_status sw_body_from_h_ex(const swarp_polyhedron* H, const swarp_lig
         }
     } else {
         swarp_vec3 u = {0, 0, 1};
-        sw_gnormalize(sw_scale(light->direction, -1.0), &u);
+        sw_unit_dir(sw_scale(light->direction, -1.0), &u);
         /* T: longer than any path inside S */
         double diag = sw_glen(sw_sub(box->max, box->min));
         double T = 2.0 * diag + 1e-300;

@@ -51,12 +51,18 @@ swarp_status sw_check_depth_range(swarp_depth_range d);
 
 /* Orthonormal camera basis: f (forward), r (right), u (up). */
 void sw_camera_basis(const swarp_camera* cam, swarp_vec3* f, swarp_vec3* r, swarp_vec3* u);
+/* a direction's unit vector, also for subnormal components (scaled by the
+ * largest one first: sw_gnormalize gives inf there); 0 for zero/non-finite */
+int sw_unit_dir(swarp_vec3 a, swarp_vec3* out);
 
 /* Internal polyhedron operations (no argument checks). */
 void sw_poly_from_corners(const swarp_vec3 c[8], swarp_polyhedron* out);
 /* V for [near, far] of a camera its caller has checked (shape, 0 < near < far):
  * the checks of swarp_poly_from_camera_range are not repeated */
 swarp_status sw_poly_from_frustum(const swarp_camera* cam, double near, double far, swarp_polyhedron* out);
+/* the same frustum's 6 planes (outward unit normals; left, right, bottom,
+ * top, near, far) */
+void sw_frustum_planes(const swarp_camera* cam, double near, double far, swarp_plane pl[6]);
 swarp_status sw_poly_clip(const swarp_polyhedron* in, swarp_vec3 n, double d,
                           swarp_polyhedron* out);
 swarp_status sw_poly_clip_box(const swarp_polyhedron* in, const swarp_aabb* box,

@@ -67,6 +67,15 @@ swarp_status sw_check_box(const swarp_aabb* box) {
     return SWARP_OK;
 }
 
+int sw_unit_dir(swarp_vec3 a, swarp_vec3* out) {
+    const double m = sw_max(fabs(a.x), sw_max(fabs(a.y), fabs(a.z)));
+    if (m < 1e-150) { /* |a|^2 would underflow: a / m is exact enough (one rounding per component) */
+        if (!(m > 0.0)) return 0;
+        a = sw_v3(a.x / m, a.y / m, a.z / m);
+    }
+    return sw_gnormalize(a, out);
+}
+
 void sw_camera_basis(const swarp_camera* cam, swarp_vec3* f, swarp_vec3* r, swarp_vec3* u) {
     swarp_vec3 ff = {0, 0, -1}, uu, rr = {1, 0, 0};
     sw_gnormalize(cam->dir, &ff);
@@ -309,6 +318,26 @@ static void sw_frustum_corners_b(const swarp_camera* cam, swarp_vec3 f, swarp_ve
     }
 }
 
+/* The frustum's 6 planes (outward unit normals) in the order of
+ * sw_frustum_loops: left, right, bottom, top, near, far. */
+static void sw_frustum_planes_b(const swarp_camera* cam, swarp_vec3 f, swarp_vec3 r, swarp_vec3 u, double tx,
+                                double ty, double near, double far, swarp_plane pl[6]) {
+    const double kx = 1.0 / sqrt(1.0 + tx * tx), ky = 1.0 / sqrt(1.0 + ty * ty);
+    const double fe = sw_dot(f, cam->eye);
+    swarp_vec3 n[6];
+    double d[6];
+    n[0] = sw_scale(sw_add(r, sw_scale(f, tx)), -kx); /* left: -(r + tx f) */
+    n[1] = sw_scale(sw_sub(r, sw_scale(f, tx)), kx);  /* right: r - tx f */
+    n[2] = sw_scale(sw_add(u, sw_scale(f, ty)), -ky); /* bottom: -(u + ty f) */
+    n[3] = sw_scale(sw_sub(u, sw_scale(f, ty)), ky);  /* top: u - ty f */
+    for (int k = 0; k < 4; ++k) d[k] = -sw_dot(n[k], cam->eye); /* the side planes pass through the eye */
+    n[4] = sw_scale(f, -1.0);
+    d[4] = fe + near;
+    n[5] = f;
+    d[5] = -(fe + far);
+    for (int k = 0; k < 6; ++k) pl[k] = (swarp_plane){n[k].x, n[k].y, n[k].z, d[k]};
+}
+
 /* The frustum's faces, corner index = x | y<<1 | z<<2 (x: right, y: up,
  * z: far), each loop counter-clockwise seen from outside: the loops
  * sw_poly_from_corners finds for every camera (its basis is always
@@ -340,28 +369,22 @@ swarp_status sw_poly_from_frustum(const swarp_camera* cam, double near, double f
         sw_poly_from_corners(c, out);
         return SWARP_OK;
     }
-    const double kx = 1.0 / sqrt(1.0 + tx * tx), ky = 1.0 / sqrt(1.0 + ty * ty);
-    const double fe = sw_dot(f, cam->eye);
-    swarp_vec3 n[6];
-    double d[6];
-    n[0] = sw_scale(sw_add(r, sw_scale(f, tx)), -kx); /* left: -(r + tx f) */
-    n[1] = sw_scale(sw_sub(r, sw_scale(f, tx)), kx);  /* right: r - tx f */
-    n[2] = sw_scale(sw_add(u, sw_scale(f, ty)), -ky); /* bottom: -(u + ty f) */
-    n[3] = sw_scale(sw_sub(u, sw_scale(f, ty)), ky);  /* top: u - ty f */
-    for (int k = 0; k < 4; ++k) d[k] = -sw_dot(n[k], cam->eye); /* the side planes pass through the eye */
-    n[4] = sw_scale(f, -1.0);
-    d[4] = fe + near;
-    n[5] = f;
-    d[5] = -(fe + far);
+    sw_frustum_planes_b(cam, f, r, u, tx, ty, near, far, out->planes);
     out->vertex_count = 8;
     for (int i = 0; i < 8; ++i) out->vertices[i] = c[i];
     for (int k = 0; k < 6; ++k) {
-        out->planes[k] = (swarp_plane){n[k].x, n[k].y, n[k].z, d[k]};
         memcpy(out->face_vertices[k], sw_frustum_loops[k], 4);
         out->face_vertex_count[k] = 4;
     }
     out->face_count = 6;
     return SWARP_OK;
+}
+
+void sw_frustum_planes(const swarp_camera* cam, double near, double far, swarp_plane pl[6]) {
+    swarp_vec3 f, r, u;
+    sw_camera_basis(cam, &f, &r, &u);
+    double ty = fmin(tan(0.5 * cam->fovy), SW_FRUSTUM_MAX_TAN), tx = fmin(ty * cam->aspect, SW_FRUSTUM_MAX_TAN);
+    sw_frustum_planes_b(cam, f, r, u, tx, ty, near, far, pl);
 }
 
 SWARP_API swarp_status swarp_poly_from_camera_range(const swarp_camera* cam, double near, double far,

@@ -617,6 +617,189 @@ START_TEST(sf_setup_points_eye_far_from_body) {
 }
 END_TEST
 
+/* bodyfix pass: B of a light all but parallel to faces of H (issue 9).
+ * The side face through a silhouette edge came from the cross product of
+ * the edge and u; with the edge all but parallel to u its plane tilted at
+ * random and cut H (a vertex of B 1.9 outside its own face in a box of
+ * size 80).  H below are the sweep's, written out exactly. */
+static swarp_polyhedron poly_of(const swarp_vec3* v, uint32_t nv, const swarp_plane* pl, const uint8_t (*loops)[8],
+                                const uint32_t* counts, uint32_t nf) {
+    swarp_polyhedron p;
+    memset(&p, 0, sizeof p);
+    p.vertex_count = nv;
+    p.face_count = nf;
+    for (uint32_t i = 0; i < nv; ++i) p.vertices[i] = v[i];
+    for (uint32_t f = 0; f < nf; ++f) {
+        p.planes[f] = pl[f];
+        p.face_vertex_count[f] = counts[f];
+        for (uint32_t k = 0; k < counts[f]; ++k) p.face_vertices[f][k] = loops[f][k];
+    }
+    return p;
+}
+static double plane_at(const swarp_plane* p, swarp_vec3 v) { return p->a * v.x + p->b * v.y + p->c * v.z + p->d; }
+/* B a valid convex polyhedron holding H (tol: 1e-9 of the coordinates, the sweep's) */
+static void check_body(const swarp_polyhedron* B, const swarp_polyhedron* H, double tol) {
+    ck_assert(B->vertex_count > 0);
+    for (uint32_t f = 0; f < B->face_count; ++f) {
+        for (uint32_t v = 0; v < B->vertex_count; ++v)
+            ck_assert_msg(plane_at(&B->planes[f], B->vertices[v]) <= tol, "B: vertex %u outside face %u by %g", v, f,
+                          plane_at(&B->planes[f], B->vertices[v]));
+        for (uint32_t k = 0; k < B->face_vertex_count[f]; ++k)
+            ck_assert_msg(fabs(plane_at(&B->planes[f], B->vertices[B->face_vertices[f][k]])) <= tol, "B: face %u vertex %u off", f, k);
+        for (uint32_t v = 0; v < H->vertex_count; ++v)
+            ck_assert_msg(plane_at(&B->planes[f], H->vertices[v]) <= tol, "H: vertex %u outside face %u of B by %g", v, f,
+                          plane_at(&B->planes[f], H->vertices[v]));
+    }
+}
+START_TEST(body_from_h_grazing) {
+    { /* hard_cases --entry swarp_body_from_h --case 381: faces of H along u */
+        const swarp_vec3 v[8] = {{1000013.2954460557, -8.9844438238526063, 1000047.9719960216},
+                                 {1000013.2636823052, -8.9844438238526063, 1000048.0026541286},
+                                 {1000013.3525812096, -8.8624380987345592, 1000048.0311916781},
+                                 {1000013.3208174591, -8.8624380987345592, 1000048.0618497852},
+                                 {1000014.9888504959, -10, 1000049.5887847046},
+                                 {1000014.1419592315, -10, 1000048.7651116069},
+                                 {1000014.0263221718, -10, 1000048.8767235321},
+                                 {1000014.8194869936, -10, 1000049.7522529442}};
+        const swarp_plane pl[6] = {{0.69705353393728475, 0.021305661978565271, -0.71670247634091355, 19674.247833837289},
+                                   {-0.74093821012435601, 0.021305661978565271, 0.67123515815649182, 69680.84988727828},
+                                   {-0.4577813317784053, -0.75198715247401371, -0.47429060162437747, 932094.01629031124},
+                                   {0.3125613629799564, 0.89299343697151956, 0.32383346939114305, -636406.645880464},
+                                   {-0.57579407390566717, 0.5590869056707003, -0.59655931504141047, 1172394.6856121109},
+                                   {0, -1, 0, -10}};
+        const uint8_t loops[6][8] = {{0, 2, 4, 5}, {1, 6, 7, 3}, {0, 5, 6, 1}, {2, 3, 7, 4}, {0, 1, 3, 2}, {4, 7, 6, 5}};
+        const uint32_t counts[6] = {4, 4, 4, 4, 4, 4};
+        const swarp_polyhedron H = poly_of(v, 8, pl, loops, counts, 6);
+        const swarp_light l = sun(-0.71951851024007607, -3.4234199473741066e-17, 0.69447326328801262);
+        const swarp_aabb box = {{1000000, -10, 999995.49762011471}, {1000100, -8.0801787172850155, 1000095.4976201147}};
+        swarp_polyhedron B;
+        ck_assert_int_eq(swarp_body_from_h(&H, &l, &box, &B), SWARP_OK);
+        check_body(&B, &H, 1e-9 * 1000100.0);
+    }
+    { /* --seed 7 --case 114554: a sliver H (1.7e-7 thick at 1e5) in a flat box */
+        const swarp_vec3 v[6] = {{100048.25590152819, -2.0543779807876397, 99958.893644363838},
+                                 {100048.25590152819, -2.0543779807876397, 99958.893644190059},
+                                 {100048.25590162282, -2.054377543344311, 99958.893644363838},
+                                 {100048.25590162282, -2.054377543344311, 99958.893644190059},
+                                 {100040.32603357387, 1.613135543318911, 99958.893644276948},
+                                 {100039.53266287014, -2.054377973499284, 99958.893644276948}};
+        const swarp_plane pl[5] = {{0.41977270840732089, 0.9076292598172353, -0.0, -41995.662738083891},
+                                   {0.97739165452070753, -0.21143687869734071, -0.0, -97786.764738773694},
+                                   {0, -1, 0, -2.054377973499284},
+                                   {0, 0, -1, 99958.893644276948},
+                                   {0, 0, 1, -99958.893644276948}};
+        const uint8_t loops[5][8] = {{2, 3, 4}, {0, 1, 3, 2}, {0, 5, 1}, {2, 3, 0, 1, 5, 4}, {0, 1, 2, 3, 4, 5}};
+        const uint32_t counts[5] = {3, 4, 3, 6, 6};
+        const swarp_polyhedron H = poly_of(v, 6, pl, loops, counts, 5);
+        const swarp_light l = sun(-0.97739242680818161, 0.21143330867678684, -1.0000000000000001e-09);
+        const swarp_aabb box = {{99967.318617837038, -2.054377973499284, 99958.893644276948},
+                                {100048.25590255289, 16.564658620014637, 99958.893644276948}};
+        swarp_polyhedron B;
+        ck_assert_int_eq(swarp_body_from_h(&H, &l, &box, &B), SWARP_OK);
+        check_body(&B, &H, 1e-9 * 100048.25590255289);
+    }
+    { /* --case 221183: a flat H, u 1e-9 out of its plane: the two faces at a
+         silhouette edge are opposite, their combination cancels (the side
+         plane comes from the edge then) */
+        const swarp_vec3 v[4] = {{999957.33045117056, -2.4299542947557908, 999996.63614671386},
+                                 {999979.39726582309, -2.4299542947557908, 999996.63614671386},
+                                 {999957.33045117056, 20.09206042700847, 999996.63614671386},
+                                 {999979.39726582309, 20.09206042700847, 999996.63614671386}};
+        const swarp_plane pl[2] = {{0, 0, -0.99999999999999989, 999996.63614671375}, {0, 0, 1, -999996.63614671386}};
+        const uint8_t loops[2][8] = {{0, 2, 3, 1}, {0, 1, 3, 2}};
+        const uint32_t counts[2] = {4, 4};
+        const swarp_polyhedron H = poly_of(v, 4, pl, loops, counts, 2);
+        const swarp_light l = sun(0.7795, -0.626402, -1e-09);
+        const swarp_aabb box = {{999957.33045117056, -2.4299542947557908, 999996.63614671386},
+                                {999979.39726582309, 20.09206042700847, 999996.63614671386}};
+        swarp_polyhedron B;
+        ck_assert_int_eq(swarp_body_from_h(&H, &l, &box, &B), SWARP_OK);
+        check_body(&B, &H, 1e-9 * 999996.63614671386);
+    }
+    { /* --case 86671: a flat H 1e-6 across at 1e6 (1e-12 relative): its two
+         faces' normals are noise 6e-6 apart, their combination was the
+         same plane for all four side faces (B's vertices 0.05 off them) */
+        const swarp_vec3 v[4] = {{1000019.2898066387, -9.6434890779410534, 999987.01980257814},
+                                 {1000019.2898077613, -9.6434890779410534, 999987.01980135264},
+                                 {1000019.2898066947, -9.6434866056056485, 999987.01980262937},
+                                 {1000019.2898078172, -9.6434866056056485, 999987.01980140386}};
+        const swarp_plane pl[2] = {{0.73706029448968602, -0.03066388804624055, 0.67513098599950572, -1412197.0306131393},
+                                   {-0.73705558950557382, 0.03065810914696479, -0.67513638497871231, 1412197.7243911668}};
+        const uint8_t loops[2][8] = {{0, 1, 3, 2}, {0, 2, 3, 1}};
+        const uint32_t counts[2] = {4, 4};
+        const swarp_polyhedron H = poly_of(v, 4, pl, loops, counts, 2);
+        const swarp_light l = sun(-0.737046, 0.030662, -0.675147);
+        const swarp_aabb box = {{999989.95603555243, -9.6434878724353403, 999967.10043944884},
+                                {1000019.289807965, 0.80153271073714905, 1000001.6590176614}};
+        swarp_polyhedron B;
+        ck_assert_int_eq(swarp_body_from_h(&H, &l, &box, &B), SWARP_OK);
+        check_body(&B, &H, 1e-9 * 1000019.289807965);
+    }
+    { /* --case 637158: a spot whose direction is (4.9e-324, 0, 0) (valid: not
+         zero) was rejected with SWARP_ERR_ZERO_VECTOR (its unit vector was inf) */
+        const swarp_aabb hb = {{-2, -8, -40}, {12, -8, 50}}, scene = {{-3, -9, -45}, {13, 10, 56}};
+        swarp_polyhedron H, B, R;
+        ck_assert_int_eq(swarp_poly_from_aabb(&hb, &H), SWARP_OK);
+        swarp_light spot;
+        memset(&spot, 0, sizeof spot);
+        spot.type = SWARP_LIGHT_POINT;
+        spot.position = (swarp_vec3){-30, -8, 5};
+        spot.direction = (swarp_vec3){4.9406564584124654e-324, 0, 0};
+        spot.cone_angle = 1.34;
+        ck_assert_int_eq(swarp_body_from_h(&H, &spot, &scene, &B), SWARP_OK);
+        ck_assert_int_eq(swarp_body_receivers(&H, &spot, &R), SWARP_OK);
+        ck_assert(R.vertex_count > 0);
+        for (uint32_t i = 0; i < R.vertex_count; ++i) ck_assert(isfinite(R.vertices[i].x) && R.vertices[i].x >= -2 - 1e-9);
+    }
+}
+END_TEST
+
+/* bodyfix pass: H of a frustum 1e308 times wider than high (aspect > 0 is
+ * valid).  Its corners reach 1e12 far, and V clipped by the box worked at
+ * that scale: H came back with vertices outside S (hard_cases --entry
+ * swarp_body_h --case 3032, 12049 off face by 0.016).  H is S clipped by V's
+ * planes now. */
+START_TEST(body_h_wide_frustum) {
+    const struct {
+        swarp_vec3 eye, dir;
+        double fovy, aspect, near, far;
+        swarp_aabb box;
+    } cs[2] = {{{-31.751584031759648, 100.45574252696035, 62.857658427288321},
+                {-0.018260733025294202, -0.95564929522641417, -0.29394041940950671},
+                2.2465414555918914, 599831027782.41699, 0.11888177530992466, 264256.68945755722,
+                {{-31.751584031759648, -6.8721496823754737, -14.170167836906506},
+                 {-31.751584031759648, 14.275260174198303, 80.365812504042381}}},
+               {{29.676834685905799, -4.030733603187139, 15.120412622492502},
+                {-0.25397572117364237, 0.3490883434295603, -0.90201644194323505},
+                1.2087456828278447, 1.7976931348623157e+308, 0.36992942317370747, 539.33774063933242,
+                {{-2.822924792926608e-87, -6.4778537620193246, -27.39234609960095},
+                 {48.621515276744233, 15.709044089674826, 30.299721219030182}}}};
+    for (int i = 0; i < 2; ++i) {
+        swarp_camera cam;
+        memset(&cam, 0, sizeof cam);
+        cam.eye = cs[i].eye, cam.dir = cs[i].dir, cam.up = (swarp_vec3){0, 1, 0};
+        cam.fovy = cs[i].fovy, cam.aspect = cs[i].aspect, cam.near = cs[i].near, cam.far = cs[i].far;
+        swarp_polyhedron H;
+        ck_assert_int_eq(swarp_body_h(&cam, cam.near, cam.far, &cs[i].box, &H), SWARP_OK);
+        const swarp_aabb* b = &cs[i].box;
+        const double tol = 1e-9 * (cam.far + 100);
+        const double dl = sqrt(cam.dir.x * cam.dir.x + cam.dir.y * cam.dir.y + cam.dir.z * cam.dir.z);
+        ck_assert(H.vertex_count > 0);
+        for (uint32_t v = 0; v < H.vertex_count; ++v) {
+            const swarp_vec3 p = H.vertices[v];
+            ck_assert_msg(p.x >= b->min.x - tol && p.x <= b->max.x + tol && p.y >= b->min.y - tol && p.y <= b->max.y + tol &&
+                              p.z >= b->min.z - tol && p.z <= b->max.z + tol,
+                          "case %d: vertex %u (%.17g %.17g %.17g) outside S", i, v, p.x, p.y, p.z);
+            const double z = ((p.x - cam.eye.x) * cam.dir.x + (p.y - cam.eye.y) * cam.dir.y + (p.z - cam.eye.z) * cam.dir.z) / dl;
+            ck_assert_msg(z >= cam.near - tol && z <= cam.far + tol, "case %d: vertex %u at depth %g", i, v, z);
+        }
+        for (uint32_t f = 0; f < H.face_count; ++f)
+            for (uint32_t k = 0; k < H.face_vertex_count[f]; ++k)
+                ck_assert_msg(fabs(plane_at(&H.planes[f], H.vertices[H.face_vertices[f][k]])) <= tol, "case %d: off face %u", i, f);
+    }
+}
+END_TEST
+
 /* The smallest subnormal fovy is a valid field of view; halved it was 0 and
  * the warp parameter refused it (SWARP_ERR_FOV, undocumented for a valid
  * fovy).  Hard-case sweep swarp_setup_range case 184736 (seed default). */
@@ -881,6 +1064,9 @@ int main(void) {
     tcase_add_test(t, sf_setup_point_light_centre_on_light_plane);
     tcase_add_test(t, sf_setup_point_light_2e154_away);
     tcase_add_test(t, sf_setup_follow_psm_huge_aspect);
+    /* bodyfix pass */
+    tcase_add_test(t, body_from_h_grazing);
+    tcase_add_test(t, body_h_wide_frustum);
     suite_add_tcase(s, t);
     return tu_run_suite(s) ? 1 : 0;
 }
