@@ -601,18 +601,26 @@ START_TEST(sf_setup_points_eye_far_from_body) {
     swarp_setup_result r, s;
     memset(&r, 0xA5, sizeof r);
     s = r;
-    ck_assert_int_eq(swarp_setup_points(&cam, &l, pts, 2, NULL, 0, cam.near, cam.far, &o, &r), SWARP_ERR_DEGENERATE);
-    ck_assert(memcmp(&r, &s, sizeof r) == 0);
-    /* the same body seen from 100 units: mapped into the unit square */
-    cam.eye = (swarp_vec3){-1000100, 5, -1000000};
+    /* the documented DEGENERATE, or (the body is one point to the rounding
+     * of its coordinates: SWARP_INFO_FLAT_EXTENT, a width of 1e-6 of them)
+     * a map with B inside */
     swarp_status st = swarp_setup_points(&cam, &l, pts, 2, NULL, 0, cam.near, cam.far, &o, &r);
-    ck_assert_msg(!swarp_status_is_error(st), "%s", swarp_status_name(st));
-    for (int i = 0; i < 2; ++i) {
-        const swarp_mat4* m = &r.matrix;
-        double w = m->m[3] * pts[i].x + m->m[7] * pts[i].y + m->m[11] * pts[i].z + m->m[15];
-        double x = (m->m[0] * pts[i].x + m->m[4] * pts[i].y + m->m[8] * pts[i].z + m->m[12]) / w;
-        double y = (m->m[1] * pts[i].x + m->m[5] * pts[i].y + m->m[9] * pts[i].z + m->m[13]) / w;
-        ck_assert_msg(fabs(x) <= 1 + 1e-6 && fabs(y) <= 1 + 1e-6, "point %d at (%g, %g)", i, x, y);
+    ck_assert_msg(st == SWARP_ERR_DEGENERATE || st == SWARP_INFO_FLAT_EXTENT, "%s", swarp_status_name(st));
+    if (st == SWARP_ERR_DEGENERATE) ck_assert(memcmp(&r, &s, sizeof r) == 0);
+    for (int pass = 0; pass < 2; ++pass) {
+        if (pass == 1) { /* the same body seen from 100 units: mapped into the unit square */
+            cam.eye = (swarp_vec3){-1000100, 5, -1000000};
+            st = swarp_setup_points(&cam, &l, pts, 2, NULL, 0, cam.near, cam.far, &o, &r);
+            ck_assert_msg(!swarp_status_is_error(st), "%s", swarp_status_name(st));
+        }
+        if (st == SWARP_ERR_DEGENERATE) continue;
+        for (int i = 0; i < 2; ++i) {
+            const swarp_mat4* m = &r.matrix;
+            double w = m->m[3] * pts[i].x + m->m[7] * pts[i].y + m->m[11] * pts[i].z + m->m[15];
+            double x = (m->m[0] * pts[i].x + m->m[4] * pts[i].y + m->m[8] * pts[i].z + m->m[12]) / w;
+            double y = (m->m[1] * pts[i].x + m->m[5] * pts[i].y + m->m[9] * pts[i].z + m->m[13]) / w;
+            ck_assert_msg(fabs(x) <= 1 + 1e-6 && fabs(y) <= 1 + 1e-6, "pass %d point %d at (%g, %g)", pass, i, x, y);
+        }
     }
 }
 END_TEST
@@ -1038,6 +1046,43 @@ START_TEST(sf_setup_follow_psm_huge_aspect) {
 }
 END_TEST
 
+/* B of three points 1e299 from the eye along y with x, z within 60: every
+ * extent of their light-space box is flat (a few ulps), and the fit took
+ * the widest of those ulps as the map's width (the point at x = -1.4).
+ * Hard-case sweep swarp_setup_points case 154580 (seed default). */
+START_TEST(sf_setup_points_all_extents_flat) {
+    swarp_camera cam = {{0x1.342c37258b8a8p+18, 0x0p+0, 0x1.342050053f726p+18},
+                        {0x1.67c56b508176dp-1, 0x1.6d635d0494d02p-3, 0x1.60a745ad68eeap-1},
+                        {0x0p+0, 0x1p+0, 0x0p+0},
+                        0x1.5b21706d00d62p+1,
+                        0x1.2e30a3b5cedf3p-1,
+                        0x1.8be73d3c29d7bp-1,
+                        0x1.d5a93d9b36be9p+22,
+                        {0, 0, 0, 0}};
+    swarp_light l = {SWARP_LIGHT_POINT, 0, {0x1.67c56b508176dp-1, 0x1.6d635d0494d02p-3, 0x1.60a745ad68eeap-1},
+                     {0x1.341337258b8a8p+18, 0x1.2bfffffffffffp+8, 0x1.343950053f726p+18}, 0x1.14503b946358bp+0,
+                     {0, 0, 0, 0}};
+    swarp_vec3 pt[3] = {{0x1.34213144c5fc2p+18, 0x1.13030ad93bcc6p+996, 0x1.341beeceef41p+18},
+                        {0x1.342c782ab0221p+18, 0x1.1744212d7e833p+996, 0x1.341f3aba9402cp+18},
+                        {0x1.341dc570f396fp+18, 0x1.3abcedc85cc71p+996, 0x1.341f393f969f3p+18}};
+    swarp_setup_options o;
+    memset(&o, 0, sizeof o);
+    o.center = SWARP_WARP_CENTER_NEAREST_VERTEX;
+    o.depth_range = SWARP_DEPTH_ZERO_TO_ONE;
+    swarp_setup_result r;
+    swarp_status st = swarp_setup_points(&cam, &l, pt, 3, NULL, 0, cam.near, cam.far, &o, &r);
+    if (st == SWARP_ERR_DEGENERATE) return;
+    ck_assert_msg(!swarp_status_is_error(st), "%s", swarp_status_name(st));
+    for (int i = 0; i < 3; ++i) {
+        const double* m = r.matrix.m;
+        double w = m[3] * pt[i].x + m[7] * pt[i].y + m[11] * pt[i].z + m[15];
+        double x = (m[0] * pt[i].x + m[4] * pt[i].y + m[8] * pt[i].z + m[12]) / w;
+        double y = (m[1] * pt[i].x + m[5] * pt[i].y + m[9] * pt[i].z + m[13]) / w;
+        ck_assert_msg(fabs(x) <= 1 + 1e-6 && fabs(y) <= 1 + 1e-6, "point %d at (%g, %g)", i, x, y);
+    }
+}
+END_TEST
+
 int main(void) {
     Suite* s = suite_create("edges_geometry");
     TCase* t = tcase_create("geometry");
@@ -1064,6 +1109,7 @@ int main(void) {
     tcase_add_test(t, sf_setup_point_light_centre_on_light_plane);
     tcase_add_test(t, sf_setup_point_light_2e154_away);
     tcase_add_test(t, sf_setup_follow_psm_huge_aspect);
+    tcase_add_test(t, sf_setup_points_all_extents_flat);
     /* bodyfix pass */
     tcase_add_test(t, body_from_h_grazing);
     tcase_add_test(t, body_h_wide_frustum);
