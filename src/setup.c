@@ -172,27 +172,10 @@ static void sw_mul_affine_b(const swarp_mat4* a, const swarp_mat4* b, swarp_mat4
  * |eye|: B a 1e-21 sliver at 25 units, or a 1e-9 rad grazing light
  * stretching a 1e6-offset scene 1e10 times) the map is meaningless in world
  * coordinates.  64 eps of margin. */
-static int sw_world_resolves(const swarp_mat4* m, const swarp_mat4* proj, const swarp_mat4* L, const swarp_vec3* p,
-                             size_t n, swarp_vec3 eye) {
-    const double ax = fabs(eye.x), ay = fabs(eye.y), az = fabs(eye.z);
-    const double m30 = sw_at(m, 3, 0), m31 = sw_at(m, 3, 1), m32 = sw_at(m, 3, 2), m33 = sw_at(m, 3, 3);
+/* The per-point form of the light-view resolution test below (see there) */
+static int sw_light_resolves(const swarp_mat4* proj, const swarp_mat4* L, const swarp_vec3* p, size_t n) {
     for (size_t i = 0; i < n; ++i) {
         const double px = p[i].x, py = p[i].y, pz = p[i].z;
-        double w = m30 * px + m31 * py + m32 * pz + m33;
-        double k = fabs(m30) * (fabs(px) + 2.0 * ax) + fabs(m31) * (fabs(py) + 2.0 * ay) +
-                   fabs(m32) * (fabs(pz) + 2.0 * az) + fabs(m33);
-        if (!(w > 64.0 * DBL_EPSILON * k)) return 0;
-        /* The light-view coordinates l = L p carry rounding of eps times
-         * the sizes summed, |L_j0 p_x| + |L_j1 p_y| + |L_j2 p_z| + |L_j3|
-         * (the camera-relative point, src: sw_rel_camera, and a point
-         * light's distance in the translation).  Moved by that, the map
-         * coordinate x = X/W (X, W rows of light_proj at l) moves by
-         * eps sum_j |proj_xj - x proj_wj| mag_j / W.  Beyond SW_REL_RESOLVE
-         * of the map (half its width is 1) the map is finer than the
-         * coordinates resolve B: an eye 1e145 from a 40-unit body (its
-         * points all equal relative to the eye) was "mapped" to x = 1e4,
-         * a spot light 2e154 above a 50-unit body to x = -2.1, both with
-         * SWARP_OK (issue 9, hard-case sweep). */
         double l[3], mag[3];
         for (int j = 0; j < 3; ++j) {
             const double a0 = sw_at(L, j, 0) * px, a1 = sw_at(L, j, 1) * py, a2 = sw_at(L, j, 2) * pz, a3 = sw_at(L, j, 3);
@@ -214,6 +197,43 @@ static int sw_world_resolves(const swarp_mat4* m, const swarp_mat4* proj, const 
         if (!(DBL_EPSILON * fmax(cx, cy) <= SW_REL_RESOLVE * fabs(W))) return 0;
     }
     return 1;
+}
+
+static int sw_world_resolves(const swarp_mat4* m, const swarp_mat4* proj, const swarp_mat4* L, const swarp_vec3* p,
+                             size_t n, swarp_vec3 eye) {
+    const double ax = fabs(eye.x), ay = fabs(eye.y), az = fabs(eye.z);
+    const double m30 = sw_at(m, 3, 0), m31 = sw_at(m, 3, 1), m32 = sw_at(m, 3, 2), m33 = sw_at(m, 3, 3);
+    double wmin = INFINITY, p1 = 0.0;
+    for (size_t i = 0; i < n; ++i) {
+        const double px = fabs(p[i].x), py = fabs(p[i].y), pz = fabs(p[i].z);
+        double w = m30 * p[i].x + m31 * p[i].y + m32 * p[i].z + m33;
+        double k = fabs(m30) * (px + 2.0 * ax) + fabs(m31) * (py + 2.0 * ay) + fabs(m32) * (pz + 2.0 * az) + fabs(m33);
+        if (!(w > 64.0 * DBL_EPSILON * k)) return 0;
+        wmin = w < wmin ? w : wmin;
+        p1 = fmax(p1, px + py + pz);
+    }
+    /* The light-view coordinates l = L p carry rounding of eps times the
+     * sizes summed, mag_j = |L_j0 p_x| + |L_j1 p_y| + |L_j2 p_z| + |L_j3|
+     * (the camera-relative point, src: sw_rel_camera, and a point light's
+     * distance in the translation).  Moved by that, the map coordinate
+     * x = X/W (X, W rows of light_proj at l) moves by
+     * eps sum_j |proj_xj - x proj_wj| mag_j / W.  Beyond SW_REL_RESOLVE of
+     * the map (half its width is 1) the map is finer than the coordinates
+     * resolve B: an eye 1e145 from a 40-unit body (its points all equal
+     * relative to the eye) was "mapped" to x = 1e4, a spot light 2e154
+     * above a 50-unit body to x = -2.1, both with SWARP_OK (issue 9,
+     * hard-case sweep).  First a bound for all points at once (L's rows
+     * are unit: mag_j <= |p|_1 + |L_j3|; B maps into |x| <= 1, 2 allowed):
+     * it passes for every ordinary scene, and the per-point test (about
+     * 15 % of swarp_setup's time) runs only where it does not. */
+    double sx = 0.0, sy = 0.0;
+    for (int j = 0; j < 3; ++j) {
+        const double mj = p1 + fabs(sw_at(L, j, 3)), wj = 2.0 * fabs(sw_at(proj, 3, j));
+        sx += (fabs(sw_at(proj, 0, j)) + wj) * mj;
+        sy += (fabs(sw_at(proj, 1, j)) + wj) * mj;
+    }
+    if (DBL_EPSILON * fmax(sx, sy) <= SW_REL_RESOLVE * wmin) return 1;
+    return sw_light_resolves(proj, L, p, n);
 }
 
 /* L^-1 -> (P0 L)^-1 = L^-1 P0^-1: P0 maps (x, y, z, w) to (x, y, w, -z), so

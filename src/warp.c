@@ -171,15 +171,13 @@ swarp_status sw_warp_lispsm(const swarp_mat4* M, const swarp_mat4* M_inv, const 
     sw_camera_basis(cam, &v, &r, &u);
     /* B in light space: extent along the warp axis y */
     double ymin = INFINITY, ymax = -INFINITY, size = 0.0;
-    double xmin = INFINITY, xmax = -INFINITY, zmin = INFINITY, zmax = -INFINITY, wmin = INFINITY;
+    double wmin = INFINITY;
     for (size_t i = 0; i < count; ++i) {
         swarp_vec4 h = sw_xform_point(M, points[i]);
         double y = h.y / h.w, ax = fabs(h.x / h.w), ay = fabs(y);
         if (y < ymin) ymin = y;
         if (y > ymax) ymax = y;
-        xmin = fmin(xmin, h.x / h.w), xmax = fmax(xmax, h.x / h.w);
-        zmin = fmin(zmin, h.z / h.w), zmax = fmax(zmax, h.z / h.w);
-        wmin = fmin(wmin, h.w);
+        wmin = h.w < wmin ? h.w : wmin;
         size = ax > size ? ax : size;
         size = ay > size ? ay : size;
     }
@@ -224,6 +222,12 @@ swarp_status sw_warp_lispsm(const swarp_mat4* M, const swarp_mat4* M_inv, const 
      * 1e4: SW_LIGHT_NEAR_MIN_REL of src/setup.c, the nearest a point of B
      * may be; directional lights (w = 1) never move it. */
     if (!(c_h.w >= 1e-4 * wmin)) {
+        double xmin = INFINITY, xmax = -INFINITY, zmin = INFINITY, zmax = -INFINITY;
+        for (size_t i = 0; i < count; ++i) {
+            swarp_vec3 q = sw_project(M, points[i]);
+            xmin = fmin(xmin, q.x), xmax = fmax(xmax, q.x);
+            zmin = fmin(zmin, q.z), zmax = fmax(zmax, q.z);
+        }
         c_ls.x = fmin(fmax(c_ls.x, xmin), xmax);
         c_ls.z = fmin(fmax(c_ls.z, zmin), zmax);
         if (!sw_finite(c_ls.x)) c_ls.x = 0.5 * (xmin + xmax);
