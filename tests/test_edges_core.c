@@ -172,17 +172,7 @@ END_TEST
  * blame the library; those tests check at run time that long double really
  * is wider and skip (saying so) when it is not.  The -Werror and
  * ASan+UBSan runs do the checks. */
-static int long_double_is_wide(void) {
-    volatile long double one = 1.0L, eps = LDBL_EPSILON, tiny = DBL_MIN;
-    return one + eps != one && tiny * tiny > 0.0L;
-}
-#define REQUIRE_WIDE_LONG_DOUBLE()                                                              \
-    do {                                                                                       \
-        if (!long_double_is_wide()) {                                                          \
-            fprintf(stderr, "%s: skipped, long double is not wider than double here\n", __func__); \
-            return;                                                                            \
-        }                                                                                      \
-    } while (0)
+/* long_double_is_wide() and REQUIRE_WIDE_LONG_DOUBLE(): test_util.h */
 
 /* [RHS] (3.2) in long double: d / (sqrt(z_1/z_0) - 1) = d sqrt(z_0) / (sqrt(z_1) - sqrt(z_0)) */
 static long double ref_nopt(double d, double z0, double z1) {
