@@ -661,6 +661,38 @@ START_TEST(body_h_wide_frustum) {
 }
 END_TEST
 
+/* bodyfix pass: magnitudes at the ends of the double range (issue 9).  A
+ * clip plane with coefficients of 1e-321 (valid: not zero) had 1/|n| = inf
+ * and kept what it should cut (hard_cases --entry swarp_poly_clip --case
+ * 209191); the frustum of a matrix with w ~ 6e159 is 1e-160 across, its
+ * Newell normals were products of 1e-320 and came out inf
+ * (swarp_poly_from_inverse_matrix --case 690952). */
+START_TEST(poly_tiny_magnitudes) {
+    const swarp_aabb box = {{-30, -30, -30}, {30, 30, 30}};
+    swarp_polyhedron P, Q;
+    ck_assert_int_eq(swarp_poly_from_aabb(&box, &P), SWARP_OK);
+    /* x + z <= 20.005: subnormals have few digits, the ratio is exact here */
+    const swarp_plane pl = {4.575047880489943e-321, 0, 4.575047880489943e-321, -9.1525660892090922e-320};
+    const double bound = -pl.d / pl.a;
+    ck_assert_int_eq(swarp_poly_clip(&P, &pl, &Q), SWARP_OK);
+    ck_assert(Q.vertex_count > 0);
+    for (uint32_t v = 0; v < Q.vertex_count; ++v)
+        ck_assert_msg(Q.vertices[v].x + Q.vertices[v].z <= bound + 1e-9, "vertex %u: x + z = %g", v, Q.vertices[v].x + Q.vertices[v].z);
+    const swarp_mat4 m = {{2.8407183450518398, 1.7568812543004477, -0.56368800435547906, 0, -2, 2.9999999999989999,
+                           1.759516522821905, 0, 0.78539816339744828, 0.18619150977600629, 1.4085524255937107,
+                           1.0000000000000001e-09, 0, -1.0000000000010001, 0.20909585652742102, -5.7746782753919336e+159}};
+    swarp_polyhedron F;
+    swarp_status st = swarp_poly_from_inverse_matrix(&m, SWARP_DEPTH_DEFAULT, &F);
+    ck_assert_msg(st == SWARP_OK || st == SWARP_ERR_DEGENERATE, "%s", swarp_status_name(st));
+    if (st == SWARP_OK)
+        for (uint32_t f = 0; f < F.face_count; ++f) {
+            const swarp_plane* q = &F.planes[f];
+            const double nl = sqrt(q->a * q->a + q->b * q->b + q->c * q->c);
+            ck_assert_msg(fabs(nl - 1) <= 1e-9, "face %u normal length %g", f, nl);
+        }
+}
+END_TEST
+
 int main(void) {
     Suite* s = suite_create("edges_geometry");
     TCase* t = tcase_create("geometry");
@@ -677,6 +709,7 @@ int main(void) {
     /* bodyfix pass */
     tcase_add_test(t, body_from_h_grazing);
     tcase_add_test(t, body_h_wide_frustum);
+    tcase_add_test(t, poly_tiny_magnitudes);
     suite_add_tcase(s, t);
     return tu_run_suite(s) ? 1 : 0;
 }
