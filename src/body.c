@@ -121,8 +121,8 @@ static swarp_status sw_flat_extend(const swarp_polyhedron* H, swarp_vec3 u, doub
  * edge's end points used before flips when the edge is all but parallel to
  * u (a grazing light, issue 9) and cut H.  The combination cancels in turn
  * when p_j and p_k are all but opposite (an all but flat H): its normal is
- * then |n| << w_j + w_k, and the cross product is taken.  The weights
- * are scaled to at most 1 first: c ~ 1e-17 must not underflow.  0: no side
+ * then |n| << w_j + w_k, and the cross product is taken.  Weights below
+ * 1e-150 are scaled to 1 first: their products must not underflow.  0: no side
  * face (both weights 0, or an edge parallel to u: zero area). */
 static int sw_side_plane(const swarp_polyhedron* H, uint8_t a, uint8_t b, uint32_t j, double cj, uint32_t k,
                          double ck, swarp_vec3 u, const swarp_vec3* apex, swarp_plane* out) {
@@ -130,7 +130,7 @@ static int sw_side_plane(const swarp_polyhedron* H, uint8_t a, uint8_t b, uint32
     double wj = ck < 0.0 ? -ck : 0.0, wk = cj > 0.0 ? cj : 0.0;
     const double m = sw_max(wj, wk);
     if (!(m > 0.0)) return 0;
-    wj /= m, wk /= m;
+    if (m < 1e-150) wj /= m, wk /= m; /* their products with the normals would underflow */
     swarp_vec3 n = sw_v3(wj * pj.a + wk * pk.a, wj * pj.b + wk * pk.b, wj * pj.c + wk * pk.c);
     double len = sw_glen(n), d = wj * pj.d + wk * pk.d;
     if (!(len >= 1e-3 * (wj + wk))) {
@@ -163,8 +163,12 @@ static int sw_side_plane(const swarp_polyhedron* H, uint8_t a, uint8_t b, uint32
 /* The face among the set cand (bits, not empty) whose loop has the
  * directed edge p -> q; usually cand has that one face only. */
 static uint32_t sw_face_with_edge(const swarp_polyhedron* H, uint64_t cand, uint8_t p, uint8_t q) {
+#if defined(__GNUC__) || defined(__clang__)
+    uint32_t first = (uint32_t)__builtin_ctzll(cand);
+#else
     uint32_t first = 0;
     while (first < 63 && !((cand >> first) & 1u)) ++first;
+#endif
     if ((cand & (cand - 1)) == 0) return first;
     for (uint32_t g = first; g < 64; ++g) {
         if (!((cand >> g) & 1u)) continue;

