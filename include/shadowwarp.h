@@ -775,7 +775,10 @@ SWARP_API swarp_status swarp_body_adjusted_range(const swarp_camera* cam, const 
  *  @param[out] out_view  light view; origin at cam->eye (directional) or at
  *                    the light position (point light).
  *  @return SWARP_OK, SWARP_INFO_LIGHT_PARALLEL, SWARP_ERR_NULL_POINTER,
- *          SWARP_ERR_NON_FINITE, SWARP_ERR_ZERO_VECTOR, ... */
+ *          SWARP_ERR_NON_FINITE, SWARP_ERR_ZERO_VECTOR, SWARP_ERR_OVERFLOW
+ *          (an origin so far out, |origin| near DBL_MAX, that its distance
+ *          along an axis of the view, the matrix's translation, exceeds
+ *          DBL_MAX), ... */
 SWARP_API swarp_status swarp_focus_light_view(const swarp_camera* cam, const swarp_light* light,
                                               const swarp_vec3* axis, swarp_mat4* out_view);
 
@@ -1047,7 +1050,8 @@ SWARP_API swarp_status swarp_setup_follow(const swarp_camera* cam, const swarp_l
  *  @return as swarp_focus_light_view (SWARP_INFO_LIGHT_PARALLEL only with
  *          previous_view NULL), SWARP_INFO_FOLLOW_LAG, SWARP_ERR_ZERO_VECTOR,
  *          SWARP_ERR_NON_FINITE, SWARP_ERR_FOLLOW_FRAME (rows not a rigid
- *          right-handed frame within 1e-6). */
+ *          right-handed frame within 1e-6), SWARP_ERR_OVERFLOW (as
+ *          swarp_focus_light_view: a translation beyond DBL_MAX). */
 SWARP_API swarp_status swarp_focus_light_view_follow(const swarp_camera* cam, const swarp_light* light,
                                                      const swarp_vec3* axis, const swarp_camera* previous_cam,
                                                      const swarp_mat4* previous_view, swarp_mat4* out_view);
@@ -1479,8 +1483,9 @@ SWARP_API swarp_status swarp_evsm_moments(double x, double c_pos, double c_neg,
  *  @return as swarp_evsm_moments (SWARP_ERR_FILTER_EXPONENT also when
  *          e^{c|t|} overflows for the receiver depth t), plus
  *          SWARP_ERR_OUT_OF_RANGE (min_variance < 0) and SWARP_ERR_NON_FINITE
- *          (a moment NaN/Inf, or moments beyond ~1e154 whose variance
- *          overflows). */
+ *          (a moment, t or min_variance NaN/Inf; finite moments of any
+ *          magnitude and a floor min_variance (c e^{c t})^2 beyond DBL_MAX
+ *          give a bound in [0, 1]). */
 SWARP_API swarp_status swarp_evsm_visibility(const double moments[4], double t, double c_pos,
                                              double c_neg, double min_variance,
                                              double* out_visibility);
@@ -1690,8 +1695,9 @@ typedef struct swarp_stabilize_report {
  *  [RHS] §3.5 exact solution (ZZB09).
  *  @param cam      camera (near/far ignored; the split range is n_i, f_i)
  *  @param n_i, f_i split range, 0 < n_i < f_i
- *  @param[out] out_center world centre; @param[out] out_radius radius;
- *  @param[out] out_centroid_radius may be NULL
+ *  @param[out] out_center world centre; @param[out] out_radius radius
+ *  (> 0: at least the smallest positive double, for a range of a few
+ *  subnormals); @param[out] out_centroid_radius may be NULL (>= radius)
  *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
  *          SWARP_ERR_NEAR_FAR, SWARP_ERR_FOV, SWARP_ERR_ZERO_VECTOR,
  *          SWARP_ERR_OUT_OF_RANGE (aspect <= 0), SWARP_ERR_DEGENERATE (up
@@ -1857,7 +1863,11 @@ SWARP_API swarp_status swarp_bias_depth_per_world(const swarp_bias_map* map, con
  *  projective) map at p.  A PCF tap offset by (ds, dt) texels compares
  *  against d + dd/ds ds + dd/dt dt.  GLSL twin in docs/splits.md.
  *  @return as swarp_bias_texel_size; SWARP_ERR_DEGENERATE when the plane is
- *          seen edge-on by the light (its texel-space image is a line). */
+ *          seen edge-on by the light (its texel-space image is a line): the
+ *          tangents' texel-space images parallel to 1e-12, or their
+ *          determinant within its own rounding bound (the double evaluation
+ *          of M p and M T cannot tell the plane from an edge-on one, e.g.
+ *          a point far from the map's centre of projection). */
 SWARP_API swarp_status swarp_bias_receiver_plane(const swarp_bias_map* map, const swarp_vec3* p,
                                                  const swarp_vec3* tangent_a,
                                                  const swarp_vec3* tangent_b, double out_grad[2]);
@@ -1868,7 +1878,8 @@ SWARP_API swarp_status swarp_bias_receiver_plane(const swarp_bias_map* map, cons
  *  swarp_cascade_select_depth and swarp_cascade_blend take (in a shader:
  *  -view_space_position.z).
  *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
- *          SWARP_ERR_ZERO_VECTOR. */
+ *          SWARP_ERR_ZERO_VECTOR, SWARP_ERR_OVERFLOW (the depth exceeds
+ *          DBL_MAX: p and eye near opposite ends of the double range). */
 SWARP_API swarp_status swarp_cascade_view_depth(const swarp_camera* cam, const swarp_vec3* p,
                                                 double* out_depth);
 
@@ -2082,7 +2093,9 @@ typedef struct swarp_cascade_result {
  *          SWARP_ERR_STABILIZE_WARPED, SWARP_ERR_STABILIZE_LIGHT,
  *          SWARP_ERR_SPLIT_COUNT (count > 16), SWARP_ERR_SPLIT_EMPTY,
  *          SWARP_ERR_CAPACITY, and the errors of swarp_setup,
- *          swarp_cascade_splits and swarp_stabilize_directional. */
+ *          swarp_cascade_splits and swarp_stabilize_directional (with
+ *          stabilisation: SWARP_ERR_OVERFLOW when the split's sphere or
+ *          matrix exceeds DBL_MAX). */
 SWARP_API swarp_status swarp_cascade_setup(const swarp_camera* cam, const swarp_light* light,
                                            const swarp_aabb* scene,
                                            const swarp_cascade_options* opts,
@@ -2148,6 +2161,12 @@ typedef struct swarp_scene_needs {
     swarp_plane planes[SWARP_PLAN_MAX_PLANES]; /**< candidate lixel planes [LIXEL] */
     uint32_t _reserved[4];
 } swarp_scene_needs;
+
+/** Largest time_budget_ns, pass_cost_ns and blur_pass_cost_ns swarp_plan()
+ *  accepts (1e15 ns, 11.6 days per frame), else SWARP_ERR_OUT_OF_RANGE: the
+ *  predicted cost (up to (16 + SWARP_PLAN_MAX_PLANES) passes and their blur
+ *  passes) then stays finite. */
+#define SWARP_PLAN_MAX_COST_NS 1e15
 
 /** What the caller can spend.  Zero means default for every field. */
 typedef struct swarp_budget {
@@ -2311,8 +2330,8 @@ typedef struct swarp_plan_chain {
  *          SWARP_ERR_RESERVED_NONZERO, SWARP_ERR_UNKNOWN_ENUM,
  *          SWARP_ERR_ZERO_VECTOR, SWARP_ERR_DEGENERATE (up parallel to dir),
  *          SWARP_ERR_FOV, SWARP_ERR_NEAR_FAR, SWARP_ERR_OUT_OF_RANGE (aspect,
- *          cone, soft_width, max_error, time, costs, max_passes > 32, scene
- *          box min > max), SWARP_ERR_RESOLUTION (screen or map above 65536),
+ *          cone, soft_width, max_error, time, costs (negative or above
+ *          SWARP_PLAN_MAX_COST_NS), max_passes > 32, scene box min > max), SWARP_ERR_RESOLUTION (screen or map above 65536),
  *          SWARP_ERR_PLAN_TOO_MANY_PLANES, SWARP_ERR_PLAN_EMPTY_VIEW. */
 SWARP_API swarp_status swarp_plan(const swarp_scene_needs* needs, const swarp_budget* budget,
                                   struct swarp_plan* out_plan);

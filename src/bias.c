@@ -3,6 +3,8 @@
  * normal offset, slope-scaled and receiver-plane depth bias. */
 #include "splits_internal.h"
 
+#include <float.h>
+
 _Static_assert(sizeof(swarp_bias_map) == sizeof(swarp_mat4) + 2 * sizeof(double) + 8 + 16,
                "swarp_bias_map size");
 
@@ -224,17 +226,17 @@ SWARP_API swarp_status swarp_bias_slope_scaled(const swarp_bias_map* map, const 
     return fr.back ? SWARP_INFO_BACKFACING : SWARP_OK;
 }
 
-/* Exact derivative of (s, t, d) (texels, texels, window depth) along a world
- * direction T at p: for h = M p, ndc = h.xyz/h.w, d ndc = (M T).xyz/w -
- * h.xyz (M T).w/w^2. */
-static void sw_texel_derivative(const swarp_bias_map* map, const swarp_vec4* h, swarp_vec3 T,
-                                double out[3]) {
+/* Exact derivative of NDC (x, y, z)/w along a world direction T at p, in
+ * the ratio form d(x/w) = (dx - (x/w) dw)/w, h = M p, dh = M T.  Not
+ * dx/w - x dw/w^2: for a far point (|w| > 1e154) 1/w^2 underflows to 0 and
+ * the second term vanishes, leaving dx/w alone (found by the hard-case
+ * sweep: a depth derivative of 1e-300 where it is 0). */
+static void sw_ndc_derivative(const swarp_mat4* M, const swarp_vec4* h, swarp_vec3 T, double out[3]) {
     swarp_vec4 t4 = {T.x, T.y, T.z, 0.0};
-    swarp_vec4 g = sw_xform4(&map->world_to_clip, t4);
-    const double iw = 1.0 / h->w, iw2 = iw * iw;
-    out[0] = 0.5 * map->res_s * (g.x * iw - h->x * g.w * iw2);
-    out[1] = 0.5 * map->res_t * (g.y * iw - h->y * g.w * iw2);
-    out[2] = sw_window_scale(map->depth) * (g.z * iw - h->z * g.w * iw2);
+    swarp_vec4 g = sw_xform4(M, t4);
+    const double ndc[3] = {h->x / h->w, h->y / h->w, h->z / h->w};
+    const double gv[3] = {g.x, g.y, g.z};
+    for (int r = 0; r < 3; ++r) out[r] = (gv[r] - ndc[r] * g.w) / h->w;
 }
 
 SWARP_API swarp_status swarp_bias_depth_per_world(const swarp_bias_map* map, const swarp_light* light,
@@ -247,12 +249,45 @@ SWARP_API swarp_status swarp_bias_depth_per_world(const swarp_bias_map* map, con
     swarp_vec4 h;
     if ((st = sw_project(&map->world_to_clip, *p, &h)) != SWARP_OK) return st;
     double dv[3];
-    sw_texel_derivative(map, &h, L, dv);
+    sw_ndc_derivative(&map->world_to_clip, &h, L, dv);
     /* moving toward the light lowers the depth: report the decrease */
-    const double f = -dv[2];
+    const double f = -sw_window_scale(map->depth) * dv[2];
     if (!sw_finite(f)) return SWARP_ERR_NON_FINITE;
     *out_depth_per_world = f;
     return SWARP_OK;
+}
+
+/* v scaled by a power of two (exact) so that its largest |component| is in
+ * [1, 2); 0 when v is zero.  The receiver plane and its gradient do not
+ * depend on the tangents' lengths nor on a common factor of a row of the
+ * 2x2 system, so this only keeps M T and the products below in range. */
+static double sw_pow2_scale(double m) { return m > 0.0 ? scalbn(1.0, -ilogb(m)) : 0.0; }
+static swarp_vec3 sw_pow2_normalized(swarp_vec3 v) {
+    const double m = fmax(fabs(v.x), fmax(fabs(v.y), fabs(v.z)));
+    const int e = m > 0.0 ? ilogb(m) : 0;
+    return sw_v3(scalbn(v.x, -e), scalbn(v.y, -e), scalbn(v.z, -e));
+}
+
+/* Sum of |terms| of row r of M (v, 1): what the double evaluation of
+ * (M v)_r is rounded against (Higham's gamma_4 |M| |v|). */
+static double sw_row_mag(const swarp_mat4* M, swarp_vec3 v, double v3, int r) {
+    return fabs(M->m[r] * v.x) + fabs(M->m[4 + r] * v.y) + fabs(M->m[8 + r] * v.z) + fabs(M->m[12 + r] * v3);
+}
+
+/* Bound on the rounding error of sw_ndc_derivative's u[0], u[1]: the
+ * errors of h = M p and g = M T (gamma_4 each: 4 eps, doubled for margin)
+ * carried through ndc = h/w and (g - ndc g_w)/w. */
+static void sw_ndc_derivative_err(const swarp_mat4* M, swarp_vec3 p, const swarp_vec4* h,
+                                  swarp_vec3 T, const double u[3], double err[2]) {
+    const double k = 8.0 * DBL_EPSILON, aw = fabs(h->w);
+    const double Hw = sw_row_mag(M, p, 1.0, 3), Gw = sw_row_mag(M, T, 0.0, 3);
+    const double gw = fabs(M->m[3] * T.x + M->m[7] * T.y + M->m[11] * T.z);
+    const double hv[2] = {h->x, h->y};
+    for (int r = 0; r < 2; ++r) {
+        const double ndc = fabs(hv[r] / h->w);
+        const double Hr = sw_row_mag(M, p, 1.0, r), Gr = sw_row_mag(M, T, 0.0, r);
+        err[r] = k * ((Gr + ndc * Gw) + gw * ((Hr + ndc * Hw) / aw)) / aw + k * (Hw / aw) * fabs(u[r]);
+    }
 }
 
 SWARP_API swarp_status swarp_bias_receiver_plane(const swarp_bias_map* map, const swarp_vec3* p,
@@ -263,19 +298,45 @@ SWARP_API swarp_status swarp_bias_receiver_plane(const swarp_bias_map* map, cons
     if (st != SWARP_OK) return st;
     if (!sw_finite3(p) || !sw_finite3(tangent_a) || !sw_finite3(tangent_b)) return SWARP_ERR_NON_FINITE;
     if (!(sw_len(*tangent_a) > 0.0) || !(sw_len(*tangent_b) > 0.0)) return SWARP_ERR_ZERO_VECTOR;
+    const swarp_mat4* M = &map->world_to_clip;
     swarp_vec4 h;
-    if ((st = sw_project(&map->world_to_clip, *p, &h)) != SWARP_OK) return st;
-    double a[3], b[3];
-    sw_texel_derivative(map, &h, *tangent_a, a);
-    sw_texel_derivative(map, &h, *tangent_b, b);
+    if ((st = sw_project(M, *p, &h)) != SWARP_OK) return st;
+    /* Rows of the system, in NDC per unit tangent, each scaled by a power of
+     * two; then texel space up to the common factor res_max / 2:
+     * a = (ks u_x, kt u_y), ks = res_s / res_max, kt = res_t / res_max. */
+    const swarp_vec3 T[2] = {sw_pow2_normalized(*tangent_a), sw_pow2_normalized(*tangent_b)};
+    const double res_max = fmax(map->res_s, map->res_t);
+    const double ks = map->res_s / res_max, kt = map->res_t / res_max;
+    double u[2][3], a[2][2], ea[2][2];
+    for (int i = 0; i < 2; ++i) {
+        double e[2];
+        sw_ndc_derivative(M, &h, T[i], u[i]);
+        sw_ndc_derivative_err(M, *p, &h, T[i], u[i], e);
+        const double sc = sw_pow2_scale(fmax(fabs(u[i][0]), fmax(fabs(u[i][1]), fabs(u[i][2]))));
+        if (!sw_finite(sc * u[i][0] + sc * u[i][1] + sc * u[i][2])) return SWARP_ERR_NON_FINITE;
+        for (int r = 0; r < 3; ++r) u[i][r] *= sc;
+        a[i][0] = ks * u[i][0], a[i][1] = kt * u[i][1];
+        ea[i][0] = ks * sc * e[0] + DBL_EPSILON * fabs(a[i][0]);
+        ea[i][1] = kt * sc * e[1] + DBL_EPSILON * fabs(a[i][1]);
+    }
     /* Solve g . (ds, dt) = dd for both tangents (Isidoro's receiver plane). */
-    const double det = a[0] * b[1] - b[0] * a[1];
-    /* |det| below 1e-12 of the product of the two texel-space lengths: the
-     * tangents' images are parallel to ~1e-12 rad, i.e. the plane is edge-on. */
-    const double scale = (fabs(a[0]) + fabs(a[1])) * (fabs(b[0]) + fabs(b[1]));
-    if (!(fabs(det) > 1e-12 * scale)) return SWARP_ERR_DEGENERATE;
-    const double g_s = (a[2] * b[1] - b[2] * a[1]) / det;
-    const double g_t = (a[0] * b[2] - b[0] * a[2]) / det;
+    const double p0 = a[0][0] * a[1][1], p1 = a[1][0] * a[0][1];
+    const double det = p0 - p1;
+    /* Edge-on: |det| below 1e-12 of the product of the two texel-space
+     * lengths (the tangents' images parallel to ~1e-12 rad), or below the
+     * rounding bound of det (first order in the rows' errors, plus the
+     * products' and the difference's rounding): rounding cannot then tell the
+     * plane from an edge-on one, and det's sign and size are noise. */
+    const double scale = (fabs(a[0][0]) + fabs(a[0][1])) * (fabs(a[1][0]) + fabs(a[1][1]));
+    const double det_err = fabs(a[0][0]) * ea[1][1] + ea[0][0] * fabs(a[1][1]) + fabs(a[1][0]) * ea[0][1] +
+                           ea[1][0] * fabs(a[0][1]) + 2.0 * DBL_EPSILON * (fabs(p0) + fabs(p1));
+    if (!(fabs(det) > 1e-12 * scale) || !(fabs(det) > 2.0 * det_err)) return SWARP_ERR_DEGENERATE;
+    /* Cramer in the scaled texel space, then back: d = ws u_z per unit of
+     * the row, texels = (res_max / 2) a, so g = 2 ws (...) / (det res_max). */
+    const double ws = sw_window_scale(map->depth);
+    const double q_s = (u[0][2] * a[1][1] - u[1][2] * a[0][1]) / det;
+    const double q_t = (a[0][0] * u[1][2] - a[1][0] * u[0][2]) / det;
+    const double g_s = 2.0 * ws * (q_s / res_max), g_t = 2.0 * ws * (q_t / res_max);
     if (!sw_finite(g_s) || !sw_finite(g_t)) return SWARP_ERR_NON_FINITE;
     out_grad[0] = g_s;
     out_grad[1] = g_t;

@@ -1,6 +1,8 @@
 /* Cascades (z-partitioning) combined with any geometry technique: split
  * selection, blending, per-split matrices and the configuration's error
  * curve.  [RHS] §3.3-3.4, §4.1-4.2. */
+#include <float.h>
+
 #include "splits_internal.h"
 #include "geometry_internal.h"
 
@@ -34,8 +36,17 @@ SWARP_API swarp_status swarp_cascade_view_depth(const swarp_camera* cam, const s
     swarp_vec3 f;
     if (!(dmax > 0.0) || !sw_normalize(sw_v3(d.x / dmax, d.y / dmax, d.z / dmax), &f))
         return SWARP_ERR_ZERO_VECTOR;
-    const double z = sw_dot(sw_sub(*p, cam->eye), f);
-    if (!sw_finite(z)) return SWARP_ERR_NON_FINITE;
+    double z = sw_dot(sw_sub(*p, cam->eye), f);
+    if (!sw_finite(z)) {
+        /* p - eye (or the sum) overflowed for coordinates near DBL_MAX:
+         * again at a quarter scale (|p/4 - eye/4| <= DBL_MAX/2 per
+         * component, the sum below DBL_MAX); a depth beyond DBL_MAX is not
+         * representable (issue 9, hard-case sweep: NON_FINITE for finite
+         * arguments) */
+        const double q = sw_dot(sw_sub(sw_scale(*p, 0.25), sw_scale(cam->eye, 0.25)), f);
+        if (!(fabs(q) <= 0.25 * DBL_MAX)) return SWARP_ERR_OVERFLOW;
+        z = 4.0 * q;
+    }
     *out_depth = z;
     return SWARP_OK;
 }
@@ -299,7 +310,7 @@ static swarp_status sw_split_errors(const swarp_camera* cam, const swarp_setup_o
     const double mh = so->map_height ? so->map_height : mw;
     cfg.near = sp->near;
     cfg.far = sp->far;
-    cfg.theta = 0.5 * cam->fovy;
+    cfg.theta = sw_half_fovy(cam->fovy);
     cfg.res_ix = fmax(sw, sh);
     cfg.res_iy = fmin(sw, sh);
     cfg.res_s = fmax(mw, mh);

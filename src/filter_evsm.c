@@ -79,10 +79,11 @@ SWARP_API swarp_status swarp_evsm_visibility(const double moments[4], double t, 
     if (!sw_finite(w_pos) || !sw_finite(w_neg)) return SWARP_ERR_FILTER_EXPONENT; /* e^{c|t|} overflows */
     /* the variance floor mapped through each warp's slope at t */
     double k_pos = c_pos * w_pos, k_neg = c_neg * w_neg;
-    double v_pos = sw_chebyshev(moments[0], moments[1], w_pos, min_variance * k_pos * k_pos);
-    double v_neg = sw_chebyshev(moments[2], moments[3], w_neg, min_variance * k_neg * k_neg);
+    /* the floor min_variance k^2 is formed inside (ratio form when it overflows) */
+    double v_pos = sw_chebyshev_k(moments[0], moments[1], w_pos, min_variance, k_pos);
+    double v_neg = sw_chebyshev_k(moments[2], moments[3], w_neg, min_variance, k_neg);
     double v = v_pos < v_neg ? v_pos : v_neg; /* both are upper bounds: keep the tighter */
-    if (!sw_finite(v)) return SWARP_ERR_NON_FINITE; /* moments beyond ~1e154: variance overflows */
+    if (!sw_finite(v)) return SWARP_ERR_NON_FINITE; /* defensive: the ratio form stays in [0, 1] */
     *out_visibility = v;
     return SWARP_OK;
 }

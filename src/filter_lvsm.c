@@ -71,6 +71,17 @@ SWARP_API swarp_status swarp_lvsm_layer_uniform(double t, double s_0, double s_N
         *out_layer = n_layers - 1;
         return SWARP_INFO_FILTER_DEPTH_CLAMPED;
     }
+    if (s_N - s_0 < 0x1p-960) {
+        /* The layer width h below would be subnormal or 0 (s_N = 5e-324,
+         * N = 3: h = 0 put t = s_0 in layer 1).  The layer of t is invariant
+         * under scaling t, s_0, s_N by 2^j, and that scaling is exact here:
+         * |s_0|, |s_N| <= 2^53 (s_N - s_0) (the width is at least an ulp of
+         * both), so 2^j with (s_N - s_0) 2^j in [1, 2) overflows nothing. */
+        int j = -ilogb(s_N - s_0);
+        t = ldexp(t, j);
+        s_0 = ldexp(s_0, j);
+        s_N = ldexp(s_N, j);
+    }
     double f = (t - s_0) / (s_N - s_0) * (double)n_layers;
     uint32_t j = (uint32_t)floor(f);
     if (j >= n_layers) j = n_layers - 1; /* t == s_N belongs to the last layer */

@@ -28,7 +28,7 @@ SWARP_API swarp_status swarp_vsm_chebyshev(const double moments[2], double t, do
         return SWARP_ERR_NON_FINITE;
     if (min_variance < 0.0) return SWARP_ERR_OUT_OF_RANGE;
     double p = sw_chebyshev(moments[0], moments[1], t, min_variance);
-    if (!sw_finite(p)) return SWARP_ERR_NON_FINITE; /* overflow of (t - mu)^2 */
+    if (!sw_finite(p)) return SWARP_ERR_NON_FINITE; /* defensive: the ratio form stays in [0, 1] */
     *out_p_max = p;
     return SWARP_OK;
 }

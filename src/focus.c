@@ -1,7 +1,19 @@
 /* Light space and focusing: the light view with light-space alignment
  * ([RHS] §3.2.1, [WS06]) and its continuous fallback near γ = 0, and the
  * focusing matrix A_fit of [RHS] (3.1). */
+#include <float.h>
+
 #include "geometry_internal.h"
+
+/* u·o for a unit u: the terms of an origin near DBL_MAX overflow although
+ * the sum may not; then it is summed at a quarter scale (exact: powers of
+ * two), and is +-inf only when |u·o| itself exceeds DBL_MAX. */
+static double sw_look_at_dot(swarp_vec3 u, swarp_vec3 o) {
+    double d = sw_dot(u, o);
+    if (sw_finite(d)) return d;
+    double q = sw_dot(u, sw_scale(o, 0.25));
+    return fabs(q) <= 0.25 * DBL_MAX ? 4.0 * q : q * INFINITY;
+}
 
 /* Right-handed look-at: the view looks down -z, +y is up_unit (already
  * perpendicular to forward_unit), origin maps to 0. */
@@ -12,11 +24,43 @@ void sw_look_at(swarp_vec3 origin, swarp_vec3 f, swarp_vec3 up, swarp_mat4* out)
     sw_set(&m, 0, 0, s.x), sw_set(&m, 0, 1, s.y), sw_set(&m, 0, 2, s.z);
     sw_set(&m, 1, 0, up.x), sw_set(&m, 1, 1, up.y), sw_set(&m, 1, 2, up.z);
     sw_set(&m, 2, 0, -f.x), sw_set(&m, 2, 1, -f.y), sw_set(&m, 2, 2, -f.z);
-    sw_set(&m, 0, 3, -sw_dot(s, origin));
-    sw_set(&m, 1, 3, -sw_dot(up, origin));
-    sw_set(&m, 2, 3, sw_dot(f, origin));
+    sw_set(&m, 0, 3, -sw_look_at_dot(s, origin));
+    sw_set(&m, 1, 3, -sw_look_at_dot(up, origin));
+    sw_set(&m, 2, 3, sw_look_at_dot(f, origin));
     sw_set(&m, 3, 3, 1.0);
     *out = m;
+}
+
+int sw_look_at_finite(const swarp_mat4* m) {
+    return sw_finite(m->m[12]) && sw_finite(m->m[13]) && sw_finite(m->m[14]);
+}
+
+/* The inverse of a rigid look-at L (rows R, translation t): R^T and -R^T t.
+ * Exact where a general inversion rounds, and defined for every finite L: a
+ * general inversion of P0 L called a point light 1e308 away singular
+ * (issue 9, hard-case sweep: swarp_setup and swarp_warp_lispsm returned the
+ * undocumented SWARP_ERR_SINGULAR). */
+void sw_rigid_inverse(const swarp_mat4* L, swarp_mat4* out) {
+    swarp_mat4 m;
+    memset(&m, 0, sizeof m);
+    for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c) sw_set(&m, r, c, sw_at(L, c, r));
+    for (int r = 0; r < 3; ++r)
+        sw_set(&m, r, 3,
+               -(sw_at(L, 0, r) * sw_at(L, 0, 3) + sw_at(L, 1, r) * sw_at(L, 1, 3) + sw_at(L, 2, r) * sw_at(L, 2, 3)));
+    sw_set(&m, 3, 3, 1.0);
+    *out = m;
+}
+/* Is m a rigid motion (rows of its 3x3 orthonormal to 1e-9, last row
+ * 0 0 0 1): a look-at of swarp_focus_light_view? */
+int sw_is_rigid(const swarp_mat4* m) {
+    if (sw_at(m, 3, 0) != 0.0 || sw_at(m, 3, 1) != 0.0 || sw_at(m, 3, 2) != 0.0 || sw_at(m, 3, 3) != 1.0) return 0;
+    for (int a = 0; a < 3; ++a)
+        for (int b = a; b < 3; ++b) {
+            double d = sw_at(m, a, 0) * sw_at(m, b, 0) + sw_at(m, a, 1) * sw_at(m, b, 1) + sw_at(m, a, 2) * sw_at(m, b, 2);
+            if (!(fabs(d - (a == b)) <= 1e-9)) return 0;
+        }
+    return 1;
 }
 
 /* The aligned up vector: normalize(v_perp + w(sin γ) r_perp), see the
@@ -48,7 +92,13 @@ swarp_status sw_light_view(const swarp_camera* cam, swarp_vec3 origin, swarp_vec
     swarp_vec3 a = {0, 0, -1}, up = {0, 1, 0};
     if (!sw_gnormalize(forward, &a)) return SWARP_ERR_ZERO_VECTOR;
     int blend = sw_aligned_up(cam, a, &up);
-    sw_look_at(origin, a, up, out);
+    swarp_mat4 m;
+    sw_look_at(origin, a, up, &m);
+    /* an origin near DBL_MAX: its distance along a row (the translation)
+     * can exceed DBL_MAX; the view is not representable (issue 9, hard-case
+     * sweep: an infinite view with SWARP_OK) */
+    if (!sw_look_at_finite(&m)) return SWARP_ERR_OVERFLOW;
+    *out = m;
     return blend ? SWARP_INFO_LIGHT_PARALLEL : SWARP_OK;
 }
 

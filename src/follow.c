@@ -80,7 +80,10 @@ swarp_status sw_follow_light_view(const swarp_camera* cam, swarp_vec3 origin, sw
     } /* else: the light is exactly on the view axis, no target: keep h */
     /* exact perpendicularity for the look-at */
     if (!sw_perp_unit(h, a, &h)) return sw_light_view(cam, origin, a, out);
-    sw_look_at(origin, a, h, out);
+    swarp_mat4 m;
+    sw_look_at(origin, a, h, &m);
+    if (!sw_look_at_finite(&m)) return SWARP_ERR_OVERFLOW; /* as sw_light_view */
+    *out = m;
     return lag ? SWARP_INFO_FOLLOW_LAG : SWARP_OK;
 }
 

@@ -13,11 +13,31 @@ static inline double sw_glen(swarp_vec3 a) {
     if (s > 1e-290 && s < 1e290) return sqrt(s);
     return sw_len(a);
 }
+/* Unit vector of a; 0 (and *out untouched) for a zero or non-finite a.
+ * Outside the fast range the vector is divided by its largest component
+ * first: a subnormal a (|a| = 5e-324: 1/|a| overflows, and inf * 0 gave
+ * NaN components) and an a near DBL_MAX (|a| overflows) are valid
+ * directions (issue 9, hard-case sweep: swarp_focus_light_view returned a
+ * NaN view with SWARP_OK for the direction (5e-324, 0, 0)). */
 static inline int sw_gnormalize(swarp_vec3 a, swarp_vec3* out) {
-    double l = sw_glen(a);
-    if (!(l > 0.0) || !sw_finite(l)) return 0;
-    *out = sw_scale(a, 1.0 / l);
+    double s = a.x * a.x + a.y * a.y + a.z * a.z;
+    if (s > 1e-290 && s < 1e290) {
+        *out = sw_scale(a, 1.0 / sqrt(s));
+        return 1;
+    }
+    double m = fmax(fabs(a.x), fmax(fabs(a.y), fabs(a.z)));
+    if (!(m > 0.0) || !sw_finite(m)) return 0;
+    swarp_vec3 b = sw_v3(a.x / m, a.y / m, a.z / m); /* exact-ish: a component is ±1 */
+    *out = sw_scale(b, 1.0 / sqrt(sw_dot(b, b)));
     return 1;
+}
+/* Θ = fovy/2 for the error model and the parameters: the smallest
+ * subnormal fovy (valid, > 0) halves to 0, which they refuse as a field of
+ * view (SWARP_ERR_FOV on valid arguments, issue 9, hard-case sweep); it is
+ * kept at the smallest positive double instead. */
+static inline double sw_half_fovy(double fovy) {
+    double t = 0.5 * fovy;
+    return t > 0.0 ? t : 0x1p-1074;
 }
 static inline double sw_max(double a, double b) { return a > b ? a : b; }
 static inline double sw_min(double a, double b) { return a < b ? a : b; }
@@ -82,9 +102,17 @@ void sw_depth_range_of(const swarp_polyhedron* P, swarp_vec3 eye, swarp_vec3 f, 
 /* Light view (look-at) from origin along forward with the aligned up. */
 swarp_status sw_light_origin_axis(const swarp_camera* cam, const swarp_light* light, const swarp_vec3* axis,
                                   swarp_vec3* origin, swarp_vec3* forward);
+/* SWARP_ERR_ZERO_VECTOR, SWARP_ERR_OVERFLOW (translation beyond DBL_MAX;
+ * *out untouched on error), SWARP_INFO_LIGHT_PARALLEL, SWARP_OK */
 swarp_status sw_light_view(const swarp_camera* cam, swarp_vec3 origin, swarp_vec3 forward,
                            swarp_mat4* out);
 void sw_look_at(swarp_vec3 origin, swarp_vec3 forward_unit, swarp_vec3 up_unit, swarp_mat4* out);
+/* the look-at's translation is finite (an origin near DBL_MAX can overflow
+ * it: SWARP_ERR_OVERFLOW) */
+int sw_look_at_finite(const swarp_mat4* m);
+/* the inverse of a rigid look-at (transpose, -R^T t), and the rigidity test */
+void sw_rigid_inverse(const swarp_mat4* L, swarp_mat4* out);
+int sw_is_rigid(const swarp_mat4* m);
 /* fit without checks; returns status (OK, INFO_FLAT_EXTENT, ERR_DEGENERATE) */
 swarp_status sw_focus_fit(const swarp_mat4* m, const swarp_vec3* pts, size_t n,
                           const swarp_vec3* zpts, size_t zn, swarp_depth_range dr,

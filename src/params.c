@@ -52,6 +52,22 @@ static double sw_mul_div(double a, double b, double c) {
 
 /* ---- [RHS] (3.2) and (4.2) --------------------------------------------- */
 
+/* sw_nopt_core for z_0 < 2^-900 z_1, all in mantissa/exponent form (sw_xd):
+ * there z_0 4^-k is subnormal or nearly, n_p (z_1 - z_0) 4^-k underflows for
+ * subnormal n_p, and z_0 + sqrt(.) sqrt(.) is no longer dominated by normal
+ * numbers (n_opt of z_0 = 5e-324, n_p = 5e-324 was 8% off).  The pseudo-far
+ * depth is written z_0 + (1 - f_p) dz, equal to z_1 - f_p dz in exact
+ * arithmetic, without its cancellation for f_p near 1 (1 - f_p is exact for
+ * f_p >= 1/2).  Off the hot path: only extreme depth ratios get here. */
+static swarp_status sw_nopt_tiny_near(double d, double z_0, double dz, double n_p, double f_p,
+                                      double* out_n_opt) {
+    sw_xd z0 = sw_xd_of(z_0), dzx = sw_xd_of(dz);
+    sw_xd rn = sw_xd_sqrt(sw_xd_add(z0, sw_xd_mul(sw_xd_of(n_p), dzx)));
+    sw_xd rf = sw_xd_sqrt(sw_xd_add(z0, sw_xd_mul(sw_xd_of(1.0 - f_p), dzx)));
+    sw_xd ratio = sw_xd_div(sw_xd_add(z0, sw_xd_mul(rn, rf)), dzx);
+    return sw_put_warp(sw_xd_get(sw_xd_mul(sw_xd_of(d), ratio)), SWARP_OK, out_n_opt);
+}
+
 /* (3.2) rewritten without the cancellation in sqrt(z_1/z_0) - 1:
  *   d / (sqrt(z_1/z_0) - 1) = d sqrt(z_0) / (sqrt(z_1) - sqrt(z_0))
  *                           = d (z_0 + sqrt(z_0 z_1)) / (z_1 - z_0),
@@ -75,6 +91,7 @@ static swarp_status sw_nopt_core(double d, double z_0, double z_1, double n_p, d
     double dz_s = (dz * sh) * sh; /* dz >= ulp(z_1): normal after scaling */
     /* pseudo-near and pseudo-far as scaled eye-space depths */
     double z_0s = (z_0 * sh) * sh, z_1s = (z_1 * sh) * sh;
+    if (z_0s < 0x1p-900) return sw_nopt_tiny_near(d, z_0, dz, n_p, f_p, out_n_opt);
     double rn = n_p == 0.0 ? sqrt(z_0) * sh : sqrt(z_0s + n_p * dz_s);
     double rf = f_p == 0.0 ? sqrt(z_1) * sh : sqrt(z_1s - f_p * dz_s);
     double ratio = (z_0s + rn * rf) / dz_s; /* in [~sqrt(z_0/z_1), 2^54] */
@@ -157,6 +174,19 @@ SWARP_API swarp_status swarp_warp_wlz(double gamma, double theta, double n_e, do
     double Wp_s1 = W_s * (1.0 - cos(theta - gamma));
     double Wp_s2 = W_s * sin(theta + gamma);
     double W_lz = Wp_n + Wp_s2 + (gamma <= theta ? Wp_s1 : 0.0);
+    if (!sw_finite(W_s)) {
+        /* theta within 1e-16 of pi/2 with f_e - n_e beyond ~1e292: W_s
+         * overflows while its weight sin(theta + gamma) + (1 - cos(theta -
+         * gamma)) can be ~1e-16 (gamma ~ pi/2 too), so W_lz is representable:
+         * (f_e - n_e) weight / cos(theta) with one rounding (sw_mul_div).
+         * The weight without rounding theta + gamma near pi (28% off):
+         * sin(theta + gamma) = sin(theta) cos(gamma) + cos(theta) sin(gamma),
+         * two non-negative terms, and 1 - cos(x) = 2 sin^2(x/2). */
+        double h = sin(0.5 * (theta - gamma));
+        double weight = sin(theta) * cos(gamma) + cos(theta) * sin(gamma) +
+                        (gamma <= theta ? 2.0 * h * h : 0.0);
+        W_lz = Wp_n + sw_mul_div(f_e - n_e, weight, cos(theta));
+    }
     if (!sw_finite(W_lz)) return SWARP_ERR_OVERFLOW;
     *out_W_lz = W_lz;
     return SWARP_OK;
@@ -199,8 +229,17 @@ SWARP_API swarp_status swarp_warp_nrepar(double eta, double alpha, double W_lz, 
  * written with sin/cos so theta = pi/2 (tan huge) and theta -> 0 stay exact.
  * Both cases of (2) agree at theta = phi; the code uses case 1 there.
  */
-static double sw_t_ratio(double theta, double phi) { return tan(phi) * cos(theta) / sin(theta); }
-static double sw_u_ratio(double theta, double phi) { return sin(theta) / (cos(theta) * tan(phi)); }
+/* Both are clamped to 1: at theta == phi the rounded tan, cos and sin can
+ * give 1 + 2^-52, and then (f - n) + (f + n) t overflowed even in its halved
+ * form for f = DBL_MAX (lambda_1 came out 0 instead of ~1e-157). */
+static double sw_t_ratio(double theta, double phi) {
+    double t = tan(phi) * cos(theta) / sin(theta);
+    return t > 1.0 ? 1.0 : t;
+}
+static double sw_u_ratio(double theta, double phi) {
+    double u = sin(theta) / (cos(theta) * tan(phi));
+    return u > 1.0 ? 1.0 : u;
+}
 
 /* D = f - n + (f + n) tan(phi)/tan(theta): the normalising depth of case 1. */
 static double sw_case1_D(double t, double n, double f) { return (f - n) + (f + n) * t; }
@@ -236,22 +275,23 @@ static swarp_status sw_gmnpr_args(double lambda, double theta, double phi, doubl
  * overflow at the end.  [GMNPR] (2) multiplies up to six factors (lambda^2,
  * tan, f, z) that overflow or underflow in pairs for lambda beyond 1e150
  * while psi and F stay representable. */
+static sw_xd sw_ratio_xd(const double* num, int n_num, const double* den, int n_den) {
+    sw_xd r = sw_xd_of(1.0);
+    for (int i = 0; i < n_num; ++i) r = sw_xd_mul(r, sw_xd_of(num[i]));
+    for (int i = 0; i < n_den; ++i) r = sw_xd_div(r, sw_xd_of(den[i]));
+    return r;
+}
 static double sw_ratio(const double* num, int n_num, const double* den, int n_den) {
-    double m = 1.0;
-    int e = 0, k;
-    for (int i = 0; i < n_num; ++i) {
-        m *= frexp(num[i], &k);
-        e += k;
-        m = frexp(m, &k);
-        e += k;
-    }
-    for (int i = 0; i < n_den; ++i) {
-        m /= frexp(den[i], &k);
-        e -= k;
-        m = frexp(m, &k);
-        e += k;
-    }
-    return ldexp(m, e);
+    return sw_xd_get(sw_ratio_xd(num, n_num, den, n_den));
+}
+
+/* The exponent 2k that sw_normalise_nf-like scaling by 4^-k would use to
+ * bring f into [1, 4), or 0 when that would push n into the subnormals. */
+static int sw_depth_shift(double n, double f) {
+    int e = ilogb(f);
+    int k = (e - (e & 1)) / 2; /* floor(e / 2) */
+    if (k > 0 && ldexp(n, -2 * k) < DBL_MIN) return 0;
+    return 2 * k;
 }
 
 /* Appends lambda (lambda + 1) to a list of denominators as lambda, lambda + 1
@@ -271,27 +311,40 @@ static int sw_put_ll(double lambda, double* den) {
 /* psi and offset of (2) without checks; each flag is 0 on overflow.
  * psi = 1/(tan(phi) D lambda (lambda + 1)) (case 1) or
  * 1/(2 f lambda (lambda + 1) tan(theta)) (case 2), as a ratio of factors so
- * that lambda (lambda + 1) overflowing does not make psi 0. */
+ * that lambda (lambda + 1) overflowing does not make psi 0.  psi is of degree
+ * -1 and varphi of degree 1 in (n, f): both are evaluated on depths scaled
+ * exactly by 2^-sh into [1, 4) and scaled back by 2^sh in the exponent, so
+ * subnormal depths keep their bits (D of n = 5e-324, f = 2e-317 had ~10) and
+ * varphi ~ D lambda neither overflows nor underflows in between. */
 static void sw_gmnpr_psi_offset(double lambda, double theta, double phi, double n, double f,
                                 double* psi, int* psi_ok, double* offset, int* offset_ok) {
     double p, o, den[6];
     const double one = 1.0;
+    int sh = sw_depth_shift(n, f);
+    n = ldexp(n, -sh);
+    f = ldexp(f, -sh);
     if (theta >= phi) {
         double t = sw_t_ratio(theta, phi), two;
         double Dh = sw_case1_D_half(t, n, f, &two);
         den[0] = tan(phi);
         den[1] = Dh;
         den[2] = two;
-        p = sw_ratio(&one, 1, den, 3 + sw_put_ll(lambda, den + 3));
-        o = sw_case1_D(t, n, f) * lambda + n * t - n;
+        p = sw_xd_get(sw_xd_scale(sw_ratio_xd(&one, 1, den, 3 + sw_put_ll(lambda, den + 3)), -sh));
+        /* varphi = D lambda + n t - n with D = two Dh */
+        sw_xd v = sw_xd_mul(sw_xd_mul(sw_xd_of(Dh), sw_xd_of(two)), sw_xd_of(lambda));
+        v = sw_xd_add(sw_xd_add(v, sw_xd_of(n * t)), sw_xd_of(-n));
+        o = sw_xd_get(sw_xd_scale(v, sh));
     } else {
         /* 1/(tan(phi) 2 f lambda (lambda+1) tan(theta)/tan(phi)) = 1/(2 f ll tan(theta)) */
         double u = sw_u_ratio(theta, phi);
         den[0] = 2.0;
         den[1] = f;
         den[2] = tan(theta);
-        p = sw_ratio(&one, 1, den, 3 + sw_put_ll(lambda, den + 3));
-        o = f * ((2.0 * lambda + 1.0) / u - 1.0);
+        p = sw_xd_get(sw_xd_scale(sw_ratio_xd(&one, 1, den, 3 + sw_put_ll(lambda, den + 3)), -sh));
+        /* varphi = f ((2 lambda + 1)/u - 1), 2 lambda + 1 = 2 (lambda + 1/2) */
+        sw_xd q = sw_xd_div(sw_xd_scale(sw_xd_of(lambda + 0.5), 1), sw_xd_of(u));
+        sw_xd v = sw_xd_mul(sw_xd_of(f), sw_xd_add(q, sw_xd_of(-1.0)));
+        o = sw_xd_get(sw_xd_scale(v, sh));
     }
     *psi = p;
     *psi_ok = sw_finite(p);
@@ -421,11 +474,19 @@ static double sw_lambda_1(double theta, double phi, double n, double f) {
     return (u * (n + sqrt_fn) - n) / den;
 }
 
-/* lambda_2 of [GMNPR] (4): (f + sqrt(fn))/(2f) tan(theta)/tan(phi) - 1/2. */
+/* lambda_2 of [GMNPR] (4): (f + sqrt(fn))/(2f) tan(theta)/tan(phi) - 1/2,
+ * with (f + sqrt(fn))/(2f) = (1 + r)/2, r = sqrt(n/f), written as
+ *   ((1 - t) + r) / (2 t)   (theta >= phi)  and  ((u - 1) + u r) / 2:
+ * 1 - t and u - 1 are exact near theta = phi (Sterbenz), where the old
+ * c/t - 1/2 lost r < 2^-53 entirely (lambda_2 = 0 for f = DBL_MAX). */
 static double sw_lambda_2(double theta, double phi, double n, double f) {
-    double c = 0.5 * (1.0 + sqrt(n) / sqrt(f)); /* (f + sqrt(fn)) / (2f) */
-    if (theta >= phi) return c / sw_t_ratio(theta, phi) - 0.5;
-    return c * sw_u_ratio(theta, phi) - 0.5;
+    double r = sqrt(n) / sqrt(f);
+    if (theta >= phi) {
+        double t = sw_t_ratio(theta, phi);
+        return 0.5 * (((1.0 - t) + r) / t);
+    }
+    double u = sw_u_ratio(theta, phi);
+    return 0.5 * ((u - 1.0) + u * r);
 }
 
 /* lambda_1, lambda_2, lambda_GMNPR, lambda_LiSPSM and lambda_GLPR are

@@ -197,6 +197,11 @@ static swarp_status sw_resolve(const swarp_scene_needs* needs, const swarp_budge
     if (budget->max_error < 0.0 || budget->time_budget_ns < 0.0 || budget->pass_cost_ns < 0.0 ||
         budget->blur_pass_cost_ns < 0.0 || budget->max_passes > SW_MAX_PASSES)
         return SWARP_ERR_OUT_OF_RANGE;
+    /* a cost near DBL_MAX made K x pass cost overflow to inf (found by the
+     * hard-case sweep): the documented limit keeps every cost finite */
+    if (budget->time_budget_ns > SWARP_PLAN_MAX_COST_NS || budget->pass_cost_ns > SWARP_PLAN_MAX_COST_NS ||
+        budget->blur_pass_cost_ns > SWARP_PLAN_MAX_COST_NS)
+        return SWARP_ERR_OUT_OF_RANGE;
     if (budget->map_resolution > SW_MAX_RES || budget->atlas_limit > SW_MAX_RES)
         return SWARP_ERR_RESOLUTION;
 

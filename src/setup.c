@@ -154,6 +154,17 @@ static void sw_mul_affine_b(const swarp_mat4* a, const swarp_mat4* b, swarp_mat4
     *r = t;
 }
 
+/* The map coordinates of B must be resolved by its camera-relative
+ * coordinates to this fraction of the map (the map spans 2): 1e-6, the
+ * accuracy the hard-case sweep asks of the fit (docs/quality.md).  The
+ * bound it is compared with is first order and worst case (every rounding
+ * of a coordinate adding up); a 1e-9 rad light on a 1-unit body (the warp
+ * axis stretched 1e9 times, test_geometry sweep_large_offset_parallel_light)
+ * reaches 5e-7 and maps B inside to the sweep's tolerance.  Refused are
+ * bodies whose map is finer than their coordinates relative to the eye:
+ * an eye 1e145 from a 40-unit body, a 1e-9 sliver 1e6 away. */
+#define SW_REL_RESOLVE 1e-6
+
 /* Can the world-space matrix (m · T(-eye), applied to p + eye) be evaluated
  * in double at the camera-relative points p?  Its w carries rounding of
  * about eps times the sizes of the terms summed; when that reaches w itself
@@ -163,14 +174,59 @@ static void sw_mul_affine_b(const swarp_mat4* a, const swarp_mat4* b, swarp_mat4
  * coordinates.  64 eps of margin. */
 static int sw_world_resolves(const swarp_mat4* m, const swarp_vec3* p, size_t n, swarp_vec3 eye) {
     const double ax = fabs(eye.x), ay = fabs(eye.y), az = fabs(eye.z);
+    const double m00 = sw_at(m, 0, 0), m01 = sw_at(m, 0, 1), m02 = sw_at(m, 0, 2), m03 = sw_at(m, 0, 3);
+    const double m10 = sw_at(m, 1, 0), m11 = sw_at(m, 1, 1), m12 = sw_at(m, 1, 2), m13 = sw_at(m, 1, 3);
     const double m30 = sw_at(m, 3, 0), m31 = sw_at(m, 3, 1), m32 = sw_at(m, 3, 2), m33 = sw_at(m, 3, 3);
     for (size_t i = 0; i < n; ++i) {
-        double w = m30 * p[i].x + m31 * p[i].y + m32 * p[i].z + m33;
-        double k = fabs(m30) * (fabs(p[i].x) + 2.0 * ax) + fabs(m31) * (fabs(p[i].y) + 2.0 * ay) +
-                   fabs(m32) * (fabs(p[i].z) + 2.0 * az) + fabs(m33);
+        const double px = p[i].x, py = p[i].y, pz = p[i].z;
+        double w = m30 * px + m31 * py + m32 * pz + m33;
+        double k = fabs(m30) * (fabs(px) + 2.0 * ax) + fabs(m31) * (fabs(py) + 2.0 * ay) +
+                   fabs(m32) * (fabs(pz) + 2.0 * az) + fabs(m33);
         if (!(w > 64.0 * DBL_EPSILON * k)) return 0;
+        /* The camera-relative points carry rounding of eps |p_j| (p = world
+         * point - eye, src: sw_rel_camera), and so does every light-space
+         * value computed from them.  Moved by that, the point's map
+         * coordinate x = X/w moves by eps sum_j |m_xj - x m_wj| |p_j| / w.
+         * Beyond SW_REL_RESOLVE of the map (half its width is 1) the map is
+         * finer than the coordinates resolve B: an eye 1e145 from a 40-unit
+         * body (its points all equal relative to the eye) was "mapped" to
+         * x = 1e4 with SWARP_OK (issue 9, hard-case sweep, setup_points). */
+        double x = (m00 * px + m01 * py + m02 * pz + m03) / w, y = (m10 * px + m11 * py + m12 * pz + m13) / w;
+        double cx = fabs(m00 - x * m30) * fabs(px) + fabs(m01 - x * m31) * fabs(py) + fabs(m02 - x * m32) * fabs(pz);
+        double cy = fabs(m10 - y * m30) * fabs(px) + fabs(m11 - y * m31) * fabs(py) + fabs(m12 - y * m32) * fabs(pz);
+        if (!(DBL_EPSILON * fmax(cx, cy) <= SW_REL_RESOLVE * w)) return 0;
     }
     return 1;
+}
+
+/* L^-1 -> (P0 L)^-1 = L^-1 P0^-1: P0 maps (x, y, z, w) to (x, y, w, -z), so
+ * P0^-1 maps (X, Y, Z, W) to (X, Y, -W, Z): the columns of L^-1 become
+ * [c0, c1, c3, -c2] (exact) */
+static void sw_p0_inverse_after(swarp_mat4* m) {
+    for (int r = 0; r < 4; ++r) {
+        double c2 = sw_at(m, r, 2), c3 = sw_at(m, r, 3);
+        sw_set(m, r, 2, c3);
+        sw_set(m, r, 3, -c2);
+    }
+}
+
+/* PSM's matrices (a post-perspective space, maybe the inverse projection:
+ * w < 0 on B is fine) get the coarse form of sw_world_resolves' test: B's
+ * extent against the rounding of its camera-relative coordinates, eps |p|.
+ * An eye at -DBL_MAX from a 1e4 body made light_proj · light_view
+ * overflow (inf - inf) though matrix was finite (hard-case sweep,
+ * setup_points, PSM). */
+static int sw_rel_resolves(const swarp_vec3* p, size_t n) {
+    double mag = 0.0, lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+    for (size_t i = 0; i < n; ++i) {
+        const double c[3] = {p[i].x, p[i].y, p[i].z};
+        for (int k = 0; k < 3; ++k) {
+            lo[k] = fmin(lo[k], c[k]), hi[k] = fmax(hi[k], c[k]);
+            mag = fmax(mag, fabs(c[k]));
+        }
+    }
+    double ext = fmax(hi[0] - lo[0], fmax(hi[1] - lo[1], hi[2] - lo[2]));
+    return DBL_EPSILON * mag <= SW_REL_RESOLVE * ext;
 }
 
 /* cam, light, B, H: camera-relative (src: sw_rel_camera); eye: the world eye */
@@ -199,6 +255,7 @@ static swarp_status sw_setup_points(const swarp_camera* cam, const swarp_light* 
     if (tech == SWARP_TECHNIQUE_PSM) {
         s = sw_psm_setup(cam, light, B, nb, B_poly, H, nh, near, far, o, fw, &res);
         if (swarp_status_is_error(s)) return s;
+        if (!sw_rel_resolves(B, nb)) return SWARP_ERR_DEGENERATE;
         info = sw_info_merge(info, s);
     } else {
         swarp_mat4 L, P0, M, M_inv;
@@ -207,6 +264,9 @@ static swarp_status sw_setup_points(const swarp_camera* cam, const swarp_light* 
             swarp_vec3 a = {0, 0, -1};
             if (!sw_point_axis(light, B, nb, &a)) return SWARP_ERR_LIGHT_INSIDE_BODY;
             s = fw ? sw_follow_light_view(cam, light->position, a, fw, &L) : sw_light_view(cam, light->position, a, &L);
+            /* a light ~DBL_MAX from the eye: B's angular size is far below
+             * what its coordinates resolve (the documented DEGENERATE) */
+            if (s == SWARP_ERR_OVERFLOW) return SWARP_ERR_DEGENERATE;
             if (swarp_status_is_error(s)) return s;
             info = sw_info_merge(info, s);
             /* every point must lie in front of the light within the widest
@@ -249,18 +309,8 @@ static swarp_status sw_setup_points(const swarp_camera* cam, const swarp_light* 
             sw_mul(&P0, &L, &M);
         else
             M = L; /* P0 = I: skip the product */
-        if (light->type == SWARP_LIGHT_POINT) {
-            if (!sw_invert(&M, &M_inv)) return SWARP_ERR_SINGULAR;
-        } else { /* a rigid look-at: the inverse is the transpose and -R^T t */
-            memset(&M_inv, 0, sizeof M_inv);
-            for (int r = 0; r < 3; ++r)
-                for (int c = 0; c < 3; ++c) sw_set(&M_inv, r, c, sw_at(&M, c, r));
-            for (int r = 0; r < 3; ++r)
-                sw_set(&M_inv, r, 3,
-                       -(sw_at(&M, 0, r) * sw_at(&M, 0, 3) + sw_at(&M, 1, r) * sw_at(&M, 1, 3) +
-                         sw_at(&M, 2, r) * sw_at(&M, 2, 3)));
-            sw_set(&M_inv, 3, 3, 1.0);
-        }
+        sw_rigid_inverse(&L, &M_inv);
+        if (light->type == SWARP_LIGHT_POINT) sw_p0_inverse_after(&M_inv);
         /* the points the map must see; point lights drop the apex region
          * (into Bk, Hk); a directional light uses B and H as they are */
         swarp_vec3 Bk[SWARP_BODY_MAX_POINTS + 1];
@@ -362,7 +412,7 @@ static swarp_status sw_setup_points(const swarp_camera* cam, const swarp_light* 
         memset(&cfg, 0, sizeof cfg);
         cfg.near = near;
         cfg.far = far;
-        cfg.theta = 0.5 * cam->fovy;
+        cfg.theta = sw_half_fovy(cam->fovy);
         cfg.res_ix = sw > sh ? sw : sh;
         cfg.res_iy = sw > sh ? sh : sw;
         cfg.res_s = mw > mh ? mw : mh;

@@ -4,6 +4,8 @@
  * [RHS] §3.5 after ZZB09. */
 #include "splits_internal.h"
 
+#include <float.h>
+
 _Static_assert(sizeof(swarp_stabilize_options) == 8 + 4 * sizeof(double) + 8 + 16,
                "swarp_stabilize_options size");
 _Static_assert(sizeof(swarp_stabilize_report) == 10 * sizeof(double) + 8 + 16,
@@ -36,9 +38,15 @@ static void sw_min_sphere(const sw_cam_frame* fr, double n, double f, swarp_vec3
     double z0 = f - d_far;
     *c = sw_add(fr->eye, sw_scale(fr->f, z0));
     *r = hypot(d_far, fk);
+    /* f > n, so the exact radius is > 0; for n, f a few subnormal ulps
+     * apart it is below half the smallest subnormal and rounded to 0 (found
+     * by the hard-case sweep): a point, not an enclosing sphere.  Rounded up
+     * instead, to the smallest positive double. */
+    if (!(*r > 0.0)) *r = DBL_TRUE_MIN;
     /* Centroid of the 8 corners is on the axis at (n + f)/2; the far
-     * corners are the farther ones. */
-    if (r_centroid) *r_centroid = hypot(0.5 * (f - n), fk);
+     * corners are the farther ones.  Never below the minimal radius (it is
+     * not, exactly; the rounding-up above may be). */
+    if (r_centroid) *r_centroid = fmax(hypot(0.5 * (f - n), fk), *r);
 }
 
 /* The camera's frame, then the split range [n, f] checked (in that order). */

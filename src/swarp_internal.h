@@ -13,6 +13,59 @@
 
 #define SWARP_PI 3.14159265358979323846
 
+/* ---- extended exponent ------------------------------------------------- */
+/* x = m 2^e with |m| in [0.5, 1) (or m = 0): a double with an int exponent,
+ * for products and quotients whose factors span more than the double range
+ * (extreme inputs beyond 1e+-100, docs/quality.md) while the result is
+ * representable.  Each operation rounds the mantissa once, like a double;
+ * sw_xd_get rounds once more into the subnormal range or to +-inf. */
+typedef struct sw_xd {
+    double m;
+    int e;
+} sw_xd;
+
+static inline sw_xd sw_xd_of(double x) {
+    sw_xd r;
+    r.m = frexp(x, &r.e);
+    return r;
+}
+static inline sw_xd sw_xd_norm(double m, int e) {
+    int k;
+    sw_xd r;
+    r.m = frexp(m, &k);
+    r.e = r.m == 0.0 ? 0 : e + k;
+    return r;
+}
+static inline double sw_xd_get(sw_xd a) { return ldexp(a.m, a.e); }
+static inline sw_xd sw_xd_mul(sw_xd a, sw_xd b) { return sw_xd_norm(a.m * b.m, a.e + b.e); }
+static inline sw_xd sw_xd_div(sw_xd a, sw_xd b) { return sw_xd_norm(a.m / b.m, a.e - b.e); }
+static inline sw_xd sw_xd_scale(sw_xd a, int k) { return sw_xd_norm(a.m, a.e + k); }
+/* a + b: the smaller is aligned to the larger's exponent (beyond 2^-110 it
+ * cannot change the rounded sum). */
+static inline sw_xd sw_xd_add(sw_xd a, sw_xd b) {
+    if (b.m == 0.0) return a;
+    if (a.m == 0.0) return b;
+    if (a.e < b.e) {
+        sw_xd t = a;
+        a = b;
+        b = t;
+    }
+    int d = a.e - b.e;
+    if (d > 110) return a;
+    return sw_xd_norm(a.m + ldexp(b.m, -d), a.e);
+}
+/* sqrt(a) for a >= 0: the exponent made even first, so sqrt(m) is one rounding. */
+static inline sw_xd sw_xd_sqrt(sw_xd a) {
+    if (a.m == 0.0) return a;
+    double m = a.m;
+    int e = a.e;
+    if (e & 1) {
+        m *= 2.0;
+        e -= 1;
+    }
+    return sw_xd_norm(sqrt(m), e / 2);
+}
+
 /* ---- checks ------------------------------------------------------------ */
 static inline int sw_finite(double x) { return isfinite(x) != 0; }
 static inline int sw_finite3(const swarp_vec3* v) {

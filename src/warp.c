@@ -16,6 +16,8 @@
  * (orthographic) map exactly at ε = 0: the warp fades continuously as
  * n -> inf.  The map's coordinates are (x'/w, y'/w), its depth z'/w; a light
  * ray (fixed x, y) keeps its w, so depth order along it is kept. */
+#include <float.h>
+
 #include "geometry_internal.h"
 
 /* An extent of B along the warp axis below this fraction of B's light-space
@@ -89,7 +91,10 @@ static swarp_status sw_warp_n(const swarp_warp_options* o, double d, double z0, 
             s = swarp_warp_eta(g, theta, &eta);
             if (swarp_status_is_error(s)) return s;
             if (!(z1 > z0) || eta <= -1.0) break;
-            s = swarp_warp_nrepar(eta, z1 / z0, d, &n);
+            /* α = z_1/z_0 overflows for a z_0 near DBL_MIN (near = 2e-308):
+             * the largest double is the same limit for (3.4) (issue 9,
+             * hard-case sweep: NON_FINITE for valid arguments) */
+            s = swarp_warp_nrepar(eta, fmin(z1 / z0, DBL_MAX), d, &n);
             if (swarp_status_is_error(s)) return s;
             break;
         }
@@ -134,7 +139,10 @@ SWARP_API swarp_status swarp_warp_lispsm(const swarp_mat4* light_view, const swa
     if (nearest && !sw_finite3(nearest)) return SWARP_ERR_NON_FINITE;
     swarp_mat4 P, L_inv;
     swarp_warp_info info;
-    if (!sw_invert(light_view, &L_inv)) return SWARP_ERR_SINGULAR;
+    /* a look-at (swarp_focus_light_view's): its exact rigid inverse; a
+     * general inversion called light views 1e300 from the origin singular */
+    if (sw_is_rigid(light_view)) sw_rigid_inverse(light_view, &L_inv);
+    else if (!sw_invert(light_view, &L_inv)) return SWARP_ERR_SINGULAR;
     for (size_t i = 0; i < count; ++i) {
         swarp_vec4 h = sw_xform_point(light_view, points[i]);
         if (!(h.w > 0.0)) return SWARP_ERR_DEGENERATE;
@@ -209,7 +217,7 @@ swarp_status sw_warp_lispsm(const swarp_mat4* M, const swarp_mat4* M_inv, const 
     double z1 = sw_eye_depth(M_inv, cam, v, c_ls.x, ymax, c_ls.z);
     if (!sw_finite(z0) || !sw_finite(z1)) z0 = z1 = near; /* axis leaves the light's space: uniform */
     z0 = fmax(z0, near);
-    double theta = 0.5 * cam->fovy;
+    double theta = sw_half_fovy(cam->fovy);
     double n_light = INFINITY;
     swarp_status st = SWARP_OK;
     if (d > 0.0) {
@@ -226,6 +234,12 @@ swarp_status sw_warp_lispsm(const swarp_mat4* M, const swarp_mat4* M_inv, const 
     /* n' in eye units must exist too (far - near of 1e300: it overflows) */
     if (eps != 0.0 && !sw_finite(n_light * (far - near) / d)) return SWARP_ERR_DEGENERATE;
     swarp_mat4 P;
+    /* The centre's lateral position only matters for a perspective warp:
+     * uniform (eps = 0), the x, z translations are A_fit's business, and
+     * C_start itself may be meaningless there (a point light whose plane
+     * through the light holds s: x/D = 1e17 swamped B's x in the map,
+     * hard-case sweep, setup_points case 56085) */
+    if (eps == 0.0) c_ls.x = c_ls.z = 0.0;
     sw_warp_matrix(eps, ymin, d > 0.0 ? d : 1.0, c_ls.x, c_ls.z, &P);
     if (!sw_mat_finite(&P)) return SWARP_ERR_DEGENERATE;
     *out_P = P;

@@ -472,6 +472,113 @@ START_TEST(error_tiny_resolution_no_spurious_underflow) {
 }
 END_TEST
 
+/* ---- paramfix pass (issue 9, sweep findings at 10^6) -------------------- */
+
+/* theta == phi with f = DBL_MAX (hard_cases swarp_gmnpr_lambda12 seed 7 case
+ * 28753, swarp_gmnpr_lambda case 679648): the rounded tan/cos/sin gave
+ * t = 1 + 2^-52, the halved depth overflowed and lambda_1 came out 0;
+ * lambda_2 = r/2 with r = sqrt(n/f) < 2^-53 was lost to c - 1/2.  At t = 1
+ * both are sqrt(n/f)/2 exactly. */
+START_TEST(gmnpr_lambda_theta_eq_phi_huge_far) {
+    const double cases[][2] = {{0.01, 1.7023779630233584e-05},
+                               {0.50344839343569725, 0.00069428559076514925},
+                               {1.1596109125728185, 1.0000000000000002e-06},
+                               {1.5414340003159084, 1.1341023648905051e-05}};
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; ++i) {
+        double th = cases[i][0], n = cases[i][1], f = DBL_MAX;
+        long double ref = 0.5L * sqrtl((long double)n) / sqrtl((long double)f);
+        double l1 = SENTINEL, l2 = SENTINEL, l = SENTINEL, ll = SENTINEL;
+        ck_assert_int_eq(swarp_gmnpr_lambda12(th, th, n, f, &l1, &l2), SWARP_OK);
+        ck_assert_int_eq(swarp_gmnpr_lambda(th, th, n, f, &l), SWARP_OK);
+        ck_assert_int_eq(swarp_gmnpr_lambda_lispsm(th, th, n, f, &ll), SWARP_OK);
+        ck_assert_msg(fabsl(l1 - ref) <= 1e-14L * ref, "lambda_1 %g vs %Lg", l1, ref);
+        ck_assert_msg(fabsl(l2 - ref) <= 1e-14L * ref, "lambda_2 %g vs %Lg", l2, ref);
+        ck_assert_msg(fabsl(l - ref) <= 1e-14L * ref, "lambda %g vs %Lg", l, ref);
+        ck_assert_msg(ll > 0.0 && ll < 1e-100, "lambda_LiSPSM %g", ll);
+    }
+}
+END_TEST
+
+/* psi and varphi of [GMNPR] (2) at subnormal depths (hard_cases
+ * swarp_gmnpr_psi case 190150, swarp_gmnpr_offset case 292871, default
+ * seed): D = f - n + (f + n) t was formed from subnormals with a few bits;
+ * psi (degree -1) and varphi (degree 1) are now evaluated on depths scaled
+ * into [1, 4).  Case 1 of (2), reference in long double. */
+static long double ref_case1_D(double theta, double phi, double n, double f, long double* t) {
+    *t = tanl(phi) / tanl(theta);
+    return ((long double)f - n) + ((long double)f + n) * *t;
+}
+START_TEST(gmnpr_psi_offset_subnormal_depths) {
+    REQUIRE_WIDE_LONG_DOUBLE();
+    {
+        double lambda = 999999999.99899995, th = 1.3007923168931095, ph = 0.15899265989773426;
+        double n = 4.9406564584124654e-324, f = 8.3991159793011913e-323, psi = SENTINEL;
+        long double t, D = ref_case1_D(th, ph, n, f, &t);
+        long double ref = 1.0L / (tanl(ph) * D * lambda * ((long double)lambda + 1.0L));
+        ck_assert_int_eq(swarp_gmnpr_psi(lambda, th, ph, n, f, &psi), SWARP_OK);
+        ck_assert_msg(fabsl(psi - ref) <= 1e-13L * ref, "psi %g vs %Lg", psi, ref);
+    }
+    {
+        double lambda = 1.9467611181654738e+105, th = 1.1257702121125834, ph = 0.11637911357491466;
+        double n = 4.9406564584124654e-324, f = 1.1645127272478181e-319, off = SENTINEL;
+        long double t, D = ref_case1_D(th, ph, n, f, &t);
+        long double ref = D * lambda + n * t - n;
+        ck_assert_int_eq(swarp_gmnpr_offset(lambda, th, ph, n, f, &off), SWARP_OK);
+        ck_assert_msg(fabsl(off - ref) <= 1e-13L * ref, "offset %g vs %Lg", off, ref);
+    }
+}
+END_TEST
+
+/* [RHS] (4.2) with a subnormal near depth and pseudo-near (hard_cases
+ * swarp_warp_nopt_pseudo case 39311 default seed, 25654 and 43815 seed 7):
+ * z_0 4^-k and n_p (z_1 - z_0) 4^-k underflowed, n_opt was up to 16% off. */
+START_TEST(nopt_pseudo_subnormal_near) {
+    REQUIRE_WIDE_LONG_DOUBLE();
+    const double cases[][5] = {
+        {1093.3471348809717, 4.9406564584124654e-324, 9808211.9071743283, 4.9406564584124654e-324,
+         0.61457263166602416},
+        {9999.9999999999982, 4.9406564584124654e-324, 5955096.6976366295, 4.9406564584124654e-324,
+         0.68350289016082955},
+        {39.535494428061021, 4.9406564584124654e-324, 0.012631233181843886, 4.9406564584124654e-324,
+         0.54391003549150718},
+        {3527.7245569144916, 2.2250738585072009e-308, 2589249.6732360446, 4.9406564584124654e-324,
+         0.52381102761587361}};
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; ++i) {
+        const double* a = cases[i];
+        long double dz = (long double)a[2] - a[1];
+        long double ref = (long double)a[0] / dz *
+                          (a[1] + sqrtl((a[1] + a[3] * dz) * ((long double)a[2] - a[4] * dz)));
+        double n = SENTINEL;
+        ck_assert_int_eq(swarp_warp_nopt_pseudo(a[0], a[1], a[2], a[3], a[4], &n), SWARP_OK);
+        ck_assert_msg(fabsl(n - ref) <= 1e-13L * ref, "case %zu: n_opt %.17g vs %.17Lg", i, n, ref);
+    }
+}
+END_TEST
+
+/* [RHS] (3.5) with theta and gamma within 1e-12 of pi/2 and f_e beyond
+ * 1e292 (hard_cases swarp_warp_wlz case 422843 default seed, 385998 seed 7):
+ * W_s = (f_e - n_e)/cos(theta) overflows but its weight sin(theta + gamma)
+ * is ~1e-12, so W_lz ~ 1e300 fits; it was SWARP_ERR_OVERFLOW.  The weight
+ * is formed without rounding theta + gamma near pi (that alone was 28% off
+ * in the second case). */
+START_TEST(wlz_side_face_overflow) {
+    REQUIRE_WIDE_LONG_DOUBLE();
+    const double cases[][5] = {
+        {1.5707963267948966, 1.5707963267933258, 1.5592589912618021e-05, 1.3133597697636303e+300,
+         0.24826051966515786},
+        {1.5707963267948961, 1.5707963267948963, 3.2926388120750315e+294, 2.5527408468792104e+298,
+         694594.81425827008}};
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; ++i) {
+        const double* a = cases[i];
+        long double g = a[0], th = a[1], Ws = ((long double)a[3] - a[2]) / cosl(th);
+        long double ref = a[4] * cosl(g) + Ws * sinl(th + g) + (g <= th ? Ws * (1.0L - cosl(th - g)) : 0.0L);
+        double w = SENTINEL;
+        ck_assert_int_eq(swarp_warp_wlz(a[0], a[1], a[2], a[3], a[4], &w), SWARP_OK);
+        ck_assert_msg(isfinite(w) && fabsl(w - ref) <= 1e-13L * ref, "case %zu: W_lz %g vs %Lg", i, w, ref);
+    }
+}
+END_TEST
+
 int main(void) {
     Suite* s = suite_create("edges_core");
     TCase* t = tcase_create("mat4_invert");
@@ -489,6 +596,13 @@ int main(void) {
     tcase_add_test(t, glpr_lambda_below_true_min);
     tcase_add_test(t, split_schemes_huge_ratio);
     tcase_add_test(t, error_tiny_resolution_no_spurious_underflow);
+    suite_add_tcase(s, t);
+    /* paramfix pass */
+    t = tcase_create("paramfix");
+    tcase_add_test(t, gmnpr_lambda_theta_eq_phi_huge_far);
+    tcase_add_test(t, gmnpr_psi_offset_subnormal_depths);
+    tcase_add_test(t, nopt_pseudo_subnormal_near);
+    tcase_add_test(t, wlz_side_face_overflow);
     suite_add_tcase(s, t);
     return tu_run_suite(s) ? 1 : 0;
 }

@@ -174,11 +174,57 @@ START_TEST(mindepth_edges) {
 }
 END_TEST
 
+/* ---- planfix pass: regressions from the hard-case sweep (issue 9) ---- */
+
+/* hard_cases --entry swarp_cube_lookup --case 1224: V.x = DBL_MAX made
+ * a = (u . N)/d overflow to inf, u/a = 0 and S = P (S.x = 0.85, off the
+ * cube; 378 such findings at 10^6).  The exit face is +x: S.x = 1. */
+START_TEST(planfix_cube_lookup_huge_point) {
+    const swarp_vec4 L = {0x1.b1ed320f5bd18p-1, -0x1.57d598e777458p-1, 0x1.a04a543f83298p-1, 1.0};
+    const swarp_vec3 V = {DBL_MAX, -1.5, 0x1.3b5b5c3b38864p+0};
+    uint32_t face = 99;
+    swarp_vec3 S;
+    double depth;
+    ck_assert_int_eq(swarp_cube_lookup(&L, NULL, &V, &face, &S, &depth), SWARP_OK);
+    ck_assert_uint_eq(face, 0);
+    ck_assert(fabs(S.x - 1.0) < 1e-12);
+    /* S = P + u/a with a = u.x/d_0 = DBL_MAX/(1 - P.x) to rounding */
+    const double a = (DBL_MAX - L.x) / (1.0 - L.x);
+    ck_assert(tu_rel(S.y, L.y + (-1.5 - L.y) / a) < 1e-12 && tu_rel(S.z, L.z + (V.z - L.z) / a) < 1e-12);
+}
+END_TEST
+
+/* hard_cases --entry swarp_cube_lookup --case 485954: the same with the
+ * exit face decided by a small component (u.x = 1e-9 beside u.y = DBL_MAX):
+ * scaling u all the way to [1, 2) would make u.x subnormal (S.y 2e-7 off).
+ * A guard on the scaling threshold of the fix above (the code before it
+ * passed this one: no scaling, no overflow here). */
+START_TEST(planfix_cube_lookup_huge_and_small_components) {
+    const swarp_vec4 L = {0x1.01820f73113bdp+0, 0x1.9e53434cb75dfp+0, -0x1.c81789dcf401p-1, 0x1.01820f776338ep+0};
+    const swarp_vec3 V = {0x1.0000000001198p+0, DBL_MAX, 0x1.12e0be826d695p-30};
+    uint32_t face = 99;
+    swarp_vec3 S;
+    ck_assert_int_eq(swarp_cube_lookup(&L, NULL, &V, &face, &S, NULL), SWARP_OK);
+    ck_assert_uint_eq(face, 0);
+    /* long double reference (its exponent range holds u.y / a) */
+    const long double Py = (long double)L.y / L.w;
+    const long double d0 = 1.0L - (double)(L.x / L.w); /* the library's d_0, from the double P.x */
+    const long double a = ((long double)V.x - (double)(L.x / L.w)) / d0;
+    ck_assert(fabsl(S.x - 1.0L) < 1e-9L);
+    ck_assert_msg(fabsl((S.y - (Py + ((long double)V.y - Py) / a)) / S.y) < 1e-12L, "S.y %.17g", S.y);
+}
+END_TEST
+
 int main(void) {
     Suite* s = suite_create("edges_extras");
     TCase* t = tcase_create("extras");
     tcase_add_test(t, cube_edges);
     tcase_add_test(t, mindepth_edges);
+    suite_add_tcase(s, t);
+    /* planfix pass */
+    t = tcase_create("planfix");
+    tcase_add_test(t, planfix_cube_lookup_huge_point);
+    tcase_add_test(t, planfix_cube_lookup_huge_and_small_components);
     suite_add_tcase(s, t);
     return tu_run_suite(s) ? 1 : 0;
 }

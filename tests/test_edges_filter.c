@@ -6,6 +6,7 @@
 #include <float.h>
 #include <math.h>
 #include <stdint.h>
+#include <stdio.h>
 #include <string.h>
 
 #include "shadowwarp.h"
@@ -143,6 +144,90 @@ START_TEST(lvsm_visibility_huge_variance_floor) {
 }
 END_TEST
 
+/* ---- paramfix pass (issue 9, sweep findings at 10^6) -------------------- */
+
+/* The references use long double for its 15-bit exponent (d^2 ~ 1e308,
+ * DBL_MAX k^2); valgrind emulates it with doubles, so there the tests skip
+ * (saying so), as in test_edges_core.c.  The -Werror and sanitizer runs check. */
+static int long_double_is_wide(void) {
+    volatile long double one = 1.0L, eps = LDBL_EPSILON, tiny = DBL_MIN;
+    return one + eps != one && tiny * tiny > 0.0L;
+}
+#define REQUIRE_WIDE_LONG_DOUBLE()                                                              \
+    do {                                                                                       \
+        if (!long_double_is_wide()) {                                                          \
+            fprintf(stderr, "%s: skipped, long double is not wider than double here\n", __func__); \
+            return;                                                                            \
+        }                                                                                      \
+    } while (0)
+
+/* [VSM] (3.3) in long double, floor mv k^2 */
+static long double ref_cheb(long double m1, long double m2, long double t, long double mv, long double k) {
+    if (t <= m1) return 1.0L;
+    long double s2 = m2 - m1 * m1, fl = mv * k * k, d = t - m1;
+    if (s2 < fl) s2 = fl;
+    return s2 / (s2 + d * d);
+}
+
+/* (t - mu)^2 beyond DBL_MAX with sigma^2 ~ DBL_MAX, or the floor ~ DBL_MAX
+ * (hard_cases swarp_vsm_chebyshev cases 904227, 660236, 859006, default
+ * seed): sigma2 + d^2 overflowed and p_max came out 0 instead of 0.18 or 1. */
+START_TEST(vsm_chebyshev_ratio_form) {
+    REQUIRE_WIDE_LONG_DOUBLE();
+    const double cases[][4] = {{0.17778446959859262, 1.7976931348623157e+308, 2.9055173683535986e+154,
+                                3.0541408616713719e-05},
+                               {0.6186983591797961, 0.38278765965177197, 5.7052227388860677e+150,
+                                1.7976931348623157e+308},
+                               {0.65672575210955919, 1.7976931348623157e+308, 1.1153642188584194e+150, 0.0}};
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; ++i) {
+        const double* a = cases[i];
+        double p = SENTINEL;
+        ck_assert_int_eq(swarp_vsm_chebyshev(a, a[2], a[3], &p), SWARP_OK);
+        long double ref = ref_cheb(a[0], a[1], a[2], a[3], 1.0L);
+        ck_assert_msg(fabsl(p - ref) <= 1e-14L, "case %zu: p_max %.17g vs %.17Lg", i, p, ref);
+    }
+}
+END_TEST
+
+/* EVSM with min_variance = DBL_MAX (hard_cases swarp_evsm_visibility case
+ * 29946, default seed): the floor min_variance (c e^{c t})^2 overflowed to
+ * Inf, Inf/Inf = NaN was refused as SWARP_ERR_NON_FINITE; the bound is ~1. */
+START_TEST(evsm_visibility_huge_floor) {
+    REQUIRE_WIDE_LONG_DOUBLE();
+    const double M[4] = {1, 1, -1, 1}, t = 0.027107479101624476, cp = 4.5366975434941672,
+                 cn = 30.967730069323352;
+    double v = SENTINEL;
+    ck_assert_int_eq(swarp_evsm_visibility(M, t, cp, cn, DBL_MAX, &v), SWARP_OK);
+    long double wp = expl(cp * (long double)t), wn = -expl(-cn * (long double)t);
+    long double rp = ref_cheb(M[0], M[1], wp, DBL_MAX, cp * wp);
+    long double rn = ref_cheb(M[2], M[3], wn, DBL_MAX, cn * wn);
+    long double ref = rp < rn ? rp : rn;
+    ck_assert_msg(fabsl(v - ref) <= 1e-14L, "visibility %.17g vs %.17Lg", v, ref);
+}
+END_TEST
+
+/* Uniform LVSM layers of a subnormal depth range (hard_cases
+ * swarp_lvsm_layer_uniform cases 196417 and 328273, default seed): the width
+ * h = (s_N - s_0)/N was 0 and t = s_0 landed in layer 1.  The range is now
+ * scaled by a power of two first (exact), so splits are where they belong. */
+START_TEST(lvsm_layer_uniform_subnormal_range) {
+    uint32_t L = 99;
+    ck_assert_int_eq(swarp_lvsm_layer_uniform(0.0, 0.0, DBL_TRUE_MIN, 3, &L), SWARP_OK);
+    ck_assert_uint_eq(L, 0);
+    ck_assert_int_eq(swarp_lvsm_layer_uniform(-0.0, -0.0, DBL_TRUE_MIN, 46, &L), SWARP_OK);
+    ck_assert_uint_eq(L, 0);
+    ck_assert_int_eq(swarp_lvsm_layer_uniform(DBL_TRUE_MIN, 0.0, DBL_TRUE_MIN, 3, &L), SWARP_OK);
+    ck_assert_uint_eq(L, 2);
+    /* s_j = j DBL_TRUE_MIN: a depth on a split belongs to the layer above */
+    for (uint32_t j = 0; j < 4; ++j) {
+        ck_assert_int_eq(swarp_lvsm_layer_uniform(j * DBL_TRUE_MIN, 0.0, 4 * DBL_TRUE_MIN, 4, &L), SWARP_OK);
+        ck_assert_uint_eq(L, j);
+    }
+    ck_assert_int_eq(swarp_lvsm_layer_uniform(3 * DBL_TRUE_MIN, DBL_TRUE_MIN, 5 * DBL_TRUE_MIN, 8, &L), SWARP_OK);
+    ck_assert_uint_eq(L, 4);
+}
+END_TEST
+
 int main(void) {
     Suite* s = suite_create("edges_filter");
     TCase* t = tcase_create("findings");
@@ -151,6 +236,12 @@ int main(void) {
     tcase_add_test(t, pcss_penumbra_extreme_scales);
     tcase_add_test(t, msm_visibility_extreme_scales);
     tcase_add_test(t, lvsm_visibility_huge_variance_floor);
+    suite_add_tcase(s, t);
+    /* paramfix pass */
+    t = tcase_create("paramfix");
+    tcase_add_test(t, vsm_chebyshev_ratio_form);
+    tcase_add_test(t, evsm_visibility_huge_floor);
+    tcase_add_test(t, lvsm_layer_uniform_subnormal_range);
     suite_add_tcase(s, t);
     return tu_run_suite(s) ? 1 : 0;
 }

@@ -478,6 +478,145 @@ START_TEST(body_points_box_to_dbl_max) {
 }
 END_TEST
 
+/* ---- setupfix pass (issue 9, hard-case sweep findings) ------------------ */
+
+static int mat_finite(const swarp_mat4* m) {
+    for (int i = 0; i < 16; ++i)
+        if (!isfinite(m->m[i])) return 0;
+    return 1;
+}
+
+/* A subnormal light direction is a valid direction: the view was NaN with
+ * SWARP_OK (1/|a| overflowed in the normalisation, inf * 0). */
+START_TEST(sf_focus_light_view_subnormal_direction) {
+    swarp_camera cam = {{1, 2, 3}, {0, 0, -1}, {0, 1, 0}, 1.0, 1.5, 1, 100, {0, 0, 0, 0}};
+    swarp_light l;
+    memset(&l, 0, sizeof l);
+    l.type = SWARP_LIGHT_DIRECTIONAL;
+    l.direction = (swarp_vec3){4.9406564584124654e-324, 0, 0};
+    swarp_mat4 V, F;
+    swarp_status st = swarp_focus_light_view(&cam, &l, NULL, &V);
+    ck_assert_msg(!swarp_status_is_error(st), "%s", swarp_status_name(st));
+    ck_assert(mat_finite(&V));
+    /* it looks along +x: row 2 (-forward) is (-1, 0, 0) */
+    ck_assert(fabs(V.m[2] + 1) < 1e-15 && fabs(V.m[6]) < 1e-15 && fabs(V.m[10]) < 1e-15);
+    /* the same through the follow twin */
+    st = swarp_focus_light_view_follow(&cam, &l, NULL, NULL, &V, &F);
+    ck_assert_msg(!swarp_status_is_error(st), "%s", swarp_status_name(st));
+    ck_assert(mat_finite(&F));
+}
+END_TEST
+
+/* An origin near DBL_MAX whose distance along the view axis exceeds
+ * DBL_MAX: an infinite view came with SWARP_OK; now SWARP_ERR_OVERFLOW and
+ * the output untouched. */
+START_TEST(sf_focus_light_view_translation_overflow) {
+    swarp_camera cam = {{0, 0, 0}, {0, 0, -1}, {0, 1, 0}, 1.0, 1.5, 1, 100, {0, 0, 0, 0}};
+    swarp_light l;
+    memset(&l, 0, sizeof l);
+    l.type = SWARP_LIGHT_POINT;
+    l.position = (swarp_vec3){-DBL_MAX, -DBL_MAX, 0};
+    swarp_vec3 axis = {1, 1, 0};
+    swarp_mat4 V, P, S;
+    memset(&V, 0xA5, sizeof V);
+    S = V;
+    ck_assert_int_eq(swarp_focus_light_view(&cam, &l, &axis, &V), SWARP_ERR_OVERFLOW);
+    ck_assert(memcmp(&V, &S, sizeof V) == 0);
+    /* the follow twin, with a valid previous view */
+    swarp_light l0 = l;
+    l0.position = (swarp_vec3){0, 10, 0};
+    ck_assert(!swarp_status_is_error(swarp_focus_light_view(&cam, &l0, &axis, &P)));
+    ck_assert_int_eq(swarp_focus_light_view_follow(&cam, &l, &axis, NULL, &P, &V), SWARP_ERR_OVERFLOW);
+    ck_assert(memcmp(&V, &S, sizeof V) == 0);
+    /* representable: an origin at DBL_MAX straight along the axis */
+    l.position = (swarp_vec3){0, 0, DBL_MAX};
+    axis = (swarp_vec3){0, 0, -1};
+    ck_assert(!swarp_status_is_error(swarp_focus_light_view(&cam, &l, &axis, &V)));
+    ck_assert(mat_finite(&V));
+}
+END_TEST
+
+/* Point light 1e300 from the scene: the general inversion of P0 L called it
+ * singular (SWARP_ERR_SINGULAR, undocumented); the rigid inverse is exact.
+ * Hard-case sweep swarp_setup case 236679 (seed default). */
+START_TEST(sf_setup_point_light_far) {
+    swarp_camera cam = {{0x1.71e732314ff46p+4, 0x1.d359e7729f874p+3, -0x1.71ce7489ccf2p+4},
+                        {-0x1.793a0395a490fp-806, -0x1.c0bf34083786ep-1, 0x1.ed0849c0029adp-2},
+                        {0x0p+0, 0x1p+0, 0x0p+0},
+                        0x1.ff704895e684cp+0,
+                        0x1.11d1e11ac3f0bp+1,
+                        0x1p+0,
+                        0x1.98878bb1bb0e8p+20,
+                        {0, 0, 0, 0}};
+    swarp_light l = {SWARP_LIGHT_POINT, 0, {-0x1.1a62633145c07p-53, 0x1.c0bf34083786ep-1, -0x1.ed0849c0029adp-2},
+                     {0x1.71e732314ff46p+4, 0x1.7e43c8800759cp+996, -0x1.6a1a5362cce79p+4}, 0x0p+0, {0, 0, 0, 0}};
+    swarp_aabb box = {{-0x0.0000000000001p-1022, -0x1.b7139c483011cp-328, -0x1.b4203ac68cfcap+4},
+                      {0x1.2d049d7653df6p+6, 0x1.2896faf258974p+4, -0x1.543ba6e46a2cap+4}};
+    swarp_setup_result r;
+    swarp_status st = swarp_setup(&cam, &l, &box, NULL, &r, NULL, 0, NULL);
+    ck_assert_msg(!swarp_status_is_error(st), "%s", swarp_status_name(st));
+    ck_assert(mat_finite(&r.matrix) && mat_finite(&r.light_view) && mat_finite(&r.light_proj));
+}
+END_TEST
+
+/* swarp_warp_lispsm with the look-at of a spot light 1e302 above: its
+ * general inversion failed (SWARP_ERR_SINGULAR, undocumented). */
+START_TEST(sf_warp_lispsm_far_light_view) {
+    swarp_camera cam = {{0, 5, 0}, {0, 0, -1}, {0, 1, 0}, 1.0, 1.5, 1, 100, {0, 0, 0, 0}};
+    swarp_light l;
+    memset(&l, 0, sizeof l);
+    l.type = SWARP_LIGHT_POINT;
+    l.position = (swarp_vec3){0, 1e302, 0};
+    l.direction = (swarp_vec3){0.1, -1, 0.2};
+    l.cone_angle = 0.5;
+    swarp_mat4 L, P;
+    ck_assert(!swarp_status_is_error(swarp_focus_light_view(&cam, &l, NULL, &L)));
+    swarp_vec3 pts[4] = {{-10, 0, -5}, {10, 0, -5}, {-20, 1, -60}, {20, 2, -60}};
+    swarp_status st = swarp_warp_lispsm(&L, &cam, 1, 100, pts, 4, NULL, NULL, &P, NULL);
+    ck_assert_msg(!swarp_status_is_error(st), "%s", swarp_status_name(st));
+    ck_assert(mat_finite(&P));
+}
+END_TEST
+
+/* An eye 1e145 from a 40-unit body: relative to the eye its points are all
+ * equal, and the map put them at x = 1e4 with SWARP_OK.  Now the documented
+ * SWARP_ERR_DEGENERATE (the map is finer than the coordinates resolve).
+ * Hard-case sweep swarp_setup_points case 9279 (seed default). */
+START_TEST(sf_setup_points_eye_far_from_body) {
+    swarp_camera cam = {{0x1.49af6d2161444p+481, 0x1.898860b8bbd58p+3, -0x1.e848p+19},
+                        {0x1.159f5e7fdada8p-1, -0x1.6ec3667adb363p-6, -0x1.ae0b6b71f612ap-1},
+                        {0x0p+0, 0x1p+0, 0x0p+0},
+                        0x1.999999999999ap-4,
+                        0x1.8p+1,
+                        0x1.79bb7e9d955a3p-7,
+                        0x1.4524706a02c5dp-3,
+                        {0, 0, 0, 0}};
+    swarp_light l = {SWARP_LIGHT_DIRECTIONAL, 0, {0x1.1765708e644aep-1, 0x1.2b5d695975ae2p-7, 0x1.ad05a0439b166p-1},
+                     {0, 0, 0}, 0, {0, 0, 0, 0}};
+    swarp_vec3 pts[2] = {{-0x1.e848fe9d2ce6ep+19, -0x1.729dbec5c4df3p+2, -0x1.e844fadc383ebp+19},
+                         {-0x1.e84d93f0e5df1p+19, 0x1.8d33911d53ba4p+1, -0x1.e845401f1608dp+19}};
+    swarp_setup_options o;
+    memset(&o, 0, sizeof o);
+    o.technique = SWARP_TECHNIQUE_UNIFORM;
+    swarp_setup_result r, s;
+    memset(&r, 0xA5, sizeof r);
+    s = r;
+    ck_assert_int_eq(swarp_setup_points(&cam, &l, pts, 2, NULL, 0, cam.near, cam.far, &o, &r), SWARP_ERR_DEGENERATE);
+    ck_assert(memcmp(&r, &s, sizeof r) == 0);
+    /* the same body seen from 100 units: mapped into the unit square */
+    cam.eye = (swarp_vec3){-1000100, 5, -1000000};
+    swarp_status st = swarp_setup_points(&cam, &l, pts, 2, NULL, 0, cam.near, cam.far, &o, &r);
+    ck_assert_msg(!swarp_status_is_error(st), "%s", swarp_status_name(st));
+    for (int i = 0; i < 2; ++i) {
+        const swarp_mat4* m = &r.matrix;
+        double w = m->m[3] * pts[i].x + m->m[7] * pts[i].y + m->m[11] * pts[i].z + m->m[15];
+        double x = (m->m[0] * pts[i].x + m->m[4] * pts[i].y + m->m[8] * pts[i].z + m->m[12]) / w;
+        double y = (m->m[1] * pts[i].x + m->m[5] * pts[i].y + m->m[9] * pts[i].z + m->m[13]) / w;
+        ck_assert_msg(fabs(x) <= 1 + 1e-6 && fabs(y) <= 1 + 1e-6, "point %d at (%g, %g)", i, x, y);
+    }
+}
+END_TEST
+
 /* bodyfix pass: B of a light all but parallel to faces of H (issue 9).
  * The side face through a silhouette edge came from the cross product of
  * the edge and u; with the edge all but parallel to u its plane tilted at
@@ -693,6 +832,142 @@ START_TEST(poly_tiny_magnitudes) {
 }
 END_TEST
 
+/* The smallest subnormal fovy is a valid field of view; halved it was 0 and
+ * the warp parameter refused it (SWARP_ERR_FOV, undocumented for a valid
+ * fovy).  Hard-case sweep swarp_setup_range case 184736 (seed default). */
+START_TEST(sf_setup_range_subnormal_fovy) {
+    swarp_camera cam = {{0x1.86c4978ef9536p+16, -0x1.7e12ad692e853p+1, 0x1.8683be8199ed1p+16},
+                        {-0x1.c6ae222b55f79p-1, 0x1.06ee28b51c309p-4, -0x1.d22cb9b34eeb2p-2},
+                        {0x0p+0, 0x1p+0, 0x0p+0},
+                        0x0.0000000000001p-1022,
+                        0x1.9c43c695bc526p+0,
+                        0x1.22d8dc3f15a5ap-14,
+                        0x1.8b97c10ffc18dp+5,
+                        {0, 0, 0, 0}};
+    swarp_light l = {SWARP_LIGHT_DIRECTIONAL, 0, {-0x1.c6ae222b55f79p-1, 0x1.06ee28b51c309p-4, -0x1.d22cb9b34eeb2p-2},
+                     {0, 0, 0}, 0, {0, 0, 0, 0}};
+    swarp_aabb box = {{0x1.869952dda13bdp+16, -0x1.7e12ad692e853p+1, 0x1.867e7b2560306p+16},
+                      {0x1.86c4978ef9536p+16, 0x1.9c6f29668f0aap+4, 0x1.869fdceae757ep+16}};
+    swarp_setup_options o;
+    memset(&o, 0, sizeof o);
+    o.param = SWARP_WARP_PARAM_NREPAR;
+    o.center = SWARP_WARP_CENTER_NEAREST_VERTEX;
+    o.pancake = 1;
+    o.depth_range = SWARP_DEPTH_ZERO_TO_ONE;
+    o.map_height = 811;
+    swarp_setup_result r;
+    swarp_status st = swarp_setup_range(&cam, &l, &box, 0x1.cfcb70fa39a15p-13, 0x1.280f1e4189b74p-1, &o, &r, NULL, 0, NULL);
+    /* a fovy of 5e-324 rad: the frustum is far narrower than its
+     * coordinates resolve, the documented DEGENERATE (or a map) */
+    ck_assert_msg(st == SWARP_ERR_DEGENERATE || !swarp_status_is_error(st), "%s", swarp_status_name(st));
+}
+END_TEST
+
+/* near = DBL_MIN: α = z_1/z_0 of [RHS] (3.4) overflowed and n_repar
+ * refused it (SWARP_ERR_NON_FINITE for valid arguments).  Hard-case sweep
+ * swarp_setup_follow case 471357 (seed default, previous NULL). */
+START_TEST(sf_setup_nrepar_near_dbl_min) {
+    swarp_camera cam = {{-0x1.1c9549fe5c6c1p+4, -0x1.f792bb36cd1f9p-1, 0x1.18d1b543d373ep+5},
+                        {0x1.a2ef07efc7027p-1, 0x1.9e45c0e4a9906p-4, -0x1.21c0d5e1e81edp-1},
+                        {0x0p+0, 0x1p+0, 0x0p+0},
+                        0x1.a6fbae82b6eefp+0,
+                        0x1.0d03d4f03839fp+1,
+                        0x1p-1022,
+                        0x1.71df582e33329p+15,
+                        {0, 0, 0, 0}};
+    swarp_light l = {SWARP_LIGHT_DIRECTIONAL, 0, {0x1.3f72c8ee79cap-2, -0x1.ffd84f5e70dbdp-1, 0x1.500aff69a3bd6p-1},
+                     {0, 0, 0}, 0, {0, 0, 0, 0}};
+    swarp_aabb box = {{-0x1.1c9549fe5c6c1p+4, -0x1.b3a9e9d4033b9p+0, -0x1.124c623a923d2p+5},
+                      {0x1.1dfc04dd52f24p+6, 0x1.69653482278b7p+3, 0x1.3e85ed0e8e98ap+5}};
+    swarp_setup_options o;
+    memset(&o, 0, sizeof o);
+    o.technique = SWARP_TECHNIQUE_LISPSM;
+    o.param = SWARP_WARP_PARAM_NREPAR;
+    o.center = SWARP_WARP_CENTER_NEAREST_VERTEX;
+    o.map_width = 697;
+    o.pancake = 1;
+    swarp_setup_result r;
+    swarp_status st = swarp_setup(&cam, &l, &box, &o, &r, NULL, 0, NULL);
+    ck_assert_msg(!swarp_status_is_error(st), "%s", swarp_status_name(st));
+    ck_assert(mat_finite(&r.matrix) && r.n_eye > 0);
+}
+END_TEST
+
+/* A spot light straight above the eye with a horizontal axis: s (on the
+ * view vector at the near depth) lies in the light's plane, its x/D = 1e17
+ * became the uniform warp's x translation and swamped B's x in the map
+ * (all points at x = 1.2).  Hard-case sweep swarp_setup_points case 56085. */
+START_TEST(sf_setup_points_uniform_warp_centre) {
+    swarp_camera cam = {{-0x1.e848247b8083p+19, 0x1.96ed5aa033d04p+2, -0x1.e84c2c75ac433p+19},
+                        {0x1.d02ea0429890ap-2, -0x1.e82c012416c1ep-4, 0x1.c446ceb05efc7p-1},
+                        {0x0p+0, 0x1p+0, 0x0p+0},
+                        0x1.d52e17ddcc899p-1,
+                        0x1.76afb27592d01p+1,
+                        0x1.9aaee41c21907p+0,
+                        0x1.90043a8556c02p+4,
+                        {0, 0, 0, 0}};
+    swarp_light l = {SWARP_LIGHT_POINT, 0, {-0x1.c785fd9e89c53p-1, -0x1.0d3e0ba095613p-57, 0x1.d383b06670932p-2},
+                     {-0x1.e848247b8083p+19, 0x1.3f4f1c1891c7fp+7, -0x1.e84c2c75ac433p+19}, 0x1.7ea6c495c137fp+0, {0, 0, 0, 0}};
+    swarp_vec3 pt[6] = {{-0x1.e848247b8083p+19, -0x1.f5f6145520c98p+0, -0x1.e848c6b2e6ccp+19},
+                        {-0x1.e848247b8083p+19, 0x1.96ed5aa033d02p+2, -0x1.e848a2c821459p+19},
+                        {-0x1.e84821da81143p+19, -0x1.f5f6145520c98p+0, -0x1.e848c80c421ffp+19},
+                        {-0x1.e8480136c66f2p+19, 0x1.96ed5aa033d02p+2, -0x1.e848b4e153dfcp+19},
+                        {-0x1.e848247b8083p+19, 0x1.96ed5aa033d02p+2, -0x1.e848f99ba2d63p+19},
+                        {-0x1.e848247b8083p+19, -0x1.f5f6145520c98p+0, -0x1.e848cd2bbb3p+19}};
+    swarp_setup_options o;
+    memset(&o, 0, sizeof o);
+    o.param = SWARP_WARP_PARAM_PSEUDO;
+    o.center = SWARP_WARP_CENTER_VIEW_VECTOR;
+    o.depth_range = SWARP_DEPTH_NEG_ONE_TO_ONE;
+    o.map_width = 6555;
+    o.pseudo_near = 0x1.664ad2a28c6f8p-2;
+    o.pseudo_far = 0x0.0000000000001p-1022;
+    swarp_setup_result r;
+    swarp_status st = swarp_setup_points(&cam, &l, pt, 6, NULL, 0, cam.near, cam.far, &o, &r);
+    ck_assert_msg(!swarp_status_is_error(st), "%s", swarp_status_name(st));
+    double xlo = INFINITY, xhi = -INFINITY;
+    for (int i = 0; i < 6; ++i) {
+        const double* m = r.matrix.m;
+        double w = m[3] * pt[i].x + m[7] * pt[i].y + m[11] * pt[i].z + m[15];
+        double x = (m[0] * pt[i].x + m[4] * pt[i].y + m[8] * pt[i].z + m[12]) / w;
+        double y = (m[1] * pt[i].x + m[5] * pt[i].y + m[9] * pt[i].z + m[13]) / w;
+        ck_assert_msg(fabs(x) <= 1 + 1e-6 && fabs(y) <= 1 + 1e-6, "point %d at (%g, %g)", i, x, y);
+        xlo = fmin(xlo, x), xhi = fmax(xhi, x);
+    }
+    ck_assert(xlo < -1 + 1e-6 && xhi > 1 - 1e-6); /* the fit is tight again */
+}
+END_TEST
+
+/* PSM with the eye 1e289 from a 50-unit body: relative to the eye the body
+ * is one point, and light_proj · light_view overflowed (inf - inf) while
+ * matrix was finite, with SWARP_INFO.  Now the documented DEGENERATE.
+ * Hard-case sweep swarp_setup_points case 742279 (seed default). */
+START_TEST(sf_setup_points_psm_eye_far_from_body) {
+    swarp_camera cam = {{0x1.aac211d559113p+959, 0x1.74fe32580155ep+1, 0x1.5d2432787951p+0},
+                        {-0x1.e6807cfbc537ep-1, -0x1.268e4e5a6a742p-2, -0x1.eb24e534fe96cp-4},
+                        {0x0p+0, 0x1p+0, 0x0p+0},
+                        0x1.3c95715169bb5p+1,
+                        0x1.3ed4427b72df2p-1,
+                        0x1.4732188490c3bp+0,
+                        0x1.00fa989f66b5ep+2,
+                        {0, 0, 0, 0}};
+    swarp_light l = {SWARP_LIGHT_DIRECTIONAL, 0, {-0x1.e6807cfab1e6ap-1, -0x1.268e4e5a6a742p-2, -0x1.eb24e5792c5ap-4},
+                     {0, 0, 0}, 0, {0, 0, 0, 0}};
+    swarp_vec3 pt[3] = {{0x1.9884397165cdcp+2, 0x1.53a5e2ab1c218p-1, -0x1.211ae2314cea2p+4},
+                        {0x1.cc86f78ba8c9cp+2, 0x1.8f9befc060f4ep+1, -0x1.b13f54738cb48p+4},
+                        {0x1.17a47874e096p-1, 0x1.55fd9c258512dp+2, 0x1.9e6558e8d9249p+4}};
+    swarp_setup_options o;
+    memset(&o, 0, sizeof o);
+    o.technique = SWARP_TECHNIQUE_PSM;
+    o.map_width = 4943;
+    swarp_setup_result r, s;
+    memset(&r, 0xA5, sizeof r);
+    s = r;
+    ck_assert_int_eq(swarp_setup_points(&cam, &l, pt, 3, NULL, 0, cam.near, cam.far, &o, &r), SWARP_ERR_DEGENERATE);
+    ck_assert(memcmp(&r, &s, sizeof r) == 0);
+}
+END_TEST
+
 int main(void) {
     Suite* s = suite_create("edges_geometry");
     TCase* t = tcase_create("geometry");
@@ -706,6 +981,16 @@ int main(void) {
     tcase_add_test(t, warp_lispsm_tiny_n);
     tcase_add_test(t, poly_from_camera_overflow);
     tcase_add_test(t, body_points_box_to_dbl_max);
+    /* setupfix pass */
+    tcase_add_test(t, sf_focus_light_view_subnormal_direction);
+    tcase_add_test(t, sf_focus_light_view_translation_overflow);
+    tcase_add_test(t, sf_setup_point_light_far);
+    tcase_add_test(t, sf_warp_lispsm_far_light_view);
+    tcase_add_test(t, sf_setup_points_eye_far_from_body);
+    tcase_add_test(t, sf_setup_range_subnormal_fovy);
+    tcase_add_test(t, sf_setup_nrepar_near_dbl_min);
+    tcase_add_test(t, sf_setup_points_uniform_warp_centre);
+    tcase_add_test(t, sf_setup_points_psm_eye_far_from_body);
     /* bodyfix pass */
     tcase_add_test(t, body_from_h_grazing);
     tcase_add_test(t, body_h_wide_frustum);

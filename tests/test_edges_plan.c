@@ -103,12 +103,57 @@ START_TEST(explain_random_values_every_mode) {
 }
 END_TEST
 
+/* ---- planfix pass: regressions from the hard-case sweep (issue 9) ---- */
+
+/* hard_cases --entry swarp_plan / swarp_plan_evaluate (e.g. case 54333): a
+ * pass cost near DBL_MAX gave cost_ns = K x pass cost = inf.  Costs above
+ * SWARP_PLAN_MAX_COST_NS are refused (documented); at the limit the cost of
+ * every chain is finite. */
+START_TEST(planfix_plan_cost_limit) {
+    const double costs[3] = {DBL_MAX, 1e300, SWARP_PLAN_MAX_COST_NS * 2};
+    for (int i = 0; i < 3; ++i) {
+        for (int field = 0; field < 3; ++field) {
+            swarp_budget b;
+            memset(&b, 0, sizeof b);
+            double* f = field == 0 ? &b.pass_cost_ns : field == 1 ? &b.blur_pass_cost_ns : &b.time_budget_ns;
+            *f = costs[i];
+            struct swarp_plan p;
+            memset(&p, 0x5a, sizeof p);
+            ck_assert_int_eq(swarp_plan(NULL, &b, &p), SWARP_ERR_OUT_OF_RANGE);
+            ck_assert_uint_eq(((const unsigned char*)&p)[0], 0x5a);
+            swarp_plan_chain ch;
+            memset(&ch, 0, sizeof ch);
+            ch.scheme = SWARP_PLAN_SCHEME_PRACTICAL, ch.split_count = 16;
+            ck_assert_int_eq(swarp_plan_evaluate(NULL, &b, &ch, &p), SWARP_ERR_OUT_OF_RANGE);
+        }
+    }
+    /* at the limit: 16 splits with soft shadows (blur passes) stay finite */
+    swarp_scene_needs n;
+    memset(&n, 0, sizeof n);
+    n.soft_shadows = 1;
+    swarp_budget b;
+    memset(&b, 0, sizeof b);
+    b.pass_cost_ns = b.blur_pass_cost_ns = b.time_budget_ns = SWARP_PLAN_MAX_COST_NS;
+    swarp_plan_chain ch;
+    memset(&ch, 0, sizeof ch);
+    ch.scheme = SWARP_PLAN_SCHEME_PRACTICAL, ch.split_count = 16;
+    struct swarp_plan p;
+    const swarp_status st = swarp_plan_evaluate(&n, &b, &ch, &p);
+    ck_assert(st == SWARP_OK || st == SWARP_INFO_PLAN_POINT_LIGHT);
+    ck_assert(isfinite(p.cost_ns) && p.cost_ns >= 16 * SWARP_PLAN_MAX_COST_NS);
+}
+END_TEST
+
 int main(void) {
     Suite* s = suite_create("edges_plan");
     TCase* t = tcase_create("explain");
     tcase_set_timeout(t, 60);
     tcase_add_test(t, explain_text_independent_of_rounding_mode);
     tcase_add_test(t, explain_random_values_every_mode);
+    suite_add_tcase(s, t);
+    /* planfix pass */
+    t = tcase_create("planfix");
+    tcase_add_test(t, planfix_plan_cost_limit);
     suite_add_tcase(s, t);
     return tu_run_suite(s) ? 1 : 0;
 }

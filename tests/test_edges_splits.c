@@ -579,8 +579,8 @@ START_TEST(cascade_select_blend_curve_edges) {
     const swarp_vec3 nan_p = {0, INFINITY, 0}, huge = {0, 0, -DBL_MAX};
     ck_assert_int_eq(swarp_cascade_view_depth(&cam, &nan_p, &d), SWARP_ERR_NON_FINITE);
     bad = cam;
-    bad.eye.z = DBL_MAX; /* p - eye overflows */
-    ck_assert_int_eq(swarp_cascade_view_depth(&bad, &huge, &d), SWARP_ERR_NON_FINITE);
+    bad.eye.z = DBL_MAX; /* the depth, 2 DBL_MAX, is not representable (documented OVERFLOW) */
+    ck_assert_int_eq(swarp_cascade_view_depth(&bad, &huge, &d), SWARP_ERR_OVERFLOW);
     ck_assert_int_eq(swarp_cascade_view_depth(NULL, &p, &d), SWARP_ERR_NULL_POINTER);
     ck_assert_int_eq(swarp_cascade_view_depth(&cam, NULL, &d), SWARP_ERR_NULL_POINTER);
     ck_assert_int_eq(swarp_cascade_view_depth(&cam, &p, NULL), SWARP_ERR_NULL_POINTER);
@@ -765,6 +765,116 @@ START_TEST(stabilize_directional_tiny_split_far_origin) {
 }
 END_TEST
 
+
+/* ---- planfix pass: regressions from the hard-case sweep (issue 9) ---- */
+static swarp_bias_map bias_map_of(const double m[16], double rs, double rt, int depth) {
+    swarp_bias_map b;
+    memset(&b, 0, sizeof b);
+    memcpy(b.world_to_clip.m, m, sizeof b.world_to_clip.m);
+    b.res_s = rs, b.res_t = rt, b.depth = (swarp_depth_range)depth;
+    return b;
+}
+
+/* hard_cases --entry swarp_bias_receiver_plane --seed 7 --case 753857: a
+ * point 7e37 from the map's origin; the tangents' texel images are exactly
+ * parallel (the harness's long double determinant is 0), but the double
+ * one came out above the 1e-12 threshold: SWARP_OK with a gradient of noise.
+ * The determinant is now compared with its rounding bound too. */
+START_TEST(planfix_receiver_plane_edge_on_far_point) {
+    const double m[16] = {0x1.ea5fc42df7421p+0, -0x1.30f0d6b387b16p-9, 0x1.e2838fd436291p-2, 0x1.e283840154e3cp-2,
+                          -0x1.8f3544dad65fcp+1, 0x1.1ca1cbd83d95fp-10, 0x1.b8d16f3188637p-1, 0x1.b8d164643778dp-1,
+                          0x1.29cbb154b003cp+3, 0x1.b9d9c7a64b8ccp-11, 0x1.884ca68e86239p-3, 0x1.884c9cf1929bp-3,
+                          -0x1.d3a3330868dc8p+20, 0x1.22cdafb56966ep+11, -0x1.cc2881eaafb65p+18, -0x1.cc2611bdda124p+18};
+    const swarp_bias_map b = bias_map_of(m, 0x1.575c6bb53e90fp+12, 0x1.6f1e98a049d2bp+3, 1);
+    const swarp_vec3 p = {0x1.011ba7f58c4fap+23, 0x1.9cdce57580045p+125, -0x1.468dad2caffd8p+21};
+    const swarp_vec3 ta = {0x1.d7c530a229fecp-2, -0x1.c1ef0782bb1c1p+818, -0x1.061824fecef64p-1};
+    const swarp_vec3 tb = {0x1.3e91e27f02dap-1, 0x1.921fb54442d18p+1, -0x1.d9a46fc44a634p-2};
+    double g[2] = {SENTINEL, SENTINEL};
+    ck_assert_int_eq(swarp_bias_receiver_plane(&b, &p, &ta, &tb, g), SWARP_ERR_DEGENERATE);
+    ck_assert(g[0] == SENTINEL && g[1] == SENTINEL);
+}
+END_TEST
+
+/* hard_cases --entry swarp_bias_receiver_plane --case 902901: res = 2^-1022
+ * made the texel derivatives subnormal and the determinant lost most of its
+ * bits (dd/ds 13% off).  The gradient per texel is exactly 2^1022 times the
+ * one at res = 1. */
+START_TEST(planfix_receiver_plane_subnormal_resolution) {
+    const double m[16] = {0x1.5f58af0757c57p-14, 0x1.5cf932bb0245ep-11, 0x1.1de838d1fc287p-24, 0,
+                          0x1.a21a5a0a7b1e5p-15, -0x1.c7c2d1c0561f6p-11, -0x1.07fb6c2f9e4cbp-21, 0,
+                          0x1.76b35eb81ed38p-16, -0x1.23c917a4ae0c7p-11, 0x1.c71362ed3d6d3p-21, 0,
+                          -0x1.3aa3a2efeb74p+6, 0x1.b41c5cb19d1c5p+6, -0x1.c8e6826cdeda3p-1, 1};
+    const swarp_vec3 p = {0x1.69031d62d506cp+19, -0x1.c2f56c9859d14p+18, 0x1.b75ec456db31cp+20};
+    const swarp_vec3 ta = {0x1.fffffffffffffp-1, 0x1.697773b0003aap-1, 0x1.7a455de9b345p-3};
+    const swarp_vec3 tb = {-0x1p+0, 0x1.7e43c8800759cp+996, 0x1.52be0472fb6cp-6};
+    const swarp_bias_map tiny = bias_map_of(m, 0x1p-1022, 0x1p-1022, 2), one = bias_map_of(m, 1, 1, 2);
+    double g[2], g1[2];
+    ck_assert_int_eq(swarp_bias_receiver_plane(&one, &p, &ta, &tb, g1), SWARP_OK);
+    ck_assert_int_eq(swarp_bias_receiver_plane(&tiny, &p, &ta, &tb, g), SWARP_OK);
+    ck_assert(tu_rel(g[0], ldexp(g1[0], 1022)) < 1e-12 && tu_rel(g[1], ldexp(g1[1], 1022)) < 1e-12);
+}
+END_TEST
+
+/* hard_cases --entry swarp_bias_depth_per_world --seed 7 --case 115336: a
+ * point at y = 1e300 seen along the light: the derivative is ~1e-600 (0 in
+ * double), but dz/w - z dw/w^2 lost its second term to 1/w^2 underflowing
+ * and gave 1e-300.  Bound: eps |dh| / |w| ~ 1e-316. */
+START_TEST(planfix_depth_per_world_far_point) {
+    const double m[16] = {0x1.30309f5938d21p-7, -0x1.0d7dbca875d17p-1, 0x1.ea1546fbb8b03p-1, 0x1.e227c7282ec98p-1,
+                          -0x1.8cca2fe49c1bap-10, 0x1.35bd4572da0bcp+3, 0x1.3dc80c9bf35aep-4, 0x1.38a412f59a4c4p-4,
+                          0x1.af5c080267047p-6, 0x1.7bf001579932bp-1, -0x1.5508a5057da9bp-2, -0x1.4f8460e20cce4p-2,
+                          -0x1.9b6216bc4b563p+14, -0x1.6a4df9559ccb8p+19, 0x1.453114c629df5p+18, 0x1.3feec074e392p+18};
+    const swarp_bias_map b = bias_map_of(m, 0x1.fffffff768fa1p+10, 1, 2);
+    const swarp_vec3 p = {-0x1.73c9c780560fp+7, 0x1.7e43c8800759cp+996, 0x1.e7e831d97529ep+19};
+    swarp_light l;
+    memset(&l, 0, sizeof l);
+    l.type = SWARP_LIGHT_DIRECTIONAL;
+    l.direction = (swarp_vec3){0x1.7feb823c5039p-1, -0x1.265a2f6f1167cp+731, -0x1.342a37c5bcff4p-1};
+    double k = SENTINEL;
+    ck_assert_int_eq(swarp_bias_depth_per_world(&b, &l, &p, &k), SWARP_OK);
+    ck_assert_msg(fabs(k) < 1e-310, "depth per world %g", k);
+}
+END_TEST
+
+/* hard_cases --entry swarp_stabilize_sphere --case 771240: n, f the two
+ * smallest subnormals and a narrow fovy: the exact radius (~(f - n)/2) is
+ * below half the smallest subnormal and came back 0, a point instead of a
+ * sphere around the frustum.  Rounded up to DBL_TRUE_MIN. */
+START_TEST(planfix_stabilize_sphere_subnormal_range) {
+    swarp_camera cam = camera();
+    cam.fovy = 1.000001e-06;
+    cam.aspect = 1.2183229238794722;
+    swarp_vec3 c;
+    double r = -1, rc = -1;
+    ck_assert_int_eq(swarp_stabilize_sphere(&cam, DBL_TRUE_MIN, 2 * DBL_TRUE_MIN, &c, &r, &rc), SWARP_OK);
+    ck_assert(r > 0 && rc >= r);
+}
+END_TEST
+
+/* setupfix pass: p - eye overflowing for coordinates near DBL_MAX gave
+ * SWARP_ERR_NON_FINITE for finite arguments.  A representable depth is
+ * computed (at a quarter scale); one beyond DBL_MAX is SWARP_ERR_OVERFLOW,
+ * the output untouched. */
+START_TEST(sf_cascade_view_depth_opposite_ends) {
+    swarp_camera cam = {{-DBL_MAX, 0, 0}, {0, 1, 0}, {0, 0, 1}, 1.0, 1.0, 1, 100, {0, 0, 0, 0}};
+    swarp_vec3 p = {DBL_MAX, 3, 0};
+    double z = -1;
+    ck_assert_int_eq(swarp_cascade_view_depth(&cam, &p, &z), SWARP_OK);
+    ck_assert(z == 3.0);
+    cam.dir = (swarp_vec3){1, 0, 0};
+    cam.up = (swarp_vec3){0, 1, 0};
+    z = -1;
+    ck_assert_int_eq(swarp_cascade_view_depth(&cam, &p, &z), SWARP_ERR_OVERFLOW);
+    ck_assert(z == -1);
+    /* the sum overflows, the depth does not: 0.9 DBL_MAX (1 + 1 - 1)/sqrt(3) */
+    cam.eye = (swarp_vec3){0, 0, 0};
+    cam.dir = (swarp_vec3){1, 1, -1};
+    p = (swarp_vec3){0.9 * DBL_MAX, 0.9 * DBL_MAX, 0.9 * DBL_MAX};
+    ck_assert_int_eq(swarp_cascade_view_depth(&cam, &p, &z), SWARP_OK);
+    ck_assert(fabs(z - 0.9 * DBL_MAX / sqrt(3.0)) <= 1e-15 * DBL_MAX);
+}
+END_TEST
+
 int main(void) {
     Suite* s = suite_create("edges_splits");
     TCase* t = tcase_create("bias");
@@ -780,6 +890,15 @@ int main(void) {
     tcase_add_test(t, cascade_view_depth_huge_dir);
     tcase_add_test(t, cascade_error_curve_subnormal_splits);
     tcase_add_test(t, stabilize_directional_tiny_split_far_origin);
+    /* setupfix pass */
+    tcase_add_test(t, sf_cascade_view_depth_opposite_ends);
+    suite_add_tcase(s, t);
+    /* planfix pass */
+    t = tcase_create("planfix");
+    tcase_add_test(t, planfix_receiver_plane_edge_on_far_point);
+    tcase_add_test(t, planfix_receiver_plane_subnormal_resolution);
+    tcase_add_test(t, planfix_depth_per_world_far_point);
+    tcase_add_test(t, planfix_stabilize_sphere_subnormal_range);
     suite_add_tcase(s, t);
     return tu_run_suite(s) ? 1 : 0;
 }

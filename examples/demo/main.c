@@ -1280,8 +1280,9 @@ static int test_select(const options* o) {
             ok = ok && sh.count >= 3 && sh.count <= 5;
             printf("cube light %2.0f,%3.0f: P w %+.3f, %d faces:", lo.light_elev, lo.light_azim,
                    sh.cube_light.w, sh.count);
+            static const char* const face_name[6] = {"+x", "-x", "+y", "-y", "+z", "-z"};
             for (int i = 0; i < sh.count; ++i)
-                printf(" %s%s", "+x\0-x\0+y\0-y\0+z\0-z" + 3 * (sh.cube_face[i] % 6),
+                printf(" %s%s", face_name[sh.cube_face[i] % 6],
                        sh.cube_light.w < 0 ? " (inverse)" : "");
             printf("\n");
         }

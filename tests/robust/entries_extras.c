@@ -207,13 +207,21 @@ static void e_cube_lookup(swr_ctx* c) {
     if (pd) swr_rec(c, "depth", depth);
     if (!a.valid || arg < 0 || !(amax > 0)) return;
     /* S on the unit cube's surface, on the chosen face; S = P + u/a */
-    double tol = 1e-9 * (1 + fabs(a.P[0]) + fabs(a.P[1]) + fabs(a.P[2]) + fabs(u[0] / amax) + fabs(u[1] / amax) + fabs(u[2] / amax));
+    /* the reference S = P + u/a in long double: with a component of V near
+     * DBL_MAX, a = (u . N)/d overflows in double (amax = inf, u/amax = 0)
+     * while the exact S is on the cube (the contract) */
+    long double ul[3], al = -INFINITY;
+    for (int k = 0; k < 3; ++k) ul[k] = (long double)(&V.x)[k] - a.P[k];
+    for (int i = 0; i < 6; ++i)
+        if (a.d[i] > 0) al = fmaxl(al, (ul[0] * axis_n[i][0] + ul[1] * axis_n[i][1] + ul[2] * axis_n[i][2]) / a.d[i]);
+    const double ua[3] = {(double)(ul[0] / al), (double)(ul[1] / al), (double)(ul[2] / al)};
+    double tol = 1e-9 * (1 + fabs(a.P[0]) + fabs(a.P[1]) + fabs(a.P[2]) + fabs(ua[0]) + fabs(ua[1]) + fabs(ua[2]));
     int tie = second > amax * (1 - 1e-9);
     if (pf && !tie) SWR_CHECK(c, face == (uint32_t)arg, "face %u, argmax %d", face, arg);
     if (ps) {
         const double s[3] = {S.x, S.y, S.z};
         for (int k = 0; k < 3; ++k) {
-            SWR_CHECK_ACC(c, fabs(s[k] - (a.P[k] + u[k] / amax)) <= tol, "S[%d] = %.17g, P + u/a = %.17g", k, s[k], a.P[k] + u[k] / amax);
+            SWR_CHECK_ACC(c, fabs(s[k] - (a.P[k] + ua[k])) <= tol, "S[%d] = %.17g, P + u/a = %.17g", k, s[k], a.P[k] + ua[k]);
             /* a point of the view (inside the unit cube): the ray from P leaves it at S */
             if (fabs(V.x) <= 1 && fabs(V.y) <= 1 && fabs(V.z) <= 1)
                 SWR_CHECK_ACC(c, fabs(s[k]) <= 1 + tol, "S = (%g %g %g) off the cube", S.x, S.y, S.z);

@@ -73,6 +73,7 @@ static void e_vsm_chebyshev(swr_ctx* c) {
     FIN(c, t);
     FIN(c, mv);
     if (swr_isfin(mv) && mv < 0) swr_expect(c, SWARP_ERR_OUT_OF_RANGE);
+    swr_args(c, "m=(%.17g %.17g) t=%.17g min_var=%.17g", m[0], m[1], t, mv);
     double p;
     swr_fill(&p, sizeof p);
     swarp_status st = SWR_CALL(c, swarp_vsm_chebyshev(n_m ? NULL : m, t, mv, n_o ? NULL : &p));

@@ -1141,6 +1141,7 @@ static void e_focus_light_view(swr_ctx* c) {
     swr_domain(c, SWARP_ERR_ZERO_VECTOR); /* omni light at the eye */
     swr_domain(c, SWARP_ERR_DEGENERATE);
     swr_domain(c, SWARP_ERR_NEAR_FAR);
+    swr_domain(c, SWARP_ERR_OVERFLOW); /* documented: an origin ~DBL_MAX, translation beyond DBL_MAX */
     if (!swr_done(c, SWR_CALL(c, swarp_focus_light_view(pc, pl, n_axis ? NULL : &axis, po)))) return;
     for (int i = 0; i < 16; ++i) swr_rec(c, "view", V.m[i]);
     /* a rigid motion: orthonormal rows, det +1, last row 0 0 0 1 */
@@ -1319,7 +1320,9 @@ static void e_warp_lispsm(swr_ctx* c) {
         SWR_CHECK(c, info.n_light > 0 && info.n_eye > 0 && info.d >= 0, "n %g n' %g d %g", info.n_light, info.n_eye, info.d);
         SWR_CHECK(c, info.gamma >= 0 && info.gamma <= PI_, "gamma %g", info.gamma);
         /* gamma = angle between the view direction and the light view's axis (-z) */
-        double cg = dot(unit(s.cam.dir), v3(-L.m[2], -L.m[6], -L.m[10]));
+        /* unit_scaled: a valid view direction of 1e-200 (or 1e300) has no
+         * representable squared length (unit() left it unscaled: cg = 0) */
+        double cg = dot(unit_scaled(s.cam.dir), v3(-L.m[2], -L.m[6], -L.m[10]));
         SWR_CHECK_ACC(c, fabs(cos(info.gamma) - cg) <= 1e-9, "cos gamma %.17g, view . light axis %.17g", cos(info.gamma), cg);
     }
     /* the warp is a perspective with its centre outside B: w = 1 + (y - y_min)/n >= 1 on B */
@@ -1435,6 +1438,10 @@ static void e_cascade_setup(swr_ctx* c) {
         static const swarp_status dom[] = {SWARP_ERR_OUT_OF_RANGE, SWARP_ERR_STABILIZE_WARPED, SWARP_ERR_STABILIZE_LIGHT,
                                            SWARP_ERR_RESOLUTION};
         for (size_t i = 0; i < sizeof dom / sizeof dom[0]; ++i) swr_domain(c, dom[i]);
+        /* documented (the errors of swarp_stabilize_directional): the
+         * stabilised sphere or matrix beyond DBL_MAX (far 1e306, aspect
+         * DBL_MAX) */
+        if ((int)o.stabilize.mode != 0) swr_domain(c, SWARP_ERR_OVERFLOW);
     }
     if (K <= SWARP_CASCADE_MAX_SPLITS && cap < K) swr_expect(c, SWARP_ERR_CAPACITY);
     if (!psp && cap == 0) swr_domain(c, SWARP_ERR_CAPACITY);
@@ -1590,6 +1597,7 @@ static void e_focus_light_view_follow(swr_ctx* c) {
     swarp_mat4* pv = swr_out(c, &V, sizeof V, SWR_REQ);
     expect_parts(c, &s, 0, X_CAM | X_LIGHT);
     swr_domain(c, SWARP_ERR_ZERO_VECTOR), swr_domain(c, SWARP_ERR_DEGENERATE), swr_domain(c, SWARP_ERR_NEAR_FAR);
+    swr_domain(c, SWARP_ERR_OVERFLOW); /* documented: an origin ~DBL_MAX, translation beyond DBL_MAX */
     swr_args(c, "eye (%g %g %g) dir (%g %g %g) up (%g %g %g) light %d dir (%g %g %g) pos (%g %g %g) cone %g prev %d rows (%g %g %g / %g %g %g / %g %g %g) pcam %d",
              s.cam.eye.x, s.cam.eye.y, s.cam.eye.z, s.cam.dir.x, s.cam.dir.y, s.cam.dir.z, s.cam.up.x, s.cam.up.y, s.cam.up.z,
              (int)s.light.type, s.light.direction.x, s.light.direction.y, s.light.direction.z, s.light.position.x,

@@ -100,6 +100,8 @@ static void expect_needs(swr_ctx* c, const swarp_scene_needs* n, const swarp_bud
         swr_expect(c, SWARP_ERR_UNKNOWN_ENUM);
     if (n->plane_count > SWARP_PLAN_MAX_PLANES) swr_expect(c, SWARP_ERR_PLAN_TOO_MANY_PLANES);
     if (b->max_passes > 32) swr_expect(c, SWARP_ERR_OUT_OF_RANGE);
+    if (b->time_budget_ns > SWARP_PLAN_MAX_COST_NS || b->pass_cost_ns > SWARP_PLAN_MAX_COST_NS)
+        swr_expect(c, SWARP_ERR_OUT_OF_RANGE); /* documented limit */
     /* the documented argument errors the harness does not predict exactly */
     static const swarp_status dom[] = {SWARP_ERR_ZERO_VECTOR, SWARP_ERR_DEGENERATE, SWARP_ERR_FOV, SWARP_ERR_NEAR_FAR,
                                        SWARP_ERR_OUT_OF_RANGE, SWARP_ERR_RESOLUTION, SWARP_ERR_PLAN_EMPTY_VIEW,

@@ -956,6 +956,13 @@ static void e_cascade_view_depth(swr_ctx* c) {
     double* pz = swr_out(c, &z, sizeof z, SWR_REQ);
     if (!fin3(&cam.eye) || !fin3(&cam.dir) || !fin3(&p)) swr_expect(c, SWARP_ERR_NON_FINITE);
     else if (cam.dir.x == 0 && cam.dir.y == 0 && cam.dir.z == 0) swr_expect(c, SWARP_ERR_ZERO_VECTOR);
+    else {
+        /* documented: OVERFLOW when the depth itself exceeds DBL_MAX (near
+         * it, within rounding, either answer) */
+        swarp_vec3 d0 = unit3(cam.dir);
+        ld r0 = ((ld)p.x - cam.eye.x) * d0.x + ((ld)p.y - cam.eye.y) * d0.y + ((ld)p.z - cam.eye.z) * d0.z;
+        if (fabsl(r0) > 0.999 * (ld)DBL_MAX) swr_domain(c, SWARP_ERR_OVERFLOW);
+    }
     if (!swr_done(c, SWR_CALL(c, swarp_cascade_view_depth(pc, pp, pz)))) return;
     swr_rec(c, "view depth", z);
     swarp_vec3 d = unit3(cam.dir);
@@ -1025,9 +1032,15 @@ static void e_cascade_select_best(swr_ctx* c) {
         return;
     }
     SWR_CHECK(c, cov[idx] == 1, "map %u chosen but it does not cover p", idx);
+    /* The library compares its own L_texel of each map, each within the
+     * accuracy check_texel grants swarp_bias_texel_size (relative 1e-6 +
+     * 64 eps cond, absolute 64 eps cond |p|: the matrix inverted in double);
+     * a map is finer only beyond both maps' errors.  (A fixed 1e-6 flagged
+     * ill-conditioned maps whose texels the double inversion cannot rank.) */
+    const ld rel = 1e-6L + 64 * (ld)DBL_EPSILON * c->cond, abs_e = 64 * (ld)DBL_EPSILON * c->cond * vmax3(p);
     for (size_t i = 0; i < m && isfinite((double)L[idx]); ++i) /* (L = inf: no reference for the chosen map) */
         if (cov[i] == 1 && i != idx)
-            SWR_CHECK_ACC(c, L[i] >= L[idx] * (1 - 1e-6L), "map %zu has the finer texel (%Lg < %Lg of map %u)", i, L[i], L[idx], idx);
+            SWR_CHECK_ACC(c, L[i] * (1 + rel) + abs_e >= L[idx] * (1 - rel) - abs_e, "map %zu has the finer texel (%Lg < %Lg of map %u)", i, L[i], L[idx], idx);
     if (pl && isfinite((double)L[idx]))
         swr_close_abs(c, "L_texel", Lt, L[idx], 1e-6 + 64 * DBL_EPSILON * c->cond, 64 * DBL_EPSILON * c->cond * vmax3(p));
 }
@@ -1250,9 +1263,11 @@ static void e_stabilize_directional(swr_ctx* c) {
         r = V3(d.y * up.z - d.z * up.y, d.z * up.x - d.x * up.z, d.x * up.y - d.y * up.x);
         r = unit3(r);
         up = V3(r.y * d.z - r.z * d.y, r.z * d.x - r.x * d.z, r.x * d.y - r.y * d.x);
-        double ty = tan(cam.fovy / 2), tx = ty * cam.aspect;
+        /* tx in long double: aspect near DBL_MAX overflows tan(fovy/2) aspect
+         * in double (the corners came out NaN) while f tx is finite */
+        ld ty = tanl((ld)cam.fovy / 2), tx = ty * cam.aspect;
         for (int k = 0; k < 8; ++k) {
-            double z = (k & 4) ? f : n, sx = (k & 1) ? 1 : -1, sy = (k & 2) ? 1 : -1;
+            ld z = (k & 4) ? f : n, sx = (k & 1) ? 1 : -1, sy = (k & 2) ? 1 : -1;
             ld q[3] = {(ld)cam.eye.x + z * (d.x + sx * tx * r.x + sy * ty * up.x) - o.origin.x,
                        (ld)cam.eye.y + z * (d.y + sx * tx * r.y + sy * ty * up.y) - o.origin.y,
                        (ld)cam.eye.z + z * (d.z + sx * tx * r.z + sy * ty * up.z) - o.origin.z};
