@@ -612,8 +612,10 @@ SWARP_API swarp_status swarp_body_adjusted_range(const swarp_camera* cam, const 
     double mn, mx;
     s = sw_body_h_eye(cam, cam->near, cam->far, scene, &H, &mn, &mx);
     if (s != SWARP_OK) return s;
-    /* H ⊂ V: clamp rounding to the frustum's own range */
-    *out_near = sw_max(mn, cam->near);
+    /* H ⊂ V: clamp rounding to the frustum's own range, near included: for
+     * a range one ulp wide the depths of H rounded above far, and near came
+     * out above far (issue 9, seed 7 case 715126) */
+    *out_near = sw_min(sw_max(mn, cam->near), cam->far);
     *out_far = sw_min(sw_max(mx, *out_near), cam->far);
     return SWARP_OK;
 }

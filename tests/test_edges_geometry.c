@@ -968,6 +968,24 @@ START_TEST(sf_setup_points_psm_eye_far_from_body) {
 }
 END_TEST
 
+/* bodyfix pass: the adjusted range of a camera range one ulp wide
+ * ([0.99999999999999989, 1]): H's depths rounded above far and the
+ * adjusted near came out above far (hard_cases --entry
+ * swarp_body_adjusted_range --seed 7 --case 715126). */
+START_TEST(body_adjusted_range_one_ulp) {
+    swarp_camera cam;
+    memset(&cam, 0, sizeof cam);
+    cam.eye = (swarp_vec3){11.509831960162812, -7.2106133800437053, 0.34703178313814753};
+    cam.dir = (swarp_vec3){-0.26106181297126391, -0.88646162764194136, 0.38214200570803103};
+    cam.up = (swarp_vec3){0, 1, 0};
+    cam.fovy = 1.7508506598448992, cam.aspect = 3, cam.near = 0.99999999999999989, cam.far = 1;
+    const swarp_aabb box = {{-9.9561291108274386, -10, -5.6886195800143984}, {78.505664793093032, 9.8170292419075551, 3.1276577551680216}};
+    double n = 0, f = 0;
+    ck_assert_int_eq(swarp_body_adjusted_range(&cam, &box, &n, &f), SWARP_OK);
+    ck_assert_msg(n > 0 && n <= f && n >= cam.near && f <= cam.far, "[%.17g, %.17g]", n, f);
+}
+END_TEST
+
 int main(void) {
     Suite* s = suite_create("edges_geometry");
     TCase* t = tcase_create("geometry");
@@ -995,6 +1013,7 @@ int main(void) {
     tcase_add_test(t, body_from_h_grazing);
     tcase_add_test(t, body_h_wide_frustum);
     tcase_add_test(t, poly_tiny_magnitudes);
+    tcase_add_test(t, body_adjusted_range_one_ulp);
     suite_add_tcase(s, t);
     return tu_run_suite(s) ? 1 : 0;
 }
