@@ -380,7 +380,7 @@ swarp_status sw_body_h(const swarp_camera* cam, double near, double far, const s
      * plane leaves H empty */
     {
         swarp_vec3 f = {0, 0, -1};
-        sw_unit_dir(cam->dir, &f);
+        sw_gnormalize(cam->dir, &f);
         double zbox = -INFINITY;
         for (int i = 0; i < 8; ++i) {
             swarp_vec3 c = sw_v3((i & 1) ? box->max.x : box->min.x, (i & 2) ? box->max.y : box->min.y,
@@ -424,7 +424,7 @@ swarp_status sw_body_h_eye(const swarp_camera* cam, double near, double far, con
 /* The square pyramid L circumscribing the spot cone: 4 planes through l. */
 swarp_status sw_clip_light_pyramid(swarp_polyhedron* B, const swarp_light* light) {
     swarp_vec3 a = {0, 0, 1}, e1 = {1, 0, 0}, e2;
-    sw_unit_dir(light->direction, &a); /* subnormal directions are valid */
+    sw_gnormalize(light->direction, &a); /* subnormal directions are valid (sw_gnormalize scales them) */
     swarp_vec3 ref = fabs(a.x) < 0.6 ? sw_v3(1, 0, 0) : (fabs(a.y) < 0.6 ? sw_v3(0, 1, 0) : sw_v3(0, 0, 1));
     sw_gnormalize(sw_cross(ref, a), &e1);
     e2 = sw_cross(a, e1);
@@ -494,7 +494,7 @@ static swarp_status sw_body_from_h_ex(const swarp_polyhedron* H, const swarp_lig
             flat = fabs(off) <= SW_BODY_VISIBLE_EPS_REL * sw_max(sw_poly_scale(H), sw_glen(*l));
         } else {
             swarp_vec3 dd = {0, -1, 0};
-            sw_unit_dir(light->direction, &dd);
+            sw_gnormalize(light->direction, &dd);
             flat = fabs(p.a * dd.x + p.b * dd.y + p.c * dd.z) <= 1e-15; /* exactly grazing */
         }
     }
@@ -513,7 +513,7 @@ static swarp_status sw_body_from_h_ex(const swarp_polyhedron* H, const swarp_lig
         }
     } else {
         swarp_vec3 u = {0, 0, 1};
-        sw_unit_dir(sw_scale(light->direction, -1.0), &u);
+        sw_gnormalize(sw_scale(light->direction, -1.0), &u);
         /* T: longer than any path inside S */
         double diag = sw_glen(sw_sub(box->max, box->min));
         double T = 2.0 * diag + 1e-300;

@@ -67,24 +67,6 @@ swarp_status sw_check_box(const swarp_aabb* box) {
     return SWARP_OK;
 }
 
-/* a / max|a_i| when that is outside [1e-150, 1e150] (|a|^2 under- or
- * overflows, and 1/|a| is subnormal or inf there); a itself otherwise (the
- * usual vectors keep their bits) */
-static swarp_vec3 sw_tame(swarp_vec3 a) {
-    const double m = sw_max(fabs(a.x), sw_max(fabs(a.y), fabs(a.z)));
-    if (!(m < 1e-150 || m > 1e150) || !(m > 0.0) || !sw_finite(m)) return a;
-    return sw_v3(a.x / m, a.y / m, a.z / m);
-}
-
-int sw_unit_dir(swarp_vec3 a, swarp_vec3* out) {
-    const double s = a.x * a.x + a.y * a.y + a.z * a.z;
-    if (s > 1e-290 && s < 1e290) { /* the usual vector: sw_gnormalize's bits, without a call */
-        *out = sw_scale(a, 1.0 / sqrt(s));
-        return 1;
-    }
-    return sw_gnormalize(sw_tame(a), out);
-}
-
 void sw_camera_basis(const swarp_camera* cam, swarp_vec3* f, swarp_vec3* r, swarp_vec3* u) {
     swarp_vec3 ff = {0, 0, -1}, uu, rr = {1, 0, 0};
     sw_gnormalize(cam->dir, &ff);
