@@ -270,7 +270,10 @@ void sw_poly_from_corners(const swarp_vec3 c[8], swarp_polyhedron* out) {
         memcpy(loop, quads[f], 4);
         swarp_vec3 n = sw_newell(out->vertices, loop, 4);
         swarp_vec3 nu = {0, 0, 1};
-        if (!sw_gnormalize(n, &nu)) continue; /* collapsed face (flat box) */
+        /* collapsed face (flat box), or corners near DBL_MAX whose products
+         * overflowed to inf - inf = NaN (sw_gnormalize's scaled branch
+         * takes fmax of the components, which skips a NaN: checked here) */
+        if (!sw_finite3(&n) || !sw_gnormalize(n, &nu)) continue;
         swarp_vec3 fc = sw_scale(sw_add(sw_add(c[loop[0]], c[loop[1]]), sw_add(c[loop[2]], c[loop[3]])), 0.25);
         if (sw_dot(nu, sw_sub(fc, centroid)) < 0.0) {
             nu = sw_scale(nu, -1.0);

@@ -986,6 +986,27 @@ START_TEST(body_adjusted_range_one_ulp) {
 }
 END_TEST
 
+/* bodyfix pass: the frustum of a matrix with an entry of DBL_MAX has
+ * corners near 1e308; their Newell products overflow to inf - inf = NaN,
+ * and a NaN normal came back as a face (swarp_poly_from_inverse_matrix
+ * --case 37539: face 0 normal length NaN). */
+START_TEST(poly_inverse_matrix_huge_corners) {
+    const swarp_mat4 m = {{1.9999999999989999, -1.1416761360720704, -1.9634786958989037, 0, 0.12766934452880419,
+                           1.9716232880096882, -1.7976931348623157e+308, 0.43955323912948341, -1.6191533742741608,
+                           0.060677882451510623, 5, -1.706102236203459, -0.51801303466671111, 0.77630261907177101,
+                           0.71652301741605839, 3.4483558380081316}};
+    swarp_polyhedron F;
+    swarp_status st = swarp_poly_from_inverse_matrix(&m, SWARP_DEPTH_ZERO_TO_ONE, &F);
+    ck_assert_msg(st == SWARP_OK || st == SWARP_ERR_DEGENERATE, "%s", swarp_status_name(st));
+    if (st == SWARP_OK)
+        for (uint32_t f = 0; f < F.face_count; ++f) {
+            const swarp_plane* q = &F.planes[f];
+            const double nl = sqrt(q->a * q->a + q->b * q->b + q->c * q->c);
+            ck_assert_msg(fabs(nl - 1) <= 1e-9 && isfinite(q->d), "face %u normal length %g d %g", f, nl, q->d);
+        }
+}
+END_TEST
+
 int main(void) {
     Suite* s = suite_create("edges_geometry");
     TCase* t = tcase_create("geometry");
@@ -1014,6 +1035,7 @@ int main(void) {
     tcase_add_test(t, body_h_wide_frustum);
     tcase_add_test(t, poly_tiny_magnitudes);
     tcase_add_test(t, body_adjusted_range_one_ulp);
+    tcase_add_test(t, poly_inverse_matrix_huge_corners);
     suite_add_tcase(s, t);
     return tu_run_suite(s) ? 1 : 0;
 }
