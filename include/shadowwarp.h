@@ -790,7 +790,10 @@ SWARP_API swarp_status swarp_focus_light_view(const swarp_camera* cam, const swa
  *  @param[in] points     world-space points (xy extent), count >= 1
  *  @param[in] z_points   points whose depth extent is used (NULL: points).
  *                        Pancaking passes the receivers (H) here.
- *  @param[out] out_A_fit the fit; a zero extent gets width 1 (status).
+ *  @param[out] out_A_fit the fit; a flat extent (below 1e-12 of its
+ *                        coordinates: rounding noise) gets the widest other
+ *                        extent as its width, or, all flat, width 1 (1e-6
+ *                        of the coordinates beyond 1e6) (status).
  *  @return SWARP_OK, SWARP_INFO_FLAT_EXTENT (an extent was zero),
  *          SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE, SWARP_ERR_UNKNOWN_ENUM,
  *          SWARP_ERR_DEGENERATE (a point maps to w <= 0). */

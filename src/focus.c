@@ -188,6 +188,21 @@ swarp_status sw_focus_fit(const swarp_mat4* m, const swarp_vec3* pts, size_t n, 
     }
     if (!(wmax > 0.0)) wmax = 1.0;
     swarp_status st = SWARP_OK;
+    /* Every extent flat (B one point, to the rounding of its coordinates):
+     * the widest extent is itself noise (1 ulp of 5.5 stretched over the
+     * map put B's only point at x = -1.4, hard-case sweep, setup_points
+     * case 154580); the width is 1 as documented, or 1e-6 of the
+     * coordinates where 1 is below their rounding. */
+    {
+        int flat_all = 1;
+        double cmag = 0.0;
+        for (int k = 0; k < 3; ++k) {
+            double mag = fmax(fmax(fabs(lo[k]), fabs(hi[k])), wmax);
+            flat_all &= !(w[k] > SW_FIT_FLAT_REL * mag) || !(w[k] > 0.0);
+            cmag = fmax(cmag, fmax(fabs(lo[k]), fabs(hi[k])));
+        }
+        if (flat_all) wmax = fmax(1.0, 1e-6 * cmag);
+    }
     for (int k = 0; k < 3; ++k) {
         /* below SW_FIT_FLAT_REL of the value's magnitude, or of the widest
          * extent, the width is rounding noise: fitted, the noise would fill

@@ -132,6 +132,16 @@ static swarp_status sw_follow_psm(const swarp_setup_result* p, const swarp_camer
         const swarp_mat4* m = &p->light_proj;
         row[i] = sw_v3(sw_at(m, i, 0) * tx, sw_at(m, i, 1) * ty, sw_at(m, i, 3) / c23);
     }
+    if (!sw_finite(tx)) {
+        /* aspect near DBL_MAX: t_x overflows (the rows became inf/NaN and
+         * the axis a "zero vector", hard-case sweep, setup_follow seed 7
+         * case 112641).  Only the rows' directions are used: all divided
+         * by t_x, (m_i0, m_i1 / aspect, m_i3 / (c23 t_y aspect)). */
+        for (int i = 0; i < 4; ++i) {
+            const swarp_mat4* m = &p->light_proj;
+            row[i] = sw_v3(sw_at(m, i, 0), sw_at(m, i, 1) / pc->aspect, sw_at(m, i, 3) / c23 / ty / pc->aspect);
+        }
+    }
     swarp_vec3 a = sw_glen(row[3]) > sw_glen(row[2]) ? row[3] : row[2];
     if (!sw_gnormalize(a, &a)) return SWARP_ERR_ZERO_VECTOR;
     swarp_vec3 e1;

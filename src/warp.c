@@ -171,11 +171,13 @@ swarp_status sw_warp_lispsm(const swarp_mat4* M, const swarp_mat4* M_inv, const 
     sw_camera_basis(cam, &v, &r, &u);
     /* B in light space: extent along the warp axis y */
     double ymin = INFINITY, ymax = -INFINITY, size = 0.0;
+    double wmin = INFINITY;
     for (size_t i = 0; i < count; ++i) {
         swarp_vec4 h = sw_xform_point(M, points[i]);
         double y = h.y / h.w, ax = fabs(h.x / h.w), ay = fabs(y);
         if (y < ymin) ymin = y;
         if (y > ymax) ymax = y;
+        wmin = h.w < wmin ? h.w : wmin;
         size = ax > size ? ax : size;
         size = ay > size ? ay : size;
     }
@@ -209,7 +211,28 @@ swarp_status sw_warp_lispsm(const swarp_mat4* M, const swarp_mat4* M_inv, const 
      * nearest vertex e (the given near); [WS06] takes e itself. */
     swarp_vec3 c_ws = sw_add(cam->eye, sw_scale(v, near));
     if (o->center == SWARP_WARP_CENTER_NEAREST_VERTEX && nearest) c_ws = *nearest;
-    swarp_vec3 c_ls = sw_project(M, c_ws);
+    swarp_vec4 c_h = sw_xform_point(M, c_ws);
+    swarp_vec3 c_ls = sw_v3(c_h.x / c_h.w, c_h.y / c_h.w, c_h.z / c_h.w);
+    /* A point light's space (x/D, y/D, 1/D) is only defined in front of the
+     * light: a C_start behind the light's plane, or 1e4 times nearer to it
+     * than every point of B (s on the plane through the light, D ~ 1e-11:
+     * x/D = 5e10), is no centre; it is moved into B's light-space box
+     * laterally (the map stays a LiSPSM of B; the 5e10 centre sheared B's
+     * x below its rounding, hard-case sweep, setup seed 7 case 955443).
+     * 1e4: SW_LIGHT_NEAR_MIN_REL of src/setup.c, the nearest a point of B
+     * may be; directional lights (w = 1) never move it. */
+    if (!(c_h.w >= 1e-4 * wmin)) {
+        double xmin = INFINITY, xmax = -INFINITY, zmin = INFINITY, zmax = -INFINITY;
+        for (size_t i = 0; i < count; ++i) {
+            swarp_vec3 q = sw_project(M, points[i]);
+            xmin = fmin(xmin, q.x), xmax = fmax(xmax, q.x);
+            zmin = fmin(zmin, q.z), zmax = fmax(zmax, q.z);
+        }
+        c_ls.x = fmin(fmax(c_ls.x, xmin), xmax);
+        c_ls.z = fmin(fmax(c_ls.z, zmin), zmax);
+        if (!sw_finite(c_ls.x)) c_ls.x = 0.5 * (xmin + xmax);
+        if (!sw_finite(c_ls.z)) c_ls.z = 0.5 * (zmin + zmax);
+    }
     /* z_0, z_1 of (3.2): eye depths of the two ends of P's axis, C_start and
      * (c_x, y_max, c_z) ([WS06] calcNoptGeneral).  z_0 is kept at or beyond
      * near: the part of B nearer than the view's near plane receives nothing. */

@@ -149,17 +149,7 @@ END_TEST
 /* The references use long double for its 15-bit exponent (d^2 ~ 1e308,
  * DBL_MAX k^2); valgrind emulates it with doubles, so there the tests skip
  * (saying so), as in test_edges_core.c.  The -Werror and sanitizer runs check. */
-static int long_double_is_wide(void) {
-    volatile long double one = 1.0L, eps = LDBL_EPSILON, tiny = DBL_MIN;
-    return one + eps != one && tiny * tiny > 0.0L;
-}
-#define REQUIRE_WIDE_LONG_DOUBLE()                                                              \
-    do {                                                                                       \
-        if (!long_double_is_wide()) {                                                          \
-            fprintf(stderr, "%s: skipped, long double is not wider than double here\n", __func__); \
-            return;                                                                            \
-        }                                                                                      \
-    } while (0)
+/* long_double_is_wide() and REQUIRE_WIDE_LONG_DOUBLE(): test_util.h */
 
 /* [VSM] (3.3) in long double, floor mv k^2 */
 static long double ref_cheb(long double m1, long double m2, long double t, long double mv, long double k) {

@@ -601,18 +601,26 @@ START_TEST(sf_setup_points_eye_far_from_body) {
     swarp_setup_result r, s;
     memset(&r, 0xA5, sizeof r);
     s = r;
-    ck_assert_int_eq(swarp_setup_points(&cam, &l, pts, 2, NULL, 0, cam.near, cam.far, &o, &r), SWARP_ERR_DEGENERATE);
-    ck_assert(memcmp(&r, &s, sizeof r) == 0);
-    /* the same body seen from 100 units: mapped into the unit square */
-    cam.eye = (swarp_vec3){-1000100, 5, -1000000};
+    /* the documented DEGENERATE, or (the body is one point to the rounding
+     * of its coordinates: SWARP_INFO_FLAT_EXTENT, a width of 1e-6 of them)
+     * a map with B inside */
     swarp_status st = swarp_setup_points(&cam, &l, pts, 2, NULL, 0, cam.near, cam.far, &o, &r);
-    ck_assert_msg(!swarp_status_is_error(st), "%s", swarp_status_name(st));
-    for (int i = 0; i < 2; ++i) {
-        const swarp_mat4* m = &r.matrix;
-        double w = m->m[3] * pts[i].x + m->m[7] * pts[i].y + m->m[11] * pts[i].z + m->m[15];
-        double x = (m->m[0] * pts[i].x + m->m[4] * pts[i].y + m->m[8] * pts[i].z + m->m[12]) / w;
-        double y = (m->m[1] * pts[i].x + m->m[5] * pts[i].y + m->m[9] * pts[i].z + m->m[13]) / w;
-        ck_assert_msg(fabs(x) <= 1 + 1e-6 && fabs(y) <= 1 + 1e-6, "point %d at (%g, %g)", i, x, y);
+    ck_assert_msg(st == SWARP_ERR_DEGENERATE || st == SWARP_INFO_FLAT_EXTENT, "%s", swarp_status_name(st));
+    if (st == SWARP_ERR_DEGENERATE) ck_assert(memcmp(&r, &s, sizeof r) == 0);
+    for (int pass = 0; pass < 2; ++pass) {
+        if (pass == 1) { /* the same body seen from 100 units: mapped into the unit square */
+            cam.eye = (swarp_vec3){-1000100, 5, -1000000};
+            st = swarp_setup_points(&cam, &l, pts, 2, NULL, 0, cam.near, cam.far, &o, &r);
+            ck_assert_msg(!swarp_status_is_error(st), "%s", swarp_status_name(st));
+        }
+        if (st == SWARP_ERR_DEGENERATE) continue;
+        for (int i = 0; i < 2; ++i) {
+            const swarp_mat4* m = &r.matrix;
+            double w = m->m[3] * pts[i].x + m->m[7] * pts[i].y + m->m[11] * pts[i].z + m->m[15];
+            double x = (m->m[0] * pts[i].x + m->m[4] * pts[i].y + m->m[8] * pts[i].z + m->m[12]) / w;
+            double y = (m->m[1] * pts[i].x + m->m[5] * pts[i].y + m->m[9] * pts[i].z + m->m[13]) / w;
+            ck_assert_msg(fabs(x) <= 1 + 1e-6 && fabs(y) <= 1 + 1e-6, "pass %d point %d at (%g, %g)", pass, i, x, y);
+        }
     }
 }
 END_TEST
@@ -1007,6 +1015,145 @@ START_TEST(poly_inverse_matrix_huge_corners) {
 }
 END_TEST
 
+/* A spot light 0.27 above a flat box, the eye in the box's plane: s (on the
+ * view vector at the near depth) lay on the light's plane (D ~ 1e-11), its
+ * x/D = 5e10 became the warp's lateral centre and the shear it brings put
+ * B's x below its rounding (a point at x = 1.00004).  Hard-case sweep
+ * swarp_setup seed 7 case 955443. */
+START_TEST(sf_setup_point_light_centre_on_light_plane) {
+    swarp_camera cam = {{0x1.e8489b298e53p+19, -0x1.4e03ed68df875p+2, 0x1.e846d0a22d44ap+19},
+                        {0x1.c3aec609db329p-1, 0x0p+0, 0x1.e230911a52e69p-2},
+                        {0x0p+0, 0x1p+0, 0x0p+0},
+                        0x1.05a47b3f24a56p+0,
+                        0x1.2c4ede2c738fdp+1,
+                        0x1.b8c4f5e60e437p+0,
+                        0x1.d77cd19ca582p+2,
+                        {0, 0, 0, 0}};
+    swarp_light l = {SWARP_LIGHT_POINT, 0, {0x1.8abb67e310fe8p-4, 0x0p+0, 0x1.fd9def25f410ap-1},
+                     {0x1.e848cbc48cd3dp+19, -0x1.3c8ef0cc86af4p+2, 0x1.e846ea93e0f29p+19}, 0x1.30cf338b35632p-3,
+                     {0, 0, 0, 0}};
+    swarp_aabb box = {{0x1.e848p+19, -0x1.4e03ed68df875p+2, 0x1.e841cp+19},
+                      {0x1.e84e2ade088ecp+19, -0x1.4e03ed68df875p+2, 0x1.e84e4p+19}};
+    swarp_setup_options o;
+    memset(&o, 0, sizeof o);
+    o.center = SWARP_WARP_CENTER_VIEW_VECTOR;
+    o.map_width = 1364;
+    o.psm_slideback = 1;
+    swarp_setup_result r;
+    swarp_vec3 pts[SWARP_BODY_MAX_POINTS];
+    size_t n = 0;
+    swarp_status st = swarp_setup(&cam, &l, &box, &o, &r, pts, SWARP_BODY_MAX_POINTS, &n);
+    ck_assert_msg(!swarp_status_is_error(st), "%s", swarp_status_name(st));
+    for (size_t i = 0; i < n; ++i) {
+        const double* m = r.matrix.m;
+        double w = m[3] * pts[i].x + m[7] * pts[i].y + m[11] * pts[i].z + m[15];
+        double x = (m[0] * pts[i].x + m[4] * pts[i].y + m[8] * pts[i].z + m[12]) / w;
+        double y = (m[1] * pts[i].x + m[5] * pts[i].y + m[9] * pts[i].z + m[13]) / w;
+        ck_assert_msg(fabs(x) <= 1 + 1e-6 && fabs(y) <= 1 + 1e-6, "point %zu at (%.9g, %.9g)", i, x, y);
+    }
+}
+END_TEST
+
+/* A spot light 2e154 above a 50-unit body: its light-view coordinates
+ * (the translation 2e154) do not resolve the body, and the map put a point
+ * at x = -2.1 with SWARP_INFO.  Now the documented DEGENERATE.  Hard-case
+ * sweep swarp_setup case 879764 (seed default). */
+START_TEST(sf_setup_point_light_2e154_away) {
+    swarp_camera cam = {{-0x1.6e3746b57bb8cp+21, 0x1.3330e86131c35p+5, -0x1.6e35e263c471ep+21},
+                        {-0x1.91a556151761bp-3, -0x1.bdc23e852900dp-1, -0x1.cdff9fb356447p-2},
+                        {0x0p+0, 0x1p+0, 0x0p+0},
+                        0x1.ae06408e7d94ep-1,
+                        0x1.3333333333333p-2,
+                        0x1.fffffffffdcd1p-1,
+                        0x1.21626596ca6bap+20,
+                        {0, 0, 0, 0}};
+    swarp_light l = {SWARP_LIGHT_POINT, 0, {-0x1.91a556151761bp-3, -0x1.bdc23e852900dp-1, -0x1.cdff9fb356447p-2},
+                     {-0x1.6e3746b57bb8cp+21, 0x1.99481b8e2d12dp+512, -0x1.6e374a0d1b9e4p+21}, 0x1.3b5949d5d655ap+0,
+                     {0, 0, 0, 0}};
+    swarp_aabb box = {{-0x1.6e3746b57bb8cp+21, -0x1.3258b0b4fb3ddp+0, -0x1.6e373408d8f68p+21},
+                      {-0x1.6e3746b57bb8cp+21, 0x1.051ec67767d45p+2, -0x1.6e35c32c84069p+21}};
+    swarp_setup_options o;
+    memset(&o, 0, sizeof o);
+    o.technique = SWARP_TECHNIQUE_UNIFORM;
+    o.depth_range = SWARP_DEPTH_ZERO_TO_ONE;
+    o.map_width = 4329;
+    o.min_depth = 0x1p-1022;
+    swarp_setup_result r, s;
+    memset(&r, 0xA5, sizeof r);
+    s = r;
+    ck_assert_int_eq(swarp_setup(&cam, &l, &box, &o, &r, NULL, 0, NULL), SWARP_ERR_DEGENERATE);
+    ck_assert(memcmp(&r, &s, sizeof r) == 0);
+}
+END_TEST
+
+/* PSM with aspect = DBL_MAX: recovering the previous frame's light camera
+ * multiplied by t_x = t_y aspect = inf, and the follow call called a valid
+ * previous result a zero vector.  Hard-case sweep swarp_setup_follow seed 7
+ * case 112641. */
+START_TEST(sf_setup_follow_psm_huge_aspect) {
+    swarp_camera cam = {{0x1.240283d4ef769p+20, -0x1.1a29897f74798p-2, 0x1.23ffb15341e55p+20},
+                        {0x1.c8b217d9ea3b4p-2, -0x1.432dc5cd31b8cp-1, -0x1.44e51b6ce2b8dp-1},
+                        {0x0p+0, 0x1p+0, 0x0p+0},
+                        0x1.59d7e8f953599p+1,
+                        DBL_MAX,
+                        0x1.000004807ffd3p+0,
+                        0x1.85aab9035386ap+1,
+                        {0, 0, 0, 0}};
+    swarp_light l = {SWARP_LIGHT_DIRECTIONAL, 0, {-0x1.1c377cef048cep-1, -0x1.fb3d86895eabbp-2, -0x1.a8524d35126a8p-3},
+                     {0, 0, 0}, 0, {0, 0, 0, 0}};
+    swarp_aabb box = {{0x1.23ff6eaf7d3edp+20, -0x1.42dda5d8d41bap+1, 0x1.23fdbf7fabebap+20},
+                      {0x1.240356a61a942p+20, 0x1.f5e554cec5448p-1, 0x1.2400b737d307fp+20}};
+    swarp_setup_options o;
+    memset(&o, 0, sizeof o);
+    o.technique = SWARP_TECHNIQUE_PSM;
+    swarp_setup_result prev, r;
+    swarp_status s0 = swarp_setup(&cam, &l, &box, &o, &prev, NULL, 0, NULL);
+    ck_assert_msg(!swarp_status_is_error(s0), "%s", swarp_status_name(s0));
+    swarp_status st = swarp_setup_follow(&cam, &l, &box, &o, NULL, &prev, &r, NULL, 0, NULL);
+    /* the light camera's x axis is squashed to nothing by an aspect of
+     * DBL_MAX: no usable right vector, the documented FOLLOW_FRAME (or a
+     * frame), never an undocumented ZERO_VECTOR for a valid previous */
+    ck_assert_msg(st == SWARP_ERR_FOLLOW_FRAME || !swarp_status_is_error(st), "%s", swarp_status_name(st));
+}
+END_TEST
+
+/* B of three points 1e299 from the eye along y with x, z within 60: every
+ * extent of their light-space box is flat (a few ulps), and the fit took
+ * the widest of those ulps as the map's width (the point at x = -1.4).
+ * Hard-case sweep swarp_setup_points case 154580 (seed default). */
+START_TEST(sf_setup_points_all_extents_flat) {
+    swarp_camera cam = {{0x1.342c37258b8a8p+18, 0x0p+0, 0x1.342050053f726p+18},
+                        {0x1.67c56b508176dp-1, 0x1.6d635d0494d02p-3, 0x1.60a745ad68eeap-1},
+                        {0x0p+0, 0x1p+0, 0x0p+0},
+                        0x1.5b21706d00d62p+1,
+                        0x1.2e30a3b5cedf3p-1,
+                        0x1.8be73d3c29d7bp-1,
+                        0x1.d5a93d9b36be9p+22,
+                        {0, 0, 0, 0}};
+    swarp_light l = {SWARP_LIGHT_POINT, 0, {0x1.67c56b508176dp-1, 0x1.6d635d0494d02p-3, 0x1.60a745ad68eeap-1},
+                     {0x1.341337258b8a8p+18, 0x1.2bfffffffffffp+8, 0x1.343950053f726p+18}, 0x1.14503b946358bp+0,
+                     {0, 0, 0, 0}};
+    swarp_vec3 pt[3] = {{0x1.34213144c5fc2p+18, 0x1.13030ad93bcc6p+996, 0x1.341beeceef41p+18},
+                        {0x1.342c782ab0221p+18, 0x1.1744212d7e833p+996, 0x1.341f3aba9402cp+18},
+                        {0x1.341dc570f396fp+18, 0x1.3abcedc85cc71p+996, 0x1.341f393f969f3p+18}};
+    swarp_setup_options o;
+    memset(&o, 0, sizeof o);
+    o.center = SWARP_WARP_CENTER_NEAREST_VERTEX;
+    o.depth_range = SWARP_DEPTH_ZERO_TO_ONE;
+    swarp_setup_result r;
+    swarp_status st = swarp_setup_points(&cam, &l, pt, 3, NULL, 0, cam.near, cam.far, &o, &r);
+    if (st == SWARP_ERR_DEGENERATE) return;
+    ck_assert_msg(!swarp_status_is_error(st), "%s", swarp_status_name(st));
+    for (int i = 0; i < 3; ++i) {
+        const double* m = r.matrix.m;
+        double w = m[3] * pt[i].x + m[7] * pt[i].y + m[11] * pt[i].z + m[15];
+        double x = (m[0] * pt[i].x + m[4] * pt[i].y + m[8] * pt[i].z + m[12]) / w;
+        double y = (m[1] * pt[i].x + m[5] * pt[i].y + m[9] * pt[i].z + m[13]) / w;
+        ck_assert_msg(fabs(x) <= 1 + 1e-6 && fabs(y) <= 1 + 1e-6, "point %d at (%g, %g)", i, x, y);
+    }
+}
+END_TEST
+
 int main(void) {
     Suite* s = suite_create("edges_geometry");
     TCase* t = tcase_create("geometry");
@@ -1030,6 +1177,10 @@ int main(void) {
     tcase_add_test(t, sf_setup_nrepar_near_dbl_min);
     tcase_add_test(t, sf_setup_points_uniform_warp_centre);
     tcase_add_test(t, sf_setup_points_psm_eye_far_from_body);
+    tcase_add_test(t, sf_setup_point_light_centre_on_light_plane);
+    tcase_add_test(t, sf_setup_point_light_2e154_away);
+    tcase_add_test(t, sf_setup_follow_psm_huge_aspect);
+    tcase_add_test(t, sf_setup_points_all_extents_flat);
     /* bodyfix pass */
     tcase_add_test(t, body_from_h_grazing);
     tcase_add_test(t, body_h_wide_frustum);
