@@ -976,6 +976,45 @@ START_TEST(sf_setup_points_psm_eye_far_from_body) {
 }
 END_TEST
 
+/* bodyfix pass: the adjusted range of a camera range one ulp wide
+ * ([0.99999999999999989, 1]): H's depths rounded above far and the
+ * adjusted near came out above far (hard_cases --entry
+ * swarp_body_adjusted_range --seed 7 --case 715126). */
+START_TEST(body_adjusted_range_one_ulp) {
+    swarp_camera cam;
+    memset(&cam, 0, sizeof cam);
+    cam.eye = (swarp_vec3){11.509831960162812, -7.2106133800437053, 0.34703178313814753};
+    cam.dir = (swarp_vec3){-0.26106181297126391, -0.88646162764194136, 0.38214200570803103};
+    cam.up = (swarp_vec3){0, 1, 0};
+    cam.fovy = 1.7508506598448992, cam.aspect = 3, cam.near = 0.99999999999999989, cam.far = 1;
+    const swarp_aabb box = {{-9.9561291108274386, -10, -5.6886195800143984}, {78.505664793093032, 9.8170292419075551, 3.1276577551680216}};
+    double n = 0, f = 0;
+    ck_assert_int_eq(swarp_body_adjusted_range(&cam, &box, &n, &f), SWARP_OK);
+    ck_assert_msg(n > 0 && n <= f && n >= cam.near && f <= cam.far, "[%.17g, %.17g]", n, f);
+}
+END_TEST
+
+/* bodyfix pass: the frustum of a matrix with an entry of DBL_MAX has
+ * corners near 1e308; their Newell products overflow to inf - inf = NaN,
+ * and a NaN normal came back as a face (swarp_poly_from_inverse_matrix
+ * --case 37539: face 0 normal length NaN). */
+START_TEST(poly_inverse_matrix_huge_corners) {
+    const swarp_mat4 m = {{1.9999999999989999, -1.1416761360720704, -1.9634786958989037, 0, 0.12766934452880419,
+                           1.9716232880096882, -1.7976931348623157e+308, 0.43955323912948341, -1.6191533742741608,
+                           0.060677882451510623, 5, -1.706102236203459, -0.51801303466671111, 0.77630261907177101,
+                           0.71652301741605839, 3.4483558380081316}};
+    swarp_polyhedron F;
+    swarp_status st = swarp_poly_from_inverse_matrix(&m, SWARP_DEPTH_ZERO_TO_ONE, &F);
+    ck_assert_msg(st == SWARP_OK || st == SWARP_ERR_DEGENERATE, "%s", swarp_status_name(st));
+    if (st == SWARP_OK)
+        for (uint32_t f = 0; f < F.face_count; ++f) {
+            const swarp_plane* q = &F.planes[f];
+            const double nl = sqrt(q->a * q->a + q->b * q->b + q->c * q->c);
+            ck_assert_msg(fabs(nl - 1) <= 1e-9 && isfinite(q->d), "face %u normal length %g d %g", f, nl, q->d);
+        }
+}
+END_TEST
+
 /* A spot light 0.27 above a flat box, the eye in the box's plane: s (on the
  * view vector at the near depth) lay on the light's plane (D ~ 1e-11), its
  * x/D = 5e10 became the warp's lateral centre and the shear it brings put
@@ -1112,45 +1151,6 @@ START_TEST(sf_setup_points_all_extents_flat) {
         double y = (m[1] * pt[i].x + m[5] * pt[i].y + m[9] * pt[i].z + m[13]) / w;
         ck_assert_msg(fabs(x) <= 1 + 1e-6 && fabs(y) <= 1 + 1e-6, "point %d at (%g, %g)", i, x, y);
     }
-}
-END_TEST
-
-/* bodyfix pass: the adjusted range of a camera range one ulp wide
- * ([0.99999999999999989, 1]): H's depths rounded above far and the
- * adjusted near came out above far (hard_cases --entry
- * swarp_body_adjusted_range --seed 7 --case 715126). */
-START_TEST(body_adjusted_range_one_ulp) {
-    swarp_camera cam;
-    memset(&cam, 0, sizeof cam);
-    cam.eye = (swarp_vec3){11.509831960162812, -7.2106133800437053, 0.34703178313814753};
-    cam.dir = (swarp_vec3){-0.26106181297126391, -0.88646162764194136, 0.38214200570803103};
-    cam.up = (swarp_vec3){0, 1, 0};
-    cam.fovy = 1.7508506598448992, cam.aspect = 3, cam.near = 0.99999999999999989, cam.far = 1;
-    const swarp_aabb box = {{-9.9561291108274386, -10, -5.6886195800143984}, {78.505664793093032, 9.8170292419075551, 3.1276577551680216}};
-    double n = 0, f = 0;
-    ck_assert_int_eq(swarp_body_adjusted_range(&cam, &box, &n, &f), SWARP_OK);
-    ck_assert_msg(n > 0 && n <= f && n >= cam.near && f <= cam.far, "[%.17g, %.17g]", n, f);
-}
-END_TEST
-
-/* bodyfix pass: the frustum of a matrix with an entry of DBL_MAX has
- * corners near 1e308; their Newell products overflow to inf - inf = NaN,
- * and a NaN normal came back as a face (swarp_poly_from_inverse_matrix
- * --case 37539: face 0 normal length NaN). */
-START_TEST(poly_inverse_matrix_huge_corners) {
-    const swarp_mat4 m = {{1.9999999999989999, -1.1416761360720704, -1.9634786958989037, 0, 0.12766934452880419,
-                           1.9716232880096882, -1.7976931348623157e+308, 0.43955323912948341, -1.6191533742741608,
-                           0.060677882451510623, 5, -1.706102236203459, -0.51801303466671111, 0.77630261907177101,
-                           0.71652301741605839, 3.4483558380081316}};
-    swarp_polyhedron F;
-    swarp_status st = swarp_poly_from_inverse_matrix(&m, SWARP_DEPTH_ZERO_TO_ONE, &F);
-    ck_assert_msg(st == SWARP_OK || st == SWARP_ERR_DEGENERATE, "%s", swarp_status_name(st));
-    if (st == SWARP_OK)
-        for (uint32_t f = 0; f < F.face_count; ++f) {
-            const swarp_plane* q = &F.planes[f];
-            const double nl = sqrt(q->a * q->a + q->b * q->b + q->c * q->c);
-            ck_assert_msg(fabs(nl - 1) <= 1e-9 && isfinite(q->d), "face %u normal length %g d %g", f, nl, q->d);
-        }
 }
 END_TEST
 
