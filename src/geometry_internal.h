@@ -25,8 +25,10 @@ static inline int sw_gnormalize(swarp_vec3 a, swarp_vec3* out) {
         *out = sw_scale(a, 1.0 / sqrt(s));
         return 1;
     }
+    /* a NaN component fails the range test above too, and fmax would skip it */
+    if (!sw_finite3(&a)) return 0;
     double m = fmax(fabs(a.x), fmax(fabs(a.y), fabs(a.z)));
-    if (!(m > 0.0) || !sw_finite(m)) return 0;
+    if (!(m > 0.0)) return 0;
     swarp_vec3 b = sw_v3(a.x / m, a.y / m, a.z / m); /* exact-ish: a component is ±1 */
     *out = sw_scale(b, 1.0 / sqrt(sw_dot(b, b)));
     return 1;

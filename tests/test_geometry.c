@@ -10,6 +10,7 @@
 #include <string.h>
 
 #include "shadowwarp.h"
+#include "geometry_internal.h" /* sw_gnormalize: every direction of the stage goes through it */
 #include "test_util.h"
 
 #define PI 3.14159265358979323846
@@ -326,6 +327,30 @@ static void check_config_v(rng* R, const config* c, swarp_technique tech, swarp_
 static void check_config(rng* R, const config* c, swarp_technique tech, swarp_depth_range dr, sweep_stats* st) {
     check_config_v(R, c, tech, dr, st, 0);
 }
+
+/* sw_gnormalize: the unit vector for every finite non-zero direction,
+ * subnormal and near DBL_MAX included (issue 9), and 0 with *out untouched
+ * for a zero or non-finite one -- a NaN component must not slip through the
+ * scaled path (fmax ignores NaN; it once returned 1 with NaN components). */
+START_TEST(gnormalize_range_and_nan) {
+    const swarp_vec3 in[] = {{0x1p-1074, 0, 0}, {3e-320, -4e-320, 0}, {DBL_MAX, DBL_MAX, 0}, {1, 2, 2}};
+    const swarp_vec3 want[] = {{1, 0, 0}, {0.6, -0.8, 0}, {0.70710678118654752, 0.70710678118654752, 0}, {1.0 / 3, 2.0 / 3, 2.0 / 3}};
+    for (int i = 0; i < 4; ++i) {
+        swarp_vec3 u;
+        ck_assert(sw_gnormalize(in[i], &u));
+        /* 3e-320 and 4e-320 are subnormals: rounded to 2^-1074 steps, 0.6 to 1e-5 */
+        const double tol = i == 1 ? 1e-5 : 4 * DBL_EPSILON;
+        ck_assert_msg(fabs(u.x - want[i].x) <= tol && fabs(u.y - want[i].y) <= tol && fabs(u.z - want[i].z) <= tol,
+                      "case %d: (%.17g %.17g %.17g)", i, u.x, u.y, u.z);
+    }
+    const swarp_vec3 bad[] = {{0, 0, 0}, {NAN, 1e-300, 0}, {1e-300, 0, NAN}, {INFINITY, 0, 0}, {NAN, 1, 0}};
+    for (int i = 0; i < 5; ++i) {
+        swarp_vec3 u = {7, 7, 7};
+        ck_assert_msg(!sw_gnormalize(bad[i], &u), "bad case %d accepted", i);
+        ck_assert(u.x == 7 && u.y == 7 && u.z == 7);
+    }
+}
+END_TEST
 
 START_TEST(random_configurations_all_properties) {
     rng R = {0x5EED0001ull + (uint64_t)_i};
@@ -1366,6 +1391,7 @@ END_TEST
 
 static void add_sweep_regressions(Suite* s) {
     TCase* tc = tcase_create("sweep_regressions");
+    tcase_add_test(tc, gnormalize_range_and_nan);
     tcase_add_test(tc, sweep_grazing_light_flat_box);
     tcase_add_test(tc, sweep_large_offset_parallel_light);
     tcase_add_test(tc, sweep_far_dbl_max);
