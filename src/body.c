@@ -121,8 +121,8 @@ static swarp_status sw_flat_extend(const swarp_polyhedron* H, swarp_vec3 u, doub
  * edge's end points used before flips when the edge is all but parallel to
  * u (a grazing light, issue 9) and cut H.  The combination cancels in turn
  * when p_j and p_k are all but opposite (an all but flat H): its normal is
- * then |n| << w_j + w_k, and the cross product is taken.  The weights
- * are scaled to at most 1 first: c ~ 1e-17 must not underflow.  0: no side
+ * then |n| << w_j + w_k, and the cross product is taken.  Weights below
+ * 1e-150 are scaled to 1 first: their products must not underflow.  0: no side
  * face (both weights 0, or an edge parallel to u: zero area). */
 static int sw_side_plane(const swarp_polyhedron* H, uint8_t a, uint8_t b, uint32_t j, double cj, uint32_t k,
                          double ck, swarp_vec3 u, const swarp_vec3* apex, swarp_plane* out) {
@@ -130,7 +130,7 @@ static int sw_side_plane(const swarp_polyhedron* H, uint8_t a, uint8_t b, uint32
     double wj = ck < 0.0 ? -ck : 0.0, wk = cj > 0.0 ? cj : 0.0;
     const double m = sw_max(wj, wk);
     if (!(m > 0.0)) return 0;
-    wj /= m, wk /= m;
+    if (m < 1e-150) wj /= m, wk /= m; /* their products with the normals would underflow */
     swarp_vec3 n = sw_v3(wj * pj.a + wk * pk.a, wj * pj.b + wk * pk.b, wj * pj.c + wk * pk.c);
     double len = sw_glen(n), d = wj * pj.d + wk * pk.d;
     if (!(len >= 1e-3 * (wj + wk))) {
@@ -163,8 +163,12 @@ static int sw_side_plane(const swarp_polyhedron* H, uint8_t a, uint8_t b, uint32
 /* The face among the set cand (bits, not empty) whose loop has the
  * directed edge p -> q; usually cand has that one face only. */
 static uint32_t sw_face_with_edge(const swarp_polyhedron* H, uint64_t cand, uint8_t p, uint8_t q) {
+#if defined(__GNUC__) || defined(__clang__)
+    uint32_t first = (uint32_t)__builtin_ctzll(cand);
+#else
     uint32_t first = 0;
     while (first < 63 && !((cand >> first) & 1u)) ++first;
+#endif
     if ((cand & (cand - 1)) == 0) return first;
     for (uint32_t g = first; g < 64; ++g) {
         if (!((cand >> g) & 1u)) continue;
@@ -376,7 +380,7 @@ swarp_status sw_body_h(const swarp_camera* cam, double near, double far, const s
      * plane leaves H empty */
     {
         swarp_vec3 f = {0, 0, -1};
-        sw_unit_dir(cam->dir, &f);
+        sw_gnormalize(cam->dir, &f);
         double zbox = -INFINITY;
         for (int i = 0; i < 8; ++i) {
             swarp_vec3 c = sw_v3((i & 1) ? box->max.x : box->min.x, (i & 2) ? box->max.y : box->min.y,
@@ -420,7 +424,7 @@ swarp_status sw_body_h_eye(const swarp_camera* cam, double near, double far, con
 /* The square pyramid L circumscribing the spot cone: 4 planes through l. */
 swarp_status sw_clip_light_pyramid(swarp_polyhedron* B, const swarp_light* light) {
     swarp_vec3 a = {0, 0, 1}, e1 = {1, 0, 0}, e2;
-    sw_unit_dir(light->direction, &a); /* subnormal directions are valid */
+    sw_gnormalize(light->direction, &a); /* subnormal directions are valid (sw_gnormalize scales them) */
     swarp_vec3 ref = fabs(a.x) < 0.6 ? sw_v3(1, 0, 0) : (fabs(a.y) < 0.6 ? sw_v3(0, 1, 0) : sw_v3(0, 0, 1));
     sw_gnormalize(sw_cross(ref, a), &e1);
     e2 = sw_cross(a, e1);
@@ -490,7 +494,7 @@ static swarp_status sw_body_from_h_ex(const swarp_polyhedron* H, const swarp_lig
             flat = fabs(off) <= SW_BODY_VISIBLE_EPS_REL * sw_max(sw_poly_scale(H), sw_glen(*l));
         } else {
             swarp_vec3 dd = {0, -1, 0};
-            sw_unit_dir(light->direction, &dd);
+            sw_gnormalize(light->direction, &dd);
             flat = fabs(p.a * dd.x + p.b * dd.y + p.c * dd.z) <= 1e-15; /* exactly grazing */
         }
     }
@@ -509,7 +513,7 @@ static swarp_status sw_body_from_h_ex(const swarp_polyhedron* H, const swarp_lig
         }
     } else {
         swarp_vec3 u = {0, 0, 1};
-        sw_unit_dir(sw_scale(light->direction, -1.0), &u);
+        sw_gnormalize(sw_scale(light->direction, -1.0), &u);
         /* T: longer than any path inside S */
         double diag = sw_glen(sw_sub(box->max, box->min));
         double T = 2.0 * diag + 1e-300;
@@ -608,8 +612,10 @@ SWARP_API swarp_status swarp_body_adjusted_range(const swarp_camera* cam, const 
     double mn, mx;
     s = sw_body_h_eye(cam, cam->near, cam->far, scene, &H, &mn, &mx);
     if (s != SWARP_OK) return s;
-    /* H ⊂ V: clamp rounding to the frustum's own range */
-    *out_near = sw_max(mn, cam->near);
+    /* H ⊂ V: clamp rounding to the frustum's own range, near included: for
+     * a range one ulp wide the depths of H rounded above far, and near came
+     * out above far (issue 9, seed 7 case 715126) */
+    *out_near = sw_min(sw_max(mn, cam->near), cam->far);
     *out_far = sw_min(sw_max(mx, *out_near), cam->far);
     return SWARP_OK;
 }

@@ -168,14 +168,19 @@ SWARP_API swarp_status swarp_cube_lookup(const swarp_vec4* ps_light, const swarp
      * (exact) when its largest component is beyond 2^960, so that
      * a = (u . N)/d (d >= 2^-53 when > 0) cannot overflow -- a component
      * near DBL_MAX made a = inf, u/a = 0 and S = P, off the cube (found by
-     * the hard-case sweep) -- and beyond 2^-960 below, so that a subnormal
-     * u does not lose its bits in a.  Only down to 2^900 (up to 2^-900): a
-     * smaller component that decides a is >= a d_i, far above the
-     * subnormals, as long as S is finite. */
-    const double um = fmax(fabs(u.x), fmax(fabs(u.y), fabs(u.z)));
-    const int eu = um > 0.0 ? ilogb(um) : 0;
-    const int k = eu > 960 ? eu - 900 : eu < -960 ? eu + 900 : 0;
-    u = sw_v3(scalbn(u.x, -k), scalbn(u.y, -k), scalbn(u.z, -k));
+     * the hard-case sweep).  Only down to 2^900: a smaller component that
+     * decides a is >= a d_i, far above the subnormals, as long as S is
+     * finite (all the way to [1, 2) would make it subnormal).  Below 2^-500
+     * up to [1, 2) (no component shrinks): a = |u| / d with d up to 1e150
+     * stays far from the subnormals. */
+    const double ax = fabs(u.x), ay = fabs(u.y), az = fabs(u.z); /* finite: |P| <= 1e150 */
+    const double axy = ax > ay ? ax : ay, um = axy > az ? axy : az;
+    int k = 0; /* the usual case: no libm call on this path (bench_core) */
+    if (um > 0x1p960 || (um < 0x1p-500 && um > 0.0)) {
+        const int eu = ilogb(um);
+        k = eu > 0 ? eu - 900 : eu;
+        u = sw_v3(scalbn(u.x, -k), scalbn(u.y, -k), scalbn(u.z, -k));
+    }
     /* a = max over back faces of (u . N_i)/d_i = 1 / (ray parameter of the exit face) */
     double a = -INFINITY;
     int face = -1;
@@ -189,15 +194,18 @@ SWARP_API swarp_status swarp_cube_lookup(const swarp_vec4* ps_light, const swarp
         }
     }
     if (face < 0 || !(a > 0.0)) return SWARP_ERR_CUBE_POINT_UNCOVERED;
-    swarp_vec3 S = sw_v3(s.P.x + u.x / a, s.P.y + u.y / a, s.P.z + u.z / a); /* on the unit cube */
+    swarp_vec3 S = sw_add(s.P, sw_scale(u, 1.0 / a)); /* on the unit cube */
     /* the projective transform of a (units of d: far = 1 or Z_1); the
      * unscaled a is 2^k a (inf beyond DBL_MAX: then 1/a is 0 to rounding) */
     double alpha, beta;
     sw_cube_depth_coeffs(&s, 1.0, &alpha, &beta);
-    int eb = 0;
-    const double mb = frexp(beta, &eb); /* beta / (2^k a) = (mb / a) 2^(eb - k): no spurious overflow */
-    const double depth = alpha + scalbn(mb / a, eb - k);
-    const double a_full = scalbn(a, k);
+    double depth = alpha + beta / a, a_full = a;
+    if (k != 0) {
+        int eb = 0;
+        const double mb = frexp(beta, &eb); /* beta / (2^k a) = (mb / a) 2^(eb - k): no spurious overflow */
+        depth = alpha + scalbn(mb / a, eb - k);
+        a_full = scalbn(a, k);
+    }
     if (!sw_finite3(&S) || !sw_finite(depth)) return SWARP_ERR_OVERFLOW;
     if (out_face) *out_face = (uint32_t)face;
     if (out_texcoord) *out_texcoord = S;

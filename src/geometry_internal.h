@@ -51,9 +51,6 @@ swarp_status sw_check_depth_range(swarp_depth_range d);
 
 /* Orthonormal camera basis: f (forward), r (right), u (up). */
 void sw_camera_basis(const swarp_camera* cam, swarp_vec3* f, swarp_vec3* r, swarp_vec3* u);
-/* a direction's unit vector, also for subnormal components (scaled by the
- * largest one first: sw_gnormalize gives inf there); 0 for zero/non-finite */
-int sw_unit_dir(swarp_vec3 a, swarp_vec3* out);
 
 /* Internal polyhedron operations (no argument checks). */
 void sw_poly_from_corners(const swarp_vec3 c[8], swarp_polyhedron* out);

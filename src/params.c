@@ -483,10 +483,10 @@ static double sw_lambda_2(double theta, double phi, double n, double f) {
     double r = sqrt(n) / sqrt(f);
     if (theta >= phi) {
         double t = sw_t_ratio(theta, phi);
-        return 0.5 * (((1.0 - t) + r) / t);
+        return ((0.5 - 0.5 * t) + 0.5 * r) / t; /* halved first: t ~ 1e-308 */
     }
     double u = sw_u_ratio(theta, phi);
-    return 0.5 * ((u - 1.0) + u * r);
+    return (0.5 * u - 0.5) + 0.5 * u * r;
 }
 
 /* lambda_1, lambda_2, lambda_GMNPR, lambda_LiSPSM and lambda_GLPR are

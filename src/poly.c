@@ -67,15 +67,6 @@ swarp_status sw_check_box(const swarp_aabb* box) {
     return SWARP_OK;
 }
 
-int sw_unit_dir(swarp_vec3 a, swarp_vec3* out) {
-    const double m = sw_max(fabs(a.x), sw_max(fabs(a.y), fabs(a.z)));
-    if (m < 1e-150) { /* |a|^2 would underflow: a / m is exact enough (one rounding per component) */
-        if (!(m > 0.0)) return 0;
-        a = sw_v3(a.x / m, a.y / m, a.z / m);
-    }
-    return sw_gnormalize(a, out);
-}
-
 void sw_camera_basis(const swarp_camera* cam, swarp_vec3* f, swarp_vec3* r, swarp_vec3* u) {
     swarp_vec3 ff = {0, 0, -1}, uu, rr = {1, 0, 0};
     sw_gnormalize(cam->dir, &ff);
@@ -135,8 +126,20 @@ static swarp_vec3 sw_newell(const swarp_vec3* v, const uint8_t* idx, uint32_t n)
     swarp_vec3 c = {0, 0, 0};
     for (uint32_t i = 0; i < n; ++i) c = sw_add(c, v[idx[i]]);
     c = sw_scale(c, 1.0 / n); /* centred: no cancellation for large worlds */
+    /* a loop 1e-160 across (the corners of a matrix with w ~ 1e160) has
+     * products of 1e-320: subnormal, and its unit normal came out inf
+     * (issue 9); such a loop is scaled to size 1 first.  (A loop 1e300
+     * across overflows to inf: the face is dropped as collapsed.) */
+    double m = 0.0, inv = 1.0;
+    for (uint32_t i = 0; i < n; ++i) {
+        swarp_vec3 a = sw_sub(v[idx[i]], c);
+        m = sw_max(m, sw_max(fabs(a.x), sw_max(fabs(a.y), fabs(a.z))));
+    }
+    const int scaled = m < 1e-100 && m > 0.0;
+    if (scaled) inv = m;
     for (uint32_t i = 0; i < n; ++i) {
         swarp_vec3 a = sw_sub(v[idx[i]], c), b = sw_sub(v[idx[i + 1 == n ? 0 : i + 1]], c);
+        if (scaled) a = sw_v3(a.x / inv, a.y / inv, a.z / inv), b = sw_v3(b.x / inv, b.y / inv, b.z / inv);
         nn.x += (a.y - b.y) * (a.z + b.z);
         nn.y += (a.z - b.z) * (a.x + b.x);
         nn.z += (a.x - b.x) * (a.y + b.y);
@@ -267,7 +270,10 @@ void sw_poly_from_corners(const swarp_vec3 c[8], swarp_polyhedron* out) {
         memcpy(loop, quads[f], 4);
         swarp_vec3 n = sw_newell(out->vertices, loop, 4);
         swarp_vec3 nu = {0, 0, 1};
-        if (!sw_gnormalize(n, &nu)) continue; /* collapsed face (flat box) */
+        /* collapsed face (flat box), or corners near DBL_MAX whose products
+         * overflowed to inf - inf = NaN (sw_gnormalize's scaled branch
+         * takes fmax of the components, which skips a NaN: checked here) */
+        if (!sw_finite3(&n) || !sw_gnormalize(n, &nu)) continue;
         swarp_vec3 fc = sw_scale(sw_add(sw_add(c[loop[0]], c[loop[1]]), sw_add(c[loop[2]], c[loop[3]])), 0.25);
         if (sw_dot(nu, sw_sub(fc, centroid)) < 0.0) {
             nu = sw_scale(nu, -1.0);
@@ -466,6 +472,23 @@ static swarp_status sw_poly_clip_to(const swarp_polyhedron* in, swarp_vec3 n_raw
     swarp_vec3 n = n_raw;
     double d = d_raw;
     if (!unit_normal) {
+        /* coefficients of 1e-321 (valid: not zero) are scaled to 1 first:
+         * 1/|n| overflowed and the clip kept what it should cut (issue 9) */
+        const double m = sw_max(fabs(n_raw.x), sw_max(fabs(n_raw.y), fabs(n_raw.z)));
+        if (!(m > 0.0)) return SWARP_ERR_ZERO_VECTOR;
+        if (m < 1e-150 || m > 1e150) {
+            n_raw = sw_v3(n_raw.x / m, n_raw.y / m, n_raw.z / m);
+            d_raw /= m;
+            if (!sw_finite(d_raw)) { /* the plane beyond the double range: all kept or all cut */
+                if (d_raw < 0.0) {
+                    *unchanged = 1;
+                } else {
+                    out->vertex_count = 0;
+                    out->face_count = 0;
+                }
+                return SWARP_OK;
+            }
+        }
         double len = sw_glen(n_raw);
         if (!(len > 0.0)) return SWARP_ERR_ZERO_VECTOR;
         n = sw_scale(n_raw, 1.0 / len);

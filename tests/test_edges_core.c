@@ -569,6 +569,23 @@ START_TEST(wlz_side_face_overflow) {
 }
 END_TEST
 
+/* lambda_2 = (f + sqrt(fn))/(2f) tan(theta)/tan(phi) - 1/2 just below
+ * DBL_MAX (theta = pi/2, phi = 1.2e-292: tan(phi)/tan(theta) ~ 7e-309):
+ * the form ((1 - t) + r)/(2t) must halve before dividing, or
+ * (1 + r)/t ~ 2.3e308 overflows on the way (hard_cases
+ * swarp_gmnpr_lambda12, seeds 3 and 11: 73 and 70 cases became
+ * SWARP_ERR_OVERFLOW with the first form). */
+START_TEST(gmnpr_lambda_2_near_dbl_max) {
+    REQUIRE_WIDE_LONG_DOUBLE();
+    double th = 0.5 * 3.14159265358979323846, ph = 1.2e-292, n = 1.0, f = 2.0;
+    double l1 = SENTINEL, l2 = SENTINEL;
+    ck_assert_int_eq(swarp_gmnpr_lambda12(th, ph, n, f, &l1, &l2), SWARP_OK);
+    long double ref = 0.5L * (1.0L + sqrtl(0.5L)) * tanl(th) / tanl(ph) - 0.5L;
+    ck_assert(ref < DBL_MAX);
+    ck_assert_msg(fabsl(l2 - ref) <= 1e-12L * ref, "lambda_2 %g vs %Lg", l2, ref);
+}
+END_TEST
+
 int main(void) {
     Suite* s = suite_create("edges_core");
     TCase* t = tcase_create("mat4_invert");
@@ -593,6 +610,7 @@ int main(void) {
     tcase_add_test(t, gmnpr_psi_offset_subnormal_depths);
     tcase_add_test(t, nopt_pseudo_subnormal_near);
     tcase_add_test(t, wlz_side_face_overflow);
+    tcase_add_test(t, gmnpr_lambda_2_near_dbl_max);
     suite_add_tcase(s, t);
     return tu_run_suite(s) ? 1 : 0;
 }

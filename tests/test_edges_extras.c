@@ -200,6 +200,7 @@ END_TEST
  * A guard on the scaling threshold of the fix above (the code before it
  * passed this one: no scaling, no overflow here). */
 START_TEST(planfix_cube_lookup_huge_and_small_components) {
+    REQUIRE_WIDE_LONG_DOUBLE();
     const swarp_vec4 L = {0x1.01820f73113bdp+0, 0x1.9e53434cb75dfp+0, -0x1.c81789dcf401p-1, 0x1.01820f776338ep+0};
     const swarp_vec3 V = {0x1.0000000001198p+0, DBL_MAX, 0x1.12e0be826d695p-30};
     uint32_t face = 99;

@@ -808,6 +808,38 @@ START_TEST(body_h_wide_frustum) {
 }
 END_TEST
 
+/* bodyfix pass: magnitudes at the ends of the double range (issue 9).  A
+ * clip plane with coefficients of 1e-321 (valid: not zero) had 1/|n| = inf
+ * and kept what it should cut (hard_cases --entry swarp_poly_clip --case
+ * 209191); the frustum of a matrix with w ~ 6e159 is 1e-160 across, its
+ * Newell normals were products of 1e-320 and came out inf
+ * (swarp_poly_from_inverse_matrix --case 690952). */
+START_TEST(poly_tiny_magnitudes) {
+    const swarp_aabb box = {{-30, -30, -30}, {30, 30, 30}};
+    swarp_polyhedron P, Q;
+    ck_assert_int_eq(swarp_poly_from_aabb(&box, &P), SWARP_OK);
+    /* x + z <= 20.005: subnormals have few digits, the ratio is exact here */
+    const swarp_plane pl = {4.575047880489943e-321, 0, 4.575047880489943e-321, -9.1525660892090922e-320};
+    const double bound = -pl.d / pl.a;
+    ck_assert_int_eq(swarp_poly_clip(&P, &pl, &Q), SWARP_OK);
+    ck_assert(Q.vertex_count > 0);
+    for (uint32_t v = 0; v < Q.vertex_count; ++v)
+        ck_assert_msg(Q.vertices[v].x + Q.vertices[v].z <= bound + 1e-9, "vertex %u: x + z = %g", v, Q.vertices[v].x + Q.vertices[v].z);
+    const swarp_mat4 m = {{2.8407183450518398, 1.7568812543004477, -0.56368800435547906, 0, -2, 2.9999999999989999,
+                           1.759516522821905, 0, 0.78539816339744828, 0.18619150977600629, 1.4085524255937107,
+                           1.0000000000000001e-09, 0, -1.0000000000010001, 0.20909585652742102, -5.7746782753919336e+159}};
+    swarp_polyhedron F;
+    swarp_status st = swarp_poly_from_inverse_matrix(&m, SWARP_DEPTH_DEFAULT, &F);
+    ck_assert_msg(st == SWARP_OK || st == SWARP_ERR_DEGENERATE, "%s", swarp_status_name(st));
+    if (st == SWARP_OK)
+        for (uint32_t f = 0; f < F.face_count; ++f) {
+            const swarp_plane* q = &F.planes[f];
+            const double nl = sqrt(q->a * q->a + q->b * q->b + q->c * q->c);
+            ck_assert_msg(fabs(nl - 1) <= 1e-9, "face %u normal length %g", f, nl);
+        }
+}
+END_TEST
+
 /* The smallest subnormal fovy is a valid field of view; halved it was 0 and
  * the warp parameter refused it (SWARP_ERR_FOV, undocumented for a valid
  * fovy).  Hard-case sweep swarp_setup_range case 184736 (seed default). */
@@ -1083,6 +1115,45 @@ START_TEST(sf_setup_points_all_extents_flat) {
 }
 END_TEST
 
+/* bodyfix pass: the adjusted range of a camera range one ulp wide
+ * ([0.99999999999999989, 1]): H's depths rounded above far and the
+ * adjusted near came out above far (hard_cases --entry
+ * swarp_body_adjusted_range --seed 7 --case 715126). */
+START_TEST(body_adjusted_range_one_ulp) {
+    swarp_camera cam;
+    memset(&cam, 0, sizeof cam);
+    cam.eye = (swarp_vec3){11.509831960162812, -7.2106133800437053, 0.34703178313814753};
+    cam.dir = (swarp_vec3){-0.26106181297126391, -0.88646162764194136, 0.38214200570803103};
+    cam.up = (swarp_vec3){0, 1, 0};
+    cam.fovy = 1.7508506598448992, cam.aspect = 3, cam.near = 0.99999999999999989, cam.far = 1;
+    const swarp_aabb box = {{-9.9561291108274386, -10, -5.6886195800143984}, {78.505664793093032, 9.8170292419075551, 3.1276577551680216}};
+    double n = 0, f = 0;
+    ck_assert_int_eq(swarp_body_adjusted_range(&cam, &box, &n, &f), SWARP_OK);
+    ck_assert_msg(n > 0 && n <= f && n >= cam.near && f <= cam.far, "[%.17g, %.17g]", n, f);
+}
+END_TEST
+
+/* bodyfix pass: the frustum of a matrix with an entry of DBL_MAX has
+ * corners near 1e308; their Newell products overflow to inf - inf = NaN,
+ * and a NaN normal came back as a face (swarp_poly_from_inverse_matrix
+ * --case 37539: face 0 normal length NaN). */
+START_TEST(poly_inverse_matrix_huge_corners) {
+    const swarp_mat4 m = {{1.9999999999989999, -1.1416761360720704, -1.9634786958989037, 0, 0.12766934452880419,
+                           1.9716232880096882, -1.7976931348623157e+308, 0.43955323912948341, -1.6191533742741608,
+                           0.060677882451510623, 5, -1.706102236203459, -0.51801303466671111, 0.77630261907177101,
+                           0.71652301741605839, 3.4483558380081316}};
+    swarp_polyhedron F;
+    swarp_status st = swarp_poly_from_inverse_matrix(&m, SWARP_DEPTH_ZERO_TO_ONE, &F);
+    ck_assert_msg(st == SWARP_OK || st == SWARP_ERR_DEGENERATE, "%s", swarp_status_name(st));
+    if (st == SWARP_OK)
+        for (uint32_t f = 0; f < F.face_count; ++f) {
+            const swarp_plane* q = &F.planes[f];
+            const double nl = sqrt(q->a * q->a + q->b * q->b + q->c * q->c);
+            ck_assert_msg(fabs(nl - 1) <= 1e-9 && isfinite(q->d), "face %u normal length %g d %g", f, nl, q->d);
+        }
+}
+END_TEST
+
 int main(void) {
     Suite* s = suite_create("edges_geometry");
     TCase* t = tcase_create("geometry");
@@ -1113,6 +1184,9 @@ int main(void) {
     /* bodyfix pass */
     tcase_add_test(t, body_from_h_grazing);
     tcase_add_test(t, body_h_wide_frustum);
+    tcase_add_test(t, poly_tiny_magnitudes);
+    tcase_add_test(t, body_adjusted_range_one_ulp);
+    tcase_add_test(t, poly_inverse_matrix_huge_corners);
     suite_add_tcase(s, t);
     return tu_run_suite(s) ? 1 : 0;
 }

@@ -34,6 +34,11 @@ static swarp_vec3 cross(swarp_vec3 a, swarp_vec3 b) {
 }
 static swarp_vec3 unit(swarp_vec3 a) {
     double l = sqrt(dot(a, a));
+    if (!(l < INFINITY) || l < 1e-150) { /* a direction of 1e308 or 1e-300 is valid: the square
+                                                        overflowed to inf (mid = eye: a false finding) */
+        double m = fmax(fabs(a.x), fmax(fabs(a.y), fabs(a.z)));
+        if (m > 0 && m < INFINITY) a = v3(a.x / m, a.y / m, a.z / m), l = sqrt(dot(a, a));
+    }
     return l > 0 ? v3(a.x / l, a.y / l, a.z / l) : a;
 }
 /* rotate d toward a perpendicular by angle a */
@@ -779,7 +784,7 @@ static void e_poly_camera_common(swr_ctx* c, int range) {
     check_depths(c, &P, &s.cam, near, far, tol, "V");
     /* the point on the view axis halfway through is inside V */
     swarp_vec3 d = unit(s.cam.dir);
-    double zm = 0.5 * (near + far);
+    double zm = 0.5 * near + 0.5 * far; /* near + far overflows for near, far ~ 1e308 (valid) */
     swarp_vec3 mid = v3(s.cam.eye.x + zm * d.x, s.cam.eye.y + zm * d.y, s.cam.eye.z + zm * d.z);
     for (uint32_t f = 0; f < P.face_count && f < SWARP_POLY_MAX_FACES; ++f)
         SWR_CHECK_ACC(c, plane_at(&P.planes[f], mid) <= tol, "the view axis at depth %g is outside face %u", zm, f);
