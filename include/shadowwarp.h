@@ -864,7 +864,11 @@ typedef struct swarp_warp_info {
  *  @return SWARP_OK, SWARP_INFO_WARP_UNIFORM (n = inf: θ -> 0 or η = -1),
  *          SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE, SWARP_ERR_NEAR_FAR,
  *          SWARP_ERR_UNKNOWN_ENUM, SWARP_ERR_RESERVED_NONZERO,
- *          SWARP_ERR_OUT_OF_RANGE (n_user, pseudo fractions). */
+ *          SWARP_ERR_OUT_OF_RANGE (n_user, pseudo fractions),
+ *          SWARP_ERR_DEGENERATE (a point of B at w <= 0 under light_view, or
+ *          a warp that cannot be represented), SWARP_ERR_SINGULAR (a
+ *          light_view that is not a rigid look-at and not invertible; a
+ *          look-at is inverted exactly). */
 SWARP_API swarp_status swarp_warp_lispsm(const swarp_mat4* light_view, const swarp_camera* cam,
                                          double near, double far, const swarp_vec3* points,
                                          size_t count, const swarp_vec3* nearest,
