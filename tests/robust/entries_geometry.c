@@ -382,9 +382,10 @@ static void check_setup_result(swr_ctx* c, const scene_args* s, swarp_status st,
             if (-lv.z < r->light_near + 64 * DBL_EPSILON * lmag) continue;
         }
         if (!(q.w > 0)) {
-            /* KNOWN (docs/quality.md): a point light on the boundary of B (at
-             * the eye, on the near plane, on a face of a flat box) */
-            swr_known(c, "focus: point %zu of B has w = %g (point light %s)", i, q.w,
+            /* (finding 21/23 of docs/quality.md, fixed: a point light on the
+             * boundary of B -- at the eye, on the near plane, on a face of a
+             * flat box -- was a known problem until 2026-12-01) */
+            swr_fail(c, "focus: point %zu of B has w = %g (point light %s)", i, q.w,
                       s->light_at_eye ? "at the eye / near plane" : "on B's boundary");
             return;
         }
@@ -405,10 +406,10 @@ static void check_setup_result(swr_ctx* c, const scene_args* s, swarp_status st,
             tol = fmax(tol, 1e-6 + 64 * DBL_EPSILON * fmax(kx, ky));
         }
         if (!(fabs(x) <= 1 + tol && fabs(y) <= 1 + tol)) {
-            /* KNOWN (docs/quality.md, reported to the geometry stage): met at
-             * 1e5..1e6 offsets, lights (anti)parallel to the view, lights with
-             * a ~1e-17 component (grazing), near ~ far and 1e-15 frusta */
-            swr_known(c, "focus: point %zu of B maps to (%g, %g), outside [-1, 1]^2 (offset %g%s)", i, x, y, cmax,
+            /* (findings 2-3 of docs/quality.md, fixed: 1e5..1e6 offsets, lights
+             * (anti)parallel to the view, grazing lights, near ~ far and
+             * 1e-15 frusta were a known problem until 2026-12-01) */
+            swr_fail(c, "focus: point %zu of B maps to (%g, %g), outside [-1, 1]^2 (offset %g%s)", i, x, y, cmax,
                       s->degenerate_light ? ", light (anti)parallel" : "");
             return;
         }
@@ -457,12 +458,6 @@ static void e_setup_common(swr_ctx* c, int range) {
     if (st == SWARP_ERR_CAPACITY) { /* the needed count may be written */
         SWR_CHECK(c, swr_untouched(pts, sizeof pts) && swr_untouched(&r, sizeof r), "CAPACITY but outputs written");
         if (!n_cnt) SWR_CHECK(c, count > cap && count <= SWARP_BODY_MAX_POINTS, "CAPACITY with needed %zu, capacity %zu", count, cap);
-        swr_fill(&count, sizeof count);
-    }
-    if (swarp_status_is_error(st) && st != SWARP_ERR_CAPACITY && !n_cnt && !swr_untouched(&count, sizeof count)) {
-        /* KNOWN (docs/quality.md): *out_count written with an error */
-        swr_known(c, "%s wrote *out_count = %zu with %s", range ? "swarp_setup_range" : "swarp_setup", count,
-                  swarp_status_name(st));
         swr_fill(&count, sizeof count);
     }
     if (!swr_verdict(c, st, 3, (void*)&r, sizeof r, (void*)pts, sizeof pts, (void*)&count, sizeof count)) return;
@@ -616,10 +611,11 @@ static double box_scale(const swarp_aabb* b) { return fmax(vmax(b->min), vmax(b-
 /* tolerance of a geometric predicate on coordinates of magnitude s:
  * 1e-9 relative (the library merges vertices closer than 1e-12 s) */
 static double gtol(double s) { return 1e-9 * s + 1e-300; }
-/* KNOWN (docs/quality.md): a frustum 1e6 times wider than high (valid:
- * aspect > 0) reaches coordinates far tan(fovy/2) aspect, and the clips'
- * 1e-12-relative merge tolerance swallows the box: H, B and the receivers
- * come back with vertices outside S, behind the eye or off their faces */
+/* a frustum 1e6 times wider than high (valid: aspect > 0) reaches
+ * coordinates far tan(fovy/2) aspect: its clips sit on thresholds that the
+ * rounding decides, so the fenv test leaves it out (rounding_edge).  It was
+ * known problem 21 (H, B and the receivers outside S) until body_h built
+ * such an H as S clipped by V's planes (finding 31). */
 static int wide(const swarp_camera* cam) { return cam->aspect >= 1e6 || cam->aspect <= 1e-6; }
 
 /* A valid polyhedron (header: counts within the maxima, face indices valid,
@@ -649,18 +645,10 @@ static void check_poly(swr_ctx* c, const swarp_polyhedron* P, const char* what, 
             SWR_CHECK(c, v < P->vertex_count, "%s: face %u index %u", what, f, v);
             if (v >= P->vertex_count) continue;
             double dev = fabs(plane_at(pl, P->vertices[v]));
-            if (dev > tol && dev <= 1e3 * tol && !c->known_as) { /* KNOWN (docs/quality.md): faces planar to ~1e-8 only */
-                swr_known(c, "%s: vertex %u off face %u by %g (tol %g)", what, v, f, dev, tol);
-                continue;
-            }
             SWR_CHECK_ACC(c, dev <= tol, "%s: vertex %u off face %u by %g (tol %g)", what, v, f, dev, tol);
         }
         for (uint32_t v = 0; v < P->vertex_count; ++v) {
             double out = plane_at(pl, P->vertices[v]);
-            if (out > tol && out <= 1e3 * tol && !c->known_as) { /* KNOWN: the same 1e-8..1e-6-relative band */
-                swr_known(c, "%s: vertex %u outside face %u by %g (tol %g)", what, v, f, out, tol);
-                continue;
-            }
             SWR_CHECK_ACC(c, out <= tol, "%s: vertex %u outside face %u by %g (tol %g)", what, v, f, out, tol);
         }
     }
@@ -670,10 +658,6 @@ static void check_inside(swr_ctx* c, const swarp_polyhedron* P, const swarp_poly
     for (uint32_t f = 0; f < Q->face_count && f < SWARP_POLY_MAX_FACES; ++f)
         for (uint32_t v = 0; v < P->vertex_count && v < SWARP_POLY_MAX_VERTICES; ++v) {
             double out = plane_at(&Q->planes[f], P->vertices[v]);
-            if (out > tol && out <= 1e3 * tol && !c->known_as) { /* KNOWN: the faces' 1e-8..1e-6-relative band (check_poly) */
-                swr_known(c, "%s: vertex %u outside plane %u by %g (tol %g)", what, v, f, out, tol);
-                continue;
-            }
             SWR_CHECK_ACC(c, out <= tol, "%s: vertex %u outside plane %u by %g (tol %g)", what, v, f, out, tol);
         }
 }
@@ -935,7 +919,7 @@ static void e_poly_clip_common(swr_ctx* c, int with_box) {
     }
     double sc = fmax(poly_scale(&in), with_box ? box_scale(&box) : fabs(pn.d) / sqrt(pn.a * pn.a + pn.b * pn.b + pn.c * pn.c));
     double tol = gtol(sc);
-    if (wide(&s.cam)) c->rounding_edge = 1, c->known_as = "clip of a body of a frustum with aspect beyond 1e6 (not a valid input polyhedron)";
+    if (wide(&s.cam)) c->rounding_edge = 1;
     check_poly(c, &out, "clip", tol);
     check_inside(c, &out, &in, tol, "clip result in the input");
     if (with_box) {
@@ -986,35 +970,11 @@ static void e_body_h(swr_ctx* c) {
              s.box.min.x, s.box.min.y, s.box.min.z, s.box.max.x, s.box.max.y, s.box.max.z);
     if (!swr_done(c, SWR_CALL(c, swarp_body_h(pc, near, far, pb, po)))) return;
     double tol = gtol(fmax(box_scale(&s.box), vmax(s.cam.eye) + far)) + 64 * DBL_EPSILON * c->cond * near;
-    if (wide(&s.cam)) c->rounding_edge = 1, c->known_as = "H of a frustum with aspect beyond 1e6";
+    if (wide(&s.cam)) c->rounding_edge = 1;
     check_poly(c, &H, "H", tol);
     SWR_CHECK(c, H.vertex_count > 0, "H empty with %s", swarp_status_name(c->status));
     check_in_box(c, &H, &s.box, tol, "H in S");
     check_depths(c, &H, &s.cam, near, far, tol, "H in V");
-}
-
-/* a directional light with a component below 1e-12 of its length (but not
- * zero): almost parallel to a face of the box */
-static int grazing(const swarp_light* L) {
-    if (L->type == SWARP_LIGHT_POINT) return 0;
-    const double d[3] = {L->direction.x, L->direction.y, L->direction.z};
-    double m = vmax(L->direction);
-    for (int k = 0; k < 3; ++k)
-        if (d[k] != 0 && fabs(d[k]) < 1e-12 * m) return 1;
-    return 0;
-}
-
-/* a directional light with an exactly zero component: parallel to two faces of the box */
-static int axis_parallel(const swarp_light* L) {
-    return L->type != SWARP_LIGHT_POINT && (L->direction.x == 0 || L->direction.y == 0 || L->direction.z == 0);
-}
-/* a point light within 1e-4 (relative to the box) of one of its face planes */
-static int near_boundary(const scene_args* s) {
-    if (s->light.type != SWARP_LIGHT_POINT) return 0;
-    const swarp_vec3 *p = &s->light.position, *a = &s->box.min, *b = &s->box.max;
-    double e = 1e-4 * fmax(fmax(b->x - a->x, b->y - a->y), fmax(b->z - a->z, 1e-300));
-    return fabs(p->x - a->x) < e || fabs(p->x - b->x) < e || fabs(p->y - a->y) < e || fabs(p->y - b->y) < e ||
-           fabs(p->z - a->z) < e || fabs(p->z - b->z) < e;
 }
 
 static void e_body_from_h(swr_ctx* c) {
@@ -1035,12 +995,7 @@ static void e_body_from_h(swr_ctx* c) {
              s.box.min.z, s.box.max.x, s.box.max.y, s.box.max.z);
     if (!swr_done(c, SWR_CALL(c, swarp_body_from_h(ph, pl, pb, po)))) return;
     double tol = gtol(fmax(box_scale(&s.box), fmax(poly_scale(&H), vmax(s.light.position))));
-    if (grazing(&s.light)) c->known_as = "B of a grazing directional light";
-    else if (axis_parallel(&s.light)) c->known_as = "B of a directional light parallel to a box face (a zero component)";
-    else if (wide(&s.cam)) c->rounding_edge = 1, c->known_as = "B of a frustum with aspect beyond 1e6";
-    else if (near_boundary(&s)) c->known_as = "B of a point light within 1e-4 of the box's boundary";
-    else if (box_scale(&s.box) >= 1e6) c->known_as = "B at coordinates of 1e6 and more";
-    else if ((int)s.light.type == 2) c->known_as = "B of a point light: faces planar to 1e-2 only (full-size sweep)";
+    if (wide(&s.cam)) c->rounding_edge = 1;
     check_poly(c, &B, "B", tol);
     check_in_box(c, &B, &s.box, tol, "B in S");
     /* a directional or omni light: H (clipped to S) lies inside B */
@@ -1065,7 +1020,7 @@ static void e_body_receivers(swr_ctx* c) {
     swr_domain(c, SWARP_ERR_CAPACITY);
     if (!swr_done(c, SWR_CALL(c, swarp_body_receivers(ph, pl, po)))) return;
     double tol = gtol(fmax(poly_scale(&H), vmax(s.light.position)));
-    if (wide(&s.cam)) c->rounding_edge = 1, c->known_as = "receivers of a frustum with aspect beyond 1e6";
+    if (wide(&s.cam)) c->rounding_edge = 1;
     check_poly(c, &R, "receivers", tol);
     check_inside(c, &R, &H, tol, "receivers inside H");
     int t = (int)s.light.type;
@@ -1099,11 +1054,8 @@ static void e_body_adjusted_range(swr_ctx* c) {
         zlo = fmin(zlo, z), zhi = fmax(zhi, z);
     }
     double tol = gtol(fmax(box_scale(&s.box), vmax(s.cam.eye)) + s.cam.far);
-    if (wide(&s.cam)) c->rounding_edge = 1, c->known_as = "adjusted range of a frustum with aspect beyond 1e6";
-    if (n > f && n - f <= 1e-9 * (vmax(s.cam.eye) + s.cam.far)) /* KNOWN (docs/quality.md): a sliver at the box's face */
-        swr_known(c, "adjusted range [%.17g, %.17g]: near above far by %g", n, f, n - f);
-    else
-        SWR_CHECK(c, n > 0 && n <= f, "adjusted range [%.17g, %.17g]", n, f);
+    if (wide(&s.cam)) c->rounding_edge = 1;
+    SWR_CHECK(c, n > 0 && n <= f, "adjusted range [%.17g, %.17g]", n, f);
     SWR_CHECK_ACC(c, n >= s.cam.near - tol && f <= s.cam.far + tol, "adjusted [%.17g, %.17g] outside the camera's [%.17g, %.17g]",
                   n, f, s.cam.near, s.cam.far);
     SWR_CHECK_ACC(c, n >= zlo - tol && f <= zhi + tol, "adjusted [%.17g, %.17g] outside the box's depths [%.17g, %.17g]", n, f,
@@ -1329,8 +1281,6 @@ static void e_warp_lispsm(swr_ctx* c) {
     for (size_t i = 0; i < n; ++i) {
         swarp_vec4 l = xf(&L, pts[i]);
         swarp_vec4 q = xf(&P, v3(l.x / l.w, l.y / l.w, l.z / l.w));
-        if (q.w >= 0 && q.w < 1 - 1e-9)
-            c->known_as = "warp: w < 1 on B when n is below the rounding of light-space y (w = (y - y_min + n)/n loses the n)";
         SWR_CHECK_ACC(c, q.w >= 1 - 1e-9, "point %zu of B (%.17g %.17g %.17g) has w = %.17g under the warp (P w row %g %g %g %g; %s)", i,
                       pts[i].x, pts[i].y, pts[i].z, q.w, P.m[3], P.m[7], P.m[11], P.m[15], swarp_status_name(c->status));
     }
