@@ -1281,7 +1281,18 @@ static void e_warp_lispsm(swr_ctx* c) {
     for (size_t i = 0; i < n; ++i) {
         swarp_vec4 l = xf(&L, pts[i]);
         swarp_vec4 q = xf(&P, v3(l.x / l.w, l.y / l.w, l.z / l.w));
-        SWR_CHECK_ACC(c, q.w >= 1 - 1e-9, "point %zu of B (%.17g %.17g %.17g) has w = %.17g under the warp (P w row %g %g %g %g; %s)", i,
+        /* w is evaluated here in double through L and P: at 1e6 offsets
+         * with a strong warp (P's w row 5e4) the rounding of l alone moves w
+         * by 1e-5, and under directed rounding (the fenv test) those errors
+         * add up instead of cancelling.  The bound is the evaluation's
+         * condition number, 64 eps of it, as for every other check
+         * (swr_close_cond). */
+        double kw = fabs(P.m[15]);
+        for (int k = 0; k < 3; ++k)
+            kw += fabs(P.m[4 * k + 3]) * (fabs(L.m[k] * pts[i].x) + fabs(L.m[4 + k] * pts[i].y) +
+                                          fabs(L.m[8 + k] * pts[i].z) + fabs(L.m[12 + k]));
+        const double wtol = 1e-9 + 64 * DBL_EPSILON * kw;
+        SWR_CHECK_ACC(c, q.w >= 1 - wtol, "point %zu of B (%.17g %.17g %.17g) has w = %.17g under the warp (P w row %g %g %g %g; %s)", i,
                       pts[i].x, pts[i].y, pts[i].z, q.w, P.m[3], P.m[7], P.m[11], P.m[15], swarp_status_name(c->status));
     }
 }
