@@ -969,6 +969,12 @@ static void e_cascade_view_depth(swr_ctx* c) {
     ld ref = ((ld)p.x - cam.eye.x) * d.x + ((ld)p.y - cam.eye.y) * d.y + ((ld)p.z - cam.eye.z) * d.z;
     if (ref != 0) swr_cond(c, (vmax3(p) + vmax3(cam.eye)) / (double)fabsl(ref)); /* p - eye cancels */
     swr_close_abs(c, "view depth", z, ref, 1e-12, 8 * DBL_EPSILON * (vmax3(p) + vmax3(cam.eye)));
+    /* p exactly on the eye's plane (ref 0): the depth is resolved only to
+     * eps (|p| + |eye|) absolute, so 0 in one rounding mode and 3e-14 in
+     * another are the same answer; relative to z its condition number is
+     * (|p| + |eye|)/|z|.  Set after the absolute check above, which holds
+     * there and which a singular cond would waive. */
+    if (ref == 0 && z != 0) swr_cond(c, (vmax3(p) + vmax3(cam.eye)) / fabs(z));
 }
 
 /* p covered by the map: w > 0, |x|, |y| <= w, depth inside; -1 when too close to call */
