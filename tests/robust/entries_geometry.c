@@ -404,6 +404,14 @@ static void check_setup_result(swr_ctx* c, const scene_args* s, swarp_status st,
             double aw = fabs(q.w);
             double kx = (sx + fabs(x) * sw) / aw, ky = (sy + fabs(y) * sw) / aw;
             tol = fmax(tol, 1e-6 + 64 * DBL_EPSILON * fmax(kx, ky));
+            /* the same number is the outputs' conditioning: the fit's scale
+             * 2/E and translation come from light-space coordinates of B
+             * resolved to eps times their terms (kx/2 of them) over its
+             * extent E, e.g. a light grazing a flat 1e6-offset box (E 3e-9
+             * against terms of 8.5: matrix entries 2e9 that the rounding
+             * mode moves by 2e-6, fenv 10000 case 9020).  Raised after the
+             * product check above, which keeps its own tolerance. */
+            swr_cond(c, fmax(kx, ky));
         }
         if (!(fabs(x) <= 1 + tol && fabs(y) <= 1 + tol)) {
             /* (findings 2-3 of docs/quality.md, fixed: 1e5..1e6 offsets, lights
