@@ -101,8 +101,9 @@ static int sw_point_axis(const swarp_light* light, const swarp_vec3* pts, size_t
  * polygon's size at most, and far below any real difference in depth.
  * Depths relative to the eye (the points are camera-relative). */
 #define SW_NEAREST_TIE_REL 1e-6
-static int sw_nearest_vertex(const swarp_vec3* p, size_t n, swarp_vec3 eye, swarp_vec3 v, swarp_vec3* e) {
-    double zmin = INFINITY, zmax = -INFINITY, mag = 0.0;
+static int sw_nearest_vertex(const swarp_vec3* p, size_t n, swarp_vec3 eye, swarp_vec3 v, double world_mag,
+                             swarp_vec3* e) {
+    double zmin = INFINITY, zmax = -INFINITY, mag = world_mag;
     for (size_t i = 0; i < n; ++i) {
         swarp_vec3 q = sw_sub(p[i], eye);
         double z = sw_dot(q, v);
@@ -113,7 +114,11 @@ static int sw_nearest_vertex(const swarp_vec3* p, size_t n, swarp_vec3 eye, swar
     if (!(zmin <= zmax)) return 0;
     /* the depths carry rounding of eps times the coordinates' magnitude
      * (which exceeds the depth extent of a thin split): the band is 1e-6 of
-     * the larger of the two */
+     * the larger of the two.  The magnitude is the WORLD coordinates' (the
+     * caller's world_mag): p is camera-relative, but it was formed as
+     * world - eye and carries eps |world| of noise, not eps |p| (fenv test,
+     * cascade_setup case 8336: a scene at 3e6 with a band of 1.6e-4 moved
+     * e by 4e-6 of the polygon with the rounding mode). */
     double band = SW_NEAREST_TIE_REL * fmax(zmax - zmin, mag);
     swarp_vec3 acc = {0, 0, 0};
     double wsum = 0.0;
@@ -282,7 +287,8 @@ static swarp_status sw_setup_points(const swarp_camera* cam, const swarp_light* 
     if (o->center == SWARP_WARP_CENTER_NEAREST_VERTEX) { /* only the WS06 centre uses it */
         const swarp_vec3* src = H ? H : B;
         size_t ns = H ? nh : nb;
-        if (sw_nearest_vertex(src, ns, cam->eye, v, &e_near)) ep = &e_near;
+        const double world_mag = fmax(fabs(eye.x), fmax(fabs(eye.y), fabs(eye.z)));
+        if (sw_nearest_vertex(src, ns, cam->eye, v, world_mag, &e_near)) ep = &e_near;
     }
     swarp_setup_result res;
     memset(&res, 0, sizeof res);
