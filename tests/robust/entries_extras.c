@@ -206,6 +206,21 @@ static void e_cube_lookup(swr_ctx* c) {
     if (ps) swr_rec(c, "S", S.x), swr_rec(c, "S", S.y), swr_rec(c, "S", S.z);
     if (pd) swr_rec(c, "depth", depth);
     if (!a.valid || arg < 0 || !(amax > 0)) return;
+    {
+        /* the depth alpha + beta/a ([KOZ] Listing 14-1's projective transform
+         * of a, units of d = 1) moves by |beta/a| times a's relative error;
+         * a = (u . N)/d carries that of u = V - P and d = 1 - P . N (P = xyz/w
+         * rounded in the caller's mode).  For Z_1 near 1, |beta| ~ 2/(1 - Z_1)
+         * while the depth is O(1): e.g. Z_1 = 1 - 1e-9 and a = 1 + 1e-12 give
+         * terms of 2e9 cancelling to 1.002, which the rounding mode moves by
+         * 5e-7 -- the conditioning of the result, not a library loss (no
+         * formula avoids it: the depth's derivative in a is beta/a^2) */
+        double z1c = a.use_o && a.o.z1 != 0 ? a.o.z1 : 0.01, pm = fabs(a.P[0]) + fabs(a.P[1]) + fabs(a.P[2]);
+        double beta = a.L.w < 0 ? z1c : 2 * z1c / (1 - z1c); /* |beta|, [-1, 1] (twice the [0, 1] one) */
+        double un = amax * a.d[arg], vm = fabs(V.x) + fabs(V.y) + fabs(V.z);
+        double ka = (vm + pm) / fabs(un) + (1 + pm) / a.d[arg]; /* a's relative condition */
+        swr_cond(c, 1 + beta / amax * ka);
+    }
     /* S on the unit cube's surface, on the chosen face; S = P + u/a */
     /* the reference S = P + u/a in long double: with a component of V near
      * DBL_MAX, a = (u . N)/d overflows in double (amax = inf, u/amax = 0)
