@@ -795,8 +795,10 @@ SWARP_API swarp_status swarp_focus_light_view(const swarp_camera* cam, const swa
  *                        extent as its width, or, all flat, width 1 (1e-6
  *                        of the coordinates beyond 1e6) (status).
  *  @return SWARP_OK, SWARP_INFO_FLAT_EXTENT (an extent was zero),
- *          SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE, SWARP_ERR_UNKNOWN_ENUM,
- *          SWARP_ERR_DEGENERATE (a point maps to w <= 0). */
+ *          SWARP_ERR_NULL_POINTER, SWARP_ERR_INVALID_ARGUMENT (count 0, or
+ *          z_points given with z_count 0), SWARP_ERR_NON_FINITE,
+ *          SWARP_ERR_UNKNOWN_ENUM, SWARP_ERR_DEGENERATE (a point maps to
+ *          w <= 0). */
 SWARP_API swarp_status swarp_focus_fit(const swarp_mat4* m, const swarp_vec3* points, size_t count,
                                        const swarp_vec3* z_points, size_t z_count,
                                        swarp_depth_range depth_range, swarp_mat4* out_A_fit);
@@ -2465,7 +2467,9 @@ SWARP_API swarp_status swarp_cube_faces(const swarp_vec4* ps_light, const swarp_
  *  @param[out] out_depth NDC depth in opt->depth_range (may be NULL)
  *  @return SWARP_OK; SWARP_INFO_CUBE_NEAR_CLIPPED (a < Z_1: inside the near
  *  cube, the depth is outside the range); the errors of swarp_cube_faces
- *  (but not CAPACITY); SWARP_ERR_CUBE_POINT_UNCOVERED (a <= 0). */
+ *  (but not CAPACITY); SWARP_ERR_CUBE_POINT_UNCOVERED (a <= 0);
+ *  SWARP_ERR_OVERFLOW (S or the depth not representable: a light within
+ *  ~1e-300 of w = 0 or a point near DBL_MAX). */
 SWARP_API swarp_status swarp_cube_lookup(const swarp_vec4* ps_light, const swarp_cube_options* opt,
                                          const swarp_vec3* ps_point, uint32_t* out_face,
                                          swarp_vec3* out_texcoord, double* out_depth);

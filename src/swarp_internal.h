@@ -94,6 +94,14 @@ static inline double sw_len(swarp_vec3 a) { return hypot(hypot(a.x, a.y), a.z); 
 /* Returns 0 (and leaves *out alone) for a zero or non-finite vector. */
 static inline int sw_normalize(swarp_vec3 a, swarp_vec3* out) {
     double l = sw_len(a);
+    if (l == INFINITY && sw_finite3(&a)) {
+        /* a finite vector whose length overflows (components near DBL_MAX)
+         * is a valid direction: divided by its largest component first
+         * (exact up to one rounding; was ZERO_VECTOR, finding 20) */
+        const double m = fmax(fabs(a.x), fmax(fabs(a.y), fabs(a.z)));
+        a = sw_v3(a.x / m, a.y / m, a.z / m);
+        l = sw_len(a);
+    }
     if (!(l > 0.0) || !sw_finite(l)) return 0;
     /* divide, not multiply by 1/l: for a subnormal length 1/l overflows */
     swarp_vec3 n = sw_v3(a.x / l, a.y / l, a.z / l);

@@ -72,6 +72,12 @@ START_TEST(bias_valid_against_orthographic_closed_form) {
         ck_assert_int_eq(swarp_bias_normal_offset(&m, &l, &p, &N, 1.5, &q, &amount), SWARP_OK);
         ck_assert(tu_rel(amount, 1.5 * (W / 512.0) * (1.0 - 0.5)) < 1e-12);
         ck_assert(fabs(q.x - (p.x + amount * N.x)) < 1e-12);
+        /* the same normal scaled to DBL_MAX: |N| overflows but N is a valid
+         * direction (finding 20: was SWARP_ERR_ZERO_VECTOR) */
+        const swarp_vec3 Nhuge = {0.95 * DBL_MAX, 0.95 * DBL_MAX * (N.y / N.x), 0.0}; /* |N| = 1.1 DBL_MAX */
+        double amount_huge = SENTINEL;
+        ck_assert_int_eq(swarp_bias_normal_offset(&m, &l, &p, &Nhuge, 1.5, &q, &amount_huge), SWARP_OK);
+        ck_assert(tu_rel(amount_huge, amount) < 1e-12 && fabs(q.x - (p.x + amount * N.x)) < 1e-12);
         /* back-facing normal: N.L clamped to 0, informational status */
         swarp_vec3 Nb = {0.0, -1.0, 0.0};
         ck_assert_int_eq(swarp_bias_normal_offset(&m, &l, &p, &Nb, 1.0, &q, NULL), SWARP_INFO_BACKFACING);

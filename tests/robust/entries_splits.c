@@ -617,10 +617,8 @@ static int expect_map_fields(swr_ctx* c, const swarp_bias_map* m) {
 static int expect_map(swr_ctx* c, const bias_args* b) {
     const swarp_bias_map* m = &b->map;
     int ok = 1;
-    /* FINDING (docs/quality.md): a normal whose length overflows (components
-     * near DBL_MAX) is refused with SWARP_ERR_ZERO_VECTOR (sw_normalize
-     * takes the length before scaling) */
-    if (fin3(&b->normal) && vmax3(b->normal) > 1e300) swr_domain(c, SWARP_ERR_ZERO_VECTOR);
+    /* a normal whose length overflows (components near DBL_MAX) is a valid
+     * direction (it was refused with ZERO_VECTOR until finding 20 was fixed) */
     ok = expect_map_fields(c, m);
     if (!fin3(&b->p)) swr_expect(c, SWARP_ERR_NON_FINITE), ok = 0;
     if (ok) {
