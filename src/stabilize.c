@@ -242,23 +242,32 @@ SWARP_API swarp_status swarp_stabilize_directional(const swarp_camera* cam, doub
             const double t = sw_dot(sw_sub(q, O), d);
             if (t < t_min) t_min = t;
         }
+    double dt = t_max - t_min, t_sum = t_max + t_min;
     if (!(t_max > t_min)) {
         /* A body flat across the light: give depth one texel either side. */
-        t_min -= rep.texel_size_x;
-        t_max += rep.texel_size_x;
+        const double t = t_min, half = rep.texel_size_x;
+        t_min = t - half;
+        t_max = t + half;
+        /* extent and sum from t and the texel, not from the rounded t -+
+         * texel: with the texel far below |t| (a split at a 1e6 offset) that
+         * difference carried ulp(t)/texel of relative error, whose sign and
+         * size the caller's rounding mode decided (fenv sweep) */
+        dt = 2.0 * half;
+        t_sum = 2.0 * t;
         /* a texel below the ulp of t (a tiny split far from the origin) is
          * absorbed: step one ulp at least, so that t_max - t_min > 0 */
-        if (!(t_max > t_min)) {
-            t_min = nextafter(t_min, -INFINITY);
-            t_max = nextafter(t_max, INFINITY);
+        if (!(t_max > t_min) || !(t_min < t) || !(t_max > t)) {
+            t_min = nextafter(t, -INFINITY);
+            t_max = nextafter(t, INFINITY);
+            dt = t_max - t_min;
+            t_sum = t_max + t_min;
         }
     }
 
     /* clip = A_fit-style scale/translate of light coordinates ([RHS] (3.1)) */
     const int zero_one = (o.depth == SWARP_DEPTH_ZERO_TO_ONE);
-    const double dt = t_max - t_min;
     const double za = zero_one ? 1.0 / dt : 2.0 / dt;
-    const double zb = zero_one ? -t_min / dt : -(t_max + t_min) / dt;
+    const double zb = zero_one ? -t_min / dt : -t_sum / dt;
     swarp_mat4 m;
     sw_identity(&m);
     const swarp_vec3 rows[3] = {sw_scale(u, 1.0 / hx), sw_scale(v, 1.0 / hy), sw_scale(d, za)};

@@ -3,6 +3,7 @@
  * docs/quality.md "Findings"): EVSM's documented exponent status on
  * overflow, and Lloyd's minimum split gap far from the origin. */
 #include <check.h>
+#include <fenv.h>
 #include <float.h>
 #include <math.h>
 #include <stdint.h>
@@ -218,6 +219,34 @@ START_TEST(lvsm_layer_uniform_subnormal_range) {
 }
 END_TEST
 
+/* fenvc pass: the transition weight w = (t - (s - band)) / (2 band) rounded
+ * s - band at the magnitude of s: with band below an ulp of s and t = s the
+ * weight was 0 under round-to-nearest and 1 under FE_DOWNWARD (fenv case
+ * 7332); the exact value is 1/2 in every rounding mode. */
+START_TEST(lvsm_transition_rounding_mode) {
+    static const int modes[] = {FE_TONEAREST, FE_UPWARD, FE_DOWNWARD, FE_TOWARDZERO};
+    const double s[3] = {1.0, 2.0, 3.0};
+    for (size_t k = 0; k < 4; ++k) {
+        uint32_t lo = 9, hi = 9;
+        double w = SENTINEL, w2 = SENTINEL;
+        fesetround(modes[k]);
+        swarp_status st = swarp_lvsm_transition(2.0, s, 2, 1e-69, &lo, &hi, &w);
+        /* band 1e-9 next to s = 0.5 (case 3626 shape): t = s - band exactly
+         * representable to an ulp of 0.5, the weight within 1e-6 of 0 */
+        const double s2[3] = {0.25, 0.5, 0.75};
+        uint32_t lo2, hi2;
+        swarp_status st2 = swarp_lvsm_transition(0.5 - 0x1p-30, s2, 2, 0x1p-30, &lo2, &hi2, &w2);
+        fesetround(FE_TONEAREST);
+        ck_assert_int_eq(st, SWARP_OK);
+        ck_assert_uint_eq(lo, 0);
+        ck_assert_uint_eq(hi, 1);
+        ck_assert_msg(w == 0.5, "mode %zu: w = %.17g, want 1/2", k, w);
+        ck_assert_int_eq(st2, SWARP_OK);
+        ck_assert_msg(w2 == 0.0, "mode %zu: w = %.17g, want 0", k, w2);
+    }
+}
+END_TEST
+
 int main(void) {
     Suite* s = suite_create("edges_filter");
     TCase* t = tcase_create("findings");
@@ -232,6 +261,10 @@ int main(void) {
     tcase_add_test(t, vsm_chebyshev_ratio_form);
     tcase_add_test(t, evsm_visibility_huge_floor);
     tcase_add_test(t, lvsm_layer_uniform_subnormal_range);
+    suite_add_tcase(s, t);
+    /* fenvc pass */
+    t = tcase_create("fenvc");
+    tcase_add_test(t, lvsm_transition_rounding_mode);
     suite_add_tcase(s, t);
     return tu_run_suite(s) ? 1 : 0;
 }

@@ -916,6 +916,42 @@ START_TEST(fenvb_bias_normal_offset_facing_light_rounding_mode) {
 }
 END_TEST
 
+/* fenva: a one-point body (flat across the light) at a 1e6 offset: the depth
+ * row's zb = -(t_max + t_min)/dt came from dt = (t + texel) - (t - texel),
+ * which carried ulp(t)/texel ~ 1e-8 of relative error, its sign set by the
+ * caller's rounding mode (robust_fenv 10000, swarp_stabilize_directional case
+ * 6739); now the same to 1e-13 in every mode. */
+START_TEST(fenva_stabilize_directional_flat_body_rounding) {
+    swarp_camera cam;
+    memset(&cam, 0, sizeof cam);
+    cam.eye = (swarp_vec3){999996.0, 7.26264, 999990.0};
+    cam.dir = (swarp_vec3){-0.788473, -0.189227, -1.0};
+    cam.up = (swarp_vec3){0, 1, 0};
+    cam.fovy = 1.66128;
+    cam.aspect = 2.90524;
+    const swarp_vec3 ld = {-0.612436, -0.14698, -0.776736};
+    const swarp_vec3 body[1] = {{999000.123, 3.7, 998000.456}};
+    swarp_stabilize_options o;
+    memset(&o, 0, sizeof o);
+    o.mode = SWARP_STABILIZE_LEVELS;
+    o.levels = 159;
+    o.origin = (swarp_vec3){-73917.4, 0, 0};
+    o.level_max_size = 4639.08;
+    const double n = 1.2384527511974723, f = 4294.3381544657286;
+    swarp_mat4 m0, m;
+    swarp_status st0 = swarp_stabilize_directional(&cam, n, f, &ld, body, 1, NULL, 6357, &o, &m0, NULL);
+    ck_assert(!swarp_status_is_error(st0));
+    static const int modes[] = {FE_UPWARD, FE_DOWNWARD, FE_TOWARDZERO};
+    for (int k = 0; k < 3; ++k) {
+        fesetround(modes[k]);
+        swarp_status st = swarp_stabilize_directional(&cam, n, f, &ld, body, 1, NULL, 6357, &o, &m, NULL);
+        fesetround(FE_TONEAREST);
+        ck_assert_int_eq(st, st0);
+        for (int i = 0; i < 16; ++i) ck_assert_double_eq_tol(m.m[i], m0.m[i], 1e-13 * fmax(1.0, fabs(m0.m[14])));
+    }
+}
+END_TEST
+
 int main(void) {
     Suite* s = suite_create("edges_splits");
     TCase* t = tcase_create("bias");
@@ -940,6 +976,8 @@ int main(void) {
     tcase_add_test(t, planfix_receiver_plane_subnormal_resolution);
     tcase_add_test(t, planfix_depth_per_world_far_point);
     tcase_add_test(t, planfix_stabilize_sphere_subnormal_range);
+    /* fenva pass */
+    tcase_add_test(t, fenva_stabilize_directional_flat_body_rounding);
     suite_add_tcase(s, t);
     /* fenvb pass */
     t = tcase_create("fenvb");

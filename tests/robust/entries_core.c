@@ -1082,7 +1082,15 @@ static void e_split_scheme(swr_ctx* c, int kind) {
     /* [n, f] (or [n_p, f_p]) too narrow for m distinct doubles */
     double width = a.f - a.n, ulp_f = nextafter(a.f, INFINITY) - a.f;
     if (kind == SCH_PSEUDO && a.f_p - a.n_p < width) width = a.f_p - a.n_p;
-    if (swr_isfin(width) && width <= 64.0 * (a.m + 1.0) * ulp_f) swr_allow(c, SWARP_ERR_DEGENERATE);
+    if (swr_isfin(width) && width <= 64.0 * (a.m + 1.0) * ulp_f) {
+        swr_allow(c, SWARP_ERR_DEGENERATE);
+        /* the documented "[n, f] too narrow for m distinct splits" threshold
+         * (src/split.c, strict increase of C_i): with C_i a few ulp apart,
+         * whether a rounded C_i lands on its neighbour is decided by the
+         * rounding mode (fenv case 2336: n, f 2 ulp apart, m = 2, DEGENERATE
+         * under every directed mode) -- a legitimate rounding edge */
+        c->rounding_edge = 1;
+    }
     /* log-spaced splits over a subnormal [n, f] (n (f/n)^(i/m)) can be closer
      * than the DBL_TRUE_MIN spacing there although [n, f] is wide: two
      * consecutive references within 2 DBL_TRUE_MIN (the library's rounding

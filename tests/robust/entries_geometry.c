@@ -404,6 +404,14 @@ static void check_setup_result(swr_ctx* c, const scene_args* s, swarp_status st,
             double aw = fabs(q.w);
             double kx = (sx + fabs(x) * sw) / aw, ky = (sy + fabs(y) * sw) / aw;
             tol = fmax(tol, 1e-6 + 64 * DBL_EPSILON * fmax(kx, ky));
+            /* the same number is the outputs' conditioning: the fit's scale
+             * 2/E and translation come from light-space coordinates of B
+             * resolved to eps times their terms (kx/2 of them) over its
+             * extent E, e.g. a light grazing a flat 1e6-offset box (E 3e-9
+             * against terms of 8.5: matrix entries 2e9 that the rounding
+             * mode moves by 2e-6, fenv 10000 case 9020).  Raised after the
+             * product check above, which keeps its own tolerance. */
+            swr_cond(c, fmax(kx, ky));
         }
         if (!(fabs(x) <= 1 + tol && fabs(y) <= 1 + tol)) {
             /* (findings 2-3 of docs/quality.md, fixed: 1e5..1e6 offsets, lights
@@ -1348,6 +1356,34 @@ SWR_WEAK(swarp_cascade_setup)
  * C_0 = view_near < C_1 < ... < C_m = view_far, each split's [near, far] =
  * [C_i, C_{i+1}], the configuration's maxima = the largest split maxima,
  * finite matrices, tiles inside the atlas. */
+/* The conditioning of a split's map: at the world points the map sends to
+ * its corners, edge midpoints and centre (clip x, y in {-1, 0, 1}, depth 0
+ * and 0.5), the terms of each clip coordinate over |w|.  The fit's scale and
+ * translation come from light-space coordinates resolved to eps of such
+ * terms against B's extent, so this is the condition number of the matrix
+ * elements (a split at a 3e6 offset, a light grazing a flat box). */
+static double split_map_cond(const swarp_mat4* m) {
+    swarp_mat4 inv;
+    if (swarp_status_is_error(swarp_mat4_invert(m, &inv))) return 0;
+    double k = 0;
+    for (int i = 0; i < 18; ++i) {
+        double hx = i % 3 - 1.0, hy = (i / 3) % 3 - 1.0, hz = i < 9 ? 0.0 : 0.5;
+        double h[4];
+        for (int r = 0; r < 4; ++r) h[r] = inv.m[r] * hx + inv.m[4 + r] * hy + inv.m[8 + r] * hz + inv.m[12 + r];
+        if (!(h[3] != 0)) continue;
+        swarp_vec3 p = v3(h[0] / h[3], h[1] / h[3], h[2] / h[3]);
+        if (!fin3(&p)) continue;
+        swarp_vec4 q = xf(m, p);
+        if (!(fabs(q.w) > 0)) continue;
+        double sw = fabs(m->m[3] * p.x) + fabs(m->m[7] * p.y) + fabs(m->m[11] * p.z) + fabs(m->m[15]);
+        for (int row = 0; row < 3; ++row) {
+            double sr = fabs(m->m[row] * p.x) + fabs(m->m[4 + row] * p.y) + fabs(m->m[8 + row] * p.z) + fabs(m->m[12 + row]);
+            k = fmax(k, (sr + sw) / fabs(q.w));
+        }
+    }
+    return k;
+}
+
 static void e_cascade_setup(swr_ctx* c) {
     SKIP_IF_MISSING(c, swarp_cascade_setup);
     scene_args s;
@@ -1442,6 +1478,10 @@ static void e_cascade_setup(swr_ctx* c) {
                          q->tile.viewport_y + q->tile.viewport_height <= atlas,
                   "tile %u outside the atlas", i);
     }
+    /* raised after the checks, for the fenv comparison (fenv 10000 cases
+     * 3054, 3719, 8336: matrix translations moved 1e-6..5e-4 of the outputs
+     * by the rounding mode, within this conditioning) */
+    for (uint32_t i = 0; i < K; ++i) swr_cond(c, split_map_cond(&sp[i].matrix));
     /* the configuration's maxima are the largest of the splits' */
     SWR_CHECK(c, r.max_mx == mx && r.max_mz == mz, "max_mx %.17g max_mz %.17g, splits' %.17g %.17g", r.max_mx, r.max_mz, mx, mz);
     if (K < SWARP_CASCADE_MAX_SPLITS) SWR_CHECK(c, swr_untouched(sp + K, sizeof sp - K * sizeof sp[0]), "wrote past count");

@@ -180,6 +180,18 @@ static void gen_scene(swr_ctx* c, const viewer* v, swarp_light* L, swarp_plane* 
     P->b = nrm.y;
     P->c = nrm.z;
     P->d = -dot(nrm, on);
+    /* the same degeneracy when an offset above came out 0 (the generator
+     * favours 0) and the normal is an axis: P then contains the eye to
+     * within the rounding of its d, and PLANE_THROUGH_EYE (LX_EYE_EPS) is
+     * decided by the rounding of V^-1 at the eye's magnitude (fenv cases
+     * 2076, 2555, 6936: eye ~1e5..1e6, THROUGH_EYE under round-to-nearest,
+     * NOT_VISIBLE / LIGHT_PARALLEL_PLANE / LIGHT_ON_PLANE under directed) */
+    {
+        long double e = (long double)nrm.x * v->eye.x + (long double)nrm.y * v->eye.y + (long double)nrm.z * v->eye.z;
+        long double m = fabsl((long double)nrm.x * v->eye.x) + fabsl((long double)nrm.y * v->eye.y) +
+                        fabsl((long double)nrm.z * v->eye.z);
+        if (fabsl(e + P->d) <= 4 * DBL_EPSILON * m) c->rounding_edge = 1;
+    }
     L->type = (swarp_light_type)swr_enum(c, 3);
     L->direction = gen_dir(c);
     if (swr_one_in(c, 8)) { /* maybe parallel to P */
@@ -256,8 +268,9 @@ static void e_lixel_matrix(swr_ctx* c) {
     swarp_lixel_info info;
     swr_fill(&M, sizeof M);
     swr_fill(&info, sizeof info);
-    swr_args(c, "eye=(%.17g %.17g %.17g) light type %d plane (%g %g %g %g) g=%u h=%u", v.eye.x, v.eye.y, v.eye.z,
-             (int)L.type, P.a, P.b, P.c, P.d, g, h);
+    swr_args(c, "eye=(%.17g %.17g %.17g) dir=(%.17g %.17g %.17g) fovy %.17g aspect %.17g near %.17g far %.17g light type %d dir=(%.17g %.17g %.17g) pos=(%.17g %.17g %.17g) plane (%.17g %.17g %.17g %.17g) g=%u h=%u",
+             v.eye.x, v.eye.y, v.eye.z, v.dir.x, v.dir.y, v.dir.z, v.fovy, v.aspect, v.near, v.far, (int)L.type,
+             L.direction.x, L.direction.y, L.direction.z, L.position.x, L.position.y, L.position.z, P.a, P.b, P.c, P.d, g, h);
     swarp_status st = SWR_CALL(c, swarp_lixel_matrix(n_mv ? NULL : &v.M_v, g, h, n_l ? NULL : &L, n_p ? NULL : &P,
                                                     use_opt ? &opt : NULL, n_out ? NULL : &M, n_info ? NULL : &info));
     if (st == SWARP_INFO_LIXEL_ILL_CONDITIONED || st == SWARP_ERR_LIXEL_COPLANAR) c->rounding_edge = 1;

@@ -967,6 +967,12 @@ static void e_cascade_view_depth(swr_ctx* c) {
     ld ref = ((ld)p.x - cam.eye.x) * d.x + ((ld)p.y - cam.eye.y) * d.y + ((ld)p.z - cam.eye.z) * d.z;
     if (ref != 0) swr_cond(c, (vmax3(p) + vmax3(cam.eye)) / (double)fabsl(ref)); /* p - eye cancels */
     swr_close_abs(c, "view depth", z, ref, 1e-12, 8 * DBL_EPSILON * (vmax3(p) + vmax3(cam.eye)));
+    /* p exactly on the eye's plane (ref 0): the depth is resolved only to
+     * eps (|p| + |eye|) absolute, so 0 in one rounding mode and 3e-14 in
+     * another are the same answer; relative to z its condition number is
+     * (|p| + |eye|)/|z|.  Set after the absolute check above, which holds
+     * there and which a singular cond would waive. */
+    if (ref == 0 && z != 0) swr_cond(c, (vmax3(p) + vmax3(cam.eye)) / fabs(z));
 }
 
 /* p covered by the map: w > 0, |x|, |y| <= w, depth inside; -1 when too close to call */
@@ -1161,6 +1167,15 @@ static void e_stabilize_snap_matrix(swr_ctx* c) {
         SWR_CHECK_ACC(c, fabsl(shift) <= fabsl((ld)w) / res[a] * (1 + 1e-9L) + 16 * DBL_EPSILON * hmag, "axis %d: shifted by %Lg > half a texel", a,
                       shift);
         SWR_CHECK_ACC(c, fabsl(u - roundl(u)) <= 1e-6L + 8 * DBL_EPSILON * lin, "axis %d: the origin at texel %.17Lg, not a corner", a, u);
+        /* The translation's shift is round(s) - s of the origin's clip x, a
+         * sum of terms of magnitude hmag: its inputs resolve it to eps hmag
+         * (absolute), so under another rounding mode the snapped translation
+         * moves by that much -- at a 1e6 offset with a 1e-2 scale ~1e-4 of a
+         * texel, 1e-7..1e-4 of the outputs.  Its condition number relative to
+         * the largest output is hmag / max|out|. */
+        double omax = 0;
+        for (int i = 0; i < 16; ++i) omax = fmax(omax, fabs(out.m[i]));
+        if (omax > 0) swr_cond(c, (double)hmag / omax);
     }
 }
 

@@ -25,6 +25,7 @@
  * numerically singular (condition number > 1/(64 eps)); those are counted.
  * The largest relative difference seen per mode is printed (docs/quality.md).
  *   fenv [K]        default 2000 cases per entry point
+ *   SWARP_FENV_ENTRY=swarp_xxx, SWARP_FENV_CASE=J   only that entry point, only case J
  */
 #define _POSIX_C_SOURCE 200809L
 #include <fenv.h>
@@ -92,8 +93,11 @@ int main(int argc, char** argv) {
     unsigned long extreme = 0, singular = 0, rounding_edge = 0, fails = 0, compared[8] = {0}, entries = 0;
     for (size_t k = 0; k < swr_entry_count(); ++k) {
         const swr_entry* e = swr_entry_at(k);
+        const char* only = getenv("SWARP_FENV_ENTRY"); /* one entry point (debugging) */
+        if (only && strcmp(only, e->name) != 0) continue;
         int used = 0;
         for (unsigned long j = 0; j < per; ++j) {
+            if (getenv("SWARP_FENV_CASE") && j != strtoul(getenv("SWARP_FENV_CASE"), NULL, 0)) continue; /* one case (debugging) */
             swr_run_seeded(e, base, 0xFE5Eull, j);
             if (base->skipped) break;
             used = 1;
