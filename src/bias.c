@@ -179,7 +179,18 @@ SWARP_API swarp_status swarp_bias_normal_offset(const swarp_bias_map* map, const
     sw_bias_frame fr;
     swarp_status st = sw_bias_prep_normal(map, light, p, normal, &fr);
     if (st != SWARP_OK) return st;
-    const double amount = k * fr.L_texel * (1.0 - fr.ndl);
+    /* 1 - N.L as |N - L|^2 / 2 (both unit): N = L (a normal facing the
+     * light) gives 0 exactly in every rounding mode, where 1 - N.L left
+     * 1 - |N|^2, an ulp or two whose sign the caller's rounding mode chose,
+     * times k L_texel (robust_fenv: k = 1e95 moved p' by 1e79).  Its error
+     * is eps |N - L| instead of eps: better near N = L, the same elsewhere. */
+    double one_minus_ndl = 1.0;
+    if (!fr.back) {
+        const swarp_vec3 D = sw_sub(fr.N, fr.L);
+        one_minus_ndl = 0.5 * sw_dot(D, D);
+        if (one_minus_ndl > 1.0) one_minus_ndl = 1.0;
+    }
+    const double amount = k * fr.L_texel * one_minus_ndl;
     swarp_vec3 q = sw_add(*p, sw_scale(fr.N, amount));
     if (!sw_finite(amount) || !sw_finite3(&q)) return SWARP_ERR_NON_FINITE;
     *out_p = q;

@@ -68,30 +68,32 @@ static swarp_status sw_cube_setup_make(const swarp_vec4* L, const swarp_cube_opt
     return SWARP_OK;
 }
 
-/* Near and far of face i in world units of post-projective space:
- * regular Z_n = Z_1, Z_f = 1; inverse Z_n = -Z_1, Z_f = Z_1 (times d_i). */
-static void sw_cube_near_far(const sw_cube_setup* s, double d, double* near, double* far) {
+/* NDC depth of a point at face-eye depth e (> 0 in front of the camera):
+ * z_ndc = alpha + beta / e with the near plane at -1 (or 0) and far at 1.
+ * In ratio form, with n and f the multiples Z_n/Z_f of d: alpha depends on
+ * Z_1 only and beta = bd d.  The textbook (f + n)/(f - n) with n = Z_1 d
+ * rounded first lost up to eps/(1 - Z_1) of alpha (f - n cancels for Z_1
+ * near 1), a loss the caller's rounding mode decided (robust_fenv: alpha
+ * ~ 2e9 moved by 2e-7 relative between FE_UPWARD and the default); here
+ * 1 - Z_1 is exact for Z_1 >= 1/2 (Sterbenz) and alpha, bd carry a few eps.
+ *   regular  n = Z_1, f = 1:  alpha = (1 + Z_1)/(1 - Z_1), bd = -2 Z_1/(1 - Z_1)
+ *                             ([0, 1]: 1/(1 - Z_1), -Z_1/(1 - Z_1))
+ *   inverse  n = -Z_1, f = Z_1: alpha = 0, bd = Z_1  ([0, 1]: 1/2, Z_1/2) */
+static void sw_cube_depth_ratio(const sw_cube_setup* s, double* alpha, double* bd) {
+    const double z1 = s->z1;
     if (s->inverse) {
-        *near = -s->z1 * d;
-        *far = s->z1 * d;
+        *alpha = s->zero_to_one ? 0.5 : 0.0;
+        *bd = s->zero_to_one ? 0.5 * z1 : z1;
     } else {
-        *near = s->z1 * d;
-        *far = d;
+        const double m = 1.0 - z1;
+        *alpha = s->zero_to_one ? 1.0 / m : (1.0 + z1) / m;
+        *bd = s->zero_to_one ? -z1 / m : -2.0 * z1 / m;
     }
 }
-
-/* NDC depth of a point at face-eye depth e (> 0 in front of the camera):
- * z_ndc = alpha + beta / e with the near plane at -1 (or 0) and far at 1. */
 static void sw_cube_depth_coeffs(const sw_cube_setup* s, double d, double* alpha, double* beta) {
-    double n, f;
-    sw_cube_near_far(s, d, &n, &f);
-    if (s->zero_to_one) {
-        *beta = n * f / (n - f);
-        *alpha = f / (f - n);
-    } else {
-        *beta = 2.0 * n * f / (n - f);
-        *alpha = (f + n) / (f - n);
-    }
+    double bd;
+    sw_cube_depth_ratio(s, alpha, &bd);
+    *beta = bd * d;
 }
 
 static void sw_cube_face_make(const sw_cube_setup* s, int i, swarp_cube_face* F) {
@@ -124,7 +126,30 @@ static void sw_cube_face_make(const sw_cube_setup* s, int i, swarp_cube_face* F)
     sw_set(Pm, 1, 1, d), sw_set(Pm, 1, 2, -sw_dot(U, s->P));
     sw_set(Pm, 2, 2, -alpha), sw_set(Pm, 2, 3, beta);
     sw_set(Pm, 3, 2, -1.0);
-    sw_mul(Pm, V, &F->view_proj);
+    /* view_proj = proj view in closed form (R, U, Z are axis vectors, so
+     * every entry is one rounded operation).  The product evaluated in
+     * floating point summed d (R.P) - (R.P)(Z.P) with Z.P = d - 1 to the
+     * exact -R.P: for a far light (|P| ~ 3e6) a cancellation of |P| d, which
+     * the caller's rounding mode moved by 1e-9 of the matrix (robust_fenv).
+     * Row 2's translation alpha Z.P + beta is (alpha + bd) d - alpha, with
+     * alpha + bd = 1 (regular), Z_1 (inverse), (1 + Z_1)/2 (inverse, [0, 1]). */
+    sw_cube_depth_ratio(s, &alpha, &(double){0.0});
+    const double RP = sw_dot(R, s->P), UP = sw_dot(U, s->P), ZP = sw_dot(Z, s->P);
+    const double Rv[3] = {R.x, R.y, R.z}, Uv[3] = {U.x, U.y, U.z}, Zv[3] = {Z.x, Z.y, Z.z};
+    swarp_mat4* W = &F->view_proj;
+    memset(W, 0, sizeof *W);
+    for (int c = 0; c < 3; ++c) {
+        /* one of each pair of terms is an exact zero (R, U orthogonal to Z) */
+        sw_set(W, 0, c, Zv[c] != 0.0 ? -RP * Zv[c] : d * Rv[c]);
+        sw_set(W, 1, c, Zv[c] != 0.0 ? -UP * Zv[c] : d * Uv[c]);
+        sw_set(W, 2, c, -alpha * Zv[c]);
+        sw_set(W, 3, c, -Zv[c]);
+    }
+    sw_set(W, 0, 3, -RP);
+    sw_set(W, 1, 3, -UP);
+    const double ab = !s->inverse ? 1.0 : s->zero_to_one ? 0.5 * (1.0 + s->z1) : s->z1;
+    sw_set(W, 2, 3, ab * d - alpha);
+    sw_set(W, 3, 3, ZP);
 }
 
 /* [KOZ] §14.2.2 */

@@ -4,6 +4,7 @@
  * the outputs untouched; valid edge results are checked against the
  * defining property (brute-force minimum, a point on the unit cube). */
 #include <check.h>
+#include <fenv.h>
 #include <float.h>
 #include <math.h>
 #include <stdint.h>
@@ -216,6 +217,46 @@ START_TEST(planfix_cube_lookup_huge_and_small_components) {
 }
 END_TEST
 
+/* fenvb pass: robust_fenv 10000 (issue 9), swarp_cube_faces cases 3130 and
+ * 3140.  The face matrices must not depend on the caller's rounding mode
+ * beyond a few eps of their scale: with Z_1 = 1 - 1e-9, alpha = (f + n)/(f - n)
+ * from n = Z_1 d lost 1e-7 relative under FE_UPWARD (now in ratio form), and
+ * for a light at 3e6 the product proj view cancelled d (R.P) - (R.P)(Z.P) to
+ * -R.P, 1e-9 of the matrix moved by the mode (now in closed form). */
+static void fenvb_faces(const swarp_vec4* L, const swarp_cube_options* o, int mode, swarp_cube_face* f,
+                        size_t* n) {
+    fesetround(mode);
+    swarp_status st = swarp_cube_faces(L, o, f, SWARP_CUBE_MAX_FACES, n);
+    fesetround(FE_TONEAREST);
+    ck_assert_int_eq(st, SWARP_OK);
+}
+START_TEST(fenvb_cube_faces_rounding_mode) {
+    static const swarp_vec4 lights[2] = {{-0.8573087920171597, 2.0285826279546053, -2.2679433718553126, 1.0034271873637741},
+                                         {2999999.9999999995, 2934658.0867776205, -1000000, 1}};
+    static const double z1s[2] = {1 - 1e-9, 0.756044};
+    static const int modes[3] = {FE_UPWARD, FE_DOWNWARD, FE_TOWARDZERO};
+    for (int j = 0; j < 2; ++j) {
+        swarp_cube_options o = {0};
+        o.z1 = z1s[j];
+        swarp_cube_face f0[SWARP_CUBE_MAX_FACES], f1[SWARP_CUBE_MAX_FACES];
+        size_t n0, n1;
+        fenvb_faces(&lights[j], &o, FE_TONEAREST, f0, &n0);
+        for (int m = 0; m < 3; ++m) {
+            fenvb_faces(&lights[j], &o, modes[m], f1, &n1);
+            ck_assert_uint_eq(n0, n1);
+            for (size_t i = 0; i < n0; ++i) {
+                double sc = 0;
+                for (int e = 0; e < 16; ++e) sc = fmax(sc, fabs(f0[i].view_proj.m[e]));
+                for (int e = 0; e < 16; ++e)
+                    ck_assert_msg(fabs(f1[i].view_proj.m[e] - f0[i].view_proj.m[e]) <= 16 * DBL_EPSILON * sc,
+                                  "light %d mode %d face %zu view_proj[%d] %.17g, default %.17g", j, m, i, e,
+                                  f1[i].view_proj.m[e], f0[i].view_proj.m[e]);
+            }
+        }
+    }
+}
+END_TEST
+
 int main(void) {
     Suite* s = suite_create("edges_extras");
     TCase* t = tcase_create("extras");
@@ -226,6 +267,10 @@ int main(void) {
     t = tcase_create("planfix");
     tcase_add_test(t, planfix_cube_lookup_huge_point);
     tcase_add_test(t, planfix_cube_lookup_huge_and_small_components);
+    suite_add_tcase(s, t);
+    /* fenvb pass */
+    t = tcase_create("fenvb");
+    tcase_add_test(t, fenvb_cube_faces_rounding_mode);
     suite_add_tcase(s, t);
     return tu_run_suite(s) ? 1 : 0;
 }

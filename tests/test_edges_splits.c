@@ -882,6 +882,40 @@ START_TEST(sf_cascade_view_depth_opposite_ends) {
 }
 END_TEST
 
+/* fenvb pass: robust_fenv 10000 (issue 9), swarp_bias_normal_offset case
+ * 4699: a normal facing the light exactly (N = -direction) has 1 - N.L = 0,
+ * but 1 - |N|^2 left an ulp whose sign the rounding mode chose, times
+ * k L_texel with k = 9.6e94: p' moved by 1e79 under FE_UPWARD.  p' = p in
+ * every mode. */
+START_TEST(fenvb_bias_normal_offset_facing_light_rounding_mode) {
+    swarp_bias_map map;
+    memset(&map, 0, sizeof map);
+    static const double M[16] = {-1.6095275700642623e-06, -0.17352574943382518, 0.20775622705305702, 0,
+                                 -0.00010156498946480948, 0.15646124349580809, 0.17362645222110343, 0,
+                                 0.00017768440147471388, 0.087861905377747074, 0.10112738100142211, 0,
+                                 -0.0050369276228172631, 12.278037160024038, 3.3475387333246336, 1};
+    memcpy(map.world_to_clip.m, M, sizeof M);
+    map.res_s = 2047.999999997952, map.res_t = 6719.8139204190184, map.depth = SWARP_DEPTH_ZERO_TO_ONE;
+    swarp_light light;
+    memset(&light, 0, sizeof light);
+    light.type = SWARP_LIGHT_DIRECTIONAL;
+    light.direction = (swarp_vec3){0.5181262980665744, -0.63590557704866546, -0.37293091554550828};
+    const swarp_vec3 p = {63.06489264887616, 2491.254305873008, -4437.8664369381713};
+    const swarp_vec3 n = {-light.direction.x, -light.direction.y, -light.direction.z};
+    static const int modes[4] = {FE_TONEAREST, FE_UPWARD, FE_DOWNWARD, FE_TOWARDZERO};
+    for (int m = 0; m < 4; ++m) {
+        swarp_vec3 q;
+        double amount = -1;
+        fesetround(modes[m]);
+        swarp_status st = swarp_bias_normal_offset(&map, &light, &p, &n, 9.5607029686530707e+94, &q, &amount);
+        fesetround(FE_TONEAREST);
+        ck_assert_int_eq(st, SWARP_OK);
+        ck_assert_msg(amount == 0 && q.x == p.x && q.y == p.y && q.z == p.z, "mode %d: amount %g, p' (%g %g %g)", m,
+                      amount, q.x, q.y, q.z);
+    }
+}
+END_TEST
+
 /* fenva: a one-point body (flat across the light) at a 1e6 offset: the depth
  * row's zb = -(t_max + t_min)/dt came from dt = (t + texel) - (t - texel),
  * which carried ulp(t)/texel ~ 1e-8 of relative error, its sign set by the
@@ -944,6 +978,10 @@ int main(void) {
     tcase_add_test(t, planfix_stabilize_sphere_subnormal_range);
     /* fenva pass */
     tcase_add_test(t, fenva_stabilize_directional_flat_body_rounding);
+    suite_add_tcase(s, t);
+    /* fenvb pass */
+    t = tcase_create("fenvb");
+    tcase_add_test(t, fenvb_bias_normal_offset_facing_light_rounding_mode);
     suite_add_tcase(s, t);
     return tu_run_suite(s) ? 1 : 0;
 }

@@ -215,6 +215,23 @@ static void e_cube_lookup(swr_ctx* c) {
     for (int i = 0; i < 6; ++i)
         if (a.d[i] > 0) al = fmaxl(al, (ul[0] * axis_n[i][0] + ul[1] * axis_n[i][1] + ul[2] * axis_n[i][2]) / a.d[i]);
     const double ua[3] = {(double)(ul[0] / al), (double)(ul[1] / al), (double)(ul[2] / al)};
+    {
+        /* the depth alpha + beta/a ([KOZ] Listing 14-1's projective transform
+         * of a, units of d = 1) moves by |beta/a| times a's relative error;
+         * a = (u . N)/d carries that of u = V - P and d = 1 - P . N (P = xyz/w
+         * rounded in the caller's mode).  For Z_1 near 1, |beta| ~ 2/(1 - Z_1)
+         * while the depth is O(1): e.g. Z_1 = 1 - 1e-9 and a = 1 + 1e-12 give
+         * terms of 2e9 cancelling to 1.002, which the rounding mode moves by
+         * 5e-7 -- the conditioning of the result, not a library loss (no
+         * formula avoids it: the depth's derivative in a is beta/a^2) */
+        double z1c = a.use_o && a.o.z1 != 0 ? a.o.z1 : 0.01, pm = fabs(a.P[0]) + fabs(a.P[1]) + fabs(a.P[2]);
+        double beta = a.L.w < 0 ? z1c : 2 * z1c / (1 - z1c); /* |beta|, [-1, 1] (twice the [0, 1] one) */
+        /* in long double: |V| near DBL_MAX overflows u . N and a in double */
+        const long double un = ul[0] * axis_n[arg][0] + ul[1] * axis_n[arg][1] + ul[2] * axis_n[arg][2];
+        const long double vm = fabsl((long double)V.x) + fabsl((long double)V.y) + fabsl((long double)V.z);
+        const long double ka = (vm + pm) / fabsl(un) + (1 + pm) / a.d[arg]; /* a's relative condition */
+        swr_cond(c, (double)(1 + beta / al * ka));
+    }
     double tol = 1e-9 * (1 + fabs(a.P[0]) + fabs(a.P[1]) + fabs(a.P[2]) + fabs(ua[0]) + fabs(ua[1]) + fabs(ua[2]));
     int tie = second > amax * (1 - 1e-9);
     if (pf && !tie) SWR_CHECK(c, face == (uint32_t)arg, "face %u, argmax %d", face, arg);
@@ -232,6 +249,18 @@ static void e_cube_lookup(swr_ctx* c) {
         }
     }
     double z1 = a.use_o && a.o.z1 != 0 ? a.o.z1 : 0.01;
+    if (pd) {
+        /* the depth: the projective transform of a with Z_n = Z_1, Z_f = 1
+         * (inverse: -Z_1, Z_1) in units of d = 1, [-1, 1] or [0, 1]
+         * (swarp_cube_lookup's @brief), in long double; within 64 eps of its
+         * terms, |beta/a| carrying a's relative condition (above) */
+        const int zo = a.use_o && (int)a.o.depth_range == 2;
+        const long double n = a.L.w < 0 ? -(long double)z1 : z1, f = a.L.w < 0 ? (long double)z1 : 1.0L;
+        const long double alpha = zo ? f / (f - n) : (f + n) / (f - n), beta = zo ? n * f / (n - f) : 2 * n * f / (n - f);
+        const long double ref = alpha + beta / al;
+        SWR_CHECK_ACC(c, fabsl(depth - ref) <= 64 * DBL_EPSILON * (fabsl(alpha) + fabsl(beta / al) * c->cond) + 1e-300L,
+                      "depth %.17g, alpha + beta/a = %.17Lg (cond %g, al %Lg)", depth, ref, c->cond, al);
+    }
     if (c->status == SWARP_INFO_CUBE_NEAR_CLIPPED) SWR_CHECK(c, amax <= z1 * (1 + 1e-9), "NEAR_CLIPPED with a = %g >= Z_1 %g", amax, z1);
     else SWR_CHECK(c, amax >= z1 * (1 - 1e-9), "a = %g < Z_1 %g without NEAR_CLIPPED", amax, z1);
 }
