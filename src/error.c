@@ -55,27 +55,16 @@ static swarp_status sw_nprime(double n_prime) {
 
 /* ---- evaluation (no checks) -------------------------------------------- */
 
-/* A product of factors kept as mantissa * 2^e: every factor is split by
- * frexp, so no intermediate overflows or underflows (a tiny resolution such
- * as res_iy = 1e-320 against (f - n) ~ 1e8 would otherwise underflow to 0
- * a value that is representable); one ldexp at the end rounds once. */
-typedef struct sw_scaled {
-    double m;
-    long e;
-} sw_scaled;
-static void sw_sc_mul(sw_scaled* x, double f, int divide) {
-    int kf, km;
-    double fm = frexp(f, &kf);
-    double m = frexp(divide ? x->m / fm : x->m * fm, &km);
-    x->m = m;
-    x->e += (divide ? -(long)kf : (long)kf) + km;
+/* A product of factors kept as mantissa * 2^e (sw_xd, swarp_internal.h):
+ * no intermediate overflows or underflows (a tiny resolution such as
+ * res_iy = 1e-320 against (f - n) ~ 1e8 would otherwise underflow to 0 a
+ * value that is representable); one ldexp at the end rounds once. */
+static void sw_sc_mul(sw_xd* x, double f, int divide) {
+    *x = divide ? sw_xd_div(*x, sw_xd_of(f)) : sw_xd_mul(*x, sw_xd_of(f));
 }
 /* the value, or 0 when not finite (overflow) */
-static int sw_sc_value(const sw_scaled* x, double* out) {
-    long e = x->e;
-    if (e > 4096) e = 4096; /* ldexp saturates to Inf / 0 anyway */
-    if (e < -4096) e = -4096;
-    double v = ldexp(x->m, (int)e);
+static int sw_sc_value(const sw_xd* x, double* out) {
+    double v = sw_xd_get(*x);
     if (!sw_finite(v)) return 0;
     *out = v;
     return 1;
@@ -84,7 +73,7 @@ static int sw_sc_value(const sw_scaled* x, double* out) {
 /* m_x over the range [n, f]; 0 on overflow. */
 static int sw_mx(const swarp_error_config* c, double n, double f, double z, double n_prime,
                  double* out) {
-    sw_scaled v = {1.0, 0};
+    sw_xd v = sw_xd_of(1.0);
     sw_sc_mul(&v, c->res_ix, 0); /* k_x = res_ix/res_s */
     sw_sc_mul(&v, c->res_s, 1);
     sw_sc_mul(&v, f, 0);
@@ -105,7 +94,7 @@ static int sw_mx(const swarp_error_config* c, double n, double f, double z, doub
 static int sw_mz(const swarp_error_config* c, double n, double f, double z, double n_prime,
                  double* out) {
     /* k_z = res_iy/res_t (f - n)/(2 tan Theta) */
-    sw_scaled v = {1.0, 0};
+    sw_xd v = sw_xd_of(1.0);
     sw_sc_mul(&v, c->res_iy, 0);
     sw_sc_mul(&v, c->res_t, 1);
     sw_sc_mul(&v, f - n, 0);
