@@ -44,10 +44,15 @@ for t in $targets; do
     # timeout sends SIGINT: libFuzzer prints its final stats and exits with
     # its interrupt code (72); -max_total_time is only a whole-second cap
     SWARP_FUZZ_TARGET="$t" ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
-        timeout -s INT "$per" "$out/fuzz_target" "$work" "tests/fuzz/corpus/$t" -max_total_time="$cap" -max_len=4096 \
+        timeout -k 5 -s INT "$per" "$out/fuzz_target" "$work" "tests/fuzz/corpus/$t" -max_total_time="$cap" -max_len=4096 \
         -seed=1 -print_final_stats=1 -interrupted_exit_code=0 -artifact_prefix="$tmp/art-$t/" >"$tmp/$t.log" 2>&1
     rc=$?
     [ "$rc" -eq 124 ] && rc=0 # timed out without a finding
+    # Now and then libFuzzer does not leave on the SIGINT (seen 2026-12-01:
+    # swarp_gmnpr_offset and swarp_error_mx hung for minutes): timeout -k
+    # kills it 5 s later (137).  That is a hang of the fuzzer's shutdown, not
+    # a finding; the target has no stats then and is rerun count-bounded below.
+    [ "$rc" -eq 137 ] && rc=0
     set -e
     execs="$(awk '/stat::number_of_executed_units/{print $2}' "$tmp/$t.log" | tail -n1)"
     execs="${execs:-0}"
@@ -59,10 +64,10 @@ for t in $targets; do
         # bounded by a count instead of the clock, so every target runs.
         set +e
         SWARP_FUZZ_TARGET="$t" ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
-            timeout -s INT 120 "$out/fuzz_target" "$work" "tests/fuzz/corpus/$t" -runs="$min_runs" -max_len=4096 \
+            timeout -k 5 -s INT 120 "$out/fuzz_target" "$work" "tests/fuzz/corpus/$t" -runs="$min_runs" -max_len=4096 \
             -seed=1 -print_final_stats=1 -interrupted_exit_code=0 -artifact_prefix="$tmp/art-$t/" >"$tmp/$t.log" 2>&1
         rc=$?
-        [ "$rc" -eq 124 ] && rc=0
+        [ "$rc" -eq 124 ] || [ "$rc" -eq 137 ] && rc=0
         set -e
         execs="$(awk '/stat::number_of_executed_units/{print $2}' "$tmp/$t.log" | tail -n1)"
         execs="${execs:-0}"
