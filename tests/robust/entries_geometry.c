@@ -1192,12 +1192,63 @@ static void e_focus_fit(swr_ctx* c) {
         const double uk[3] = {u.x, u.y, u.z};
         for (int k = 0; k < 3; ++k) emax[k] = fmax(emax[k], fabs(uk[k])), ulo[k] = fmin(ulo[k], uk[k]), uhi[k] = fmax(uhi[k], uk[k]);
     }
-    /* the fit's translation is -(lo + hi)/(hi - lo): coordinates of magnitude
-     * X over an extent E are resolved to eps X/E */
-    for (int k = 0; k < 3; ++k) {
-        if (uhi[k] > ulo[k]) swr_cond(c, emax[k] / (uhi[k] - ulo[k]));
-        /* an extent of a few ulps: zero (width 1, FLAT_EXTENT) or not is up to the rounding */
-        if (uhi[k] - ulo[k] <= 1024 * DBL_EPSILON * emax[k]) c->rounding_edge = 1;
+    /* The fit's translation is -(lo + hi)/(hi - lo) and its scale 2/(hi - lo):
+     * an extent E of coordinates computed with an absolute rounding error
+     * eps R is resolved to eps R/E, so cond = R/E per axis, where R bounds
+     * the rounding of u_k = q_k/w: (sum_j |m_kj p_j| + |m_k3|)/|w| for q_k
+     * plus |u_k| (sum_j |m_3j p_j| + |m_33|)/|w| for the division by w --
+     * not |u_k|, which is small when a shear cancels a 1e6 offset.  The
+     * extents are those the library fits: x, y over the points, z over the
+     * z_points when given (the z_points' x, y widened the extent the
+     * condition was measured on: fenv cases 16881, x at -3e6 over 0.35, and
+     * 18639, y at -4.5e5 over 0.008, drifted 1.3e-9 and 7e-9 with cond 1e7
+     * and 5e7 recorded as 3e4). */
+    {
+        double flo[3] = {INFINITY, INFINITY, INFINITY}, fhi[3] = {-INFINITY, -INFINITY, -INFINITY}, R[3] = {0, 0, 0};
+        /* the coordinates u_k depends on (rows k and w of m) are the same
+         * for all the axis' points: E = 0 exactly, in every mode */
+        int same[3] = {1, 1, 1};
+        for (size_t i = 0; i < n + (n_z ? n : nz); ++i) {
+            int is_z = i >= n;
+            const swarp_vec3* p = !is_z ? &pts[i] : n_z ? &pts[i - n] : &zp[i - n];
+            const swarp_vec3* p0 = !is_z ? &pts[0] : n_z ? &pts[0] : &zp[0];
+            const double pa[3] = {p->x, p->y, p->z}, pb[3] = {p0->x, p0->y, p0->z};
+            swarp_vec4 q = xf(&m, *p);
+            const double qk[4] = {q.x, q.y, q.z, q.w};
+            double t[4];
+            for (int r = 0; r < 4; ++r)
+                t[r] = fabs(m.m[r] * p->x) + fabs(m.m[4 + r] * p->y) + fabs(m.m[8 + r] * p->z) + fabs(m.m[12 + r]);
+            for (int k = is_z ? 2 : 0; k < (is_z ? 3 : 2); ++k) {
+                double u = qk[k] / q.w;
+                flo[k] = fmin(flo[k], u), fhi[k] = fmax(fhi[k], u);
+                R[k] = fmax(R[k], (t[k] + fabs(u) * t[3]) / fabs(q.w));
+                for (int j = 0; j < 3; ++j)
+                    if ((m.m[4 * j + k] != 0 || m.m[4 * j + 3] != 0) && memcmp(&pa[j], &pb[j], sizeof pa[j]) != 0) same[k] = 0;
+            }
+        }
+        /* row k of m a power of two times row w (a perspective m with
+         * z' = z, w = -z): u_k = q_k/w is that constant exactly */
+        for (int k = 0; k < 3; ++k) {
+            double sc = 0;
+            for (int j = 0; j < 4 && sc == 0; ++j)
+                if (m.m[4 * j + 3] != 0) sc = m.m[4 * j + k] / m.m[4 * j + 3];
+            int e2, pow2 = sc != 0 && isfinite(sc) && fabs(frexp(sc, &e2)) == 0.5;
+            for (int j = 0; j < 4 && pow2; ++j) pow2 = m.m[4 * j + k] == sc * m.m[4 * j + 3];
+            if (pow2) same[k] = 1;
+        }
+        double wide_k = 0;
+        for (int k = 0; k < 3; ++k) wide_k = fmax(wide_k, fhi[k] - flo[k]);
+        for (int k = 0; k < 3; ++k) {
+            double E = fhi[k] - flo[k], slack = 1024 * DBL_EPSILON * R[k];
+            if (E > 0) swr_cond(c, R[k] / E);
+            /* an extent within 1024 ulps of R of zero (then width 1 or the
+             * widest, FLAT_EXTENT) or of the library's flat bound
+             * 1e-12 max(|lo|, |hi|, widest) (focus.c, SW_FIT_FLAT_REL): which
+             * side is up to the rounding -- unless E is exact (same, or
+             * every term zero) */
+            double mag = fmax(fmax(fabs(flo[k]), fabs(fhi[k])), wide_k);
+            if (!same[k] && R[k] > 0 && (E <= slack || fabs(E - 1e-12 * mag) <= slack)) c->rounding_edge = 1;
+        }
     }
     for (int k = 0; k < 3; ++k) {
         double w0 = k == 2 ? zlo : -1;
