@@ -1587,6 +1587,31 @@ static void check_follow_bound(swr_ctx* c, const swarp_mat4* V, const swarp_mat4
                   SWARP_FOLLOW_KAPPA, delta);
 }
 
+/* The condition of a followed light frame's up vector (src/follow.c,
+ * sw_follow_light_view): it is t = v_perp/|v_perp| (the view direction
+ * projected normal to the light axis a, [RHS] §3.2.1) when the frame
+ * follows the target, else h = the previous up projected normal to a,
+ * turned by the budget (SWARP_INFO_FOLLOW_LAG) or kept (v along a).  a and v
+ * carry a rounding of eps (normalized), so the projection carries an
+ * absolute eps and its direction eps/|projection|: cond = 1/sin(angle).  The
+ * library uses a projection only above 1e-8 (cond <= 1e8).  Near γ = 0
+ * the stateless light view blends (cond bounded); the follow rule does not:
+ * fenv cases 16906 and 23921, an omni light 3e-4 from an eye at 1e6 looking
+ * back along the view, sin γ = 2e-8, rows drifted 3e-9. */
+static void follow_cond(swr_ctx* c, const swarp_mat4* V, const swarp_mat4* P, swarp_vec3 dir) {
+    swarp_vec3 a = v3(-V->m[2], -V->m[6], -V->m[10]), upp = v3(P->m[1], P->m[5], P->m[9]), v = unit_scaled(dir);
+    double kv = dot(v, a), kh = dot(upp, a);
+    double sv = sqrt(dot(v3(v.x - kv * a.x, v.y - kv * a.y, v.z - kv * a.z), v3(v.x - kv * a.x, v.y - kv * a.y, v.z - kv * a.z)));
+    double sh = sqrt(dot(v3(upp.x - kh * a.x, upp.y - kh * a.y, upp.z - kh * a.z), v3(upp.x - kh * a.x, upp.y - kh * a.y, upp.z - kh * a.z)));
+    int have_t = sv > 1e-8, have_h = sh > 1e-8;
+    /* a projection within its rounding (a few eps absolute, 64 eps here) of
+     * the library's 1e-8: whether it is used (the up jumps) is up to the
+     * rounding */
+    if (fabs(sv - 1e-8) <= 64 * DBL_EPSILON || fabs(sh - 1e-8) <= 64 * DBL_EPSILON) c->rounding_edge = 1;
+    if (have_t && c->status != SWARP_INFO_FOLLOW_LAG) swr_cond(c, 1 / sv);
+    else if (have_h) swr_cond(c, 1 / sh);
+}
+
 static void e_setup_follow(swr_ctx* c) {
     SKIP_IF_MISSING(c, swarp_setup_follow);
     scene_args s, p;
@@ -1668,6 +1693,7 @@ static void e_focus_light_view_follow(swr_ctx* c) {
         SWR_CHECK(c, sq == c->status && memcmp(&q, &V, sizeof q) == 0, "previous NULL: not swarp_focus_light_view's view");
     } else {
         check_follow_bound(c, &V, &prev, use_pcam ? p.cam.dir : s.cam.dir, s.cam.dir);
+        follow_cond(c, &V, &prev, s.cam.dir);
     }
 }
 
