@@ -252,8 +252,16 @@ static int sw_points_apart(const swarp_vec3* v, uint32_t n, double eps) {
 }
 
 /* The 6 faces of a hexahedron given by 8 corners, corner index = x | y<<1 |
- * z<<2.  The plane of each face comes from Newell's normal, oriented away
- * from the centroid (so the corner order's handedness does not matter). */
+ * z<<2.  The plane of each face comes from Newell's normal of its loop; the
+ * loops of the table all run the same way round (outward for a right-handed
+ * corner order), so one decision orients them all: the face whose centre
+ * lies farthest from the centroid along its normal says whether they point
+ * away from it (so the corner order's handedness does not matter).  Each
+ * face deciding for itself let rounding decide for the two faces of a
+ * hexahedron flat across them (a frustum of aspect 1e-87: the distance is
+ * 1e-93 against a rounding of 1e-22) and oriented both the same way, an H
+ * with no inside: the body came out empty or not by rounding (issue 9,
+ * fenv: swarp_setup_follow 30000 case 27474). */
 void sw_poly_from_corners(const swarp_vec3 c[8], swarp_polyhedron* out) {
     static const uint8_t quads[6][4] = {{0, 4, 6, 2}, {1, 3, 7, 5}, {0, 1, 5, 4},
                                         {2, 6, 7, 3}, {0, 2, 3, 1}, {4, 5, 7, 6}};
@@ -265,9 +273,9 @@ void sw_poly_from_corners(const swarp_vec3 c[8], swarp_polyhedron* out) {
     }
     centroid = sw_scale(centroid, 1.0 / 8.0);
     uint32_t nf = 0;
+    double far_dot = 0.0;
     for (int f = 0; f < 6; ++f) {
-        uint8_t loop[4];
-        memcpy(loop, quads[f], 4);
+        const uint8_t* loop = quads[f];
         swarp_vec3 n = sw_newell(out->vertices, loop, 4);
         swarp_vec3 nu = {0, 0, 1};
         /* collapsed face (flat box), or corners near DBL_MAX whose products
@@ -275,12 +283,8 @@ void sw_poly_from_corners(const swarp_vec3 c[8], swarp_polyhedron* out) {
          * takes fmax of the components, which skips a NaN: checked here) */
         if (!sw_finite3(&n) || !sw_gnormalize(n, &nu)) continue;
         swarp_vec3 fc = sw_scale(sw_add(sw_add(c[loop[0]], c[loop[1]]), sw_add(c[loop[2]], c[loop[3]])), 0.25);
-        if (sw_dot(nu, sw_sub(fc, centroid)) < 0.0) {
-            nu = sw_scale(nu, -1.0);
-            uint8_t t = loop[1];
-            loop[1] = loop[3];
-            loop[3] = t;
-        }
+        const double dc = sw_dot(nu, sw_sub(fc, centroid));
+        if (fabs(dc) > fabs(far_dot)) far_dot = dc;
         out->planes[nf].a = nu.x;
         out->planes[nf].b = nu.y;
         out->planes[nf].c = nu.z;
@@ -289,6 +293,15 @@ void sw_poly_from_corners(const swarp_vec3 c[8], swarp_polyhedron* out) {
         out->face_vertex_count[nf] = 4;
         ++nf;
     }
+    if (far_dot < 0.0) /* a left-handed corner order: every loop ran inward */
+        for (uint32_t f = 0; f < nf; ++f) {
+            swarp_plane* p = &out->planes[f];
+            p->a = -p->a, p->b = -p->b, p->c = -p->c, p->d = -p->d;
+            uint8_t* l = out->face_vertices[f];
+            uint8_t t = l[1];
+            l[1] = l[3];
+            l[3] = t;
+        }
     out->face_count = nf;
     /* a real frustum or box: 6 quads on 8 corners that are all apart, so
      * sw_poly_finalize would merge, drop and renumber nothing */

@@ -1154,6 +1154,89 @@ START_TEST(sf_setup_points_all_extents_flat) {
 }
 END_TEST
 
+/* Issue 9 (fenv, swarp_setup_follow case 27474 and swarp_body_points case
+ * 22423 at 30000 cases): a frustum flat across two of its faces (aspect
+ * 1.5e-87, or near and far one ulp apart) is built from its 8 corners; each
+ * face was oriented away from the centroid by itself, and for the two faces
+ * of the flat direction that distance (1e-93) is below the rounding of the
+ * coordinates, so the rounding mode oriented them, often both the same way:
+ * an H with no inside, and B came out empty (SWARP_ERR_BODY_EMPTY) or not
+ * depending on the mode.  The faces of a hexahedron are now oriented by one
+ * decision (src/poly.c, sw_poly_from_corners). */
+START_TEST(fe_poly_flat_frustum_faces_opposite) {
+    swarp_camera cam = {{0, 0, 0},
+                        {0x1.fa6f1162aabeap-1, 0x1.1fe7f9dd7b870p-3, -0x1.617f1d9118a72p-5},
+                        {0, 1, 0},
+                        0x1.8333b3ae6f2cfp+0,
+                        0x1.81ec6597c7d87p-289, /* 1.5e-87 */
+                        0x1.0c6f7a0b5ed8dp-20,
+                        0x1.1bc5a524e23e1p+3,
+                        {0, 0, 0, 0}};
+    for (size_t m = 0; m <= sizeof tu_modes / sizeof tu_modes[0]; ++m) {
+        swarp_polyhedron V;
+        fesetround(m ? tu_modes[m - 1] : FE_TONEAREST);
+        swarp_status s = swarp_poly_from_camera(&cam, &V);
+        fesetround(FE_TONEAREST);
+        ck_assert_msg(s == SWARP_OK, "mode %zu: %s", m, swarp_status_name(s));
+        ck_assert_msg(V.face_count == 2, "mode %zu: %u faces", m, V.face_count);
+        double d = V.planes[0].a * V.planes[1].a + V.planes[0].b * V.planes[1].b + V.planes[0].c * V.planes[1].c;
+        ck_assert_msg(d < -0.999, "mode %zu: the two faces of a flat frustum are not opposite (dot %.17g)", m, d);
+    }
+}
+END_TEST
+
+START_TEST(fe_setup_flat_frustum_rounding_mode) {
+    swarp_camera cam = {{0x1.86a392f3c81dep+16, 0x1.1947dc1f70c3cp+3, 0x1.869d3b8d5066cp+16},
+                        {0x1.fa6f1162aabeap-1, 0x1.1fe7f9dd7b870p-3, -0x1.617f1d9118a72p-5},
+                        {0, 1, 0},
+                        0x1.8333b3ae6f2cfp+0,
+                        0x1.81ec6597c7d87p-289,
+                        0x1.0c6f7a0b5ed8dp-20,
+                        0x1.1bc5a524e23e1p+3,
+                        {0, 0, 0, 0}};
+    swarp_light l = {SWARP_LIGHT_DIRECTIONAL, 0, {-0x1.a40175f613d3ap-2, -0x1.05612992fd918p-4, 0x1.d1ce5be4bec4ap-1}, {0, 0, 0}, 0,
+                     {0, 0, 0, 0}};
+    swarp_aabb box = {{0x1.8681f912c0d82p+16, -0x1.4de8d338d7765p+0, 0x1.86980afb30b80p+16},
+                      {0x1.86e5f912c0d82p+16, 0x1.6d8651bc5c6d5p+4, 0x1.86a134df5f3c2p+16}};
+    swarp_setup_result r0, r;
+    swarp_status s0 = swarp_setup(&cam, &l, &box, NULL, &r0, NULL, 0, NULL);
+    ck_assert_msg(!swarp_status_is_error(s0), "%s", swarp_status_name(s0));
+    for (size_t m = 0; m < sizeof tu_modes / sizeof tu_modes[0]; ++m) {
+        fesetround(tu_modes[m]);
+        swarp_status s = swarp_setup(&cam, &l, &box, NULL, &r, NULL, 0, NULL);
+        fesetround(FE_TONEAREST);
+        ck_assert_msg(s == s0, "mode %zu: %s, default %s", m, swarp_status_name(s), swarp_status_name(s0));
+        ck_assert_uint_eq(r.point_count, r0.point_count);
+    }
+}
+END_TEST
+
+START_TEST(fe_body_points_one_ulp_range_rounding_mode) {
+    swarp_camera cam = {{-0x1.e8487d98eaea7p+19, 0x1.2007fa164b51fp+0, -0x1.e8498e2844f6dp+19},
+                        {0x1.34822d0e88ebap-1, 0x1.73db85a7575ffp-3, 0x1.8de64f57dc779p-1},
+                        {0, 1, 0},
+                        0x1.a4ae1d521132fp-3,
+                        0x1.ceef7d1a0afdbp+0,
+                        1.0,
+                        0x1.0000000000001p+0, /* one ulp beyond near */
+                        {0, 0, 0, 0}};
+    swarp_light l = {SWARP_LIGHT_DIRECTIONAL, 0, {-0x1.119e89a777d34p-1, 0x1.0023847a5e054p-4, 0x1.af918995a9136p-1},
+                     {-0x1.e83fd1a439e78p+19, 0x1.76d215f2ba606p+7, -0x1.e85109a6769f5p+19}, 0x1.34098dee17b00p+0, {0, 0, 0, 0}};
+    swarp_aabb box = {{-0x1.e8487d98eaea7p+19, -0x1.c00fbb14f25c1p+0, -0x1.e8498e2844f6dp+19},
+                      {-0x1.e84128dcb8e1dp+19, 0x1.316fe87ac5c8ap+4, -0x1.e8417b756b3bbp+19}};
+    swarp_vec3 pts[SWARP_BODY_MAX_POINTS];
+    size_t n0 = 0, n = 0;
+    swarp_status s0 = swarp_body_points(&cam, cam.near, cam.far, &l, &box, pts, SWARP_BODY_MAX_POINTS, &n0);
+    ck_assert_msg(s0 == SWARP_OK, "%s", swarp_status_name(s0));
+    for (size_t m = 0; m < sizeof tu_modes / sizeof tu_modes[0]; ++m) {
+        fesetround(tu_modes[m]);
+        swarp_status s = swarp_body_points(&cam, cam.near, cam.far, &l, &box, pts, SWARP_BODY_MAX_POINTS, &n);
+        fesetround(FE_TONEAREST);
+        ck_assert_msg(s == s0, "mode %zu: %s, default %s", m, swarp_status_name(s), swarp_status_name(s0));
+    }
+}
+END_TEST
+
 int main(void) {
     Suite* s = suite_create("edges_geometry");
     TCase* t = tcase_create("geometry");
@@ -1187,6 +1270,10 @@ int main(void) {
     tcase_add_test(t, poly_tiny_magnitudes);
     tcase_add_test(t, body_adjusted_range_one_ulp);
     tcase_add_test(t, poly_inverse_matrix_huge_corners);
+    /* fenve pass */
+    tcase_add_test(t, fe_poly_flat_frustum_faces_opposite);
+    tcase_add_test(t, fe_setup_flat_frustum_rounding_mode);
+    tcase_add_test(t, fe_body_points_one_ulp_range_rounding_mode);
     suite_add_tcase(s, t);
     return tu_run_suite(s) ? 1 : 0;
 }

@@ -1243,7 +1243,14 @@ END_TEST
 /* Eye at a 1e6 offset, near 1, far 2, light within 1e-9 of the view
  * direction: in world coordinates the body's light-space extent was a few
  * ulps of 1e6 and a point of B mapped to y = 1.25.  Now computed relative
- * to the eye. */
+ * to the eye.  The frustum (aspect 1e-111) is flat and the light 1e-9 rad
+ * off its plane, so B (H swept toward the light, 8 points since H's two
+ * faces are opposite: fenve, src/poly.c) is 1e-9 thick as the light sees
+ * it and the map stretches that 2e9 times: relative to the eye B maps
+ * inside to 1e-6, while its world points, rounded to ulp(1e6) = 1e-10,
+ * move by 0.2 in the map -- the condition number the sweep allows for
+ * (sweep_check_inside_c).  The old H, its faces oriented alike, gave B =
+ * H alone (4 points in H's plane, whose rounding the matrix shared). */
 START_TEST(sweep_large_offset_parallel_light) {
     swarp_camera cam = {{999988.91868873662, 0.23033861672625111, 999986.04749523092},
                         {0.41324454888588158, -0.23278984443987108, -0.88036232946541104},
@@ -1270,15 +1277,20 @@ START_TEST(sweep_large_offset_parallel_light) {
     size_t n = 0;
     swarp_status st = swarp_setup(&cam, &light, &box, &o, &r, pts, SWARP_BODY_MAX_POINTS, &n);
     ck_assert_msg(!swarp_status_is_error(st), "%s", swarp_status_name(st));
-    sweep_check_inside(&r, pts, n, "1e6 offset, light parallel to the view");
+    sweep_check_inside_c(&r, pts, n, "1e6 offset, light parallel to the view", 1);
     /* the same scene moved to the origin gives the same map (the library
-     * works relative to the eye): equal matrices up to the translation */
+     * works relative to the eye): equal matrices up to the translation, and
+     * there B maps inside without the world's rounding */
     swarp_camera c0 = cam;
     c0.eye = (swarp_vec3){0, 0, 0};
     swarp_aabb b0 = {{box.min.x - cam.eye.x, box.min.y - cam.eye.y, box.min.z - cam.eye.z},
                      {box.max.x - cam.eye.x, box.max.y - cam.eye.y, box.max.z - cam.eye.z}};
     swarp_setup_result r0;
-    ck_assert_int_eq(swarp_setup(&c0, &light, &b0, &o, &r0, NULL, 0, NULL), st);
+    swarp_vec3 p0[SWARP_BODY_MAX_POINTS];
+    size_t n0 = 0;
+    ck_assert_int_eq(swarp_setup(&c0, &light, &b0, &o, &r0, p0, SWARP_BODY_MAX_POINTS, &n0), st);
+    ck_assert_uint_eq(n0, n);
+    sweep_check_inside(&r0, p0, n0, "the same scene at the origin");
     for (int k = 0; k < 12; ++k) ck_assert(r.light_proj.m[k] == r0.light_proj.m[k]);
 }
 END_TEST
