@@ -285,6 +285,56 @@ static swarp_vec4 xf(const swarp_mat4* m, swarp_vec3 p) {
     return o;
 }
 
+/* A point of B the focused matrix does not map into the unit square: PSM
+ * (its inverse projection maps B differently) and, for a spot light on or
+ * inside B, the points nearer to it than its near plane (distance along its
+ * axis below light_near), left out of the map as
+ * SWARP_INFO_LIGHT_NEAR_CLIPPED documents (the status may be hidden by the
+ * more important SWARP_INFO_WARP_UNIFORM). */
+static int setup_point_unmapped(const scene_args* s, swarp_status st, const swarp_setup_result* r, const swarp_vec3* p) {
+    if ((s->use_opt && s->opt.technique == SWARP_TECHNIQUE_PSM) || st == SWARP_INFO_PSM_INVERSE) return 1;
+    if (s->light.type == SWARP_LIGHT_POINT && (st == SWARP_INFO_LIGHT_NEAR_CLIPPED || st == SWARP_INFO_WARP_UNIFORM)) {
+        swarp_vec4 lv = xf(&r->light_view, *p);
+        double lmag = fabs(r->light_view.m[2] * p->x) + fabs(r->light_view.m[6] * p->y) + fabs(r->light_view.m[10] * p->z) +
+                      fabs(r->light_view.m[14]);
+        if (-lv.z < r->light_near + 64 * DBL_EPSILON * lmag) return 1;
+    }
+    return 0;
+}
+
+/* How well the focused matrix m resolves p: for each output coordinate
+ * u_k = q_k/w, the sizes of the terms summed (sum_j |m_kj p_j| + |m_k3|,
+ * and |u_k| times those of w) over |w|.  The outputs are within [-1, 1] on
+ * B, so this is the condition number of u_k: a relative rounding eps of the
+ * matrix or of p moves u_k by eps k[k]. */
+static void setup_point_k(const swarp_mat4* m, const swarp_vec3* p, double k[3]) {
+    swarp_vec4 q = xf(m, *p);
+    const double qk[3] = {q.x, q.y, q.z};
+    double sw = fabs(m->m[3] * p->x) + fabs(m->m[7] * p->y) + fabs(m->m[11] * p->z) + fabs(m->m[15]);
+    for (int r = 0; r < 3; ++r) {
+        double sr = fabs(m->m[r] * p->x) + fabs(m->m[4 + r] * p->y) + fabs(m->m[8 + r] * p->z) + fabs(m->m[12 + r]);
+        k[r] = (sr + fabs(qk[r] / q.w) * sw) / fabs(q.w);
+    }
+}
+
+/* The outputs' conditioning: the fit's scale 2/E and translation come from
+ * light-space coordinates of B resolved to eps times their terms (k/2 of
+ * them) over its extent E, e.g. a light grazing a flat 1e6-offset box (E
+ * 3e-9 against terms of 8.5: matrix entries 2e9 that the rounding mode
+ * moves by 2e-6, fenv 10000 case 9020).  Depth as well as x and y: a
+ * directional light 1.9e-9 off the normal of a flat box (z = -50) sees B's
+ * depths within 5e-8, fitted to [-1, 1] by a translation of 1e9 that
+ * FE_TOWARDZERO moved by 9e-9 (fenv 30000 case 15179; k_z 1e9). */
+static void setup_b_cond(swr_ctx* c, const scene_args* s, swarp_status st, const swarp_setup_result* r, const swarp_vec3* pts,
+                         size_t count) {
+    for (size_t i = 0; i < count && i < SWARP_BODY_MAX_POINTS; ++i) {
+        if (!fin3(&pts[i]) || setup_point_unmapped(s, st, r, &pts[i]) || !(xf(&r->matrix, pts[i]).w > 0)) continue;
+        double k[3];
+        setup_point_k(&r->matrix, &pts[i], k);
+        swr_cond(c, fmax(k[0], fmax(k[1], k[2])));
+    }
+}
+
 static void check_setup_result(swr_ctx* c, const scene_args* s, swarp_status st, const swarp_setup_result* r,
                                const swarp_vec3* pts, size_t count, int have_pts) {
     /* B of one or two points: the view frustum and the box (or the spot's
@@ -347,13 +397,16 @@ static void check_setup_result(swr_ctx* c, const scene_args* s, swarp_status st,
             SWR_CHECK(c, fabs(acc - r->matrix.m[col * 4 + row]) <= ptol * (mag + mscale) + 1e-300,
                       "matrix[%d][%d] = %.17g, light_proj light_view = %.17g", row, col, r->matrix.m[col * 4 + row], acc);
         }
+    /* raised after the product check above, which keeps its own tolerance;
+     * without have_pts, pts is B from a call in the default environment
+     * (e_setup_common), used for the conditioning only */
+    setup_b_cond(c, s, st, r, pts, count);
     if (!have_pts) return;
     SWR_CHECK(c, count == r->point_count, "out_count %zu, point_count %u", count, r->point_count);
     /* B lies in the scene box and the focused matrix maps it into the unit
      * cube (PSM's inverse projection maps it differently: not checked) */
     double tol_box = 1e-9 * (fabs(s->box.min.x) + fabs(s->box.max.x) + fabs(s->box.min.y) + fabs(s->box.max.y) +
                              fabs(s->box.min.z) + fabs(s->box.max.z) + 1);
-    int psm = s->use_opt && s->opt.technique == SWARP_TECHNIQUE_PSM;
     /* the fit is only as good as the points are resolved: coordinates of
      * magnitude X carry ulp(X) ~ eps X, relative to B's extent that is
      * eps X / extent (1e6 offsets around a 1e-6 frustum: O(1)) */
@@ -369,18 +422,8 @@ static void check_setup_result(swr_ctx* c, const scene_args* s, swarp_status st,
         SWR_CHECK_ACC(c, p->x >= s->box.min.x - tol_box && p->x <= s->box.max.x + tol_box && p->y >= s->box.min.y - tol_box &&
                              p->y <= s->box.max.y + tol_box && p->z >= s->box.min.z - tol_box && p->z <= s->box.max.z + tol_box,
                       "point %zu of B (%g %g %g) outside the scene box", i, p->x, p->y, p->z);
-        if (psm || st == SWARP_INFO_PSM_INVERSE) continue;
+        if (setup_point_unmapped(s, st, r, p)) continue;
         swarp_vec4 q = xf(&r->matrix, *p);
-        /* A spot light on or inside B: the points nearer to it than its near
-         * plane (distance along its axis below light_near) are left out of
-         * the map, as SWARP_INFO_LIGHT_NEAR_CLIPPED documents (the status
-         * may be hidden by the more important SWARP_INFO_WARP_UNIFORM). */
-        if (s->light.type == SWARP_LIGHT_POINT && (st == SWARP_INFO_LIGHT_NEAR_CLIPPED || st == SWARP_INFO_WARP_UNIFORM)) {
-            swarp_vec4 lv = xf(&r->light_view, *p);
-            double lmag = fabs(r->light_view.m[2] * p->x) + fabs(r->light_view.m[6] * p->y) +
-                          fabs(r->light_view.m[10] * p->z) + fabs(r->light_view.m[14]);
-            if (-lv.z < r->light_near + 64 * DBL_EPSILON * lmag) continue;
-        }
         if (!(q.w > 0)) {
             /* (finding 21/23 of docs/quality.md, fixed: a point light on the
              * boundary of B -- at the eye, on the near plane, on a face of a
@@ -397,21 +440,9 @@ static void check_setup_result(swr_ctx* c, const scene_args* s, swarp_status st,
          * stretched map of a tiny body), whatever the library does.
          * The tolerance is that condition number (64 eps of it). */
         {
-            const swarp_mat4* m = &r->matrix;
-            double sw = fabs(m->m[3] * p->x) + fabs(m->m[7] * p->y) + fabs(m->m[11] * p->z) + fabs(m->m[15]);
-            double sx = fabs(m->m[0] * p->x) + fabs(m->m[4] * p->y) + fabs(m->m[8] * p->z) + fabs(m->m[12]);
-            double sy = fabs(m->m[1] * p->x) + fabs(m->m[5] * p->y) + fabs(m->m[9] * p->z) + fabs(m->m[13]);
-            double aw = fabs(q.w);
-            double kx = (sx + fabs(x) * sw) / aw, ky = (sy + fabs(y) * sw) / aw;
-            tol = fmax(tol, 1e-6 + 64 * DBL_EPSILON * fmax(kx, ky));
-            /* the same number is the outputs' conditioning: the fit's scale
-             * 2/E and translation come from light-space coordinates of B
-             * resolved to eps times their terms (kx/2 of them) over its
-             * extent E, e.g. a light grazing a flat 1e6-offset box (E 3e-9
-             * against terms of 8.5: matrix entries 2e9 that the rounding
-             * mode moves by 2e-6, fenv 10000 case 9020).  Raised after the
-             * product check above, which keeps its own tolerance. */
-            swr_cond(c, fmax(kx, ky));
+            double k[3];
+            setup_point_k(&r->matrix, p, k);
+            tol = fmax(tol, 1e-6 + 64 * DBL_EPSILON * fmax(k[0], k[1]));
         }
         if (!(fabs(x) <= 1 + tol && fabs(y) <= 1 + tol)) {
             /* (findings 2-3 of docs/quality.md, fixed: 1e5..1e6 offsets, lights
@@ -470,7 +501,16 @@ static void e_setup_common(swr_ctx* c, int range) {
     }
     if (!swr_verdict(c, st, 3, (void*)&r, sizeof r, (void*)pts, sizeof pts, (void*)&count, sizeof count)) return;
     if (st == SWARP_INFO_WARP_UNIFORM) SWR_CHECK(c, r.n_eye == INFINITY || r.n_eye > 0, "uniform with n_eye %g", r.n_eye);
-    check_setup_result(c, &s, st, &r, pts, n_cnt ? r.point_count : count, !n_pts);
+    size_t n_body = n_cnt ? r.point_count : count;
+    if (n_pts) { /* B for the conditioning: the same call in the default environment */
+        swarp_setup_result r2;
+        n_body = 0;
+        if (range)
+            (void)swarp_setup_range(&s.cam, &s.light, &s.box, near, far, s.use_opt ? &s.opt : NULL, &r2, pts, SWARP_BODY_MAX_POINTS, &n_body);
+        else
+            (void)swarp_setup(&s.cam, &s.light, &s.box, s.use_opt ? &s.opt : NULL, &r2, pts, SWARP_BODY_MAX_POINTS, &n_body);
+    }
+    check_setup_result(c, &s, st, &r, pts, n_body, !n_pts);
     if (!n_pts) SWR_CHECK(c, swr_untouched(pts + r.point_count, sizeof pts - r.point_count * sizeof pts[0]),
                           "wrote past point_count");
 }
