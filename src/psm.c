@@ -28,6 +28,8 @@
  * Welzl's move-to-front scheme (as Gärtner's smallest enclosing ball,
  * expected linear time).  At τ = 0 all directions coincide: the orthographic
  * rows (axis -q̂) are the exact limit. */
+#include <float.h>
+
 #include "geometry_internal.h"
 
 /* |w_l|/|q_h| below this: the PPS light is at infinity (orthographic rows).
@@ -145,6 +147,20 @@ static void sw_camera_matrix(const swarp_camera* cam, double near, double far, d
     sw_set(&P, 2, 3, -2.0 * fa * n / (fa - n));
     sw_set(&P, 3, 2, -1.0);
     sw_mul(&P, Vc, Mc);
+}
+
+/* Is p in front of the light camera QM by more than the rounding of its w
+ * (64 eps of the sizes of the terms summed)?  A point on the light's own
+ * plane w = 0 -- the light itself, a vertex of B when it lies in the scene
+ * box ([RHS] §3.1.1: B = conv(H ∪ {l}) ∩ S) -- has w = 0 up to that
+ * rounding, whose sign the rounding mode set: taken as a caster its depth
+ * z/w of 1e15 stretched the depth extent, the fit then called x and y flat
+ * beside it and the map collapsed (SWARP_INFO_FLAT_EXTENT under
+ * FE_DOWNWARD only; issue 9, fenv swarp_setup_points case 28597).  It
+ * casts no shadow into the light frustum. */
+static int sw_psm_in_front(const swarp_mat4* QM, swarp_vec3 p) {
+    const double t0 = sw_at(QM, 3, 0) * p.x, t1 = sw_at(QM, 3, 1) * p.y, t2 = sw_at(QM, 3, 2) * p.z, t3 = sw_at(QM, 3, 3);
+    return t0 + t1 + t2 + t3 > 64.0 * DBL_EPSILON * (fabs(t0) + fabs(t1) + fabs(t2) + fabs(t3));
 }
 
 swarp_status sw_psm_setup(const swarp_camera* cam, const swarp_light* light, const swarp_vec3* B, size_t nb,
@@ -270,15 +286,11 @@ swarp_status sw_psm_setup(const swarp_camera* cam, const swarp_light* light, con
                 double d = sg * sw_at(&F, row, 3) - sw_at(&F, 3, 3);
                 if (sw_poly_clip(&C, n, d, &C) != SWARP_OK) break;
             }
-            for (uint32_t i = 0; i < C.vertex_count; ++i) {
-                swarp_vec4 h = sw_xform_point(&QM, C.vertices[i]);
-                if (h.w > 0.0) zp[nz++] = C.vertices[i];
-            }
+            for (uint32_t i = 0; i < C.vertex_count; ++i)
+                if (sw_psm_in_front(&QM, C.vertices[i])) zp[nz++] = C.vertices[i];
         } else {
-            for (size_t i = 0; i < nb && nz < SWARP_BODY_MAX_POINTS + SWARP_POLY_MAX_VERTICES; ++i) {
-                swarp_vec4 h = sw_xform_point(&QM, B[i]);
-                if (h.w > 0.0) zp[nz++] = B[i];
-            }
+            for (size_t i = 0; i < nb && nz < SWARP_BODY_MAX_POINTS + SWARP_POLY_MAX_VERTICES; ++i)
+                if (sw_psm_in_front(&QM, B[i])) zp[nz++] = B[i];
         }
     }
     s = sw_focus_fit(&QM, H, nh, zp, nz, dr, &A);

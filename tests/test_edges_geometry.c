@@ -1237,6 +1237,52 @@ START_TEST(fe_body_points_one_ulp_range_rounding_mode) {
 }
 END_TEST
 
+/* Issue 9 (fenv, swarp_setup_points case 28597 at 30000 cases): PSM with
+ * an omni light inside the scene box, so the light itself is a vertex of B
+ * ([RHS] §3.1.1).  On the light camera's w = 0 plane its w is rounding
+ * (+-1e-15), and the casters' depth range took it when the rounding made w
+ * positive (FE_DOWNWARD): a depth of -5e15 made the fit call x and y flat
+ * and the map collapsed (SWARP_INFO_FLAT_EXTENT, rows of 1e-17).  Casters
+ * are now taken only with w above its rounding (src/psm.c). */
+START_TEST(fe_setup_points_psm_light_in_b) {
+    swarp_camera cam = {{0x1.e844419ef06e8p+19, 0x1.9c16768fb6f8bp+1, 0x1.e84a3a2358517p+19},
+                        {0x1.ef942ece7d0e1p-1, -0x1.b5f06e8950acbp-5, 0x1.f6bc44aa9d276p-3},
+                        {0, 1, 0},
+                        0x1.21b7777584959p+1,
+                        0x1.b3b8a81d40cf2p+0,
+                        0x1.b5b590e211506p-1,
+                        0x1.8700b559e34d2p+22,
+                        {0, 0, 0, 0}};
+    swarp_light l = {SWARP_LIGHT_POINT, 0, {-0x1.375370a63a6dap-1, 0x1.59dc28506548fp-6, 0x1.965440804fad1p-1},
+                     {0x1.e84534f06a27fp+19, 0x1.47cff0b3f9354p+2, 0x1.e847eeb8c327fp+19}, 0, {0, 0, 0, 0}};
+    swarp_aabb box = {{0x1.e844419ef06e8p+19, -0x1.19476db815e78p-2, 0x1.e84233b08336bp+19},
+                      {0x1.e84d02b75bbacp+19, 0x1.3ff4866071525p+4, 0x1.e84dfe36cb80fp+19}};
+    swarp_setup_options o;
+    memset(&o, 0, sizeof o);
+    o.technique = SWARP_TECHNIQUE_PSM;
+    o.depth_range = SWARP_DEPTH_NEG_ONE_TO_ONE;
+    swarp_vec3 B[SWARP_BODY_MAX_POINTS];
+    size_t nb = 0;
+    ck_assert_int_eq(swarp_body_points(&cam, cam.near, cam.far, &l, &box, B, SWARP_BODY_MAX_POINTS, &nb), SWARP_OK);
+    swarp_polyhedron H;
+    ck_assert_int_eq(swarp_body_h(&cam, cam.near, cam.far, &box, &H), SWARP_OK);
+    swarp_setup_result r0, r;
+    swarp_status s0 = swarp_setup_points(&cam, &l, B, nb, H.vertices, H.vertex_count, cam.near, cam.far, &o, &r0);
+    ck_assert_msg(s0 == SWARP_OK, "%s", swarp_status_name(s0));
+    double scale = 0;
+    for (int k = 0; k < 16; ++k) scale = fmax(scale, fabs(r0.light_proj.m[k]));
+    for (size_t m = 0; m < sizeof tu_modes / sizeof tu_modes[0]; ++m) {
+        fesetround(tu_modes[m]);
+        swarp_status s = swarp_setup_points(&cam, &l, B, nb, H.vertices, H.vertex_count, cam.near, cam.far, &o, &r);
+        fesetround(FE_TONEAREST);
+        ck_assert_msg(s == s0, "mode %zu: %s, default %s", m, swarp_status_name(s), swarp_status_name(s0));
+        for (int k = 0; k < 16; ++k)
+            ck_assert_msg(fabs(r.light_proj.m[k] - r0.light_proj.m[k]) <= 1e-9 * scale, "mode %zu: light_proj[%d] %.17g, default %.17g",
+                          m, k, r.light_proj.m[k], r0.light_proj.m[k]);
+    }
+}
+END_TEST
+
 int main(void) {
     Suite* s = suite_create("edges_geometry");
     TCase* t = tcase_create("geometry");
@@ -1274,6 +1320,7 @@ int main(void) {
     tcase_add_test(t, fe_poly_flat_frustum_faces_opposite);
     tcase_add_test(t, fe_setup_flat_frustum_rounding_mode);
     tcase_add_test(t, fe_body_points_one_ulp_range_rounding_mode);
+    tcase_add_test(t, fe_setup_points_psm_light_in_b);
     suite_add_tcase(s, t);
     return tu_run_suite(s) ? 1 : 0;
 }
