@@ -455,6 +455,7 @@ static void check_setup_result(swr_ctx* c, const scene_args* s, swarp_status st,
     }
 }
 
+static void setup_capacity_edge(swr_ctx* c, const scene_args* s, int range, double near, double far, size_t cap);
 static void e_setup_common(swr_ctx* c, int range) {
     scene_args s;
     gen_setup_scene(c, &s);
@@ -494,6 +495,8 @@ static void e_setup_common(swr_ctx* c, int range) {
         st = SWR_CALL(c, swarp_setup(n_cam ? NULL : &s.cam, n_l ? NULL : &s.light, n_b ? NULL : &s.box,
                                     s.use_opt ? &s.opt : NULL, n_o ? NULL : &r, n_pts ? NULL : pts, cap,
                                     n_cnt ? NULL : &count));
+    if (!n_pts && cap < SWARP_BODY_MAX_POINTS && (st == SWARP_ERR_CAPACITY || !swarp_status_is_error(st)))
+        setup_capacity_edge(c, &s, range, near, far, cap);
     if (st == SWARP_ERR_CAPACITY) { /* the needed count may be written */
         SWR_CHECK(c, swr_untouched(pts, sizeof pts) && swr_untouched(&r, sizeof r), "CAPACITY but outputs written");
         if (!n_cnt) SWR_CHECK(c, count > cap && count <= SWARP_BODY_MAX_POINTS, "CAPACITY with needed %zu, capacity %zu", count, cap);
@@ -1119,6 +1122,48 @@ static swarp_vec3 unit_scaled(swarp_vec3 a) {
     double m = fmax(fabs(a.x), fmax(fabs(a.y), fabs(a.z)));
     if (!(m > 0) || !isfinite(m)) return a;
     return unit(v3(a.x / m, a.y / m, a.z / m));
+}
+
+/* B's vertex count (SWARP_ERR_CAPACITY against the caller's capacity)
+ * decided by rounding: a face of H parallel to a directional light to
+ * within its rounding, |n·u| <= 64 eps (n and u unit vectors rounded to a
+ * few eps: the light exactly in the plane of a frustum face, e.g. along the
+ * camera's right axis, which lies in the top and bottom planes), is swept
+ * or kept by the sign of the rounding (src/body.c, sw_face_is_front).  The
+ * body is the same set either way, but its vertex list differs by that
+ * face's vertices: kept, they lie on edges of B (fenv case 23947: 16
+ * vertices under FE_TONEAREST, 14 under the directed modes, n·u = -6e-18
+ * and 4e-17).  So the status is a rounding edge when the capacity is
+ * within G of B's count, G the number of vertices of those faces.  H is
+ * recomputed here (swarp_body_h, world coordinates: the face normals are
+ * the library's to a few eps), the count from a full-capacity call in the
+ * default environment. */
+static void setup_capacity_edge(swr_ctx* c, const scene_args* s, int range, double near, double far, size_t cap) {
+    int t = (int)s->light.type;
+    if ((t != 0 && t != 1) || !fin3(&s->light.direction) || !(vmax(s->light.direction) > 0)) return;
+    swarp_polyhedron H;
+    if (!swarp_body_h || swarp_body_h(&s->cam, near, far, &s->box, &H) != SWARP_OK) return;
+    swarp_vec3 u = unit_scaled(s->light.direction);
+    uint8_t on[SWARP_POLY_MAX_VERTICES];
+    memset(on, 0, sizeof on);
+    size_t G = 0;
+    for (uint32_t f = 0; f < H.face_count && f < SWARP_POLY_MAX_FACES; ++f) {
+        const swarp_plane* q = &H.planes[f];
+        if (!(fabs(q->a * u.x + q->b * u.y + q->c * u.z) <= 64 * DBL_EPSILON)) continue;
+        for (uint32_t k = 0; k < H.face_vertex_count[f] && k < SWARP_POLY_MAX_FACE_VERTICES; ++k) {
+            uint8_t v = H.face_vertices[f][k];
+            if (v < SWARP_POLY_MAX_VERTICES && !on[v]) on[v] = 1, ++G;
+        }
+    }
+    if (!G) return;
+    swarp_setup_result r2;
+    swarp_vec3 bp[SWARP_BODY_MAX_POINTS];
+    size_t n = 0;
+    swarp_status st = range ? swarp_setup_range(&s->cam, &s->light, &s->box, near, far, s->use_opt ? &s->opt : NULL, &r2, bp,
+                                                SWARP_BODY_MAX_POINTS, &n)
+                            : swarp_setup(&s->cam, &s->light, &s->box, s->use_opt ? &s->opt : NULL, &r2, bp, SWARP_BODY_MAX_POINTS, &n);
+    if (swarp_status_is_error(st)) return;
+    if (n <= cap + G && cap <= n + G) c->rounding_edge = 1;
 }
 
 static void e_focus_light_view(swr_ctx* c) {
