@@ -916,6 +916,41 @@ START_TEST(fenvb_bias_normal_offset_facing_light_rounding_mode) {
 }
 END_TEST
 
+/* fenvd: the depth bias of a tiny world bias (c = s = 1e-12) on an ortho map
+ * was d(p) - d(p + t L), two window depths of order 1 rounded to eps: a
+ * difference of 6.4e-14 that read 8.2e-14, 9.6e-14 or 1.1e-13 with the
+ * caller's rounding mode (robust_fenv 30000, swarp_bias_slope_scaled case
+ * 13490).  The secant form t (g_z - z g_w)/(h_w + t g_w) keeps its factors'
+ * relative accuracy: the same to 1e-12 in every mode, and -t g_z / 2 here
+ * (ortho, depth [-1, 1] -> window [0, 1]). */
+START_TEST(fenvd_bias_slope_scaled_tiny_depth_bias_rounding_mode) {
+    swarp_bias_map map;
+    memset(&map, 0, sizeof map);
+    static const double M[16] = {-0.26339782772477321, 7.8109187900805884e-05, -0.12499191710449216, 0,
+                                 0.28108651663893419,  -4.7057537890308446e-05, -0.1867450211314452, 0,
+                                 0.82354795925072888,  4.1043183272972156e-05, 0.023761710318398247, 0,
+                                 6.2545625441574257,   -0.0010876431680039475, -4.7977114591666332, 1};
+    memcpy(map.world_to_clip.m, M, sizeof M);
+    map.res_s = map.res_t = 85.3328, map.depth = SWARP_DEPTH_NEG_ONE_TO_ONE;
+    swarp_light light;
+    memset(&light, 0, sizeof light);
+    light.type = SWARP_LIGHT_DIRECTIONAL;
+    light.direction = (swarp_vec3){0.6, 0.0, -0.8}; /* L = (-0.6, 0, 0.8) */
+    const swarp_vec3 p = {1694.1541463288179, -1051.4334426114694, 892.33162665590817};
+    const swarp_vec3 n = {-light.direction.x, -light.direction.y, -light.direction.z}; /* tan 0 */
+    const double gz = -0.6 * M[2] + 0.8 * M[10], want = -0.5 * 1e-12 * gz;
+    static const int modes[4] = {FE_TONEAREST, FE_UPWARD, FE_DOWNWARD, FE_TOWARDZERO};
+    for (int m = 0; m < 4; ++m) {
+        double wb = -1, db = -1;
+        fesetround(modes[m]);
+        swarp_status st = swarp_bias_slope_scaled(&map, &light, &p, &n, 1e-12, 1e-12, &wb, &db);
+        fesetround(FE_TONEAREST);
+        ck_assert_int_eq(st, SWARP_OK);
+        ck_assert_msg(fabs(db - want) <= 1e-12 * fabs(want), "mode %d: depth bias %.17g, want %.17g", m, db, want);
+    }
+}
+END_TEST
+
 /* fenva: a one-point body (flat across the light) at a 1e6 offset: the depth
  * row's zb = -(t_max + t_min)/dt came from dt = (t + texel) - (t - texel),
  * which carried ulp(t)/texel ~ 1e-8 of relative error, its sign set by the
@@ -982,6 +1017,10 @@ int main(void) {
     /* fenvb pass */
     t = tcase_create("fenvb");
     tcase_add_test(t, fenvb_bias_normal_offset_facing_light_rounding_mode);
+    suite_add_tcase(s, t);
+    /* fenvd pass */
+    t = tcase_create("fenvd");
+    tcase_add_test(t, fenvd_bias_slope_scaled_tiny_depth_bias_rounding_mode);
     suite_add_tcase(s, t);
     return tu_run_suite(s) ? 1 : 0;
 }
