@@ -63,16 +63,22 @@ static swarp_status sw_texel_size(const swarp_bias_map* map, swarp_vec3 p, doubl
     swarp_vec4 h;
     swarp_status st = sw_project(&map->world_to_clip, p, &h);
     if (st != SWARP_OK) return st;
-    const double nx = h.x / h.w, ny = h.y / h.w, nz = h.z / h.w;
-    /* one texel = 2/res in NDC; shift at constant depth and map back */
-    const double step[2][2] = {{2.0 / map->res_s, 0.0}, {0.0, 2.0 / map->res_t}};
+    /* One texel = 2/res in NDC: shift at constant depth and map back.  The
+     * shifted point is M^-1 (ndc + d e_k, 1) = ((p, 1) + h_w d b) / h_w up to
+     * the homogeneous factor, b = column k of M^-1 (M^-1 h = (p, 1)), so
+     *   p' - p = h_w d (b_xyz - p b_w) / (1 + h_w d b_w)
+     * exactly: the step itself, not the difference of two points of
+     * magnitude |p| (a far point's texel lost |p| / L_texel ulps to that
+     * cancellation, its last digits set by the caller's rounding mode:
+     * robust_fenv 30000, swarp_bias_texel_size cases 26894, 29298). */
+    const double step[2] = {2.0 / map->res_s, 2.0 / map->res_t};
     double L[2];
     for (int k = 0; k < 2; ++k) {
-        swarp_vec4 q = {nx + step[k][0], ny + step[k][1], nz, 1.0};
-        swarp_vec4 w = sw_xform4(&inv, q);
-        if (!(fabs(w.w) > SW_BIAS_W_EPS)) return SWARP_ERR_SINGULAR;
-        swarp_vec3 pw = sw_v3(w.x / w.w, w.y / w.w, w.z / w.w);
-        L[k] = sw_len(sw_sub(pw, p));
+        const double hd = h.w * step[k];
+        const double bw = inv.m[k * 4 + 3], den = 1.0 + hd * bw;
+        if (!(fabs(den) > SW_BIAS_W_EPS)) return SWARP_ERR_SINGULAR;
+        const swarp_vec3 b = sw_v3(inv.m[k * 4], inv.m[k * 4 + 1], inv.m[k * 4 + 2]);
+        L[k] = fabs(hd / den) * sw_len(sw_sub(b, sw_scale(p, bw)));
         if (!sw_finite(L[k])) return SWARP_ERR_NON_FINITE;
     }
     *L_s = L[0];

@@ -951,6 +951,39 @@ START_TEST(fenvd_bias_slope_scaled_tiny_depth_bias_rounding_mode) {
 }
 END_TEST
 
+/* fenvd: the texel size of a far point (|p| ~ 3e8, L_texel ~ 1e5) of a
+ * perspective map was |M^-1 (ndc + step) - p|, a difference of two points of
+ * magnitude |p| that the far point's tiny homogeneous w resolves coarsely:
+ * 93118.54 in the default mode, 93121.43 under FE_TOWARDZERO (robust_fenv
+ * 30000, swarp_bias_texel_size case 26894).  The step form
+ * h_w d (b_xyz - p b_w) / (1 + h_w d b_w) (b a column of M^-1) never forms
+ * p': within 1e-7 in every mode (2e-9 seen: the inverse's own rounding,
+ * the map's condition number is ~2e9). */
+START_TEST(fenvd_bias_texel_size_far_point_rounding_mode) {
+    swarp_bias_map map;
+    memset(&map, 0, sizeof map);
+    static const double M[16] = {-3.9283760701198864, -0.0090772364843252282, -0.4777251719134416, -0.47772466130453467,
+                                 -0.81237268617103031, -0.0076317624645193104, 0.8437615463233189, 0.84376064448228938,
+                                 4.8694000063363854,  -0.0085962611218823575, -0.24463697745390828, -0.24463671597758885,
+                                 -8.9217452228980463, 0.2621702356128402,     -65.324964730467897, -47.402512232774704};
+    memcpy(map.world_to_clip.m, M, sizeof M);
+    map.res_s = 5101.79, map.res_t = 8192, map.depth = SWARP_DEPTH_DEFAULT;
+    const swarp_vec3 p = {-281455272.17089683, -229404308.46017605, -264436279.94170618};
+    static const int modes[4] = {FE_TONEAREST, FE_UPWARD, FE_DOWNWARD, FE_TOWARDZERO};
+    double L0[3] = {0};
+    for (int m = 0; m < 4; ++m) {
+        double L[3] = {-1, -1, -1};
+        fesetround(modes[m]);
+        swarp_status st = swarp_bias_texel_size(&map, &p, &L[0], &L[1], &L[2]);
+        fesetround(FE_TONEAREST);
+        ck_assert_int_eq(st, SWARP_OK);
+        if (m == 0) memcpy(L0, L, sizeof L);
+        for (int i = 0; i < 3; ++i)
+            ck_assert_msg(fabs(L[i] - L0[i]) <= 1e-7 * L0[0], "mode %d: output %d = %.17g, default %.17g", m, i, L[i], L0[i]);
+    }
+}
+END_TEST
+
 /* fenva: a one-point body (flat across the light) at a 1e6 offset: the depth
  * row's zb = -(t_max + t_min)/dt came from dt = (t + texel) - (t - texel),
  * which carried ulp(t)/texel ~ 1e-8 of relative error, its sign set by the
@@ -1021,6 +1054,7 @@ int main(void) {
     /* fenvd pass */
     t = tcase_create("fenvd");
     tcase_add_test(t, fenvd_bias_slope_scaled_tiny_depth_bias_rounding_mode);
+    tcase_add_test(t, fenvd_bias_texel_size_far_point_rounding_mode);
     suite_add_tcase(s, t);
     return tu_run_suite(s) ? 1 : 0;
 }
