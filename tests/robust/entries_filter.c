@@ -543,6 +543,34 @@ static void e_evsm_moments(swr_ctx* c) {
         swr_close(c, "EVSM moment", m[i], r[i], 16 * EPS * (1 + 2 * fmax(cp, cn) * fabs(x)), DBL_MIN);
 }
 
+/* The condition of EVSM's visibility (absolute: v in [0, 1]) with respect
+ * to the rounding of the warped receiver w = +-e^{c t}: the library's w
+ * carries eps (c |t| + 2) |w| (c t's rounding times c |t|, exp's own ulp or
+ * two), d = w - M_1 that absolute error, and Chebyshev's
+ * v = s2/(s2 + d^2) has dv/dd = -2 v (1 - v)/d: kappa = 2 v (1 - v)
+ * (c |t| + 2) |w| / |d|, plus 2 (c |t| + 2) v (1 - v) when the floor
+ * min_var (c w)^2 is the variance.  A receiver a hair behind a huge warped
+ * mean (w ~ 1e11, d ~ 1e-8 w) has v near 1 move by 1e-8 with the rounding
+ * mode (robust_fenv 200000, cases 103970, 129647).  The bound v = min(v+, v-)
+ * takes the warp that gives it (both when they are within 1e-6). */
+static void evsm_vis_cond(swr_ctx* c, const double m[4], double t, double cp, double cn, double mv) {
+    if (!(fabs(t) * fmax(cp, cn) <= 350) || !(cp > 0) || !(cn > 0)) return;
+    long double vi[2], ki[2];
+    for (int i = 0; i < 2; ++i) {
+        const long double cc = i == 0 ? cp : cn, w = i == 0 ? expl(cc * t) : -expl(-cc * t), mu = m[2 * i], e = cc * fabs(t) + 2;
+        vi[i] = 1, ki[i] = 0;
+        if (w <= mu) continue; /* in front of the mean: v = 1 */
+        long double s2 = m[2 * i + 1] - mu * mu, fl = mv * (cc * w) * (cc * w), d = w - mu;
+        int floored = !(s2 >= fl);
+        if (floored) s2 = fl;
+        vi[i] = s2 / (s2 + d * d);
+        ki[i] = 2 * vi[i] * (1 - vi[i]) * e * (fabsl(w) / d + floored);
+    }
+    const long double vmin = fminl(vi[0], vi[1]);
+    for (int i = 0; i < 2; ++i)
+        if (vi[i] <= vmin + 1e-6L) swr_cond(c, (double)ki[i]);
+}
+
 static void e_evsm_visibility(swr_ctx* c) {
     SKIP_IF_MISSING(c, swarp_evsm_visibility);
     double x = swr_num(c, 0, 1, brk01, 3), cp = swr_num(c, 0.5, 40, NULL, 0), cn = swr_num(c, 0.5, 40, NULL, 0);
@@ -595,6 +623,7 @@ static void e_evsm_visibility(swr_ctx* c) {
     c->out_scale = 1; /* a fraction in [0, 1] */
     swr_rec(c, "visibility", v);
     SWR_CHECK(c, v >= 0 && v <= 1, "visibility %g outside [0, 1]", v);
+    evsm_vis_cond(c, m, t, cp, cn, mv);
 }
 
 static void e_msm_moments(swr_ctx* c) {
