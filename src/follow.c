@@ -22,6 +22,8 @@
  * without a jump (the warp is uniform there).  swarp_setup uses the same
  * oriented warp: its blended frame near parallel can have y·v < 0 too, and
  * the first followed frame must continue it without a jump. */
+#include <float.h>
+
 #include "geometry_internal.h"
 
 /* Rows of a previous light frame must be unit and orthogonal within this:
@@ -31,33 +33,53 @@
 #define SW_FOLLOW_ORTHO_TOL 1e-6
 
 /* 1e-9 rad: far above the rounding of unit vectors (~1e-16), far below
- * anything visible (a 1e9-texel map would turn by one texel) */
+ * anything visible (a 1e9-texel map would turn by one texel).  The
+ * directions compared are projections normal to the axis, unit vectors
+ * divided by their length s (sin of the angle to the axis, down to 1e-8),
+ * so their rounding is a few eps/s: up to 2e-8 rad, above this bound, and
+ * whether a frame followed with Δ ~ 0 "lagged" was the rounding mode's
+ * choice (issue 9, fenv swarp_setup_follow case 38987: a light 1e-7 from
+ * the view, φ = 0.8e-9 to 2.9e-9 by mode).  The bound used is this plus
+ * SW_FOLLOW_ALIGNED_EPS eps/s of both projections (sw_follow_aligned_tol):
+ * at most 7e-7 rad, below what the follow bound allows for rounding (1e-6,
+ * tests/robust). */
 #define SW_FOLLOW_ALIGNED 1e-9
+#define SW_FOLLOW_ALIGNED_EPS 16.0
+
+double sw_follow_aligned_tol(double s_h, double s_t) {
+    return SW_FOLLOW_ALIGNED + SW_FOLLOW_ALIGNED_EPS * DBL_EPSILON * (1.0 / s_h + 1.0 / s_t);
+}
 
 double sw_follow_angle(swarp_vec3 a, swarp_vec3 b) {
     return atan2(sw_glen(sw_cross(a, b)), sw_dot(a, b));
 }
 
-swarp_vec3 sw_follow_turn(swarp_vec3 h, swarp_vec3 t, swarp_vec3 a, double budget, int* lag) {
+swarp_vec3 sw_follow_turn(swarp_vec3 h, swarp_vec3 t, swarp_vec3 a, double budget, double aligned, int* lag) {
     swarp_vec3 c = sw_cross(h, t);
     double phi = atan2(sw_glen(c), sw_dot(h, t)); /* in [0, pi/2] as t·h >= 0 */
     *lag = 0;
-    /* within SW_FOLLOW_ALIGNED the frame is aligned: rounding of a frame
-     * followed with Δ = 0 must not count as lagging */
-    if (!(phi > budget) || phi < SW_FOLLOW_ALIGNED) return t;
+    /* within `aligned` (sw_follow_aligned_tol) the frame is aligned:
+     * rounding of a frame followed with Δ = 0 must not count as lagging */
+    if (!(phi > budget) || phi < aligned) return t;
     *lag = 1;
     double k = sw_dot(a, c) < 0.0 ? -1.0 : 1.0; /* turn direction about a */
     swarp_vec3 ah = sw_cross(a, h);
     return sw_add(sw_scale(h, cos(budget)), sw_scale(ah, k * sin(budget)));
 }
 
-/* unit vector perpendicular to a (h projected), 0 if h is (nearly) along a */
-static int sw_perp_unit(swarp_vec3 h, swarp_vec3 a, swarp_vec3* out) {
+/* unit vector perpendicular to a (h projected), 0 if h is (nearly) along
+ * a; *len: the projection's length (sin of the angle between h and a) */
+static int sw_perp_unit_len(swarp_vec3 h, swarp_vec3 a, swarp_vec3* out, double* len) {
     swarp_vec3 p = sw_sub(h, sw_scale(a, sw_dot(h, a)));
+    *len = sw_glen(p);
     /* below 1e-8 the direction is rounding noise of a previous axis 90°
      * or more away: no usable transport (a teleport) */
-    if (!(sw_glen(p) > 1e-8)) return 0;
+    if (!(*len > 1e-8)) return 0;
     return sw_gnormalize(p, out);
+}
+static int sw_perp_unit(swarp_vec3 h, swarp_vec3 a, swarp_vec3* out) {
+    double len;
+    return sw_perp_unit_len(h, a, out, &len);
 }
 
 swarp_status sw_follow_light_view(const swarp_camera* cam, swarp_vec3 origin, swarp_vec3 forward,
@@ -65,13 +87,14 @@ swarp_status sw_follow_light_view(const swarp_camera* cam, swarp_vec3 origin, sw
     swarp_vec3 a, v, r, u, h, t;
     if (!sw_gnormalize(forward, &a)) return SWARP_ERR_ZERO_VECTOR;
     sw_camera_basis(cam, &v, &r, &u);
-    int have_h = sw_perp_unit(fw->up, a, &h);
-    int have_t = sw_perp_unit(v, a, &t); /* v̂: the aligned up [RHS] §3.2.1 */
+    double s_h, s_t;
+    int have_h = sw_perp_unit_len(fw->up, a, &h, &s_h);
+    int have_t = sw_perp_unit_len(v, a, &t, &s_t); /* v̂: the aligned up [RHS] §3.2.1 */
     double delta = sw_follow_angle(fw->axis, a) + sw_follow_angle(fw->view, v);
     int lag = 0;
     if (have_t && have_h) {
         if (sw_dot(h, t) < 0.0) t = sw_scale(t, -1.0); /* ±v̂: the line, not the vector */
-        h = sw_follow_turn(h, t, a, SWARP_FOLLOW_KAPPA * delta, &lag);
+        h = sw_follow_turn(h, t, a, SWARP_FOLLOW_KAPPA * delta, sw_follow_aligned_tol(s_h, s_t), &lag);
     } else if (have_t) {
         h = t; /* the previous up is useless (axis turned by ~90° or more) */
     } else if (!have_h) {

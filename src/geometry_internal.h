@@ -146,8 +146,12 @@ typedef struct sw_follow {
     swarp_vec3 view; /* the previous view direction (unit) */
 } sw_follow;
 /* h (unit, perpendicular to a) turned about a toward t (unit, perpendicular
- * to a, t·h >= 0) by at most budget radians; *lag = 1 when it stopped short */
-swarp_vec3 sw_follow_turn(swarp_vec3 h, swarp_vec3 t, swarp_vec3 a, double budget, int* lag);
+ * to a, t·h >= 0) by at most budget radians; *lag = 1 when it stopped short
+ * by more than `aligned` radians (sw_follow_aligned_tol) */
+swarp_vec3 sw_follow_turn(swarp_vec3 h, swarp_vec3 t, swarp_vec3 a, double budget, double aligned, int* lag);
+/* the angle below which h and t count as aligned when they are projections
+ * normal to the axis of lengths s_h, s_t (their rounding: eps/s) */
+double sw_follow_aligned_tol(double s_h, double s_t);
 /* the angle between two unit vectors, accurate at 0 and pi */
 double sw_follow_angle(swarp_vec3 a, swarp_vec3 b);
 /* the light view from origin along forward whose up follows fw */

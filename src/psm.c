@@ -114,13 +114,16 @@ static int sw_psm_follow_e1(const sw_follow* fw, swarp_vec3 a, swarp_vec3* e1, i
     swarp_vec3 h, t = *e1;
     *lag = 0;
     swarp_vec3 ph = sw_sub(fw->up, sw_scale(a, sw_dot(fw->up, a)));
+    const double s_h = sw_glen(ph);
     /* 1e-8: below it the projected direction is rounding noise (the
      * previous axis was 90° away: nothing to follow, take the target) */
-    if (!(sw_glen(ph) > 1e-8) || !sw_gnormalize(ph, &h)) return 0;
+    if (!(s_h > 1e-8) || !sw_gnormalize(ph, &h)) return 0;
     /* the axis' sign is free in a previous result: the angle between lines */
     double delta = atan2(sw_glen(sw_cross(fw->axis, a)), fabs(sw_dot(fw->axis, a)));
     if (sw_dot(h, t) < 0.0) t = sw_scale(t, -1.0);
-    h = sw_follow_turn(h, t, a, SWARP_FOLLOW_KAPPA * delta, lag);
+    /* t (sw_perp_ref) is blended away from its zero: at least 0.08 long
+     * before it is normalised (0.05 taken) */
+    h = sw_follow_turn(h, t, a, SWARP_FOLLOW_KAPPA * delta, sw_follow_aligned_tol(s_h, 0.05), lag);
     swarp_vec3 p = sw_sub(h, sw_scale(a, sw_dot(h, a)));
     return sw_gnormalize(p, e1);
 }

@@ -1283,6 +1283,51 @@ START_TEST(fe_setup_points_psm_light_in_b) {
 }
 END_TEST
 
+/* Issue 9 (fenv, swarp_setup_follow case 38987 at 60000 cases): a light
+ * 1e-7 rad from the view direction, followed with Δ = 4e-14.  The target
+ * up (the view projected normal to the light, 1e-7 long) is rounded to
+ * eps/1e-7 = 2e-9 rad, above the 1e-9 below which the follow rule called
+ * the frame aligned, so FE_TONEAREST gave SWARP_OK (φ = 0.8e-9) and the
+ * directed modes SWARP_INFO_FOLLOW_LAG (φ = 1.8e-9, 2.9e-9).  The bound now
+ * adds 16 eps over each projection's length (src/follow.c). */
+START_TEST(fe_setup_follow_aligned_rounding_mode) {
+    swarp_camera cam = {{-0x1.24a14cfe4aaaap+2, 0x1.5489c2e3efd6p+2, -0x1.ce986f28b59e9p+4},
+                        {0x1.d99b26bb2f639p-1, -0x1.0519369f9fb89p-3, 0x1.6e7ff22cc397dp-2},
+                        {0, 1, 0},
+                        0x1.fffffb789fa69p-1,
+                        0x1.7ffffffffffffp+1,
+                        0x1.2af58d8f7d9b1p-1,
+                        0x1.64631ad1d6dedp+22,
+                        {0, 0, 0, 0}};
+    swarp_camera pcam = cam;
+    pcam.dir = (swarp_vec3){0x1.d99b26bb2f63ap-1, -0x1.0519369f9fb8ap-3, 0x1.6e7ff22cc397ep-2};
+    swarp_light l = {SWARP_LIGHT_DIRECTIONAL, 0, {0x1.d99b2585369fbp-1, -0x1.0519369f9fb73p-3, 0x1.6e7ff86eff201p-2}, {0, 0, 0}, 0,
+                     {0, 0, 0, 0}};
+    swarp_light pl = l;
+    pl.direction = (swarp_vec3){0x1.d99b258536981p-1, -0x1.0519369f9fb73p-3, 0x1.6e7ff86eff478p-2};
+    swarp_aabb box = {{-0x1.24a14cfe4aaaap+2, -0x1.95f624c87f178p+2, -0x1.ce986f28b59e9p+4},
+                      {0x1.41b1265cd4bd9p+6, 0x1.5489c2e3efd6p+2, 0x1.eaa28cc03c1f8p+1}};
+    swarp_setup_options o;
+    memset(&o, 0, sizeof o);
+    o.technique = SWARP_TECHNIQUE_LISPSM;
+    o.param = SWARP_WARP_PARAM_USER;
+    o.center = SWARP_WARP_CENTER_NEAREST_VERTEX;
+    o.depth_range = SWARP_DEPTH_ZERO_TO_ONE;
+    o.pancake = 1;
+    o.n_user = 0x1.5aa35b77d4436p+8;
+    swarp_setup_result prev, r0, r;
+    ck_assert(!swarp_status_is_error(swarp_setup(&pcam, &pl, &box, &o, &prev, NULL, 0, NULL)));
+    swarp_status s0 = swarp_setup_follow(&cam, &l, &box, &o, &pcam, &prev, &r0, NULL, 0, NULL);
+    ck_assert_msg(s0 == SWARP_OK, "%s", swarp_status_name(s0));
+    for (size_t m = 0; m < sizeof tu_modes / sizeof tu_modes[0]; ++m) {
+        fesetround(tu_modes[m]);
+        swarp_status s = swarp_setup_follow(&cam, &l, &box, &o, &pcam, &prev, &r, NULL, 0, NULL);
+        fesetround(FE_TONEAREST);
+        ck_assert_msg(s == s0, "mode %zu: %s, default %s", m, swarp_status_name(s), swarp_status_name(s0));
+    }
+}
+END_TEST
+
 int main(void) {
     Suite* s = suite_create("edges_geometry");
     TCase* t = tcase_create("geometry");
@@ -1321,6 +1366,7 @@ int main(void) {
     tcase_add_test(t, fe_setup_flat_frustum_rounding_mode);
     tcase_add_test(t, fe_body_points_one_ulp_range_rounding_mode);
     tcase_add_test(t, fe_setup_points_psm_light_in_b);
+    tcase_add_test(t, fe_setup_follow_aligned_rounding_mode);
     suite_add_tcase(s, t);
     return tu_run_suite(s) ? 1 : 0;
 }
