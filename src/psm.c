@@ -265,10 +265,13 @@ swarp_status sw_psm_setup(const swarp_camera* cam, const swarp_light* light, con
      * points with w <= 0, keeps the depth range continuous as the light
      * moves.  Without B's polyhedron (swarp_setup_points) the points of B
      * with w > 0 are used. */
-    for (size_t i = 0; i < nh; ++i) {
-        swarp_vec4 h = sw_xform_point(&QM, H[i]);
-        if (!(h.w > 0.0)) return SWARP_ERR_LIGHT_INSIDE_BODY;
-    }
+    /* a receiver on the light's plane w = 0 up to rounding (the light
+     * itself, a vertex of B, when B is the receivers: swarp_setup_points
+     * without H) is as much "among the receivers" as one behind it: under
+     * FE_TOWARDZERO its w came out +1e-16 and the map collapsed around it
+     * (SWARP_INFO_FLAT_EXTENT; issue 9, fenv swarp_setup_points case 38519) */
+    for (size_t i = 0; i < nh; ++i)
+        if (!sw_psm_in_front(&QM, H[i])) return SWARP_ERR_LIGHT_INSIDE_BODY;
     swarp_mat4 A;
     swarp_status s = sw_focus_fit(&QM, H, nh, NULL, 0, dr, &A);
     if (swarp_status_is_error(s)) return s;

@@ -1328,6 +1328,49 @@ START_TEST(fe_setup_follow_aligned_rounding_mode) {
 }
 END_TEST
 
+/* Issue 9 (fenv, swarp_setup_points case 38519 at 60000 cases): PSM without
+ * receivers (B is both), an omni light that is itself a vertex of B.  Its w
+ * in the light camera is 0 up to rounding: FE_TONEAREST, UPWARD and
+ * DOWNWARD refused the light among the receivers
+ * (SWARP_ERR_LIGHT_INSIDE_BODY), FE_TOWARDZERO got w = +1e-16 and a map
+ * collapsed around it (SWARP_INFO_FLAT_EXTENT).  A receiver must be in
+ * front of the light by more than the rounding of its w (src/psm.c). */
+START_TEST(fe_setup_points_psm_light_is_receiver) {
+    swarp_camera cam = {{-0x1.3feeaa7e822a5p+3, -0x1.8e460d304ac5fp+1, 0x1.bae3635bc42bp+3},
+                        {0x1.46f2a24266ed7p-1, 0x1.2b5a7869c70afp-3, -0x1.82d8178f3c57ap-1},
+                        {0, 1, 0},
+                        0x1.815d5207ca13cp+0,
+                        0x1.122eb40db70fdp+1,
+                        0x1.51346aee57ed1p-13,
+                        0x1.19dcc4343ba02p-11,
+                        {0, 0, 0, 0}};
+    swarp_light l = {SWARP_LIGHT_POINT, 0, {0x1.870b46921e48cp-1, 0x1.4a34b5443832ap-57, 0x1.4a7f57e35f4e6p-1},
+                     {-0x1.2feeaa7e822a5p+3, 0x1.4adb4810c882fp+3, 0x1.9ef594585ffcp+0}, 0, {0, 0, 0, 0}};
+    const swarp_vec3 B[9] = {{-0x1.3febb0ae29d0ap+3, -0x1.8e4a29c073c01p+1, 0x1.bae3f602b342bp+3},
+                             {-0x1.3febec46fca2dp+3, -0x1.8e406650bdddfp+1, 0x1.bae43c868cc32p+3},
+                             {-0x1.3fe4b75b80ffap+3, -0x1.8e53cc73416e1p+1, 0x1.bae54db129fcp+3},
+                             {-0x1.3fe57e9eefb63p+3, -0x1.8e33278b7eb61p+1, 0x1.bae63975cf8d6p+3},
+                             {-0x1.3feeaa9e91ccdp+3, -0x1.8e53cc73416e1p+1, 0x1.badce4d4b327fp+3},
+                             {-0x1.3feeaa9e91ccdp+3, -0x1.8e4a29c073c01p+1, 0x1.bae1720b81aa3p+3},
+                             {-0x1.3feeaa9e91ccdp+3, -0x1.8e406650bdddfp+1, 0x1.bae1eaedea9c6p+3},
+                             {-0x1.3feeaa9e91ccdp+3, -0x1.8e33278b7eb61p+1, 0x1.bade790283b27p+3},
+                             {-0x1.2feeaa7e822a5p+3, 0x1.4adb4810c882fp+3, 0x1.9ef594585ffcp+0}}; /* the light */
+    swarp_setup_options o;
+    memset(&o, 0, sizeof o);
+    o.technique = SWARP_TECHNIQUE_PSM;
+    o.slideback = 10.0;
+    swarp_setup_result r;
+    swarp_status s0 = swarp_setup_points(&cam, &l, B, 9, NULL, 0, cam.near, cam.far, &o, &r);
+    ck_assert_msg(s0 == SWARP_ERR_LIGHT_INSIDE_BODY, "%s", swarp_status_name(s0));
+    for (size_t m = 0; m < sizeof tu_modes / sizeof tu_modes[0]; ++m) {
+        fesetround(tu_modes[m]);
+        swarp_status s = swarp_setup_points(&cam, &l, B, 9, NULL, 0, cam.near, cam.far, &o, &r);
+        fesetround(FE_TONEAREST);
+        ck_assert_msg(s == s0, "mode %zu: %s, default %s", m, swarp_status_name(s), swarp_status_name(s0));
+    }
+}
+END_TEST
+
 int main(void) {
     Suite* s = suite_create("edges_geometry");
     TCase* t = tcase_create("geometry");
@@ -1367,6 +1410,7 @@ int main(void) {
     tcase_add_test(t, fe_body_points_one_ulp_range_rounding_mode);
     tcase_add_test(t, fe_setup_points_psm_light_in_b);
     tcase_add_test(t, fe_setup_follow_aligned_rounding_mode);
+    tcase_add_test(t, fe_setup_points_psm_light_is_receiver);
     suite_add_tcase(s, t);
     return tu_run_suite(s) ? 1 : 0;
 }
