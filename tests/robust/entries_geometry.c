@@ -317,6 +317,32 @@ static void setup_point_k(const swarp_mat4* m, const swarp_vec3* p, double k[3])
     }
 }
 
+/* The light view's rotation rows are unit vectors: their entries carry an
+ * absolute rounding of a few eps however small they are, so a light-space
+ * coordinate l_j = r_j·(p - o) (o the view's origin) moves by eps |p - o|,
+ * and the map coordinate u_k = X_k/W (rows of light_proj at l) by eps
+ * |p - o| sum_j |proj_kj - u_k proj_3j| / |W|: its condition number with
+ * respect to the light's direction.  Large where the fit is much finer than
+ * the distance from the origin: a 1e-9 slab seen edge-on 30 units away
+ * (entries of 2e9 that FE_UPWARD moved by 9e-7, fenv swarp_setup_follow
+ * 120000 case 108539, k = 6e10), a far point light. */
+static double setup_point_k_rot(const swarp_setup_result* r, const swarp_vec3* p) {
+    const double* V = r->light_view.m;
+    swarp_vec3 o = v3(-(V[12] * V[0] + V[13] * V[1] + V[14] * V[2]), -(V[12] * V[4] + V[13] * V[5] + V[14] * V[6]),
+                      -(V[12] * V[8] + V[13] * V[9] + V[14] * V[10]));
+    swarp_vec3 d = v3(p->x - o.x, p->y - o.y, p->z - o.z);
+    swarp_vec4 l = xf(&r->light_view, *p), X = xf(&r->light_proj, v3(l.x, l.y, l.z));
+    const double* P = r->light_proj.m;
+    const double Xk[3] = {X.x, X.y, X.z};
+    double k = 0;
+    for (int row = 0; row < 3; ++row) {
+        double u = Xk[row] / X.w, g = 0;
+        for (int j = 0; j < 3; ++j) g += fabs(P[4 * j + row] - u * P[4 * j + 3]);
+        k = fmax(k, sqrt(dot(d, d)) * g / fabs(X.w));
+    }
+    return k;
+}
+
 /* The outputs' conditioning: the fit's scale 2/E and translation come from
  * light-space coordinates of B resolved to eps times their terms (k/2 of
  * them) over its extent E, e.g. a light grazing a flat 1e6-offset box (E
@@ -324,14 +350,25 @@ static void setup_point_k(const swarp_mat4* m, const swarp_vec3* p, double k[3])
  * moves by 2e-6, fenv 10000 case 9020).  Depth as well as x and y: a
  * directional light 1.9e-9 off the normal of a flat box (z = -50) sees B's
  * depths within 5e-8, fitted to [-1, 1] by a translation of 1e9 that
- * FE_TOWARDZERO moved by 9e-9 (fenv 30000 case 15179; k_z 1e9). */
+ * FE_TOWARDZERO moved by 9e-9 (fenv 30000 case 15179; k_z 1e9).  Plus the
+ * light view's rotation (setup_point_k_rot).  PSM maps only the receivers
+ * and the casters in front of them: its points with w resolved from 0 and
+ * inside the map count (fenv 120000 case 77521: a flat box grazed at
+ * 1.7e-12 rad by camera and light). */
 static void setup_b_cond(swr_ctx* c, const scene_args* s, swarp_status st, const swarp_setup_result* r, const swarp_vec3* pts,
                          size_t count) {
+    int psm = (s->use_opt && s->opt.technique == SWARP_TECHNIQUE_PSM) || st == SWARP_INFO_PSM_INVERSE;
+    const double* m = r->matrix.m;
     for (size_t i = 0; i < count && i < SWARP_BODY_MAX_POINTS; ++i) {
-        if (!fin3(&pts[i]) || setup_point_unmapped(s, st, r, &pts[i]) || !(xf(&r->matrix, pts[i]).w > 0)) continue;
+        const swarp_vec3* p = &pts[i];
+        if (!fin3(p) || (!psm && setup_point_unmapped(s, st, r, p))) continue;
+        swarp_vec4 q = xf(&r->matrix, *p);
+        double sw = fabs(m[3] * p->x) + fabs(m[7] * p->y) + fabs(m[11] * p->z) + fabs(m[15]);
+        if (!(q.w > 64 * DBL_EPSILON * sw)) continue;
+        if (psm && !(fabs(q.x / q.w) <= 1 + 1e-6 && fabs(q.y / q.w) <= 1 + 1e-6)) continue;
         double k[3];
-        setup_point_k(&r->matrix, &pts[i], k);
-        swr_cond(c, fmax(k[0], fmax(k[1], k[2])));
+        setup_point_k(&r->matrix, p, k);
+        swr_cond(c, fmax(fmax(k[0], fmax(k[1], k[2])), setup_point_k_rot(r, p)));
     }
 }
 
