@@ -314,13 +314,24 @@ static swarp_status sw_setup_points(const swarp_camera* cam, const swarp_light* 
             info = sw_info_merge(info, s);
             /* every point must lie in front of the light within the widest
              * perspective a map can have */
-            double dmax = 0.0;
+            double dmax = 0.0, bmag = 0.0;
             for (size_t i = 0; i < nb; ++i) {
                 swarp_vec4 h = sw_xform_point(&L, B[i]);
                 double D = -h.z;
                 if (D > dmax) dmax = D;
+                bmag = fmax(bmag, fmax(fabs(B[i].x), fmax(fabs(B[i].y), fabs(B[i].z))));
             }
-            double dmin_allowed = SW_LIGHT_NEAR_MIN_REL * dmax;
+            /* and never below the rounding of D = a·(p - l), computed as
+             * a·p - a·l from terms of p and l: 192 eps of the larger max
+             * norm (no sum to overflow near DBL_MAX).  A point of B at the light
+             * itself (B = {l}: a spot's apex alone) got D = -7e-15, 0 or
+             * +1e-14 by rounding mode: SWARP_ERR_LIGHT_INSIDE_BODY or a
+             * map of D = 0, SWARP_ERR_DEGENERATE (issue 9, fenv
+             * swarp_setup_points 120000 cases 67704, 110180).  At the light
+             * it is the apex (a spot: clipped) or the light inside B. */
+            const swarp_vec3 lp = light->position;
+            const double lmag = fmax(fabs(lp.x), fmax(fabs(lp.y), fabs(lp.z)));
+            double dmin_allowed = fmax(SW_LIGHT_NEAR_MIN_REL * dmax, 192.0 * DBL_EPSILON * fmax(bmag, lmag));
             for (size_t i = 0; i < nb; ++i) {
                 swarp_vec4 h = sw_xform_point(&L, B[i]);
                 double D = -h.z;

@@ -1371,6 +1371,37 @@ START_TEST(fe_setup_points_psm_light_is_receiver) {
 }
 END_TEST
 
+/* Issue 9 (fenv, swarp_setup_points 120000 cases 67704, 110180): B is a
+ * spot light's apex alone (the light position).  Its distance along the
+ * light's axis came out -7e-15, 0 or +1e-14 by rounding mode: the light
+ * inside B (SWARP_ERR_LIGHT_INSIDE_BODY) under FE_UPWARD, a map divided by
+ * D = 0 (SWARP_ERR_DEGENERATE) otherwise.  A point within the rounding of D
+ * of the light is now the apex, clipped as any (src/setup.c): nothing is
+ * left of B, SWARP_ERR_BODY_EMPTY in every mode. */
+START_TEST(fe_setup_points_b_is_the_spot_apex) {
+    swarp_camera cam = {{-0x1.541efcd5d2f0cp+5, 0x1.2b331b2f89836p+3, 0x1.ddf1ad5d7cd2bp+5},
+                        {0x1.62bc7967489eap-1, 0x1.69318c75e827fp-20, -0x1.71325b6e4a4c8p-1},
+                        {0, 1, 0},
+                        0x1.cb8ac2c969899p+0,
+                        0x1.90511331f0508p-1,
+                        0x1.fffff97e0f33dp-1,
+                        0x1.951a7c46c7bf2p+4,
+                        {0, 0, 0, 0}};
+    swarp_light l = {SWARP_LIGHT_POINT, 0, {1, -1, -1}, {-0x1.7967445a446dcp+4, 0x1.4b331b2f89836p+3, 0x1.1c85efc30d8fcp+3},
+                     0x1.f6042193c636ep-1, {0, 0, 0, 0}};
+    const swarp_vec3 B[1] = {l.position};
+    swarp_setup_result r;
+    swarp_status s0 = swarp_setup_points(&cam, &l, B, 1, NULL, 0, cam.near, cam.far, NULL, &r);
+    ck_assert_msg(s0 == SWARP_ERR_BODY_EMPTY, "%s", swarp_status_name(s0));
+    for (size_t m = 0; m < sizeof tu_modes / sizeof tu_modes[0]; ++m) {
+        fesetround(tu_modes[m]);
+        swarp_status s = swarp_setup_points(&cam, &l, B, 1, NULL, 0, cam.near, cam.far, NULL, &r);
+        fesetround(FE_TONEAREST);
+        ck_assert_msg(s == s0, "mode %zu: %s, default %s", m, swarp_status_name(s), swarp_status_name(s0));
+    }
+}
+END_TEST
+
 int main(void) {
     Suite* s = suite_create("edges_geometry");
     TCase* t = tcase_create("geometry");
@@ -1411,6 +1442,7 @@ int main(void) {
     tcase_add_test(t, fe_setup_points_psm_light_in_b);
     tcase_add_test(t, fe_setup_follow_aligned_rounding_mode);
     tcase_add_test(t, fe_setup_points_psm_light_is_receiver);
+    tcase_add_test(t, fe_setup_points_b_is_the_spot_apex);
     suite_add_tcase(s, t);
     return tu_run_suite(s) ? 1 : 0;
 }
