@@ -64,6 +64,16 @@ static swarp_status sw_check_warp_options(const swarp_warp_options* o) {
     return SWARP_OK;
 }
 
+/* Does the eye depth grow along P's axis, z_1 > z_0, by more than the
+ * rounding of the depths (64 eps)?  z_0 and z_1 are equal in exact
+ * arithmetic when C_start is the nearest vertex at the y_max end and the
+ * other end lies before the near plane (both are near then): n_opt of
+ * their rounding noise (z_1 - z_0 = 1e-14) was 1e17, or +inf (uniform), by
+ * rounding mode, and the status SWARP_OK or SWARP_INFO_WARP_UNIFORM (issue
+ * 9, fenv swarp_setup 240000 case 215976).  Within the rounding the warp is
+ * uniform: an n of 1e15 and more is (range 1e-15 of n). */
+static int sw_z_grows(double z0, double z1) { return z1 - z0 > 64.0 * DBL_EPSILON * fabs(z1); }
+
 /* The warp parameter n in light units for the chosen parameterisation.
  * gamma in [0, pi] is the angle between view and light axis. */
 static swarp_status sw_warp_n(const swarp_warp_options* o, double d, double z0, double z1, double gamma,
@@ -75,12 +85,12 @@ static swarp_status sw_warp_n(const swarp_warp_options* o, double d, double z0, 
     switch (o->param) {
         case SWARP_WARP_PARAM_DEFAULT:
         case SWARP_WARP_PARAM_NOPT:
-            if (!(z1 > z0)) break;
+            if (!sw_z_grows(z0, z1)) break;
             s = swarp_warp_nopt(d, z0, z1, &n); /* [RHS] (3.2) */
             if (swarp_status_is_error(s)) return s;
             break;
         case SWARP_WARP_PARAM_PSEUDO:
-            if (!(z1 > z0)) break;
+            if (!sw_z_grows(z0, z1)) break;
             s = swarp_warp_nopt_pseudo(d, z0, z1, o->pseudo_near, o->pseudo_far, &n); /* [RHS] (4.2) */
             if (swarp_status_is_error(s)) return s;
             break;
@@ -90,7 +100,7 @@ static swarp_status sw_warp_n(const swarp_warp_options* o, double d, double z0, 
             double eta;
             s = swarp_warp_eta(g, theta, &eta);
             if (swarp_status_is_error(s)) return s;
-            if (!(z1 > z0) || eta <= -1.0) break;
+            if (!sw_z_grows(z0, z1) || eta <= -1.0) break;
             /* α = z_1/z_0 overflows for a z_0 near DBL_MIN (near = 2e-308):
              * the largest double is the same limit for (3.4) (issue 9,
              * hard-case sweep: NON_FINITE for valid arguments) */

@@ -1402,6 +1402,42 @@ START_TEST(fe_setup_points_b_is_the_spot_apex) {
 }
 END_TEST
 
+/* Issue 9 (fenv, swarp_setup 240000 case 215976): a flat box seen from
+ * above, the [WS06] centre: C_start is the nearest vertex at the y_max end
+ * of P's axis and the y_min end lies before the near plane, so z_0 = z_1 =
+ * near exactly and their difference was rounding (+-1e-14): n_opt 1e17
+ * (SWARP_OK) under FE_TONEAREST and FE_DOWNWARD, +inf
+ * (SWARP_INFO_WARP_UNIFORM) under the others.  Within their rounding the
+ * depths count as equal: uniform in every mode (src/warp.c). */
+START_TEST(fe_setup_nopt_equal_depths_rounding_mode) {
+    swarp_camera cam = {{-0x1.e8482c636ea16p+19, 0x1.dfe0a6dd51096p+4, -0x1.e84c66bd330b1p+19},
+                        {-0x1.2e9f9ca9cb6d5p-2, -0x1.e095edba9856p-1, -0x1.6c1d25ca25f5p-3},
+                        {0, 1, 0},
+                        0x1.482651f7c581p+0,
+                        0x1.3333333333333p-2,
+                        0x1.f72a6da6fa3a7p-1,
+                        0x1.9b3f5b3c7fefcp+20,
+                        {0, 0, 0, 0}};
+    swarp_light l = {SWARP_LIGHT_DIRECTIONAL, 0, {-0x1.8da1934e2bb14p-1, -0x1.0e2adc60c52d6p-1, -0x1.5415b29ae66cep-1}, {0, 0, 0},
+                     0, {0, 0, 0, 0}};
+    swarp_aabb box = {{-0x1.e84cbd77f0a1ap+19, 0, -0x1.e84e4p+19}, {-0x1.e8476731134a4p+19, 0, -0x1.e84bf90e33e54p+19}};
+    swarp_setup_options o;
+    memset(&o, 0, sizeof o);
+    o.param = SWARP_WARP_PARAM_NOPT;
+    o.center = SWARP_WARP_CENTER_NEAREST_VERTEX;
+    o.map_width = 6817;
+    swarp_setup_result r0, r;
+    swarp_status s0 = swarp_setup(&cam, &l, &box, &o, &r0, NULL, 0, NULL);
+    ck_assert_msg(s0 == SWARP_INFO_WARP_UNIFORM, "%s (n_eye %g)", swarp_status_name(s0), r0.n_eye);
+    for (size_t m = 0; m < sizeof tu_modes / sizeof tu_modes[0]; ++m) {
+        fesetround(tu_modes[m]);
+        swarp_status s = swarp_setup(&cam, &l, &box, &o, &r, NULL, 0, NULL);
+        fesetround(FE_TONEAREST);
+        ck_assert_msg(s == s0, "mode %zu: %s, default %s", m, swarp_status_name(s), swarp_status_name(s0));
+    }
+}
+END_TEST
+
 int main(void) {
     Suite* s = suite_create("edges_geometry");
     TCase* t = tcase_create("geometry");
@@ -1443,6 +1479,7 @@ int main(void) {
     tcase_add_test(t, fe_setup_follow_aligned_rounding_mode);
     tcase_add_test(t, fe_setup_points_psm_light_is_receiver);
     tcase_add_test(t, fe_setup_points_b_is_the_spot_apex);
+    tcase_add_test(t, fe_setup_nopt_equal_depths_rounding_mode);
     suite_add_tcase(s, t);
     return tu_run_suite(s) ? 1 : 0;
 }
