@@ -203,7 +203,14 @@ swarp_status sw_warp_lispsm(const swarp_mat4* M, const swarp_mat4* M_inv, const 
     double vy = sw_at(M, 1, 0) * v.x + sw_at(M, 1, 1) * v.y + sw_at(M, 1, 2) * v.z;
     double vz = sw_at(M, 2, 0) * v.x + sw_at(M, 2, 1) * v.y + sw_at(M, 2, 2) * v.z;
     double va = -vz; /* v along the light axis */
-    if (sw_at(M, 3, 2) != 0.0) { /* point light: M = P0·L, P0's w row is -z of L */
+    /* point light: M = P0·L, P0's w row is -z of L (a unit row: one of its
+     * entries is non-zero; a directional M = L has 0 0 0 1).  Testing the
+     * z entry alone took a point light whose axis has no world-z component
+     * (L's z row (x, y, 0): eye, light and view in one z plane) for a
+     * directional one, γ = 90° instead of its angle, and only the rounding
+     * of that 0 (-0 or 1e-17) chose between the two warps (n' 45 or 3.4;
+     * issue 9, fenv swarp_setup_follow 480000 case 381864) */
+    if (sw_at(M, 3, 0) != 0.0 || sw_at(M, 3, 1) != 0.0 || sw_at(M, 3, 2) != 0.0) {
         va = sw_at(M, 3, 0) * v.x + sw_at(M, 3, 1) * v.y + sw_at(M, 3, 2) * v.z;
     }
     double gamma = atan2(hypot(vx, vy), va);

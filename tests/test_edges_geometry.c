@@ -1438,6 +1438,29 @@ START_TEST(fe_setup_nopt_equal_depths_rounding_mode) {
 }
 END_TEST
 
+/* Issue 9 (fenv, swarp_setup_follow 480000 case 381864): the warp told a
+ * point light's P0·L from a directional light's L by the z entry of its w
+ * row alone, which is 0 when the light axis has no world-z component (eye,
+ * light and view in one z plane): γ came out 90° instead of the angle, and
+ * the rounding of that 0 chose between the two warps.  The same scene with
+ * the light 1e-7 off that plane must give nearly the same map. */
+START_TEST(fe_setup_point_light_axis_in_z_plane) {
+    swarp_camera cam = {{0, 0, 0}, {1, 0.3, 0}, {0, 1, 0}, 1.0, 1.5, 0.5, 50, {0, 0, 0, 0}};
+    swarp_aabb box = {{-10, -10, -20}, {40, 10, 20}};
+    swarp_light l = {SWARP_LIGHT_POINT, 0, {0, -1, 0}, {-5, 40, 0}, 0, {0, 0, 0, 0}};
+    swarp_setup_options o;
+    memset(&o, 0, sizeof o);
+    o.param = SWARP_WARP_PARAM_GMNPR;
+    swarp_setup_result r0, r1;
+    swarp_status s0 = swarp_setup(&cam, &l, &box, &o, &r0, NULL, 0, NULL);
+    l.position.z = 1e-7;
+    swarp_status s1 = swarp_setup(&cam, &l, &box, &o, &r1, NULL, 0, NULL);
+    ck_assert_msg(!swarp_status_is_error(s0) && s0 == s1, "%s, %s", swarp_status_name(s0), swarp_status_name(s1));
+    ck_assert_msg(fabs(r0.gamma - r1.gamma) <= 1e-6, "gamma %.17g vs %.17g", r0.gamma, r1.gamma);
+    ck_assert_msg(fabs(r0.n_eye - r1.n_eye) <= 1e-5 * r1.n_eye, "n_eye %.17g vs %.17g", r0.n_eye, r1.n_eye);
+}
+END_TEST
+
 int main(void) {
     Suite* s = suite_create("edges_geometry");
     TCase* t = tcase_create("geometry");
@@ -1480,6 +1503,7 @@ int main(void) {
     tcase_add_test(t, fe_setup_points_psm_light_is_receiver);
     tcase_add_test(t, fe_setup_points_b_is_the_spot_apex);
     tcase_add_test(t, fe_setup_nopt_equal_depths_rounding_mode);
+    tcase_add_test(t, fe_setup_point_light_axis_in_z_plane);
     suite_add_tcase(s, t);
     return tu_run_suite(s) ? 1 : 0;
 }
