@@ -65,18 +65,23 @@ static swarp_status sw_check_warp_options(const swarp_warp_options* o) {
 }
 
 /* Does the eye depth grow along P's axis, z_1 > z_0, by more than the
- * rounding of the depths (64 eps)?  z_0 and z_1 are equal in exact
+ * rounding of the depths (zerr: 16 eps of the sizes of their terms,
+ * sw_eye_depth, and 64 eps of z_1)?  z_0 and z_1 are equal in exact
  * arithmetic when C_start is the nearest vertex at the y_max end and the
  * other end lies before the near plane (both are near then): n_opt of
- * their rounding noise (z_1 - z_0 = 1e-14) was 1e17, or +inf (uniform), by
- * rounding mode, and the status SWARP_OK or SWARP_INFO_WARP_UNIFORM (issue
- * 9, fenv swarp_setup 240000 case 215976).  Within the rounding the warp is
- * uniform: an n of 1e15 and more is (range 1e-15 of n). */
-static int sw_z_grows(double z0, double z1) { return z1 - z0 > 64.0 * DBL_EPSILON * fabs(z1); }
+ * their rounding noise (z_1 - z_0 = 1e-14, depths of 0.03 reconstructed
+ * from a point light's space 300 units across) was 1e15..1e17, or +inf
+ * (uniform), by rounding mode, and the status SWARP_OK or
+ * SWARP_INFO_WARP_UNIFORM (issue 9, fenv swarp_setup 240000 case 215976,
+ * 480000 cases 303320, 332177, 443657).  Within the rounding the warp is
+ * uniform, as such an n nearly is. */
+static int sw_z_grows(double z0, double z1, double zerr) {
+    return z1 - z0 > fmax(64.0 * DBL_EPSILON * fabs(z1), 16.0 * DBL_EPSILON * zerr);
+}
 
 /* The warp parameter n in light units for the chosen parameterisation.
  * gamma in [0, pi] is the angle between view and light axis. */
-static swarp_status sw_warp_n(const swarp_warp_options* o, double d, double z0, double z1, double gamma,
+static swarp_status sw_warp_n(const swarp_warp_options* o, double d, double z0, double z1, double zerr, double gamma,
                               double theta, double near, double far, double* n_light) {
     double g = gamma > 0.5 * SWARP_PI ? SWARP_PI - gamma : gamma; /* fold to [0, pi/2] */
     if (g < 0.0) g = 0.0;
@@ -85,12 +90,12 @@ static swarp_status sw_warp_n(const swarp_warp_options* o, double d, double z0, 
     switch (o->param) {
         case SWARP_WARP_PARAM_DEFAULT:
         case SWARP_WARP_PARAM_NOPT:
-            if (!sw_z_grows(z0, z1)) break;
+            if (!sw_z_grows(z0, z1, zerr)) break;
             s = swarp_warp_nopt(d, z0, z1, &n); /* [RHS] (3.2) */
             if (swarp_status_is_error(s)) return s;
             break;
         case SWARP_WARP_PARAM_PSEUDO:
-            if (!sw_z_grows(z0, z1)) break;
+            if (!sw_z_grows(z0, z1, zerr)) break;
             s = swarp_warp_nopt_pseudo(d, z0, z1, o->pseudo_near, o->pseudo_far, &n); /* [RHS] (4.2) */
             if (swarp_status_is_error(s)) return s;
             break;
@@ -100,7 +105,7 @@ static swarp_status sw_warp_n(const swarp_warp_options* o, double d, double z0, 
             double eta;
             s = swarp_warp_eta(g, theta, &eta);
             if (swarp_status_is_error(s)) return s;
-            if (!sw_z_grows(z0, z1) || eta <= -1.0) break;
+            if (!sw_z_grows(z0, z1, zerr) || eta <= -1.0) break;
             /* α = z_1/z_0 overflows for a z_0 near DBL_MIN (near = 2e-308):
              * the largest double is the same limit for (3.4) (issue 9,
              * hard-case sweep: NON_FINITE for valid arguments) */
@@ -165,12 +170,25 @@ SWARP_API swarp_status swarp_warp_lispsm(const swarp_mat4* light_view, const swa
 }
 
 /* Eye depth of the light-space point q = (x, y, z) of M-space, or NAN. */
+/* *err: the sizes of the terms the depth is summed from (the point's
+ * coordinates as M_inv reconstructs them over w, and the eye's), along v:
+ * the depth is rounded to a few eps of it */
 static double sw_eye_depth(const swarp_mat4* M_inv, const swarp_camera* cam, swarp_vec3 v, double x, double y,
-                           double z) {
+                           double z, double* err) {
     swarp_vec4 h = {x, y, z, 1.0};
     swarp_vec4 w = sw_xform4(M_inv, h);
+    *err = 0.0;
     if (!(w.w > 0.0)) return NAN;
     swarp_vec3 p = sw_v3(w.x / w.w, w.y / w.w, w.z / w.w);
+    const double hv[4] = {x, y, z, 1.0}, pk[3] = {p.x, p.y, p.z}, ek[3] = {cam->eye.x, cam->eye.y, cam->eye.z},
+                 vk[3] = {v.x, v.y, v.z};
+    double tw = 0.0;
+    for (int j = 0; j < 4; ++j) tw += fabs(sw_at(M_inv, 3, j) * hv[j]);
+    for (int k = 0; k < 3; ++k) {
+        double tk = 0.0;
+        for (int j = 0; j < 4; ++j) tk += fabs(sw_at(M_inv, k, j) * hv[j]);
+        *err += fabs(vk[k]) * ((tk + fabs(pk[k]) * tw) / w.w + fabs(ek[k]));
+    }
     return sw_dot(sw_sub(p, cam->eye), v);
 }
 
@@ -253,15 +271,17 @@ swarp_status sw_warp_lispsm(const swarp_mat4* M, const swarp_mat4* M_inv, const 
     /* z_0, z_1 of (3.2): eye depths of the two ends of P's axis, C_start and
      * (c_x, y_max, c_z) ([WS06] calcNoptGeneral).  z_0 is kept at or beyond
      * near: the part of B nearer than the view's near plane receives nothing. */
-    double z0 = sw_eye_depth(M_inv, cam, v, c_ls.x, ymin, c_ls.z);
-    double z1 = sw_eye_depth(M_inv, cam, v, c_ls.x, ymax, c_ls.z);
+    double e0, e1;
+    double z0 = sw_eye_depth(M_inv, cam, v, c_ls.x, ymin, c_ls.z, &e0);
+    double z1 = sw_eye_depth(M_inv, cam, v, c_ls.x, ymax, c_ls.z, &e1);
+    const double zerr = e0 + e1;
     if (!sw_finite(z0) || !sw_finite(z1)) z0 = z1 = near; /* axis leaves the light's space: uniform */
     z0 = fmax(z0, near);
     double theta = sw_half_fovy(cam->fovy);
     double n_light = INFINITY;
     swarp_status st = SWARP_OK;
     if (d > 0.0) {
-        swarp_status s = sw_warp_n(o, d, z0, z1, gamma_eff, theta, near, far, &n_light);
+        swarp_status s = sw_warp_n(o, d, z0, z1, zerr, gamma_eff, theta, near, far, &n_light);
         if (s != SWARP_OK) return s;
         double n_min = SW_WARP_N_MIN_REL * fmax(fabs(ymin), fabs(ymax));
         if (n_light < n_min) n_light = n_min;

@@ -1461,6 +1461,42 @@ START_TEST(fe_setup_point_light_axis_in_z_plane) {
 }
 END_TEST
 
+/* Issue 9 (fenv, swarp_setup 480000 case 332177): as
+ * fe_setup_nopt_equal_depths_rounding_mode, with a spot light 300 units
+ * away: the depths (0.033) are reconstructed from the light's space and
+ * carry the rounding of its 300-unit coordinates, z_1 - z_0 = -2e-14 to
+ * +2e-14 by mode (n' 7e13..7e14, or uniform under FE_TOWARDZERO).  The
+ * depths' rounding bound takes the sizes of their terms (src/warp.c). */
+START_TEST(fe_setup_nopt_equal_depths_point_light) {
+    swarp_camera cam = {{0x1.c879bde18ae3p+3, -0x1.99fb6266c0d47p+2, -0x1.3c740062d85f4p+5},
+                        {-0x1.335b0e8d92de4p-1, 0x1.997bb20dee2c9p-1, 0},
+                        {0, 1, 0},
+                        0x1.8add9fbd0ec51p+0,
+                        0x1.74d0307e7f448p-2,
+                        0x1.1113ec29e7dd1p-5,
+                        0x1.4588bcde709c2p+18,
+                        {0, 0, 0, 0}};
+    swarp_light l = {SWARP_LIGHT_POINT, 0, {0x1.330c1597e2ae2p-1, -0x1.99127b7243b49p-1, -0x1.6ef040e00ae59p-5},
+                     {-0x1.1caaed5660d96p+6, 0x1.67340c0943055p+7, -0x1.171d0018b617dp+7}, 0x1.e25f1b62957dap-1, {0, 0, 0, 0}};
+    swarp_aabb box = {{-0x1.2c7b2f5897db8p+2, -0x1.99fb6266c0d47p+2, -0x1.3c740062d85f4p+5},
+                      {0x1.c879bde18ae3p+3, 0x1.a5c95de4ec144p+3, -0x1.3c740062d85f4p+5}};
+    swarp_setup_options o;
+    memset(&o, 0, sizeof o);
+    o.param = SWARP_WARP_PARAM_NOPT;
+    o.depth_range = SWARP_DEPTH_ZERO_TO_ONE;
+    o.map_height = 3024;
+    swarp_setup_result r0, r;
+    swarp_status s0 = swarp_setup(&cam, &l, &box, &o, &r0, NULL, 0, NULL);
+    ck_assert_msg(!swarp_status_is_error(s0), "%s", swarp_status_name(s0));
+    for (size_t m = 0; m < sizeof tu_modes / sizeof tu_modes[0]; ++m) {
+        fesetround(tu_modes[m]);
+        swarp_status s = swarp_setup(&cam, &l, &box, &o, &r, NULL, 0, NULL);
+        fesetround(FE_TONEAREST);
+        ck_assert_msg(s == s0, "mode %zu: %s, default %s", m, swarp_status_name(s), swarp_status_name(s0));
+    }
+}
+END_TEST
+
 int main(void) {
     Suite* s = suite_create("edges_geometry");
     TCase* t = tcase_create("geometry");
@@ -1504,6 +1540,7 @@ int main(void) {
     tcase_add_test(t, fe_setup_points_b_is_the_spot_apex);
     tcase_add_test(t, fe_setup_nopt_equal_depths_rounding_mode);
     tcase_add_test(t, fe_setup_point_light_axis_in_z_plane);
+    tcase_add_test(t, fe_setup_nopt_equal_depths_point_light);
     suite_add_tcase(s, t);
     return tu_run_suite(s) ? 1 : 0;
 }
