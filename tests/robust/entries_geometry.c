@@ -493,6 +493,8 @@ static void check_setup_result(swr_ctx* c, const scene_args* s, swarp_status st,
 }
 
 static void setup_capacity_edge(swr_ctx* c, const scene_args* s, int range, double near, double far, size_t cap);
+static double vmax(swarp_vec3 v);
+static double box_scale(const swarp_aabb* b);
 static void e_setup_common(swr_ctx* c, int range) {
     scene_args s;
     gen_setup_scene(c, &s);
@@ -618,6 +620,19 @@ static void e_body_points(swr_ctx* c) {
     swr_fill(&count, sizeof count);
     swarp_status st = SWR_CALL(c, swarp_body_points(n_cam ? NULL : &s.cam, near, far, n_l ? NULL : &s.light,
                                                    n_b ? NULL : &s.box, n_o ? NULL : pts, cap, n_cnt ? NULL : &count));
+    /* A view frustum whose smallest feature (its depth far - near, the near
+     * quad's sides) is within 2 merge distances of the clipper,
+     * SWARP_POLY_EPS_REL of the coordinates' scale (documented: it never
+     * leaves two vertices closer): its corners merge or not by rounding, and
+     * H collapses to a flat polygon whose face planes are noise, so B is
+     * empty or not by rounding (fenv 480000 case 388435: a 6e-7 deep
+     * frustum at 1e6, merge distance 1e-6).  Computed as body_points does,
+     * in world coordinates. */
+    if (fin(near) && fin(far) && far > near && fin(s.cam.fovy) && fin(s.cam.aspect) && s.cam.aspect > 0) {
+        double ty = tan(0.5 * s.cam.fovy), sep = fmin(far - near, 2 * near * ty * fmin(s.cam.aspect, 1.0));
+        double X = fmax(fmax(vmax(s.cam.eye), box_scale(&s.box)), vmax(s.cam.eye) + far * ty * fmax(1.0, s.cam.aspect));
+        if (isfinite(X) && sep <= 2 * SWARP_POLY_EPS_REL * X) c->rounding_edge = 1;
+    }
     /* How many vertices B has is decided by rounding when two of them are
      * within the 1e-12 merge distance or a vertex lies on a clip plane (see
      * rec_point_set), so a capacity within 2 of the count may give OK in one
