@@ -410,7 +410,8 @@ SWARP_API swarp_status swarp_lixel_restrict(const swarp_mat4* M_l, const swarp_v
     return SWARP_OK;
 }
 
-/* Below this (relative to the image coordinates) the line images to a point. */
+/* Below this (relative to the image coordinates) the line images to a point,
+ * and `below` lies on the line. */
 #define LX_TWIST_EPS 1e-12
 
 SWARP_API swarp_status swarp_lixel_twist_for_line(const swarp_mat4* M_l, const swarp_vec3* a,
@@ -431,8 +432,15 @@ SWARP_API swarp_status swarp_lixel_twist_for_line(const swarp_mat4* M_l, const s
     /* the rotated y of `below` relative to the line must be negative */
     double c = cos(twist), s = sin(twist);
     double rel = s * (xc - xa) + c * (yc - ya);
+    /* `below` on the line (its distance within LX_TWIST_EPS of the image
+     * scale, as for the line's length above) has no side: the sign of rel
+     * would be the rounding's, and the twist would flip by pi with the
+     * caller's rounding mode (issue 9: b and below on a line parallel to x,
+     * a at 1e97 on x imaging to its vanishing point; below 5e-17 lixel off
+     * the line in exact arithmetic) */
+    const double scale_c = fmax(scale, fmax(fabs(xc), fabs(yc)) + 1.0);
+    if (!(fabs(rel) > LX_TWIST_EPS * scale_c)) return SWARP_ERR_LIXEL_TWIST_LINE;
     if (rel > 0.0) twist = twist > 0.0 ? twist - SWARP_PI : twist + SWARP_PI;
-    if (rel == 0.0) return SWARP_ERR_LIXEL_TWIST_LINE;
     *out_twist = twist;
     return SWARP_OK;
 }

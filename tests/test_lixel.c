@@ -4,6 +4,7 @@
  * basis vectors and tan(fovy/2), plane points by ray casting, not through
  * M_v or its inverse. */
 #include <check.h>
+#include <fenv.h>
 #include <float.h>
 #include <math.h>
 #include <stdint.h>
@@ -1103,6 +1104,45 @@ START_TEST(overflowing_results_are_out_of_range) {
 }
 END_TEST
 
+/* fenvf pass: robust_fenv 30000 (issue 9), swarp_lixel_twist_for_line case
+ * 11102.  a at 1e97 along x images to the vanishing point of x; b and below
+ * lie on a line parallel to x, so the three images are collinear: below is
+ * 5e-17 lixel off the line (exact arithmetic), far below the rounding of
+ * the image coordinates (~1e-15).  The side of below was decided by the
+ * rounding of rel: TWIST_LINE (rel == 0) to nearest, twist -2.46 under
+ * FE_UPWARD, +0.68 under FE_DOWNWARD.  Now `below` within LX_TWIST_EPS of
+ * the image scale of the line has no side: TWIST_LINE in every mode. */
+START_TEST(fenvf_twist_below_on_line_rounding_mode) {
+    static const swarp_mat4 M = {{-0x1.0000000000001p+0, 0x1.099c85c4712c4p-1, 0x1p+1, 0x1.69f95bee07d28p-3,
+                                  0x1.86b6cdd9c0fd2p-1, -0x1.008b66862ef8p-4, 0x1p+0, -0x1.1d5b823f2a546p-1,
+                                  0x1.060a26630e6p-1, 0x1p+0, 0x1.ad7f29abcaf48p-24, -0x1p+0, -0x1p+0,
+                                  0x1.ad4dcf4470a44p-2, 0x1.baafa7678a56p-2, 0x1.0000000000001p+0}};
+    const swarp_vec3 a = {0x1.d6852e2ec3bb7p+322, 0x1.28262fa5c3cap+0, -0x1.dd35f529cc9b9p+266},
+                     b = {0x1.ea528265acbffp+2, 0x1.4p+3, -0x1.4000000000001p+3}, below = {10, 10, -10};
+    static const int modes[4] = {FE_TONEAREST, FE_UPWARD, FE_DOWNWARD, FE_TOWARDZERO};
+    for (int m = 0; m < 4; ++m) {
+        double tw = 99;
+        fesetround(modes[m]);
+        swarp_status st = swarp_lixel_twist_for_line(&M, &a, &b, &below, &tw);
+        fesetround(FE_TONEAREST);
+        ck_assert_msg(st == SWARP_ERR_LIXEL_TWIST_LINE, "mode %d: %s, twist %.17g", m, swarp_status_name(st), tw);
+        ck_assert_double_eq(tw, 99);
+    }
+    /* a point clearly off the line still gets its side, in every mode */
+    const swarp_vec3 off = {10, 11, -10};
+    double tw0 = 0;
+    ck_assert_int_eq(swarp_lixel_twist_for_line(&M, &a, &b, &off, &tw0), SWARP_OK);
+    for (int m = 1; m < 4; ++m) {
+        double tw = 99;
+        fesetround(modes[m]);
+        swarp_status st = swarp_lixel_twist_for_line(&M, &a, &b, &off, &tw);
+        fesetround(FE_TONEAREST);
+        ck_assert_int_eq(st, SWARP_OK);
+        ck_assert_msg(fabs(tw - tw0) <= 1e-12, "mode %d: twist %.17g, to nearest %.17g", m, tw, tw0);
+    }
+}
+END_TEST
+
 static Suite* lixel_suite(void) {
     Suite* s = suite_create("lixel");
     TCase* tc = tcase_create("lixel");
@@ -1125,6 +1165,7 @@ static Suite* lixel_suite(void) {
     tcase_add_test(tc, orthographic_viewer);
     tcase_add_test(tc, near_degenerate_never_nan);
     tcase_add_test(tc, overflowing_results_are_out_of_range);
+    tcase_add_test(tc, fenvf_twist_below_on_line_rounding_mode); /* fenvf pass */
     /* @@MORE_TCASES@@ */
     suite_add_tcase(s, tc);
     return s;
