@@ -415,6 +415,10 @@ static void e_cascade_nopt(swr_ctx* c) {
     /* n_p warps the first split, f_p the last: together only when m = 1 */
     if (swr_isfin(np) && swr_isfin(fp) && (np < 0 || !(np < 1) || fp < 0 || !(fp < 1) || (m == 1 && !(np + fp < 1))))
         swr_expect(c, SWARP_ERR_OUT_OF_RANGE);
+    /* n_p + f_p < 1 on the rounded sum (as swarp_warp_nopt_pseudo's entry,
+     * entries_core.c): 0.5 - 2^-54 + 0.5 is 1 to nearest, 1 - 2^-53
+     * downward, so the status is the rounding mode's within an ulp of 1 */
+    if (m == 1 && fabs(np + fp - 1.0) <= 4 * DBL_EPSILON) c->rounding_edge = 1;
     swr_domain(c, SWARP_ERR_OUT_OF_RANGE);
     double out[9];
     swr_fill(out, sizeof out);
