@@ -138,8 +138,16 @@ static void e_lixel_solve5(swr_ctx* c) {
      * conditioning: rounding decides near them (fenv test) */
     if (st == SWARP_INFO_LIXEL_ILL_CONDITIONED || st == SWARP_ERR_LIXEL_COPLANAR) c->rounding_edge = 1;
     if (!swr_verdict(c, st, 2, (void*)&M, sizeof M, (void*)&cond, sizeof cond)) return;
-    if (!n_c && cond > 0) swr_cond(c, 1.0 / (cond * cond));
-    if (!n_c && cond < 1e-4) c->rounding_edge = 1;
+    /* the conditioning is the call's whether or not the caller asked for it:
+     * without out_conditioning it is measured by a second call (default
+     * environment), so the fenv tolerance scales with it either way */
+    double k = cond;
+    if (n_c) {
+        swarp_mat4 M2;
+        if (swarp_status_is_error(swarp_lixel_solve5(src, dst, &M2, &k))) k = 0;
+    }
+    if (k > 0) swr_cond(c, 1.0 / (k * k));
+    if (k < 1e-4) c->rounding_edge = 1;
     rec_mat(c, "M", &M);
     SWR_CHECK(c, maxabs(&M) == 1.0, "largest |element| %.17g, documented 1", maxabs(&M));
     if (!n_c) {
@@ -275,8 +283,17 @@ static void e_lixel_matrix(swr_ctx* c) {
                                                     use_opt ? &opt : NULL, n_out ? NULL : &M, n_info ? NULL : &info));
     if (st == SWARP_INFO_LIXEL_ILL_CONDITIONED || st == SWARP_ERR_LIXEL_COPLANAR) c->rounding_edge = 1;
     if (!swr_verdict(c, st, 2, (void*)&M, sizeof M, (void*)&info, sizeof info)) return;
-    if (!n_info && info.conditioning > 0) swr_cond(c, 1.0 / (info.conditioning * info.conditioning));
-    if (!n_info && info.conditioning < 1e-4) c->rounding_edge = 1;
+    /* the conditioning of the call, asked for or not (as in swarp_lixel_solve5's
+     * entry): without out_info a second call in the default environment */
+    double k = n_info ? 0 : info.conditioning;
+    if (n_info) {
+        swarp_mat4 M2;
+        swarp_lixel_info i2;
+        if (!swarp_status_is_error(swarp_lixel_matrix(&v.M_v, g, h, &L, &P, use_opt ? &opt : NULL, &M2, &i2)))
+            k = i2.conditioning;
+    }
+    if (k > 0) swr_cond(c, 1.0 / (k * k));
+    if (k < 1e-4) c->rounding_edge = 1;
     rec_mat(c, "M_l", &M);
     SWR_CHECK(c, maxabs(&M) == 1.0, "largest |element| %.17g, documented 1", maxabs(&M));
     if (!n_info) SWR_CHECK(c, info.corners_in_front <= 4 && info.raised_index <= 3, "info out of range");
@@ -542,6 +559,23 @@ static void e_lixel_select(swr_ctx* c) {
         }
     }
     SWR_CHECK_ACC(c, idx == want, "index %u, the first map holding p is %u", idx, want);
+    /* The test is a documented threshold (w > 0, |x| <= w, |y| <= w) on
+     * rounded dot products: a coordinate of G p carries at most 4 roundings
+     * of the terms |G_ij p_j| (eps each, to nearest or directed), so when
+     * w, w - |x| or w - |y| of a map up to the chosen one is within 8 eps of
+     * the sum of those magnitudes, p is on the map's border and the caller's
+     * rounding mode decides which map holds it. */
+    for (size_t k = 0; k < count && k <= want; ++k) {
+        const double* g = G[k].m;
+        double mag[4];
+        for (int r = 0; r < 4; ++r)
+            mag[r] = fabs(g[r] * p.x) + fabs(g[4 + r] * p.y) + fabs(g[8 + r] * p.z) + fabs(g[12 + r]);
+        swarp_vec4 q = xf(&G[k], (swarp_vec4){p.x, p.y, p.z, 1});
+        double tol = 8 * DBL_EPSILON;
+        if (fabs(q.w) <= tol * mag[3] || fabs(q.w - fabs(q.x)) <= tol * (mag[3] + mag[0]) ||
+            fabs(q.w - fabs(q.y)) <= tol * (mag[3] + mag[1]))
+            c->rounding_edge = 1;
+    }
 }
 
 const swr_entry swr_entries_lixel[] = {
