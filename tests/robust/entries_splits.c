@@ -1030,7 +1030,34 @@ static void e_cascade_select_best(swr_ctx* c) {
         ok &= expect_map_fields(c, &maps[i]);
     if (!fin3(&p)) swr_expect(c, SWARP_ERR_NON_FINITE), ok = 0;
     swr_domain(c, SWARP_ERR_SINGULAR), swr_domain(c, SWARP_ERR_NON_FINITE), swr_domain(c, SWARP_ERR_BEHIND_PROJECTION);
-    if (!swr_done(c, SWR_CALL(c, swarp_cascade_select_best(pm, m, pp, fb, pi, pl)))) return;
+    const swarp_status st = SWR_CALL(c, swarp_cascade_select_best(pm, m, pp, fb, pi, pl));
+    /* SINGULAR comes from the first map (in order) whose texel step maps
+     * back to w' = 0 (swarp_bias_texel_size validates every map); w' is a
+     * cancellation, and when its condition (ref_texel_z's kappa: |terms| /
+     * |w'| times M's) is beyond the 1e10 up to which ref_texel trusts the
+     * double back-projection, whether it is exactly 0 is the rounding's:
+     * under FE_DOWNWARD the map passes and a later map's own error (a NaN
+     * resolution: RESOLUTION) is reported instead (fenv 60000 case 46804:
+     * p at 1e10, a map of condition 5e8).  Maps after one with invalid
+     * fields are never reached. */
+    if (st == SWARP_ERR_SINGULAR && fin3(&p) && m <= SWARP_SPLIT_MAX_COUNT) {
+        for (size_t i = 0; i < m; ++i) {
+            int valid = 1; /* the fields swarp_bias_texel_size checks first */
+            for (int k = 0; k < 16; ++k) valid &= swr_isfin(maps[i].world_to_clip.m[k]);
+            valid &= maps[i].res_s > 0 && maps[i].res_t > 0 && swr_isfin(maps[i].res_s) && swr_isfin(maps[i].res_t);
+            valid &= (int)maps[i].depth >= 0 && (int)maps[i].depth <= 2 && !maps[i]._reserved0;
+            for (int k = 0; k < 4; ++k) valid &= !maps[i]._reserved[k];
+            if (!valid) break;
+            ld Ls, Lt;
+            double kb = 0;
+            (void)ref_texel_z(&maps[i], p, &Ls, &Lt, 1, &kb);
+            if (kb > 1e10) {
+                c->rounding_edge = 1;
+                break;
+            }
+        }
+    }
+    if (!swr_done(c, st)) return;
     if (c->n_rec < SWR_MAX_REC) c->rec[c->n_rec++] = idx;
     if (pl) swr_rec(c, "L_texel", Lt);
     SWR_CHECK(c, idx < m, "index %u of %zu", idx, m);
