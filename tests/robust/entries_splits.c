@@ -364,19 +364,22 @@ static void e_cascade_splits(swr_ctx* c) {
         if (sch == 4 && (!swr_isfin(o.pseudo_near) || !swr_isfin(o.pseudo_far))) swr_expect(c, SWARP_ERR_NON_FINITE);
         if (!swr_isfin(o.lambda) || !swr_isfin(o.pseudo_near) || !swr_isfin(o.pseudo_far)) swr_domain(c, SWARP_ERR_NON_FINITE);
         swr_domain(c, SWARP_ERR_OUT_OF_RANGE);
-        /* The pseudo scheme [RHS] (4.1) refuses an empty pseudo range
-         * (OUT_OF_RANGE): n_p + f_p >= 1, then n_p = n + n_p (f - n) >=
-         * f_p = f - f_p (f - n) on the rounded planes.  Their exact
-         * distance is (1 - n_p - f_p)(f - n); each plane is a rounded
-         * product and sum, within 2 ulps of f, so when the distance is
-         * below 8 eps f (the sum within an ulp of 1 included: 0.5 - 2^-54
-         * plus 0.5 rounds to 1 to nearest, to 1 - 2^-53 downward) the
-         * caller's rounding mode decides the status.  A sum of exactly 1
-         * or more is refused in every mode (the rounded sum of two
-         * non-negative terms is >= 1 when the exact one is). */
-        if (sch == 4 && swr_isfin(n) && swr_isfin(f) && swr_isfin(o.pseudo_near) && swr_isfin(o.pseudo_far) && f > n) {
-            const long double gap = 1.0L - o.pseudo_near - o.pseudo_far; /* within 2^-64: far below the bound */
-            if (gap > 0 && gap * ((long double)f - n) <= 8 * DBL_EPSILON * (long double)f) c->rounding_edge = 1;
+        /* Every scheme refuses n_p + f_p >= 1 (OUT_OF_RANGE) on the rounded
+         * sum: 0.5 - 2^-54 plus 0.5 is 1 to nearest, 1 - 2^-53 downward, so
+         * within an ulp of 1 the caller's rounding mode decides the status.
+         * The pseudo scheme [RHS] (4.1) also refuses an empty pseudo range,
+         * n_p = n + n_p (f - n) >= f_p = f - f_p (f - n) on the rounded
+         * planes; their exact distance is (1 - n_p - f_p)(f - n), and each
+         * plane is a rounded product and sum within 2 ulps of f, so below
+         * 8 eps f the rounding decides too.  A sum of exactly 1 or more is
+         * refused in every mode (the rounded sum of two non-negative terms
+         * is >= 1 when the exact one is). */
+        if (swr_isfin(o.pseudo_near) && swr_isfin(o.pseudo_far)) {
+            const long double gap = 1.0L - o.pseudo_near - o.pseudo_far; /* within 2^-64: far below the bounds */
+            if (gap > 0 && gap <= 2 * DBL_EPSILON) c->rounding_edge = 1;
+            if (sch == 4 && gap > 0 && swr_isfin(n) && swr_isfin(f) && f > n &&
+                gap * ((long double)f - n) <= 8 * DBL_EPSILON * (long double)f)
+                c->rounding_edge = 1;
         }
     }
     swr_domain(c, SWARP_ERR_CAPACITY);
