@@ -1289,6 +1289,36 @@ static void e_warp_lispsm(swr_ctx* c) {
     swr_domain(c, SWARP_ERR_OUT_OF_RANGE); /* n_opt of a degenerate body */
     if (s.degenerate_light) c->rounding_edge = 1;
     scene_cond(c, &s, near, far);
+    /* B without extent along the warp axis (L's y) beyond the rounding of
+     * its light-space y: the library warps when d = y_max - y_min > 0 (and
+     * above 1e-12 of B's light-space size), and y is a sum of terms that
+     * may be far larger than y (B 1e6 from the origin, near L's origin:
+     * y ~ 1e-6 from terms of 1e6).  Each y is off by up to ~7 eps of its
+     * terms in a directed mode, so when the exact extent is within 64 eps
+     * of them the rounding decides between uniform and a full warp (fenv
+     * 120000 case 72815: two points on one light ray, d = 0 to nearest,
+     * 2 ulps of 1e6 under FE_UPWARD, P's entries 2 vs 8.6e9). */
+    if (n >= 1 && n <= SWARP_BODY_MAX_POINTS) {
+        long double ylo = INFINITY, yhi = -INFINITY, noise = 0;
+        for (size_t i = 0; i < n; ++i) {
+            const long double p[4] = {pts[i].x, pts[i].y, pts[i].z, 1};
+            long double hy = 0, hw = 0, ty = 0, tw = 0;
+            for (int k = 0; k < 4; ++k) {
+                hy += (long double)L.m[4 * k + 1] * p[k], ty += fabsl((long double)L.m[4 * k + 1] * p[k]);
+                hw += (long double)L.m[4 * k + 3] * p[k], tw += fabsl((long double)L.m[4 * k + 3] * p[k]);
+            }
+            if (!(hw != 0) || !isfinite((double)hy)) {
+                noise = -1;
+                break;
+            }
+            const long double y = hy / hw;
+            ylo = fminl(ylo, y), yhi = fmaxl(yhi, y);
+            noise = fmaxl(noise, (ty + fabsl(y) * tw) / fabsl(hw));
+        }
+        int same = 1; /* one point (or copies of it): d = 0 in every mode */
+        for (size_t i = 1; i < n; ++i) same &= memcmp(&pts[i], &pts[0], sizeof pts[0]) == 0;
+        if (!same && noise > 0 && yhi - ylo <= 64 * DBL_EPSILON * noise) c->rounding_edge = 1;
+    }
     if (!swr_done(c, SWR_CALL(c, swarp_warp_lispsm(pL, pc, near, far, pp, n, use_near ? &nearest : NULL, use_o ? &o : NULL, pP,
                                                   pi))))
         return;
