@@ -63,16 +63,22 @@ static swarp_status sw_texel_size(const swarp_bias_map* map, swarp_vec3 p, doubl
     swarp_vec4 h;
     swarp_status st = sw_project(&map->world_to_clip, p, &h);
     if (st != SWARP_OK) return st;
-    const double nx = h.x / h.w, ny = h.y / h.w, nz = h.z / h.w;
-    /* one texel = 2/res in NDC; shift at constant depth and map back */
-    const double step[2][2] = {{2.0 / map->res_s, 0.0}, {0.0, 2.0 / map->res_t}};
+    /* One texel = 2/res in NDC: shift at constant depth and map back.  The
+     * shifted point is M^-1 (ndc + d e_k, 1) = ((p, 1) + h_w d b) / h_w up to
+     * the homogeneous factor, b = column k of M^-1 (M^-1 h = (p, 1)), so
+     *   p' - p = h_w d (b_xyz - p b_w) / (1 + h_w d b_w)
+     * exactly: the step itself, not the difference of two points of
+     * magnitude |p| (a far point's texel lost |p| / L_texel ulps to that
+     * cancellation, its last digits set by the caller's rounding mode:
+     * robust_fenv 30000, swarp_bias_texel_size cases 26894, 29298). */
+    const double step[2] = {2.0 / map->res_s, 2.0 / map->res_t};
     double L[2];
     for (int k = 0; k < 2; ++k) {
-        swarp_vec4 q = {nx + step[k][0], ny + step[k][1], nz, 1.0};
-        swarp_vec4 w = sw_xform4(&inv, q);
-        if (!(fabs(w.w) > SW_BIAS_W_EPS)) return SWARP_ERR_SINGULAR;
-        swarp_vec3 pw = sw_v3(w.x / w.w, w.y / w.w, w.z / w.w);
-        L[k] = sw_len(sw_sub(pw, p));
+        const double hd = h.w * step[k];
+        const double bw = inv.m[k * 4 + 3], den = 1.0 + hd * bw;
+        if (!(fabs(den) > SW_BIAS_W_EPS)) return SWARP_ERR_SINGULAR;
+        const swarp_vec3 b = sw_v3(inv.m[k * 4], inv.m[k * 4 + 1], inv.m[k * 4 + 2]);
+        L[k] = fabs(hd / den) * sw_len(sw_sub(b, sw_scale(p, bw)));
         if (!sw_finite(L[k])) return SWARP_ERR_NON_FINITE;
     }
     *L_s = L[0];
@@ -198,13 +204,27 @@ SWARP_API swarp_status swarp_bias_normal_offset(const swarp_bias_map* map, const
     return fr.back ? SWARP_INFO_BACKFACING : SWARP_OK;
 }
 
-/* Window depth of a point (requires w > 0). */
-static swarp_status sw_window_depth(const swarp_bias_map* map, swarp_vec3 p, double* d) {
+/* d(p) - d(p + t L): the window-depth difference across a move by t along
+ * L.  With h = M p, g = M (L, 0) and z = h_z / h_w, exactly
+ *   z(p + t L) - z(p) = t (g_z - z g_w) / (h_w + t g_w),
+ * the secant form of the ratio derivative below (sw_ndc_derivative): a
+ * small t gives a small difference with the relative accuracy of its
+ * factors, where subtracting the two depths (each O(1), rounded to eps)
+ * left a result of 1e-13 whose leading digits the caller's rounding mode
+ * chose (robust_fenv 30000, swarp_bias_slope_scaled case 13490: 6.4e-14 or
+ * 1.1e-13).  BEHIND_PROJECTION when the moved point's w is not positive. */
+static swarp_status sw_depth_step(const swarp_bias_map* map, swarp_vec3 p, swarp_vec3 L, double t,
+                                  double* out) {
     swarp_vec4 h;
     swarp_status st = sw_project(&map->world_to_clip, p, &h);
     if (st != SWARP_OK) return st;
-    const double z = h.z / h.w;
-    *d = map->depth == SWARP_DEPTH_ZERO_TO_ONE ? z : 0.5 * z + 0.5;
+    const swarp_vec4 l4 = {L.x, L.y, L.z, 0.0};
+    const swarp_vec4 g = sw_xform4(&map->world_to_clip, l4);
+    const double w1 = h.w + t * g.w;
+    if (!sw_finite(w1)) return SWARP_ERR_NON_FINITE;
+    if (!(w1 > SW_BIAS_W_EPS)) return SWARP_ERR_BEHIND_PROJECTION;
+    const double dz = (g.z - (h.z / h.w) * g.w) / w1;
+    *out = -sw_window_scale(map->depth) * (t * dz);
     return SWARP_OK;
 }
 
@@ -227,10 +247,8 @@ SWARP_API swarp_status swarp_bias_slope_scaled(const swarp_bias_map* map, const 
     double slope = SW_BIAS_MAX_SLOPE;
     if (ndl * SW_BIAS_MAX_SLOPE > sin_nl) slope = sin_nl / ndl;
     const double world_bias = c + s * fr.L_texel * slope;
-    double d0, d1;
-    if ((st = sw_window_depth(map, *p, &d0)) != SWARP_OK) return st;
-    if ((st = sw_window_depth(map, sw_add(*p, sw_scale(fr.L, world_bias)), &d1)) != SWARP_OK) return st;
-    const double depth_bias = d0 - d1;
+    double depth_bias;
+    if ((st = sw_depth_step(map, *p, fr.L, world_bias, &depth_bias)) != SWARP_OK) return st;
     if (!sw_finite(world_bias) || !sw_finite(depth_bias)) return SWARP_ERR_NON_FINITE;
     if (out_world_bias) *out_world_bias = world_bias;
     if (out_depth_bias) *out_depth_bias = depth_bias;

@@ -916,6 +916,74 @@ START_TEST(fenvb_bias_normal_offset_facing_light_rounding_mode) {
 }
 END_TEST
 
+/* fenvd: the depth bias of a tiny world bias (c = s = 1e-12) on an ortho map
+ * was d(p) - d(p + t L), two window depths of order 1 rounded to eps: a
+ * difference of 6.4e-14 that read 8.2e-14, 9.6e-14 or 1.1e-13 with the
+ * caller's rounding mode (robust_fenv 30000, swarp_bias_slope_scaled case
+ * 13490).  The secant form t (g_z - z g_w)/(h_w + t g_w) keeps its factors'
+ * relative accuracy: the same to 1e-12 in every mode, and -t g_z / 2 here
+ * (ortho, depth [-1, 1] -> window [0, 1]). */
+START_TEST(fenvd_bias_slope_scaled_tiny_depth_bias_rounding_mode) {
+    swarp_bias_map map;
+    memset(&map, 0, sizeof map);
+    static const double M[16] = {-0.26339782772477321, 7.8109187900805884e-05, -0.12499191710449216, 0,
+                                 0.28108651663893419,  -4.7057537890308446e-05, -0.1867450211314452, 0,
+                                 0.82354795925072888,  4.1043183272972156e-05, 0.023761710318398247, 0,
+                                 6.2545625441574257,   -0.0010876431680039475, -4.7977114591666332, 1};
+    memcpy(map.world_to_clip.m, M, sizeof M);
+    map.res_s = map.res_t = 85.3328, map.depth = SWARP_DEPTH_NEG_ONE_TO_ONE;
+    swarp_light light;
+    memset(&light, 0, sizeof light);
+    light.type = SWARP_LIGHT_DIRECTIONAL;
+    light.direction = (swarp_vec3){0.6, 0.0, -0.8}; /* L = (-0.6, 0, 0.8) */
+    const swarp_vec3 p = {1694.1541463288179, -1051.4334426114694, 892.33162665590817};
+    const swarp_vec3 n = {-light.direction.x, -light.direction.y, -light.direction.z}; /* tan 0 */
+    const double gz = -0.6 * M[2] + 0.8 * M[10], want = -0.5 * 1e-12 * gz;
+    static const int modes[4] = {FE_TONEAREST, FE_UPWARD, FE_DOWNWARD, FE_TOWARDZERO};
+    for (int m = 0; m < 4; ++m) {
+        double wb = -1, db = -1;
+        fesetround(modes[m]);
+        swarp_status st = swarp_bias_slope_scaled(&map, &light, &p, &n, 1e-12, 1e-12, &wb, &db);
+        fesetround(FE_TONEAREST);
+        ck_assert_int_eq(st, SWARP_OK);
+        ck_assert_msg(fabs(db - want) <= 1e-12 * fabs(want), "mode %d: depth bias %.17g, want %.17g", m, db, want);
+    }
+}
+END_TEST
+
+/* fenvd: the texel size of a far point (|p| ~ 3e8, L_texel ~ 1e5) of a
+ * perspective map was |M^-1 (ndc + step) - p|, a difference of two points of
+ * magnitude |p| that the far point's tiny homogeneous w resolves coarsely:
+ * 93118.54 in the default mode, 93121.43 under FE_TOWARDZERO (robust_fenv
+ * 30000, swarp_bias_texel_size case 26894).  The step form
+ * h_w d (b_xyz - p b_w) / (1 + h_w d b_w) (b a column of M^-1) never forms
+ * p': within 1e-7 in every mode (2e-9 seen: the inverse's own rounding,
+ * the map's condition number is ~2e9). */
+START_TEST(fenvd_bias_texel_size_far_point_rounding_mode) {
+    swarp_bias_map map;
+    memset(&map, 0, sizeof map);
+    static const double M[16] = {-3.9283760701198864, -0.0090772364843252282, -0.4777251719134416, -0.47772466130453467,
+                                 -0.81237268617103031, -0.0076317624645193104, 0.8437615463233189, 0.84376064448228938,
+                                 4.8694000063363854,  -0.0085962611218823575, -0.24463697745390828, -0.24463671597758885,
+                                 -8.9217452228980463, 0.2621702356128402,     -65.324964730467897, -47.402512232774704};
+    memcpy(map.world_to_clip.m, M, sizeof M);
+    map.res_s = 5101.79, map.res_t = 8192, map.depth = SWARP_DEPTH_DEFAULT;
+    const swarp_vec3 p = {-281455272.17089683, -229404308.46017605, -264436279.94170618};
+    static const int modes[4] = {FE_TONEAREST, FE_UPWARD, FE_DOWNWARD, FE_TOWARDZERO};
+    double L0[3] = {0};
+    for (int m = 0; m < 4; ++m) {
+        double L[3] = {-1, -1, -1};
+        fesetround(modes[m]);
+        swarp_status st = swarp_bias_texel_size(&map, &p, &L[0], &L[1], &L[2]);
+        fesetround(FE_TONEAREST);
+        ck_assert_int_eq(st, SWARP_OK);
+        if (m == 0) memcpy(L0, L, sizeof L);
+        for (int i = 0; i < 3; ++i)
+            ck_assert_msg(fabs(L[i] - L0[i]) <= 1e-7 * L0[0], "mode %d: output %d = %.17g, default %.17g", m, i, L[i], L0[i]);
+    }
+}
+END_TEST
+
 /* fenva: a one-point body (flat across the light) at a 1e6 offset: the depth
  * row's zb = -(t_max + t_min)/dt came from dt = (t + texel) - (t - texel),
  * which carried ulp(t)/texel ~ 1e-8 of relative error, its sign set by the
@@ -982,6 +1050,11 @@ int main(void) {
     /* fenvb pass */
     t = tcase_create("fenvb");
     tcase_add_test(t, fenvb_bias_normal_offset_facing_light_rounding_mode);
+    suite_add_tcase(s, t);
+    /* fenvd pass */
+    t = tcase_create("fenvd");
+    tcase_add_test(t, fenvd_bias_slope_scaled_tiny_depth_bias_rounding_mode);
+    tcase_add_test(t, fenvd_bias_texel_size_far_point_rounding_mode);
     suite_add_tcase(s, t);
     return tu_run_suite(s) ? 1 : 0;
 }

@@ -226,7 +226,18 @@ static void e_lvsm_layer_uniform(swr_ctx* c) {
     if (swr_isfin(t) && sN > s0) { /* on a split the computed layer is decided by rounding */
         double u = (t - s0) / (sN - s0) * n;
         if (fabs(u - nearbyint(u)) < 1e-9 * (1 + fabs(u))) c->rounding_edge = 1;
+        /* The library's splits are s_0 + h j, h = (s_N - s_0)/N, rounded
+         * three times (h, h j, the sum) in the caller's mode: each within
+         * 3 eps max(|s_0|, |s_N|) of the exact split (|h j| <= |s_N - s_0|
+         * <= 2 max).  A t that close to the nearest exact split sits on it as
+         * far as rounding can tell (case 15516: layers of 0.27 ulp, t 0.18
+         * ulp from s_8). */
+        if (n > 0 && isfinite(u) && fabs(u) < 1e9) {
+            long double jn = nearbyintl((long double)u), sj = s0 + ((long double)sN - s0) * jn / n;
+            if (jn >= 0 && jn <= n && fabsl(t - sj) <= 4 * EPS * fmax(fabs(s0), fabs(sN))) c->rounding_edge = 1;
+        }
     }
+    swr_args(c, "t %.17g s_0 %.17g s_N %.17g n %u", t, s0, sN, n);
     swarp_status st = SWR_CALL(c, swarp_lvsm_layer_uniform(t, s0, sN, n, po));
     if (!swr_done(c, st)) return;
     c->rec[c->n_rec < SWR_MAX_REC ? c->n_rec++ : 0] = L;
@@ -294,6 +305,49 @@ static void e_lvsm_transition(swr_ctx* c) {
     if (hi == lo) SWR_CHECK(c, w == 0, "one layer but w = %g", w);
 }
 
+/* Visibility of layer i in long double from its ends p, q (the library's
+ * formulas: [VSM] (4.2) warp, (3.2) variance, the floor mapped by the warp's
+ * slope 1/(q - p), Chebyshev's bound) */
+static long double lvsm_layer_vis_ref(const double* mom, uint32_t i, long double t, long double p, long double q, long double mv) {
+    long double phi = t <= p ? 0 : t >= q ? 1 : (t - p) / (q - p), mu = mom[2 * i];
+    if (phi <= mu) return 1;
+    long double s2 = mom[2 * i + 1] - mu * mu, fl = mv > 0 ? mv / ((q - p) * (q - p)) : 0;
+    if (!(s2 >= fl)) s2 = fl;
+    long double d = phi - mu, v = s2 / (s2 + d * d);
+    return v < 0 ? 0 : v > 1 ? 1 : v;
+}
+/* The layer ends p_i = s_i - delta, q_i = s_{i+1} + delta are formed at the
+ * magnitude of the splits, each rounded to eps |s| in the caller's mode;
+ * the warp phi = (t - p)/(q - p) and the floor min_var/(q - p)^2 carry that
+ * divided by the width q - p (s_0 = 1e7, a width of 5e-4: 4e10 eps per
+ * rounding of an end; cases 12182, 28001).  The condition of v (absolute:
+ * v in [0, 1]) with respect to that rounding: v in long double with every
+ * end moved by +-eps of its magnitude, max |dv| / eps.  lo, hi, w as the
+ * library's transition (§4.1.3). */
+static double lvsm_vis_cond(const double* mom, const double* s, uint32_t k, double delta, double band, double t, double mv) {
+    uint32_t j = layer_of(s, k, t), lo = j, hi = j;
+    long double w = 0;
+    if (band > 0 && t >= s[0] && t <= s[k]) {
+        if (j > 0 && t - s[j] < band) lo = j - 1, w = (((long double)t - s[j]) + band) / (2.0L * band);
+        else if (j + 1 < k && s[j + 1] - t < band) hi = j + 1, w = (((long double)t - s[j + 1]) + band) / (2.0L * band);
+        w = w < 0 ? 0 : w > 1 ? 1 : w;
+    }
+    long double v0 = 0, kap = 0;
+    for (int pass = 0; pass < 10; ++pass) { /* pass 0: unmoved; then the 9 moves (a, b) */
+        const int a = pass == 0 ? 0 : (pass - 1) / 3 - 1, b = pass == 0 ? 0 : (pass - 1) % 3 - 1;
+        long double v = 0;
+        for (uint32_t i = lo; i <= hi; ++i) {
+            long double p = i == 0 ? (long double)s[0] : (long double)s[i] - delta;
+            long double q = i + 1 == k ? (long double)s[k] : (long double)s[i + 1] + delta;
+            p += a * EPS * fabsl(p), q += b * EPS * fabsl(q);
+            long double vi = lvsm_layer_vis_ref(mom, i, t, p, q, mv);
+            v += lo == hi ? vi : i == lo ? (1 - w) * vi : w * vi;
+        }
+        if (pass == 0) v0 = v;
+        else kap = fmaxl(kap, fabsl(v - v0) / EPS);
+    }
+    return (double)kap;
+}
 static void e_lvsm_visibility(swr_ctx* c) {
     SKIP_IF_MISSING(c, swarp_lvsm_visibility);
     double s[MAXN + 1] = {0}, mom[2 * MAXN];
@@ -329,6 +383,7 @@ static void e_lvsm_visibility(swr_ctx* c) {
     c->out_scale = 1; /* a fraction in [0, 1] */
     swr_rec(c, "visibility", v);
     SWR_CHECK(c, v >= 0 && v <= 1, "visibility %g outside [0, 1]", v);
+    swr_cond(c, lvsm_vis_cond(mom, s, k, delta, band, t, mv));
 }
 
 static void e_lvsm_second_occluder(swr_ctx* c) {
@@ -488,6 +543,34 @@ static void e_evsm_moments(swr_ctx* c) {
         swr_close(c, "EVSM moment", m[i], r[i], 16 * EPS * (1 + 2 * fmax(cp, cn) * fabs(x)), DBL_MIN);
 }
 
+/* The condition of EVSM's visibility (absolute: v in [0, 1]) with respect
+ * to the rounding of the warped receiver w = +-e^{c t}: the library's w
+ * carries eps (c |t| + 2) |w| (c t's rounding times c |t|, exp's own ulp or
+ * two), d = w - M_1 that absolute error, and Chebyshev's
+ * v = s2/(s2 + d^2) has dv/dd = -2 v (1 - v)/d: kappa = 2 v (1 - v)
+ * (c |t| + 2) |w| / |d|, plus 2 (c |t| + 2) v (1 - v) when the floor
+ * min_var (c w)^2 is the variance.  A receiver a hair behind a huge warped
+ * mean (w ~ 1e11, d ~ 1e-8 w) has v near 1 move by 1e-8 with the rounding
+ * mode (robust_fenv 200000, cases 103970, 129647).  The bound v = min(v+, v-)
+ * takes the warp that gives it (both when they are within 1e-6). */
+static void evsm_vis_cond(swr_ctx* c, const double m[4], double t, double cp, double cn, double mv) {
+    if (!(fabs(t) * fmax(cp, cn) <= 350) || !(cp > 0) || !(cn > 0)) return;
+    long double vi[2], ki[2];
+    for (int i = 0; i < 2; ++i) {
+        const long double cc = i == 0 ? cp : cn, w = i == 0 ? expl(cc * t) : -expl(-cc * t), mu = m[2 * i], e = cc * fabs(t) + 2;
+        vi[i] = 1, ki[i] = 0;
+        if (w <= mu) continue; /* in front of the mean: v = 1 */
+        long double s2 = m[2 * i + 1] - mu * mu, fl = mv * (cc * w) * (cc * w), d = w - mu;
+        int floored = !(s2 >= fl);
+        if (floored) s2 = fl;
+        vi[i] = s2 / (s2 + d * d);
+        ki[i] = 2 * vi[i] * (1 - vi[i]) * e * (fabsl(w) / d + floored);
+    }
+    const long double vmin = fminl(vi[0], vi[1]);
+    for (int i = 0; i < 2; ++i)
+        if (vi[i] <= vmin + 1e-6L) swr_cond(c, (double)ki[i]);
+}
+
 static void e_evsm_visibility(swr_ctx* c) {
     SKIP_IF_MISSING(c, swarp_evsm_visibility);
     double x = swr_num(c, 0, 1, brk01, 3), cp = swr_num(c, 0.5, 40, NULL, 0), cn = swr_num(c, 0.5, 40, NULL, 0);
@@ -522,6 +605,17 @@ static void e_evsm_visibility(swr_ctx* c) {
     /* an exponent far below 1: the warped variance is below the rounding of
      * the moments, the bound is decided by rounding (fenv test) */
     if (fabs(cp) < 1e-3 || fabs(cn) < 1e-3) c->rounding_edge = 1;
+    /* The receiver against each mean, w = e^{c t} vs M_1 (t <= mu: v = 1,
+     * the documented 0 <-> 1 of a zero variance): the library's w carries
+     * c t's rounding times c |t| plus exp's own (an ulp or two), so
+     * |w - M_1| <= 4 eps (c |t| + 2) |w| is on the threshold as far as
+     * rounding can tell (case 14186: t = x, the negative warp one ulp off
+     * its mean under FE_DOWNWARD, v 0 instead of 1) */
+    if (swr_isfin(t) && cp > 0 && cn > 0 && fabs(t) * fmax(cp, cn) <= 350) {
+        const long double w[2] = {expl((long double)cp * t), -expl(-(long double)cn * t)}, ct[2] = {cp * fabs(t), cn * fabs(t)};
+        for (int i = 0; i < 2; ++i)
+            if (fabsl(w[i] - m[2 * i]) <= 4 * EPS * (ct[i] + 2) * fabsl(w[i])) c->rounding_edge = 1;
+    }
     double v;
     swr_fill(&v, sizeof v);
     swarp_status st = SWR_CALL(c, swarp_evsm_visibility(n_m ? NULL : m, t, cp, cn, mv, n_o ? NULL : &v));
@@ -529,6 +623,7 @@ static void e_evsm_visibility(swr_ctx* c) {
     c->out_scale = 1; /* a fraction in [0, 1] */
     swr_rec(c, "visibility", v);
     SWR_CHECK(c, v >= 0 && v <= 1, "visibility %g outside [0, 1]", v);
+    evsm_vis_cond(c, m, t, cp, cn, mv);
 }
 
 static void e_msm_moments(swr_ctx* c) {

@@ -649,6 +649,13 @@ static int expect_map(swr_ctx* c, const bias_args* b) {
         if (fabsl(h[3]) <= 1e-299L) swr_domain(c, SWARP_ERR_BEHIND_PROJECTION); /* the library's w threshold is 1e-300 */
         if (fabsl(h[3]) <= 1024 * DBL_EPSILON * mag) swr_domain(c, SWARP_ERR_BEHIND_PROJECTION), c->rounding_edge = 1;
         else if (!(h[3] > 0)) swr_expect(c, SWARP_ERR_BEHIND_PROJECTION), ok = 0;
+        /* the library inverts M before it looks at w: a numerically singular
+         * M (cond > 1/(64 eps)) may be refused with SINGULAR in one rounding
+         * mode and pass on to BEHIND_PROJECTION in another (robust_fenv
+         * 200000, swarp_bias_kozlov case 124443: a 2e25 entry swamps the
+         * rest of M's last column in the elimination, the last pivot is 0
+         * or rounding noise), whatever the sign of w */
+        if (!(h[3] > 0)) swr_cond(c, mat_cond(&m->world_to_clip));
         if (h[3] > 0) { /* conditioning: the matrix (texel steps map back through M^-1), the rows' cancellation */
             ld k = 1;
             for (int r = 0; r < 4; ++r)
