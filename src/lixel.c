@@ -560,10 +560,13 @@ SWARP_API swarp_status swarp_lixel_split(const swarp_light* light, const swarp_p
     if (!(ls > LX_SPLIT_EPS * lscale)) return SWARP_ERR_DEGENERATE; /* light on the line / along it */
     n_sigma = sw_scale(n_sigma, 1.0 / ls);
     swarp_vec4 Sigma = lx_v4(n_sigma.x, n_sigma.y, n_sigma.z, -sw_dot(n_sigma, A));
-    /* a floor point in front of the wall (on the side its normal points to) */
+    /* a floor point in front of the wall (on the side its normal points to):
+     * F = A + w_f / |w_f|, so Σ · F = n_Σ · w_f / |w_f| -- formed from the
+     * unit vectors, not as n_Σ · F - n_Σ · A: with the line 1e6 from the
+     * origin that difference carried 1e-10 of rounding against the 1e-9
+     * bound, and the caller's rounding mode decided DEGENERATE (issue 9) */
     swarp_vec3 w_f = sw_sub(nw, sw_scale(nf, sw_dot(nw, nf)));
-    swarp_vec3 F = sw_add(A, sw_scale(w_f, 1.0 / sw_len(w_f)));
-    double side_floor = lx_dot4(Sigma, lx_v4(F.x, F.y, F.z, 1.0));
+    double side_floor = sw_dot(n_sigma, w_f) / sw_len(w_f);
     if (!(fabs(side_floor) > LX_SPLIT_EPS)) return SWARP_ERR_DEGENERATE; /* light on the floor */
     double sign = side_floor > 0.0 ? 1.0 : -1.0;
     size_t need_f = clip_side(C_tot, n, Sigma, sign, NULL);

@@ -1143,6 +1143,42 @@ START_TEST(fenvf_twist_below_on_line_rounding_mode) {
 }
 END_TEST
 
+/* fenvf pass: robust_fenv 120000 (issue 9), swarp_lixel_split case 103034.
+ * The floor x = -1e6, the wall y = 0.41, a light whose x component is 1 ulp
+ * off 1e-9: Sigma is 1e-9 (rad) from the floor, on the "light on the floor"
+ * bound.  The test's side = Sigma . F was formed as n . F - n . A with F, A
+ * of 1e6 (rounding 1e-10): DEGENERATE to nearest, OK in the directed modes.
+ * Now n . w_f (unit vectors, rounding ~eps): the same status in every mode. */
+START_TEST(fenvf_split_light_floor_bound_rounding_mode) {
+    swarp_light light;
+    memset(&light, 0, sizeof light);
+    light.type = SWARP_LIGHT_DIRECTIONAL;
+    light.direction = (swarp_vec3){-0x1.12e0be826d695p-30, -0x1.0000000001198p+0, -0x1.97ead56768218p-3};
+    const swarp_plane fl = {0x1p+0, 0x0p+0, 0x0p+0, 0x1.e848c4a087066p+19}, wa = {0x0p+0, 0x1p+0, 0x0p+0, -0x1.a7b0afea8fc4p-2};
+    const swarp_vec4 C[4] = {{-0x1.e848362b12b0dp+19, -0x1.06e4a586b34eap+1, -0x1.e847719dfaf7bp+19, 1},
+                             {-0x1.e848395e45e4p+19, -0x1.06e4a586b34eap+1, -0x1.e8476e6ac7c48p+19, 1},
+                             {-0x1.e8483c9179173p+19, -0x1.06e4a586b34eap+1, -0x1.e847719dfaf7bp+19, 1},
+                             {-0x1.e848395e45e4p+19, -0x1.06e4a586b34eap+1, -0x1.e84774d12e2aep+19, 1}};
+    static const int modes[4] = {FE_TONEAREST, FE_UPWARD, FE_DOWNWARD, FE_TOWARDZERO};
+    swarp_status st0 = SWARP_OK;
+    size_t nf0 = 0, nw0 = 0;
+    for (int m = 0; m < 4; ++m) {
+        swarp_vec4 of[SWARP_LIXEL_SPLIT_MAX(4)], ow[SWARP_LIXEL_SPLIT_MAX(4)];
+        size_t nf = 0, nw = 0;
+        fesetround(modes[m]);
+        swarp_status st = swarp_lixel_split(&light, &fl, &wa, C, 4, of, SWARP_LIXEL_SPLIT_MAX(4), &nf, ow,
+                                            SWARP_LIXEL_SPLIT_MAX(4), &nw);
+        fesetround(FE_TONEAREST);
+        if (m == 0) {
+            st0 = st, nf0 = nf, nw0 = nw;
+            continue;
+        }
+        ck_assert_msg(st == st0, "mode %d: %s, to nearest %s", m, swarp_status_name(st), swarp_status_name(st0));
+        if (st == SWARP_OK) ck_assert(nf == nf0 && nw == nw0);
+    }
+}
+END_TEST
+
 static Suite* lixel_suite(void) {
     Suite* s = suite_create("lixel");
     TCase* tc = tcase_create("lixel");
@@ -1166,6 +1202,7 @@ static Suite* lixel_suite(void) {
     tcase_add_test(tc, near_degenerate_never_nan);
     tcase_add_test(tc, overflowing_results_are_out_of_range);
     tcase_add_test(tc, fenvf_twist_below_on_line_rounding_mode); /* fenvf pass */
+    tcase_add_test(tc, fenvf_split_light_floor_bound_rounding_mode); /* fenvf pass */
     /* @@MORE_TCASES@@ */
     suite_add_tcase(s, tc);
     return s;
