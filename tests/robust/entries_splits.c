@@ -1311,6 +1311,16 @@ static void e_stabilize_directional(swr_ctx* c) {
     }
     if (vmax3(cam.eye) > 1e300 || f > 1e300) swr_domain(c, SWARP_ERR_NON_FINITE); /* an overflow before the other checks */
     swr_cond(c, (vmax3(cam.eye) + vmax3(o.origin) + f) / n);
+    /* the map's lateral extent is about the split's width f tan(fovy/2) (x
+     * also times the aspect): the matrix divides coordinates resolved to eps
+     * |eye| by it, so its relative condition is (coordinates) / (width) as
+     * well (fovy 1e-6 at an eye 3e6 away: width 7.5e-6, cond 6e11; the
+     * translation moved by 8e-9 with the rounding mode, fenv 120000 case
+     * 93263) */
+    if (swr_isfin(cam.fovy) && cam.fovy > 0 && cam.fovy < 3.14159 && swr_isfin(cam.aspect) && cam.aspect > 0 && swr_isfin(f) && f > 0) {
+        const double width = f * tan(cam.fovy / 2) * fmin(1.0, cam.aspect);
+        if (width > 0) swr_cond(c, (vmax3(cam.eye) + vmax3(o.origin) + f) / width);
+    }
     swr_args(c, "eye (%g %g %g) dir (%g %g %g) fovy %g aspect %g n %.17g f %.17g light (%g %g %g) np %zu res %u mode %d levels %u origin (%g %g %g) lms %g box %d",
              cam.eye.x, cam.eye.y, cam.eye.z, cam.dir.x, cam.dir.y, cam.dir.z, cam.fovy, cam.aspect, n, f, ld_.x, ld_.y, ld_.z, np, res,
              mode, o.levels, o.origin.x, o.origin.y, o.origin.z, o.level_max_size, use_box);
