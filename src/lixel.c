@@ -2,6 +2,8 @@
  * every Pixel".  The matrix M_l, its restriction to a set of rays C (Fig. 6),
  * its factorisation into viewport x projection, and the multi-plane
  * selection of §3.  The five-point solver is in lixel_solve.c. */
+#include <float.h>
+
 #include "lixel_internal.h"
 
 _Static_assert(sizeof(swarp_lixel_options) == sizeof(double) + 16, "swarp_lixel_options size");
@@ -273,6 +275,10 @@ static double det3v(const double a[3], const double b[3], const double k[3]) {
  * rectangle sides (in lixels: far below one). */
 #define LX_CLIP_TOL 1e-9
 
+/* A 3x3 determinant of two unit vectors and a third vector v, rounded by a
+ * few eps |v|_1 (6 products, 5 sums); within 64 eps |v|_1 it is rounding. */
+#define LX_CONE_FLAT (64.0 * DBL_EPSILON)
+
 /* The bounding box of (image of the cone C) clipped to the viewer's pixel
  * centres [0, g - 1] x [0, h - 1] (one lixel per pixel needs no more),
  * without storing the clipped polygon:
@@ -315,17 +321,29 @@ static int clipped_box(const swarp_mat4* M, const swarp_vec4* C, size_t n, doubl
         }
     }
     /* (c): corner K inside the cone when every edge sees it on the side of
-     * the interior vector S (sum of the unit vertex vectors) */
+     * the interior vector S (sum of the unit vertex vectors).  det(a, b, S)
+     * of unit a, b is rounded by a few eps |S|; within LX_CONE_FLAT of that
+     * S lies on the edge's plane -- the cone is flat there (e.g. a cluster
+     * of rays and one direction at q = 0: a wedge of width 1e-76) -- and
+     * only corners on that plane can be inside; the sign of the rounding
+     * noise decided it before (issue 9: a corner 1835 lixels off the wedge
+     * inside under FE_UPWARD). */
     const double kx[4] = {0.0, g - 1.0, g - 1.0, 0.0}, ky[4] = {0.0, 0.0, h - 1.0, h - 1.0};
+    const double s_norm = fabs(S[0]) + fabs(S[1]) + fabs(S[2]);
     for (int q = 0; q < 4; ++q) {
         double K[3] = {kx[q], ky[q], 1.0};
+        const double k_norm = fabs(K[0]) + fabs(K[1]) + 1.0;
         int inside = n >= 3;
         for (size_t j = 0; j < n && inside; ++j) {
             double a[3], b[3];
             image_vec(M, C[j], a);
             image_vec(M, C[(j + 1) % n], b);
             double dS = det3v(a, b, S), dK = det3v(a, b, K);
-            if (dS * dK < 0.0) inside = 0;
+            if (fabs(dS) <= LX_CONE_FLAT * s_norm) {
+                if (fabs(dK) > LX_CONE_FLAT * k_norm) inside = 0;
+            } else if (dS * dK < 0.0) {
+                inside = 0;
+            }
         }
         if (inside) {
             box_add(box, K[0], K[1], c, s, s_x, s_y);

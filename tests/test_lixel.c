@@ -1179,6 +1179,57 @@ START_TEST(fenvf_split_light_floor_bound_rounding_mode) {
 }
 END_TEST
 
+/* fenvf pass: robust_fenv 120000 (issue 9), swarp_lixel_restrict case
+ * 104071.  M's q row is 1e78 times its x, y rows and C holds one direction
+ * (q = 0): the cone's image is a ray from within 1e-76 lixel of the origin
+ * toward (0.95, -0.30), a wedge flat to rounding.  The view-clipping corner
+ * test compared the corner's side of each edge with the interior vector S's;
+ * S lies on the plane of the edges through the direction (its side 1e-77
+ * against rounding 2e-16), and under FE_UPWARD the corner (g - 1, 0) counted
+ * as inside: rect x0 -1099 instead of 0, A_l M_l's translation 1e81.  Now
+ * an edge plane holding S (flat cone) keeps only corners on it. */
+START_TEST(fenvf_restrict_flat_cone_rounding_mode) {
+    static const swarp_mat4 M = {{0x1.6cde06a370998p-2, -0x1.4bc252de49ddap-1, 0x1.fea9a411e36fep-1, 0x0p+0,
+                                  0x1.7228f6f0775d2p-1, -0x1.3f49068b5a344p-2, -0x1p+0, 0x0p+0, -0x1.623fab8bf5c0cp-1,
+                                  -0x1.5ba931c9fb568p-2, 0x1.fffffffffffffp-1, 0x0p+0, 0x1.4f7fdedb6a206p-1,
+                                  0x1.ea8240547cc4p-1, 0x1.77a253562a9ccp-2, 0x1.0502b38b77194p+259}};
+    static const swarp_vec4 C[8] = {{0x1.7b86678bff0c8p+5, -0x1.4a82f7f1b5c88p+4, -0x1.539c7bd5d3c98p+5, 0x0p+0},
+                                    {0x1.4bc5e6c5d08bp+6, -0x1.65a6bcf814756p+6, 0x1.8ffffffffffffp+6, 0x1p+0},
+                                    {0x1.b5051e73ab038p+3, -0x1.9000000000001p+6, 0x1.9000000000001p+6, 0x1p+0},
+                                    {-0x1.99c5b1d5e0e18p+3, -0x1.9000000000001p+6, 0x1.94a188a4f009dp+5, 0x1p+0},
+                                    {0x1.c816bb8e718c2p+4, -0x1.0c9a4b2384d2p+6, -0x1.00030e39c3b88p+6, 0x1p+0},
+                                    {0x1.10ba7b7a85094p+6, -0x1.2724a9e1d939p+4, 0x1.9000000000001p+6, 0x1p+0},
+                                    {0x1.9ea1ab5e3e2f8p+5, -0x1.5e98eb8d84adp+4, -0x1.0b8f1750e991p+5, 0x1p+0},
+                                    {0x1.82fda32fb6b6ep+6, -0x1.8628abe0964d6p+6, -0x1.9000000000001p+6, 0x1p+0}};
+    swarp_lixel_restrict_options o;
+    memset(&o, 0, sizeof o);
+    o.scale_x = 0x1.447b0d41021ecp+0;
+    o.scale_y = 0x1.27e31f8c4f4dbp+1;
+    o.twist = -0x1.080a3d8b45cdp+1;
+    o.view_width = 1836;
+    o.view_height = 209;
+    static const int modes[4] = {FE_TONEAREST, FE_UPWARD, FE_DOWNWARD, FE_TOWARDZERO};
+    swarp_lixel_rect r0;
+    memset(&r0, 0, sizeof r0);
+    swarp_status st0 = SWARP_OK;
+    for (int m = 0; m < 4; ++m) {
+        swarp_lixel_rect r;
+        swarp_mat4 out;
+        fesetround(modes[m]);
+        swarp_status st = swarp_lixel_restrict(&M, C, 8, &o, &r, NULL, &out);
+        fesetround(FE_TONEAREST);
+        if (m == 0) {
+            st0 = st, r0 = r;
+            continue;
+        }
+        ck_assert_msg(st == st0, "mode %d: %s, to nearest %s", m, swarp_status_name(st), swarp_status_name(st0));
+        ck_assert_msg(r.x0 == r0.x0 && r.x1 == r0.x1 && r.y0 == r0.y0 && r.y1 == r0.y1,
+                      "mode %d: rect [%d, %d] x [%d, %d], to nearest [%d, %d] x [%d, %d]", m, r.x0, r.x1, r.y0, r.y1, r0.x0,
+                      r0.x1, r0.y0, r0.y1);
+    }
+}
+END_TEST
+
 static Suite* lixel_suite(void) {
     Suite* s = suite_create("lixel");
     TCase* tc = tcase_create("lixel");
@@ -1203,6 +1254,7 @@ static Suite* lixel_suite(void) {
     tcase_add_test(tc, overflowing_results_are_out_of_range);
     tcase_add_test(tc, fenvf_twist_below_on_line_rounding_mode); /* fenvf pass */
     tcase_add_test(tc, fenvf_split_light_floor_bound_rounding_mode); /* fenvf pass */
+    tcase_add_test(tc, fenvf_restrict_flat_cone_rounding_mode); /* fenvf pass */
     /* @@MORE_TCASES@@ */
     suite_add_tcase(s, tc);
     return s;
