@@ -1208,8 +1208,10 @@ SWARP_API swarp_status swarp_lixel_restrict(const swarp_mat4* M_l, const swarp_v
  *  @param[in] a, b two world points of the line (q > 0 in M_l)
  *  @param[in] below a world point on the side that should map below the line
  *  @param[out] out_twist radians, for swarp_lixel_restrict_options.twist
- *  @return SWARP_OK; SWARP_ERR_LIXEL_TWIST_LINE (the line images to a point
- *  or a point has q <= 0), SWARP_ERR_NON_FINITE, SWARP_ERR_NULL_POINTER. */
+ *  @return SWARP_OK; SWARP_ERR_LIXEL_TWIST_LINE (the line images to a point,
+ *  `below` images onto the line -- within 1e-12 of the image coordinates,
+ *  where its side is rounding noise -- or a point has q <= 0),
+ *  SWARP_ERR_NON_FINITE, SWARP_ERR_NULL_POINTER. */
 SWARP_API swarp_status swarp_lixel_twist_for_line(const swarp_mat4* M_l, const swarp_vec3* a,
                                                   const swarp_vec3* b, const swarp_vec3* below,
                                                   double* out_twist);

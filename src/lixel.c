@@ -2,6 +2,8 @@
  * every Pixel".  The matrix M_l, its restriction to a set of rays C (Fig. 6),
  * its factorisation into viewport x projection, and the multi-plane
  * selection of §3.  The five-point solver is in lixel_solve.c. */
+#include <float.h>
+
 #include "lixel_internal.h"
 
 _Static_assert(sizeof(swarp_lixel_options) == sizeof(double) + 16, "swarp_lixel_options size");
@@ -273,6 +275,10 @@ static double det3v(const double a[3], const double b[3], const double k[3]) {
  * rectangle sides (in lixels: far below one). */
 #define LX_CLIP_TOL 1e-9
 
+/* A 3x3 determinant of two unit vectors and a third vector v, rounded by a
+ * few eps |v|_1 (6 products, 5 sums); within 64 eps |v|_1 it is rounding. */
+#define LX_CONE_FLAT (64.0 * DBL_EPSILON)
+
 /* The bounding box of (image of the cone C) clipped to the viewer's pixel
  * centres [0, g - 1] x [0, h - 1] (one lixel per pixel needs no more),
  * without storing the clipped polygon:
@@ -315,17 +321,29 @@ static int clipped_box(const swarp_mat4* M, const swarp_vec4* C, size_t n, doubl
         }
     }
     /* (c): corner K inside the cone when every edge sees it on the side of
-     * the interior vector S (sum of the unit vertex vectors) */
+     * the interior vector S (sum of the unit vertex vectors).  det(a, b, S)
+     * of unit a, b is rounded by a few eps |S|; within LX_CONE_FLAT of that
+     * S lies on the edge's plane -- the cone is flat there (e.g. a cluster
+     * of rays and one direction at q = 0: a wedge of width 1e-76) -- and
+     * only corners on that plane can be inside; the sign of the rounding
+     * noise decided it before (issue 9: a corner 1835 lixels off the wedge
+     * inside under FE_UPWARD). */
     const double kx[4] = {0.0, g - 1.0, g - 1.0, 0.0}, ky[4] = {0.0, 0.0, h - 1.0, h - 1.0};
+    const double s_norm = fabs(S[0]) + fabs(S[1]) + fabs(S[2]);
     for (int q = 0; q < 4; ++q) {
         double K[3] = {kx[q], ky[q], 1.0};
+        const double k_norm = fabs(K[0]) + fabs(K[1]) + 1.0;
         int inside = n >= 3;
         for (size_t j = 0; j < n && inside; ++j) {
             double a[3], b[3];
             image_vec(M, C[j], a);
             image_vec(M, C[(j + 1) % n], b);
             double dS = det3v(a, b, S), dK = det3v(a, b, K);
-            if (dS * dK < 0.0) inside = 0;
+            if (fabs(dS) <= LX_CONE_FLAT * s_norm) {
+                if (fabs(dK) > LX_CONE_FLAT * k_norm) inside = 0;
+            } else if (dS * dK < 0.0) {
+                inside = 0;
+            }
         }
         if (inside) {
             box_add(box, K[0], K[1], c, s, s_x, s_y);
@@ -410,7 +428,8 @@ SWARP_API swarp_status swarp_lixel_restrict(const swarp_mat4* M_l, const swarp_v
     return SWARP_OK;
 }
 
-/* Below this (relative to the image coordinates) the line images to a point. */
+/* Below this (relative to the image coordinates) the line images to a point,
+ * and `below` lies on the line. */
 #define LX_TWIST_EPS 1e-12
 
 SWARP_API swarp_status swarp_lixel_twist_for_line(const swarp_mat4* M_l, const swarp_vec3* a,
@@ -431,8 +450,15 @@ SWARP_API swarp_status swarp_lixel_twist_for_line(const swarp_mat4* M_l, const s
     /* the rotated y of `below` relative to the line must be negative */
     double c = cos(twist), s = sin(twist);
     double rel = s * (xc - xa) + c * (yc - ya);
+    /* `below` on the line (its distance within LX_TWIST_EPS of the image
+     * scale, as for the line's length above) has no side: the sign of rel
+     * would be the rounding's, and the twist would flip by pi with the
+     * caller's rounding mode (issue 9: b and below on a line parallel to x,
+     * a at 1e97 on x imaging to its vanishing point; below 5e-17 lixel off
+     * the line in exact arithmetic) */
+    const double scale_c = fmax(scale, fmax(fabs(xc), fabs(yc)) + 1.0);
+    if (!(fabs(rel) > LX_TWIST_EPS * scale_c)) return SWARP_ERR_LIXEL_TWIST_LINE;
     if (rel > 0.0) twist = twist > 0.0 ? twist - SWARP_PI : twist + SWARP_PI;
-    if (rel == 0.0) return SWARP_ERR_LIXEL_TWIST_LINE;
     *out_twist = twist;
     return SWARP_OK;
 }
@@ -552,10 +578,13 @@ SWARP_API swarp_status swarp_lixel_split(const swarp_light* light, const swarp_p
     if (!(ls > LX_SPLIT_EPS * lscale)) return SWARP_ERR_DEGENERATE; /* light on the line / along it */
     n_sigma = sw_scale(n_sigma, 1.0 / ls);
     swarp_vec4 Sigma = lx_v4(n_sigma.x, n_sigma.y, n_sigma.z, -sw_dot(n_sigma, A));
-    /* a floor point in front of the wall (on the side its normal points to) */
+    /* a floor point in front of the wall (on the side its normal points to):
+     * F = A + w_f / |w_f|, so Σ · F = n_Σ · w_f / |w_f| -- formed from the
+     * unit vectors, not as n_Σ · F - n_Σ · A: with the line 1e6 from the
+     * origin that difference carried 1e-10 of rounding against the 1e-9
+     * bound, and the caller's rounding mode decided DEGENERATE (issue 9) */
     swarp_vec3 w_f = sw_sub(nw, sw_scale(nf, sw_dot(nw, nf)));
-    swarp_vec3 F = sw_add(A, sw_scale(w_f, 1.0 / sw_len(w_f)));
-    double side_floor = lx_dot4(Sigma, lx_v4(F.x, F.y, F.z, 1.0));
+    double side_floor = sw_dot(n_sigma, w_f) / sw_len(w_f);
     if (!(fabs(side_floor) > LX_SPLIT_EPS)) return SWARP_ERR_DEGENERATE; /* light on the floor */
     double sign = side_floor > 0.0 ? 1.0 : -1.0;
     size_t need_f = clip_side(C_tot, n, Sigma, sign, NULL);

@@ -4,6 +4,7 @@
  * basis vectors and tan(fovy/2), plane points by ray casting, not through
  * M_v or its inverse. */
 #include <check.h>
+#include <fenv.h>
 #include <float.h>
 #include <math.h>
 #include <stdint.h>
@@ -1103,6 +1104,132 @@ START_TEST(overflowing_results_are_out_of_range) {
 }
 END_TEST
 
+/* fenvf pass: robust_fenv 30000 (issue 9), swarp_lixel_twist_for_line case
+ * 11102.  a at 1e97 along x images to the vanishing point of x; b and below
+ * lie on a line parallel to x, so the three images are collinear: below is
+ * 5e-17 lixel off the line (exact arithmetic), far below the rounding of
+ * the image coordinates (~1e-15).  The side of below was decided by the
+ * rounding of rel: TWIST_LINE (rel == 0) to nearest, twist -2.46 under
+ * FE_UPWARD, +0.68 under FE_DOWNWARD.  Now `below` within LX_TWIST_EPS of
+ * the image scale of the line has no side: TWIST_LINE in every mode. */
+START_TEST(fenvf_twist_below_on_line_rounding_mode) {
+    static const swarp_mat4 M = {{-0x1.0000000000001p+0, 0x1.099c85c4712c4p-1, 0x1p+1, 0x1.69f95bee07d28p-3,
+                                  0x1.86b6cdd9c0fd2p-1, -0x1.008b66862ef8p-4, 0x1p+0, -0x1.1d5b823f2a546p-1,
+                                  0x1.060a26630e6p-1, 0x1p+0, 0x1.ad7f29abcaf48p-24, -0x1p+0, -0x1p+0,
+                                  0x1.ad4dcf4470a44p-2, 0x1.baafa7678a56p-2, 0x1.0000000000001p+0}};
+    const swarp_vec3 a = {0x1.d6852e2ec3bb7p+322, 0x1.28262fa5c3cap+0, -0x1.dd35f529cc9b9p+266},
+                     b = {0x1.ea528265acbffp+2, 0x1.4p+3, -0x1.4000000000001p+3}, below = {10, 10, -10};
+    static const int modes[4] = {FE_TONEAREST, FE_UPWARD, FE_DOWNWARD, FE_TOWARDZERO};
+    for (int m = 0; m < 4; ++m) {
+        double tw = 99;
+        fesetround(modes[m]);
+        swarp_status st = swarp_lixel_twist_for_line(&M, &a, &b, &below, &tw);
+        fesetround(FE_TONEAREST);
+        ck_assert_msg(st == SWARP_ERR_LIXEL_TWIST_LINE, "mode %d: %s, twist %.17g", m, swarp_status_name(st), tw);
+        ck_assert_double_eq(tw, 99);
+    }
+    /* a point clearly off the line still gets its side, in every mode */
+    const swarp_vec3 off = {10, 11, -10};
+    double tw0 = 0;
+    ck_assert_int_eq(swarp_lixel_twist_for_line(&M, &a, &b, &off, &tw0), SWARP_OK);
+    for (int m = 1; m < 4; ++m) {
+        double tw = 99;
+        fesetround(modes[m]);
+        swarp_status st = swarp_lixel_twist_for_line(&M, &a, &b, &off, &tw);
+        fesetround(FE_TONEAREST);
+        ck_assert_int_eq(st, SWARP_OK);
+        ck_assert_msg(fabs(tw - tw0) <= 1e-12, "mode %d: twist %.17g, to nearest %.17g", m, tw, tw0);
+    }
+}
+END_TEST
+
+/* fenvf pass: robust_fenv 120000 (issue 9), swarp_lixel_split case 103034.
+ * The floor x = -1e6, the wall y = 0.41, a light whose x component is 1 ulp
+ * off 1e-9: Sigma is 1e-9 (rad) from the floor, on the "light on the floor"
+ * bound.  The test's side = Sigma . F was formed as n . F - n . A with F, A
+ * of 1e6 (rounding 1e-10): DEGENERATE to nearest, OK in the directed modes.
+ * Now n . w_f (unit vectors, rounding ~eps): the same status in every mode. */
+START_TEST(fenvf_split_light_floor_bound_rounding_mode) {
+    swarp_light light;
+    memset(&light, 0, sizeof light);
+    light.type = SWARP_LIGHT_DIRECTIONAL;
+    light.direction = (swarp_vec3){-0x1.12e0be826d695p-30, -0x1.0000000001198p+0, -0x1.97ead56768218p-3};
+    const swarp_plane fl = {0x1p+0, 0x0p+0, 0x0p+0, 0x1.e848c4a087066p+19}, wa = {0x0p+0, 0x1p+0, 0x0p+0, -0x1.a7b0afea8fc4p-2};
+    const swarp_vec4 C[4] = {{-0x1.e848362b12b0dp+19, -0x1.06e4a586b34eap+1, -0x1.e847719dfaf7bp+19, 1},
+                             {-0x1.e848395e45e4p+19, -0x1.06e4a586b34eap+1, -0x1.e8476e6ac7c48p+19, 1},
+                             {-0x1.e8483c9179173p+19, -0x1.06e4a586b34eap+1, -0x1.e847719dfaf7bp+19, 1},
+                             {-0x1.e848395e45e4p+19, -0x1.06e4a586b34eap+1, -0x1.e84774d12e2aep+19, 1}};
+    static const int modes[4] = {FE_TONEAREST, FE_UPWARD, FE_DOWNWARD, FE_TOWARDZERO};
+    swarp_status st0 = SWARP_OK;
+    size_t nf0 = 0, nw0 = 0;
+    for (int m = 0; m < 4; ++m) {
+        swarp_vec4 of[SWARP_LIXEL_SPLIT_MAX(4)], ow[SWARP_LIXEL_SPLIT_MAX(4)];
+        size_t nf = 0, nw = 0;
+        fesetround(modes[m]);
+        swarp_status st = swarp_lixel_split(&light, &fl, &wa, C, 4, of, SWARP_LIXEL_SPLIT_MAX(4), &nf, ow,
+                                            SWARP_LIXEL_SPLIT_MAX(4), &nw);
+        fesetround(FE_TONEAREST);
+        if (m == 0) {
+            st0 = st, nf0 = nf, nw0 = nw;
+            continue;
+        }
+        ck_assert_msg(st == st0, "mode %d: %s, to nearest %s", m, swarp_status_name(st), swarp_status_name(st0));
+        if (st == SWARP_OK) ck_assert(nf == nf0 && nw == nw0);
+    }
+}
+END_TEST
+
+/* fenvf pass: robust_fenv 120000 (issue 9), swarp_lixel_restrict case
+ * 104071.  M's q row is 1e78 times its x, y rows and C holds one direction
+ * (q = 0): the cone's image is a ray from within 1e-76 lixel of the origin
+ * toward (0.95, -0.30), a wedge flat to rounding.  The view-clipping corner
+ * test compared the corner's side of each edge with the interior vector S's;
+ * S lies on the plane of the edges through the direction (its side 1e-77
+ * against rounding 2e-16), and under FE_UPWARD the corner (g - 1, 0) counted
+ * as inside: rect x0 -1099 instead of 0, A_l M_l's translation 1e81.  Now
+ * an edge plane holding S (flat cone) keeps only corners on it. */
+START_TEST(fenvf_restrict_flat_cone_rounding_mode) {
+    static const swarp_mat4 M = {{0x1.6cde06a370998p-2, -0x1.4bc252de49ddap-1, 0x1.fea9a411e36fep-1, 0x0p+0,
+                                  0x1.7228f6f0775d2p-1, -0x1.3f49068b5a344p-2, -0x1p+0, 0x0p+0, -0x1.623fab8bf5c0cp-1,
+                                  -0x1.5ba931c9fb568p-2, 0x1.fffffffffffffp-1, 0x0p+0, 0x1.4f7fdedb6a206p-1,
+                                  0x1.ea8240547cc4p-1, 0x1.77a253562a9ccp-2, 0x1.0502b38b77194p+259}};
+    static const swarp_vec4 C[8] = {{0x1.7b86678bff0c8p+5, -0x1.4a82f7f1b5c88p+4, -0x1.539c7bd5d3c98p+5, 0x0p+0},
+                                    {0x1.4bc5e6c5d08bp+6, -0x1.65a6bcf814756p+6, 0x1.8ffffffffffffp+6, 0x1p+0},
+                                    {0x1.b5051e73ab038p+3, -0x1.9000000000001p+6, 0x1.9000000000001p+6, 0x1p+0},
+                                    {-0x1.99c5b1d5e0e18p+3, -0x1.9000000000001p+6, 0x1.94a188a4f009dp+5, 0x1p+0},
+                                    {0x1.c816bb8e718c2p+4, -0x1.0c9a4b2384d2p+6, -0x1.00030e39c3b88p+6, 0x1p+0},
+                                    {0x1.10ba7b7a85094p+6, -0x1.2724a9e1d939p+4, 0x1.9000000000001p+6, 0x1p+0},
+                                    {0x1.9ea1ab5e3e2f8p+5, -0x1.5e98eb8d84adp+4, -0x1.0b8f1750e991p+5, 0x1p+0},
+                                    {0x1.82fda32fb6b6ep+6, -0x1.8628abe0964d6p+6, -0x1.9000000000001p+6, 0x1p+0}};
+    swarp_lixel_restrict_options o;
+    memset(&o, 0, sizeof o);
+    o.scale_x = 0x1.447b0d41021ecp+0;
+    o.scale_y = 0x1.27e31f8c4f4dbp+1;
+    o.twist = -0x1.080a3d8b45cdp+1;
+    o.view_width = 1836;
+    o.view_height = 209;
+    static const int modes[4] = {FE_TONEAREST, FE_UPWARD, FE_DOWNWARD, FE_TOWARDZERO};
+    swarp_lixel_rect r0;
+    memset(&r0, 0, sizeof r0);
+    swarp_status st0 = SWARP_OK;
+    for (int m = 0; m < 4; ++m) {
+        swarp_lixel_rect r;
+        swarp_mat4 out;
+        fesetround(modes[m]);
+        swarp_status st = swarp_lixel_restrict(&M, C, 8, &o, &r, NULL, &out);
+        fesetround(FE_TONEAREST);
+        if (m == 0) {
+            st0 = st, r0 = r;
+            continue;
+        }
+        ck_assert_msg(st == st0, "mode %d: %s, to nearest %s", m, swarp_status_name(st), swarp_status_name(st0));
+        ck_assert_msg(r.x0 == r0.x0 && r.x1 == r0.x1 && r.y0 == r0.y0 && r.y1 == r0.y1,
+                      "mode %d: rect [%d, %d] x [%d, %d], to nearest [%d, %d] x [%d, %d]", m, r.x0, r.x1, r.y0, r.y1, r0.x0,
+                      r0.x1, r0.y0, r0.y1);
+    }
+}
+END_TEST
+
 static Suite* lixel_suite(void) {
     Suite* s = suite_create("lixel");
     TCase* tc = tcase_create("lixel");
@@ -1125,6 +1252,9 @@ static Suite* lixel_suite(void) {
     tcase_add_test(tc, orthographic_viewer);
     tcase_add_test(tc, near_degenerate_never_nan);
     tcase_add_test(tc, overflowing_results_are_out_of_range);
+    tcase_add_test(tc, fenvf_twist_below_on_line_rounding_mode); /* fenvf pass */
+    tcase_add_test(tc, fenvf_split_light_floor_bound_rounding_mode); /* fenvf pass */
+    tcase_add_test(tc, fenvf_restrict_flat_cone_rounding_mode); /* fenvf pass */
     /* @@MORE_TCASES@@ */
     suite_add_tcase(s, tc);
     return s;

@@ -700,6 +700,26 @@ static void e_msm_visibility(swr_ctx* c) {
     c->out_scale = 1; /* a fraction in [0, 1] */
     swr_rec(c, "visibility", v);
     SWR_CHECK(c, v >= 0 && v <= 1, "visibility %g outside [0, 1]", v);
+    /* Condition: the bound solves B c = (1, z_f, z_f^2) through the LDL^T
+     * pivots D22 = b2 - b1^2 and D33 = b4 - b2^2 - L32^2 D22 of the Hankel
+     * matrix B; each pivot is a cancellation of terms of total size S (S22 =
+     * b2 + b1^2, S33 = b4 + b2^2 + L32^2 D22), so rounding moves it by ~eps S,
+     * i.e. eps S / D relative, and c (hence the atoms z2, z3 and the bound)
+     * scales with 1/D: the visibility's relative condition is at least
+     * S / D.  Just above the library's degeneracy threshold (D33 > 64 eps
+     * S33) that is up to 1/(64 eps): a mixture of depths 1 with the default
+     * bias gave D33 = 2e-14, S33 / D33 = 7e13, and the visibility moved by
+     * 1e-3 with the rounding mode (fenv 60000 case 51494). */
+    if (st == SWARP_OK) {
+        const long double b1 = b[0], b2 = b[1], b3 = b[2], b4 = b[3];
+        const long double D22 = b2 - b1 * b1, S22 = b2 + b1 * b1;
+        if (D22 > 0) {
+            const long double L32 = (b3 - b1 * b2) / D22;
+            const long double D33 = b4 - b2 * b2 - L32 * L32 * D22, S33 = b4 + b2 * b2 + L32 * L32 * D22;
+            swr_cond(c, (double)(S22 / D22));
+            if (D33 > 0) swr_cond(c, (double)(S33 / D33));
+        }
+    }
 }
 
 static void e_pcf_poisson_disk(swr_ctx* c) {

@@ -1030,6 +1030,27 @@ static void e_poly_clip_common(swr_ctx* c, int with_box) {
         return;
     }
     double nl = sqrt(pn.a * pn.a + pn.b * pn.b + pn.c * pn.c);
+    /* Condition of the new vertices: an edge u -> v crossing the plane is
+     * cut at t = d_u / (d_u - d_v), d = n.p + d computed from terms of total
+     * magnitude T = |a x| + |b y| + |c z| + |d|, each d rounded by ~eps T;
+     * t moves by eps T / |d_u - d_v| and the cut point by that times
+     * |v - u|: relative to the polyhedron's scale, cond = T |v - u| /
+     * (|d_u - d_v| scale).  Large for an edge whose ends are both within a
+     * cancellation of the plane (fenv 60000 case 57809: d = -9e-4 and 5e-4
+     * from terms of 8e3, an edge of 40, the cut moved 4e-8). */
+    for (uint32_t f = 0; f < in.face_count && f < SWARP_POLY_MAX_FACES; ++f) {
+        const uint32_t nv = in.face_vertex_count[f] <= SWARP_POLY_MAX_FACE_VERTICES ? in.face_vertex_count[f] : 0;
+        for (uint32_t k = 0; k < nv; ++k) {
+            const uint32_t iu = in.face_vertices[f][k], iv = in.face_vertices[f][(k + 1) % nv];
+            if (iu >= in.vertex_count || iv >= in.vertex_count) continue;
+            const swarp_vec3 u = in.vertices[iu], w = in.vertices[iv];
+            const double du = plane_at(&pn, u), dv = plane_at(&pn, w);
+            if (!((du <= 0 && dv >= 0) || (du >= 0 && dv <= 0)) || du == dv) continue;
+            const double T = fmax(fabs(pn.a * u.x) + fabs(pn.b * u.y) + fabs(pn.c * u.z), fabs(pn.a * w.x) + fabs(pn.b * w.y) + fabs(pn.c * w.z)) + fabs(pn.d);
+            const double len = vmax(v3(w.x - u.x, w.y - u.y, w.z - u.z));
+            swr_cond(c, T * len / (fabs(du - dv) * fmax(poly_scale(&in), 1e-300)));
+        }
+    }
     int all_in = 1, all_out = in.vertex_count > 0;
     for (uint32_t v = 0; v < out.vertex_count && v < SWARP_POLY_MAX_VERTICES; ++v)
         SWR_CHECK_ACC(c, plane_at(&pn, out.vertices[v]) / nl <= tol, "clip: vertex %u on the removed side by %g", v,
@@ -1456,13 +1477,55 @@ static void e_warp_lispsm(swr_ctx* c) {
     swr_domain(c, SWARP_ERR_OUT_OF_RANGE); /* n_opt of a degenerate body */
     if (s.degenerate_light) c->rounding_edge = 1;
     scene_cond(c, &s, near, far);
+    /* B without extent along the warp axis (L's y) beyond the rounding of
+     * its light-space y: the library warps when d = y_max - y_min > 0 (and
+     * above 1e-12 of B's light-space size), and y is a sum of terms that
+     * may be far larger than y (B 1e6 from the origin, near L's origin:
+     * y ~ 1e-6 from terms of 1e6).  Each y is off by up to ~7 eps of its
+     * terms in a directed mode, so when the exact extent is within 64 eps
+     * of them the rounding decides between uniform and a full warp (fenv
+     * 120000 case 72815: two points on one light ray, d = 0 to nearest,
+     * 2 ulps of 1e6 under FE_UPWARD, P's entries 2 vs 8.6e9). */
+    if (n >= 1 && n <= SWARP_BODY_MAX_POINTS) {
+        long double ylo = INFINITY, yhi = -INFINITY, noise = 0;
+        for (size_t i = 0; i < n; ++i) {
+            const long double p[4] = {pts[i].x, pts[i].y, pts[i].z, 1};
+            long double hy = 0, hw = 0, ty = 0, tw = 0;
+            for (int k = 0; k < 4; ++k) {
+                hy += (long double)L.m[4 * k + 1] * p[k], ty += fabsl((long double)L.m[4 * k + 1] * p[k]);
+                hw += (long double)L.m[4 * k + 3] * p[k], tw += fabsl((long double)L.m[4 * k + 3] * p[k]);
+            }
+            if (!(hw != 0) || !isfinite((double)hy)) {
+                noise = -1;
+                break;
+            }
+            const long double y = hy / hw;
+            ylo = fminl(ylo, y), yhi = fmaxl(yhi, y);
+            noise = fmaxl(noise, (ty + fabsl(y) * tw) / fabsl(hw));
+        }
+        int same = 1; /* one point (or copies of it): d = 0 in every mode */
+        for (size_t i = 1; i < n; ++i) same &= memcmp(&pts[i], &pts[0], sizeof pts[0]) == 0;
+        if (!same && noise > 0 && yhi - ylo <= 64 * DBL_EPSILON * noise) c->rounding_edge = 1;
+    }
     if (!swr_done(c, SWR_CALL(c, swarp_warp_lispsm(pL, pc, near, far, pp, n, use_near ? &nearest : NULL, use_o ? &o : NULL, pP,
                                                   pi))))
         return;
     for (int i = 0; i < 16; ++i) swr_rec(c, "P", P.m[i]);
     if (pi) {
-        swr_rec_inf(c, "n_light", info.n_light);
-        swr_rec_inf(c, "n_eye", info.n_eye);
+        /* n_light, n_eye (+inf uniform) recorded as the warp strength
+         * d / n_light = (far - near) / n_eye (0: uniform), as in swarp_setup's
+         * entry: the map depends on 1/n continuously (w = 1 + (y - y_min)/n,
+         * y - y_min in [0, d]); next to the uniform limit n is as large as
+         * the rounding noise makes it (fenv 60000 case 58226: n_eye = 8.5e10
+         * for a depth range of 1.4e5, n_light = 2e7 for d = 34, a strength
+         * of 1.7e-6, moved by 4e-6 relative with the rounding mode: the
+         * same map to 1e-11), while compared as n they differ beyond the
+         * tolerance. */
+        const double nn[2] = {info.n_light, info.n_eye}, rng[2] = {info.d, far - near};
+        for (int k = 0; k < 2; ++k) {
+            SWR_CHECK(c, nn[k] == nn[k] && nn[k] != -INFINITY, "%s = %g", k ? "n_eye" : "n_light", nn[k]);
+            if (c->n_rec < SWR_MAX_REC) c->rec[c->n_rec++] = nn[k] == INFINITY ? 0.0 : rng[k] / nn[k];
+        }
         swr_rec(c, "d", info.d);
         swr_rec(c, "gamma", info.gamma);
         SWR_CHECK(c, info.n_light > 0 && info.n_eye > 0 && info.d >= 0, "n %g n' %g d %g", info.n_light, info.n_eye, info.d);

@@ -138,8 +138,16 @@ static void e_lixel_solve5(swr_ctx* c) {
      * conditioning: rounding decides near them (fenv test) */
     if (st == SWARP_INFO_LIXEL_ILL_CONDITIONED || st == SWARP_ERR_LIXEL_COPLANAR) c->rounding_edge = 1;
     if (!swr_verdict(c, st, 2, (void*)&M, sizeof M, (void*)&cond, sizeof cond)) return;
-    if (!n_c && cond > 0) swr_cond(c, 1.0 / (cond * cond));
-    if (!n_c && cond < 1e-4) c->rounding_edge = 1;
+    /* the conditioning is the call's whether or not the caller asked for it:
+     * without out_conditioning it is measured by a second call (default
+     * environment), so the fenv tolerance scales with it either way */
+    double k = cond;
+    if (n_c) {
+        swarp_mat4 M2;
+        if (swarp_status_is_error(swarp_lixel_solve5(src, dst, &M2, &k))) k = 0;
+    }
+    if (k > 0) swr_cond(c, 1.0 / (k * k));
+    if (k < 1e-4) c->rounding_edge = 1;
     rec_mat(c, "M", &M);
     SWR_CHECK(c, maxabs(&M) == 1.0, "largest |element| %.17g, documented 1", maxabs(&M));
     if (!n_c) {
@@ -275,8 +283,17 @@ static void e_lixel_matrix(swr_ctx* c) {
                                                     use_opt ? &opt : NULL, n_out ? NULL : &M, n_info ? NULL : &info));
     if (st == SWARP_INFO_LIXEL_ILL_CONDITIONED || st == SWARP_ERR_LIXEL_COPLANAR) c->rounding_edge = 1;
     if (!swr_verdict(c, st, 2, (void*)&M, sizeof M, (void*)&info, sizeof info)) return;
-    if (!n_info && info.conditioning > 0) swr_cond(c, 1.0 / (info.conditioning * info.conditioning));
-    if (!n_info && info.conditioning < 1e-4) c->rounding_edge = 1;
+    /* the conditioning of the call, asked for or not (as in swarp_lixel_solve5's
+     * entry): without out_info a second call in the default environment */
+    double k = n_info ? 0 : info.conditioning;
+    if (n_info) {
+        swarp_mat4 M2;
+        swarp_lixel_info i2;
+        if (!swarp_status_is_error(swarp_lixel_matrix(&v.M_v, g, h, &L, &P, use_opt ? &opt : NULL, &M2, &i2)))
+            k = i2.conditioning;
+    }
+    if (k > 0) swr_cond(c, 1.0 / (k * k));
+    if (k < 1e-4) c->rounding_edge = 1;
     rec_mat(c, "M_l", &M);
     SWR_CHECK(c, maxabs(&M) == 1.0, "largest |element| %.17g, documented 1", maxabs(&M));
     if (!n_info) SWR_CHECK(c, info.corners_in_front <= 4 && info.raised_index <= 3, "info out of range");
@@ -446,6 +463,63 @@ static void e_lixel_factor(swr_ctx* c) {
         }
 }
 
+/* swarp_lixel_split's "light on the floor" test compares side = Σ · F (the
+ * plane Σ through the light and the floor/wall line A + t u, at the floor
+ * point F = A + w_f one unit in front of the wall) with the absolute 1e-9.
+ * The library forms it as n_Σ · w_f / |w_f| from unit vectors (rounding
+ * ~16 eps absolute); for a point light n_Σ = u x (L - A) also carries the
+ * rounding of L - A, eps (|L| + |A|) / |L - A| of its direction.  When the
+ * exact side (long double) is within that of the bound, the caller's
+ * rounding mode decides DEGENERATE (fenv 120000 cases 82105, 103034 had
+ * |side| = 1e-9 within 3e-12 when the library still formed n_Σ · F -
+ * n_Σ · A, 1e-10 of rounding with the line 1e6 from the origin). */
+static int split_side_on_bound(const swarp_light* L, const swarp_plane* fl, const swarp_plane* wa) {
+    typedef long double ld;
+    const int point = L->type == SWARP_LIGHT_POINT;
+    if (!point && L->type != SWARP_LIGHT_DIRECTIONAL && L->type != SWARP_LIGHT_DEFAULT) return 0;
+    const double in[14] = {fl->a, fl->b, fl->c, fl->d, wa->a, wa->b, wa->c, wa->d, L->direction.x, L->direction.y,
+                           L->direction.z, L->position.x, L->position.y, L->position.z};
+    for (int i = 0; i < 14; ++i)
+        if (!fin(in[i])) return 0;
+    const ld lf = sqrtl((ld)fl->a * fl->a + (ld)fl->b * fl->b + (ld)fl->c * fl->c);
+    const ld lw = sqrtl((ld)wa->a * wa->a + (ld)wa->b * wa->b + (ld)wa->c * wa->c);
+    if (!(lf > 0) || !(lw > 0)) return 0;
+    const ld nf[3] = {fl->a / lf, fl->b / lf, fl->c / lf}, nw[3] = {wa->a / lw, wa->b / lw, wa->c / lw};
+    const ld hf = -fl->d / lf, hw = -wa->d / lw;
+    const ld u[3] = {nf[1] * nw[2] - nf[2] * nw[1], nf[2] * nw[0] - nf[0] * nw[2], nf[0] * nw[1] - nf[1] * nw[0]};
+    const ld uu = u[0] * u[0] + u[1] * u[1] + u[2] * u[2];
+    if (!(uu > 0)) return 0;
+    /* A = (hf (nw x u) + hw (u x nf)) / |u|^2 */
+    const ld a1[3] = {nw[1] * u[2] - nw[2] * u[1], nw[2] * u[0] - nw[0] * u[2], nw[0] * u[1] - nw[1] * u[0]};
+    const ld a2[3] = {u[1] * nf[2] - u[2] * nf[1], u[2] * nf[0] - u[0] * nf[2], u[0] * nf[1] - u[1] * nf[0]};
+    ld A[3], amax = 0;
+    for (int k = 0; k < 3; ++k) A[k] = (hf * a1[k] + hw * a2[k]) / uu, amax = fmaxl(amax, fabsl(A[k]));
+    ld t[3];
+    if (point) {
+        t[0] = L->position.x - A[0], t[1] = L->position.y - A[1], t[2] = L->position.z - A[2];
+    } else {
+        const ld dl = sqrtl((ld)L->direction.x * L->direction.x + (ld)L->direction.y * L->direction.y +
+                            (ld)L->direction.z * L->direction.z);
+        if (!(dl > 0)) return 0;
+        t[0] = L->direction.x / dl, t[1] = L->direction.y / dl, t[2] = L->direction.z / dl;
+    }
+    ld ns[3] = {u[1] * t[2] - u[2] * t[1], u[2] * t[0] - u[0] * t[2], u[0] * t[1] - u[1] * t[0]};
+    const ld ls = sqrtl(ns[0] * ns[0] + ns[1] * ns[1] + ns[2] * ns[2]);
+    if (!(ls > 0)) return 0;
+    const ld c = nw[0] * nf[0] + nw[1] * nf[1] + nw[2] * nf[2];
+    const ld wf[3] = {nw[0] - c * nf[0], nw[1] - c * nf[1], nw[2] - c * nf[2]};
+    const ld lwf = sqrtl(wf[0] * wf[0] + wf[1] * wf[1] + wf[2] * wf[2]);
+    if (!(lwf > 0)) return 0;
+    const ld side = (ns[0] * wf[0] + ns[1] * wf[1] + ns[2] * wf[2]) / (ls * lwf);
+    ld k = 1;
+    if (point) {
+        const ld lt = sqrtl(t[0] * t[0] + t[1] * t[1] + t[2] * t[2]);
+        const ld lmax = fmaxl(fabsl((ld)L->position.x), fmaxl(fabsl((ld)L->position.y), fabsl((ld)L->position.z)));
+        k += lt > 0 ? (lmax + amax) / lt : 1e300L;
+    }
+    return fabsl(fabsl(side) - 1e-9L) <= 16 * DBL_EPSILON * k;
+}
+
 static void e_lixel_split(swr_ctx* c) {
     SKIP_IF_MISSING(c, swarp_lixel_split);
     viewer v;
@@ -486,6 +560,7 @@ static void e_lixel_split(swr_ctx* c) {
     swr_fill(ow, sizeof ow);
     swr_fill(&cf, sizeof cf);
     swr_fill(&cw, sizeof cw);
+    if (split_side_on_bound(&L, &fl, &wa)) c->rounding_edge = 1;
     swarp_status st = SWR_CALL(c, swarp_lixel_split(n_l ? NULL : &L, n_f ? NULL : &fl, n_w ? NULL : &wa, n_c ? NULL : C, n,
                                                    n_of ? NULL : of, cap_f, n_ofc ? NULL : &cf, n_ow ? NULL : ow, cap_w,
                                                    n_owc ? NULL : &cw));
@@ -542,6 +617,23 @@ static void e_lixel_select(swr_ctx* c) {
         }
     }
     SWR_CHECK_ACC(c, idx == want, "index %u, the first map holding p is %u", idx, want);
+    /* The test is a documented threshold (w > 0, |x| <= w, |y| <= w) on
+     * rounded dot products: a coordinate of G p carries at most 4 roundings
+     * of the terms |G_ij p_j| (eps each, to nearest or directed), so when
+     * w, w - |x| or w - |y| of a map up to the chosen one is within 8 eps of
+     * the sum of those magnitudes, p is on the map's border and the caller's
+     * rounding mode decides which map holds it. */
+    for (size_t k = 0; k < count && k <= want; ++k) {
+        const double* g = G[k].m;
+        double mag[4];
+        for (int r = 0; r < 4; ++r)
+            mag[r] = fabs(g[r] * p.x) + fabs(g[4 + r] * p.y) + fabs(g[8 + r] * p.z) + fabs(g[12 + r]);
+        swarp_vec4 q = xf(&G[k], (swarp_vec4){p.x, p.y, p.z, 1});
+        double tol = 8 * DBL_EPSILON;
+        if (fabs(q.w) <= tol * mag[3] || fabs(q.w - fabs(q.x)) <= tol * (mag[3] + mag[0]) ||
+            fabs(q.w - fabs(q.y)) <= tol * (mag[3] + mag[1]))
+            c->rounding_edge = 1;
+    }
 }
 
 const swr_entry swr_entries_lixel[] = {

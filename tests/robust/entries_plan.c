@@ -146,6 +146,53 @@ static void check_plan(swr_ctx* c, swarp_status st, const swarp_budget* b, const
                              "%s with meets_budget %u", swarp_status_name(st), p->meets_budget);
 }
 
+/* The error budget is a threshold the planner compares a computed error with
+ * (err <= max_error: the chain meets the budget, the search stops at the
+ * fewest splits that meet it).  When a candidate's error lies within
+ * rounding of the budget, the caller's rounding mode decides whether it meets
+ * it, and with it the number of splits (e.g. a uniform map with far = 2 near
+ * (1 + 1 ulp), a 1024-pixel screen and a 2048 map: m_x = r_x f / n =
+ * 1 + 2e-16 against the default budget 1, exactly 1 under FE_DOWNWARD).
+ * Distance bound: the planner's error of a chain is a product and quotient
+ * of some 30 rounded factors (r_x, f / n, sin(γ ± Θ) / cos Θ, p_hi / n',
+ * n' from the core), none of them cancelling beyond the subtraction
+ * z sin(γ-Θ) - t_lo, which is exactly 0 at its minimum and multiplied by
+ * 1/n' <= 1/n elsewhere; each rounding moves it by at most 1 ulp in a
+ * directed mode, so the errors of two rounding modes differ by well under
+ * 64 eps relative (measured: <= 5 ulps).  The chains the search rejected
+ * before the chosen one are the ones with fewer splits (same order as the
+ * planner's candidate list, src/plan.c sw_candidate); the chosen chain
+ * itself is on the edge when its error is.  Evaluated in the default
+ * environment (outside SWR_CALL). */
+static int plan_on_budget_edge(const swarp_scene_needs* n, const swarp_budget* b, const swarp_plan_result* p, swarp_status st) {
+    const double budget = b && b->max_error > 0 ? b->max_error : 1.0, delta = 64 * DBL_EPSILON * budget;
+    if (fabs(p->max_error - budget) <= delta) return 1;
+    /* BUDGET_UNMET: the run in which that chain met the budget (status OK,
+     * with at most as many splits) sees it among its own rejected or chosen
+     * chains; the fenv test leaves the case out when either run flags it */
+    if (st == SWARP_INFO_PLAN_BUDGET_UNMET) return 0;
+    static const swarp_plan_warp single[] = {SWARP_PLAN_WARP_UNIFORM,      SWARP_PLAN_WARP_LISPSM_NOPT,
+                                             SWARP_PLAN_WARP_LISPSM_NREPAR, SWARP_PLAN_WARP_LISPSM_GMNPR,
+                                             SWARP_PLAN_WARP_LISPSM_PSEUDO, SWARP_PLAN_WARP_PSM};
+    static const swarp_plan_warp split[] = {SWARP_PLAN_WARP_UNIFORM, SWARP_PLAN_WARP_LISPSM_NOPT,
+                                            SWARP_PLAN_WARP_LISPSM_NREPAR};
+    const int moves = n && n->camera_moves; /* the planner keeps uniform chains only */
+    for (uint32_t K = 1; K < p->split_count; ++K) {
+        for (size_t v = 0; v < 6; ++v) { /* K = 1: six warps; K > 1: two schemes x three warps */
+            swarp_plan_chain ch;
+            memset(&ch, 0, sizeof ch);
+            ch.split_count = K;
+            ch.warp = K == 1 ? single[v] : split[v % 3];
+            ch.scheme = K == 1 ? SWARP_PLAN_SCHEME_NONE : v < 3 ? SWARP_PLAN_SCHEME_PRACTICAL : SWARP_PLAN_SCHEME_LOG;
+            if (moves && ch.warp != SWARP_PLAN_WARP_UNIFORM) continue;
+            swarp_plan_result e;
+            if (swarp_status_is_error(swarp_plan_evaluate(n, b, &ch, &e))) continue;
+            if (fabs(e.max_error - budget) <= delta) return 1;
+        }
+    }
+    return 0;
+}
+
 static void e_plan(swr_ctx* c) {
     SKIP_IF_MISSING(c, swarp_plan);
     swarp_scene_needs n;
@@ -159,6 +206,9 @@ static void e_plan(swr_ctx* c) {
     swarp_status st = SWR_CALL(c, swarp_plan(n_n ? NULL : &n, n_b ? NULL : &b, n_o ? NULL : &p));
     if (!swr_verdict(c, st, 1, (void*)&p, sizeof p)) return;
     check_plan(c, st, n_b ? NULL : &b, &p, 0);
+    if (swarp_plan_evaluate && p.split_count >= 1 && p.split_count <= SWARP_PLAN_MAX_SPLITS &&
+        plan_on_budget_edge(n_n ? NULL : &n, n_b ? NULL : &b, &p, st))
+        c->rounding_edge = 1;
 }
 
 static void e_plan_evaluate(swr_ctx* c) {

@@ -364,6 +364,23 @@ static void e_cascade_splits(swr_ctx* c) {
         if (sch == 4 && (!swr_isfin(o.pseudo_near) || !swr_isfin(o.pseudo_far))) swr_expect(c, SWARP_ERR_NON_FINITE);
         if (!swr_isfin(o.lambda) || !swr_isfin(o.pseudo_near) || !swr_isfin(o.pseudo_far)) swr_domain(c, SWARP_ERR_NON_FINITE);
         swr_domain(c, SWARP_ERR_OUT_OF_RANGE);
+        /* Every scheme refuses n_p + f_p >= 1 (OUT_OF_RANGE) on the rounded
+         * sum: 0.5 - 2^-54 plus 0.5 is 1 to nearest, 1 - 2^-53 downward, so
+         * within an ulp of 1 the caller's rounding mode decides the status.
+         * The pseudo scheme [RHS] (4.1) also refuses an empty pseudo range,
+         * n_p = n + n_p (f - n) >= f_p = f - f_p (f - n) on the rounded
+         * planes; their exact distance is (1 - n_p - f_p)(f - n), and each
+         * plane is a rounded product and sum within 2 ulps of f, so below
+         * 8 eps f the rounding decides too.  A sum of exactly 1 or more is
+         * refused in every mode (the rounded sum of two non-negative terms
+         * is >= 1 when the exact one is). */
+        if (swr_isfin(o.pseudo_near) && swr_isfin(o.pseudo_far)) {
+            const long double gap = 1.0L - o.pseudo_near - o.pseudo_far; /* within 2^-64: far below the bounds */
+            if (gap > 0 && gap <= 2 * DBL_EPSILON) c->rounding_edge = 1;
+            if (sch == 4 && gap > 0 && swr_isfin(n) && swr_isfin(f) && f > n &&
+                gap * ((long double)f - n) <= 8 * DBL_EPSILON * (long double)f)
+                c->rounding_edge = 1;
+        }
     }
     swr_domain(c, SWARP_ERR_CAPACITY);
     swr_domain(c, SWARP_ERR_DEGENERATE);
@@ -401,6 +418,10 @@ static void e_cascade_nopt(swr_ctx* c) {
     /* n_p warps the first split, f_p the last: together only when m = 1 */
     if (swr_isfin(np) && swr_isfin(fp) && (np < 0 || !(np < 1) || fp < 0 || !(fp < 1) || (m == 1 && !(np + fp < 1))))
         swr_expect(c, SWARP_ERR_OUT_OF_RANGE);
+    /* n_p + f_p < 1 on the rounded sum (as swarp_warp_nopt_pseudo's entry,
+     * entries_core.c): 0.5 - 2^-54 + 0.5 is 1 to nearest, 1 - 2^-53
+     * downward, so the status is the rounding mode's within an ulp of 1 */
+    if (m == 1 && fabs(np + fp - 1.0) <= 4 * DBL_EPSILON) c->rounding_edge = 1;
     swr_domain(c, SWARP_ERR_OUT_OF_RANGE);
     double out[9];
     swr_fill(out, sizeof out);
@@ -1019,7 +1040,34 @@ static void e_cascade_select_best(swr_ctx* c) {
         ok &= expect_map_fields(c, &maps[i]);
     if (!fin3(&p)) swr_expect(c, SWARP_ERR_NON_FINITE), ok = 0;
     swr_domain(c, SWARP_ERR_SINGULAR), swr_domain(c, SWARP_ERR_NON_FINITE), swr_domain(c, SWARP_ERR_BEHIND_PROJECTION);
-    if (!swr_done(c, SWR_CALL(c, swarp_cascade_select_best(pm, m, pp, fb, pi, pl)))) return;
+    const swarp_status st = SWR_CALL(c, swarp_cascade_select_best(pm, m, pp, fb, pi, pl));
+    /* SINGULAR comes from the first map (in order) whose texel step maps
+     * back to w' = 0 (swarp_bias_texel_size validates every map); w' is a
+     * cancellation, and when its condition (ref_texel_z's kappa: |terms| /
+     * |w'| times M's) is beyond the 1e10 up to which ref_texel trusts the
+     * double back-projection, whether it is exactly 0 is the rounding's:
+     * under FE_DOWNWARD the map passes and a later map's own error (a NaN
+     * resolution: RESOLUTION) is reported instead (fenv 60000 case 46804:
+     * p at 1e10, a map of condition 5e8).  Maps after one with invalid
+     * fields are never reached. */
+    if (st == SWARP_ERR_SINGULAR && fin3(&p) && m <= SWARP_SPLIT_MAX_COUNT) {
+        for (size_t i = 0; i < m; ++i) {
+            int valid = 1; /* the fields swarp_bias_texel_size checks first */
+            for (int k = 0; k < 16; ++k) valid &= swr_isfin(maps[i].world_to_clip.m[k]);
+            valid &= maps[i].res_s > 0 && maps[i].res_t > 0 && swr_isfin(maps[i].res_s) && swr_isfin(maps[i].res_t);
+            valid &= (int)maps[i].depth >= 0 && (int)maps[i].depth <= 2 && !maps[i]._reserved0;
+            for (int k = 0; k < 4; ++k) valid &= !maps[i]._reserved[k];
+            if (!valid) break;
+            ld Ls, Lt;
+            double kb = 0;
+            (void)ref_texel_z(&maps[i], p, &Ls, &Lt, 1, &kb);
+            if (kb > 1e10) {
+                c->rounding_edge = 1;
+                break;
+            }
+        }
+    }
+    if (!swr_done(c, st)) return;
     if (c->n_rec < SWR_MAX_REC) c->rec[c->n_rec++] = idx;
     if (pl) swr_rec(c, "L_texel", Lt);
     SWR_CHECK(c, idx < m, "index %u of %zu", idx, m);
@@ -1263,6 +1311,16 @@ static void e_stabilize_directional(swr_ctx* c) {
     }
     if (vmax3(cam.eye) > 1e300 || f > 1e300) swr_domain(c, SWARP_ERR_NON_FINITE); /* an overflow before the other checks */
     swr_cond(c, (vmax3(cam.eye) + vmax3(o.origin) + f) / n);
+    /* the map's lateral extent is about the split's width f tan(fovy/2) (x
+     * also times the aspect): the matrix divides coordinates resolved to eps
+     * |eye| by it, so its relative condition is (coordinates) / (width) as
+     * well (fovy 1e-6 at an eye 3e6 away: width 7.5e-6, cond 6e11; the
+     * translation moved by 8e-9 with the rounding mode, fenv 120000 case
+     * 93263) */
+    if (swr_isfin(cam.fovy) && cam.fovy > 0 && cam.fovy < 3.14159 && swr_isfin(cam.aspect) && cam.aspect > 0 && swr_isfin(f) && f > 0) {
+        const double width = f * tan(cam.fovy / 2) * fmin(1.0, cam.aspect);
+        if (width > 0) swr_cond(c, (vmax3(cam.eye) + vmax3(o.origin) + f) / width);
+    }
     swr_args(c, "eye (%g %g %g) dir (%g %g %g) fovy %g aspect %g n %.17g f %.17g light (%g %g %g) np %zu res %u mode %d levels %u origin (%g %g %g) lms %g box %d",
              cam.eye.x, cam.eye.y, cam.eye.z, cam.dir.x, cam.dir.y, cam.dir.z, cam.fovy, cam.aspect, n, f, ld_.x, ld_.y, ld_.z, np, res,
              mode, o.levels, o.origin.x, o.origin.y, o.origin.z, o.level_max_size, use_box);
