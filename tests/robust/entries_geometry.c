@@ -495,6 +495,22 @@ static void check_setup_result(swr_ctx* c, const scene_args* s, swarp_status st,
 static void setup_capacity_edge(swr_ctx* c, const scene_args* s, int range, double near, double far, size_t cap);
 static double vmax(swarp_vec3 v);
 static double box_scale(const swarp_aabb* b);
+/* A view frustum whose smallest feature (its depth far - near, the near
+ * quad's sides) is within 2 merge distances of the clipper,
+ * SWARP_POLY_EPS_REL of the coordinates' scale (documented: it never leaves
+ * two vertices closer): its corners merge or not by rounding, and H
+ * collapses to a flat polygon whose face planes are noise, so B is empty or
+ * not, and its vertex count, are decided by rounding (fenv 480000
+ * body_points case 388435: a 6e-7 deep frustum at 1e6, merge distance
+ * 1e-6; fenv 120000 setup_range case 67112: 1.8e-7 deep at 1e5, B of 11
+ * vertices to nearest, 8, 12 and 10 in the directed modes).  Computed as
+ * body_points does, in world coordinates. */
+static int frustum_below_merge(const scene_args* s, double near, double far) {
+    if (!(fin(near) && fin(far) && far > near && fin(s->cam.fovy) && fin(s->cam.aspect) && s->cam.aspect > 0)) return 0;
+    double ty = tan(0.5 * s->cam.fovy), sep = fmin(far - near, 2 * near * ty * fmin(s->cam.aspect, 1.0));
+    double X = fmax(fmax(vmax(s->cam.eye), box_scale(&s->box)), vmax(s->cam.eye) + far * ty * fmax(1.0, s->cam.aspect));
+    return isfinite(X) && sep <= 2 * SWARP_POLY_EPS_REL * X;
+}
 static void e_setup_common(swr_ctx* c, int range) {
     scene_args s;
     gen_setup_scene(c, &s);
@@ -534,8 +550,10 @@ static void e_setup_common(swr_ctx* c, int range) {
         st = SWR_CALL(c, swarp_setup(n_cam ? NULL : &s.cam, n_l ? NULL : &s.light, n_b ? NULL : &s.box,
                                     s.use_opt ? &s.opt : NULL, n_o ? NULL : &r, n_pts ? NULL : pts, cap,
                                     n_cnt ? NULL : &count));
-    if (!n_pts && cap < SWARP_BODY_MAX_POINTS && (st == SWARP_ERR_CAPACITY || !swarp_status_is_error(st)))
+    if (!n_pts && cap < SWARP_BODY_MAX_POINTS && (st == SWARP_ERR_CAPACITY || !swarp_status_is_error(st))) {
         setup_capacity_edge(c, &s, range, near, far, cap);
+        if (frustum_below_merge(&s, near, far)) c->rounding_edge = 1; /* B's count is the merges' */
+    }
     if (st == SWARP_ERR_CAPACITY) { /* the needed count may be written */
         SWR_CHECK(c, swr_untouched(pts, sizeof pts) && swr_untouched(&r, sizeof r), "CAPACITY but outputs written");
         if (!n_cnt) SWR_CHECK(c, count > cap && count <= SWARP_BODY_MAX_POINTS, "CAPACITY with needed %zu, capacity %zu", count, cap);
@@ -620,19 +638,8 @@ static void e_body_points(swr_ctx* c) {
     swr_fill(&count, sizeof count);
     swarp_status st = SWR_CALL(c, swarp_body_points(n_cam ? NULL : &s.cam, near, far, n_l ? NULL : &s.light,
                                                    n_b ? NULL : &s.box, n_o ? NULL : pts, cap, n_cnt ? NULL : &count));
-    /* A view frustum whose smallest feature (its depth far - near, the near
-     * quad's sides) is within 2 merge distances of the clipper,
-     * SWARP_POLY_EPS_REL of the coordinates' scale (documented: it never
-     * leaves two vertices closer): its corners merge or not by rounding, and
-     * H collapses to a flat polygon whose face planes are noise, so B is
-     * empty or not by rounding (fenv 480000 case 388435: a 6e-7 deep
-     * frustum at 1e6, merge distance 1e-6).  Computed as body_points does,
-     * in world coordinates. */
-    if (fin(near) && fin(far) && far > near && fin(s.cam.fovy) && fin(s.cam.aspect) && s.cam.aspect > 0) {
-        double ty = tan(0.5 * s.cam.fovy), sep = fmin(far - near, 2 * near * ty * fmin(s.cam.aspect, 1.0));
-        double X = fmax(fmax(vmax(s.cam.eye), box_scale(&s.box)), vmax(s.cam.eye) + far * ty * fmax(1.0, s.cam.aspect));
-        if (isfinite(X) && sep <= 2 * SWARP_POLY_EPS_REL * X) c->rounding_edge = 1;
-    }
+    /* a frustum below the clipper's merge distance: B empty or not by rounding */
+    if (frustum_below_merge(&s, near, far)) c->rounding_edge = 1;
     /* How many vertices B has is decided by rounding when two of them are
      * within the 1e-12 merge distance or a vertex lies on a clip plane (see
      * rec_point_set), so a capacity within 2 of the count may give OK in one
