@@ -58,17 +58,43 @@ static sw_cap sw_cap2(swarp_vec3 a, swarp_vec3 b) {
     else k.cosr = -1.0; /* antipodal: no cap smaller than a hemisphere */
     return k;
 }
+/* The tangential part of the unit vector r at the unit vector a, and the
+ * height h = 1 - r·a = |v|^2/(1 + r·a) of r below a's tangent plane.  v
+ * carries a rounding relative to its own length (the norm's rounding of r
+ * lies along a and drops out), h too (no cancellation in 1 - r·a). */
+static swarp_vec3 sw_cap_tangent(swarp_vec3 a, swarp_vec3 r, double* h) {
+    const double ra = sw_dot(r, a);
+    const swarp_vec3 v = sw_sub(r, sw_scale(a, ra));
+    *h = sw_dot(v, v) / (1.0 + ra);
+    return v;
+}
+/* The cap whose circle passes through a, b and c.  Its centre is a + u
+ * normalised, u in a's tangent plane with (a + u)·(b - a) = 0, i.e.
+ * u·v_b = h_b, and u·v_c = h_c (v, h: sw_cap_tangent).  Solved there, u is
+ * resolved to eps of its size, whatever the radius.  The plane normal
+ * (b - a) x (c - a) is not: the rounding of a unit vector's norm (eps,
+ * radial) moves b - a along a by eps, which tilts the normal by eps/|b - a|,
+ * 1/sin(r) times what the directions' own (tangential) rounding does.  Two
+ * vertices 6e-6 apart on a cap of 0.007 rad moved its axis by 4e-11 rad
+ * with the rounding mode, and the PSM row offsets (e·q̂)/τ, τ = 0.0055, by
+ * 2e-8 relative (issue 9, fenv swarp_setup_points 480000 case 405914). */
 static sw_cap sw_cap3(swarp_vec3 a, swarp_vec3 b, swarp_vec3 c) {
     sw_cap k;
-    swarp_vec3 n = sw_cross(sw_sub(b, a), sw_sub(c, a));
-    if (!sw_gnormalize(n, &k.c)) { /* on one great circle: the widest pair */
+    double hb, hc;
+    const swarp_vec3 vb = sw_cap_tangent(a, b, &hb), vc = sw_cap_tangent(a, c, &hc);
+    /* u = (h_b (v_c x a) + h_c (a x v_b))/det, det = a·(v_b x v_c): u·v_b =
+     * h_b, u·v_c = h_c, and u ⊥ a even when v_b, v_c are all but parallel
+     * (a, b, c near one great circle: a cap of almost 90°) */
+    const double det = sw_dot(a, sw_cross(vb, vc));
+    const swarp_vec3 u = sw_scale(sw_add(sw_scale(sw_cross(vc, a), hb), sw_scale(sw_cross(a, vb), hc)), 1.0 / det);
+    if (!(det != 0.0) || !sw_gnormalize(sw_add(a, u), &k.c)) { /* on one great circle: the widest pair */
         sw_cap k1 = sw_cap2(a, b), k2 = sw_cap2(a, c), k3 = sw_cap2(b, c);
         k = k1;
         if (k2.cosr < k.cosr) k = k2;
         if (k3.cosr < k.cosr) k = k3;
         return k;
     }
-    if (sw_dot(k.c, a) < 0.0) k.c = sw_scale(k.c, -1.0);
+    /* the centre a + u lies on a's side: the smaller of the circle's caps */
     k.cosr = sw_dot(k.c, a);
     return k;
 }

@@ -1497,6 +1497,69 @@ START_TEST(fe_setup_nopt_equal_depths_point_light) {
 }
 END_TEST
 
+/* fenvg pass: PSM's light camera axis is the minimal cone around the
+ * receivers' light directions ([KOZ] §14.2.2, src/psm.c).  Here a cone of
+ * 0.007 rad through three directions, two of them 6e-6 apart; its axis was
+ * the normal (b - a) x (c - a), which the rounding of the unit vectors'
+ * norms tilted by eps/6e-6: 4e-11 rad between rounding modes, and the row
+ * offsets (e·q̂)/τ (τ = 0.0055) moved 2e-8 of the largest output (issue 9,
+ * fenv swarp_setup_points 480000 case 405914).  The axis is now solved in
+ * the tangent plane: the map is the same in every rounding mode to 1e-9. */
+START_TEST(fe_setup_points_psm_small_cone_rounding_mode) {
+    const swarp_camera cam = {{0x1.04da202c6b4d6p+5, 0x1.12cb4d5f8af88p+2, 0x1.2ddfb7cc89899p+5},
+                              {-0x1.3672bb50dc043p-1, -0x1.1d53626e89fd5p-6, -0x1.970bc56826685p-1},
+                              {0, 1, 0},
+                              0x1.d65510c8d8838p-4,
+                              0x1.365e4e50054f9p+0,
+                              0x1.112b975471c98p-1,
+                              0x1.52542fe6f6a46p+6,
+                              {0, 0, 0, 0}};
+    const swarp_light l = {SWARP_LIGHT_POINT, 0, {-0x1.f29a3d2ef5c5p-2, -0x1.1a6ac18f13acap-6, -0x1.bf1e594a3325cp-1},
+                           {-0x1.5768426e7b83ap+5, 0x1.8d554d7e1e037p+7, 0x1.093dff6005ad6p+6}, 0x1.387afe97711c3p+0,
+                           {0, 0, 0, 0}};
+    const swarp_vec3 pts[12] = {{-0x1.75087d70fa334p+4, -0x1.0522427c4b9eep+1, -0x1.9de332bbfd2dap+4},
+                                {-0x1.be2169e04acd4p+3, -0x1.0522427c4b9eep+1, -0x1.0822083ac9fb9p+5},
+                                {-0x1.76ad1693abc1ap+4, 0x1.eb9cc5a23f14ap+2, -0x1.a00aab03015cap+4},
+                                {-0x1.c16a9c25adeap+3, 0x1.eb9cc5a23f14ap+2, -0x1.0935c45e4c131p+5},
+                                {-0x1.d8b26b9851ce4p+3, 0x1.8fc0b95236a2fp+3, -0x1.ea556b883a41p+4},
+                                {-0x1.8bc0ba0740347p+4, 0x1.8fc0b95236a2ep+3, -0x1.33195523a4d55p+4},
+                                {-0x1.7e89ebd59ee15p+4, 0x1.8fc0b95236a2fp+3, -0x1.7ad620465b21fp+4},
+                                {-0x1.7edd8e5561154p+3, -0x1.c56671acabf6cp+0, -0x1.e02f99f660d98p+4},
+                                {-0x1.473427291bb54p+3, 0x1.d9dcb807adef7p+2, -0x1.b591c47d48c4p+4},
+                                {-0x1.630ab9f29736cp+3, 0x1.8fc0b95236a2fp+3, -0x1.8db42040032bep+4},
+                                {-0x1.6153e7f14322p+4, -0x1.e68eb773ccb28p+0, -0x1.8779b52437b4ap+4},
+                                {-0x1.7942530cc8812p+4, 0x1.8fc0b95236a2ep+3, -0x1.1f3f2601fc3d6p+4}};
+    swarp_setup_options o;
+    memset(&o, 0, sizeof o);
+    o.technique = SWARP_TECHNIQUE_PSM;
+    o.param = SWARP_WARP_PARAM_GMNPR;
+    o.depth_range = SWARP_DEPTH_NEG_ONE_TO_ONE;
+    o.map_width = 1107;
+    o.map_height = 4936;
+    o.n_user = 0x1.2e4e0269776aap+6;
+    o.pseudo_near = 0x1.55be0ebf00872p-4;
+    o.pseudo_far = 0x1.6d35377d284bp-1;
+    swarp_setup_result r0, r;
+    const swarp_status s0 = swarp_setup_points(&cam, &l, pts, 12, NULL, 0, cam.near, cam.far, &o, &r0);
+    ck_assert_msg(!swarp_status_is_error(s0), "%s", swarp_status_name(s0));
+    const swarp_mat4* m0[3] = {&r0.light_view, &r0.light_proj, &r0.matrix};
+    double big = 0;
+    for (int k = 0; k < 3; ++k)
+        for (int i = 0; i < 16; ++i) big = fmax(big, fabs(m0[k]->m[i]));
+    for (size_t m = 0; m < sizeof tu_modes / sizeof tu_modes[0]; ++m) {
+        fesetround(tu_modes[m]);
+        const swarp_status s = swarp_setup_points(&cam, &l, pts, 12, NULL, 0, cam.near, cam.far, &o, &r);
+        fesetround(FE_TONEAREST);
+        ck_assert_msg(s == s0, "mode %zu: %s, default %s", m, swarp_status_name(s), swarp_status_name(s0));
+        const swarp_mat4* m1[3] = {&r.light_view, &r.light_proj, &r.matrix};
+        for (int k = 0; k < 3; ++k)
+            for (int i = 0; i < 16; ++i)
+                ck_assert_msg(fabs(m1[k]->m[i] - m0[k]->m[i]) <= 1e-9 * big, "mode %zu: matrix %d entry %d = %.17g, default %.17g",
+                              m, k, i, m1[k]->m[i], m0[k]->m[i]);
+    }
+}
+END_TEST
+
 int main(void) {
     Suite* s = suite_create("edges_geometry");
     TCase* t = tcase_create("geometry");
@@ -1541,6 +1604,8 @@ int main(void) {
     tcase_add_test(t, fe_setup_nopt_equal_depths_rounding_mode);
     tcase_add_test(t, fe_setup_point_light_axis_in_z_plane);
     tcase_add_test(t, fe_setup_nopt_equal_depths_point_light);
+    /* fenvg pass */
+    tcase_add_test(t, fe_setup_points_psm_small_cone_rounding_mode);
     suite_add_tcase(s, t);
     return tu_run_suite(s) ? 1 : 0;
 }
