@@ -127,8 +127,8 @@ int main(int argc, char** argv) {
                 }
                 if (c->status != base->status || c->n_rec != base->n_rec) {
                     if (note_fail(e->name, strict, &fails, &known))
-                        printf("%s %s case %lu under %s: status %s, default %s\n", is_known(e->name) && !strict ? "KNOWN" : "FAIL", e->name, j, modes[m].name,
-                               swarp_status_name(c->status), swarp_status_name(base->status));
+                        printf("%s %s case %lu under %s: status %s, default %s (condition %.3g)\n     arguments: %s\n", is_known(e->name) && !strict ? "KNOWN" : "FAIL", e->name, j, modes[m].name,
+                               swarp_status_name(c->status), swarp_status_name(base->status), cond_any, base->args);
                     continue;
                 }
                 /* relative to the largest output of the call (slot 0 is the status) */
