@@ -175,6 +175,23 @@ static void scene_cond(swr_ctx* c, const scene_args* s, double near, double far)
     cmax = fmax(cmax, fmax(fmax(fabs(s->box.min.x), fabs(s->box.min.y)), fabs(s->box.min.z)));
     cmax = fmax(cmax, fmax(fmax(fabs(s->box.max.x), fabs(s->box.max.y)), fabs(s->box.max.z)));
     if (near > 0 && swr_isfin(cmax + far)) swr_cond(c, (cmax + far) / near);
+    /* A point light at l: the map is the light's view of B, the angle of
+     * p - l about the axis, and B spans ext(B)/|p - l| rad of it.  The
+     * coordinates of l carry their rounding, eps |l| (camera-relative:
+     * l - eye rounds by that much, and so do the look-at rows' dot products
+     * with l), which turns p - l by eps |l| / |p - l| rad: eps |l| / ext(B)
+     * of the map's span.  The condition is |l| / ext(B) >= |l| / ext(box)
+     * (B lies in the box; the box's extent gives the lower bound, never a
+     * loosening beyond the true condition).  A point light 3.4e68 from a
+     * 44-unit box (fenv 480000 setup_range case 291491): condition 8e66,
+     * the light-view row y got -5e38 instead of ~10 in the directed modes,
+     * SWARP_ERR_DEGENERATE by the resolution test, WARP_UNIFORM to nearest. */
+    if (s->light.type == SWARP_LIGHT_POINT && fin3(&s->light.position)) {
+        const swarp_vec3 lp = s->light.position;
+        double lmag = fmax(fabs(lp.x), fmax(fabs(lp.y), fabs(lp.z)));
+        double ext = fmax(s->box.max.x - s->box.min.x, fmax(s->box.max.y - s->box.min.y, s->box.max.z - s->box.min.z));
+        if (ext > 0 && swr_isfin(ext) && lmag > 0) swr_cond(c, lmag / ext);
+    }
 }
 
 /* what the arguments call for; `parts` says which ones the function reads */
