@@ -1743,7 +1743,15 @@ static void e_cascade_setup(swr_ctx* c) {
         SWR_CHECK(c, q->near == r.splits[i] && q->far == r.splits[i + 1], "split %u [%g, %g], C [%g, %g]", i, q->near, q->far,
                   r.splits[i], r.splits[i + 1]);
         for (int e = 0; e < 16; ++e) swr_rec(c, "matrix", q->matrix.m[e]), swr_rec(c, "atlas_matrix", q->atlas_matrix.m[e]);
-        if (c->n_rec < SWR_MAX_REC) c->rec[c->n_rec++] = q->n_eye; /* +inf: a uniform split (documented per split) */
+        /* n' recorded as the split's warp strength (far - near)/n' (0: a
+         * uniform split, n' = +inf, documented per split), as swarp_setup's
+         * entry records it (see check_setup_result): the split's map depends
+         * on 1/n' continuously (w = 1 + (y - y_min)/n'), and next to the
+         * uniform limit n' is as large as the rounding makes it.  Compared as
+         * n' (fenv 480000 case 160316, no options: n' = 3.2e8, 4.9e8 and
+         * 1.4e9 for splits 1-3, moved 1e-8 relative by the rounding mode)
+         * it failed the tolerance while the splits' matrices agreed to it. */
+        if (c->n_rec < SWR_MAX_REC) c->rec[c->n_rec++] = q->n_eye == INFINITY ? 0.0 : (q->far - q->near) / q->n_eye;
         SWR_CHECK(c, q->n_eye > 0, "split %u n_eye %g", i, q->n_eye);
         swr_rec(c, "max_mx", q->max_mx), swr_rec(c, "max_mz", q->max_mz);
         SWR_CHECK(c, !swarp_status_is_error(q->status), "split %u status %s", i, swarp_status_name(q->status));
