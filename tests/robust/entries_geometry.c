@@ -183,9 +183,10 @@ static void scene_cond(swr_ctx* c, const scene_args* s, double near, double far)
      * of the map's span.  The condition is |l| / ext(B) >= |l| / ext(box)
      * (B lies in the box; the box's extent gives the lower bound, never a
      * loosening beyond the true condition).  A point light 3.4e68 from a
-     * 44-unit box (fenv 480000 setup_range case 291491): condition 8e66,
-     * the light-view row y got -5e38 instead of ~10 in the directed modes,
-     * SWARP_ERR_DEGENERATE by the resolution test, WARP_UNIFORM to nearest. */
+     * 44-unit box (fenv 480000 setup_range case 291491): condition 8e66;
+     * in the directed modes a point of B got the light-view coordinate
+     * y = -5e38, so src/setup.c's resolution test (sw_world_resolves)
+     * refused the map, SWARP_ERR_DEGENERATE; WARP_UNIFORM to nearest. */
     if (s->light.type == SWARP_LIGHT_POINT && fin3(&s->light.position)) {
         const swarp_vec3 lp = s->light.position;
         double lmag = fmax(fabs(lp.x), fmax(fabs(lp.y), fabs(lp.z)));
