@@ -32,6 +32,15 @@ static void bbox(const swarp_polyhedron* p, double lo[3], double hi[3]) {
     }
 }
 
+/* every face plane of F has a unit normal (and, with check_d, a finite d) */
+static void assert_unit_planes(const swarp_polyhedron* F, int check_d) {
+    for (uint32_t f = 0; f < F->face_count; ++f) {
+        const swarp_plane* q = &F->planes[f];
+        const double nl = sqrt(q->a * q->a + q->b * q->b + q->c * q->c);
+        ck_assert_msg(fabs(nl - 1) <= 1e-9 && (!check_d || isfinite(q->d)), "face %u normal length %g d %g", f, nl, q->d);
+    }
+}
+
 START_TEST(poly_clip_aabb_edges) {
     uint64_t s = 0xB0C5ull;
     for (int n = 0; n < 300; ++n) {
@@ -831,12 +840,7 @@ START_TEST(poly_tiny_magnitudes) {
     swarp_polyhedron F;
     swarp_status st = swarp_poly_from_inverse_matrix(&m, SWARP_DEPTH_DEFAULT, &F);
     ck_assert_msg(st == SWARP_OK || st == SWARP_ERR_DEGENERATE, "%s", swarp_status_name(st));
-    if (st == SWARP_OK)
-        for (uint32_t f = 0; f < F.face_count; ++f) {
-            const swarp_plane* q = &F.planes[f];
-            const double nl = sqrt(q->a * q->a + q->b * q->b + q->c * q->c);
-            ck_assert_msg(fabs(nl - 1) <= 1e-9, "face %u normal length %g", f, nl);
-        }
+    if (st == SWARP_OK) assert_unit_planes(&F, 0);
 }
 END_TEST
 
@@ -1006,12 +1010,7 @@ START_TEST(poly_inverse_matrix_huge_corners) {
     swarp_polyhedron F;
     swarp_status st = swarp_poly_from_inverse_matrix(&m, SWARP_DEPTH_ZERO_TO_ONE, &F);
     ck_assert_msg(st == SWARP_OK || st == SWARP_ERR_DEGENERATE, "%s", swarp_status_name(st));
-    if (st == SWARP_OK)
-        for (uint32_t f = 0; f < F.face_count; ++f) {
-            const swarp_plane* q = &F.planes[f];
-            const double nl = sqrt(q->a * q->a + q->b * q->b + q->c * q->c);
-            ck_assert_msg(fabs(nl - 1) <= 1e-9 && isfinite(q->d), "face %u normal length %g d %g", f, nl, q->d);
-        }
+    if (st == SWARP_OK) assert_unit_planes(&F, 1);
 }
 END_TEST
 
