@@ -638,6 +638,39 @@ static swarp_status sw_poly_clip_to(const swarp_polyhedron* in, swarp_vec3 n_raw
         t->planes[tf] = in->planes[f];
         ++tf;
     }
+    /* No faces: a point set, in practice a collapse onto a line (a flat
+     * polygon thinner than eps loses its loops, sw_remap_faces) whose hull
+     * is the segment between its ends.  The face walk above cut no edge,
+     * so the clip kept the inner vertices only: cutting a 64-long segment
+     * of B at a box plane left its inner end, a point, or the segment, as
+     * the rounding had collapsed it earlier or not (issue 9, fenv
+     * swarp_body_from_h 240000 case 169801).  Each strictly crossing pair
+     * is cut (the hull of the kept and the cut points is the clipped hull);
+     * a cut within eps of a point kept or cut already adds nothing (for a
+     * segment the cuts are all one point). */
+    if (in->face_count == 0) {
+        const double cut_eps = SWARP_POLY_EPS_REL * in_scale;
+        for (uint32_t i = 0; i < nv; ++i) {
+            if (cls[i] != SW_IN) continue;
+            for (uint32_t j = 0; j < nv; ++j) {
+                if (cls[j] != SW_OUT) continue;
+                const double s = dist[i] / (dist[i] - dist[j]);
+                const swarp_vec3 a = in->vertices[i], b = in->vertices[j];
+                const swarp_vec3 p = sw_add(a, sw_scale(sw_sub(b, a), s));
+                uint32_t k = 0;
+                for (; k < tv; ++k) {
+                    const swarp_vec3 w = t->vertices[k];
+                    if (fabs(p.x - w.x) <= cut_eps && fabs(p.y - w.y) <= cut_eps && fabs(p.z - w.z) <= cut_eps) break;
+                }
+                if (k < tv) continue;
+                if (tv >= SWARP_POLY_MAX_VERTICES) return SWARP_ERR_CAPACITY;
+                t->vertices[tv++] = p;
+            }
+        }
+        t->vertex_count = tv;
+        t->face_count = 0;
+        return SWARP_OK;
+    }
     /* the cap: the new face on the clip plane, sorted counter-clockwise seen
      * from outside (along +n) */
     if (n_on >= 3 && !cap_coincides) {
