@@ -1531,6 +1531,17 @@ static void e_warp_lispsm(swr_ctx* c) {
         int same = 1; /* one point (or copies of it): d = 0 in every mode */
         for (size_t i = 1; i < n; ++i) same &= memcmp(&pts[i], &pts[0], sizeof pts[0]) == 0;
         if (!same && noise > 0 && yhi - ylo <= 64 * DBL_EPSILON * noise) c->rounding_edge = 1;
+        /* Away from that edge the same rounding is B's conditioning: each y
+         * is off by a few eps of its terms, so d = y_max - y_min by ~eps
+         * noise, and P is a function of d (A = (2 + d/n)/d, w = 1 +
+         * (y - y_min)/n with n = n' d / (far - near) for the caller's n';
+         * n_opt, (4.2) and λ d scale with d too): P's entries move by
+         * eps noise / d relative.  cond = noise / d, numerically singular
+         * (> 1/(64 eps)) exactly on the edge above (fenv 240000 case
+         * 179820: seven points at 1e6, light-space y of 1.4 from terms of
+         * 1.6e6, d = 0.0061 moved by 1 ulp of 1e6 with the rounding mode,
+         * P's w row by 2e-8 relative; cond 2.6e8). */
+        if (!same && noise > 0 && yhi > ylo) swr_cond(c, (double)(noise / (yhi - ylo)));
     }
     if (!swr_done(c, SWR_CALL(c, swarp_warp_lispsm(pL, pc, near, far, pp, n, use_near ? &nearest : NULL, use_o ? &o : NULL, pP,
                                                   pi))))
