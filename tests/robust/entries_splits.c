@@ -1321,6 +1321,33 @@ static void e_stabilize_directional(swr_ctx* c) {
         const double width = f * tan(cam.fovy / 2) * fmin(1.0, cam.aspect);
         if (width > 0) swr_cond(c, (vmax3(cam.eye) + vmax3(o.origin) + f) / width);
     }
+    /* The same for the depth: outside SPHERE the depth row is 2/dt (1/dt)
+     * and its translation -(t_max + t_min)/dt, dt the extent along the light
+     * of the body points (and the box's corners toward it), t = d·(p - O)
+     * from coordinates resolved to eps (|eye| + |origin| + f): the depth
+     * row's relative condition is (coordinates) / dt (body points 0.08 deep
+     * along the light, the origin 1e6 away: cond 1.2e7; the depth
+     * translation -2.5e7 moved by 4e-9 relative with the rounding mode,
+     * fenv 240000 case 201233).  Computed as the library does; dt = 0 is
+     * its flat case (one texel either side, covered by the width's). */
+    if (mode != 2 && pp && np > 0 && fin3(&ld_) && vmax3(ld_) > 0) {
+        const swarp_vec3 dl = unit3(ld_);
+        ld t_lo = INFINITY, t_hi = -INFINITY;
+        for (size_t i = 0; i < np; ++i) {
+            const ld t = (ld)dl.x * ((ld)pts[i].x - o.origin.x) + (ld)dl.y * ((ld)pts[i].y - o.origin.y) +
+                         (ld)dl.z * ((ld)pts[i].z - o.origin.z);
+            t_lo = fminl(t_lo, t), t_hi = fmaxl(t_hi, t);
+        }
+        if (use_box)
+            for (int k = 0; k < 8; ++k) {
+                const ld t = (ld)dl.x * ((ld)(k & 1 ? box.max.x : box.min.x) - o.origin.x) +
+                             (ld)dl.y * ((ld)(k & 2 ? box.max.y : box.min.y) - o.origin.y) +
+                             (ld)dl.z * ((ld)(k & 4 ? box.max.z : box.min.z) - o.origin.z);
+                t_lo = fminl(t_lo, t);
+            }
+        const ld dt = t_hi - t_lo;
+        if (dt > 0 && isfinite((double)dt)) swr_cond(c, (double)(((ld)vmax3(cam.eye) + vmax3(o.origin) + f) / dt));
+    }
     swr_args(c, "eye (%g %g %g) dir (%g %g %g) fovy %g aspect %g n %.17g f %.17g light (%g %g %g) np %zu res %u mode %d levels %u origin (%g %g %g) lms %g box %d",
              cam.eye.x, cam.eye.y, cam.eye.z, cam.dir.x, cam.dir.y, cam.dir.z, cam.fovy, cam.aspect, n, f, ld_.x, ld_.y, ld_.z, np, res,
              mode, o.levels, o.origin.x, o.origin.y, o.origin.z, o.level_max_size, use_box);
