@@ -1639,6 +1639,66 @@ START_TEST(fe_body_from_h_needle_box_rounding_mode) {
 }
 END_TEST
 
+/* fenvk pass (issue 9, fenv swarp_body_from_h 480000 case 295909): a point
+ * light 50 units from a 45-unit box and H reaching 1.6e8 (a frustum with a
+ * far plane 8e7 away): conv(H ∪ {l}) clipped to the box is the box, but
+ * the cuts of the edges from l to H's far vertices were interpolated from
+ * the far end and rounded by eps |1.6e8|: B's corners 1e-8 to 3e-8 off the
+ * box, by rounding mode (6e-8 between FE_TONEAREST and FE_TOWARDZERO).
+ * Cut from the nearer end, they are on the box to rounding. */
+START_TEST(fe_body_from_h_point_light_far_h_rounding_mode) {
+    swarp_polyhedron H;
+    memset(&H, 0, sizeof H);
+    const swarp_vec3 v[8] = {
+        {0x1.0a8fa61005eb6p+4, -0x1.053534fe802d9p+4, -0x1.4475af221173p+3},
+        {-0x1.173bb3caa177ep+4, -0x1.053534fe802d9p+4, -0x1.39c55cf0c1bc9p+1},
+        {0x1.2a6d07f156068p+4, -0x1.ab549cc43f64p+1, -0x1.4d82898a05ce2p+0},
+        {-0x1.eebca3d2a2b98p+3, -0x1.ab549cc43f64p+1, 0x1.98a80d694094p+2},
+        {0x1.38050afd0a00ep+27, -0x1.1bd53c2d361b4p+26, -0x1.08a7a188270c8p+26},
+        {-0x1.529e2bc458643p+27, -0x1.1bd53c2d361b4p+26, 0x1.c9ec9ef41d63bp+22},
+        {0x1.5e0166840be68p+27, 0x1.a7294b3863003p+25, 0x1.21bce03e74ad1p+24},
+        {-0x1.2ca1d03d567eap+27, 0x1.a7294b3863003p+25, 0x1.6db5a387060ep+26}};
+    const swarp_plane pl[6] = {
+        {-0x1.66b2497f1faffp-4, 0x1.239988b56a3a6p-1, -0x1.a274108709c0cp-1, 0x1.3c294cf7fb4bbp+1},
+        {-0x1.15ff09a869da2p-2, 0x1.239988b56a3a6p-1, -0x1.8d3b580efd014p-1, 0x1.543d16411575fp+1},
+        {-0x1.9e37d7aff1632p-3, 0x1.9181dbfd5ec5ap-2, -0x1.cb79ec7e9fdc2p-1, 0x1.57d44f5636438p-1},
+        {-0x1.34c6719e1f31cp-3, 0x1.74a733085fb96p-1, -0x1.56832efe45f99p-1, 0x1.17b5db1ddc034p+2},
+        {-0x1.715090501ebc8p-3, 0x1.24e764ac70fep-1, -0x1.99aaa711f45cbp-1, 0x1.0ec7be6b09d49p+2},
+        {0x1.715090501ebc8p-3, -0x1.24e764ac70fep-1, 0x1.99aaa711f45cbp-1, -0x1.f9310edbe5f47p+23}};
+    const uint8_t loops[6][4] = {
+        {0, 2, 6, 4},
+        {1, 5, 7, 3},
+        {0, 4, 5, 1},
+        {2, 3, 7, 6},
+        {0, 1, 3, 2},
+        {4, 6, 7, 5}};
+    H.vertex_count = 8;
+    H.face_count = 6;
+    for (int i = 0; i < 8; ++i) H.vertices[i] = v[i];
+    for (int f = 0; f < 6; ++f) {
+        H.planes[f] = pl[f];
+        H.face_vertex_count[f] = 4;
+        memcpy(H.face_vertices[f], loops[f], 4);
+    }
+    const swarp_light l = {SWARP_LIGHT_POINT, 0, {-0x1.4f83fa8d5bc86p-2, 0x1.21723b5f47f06p-1, -0x1.8395c9b85db87p-1}, {-0x1.aab8928fce347p+5, 0x1.045874a833024p+7, -0x1.ba3af62e6203dp+4}, 0x0p+0, {0, 0, 0, 0}};
+    const swarp_aabb box = {{-0x1.6a5bc3a276bd3p+5, -0x1.1c51c26be5628p+3, -0x1.d65bc860f3d92p+4}, {0x1.347b6e5822c8p-2, 0x1.1c1510b2bc14bp+4, 0x1.e81c39d0d9584p+3}};
+    const double bmin[3] = {box.min.x, box.min.y, box.min.z}, bmax[3] = {box.max.x, box.max.y, box.max.z};
+    for (size_t m = 0; m <= sizeof tu_modes / sizeof tu_modes[0]; ++m) {
+        swarp_polyhedron B;
+        fesetround(m ? tu_modes[m - 1] : FE_TONEAREST);
+        const swarp_status s = swarp_body_from_h(&H, &l, &box, &B);
+        fesetround(FE_TONEAREST);
+        ck_assert_msg(s == SWARP_OK && B.vertex_count == 8, "mode %zu: %s, %u vertices", m, swarp_status_name(s), B.vertex_count);
+        for (uint32_t i = 0; i < B.vertex_count; ++i) { /* B is the box: each vertex a corner, to 1e-12 of its size */
+            const double p[3] = {B.vertices[i].x, B.vertices[i].y, B.vertices[i].z};
+            for (int k = 0; k < 3; ++k)
+                ck_assert_msg(fmin(fabs(p[k] - bmin[k]), fabs(p[k] - bmax[k])) <= 1e-12 * 64,
+                              "mode %zu: vertex %u coordinate %d = %.17g, box [%.17g, %.17g]", m, i, k, p[k], bmin[k], bmax[k]);
+        }
+    }
+}
+END_TEST
+
 int main(void) {
     Suite* s = suite_create("edges_geometry");
     TCase* t = tcase_create("geometry");
@@ -1688,6 +1748,7 @@ int main(void) {
     /* fenvk pass */
     tcase_add_test(t, fe_poly_clip_segment_without_faces);
     tcase_add_test(t, fe_body_from_h_needle_box_rounding_mode);
+    tcase_add_test(t, fe_body_from_h_point_light_far_h_rounding_mode);
     suite_add_tcase(s, t);
     return tu_run_suite(s) ? 1 : 0;
 }
