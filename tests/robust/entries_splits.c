@@ -1347,6 +1347,31 @@ static void e_stabilize_directional(swr_ctx* c) {
             }
         const ld dt = t_hi - t_lo;
         if (dt > 0 && isfinite((double)dt)) swr_cond(c, (double)(((ld)vmax3(cam.eye) + vmax3(o.origin) + f) / dt));
+        /* NONE fits the map to the body points' light-space box as well:
+         * x and y rows 1/h_x, 1/h_y with h the half extents along the
+         * light's right and up axes (the library's basis: helper axis y, x
+         * for a light within 8° of vertical), of the same coordinates: the
+         * condition is (coordinates) / (smaller extent) (two points whose x
+         * differ by 2 ulps of 5e5 under a vertical light: h_y 5.8e-11, 1/h_y
+         * 2^34 to nearest and 2^33 in the directed modes, cond 4e15:
+         * numerically singular, fenv 480000 case 467443). */
+        if (mode == 0 || mode == 1) {
+            const swarp_vec3 helper = fabs(dl.y) > 0.99 ? V3(1, 0, 0) : V3(0, 1, 0);
+            const swarp_vec3 ua = unit3(V3(dl.y * helper.z - dl.z * helper.y, dl.z * helper.x - dl.x * helper.z,
+                                           dl.x * helper.y - dl.y * helper.x));
+            const swarp_vec3 va = V3(ua.y * dl.z - ua.z * dl.y, ua.z * dl.x - ua.x * dl.z, ua.x * dl.y - ua.y * dl.x);
+            const swarp_vec3 ax[2] = {ua, va};
+            for (int a = 0; a < 2; ++a) {
+                ld lo = INFINITY, hi = -INFINITY;
+                for (size_t i = 0; i < np; ++i) {
+                    const ld x = (ld)ax[a].x * ((ld)pts[i].x - o.origin.x) + (ld)ax[a].y * ((ld)pts[i].y - o.origin.y) +
+                                 (ld)ax[a].z * ((ld)pts[i].z - o.origin.z);
+                    lo = fminl(lo, x), hi = fmaxl(hi, x);
+                }
+                if (hi > lo && isfinite((double)(hi - lo)))
+                    swr_cond(c, (double)(((ld)vmax3(cam.eye) + vmax3(o.origin) + f) / (hi - lo)));
+            }
+        }
     }
     swr_args(c, "eye (%g %g %g) dir (%g %g %g) fovy %g aspect %g n %.17g f %.17g light (%g %g %g) np %zu res %u mode %d levels %u origin (%g %g %g) lms %g box %d",
              cam.eye.x, cam.eye.y, cam.eye.z, cam.dir.x, cam.dir.y, cam.dir.z, cam.fovy, cam.aspect, n, f, ld_.x, ld_.y, ld_.z, np, res,
