@@ -1006,6 +1006,18 @@ static int clip_call(swr_ctx* c, const swarp_polyhedron* in, swarp_polyhedron* o
     return ok;
 }
 
+/* The condition of the cut of the segment u-w by the plane pn (see the
+ * derivation in e_poly_clip_common), recorded when it crosses. */
+static void clip_cut_cond(swr_ctx* c, const swarp_plane* pn, const swarp_polyhedron* in, uint32_t iu, uint32_t iw) {
+    if (iu >= in->vertex_count || iw >= in->vertex_count) return;
+    const swarp_vec3 u = in->vertices[iu], w = in->vertices[iw];
+    const double du = plane_at(pn, u), dv = plane_at(pn, w);
+    if (!((du <= 0 && dv >= 0) || (du >= 0 && dv <= 0)) || du == dv) return;
+    const double T = fmax(fabs(pn->a * u.x) + fabs(pn->b * u.y) + fabs(pn->c * u.z), fabs(pn->a * w.x) + fabs(pn->b * w.y) + fabs(pn->c * w.z)) + fabs(pn->d);
+    const double len = vmax(v3(w.x - u.x, w.y - u.y, w.z - u.z));
+    swr_cond(c, T * len / (fabs(du - dv) * fmax(poly_scale(in), 1e-300)));
+}
+
 static void e_poly_clip_common(swr_ctx* c, int with_box) {
     scene_args s;
     gen_setup_scene(c, &s);
@@ -1062,20 +1074,18 @@ static void e_poly_clip_common(swr_ctx* c, int with_box) {
      * |v - u|: relative to the polyhedron's scale, cond = T |v - u| /
      * (|d_u - d_v| scale).  Large for an edge whose ends are both within a
      * cancellation of the plane (fenv 60000 case 57809: d = -9e-4 and 5e-4
-     * from terms of 8e3, an edge of 40, the cut moved 4e-8). */
+     * from terms of 8e3, an edge of 40, the cut moved 4e-8).  A polyhedron
+     * without faces (a point set: a segment, in practice) has its crossing
+     * pairs cut instead of its edges (poly.c): every pair counts (fenv
+     * 240000 case 145240: a segment 44 long within 1e-7 rad of the plane,
+     * cut 6e-8 apart by rounding mode; cond 2e7). */
     for (uint32_t f = 0; f < in.face_count && f < SWARP_POLY_MAX_FACES; ++f) {
         const uint32_t nv = in.face_vertex_count[f] <= SWARP_POLY_MAX_FACE_VERTICES ? in.face_vertex_count[f] : 0;
-        for (uint32_t k = 0; k < nv; ++k) {
-            const uint32_t iu = in.face_vertices[f][k], iv = in.face_vertices[f][(k + 1) % nv];
-            if (iu >= in.vertex_count || iv >= in.vertex_count) continue;
-            const swarp_vec3 u = in.vertices[iu], w = in.vertices[iv];
-            const double du = plane_at(&pn, u), dv = plane_at(&pn, w);
-            if (!((du <= 0 && dv >= 0) || (du >= 0 && dv <= 0)) || du == dv) continue;
-            const double T = fmax(fabs(pn.a * u.x) + fabs(pn.b * u.y) + fabs(pn.c * u.z), fabs(pn.a * w.x) + fabs(pn.b * w.y) + fabs(pn.c * w.z)) + fabs(pn.d);
-            const double len = vmax(v3(w.x - u.x, w.y - u.y, w.z - u.z));
-            swr_cond(c, T * len / (fabs(du - dv) * fmax(poly_scale(&in), 1e-300)));
-        }
+        for (uint32_t k = 0; k < nv; ++k) clip_cut_cond(c, &pn, &in, in.face_vertices[f][k], in.face_vertices[f][(k + 1) % nv]);
     }
+    if (in.face_count == 0)
+        for (uint32_t u = 0; u < in.vertex_count && u < SWARP_POLY_MAX_VERTICES; ++u)
+            for (uint32_t w = 0; w < u; ++w) clip_cut_cond(c, &pn, &in, u, w);
     int all_in = 1, all_out = in.vertex_count > 0;
     for (uint32_t v = 0; v < out.vertex_count && v < SWARP_POLY_MAX_VERTICES; ++v)
         SWR_CHECK_ACC(c, plane_at(&pn, out.vertices[v]) / nl <= tol, "clip: vertex %u on the removed side by %g", v,
