@@ -240,6 +240,60 @@ START_TEST(fenvj_lixel_check_tiny_near_every_mode) {
 }
 END_TEST
 
+/* fenv swarp_plan 480000 case 385901 (hex floats as decoded): a 1e-15 rad
+ * field of view 2.5e5 off the origin, a point light above the eye, floor
+ * planes y = 0.6 and y = -0.86.  The corner rays hit plane 0 at points that
+ * coincide to rounding; swarp_lixel_solve5 judged their noise, and the plane
+ * got a lixel map under FE_DOWNWARD only.  Refused in every mode. */
+static void plan_case_385901(int mode, swarp_status* st, swarp_plan_result* p) {
+    swarp_scene_needs n;
+    swarp_budget b;
+    memset(&n, 0, sizeof n);
+    memset(&b, 0, sizeof b);
+    n.camera.eye = (swarp_vec3){-0x1.f2bf947ae147bp+17, 0x1.c62de479ac6fbp+3, -0x1.f2bcbcf9153bcp+17};
+    n.camera.dir = (swarp_vec3){0x1.d70bb60a2c58p-5, -0x1.8efec720d103ep-1, 0x1.0c967c05ce54p-4};
+    n.camera.up = (swarp_vec3){0.0, 1.0, 0.0};
+    n.camera.fovy = 0x1.203af9ee75616p-50;
+    n.camera.aspect = 0x1.09aa7cd0985b6p+1;
+    n.camera.near = 0x1.f62c71bd39841p-11;
+    n.camera.far = 0x1.1ab53fc425b8ap+11;
+    n.light.type = SWARP_LIGHT_POINT;
+    n.light.direction = (swarp_vec3){-0x1.798a04743a5cp-1, -0x1p+0, -0x1.47b21ebbc2078p-1};
+    n.light.position = (swarp_vec3){-0x1.f2bf947ae147bp+17, 0x1.ba57e180c63fep+6, -0x1.f2bcbcf9153bcp+17};
+    n.screen_width = 1232;
+    n.screen_height = 164;
+    n.soft_shadows = 1;
+    n.bleed_risk = (swarp_plan_bleed)3;
+    n.allow_depth_clamp = 1;
+    n.plane_count = 2;
+    n.planes[0].b = n.planes[1].b = 1.0;
+    n.planes[0].d = -0x1.3613411d7a00cp-1;
+    n.planes[1].d = 0x1.b75a181419f2ep-1;
+    b.max_error = 0x1.6bd64994b739ep+6;
+    b.map_resolution = 256;
+    b.max_passes = 18;
+    b.time_budget_ns = 0x1.ff2388730e836p+24;
+    fesetround(mode);
+    *st = swarp_plan(&n, &b, p);
+    fesetround(FE_TONEAREST);
+}
+
+START_TEST(fenvj_lixel_check_clustered_corners_every_mode) {
+    static const int modes[] = {FE_TONEAREST, FE_UPWARD, FE_DOWNWARD, FE_TOWARDZERO};
+    swarp_status st0, st;
+    swarp_plan_result r, p;
+    plan_case_385901(FE_TONEAREST, &st0, &r);
+    ck_assert_int_eq(st0, SWARP_INFO_PLAN_BUDGET_UNMET);
+    ck_assert_uint_eq(r.plane_reason[0], SWARP_PLAN_PLANE_LIXEL_REFUSED);
+    ck_assert_uint_eq(r.lixel_count, 0);
+    for (int m = 1; m < 4; ++m) {
+        plan_case_385901(modes[m], &st, &p);
+        ck_assert_int_eq(st, st0);
+        same_plan(&p, &r, m);
+    }
+}
+END_TEST
+
 int main(void) {
     Suite* s = suite_create("edges_plan");
     TCase* t = tcase_create("explain");
@@ -254,6 +308,7 @@ int main(void) {
     /* fenvj pass */
     t = tcase_create("fenvj");
     tcase_add_test(t, fenvj_lixel_check_tiny_near_every_mode);
+    tcase_add_test(t, fenvj_lixel_check_clustered_corners_every_mode);
     suite_add_tcase(s, t);
     return tu_run_suite(s) ? 1 : 0;
 }
