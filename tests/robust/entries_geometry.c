@@ -1155,6 +1155,30 @@ static void e_body_from_h(swr_ctx* c) {
     if (!swr_done(c, SWR_CALL(c, swarp_body_from_h(ph, pl, pb, po)))) return;
     double tol = gtol(fmax(box_scale(&s.box), fmax(poly_scale(&H), vmax(s.light.position))));
     if (wide(&s.cam)) c->rounding_edge = 1;
+    /* B within the clipper's merge distance, SWARP_POLY_EPS_REL of the
+     * clipped body's scale X (H swept by T = 2 diag(S) for a directional
+     * light, conv(H ∪ {l}) for a point light): the box planes classify
+     * every vertex within that distance as on them, so B is the sweep cut
+     * or not, or empty (BODY_EMPTY), by rounding, as frustum_below_merge
+     * for H (fenv 1920000 case 1268095: a box 45 x 5e43 x 70 at 7.7e5, X =
+     * 1e44, merge distance 1e32 against a B 3e7 across; SWARP_OK to
+     * nearest, BODY_EMPTY under FE_UPWARD).  A B of one point is one. */
+    {
+        const long double dx = (long double)s.box.max.x - s.box.min.x, dy = (long double)s.box.max.y - s.box.min.y,
+                          dz = (long double)s.box.max.z - s.box.min.z;
+        long double X = fmaxl(box_scale(&s.box), poly_scale(&H));
+        if ((int)s.light.type == 2) X = fmaxl(X, vmax(s.light.position));
+        else X = fmaxl(X, poly_scale(&H) + fminl(2 * sqrtl(dx * dx + dy * dy + dz * dz), 0.25L * DBL_MAX));
+        long double E = 0;
+        double lo[3], hi[3];
+        for (int k = 0; k < 3; ++k) lo[k] = INFINITY, hi[k] = -INFINITY;
+        for (uint32_t i = 0; i < B.vertex_count && i < SWARP_POLY_MAX_VERTICES; ++i) {
+            const double v[3] = {B.vertices[i].x, B.vertices[i].y, B.vertices[i].z};
+            for (int k = 0; k < 3; ++k) lo[k] = fmin(lo[k], v[k]), hi[k] = fmax(hi[k], v[k]);
+        }
+        for (int k = 0; k < 3; ++k) E = fmaxl(E, (long double)hi[k] - lo[k]);
+        if (B.vertex_count > 0 && E <= 2 * SWARP_POLY_EPS_REL * X) c->rounding_edge = 1;
+    }
     check_poly(c, &B, "B", tol);
     check_in_box(c, &B, &s.box, tol, "B in S");
     /* a directional or omni light: H (clipped to S) lies inside B */
