@@ -1716,6 +1716,33 @@ static double split_map_cond(const swarp_mat4* m) {
     return k;
 }
 
+/* A box as thin along an axis as the clipper's tolerance for "on a
+ * plane", SWARP_POLY_EPS_REL of the clipped polyhedron's scale (between
+ * the box's own scale and that of B's sweep: T = 2 diag(S) more for a
+ * directional light, the light's position for a point light): clipping by
+ * its second face of that axis classifies the first face's vertices as on
+ * it or inside by the rounding of their distance (a few eps of the
+ * coordinates, 16 eps / 1e-12 = 3.6e-3 of the tolerance), and B collapses
+ * onto the first face or keeps its 1e-12-thin extent, its depth range
+ * 1e-6 different at 1e6 (fenv 480000 swarp_cascade_setup case 291366: a
+ * box 1.00001e-6 thick at 1.00007e6, tolerance 1.00007e-6; the depth row of
+ * split 0 moved 7e-7 relative under FE_UPWARD).  A documented threshold
+ * (the header's "never leaves two vertices closer"); an exactly flat box
+ * (extent 0) is on its plane in every mode. */
+static int box_at_merge_distance(const scene_args* s) {
+    const swarp_aabb* b = &s->box;
+    if (!fin3(&b->min) || !fin3(&b->max)) return 0;
+    const long double e[3] = {(long double)b->max.x - b->min.x, (long double)b->max.y - b->min.y, (long double)b->max.z - b->min.z};
+    const long double X0 = box_scale(b);
+    long double X1 = X0;
+    if ((int)s->light.type == 2) X1 = fmaxl(X1, vmax(s->light.position));
+    else X1 += 2 * sqrtl(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]);
+    const long double slack = 16 * DBL_EPSILON / SWARP_POLY_EPS_REL;
+    for (int k = 0; k < 3; ++k)
+        if (e[k] > 0 && e[k] >= SWARP_POLY_EPS_REL * X0 * (1 - slack) && e[k] <= SWARP_POLY_EPS_REL * X1 * (1 + slack)) return 1;
+    return 0;
+}
+
 static void e_cascade_setup(swr_ctx* c) {
     SKIP_IF_MISSING(c, swarp_cascade_setup);
     scene_args s;
@@ -1776,6 +1803,7 @@ static void e_cascade_setup(swr_ctx* c) {
     if (!psp && cap == 0) swr_domain(c, SWARP_ERR_CAPACITY);
     swr_domain(c, SWARP_ERR_SPLIT_EMPTY), swr_domain(c, SWARP_ERR_NEAR_FAR), swr_domain(c, SWARP_ERR_NON_FINITE);
     scene_cond(c, &s, s.cam.near, s.cam.far);
+    if (box_at_merge_distance(&s)) c->rounding_edge = 1;
     swr_args(c, "K %u scheme %d stabilize %d warp_per_split %d technique %d param %d center %d depth %d reserved: cam %u %u %u %u light %u %u %u %u %u setup %u %u split %u %u %u %u cascade %u %u %u use_o %d",
              K, (int)o.split.scheme, (int)o.stabilize.mode, (int)o.warp_per_split, (int)o.setup.technique, (int)o.setup.param,
              (int)o.setup.center, (int)o.setup.depth_range, s.cam._reserved[0], s.cam._reserved[1], s.cam._reserved[2],
