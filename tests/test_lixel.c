@@ -1230,6 +1230,48 @@ START_TEST(fenvf_restrict_flat_cone_rounding_mode) {
 }
 END_TEST
 
+/* fenvi pass: robust_fenv 240000 (issue 9), swarp_lixel_restrict case
+ * 163021.  M is affine (q = 0.53 for every point) and two vertices of C lie
+ * 1.7e38 and 4.7e31 out along x, on either side: their light images are
+ * 1.6e38 and 4e31 lixels out along one direction u = M's first column, and
+ * the edge between them images to a line through M (0, 2e-5, -68), 95 lixels
+ * from the view's corner (0, 0).  The view clipping formed that line from the
+ * two unit image vectors, antipodal to 1e-30: their x, y parts cancelled
+ * (a + b = (0, 0, 2e-32) to nearest, +-1e-16 noise in the directed modes),
+ * the edge's crossings of the sides landed at (0, 0) or nowhere, and the
+ * corner test took the triangle for flat.  Exactly, the clipped triangle is
+ * (0, 0), (95.36, 0), (414, 305.6), (414, 513.1), (0, 116.0): the rect
+ * [-232, 35] x [0, 2379]; before, to nearest [-232, 0] x [0, 2379], directed
+ * [-232, -86] x [203, 2379]. */
+START_TEST(fenvi_restrict_antipodal_edge_rounding_mode) {
+    static const swarp_mat4 M = {{-0x1.355ed3ad362fp-2, -0x1.28bc28e9de454p-2, -0x1.b91a7d7155f9ap-1, 0x0p+0,
+                                  0x1.ba5e4cee39e48p-2, 0x1.9c81a4d6aac46p-1, 0x1.2638bf971efbcp-2, 0x0p+0,
+                                  0x1.1bc107721c85cp-2, 0x1p+0, -0x1.5dd19d1fd5a58p-2, 0x0p+0, -0x1p+0, 0x1p+0,
+                                  0x1.fcb3cda8f8954p-2, 0x1.0ce00ec056f94p-1}};
+    static const swarp_vec4 C[3] = {{0x1.c42730b78399ep+4, -0x1.279a78dce8067p+5, 0x1.8ffffffffffffp+6, 0x1p+0},
+                                    {-0x1.9881974a870b2p+127, 0x1.6702dfc634aep+6, 0x1.9p+6, 0x1p+0},
+                                    {0x1.b1b07b37add8cp+105, 0x1.012c4b096102cp-285, -0x1.1058287de091cp+6, 0x1p+0}};
+    swarp_lixel_restrict_options o;
+    memset(&o, 0, sizeof o);
+    o.scale_x = 0x1.a9bbe10c5a4c8p-1;
+    o.scale_y = 0x1.fd75f8a1fcb98p+1;
+    o.twist = 0x1.1d7b51fc9922p+0;
+    o.view_width = 415;
+    o.view_height = 806;
+    static const int modes[4] = {FE_TONEAREST, FE_UPWARD, FE_DOWNWARD, FE_TOWARDZERO};
+    for (int m = 0; m < 4; ++m) {
+        swarp_lixel_rect r;
+        swarp_mat4 out;
+        fesetround(modes[m]);
+        swarp_status st = swarp_lixel_restrict(&M, C, 3, &o, &r, NULL, &out);
+        fesetround(FE_TONEAREST);
+        ck_assert_msg(st == SWARP_OK, "mode %d: %s", m, swarp_status_name(st));
+        ck_assert_msg(r.x0 == -232 && r.x1 == 35 && r.y0 == 0 && r.y1 == 2379,
+                      "mode %d: rect [%d, %d] x [%d, %d], exactly [-232, 35] x [0, 2379]", m, r.x0, r.x1, r.y0, r.y1);
+    }
+}
+END_TEST
+
 static Suite* lixel_suite(void) {
     Suite* s = suite_create("lixel");
     TCase* tc = tcase_create("lixel");
@@ -1255,6 +1297,7 @@ static Suite* lixel_suite(void) {
     tcase_add_test(tc, fenvf_twist_below_on_line_rounding_mode); /* fenvf pass */
     tcase_add_test(tc, fenvf_split_light_floor_bound_rounding_mode); /* fenvf pass */
     tcase_add_test(tc, fenvf_restrict_flat_cone_rounding_mode); /* fenvf pass */
+    tcase_add_test(tc, fenvi_restrict_antipodal_edge_rounding_mode); /* fenvi pass */
     /* @@MORE_TCASES@@ */
     suite_add_tcase(s, tc);
     return s;
