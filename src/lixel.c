@@ -198,12 +198,21 @@ SWARP_API swarp_status swarp_lixel_matrix(const swarp_mat4* M_v, uint32_t g, uin
 
     /* informational results, most important first */
     swarp_status info = SWARP_OK;
-    swarp_vec4 Xn = xform_col(&V_inv, 0.5 * ((double)g - 1.0), 0.5 * ((double)h - 1.0), -1.0, 1.0);
-    swarp_vec4 Xf = xform_col(&V_inv, 0.5 * ((double)g - 1.0), 0.5 * ((double)h - 1.0), 1.0, 1.0);
-    swarp_vec3 view = sw_sub(sw_scale(sw_v3(Xf.x, Xf.y, Xf.z), 1.0 / Xf.w),
-                             sw_scale(sw_v3(Xn.x, Xn.y, Xn.z), 1.0 / Xn.w));
-    swarp_vec3 v_unit;
-    int view_parallel = sw_normalize(view, &v_unit) && fabs(sw_dot(v_unit, n_unit)) < LX_VIEW_PARALLEL_EPS;
+    /* The view direction: the centre pixel's ray (row0 - c_x row3).X =
+     * (row1 - c_y row3).X = 0 (as in plane_point) at infinity, w = 0: the
+     * cross product of the two covectors' x, y, z parts, which hold no
+     * translation.  Through V^-1, the far point minus the near point cancelled
+     * at the eye's magnitude: with the eye 1e6 out, n . v carried 1e-10 of
+     * rounding against LX_VIEW_PARALLEL_EPS (issue 9: PLANE_PARALLEL_VIEW to
+     * nearest, QUAD_ACROSS_INFINITY under FE_TOWARDZERO, n . v = 2e-15). */
+    const double c_x = 0.5 * ((double)g - 1.0), c_y = 0.5 * ((double)h - 1.0);
+    swarp_vec3 ra, rb, v_unit;
+    int view_parallel =
+        sw_normalize(sw_v3(rows[0].x - c_x * rows[3].x, rows[0].y - c_x * rows[3].y, rows[0].z - c_x * rows[3].z),
+                     &ra) &&
+        sw_normalize(sw_v3(rows[1].x - c_y * rows[3].x, rows[1].y - c_y * rows[3].y, rows[1].z - c_y * rows[3].z),
+                     &rb) &&
+        sw_normalize(sw_cross(ra, rb), &v_unit) && fabs(sw_dot(v_unit, n_unit)) < LX_VIEW_PARALLEL_EPS;
     double side_eye = eye_finite ? lx_dot4(pi, lx_v4(e.x, e.y, e.z, 1.0)) : 0.0;
     double side_light = L.w == 0.0 ? -sw_dot(n_unit, d_unit) : lx_dot4(pi, L);
     if (sst == SWARP_INFO_LIXEL_ILL_CONDITIONED)

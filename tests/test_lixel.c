@@ -1272,6 +1272,43 @@ START_TEST(fenvi_restrict_antipodal_edge_rounding_mode) {
 }
 END_TEST
 
+/* fenvi pass: robust_fenv 2000000 (issue 9), swarp_lixel_matrix case
+ * 530050.  The eye 1.4e6 from the origin looks along the plane z = -999996.6
+ * (n . v = 2e-15, far - near = 4.35).  PLANE_PARALLEL_VIEW compared
+ * |n . v| with 1e-9 for the view direction taken as V^-1's far point minus
+ * its near point, which cancelled at the eye's magnitude to 1e-10 of
+ * rounding: QUAD_ACROSS_INFINITY under FE_TOWARDZERO.  Now the direction is
+ * the cross product of M_v's rows' x, y, z parts.  ILL_CONDITIONED (of higher
+ * priority) is the solver's conditioning threshold, which rounding decides
+ * here; across infinity must not come. */
+START_TEST(fenvi_matrix_parallel_view_rounding_mode) {
+    static const swarp_mat4 Mv = {{-0x1.25f7c8cfb36b4p-50, 0x1.7523af7f55577p-2, 0x1.eb47677322518p-2,
+                                   0x1.e31794b4f80b1p-2, 0x0p+0, 0x1.8f4cd7c30f5ep-3, -0x1.cb178eaa1ad89p-1,
+                                   -0x1.c3710b910b455p-1, 0x1.ebee4c31ec4cap-3, 0x1.bdf609a685cafp-50,
+                                   0x1.25940d5e8ab6fp-49, 0x1.20afa17823401p-49, 0x1.d5235cc1b4e39p+17,
+                                   0x1.63da1f3da8237p+18, 0x1.d48639d5646c7p+18, 0x1.ccb77e4e1de43p+18}};
+    swarp_light L;
+    memset(&L, 0, sizeof L);
+    L.type = SWARP_LIGHT_DIRECTIONAL;
+    L.direction.x = -0x1.9adc28d2c7d1p-3;
+    L.direction.y = 0x1.d6937a17f179cp-2;
+    L.direction.z = 0x1.b9f36c8117166p-1;
+    const swarp_plane P = {0.0, 0.0, 1.0, 0x1.e847932d24a41p+19};
+    swarp_lixel_options o;
+    memset(&o, 0, sizeof o);
+    o.raise = 0x1.d354b0b433194p-1;
+    static const int modes[4] = {FE_TONEAREST, FE_UPWARD, FE_DOWNWARD, FE_TOWARDZERO};
+    for (int m = 0; m < 4; ++m) {
+        swarp_mat4 M;
+        fesetround(modes[m]);
+        swarp_status st = swarp_lixel_matrix(&Mv, 1102, 2087, &L, &P, &o, &M, NULL);
+        fesetround(FE_TONEAREST);
+        ck_assert_msg(st == SWARP_INFO_LIXEL_PLANE_PARALLEL_VIEW || st == SWARP_INFO_LIXEL_ILL_CONDITIONED,
+                      "mode %d: %s", m, swarp_status_name(st));
+    }
+}
+END_TEST
+
 static Suite* lixel_suite(void) {
     Suite* s = suite_create("lixel");
     TCase* tc = tcase_create("lixel");
@@ -1298,6 +1335,7 @@ static Suite* lixel_suite(void) {
     tcase_add_test(tc, fenvf_split_light_floor_bound_rounding_mode); /* fenvf pass */
     tcase_add_test(tc, fenvf_restrict_flat_cone_rounding_mode); /* fenvf pass */
     tcase_add_test(tc, fenvi_restrict_antipodal_edge_rounding_mode); /* fenvi pass */
+    tcase_add_test(tc, fenvi_matrix_parallel_view_rounding_mode); /* fenvi pass */
     /* @@MORE_TCASES@@ */
     suite_add_tcase(s, tc);
     return s;
