@@ -1110,7 +1110,9 @@ typedef struct swarp_lixel_info {
  *         the five normalised points of either set, in [0, 1]; 0 = coplanar
  *  @return SWARP_OK; SWARP_INFO_LIXEL_ILL_CONDITIONED (conditioning < 1e-6
  *          or a constraint residual above 1e-9: the matrix is written);
- *          SWARP_ERR_LIXEL_COPLANAR (conditioning < 1e-13), SWARP_ERR_NON_FINITE,
+ *          SWARP_ERR_LIXEL_COPLANAR (conditioning < 1e-13, or the finite
+ *          points of a set within 64 eps |c| of their median centre c in
+ *          median: two of them coincide to rounding), SWARP_ERR_NON_FINITE,
  *          SWARP_ERR_NULL_POINTER. */
 SWARP_API swarp_status swarp_lixel_solve5(const swarp_vec4 src[5], const swarp_vec4 dst[5],
                                           swarp_mat4* out_M, double* out_conditioning);

@@ -1,6 +1,8 @@
 /* The five-point projective solver of [LIXEL] §2 (via [Fau93]): the 4x4
  * matrix M, up to scale, with M src[i] ~ dst[i] for five points of which no
  * four are coplanar. */
+#include <float.h>
+
 #include "lixel_internal.h"
 
 /* A four-point determinant (of unit vectors, so |det| <= 1 by Hadamard)
@@ -14,6 +16,9 @@
 /* A point counts as finite for the normalisation when |w| exceeds this
  * fraction of |(x, y, z)|: coordinates up to 1e9 world units. */
 #define LX_FINITE_EPS 1e-9
+/* The finite points' median distance from their median centre c at or below
+ * this fraction of |c|: coincident to rounding (normalise_set). */
+#define LX_CLUSTER_EPS (64.0 * DBL_EPSILON)
 
 /* Determinant by LU with partial pivoting (a is copied). */
 static double det4(const double a_in[4][4]) {
@@ -54,7 +59,16 @@ static void sort_small(double* v, int n) {
 /* Similarity normalisation (Hartley style, but with medians so that one
  * far-away point near the horizon does not squash the others): T maps the
  * median of the finite points to the origin and their median distance to 1.
- * out[i] = T p[i] scaled to unit length.  Returns 0 for a zero point. */
+ * out[i] = T p[i] scaled to unit length.  Returns 0 for a zero point, and
+ * when the median distance s is within LX_CLUSTER_EPS |c|: T p = p/s - c/s
+ * carries errors of eps |c|/s (and computed points such as the corner hits
+ * of swarp_lixel_matrix carry eps |p| of their own), so at least two of the
+ * points (those within s of c) coincide to rounding and some four are
+ * coplanar; normalised, that rounding would be scaled up to unit size and
+ * its determinants decide against LX_COPLANAR_EPS (a 1e-15 rad field of view
+ * seeing a floor 2.5e5 from the origin: the four corner hits 1e-14 apart,
+ * conditioning 5.6e-21 or 1.2e-13 by the caller's rounding mode, fenv
+ * swarp_plan 480000 case 385901). */
 static int normalise_set(const swarp_vec4 p[5], swarp_vec4 out[5], swarp_mat4* T, swarp_mat4* T_inv) {
     double cx[5], cy[5], cz[5];
     int m = 0;
@@ -85,6 +99,8 @@ static int normalise_set(const swarp_vec4 p[5], swarp_vec4 out[5], swarp_mat4* T
             if (d[i] > dmax) dmax = d[i];
         }
         sort_small(d, m);
+        const double cmax = fmax(fabs(c[0]), fmax(fabs(c[1]), fabs(c[2])));
+        if (m >= 2 && d[m / 2] <= LX_CLUSTER_EPS * cmax) return 0;
         s = d[m / 2] > 0.0 ? d[m / 2] : (dmax > 0.0 ? dmax : 1.0);
     }
     sw_identity(T);

@@ -496,8 +496,25 @@ static void sw_evaluate(const sw_pin* in, const sw_filter* flt, const swarp_plan
 
 /* ---- lixel planes ---------------------------------------------------------- */
 
+/* Smallest near/far ratio of the depth range in the lixel check's
+ * view-projection (below). */
+#define SW_LIXEL_CHECK_MIN_NEAR_RATIO 0x1p-20
+
 /* The viewer's view-projection (OpenGL clip space, right-handed look-at),
- * for the lixel stage's own check below. */
+ * for the lixel stage's own check below.  Its depth row
+ * -(f+n)/(f-n) z - 2fn/(f-n) tends to the w row -z as n/f -> 0: V^-1 loses
+ * log2(f/n) bits, and below n/f ~ eps the two rows are equal or one ulp apart
+ * by the rounding of (f+n)/(f-n), V singular or not by the caller's rounding
+ * mode (fenv swarp_plan 240000 cases 198218, 201223: near 1e-31, far 2e5, a
+ * lixel map with directed rounding only).  The lixel matrix does not depend
+ * on the depth range: it is made of the rays through the corner pixels
+ * (rows 0, 1, 3 of V, [LIXEL] (2)) and the eye; the depth row enters only
+ * V^-1, through which the lixel stage images the plane for its through-eye
+ * test (|pi'_z| ~ |h| / 2n of an O(1) whole, h the eye's distance to the
+ * plane, which sw_plane_check already requires above 1e-9 f: >= 5e-4 at
+ * n = 2^-20 f, far above LX_EYE_EPS) and the view direction (n-free).  So the
+ * check uses n' = max(n, 2^-20 f): exact (a power of two), the same matrix as
+ * before for n/f >= 2^-20, and V^-1 keeps >= 30 bits below. */
 static void sw_view_projection(const sw_pin* in, swarp_mat4* out) {
     swarp_vec3 f = in->view, s = sw_v3(1.0, 0.0, 0.0), u;
     (void)sw_normalize(sw_cross(f, in->up), &s); /* checked non-parallel */
@@ -511,7 +528,8 @@ static void sw_view_projection(const sw_pin* in, swarp_mat4* out) {
     sw_set(&V, 1, 3, -sw_dot(u, in->eye));
     sw_set(&V, 2, 3, sw_dot(f, in->eye));
     memset(&P, 0, sizeof P);
-    double t = 1.0 / tan(in->theta), n = in->near, fa = in->far;
+    const double fa = in->far, n = fmax(in->near, SW_LIXEL_CHECK_MIN_NEAR_RATIO * fa);
+    const double t = 1.0 / tan(in->theta);
     sw_set(&P, 0, 0, t / in->aspect);
     sw_set(&P, 1, 1, t);
     sw_set(&P, 2, 2, -(fa + n) / (fa - n));

@@ -144,6 +144,156 @@ START_TEST(planfix_plan_cost_limit) {
 }
 END_TEST
 
+/* ---- fenvj pass: the planner's lixel check under a tiny near (issue 9) ---- */
+
+/* fenv swarp_plan 240000 cases 198218, 201223: a floor (y = 0) seen by a
+ * camera with near/far below eps got a lixel map or not by the caller's
+ * rounding mode.  The planner asks swarp_lixel_matrix about a view-projection
+ * it builds itself; its depth row -(f+n)/(f-n) z - 2fn/(f-n) tends to the w
+ * row -z as n/f -> 0, and below n/f ~ eps the two rows are equal or one ulp
+ * apart by the rounding of (f+n)/(f-n): V singular (LIXEL_REFUSED) or not
+ * (USED, 1 more pass).  The lixel matrix is made of the rays (rows 0, 1, 3,
+ * [LIXEL] (2)), so the plane is lixel-friendly whatever the depth range: used
+ * in every mode, at every near. */
+static void plan_floor(double near, int mode, swarp_status* st, swarp_plan_result* p) {
+    swarp_scene_needs n;
+    swarp_budget b;
+    memset(&n, 0, sizeof n);
+    memset(&b, 0, sizeof b);
+    n.camera.eye = (swarp_vec3){0.3, 2.0, 0.7};
+    n.camera.dir = (swarp_vec3){0.0, -0.5, -1.0};
+    n.camera.up = (swarp_vec3){0.0, 1.0, 0.0};
+    n.camera.fovy = 1.0;
+    n.camera.aspect = 1.5;
+    n.camera.near = near;
+    n.camera.far = 100.0;
+    n.plane_count = 1;
+    n.planes[0].b = 1.0; /* the floor y = 0, lit by the default sun (0, -1, 0) */
+    b.max_passes = 32;   /* a pass left for the lixel map after 16 splits */
+    fesetround(mode);
+    *st = swarp_plan(&n, &b, p);
+    fesetround(FE_TONEAREST);
+}
+
+/* the harness's case 201223 (hex floats as decoded): 2 planes, a 2048 atlas */
+static void plan_case_201223(int mode, swarp_status* st, swarp_plan_result* p) {
+    swarp_scene_needs n;
+    swarp_budget b;
+    memset(&n, 0, sizeof n);
+    memset(&b, 0, sizeof b);
+    n.camera.eye = (swarp_vec3){-0x1.e848798ad0959p+19, 0x1.0000000000001p-1, -0x1.e847fb7b5d73ap+19};
+    n.camera.dir = (swarp_vec3){-0x1.668a2d003baa8p-3, 0x1.9999999999999p-3, 0x1.5a97946040314p-1};
+    n.camera.up = (swarp_vec3){0.0, 1.0, 0.0};
+    n.camera.fovy = 0x1.69587353f4dbfp+0;
+    n.camera.aspect = 2.5;
+    n.camera.near = 0x1.e0425cee492d8p-101;
+    n.camera.far = 0x1.52db33ed1aa1bp+18;
+    n.bleed_risk = (swarp_plan_bleed)1;
+    n.plane_count = 2;
+    n.planes[0].b = n.planes[1].b = 1.0;
+    n.planes[0].d = -0x1.47f335603d38p-2;
+    n.planes[1].d = 0x1.a4c437883f732p-1;
+    b.map_resolution = 2048;
+    b.atlas_limit = 2048;
+    b.max_passes = 24;
+    fesetround(mode);
+    *st = swarp_plan(&n, &b, p);
+    fesetround(FE_TONEAREST);
+}
+
+static void same_plan(const swarp_plan_result* a, const swarp_plan_result* r, int mode) {
+    ck_assert_msg(a->lixel_count == r->lixel_count, "mode %d: %u lixel maps, %u by default", mode, a->lixel_count,
+                  r->lixel_count);
+    for (uint32_t i = 0; i < r->plane_count; ++i)
+        ck_assert_msg(a->plane_reason[i] == r->plane_reason[i], "mode %d plane %u: reason %u, %u by default", mode, i,
+                      a->plane_reason[i], r->plane_reason[i]);
+    ck_assert_uint_eq(a->shadow_passes, r->shadow_passes);
+    ck_assert_msg(a->cost_ns == r->cost_ns, "mode %d: cost %.17g, %.17g by default", mode, a->cost_ns, r->cost_ns);
+}
+
+START_TEST(fenvj_lixel_check_tiny_near_every_mode) {
+    static const int modes[] = {FE_TONEAREST, FE_UPWARD, FE_DOWNWARD, FE_TOWARDZERO};
+    static const double nears[] = {1e-30, 1e-20, 1e-17, 1e-16, 1e-6, 0.1};
+    for (size_t k = 0; k < sizeof nears / sizeof nears[0]; ++k) {
+        swarp_status st0, st;
+        swarp_plan_result r, p;
+        plan_floor(nears[k], FE_TONEAREST, &st0, &r);
+        ck_assert(!swarp_status_is_error(st0));
+        ck_assert_msg(r.plane_reason[0] == SWARP_PLAN_PLANE_USED && r.lixel_count == 1, "near %g: reason %u",
+                      nears[k], r.plane_reason[0]);
+        for (int m = 1; m < 4; ++m) {
+            plan_floor(nears[k], modes[m], &st, &p);
+            ck_assert_int_eq(st, st0);
+            same_plan(&p, &r, m);
+        }
+    }
+    swarp_status st0, st;
+    swarp_plan_result r, p;
+    plan_case_201223(FE_TONEAREST, &st0, &r);
+    ck_assert_int_eq(st0, SWARP_INFO_PLAN_BUDGET_UNMET);
+    ck_assert_uint_eq(r.lixel_count, 2);
+    for (int m = 1; m < 4; ++m) {
+        plan_case_201223(modes[m], &st, &p);
+        ck_assert_int_eq(st, st0);
+        same_plan(&p, &r, m);
+    }
+}
+END_TEST
+
+/* fenv swarp_plan 480000 case 385901 (hex floats as decoded): a 1e-15 rad
+ * field of view 2.5e5 off the origin, a point light above the eye, floor
+ * planes y = 0.6 and y = -0.86.  The corner rays hit plane 0 at points that
+ * coincide to rounding; swarp_lixel_solve5 judged their noise, and the plane
+ * got a lixel map under FE_DOWNWARD only.  Refused in every mode. */
+static void plan_case_385901(int mode, swarp_status* st, swarp_plan_result* p) {
+    swarp_scene_needs n;
+    swarp_budget b;
+    memset(&n, 0, sizeof n);
+    memset(&b, 0, sizeof b);
+    n.camera.eye = (swarp_vec3){-0x1.f2bf947ae147bp+17, 0x1.c62de479ac6fbp+3, -0x1.f2bcbcf9153bcp+17};
+    n.camera.dir = (swarp_vec3){0x1.d70bb60a2c58p-5, -0x1.8efec720d103ep-1, 0x1.0c967c05ce54p-4};
+    n.camera.up = (swarp_vec3){0.0, 1.0, 0.0};
+    n.camera.fovy = 0x1.203af9ee75616p-50;
+    n.camera.aspect = 0x1.09aa7cd0985b6p+1;
+    n.camera.near = 0x1.f62c71bd39841p-11;
+    n.camera.far = 0x1.1ab53fc425b8ap+11;
+    n.light.type = SWARP_LIGHT_POINT;
+    n.light.direction = (swarp_vec3){-0x1.798a04743a5cp-1, -0x1p+0, -0x1.47b21ebbc2078p-1};
+    n.light.position = (swarp_vec3){-0x1.f2bf947ae147bp+17, 0x1.ba57e180c63fep+6, -0x1.f2bcbcf9153bcp+17};
+    n.screen_width = 1232;
+    n.screen_height = 164;
+    n.soft_shadows = 1;
+    n.bleed_risk = (swarp_plan_bleed)3;
+    n.allow_depth_clamp = 1;
+    n.plane_count = 2;
+    n.planes[0].b = n.planes[1].b = 1.0;
+    n.planes[0].d = -0x1.3613411d7a00cp-1;
+    n.planes[1].d = 0x1.b75a181419f2ep-1;
+    b.max_error = 0x1.6bd64994b739ep+6;
+    b.map_resolution = 256;
+    b.max_passes = 18;
+    b.time_budget_ns = 0x1.ff2388730e836p+24;
+    fesetround(mode);
+    *st = swarp_plan(&n, &b, p);
+    fesetround(FE_TONEAREST);
+}
+
+START_TEST(fenvj_lixel_check_clustered_corners_every_mode) {
+    static const int modes[] = {FE_TONEAREST, FE_UPWARD, FE_DOWNWARD, FE_TOWARDZERO};
+    swarp_status st0, st;
+    swarp_plan_result r, p;
+    plan_case_385901(FE_TONEAREST, &st0, &r);
+    ck_assert_int_eq(st0, SWARP_INFO_PLAN_BUDGET_UNMET);
+    ck_assert_uint_eq(r.plane_reason[0], SWARP_PLAN_PLANE_LIXEL_REFUSED);
+    ck_assert_uint_eq(r.lixel_count, 0);
+    for (int m = 1; m < 4; ++m) {
+        plan_case_385901(modes[m], &st, &p);
+        ck_assert_int_eq(st, st0);
+        same_plan(&p, &r, m);
+    }
+}
+END_TEST
+
 int main(void) {
     Suite* s = suite_create("edges_plan");
     TCase* t = tcase_create("explain");
@@ -154,6 +304,11 @@ int main(void) {
     /* planfix pass */
     t = tcase_create("planfix");
     tcase_add_test(t, planfix_plan_cost_limit);
+    suite_add_tcase(s, t);
+    /* fenvj pass */
+    t = tcase_create("fenvj");
+    tcase_add_test(t, fenvj_lixel_check_tiny_near_every_mode);
+    tcase_add_test(t, fenvj_lixel_check_clustered_corners_every_mode);
     suite_add_tcase(s, t);
     return tu_run_suite(s) ? 1 : 0;
 }

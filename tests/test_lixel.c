@@ -1309,6 +1309,43 @@ START_TEST(fenvi_matrix_parallel_view_rounding_mode) {
 }
 END_TEST
 
+/* fenv swarp_plan 480000 case 385901: a 1e-15 rad field of view seeing the
+ * floor y = 0.6 from 2.5e5 off the origin.  The planner's swarp_lixel_matrix
+ * call hands solve5 the light, three corner hits that coincide to rounding
+ * (1e-14 apart in truth, 1e-10 of noise at 2.5e5) and the raised point; the
+ * median normalisation scaled the noise up to unit size, and the
+ * conditioning came out 5.6e-21 (COPLANAR) or 1.2e-13 (ILL_CONDITIONED, a
+ * lixel map) by rounding mode.  Points within 64 eps |c| of their median
+ * centre c coincide to rounding: COPLANAR in every mode (the set below is the
+ * one FE_DOWNWARD computed); and the same for a cluster built by hand. */
+START_TEST(fenvj_solve5_cluster_coplanar_rounding_mode) {
+    static const swarp_vec4 src[5] = {
+        {-255359.16000000001, 110.58582116327303, -255353.47635140818, 1.0},
+        {-0.7071148453377012, 1.6770163927463192e-06, -0.7070987169360149, 2.769110070550273e-06},
+        {-0.70711484533770131, 1.6770163927463189e-06, -0.7070987169360149, 2.7691100705502726e-06},
+        {-0.7071148453377012, 1.6770163927463189e-06, -0.70709871693601512, 2.7691100705502726e-06},
+        {-255358.65871520335, 55.595718406175805, -255352.90469145074, 1.0}};
+    static const swarp_vec4 dst[5] = {
+        {0, 0, 1, 0}, {0, 0, 1, 1}, {0, 163, 1, 1}, {1231, 163, 1, 1}, {1231, 0, -1, 1}};
+    /* by hand: three points 1, 2 and 3 ulps (2^-34 at 2^18) apart, a fourth
+     * and a fifth far from them */
+    const double u = 0x1p-34, x0 = 0x1p18;
+    const swarp_vec4 src2[5] = {{x0, 3.0, x0, 1.0},         {x0 + u, 0.6, x0, 1.0}, {x0, 0.6, x0 + 2 * u, 1.0},
+                                {x0 + 3 * u, 0.6, x0 - u, 1.0}, {x0 + 50.0, 1.0, x0 - 20.0, 1.0}};
+    static const int modes[4] = {FE_TONEAREST, FE_UPWARD, FE_DOWNWARD, FE_TOWARDZERO};
+    for (int m = 0; m < 4; ++m) {
+        swarp_mat4 M;
+        double cond = -1.0;
+        fesetround(modes[m]);
+        swarp_status st = swarp_lixel_solve5(src, dst, &M, &cond);
+        swarp_status st2 = swarp_lixel_solve5(src2, dst, &M, &cond);
+        fesetround(FE_TONEAREST);
+        ck_assert_msg(st == SWARP_ERR_LIXEL_COPLANAR, "mode %d: %s", m, swarp_status_name(st));
+        ck_assert_msg(st2 == SWARP_ERR_LIXEL_COPLANAR, "mode %d, by hand: %s", m, swarp_status_name(st2));
+    }
+}
+END_TEST
+
 static Suite* lixel_suite(void) {
     Suite* s = suite_create("lixel");
     TCase* tc = tcase_create("lixel");
@@ -1336,6 +1373,7 @@ static Suite* lixel_suite(void) {
     tcase_add_test(tc, fenvf_restrict_flat_cone_rounding_mode); /* fenvf pass */
     tcase_add_test(tc, fenvi_restrict_antipodal_edge_rounding_mode); /* fenvi pass */
     tcase_add_test(tc, fenvi_matrix_parallel_view_rounding_mode); /* fenvi pass */
+    tcase_add_test(tc, fenvj_solve5_cluster_coplanar_rounding_mode); /* fenvj pass */
     /* @@MORE_TCASES@@ */
     suite_add_tcase(s, tc);
     return s;
