@@ -371,8 +371,7 @@ static double dot3(const double a[3], const double b[3]) { return a[0] * b[0] + 
 /* The orientation of C's cone: +1 when its interior is on the positive side
  * of the edge lines l_j, -1 on the negative side, 0 when the cone is flat to
  * rounding.  For a convex cone every l_j . a_m has that sign or is zero, and
- * so has (sum_j l_j) . a_m, which sums them; the vertex where it is largest
- * decides. */
+ * so has (sum_j l_j) . a_m, which sums them. */
 static int cone_orientation(const lx_cols* pc, const swarp_vec4* C, size_t n) {
     double N[3] = {0.0, 0.0, 0.0};
     lx_ray r0, A, B;
@@ -388,14 +387,19 @@ static int cone_orientation(const lx_cols* pc, const swarp_vec4* C, size_t n) {
         edge_line(pc, &A, &B, l);
         N[0] += l[0], N[1] += l[1], N[2] += l[2];
     }
-    double best = 0.0, sign = 0.0;
+    double pos = 0.0, neg = 0.0;
     for (size_t m = 0; m < n; ++m) {
         ray_init(pc, C[m], &A);
         const double t = dot3(N, A.a);
-        if (fabs(t) > best) best = fabs(t), sign = t;
+        pos = fmax(pos, t);
+        neg = fmax(neg, -t);
     }
-    if (!(best > LX_CONE_FLAT * (double)n)) return 0;
-    return sign > 0.0 ? 1 : -1;
+    const double tol = LX_CONE_FLAT * (double)n;
+    /* both signs beyond rounding: C is not convex (outside the documented
+     * domain), and which vertex is largest a near tie that the rounding
+     * broke (fenv 6000000 case 3500922): no orientation, as if flat */
+    if (pos > tol && neg > tol) return 0;
+    return pos > tol ? 1 : neg > tol ? -1 : 0;
 }
 
 /* The bounding box of (image of the cone C) clipped to the viewer's pixel

@@ -1346,6 +1346,55 @@ START_TEST(fenvj_solve5_cluster_coplanar_rounding_mode) {
 }
 END_TEST
 
+/* fenvi pass: robust_fenv 6000000 (issue 9), swarp_lixel_restrict case
+ * 3500922.  C is not convex (outside the documented domain; the hard-case
+ * generator draws its vertices at random): two of them 1.4e54 and 4.4e25
+ * out image to antipodal directions, the interior vector S lies on the
+ * plane of the edge from the direction vertex, and that edge took the
+ * cone's orientation, the sign of the largest (sum_j l_j) . a_m -- a near
+ * tie between two vertices of opposite sign, which the rounding broke:
+ * three view corners inside (rect [77, 3107] x [-364, 3300]) or none
+ * ([77, 365] x [-89, 203], FE_DOWNWARD).  Both signs beyond rounding now
+ * give no orientation. */
+START_TEST(fenvi_restrict_nonconvex_orientation_rounding_mode) {
+    static const swarp_mat4 M = {{0x1.9a0458143e19ep-1, -0x1.43fc5f3f91b6p-1, -0x1.7c5876a1703c8p-2, 0x0p+0,
+                                  -0x1.867f298351bep-5, -0x1.1eca8d29333d8p-1, -0x1.0919919050384p-1, 0x0p+0,
+                                  0x1.10d43bbb7e17cp-2, -0x1.bd0c8246ecd14p-1, -0x1.263a096734e1cp-1, 0x0p+0,
+                                  -0x1.5072f9bad090ep-1, 0x1.fffffffffffffp-1, 0x1.1dd460f0aca5cp-1,
+                                  0x1.1e0782dbb9ae7p+0}};
+    static const swarp_vec4 C[4] = {{-0x1.82bab446a492p+2, -0x1.9000000000001p+6, -0x1.2c0411dce699p+5, 0x1p+0},
+                                    {0x1.dd6fde5fec6dbp+179, 0x1.3eb2a8a5fea7p+2, -0x1.5e3596af1accp+2, 0x1p+0},
+                                    {-0x1.22f457f3af67p+85, -0x1.9000000000001p+6, -0x1.23111ca3ec29cp+6, 0x1p+0},
+                                    {-0x1.024c1633d818ep+6, -0x1.2c3bb416636fcp+6, -0x1.2cbda23db758p+4, 0x0p+0}};
+    swarp_lixel_restrict_options o;
+    memset(&o, 0, sizeof o);
+    o.scale_x = 0x1.91fd81e1e2014p+1;
+    o.scale_y = 0x1.1ba143ffdf2b4p+1;
+    o.twist = -0x1.522fbc3cff35p-2;
+    o.view_width = 507;
+    o.view_height = 1575;
+    static const int modes[4] = {FE_TONEAREST, FE_UPWARD, FE_DOWNWARD, FE_TOWARDZERO};
+    swarp_lixel_rect r0;
+    memset(&r0, 0, sizeof r0);
+    swarp_status st0 = SWARP_OK;
+    for (int m = 0; m < 4; ++m) {
+        swarp_lixel_rect r;
+        swarp_mat4 out;
+        fesetround(modes[m]);
+        swarp_status st = swarp_lixel_restrict(&M, C, 4, &o, &r, NULL, &out);
+        fesetround(FE_TONEAREST);
+        if (m == 0) {
+            st0 = st, r0 = r;
+            continue;
+        }
+        ck_assert_msg(st == st0, "mode %d: %s, to nearest %s", m, swarp_status_name(st), swarp_status_name(st0));
+        ck_assert_msg(r.x0 == r0.x0 && r.x1 == r0.x1 && r.y0 == r0.y0 && r.y1 == r0.y1,
+                      "mode %d: rect [%d, %d] x [%d, %d], to nearest [%d, %d] x [%d, %d]", m, r.x0, r.x1, r.y0, r.y1, r0.x0,
+                      r0.x1, r0.y0, r0.y1);
+    }
+}
+END_TEST
+
 static Suite* lixel_suite(void) {
     Suite* s = suite_create("lixel");
     TCase* tc = tcase_create("lixel");
@@ -1374,6 +1423,7 @@ static Suite* lixel_suite(void) {
     tcase_add_test(tc, fenvi_restrict_antipodal_edge_rounding_mode); /* fenvi pass */
     tcase_add_test(tc, fenvi_matrix_parallel_view_rounding_mode); /* fenvi pass */
     tcase_add_test(tc, fenvj_solve5_cluster_coplanar_rounding_mode); /* fenvj pass */
+    tcase_add_test(tc, fenvi_restrict_nonconvex_orientation_rounding_mode); /* fenvi pass */
     /* @@MORE_TCASES@@ */
     suite_add_tcase(s, tc);
     return s;
