@@ -475,6 +475,21 @@ static double sw_pseudo_angle(double x, double y) {
     return (y >= 0.0) ? 1.0 - t : 3.0 + t;
 }
 
+/* Where the edge i-j crosses the plane (dist: signed distances of its
+ * ends, of opposite signs), interpolated from the end nearer to the plane:
+ * p = a + (b - a) s with s = dist_a / (dist_a - dist_b) <= 1/2 is rounded by
+ * eps (|a| + |p - a|).  From the far end, s ~ 1 and p = b + (a - b) s was
+ * rounded by eps |b|: an edge from the light (50 units away) to a vertex of
+ * H at 1.6e8 was cut 2e-8 off the box plane x = -45.3, by an amount and
+ * direction the rounding mode decided (issue 9, fenv swarp_body_from_h
+ * 480000 case 295909). */
+static inline swarp_vec3 sw_edge_cut(const swarp_vec3* v, const double* dist, uint8_t i, uint8_t j) {
+    const uint8_t ia = fabs(dist[i]) <= fabs(dist[j]) ? i : j, ib = ia == i ? j : i;
+    const double s = dist[ia] / (dist[ia] - dist[ib]);
+    const swarp_vec3 a = v[ia], b = v[ib];
+    return sw_add(a, sw_scale(sw_sub(b, a), s));
+}
+
 /* Keeps n·x + d <= 0; n need not be unit.  in and out may alias. */
 /* Clips in into out (out != in).  When no vertex lies outside, *unchanged
  * is set and out is not written. */
@@ -599,10 +614,8 @@ static swarp_status sw_poly_clip_to(const swarp_polyhedron* in, swarp_vec3 n_raw
                         if (edge_lo[e] == lo && edge_hi[e] == hi) break;
                     if (e == n_edges) {
                         if (tv >= SWARP_POLY_MAX_VERTICES) return SWARP_ERR_CAPACITY;
-                        /* canonical order: both faces get the very same point */
-                        double s = dist[lo] / (dist[lo] - dist[hi]);
-                        swarp_vec3 a = in->vertices[lo], b = in->vertices[hi];
-                        t->vertices[tv] = sw_add(a, sw_scale(sw_sub(b, a), s));
+                        /* once per edge (cached): both faces get the very same point */
+                        t->vertices[tv] = sw_edge_cut(in->vertices, dist, lo, hi);
                         edge_lo[e] = lo;
                         edge_hi[e] = hi;
                         edge_v[e] = (uint8_t)tv;
@@ -637,6 +650,37 @@ static swarp_status sw_poly_clip_to(const swarp_polyhedron* in, swarp_vec3 n_raw
         t->face_vertex_count[tf] = m;
         t->planes[tf] = in->planes[f];
         ++tf;
+    }
+    /* No faces: a point set, in practice a collapse onto a line (a flat
+     * polygon thinner than eps loses its loops, sw_remap_faces) whose hull
+     * is the segment between its ends.  The face walk above cut no edge,
+     * so the clip kept the inner vertices only: cutting a 64-long segment
+     * of B at a box plane left its inner end, a point, or the segment, as
+     * the rounding had collapsed it earlier or not (issue 9, fenv
+     * swarp_body_from_h 240000 case 169801).  Each strictly crossing pair
+     * is cut (the hull of the kept and the cut points is the clipped hull);
+     * a cut within eps of a point kept or cut already adds nothing (for a
+     * segment the cuts are all one point). */
+    if (in->face_count == 0) {
+        const double cut_eps = SWARP_POLY_EPS_REL * in_scale;
+        for (uint32_t i = 0; i < nv; ++i) {
+            if (cls[i] != SW_IN) continue;
+            for (uint32_t j = 0; j < nv; ++j) {
+                if (cls[j] != SW_OUT) continue;
+                const swarp_vec3 p = sw_edge_cut(in->vertices, dist, (uint8_t)i, (uint8_t)j);
+                uint32_t k = 0;
+                for (; k < tv; ++k) {
+                    const swarp_vec3 w = t->vertices[k];
+                    if (fabs(p.x - w.x) <= cut_eps && fabs(p.y - w.y) <= cut_eps && fabs(p.z - w.z) <= cut_eps) break;
+                }
+                if (k < tv) continue;
+                if (tv >= SWARP_POLY_MAX_VERTICES) return SWARP_ERR_CAPACITY;
+                t->vertices[tv++] = p;
+            }
+        }
+        t->vertex_count = tv;
+        t->face_count = 0;
+        return SWARP_OK;
     }
     /* the cap: the new face on the clip plane, sorted counter-clockwise seen
      * from outside (along +n) */

@@ -244,8 +244,16 @@ SWARP_API swarp_status swarp_stabilize_directional(const swarp_camera* cam, doub
         }
     double dt = t_max - t_min, t_sum = t_max + t_min;
     if (!(t_max > t_min)) {
-        /* A body flat across the light: give depth one texel either side. */
-        const double t = t_min, half = rep.texel_size_x;
+        /* A body flat across the light: give depth one texel either side,
+         * and at least one ulp of t.  The ulp is taken exactly (the
+         * difference of neighbours), not from whether t -+ texel rounds
+         * away from t: with the texel between half an ulp and an ulp (a
+         * 1e-5 split at a 1e6 origin: texel 8.5e-11, ulp 1.2e-10) that
+         * decision was the rounding mode's, and the depth row 2/dt moved
+         * by a third between modes (issue 9, fenv swarp_stabilize_directional
+         * 480000 cases 300594, 449874). */
+        const double t = t_min, ulp_t = nextafter(fabs(t), INFINITY) - fabs(t);
+        const double half = fmax(rep.texel_size_x, ulp_t);
         t_min = t - half;
         t_max = t + half;
         /* extent and sum from t and the texel, not from the rounded t -+
@@ -254,8 +262,9 @@ SWARP_API swarp_status swarp_stabilize_directional(const swarp_camera* cam, doub
          * size the caller's rounding mode decided (fenv sweep) */
         dt = 2.0 * half;
         t_sum = 2.0 * t;
-        /* a texel below the ulp of t (a tiny split far from the origin) is
-         * absorbed: step one ulp at least, so that t_max - t_min > 0 */
+        /* the step is one ulp at least, so t_max > t > t_min in every
+         * rounding mode; what is left for this guard is a t at the end of
+         * the double range (its ulp is inf) or a subnormal step under DAZ */
         if (!(t_max > t_min) || !(t_min < t) || !(t_max > t)) {
             t_min = nextafter(t, -INFINITY);
             t_max = nextafter(t, INFINITY);

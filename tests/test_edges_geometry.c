@@ -1562,6 +1562,143 @@ START_TEST(fe_setup_points_psm_small_cone_rounding_mode) {
 }
 END_TEST
 
+/* fenvk pass: a polyhedron without faces (what the clipper leaves when a
+ * flat polygon collapses onto a line: a segment of 2 vertices) clipped by a
+ * plane through it kept its inner end and dropped the outer one, instead of
+ * cutting the segment where it crosses the plane. */
+START_TEST(fe_poly_clip_segment_without_faces) {
+    swarp_polyhedron P, out;
+    memset(&P, 0, sizeof P);
+    P.vertex_count = 2;
+    P.vertices[0] = (swarp_vec3){-4, 1, 2};
+    P.vertices[1] = (swarp_vec3){6, 1, 2};
+    const swarp_aabb box = {{-1, 0, 0}, {3, 5, 5}};
+    ck_assert_int_eq(swarp_poly_clip_aabb(&P, &box, &out), SWARP_OK);
+    double lo[3], hi[3];
+    bbox(&out, lo, hi);
+    ck_assert_msg(out.vertex_count == 2 && out.face_count == 0, "%u vertices, %u faces", out.vertex_count, out.face_count);
+    ck_assert_msg(lo[0] == -1 && hi[0] == 3 && lo[1] == 1 && hi[1] == 1 && lo[2] == 2 && hi[2] == 2,
+                  "x [%g, %g] y [%g, %g] z [%g, %g]", lo[0], hi[0], lo[1], hi[1], lo[2], hi[2]);
+}
+END_TEST
+
+/* fenvk pass (issue 9, fenv swarp_body_from_h 240000 case 169801): a box
+ * 70 long and 1e-6 thick in y and z at 1e6, the clipper's merge distance
+ * (SWARP_POLY_EPS_REL x 1e6): the sweep of H collapses onto a segment on
+ * the box's edge line, and the last clip (x >= min x) kept only its inner
+ * end (the collapse has no faces, so no edge was cut): B was the point
+ * x = 1000050.14 to nearest and the segment down to the box's min x =
+ * 999986.47 in the directed modes.  B is that segment in every mode. */
+START_TEST(fe_body_from_h_needle_box_rounding_mode) {
+    swarp_polyhedron H;
+    memset(&H, 0, sizeof H);
+    const swarp_vec3 v[8] = {
+        {0x1.e84e5ebd62af8p+19, -0x1.540d65876f535p+3, 0x1.e843131a3de9bp+19},
+        {0x1.e84e5352e046ap+19, -0x1.540d65876f535p+3, 0x1.e842ddc18f9a1p+19},
+        {0x1.e84e49d94acc5p+19, -0x1.35c9bad812c5ep+3, 0x1.e8431792b9d26p+19},
+        {0x1.e84e3e6ec8636p+19, -0x1.35c9bad812c5ep+3, 0x1.e842e23a0b82cp+19},
+        {0x1.d70fba6c3bc2bp+19, -0x1.186dc509440a9p+19, 0x1.8178a881eddf3p+20},
+        {0x1.64e21180eb4a2p+19, -0x1.186dc509440a9p+19, 0x1.daca582a12af9p+18},
+        {0x1.061e70a46dfccp+19, 0x1.6430065f494c1p+15, 0x1.97d3f8e9ad348p+20},
+        {0x1.27e18f723b086p+18, 0x1.6430065f494c1p+15, 0x1.1a1bcce488026p+19}};
+    const swarp_plane pl[6] = {
+        {0x1.802c85d9cd9b4p-1, 0x1.c88d233d1f3cep-2, 0x1.f3c7486c3d534p-2, -0x1.2e592d7ae0903p+20},
+        {0x1.f084e3ee12574p-2, 0x1.c88d233d1f3cep-2, -0x1.813aa2cd691b8p-1, 0x1.0532f6168c33ap+18},
+        {0x1.e339762607a36p-1, -0x1.0bea490e2878ap-2, -0x1.9da323b7f5574p-3, -0x1.6a3fa92b04466p+19},
+        {0x1.32f4989e0bb8cp-4, 0x1.fe7e865378121p-1, -0x1.06c085e8fb731p-6, -0x1.cc23dd01dc8b2p+15},
+        {0x1.99054947d95d8p-1, 0x1.27453c6bc7d73p-1, -0x1.5e1e86c53b771p-3, -0x1.329e239988163p+19},
+        {-0x1.99054947d95d8p-1, -0x1.27453c6bc7d73p-1, 0x1.5e1e86c53b771p-3, 0x1.4b2e1cdfd461p+17}};
+    const uint8_t loops[6][4] = {
+        {0, 2, 6, 4},
+        {1, 5, 7, 3},
+        {0, 4, 5, 1},
+        {2, 3, 7, 6},
+        {0, 1, 3, 2},
+        {4, 6, 7, 5}};
+    H.vertex_count = 8;
+    H.face_count = 6;
+    for (int i = 0; i < 8; ++i) H.vertices[i] = v[i];
+    for (int f = 0; f < 6; ++f) {
+        H.planes[f] = pl[f];
+        H.face_vertex_count[f] = 4;
+        memcpy(H.face_vertices[f], loops[f], 4);
+    }
+    const swarp_light l = {SWARP_LIGHT_DIRECTIONAL, 0, {-0x1.72ab062ce7a66p-4, 0x1.588ed75b6c74bp-4, -0x1.fc13b404669e1p-1}, {0x1.e85784c6778a7p+19, 0x1.0bb1d45940732p+6, 0x1.e84059f3bd7edp+19}, 0x1.461c26c225bd8p-3, {0, 0, 0, 0}};
+    const swarp_aabb box = {{0x1.e8464f3034f9bp+19, -0x1.3803aa3b83cccp+3, 0x1.e842f6d6baa8dp+19}, {0x1.e84f0c54c443bp+19, -0x1.3803a822a4d8bp+3, 0x1.e842f6d6bcc1bp+19}};
+    for (size_t m = 0; m <= sizeof tu_modes / sizeof tu_modes[0]; ++m) {
+        swarp_polyhedron B;
+        fesetround(m ? tu_modes[m - 1] : FE_TONEAREST);
+        const swarp_status s = swarp_body_from_h(&H, &l, &box, &B);
+        fesetround(FE_TONEAREST);
+        ck_assert_msg(s == SWARP_OK, "mode %zu: %s", m, swarp_status_name(s));
+        double lo[3], hi[3];
+        bbox(&B, lo, hi);
+        ck_assert_msg(fabs(lo[0] - box.min.x) <= 1e-9 * box.max.x && fabs(hi[0] - 0x1.e84e44736bccp+19) <= 1e-9 * box.max.x,
+                      "mode %zu: B's x from %.17g to %.17g", m, lo[0], hi[0]);
+    }
+}
+END_TEST
+
+/* fenvk pass (issue 9, fenv swarp_body_from_h 480000 case 295909): a point
+ * light 50 units from a 45-unit box and H reaching 1.6e8 (a frustum with a
+ * far plane 8e7 away): conv(H ∪ {l}) clipped to the box is the box, but
+ * the cuts of the edges from l to H's far vertices were interpolated from
+ * the far end and rounded by eps |1.6e8|: B's corners 1e-8 to 3e-8 off the
+ * box, by rounding mode (6e-8 between FE_TONEAREST and FE_TOWARDZERO).
+ * Cut from the nearer end, they are on the box to rounding. */
+START_TEST(fe_body_from_h_point_light_far_h_rounding_mode) {
+    swarp_polyhedron H;
+    memset(&H, 0, sizeof H);
+    const swarp_vec3 v[8] = {
+        {0x1.0a8fa61005eb6p+4, -0x1.053534fe802d9p+4, -0x1.4475af221173p+3},
+        {-0x1.173bb3caa177ep+4, -0x1.053534fe802d9p+4, -0x1.39c55cf0c1bc9p+1},
+        {0x1.2a6d07f156068p+4, -0x1.ab549cc43f64p+1, -0x1.4d82898a05ce2p+0},
+        {-0x1.eebca3d2a2b98p+3, -0x1.ab549cc43f64p+1, 0x1.98a80d694094p+2},
+        {0x1.38050afd0a00ep+27, -0x1.1bd53c2d361b4p+26, -0x1.08a7a188270c8p+26},
+        {-0x1.529e2bc458643p+27, -0x1.1bd53c2d361b4p+26, 0x1.c9ec9ef41d63bp+22},
+        {0x1.5e0166840be68p+27, 0x1.a7294b3863003p+25, 0x1.21bce03e74ad1p+24},
+        {-0x1.2ca1d03d567eap+27, 0x1.a7294b3863003p+25, 0x1.6db5a387060ep+26}};
+    const swarp_plane pl[6] = {
+        {-0x1.66b2497f1faffp-4, 0x1.239988b56a3a6p-1, -0x1.a274108709c0cp-1, 0x1.3c294cf7fb4bbp+1},
+        {-0x1.15ff09a869da2p-2, 0x1.239988b56a3a6p-1, -0x1.8d3b580efd014p-1, 0x1.543d16411575fp+1},
+        {-0x1.9e37d7aff1632p-3, 0x1.9181dbfd5ec5ap-2, -0x1.cb79ec7e9fdc2p-1, 0x1.57d44f5636438p-1},
+        {-0x1.34c6719e1f31cp-3, 0x1.74a733085fb96p-1, -0x1.56832efe45f99p-1, 0x1.17b5db1ddc034p+2},
+        {-0x1.715090501ebc8p-3, 0x1.24e764ac70fep-1, -0x1.99aaa711f45cbp-1, 0x1.0ec7be6b09d49p+2},
+        {0x1.715090501ebc8p-3, -0x1.24e764ac70fep-1, 0x1.99aaa711f45cbp-1, -0x1.f9310edbe5f47p+23}};
+    const uint8_t loops[6][4] = {
+        {0, 2, 6, 4},
+        {1, 5, 7, 3},
+        {0, 4, 5, 1},
+        {2, 3, 7, 6},
+        {0, 1, 3, 2},
+        {4, 6, 7, 5}};
+    H.vertex_count = 8;
+    H.face_count = 6;
+    for (int i = 0; i < 8; ++i) H.vertices[i] = v[i];
+    for (int f = 0; f < 6; ++f) {
+        H.planes[f] = pl[f];
+        H.face_vertex_count[f] = 4;
+        memcpy(H.face_vertices[f], loops[f], 4);
+    }
+    const swarp_light l = {SWARP_LIGHT_POINT, 0, {-0x1.4f83fa8d5bc86p-2, 0x1.21723b5f47f06p-1, -0x1.8395c9b85db87p-1}, {-0x1.aab8928fce347p+5, 0x1.045874a833024p+7, -0x1.ba3af62e6203dp+4}, 0x0p+0, {0, 0, 0, 0}};
+    const swarp_aabb box = {{-0x1.6a5bc3a276bd3p+5, -0x1.1c51c26be5628p+3, -0x1.d65bc860f3d92p+4}, {0x1.347b6e5822c8p-2, 0x1.1c1510b2bc14bp+4, 0x1.e81c39d0d9584p+3}};
+    const double bmin[3] = {box.min.x, box.min.y, box.min.z}, bmax[3] = {box.max.x, box.max.y, box.max.z};
+    for (size_t m = 0; m <= sizeof tu_modes / sizeof tu_modes[0]; ++m) {
+        swarp_polyhedron B;
+        fesetround(m ? tu_modes[m - 1] : FE_TONEAREST);
+        const swarp_status s = swarp_body_from_h(&H, &l, &box, &B);
+        fesetround(FE_TONEAREST);
+        ck_assert_msg(s == SWARP_OK && B.vertex_count == 8, "mode %zu: %s, %u vertices", m, swarp_status_name(s), B.vertex_count);
+        for (uint32_t i = 0; i < B.vertex_count; ++i) { /* B is the box: each vertex a corner, to 1e-12 of its size */
+            const double p[3] = {B.vertices[i].x, B.vertices[i].y, B.vertices[i].z};
+            for (int k = 0; k < 3; ++k)
+                ck_assert_msg(fmin(fabs(p[k] - bmin[k]), fabs(p[k] - bmax[k])) <= 1e-12 * 64,
+                              "mode %zu: vertex %u coordinate %d = %.17g, box [%.17g, %.17g]", m, i, k, p[k], bmin[k], bmax[k]);
+        }
+    }
+}
+END_TEST
+
 int main(void) {
     Suite* s = suite_create("edges_geometry");
     TCase* t = tcase_create("geometry");
@@ -1608,6 +1745,10 @@ int main(void) {
     tcase_add_test(t, fe_setup_nopt_equal_depths_point_light);
     /* fenvg pass */
     tcase_add_test(t, fe_setup_points_psm_small_cone_rounding_mode);
+    /* fenvk pass */
+    tcase_add_test(t, fe_poly_clip_segment_without_faces);
+    tcase_add_test(t, fe_body_from_h_needle_box_rounding_mode);
+    tcase_add_test(t, fe_body_from_h_point_light_far_h_rounding_mode);
     suite_add_tcase(s, t);
     return tu_run_suite(s) ? 1 : 0;
 }

@@ -1020,6 +1020,44 @@ START_TEST(fenva_stabilize_directional_flat_body_rounding) {
 }
 END_TEST
 
+/* fenvk pass (issue 9, fenv swarp_stabilize_directional 480000 case
+ * 300594): one body point (flat across the light) of a 1e-5 split, 1e6 from
+ * the origin: depth is one texel either side of t, and the texel (8.5e-11)
+ * lies between half an ulp and an ulp of t.  Whether t -+ texel rounded
+ * away from t, which decided between 2 texels and 2 ulps for the depth
+ * extent, was the rounding mode's: the depth row moved by a third.  It is
+ * max(texel, ulp(t)) either side in every mode now. */
+START_TEST(fe_stabilize_directional_flat_body_texel_below_ulp) {
+    swarp_camera cam;
+    memset(&cam, 0, sizeof cam);
+    cam.eye = (swarp_vec3){0x1.e846cp+19, 0x1.038c8f6ca65afp+3, 0x1.e8486b1228227p+19};
+    cam.dir = (swarp_vec3){-0x1.02d729a675e78p-2, 0x1.fffffffffffffp-1, -0x1p+0};
+    cam.up = (swarp_vec3){0, 1, 0};
+    cam.fovy = 0x1.058a54acc4d6ep+0;
+    cam.aspect = 0x1.3333333333334p-2;
+    const double n = 0x1.fc70371868b8ep-17, f = 0x1.7d5429524e8aap-16;
+    const swarp_vec3 ld = {0x1.3e429a4299508p-1, -0x1.d3060e86e9ef8p-2, 0x1.82b51cdb93efcp-1};
+    const swarp_vec3 body[1] = {{0x1.e846c00013bf2p+19, 0x1.038c5fc22130ap+3, 0x1.e8486b120e2c7p+19}};
+    swarp_stabilize_options o;
+    memset(&o, 0, sizeof o);
+    o.mode = SWARP_STABILIZE_LEVELS;
+    o.origin = (swarp_vec3){1e6, 0, 0};
+    o.depth = SWARP_DEPTH_NEG_ONE_TO_ONE;
+    swarp_mat4 m0, m;
+    const swarp_status st0 = swarp_stabilize_directional(&cam, n, f, &ld, body, 1, NULL, 4878, &o, &m0, NULL);
+    ck_assert_msg(!swarp_status_is_error(st0), "%s", swarp_status_name(st0));
+    static const int modes[] = {FE_UPWARD, FE_DOWNWARD, FE_TOWARDZERO};
+    for (int k = 0; k < 3; ++k) {
+        fesetround(modes[k]);
+        const swarp_status st = swarp_stabilize_directional(&cam, n, f, &ld, body, 1, NULL, 4878, &o, &m, NULL);
+        fesetround(FE_TONEAREST);
+        ck_assert_int_eq(st, st0);
+        for (int i = 2; i < 16; i += 4) /* the depth row */
+            ck_assert_msg(fabs(m.m[i] - m0.m[i]) <= 1e-9 * fabs(m0.m[i]), "mode %d: entry %d = %.17g, default %.17g", k, i, m.m[i], m0.m[i]);
+    }
+}
+END_TEST
+
 int main(void) {
     Suite* s = suite_create("edges_splits");
     TCase* t = tcase_create("bias");
@@ -1055,6 +1093,8 @@ int main(void) {
     t = tcase_create("fenvd");
     tcase_add_test(t, fenvd_bias_slope_scaled_tiny_depth_bias_rounding_mode);
     tcase_add_test(t, fenvd_bias_texel_size_far_point_rounding_mode);
+    /* fenvk pass */
+    tcase_add_test(t, fe_stabilize_directional_flat_body_texel_below_ulp);
     suite_add_tcase(s, t);
     return tu_run_suite(s) ? 1 : 0;
 }

@@ -1006,6 +1006,18 @@ static int clip_call(swr_ctx* c, const swarp_polyhedron* in, swarp_polyhedron* o
     return ok;
 }
 
+/* The condition of the cut of the segment u-w by the plane pn (see the
+ * derivation in e_poly_clip_common), recorded when it crosses. */
+static void clip_cut_cond(swr_ctx* c, const swarp_plane* pn, const swarp_polyhedron* in, uint32_t iu, uint32_t iw) {
+    if (iu >= in->vertex_count || iw >= in->vertex_count) return;
+    const swarp_vec3 u = in->vertices[iu], w = in->vertices[iw];
+    const double du = plane_at(pn, u), dv = plane_at(pn, w);
+    if (!((du <= 0 && dv >= 0) || (du >= 0 && dv <= 0)) || du == dv) return;
+    const double T = fmax(fabs(pn->a * u.x) + fabs(pn->b * u.y) + fabs(pn->c * u.z), fabs(pn->a * w.x) + fabs(pn->b * w.y) + fabs(pn->c * w.z)) + fabs(pn->d);
+    const double len = vmax(v3(w.x - u.x, w.y - u.y, w.z - u.z));
+    swr_cond(c, T * len / (fabs(du - dv) * fmax(poly_scale(in), 1e-300)));
+}
+
 static void e_poly_clip_common(swr_ctx* c, int with_box) {
     scene_args s;
     gen_setup_scene(c, &s);
@@ -1062,20 +1074,18 @@ static void e_poly_clip_common(swr_ctx* c, int with_box) {
      * |v - u|: relative to the polyhedron's scale, cond = T |v - u| /
      * (|d_u - d_v| scale).  Large for an edge whose ends are both within a
      * cancellation of the plane (fenv 60000 case 57809: d = -9e-4 and 5e-4
-     * from terms of 8e3, an edge of 40, the cut moved 4e-8). */
+     * from terms of 8e3, an edge of 40, the cut moved 4e-8).  A polyhedron
+     * without faces (a point set: a segment, in practice) has its crossing
+     * pairs cut instead of its edges (poly.c): every pair counts (fenv
+     * 240000 case 145240: a segment 44 long within 1e-7 rad of the plane,
+     * cut 6e-8 apart by rounding mode; cond 2e7). */
     for (uint32_t f = 0; f < in.face_count && f < SWARP_POLY_MAX_FACES; ++f) {
         const uint32_t nv = in.face_vertex_count[f] <= SWARP_POLY_MAX_FACE_VERTICES ? in.face_vertex_count[f] : 0;
-        for (uint32_t k = 0; k < nv; ++k) {
-            const uint32_t iu = in.face_vertices[f][k], iv = in.face_vertices[f][(k + 1) % nv];
-            if (iu >= in.vertex_count || iv >= in.vertex_count) continue;
-            const swarp_vec3 u = in.vertices[iu], w = in.vertices[iv];
-            const double du = plane_at(&pn, u), dv = plane_at(&pn, w);
-            if (!((du <= 0 && dv >= 0) || (du >= 0 && dv <= 0)) || du == dv) continue;
-            const double T = fmax(fabs(pn.a * u.x) + fabs(pn.b * u.y) + fabs(pn.c * u.z), fabs(pn.a * w.x) + fabs(pn.b * w.y) + fabs(pn.c * w.z)) + fabs(pn.d);
-            const double len = vmax(v3(w.x - u.x, w.y - u.y, w.z - u.z));
-            swr_cond(c, T * len / (fabs(du - dv) * fmax(poly_scale(&in), 1e-300)));
-        }
+        for (uint32_t k = 0; k < nv; ++k) clip_cut_cond(c, &pn, &in, in.face_vertices[f][k], in.face_vertices[f][(k + 1) % nv]);
     }
+    if (in.face_count == 0)
+        for (uint32_t u = 0; u < in.vertex_count && u < SWARP_POLY_MAX_VERTICES; ++u)
+            for (uint32_t w = 0; w < u; ++w) clip_cut_cond(c, &pn, &in, u, w);
     int all_in = 1, all_out = in.vertex_count > 0;
     for (uint32_t v = 0; v < out.vertex_count && v < SWARP_POLY_MAX_VERTICES; ++v)
         SWR_CHECK_ACC(c, plane_at(&pn, out.vertices[v]) / nl <= tol, "clip: vertex %u on the removed side by %g", v,
@@ -1145,6 +1155,30 @@ static void e_body_from_h(swr_ctx* c) {
     if (!swr_done(c, SWR_CALL(c, swarp_body_from_h(ph, pl, pb, po)))) return;
     double tol = gtol(fmax(box_scale(&s.box), fmax(poly_scale(&H), vmax(s.light.position))));
     if (wide(&s.cam)) c->rounding_edge = 1;
+    /* B within the clipper's merge distance, SWARP_POLY_EPS_REL of the
+     * clipped body's scale X (H swept by T = 2 diag(S) for a directional
+     * light, conv(H ∪ {l}) for a point light): the box planes classify
+     * every vertex within that distance as on them, so B is the sweep cut
+     * or not, or empty (BODY_EMPTY), by rounding, as frustum_below_merge
+     * for H (fenv 1920000 case 1268095: a box 45 x 5e43 x 70 at 7.7e5, X =
+     * 1e44, merge distance 1e32 against a B 3e7 across; SWARP_OK to
+     * nearest, BODY_EMPTY under FE_UPWARD).  A B of one point is one. */
+    {
+        const long double dx = (long double)s.box.max.x - s.box.min.x, dy = (long double)s.box.max.y - s.box.min.y,
+                          dz = (long double)s.box.max.z - s.box.min.z;
+        long double X = fmaxl(box_scale(&s.box), poly_scale(&H));
+        if ((int)s.light.type == 2) X = fmaxl(X, vmax(s.light.position));
+        else X = fmaxl(X, poly_scale(&H) + fminl(2 * sqrtl(dx * dx + dy * dy + dz * dz), 0.25L * DBL_MAX));
+        long double E = 0;
+        double lo[3], hi[3];
+        for (int k = 0; k < 3; ++k) lo[k] = INFINITY, hi[k] = -INFINITY;
+        for (uint32_t i = 0; i < B.vertex_count && i < SWARP_POLY_MAX_VERTICES; ++i) {
+            const double v[3] = {B.vertices[i].x, B.vertices[i].y, B.vertices[i].z};
+            for (int k = 0; k < 3; ++k) lo[k] = fmin(lo[k], v[k]), hi[k] = fmax(hi[k], v[k]);
+        }
+        for (int k = 0; k < 3; ++k) E = fmaxl(E, (long double)hi[k] - lo[k]);
+        if (B.vertex_count > 0 && E <= 2 * SWARP_POLY_EPS_REL * X) c->rounding_edge = 1;
+    }
     check_poly(c, &B, "B", tol);
     check_in_box(c, &B, &s.box, tol, "B in S");
     /* a directional or omni light: H (clipped to S) lies inside B */
@@ -1496,6 +1530,17 @@ static void e_warp_lispsm(swr_ctx* c) {
         if ((int)o.param == 5 && !(o.n_user > 0)) swr_expect(c, SWARP_ERR_OUT_OF_RANGE), swr_domain(c, SWARP_ERR_NON_FINITE);
         if ((int)o.param == 4 && !(o.pseudo_near >= 0 && o.pseudo_far >= 0 && o.pseudo_near + o.pseudo_far < 1))
             swr_expect(c, SWARP_ERR_OUT_OF_RANGE), swr_domain(c, SWARP_ERR_NON_FINITE);
+        /* n_p + f_p < 1 on the rounded sum, as swarp_warp_nopt_pseudo's and
+         * swarp_cascade_splits' entries: n_p = 0.5 + 1e-9 and f_p = 0.5 -
+         * 1e-9 with an exact sum of 1 - 2^-54 give 1 to nearest (a tie, to
+         * even: refused) and 1 - 2^-53 downward (accepted), so within an ulp
+         * of 1 the rounding mode decides the status (fenv 960000 cases
+         * 523343, 644283).  The exact gap in long double (within 2^-64); a
+         * sum of 1 or more is refused in every mode. */
+        if ((int)o.param == 4 && swr_isfin(o.pseudo_near) && swr_isfin(o.pseudo_far)) {
+            const long double gap = 1.0L - o.pseudo_near - o.pseudo_far;
+            if (gap > 0 && gap <= 2 * DBL_EPSILON) c->rounding_edge = 1;
+        }
         swr_domain(c, SWARP_ERR_OUT_OF_RANGE), swr_domain(c, SWARP_ERR_NON_FINITE);
     }
     swr_domain(c, SWARP_ERR_DEGENERATE);
@@ -1531,6 +1576,17 @@ static void e_warp_lispsm(swr_ctx* c) {
         int same = 1; /* one point (or copies of it): d = 0 in every mode */
         for (size_t i = 1; i < n; ++i) same &= memcmp(&pts[i], &pts[0], sizeof pts[0]) == 0;
         if (!same && noise > 0 && yhi - ylo <= 64 * DBL_EPSILON * noise) c->rounding_edge = 1;
+        /* Away from that edge the same rounding is B's conditioning: each y
+         * is off by a few eps of its terms, so d = y_max - y_min by ~eps
+         * noise, and P is a function of d (A = (2 + d/n)/d, w = 1 +
+         * (y - y_min)/n with n = n' d / (far - near) for the caller's n';
+         * n_opt, (4.2) and λ d scale with d too): P's entries move by
+         * eps noise / d relative.  cond = noise / d, numerically singular
+         * (> 1/(64 eps)) exactly on the edge above (fenv 240000 case
+         * 179820: seven points at 1e6, light-space y of 1.4 from terms of
+         * 1.6e6, d = 0.0061 moved by 1 ulp of 1e6 with the rounding mode,
+         * P's w row by 2e-8 relative; cond 2.6e8). */
+        if (!same && noise > 0 && yhi > ylo) swr_cond(c, (double)(noise / (yhi - ylo)));
     }
     if (!swr_done(c, SWR_CALL(c, swarp_warp_lispsm(pL, pc, near, far, pp, n, use_near ? &nearest : NULL, use_o ? &o : NULL, pP,
                                                   pi))))

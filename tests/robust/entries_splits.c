@@ -1234,6 +1234,12 @@ static void e_stabilize_snap_matrix(swr_ctx* c) {
     }
 }
 
+/* a·(p - p0) in long double: p - p0 of doubles is exact there when they
+ * are within 2^11 of each other in magnitude (the body points here) */
+static ld along(swarp_vec3 a, swarp_vec3 p, swarp_vec3 p0) {
+    return (ld)a.x * ((ld)p.x - p0.x) + (ld)a.y * ((ld)p.y - p0.y) + (ld)a.z * ((ld)p.z - p0.z);
+}
+
 static void e_stabilize_directional(swr_ctx* c) {
     SKIP_IF_MISSING(c, swarp_stabilize_directional);
     swarp_camera cam;
@@ -1320,6 +1326,84 @@ static void e_stabilize_directional(swr_ctx* c) {
     if (swr_isfin(cam.fovy) && cam.fovy > 0 && cam.fovy < 3.14159 && swr_isfin(cam.aspect) && cam.aspect > 0 && swr_isfin(f) && f > 0) {
         const double width = f * tan(cam.fovy / 2) * fmin(1.0, cam.aspect);
         if (width > 0) swr_cond(c, (vmax3(cam.eye) + vmax3(o.origin) + f) / width);
+    }
+    /* The same for the depth: outside SPHERE the depth row is 2/dt (1/dt)
+     * and its translation -(t_max + t_min)/dt, dt the extent along the light
+     * of the body points (and the box's corners toward it), t = d·(p - O)
+     * from coordinates resolved to eps (|eye| + |origin| + f): the depth
+     * row's relative condition is (coordinates) / dt (body points 0.08 deep
+     * along the light, the origin 1e6 away: cond 1.2e7; the depth
+     * translation -2.5e7 moved by 4e-9 relative with the rounding mode,
+     * fenv 240000 case 201233).  dt = 0 is the library's flat case (one
+     * texel either side, covered by the width's).  The extents are taken
+     * from differences to the first point (p - p_0 is exact in long
+     * double): a light axis 1e-95 off a world axis adds 1e-95 x to the
+     * coordinates, which a sum at the origin's 1e6 loses and a difference
+     * keeps (fenv 1920000 cases 1030818, 1186048, 1758585: two points with
+     * the same z under such a light, extent 0 to nearest, DEGENERATE, and
+     * one ulp in the directed modes). */
+    if (mode != 2 && pp && np > 0 && fin3(&ld_) && vmax3(ld_) > 0) {
+        const swarp_vec3 dl = unit3(ld_);
+        const ld coords = (ld)vmax3(cam.eye) + vmax3(o.origin) + f;
+        ld t_lo = 0, t_hi = 0;
+        for (size_t i = 1; i < np; ++i) t_lo = fminl(t_lo, along(dl, pts[i], pts[0])), t_hi = fmaxl(t_hi, along(dl, pts[i], pts[0]));
+        if (use_box)
+            for (int k = 0; k < 8; ++k) {
+                const swarp_vec3 q = V3(k & 1 ? box.max.x : box.min.x, k & 2 ? box.max.y : box.min.y, k & 4 ? box.max.z : box.min.z);
+                t_lo = fminl(t_lo, along(dl, q, pts[0]));
+            }
+        const ld dt = t_hi - t_lo;
+        if (dt > 0 && isfinite((double)dt)) swr_cond(c, (double)(coords / dt));
+        /* NONE fits the map to the body points' light-space box as well:
+         * x and y rows 1/h_x, 1/h_y with h the half extents along the
+         * light's right and up axes (the library's basis: helper axis y, x
+         * for a light within 8° of vertical), of the same coordinates: the
+         * condition is (coordinates) / (smaller extent) (two points whose x
+         * differ by 2 ulps of 5e5 under a vertical light: h_y 5.8e-11, 1/h_y
+         * 2^34 to nearest and 2^33 in the directed modes, cond 4e15:
+         * numerically singular, fenv 480000 case 467443). */
+        /* LEVELS quantises the padded extent e res/(res - 1) up to a whole
+         * number of steps ref/levels (ref: level_max_size, or the diameter
+         * of the split's minimal sphere): the level is an integer the
+         * rounding of e decides when the exact quotient q lies within a few
+         * ulps of its condition of an integer: e is a difference of two dot
+         * products of coordinates, each rounded by a few eps coords, so q is
+         * off by ~4 eps q coords/e; 8 eps q (coords/e + 1) is the bound
+         * (the + 1: res/(res - 1) and the step's own rounding).  7 points
+         * 3e-6 across at 1.1e6 from the origin: cond 4e11, q = 23.9998 (2e-4
+         * from 24 against a bound of 0.016), level 24 or 25 by rounding
+         * mode, the map 4 % larger (fenv 1920000 case 1396899). */
+        const int levels_mode = mode == 3 && use_o;
+        ld step = 0;
+        if (levels_mode && res >= 2 && swr_isfin(n) && swr_isfin(f) && f > n && swr_isfin(o.level_max_size)) {
+            ld ref = o.level_max_size;
+            if (!(ref > 0)) { /* 2 r of the minimal sphere, as src/stabilize.c */
+                const ld t = tanl((ld)cam.fovy / 2), k = hypotl(t, t * cam.aspect);
+                ld d_far = k < 1 ? 0.5L * ((ld)f - n) - 0.5L * ((ld)n + f) * k * k : 0;
+                if (!(d_far > 0)) d_far = 0;
+                ref = 2 * hypotl(d_far, (ld)f * k);
+            }
+            step = ref / (o.levels ? o.levels : 64);
+        }
+        if (mode == 0 || mode == 1 || levels_mode) {
+            const swarp_vec3 helper = fabs(dl.y) > 0.99 ? V3(1, 0, 0) : V3(0, 1, 0);
+            const swarp_vec3 ua = unit3(V3(dl.y * helper.z - dl.z * helper.y, dl.z * helper.x - dl.x * helper.z,
+                                           dl.x * helper.y - dl.y * helper.x));
+            const swarp_vec3 va = V3(ua.y * dl.z - ua.z * dl.y, ua.z * dl.x - ua.x * dl.z, ua.x * dl.y - ua.y * dl.x);
+            const swarp_vec3 ax[2] = {ua, va};
+            for (int a = 0; a < 2; ++a) {
+                ld lo = 0, hi = 0;
+                for (size_t i = 1; i < np; ++i) lo = fminl(lo, along(ax[a], pts[i], pts[0])), hi = fmaxl(hi, along(ax[a], pts[i], pts[0]));
+                const ld e = hi - lo;
+                if (!(e > 0) || !isfinite((double)e)) continue;
+                if (!levels_mode) {
+                    swr_cond(c, (double)(coords / e));
+                } else if (step > 0 && isfinite((double)step)) {
+                    const ld q = e * res / (res - 1.0L) / step;
+                    if (q >= 0.5L && fabsl(q - roundl(q)) <= 8 * DBL_EPSILON * q * (coords / e + 1)) c->rounding_edge = 1;
+                }
+            }
+        }
     }
     swr_args(c, "eye (%g %g %g) dir (%g %g %g) fovy %g aspect %g n %.17g f %.17g light (%g %g %g) np %zu res %u mode %d levels %u origin (%g %g %g) lms %g box %d",
              cam.eye.x, cam.eye.y, cam.eye.z, cam.dir.x, cam.dir.y, cam.dir.z, cam.fovy, cam.aspect, n, f, ld_.x, ld_.y, ld_.z, np, res,
