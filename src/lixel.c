@@ -3,6 +3,7 @@
  * its factorisation into viewport x projection, and the multi-plane
  * selection of §3.  The five-point solver is in lixel_solve.c. */
 #include <float.h>
+#include <limits.h>
 
 #include "lixel_internal.h"
 
@@ -197,12 +198,21 @@ SWARP_API swarp_status swarp_lixel_matrix(const swarp_mat4* M_v, uint32_t g, uin
 
     /* informational results, most important first */
     swarp_status info = SWARP_OK;
-    swarp_vec4 Xn = xform_col(&V_inv, 0.5 * ((double)g - 1.0), 0.5 * ((double)h - 1.0), -1.0, 1.0);
-    swarp_vec4 Xf = xform_col(&V_inv, 0.5 * ((double)g - 1.0), 0.5 * ((double)h - 1.0), 1.0, 1.0);
-    swarp_vec3 view = sw_sub(sw_scale(sw_v3(Xf.x, Xf.y, Xf.z), 1.0 / Xf.w),
-                             sw_scale(sw_v3(Xn.x, Xn.y, Xn.z), 1.0 / Xn.w));
-    swarp_vec3 v_unit;
-    int view_parallel = sw_normalize(view, &v_unit) && fabs(sw_dot(v_unit, n_unit)) < LX_VIEW_PARALLEL_EPS;
+    /* The view direction: the centre pixel's ray (row0 - c_x row3).X =
+     * (row1 - c_y row3).X = 0 (as in plane_point) at infinity, w = 0: the
+     * cross product of the two covectors' x, y, z parts, which hold no
+     * translation.  Through V^-1, the far point minus the near point cancelled
+     * at the eye's magnitude: with the eye 1e6 out, n . v carried 1e-10 of
+     * rounding against LX_VIEW_PARALLEL_EPS (issue 9: PLANE_PARALLEL_VIEW to
+     * nearest, QUAD_ACROSS_INFINITY under FE_TOWARDZERO, n . v = 2e-15). */
+    const double c_x = 0.5 * ((double)g - 1.0), c_y = 0.5 * ((double)h - 1.0);
+    swarp_vec3 ra, rb, v_unit;
+    int view_parallel =
+        sw_normalize(sw_v3(rows[0].x - c_x * rows[3].x, rows[0].y - c_x * rows[3].y, rows[0].z - c_x * rows[3].z),
+                     &ra) &&
+        sw_normalize(sw_v3(rows[1].x - c_y * rows[3].x, rows[1].y - c_y * rows[3].y, rows[1].z - c_y * rows[3].z),
+                     &rb) &&
+        sw_normalize(sw_cross(ra, rb), &v_unit) && fabs(sw_dot(v_unit, n_unit)) < LX_VIEW_PARALLEL_EPS;
     double side_eye = eye_finite ? lx_dot4(pi, lx_v4(e.x, e.y, e.z, 1.0)) : 0.0;
     double side_light = L.w == 0.0 ? -sw_dot(n_unit, d_unit) : lx_dot4(pi, L);
     if (sst == SWARP_INFO_LIXEL_ILL_CONDITIONED)
@@ -256,28 +266,141 @@ static void box_add(box2* b, double x, double y, double c, double s, double s_x,
     b->hi_y = fmax(b->hi_y, yt);
 }
 
-/* Homogeneous light-image vector (x q, y q, q) of a ray of C, unit length
- * (any positive scale describes the same ray of the convex cone). */
-static void image_vec(const swarp_mat4* M, swarp_vec4 Cj, double v[3]) {
-    swarp_vec4 o = sw_xform4(M, ray_vertex(Cj));
-    double l = hypot(hypot(o.x, o.y), o.w);
-    if (!(l > 0.0)) l = 1.0;
-    v[0] = o.x / l;
-    v[1] = o.y / l;
-    v[2] = o.w / l;
+/* The x, y, q rows of M as columns P_i (i = 0..3), each scaled by a power
+ * of two to a largest entry in [1/2, 1); a vertex X of C is scaled by the
+ * inverse (ray_init), which is exact and keeps every product P_i X_i. */
+typedef struct lx_cols {
+    double P[12];
+    int e[4];
+} lx_cols;
+
+static void cols_init(const swarp_mat4* M, lx_cols* pc) {
+    for (int i = 0; i < 4; ++i) {
+        const double col[3] = {M->m[4 * i], M->m[4 * i + 1], M->m[4 * i + 3]};
+        int e = 0;
+        const double big = fmax(fabs(col[0]), fmax(fabs(col[1]), fabs(col[2])));
+        if (big > 0.0) (void)frexp(big, &e);
+        for (int r = 0; r < 3; ++r) pc->P[3 * i + r] = ldexp(col[r], -e);
+        pc->e[i] = e;
+    }
 }
 
-static double det3v(const double a[3], const double b[3], const double k[3]) {
-    return lx_det3(a[0], a[1], a[2], b[0], b[1], b[2], k[0], k[1], k[2]);
+/* A vertex of C: its ray X (ray_init) and the unit light-image vector
+ * a = (x q, y q, q) / |.| of it (any positive scale describes the same ray
+ * of the convex cone). */
+typedef struct lx_ray {
+    double X[4];
+    double a[3];
+} lx_ray;
+
+/* X is the ray of ray_vertex without its division (w made >= 0), its
+ * entries times 2^e_i of the columns, then all by one power of two to a
+ * largest entry in [2^499, 2^500): a term p_ik (P_i x P_k) of edge_line is
+ * below 2^1003, and entries down to 2^-500 of the largest keep their
+ * products normal.  Neither M (lixel_matrix's is normalised, a caller's
+ * need not be) nor C near DBL_MAX overflows, a column of M 1e300 times the
+ * others (q ~ w) does not push the others' products below DBL_MIN, and x/w
+ * does not overflow for a tiny w. */
+static void ray_init(const lx_cols* pc, swarp_vec4 c, lx_ray* r) {
+    const double sg = c.w < 0.0 ? -1.0 : 1.0;
+    const double v[4] = {sg * c.x, sg * c.y, sg * c.z, sg * c.w};
+    int top = INT_MIN;
+    for (int i = 0; i < 4; ++i)
+        if (v[i] != 0.0) {
+            int f = 0;
+            (void)frexp(v[i], &f);
+            top = f + pc->e[i] > top ? f + pc->e[i] : top;
+        }
+    if (top == INT_MIN) top = 0;
+    double o[3] = {0.0, 0.0, 0.0};
+    for (int i = 0; i < 4; ++i) {
+        r->X[i] = ldexp(v[i], pc->e[i] + 500 - top);
+        for (int k = 0; k < 3; ++k) o[k] += pc->P[3 * i + k] * r->X[i];
+    }
+    double l = hypot(hypot(o[0], o[1]), o[2]);
+    if (!(l > 0.0)) l = 1.0;
+    r->a[0] = o[0] / l;
+    r->a[1] = o[1] / l;
+    r->a[2] = o[2] / l;
 }
+
+static void cross3(const double a[3], const double b[3], double out[3]) {
+    out[0] = a[1] * b[2] - a[2] * b[1];
+    out[1] = a[2] * b[0] - a[0] * b[2];
+    out[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+/* The light-image line of the edge A B of C as a unit covector l on
+ * (X, Y, Q), a positive multiple of a x b for their image vectors; 0 when
+ * A and B are the same ray (A ^ B = 0).  With P_i the columns (x, y, q
+ * rows) of M, (P A) x (P B) = sum_{i<k} (A_i B_k - A_k B_i) P_i x P_k over
+ * the Plucker coordinates of the world line A B: the product of the two
+ * image vectors also rounds the terms A_i B_i P_i x P_i, zero exactly, at
+ * eps |A_i B_i| |P_i|^2.  For A and B far out on either side of the origin
+ * along one axis (C's vertices 1.7e38 and 4.7e31 along x, issue 9) a and b
+ * are antipodal to 1e-30, their x, y parts cancel, and the edge's image --
+ * a line 95 lixels from the view's corner -- was lost to rounding; the
+ * Plucker terms keep it (A_x B_z - A_z B_x has no such cancellation). */
+static void edge_line(const lx_cols* pc, const lx_ray* A, const lx_ray* B, double l[3]) {
+    double L[3] = {0.0, 0.0, 0.0};
+    for (int i = 0; i < 4; ++i)
+        for (int k = i + 1; k < 4; ++k) {
+            const double p = A->X[i] * B->X[k] - A->X[k] * B->X[i];
+            double x[3];
+            cross3(&pc->P[3 * i], &pc->P[3 * k], x);
+            L[0] += p * x[0], L[1] += p * x[1], L[2] += p * x[2];
+        }
+    double len = hypot(hypot(L[0], L[1]), L[2]);
+    if (!(len > 0.0) || !sw_finite(len)) len = INFINITY; /* no line: l = 0 */
+    l[0] = L[0] / len;
+    l[1] = L[1] / len;
+    l[2] = L[2] / len;
+}
+
+static double dot3(const double a[3], const double b[3]) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 
 /* Slack allowed when testing a computed intersection against the other
  * rectangle sides (in lixels: far below one). */
 #define LX_CLIP_TOL 1e-9
 
-/* A 3x3 determinant of two unit vectors and a third vector v, rounded by a
- * few eps |v|_1 (6 products, 5 sums); within 64 eps |v|_1 it is rounding. */
+/* l . v of a unit edge line and a vector v is rounded by a few eps |v|_1
+ * (3 products, 2 sums, and l's own rounding); within 64 eps |v|_1 it is
+ * rounding.  Summed over the n edges of C: n times that. */
 #define LX_CONE_FLAT (64.0 * DBL_EPSILON)
+
+/* The orientation of C's cone: +1 when its interior is on the positive side
+ * of the edge lines l_j, -1 on the negative side, 0 when the cone is flat to
+ * rounding.  For a convex cone every l_j . a_m has that sign or is zero, and
+ * so has (sum_j l_j) . a_m, which sums them. */
+static int cone_orientation(const lx_cols* pc, const swarp_vec4* C, size_t n) {
+    double N[3] = {0.0, 0.0, 0.0};
+    lx_ray r0, A, B;
+    ray_init(pc, C[0], &r0);
+    B = r0;
+    for (size_t j = 0; j < n; ++j) {
+        A = B;
+        if (j + 1 < n)
+            ray_init(pc, C[j + 1], &B);
+        else
+            B = r0;
+        double l[3];
+        edge_line(pc, &A, &B, l);
+        N[0] += l[0], N[1] += l[1], N[2] += l[2];
+    }
+    double pos = 0.0, neg = 0.0;
+    for (size_t m = 0; m < n; ++m) {
+        ray_init(pc, C[m], &A);
+        const double t = dot3(N, A.a);
+        pos = fmax(pos, t);
+        neg = fmax(neg, -t);
+    }
+    const double tol = LX_CONE_FLAT * (double)n;
+    /* both signs beyond rounding: C is not convex (outside the documented
+     * domain), and which vertex is largest a near tie that the rounding
+     * broke (fenv 6000000 case 3500922): no orientation, as if flat */
+    if (pos > tol && neg > tol) return 0;
+    return pos > tol ? 1 : neg > tol ? -1 : 0;
+}
 
 /* The bounding box of (image of the cone C) clipped to the viewer's pixel
  * centres [0, g - 1] x [0, h - 1] (one lixel per pixel needs no more),
@@ -292,16 +415,27 @@ static int clipped_box(const swarp_mat4* M, const swarp_vec4* C, size_t n, doubl
     const double side[4][3] = {{1, 0, 0}, {-1, 0, g - 1.0}, {0, 1, 0}, {0, -1, h - 1.0}};
     int any = 0;
     double S[3] = {0, 0, 0};
+    lx_cols pc;
+    cols_init(M, &pc);
+    lx_ray r0, A, B;
+    ray_init(&pc, C[0], &r0);
+    B = r0;
     for (size_t j = 0; j < n; ++j) {
-        double a[3], b[3];
-        image_vec(M, C[j], a);
-        image_vec(M, C[(j + 1) % n], b);
+        A = B;
+        if (j + 1 < n)
+            ray_init(&pc, C[j + 1], &B);
+        else
+            B = r0;
+        const double* a = A.a;
+        const double* b = B.a;
+        double l[3];
+        edge_line(&pc, &A, &B, l);
         S[0] += a[0], S[1] += a[1], S[2] += a[2];
         double la[4], lb[4];
         int inside_a = a[2] > 0.0;
         for (int k = 0; k < 4; ++k) {
-            la[k] = side[k][0] * a[0] + side[k][1] * a[1] + side[k][2] * a[2];
-            lb[k] = side[k][0] * b[0] + side[k][1] * b[1] + side[k][2] * b[2];
+            la[k] = dot3(side[k], a);
+            lb[k] = dot3(side[k], b);
             if (la[k] < 0.0) inside_a = 0;
         }
         if (inside_a) { /* (a) */
@@ -310,8 +444,18 @@ static int clipped_box(const swarp_mat4* M, const swarp_vec4* C, size_t n, doubl
         }
         for (int k = 0; k < 4; ++k) { /* (b) */
             if (!((la[k] < 0.0 && lb[k] > 0.0) || (la[k] > 0.0 && lb[k] < 0.0))) continue;
-            double ta = lb[k] / (lb[k] - la[k]), tb = -la[k] / (lb[k] - la[k]);
+            /* the crossing (lb a - la b)/(lb - la): a combination with
+             * weights in [0, 1], which for a . b >= 0 cancels nothing; for
+             * a and b (nearly) antipodal it cancels to the rounding, and is
+             * formed as (s_k x (a x b))/(lb - la) ((a x b) x s =
+             * (a.s) b - (b.s) a) from l, a positive multiple of a x b
+             * (edge_line) */
+            const double ta = lb[k] / (lb[k] - la[k]), tb = -la[k] / (lb[k] - la[k]);
             double v[3] = {ta * a[0] + tb * b[0], ta * a[1] + tb * b[1], ta * a[2] + tb * b[2]};
+            if (dot3(a, b) < 0.0) {
+                cross3(side[k], l, v);
+                if (lb[k] - la[k] < 0.0) v[0] = -v[0], v[1] = -v[1], v[2] = -v[2];
+            }
             if (!(v[2] > 0.0)) continue;
             double x = v[0] / v[2], y = v[1] / v[2];
             if (x < -LX_CLIP_TOL || x > g - 1.0 + LX_CLIP_TOL || y < -LX_CLIP_TOL || y > h - 1.0 + LX_CLIP_TOL)
@@ -321,35 +465,45 @@ static int clipped_box(const swarp_mat4* M, const swarp_vec4* C, size_t n, doubl
         }
     }
     /* (c): corner K inside the cone when every edge sees it on the side of
-     * the interior vector S (sum of the unit vertex vectors).  det(a, b, S)
-     * of unit a, b is rounded by a few eps |S|; within LX_CONE_FLAT of that
-     * S lies on the edge's plane -- the cone is flat there (e.g. a cluster
-     * of rays and one direction at q = 0: a wedge of width 1e-76) -- and
-     * only corners on that plane can be inside; the sign of the rounding
-     * noise decided it before (issue 9: a corner 1835 lixels off the wedge
-     * inside under FE_UPWARD). */
+     * the interior vector S (sum of the unit vertex vectors).  Where l_j . S
+     * is within rounding (LX_CONE_FLAT) S lies on the edge's plane and its
+     * side is the rounding's: two a_m antipodal to 1e-30 (issue 9: vertices
+     * 1.7e38 and 4.7e31 out on either side along x) cancel in S, which then
+     * lies on the planes of the edges to the third vertex, and the corner
+     * test took a fat cone for flat.  Such an edge takes the cone's
+     * orientation instead.  A cone flat to rounding (orientation 0: e.g. a
+     * cluster of rays and one direction at q = 0, a wedge of width 1e-76,
+     * issue 9) has no inside: its clipped image is a segment whose ends are
+     * (a) or (b) points, a corner on it adds nothing, and one off it is out
+     * (before, the sign of the rounding noise put a corner 1835 lixels off
+     * the wedge inside under FE_UPWARD). */
     const double kx[4] = {0.0, g - 1.0, g - 1.0, 0.0}, ky[4] = {0.0, 0.0, h - 1.0, h - 1.0};
     const double s_norm = fabs(S[0]) + fabs(S[1]) + fabs(S[2]);
-    for (int q = 0; q < 4; ++q) {
-        double K[3] = {kx[q], ky[q], 1.0};
-        const double k_norm = fabs(K[0]) + fabs(K[1]) + 1.0;
-        int inside = n >= 3;
-        for (size_t j = 0; j < n && inside; ++j) {
-            double a[3], b[3];
-            image_vec(M, C[j], a);
-            image_vec(M, C[(j + 1) % n], b);
-            double dS = det3v(a, b, S), dK = det3v(a, b, K);
-            if (fabs(dS) <= LX_CONE_FLAT * s_norm) {
-                if (fabs(dK) > LX_CONE_FLAT * k_norm) inside = 0;
-            } else if (dS * dK < 0.0) {
-                inside = 0;
-            }
-        }
-        if (inside) {
-            box_add(box, K[0], K[1], c, s, s_x, s_y);
-            any = 1;
+    int inside[4] = {n >= 3, n >= 3, n >= 3, n >= 3};
+    int orient = 2; /* not yet known */
+    B = r0;
+    for (size_t j = 0; j < n && (inside[0] || inside[1] || inside[2] || inside[3]); ++j) {
+        A = B;
+        if (j + 1 < n)
+            ray_init(&pc, C[j + 1], &B);
+        else
+            B = r0;
+        double l[3];
+        edge_line(&pc, &A, &B, l);
+        const double dS = dot3(l, S);
+        const int flat = !(fabs(dS) > LX_CONE_FLAT * s_norm);
+        if (flat && orient == 2) orient = cone_orientation(&pc, C, n);
+        for (int q = 0; q < 4; ++q) {
+            const double K[3] = {kx[q], ky[q], 1.0};
+            const double dK = dot3(l, K);
+            if (flat ? orient == 0 || orient * dK < 0.0 : dS * dK < 0.0) inside[q] = 0;
         }
     }
+    for (int q = 0; q < 4; ++q)
+        if (inside[q]) {
+            box_add(box, kx[q], ky[q], c, s, s_x, s_y);
+            any = 1;
+        }
     return any && sw_finite(box->lo_x) && sw_finite(box->hi_x) && sw_finite(box->lo_y) && sw_finite(box->hi_y);
 }
 

@@ -1230,6 +1230,85 @@ START_TEST(fenvf_restrict_flat_cone_rounding_mode) {
 }
 END_TEST
 
+/* fenvi pass: robust_fenv 240000 (issue 9), swarp_lixel_restrict case
+ * 163021.  M is affine (q = 0.53 for every point) and two vertices of C lie
+ * 1.7e38 and 4.7e31 out along x, on either side: their light images are
+ * 1.6e38 and 4e31 lixels out along one direction u = M's first column, and
+ * the edge between them images to a line through M (0, 2e-5, -68), 95 lixels
+ * from the view's corner (0, 0).  The view clipping formed that line from the
+ * two unit image vectors, antipodal to 1e-30: their x, y parts cancelled
+ * (a + b = (0, 0, 2e-32) to nearest, +-1e-16 noise in the directed modes),
+ * the edge's crossings of the sides landed at (0, 0) or nowhere, and the
+ * corner test took the triangle for flat.  Exactly, the clipped triangle is
+ * (0, 0), (95.36, 0), (414, 305.6), (414, 513.1), (0, 116.0): the rect
+ * [-232, 35] x [0, 2379]; before, to nearest [-232, 0] x [0, 2379], directed
+ * [-232, -86] x [203, 2379]. */
+START_TEST(fenvi_restrict_antipodal_edge_rounding_mode) {
+    static const swarp_mat4 M = {{-0x1.355ed3ad362fp-2, -0x1.28bc28e9de454p-2, -0x1.b91a7d7155f9ap-1, 0x0p+0,
+                                  0x1.ba5e4cee39e48p-2, 0x1.9c81a4d6aac46p-1, 0x1.2638bf971efbcp-2, 0x0p+0,
+                                  0x1.1bc107721c85cp-2, 0x1p+0, -0x1.5dd19d1fd5a58p-2, 0x0p+0, -0x1p+0, 0x1p+0,
+                                  0x1.fcb3cda8f8954p-2, 0x1.0ce00ec056f94p-1}};
+    static const swarp_vec4 C[3] = {{0x1.c42730b78399ep+4, -0x1.279a78dce8067p+5, 0x1.8ffffffffffffp+6, 0x1p+0},
+                                    {-0x1.9881974a870b2p+127, 0x1.6702dfc634aep+6, 0x1.9p+6, 0x1p+0},
+                                    {0x1.b1b07b37add8cp+105, 0x1.012c4b096102cp-285, -0x1.1058287de091cp+6, 0x1p+0}};
+    swarp_lixel_restrict_options o;
+    memset(&o, 0, sizeof o);
+    o.scale_x = 0x1.a9bbe10c5a4c8p-1;
+    o.scale_y = 0x1.fd75f8a1fcb98p+1;
+    o.twist = 0x1.1d7b51fc9922p+0;
+    o.view_width = 415;
+    o.view_height = 806;
+    static const int modes[4] = {FE_TONEAREST, FE_UPWARD, FE_DOWNWARD, FE_TOWARDZERO};
+    for (int m = 0; m < 4; ++m) {
+        swarp_lixel_rect r;
+        swarp_mat4 out;
+        fesetround(modes[m]);
+        swarp_status st = swarp_lixel_restrict(&M, C, 3, &o, &r, NULL, &out);
+        fesetround(FE_TONEAREST);
+        ck_assert_msg(st == SWARP_OK, "mode %d: %s", m, swarp_status_name(st));
+        ck_assert_msg(r.x0 == -232 && r.x1 == 35 && r.y0 == 0 && r.y1 == 2379,
+                      "mode %d: rect [%d, %d] x [%d, %d], exactly [-232, 35] x [0, 2379]", m, r.x0, r.x1, r.y0, r.y1);
+    }
+}
+END_TEST
+
+/* fenvi pass: robust_fenv 2000000 (issue 9), swarp_lixel_matrix case
+ * 530050.  The eye 1.4e6 from the origin looks along the plane z = -999996.6
+ * (n . v = 2e-15, far - near = 4.35).  PLANE_PARALLEL_VIEW compared
+ * |n . v| with 1e-9 for the view direction taken as V^-1's far point minus
+ * its near point, which cancelled at the eye's magnitude to 1e-10 of
+ * rounding: QUAD_ACROSS_INFINITY under FE_TOWARDZERO.  Now the direction is
+ * the cross product of M_v's rows' x, y, z parts.  ILL_CONDITIONED (of higher
+ * priority) is the solver's conditioning threshold, which rounding decides
+ * here; across infinity must not come. */
+START_TEST(fenvi_matrix_parallel_view_rounding_mode) {
+    static const swarp_mat4 Mv = {{-0x1.25f7c8cfb36b4p-50, 0x1.7523af7f55577p-2, 0x1.eb47677322518p-2,
+                                   0x1.e31794b4f80b1p-2, 0x0p+0, 0x1.8f4cd7c30f5ep-3, -0x1.cb178eaa1ad89p-1,
+                                   -0x1.c3710b910b455p-1, 0x1.ebee4c31ec4cap-3, 0x1.bdf609a685cafp-50,
+                                   0x1.25940d5e8ab6fp-49, 0x1.20afa17823401p-49, 0x1.d5235cc1b4e39p+17,
+                                   0x1.63da1f3da8237p+18, 0x1.d48639d5646c7p+18, 0x1.ccb77e4e1de43p+18}};
+    swarp_light L;
+    memset(&L, 0, sizeof L);
+    L.type = SWARP_LIGHT_DIRECTIONAL;
+    L.direction.x = -0x1.9adc28d2c7d1p-3;
+    L.direction.y = 0x1.d6937a17f179cp-2;
+    L.direction.z = 0x1.b9f36c8117166p-1;
+    const swarp_plane P = {0.0, 0.0, 1.0, 0x1.e847932d24a41p+19};
+    swarp_lixel_options o;
+    memset(&o, 0, sizeof o);
+    o.raise = 0x1.d354b0b433194p-1;
+    static const int modes[4] = {FE_TONEAREST, FE_UPWARD, FE_DOWNWARD, FE_TOWARDZERO};
+    for (int m = 0; m < 4; ++m) {
+        swarp_mat4 M;
+        fesetround(modes[m]);
+        swarp_status st = swarp_lixel_matrix(&Mv, 1102, 2087, &L, &P, &o, &M, NULL);
+        fesetround(FE_TONEAREST);
+        ck_assert_msg(st == SWARP_INFO_LIXEL_PLANE_PARALLEL_VIEW || st == SWARP_INFO_LIXEL_ILL_CONDITIONED,
+                      "mode %d: %s", m, swarp_status_name(st));
+    }
+}
+END_TEST
+
 /* fenv swarp_plan 480000 case 385901: a 1e-15 rad field of view seeing the
  * floor y = 0.6 from 2.5e5 off the origin.  The planner's swarp_lixel_matrix
  * call hands solve5 the light, three corner hits that coincide to rounding
@@ -1267,6 +1346,55 @@ START_TEST(fenvj_solve5_cluster_coplanar_rounding_mode) {
 }
 END_TEST
 
+/* fenvi pass: robust_fenv 6000000 (issue 9), swarp_lixel_restrict case
+ * 3500922.  C is not convex (outside the documented domain; the hard-case
+ * generator draws its vertices at random): two of them 1.4e54 and 4.4e25
+ * out image to antipodal directions, the interior vector S lies on the
+ * plane of the edge from the direction vertex, and that edge took the
+ * cone's orientation, the sign of the largest (sum_j l_j) . a_m -- a near
+ * tie between two vertices of opposite sign, which the rounding broke:
+ * three view corners inside (rect [77, 3107] x [-364, 3300]) or none
+ * ([77, 365] x [-89, 203], FE_DOWNWARD).  Both signs beyond rounding now
+ * give no orientation. */
+START_TEST(fenvi_restrict_nonconvex_orientation_rounding_mode) {
+    static const swarp_mat4 M = {{0x1.9a0458143e19ep-1, -0x1.43fc5f3f91b6p-1, -0x1.7c5876a1703c8p-2, 0x0p+0,
+                                  -0x1.867f298351bep-5, -0x1.1eca8d29333d8p-1, -0x1.0919919050384p-1, 0x0p+0,
+                                  0x1.10d43bbb7e17cp-2, -0x1.bd0c8246ecd14p-1, -0x1.263a096734e1cp-1, 0x0p+0,
+                                  -0x1.5072f9bad090ep-1, 0x1.fffffffffffffp-1, 0x1.1dd460f0aca5cp-1,
+                                  0x1.1e0782dbb9ae7p+0}};
+    static const swarp_vec4 C[4] = {{-0x1.82bab446a492p+2, -0x1.9000000000001p+6, -0x1.2c0411dce699p+5, 0x1p+0},
+                                    {0x1.dd6fde5fec6dbp+179, 0x1.3eb2a8a5fea7p+2, -0x1.5e3596af1accp+2, 0x1p+0},
+                                    {-0x1.22f457f3af67p+85, -0x1.9000000000001p+6, -0x1.23111ca3ec29cp+6, 0x1p+0},
+                                    {-0x1.024c1633d818ep+6, -0x1.2c3bb416636fcp+6, -0x1.2cbda23db758p+4, 0x0p+0}};
+    swarp_lixel_restrict_options o;
+    memset(&o, 0, sizeof o);
+    o.scale_x = 0x1.91fd81e1e2014p+1;
+    o.scale_y = 0x1.1ba143ffdf2b4p+1;
+    o.twist = -0x1.522fbc3cff35p-2;
+    o.view_width = 507;
+    o.view_height = 1575;
+    static const int modes[4] = {FE_TONEAREST, FE_UPWARD, FE_DOWNWARD, FE_TOWARDZERO};
+    swarp_lixel_rect r0;
+    memset(&r0, 0, sizeof r0);
+    swarp_status st0 = SWARP_OK;
+    for (int m = 0; m < 4; ++m) {
+        swarp_lixel_rect r;
+        swarp_mat4 out;
+        fesetround(modes[m]);
+        swarp_status st = swarp_lixel_restrict(&M, C, 4, &o, &r, NULL, &out);
+        fesetround(FE_TONEAREST);
+        if (m == 0) {
+            st0 = st, r0 = r;
+            continue;
+        }
+        ck_assert_msg(st == st0, "mode %d: %s, to nearest %s", m, swarp_status_name(st), swarp_status_name(st0));
+        ck_assert_msg(r.x0 == r0.x0 && r.x1 == r0.x1 && r.y0 == r0.y0 && r.y1 == r0.y1,
+                      "mode %d: rect [%d, %d] x [%d, %d], to nearest [%d, %d] x [%d, %d]", m, r.x0, r.x1, r.y0, r.y1, r0.x0,
+                      r0.x1, r0.y0, r0.y1);
+    }
+}
+END_TEST
+
 static Suite* lixel_suite(void) {
     Suite* s = suite_create("lixel");
     TCase* tc = tcase_create("lixel");
@@ -1292,7 +1420,10 @@ static Suite* lixel_suite(void) {
     tcase_add_test(tc, fenvf_twist_below_on_line_rounding_mode); /* fenvf pass */
     tcase_add_test(tc, fenvf_split_light_floor_bound_rounding_mode); /* fenvf pass */
     tcase_add_test(tc, fenvf_restrict_flat_cone_rounding_mode); /* fenvf pass */
+    tcase_add_test(tc, fenvi_restrict_antipodal_edge_rounding_mode); /* fenvi pass */
+    tcase_add_test(tc, fenvi_matrix_parallel_view_rounding_mode); /* fenvi pass */
     tcase_add_test(tc, fenvj_solve5_cluster_coplanar_rounding_mode); /* fenvj pass */
+    tcase_add_test(tc, fenvi_restrict_nonconvex_orientation_rounding_mode); /* fenvi pass */
     /* @@MORE_TCASES@@ */
     suite_add_tcase(s, tc);
     return s;

@@ -193,12 +193,19 @@ static void gen_scene(swr_ctx* c, const viewer* v, swarp_light* L, swarp_plane* 
      * within the rounding of its d, and PLANE_THROUGH_EYE (LX_EYE_EPS) is
      * decided by the rounding of V^-1 at the eye's magnitude (fenv cases
      * 2076, 2555, 6936: eye ~1e5..1e6, THROUGH_EYE under round-to-nearest,
-     * NOT_VISIBLE / LIGHT_PARALLEL_PLANE / LIGHT_ON_PLANE under directed) */
+     * NOT_VISIBLE / LIGHT_PARALLEL_PLANE / LIGHT_ON_PLANE under directed).
+     * The eye is implied by M_v, whose translation column (magnitude
+     * |eye|) the harness rounds twice (V, then P V) and the library inverts
+     * (V^-1, condition a few): it is known to a few ulps of |eye| times
+     * that, 64 eps |eye| as the fenv tolerance takes it.  A plane within
+     * that of the eye is through it to rounding (fenv 2000000 cases 854050,
+     * 1651362: planes 9 and 10 ulps of 1e6 from the eye, pi'_z/|pi'| = 1e-10
+     * = LX_EYE_EPS to nearest, 0.7e-10 .. 1.7e-10 by rounding mode). */
     {
         long double e = (long double)nrm.x * v->eye.x + (long double)nrm.y * v->eye.y + (long double)nrm.z * v->eye.z;
         long double m = fabsl((long double)nrm.x * v->eye.x) + fabsl((long double)nrm.y * v->eye.y) +
                         fabsl((long double)nrm.z * v->eye.z);
-        if (fabsl(e + P->d) <= 4 * DBL_EPSILON * m) c->rounding_edge = 1;
+        if (fabsl(e + P->d) <= 64 * DBL_EPSILON * m) c->rounding_edge = 1;
     }
     L->type = (swarp_light_type)swr_enum(c, 3);
     L->direction = gen_dir(c);
@@ -234,6 +241,33 @@ static void expect_light(swr_ctx* c, const swarp_light* L) {
     for (int i = 0; i < 4; ++i)
         if (L->_reserved[i]) swr_expect(c, SWARP_ERR_RESERVED_NONZERO);
     if (L->_reserved0) swr_expect(c, SWARP_ERR_RESERVED_NONZERO);
+}
+
+/* The condition of the five correspondences' positions, which the solve's
+ * conditioning (1/k^2 above) then amplifies (the condition of a composition
+ * is at most the product).  M_v holds the eye in its translation column
+ * (R eye, magnitude |eye|): its entries perturbed by eps move the eye by
+ * eps |eye|, and with it the corner rays' hit points on P, which lie at
+ * least the eye's distance to P from the eye and fix M_l: eps |eye| against
+ * that distance (P's d, of magnitude |n| |eye| for a plane near the eye,
+ * moves P as much).  A point light's position enters as given: eps |l| against
+ * its distance to P, which its images (p-hat, the centre of projection) are
+ * measured by.  (fenv 240000 case 147509: eye 1.4e6 from the origin, 0.73
+ * above the floor, 1/k^2 = 55: M_l 1.1e-9 relative by rounding mode; M_v's
+ * entries moved by one ulp move M_l by 7.5e6 eps, below 55 * 1.4e6.) */
+static double offset_cond(const viewer* v, const swarp_light* L, const swarp_plane* P) {
+    const double nn = sqrt(P->a * P->a + P->b * P->b + P->c * P->c);
+    if (!(nn > 0) || !swr_isfin(nn)) return 1;
+    const double de = fabs(P->a * v->eye.x + P->b * v->eye.y + P->c * v->eye.z + P->d) / nn;
+    const double me = fmax(fabs(v->eye.x), fmax(fabs(v->eye.y), fabs(v->eye.z)));
+    double k = de > 0 ? 1 + me / de : INFINITY;
+    if (L->type == SWARP_LIGHT_POINT) {
+        const swarp_vec3* l = &L->position;
+        const double dl = fabs(P->a * l->x + P->b * l->y + P->c * l->z + P->d) / nn;
+        const double ml = fmax(fabs(l->x), fmax(fabs(l->y), fabs(l->z)));
+        k = fmax(k, dl > 0 ? 1 + ml / dl : INFINITY);
+    }
+    return k;
 }
 
 static void e_lixel_matrix(swr_ctx* c) {
@@ -276,12 +310,25 @@ static void e_lixel_matrix(swr_ctx* c) {
     swarp_lixel_info info;
     swr_fill(&M, sizeof M);
     swr_fill(&info, sizeof info);
-    swr_args(c, "eye=(%.17g %.17g %.17g) dir=(%.17g %.17g %.17g) fovy %.17g aspect %.17g near %.17g far %.17g light type %d dir=(%.17g %.17g %.17g) pos=(%.17g %.17g %.17g) plane (%.17g %.17g %.17g %.17g) g=%u h=%u",
+    swr_args(c, "eye=(%.17g %.17g %.17g) dir=(%.17g %.17g %.17g) fovy %.17g aspect %.17g near %.17g far %.17g light type %d dir=(%.17g %.17g %.17g) pos=(%.17g %.17g %.17g) plane (%.17g %.17g %.17g %.17g) g=%u h=%u raise %.17g%s",
              v.eye.x, v.eye.y, v.eye.z, v.dir.x, v.dir.y, v.dir.z, v.fovy, v.aspect, v.near, v.far, (int)L.type,
-             L.direction.x, L.direction.y, L.direction.z, L.position.x, L.position.y, L.position.z, P.a, P.b, P.c, P.d, g, h);
+             L.direction.x, L.direction.y, L.direction.z, L.position.x, L.position.y, L.position.z, P.a, P.b, P.c, P.d, g, h,
+             opt.raise, use_opt ? "" : " (no options)");
     swarp_status st = SWR_CALL(c, swarp_lixel_matrix(n_mv ? NULL : &v.M_v, g, h, n_l ? NULL : &L, n_p ? NULL : &P,
                                                     use_opt ? &opt : NULL, n_out ? NULL : &M, n_info ? NULL : &info));
     if (st == SWARP_INFO_LIXEL_ILL_CONDITIONED || st == SWARP_ERR_LIXEL_COPLANAR) c->rounding_edge = 1;
+    /* PLANE_PARALLEL_VIEW is |n . v| < 1e-9 (LX_VIEW_PARALLEL_EPS) for the
+     * unit normal and the view direction, which the library takes from the
+     * x, y, z parts of M_v's rows (rounded by the harness's P V product:
+     * a few eps, the rows' condition a few): within 64 eps of the bound the
+     * rounding decides (fenv 2000000 cases 1030799, 1429309: the
+     * generator's 1e-9 component of dir along n, |n . v| - 1e-9 = 3e-25;
+     * PARALLEL_VIEW or QUAD_ACROSS_INFINITY by rounding mode) */
+    {
+        const double nn = sqrt(P.a * P.a + P.b * P.b + P.c * P.c);
+        const double nv = fabs(P.a * v.dir.x + P.b * v.dir.y + P.c * v.dir.z) / nn;
+        if (nn > 0 && swr_isfin(nv) && fabs(nv - 1e-9) <= 64 * DBL_EPSILON) c->rounding_edge = 1;
+    }
     if (!swr_verdict(c, st, 2, (void*)&M, sizeof M, (void*)&info, sizeof info)) return;
     /* the conditioning of the call, asked for or not (as in swarp_lixel_solve5's
      * entry): without out_info a second call in the default environment */
@@ -292,7 +339,7 @@ static void e_lixel_matrix(swr_ctx* c) {
         if (!swarp_status_is_error(swarp_lixel_matrix(&v.M_v, g, h, &L, &P, use_opt ? &opt : NULL, &M2, &i2)))
             k = i2.conditioning;
     }
-    if (k > 0) swr_cond(c, 1.0 / (k * k));
+    if (k > 0) swr_cond(c, 1.0 / (k * k) * offset_cond(&v, &L, &P));
     if (k < 1e-4) c->rounding_edge = 1;
     rec_mat(c, "M_l", &M);
     SWR_CHECK(c, maxabs(&M) == 1.0, "largest |element| %.17g, documented 1", maxabs(&M));
