@@ -390,6 +390,23 @@ static void setup_b_cond(swr_ctx* c, const scene_args* s, swarp_status st, const
     }
 }
 
+/* How far outside S a point of B may lie: 1e-9 of the box's coordinates,
+ * and for a point light 1e-9 of its position's, as swarp_body_from_h's
+ * entry (gtol): B = conv(H ∪ {l}) ∩ S is clipped with the on-plane
+ * tolerance SWARP_POLY_EPS_REL of the clipped polyhedron's scale, which is
+ * |l| for a far light, so a vertex that far outside a face is on it
+ * (fenv 1920000 setup_points case 1455776, the default mode too: a light
+ * at y = 1e7, an edge of conv(H ∪ {l}) leaving S through the face
+ * z = -27.01 at a slope of 5.8e-6, cut by the face y = -0.986 one unit on,
+ * 5.9e-6 outside; merge distance 1e-5). */
+static double b_in_box_tol(const scene_args* s) {
+    double t = 1e-9 * (fabs(s->box.min.x) + fabs(s->box.max.x) + fabs(s->box.min.y) + fabs(s->box.max.y) + fabs(s->box.min.z) +
+                       fabs(s->box.max.z) + 1);
+    const swarp_vec3 l = s->light.position;
+    if ((int)s->light.type == 2 && fin3(&l)) t = fmax(t, 1e-9 * fmax(fabs(l.x), fmax(fabs(l.y), fabs(l.z))));
+    return t;
+}
+
 static void check_setup_result(swr_ctx* c, const scene_args* s, swarp_status st, const swarp_setup_result* r,
                                const swarp_vec3* pts, size_t count, int have_pts) {
     /* B of one or two points: the view frustum and the box (or the spot's
@@ -460,8 +477,7 @@ static void check_setup_result(swr_ctx* c, const scene_args* s, swarp_status st,
     SWR_CHECK(c, count == r->point_count, "out_count %zu, point_count %u", count, r->point_count);
     /* B lies in the scene box and the focused matrix maps it into the unit
      * cube (PSM's inverse projection maps it differently: not checked) */
-    double tol_box = 1e-9 * (fabs(s->box.min.x) + fabs(s->box.max.x) + fabs(s->box.min.y) + fabs(s->box.max.y) +
-                             fabs(s->box.min.z) + fabs(s->box.max.z) + 1);
+    double tol_box = b_in_box_tol(s);
     /* the fit is only as good as the points are resolved: coordinates of
      * magnitude X carry ulp(X) ~ eps X, relative to B's extent that is
      * eps X / extent (1e6 offsets around a 1e-6 frustum: O(1)) */
@@ -673,8 +689,7 @@ static void e_body_points(swr_ctx* c) {
     }
     if (!swr_verdict(c, st, 2, (void*)pts, sizeof pts, (void*)&count, sizeof count)) return;
     SWR_CHECK(c, count <= cap && count <= SWARP_BODY_MAX_POINTS, "count %zu", count);
-    double tol = 1e-9 * (fabs(s.box.min.x) + fabs(s.box.max.x) + fabs(s.box.min.y) + fabs(s.box.max.y) +
-                         fabs(s.box.min.z) + fabs(s.box.max.z) + 1);
+    double tol = b_in_box_tol(&s);
     rec_point_set(c, pts, count < SWARP_BODY_MAX_POINTS ? count : SWARP_BODY_MAX_POINTS);
     body_sweep_cut_cond(c, &s, near, far, pts, count < SWARP_BODY_MAX_POINTS ? count : SWARP_BODY_MAX_POINTS);
     for (size_t i = 0; i < count && i < SWARP_BODY_MAX_POINTS; ++i) {
