@@ -267,6 +267,18 @@ swarp_status sw_warp_lispsm(const swarp_mat4* M, const swarp_mat4* M_inv, const 
         c_ls.z = fmin(fmax(c_ls.z, zmin), zmax);
         if (!sw_finite(c_ls.x)) c_ls.x = 0.5 * (xmin + xmax);
         if (!sw_finite(c_ls.z)) c_ls.z = 0.5 * (zmin + zmax);
+        /* C_start on the light's plane, w = 0 exactly (the point light at
+         * s = eye + near v): x/w and z/w are +-inf by the sign of that zero,
+         * which the rounding mode picks (-0 under FE_DOWNWARD), and 0/0 = NaN
+         * went through fmax as B's minimum.  The side is the numerator's,
+         * whatever the zero's sign; the middle of B's box where the
+         * numerator is zero too (s at the light: no direction at all)
+         * (issue 9, fenv swarp_setup_points 3840000 case 2167489: z clamped
+         * to z_max to nearest and to z_min downward, z_0 0.013 vs 0.74). */
+        if (c_h.w == 0.0) {
+            c_ls.x = c_h.x > 0.0 ? xmax : c_h.x < 0.0 ? xmin : 0.5 * (xmin + xmax);
+            c_ls.z = c_h.z > 0.0 ? zmax : c_h.z < 0.0 ? zmin : 0.5 * (zmin + zmax);
+        }
     }
     /* z_0, z_1 of (3.2): eye depths of the two ends of P's axis, C_start and
      * (c_x, y_max, c_z) ([WS06] calcNoptGeneral).  z_0 is kept at or beyond

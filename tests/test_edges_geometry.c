@@ -1784,6 +1784,70 @@ START_TEST(fe_setup_points_psm_huge_slideback) {
 }
 END_TEST
 
+/* fenvn pass: LiSPSM with the [WS06] centre, B's nearest vertex the point
+ * light itself (B = conv(H u {l}) n S), so C_start is the light: (0, 0, 1, 0)
+ * in its space, x/w = 0/0 and z/w = 1/0 with a zero w whose sign the
+ * rounding picks (-0 under FE_DOWNWARD).  The centre was clamped to z_max
+ * to nearest and to z_min downward (z_0 0.013 vs 0.74, n 6 % off, light_proj
+ * entries of opposite sign; issue 9, fenv swarp_setup_points 3840000 case
+ * 2167489).  A zero w takes the numerator's side, or the middle of B's box
+ * (src/warp.c); every mode gives the default mode's map to 1e-9. */
+START_TEST(fe_setup_points_centre_at_point_light) {
+    const swarp_camera cam = {{-0x1.552be393132dfp+5, -0x1.b8f2f2c2f3cb8p+2, -0x1.71d45bf1feefp+4},
+                              {-0x1.ab668fa63bb28p-2, -0x1.13029b718ea04p-1, 0x1.774b427f1a26dp-1},
+                              {0, 1, 0},
+                              0x1.6666666666666p+1,
+                              0x1.545fc544863e2p+1,
+                              0x1.abd391069e2fap-7,
+                              0x1.c29181c88137ap+11,
+                              {0, 0, 0, 0}};
+    const swarp_light l = {SWARP_LIGHT_POINT, 0, {-0x1.1170d966746bp-1, 0x1.18d6a148562f3p-2, -0x1.997578a44b4f2p-1},
+                           {0x1.6442a6dc00435p+5, 0x1.019f8f98990ep+4, -0x1.61d45bf1feefp+4}, 0x1.6e809d551ced9p+0,
+                           {0, 0, 0, 0}};
+    const swarp_vec3 pts[11] = {{-0x1.23e1df5fd3f5ep+5, -0x1.262a61abd76e8p+3, -0x1.4b6f821093567p+4},
+                                {-0x1.5d9c3f7a6afccp+5, -0x1.d6cd71098f5cap+2, -0x1.7f08804671ee7p+4},
+                                {-0x1.6d5e49c943255p+5, -0x1.82124fdaa8158p+2, -0x1.7f08804671ee7p+4},
+                                {-0x1.51307cf71a88p+5, -0x1.262a61abd76e8p+3, -0x1.7f08804671ee7p+4},
+                                {-0x1.9p+5, -0x1.d68bde7d7c1p+1, -0x1.7f08804671ee7p+4},
+                                {-0x1.9p+5, -0x1.262a61abd76e8p+3, -0x1.7f08804671ee7p+4},
+                                {-0x1.11d5de47485b1p+5, -0x1.d7e4259caeccep+1, -0x1.df0e17facde2cp+3},
+                                {-0x1.bfc9c5d15478ap+4, -0x1.262a61abd76e8p+3, -0x1.df0e17facde2cp+3},
+                                {-0x1.9p+5, 0x1.396b2b8a57c3ep+2, -0x1.df0e17facde2dp+3},
+                                {-0x1.9p+5, -0x1.262a61abd76e8p+3, -0x1.df0e17facde2dp+3},
+                                {0x1.6442a6dc00435p+5, 0x1.019f8f98990ep+4, -0x1.61d45bf1feefp+4}};
+    swarp_setup_options o;
+    memset(&o, 0, sizeof o);
+    o.technique = SWARP_TECHNIQUE_LISPSM;
+    o.param = SWARP_WARP_PARAM_PSEUDO;
+    o.center = SWARP_WARP_CENTER_NEAREST_VERTEX;
+    o.map_width = 7590;
+    o.map_height = 4218;
+    o.pancake = 1;
+    o.n_user = 0x1.daf04d683105bp-2;
+    o.pseudo_near = 0x1.1031c249be764p-3;
+    o.pseudo_far = 0x1.677d629d6df67p-1;
+    o.slideback = 0x1.76897cc63854cp-1;
+    swarp_setup_result r0;
+    const swarp_status s0 = swarp_setup_points(&cam, &l, pts, 11, NULL, 0, cam.near, cam.far, &o, &r0);
+    ck_assert_msg(!swarp_status_is_error(s0), "%s", swarp_status_name(s0));
+    double scale = 0;
+    for (int i = 0; i < 16; ++i) scale = fmax(scale, fmax(fabs(r0.light_proj.m[i]), fabs(r0.matrix.m[i])));
+    for (size_t m = 0; m < sizeof tu_modes / sizeof tu_modes[0]; ++m) {
+        swarp_setup_result r1;
+        fesetround(tu_modes[m]);
+        const swarp_status s1 = swarp_setup_points(&cam, &l, pts, 11, NULL, 0, cam.near, cam.far, &o, &r1);
+        fesetround(FE_TONEAREST);
+        ck_assert_msg(s1 == s0, "mode %zu: %s, default %s", m, swarp_status_name(s1), swarp_status_name(s0));
+        for (int i = 0; i < 16; ++i) {
+            ck_assert_msg(fabs(r1.light_proj.m[i] - r0.light_proj.m[i]) <= 1e-9 * scale, "mode %zu: light_proj[%d] %.17g, default %.17g", m,
+                          i, r1.light_proj.m[i], r0.light_proj.m[i]);
+            ck_assert_msg(fabs(r1.matrix.m[i] - r0.matrix.m[i]) <= 1e-9 * scale, "mode %zu: matrix[%d] %.17g, default %.17g", m, i,
+                          r1.matrix.m[i], r0.matrix.m[i]);
+        }
+    }
+}
+END_TEST
+
 int main(void) {
     Suite* s = suite_create("edges_geometry");
     TCase* t = tcase_create("geometry");
@@ -1836,6 +1900,8 @@ int main(void) {
     tcase_add_test(t, fe_body_from_h_point_light_far_h_rounding_mode);
     /* fenvl pass */
     tcase_add_test(t, fe_setup_points_psm_huge_slideback);
+    /* fenvn pass */
+    tcase_add_test(t, fe_setup_points_centre_at_point_light);
     suite_add_tcase(s, t);
     return tu_run_suite(s) ? 1 : 0;
 }
