@@ -1710,6 +1710,67 @@ static void e_warp_lispsm(swr_ctx* c) {
     }
 }
 
+/* PSM fits its map in the camera's post-perspective space (PPS) [KOZ]
+ * §14.2: X = P_c V_c p for the (slid-back) camera, so with q = p - eye', the
+ * depth d = f·q + delta and t_x, t_y the half-view tangents, B's PPS
+ * coordinates are x = (r·q)/(t_x d), y = (u·q)/(t_y d), z = a - b/d
+ * (a = (f' + n')/(f' - n'), b = 2 f' n'/(f' - n'), n' = near + delta,
+ * f' = far + delta).  q is formed from world coordinates and carries eps M
+ * of rounding (M: the largest of p's and the eye's coordinates), so each PPS
+ * coordinate carries eps M times its derivative in q -- at most
+ * (1/t_x + |x|)/d for x, (1/t_y + |y|)/d for y, b/d^2 for z -- plus a few
+ * eps of its own size from the projection and the divide by w (|a - b/d|
+ * for z: the constant a is rounded in with it).  Against B's
+ * extent in PPS (a point light with it: the light's cone is formed from
+ * differences with its PPS position) that is the condition number of what
+ * the fit, the light's cone and its axis are computed from.  B far beyond
+ * the far plane squeezes its PPS depths into b Δd/d^2 (fenv 3840000
+ * swarp_setup_points case 2005391: B 1.7e6 deep with far = 301, the PPS z of
+ * B and the light within 4.4e-11 of 1.01, cond 2.3e10; light_proj's y row
+ * moved by 1.5e-5 relative with the rounding mode). */
+static void psm_pps_cond(swr_ctx* c, const scene_args* s, const swarp_vec3* pts, size_t n) {
+    const swarp_camera* cam = &s->cam;
+    const double near = cam->near, far = cam->far;
+    if (!(s->use_opt && s->opt.technique == SWARP_TECHNIQUE_PSM) || n == 0 || n > SWARP_BODY_MAX_POINTS) return;
+    if (!(near > 0 && far > near && isfinite(far)) || !fin3(&cam->eye) || !fin(cam->fovy) || !fin(cam->aspect) ||
+        !fin(s->opt.slideback))
+        return;
+    const swarp_vec3 f = unit_scaled(cam->dir), r = unit_scaled(cross(f, cam->up)), u = cross(r, f);
+    long double delta = s->opt.slideback;
+    if (s->opt.psm_slideback && delta == 0) { /* src/psm.c: automatic slide-back */
+        long double zmin = INFINITY;
+        for (size_t i = 0; i < n; ++i) zmin = fminl(zmin, dot(v3(pts[i].x - cam->eye.x, pts[i].y - cam->eye.y, pts[i].z - cam->eye.z), f));
+        if (zmin < near) delta = near - zmin;
+    }
+    const long double nn = near + delta, fa = far + delta, b = 2 * fa * nn / (fa - nn), a = (fa + nn) / (fa - nn);
+    const long double ty = tanl(0.5L * cam->fovy), tx = ty * cam->aspect;
+    if (!(ty > 0 && tx > 0 && isfinite((double)b))) return;
+    swarp_vec3 q[SWARP_BODY_MAX_POINTS + 1];
+    size_t m = 0;
+    for (size_t i = 0; i < n; ++i) q[m++] = pts[i];
+    if ((int)s->light.type == SWARP_LIGHT_POINT && fin3(&s->light.position)) q[m++] = s->light.position;
+    long double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY}, R[3] = {0, 0, 0};
+    for (size_t i = 0; i < m; ++i) {
+        const long double qx = (long double)q[i].x - cam->eye.x, qy = (long double)q[i].y - cam->eye.y,
+                          qz = (long double)q[i].z - cam->eye.z;
+        const long double d = qx * f.x + qy * f.y + qz * f.z + delta;
+        if (!(d > 0)) continue;
+        const long double M = fmaxl(fmaxl(fmaxl(fabsl(q[i].x), fabsl(q[i].y)), fabsl(q[i].z)),
+                                    fmaxl(fmaxl(fabsl(cam->eye.x), fabsl(cam->eye.y)), fabsl(cam->eye.z)));
+        const long double x = (qx * r.x + qy * r.y + qz * r.z) / (tx * d), y = (qx * u.x + qy * u.y + qz * u.z) / (ty * d),
+                          z = -b / d; /* + a: a constant, in the rounding, not in the extent */
+        const long double v[3] = {x, y, z}, g[3] = {(1 / tx + fabsl(x)) / d, (1 / ty + fabsl(y)) / d, b / (d * d)},
+                          full[3] = {fabsl(x), fabsl(y), fabsl(a + z)};
+        for (int k = 0; k < 3; ++k) {
+            lo[k] = fminl(lo[k], v[k]), hi[k] = fmaxl(hi[k], v[k]);
+            R[k] = fmaxl(R[k], M * g[k] + full[k]);
+        }
+    }
+    for (int k = 0; k < 3; ++k) {
+        if (hi[k] > lo[k] && isfinite((double)(R[k] / (hi[k] - lo[k])))) swr_cond(c, (double)(R[k] / (hi[k] - lo[k])));
+    }
+}
+
 static void e_setup_points(swr_ctx* c) {
     SKIP_IF_MISSING(c, swarp_setup_points);
     scene_args s;
@@ -1746,6 +1807,7 @@ static void e_setup_points(swr_ctx* c) {
     else if (!(s.cam.near > 0 && s.cam.far > s.cam.near)) swr_expect(c, SWARP_ERR_NEAR_FAR);
     if (n == 0 || n > SWARP_BODY_MAX_POINTS) swr_expect(c, SWARP_ERR_INVALID_ARGUMENT), swr_domain(c, SWARP_ERR_NULL_POINTER);
     scene_cond(c, &s, s.cam.near, s.cam.far);
+    psm_pps_cond(c, &s, pts, n);
     swr_args(c, "n %zu p0 (%g %g %g) nr %zu near %g far %g tech %d param %d n_user %g pseudo %g %g slideback %g", n, pts[0].x, pts[0].y,
              pts[0].z, nr, s.cam.near, s.cam.far, s.use_opt ? (int)s.opt.technique : -1, (int)s.opt.param, s.opt.n_user,
              s.opt.pseudo_near, s.opt.pseudo_far, s.opt.slideback);
