@@ -188,9 +188,19 @@ static void sw_camera_matrix(const swarp_camera* cam, double near, double far, d
  * beside it and the map collapsed (SWARP_INFO_FLAT_EXTENT under
  * FE_DOWNWARD only; issue 9, fenv swarp_setup_points case 28597).  It
  * casts no shadow into the light frustum. */
-static int sw_psm_in_front(const swarp_mat4* QM, swarp_vec3 p) {
+/* wab: the sizes of the terms of QM's w row as the product Q M_c summed
+ * them, sum_k |Q_3k| |M_c,kj|.  QM's entries carry eps of those terms, more
+ * than eps of the entries themselves where the terms cancel, so w at p is
+ * rounded to eps of sum_j wab_j |p_j| too -- with only its own terms as
+ * the bound the light, a vertex of B, had w > 0 beyond it under
+ * FE_DOWNWARD, passed as a caster with depth -2.8e15 and the fit called x
+ * and y flat beside it (issue 9, fenv swarp_setup_points 3840000 case
+ * 3804776: a scene 1e5 from the origin, the light 1 unit above the eye). */
+static int sw_psm_in_front(const swarp_mat4* QM, const double wab[4], swarp_vec3 p) {
     const double t0 = sw_at(QM, 3, 0) * p.x, t1 = sw_at(QM, 3, 1) * p.y, t2 = sw_at(QM, 3, 2) * p.z, t3 = sw_at(QM, 3, 3);
-    return t0 + t1 + t2 + t3 > 64.0 * DBL_EPSILON * (fabs(t0) + fabs(t1) + fabs(t2) + fabs(t3));
+    const double terms = fmax(fabs(t0) + fabs(t1) + fabs(t2) + fabs(t3),
+                              wab[0] * fabs(p.x) + wab[1] * fabs(p.y) + wab[2] * fabs(p.z) + wab[3]);
+    return t0 + t1 + t2 + t3 > 64.0 * DBL_EPSILON * terms;
 }
 
 swarp_status sw_psm_setup(const swarp_camera* cam, const swarp_light* light, const swarp_vec3* B, size_t nb,
@@ -285,6 +295,11 @@ swarp_status sw_psm_setup(const swarp_camera* cam, const swarp_light* light, con
     sw_set(&Q, 3, 0, wa * a.x), sw_set(&Q, 3, 1, wa * a.y), sw_set(&Q, 3, 2, wa * a.z), sw_set(&Q, 3, 3, ww);
     swarp_mat4 QM;
     sw_mul(&Q, &Mc, &QM);
+    double wab[4];
+    for (int j = 0; j < 4; ++j) {
+        wab[j] = 0.0;
+        for (int k = 0; k < 4; ++k) wab[j] += fabs(sw_at(&Q, 3, k)) * fabs(sw_at(&Mc, k, j));
+    }
     /* unit cube clipping [KOZ] §14.2.2: x, y over the receivers H.  Depth:
      * over H and the casters that can shadow them, i.e. B inside the light
      * frustum over the receivers' window (its four side planes pulled back to
@@ -298,7 +313,7 @@ swarp_status sw_psm_setup(const swarp_camera* cam, const swarp_light* light, con
      * FE_TOWARDZERO its w came out +1e-16 and the map collapsed around it
      * (SWARP_INFO_FLAT_EXTENT; issue 9, fenv swarp_setup_points case 38519) */
     for (size_t i = 0; i < nh; ++i)
-        if (!sw_psm_in_front(&QM, H[i])) return SWARP_ERR_LIGHT_INSIDE_BODY;
+        if (!sw_psm_in_front(&QM, wab, H[i])) return SWARP_ERR_LIGHT_INSIDE_BODY;
     swarp_mat4 A;
     swarp_status s = sw_focus_fit(&QM, H, nh, NULL, 0, dr, &A);
     if (swarp_status_is_error(s)) return s;
@@ -320,10 +335,10 @@ swarp_status sw_psm_setup(const swarp_camera* cam, const swarp_light* light, con
                 if (sw_poly_clip(&C, n, d, &C) != SWARP_OK) break;
             }
             for (uint32_t i = 0; i < C.vertex_count; ++i)
-                if (sw_psm_in_front(&QM, C.vertices[i])) zp[nz++] = C.vertices[i];
+                if (sw_psm_in_front(&QM, wab, C.vertices[i])) zp[nz++] = C.vertices[i];
         } else {
             for (size_t i = 0; i < nb && nz < SWARP_BODY_MAX_POINTS + SWARP_POLY_MAX_VERTICES; ++i)
-                if (sw_psm_in_front(&QM, B[i])) zp[nz++] = B[i];
+                if (sw_psm_in_front(&QM, wab, B[i])) zp[nz++] = B[i];
         }
     }
     s = sw_focus_fit(&QM, H, nh, zp, nz, dr, &A);

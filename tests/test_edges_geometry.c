@@ -1848,6 +1848,59 @@ START_TEST(fe_setup_points_centre_at_point_light) {
 }
 END_TEST
 
+/* fenvn pass: PSM, a point light 1 unit above the eye that is a vertex of B
+ * (B = conv(H u {l}) n S), the scene 1e5 from the origin.  The light lies
+ * on its own plane w = 0; QM = Q M_c's w row carries eps of the product's
+ * terms, more than eps of the terms of w at the light, and under
+ * FE_DOWNWARD its w came out positive beyond that smaller bound: a caster
+ * at depth -2.8e15, x and y flat beside it (SWARP_INFO_FLAT_EXTENT instead
+ * of SWARP_OK; issue 9, fenv swarp_setup_points 3840000 case 3804776). */
+START_TEST(fe_setup_points_psm_light_vertex_product_rounding) {
+    const swarp_camera cam = {{0x1.8696a23881e22p+16, 0x1.2b825212bde47p+4, 0x1.86d331525b447p+16},
+                              {0x1.b3a3b09071fdbp-3, 0x1.ad7f29abcaf48p-24, -0x1.947659d5302cdp-1},
+                              {0, 1, 0},
+                              0x1.999999999999bp-4,
+                              0x1.bbc754fd219ddp+0,
+                              0x1.94e40d90e483dp+0,
+                              0x1.8b9edf66d46bep+21,
+                              {0, 0, 0, 0}};
+    const swarp_light l = {SWARP_LIGHT_POINT, 0, {-0x1.f7131ffa35bap-5, -0x1.9d2f1e5fd4875p-1, 0x1.b84800175a594p-2},
+                           {0x1.8696a23881e22p+16, 0x1.3b825212bde47p+4, 0x1.86a7b736a80d2p+16}, 0, {0, 0, 0, 0}};
+    const swarp_vec3 pts[11] = {{0x1.8696e994af93cp+16, 0x1.2a3e237686b78p+4, 0x1.86d1a13967d9fp+16},
+                                {0x1.86972d695a407p+16, 0x1.2a3e237686b78p+4, 0x1.86d1b37d33aa1p+16},
+                                {0x1.8696e994af7e3p+16, 0x1.2cc68116bf913p+4, 0x1.86d1a139682a3p+16},
+                                {0x1.86972d695a2adp+16, 0x1.2cc68116bf913p+4, 0x1.86d1b37d33fa5p+16},
+                                {0x1.86a0b03438842p+16, 0x1.fba9ea5456b15p+3, 0x1.869ad1a9d9bbcp+16},
+                                {0x1.86a0b03438842p+16, 0x1.141763c9ede33p+4, 0x1.86b79c49f7e51p+16},
+                                {0x1.86a0b03438842p+16, 0x1.42ed47de8b05fp+4, 0x1.86b79c49f968dp+16},
+                                {0x1.86a02a7f01d1p+16, 0x1.56d050cfab997p+4, 0x1.869dbf542cd79p+16},
+                                {0x1.86a0b03438842p+16, 0x1.56d050cfab997p+4, 0x1.869ad1a9d41ecp+16},
+                                {0x1.86a0b03438842p+16, 0x1.56d050cfab997p+4, 0x1.869de35519906p+16},
+                                {0x1.8696a23881e22p+16, 0x1.3b825212bde47p+4, 0x1.86a7b736a80d2p+16}};
+    swarp_setup_options o;
+    memset(&o, 0, sizeof o);
+    o.technique = SWARP_TECHNIQUE_PSM;
+    o.param = SWARP_WARP_PARAM_NREPAR;
+    o.center = SWARP_WARP_CENTER_NEAREST_VERTEX;
+    o.depth_range = SWARP_DEPTH_NEG_ONE_TO_ONE;
+    o.map_width = 2748;
+    o.n_user = 0x1.0966e3d1151bep+3;
+    o.pseudo_near = 0x1.0c5b1c759fedbp-1;
+    o.pseudo_far = 0x1.a1c5b68ebe16fp-4;
+    o.slideback = 0x1.0eaa1069428ap-2;
+    swarp_setup_result r0;
+    const swarp_status s0 = swarp_setup_points(&cam, &l, pts, 11, pts, 10, cam.near, cam.far, &o, &r0);
+    ck_assert_msg(s0 == SWARP_OK, "%s", swarp_status_name(s0));
+    for (size_t m = 0; m < sizeof tu_modes / sizeof tu_modes[0]; ++m) {
+        swarp_setup_result r1;
+        fesetround(tu_modes[m]);
+        const swarp_status s1 = swarp_setup_points(&cam, &l, pts, 11, pts, 10, cam.near, cam.far, &o, &r1);
+        fesetround(FE_TONEAREST);
+        ck_assert_msg(s1 == s0, "mode %zu: %s, default %s", m, swarp_status_name(s1), swarp_status_name(s0));
+    }
+}
+END_TEST
+
 int main(void) {
     Suite* s = suite_create("edges_geometry");
     TCase* t = tcase_create("geometry");
@@ -1902,6 +1955,7 @@ int main(void) {
     tcase_add_test(t, fe_setup_points_psm_huge_slideback);
     /* fenvn pass */
     tcase_add_test(t, fe_setup_points_centre_at_point_light);
+    tcase_add_test(t, fe_setup_points_psm_light_vertex_product_rounding);
     suite_add_tcase(s, t);
     return tu_run_suite(s) ? 1 : 0;
 }
