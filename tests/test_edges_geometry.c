@@ -1784,6 +1784,49 @@ START_TEST(fe_cascade_flat_box_grazing_light_rounding_mode) {
 }
 END_TEST
 
+/* fenvm pass (issue 9, fenv swarp_cascade_setup 960000 case 572608): a box
+ * flat in x through the eye (min.x = max.x = eye.x) and one ulp thick in y
+ * at 3e6, a 1e-5 frustum.  The frustum's edges cut at x = eye.x came out on
+ * the plane or off it by rounding mode, and split 0's B was two points
+ * 4.4e-16 apart or a segment off the plane: DEGENERATE to nearest,
+ * WARP_UNIFORM under FE_DOWNWARD.  The box-plane cut is exact now. */
+START_TEST(fe_cascade_box_flat_through_eye_rounding_mode) {
+    swarp_camera cam;
+    memset(&cam, 0, sizeof cam);
+    cam.eye = (swarp_vec3){-0x1.6e36b23669e25p+21, -0x1.2d6e3383869c7p+1, -0x1.6e36fd9ebc33dp+21};
+    cam.dir = (swarp_vec3){-0x1.69d40f542b7c6p-3, 0x0p+0, 0x1.f7f2296a35f6bp-1};
+    cam.up = (swarp_vec3){0, 1, 0};
+    cam.near = 0x1.acd780e92a976p-19;
+    cam.far = 0x1.85f4d4f17385ep-17;
+    cam.fovy = 0x1.765df4734700bp-1;
+    cam.aspect = 0x1.0fd0819ec143cp+1;
+    swarp_light l;
+    memset(&l, 0, sizeof l);
+    l.direction = (swarp_vec3){-0x1.9081eed92018fp-3, 0x0p+0, 0x1.f61d38118317cp-1};
+    const swarp_aabb b = {{-0x1.6e36b23669e25p+21, -0x1.2d6e3383869c7p+1, -0x1.6e372ca304d5fp+21},
+                          {-0x1.6e36b23669e25p+21, -0x1.2d6e3383869c6p+1, -0x1.6e3595ae824bap+21}};
+    swarp_cascade_options o;
+    memset(&o, 0, sizeof o);
+    o.split.count = 4;
+    o.split.scheme = (swarp_split_scheme)2;
+    o.split.lambda = 0x1.d56fe4961391fp-1;
+    o.split.pseudo_near = 0x1.3433a53527c0ep-3;
+    o.split.pseudo_far = 0x1.4004b18498e3ap-311;
+    o.n_user[3] = 0x1.720b27dfbb264p+3;
+    swarp_cascade_result r;
+    swarp_cascade_split sp[SWARP_CASCADE_MAX_SPLITS];
+    size_t n = 0;
+    const swarp_status st0 = swarp_cascade_setup(&cam, &l, &b, &o, &r, sp, SWARP_CASCADE_MAX_SPLITS, &n);
+    static const int modes[] = {FE_UPWARD, FE_DOWNWARD, FE_TOWARDZERO};
+    for (int k = 0; k < 3; ++k) {
+        fesetround(modes[k]);
+        const swarp_status st = swarp_cascade_setup(&cam, &l, &b, &o, &r, sp, SWARP_CASCADE_MAX_SPLITS, &n);
+        fesetround(FE_TONEAREST);
+        ck_assert_msg(st == st0, "mode %d: %s, default %s", k, swarp_status_name(st), swarp_status_name(st0));
+    }
+}
+END_TEST
+
 int main(void) {
     Suite* s = suite_create("edges_geometry");
     TCase* t = tcase_create("geometry");
@@ -1837,6 +1880,7 @@ int main(void) {
     /* fenvm pass */
     tcase_add_test(t, fe_body_h_flat_box_cut_on_its_plane);
     tcase_add_test(t, fe_cascade_flat_box_grazing_light_rounding_mode);
+    tcase_add_test(t, fe_cascade_box_flat_through_eye_rounding_mode);
     suite_add_tcase(s, t);
     return tu_run_suite(s) ? 1 : 0;
 }

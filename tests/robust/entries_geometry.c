@@ -1824,17 +1824,6 @@ static void e_cascade_setup(swr_ctx* c) {
     if (!swr_done(c, st)) return;
     SWR_CHECK(c, count == K && r.split_count == K, "count %zu, split_count %u, K %u", count, r.split_count, K);
     if (count != K || K > SWARP_CASCADE_MAX_SPLITS) return;
-    /* A split whose B is one or two points: its H_i and the box (or the
-     * spot's pyramid) only touch, in a corner or along an edge, and the
-     * map of a point or a segment is DEGENERATE or a flat/uniform map by
-     * the rounding of the clips, as for swarp_setup (check_setup_result).
-     * The mode where the call succeeded shows it (fenv 960000 case 572608:
-     * a box flat in x through the eye and one ulp thick in y at 3e6, split
-     * 0 a segment of 4.4e-16; DEGENERATE to nearest, WARP_UNIFORM under
-     * FE_DOWNWARD).  SPHERE splits carry no points (point_count 0). */
-    if (!(use_o && o.stabilize.mode == SWARP_STABILIZE_SPHERE))
-        for (uint32_t i = 0; i < K; ++i)
-            if (sp[i].point_count <= 2) c->rounding_edge = 1;
     swr_rec(c, "view_near", r.view_near), swr_rec(c, "view_far", r.view_far);
     SWR_CHECK(c, r.splits[0] == r.view_near && r.splits[K] == r.view_far, "C_0 %.17g C_m %.17g, view [%.17g, %.17g]", r.splits[0],
               r.splits[K], r.view_near, r.view_far);
