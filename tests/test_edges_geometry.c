@@ -1827,6 +1827,62 @@ START_TEST(fe_cascade_box_flat_through_eye_rounding_mode) {
 }
 END_TEST
 
+/* fenvm pass (issue 9, fenv swarp_setup_follow 960000 case 653923, no
+ * previous frame: swarp_setup): PSM over a slab 1e-7 thick at 3e6 with the
+ * eye in it, a light 1e-9 rad off its plane.  The receivers' directions in
+ * PPS span 179.995° (cos r = 4e-5): the pair cap's centre carries eps/cos r,
+ * a point 8.8e-10 from a support fell outside it by that, and the cap
+ * through the three turned the PSM axis by 3e-3..6e-3 rad with the rounding
+ * mode (light_proj's y scale -8006, -8770, -107).  The in-cap test allows
+ * the centre's rounding now: the same map in every mode. */
+START_TEST(fe_setup_psm_hemisphere_cap_rounding_mode) {
+    swarp_camera cam;
+    memset(&cam, 0, sizeof cam);
+    cam.eye = (swarp_vec3){-0x1.6e35a0f3725e7p+21, -0x1.ddf9f165dac0bp+2, -0x1.6e36700b3d69dp+21};
+    cam.dir = (swarp_vec3){-0x1.b657f7be61dfbp-1, -0x1.2690fdce9e973p-30, 0x1.0892af80c155fp-1};
+    cam.up = (swarp_vec3){0, 1, 0};
+    cam.near = 0x1.a2de39b858b1ep-12;
+    cam.far = 0x1.6f08f119c527fp+9;
+    cam.fovy = 0x1.4343fd88fef7bp+1;
+    cam.aspect = 0x1.3333333333333p-2;
+    swarp_light l;
+    memset(&l, 0, sizeof l);
+    l.type = SWARP_LIGHT_DIRECTIONAL;
+    l.direction = (swarp_vec3){0x1.649f0f45e1795p-1, 0x1.1ce054ba99b15p-30, -0x1.6f604acd9875bp-1};
+    const swarp_aabb b = {{-0x1.6e3712644ca47p+21, -0x1.ddf9f1b7932b2p+2, -0x1.6e36700b3d69dp+21},
+                          {-0x1.6e357d3d9dc6fp+21, -0x1.ddf9f14c3360bp+2, -0x1.6e35a69ce8625p+21}};
+    swarp_setup_options o;
+    memset(&o, 0, sizeof o);
+    o.technique = SWARP_TECHNIQUE_PSM;
+    o.param = (swarp_warp_param)5;
+    o.depth_range = (swarp_depth_range)2;
+    o.map_width = 3928;
+    o.pancake = 1;
+    o.psm_slideback = 1;
+    o.n_user = 0x1.0624dd2f1a9fcp-10;
+    o.pseudo_near = 0x1.0f9f65dab038cp-2;
+    o.pseudo_far = 0x1.fbe9be66e5e07p-2;
+    swarp_setup_result r0, r;
+    const swarp_status st0 = swarp_setup(&cam, &l, &b, &o, &r0, NULL, 0, NULL);
+    ck_assert_msg(!swarp_status_is_error(st0), "%s", swarp_status_name(st0));
+    double scale = 0;
+    for (int i = 0; i < 16; ++i) scale = fmax(scale, fabs(r0.matrix.m[i]));
+    static const int modes[] = {FE_UPWARD, FE_DOWNWARD, FE_TOWARDZERO};
+    for (int k = 0; k < 3; ++k) {
+        fesetround(modes[k]);
+        const swarp_status st = swarp_setup(&cam, &l, &b, &o, &r, NULL, 0, NULL);
+        fesetround(FE_TONEAREST);
+        ck_assert_int_eq(st, st0);
+        for (int i = 0; i < 16; ++i)
+            /* the map's own conditioning (the harness measures 7.5e9: points
+             * 5e-4 from the eye at 3e6, resolved to 1e-6 of their distance);
+             * before, the entries differed by 20 % and 75x */
+            ck_assert_msg(fabs(r.matrix.m[i] - r0.matrix.m[i]) <= 1e-6 * scale, "mode %d: matrix %d = %.17g, default %.17g", k, i,
+                          r.matrix.m[i], r0.matrix.m[i]);
+    }
+}
+END_TEST
+
 int main(void) {
     Suite* s = suite_create("edges_geometry");
     TCase* t = tcase_create("geometry");
@@ -1881,6 +1937,7 @@ int main(void) {
     tcase_add_test(t, fe_body_h_flat_box_cut_on_its_plane);
     tcase_add_test(t, fe_cascade_flat_box_grazing_light_rounding_mode);
     tcase_add_test(t, fe_cascade_box_flat_through_eye_rounding_mode);
+    tcase_add_test(t, fe_setup_psm_hemisphere_cap_rounding_mode);
     suite_add_tcase(s, t);
     return tu_run_suite(s) ? 1 : 0;
 }
