@@ -167,23 +167,24 @@ static swarp_status sw_info_follow(swarp_status info) {
     return info == SWARP_OK ? SWARP_INFO_FOLLOW_LAG : info;
 }
 
-/* The camera (possibly slid back by delta) as M_c = P_c V_c, GL depth. */
+/* The camera (possibly slid back by delta) as M_c = P_c V_c, GL depth;
+ * P_c is returned too: light_proj is formed from it, not from M_c V_c^-1
+ * (see sw_psm_setup). */
 static void sw_camera_matrix(const swarp_camera* cam, double near, double far, double delta, swarp_mat4* Mc,
-                             swarp_mat4* Vc) {
+                             swarp_mat4* Vc, swarp_mat4* Pc) {
     swarp_vec3 f, r, u;
     sw_camera_basis(cam, &f, &r, &u);
     swarp_vec3 eye = sw_sub(cam->eye, sw_scale(f, delta));
     sw_look_at(eye, f, u, Vc);
     double n = near + delta, fa = far + delta;
     double ty = tan(0.5 * cam->fovy), tx = ty * cam->aspect;
-    swarp_mat4 P;
-    memset(&P, 0, sizeof P);
-    sw_set(&P, 0, 0, 1.0 / tx);
-    sw_set(&P, 1, 1, 1.0 / ty);
-    sw_set(&P, 2, 2, -(fa + n) / (fa - n));
-    sw_set(&P, 2, 3, -2.0 * fa * n / (fa - n));
-    sw_set(&P, 3, 2, -1.0);
-    sw_mul(&P, Vc, Mc);
+    memset(Pc, 0, sizeof *Pc);
+    sw_set(Pc, 0, 0, 1.0 / tx);
+    sw_set(Pc, 1, 1, 1.0 / ty);
+    sw_set(Pc, 2, 2, -(fa + n) / (fa - n));
+    sw_set(Pc, 2, 3, -2.0 * fa * n / (fa - n));
+    sw_set(Pc, 3, 2, -1.0);
+    sw_mul(Pc, Vc, Mc);
 }
 
 /* Is p in front of the light camera QM by more than the rounding of its w
@@ -217,8 +218,8 @@ swarp_status sw_psm_setup(const swarp_camera* cam, const swarp_light* light, con
         for (size_t i = 0; i < nb; ++i) zmin = sw_min(zmin, sw_dot(sw_sub(B[i], cam->eye), f));
         if (zmin < near) delta = near - zmin;
     }
-    swarp_mat4 Mc, Vc;
-    sw_camera_matrix(cam, near, far, delta, &Mc, &Vc);
+    swarp_mat4 Mc, Vc, Pc;
+    sw_camera_matrix(cam, near, far, delta, &Mc, &Vc, &Pc);
     /* the light in PPS, normalised homogeneous */
     swarp_vec4 Lw = light->type == SWARP_LIGHT_POINT
                         ? (swarp_vec4){light->position.x, light->position.y, light->position.z, 1.0}
@@ -336,9 +337,14 @@ swarp_status sw_psm_setup(const swarp_camera* cam, const swarp_light* light, con
     s = sw_focus_fit(&QM, H, nh, zp, nz, dr, &A);
     if (swarp_status_is_error(s)) return s;
     if (s != SWARP_OK && info == SWARP_OK) info = s;
-    swarp_mat4 Pc, Vinv, AQ;
-    if (!sw_invert(&Vc, &Vinv)) return SWARP_ERR_SINGULAR;
-    sw_mul(&Mc, &Vinv, &Pc); /* the camera projection alone */
+    /* light_proj = A Q P_c with the camera projection itself: recovered
+     * as M_c V_c^-1 it carried the rounding of V_c's translation (the
+     * slid-back eye, delta from the camera) times P_c, eps delta absolute in
+     * entries that are 0 (a slide-back of 3.8e12: P_c's y translation 3.7e6
+     * instead of 0, another sign in each rounding mode), and light_proj
+     * light_view was off the matrix by 1e-6 of it (issue 9, fenv
+     * swarp_setup_points 960000 case 866211). */
+    swarp_mat4 AQ;
     sw_mul(&A, &Q, &AQ);
     sw_mul(&AQ, &Pc, &res->light_proj);
     res->light_view = Vc;

@@ -1699,6 +1699,91 @@ START_TEST(fe_body_from_h_point_light_far_h_rounding_mode) {
 }
 END_TEST
 
+/* fenvl pass: PSM with a caller's slide-back of 3.8e12 ([KOZ] Fig. 14-6,
+ * swarp_setup_options.slideback): light_view is the slid-back camera's view,
+ * translation 3.8e12, and light_proj was recovered as M_c V_c^-1, so the
+ * camera projection in it carried eps 3.8e12 = 8e-4 of rounding in entries
+ * that are 0 -- times P's rows of 1e11, light_proj light_view was off the
+ * matrix by 3e-7 of it, another amount in each rounding mode (issue 9, fenv
+ * swarp_setup_points 960000 case 866211).  light_proj is now A Q P_c with
+ * the projection itself: the product is the matrix to rounding in every
+ * mode, and every matrix is the default mode's to 1e-9. */
+START_TEST(fe_setup_points_psm_huge_slideback) {
+    const swarp_camera cam = {{-0x1.0199b1f2db084p+5, 0x1.20c81efa3776ep+3, -0x1.d6cf5b2c342b8p+0},
+                              {0x1.f561349d08566p-1, 0x1.b6bc97fc98057p-5, -0x1.90359c841832ap-3},
+                              {0, 1, 0},
+                              0x1.35582c7d4a335p+0,
+                              0x1.22757703baa78p+1,
+                              0x1.d5514efdd6e0dp+0,
+                              0x1.9b62e2d143471p+11,
+                              {0, 0, 0, 0}};
+    const swarp_light l = {SWARP_LIGHT_DIRECTIONAL, 0, {-0x1.245d312a4e2c4p-1, -0x1.3c8ba678b5b15p-5, 0x1.a3da29393b038p-1},
+                           {-0x1.90c8a24036d24p+5, 0x1.23e86fb79e19ap+4, 0x1.f0045029fba19p+5}, 0,
+                           {0, 0, 0, 0}};
+    const swarp_vec3 pts[16] = {{-0x1.ee67b34c70a5ap+4, 0x1.f6f87991c21c3p+2, -0x1.41b72583c35fcp+2},
+                                {-0x1.dc6bf1624fdd8p+4, 0x1.f6f87991c21c3p+2, 0x1.360e1b45fc24p-1},
+                                {-0x1.f088312b7aa51p+4, 0x1.4c5ca6e28a906p+3, -0x1.40048641f4a5cp+2},
+                                {-0x1.de8c6f4159ddp+4, 0x1.4c5ca6e28a906p+3, 0x1.43a3155471f3cp-1},
+                                {-0x1.b7efc1c893a83p+4, 0x1.d07a5db3f3ac2p+3, -0x1.d2aca0e37d02cp+3},
+                                {-0x1.b00f36773bb18p+4, 0x1.1757214eb92ecp+2, -0x1.d2aca0e37d02cp+3},
+                                {-0x1.d87ec453a3905p+3, -0x1.8074ddb884753p+1, -0x1.d2aca0e37d02cp+3},
+                                {-0x1.ffe2b63f416bap+3, 0x1.73a20abe044fap+4, -0x1.d2aca0e37d02cp+3},
+                                {0x1.3e2fd9232995p+2, -0x1.8074ddb88475cp+1, -0x1.d2aca0e37d02cp+3},
+                                {-0x1.b6e7a4e16af28p+4, 0x1.aece4b5949b77p+2, 0x1.7c3f291d6d384p+1},
+                                {-0x1.bbdd117ecfab9p+4, 0x1.759a678a3215bp+3, 0x1.7c3f291d6d384p+1},
+                                {-0x1.686603053f21p+3, -0x1.8074ddb884754p+1, 0x1.7c3f291d6d38p+1},
+                                {-0x1.8fc9f4f0dcfc6p+3, 0x1.73a20abe044fap+4, 0x1.7c3f291d6d38p+1},
+                                {0x1.3e2fd9232995p+2, -0x1.8074ddb88475bp+1, 0x1.7c3f291d6d38p+1},
+                                {0x1.3e2fd9232995p+2, 0x1.73a20abe044fap+4, 0x1.7c3f291d6d38p+1},
+                                {0x1.3e2fd9232995p+2, 0x1.73a20abe044fap+4, -0x1.d2aca0e37d02ap+3}};
+    swarp_setup_options o;
+    memset(&o, 0, sizeof o);
+    o.technique = SWARP_TECHNIQUE_PSM;
+    o.param = SWARP_WARP_PARAM_GMNPR;
+    o.center = SWARP_WARP_CENTER_NEAREST_VERTEX;
+    o.depth_range = SWARP_DEPTH_ZERO_TO_ONE;
+    o.map_height = 6056;
+    o.pancake = 1;
+    o.n_user = 0x1.942401ff5ab05p+9;
+    o.pseudo_near = 0x1.ccccccccccccdp-1;
+    o.pseudo_far = 0x1.d5241f3838887p-3;
+    o.slideback = 0x1.b6ec9acbae3a3p+41;
+    swarp_setup_result r0, r;
+    const swarp_status s0 = swarp_setup_points(&cam, &l, pts, 16, pts, 16, cam.near, cam.far, &o, &r0);
+    ck_assert_msg(!swarp_status_is_error(s0), "%s", swarp_status_name(s0));
+    const swarp_mat4* m0[3] = {&r0.light_view, &r0.light_proj, &r0.matrix};
+    double big = 0;
+    for (int k = 0; k < 3; ++k)
+        for (int i = 0; i < 16; ++i) big = fmax(big, fabs(m0[k]->m[i]));
+    for (size_t m = 0; m <= sizeof tu_modes / sizeof tu_modes[0]; ++m) { /* the last: to nearest */
+        const int mode = m < sizeof tu_modes / sizeof tu_modes[0] ? tu_modes[m] : FE_TONEAREST;
+        fesetround(mode);
+        const swarp_status s = swarp_setup_points(&cam, &l, pts, 16, pts, 16, cam.near, cam.far, &o, &r);
+        fesetround(FE_TONEAREST);
+        ck_assert_msg(s == s0, "mode %zu: %s, default %s", m, swarp_status_name(s), swarp_status_name(s0));
+        /* light_proj light_view = matrix, normwise: rounding of the terms */
+        double mscale = 0;
+        for (int i = 0; i < 16; ++i) mscale = fmax(mscale, fabs(r.matrix.m[i]));
+        for (int col = 0; col < 4; ++col)
+            for (int row = 0; row < 4; ++row) {
+                double acc = 0, mag = 0;
+                for (int k = 0; k < 4; ++k) {
+                    const double t = r.light_proj.m[k * 4 + row] * r.light_view.m[col * 4 + k];
+                    acc += t, mag += fabs(t);
+                }
+                ck_assert_msg(fabs(acc - r.matrix.m[col * 4 + row]) <= 64 * DBL_EPSILON * (mag + mscale),
+                              "mode %zu: matrix[%d][%d] = %.17g, light_proj light_view = %.17g", m, row, col,
+                              r.matrix.m[col * 4 + row], acc);
+            }
+        const swarp_mat4* m1[3] = {&r.light_view, &r.light_proj, &r.matrix};
+        for (int k = 0; k < 3; ++k)
+            for (int i = 0; i < 16; ++i)
+                ck_assert_msg(fabs(m1[k]->m[i] - m0[k]->m[i]) <= 1e-9 * big, "mode %zu: matrix %d entry %d = %.17g, default %.17g",
+                              m, k, i, m1[k]->m[i], m0[k]->m[i]);
+    }
+}
+END_TEST
+
 /* fenvm pass (issue 9, fenv swarp_cascade_setup 960000 case 686393): the
  * scene of that case, a box flat in x at 1e5 (min.x = max.x) and a
  * directional light 9e-16 rad off that plane.  The view frustum's edges cut
@@ -1933,6 +2018,8 @@ int main(void) {
     tcase_add_test(t, fe_poly_clip_segment_without_faces);
     tcase_add_test(t, fe_body_from_h_needle_box_rounding_mode);
     tcase_add_test(t, fe_body_from_h_point_light_far_h_rounding_mode);
+    /* fenvl pass */
+    tcase_add_test(t, fe_setup_points_psm_huge_slideback);
     /* fenvm pass */
     tcase_add_test(t, fe_body_h_flat_box_cut_on_its_plane);
     tcase_add_test(t, fe_cascade_flat_box_grazing_light_rounding_mode);

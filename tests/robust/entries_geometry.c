@@ -396,6 +396,23 @@ static void setup_b_cond(swr_ctx* c, const scene_args* s, swarp_status st, const
     setup_b_cond_rows(c, s, st, r, pts, count, 1.0);
 }
 
+/* How far outside S a point of B may lie: 1e-9 of the box's coordinates,
+ * and for a point light 1e-9 of its position's, as swarp_body_from_h's
+ * entry (gtol): B = conv(H ∪ {l}) ∩ S is clipped with the on-plane
+ * tolerance SWARP_POLY_EPS_REL of the clipped polyhedron's scale, which is
+ * |l| for a far light, so a vertex that far outside a face is on it
+ * (fenv 1920000 setup_points case 1455776, the default mode too: a light
+ * at y = 1e7, an edge of conv(H ∪ {l}) leaving S through the face
+ * z = -27.01 at a slope of 5.8e-6, cut by the face y = -0.986 one unit on,
+ * 5.9e-6 outside; merge distance 1e-5). */
+static double b_in_box_tol(const scene_args* s) {
+    double t = 1e-9 * (fabs(s->box.min.x) + fabs(s->box.max.x) + fabs(s->box.min.y) + fabs(s->box.max.y) + fabs(s->box.min.z) +
+                       fabs(s->box.max.z) + 1);
+    const swarp_vec3 l = s->light.position;
+    if ((int)s->light.type == 2 && fin3(&l)) t = fmax(t, 1e-9 * fmax(fabs(l.x), fmax(fabs(l.y), fabs(l.z))));
+    return t;
+}
+
 static void check_setup_result(swr_ctx* c, const scene_args* s, swarp_status st, const swarp_setup_result* r,
                                const swarp_vec3* pts, size_t count, int have_pts) {
     /* B of one or two points: the view frustum and the box (or the spot's
@@ -466,8 +483,7 @@ static void check_setup_result(swr_ctx* c, const scene_args* s, swarp_status st,
     SWR_CHECK(c, count == r->point_count, "out_count %zu, point_count %u", count, r->point_count);
     /* B lies in the scene box and the focused matrix maps it into the unit
      * cube (PSM's inverse projection maps it differently: not checked) */
-    double tol_box = 1e-9 * (fabs(s->box.min.x) + fabs(s->box.max.x) + fabs(s->box.min.y) + fabs(s->box.max.y) +
-                             fabs(s->box.min.z) + fabs(s->box.max.z) + 1);
+    double tol_box = b_in_box_tol(s);
     /* the fit is only as good as the points are resolved: coordinates of
      * magnitude X carry ulp(X) ~ eps X, relative to B's extent that is
      * eps X / extent (1e6 offsets around a 1e-6 frustum: O(1)) */
@@ -517,6 +533,7 @@ static void check_setup_result(swr_ctx* c, const scene_args* s, swarp_status st,
 }
 
 static void setup_capacity_edge(swr_ctx* c, const scene_args* s, int range, double near, double far, size_t cap);
+static void body_sweep_cut_cond(swr_ctx* c, const scene_args* s, double near, double far, const swarp_vec3* pts, size_t n);
 static double vmax(swarp_vec3 v);
 static double box_scale(const swarp_aabb* b);
 /* A view frustum whose smallest feature (its depth far - near, the near
@@ -678,9 +695,9 @@ static void e_body_points(swr_ctx* c) {
     }
     if (!swr_verdict(c, st, 2, (void*)pts, sizeof pts, (void*)&count, sizeof count)) return;
     SWR_CHECK(c, count <= cap && count <= SWARP_BODY_MAX_POINTS, "count %zu", count);
-    double tol = 1e-9 * (fabs(s.box.min.x) + fabs(s.box.max.x) + fabs(s.box.min.y) + fabs(s.box.max.y) +
-                         fabs(s.box.min.z) + fabs(s.box.max.z) + 1);
+    double tol = b_in_box_tol(&s);
     rec_point_set(c, pts, count < SWARP_BODY_MAX_POINTS ? count : SWARP_BODY_MAX_POINTS);
+    body_sweep_cut_cond(c, &s, near, far, pts, count < SWARP_BODY_MAX_POINTS ? count : SWARP_BODY_MAX_POINTS);
     for (size_t i = 0; i < count && i < SWARP_BODY_MAX_POINTS; ++i) {
         SWR_CHECK_ACC(c, pts[i].x >= s.box.min.x - tol && pts[i].x <= s.box.max.x + tol && pts[i].y >= s.box.min.y - tol &&
                              pts[i].y <= s.box.max.y + tol && pts[i].z >= s.box.min.z - tol && pts[i].z <= s.box.max.z + tol,
@@ -1260,6 +1277,62 @@ static swarp_vec3 unit_scaled(swarp_vec3 a) {
     double m = fmax(fabs(a.x), fmax(fabs(a.y), fabs(a.z)));
     if (!(m > 0) || !isfinite(m)) return a;
     return unit(v3(a.x / m, a.y / m, a.z / m));
+}
+
+/* The condition of B's cuts of its sweep by the faces of S.  B is H's
+ * sweep toward the light clipped by S (src/body.c), in world coordinates:
+ * for a directional light the edges from each vertex h of H to h - T u (u
+ * the light's unit direction, T = 2 diag(S)), for a point light from h to
+ * l.  An edge h-w crossing the face x_k = f is cut where the distance
+ * d = x_k - f, rounded to eps (max(|h_k|, |w_k|) + |f|) = eps T_k, vanishes:
+ * d changes by |d_h - d_w| over the edge's length, so the cut moves along
+ * it by eps T_k len / |d_h - d_w|, relative to B's scale X: condition
+ * T_k len / (|d_h - d_w| X), the per-edge condition of swarp_poly_clip's
+ * entry (clip_cut_cond).  Large where the light grazes the face: a slab
+ * 1e-9 thick at y = -10 with the light 2.4e-10 rad off its plane, an edge
+ * from H's vertex on the bottom face rising through the top face 4 units
+ * on (fenv 960000 case 894956: h_y = -10 one ulp up or down by rounding
+ * mode, the cut moved 7.9e-6 along the edge, 1.7e-7 of B's 45; condition
+ * 1.6e9).  Recorded for the cuts that are vertices of B (within the cut's
+ * own rounding; an edge inside the sweep is cut too, but is no vertex), H
+ * from swarp_body_h in the default environment (the clipper's H). */
+static void body_sweep_cut_cond(swr_ctx* c, const scene_args* s, double near, double far, const swarp_vec3* pts, size_t n) {
+    const int t = (int)s->light.type;
+    if (!n || !swarp_body_h || (t == 2 ? !fin3(&s->light.position) : !(fin3(&s->light.direction) && vmax(s->light.direction) > 0)))
+        return;
+    const swarp_aabb* b = &s->box;
+    swarp_polyhedron H;
+    if (swarp_body_h(&s->cam, near, far, b, &H) != SWARP_OK) return;
+    double X = 0;
+    for (size_t i = 0; i < n; ++i) X = fmax(X, vmax(pts[i]));
+    const double ex = b->max.x - b->min.x, ey = b->max.y - b->min.y, ez = b->max.z - b->min.z;
+    const double T = 2 * sqrt(ex * ex + ey * ey + ez * ez);
+    const swarp_vec3 u = unit_scaled(s->light.direction);
+    if (!(X > 0) || !isfinite(X) || !isfinite(T)) return;
+    const double lo[3] = {b->min.x, b->min.y, b->min.z}, hi[3] = {b->max.x, b->max.y, b->max.z};
+    for (uint32_t i = 0; i < H.vertex_count && i < SWARP_POLY_MAX_VERTICES; ++i) {
+        const swarp_vec3 h = H.vertices[i];
+        const swarp_vec3 w = t == 2 ? s->light.position : v3(h.x - T * u.x, h.y - T * u.y, h.z - T * u.z);
+        const double hv[3] = {h.x, h.y, h.z}, wv[3] = {w.x, w.y, w.z};
+        const double len = vmax(v3(w.x - h.x, w.y - h.y, w.z - h.z));
+        for (int k = 0; k < 6; ++k) {
+            const double f = k < 3 ? lo[k] : hi[k - 3];
+            const int a = k % 3;
+            const double dh = hv[a] - f, dw = wv[a] - f;
+            if (!(dh * dw < 0)) continue; /* crossing strictly: an end on the face is no cut */
+            const double Tk = fmax(fabs(hv[a]), fabs(wv[a])) + fabs(f);
+            const double cond = Tk * len / (fabs(dh - dw) * X);
+            if (!isfinite(cond)) continue;
+            const double sc = dh / (dh - dw);
+            const swarp_vec3 q = v3(h.x + sc * (w.x - h.x), h.y + sc * (w.y - h.y), h.z + sc * (w.z - h.z));
+            const double slack = 64 * DBL_EPSILON * cond * X + gtol(X);
+            for (size_t j = 0; j < n; ++j)
+                if (vmax(v3(pts[j].x - q.x, pts[j].y - q.y, pts[j].z - q.z)) <= slack) {
+                    swr_cond(c, cond);
+                    break;
+                }
+        }
+    }
 }
 
 /* B's vertex count (SWARP_ERR_CAPACITY against the caller's capacity)
