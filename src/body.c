@@ -88,6 +88,16 @@ static swarp_status sw_flat_extend(const swarp_polyhedron* H, swarp_vec3 u, doub
         else
             cls[i] = sw_dot(m, u) > 0.0;
     }
+    /* The sweep stays in H's plane: u less its normal part (the light
+     * grazes the plane within 1e-15, the caller's test).  H + T u with u's
+     * normal part of 9e-16 moved the copies off a plane x = 1e5 by
+     * 5.6e-14, which rounded to the plane or an ulp (1.5e-11) below it by
+     * rounding mode; the light 1e-15 off that plane then saw B 7e-15 thick
+     * (SWARP_INFO_FLAT_EXTENT) or 3e-11, finer than the coordinates
+     * resolve (SWARP_ERR_DEGENERATE) (issue 9, fenv swarp_cascade_setup
+     * 960000 case 686393).  For an axis plane, n = ±e_k, u's k coordinate
+     * becomes 0 exactly and the copies keep H's exactly. */
+    if (!point) u = sw_sub(u, sw_scale(n, sw_dot(n, u)));
     swarp_vec3 pts[2 * SWARP_POLY_MAX_FACE_VERTICES + 1];
     uint32_t np = 0;
     for (uint32_t i = 0; i < k; ++i) {

@@ -490,6 +490,20 @@ static inline swarp_vec3 sw_edge_cut(const swarp_vec3* v, const double* dist, ui
     return sw_add(a, sw_scale(sw_sub(b, a), s));
 }
 
+/* A cut on a box plane (n = ±e_k, unit_normal): its coordinate k is the
+ * plane's, -d n_k, exactly.  Interpolated it carries a few ulps of the
+ * coordinates (eps |a| + eps |p - a|): a view frustum clipped by a box
+ * flat along x at 1e5 had H's cut vertices on the plane or 1 ulp (1.5e-11)
+ * off it by rounding mode, and a light grazing that plane 1e-15 rad saw B
+ * 7e-15 thick (SWARP_INFO_FLAT_EXTENT) or 3e-11, finer than the
+ * coordinates resolve (SWARP_ERR_DEGENERATE) (issue 9, fenv
+ * swarp_cascade_setup 960000 case 686393). */
+static inline void sw_cut_on_axis_plane(swarp_vec3* p, swarp_vec3 n, double d) {
+    if (n.x != 0.0) p->x = -d * n.x;
+    else if (n.y != 0.0) p->y = -d * n.y;
+    else p->z = -d * n.z;
+}
+
 /* Keeps n·x + d <= 0; n need not be unit.  in and out may alias. */
 /* Clips in into out (out != in).  When no vertex lies outside, *unchanged
  * is set and out is not written. */
@@ -616,6 +630,7 @@ static swarp_status sw_poly_clip_to(const swarp_polyhedron* in, swarp_vec3 n_raw
                         if (tv >= SWARP_POLY_MAX_VERTICES) return SWARP_ERR_CAPACITY;
                         /* once per edge (cached): both faces get the very same point */
                         t->vertices[tv] = sw_edge_cut(in->vertices, dist, lo, hi);
+                        if (unit_normal) sw_cut_on_axis_plane(&t->vertices[tv], n, d);
                         edge_lo[e] = lo;
                         edge_hi[e] = hi;
                         edge_v[e] = (uint8_t)tv;
@@ -667,7 +682,8 @@ static swarp_status sw_poly_clip_to(const swarp_polyhedron* in, swarp_vec3 n_raw
             if (cls[i] != SW_IN) continue;
             for (uint32_t j = 0; j < nv; ++j) {
                 if (cls[j] != SW_OUT) continue;
-                const swarp_vec3 p = sw_edge_cut(in->vertices, dist, (uint8_t)i, (uint8_t)j);
+                swarp_vec3 p = sw_edge_cut(in->vertices, dist, (uint8_t)i, (uint8_t)j);
+                if (unit_normal) sw_cut_on_axis_plane(&p, n, d);
                 uint32_t k = 0;
                 for (; k < tv; ++k) {
                     const swarp_vec3 w = t->vertices[k];

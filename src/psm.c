@@ -49,8 +49,16 @@
 typedef struct sw_cap { swarp_vec3 c; double cosr; } sw_cap;
 
 static int sw_in_cap(const sw_cap* k, swarp_vec3 r) {
-    /* slack 1e-13 in the cosine: rounding of unit vectors */
-    return sw_dot(k->c, r) >= k->cosr - 1e-13;
+    /* slack 1e-13 in the cosine: rounding of unit vectors; plus the
+     * rounding of the centre, eps/|a + b| = eps/(2 cos r) rad for the cap of
+     * a pair (the sum of two unit vectors all but opposite), which moves
+     * c·r by up to that: receivers spanning 179.995° in PPS (cos r = 4e-5)
+     * saw a point 8.8e-10 from a support outside the pair's cap by 5e-12,
+     * and the circle through the three, 2.5e4/8.8e-10 times as sensitive,
+     * turned the axis by 3e-3..6e-3 rad with the rounding mode (issue 9,
+     * fenv swarp_setup_follow 960000 case 653923) */
+    const double slack = 1e-13 + (k->cosr > 0.0 ? 4.0 * DBL_EPSILON / k->cosr : 0.0);
+    return sw_dot(k->c, r) >= k->cosr - slack;
 }
 static sw_cap sw_cap2(swarp_vec3 a, swarp_vec3 b) {
     sw_cap k = {a, 1.0};

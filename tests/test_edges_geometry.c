@@ -1784,6 +1784,190 @@ START_TEST(fe_setup_points_psm_huge_slideback) {
 }
 END_TEST
 
+/* fenvm pass (issue 9, fenv swarp_cascade_setup 960000 case 686393): the
+ * scene of that case, a box flat in x at 1e5 (min.x = max.x) and a
+ * directional light 9e-16 rad off that plane.  The view frustum's edges cut
+ * at the box plane x = c were interpolated: on c to nearest, 1 ulp
+ * (1.5e-11) below it under FE_DOWNWARD; the box clip sets the cut's x to c
+ * now (src/poly.c).  The light grazes the plane, so B is H swept in the
+ * plane (src/body.c sw_flat_extend): its copies H + T u carried u's normal
+ * part, 5.6e-14, which rounded to c or an ulp off it by mode.  B off its
+ * plane by ulps was a 3e-11 extent the coordinates do not resolve
+ * (SWARP_ERR_DEGENERATE); in the plane it is flat (SWARP_INFO_FLAT_EXTENT),
+ * as to nearest. */
+static void fenvm_flat_x_scene(swarp_camera* cam, swarp_light* l, swarp_aabb* b) {
+    memset(cam, 0, sizeof *cam);
+    cam->eye = (swarp_vec3){0x1.868ba1b7b7e0ap+16, -0x1.a3f61053e45e4p-2, 0x1.8681f276586bcp+16};
+    cam->dir = (swarp_vec3){0x1.203af9ee75616p-50, 0x1.d48237d9a2e68p-1, 0x1.9d01b64f0c798p-2};
+    cam->up = (swarp_vec3){0, 1, 0};
+    cam->near = 0x1.b8f6889236fa2p+0;
+    cam->far = 0x1.bce3ef5726ac1p+22;
+    cam->fovy = 0x1.55cf5c7959d87p+0;
+    cam->aspect = 0x1.e58427d2d195cp-1;
+    memset(l, 0, sizeof *l);
+    l->type = SWARP_LIGHT_DIRECTIONAL;
+    l->direction = (swarp_vec3){0x1.0af4fbc0e90a7p-50, 0x1.ffca9e92a086ap-1, 0x1.d38c9c72be88p-6};
+    *b = (swarp_aabb){{0x1.868c8f1e3be8ep+16, -0x1.a3f61053e45e4p-2, 0x1.867c201796c76p+16},
+                      {0x1.868c8f1e3be8ep+16, 0x1.d97027beb06e7p+4, 0x1.8694fded10315p+16}};
+}
+
+START_TEST(fe_body_h_flat_box_cut_on_its_plane) {
+    swarp_camera cam;
+    swarp_light l;
+    swarp_aabb b;
+    fenvm_flat_x_scene(&cam, &l, &b);
+    /* camera-relative, as swarp_setup and swarp_cascade_setup clip (the
+     * differences are exact: Sterbenz) */
+    const swarp_vec3 e = cam.eye;
+    cam.eye = (swarp_vec3){0, 0, 0};
+    b = (swarp_aabb){{b.min.x - e.x, b.min.y - e.y, b.min.z - e.z}, {b.max.x - e.x, b.max.y - e.y, b.max.z - e.z}};
+    static const int modes[] = {FE_TONEAREST, FE_UPWARD, FE_DOWNWARD, FE_TOWARDZERO};
+    for (int k = 0; k < 4; ++k) {
+        swarp_polyhedron H;
+        fesetround(modes[k]);
+        const swarp_status st = swarp_body_h(&cam, cam.near, cam.far, &b, &H);
+        fesetround(FE_TONEAREST);
+        ck_assert_int_eq(st, SWARP_OK);
+        ck_assert_uint_gt(H.vertex_count, 2);
+        for (uint32_t i = 0; i < H.vertex_count; ++i)
+            ck_assert_msg(H.vertices[i].x == b.min.x, "mode %d: vertex %u x = %a, the box plane %a", k, i, H.vertices[i].x, b.min.x);
+    }
+}
+END_TEST
+
+START_TEST(fe_cascade_flat_box_grazing_light_rounding_mode) {
+    swarp_camera cam;
+    swarp_light l;
+    swarp_aabb b;
+    fenvm_flat_x_scene(&cam, &l, &b);
+    swarp_cascade_options o;
+    memset(&o, 0, sizeof o);
+    o.split.count = 7;
+    o.split.scheme = SWARP_SCHEME_DEFAULT;
+    o.split.lambda = 0x1.8c76e24ce7eebp-1;
+    o.split.pseudo_near = 0x1.19799812dea11p-40;
+    o.split.pseudo_far = 0x1.69338fe09072p-3;
+    o.n_user[4] = 0x1.2028a3e3ab509p+5;
+    o.warp_per_split = (swarp_cascade_warp)2;
+    o.setup.technique = SWARP_TECHNIQUE_UNIFORM;
+    o.setup.param = (swarp_warp_param)4;
+    o.setup.depth_range = (swarp_depth_range)1;
+    o.setup.n_user = 0x1.0624dd2f1a9fcp-10;
+    swarp_cascade_result r;
+    swarp_cascade_split sp[SWARP_CASCADE_MAX_SPLITS];
+    size_t n0 = 0, n = 0;
+    const swarp_status st0 = swarp_cascade_setup(&cam, &l, &b, &o, &r, sp, SWARP_CASCADE_MAX_SPLITS, &n0);
+    ck_assert_int_eq(st0, SWARP_INFO_FLAT_EXTENT);
+    static const int modes[] = {FE_UPWARD, FE_DOWNWARD, FE_TOWARDZERO};
+    for (int k = 0; k < 3; ++k) {
+        fesetround(modes[k]);
+        const swarp_status st = swarp_cascade_setup(&cam, &l, &b, &o, &r, sp, SWARP_CASCADE_MAX_SPLITS, &n);
+        fesetround(FE_TONEAREST);
+        ck_assert_msg(st == st0, "mode %d: %s, default %s", k, swarp_status_name(st), swarp_status_name(st0));
+        ck_assert_uint_eq(n, n0);
+    }
+}
+END_TEST
+
+/* fenvm pass (issue 9, fenv swarp_cascade_setup 960000 case 572608): a box
+ * flat in x through the eye (min.x = max.x = eye.x) and one ulp thick in y
+ * at 3e6, a 1e-5 frustum.  The frustum's edges cut at x = eye.x came out on
+ * the plane or off it by rounding mode, and split 0's B was two points
+ * 4.4e-16 apart or a segment off the plane: DEGENERATE to nearest,
+ * WARP_UNIFORM under FE_DOWNWARD.  The box-plane cut is exact now. */
+START_TEST(fe_cascade_box_flat_through_eye_rounding_mode) {
+    swarp_camera cam;
+    memset(&cam, 0, sizeof cam);
+    cam.eye = (swarp_vec3){-0x1.6e36b23669e25p+21, -0x1.2d6e3383869c7p+1, -0x1.6e36fd9ebc33dp+21};
+    cam.dir = (swarp_vec3){-0x1.69d40f542b7c6p-3, 0x0p+0, 0x1.f7f2296a35f6bp-1};
+    cam.up = (swarp_vec3){0, 1, 0};
+    cam.near = 0x1.acd780e92a976p-19;
+    cam.far = 0x1.85f4d4f17385ep-17;
+    cam.fovy = 0x1.765df4734700bp-1;
+    cam.aspect = 0x1.0fd0819ec143cp+1;
+    swarp_light l;
+    memset(&l, 0, sizeof l);
+    l.direction = (swarp_vec3){-0x1.9081eed92018fp-3, 0x0p+0, 0x1.f61d38118317cp-1};
+    const swarp_aabb b = {{-0x1.6e36b23669e25p+21, -0x1.2d6e3383869c7p+1, -0x1.6e372ca304d5fp+21},
+                          {-0x1.6e36b23669e25p+21, -0x1.2d6e3383869c6p+1, -0x1.6e3595ae824bap+21}};
+    swarp_cascade_options o;
+    memset(&o, 0, sizeof o);
+    o.split.count = 4;
+    o.split.scheme = (swarp_split_scheme)2;
+    o.split.lambda = 0x1.d56fe4961391fp-1;
+    o.split.pseudo_near = 0x1.3433a53527c0ep-3;
+    o.split.pseudo_far = 0x1.4004b18498e3ap-311;
+    o.n_user[3] = 0x1.720b27dfbb264p+3;
+    swarp_cascade_result r;
+    swarp_cascade_split sp[SWARP_CASCADE_MAX_SPLITS];
+    size_t n = 0;
+    const swarp_status st0 = swarp_cascade_setup(&cam, &l, &b, &o, &r, sp, SWARP_CASCADE_MAX_SPLITS, &n);
+    static const int modes[] = {FE_UPWARD, FE_DOWNWARD, FE_TOWARDZERO};
+    for (int k = 0; k < 3; ++k) {
+        fesetround(modes[k]);
+        const swarp_status st = swarp_cascade_setup(&cam, &l, &b, &o, &r, sp, SWARP_CASCADE_MAX_SPLITS, &n);
+        fesetround(FE_TONEAREST);
+        ck_assert_msg(st == st0, "mode %d: %s, default %s", k, swarp_status_name(st), swarp_status_name(st0));
+    }
+}
+END_TEST
+
+/* fenvm pass (issue 9, fenv swarp_setup_follow 960000 case 653923, no
+ * previous frame: swarp_setup): PSM over a slab 1e-7 thick at 3e6 with the
+ * eye in it, a light 1e-9 rad off its plane.  The receivers' directions in
+ * PPS span 179.995° (cos r = 4e-5): the pair cap's centre carries eps/cos r,
+ * a point 8.8e-10 from a support fell outside it by that, and the cap
+ * through the three turned the PSM axis by 3e-3..6e-3 rad with the rounding
+ * mode (light_proj's y scale -8006, -8770, -107).  The in-cap test allows
+ * the centre's rounding now: the same map in every mode. */
+START_TEST(fe_setup_psm_hemisphere_cap_rounding_mode) {
+    swarp_camera cam;
+    memset(&cam, 0, sizeof cam);
+    cam.eye = (swarp_vec3){-0x1.6e35a0f3725e7p+21, -0x1.ddf9f165dac0bp+2, -0x1.6e36700b3d69dp+21};
+    cam.dir = (swarp_vec3){-0x1.b657f7be61dfbp-1, -0x1.2690fdce9e973p-30, 0x1.0892af80c155fp-1};
+    cam.up = (swarp_vec3){0, 1, 0};
+    cam.near = 0x1.a2de39b858b1ep-12;
+    cam.far = 0x1.6f08f119c527fp+9;
+    cam.fovy = 0x1.4343fd88fef7bp+1;
+    cam.aspect = 0x1.3333333333333p-2;
+    swarp_light l;
+    memset(&l, 0, sizeof l);
+    l.type = SWARP_LIGHT_DIRECTIONAL;
+    l.direction = (swarp_vec3){0x1.649f0f45e1795p-1, 0x1.1ce054ba99b15p-30, -0x1.6f604acd9875bp-1};
+    const swarp_aabb b = {{-0x1.6e3712644ca47p+21, -0x1.ddf9f1b7932b2p+2, -0x1.6e36700b3d69dp+21},
+                          {-0x1.6e357d3d9dc6fp+21, -0x1.ddf9f14c3360bp+2, -0x1.6e35a69ce8625p+21}};
+    swarp_setup_options o;
+    memset(&o, 0, sizeof o);
+    o.technique = SWARP_TECHNIQUE_PSM;
+    o.param = (swarp_warp_param)5;
+    o.depth_range = (swarp_depth_range)2;
+    o.map_width = 3928;
+    o.pancake = 1;
+    o.psm_slideback = 1;
+    o.n_user = 0x1.0624dd2f1a9fcp-10;
+    o.pseudo_near = 0x1.0f9f65dab038cp-2;
+    o.pseudo_far = 0x1.fbe9be66e5e07p-2;
+    swarp_setup_result r0, r;
+    const swarp_status st0 = swarp_setup(&cam, &l, &b, &o, &r0, NULL, 0, NULL);
+    ck_assert_msg(!swarp_status_is_error(st0), "%s", swarp_status_name(st0));
+    double scale = 0;
+    for (int i = 0; i < 16; ++i) scale = fmax(scale, fabs(r0.matrix.m[i]));
+    static const int modes[] = {FE_UPWARD, FE_DOWNWARD, FE_TOWARDZERO};
+    for (int k = 0; k < 3; ++k) {
+        fesetround(modes[k]);
+        const swarp_status st = swarp_setup(&cam, &l, &b, &o, &r, NULL, 0, NULL);
+        fesetround(FE_TONEAREST);
+        ck_assert_int_eq(st, st0);
+        for (int i = 0; i < 16; ++i)
+            /* the map's own conditioning (the harness measures 7.5e9: points
+             * 5e-4 from the eye at 3e6, resolved to 1e-6 of their distance);
+             * before, the entries differed by 20 % and 75x */
+            ck_assert_msg(fabs(r.matrix.m[i] - r0.matrix.m[i]) <= 1e-6 * scale, "mode %d: matrix %d = %.17g, default %.17g", k, i,
+                          r.matrix.m[i], r0.matrix.m[i]);
+    }
+}
+END_TEST
+
 /* fenvn pass: LiSPSM with the [WS06] centre, B's nearest vertex the point
  * light itself (B = conv(H u {l}) n S), so C_start is the light: (0, 0, 1, 0)
  * in its space, x/w = 0/0 and z/w = 1/0 with a zero w whose sign the
@@ -1953,6 +2137,11 @@ int main(void) {
     tcase_add_test(t, fe_body_from_h_point_light_far_h_rounding_mode);
     /* fenvl pass */
     tcase_add_test(t, fe_setup_points_psm_huge_slideback);
+    /* fenvm pass */
+    tcase_add_test(t, fe_body_h_flat_box_cut_on_its_plane);
+    tcase_add_test(t, fe_cascade_flat_box_grazing_light_rounding_mode);
+    tcase_add_test(t, fe_cascade_box_flat_through_eye_rounding_mode);
+    tcase_add_test(t, fe_setup_psm_hemisphere_cap_rounding_mode);
     /* fenvn pass */
     tcase_add_test(t, fe_setup_points_centre_at_point_light);
     tcase_add_test(t, fe_setup_points_psm_light_vertex_product_rounding);

@@ -372,9 +372,11 @@ static double setup_point_k_rot(const swarp_setup_result* r, const swarp_vec3* p
  * light view's rotation (setup_point_k_rot).  PSM maps only the receivers
  * and the casters in front of them: its points with w resolved from 0 and
  * inside the map count (fenv 120000 case 77521: a flat box grazed at
- * 1.7e-12 rad by camera and light). */
-static void setup_b_cond(swr_ctx* c, const scene_args* s, swarp_status st, const swarp_setup_result* r, const swarp_vec3* pts,
-                         size_t count) {
+ * 1.7e-12 rad by camera and light).  k_rows: the rounding of the view's
+ * rows in units of eps (1 for swarp_setup's frame; a followed frame's up is
+ * a projection's direction, eps/s, follow_up_cond). */
+static void setup_b_cond_rows(swr_ctx* c, const scene_args* s, swarp_status st, const swarp_setup_result* r, const swarp_vec3* pts,
+                              size_t count, double k_rows) {
     int psm = (s->use_opt && s->opt.technique == SWARP_TECHNIQUE_PSM) || st == SWARP_INFO_PSM_INVERSE;
     const double* m = r->matrix.m;
     for (size_t i = 0; i < count && i < SWARP_BODY_MAX_POINTS; ++i) {
@@ -386,8 +388,12 @@ static void setup_b_cond(swr_ctx* c, const scene_args* s, swarp_status st, const
         if (psm && !(fabs(q.x / q.w) <= 1 + 1e-6 && fabs(q.y / q.w) <= 1 + 1e-6)) continue;
         double k[3];
         setup_point_k(&r->matrix, p, k);
-        swr_cond(c, fmax(fmax(k[0], fmax(k[1], k[2])), setup_point_k_rot(r, p)));
+        swr_cond(c, fmax(fmax(k[0], fmax(k[1], k[2])), k_rows * setup_point_k_rot(r, p)));
     }
+}
+static void setup_b_cond(swr_ctx* c, const scene_args* s, swarp_status st, const swarp_setup_result* r, const swarp_vec3* pts,
+                         size_t count) {
+    setup_b_cond_rows(c, s, st, r, pts, count, 1.0);
 }
 
 /* How far outside S a point of B may lie: 1e-9 of the box's coordinates,
@@ -2064,6 +2070,29 @@ static void follow_cond(swr_ctx* c, const swarp_mat4* V, const swarp_mat4* P, sw
     else if (have_h) swr_cond(c, 1 / sh);
 }
 
+/* The rounding of a followed frame's rows in units of eps (src/follow.c):
+ * the up row is the direction of a projection normal to the axis a, of t
+ * (the view direction's, length s_t) when the frame follows the target,
+ * else of h (the previous up's, s_h: lagging, or kept); a and the unit
+ * vectors projected carry eps each, so the direction eps/s.  Whether the
+ * frame followed t is read from the result (its up along ±t), as the
+ * status may carry another info.  The right row is up x axis.  (fenv 960000
+ * case 584739: a directional light 1e-7 off the view direction over a flat
+ * box in the eye's plane, s_t = 1e-7; B's light-space y extent is 1e-7 of
+ * its length, and the up row's 6e-11 of rounding moved light_proj's y scale
+ * by 1.4e-4 relative.) */
+static double follow_up_cond(const swarp_mat4* V, const swarp_mat4* P, swarp_vec3 dir) {
+    swarp_vec3 a = v3(-V->m[2], -V->m[6], -V->m[10]), upp = v3(P->m[1], P->m[5], P->m[9]), v = unit_scaled(dir);
+    swarp_vec3 up = v3(V->m[1], V->m[5], V->m[9]);
+    double kv = dot(v, a), kh = dot(upp, a);
+    swarp_vec3 t = v3(v.x - kv * a.x, v.y - kv * a.y, v.z - kv * a.z), h = v3(upp.x - kh * a.x, upp.y - kh * a.y, upp.z - kh * a.z);
+    double st = sqrt(dot(t, t)), sh = sqrt(dot(h, h));
+    /* the library's cut-off for a usable projection (1e-8) */
+    if (st > 1e-8 && fabs(dot(up, t)) >= st * (1 - 1e-6)) return 1 / st;
+    if (sh > 1e-8) return 1 / sh;
+    return 1;
+}
+
 static void e_setup_follow(swr_ctx* c) {
     SKIP_IF_MISSING(c, swarp_setup_follow);
     scene_args s, p;
@@ -2095,6 +2124,9 @@ static void e_setup_follow(swr_ctx* c) {
                                                     SWARP_BODY_MAX_POINTS, pn));
     if (!swr_done(c, st)) return;
     check_setup_result(c, &s, st, &r, pts, count, 1);
+    /* a followed frame's rows (PSM follows its previous map otherwise) */
+    if (have_prev && !(s.use_opt && s.opt.technique == SWARP_TECHNIQUE_PSM) && st != SWARP_INFO_PSM_INVERSE)
+        setup_b_cond_rows(c, &s, st, &r, pts, count, follow_up_cond(&r.light_view, &prev.light_view, s.cam.dir));
     if (!have_prev) { /* "NULL: exactly swarp_setup's result (bit for bit)" */
         swarp_setup_result q;
         memset(&q, 0, sizeof q);
