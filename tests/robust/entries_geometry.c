@@ -1734,46 +1734,77 @@ static void e_warp_lispsm(swr_ctx* c) {
  * swarp_setup_points case 2005391: B 1.7e6 deep with far = 301, the PPS z of
  * B and the light within 4.4e-11 of 1.01, cond 2.3e10; light_proj's y row
  * moved by 1.5e-5 relative with the rounding mode). */
-static void psm_pps_cond(swr_ctx* c, const scene_args* s, const swarp_vec3* pts, size_t n) {
+typedef struct {
+    swarp_vec3 eye, f, r, u;
+    long double delta, a, b, tx, ty;
+} pps_cam;
+
+/* p's PPS coordinates v (z without the constant a) and their rounding R (in
+ * units of eps, see psm_pps_cond); 0 behind the slid-back eye */
+static int pps_point(const pps_cam* k, swarp_vec3 p, long double v[3], long double R[3]) {
+    const long double qx = (long double)p.x - k->eye.x, qy = (long double)p.y - k->eye.y, qz = (long double)p.z - k->eye.z;
+    const long double d = qx * k->f.x + qy * k->f.y + qz * k->f.z + k->delta;
+    if (!(d > 0)) return 0;
+    const long double M = fmaxl(fmaxl(fmaxl(fabsl(p.x), fabsl(p.y)), fabsl(p.z)),
+                                fmaxl(fmaxl(fabsl(k->eye.x), fabsl(k->eye.y)), fabsl(k->eye.z)));
+    const long double x = (qx * k->r.x + qy * k->r.y + qz * k->r.z) / (k->tx * d),
+                      y = (qx * k->u.x + qy * k->u.y + qz * k->u.z) / (k->ty * d), z = -k->b / d;
+    v[0] = x, v[1] = y, v[2] = z;
+    R[0] = M * (1 / k->tx + fabsl(x)) / d + fabsl(x);
+    R[1] = M * (1 / k->ty + fabsl(y)) / d + fabsl(y);
+    R[2] = M * k->b / (d * d) + fabsl(k->a + z);
+    return 1;
+}
+
+static void psm_pps_cond(swr_ctx* c, const scene_args* s, const swarp_vec3* pts, size_t n, const swarp_vec3* H, size_t nh) {
     const swarp_camera* cam = &s->cam;
     const double near = cam->near, far = cam->far;
     if (!(s->use_opt && s->opt.technique == SWARP_TECHNIQUE_PSM) || n == 0 || n > SWARP_BODY_MAX_POINTS) return;
     if (!(near > 0 && far > near && isfinite(far)) || !fin3(&cam->eye) || !fin(cam->fovy) || !fin(cam->aspect) ||
         !fin(s->opt.slideback))
         return;
-    const swarp_vec3 f = unit_scaled(cam->dir), r = unit_scaled(cross(f, cam->up)), u = cross(r, f);
-    long double delta = s->opt.slideback;
-    if (s->opt.psm_slideback && delta == 0) { /* src/psm.c: automatic slide-back */
+    pps_cam k;
+    k.eye = cam->eye;
+    k.f = unit_scaled(cam->dir), k.r = unit_scaled(cross(k.f, cam->up)), k.u = cross(k.r, k.f);
+    k.delta = s->opt.slideback;
+    if (s->opt.psm_slideback && k.delta == 0) { /* src/psm.c: automatic slide-back */
         long double zmin = INFINITY;
-        for (size_t i = 0; i < n; ++i) zmin = fminl(zmin, dot(v3(pts[i].x - cam->eye.x, pts[i].y - cam->eye.y, pts[i].z - cam->eye.z), f));
-        if (zmin < near) delta = near - zmin;
+        for (size_t i = 0; i < n; ++i) zmin = fminl(zmin, dot(v3(pts[i].x - cam->eye.x, pts[i].y - cam->eye.y, pts[i].z - cam->eye.z), k.f));
+        if (zmin < near) k.delta = near - zmin;
     }
-    const long double nn = near + delta, fa = far + delta, b = 2 * fa * nn / (fa - nn), a = (fa + nn) / (fa - nn);
-    const long double ty = tanl(0.5L * cam->fovy), tx = ty * cam->aspect;
-    if (!(ty > 0 && tx > 0 && isfinite((double)b))) return;
-    swarp_vec3 q[SWARP_BODY_MAX_POINTS + 1];
-    size_t m = 0;
-    for (size_t i = 0; i < n; ++i) q[m++] = pts[i];
-    if ((int)s->light.type == SWARP_LIGHT_POINT && fin3(&s->light.position)) q[m++] = s->light.position;
+    const long double nn = near + k.delta, fa = far + k.delta;
+    k.b = 2 * fa * nn / (fa - nn), k.a = (fa + nn) / (fa - nn);
+    k.ty = tanl(0.5L * cam->fovy), k.tx = k.ty * cam->aspect;
+    if (!(k.ty > 0 && k.tx > 0 && isfinite((double)k.b))) return;
+    const int point = (int)s->light.type == SWARP_LIGHT_POINT && fin3(&s->light.position);
     long double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY}, R[3] = {0, 0, 0};
-    for (size_t i = 0; i < m; ++i) {
-        const long double qx = (long double)q[i].x - cam->eye.x, qy = (long double)q[i].y - cam->eye.y,
-                          qz = (long double)q[i].z - cam->eye.z;
-        const long double d = qx * f.x + qy * f.y + qz * f.z + delta;
-        if (!(d > 0)) continue;
-        const long double M = fmaxl(fmaxl(fmaxl(fabsl(q[i].x), fabsl(q[i].y)), fabsl(q[i].z)),
-                                    fmaxl(fmaxl(fabsl(cam->eye.x), fabsl(cam->eye.y)), fabsl(cam->eye.z)));
-        const long double x = (qx * r.x + qy * r.y + qz * r.z) / (tx * d), y = (qx * u.x + qy * u.y + qz * u.z) / (ty * d),
-                          z = -b / d; /* + a: a constant, in the rounding, not in the extent */
-        const long double v[3] = {x, y, z}, g[3] = {(1 / tx + fabsl(x)) / d, (1 / ty + fabsl(y)) / d, b / (d * d)},
-                          full[3] = {fabsl(x), fabsl(y), fabsl(a + z)};
-        for (int k = 0; k < 3; ++k) {
-            lo[k] = fminl(lo[k], v[k]), hi[k] = fmaxl(hi[k], v[k]);
-            R[k] = fmaxl(R[k], M * g[k] + full[k]);
+    for (size_t i = 0; i < n + (size_t)point; ++i) {
+        long double v[3], e[3];
+        if (!pps_point(&k, i < n ? pts[i] : s->light.position, v, e)) continue;
+        for (int j = 0; j < 3; ++j) {
+            lo[j] = fminl(lo[j], v[j]), hi[j] = fmaxl(hi[j], v[j]);
+            R[j] = fmaxl(R[j], e[j]);
         }
     }
-    for (int k = 0; k < 3; ++k) {
-        if (hi[k] > lo[k] && isfinite((double)(R[k] / (hi[k] - lo[k])))) swr_cond(c, (double)(R[k] / (hi[k] - lo[k])));
+    for (int j = 0; j < 3; ++j)
+        if (hi[j] > lo[j] && isfinite((double)(R[j] / (hi[j] - lo[j])))) swr_cond(c, (double)(R[j] / (hi[j] - lo[j])));
+    /* The light's cone [KOZ] §14.2.2 is the smallest cap around the
+     * directions from the light to the receivers H (B without H), formed in
+     * PPS: a receiver at PPS distance δ from the light has its direction
+     * rounded to eps (R_light + R_receiver)/δ, and the cap (the map's axis
+     * and opening) moves with it (fenv 3840000 swarp_setup_points case
+     * 3105881: a vertex of B near a point light 2 units from the eye at 3e6,
+     * the cap's centre 5e-5 different by rounding mode). */
+    long double vl[3], el[3];
+    if (!point || !pps_point(&k, s->light.position, vl, el)) return;
+    const swarp_vec3* rc = H && nh ? H : pts;
+    const size_t nrc = H && nh ? nh : n;
+    for (size_t i = 0; i < nrc && i < SWARP_BODY_MAX_POINTS; ++i) {
+        long double v[3], e[3];
+        if (!pps_point(&k, rc[i], v, e)) continue;
+        const long double dx = v[0] - vl[0], dy = v[1] - vl[1], dz = v[2] - vl[2], dist = sqrtl(dx * dx + dy * dy + dz * dz);
+        const long double noise = sqrtl(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]) + sqrtl(el[0] * el[0] + el[1] * el[1] + el[2] * el[2]);
+        if (dist > 0 && isfinite((double)(noise / dist))) swr_cond(c, (double)(noise / dist));
     }
 }
 
@@ -1813,7 +1844,7 @@ static void e_setup_points(swr_ctx* c) {
     else if (!(s.cam.near > 0 && s.cam.far > s.cam.near)) swr_expect(c, SWARP_ERR_NEAR_FAR);
     if (n == 0 || n > SWARP_BODY_MAX_POINTS) swr_expect(c, SWARP_ERR_INVALID_ARGUMENT), swr_domain(c, SWARP_ERR_NULL_POINTER);
     scene_cond(c, &s, s.cam.near, s.cam.far);
-    psm_pps_cond(c, &s, pts, n);
+    psm_pps_cond(c, &s, pts, n, nr ? rcv : NULL, nr);
     swr_args(c, "n %zu p0 (%g %g %g) nr %zu near %g far %g tech %d param %d n_user %g pseudo %g %g slideback %g", n, pts[0].x, pts[0].y,
              pts[0].z, nr, s.cam.near, s.cam.far, s.use_opt ? (int)s.opt.technique : -1, (int)s.opt.param, s.opt.n_user,
              s.opt.pseudo_near, s.opt.pseudo_far, s.opt.slideback);
