@@ -1582,6 +1582,21 @@ START_TEST(fe_poly_clip_segment_without_faces) {
 }
 END_TEST
 
+/* H := the hexahedron with vertices v and face planes pl, the face loops of
+ * the two fixtures below (copied from the failing runs' H) in the order of pl */
+static void fill_hexahedron(swarp_polyhedron* H, const swarp_vec3 v[8], const swarp_plane pl[6]) {
+    static const uint8_t loops[6][4] = {{0, 2, 6, 4}, {1, 5, 7, 3}, {0, 4, 5, 1},
+                                        {2, 3, 7, 6}, {0, 1, 3, 2}, {4, 6, 7, 5}};
+    H->vertex_count = 8;
+    H->face_count = 6;
+    for (int i = 0; i < 8; ++i) H->vertices[i] = v[i];
+    for (int f = 0; f < 6; ++f) {
+        H->planes[f] = pl[f];
+        H->face_vertex_count[f] = 4;
+        memcpy(H->face_vertices[f], loops[f], 4);
+    }
+}
+
 /* fenvk pass (issue 9, fenv swarp_body_from_h 240000 case 169801): a box
  * 70 long and 1e-6 thick in y and z at 1e6, the clipper's merge distance
  * (SWARP_POLY_EPS_REL x 1e6): the sweep of H collapses onto a segment on
@@ -1608,21 +1623,7 @@ START_TEST(fe_body_from_h_needle_box_rounding_mode) {
         {0x1.32f4989e0bb8cp-4, 0x1.fe7e865378121p-1, -0x1.06c085e8fb731p-6, -0x1.cc23dd01dc8b2p+15},
         {0x1.99054947d95d8p-1, 0x1.27453c6bc7d73p-1, -0x1.5e1e86c53b771p-3, -0x1.329e239988163p+19},
         {-0x1.99054947d95d8p-1, -0x1.27453c6bc7d73p-1, 0x1.5e1e86c53b771p-3, 0x1.4b2e1cdfd461p+17}};
-    const uint8_t loops[6][4] = {
-        {0, 2, 6, 4},
-        {1, 5, 7, 3},
-        {0, 4, 5, 1},
-        {2, 3, 7, 6},
-        {0, 1, 3, 2},
-        {4, 6, 7, 5}};
-    H.vertex_count = 8;
-    H.face_count = 6;
-    for (int i = 0; i < 8; ++i) H.vertices[i] = v[i];
-    for (int f = 0; f < 6; ++f) {
-        H.planes[f] = pl[f];
-        H.face_vertex_count[f] = 4;
-        memcpy(H.face_vertices[f], loops[f], 4);
-    }
+    fill_hexahedron(&H, v, pl);
     const swarp_light l = {SWARP_LIGHT_DIRECTIONAL, 0, {-0x1.72ab062ce7a66p-4, 0x1.588ed75b6c74bp-4, -0x1.fc13b404669e1p-1}, {0x1.e85784c6778a7p+19, 0x1.0bb1d45940732p+6, 0x1.e84059f3bd7edp+19}, 0x1.461c26c225bd8p-3, {0, 0, 0, 0}};
     const swarp_aabb box = {{0x1.e8464f3034f9bp+19, -0x1.3803aa3b83cccp+3, 0x1.e842f6d6baa8dp+19}, {0x1.e84f0c54c443bp+19, -0x1.3803a822a4d8bp+3, 0x1.e842f6d6bcc1bp+19}};
     for (size_t m = 0; m <= sizeof tu_modes / sizeof tu_modes[0]; ++m) {
@@ -1665,21 +1666,7 @@ START_TEST(fe_body_from_h_point_light_far_h_rounding_mode) {
         {-0x1.34c6719e1f31cp-3, 0x1.74a733085fb96p-1, -0x1.56832efe45f99p-1, 0x1.17b5db1ddc034p+2},
         {-0x1.715090501ebc8p-3, 0x1.24e764ac70fep-1, -0x1.99aaa711f45cbp-1, 0x1.0ec7be6b09d49p+2},
         {0x1.715090501ebc8p-3, -0x1.24e764ac70fep-1, 0x1.99aaa711f45cbp-1, -0x1.f9310edbe5f47p+23}};
-    const uint8_t loops[6][4] = {
-        {0, 2, 6, 4},
-        {1, 5, 7, 3},
-        {0, 4, 5, 1},
-        {2, 3, 7, 6},
-        {0, 1, 3, 2},
-        {4, 6, 7, 5}};
-    H.vertex_count = 8;
-    H.face_count = 6;
-    for (int i = 0; i < 8; ++i) H.vertices[i] = v[i];
-    for (int f = 0; f < 6; ++f) {
-        H.planes[f] = pl[f];
-        H.face_vertex_count[f] = 4;
-        memcpy(H.face_vertices[f], loops[f], 4);
-    }
+    fill_hexahedron(&H, v, pl);
     const swarp_light l = {SWARP_LIGHT_POINT, 0, {-0x1.4f83fa8d5bc86p-2, 0x1.21723b5f47f06p-1, -0x1.8395c9b85db87p-1}, {-0x1.aab8928fce347p+5, 0x1.045874a833024p+7, -0x1.ba3af62e6203dp+4}, 0x0p+0, {0, 0, 0, 0}};
     const swarp_aabb box = {{-0x1.6a5bc3a276bd3p+5, -0x1.1c51c26be5628p+3, -0x1.d65bc860f3d92p+4}, {0x1.347b6e5822c8p-2, 0x1.1c1510b2bc14bp+4, 0x1.e81c39d0d9584p+3}};
     const double bmin[3] = {box.min.x, box.min.y, box.min.z}, bmax[3] = {box.max.x, box.max.y, box.max.z};

@@ -1179,6 +1179,31 @@ START_TEST(fenvf_split_light_floor_bound_rounding_mode) {
 }
 END_TEST
 
+/* swarp_lixel_restrict under FE_UPWARD, FE_DOWNWARD and FE_TOWARDZERO
+ * gives the status and the rectangle it gives to nearest */
+static void restrict_same_in_every_mode(const swarp_mat4* M, const swarp_vec4* C, size_t n,
+                                        const swarp_lixel_restrict_options* o) {
+    static const int modes[4] = {FE_TONEAREST, FE_UPWARD, FE_DOWNWARD, FE_TOWARDZERO};
+    swarp_lixel_rect r0;
+    memset(&r0, 0, sizeof r0);
+    swarp_status st0 = SWARP_OK;
+    for (int m = 0; m < 4; ++m) {
+        swarp_lixel_rect r;
+        swarp_mat4 out;
+        fesetround(modes[m]);
+        swarp_status st = swarp_lixel_restrict(M, C, n, o, &r, NULL, &out);
+        fesetround(FE_TONEAREST);
+        if (m == 0) {
+            st0 = st, r0 = r;
+            continue;
+        }
+        ck_assert_msg(st == st0, "mode %d: %s, to nearest %s", m, swarp_status_name(st), swarp_status_name(st0));
+        ck_assert_msg(r.x0 == r0.x0 && r.x1 == r0.x1 && r.y0 == r0.y0 && r.y1 == r0.y1,
+                      "mode %d: rect [%d, %d] x [%d, %d], to nearest [%d, %d] x [%d, %d]", m, r.x0, r.x1, r.y0, r.y1, r0.x0,
+                      r0.x1, r0.y0, r0.y1);
+    }
+}
+
 /* fenvf pass: robust_fenv 120000 (issue 9), swarp_lixel_restrict case
  * 104071.  M's q row is 1e78 times its x, y rows and C holds one direction
  * (q = 0): the cone's image is a ray from within 1e-76 lixel of the origin
@@ -1208,25 +1233,7 @@ START_TEST(fenvf_restrict_flat_cone_rounding_mode) {
     o.twist = -0x1.080a3d8b45cdp+1;
     o.view_width = 1836;
     o.view_height = 209;
-    static const int modes[4] = {FE_TONEAREST, FE_UPWARD, FE_DOWNWARD, FE_TOWARDZERO};
-    swarp_lixel_rect r0;
-    memset(&r0, 0, sizeof r0);
-    swarp_status st0 = SWARP_OK;
-    for (int m = 0; m < 4; ++m) {
-        swarp_lixel_rect r;
-        swarp_mat4 out;
-        fesetround(modes[m]);
-        swarp_status st = swarp_lixel_restrict(&M, C, 8, &o, &r, NULL, &out);
-        fesetround(FE_TONEAREST);
-        if (m == 0) {
-            st0 = st, r0 = r;
-            continue;
-        }
-        ck_assert_msg(st == st0, "mode %d: %s, to nearest %s", m, swarp_status_name(st), swarp_status_name(st0));
-        ck_assert_msg(r.x0 == r0.x0 && r.x1 == r0.x1 && r.y0 == r0.y0 && r.y1 == r0.y1,
-                      "mode %d: rect [%d, %d] x [%d, %d], to nearest [%d, %d] x [%d, %d]", m, r.x0, r.x1, r.y0, r.y1, r0.x0,
-                      r0.x1, r0.y0, r0.y1);
-    }
+    restrict_same_in_every_mode(&M, C, 8, &o);
 }
 END_TEST
 
@@ -1373,25 +1380,7 @@ START_TEST(fenvi_restrict_nonconvex_orientation_rounding_mode) {
     o.twist = -0x1.522fbc3cff35p-2;
     o.view_width = 507;
     o.view_height = 1575;
-    static const int modes[4] = {FE_TONEAREST, FE_UPWARD, FE_DOWNWARD, FE_TOWARDZERO};
-    swarp_lixel_rect r0;
-    memset(&r0, 0, sizeof r0);
-    swarp_status st0 = SWARP_OK;
-    for (int m = 0; m < 4; ++m) {
-        swarp_lixel_rect r;
-        swarp_mat4 out;
-        fesetround(modes[m]);
-        swarp_status st = swarp_lixel_restrict(&M, C, 4, &o, &r, NULL, &out);
-        fesetround(FE_TONEAREST);
-        if (m == 0) {
-            st0 = st, r0 = r;
-            continue;
-        }
-        ck_assert_msg(st == st0, "mode %d: %s, to nearest %s", m, swarp_status_name(st), swarp_status_name(st0));
-        ck_assert_msg(r.x0 == r0.x0 && r.x1 == r0.x1 && r.y0 == r0.y0 && r.y1 == r0.y1,
-                      "mode %d: rect [%d, %d] x [%d, %d], to nearest [%d, %d] x [%d, %d]", m, r.x0, r.x1, r.y0, r.y1, r0.x0,
-                      r0.x1, r0.y0, r0.y1);
-    }
+    restrict_same_in_every_mode(&M, C, 4, &o);
 }
 END_TEST
 
