@@ -1,6 +1,6 @@
 # Visibility across a shadow edge with overlapping occluders (Fig. 3.4-like):
 # PCF (reference), VSM, LVSM(4), EVSM and MSM.  Data from
-# `filter_table plot` (tests/filter_table.c); driven by filter_edge.sh.
+# `filter_table plot` (tests/filter/filter_table.c); driven by filter_edge.sh.
 # Usage: gnuplot -e "datafile='...'; outfile='...'" filter_edge.gp
 set terminal pngcairo size 1100,800 font "sans,11"
 set output outfile

@@ -1,13 +1,13 @@
 #!/bin/sh
 # Regenerates docs/img/geometry_footprints.png from the project's own program
-# tests/geometry_plot_data.c (swarp_setup for 3 lights x 2 techniques).
+# tests/geometry/geometry_plot_data.c (swarp_setup for 3 lights x 2 techniques).
 #   sh docs/plots/geometry_footprints.sh [build-dir]      (default: build)
 set -eu
 cd "$(dirname "$0")/../.."
 BUILD="${1:-build}"
-ninja -C "$BUILD" tests/geometry_plot_data >/dev/null
+ninja -C "$BUILD" tests/geometry/geometry_plot_data >/dev/null
 DATA="$(mktemp)"
 trap 'rm -f "$DATA"' EXIT
-"$BUILD/tests/geometry_plot_data" > "$DATA"
+"$BUILD/tests/geometry/geometry_plot_data" > "$DATA"
 gnuplot -e "datafile='$DATA'; outfile='docs/img/geometry_footprints.png'" docs/plots/geometry_footprints.gp
 echo "wrote docs/img/geometry_footprints.png"

@@ -1,5 +1,5 @@
 /* embed.c -- build-time helper: writes a text file (the library's GLSL
- * twins in docs/glsl/) as a C string constant, so the demo's shaders use the
+ * twins in shaders/) as a C string constant, so the demo's shaders use the
  * very file the library's tests check.
  *   demo_embed INPUT OUTPUT NAME */
 #include <stdio.h>

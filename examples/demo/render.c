@@ -137,8 +137,8 @@ static const char* const main_vs =
     "  gl_Position = u_proj * vs;\n"
     "}\n";
 
-/* The main pass.  The fragment shader is docs/glsl/splits.glsl and
- * docs/glsl/filtering.glsl (the library's GLSL twins, tested against the C
+/* The main pass.  The fragment shader is shaders/splits.glsl and
+ * shaders/filtering.glsl (the library's GLSL twins, tested against the C
  * functions by the splits and filter stages) followed by this source.
  * Map selection, mirroring the library's CPU references:
  *   u_select 0: by eye depth, swarp_select_split_depth (splits.glsl, twin of

@@ -22,8 +22,8 @@ CC_FUZZ="${CC_FUZZ:-clang}"
 # shellcheck disable=SC2046
 "$CC_FUZZ" -std=c11 -g -O1 -fno-omit-frame-pointer -fsanitize=fuzzer,address,undefined \
     -fno-sanitize-recover=undefined -DSWARP_STATIC -Iinclude -Isrc \
-    src/*.c tests/robust/swr.c tests/robust/entries*.c tests/fuzz/fuzz_target.c -lm -o "$out/fuzz_target"
-"$CC_FUZZ" -std=c11 -O1 -DSWARP_STATIC -Iinclude -Isrc src/*.c tests/robust/swr.c tests/robust/entries*.c tests/hard_cases.c -lm \
+    $(find src -name "*.c" | sort) tests/robust/swr.c tests/robust/entries*.c tests/fuzz/fuzz_target.c -lm -o "$out/fuzz_target"
+"$CC_FUZZ" -std=c11 -O1 -DSWARP_STATIC -Iinclude -Isrc $(find src -name "*.c" | sort) tests/robust/swr.c tests/robust/entries*.c tests/robust/hard_cases.c -lm \
     -o "$out/hard_cases_list"
 targets="$("$out/hard_cases_list" --list | awk '$3 == "available" {print $1}')"
 n="$(echo "$targets" | wc -w)"

@@ -1,0 +1,623 @@
+/* Cascades (z-partitioning) combined with any geometry technique: split
+ * selection, blending, per-split matrices and the configuration's error
+ * curve.  [RHS] §3.3-3.4, §4.1-4.2. */
+#include <float.h>
+
+#include "cascade/cascade_internal.h"
+#include "geometry/geometry_internal.h"
+
+static swarp_status sw_check_splits(const double* splits, size_t m) {
+    if (!splits) return SWARP_ERR_NULL_POINTER;
+    if (m < 1 || m > SWARP_SPLIT_MAX_COUNT) return SWARP_ERR_SPLIT_COUNT;
+    for (size_t i = 0; i <= m; ++i)
+        if (!sw_finite(splits[i])) return SWARP_ERR_NON_FINITE;
+    for (size_t i = 0; i < m; ++i)
+        if (!(splits[i + 1] > splits[i])) return SWARP_ERR_NOT_INCREASING;
+    return SWARP_OK;
+}
+
+/* Depth selection without checks: the split containing z, clamped. */
+static uint32_t sw_select_depth(const double* splits, size_t m, double z, int* outside) {
+    *outside = (z < splits[0] || z > splits[m]);
+    uint32_t i = 0;
+    /* m <= 64: a linear scan is as fast as a bisection and mirrors the GLSL */
+    while (i + 1 < m && z >= splits[i + 1]) ++i;
+    return i;
+}
+
+SWARP_API swarp_status swarp_cascade_view_depth(const swarp_camera* cam, const swarp_vec3* p,
+                                                double* out_depth) {
+    if (!cam || !p || !out_depth) return SWARP_ERR_NULL_POINTER;
+    if (!sw_finite3(&cam->eye) || !sw_finite3(&cam->dir) || !sw_finite3(p)) return SWARP_ERR_NON_FINITE;
+    /* Scale dir by its largest component first: its length overflows for
+     * components near DBL_MAX, and any non-zero finite dir is valid. */
+    const swarp_vec3 d = cam->dir;
+    const double dmax = fmax(fabs(d.x), fmax(fabs(d.y), fabs(d.z)));
+    swarp_vec3 f;
+    if (!(dmax > 0.0) || !sw_normalize(sw_v3(d.x / dmax, d.y / dmax, d.z / dmax), &f))
+        return SWARP_ERR_ZERO_VECTOR;
+    double z = sw_dot(sw_sub(*p, cam->eye), f);
+    if (!sw_finite(z)) {
+        /* p - eye (or the sum) overflowed for coordinates near DBL_MAX:
+         * again at a quarter scale (|p/4 - eye/4| <= DBL_MAX/2 per
+         * component, the sum below DBL_MAX); a depth beyond DBL_MAX is not
+         * representable (issue 9, hard-case sweep: NON_FINITE for finite
+         * arguments) */
+        const double q = sw_dot(sw_sub(sw_scale(*p, 0.25), sw_scale(cam->eye, 0.25)), f);
+        if (!(fabs(q) <= 0.25 * DBL_MAX)) return SWARP_ERR_OVERFLOW;
+        z = 4.0 * q;
+    }
+    *out_depth = z;
+    return SWARP_OK;
+}
+
+SWARP_API swarp_status swarp_cascade_select_depth(const double* splits, size_t m, double view_depth,
+                                                  uint32_t* out_index) {
+    if (!out_index) return SWARP_ERR_NULL_POINTER;
+    swarp_status st = sw_check_splits(splits, m);
+    if (st != SWARP_OK) return st;
+    if (!sw_finite(view_depth)) return SWARP_ERR_NON_FINITE;
+    int outside;
+    *out_index = sw_select_depth(splits, m, view_depth, &outside);
+    return outside ? SWARP_INFO_OUTSIDE_SPLITS : SWARP_OK;
+}
+
+SWARP_API swarp_status swarp_cascade_blend(const double* splits, size_t m, double view_depth,
+                                           double band, uint32_t* out_index, double* out_weight) {
+    if (!out_index || !out_weight) return SWARP_ERR_NULL_POINTER;
+    swarp_status st = sw_check_splits(splits, m);
+    if (st != SWARP_OK) return st;
+    if (!sw_finite(view_depth) || !sw_finite(band)) return SWARP_ERR_NON_FINITE;
+    if (!(band >= 0.0 && band < 1.0)) return SWARP_ERR_OUT_OF_RANGE;
+    int outside;
+    const uint32_t i = sw_select_depth(splits, m, view_depth, &outside);
+    double w = 1.0;
+    if (i + 1 < m && band > 0.0) {
+        const double border = splits[i + 1];
+        const double width = band * (border - splits[i]);
+        w = (border - view_depth) / width;
+        if (w > 1.0) w = 1.0;
+        if (w < 0.0) w = 0.0;
+    }
+    *out_index = i;
+    *out_weight = w;
+    return outside ? SWARP_INFO_OUTSIDE_SPLITS : SWARP_OK;
+}
+
+/* Does the map cover p?  w > 0, |x|, |y| <= w and depth inside the range. */
+static int sw_covers(const swarp_bias_map* map, swarp_vec3 p) {
+    swarp_vec4 h = sw_xform_point(&map->world_to_clip, p);
+    if (!(h.w > 0.0)) return 0;
+    const double zlo = map->depth == SWARP_DEPTH_ZERO_TO_ONE ? 0.0 : -h.w;
+    return fabs(h.x) <= h.w && fabs(h.y) <= h.w && h.z >= zlo && h.z <= h.w;
+}
+
+SWARP_API swarp_status swarp_cascade_select_best(const swarp_bias_map* maps, size_t m,
+                                                 const swarp_vec3* p, uint32_t fallback_index,
+                                                 uint32_t* out_index, double* out_L_texel) {
+    if (!maps || !p || !out_index) return SWARP_ERR_NULL_POINTER;
+    if (m < 1 || m > SWARP_SPLIT_MAX_COUNT) return SWARP_ERR_SPLIT_COUNT;
+    if (fallback_index >= m) return SWARP_ERR_OUT_OF_RANGE;
+    if (!sw_finite3(p)) return SWARP_ERR_NON_FINITE;
+    uint32_t best = 0;
+    double best_L = INFINITY;
+    for (size_t i = 0; i < m; ++i) {
+        if (!sw_covers(&maps[i], *p)) {
+            /* still validate the map so bad input never passes silently */
+            double dummy;
+            swarp_status st = swarp_bias_texel_size(&maps[i], p, &dummy, NULL, NULL);
+            if (swarp_status_is_error(st) && st != SWARP_ERR_BEHIND_PROJECTION) return st;
+            continue;
+        }
+        double L;
+        swarp_status st = swarp_bias_texel_size(&maps[i], p, &L, NULL, NULL);
+        if (st != SWARP_OK) return st;
+        if (L < best_L) {
+            best_L = L;
+            best = (uint32_t)i;
+        }
+    }
+    if (!(best_L < INFINITY)) {
+        *out_index = fallback_index;
+        if (out_L_texel) *out_L_texel = 0.0;
+        return SWARP_INFO_OUTSIDE_SPLITS;
+    }
+    *out_index = best;
+    if (out_L_texel) *out_L_texel = best_L;
+    return SWARP_OK;
+}
+
+/* ---- split distances and the error curve ------------------------------- */
+
+SWARP_API swarp_status swarp_cascade_splits(double n, double f, const swarp_split_options* opt,
+                                            double* out, size_t capacity, size_t* out_count) {
+    if (!out_count) return SWARP_ERR_NULL_POINTER;
+    swarp_split_options o;
+    memset(&o, 0, sizeof o);
+    if (opt) o = *opt;
+    if (!sw_reserved_zero(o._reserved, 4)) return SWARP_ERR_RESERVED_NONZERO;
+    if (o.count == 0) o.count = 4;
+    if (o.scheme == SWARP_SCHEME_DEFAULT) {
+        o.scheme = SWARP_SCHEME_PRACTICAL;
+        o.lambda = 0.5; /* PSSM's choice, [RHS] §3.3.2 */
+    }
+    if (o.scheme != SWARP_SCHEME_UNIFORM && o.scheme != SWARP_SCHEME_LOG &&
+        o.scheme != SWARP_SCHEME_PRACTICAL && o.scheme != SWARP_SCHEME_PSEUDO)
+        return SWARP_ERR_UNKNOWN_ENUM;
+    if (!sw_finite(n) || !sw_finite(f) || !sw_finite(o.lambda) || !sw_finite(o.pseudo_near) ||
+        !sw_finite(o.pseudo_far))
+        return SWARP_ERR_NON_FINITE;
+    if (!(n > 0.0) || !(f > n)) return SWARP_ERR_NEAR_FAR;
+    if (o.count > SWARP_SPLIT_MAX_COUNT) return SWARP_ERR_SPLIT_COUNT;
+    if (!(o.lambda >= 0.0 && o.lambda <= 1.0) || !(o.pseudo_near >= 0.0) ||
+        !(o.pseudo_far >= 0.0) || !(o.pseudo_near + o.pseudo_far < 1.0))
+        return SWARP_ERR_OUT_OF_RANGE;
+    if (capacity < (size_t)o.count + 1) {
+        *out_count = (size_t)o.count + 1;
+        return SWARP_ERR_CAPACITY;
+    }
+    if (!out) return SWARP_ERR_NULL_POINTER;
+    double tmp[SWARP_SPLIT_MAX_COUNT + 1];
+    size_t cnt = 0;
+    swarp_status st;
+    switch (o.scheme) {
+        case SWARP_SCHEME_UNIFORM:
+            st = swarp_split_uniform(n, f, o.count, tmp, SWARP_SPLIT_MAX_COUNT + 1, &cnt);
+            break;
+        case SWARP_SCHEME_LOG:
+            st = swarp_split_log(n, f, o.count, tmp, SWARP_SPLIT_MAX_COUNT + 1, &cnt);
+            break;
+        case SWARP_SCHEME_PRACTICAL:
+            st = swarp_split_practical(n, f, o.lambda, o.count, tmp, SWARP_SPLIT_MAX_COUNT + 1, &cnt);
+            break;
+        default: {
+            /* [RHS] (4.1): the practical scheme over the pseudo range */
+            const double n_p = n + o.pseudo_near * (f - n), f_p = f - o.pseudo_far * (f - n);
+            st = swarp_split_pseudo(n, f, n_p, f_p, o.lambda, o.count, tmp,
+                                    SWARP_SPLIT_MAX_COUNT + 1, &cnt);
+            break;
+        }
+    }
+    if (swarp_status_is_error(st)) return st;
+    memcpy(out, tmp, cnt * sizeof *out);
+    *out_count = cnt;
+    return st;
+}
+
+SWARP_API swarp_status swarp_cascade_nopt(const double* splits, size_t m, double pseudo_near,
+                                          double pseudo_far, double* out_n_primes) {
+    if (!out_n_primes) return SWARP_ERR_NULL_POINTER;
+    swarp_status st = sw_check_splits(splits, m);
+    if (st != SWARP_OK) return st;
+    double tmp[SWARP_SPLIT_MAX_COUNT];
+    swarp_status info = SWARP_OK;
+    for (size_t i = 0; i < m; ++i) {
+        /* [RHS] §4.2: pseudo-near only for the first split, pseudo-far only
+         * for the last */
+        const double n_p = i == 0 ? pseudo_near : 0.0, f_p = i + 1 == m ? pseudo_far : 0.0;
+        const double z_0 = splits[i], z_1 = splits[i + 1];
+        st = swarp_warp_nopt_pseudo(z_1 - z_0, z_0, z_1, n_p, f_p, &tmp[i]);
+        if (swarp_status_is_error(st)) return st;
+        if (st != SWARP_OK) info = st;
+    }
+    memcpy(out_n_primes, tmp, m * sizeof *out_n_primes);
+    return info;
+}
+
+SWARP_API swarp_status swarp_cascade_error_curve(const swarp_error_config* cfg,
+                                                 const double* splits, const double* n_primes,
+                                                 size_t m, size_t samples_per_split,
+                                                 double* out_z, double* out_mx, double* out_mz,
+                                                 size_t capacity, size_t* out_count) {
+    if (!cfg || !n_primes || !out_count || !out_z) return SWARP_ERR_NULL_POINTER;
+    swarp_status st = sw_check_splits(splits, m);
+    if (st != SWARP_OK) return st;
+    if (samples_per_split < 2 || samples_per_split > ((size_t)1 << 24)) return SWARP_ERR_OUT_OF_RANGE;
+    const size_t total = m * samples_per_split;
+    if (capacity < total) {
+        *out_count = total;
+        return SWARP_ERR_CAPACITY;
+    }
+    /* Pre-flight on one depth: every input error shows up here, before any
+     * output is written (the chunks below only use depths inside [C_0, C_m]). */
+    double pre_mx, pre_mz;
+    st = swarp_error_split_curve(cfg, splits, n_primes, m, &splits[0], 1, &pre_mx, &pre_mz);
+    if (swarp_status_is_error(st)) return st;
+    double z_buf[256];
+    swarp_status result = SWARP_OK;
+    for (size_t base = 0; base < total; base += 256) {
+        const size_t chunk = total - base < 256 ? total - base : 256;
+        for (size_t k = 0; k < chunk; ++k) {
+            const size_t g = base + k, i = g / samples_per_split, j = g % samples_per_split;
+            const double a = splits[i], b = splits[i + 1];
+            double z;
+            if (j + 1 == samples_per_split)
+                z = (i + 1 == m) ? b : nextafter(b, a); /* left limit at the border */
+            else {
+                z = a + (b - a) * (double)j / (double)(samples_per_split - 1);
+                /* with a subnormal b - a the rounding can reach b: keep the
+                 * sample inside [C_i, C_i+1) (the border sample is nextafter(b, a)) */
+                const double below_b = nextafter(b, a);
+                if (z > below_b) z = below_b;
+            }
+            z_buf[k] = z;
+        }
+        st = swarp_error_split_curve(cfg, splits, n_primes, m, z_buf, chunk,
+                                     out_mx ? out_mx + base : NULL, out_mz ? out_mz + base : NULL);
+        if (swarp_status_is_error(st)) return st;
+        if (st != SWARP_OK) result = st;
+        memcpy(out_z + base, z_buf, chunk * sizeof *out_z);
+    }
+    *out_count = total;
+    return result;
+}
+
+/* ---- the one call -------------------------------------------------------- */
+
+_Static_assert(sizeof(swarp_split_options) == 8 + 3 * sizeof(double) + 16, "swarp_split_options size");
+_Static_assert(sizeof(swarp_cascade_options) ==
+                   sizeof(swarp_setup_options) + sizeof(swarp_split_options) +
+                       sizeof(swarp_stabilize_options) + (1 + SWARP_CASCADE_MAX_SPLITS) * sizeof(double) + 16,
+               "swarp_cascade_options size");
+/* warp_per_split took one of the four reserved words: the size is unchanged */
+_Static_assert(sizeof(swarp_cascade_options) ==
+                   sizeof(swarp_setup_options) + sizeof(swarp_split_options) +
+                       sizeof(swarp_stabilize_options) + (1 + SWARP_CASCADE_MAX_SPLITS) * sizeof(double) +
+                       sizeof(swarp_cascade_warp) + 3 * sizeof(uint32_t),
+               "swarp_cascade_options fields");
+
+_Static_assert(sizeof(swarp_cascade_split) ==
+                   2 * sizeof(double) + 2 * sizeof(swarp_mat4) + sizeof(swarp_atlas_tile) +
+                       11 * sizeof(double) + 8 + 16,
+               "swarp_cascade_split size");
+_Static_assert(sizeof(swarp_cascade_result) == 8 + (4 + SWARP_CASCADE_MAX_SPLITS + 1) * sizeof(double) +
+                                                   sizeof(swarp_atlas_info) + 16,
+               "swarp_cascade_result size");
+
+/* Largest fraction handed to (4.2) when the pseudo plane lies beyond the
+ * first (last) split: (4.2) needs n_p + f_p < 1. */
+#define SW_PSEUDO_MAX_FRACTION 0.99
+
+/* [RHS] (3.9) generalised: r_l l_sc times the clip-space length of one world
+ * unit along the map's x (y) axis at the point c.  For a uniform map that is
+ * the row norm 2/(max - min) of A_fit L exactly; for a warped map it is the
+ * derivative of the projective map at c (the body's centroid). */
+static void sw_kernel_scale(const swarp_mat4* M, swarp_vec3 c, double r_l, double l_sc, double out[2]) {
+    const swarp_vec4 h = sw_xform_point(M, c);
+    for (int k = 0; k < 2; ++k) {
+        double g[3];
+        for (int j = 0; j < 3; ++j) {
+            const double row_k = sw_at(M, k, j), row_w = sw_at(M, 3, j);
+            const double hk = k == 0 ? h.x : h.y;
+            g[j] = (row_k - hk / h.w * row_w) / h.w;
+        }
+        /* sqrt of the sum of squares (hypot is slow); exact enough and safe
+         * for |g| up to ~1e150, beyond which the overflow-proof length is used */
+        const double s2 = g[0] * g[0] + g[1] * g[1] + g[2] * g[2];
+        const double len = (s2 > 1e-290 && s2 < 1e290) ? sqrt(s2) : sw_len(sw_v3(g[0], g[1], g[2]));
+        out[k] = r_l * l_sc * len;
+    }
+}
+
+/* Error model values of one split (overhead frame), [RHS] (2.3)-(2.8). */
+static swarp_status sw_split_errors(const swarp_camera* cam, const swarp_setup_options* so,
+                                    swarp_cascade_split* sp) {
+    swarp_error_config cfg;
+    memset(&cfg, 0, sizeof cfg);
+    const double sw = so->screen_width ? so->screen_width : 1920.0;
+    const double sh = so->screen_height ? so->screen_height : 1080.0;
+    const double mw = so->map_width ? so->map_width : 2048.0;
+    const double mh = so->map_height ? so->map_height : mw;
+    cfg.near = sp->near;
+    cfg.far = sp->far;
+    cfg.theta = sw_half_fovy(cam->fovy);
+    cfg.res_ix = fmax(sw, sh);
+    cfg.res_iy = fmin(sw, sh);
+    cfg.res_s = fmax(mw, mh);
+    cfg.res_t = fmin(mw, mh);
+    swarp_status st = swarp_error_max(&cfg, sp->n_eye, &sp->max_mx, &sp->max_mz);
+    if (swarp_status_is_error(st)) return st;
+    if (swarp_status_is_error(st = swarp_error_mx(&cfg, sp->near, sp->n_eye, &sp->mx_start))) return st;
+    if (swarp_status_is_error(st = swarp_error_mz(&cfg, sp->near, sp->n_eye, &sp->mz_start))) return st;
+    if (swarp_status_is_error(st = swarp_error_mx(&cfg, sp->far, sp->n_eye, &sp->mx_end))) return st;
+    if (swarp_status_is_error(st = swarp_error_mz(&cfg, sp->far, sp->n_eye, &sp->mz_end))) return st;
+    return SWARP_OK;
+}
+
+SWARP_API swarp_status swarp_cascade_setup(const swarp_camera* cam, const swarp_light* light,
+                                           const swarp_aabb* scene,
+                                           const swarp_cascade_options* opts,
+                                           swarp_cascade_result* out,
+                                           swarp_cascade_split* out_splits, size_t capacity,
+                                           size_t* out_count) {
+    if (!cam || !light || !scene || !out || !out_count) return SWARP_ERR_NULL_POINTER;
+    swarp_cascade_options o;
+    memset(&o, 0, sizeof o);
+    if (opts) o = *opts;
+    if (!sw_reserved_zero(o._reserved, 3)) return SWARP_ERR_RESERVED_NONZERO;
+    const swarp_cascade_warp wmode =
+        o.warp_per_split == SWARP_CASCADE_WARP_DEFAULT ? SWARP_CASCADE_WARP_EACH : o.warp_per_split;
+    if (wmode != SWARP_CASCADE_WARP_EACH && wmode != SWARP_CASCADE_WARP_FROM_FIRST)
+        return SWARP_ERR_UNKNOWN_ENUM;
+    /* the setup's enums up front: the split path overrides technique and
+     * param per split (user warps), so a bad value could otherwise pass
+     * (found by the hard-case sweep: SWARP_OK with technique 367000474) */
+    if (!sw_reserved_zero(o.setup._reserved, 2) || o.setup._pad0 != 0 || o.setup._pad1 != 0)
+        return SWARP_ERR_RESERVED_NONZERO; /* the stabilised path never reaches swarp_setup's check */
+    if ((uint32_t)o.setup.technique > (uint32_t)SWARP_TECHNIQUE_PSM ||
+        (uint32_t)o.setup.param > (uint32_t)SWARP_WARP_PARAM_USER ||
+        (uint32_t)o.setup.center > (uint32_t)SWARP_WARP_CENTER_NEAREST_VERTEX ||
+        (uint32_t)o.setup.depth_range > (uint32_t)SWARP_DEPTH_ZERO_TO_ONE)
+        return SWARP_ERR_UNKNOWN_ENUM;
+    const uint32_t K = o.split.count ? o.split.count : 4;
+    if (K > SWARP_CASCADE_MAX_SPLITS) return SWARP_ERR_SPLIT_COUNT;
+    if (capacity < K) {
+        *out_count = K;
+        return SWARP_ERR_CAPACITY;
+    }
+    if (!out_splits) return SWARP_ERR_NULL_POINTER;
+    if (!sw_finite(o.kernel_world_size)) return SWARP_ERR_NON_FINITE;
+    if (o.kernel_world_size < 0.0) return SWARP_ERR_OUT_OF_RANGE;
+    const double r_l = o.kernel_world_size > 0.0 ? o.kernel_world_size : 1.0;
+    int any_user = 0, user_warp = 0;
+    for (uint32_t i = 0; i < SWARP_CASCADE_MAX_SPLITS; ++i) {
+        const double nu = o.n_user[i];
+        if (isnan(nu) || nu == -INFINITY) return SWARP_ERR_NON_FINITE;
+        if (nu < 0.0) return SWARP_ERR_OUT_OF_RANGE;
+        if (nu != 0.0 && i < K) {
+            any_user = 1;
+            if (nu != INFINITY) user_warp = 1;
+        }
+    }
+    if (!sw_reserved_zero(o.stabilize._reserved, 4) || o.stabilize._reserved0 != 0)
+        return SWARP_ERR_RESERVED_NONZERO;
+    swarp_stabilize_mode smode = o.stabilize.mode == SWARP_STABILIZE_DEFAULT ? SWARP_STABILIZE_NONE
+                                                                             : o.stabilize.mode;
+    if (smode != SWARP_STABILIZE_NONE && smode != SWARP_STABILIZE_SPHERE &&
+        smode != SWARP_STABILIZE_LEVELS)
+        return SWARP_ERR_UNKNOWN_ENUM;
+    if (smode != SWARP_STABILIZE_NONE) {
+        /* [RHS] §3.5: both solutions need the uniform texel grid */
+        if (o.setup.technique != SWARP_TECHNIQUE_UNIFORM || user_warp) return SWARP_ERR_STABILIZE_WARPED;
+        if (light->type != SWARP_LIGHT_DEFAULT && light->type != SWARP_LIGHT_DIRECTIONAL)
+            return SWARP_ERR_STABILIZE_LIGHT;
+    }
+    const uint32_t tile_res = o.setup.map_width ? o.setup.map_width : 2048u;
+
+    swarp_cascade_result res;
+    memset(&res, 0, sizeof res);
+    res.split_count = K;
+    swarp_cascade_split sp[SWARP_CASCADE_MAX_SPLITS];
+    memset(sp, 0, K * sizeof sp[0]);
+    swarp_atlas_tile tiles[SWARP_ATLAS_MAX_SPLITS];
+    size_t cnt;
+    swarp_status st = swarp_atlas_layout(K, tile_res, o.setup.depth_range, &res.atlas, tiles,
+                                         SWARP_ATLAS_MAX_SPLITS, &cnt);
+    if (st != SWARP_OK) return st;
+
+    swarp_vec3 pts_buf[SWARP_BODY_MAX_POINTS];
+    const swarp_vec3* pts = pts_buf;
+    size_t npts = 0;
+    swarp_setup_result sr;
+    swarp_polyhedron H, Hi, Bi;
+    swarp_vec3 cam_f = {0, 0, -1}, cam_r, cam_u;
+    swarp_status info = SWARP_OK;
+    const int single = (K == 1 && smode == SWARP_STABILIZE_NONE && !any_user);
+    /* the setup's own checks (min_depth among them) also on the split path */
+    if (isnan(o.setup.min_depth)) return SWARP_ERR_NON_FINITE;
+    if (o.setup.min_depth < 0.0) return SWARP_ERR_OUT_OF_RANGE;
+    if (single) {
+        /* one split IS the single map: the same call, bit for bit */
+        st = swarp_setup(cam, light, scene, &o.setup, &sr, pts_buf, SWARP_BODY_MAX_POINTS, &npts);
+        if (swarp_status_is_error(st)) return st;
+        /* the split options are still validated; one split is [n, f] exactly */
+        swarp_split_options so = o.split;
+        so.count = 1;
+        swarp_status sst = swarp_cascade_splits(sr.view_near, sr.view_far, &so, res.splits,
+                                                SWARP_CASCADE_MAX_SPLITS + 1, &cnt);
+        if (swarp_status_is_error(sst)) return sst;
+        res.view_near = res.splits[0] = sr.view_near;
+        res.view_far = res.splits[1] = sr.view_far;
+    } else {
+        /* [RHS] §3.3.1 adjusted near/far (exactly as swarp_body_adjusted_range),
+         * keeping H = V ∩ S: each split's H_i is H clipped to its depth slab,
+         * cheaper than building V_i ∩ S again */
+        if ((st = sw_check_camera(cam)) != SWARP_OK) return st;
+        if ((st = sw_check_light(light)) != SWARP_OK) return st;
+        if ((st = sw_check_box(scene)) != SWARP_OK) return st;
+        /* [RHS] §4.3: a measured min depth moves the near plane out, as in
+         * swarp_setup; not for stabilised maps (constant ranges, below) */
+        double cam_near = cam->near;
+        if (o.setup.min_depth > 0.0 && smode == SWARP_STABILIZE_NONE) {
+            st = swarp_mindepth_near(cam->near, cam->far, o.setup.min_depth, NULL, &cam_near);
+            if (swarp_status_is_error(st)) return st;
+        }
+        /* H and the adjusted range camera-relative, as swarp_setup computes
+         * them (the same view range); H then back in world coordinates */
+        double n_adj, f_adj;
+        if ((st = sw_body_h_eye(cam, cam_near, cam->far, scene, &H, &n_adj, &f_adj)) != SWARP_OK) return st;
+        sw_poly_translate(&H, cam->eye);
+        sw_camera_basis(cam, &cam_f, &cam_r, &cam_u);
+        n_adj = sw_max(n_adj, cam_near);
+        f_adj = sw_min(sw_max(f_adj, n_adj), cam->far);
+        if (smode != SWARP_STABILIZE_NONE) {
+            /* [RHS] §3.5: both solutions need constant split ranges, so no
+             * view frustum adjustment: split the camera's own [near, far].
+             * The adjusted far moves with the camera (the demo measured
+             * 792.80 -> 793.22 -> 793.58 in three frames of a walk), which
+             * moves every split border, the sphere and the level size, and
+             * the texels drift by fractions per frame. */
+            n_adj = cam->near;
+            f_adj = cam->far;
+        }
+        if (!(f_adj > n_adj)) {
+            /* H lies in one view plane: keep a sliver, as swarp_setup does */
+            const double pad = fmax(1e-9 * n_adj, 1e-300);
+            if (n_adj - pad > cam_near) n_adj -= pad;
+            else f_adj += pad;
+        }
+        swarp_split_options so = o.split;
+        so.count = K;
+        st = swarp_cascade_splits(n_adj, f_adj, &so, res.splits, SWARP_CASCADE_MAX_SPLITS + 1, &cnt);
+        if (swarp_status_is_error(st)) return st;
+        res.view_near = n_adj;
+        res.view_far = f_adj;
+    }
+    const double f_dot_eye = sw_dot(cam_f, cam->eye);
+    /* FROM_FIRST: nu_i = n_opt of (3.2) for each split's own range, the
+     * scale by which the first split's n' is carried to split i */
+    double nu[SWARP_CASCADE_MAX_SPLITS];
+    if (wmode == SWARP_CASCADE_WARP_FROM_FIRST && K > 1) {
+        st = swarp_cascade_nopt(res.splits, K, 0.0, 0.0, nu);
+        if (swarp_status_is_error(st)) return st;
+    }
+
+    for (uint32_t i = 0; i < K; ++i) {
+        swarp_cascade_split* s = &sp[i];
+        swarp_vec3 sphere_center = sw_v3(0, 0, 0);
+        s->near = res.splits[i];
+        s->far = res.splits[i + 1];
+        swarp_setup_options so = o.setup;
+        if (o.n_user[i] != 0.0) {
+            /* per-split warp strength ([RHS] §3.4: "adjust the warping
+             * strength for each split independently") */
+            so.technique = o.n_user[i] == INFINITY ? SWARP_TECHNIQUE_UNIFORM : SWARP_TECHNIQUE_LISPSM;
+            so.param = SWARP_WARP_PARAM_USER;
+            so.n_user = o.n_user[i];
+        } else if (wmode == SWARP_CASCADE_WARP_FROM_FIRST && i > 0) {
+            /* [RHS] §3.4 arbitrary warping "based upon the variable first
+             * split according to the currently used split scheme":
+             * n'_i = n'_0 nu_i / nu_0 (uniform first split: all uniform) */
+            const double n0 = sp[0].n_eye, ni = n0 * (nu[i] / nu[0]);
+            if (!(n0 < INFINITY) || !(ni < INFINITY)) {
+                so.technique = SWARP_TECHNIQUE_UNIFORM;
+            } else {
+                so.technique = SWARP_TECHNIQUE_LISPSM;
+                so.param = SWARP_WARP_PARAM_USER;
+                so.n_user = ni;
+            }
+        } else if (so.param == SWARP_WARP_PARAM_PSEUDO && K > 1) {
+            /* [RHS] §4.2: pseudo-near only for the first split, pseudo-far only
+             * for the last; the fractions of the whole range become fractions
+             * of that split's range */
+            const double whole = res.view_far - res.view_near, len = s->far - s->near;
+            so.pseudo_near = i == 0 ? fmin(o.setup.pseudo_near * whole / len, SW_PSEUDO_MAX_FRACTION) : 0.0;
+            so.pseudo_far = i + 1 == K ? fmin(o.setup.pseudo_far * whole / len, SW_PSEUDO_MAX_FRACTION) : 0.0;
+        }
+        if (smode == SWARP_STABILIZE_SPHERE) {
+            /* the sphere alone decides the map: no body needed (a split
+             * beyond the scene still gets its constant-size map) */
+            npts = 0;
+            st = SWARP_OK;
+            sw_identity(&sr.matrix); /* replaced below */
+            sr.n_eye = INFINITY;
+        } else if (!single && so.technique == SWARP_TECHNIQUE_PSM) {
+            /* PSM's unit-cube clipping wants B as a polyhedron: the full call */
+            st = swarp_setup_range(cam, light, scene, s->near, s->far, &so, &sr, pts_buf,
+                                   SWARP_BODY_MAX_POINTS, &npts);
+            pts = pts_buf;
+            if (st == SWARP_ERR_BODY_EMPTY) return SWARP_ERR_SPLIT_EMPTY;
+            if (swarp_status_is_error(st)) return st;
+        } else if (!single) {
+            /* H_i = H within C_i <= (p - eye).f <= C_{i+1} (outer ends are H's own) */
+            const swarp_polyhedron* hp = &H;
+            if (i > 0) {
+                st = sw_poly_clip(hp, sw_scale(cam_f, -1.0), f_dot_eye + s->near, &Hi);
+                if (st != SWARP_OK) return st;
+                hp = &Hi;
+            }
+            if (i + 1 < K) {
+                st = sw_poly_clip(hp, cam_f, -f_dot_eye - s->far, &Hi);
+                if (st != SWARP_OK) return st;
+                hp = &Hi;
+            }
+            if (hp->vertex_count == 0 && smode == SWARP_STABILIZE_LEVELS) {
+                /* the constant split range ([RHS] §3.5) may reach past the
+                 * scene: nothing to shadow there, the map covers the split
+                 * frustum itself */
+                sw_cam_frame fr;
+                fr.eye = cam->eye;
+                fr.f = cam_f;
+                fr.r = cam_r;
+                fr.u = cam_u;
+                fr.tan_half = tan(0.5 * cam->fovy);
+                fr.aspect = cam->aspect;
+                sw_frustum_corners(&fr, s->near, s->far, pts_buf);
+                pts = pts_buf;
+                npts = 8;
+                st = SWARP_INFO_SPLIT_NO_SCENE;
+                sw_identity(&sr.matrix); /* replaced by the stabiliser */
+                sr.n_eye = INFINITY;
+            } else {
+            if (hp->vertex_count == 0) return SWARP_ERR_SPLIT_EMPTY;
+            st = sw_body_from_h(hp, light, scene, &Bi);
+            if (st == SWARP_ERR_BODY_EMPTY) return SWARP_ERR_SPLIT_EMPTY;
+            if (st != SWARP_OK) return st;
+            if (light->type == SWARP_LIGHT_POINT && light->cone_angle > 0.0) {
+                /* receivers a spot lights: H_i ∩ L (as swarp_setup_range) */
+                st = swarp_body_receivers(hp, light, &Hi);
+                if (st == SWARP_ERR_BODY_EMPTY) return SWARP_ERR_SPLIT_EMPTY;
+                if (st != SWARP_OK) return st;
+                hp = &Hi;
+            }
+            st = swarp_setup_points(cam, light, Bi.vertices, Bi.vertex_count, hp->vertices,
+                                    hp->vertex_count, s->near, s->far, &so, &sr);
+            if (swarp_status_is_error(st)) return st;
+            pts = Bi.vertices;
+            npts = Bi.vertex_count;
+            }
+        }
+        s->status = st;
+        if (st != SWARP_OK && info == SWARP_OK) info = st;
+        s->point_count = (uint32_t)npts;
+        s->matrix = sr.matrix;
+        s->n_eye = sr.n_eye;
+        if (smode != SWARP_STABILIZE_NONE) {
+            swarp_stabilize_report rep;
+            memset(&rep, 0, sizeof rep);
+            /* one depth convention for the whole cascade: the setup's */
+            swarp_stabilize_options sto = o.stabilize;
+            sto.depth = o.setup.depth_range;
+            st = swarp_stabilize_directional(cam, s->near, s->far, &light->direction, pts, npts, scene,
+                                             tile_res, &sto, &s->matrix, &rep);
+            if (swarp_status_is_error(st)) return st;
+            if (st != SWARP_OK) {
+                s->status = st;
+                if (info == SWARP_OK) info = st;
+            }
+            s->texel_size = fmax(rep.texel_size_x, rep.texel_size_y);
+            sphere_center = rep.sphere_center;
+            s->n_eye = INFINITY;
+        }
+        s->tile = tiles[i];
+        sw_mul(&tiles[i].clip_to_atlas, &s->matrix, &s->atlas_matrix);
+        /* kernel scale at the centroid of B_i (origin-relative when stabilised) */
+        swarp_vec3 c = sw_v3(0, 0, 0);
+        for (size_t k = 0; k < npts; ++k) c = sw_add(c, pts[k]);
+        c = npts ? sw_scale(c, 1.0 / (double)npts) : sphere_center;
+        if (smode != SWARP_STABILIZE_NONE) c = sw_sub(c, o.stabilize.origin);
+        sw_kernel_scale(&s->matrix, c, r_l, res.atlas.l_sc, s->kernel_scale);
+        {
+            /* world bias -> this split's depth units, at the centroid */
+            swarp_bias_map bm;
+            memset(&bm, 0, sizeof bm);
+            bm.world_to_clip = s->matrix;
+            bm.res_s = bm.res_t = (double)tile_res;
+            bm.depth = o.setup.depth_range;
+            swarp_light lw = *light;
+            if (smode != SWARP_STABILIZE_NONE) lw.position = sw_sub(lw.position, o.stabilize.origin);
+            st = swarp_bias_depth_per_world(&bm, &lw, &c, &s->depth_per_world);
+            if (st != SWARP_OK) s->depth_per_world = 0.0; /* point light at the centroid */
+        }
+        if ((st = sw_split_errors(cam, &o.setup, s)) != SWARP_OK) return st;
+        if (s->max_mx > res.max_mx) res.max_mx = s->max_mx;
+        if (s->max_mz > res.max_mz) res.max_mz = s->max_mz;
+        if (!sw_mat_finite(&s->matrix) || !sw_mat_finite(&s->atlas_matrix) ||
+            !sw_finite(s->kernel_scale[0]) || !sw_finite(s->kernel_scale[1]))
+            return SWARP_ERR_NON_FINITE;
+    }
+    memcpy(out_splits, sp, K * sizeof *sp);
+    *out = res;
+    *out_count = K;
+    return info;
+}

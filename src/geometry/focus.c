@@ -1,0 +1,253 @@
+/* Light space and focusing: the light view with light-space alignment
+ * ([RHS] §3.2.1, [WS06]) and its continuous fallback near γ = 0, and the
+ * focusing matrix A_fit of [RHS] (3.1). */
+#include <float.h>
+
+#include "geometry/geometry_internal.h"
+
+/* u·o for a unit u: the terms of an origin near DBL_MAX overflow although
+ * the sum may not; then it is summed at a quarter scale (exact: powers of
+ * two), and is +-inf only when |u·o| itself exceeds DBL_MAX. */
+static double sw_look_at_dot(swarp_vec3 u, swarp_vec3 o) {
+    double d = sw_dot(u, o);
+    if (sw_finite(d)) return d;
+    double q = sw_dot(u, sw_scale(o, 0.25));
+    return fabs(q) <= 0.25 * DBL_MAX ? 4.0 * q : q * INFINITY;
+}
+
+/* Right-handed look-at: the view looks down -z, +y is up_unit (already
+ * perpendicular to forward_unit), origin maps to 0. */
+void sw_look_at(swarp_vec3 origin, swarp_vec3 f, swarp_vec3 up, swarp_mat4* out) {
+    swarp_vec3 s = sw_cross(f, up); /* right */
+    swarp_mat4 m;
+    memset(&m, 0, sizeof m);
+    sw_set(&m, 0, 0, s.x), sw_set(&m, 0, 1, s.y), sw_set(&m, 0, 2, s.z);
+    sw_set(&m, 1, 0, up.x), sw_set(&m, 1, 1, up.y), sw_set(&m, 1, 2, up.z);
+    sw_set(&m, 2, 0, -f.x), sw_set(&m, 2, 1, -f.y), sw_set(&m, 2, 2, -f.z);
+    sw_set(&m, 0, 3, -sw_look_at_dot(s, origin));
+    sw_set(&m, 1, 3, -sw_look_at_dot(up, origin));
+    sw_set(&m, 2, 3, sw_look_at_dot(f, origin));
+    sw_set(&m, 3, 3, 1.0);
+    *out = m;
+}
+
+int sw_look_at_finite(const swarp_mat4* m) {
+    return sw_finite(m->m[12]) && sw_finite(m->m[13]) && sw_finite(m->m[14]);
+}
+
+/* The inverse of a rigid look-at L (rows R, translation t): R^T and -R^T t.
+ * Exact where a general inversion rounds, and defined for every finite L: a
+ * general inversion of P0 L called a point light 1e308 away singular
+ * (issue 9, hard-case sweep: swarp_setup and swarp_warp_lispsm returned the
+ * undocumented SWARP_ERR_SINGULAR). */
+void sw_rigid_inverse(const swarp_mat4* L, swarp_mat4* out) {
+    swarp_mat4 m;
+    memset(&m, 0, sizeof m);
+    for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c) sw_set(&m, r, c, sw_at(L, c, r));
+    for (int r = 0; r < 3; ++r)
+        sw_set(&m, r, 3,
+               -(sw_at(L, 0, r) * sw_at(L, 0, 3) + sw_at(L, 1, r) * sw_at(L, 1, 3) + sw_at(L, 2, r) * sw_at(L, 2, 3)));
+    sw_set(&m, 3, 3, 1.0);
+    *out = m;
+}
+/* Is m a rigid motion (rows of its 3x3 orthonormal to 1e-9, last row
+ * 0 0 0 1): a look-at of swarp_focus_light_view? */
+int sw_is_rigid(const swarp_mat4* m) {
+    if (sw_at(m, 3, 0) != 0.0 || sw_at(m, 3, 1) != 0.0 || sw_at(m, 3, 2) != 0.0 || sw_at(m, 3, 3) != 1.0) return 0;
+    for (int a = 0; a < 3; ++a)
+        for (int b = a; b < 3; ++b) {
+            double d = sw_at(m, a, 0) * sw_at(m, b, 0) + sw_at(m, a, 1) * sw_at(m, b, 1) + sw_at(m, a, 2) * sw_at(m, b, 2);
+            if (!(fabs(d - (a == b)) <= 1e-9)) return 0;
+        }
+    return 1;
+}
+
+/* The aligned up vector: normalize(v_perp + w(sin γ) r_perp), see the
+ * header (SWARP_FOCUS_BLEND_SIN).  Returns 1 when the blend is active. */
+static int sw_aligned_up(const swarp_camera* cam, swarp_vec3 a, swarp_vec3* up) {
+    swarp_vec3 v, r, cu;
+    sw_camera_basis(cam, &v, &r, &cu);
+    swarp_vec3 v_perp = sw_sub(v, sw_scale(a, sw_dot(v, a)));
+    double s = sw_glen(v_perp); /* sin γ */
+    int blend = s < SWARP_FOCUS_BLEND_SIN;
+    swarp_vec3 u = v_perp;
+    if (blend) {
+        double t = 1.0 - s / SWARP_FOCUS_BLEND_SIN;
+        double w = SWARP_FOCUS_BLEND_WEIGHT * t * t; /* C1 at s = SWARP_FOCUS_BLEND_SIN */
+        swarp_vec3 r_perp = sw_sub(r, sw_scale(a, sw_dot(r, a)));
+        u = sw_add(v_perp, sw_scale(r_perp, w));
+    }
+    if (!sw_gnormalize(u, up)) {
+        /* the field's single zero (measure zero): any perpendicular works */
+        swarp_vec3 ref = fabs(a.x) < 0.6 ? sw_v3(1, 0, 0) : sw_v3(0, 1, 0);
+        sw_gnormalize(sw_cross(a, ref), up);
+    }
+    /* exact perpendicularity for the look-at */
+    sw_gnormalize(sw_sub(*up, sw_scale(a, sw_dot(*up, a))), up);
+    return blend;
+}
+
+swarp_status sw_light_view(const swarp_camera* cam, swarp_vec3 origin, swarp_vec3 forward, swarp_mat4* out) {
+    swarp_vec3 a = {0, 0, -1}, up = {0, 1, 0};
+    if (!sw_gnormalize(forward, &a)) return SWARP_ERR_ZERO_VECTOR;
+    int blend = sw_aligned_up(cam, a, &up);
+    swarp_mat4 m;
+    sw_look_at(origin, a, up, &m);
+    /* an origin near DBL_MAX: its distance along a row (the translation)
+     * can exceed DBL_MAX; the view is not representable (issue 9, hard-case
+     * sweep: an infinite view with SWARP_OK) */
+    if (!sw_look_at_finite(&m)) return SWARP_ERR_OVERFLOW;
+    *out = m;
+    return blend ? SWARP_INFO_LIGHT_PARALLEL : SWARP_OK;
+}
+
+/* The light view's origin and the direction it looks along, as
+ * swarp_focus_light_view documents them (shared with its follow twin):
+ * directional lights look along their direction from the eye; point lights
+ * along the caller's axis, else the spot direction, else toward the eye. */
+swarp_status sw_light_origin_axis(const swarp_camera* cam, const swarp_light* light, const swarp_vec3* axis,
+                                  swarp_vec3* origin, swarp_vec3* forward) {
+    if (light->type != SWARP_LIGHT_POINT) {
+        *origin = cam->eye;
+        *forward = light->direction;
+        return SWARP_OK;
+    }
+    *origin = light->position;
+    if (axis) {
+        if (!sw_finite3(axis)) return SWARP_ERR_NON_FINITE;
+        *forward = *axis;
+    } else if (light->cone_angle > 0.0) {
+        *forward = light->direction;
+    } else {
+        *forward = sw_sub(cam->eye, light->position);
+    }
+    return sw_glen(*forward) > 0.0 ? SWARP_OK : SWARP_ERR_ZERO_VECTOR;
+}
+
+SWARP_API swarp_status swarp_focus_light_view(const swarp_camera* cam, const swarp_light* light,
+                                              const swarp_vec3* axis, swarp_mat4* out_view) {
+    if (!cam || !light || !out_view) return SWARP_ERR_NULL_POINTER;
+    swarp_status s = sw_check_camera_shape(cam);
+    if (s != SWARP_OK) return s;
+    s = sw_check_light(light);
+    if (s != SWARP_OK) return s;
+    swarp_vec3 origin, forward;
+    s = sw_light_origin_axis(cam, light, axis, &origin, &forward);
+    if (s != SWARP_OK) return s;
+    swarp_mat4 m;
+    s = sw_light_view(cam, origin, forward, &m);
+    if (swarp_status_is_error(s)) return s;
+    *out_view = m;
+    return s;
+}
+
+/* ---- A_fit ------------------------------------------------------------------ */
+
+/* An extent below this fraction of its coordinates' magnitude or of the
+ * widest extent is flat (SWARP_INFO_FLAT_EXTENT).  Coordinates carry a few
+ * eps (1e-16) of the magnitudes they were computed from; 1e-12 leaves a
+ * factor 1e4 for that, and an aspect ratio of 1e12 is far beyond what a
+ * shadow map (or a float depth buffer, 2^-24) resolves. */
+#define SW_FIT_FLAT_REL 1e-12
+
+static int sw_extent(const swarp_mat4* m, const swarp_vec3* pts, size_t n, double lo[3], double hi[3]) {
+    double lx = INFINITY, ly = INFINITY, lz = INFINITY, hx = -INFINITY, hy = -INFINITY, hz = -INFINITY;
+    int ok = 1;
+    for (size_t i = 0; i < n; ++i) {
+        swarp_vec4 h = sw_xform_point(m, pts[i]);
+        ok &= h.w > 0.0;
+        double iw = 1.0 / h.w, x = h.x * iw, y = h.y * iw, z = h.z * iw;
+        lx = x < lx ? x : lx, hx = x > hx ? x : hx; /* branch-free min/max */
+        ly = y < ly ? y : ly, hy = y > hy ? y : hy;
+        lz = z < lz ? z : lz, hz = z > hz ? z : hz;
+    }
+    lo[0] = lx, lo[1] = ly, lo[2] = lz;
+    hi[0] = hx, hi[1] = hy, hi[2] = hz;
+    return ok;
+}
+
+swarp_status sw_focus_fit(const swarp_mat4* m, const swarp_vec3* pts, size_t n, const swarp_vec3* zpts,
+                          size_t zn, swarp_depth_range dr, swarp_mat4* out) {
+    double lo[3], hi[3], zlo[3], zhi[3];
+    if (!sw_extent(m, pts, n, lo, hi)) return SWARP_ERR_DEGENERATE;
+    if (zpts) {
+        if (!sw_extent(m, zpts, zn, zlo, zhi)) return SWARP_ERR_DEGENERATE;
+        lo[2] = zlo[2];
+        hi[2] = zhi[2];
+    }
+    for (int k = 0; k < 3; ++k)
+        if (!sw_finite(lo[k]) || !sw_finite(hi[k])) return SWARP_ERR_DEGENERATE;
+    /* A zero extent (flat B seen edge-on, or all depths equal) gets the
+     * largest other extent as its width, centred on the value: finite, and
+     * the status says so. */
+    double w[3], wmax = 0.0;
+    for (int k = 0; k < 3; ++k) {
+        w[k] = hi[k] - lo[k];
+        if (w[k] > wmax) wmax = w[k];
+    }
+    if (!(wmax > 0.0)) wmax = 1.0;
+    swarp_status st = SWARP_OK;
+    /* Every extent flat (B one point, to the rounding of its coordinates):
+     * the widest extent is itself noise (1 ulp of 5.5 stretched over the
+     * map put B's only point at x = -1.4, hard-case sweep, setup_points
+     * case 154580); the width is 1 as documented, or 1e-6 of the
+     * coordinates where 1 is below their rounding. */
+    {
+        int flat_all = 1;
+        double cmag = 0.0;
+        for (int k = 0; k < 3; ++k) {
+            double mag = fmax(fmax(fabs(lo[k]), fabs(hi[k])), wmax);
+            flat_all &= !(w[k] > SW_FIT_FLAT_REL * mag) || !(w[k] > 0.0);
+            cmag = fmax(cmag, fmax(fabs(lo[k]), fabs(hi[k])));
+        }
+        if (flat_all) wmax = fmax(1.0, 1e-6 * cmag);
+    }
+    for (int k = 0; k < 3; ++k) {
+        /* below SW_FIT_FLAT_REL of the value's magnitude, or of the widest
+         * extent, the width is rounding noise: fitted, the noise would fill
+         * the map and points of B computed along another path (the final
+         * matrix) land outside it */
+        double mag = fmax(fmax(fabs(lo[k]), fabs(hi[k])), wmax);
+        if (!(w[k] > SW_FIT_FLAT_REL * mag) || !(w[k] > 0.0)) {
+            double c = 0.5 * (lo[k] + hi[k]);
+            lo[k] = c - 0.5 * wmax;
+            hi[k] = c + 0.5 * wmax;
+            w[k] = wmax;
+            st = SWARP_INFO_FLAT_EXTENT;
+        }
+    }
+    swarp_mat4 A;
+    memset(&A, 0, sizeof A);
+    /* [RHS] (3.1) */
+    sw_set(&A, 0, 0, 2.0 / w[0]);
+    sw_set(&A, 0, 3, -(hi[0] + lo[0]) / w[0]);
+    sw_set(&A, 1, 1, 2.0 / w[1]);
+    sw_set(&A, 1, 3, -(hi[1] + lo[1]) / w[1]);
+    if (dr == SWARP_DEPTH_ZERO_TO_ONE) {
+        sw_set(&A, 2, 2, 1.0 / w[2]);
+        sw_set(&A, 2, 3, -lo[2] / w[2]);
+    } else {
+        sw_set(&A, 2, 2, 2.0 / w[2]);
+        sw_set(&A, 2, 3, -(hi[2] + lo[2]) / w[2]);
+    }
+    sw_set(&A, 3, 3, 1.0);
+    if (!sw_mat_finite(&A)) return SWARP_ERR_DEGENERATE;
+    *out = A;
+    return st;
+}
+
+SWARP_API swarp_status swarp_focus_fit(const swarp_mat4* m, const swarp_vec3* points, size_t count,
+                                       const swarp_vec3* z_points, size_t z_count,
+                                       swarp_depth_range depth_range, swarp_mat4* out_A_fit) {
+    if (!m || !points || !out_A_fit) return SWARP_ERR_NULL_POINTER;
+    if (count == 0 || (z_points && z_count == 0)) return SWARP_ERR_INVALID_ARGUMENT;
+    if (sw_check_depth_range(depth_range) != SWARP_OK) return SWARP_ERR_UNKNOWN_ENUM;
+    if (!sw_mat_finite(m)) return SWARP_ERR_NON_FINITE;
+    for (size_t i = 0; i < count; ++i)
+        if (!sw_finite3(&points[i])) return SWARP_ERR_NON_FINITE;
+    if (z_points)
+        for (size_t i = 0; i < z_count; ++i)
+            if (!sw_finite3(&z_points[i])) return SWARP_ERR_NON_FINITE;
+    return sw_focus_fit(m, points, count, z_points, z_count, depth_range, out_A_fit);
+}

@@ -1,0 +1,888 @@
+/* Convex polyhedra with a fixed capacity: construction from a box, a camera
+ * or an inverse view-projection matrix, and clipping by planes.  The
+ * intersection body B of [RHS] §3.1.1 is built from these operations. */
+#include "geometry/geometry_internal.h"
+
+_Static_assert(sizeof(swarp_polyhedron) == SWARP_POLY_SIZE, "swarp_polyhedron size");
+_Static_assert(SWARP_POLY_MAX_VERTICES <= 255, "face indices are uint8_t");
+
+/* ---- shared argument checks ---------------------------------------------- */
+
+swarp_status sw_check_depth_range(swarp_depth_range d) {
+    if (d != SWARP_DEPTH_DEFAULT && d != SWARP_DEPTH_NEG_ONE_TO_ONE && d != SWARP_DEPTH_ZERO_TO_ONE)
+        return SWARP_ERR_UNKNOWN_ENUM;
+    return SWARP_OK;
+}
+
+swarp_status sw_check_camera_shape(const swarp_camera* cam) {
+    if (!sw_reserved_zero(cam->_reserved, 4)) return SWARP_ERR_RESERVED_NONZERO;
+    if (!sw_finite3(&cam->eye) || !sw_finite3(&cam->dir) || !sw_finite3(&cam->up) ||
+        !sw_finite(cam->fovy) || !sw_finite(cam->aspect))
+        return SWARP_ERR_NON_FINITE;
+    if (!(cam->fovy > 0.0 && cam->fovy < SWARP_PI)) return SWARP_ERR_FOV;
+    if (!(cam->aspect > 0.0)) return SWARP_ERR_OUT_OF_RANGE;
+    swarp_vec3 f, u;
+    if (!sw_gnormalize(cam->dir, &f) || !sw_gnormalize(cam->up, &u)) return SWARP_ERR_ZERO_VECTOR;
+    /* up must leave a usable right vector: sin(angle(dir, up)) >= 1e-9 */
+    if (!(sw_glen(sw_cross(f, u)) >= 1e-9)) return SWARP_ERR_DEGENERATE;
+    return SWARP_OK;
+}
+
+swarp_status sw_check_camera(const swarp_camera* cam) {
+    swarp_status s = sw_check_camera_shape(cam);
+    if (s != SWARP_OK) return s;
+    if (!sw_finite(cam->near) || !sw_finite(cam->far)) return SWARP_ERR_NON_FINITE;
+    if (!(cam->near > 0.0 && cam->far > cam->near)) return SWARP_ERR_NEAR_FAR;
+    return SWARP_OK;
+}
+
+swarp_status sw_check_light(const swarp_light* light) {
+    if (light->_reserved0 != 0 || !sw_reserved_zero(light->_reserved, 4))
+        return SWARP_ERR_RESERVED_NONZERO;
+    swarp_light_type t = light->type;
+    if (t != SWARP_LIGHT_DEFAULT && t != SWARP_LIGHT_DIRECTIONAL && t != SWARP_LIGHT_POINT)
+        return SWARP_ERR_UNKNOWN_ENUM;
+    if (t == SWARP_LIGHT_POINT) {
+        if (!sw_finite3(&light->position) || !sw_finite(light->cone_angle)) return SWARP_ERR_NON_FINITE;
+        if (light->cone_angle != 0.0) {
+            if (!(light->cone_angle > 0.0 && light->cone_angle < 0.5 * SWARP_PI)) return SWARP_ERR_OUT_OF_RANGE;
+            if (!sw_finite3(&light->direction)) return SWARP_ERR_NON_FINITE;
+            swarp_vec3 a;
+            if (!sw_gnormalize(light->direction, &a)) return SWARP_ERR_ZERO_VECTOR;
+        }
+    } else {
+        if (!sw_finite3(&light->direction)) return SWARP_ERR_NON_FINITE;
+        swarp_vec3 a;
+        if (!sw_gnormalize(light->direction, &a)) return SWARP_ERR_ZERO_VECTOR;
+    }
+    return SWARP_OK;
+}
+
+swarp_status sw_check_box(const swarp_aabb* box) {
+    if (!sw_finite3(&box->min) || !sw_finite3(&box->max)) return SWARP_ERR_NON_FINITE;
+    if (!(box->min.x <= box->max.x && box->min.y <= box->max.y && box->min.z <= box->max.z))
+        return SWARP_ERR_BOX_INVERTED;
+    int zero = (box->min.x == box->max.x) + (box->min.y == box->max.y) + (box->min.z == box->max.z);
+    if (zero >= 2) return SWARP_ERR_BOX_DEGENERATE;
+    return SWARP_OK;
+}
+
+void sw_camera_basis(const swarp_camera* cam, swarp_vec3* f, swarp_vec3* r, swarp_vec3* u) {
+    swarp_vec3 ff = {0, 0, -1}, uu, rr = {1, 0, 0};
+    sw_gnormalize(cam->dir, &ff);
+    sw_gnormalize(sw_cross(ff, cam->up), &rr);
+    uu = sw_cross(rr, ff);
+    *f = ff;
+    *r = rr;
+    *u = uu;
+}
+
+/* ---- construction ---------------------------------------------------------- */
+
+/* Largest absolute coordinate (at least the extent): the scale the relative
+ * epsilons refer to.  Never 0 for a non-empty polyhedron of non-zero size;
+ * a tiny floor keeps eps > 0 for a polyhedron at the origin. */
+double sw_poly_scale(const swarp_polyhedron* p) {
+    double s = 0.0;
+    for (uint32_t i = 0; i < p->vertex_count; ++i) {
+        const swarp_vec3* v = &p->vertices[i];
+        double ax = fabs(v->x), ay = fabs(v->y), az = fabs(v->z);
+        s = ax > s ? ax : s; /* branch-free max */
+        s = ay > s ? ay : s;
+        s = az > s ? az : s;
+    }
+    return s > 1e-300 ? s : 1e-300;
+}
+
+/* Newell normal of a loop (robust for non-planar or tiny loops). */
+/* Renumber every face loop through remap, drop repeated neighbours and faces
+ * left with fewer than 3 vertices (compacted in place: row nf <= f, and within
+ * a row m <= k), mark the vertices still used and return the face count.
+ * Shared by the near-duplicate merge after clipping and the final tidy-up. */
+static uint32_t sw_remap_faces(swarp_polyhedron* p, const uint8_t* remap, uint8_t* used) {
+    uint32_t nf = 0;
+    for (uint32_t f = 0; f < p->face_count; ++f) {
+        uint32_t n = p->face_vertex_count[f], m = 0;
+        const uint8_t* src = p->face_vertices[f];
+        uint8_t* loop = p->face_vertices[nf];
+        for (uint32_t k = 0; k < n; ++k) {
+            uint8_t id = remap[src[k]];
+            if (m > 0 && loop[m - 1] == id) continue;
+            loop[m++] = id;
+        }
+        while (m > 1 && loop[m - 1] == loop[0]) --m;
+        if (m < 3) continue;
+        p->face_vertex_count[nf] = m;
+        p->planes[nf] = p->planes[f];
+        for (uint32_t k = 0; k < m; ++k) used[loop[k]] = 1;
+        ++nf;
+    }
+    p->face_count = nf;
+    return nf;
+}
+
+static swarp_vec3 sw_newell(const swarp_vec3* v, const uint8_t* idx, uint32_t n) {
+    swarp_vec3 nn = {0, 0, 0};
+    swarp_vec3 c = {0, 0, 0};
+    for (uint32_t i = 0; i < n; ++i) c = sw_add(c, v[idx[i]]);
+    c = sw_scale(c, 1.0 / n); /* centred: no cancellation for large worlds */
+    /* a loop 1e-160 across (the corners of a matrix with w ~ 1e160) has
+     * products of 1e-320: subnormal, and its unit normal came out inf
+     * (issue 9); such a loop is scaled to size 1 first.  (A loop 1e300
+     * across overflows to inf: the face is dropped as collapsed.) */
+    double m = 0.0, inv = 1.0;
+    for (uint32_t i = 0; i < n; ++i) {
+        swarp_vec3 a = sw_sub(v[idx[i]], c);
+        m = sw_max(m, sw_max(fabs(a.x), sw_max(fabs(a.y), fabs(a.z))));
+    }
+    const int scaled = m < 1e-100 && m > 0.0;
+    if (scaled) inv = m;
+    for (uint32_t i = 0; i < n; ++i) {
+        swarp_vec3 a = sw_sub(v[idx[i]], c), b = sw_sub(v[idx[i + 1 == n ? 0 : i + 1]], c);
+        if (scaled) a = sw_v3(a.x / inv, a.y / inv, a.z / inv), b = sw_v3(b.x / inv, b.y / inv, b.z / inv);
+        nn.x += (a.y - b.y) * (a.z + b.z);
+        nn.y += (a.z - b.z) * (a.x + b.x);
+        nn.z += (a.x - b.x) * (a.y + b.y);
+    }
+    return nn;
+}
+
+/* Merge vertices closer than eps, drop repeated indices in loops and faces
+ * with fewer than 3 distinct vertices, drop unreferenced vertices when there
+ * are faces.  Keeps the SWARP_POLY_EPS_REL promise after every operation. */
+void sw_poly_finalize(swarp_polyhedron* p, uint32_t first_new, double scale) {
+    const double eps = SWARP_POLY_EPS_REL * (scale > 0.0 ? scale : sw_poly_scale(p));
+    uint8_t remap[SWARP_POLY_MAX_VERTICES];
+    uint32_t nv = 0;
+    if (first_new > p->vertex_count) first_new = p->vertex_count;
+    for (uint32_t i = 0; i < first_new; ++i) remap[i] = (uint8_t)i;
+    nv = first_new;
+    for (uint32_t i = first_new; i < p->vertex_count; ++i) {
+        swarp_vec3 v = p->vertices[i];
+        uint32_t j = 0;
+        for (; j < nv; ++j) {
+            swarp_vec3 w = p->vertices[j];
+            if (fabs(v.x - w.x) <= eps && fabs(v.y - w.y) <= eps && fabs(v.z - w.z) <= eps) break;
+        }
+        if (j == nv) p->vertices[nv++] = v;
+        remap[i] = (uint8_t)j;
+    }
+    p->vertex_count = nv;
+    uint32_t nf = 0;
+    uint8_t used[SWARP_POLY_MAX_VERTICES];
+    memset(used, 0, nv);
+    nf = sw_remap_faces(p, remap, used);
+    if (nf > 0) { /* vertices of a solid or flat polyhedron are face corners */
+        uint32_t k = 0;
+        for (uint32_t i = 0; i < nv; ++i) {
+            if (used[i]) {
+                remap[i] = (uint8_t)k;
+                p->vertices[k++] = p->vertices[i];
+            }
+        }
+        if (k != nv) {
+            for (uint32_t f = 0; f < nf; ++f)
+                for (uint32_t j = 0; j < p->face_vertex_count[f]; ++j)
+                    p->face_vertices[f][j] = remap[p->face_vertices[f][j]];
+            p->vertex_count = k;
+        }
+    }
+}
+
+/* After clipping: merge each new on-plane vertex into an earlier on-plane
+ * vertex closer than eps (Euclidean).  Only these can be that close: every
+ * other kept vertex lies more than the classification tolerance (>= eps)
+ * off the plane.  Loops are then rewritten and unreferenced vertices
+ * dropped, only when something merged. */
+static void sw_poly_merge_on_plane(swarp_polyhedron* p, const uint8_t* on, uint32_t n_on, uint32_t first_new,
+                                   double eps) {
+    /* into[a]: the on-plane slot that slot a merges into (a itself when it
+     * stays).  Merges are rare, so the whole-vertex remap is only built
+     * when one happened. */
+    uint8_t into[SWARP_POLY_MAX_VERTICES];
+    int merged = 0;
+    const double eps2 = eps * eps;
+    if (n_on > 0) into[0] = 0;
+    for (uint32_t a = 1; a < n_on; ++a) {
+        into[a] = (uint8_t)a;
+        if (on[a] < first_new) continue; /* old vertices are apart already */
+        swarp_vec3 v = p->vertices[on[a]];
+        for (uint32_t b = 0; b < a; ++b) {
+            if (into[b] != b) continue; /* merged itself: compare with survivors only */
+            swarp_vec3 w = p->vertices[on[b]];
+            double dx = v.x - w.x;
+            if (fabs(dx) > eps) continue; /* the usual case: apart in x already */
+            double dy = v.y - w.y, dz = v.z - w.z;
+            if (dx * dx + dy * dy + dz * dz <= eps2) {
+                into[a] = (uint8_t)b;
+                merged = 1;
+                break;
+            }
+        }
+    }
+    if (!merged) return;
+    uint8_t remap[SWARP_POLY_MAX_VERTICES];
+    for (uint32_t i = 0; i < p->vertex_count; ++i) remap[i] = (uint8_t)i;
+    for (uint32_t a = 0; a < n_on; ++a) remap[on[a]] = on[into[a]];
+    uint32_t nf = 0;
+    uint8_t used[SWARP_POLY_MAX_VERTICES];
+    memset(used, 0, p->vertex_count);
+    nf = sw_remap_faces(p, remap, used);
+    uint32_t k = 0;
+    for (uint32_t i = 0; i < p->vertex_count; ++i) {
+        int keep = nf > 0 ? used[i] : (remap[i] == i);
+        if (keep) {
+            remap[i] = (uint8_t)k;
+            p->vertices[k++] = p->vertices[i];
+        }
+    }
+    for (uint32_t f = 0; f < nf; ++f)
+        for (uint32_t j = 0; j < p->face_vertex_count[f]; ++j) p->face_vertices[f][j] = remap[p->face_vertices[f][j]];
+    p->vertex_count = k;
+}
+
+/* No two points closer than eps in every coordinate (the merge test of
+ * sw_poly_finalize)? */
+static int sw_points_apart(const swarp_vec3* v, uint32_t n, double eps) {
+    for (uint32_t i = 1; i < n; ++i)
+        for (uint32_t j = 0; j < i; ++j)
+            if (fabs(v[i].x - v[j].x) <= eps && fabs(v[i].y - v[j].y) <= eps && fabs(v[i].z - v[j].z) <= eps)
+                return 0;
+    return 1;
+}
+
+/* The 6 faces of a hexahedron given by 8 corners, corner index = x | y<<1 |
+ * z<<2.  The plane of each face comes from Newell's normal of its loop; the
+ * loops of the table all run the same way round (outward for a right-handed
+ * corner order), so one decision orients them all: the face whose centre
+ * lies farthest from the centroid along its normal says whether they point
+ * away from it (so the corner order's handedness does not matter).  Each
+ * face deciding for itself let rounding decide for the two faces of a
+ * hexahedron flat across them (a frustum of aspect 1e-87: the distance is
+ * 1e-93 against a rounding of 1e-22) and oriented both the same way, an H
+ * with no inside: the body came out empty or not by rounding (issue 9,
+ * fenv: swarp_setup_follow 30000 case 27474). */
+void sw_poly_from_corners(const swarp_vec3 c[8], swarp_polyhedron* out) {
+    static const uint8_t quads[6][4] = {{0, 4, 6, 2}, {1, 3, 7, 5}, {0, 1, 5, 4},
+                                        {2, 6, 7, 3}, {0, 2, 3, 1}, {4, 5, 7, 6}};
+    out->vertex_count = 8;
+    swarp_vec3 centroid = {0, 0, 0};
+    for (int i = 0; i < 8; ++i) {
+        out->vertices[i] = c[i];
+        centroid = sw_add(centroid, c[i]);
+    }
+    centroid = sw_scale(centroid, 1.0 / 8.0);
+    uint32_t nf = 0;
+    double far_dot = 0.0;
+    for (int f = 0; f < 6; ++f) {
+        const uint8_t* loop = quads[f];
+        swarp_vec3 n = sw_newell(out->vertices, loop, 4);
+        swarp_vec3 nu = {0, 0, 1};
+        /* collapsed face (flat box), or corners near DBL_MAX whose products
+         * overflowed to inf - inf = NaN (sw_gnormalize's scaled branch
+         * takes fmax of the components, which skips a NaN: checked here) */
+        if (!sw_finite3(&n) || !sw_gnormalize(n, &nu)) continue;
+        swarp_vec3 fc = sw_scale(sw_add(sw_add(c[loop[0]], c[loop[1]]), sw_add(c[loop[2]], c[loop[3]])), 0.25);
+        const double dc = sw_dot(nu, sw_sub(fc, centroid));
+        if (fabs(dc) > fabs(far_dot)) far_dot = dc;
+        out->planes[nf].a = nu.x;
+        out->planes[nf].b = nu.y;
+        out->planes[nf].c = nu.z;
+        out->planes[nf].d = -sw_dot(nu, fc);
+        memcpy(out->face_vertices[nf], loop, 4);
+        out->face_vertex_count[nf] = 4;
+        ++nf;
+    }
+    if (far_dot < 0.0) /* a left-handed corner order: every loop ran inward */
+        for (uint32_t f = 0; f < nf; ++f) {
+            swarp_plane* p = &out->planes[f];
+            p->a = -p->a, p->b = -p->b, p->c = -p->c, p->d = -p->d;
+            uint8_t* l = out->face_vertices[f];
+            uint8_t t = l[1];
+            l[1] = l[3];
+            l[3] = t;
+        }
+    out->face_count = nf;
+    /* a real frustum or box: 6 quads on 8 corners that are all apart, so
+     * sw_poly_finalize would merge, drop and renumber nothing */
+    if (nf == 6 && sw_points_apart(out->vertices, 8, SWARP_POLY_EPS_REL * sw_poly_scale(out))) return;
+    sw_poly_finalize(out, 0, 0.0);
+}
+
+SWARP_API swarp_status swarp_poly_from_aabb(const swarp_aabb* box, swarp_polyhedron* out) {
+    if (!box || !out) return SWARP_ERR_NULL_POINTER;
+    if (!sw_finite3(&box->min) || !sw_finite3(&box->max)) return SWARP_ERR_NON_FINITE;
+    if (!(box->min.x <= box->max.x && box->min.y <= box->max.y && box->min.z <= box->max.z))
+        return SWARP_ERR_BOX_INVERTED;
+    swarp_vec3 c[8];
+    for (int i = 0; i < 8; ++i)
+        c[i] = sw_v3((i & 1) ? box->max.x : box->min.x, (i & 2) ? box->max.y : box->min.y,
+                     (i & 4) ? box->max.z : box->min.z);
+    sw_poly_from_corners(c, out);
+    /* exact axis planes for the box (Newell gives them too, up to rounding) */
+    return SWARP_OK;
+}
+
+/* Largest tangent of a frustum half-angle used (90° - 1e-12 rad). */
+#define SW_FRUSTUM_MAX_TAN 1e12
+
+static void sw_frustum_corners_b(const swarp_camera* cam, swarp_vec3 f, swarp_vec3 r, swarp_vec3 u, double tx,
+                                 double ty, double near, double far, swarp_vec3 c[8]) {
+    for (int i = 0; i < 8; ++i) {
+        double z = (i & 4) ? far : near;
+        double sx = (i & 1) ? 1.0 : -1.0, sy = (i & 2) ? 1.0 : -1.0;
+        /* eye + z (f + sx tx r + sy ty u): corners relative to the eye first */
+        swarp_vec3 d = sw_add(f, sw_add(sw_scale(r, sx * tx), sw_scale(u, sy * ty)));
+        c[i] = sw_add(cam->eye, sw_scale(d, z));
+    }
+}
+
+/* The frustum's 6 planes (outward unit normals) in the order of
+ * sw_frustum_loops: left, right, bottom, top, near, far. */
+static void sw_frustum_planes_b(const swarp_camera* cam, swarp_vec3 f, swarp_vec3 r, swarp_vec3 u, double tx,
+                                double ty, double near, double far, swarp_plane pl[6]) {
+    const double kx = 1.0 / sqrt(1.0 + tx * tx), ky = 1.0 / sqrt(1.0 + ty * ty);
+    const double fe = sw_dot(f, cam->eye);
+    swarp_vec3 n[6];
+    double d[6];
+    n[0] = sw_scale(sw_add(r, sw_scale(f, tx)), -kx); /* left: -(r + tx f) */
+    n[1] = sw_scale(sw_sub(r, sw_scale(f, tx)), kx);  /* right: r - tx f */
+    n[2] = sw_scale(sw_add(u, sw_scale(f, ty)), -ky); /* bottom: -(u + ty f) */
+    n[3] = sw_scale(sw_sub(u, sw_scale(f, ty)), ky);  /* top: u - ty f */
+    for (int k = 0; k < 4; ++k) d[k] = -sw_dot(n[k], cam->eye); /* the side planes pass through the eye */
+    n[4] = sw_scale(f, -1.0);
+    d[4] = fe + near;
+    n[5] = f;
+    d[5] = -(fe + far);
+    for (int k = 0; k < 6; ++k) pl[k] = (swarp_plane){n[k].x, n[k].y, n[k].z, d[k]};
+}
+
+/* The frustum's faces, corner index = x | y<<1 | z<<2 (x: right, y: up,
+ * z: far), each loop counter-clockwise seen from outside: the loops
+ * sw_poly_from_corners finds for every camera (its basis is always
+ * right-handed the same way). */
+static const uint8_t sw_frustum_loops[6][4] = {{0, 2, 6, 4}, {1, 5, 7, 3}, {0, 4, 5, 1},
+                                               {2, 3, 7, 6}, {0, 1, 3, 2}, {4, 6, 7, 5}};
+
+swarp_status sw_poly_from_frustum(const swarp_camera* cam, double near, double far, swarp_polyhedron* out) {
+    swarp_vec3 f, r, u;
+    sw_camera_basis(cam, &f, &r, &u);
+    /* an aspect of 1e308 asks for a half-angle of 90° - 1e-308 rad: the
+     * frustum is kept within 90° - 1e-12 rad, whose corners stay finite
+     * (SW_FRUSTUM_MAX_TAN) */
+    double ty = fmin(tan(0.5 * cam->fovy), SW_FRUSTUM_MAX_TAN), tx = fmin(ty * cam->aspect, SW_FRUSTUM_MAX_TAN);
+    swarp_vec3 c[8];
+    sw_frustum_corners_b(cam, f, r, u, tx, ty, near, far, c);
+    double scale = 1e-300;
+    for (int i = 0; i < 8; ++i) {
+        if (!sw_finite3(&c[i])) return SWARP_ERR_NON_FINITE;
+        scale = sw_max(scale, sw_max(fabs(c[i].x), sw_max(fabs(c[i].y), fabs(c[i].z))));
+    }
+    /* The corners are at least min(2 near tx, 2 near ty, far - near) apart
+     * (the near quad's sides; near and far corners differ by far - near
+     * along f); above 2 eps (the merge test is eps per coordinate, sqrt(3)
+     * eps in distance) nothing merges, and the planes come from the basis
+     * directly instead of Newell's normals of the corners. */
+    const double sep = sw_min(2.0 * near * sw_min(tx, ty), far - near);
+    if (!(sep > 2.0 * SWARP_POLY_EPS_REL * scale)) {
+        sw_poly_from_corners(c, out);
+        return SWARP_OK;
+    }
+    sw_frustum_planes_b(cam, f, r, u, tx, ty, near, far, out->planes);
+    out->vertex_count = 8;
+    for (int i = 0; i < 8; ++i) out->vertices[i] = c[i];
+    for (int k = 0; k < 6; ++k) {
+        memcpy(out->face_vertices[k], sw_frustum_loops[k], 4);
+        out->face_vertex_count[k] = 4;
+    }
+    out->face_count = 6;
+    return SWARP_OK;
+}
+
+void sw_frustum_planes(const swarp_camera* cam, double near, double far, swarp_plane pl[6]) {
+    swarp_vec3 f, r, u;
+    sw_camera_basis(cam, &f, &r, &u);
+    double ty = fmin(tan(0.5 * cam->fovy), SW_FRUSTUM_MAX_TAN), tx = fmin(ty * cam->aspect, SW_FRUSTUM_MAX_TAN);
+    sw_frustum_planes_b(cam, f, r, u, tx, ty, near, far, pl);
+}
+
+SWARP_API swarp_status swarp_poly_from_camera_range(const swarp_camera* cam, double near, double far,
+                                                    swarp_polyhedron* out) {
+    if (!cam || !out) return SWARP_ERR_NULL_POINTER;
+    swarp_status s = sw_check_camera_shape(cam);
+    if (s != SWARP_OK) return s;
+    if (!sw_finite(near) || !sw_finite(far)) return SWARP_ERR_NON_FINITE;
+    if (!(near > 0.0 && far > near)) return SWARP_ERR_NEAR_FAR;
+    /* every input is finite here: a corner that is not (far tan of the
+     * half-angles beyond DBL_MAX) is a frustum out of the double range */
+    s = sw_poly_from_frustum(cam, near, far, out);
+    return s == SWARP_ERR_NON_FINITE ? SWARP_ERR_OUT_OF_RANGE : s;
+}
+
+SWARP_API swarp_status swarp_poly_from_camera(const swarp_camera* cam, swarp_polyhedron* out) {
+    if (!cam || !out) return SWARP_ERR_NULL_POINTER;
+    return swarp_poly_from_camera_range(cam, cam->near, cam->far, out);
+}
+
+SWARP_API swarp_status swarp_poly_from_inverse_matrix(const swarp_mat4* inv, swarp_depth_range dr,
+                                                      swarp_polyhedron* out) {
+    if (!inv || !out) return SWARP_ERR_NULL_POINTER;
+    if (!sw_mat_finite(inv)) return SWARP_ERR_NON_FINITE;
+    if (sw_check_depth_range(dr) != SWARP_OK) return SWARP_ERR_UNKNOWN_ENUM;
+    double z0 = (dr == SWARP_DEPTH_ZERO_TO_ONE) ? 0.0 : -1.0;
+    swarp_vec3 c[8];
+    double wsign = 0.0;
+    for (int i = 0; i < 8; ++i) {
+        swarp_vec4 h = {(i & 1) ? 1.0 : -1.0, (i & 2) ? 1.0 : -1.0, (i & 4) ? 1.0 : z0, 1.0};
+        swarp_vec4 p = sw_xform4(inv, h);
+        /* all corners must lie on the same side of w = 0 (a finite frustum) */
+        if (i == 0) wsign = p.w > 0.0 ? 1.0 : -1.0;
+        if (!(p.w * wsign > 0.0)) return SWARP_ERR_DEGENERATE;
+        c[i] = sw_v3(p.x / p.w, p.y / p.w, p.z / p.w);
+        if (!sw_finite3(&c[i])) return SWARP_ERR_DEGENERATE;
+    }
+    sw_poly_from_corners(c, out);
+    return SWARP_OK;
+}
+
+/* ---- clipping -------------------------------------------------------------- */
+
+/* Copies only the used parts (the struct is 7 KiB, B uses a few hundred bytes). */
+void sw_poly_copy(const swarp_polyhedron* in, swarp_polyhedron* out) {
+    out->vertex_count = in->vertex_count;
+    out->face_count = in->face_count;
+    memcpy(out->vertices, in->vertices, in->vertex_count * sizeof(swarp_vec3));
+    memcpy(out->planes, in->planes, in->face_count * sizeof(swarp_plane));
+    memcpy(out->face_vertex_count, in->face_vertex_count, in->face_count * sizeof(uint32_t));
+    memcpy(out->face_vertices, in->face_vertices, in->face_count * sizeof in->face_vertices[0]);
+}
+
+/* p + t: vertices moved, plane offsets d' = d - n·t */
+void sw_poly_translate(swarp_polyhedron* p, swarp_vec3 t) {
+    for (uint32_t i = 0; i < p->vertex_count; ++i) p->vertices[i] = sw_add(p->vertices[i], t);
+    for (uint32_t f = 0; f < p->face_count; ++f)
+        p->planes[f].d -= p->planes[f].a * t.x + p->planes[f].b * t.y + p->planes[f].c * t.z;
+}
+
+/* Vertex classes of a clip (bits, so a face's classes can be OR-ed). */
+enum { SW_IN = 1, SW_ON = 2, SW_OUT = 4 };
+
+/* Pseudo-angle in [0, 4) of (x, y): monotone in the true angle, no atan2. */
+static double sw_pseudo_angle(double x, double y) {
+    double d = fabs(x) + fabs(y);
+    if (!(d > 0.0)) return 0.0;
+    double t = x / d; /* in [-1, 1] */
+    return (y >= 0.0) ? 1.0 - t : 3.0 + t;
+}
+
+/* Where the edge i-j crosses the plane (dist: signed distances of its
+ * ends, of opposite signs), interpolated from the end nearer to the plane:
+ * p = a + (b - a) s with s = dist_a / (dist_a - dist_b) <= 1/2 is rounded by
+ * eps (|a| + |p - a|).  From the far end, s ~ 1 and p = b + (a - b) s was
+ * rounded by eps |b|: an edge from the light (50 units away) to a vertex of
+ * H at 1.6e8 was cut 2e-8 off the box plane x = -45.3, by an amount and
+ * direction the rounding mode decided (issue 9, fenv swarp_body_from_h
+ * 480000 case 295909). */
+static inline swarp_vec3 sw_edge_cut(const swarp_vec3* v, const double* dist, uint8_t i, uint8_t j) {
+    const uint8_t ia = fabs(dist[i]) <= fabs(dist[j]) ? i : j, ib = ia == i ? j : i;
+    const double s = dist[ia] / (dist[ia] - dist[ib]);
+    const swarp_vec3 a = v[ia], b = v[ib];
+    return sw_add(a, sw_scale(sw_sub(b, a), s));
+}
+
+/* A cut on a box plane (n = ±e_k, unit_normal): its coordinate k is the
+ * plane's, -d n_k, exactly.  Interpolated it carries a few ulps of the
+ * coordinates (eps |a| + eps |p - a|): a view frustum clipped by a box
+ * flat along x at 1e5 had H's cut vertices on the plane or 1 ulp (1.5e-11)
+ * off it by rounding mode, and a light grazing that plane 1e-15 rad saw B
+ * 7e-15 thick (SWARP_INFO_FLAT_EXTENT) or 3e-11, finer than the
+ * coordinates resolve (SWARP_ERR_DEGENERATE) (issue 9, fenv
+ * swarp_cascade_setup 960000 case 686393). */
+static inline void sw_cut_on_axis_plane(swarp_vec3* p, swarp_vec3 n, double d) {
+    if (n.x != 0.0) p->x = -d * n.x;
+    else if (n.y != 0.0) p->y = -d * n.y;
+    else p->z = -d * n.z;
+}
+
+/* Keeps n·x + d <= 0; n need not be unit.  in and out may alias. */
+/* Clips in into out (out != in).  When no vertex lies outside, *unchanged
+ * is set and out is not written. */
+static swarp_status sw_poly_clip_to(const swarp_polyhedron* in, swarp_vec3 n_raw, double d_raw,
+                                    swarp_polyhedron* out, int* unchanged, double scale /* 0: compute */,
+                                    int unit_normal /* n is a unit axis (box planes): no sqrt, no division */) {
+    *unchanged = 0;
+    swarp_vec3 n = n_raw;
+    double d = d_raw;
+    if (!unit_normal) {
+        /* coefficients of 1e-321 (valid: not zero) are scaled to 1 first:
+         * 1/|n| overflowed and the clip kept what it should cut (issue 9) */
+        const double m = sw_max(fabs(n_raw.x), sw_max(fabs(n_raw.y), fabs(n_raw.z)));
+        if (!(m > 0.0)) return SWARP_ERR_ZERO_VECTOR;
+        if (m < 1e-150 || m > 1e150) {
+            n_raw = sw_v3(n_raw.x / m, n_raw.y / m, n_raw.z / m);
+            d_raw /= m;
+            if (!sw_finite(d_raw)) { /* the plane beyond the double range: all kept or all cut */
+                if (d_raw < 0.0) {
+                    *unchanged = 1;
+                } else {
+                    out->vertex_count = 0;
+                    out->face_count = 0;
+                }
+                return SWARP_OK;
+            }
+        }
+        double len = sw_glen(n_raw);
+        if (!(len > 0.0)) return SWARP_ERR_ZERO_VECTOR;
+        n = sw_scale(n_raw, 1.0 / len);
+        d = d_raw / len;
+    }
+    const uint32_t nv = in->vertex_count;
+    if (nv == 0) {
+        *unchanged = 1;
+        return SWARP_OK;
+    }
+    /* tolerance for "on the plane": see SWARP_POLY_EPS_REL */
+    const double in_scale = scale > 0.0 ? scale : sw_poly_scale(in);
+    const double eps = SWARP_POLY_EPS_REL * sw_max(in_scale, fabs(d));
+    double dist[SWARP_POLY_MAX_VERTICES];
+    /* class bits per vertex: SW_IN, SW_ON (within eps of the plane), SW_OUT */
+    uint8_t cls[SWARP_POLY_MAX_VERTICES];
+    int any_out = 0, any_in = 0;
+    if (unit_normal) { /* ±(one coordinate) + d: the same values as the dot with the axis */
+        const swarp_vec3* v = in->vertices;
+        if (n.x != 0.0)
+            for (uint32_t i = 0; i < nv; ++i) dist[i] = n.x * v[i].x + d;
+        else if (n.y != 0.0)
+            for (uint32_t i = 0; i < nv; ++i) dist[i] = n.y * v[i].y + d;
+        else
+            for (uint32_t i = 0; i < nv; ++i) dist[i] = n.z * v[i].z + d;
+    } else {
+        for (uint32_t i = 0; i < nv; ++i) dist[i] = sw_dot(n, in->vertices[i]) + d;
+    }
+    for (uint32_t i = 0; i < nv; ++i) {
+        int o = dist[i] > eps, u = dist[i] < -eps; /* branch-free */
+        cls[i] = (uint8_t)(SW_ON + 2 * o - u);     /* 4, 2 or 1 */
+        any_out |= o;
+        any_in |= !o;
+    }
+    if (!any_out) {
+        *unchanged = 1;
+        return SWARP_OK;
+    }
+    if (!any_in) {
+        out->vertex_count = 0;
+        out->face_count = 0;
+        return SWARP_OK;
+    }
+
+    swarp_polyhedron* t = out; /* built in place (out != in) */
+    uint8_t map[SWARP_POLY_MAX_VERTICES];
+    uint32_t tv = 0;
+    uint8_t on_plane[SWARP_POLY_MAX_VERTICES];
+    uint32_t n_on = 0;
+    /* per output vertex: on the plane?  and its successor on the cap (the
+     * cap's edges are the in-plane edges of the kept faces, reversed) */
+    uint8_t onf[SWARP_POLY_MAX_VERTICES], nxt[SWARP_POLY_MAX_VERTICES];
+    uint32_t n_cap = 0;
+    int cap_bad = 0;
+    for (uint32_t i = 0; i < nv; ++i) {
+        if (cls[i] != SW_OUT) {
+            map[i] = (uint8_t)tv;
+            t->vertices[tv] = in->vertices[i];
+            onf[tv] = cls[i] == SW_ON;
+            nxt[tv] = 0xFF;
+            if (cls[i] == SW_ON) on_plane[n_on++] = (uint8_t)tv;
+            ++tv;
+        }
+    }
+    /* intersection points, one per crossing edge (keyed by its end points) */
+    const uint32_t n_kept = tv;
+    uint8_t edge_lo[SWARP_POLY_MAX_VERTICES], edge_hi[SWARP_POLY_MAX_VERTICES], edge_v[SWARP_POLY_MAX_VERTICES];
+    uint32_t n_edges = 0;
+    uint32_t tf = 0;
+    int cap_coincides = 0;
+    for (uint32_t f = 0; f < in->face_count; ++f) {
+        uint32_t fn = in->face_vertex_count[f];
+        const uint8_t* fl = in->face_vertices[f];
+        uint8_t* loop = t->face_vertices[tf]; /* tf <= f < SWARP_POLY_MAX_FACES */
+        /* most faces lie wholly on one side: only cut faces need the walk
+         * over their edges */
+        unsigned any = 0;
+        for (uint32_t k = 0; k < fn; ++k) any |= cls[fl[k]];
+        if (any == SW_OUT) continue; /* wholly outside */
+        uint32_t m = 0;
+        if (!(any & SW_OUT)) { /* wholly kept: no edge crosses */
+            for (uint32_t k = 0; k < fn; ++k) loop[k] = map[fl[k]];
+            m = fn;
+        } else {
+            for (uint32_t k = 0; k < fn; ++k) {
+                uint8_t i = fl[k], j = fl[k + 1 == fn ? 0 : k + 1];
+                if (cls[i] != SW_OUT) {
+                    if (m >= SWARP_POLY_MAX_FACE_VERTICES) return SWARP_ERR_CAPACITY;
+                    loop[m++] = map[i];
+                }
+                if ((cls[i] | cls[j]) == (SW_IN | SW_OUT)) { /* strictly crossing */
+                    uint8_t lo = i < j ? i : j, hi = i < j ? j : i;
+                    uint32_t e = 0;
+                    for (; e < n_edges; ++e)
+                        if (edge_lo[e] == lo && edge_hi[e] == hi) break;
+                    if (e == n_edges) {
+                        if (tv >= SWARP_POLY_MAX_VERTICES) return SWARP_ERR_CAPACITY;
+                        /* once per edge (cached): both faces get the very same point */
+                        t->vertices[tv] = sw_edge_cut(in->vertices, dist, lo, hi);
+                        if (unit_normal) sw_cut_on_axis_plane(&t->vertices[tv], n, d);
+                        edge_lo[e] = lo;
+                        edge_hi[e] = hi;
+                        edge_v[e] = (uint8_t)tv;
+                        onf[tv] = 1;
+                        nxt[tv] = 0xFF;
+                        on_plane[n_on++] = (uint8_t)tv;
+                        ++tv;
+                        ++n_edges;
+                    }
+                    if (m >= SWARP_POLY_MAX_FACE_VERTICES) return SWARP_ERR_CAPACITY;
+                    loop[m++] = edge_v[e];
+                }
+            }
+        }
+        if (m < 3) continue;
+        if (any == SW_ON) { /* the face lies in the clip plane */
+            swarp_vec3 fnrm = {in->planes[f].a, in->planes[f].b, in->planes[f].c};
+            if (sw_dot(fnrm, n) > 0.0) cap_coincides = 1;
+        }
+        if (any & (SW_ON | SW_OUT)) { /* its in-plane edges p -> q: cap edges q -> p */
+            uint8_t p = loop[m - 1];
+            for (uint32_t k = 0; k < m; ++k) {
+                const uint8_t q = loop[k];
+                if (onf[p] & onf[q]) {
+                    cap_bad |= nxt[q] != 0xFF;
+                    nxt[q] = p;
+                    ++n_cap;
+                }
+                p = q;
+            }
+        }
+        t->face_vertex_count[tf] = m;
+        t->planes[tf] = in->planes[f];
+        ++tf;
+    }
+    /* No faces: a point set, in practice a collapse onto a line (a flat
+     * polygon thinner than eps loses its loops, sw_remap_faces) whose hull
+     * is the segment between its ends.  The face walk above cut no edge,
+     * so the clip kept the inner vertices only: cutting a 64-long segment
+     * of B at a box plane left its inner end, a point, or the segment, as
+     * the rounding had collapsed it earlier or not (issue 9, fenv
+     * swarp_body_from_h 240000 case 169801).  Each strictly crossing pair
+     * is cut (the hull of the kept and the cut points is the clipped hull);
+     * a cut within eps of a point kept or cut already adds nothing (for a
+     * segment the cuts are all one point). */
+    if (in->face_count == 0) {
+        const double cut_eps = SWARP_POLY_EPS_REL * in_scale;
+        for (uint32_t i = 0; i < nv; ++i) {
+            if (cls[i] != SW_IN) continue;
+            for (uint32_t j = 0; j < nv; ++j) {
+                if (cls[j] != SW_OUT) continue;
+                swarp_vec3 p = sw_edge_cut(in->vertices, dist, (uint8_t)i, (uint8_t)j);
+                if (unit_normal) sw_cut_on_axis_plane(&p, n, d);
+                uint32_t k = 0;
+                for (; k < tv; ++k) {
+                    const swarp_vec3 w = t->vertices[k];
+                    if (fabs(p.x - w.x) <= cut_eps && fabs(p.y - w.y) <= cut_eps && fabs(p.z - w.z) <= cut_eps) break;
+                }
+                if (k < tv) continue;
+                if (tv >= SWARP_POLY_MAX_VERTICES) return SWARP_ERR_CAPACITY;
+                t->vertices[tv++] = p;
+            }
+        }
+        t->vertex_count = tv;
+        t->face_count = 0;
+        return SWARP_OK;
+    }
+    /* the cap: the new face on the clip plane, sorted counter-clockwise seen
+     * from outside (along +n) */
+    if (n_on >= 3 && !cap_coincides) {
+        if (n_on > SWARP_POLY_MAX_FACE_VERTICES) return SWARP_ERR_CAPACITY;
+        if (tf >= SWARP_POLY_MAX_FACES) return SWARP_ERR_CAPACITY;
+        uint8_t* idx = t->face_vertices[tf];
+        /* usually the in-plane edges chain into the cap's loop: one cycle
+         * through all n_on on-plane vertices */
+        int chained = !cap_bad && n_cap == n_on;
+        if (chained) {
+            uint8_t v = on_plane[0];
+            idx[0] = v;
+            for (uint32_t k = 1; k < n_on && chained; ++k) {
+                v = nxt[v];
+                chained = v != 0xFF && v != on_plane[0];
+                idx[k] = v;
+            }
+            chained = chained && nxt[v] == on_plane[0];
+        }
+        if (!chained) { /* degenerate: sort by angle around the centroid */
+        swarp_vec3 c = {0, 0, 0};
+        for (uint32_t k = 0; k < n_on; ++k) c = sw_add(c, t->vertices[on_plane[k]]);
+        c = sw_scale(c, 1.0 / n_on);
+        /* in-plane basis (e1, e2) with e1 x e2 = n */
+        swarp_vec3 ref = fabs(n.x) < 0.6 ? sw_v3(1, 0, 0) : (fabs(n.y) < 0.6 ? sw_v3(0, 1, 0) : sw_v3(0, 0, 1));
+        swarp_vec3 e1 = {1, 0, 0}, e2;
+        if (unit_normal) /* an axis: ref x n is a unit axis already */
+            e1 = sw_cross(ref, n);
+        else
+            sw_gnormalize(sw_cross(ref, n), &e1);
+        e2 = sw_cross(n, e1);
+        double key[SWARP_POLY_MAX_FACE_VERTICES];
+        for (uint32_t k = 0; k < n_on; ++k) {
+            swarp_vec3 q = sw_sub(t->vertices[on_plane[k]], c);
+            double kk = sw_pseudo_angle(sw_dot(q, e1), sw_dot(q, e2));
+            uint32_t j = k;
+            while (j > 0 && key[j - 1] > kk) {
+                key[j] = key[j - 1];
+                idx[j] = idx[j - 1];
+                --j;
+            }
+            key[j] = kk;
+            idx[j] = on_plane[k];
+        }
+        }
+        t->face_vertex_count[tf] = n_on;
+        t->planes[tf].a = n.x;
+        t->planes[tf].b = n.y;
+        t->planes[tf].c = n.z;
+        t->planes[tf].d = d;
+        ++tf;
+    }
+    t->vertex_count = tv;
+    t->face_count = tf;
+    sw_poly_merge_on_plane(t, on_plane, n_on, n_kept, SWARP_POLY_EPS_REL * in_scale);
+    return SWARP_OK;
+}
+
+/* Keeps n·x + d <= 0; n need not be unit.  in and out may alias. */
+swarp_status sw_poly_clip(const swarp_polyhedron* in, swarp_vec3 n, double d, swarp_polyhedron* out) {
+    swarp_polyhedron tmp;
+    swarp_polyhedron* dst = (out == in) ? &tmp : out;
+    int unchanged = 0;
+    swarp_status s = sw_poly_clip_to(in, n, d, dst, &unchanged, 0.0, 0);
+    if (s != SWARP_OK) return s;
+    if (unchanged) {
+        if (out != in) sw_poly_copy(in, out);
+    } else if (dst != out) {
+        sw_poly_copy(dst, out);
+    }
+    return SWARP_OK;
+}
+
+static void sw_poly_bounds(const swarp_polyhedron* p, double lo[3], double hi[3]) {
+    double lx = INFINITY, ly = INFINITY, lz = INFINITY, hx = -INFINITY, hy = -INFINITY, hz = -INFINITY;
+    for (uint32_t i = 0; i < p->vertex_count; ++i) { /* min/max without branches */
+        const swarp_vec3 v = p->vertices[i];
+        lx = v.x < lx ? v.x : lx, hx = v.x > hx ? v.x : hx;
+        ly = v.y < ly ? v.y : ly, hy = v.y > hy ? v.y : hy;
+        lz = v.z < lz ? v.z : lz, hz = v.z > hz ? v.z : hz;
+    }
+    lo[0] = lx, lo[1] = ly, lo[2] = lz;
+    hi[0] = hx, hi[1] = hy, hi[2] = hz;
+}
+
+/* min/max of one coordinate (0: x, 1: y, 2: z) over the vertices */
+static void sw_poly_axis_bounds(const swarp_polyhedron* p, int c, double* lo, double* hi) {
+    double l = INFINITY, h = -INFINITY;
+    const uint32_t n = p->vertex_count;
+    const swarp_vec3* v = p->vertices;
+    if (c == 0)
+        for (uint32_t i = 0; i < n; ++i) l = v[i].x < l ? v[i].x : l, h = v[i].x > h ? v[i].x : h;
+    else if (c == 1)
+        for (uint32_t i = 0; i < n; ++i) l = v[i].y < l ? v[i].y : l, h = v[i].y > h ? v[i].y : h;
+    else
+        for (uint32_t i = 0; i < n; ++i) l = v[i].z < l ? v[i].z : l, h = v[i].z > h ? v[i].z : h;
+    *lo = l;
+    *hi = h;
+}
+
+swarp_status sw_poly_clip_box_order(const swarp_polyhedron* in, const swarp_aabb* box, const uint8_t order[6],
+                                    swarp_polyhedron* out) {
+    const swarp_vec3 ns[6] = {{-1, 0, 0}, {1, 0, 0}, {0, -1, 0}, {0, 1, 0}, {0, 0, -1}, {0, 0, 1}};
+    const double ds[6] = {box->min.x, -box->max.x, box->min.y, -box->max.y, box->min.z, -box->max.z};
+    const double* bmin = &box->min.x;
+    const double* bmax = &box->max.x;
+    /* ping-pong between out and a local buffer: no copy per plane; a plane
+     * the current bounds do not cross is skipped without a clip */
+    swarp_polyhedron buf;
+    const swarp_polyhedron* src = in;
+    double lo[3], hi[3];
+    sw_poly_bounds(in, lo, hi);
+    /* after a clip only the bounds of the axis the next plane needs are
+     * recomputed (stale ones are still bounds: clipping only shrinks) */
+    int stale = 0;
+    for (int q = 0; q < 6; ++q) {
+        const int k = order[q], c = k / 2;
+        if (stale & (1 << c)) {
+            sw_poly_axis_bounds(src, c, &lo[c], &hi[c]);
+            stale &= ~(1 << c);
+        }
+        if ((k & 1) ? !(hi[c] > bmax[c]) : !(lo[c] < bmin[c])) continue;
+        swarp_polyhedron* dst = (src == out) ? &buf : out;
+        int unchanged = 0;
+        /* the scale from the bounds: the largest absolute coordinate */
+        double sc = 1e-300;
+        for (int a = 0; a < 3; ++a) sc = sw_max(sc, sw_max(fabs(lo[a]), fabs(hi[a])));
+        swarp_status s = sw_poly_clip_to(src, ns[k], ds[k], dst, &unchanged, sc, 1);
+        if (s != SWARP_OK) return s;
+        if (unchanged) continue;
+        src = dst;
+        if (src->vertex_count == 0) break;
+        stale = 7;
+    }
+    if (src != out) sw_poly_copy(src, out);
+    return SWARP_OK;
+}
+
+swarp_status sw_poly_clip_box(const swarp_polyhedron* in, const swarp_aabb* box, swarp_polyhedron* out) {
+    static const uint8_t order[6] = {0, 1, 2, 3, 4, 5}; /* -x, +x, -y, +y, -z, +z */
+    return sw_poly_clip_box_order(in, box, order, out);
+}
+
+/* A caller's polyhedron: counts within capacity, indices valid, finite. */
+static swarp_status sw_poly_validate(const swarp_polyhedron* in) {
+    if (in->vertex_count > SWARP_POLY_MAX_VERTICES || in->face_count > SWARP_POLY_MAX_FACES)
+        return SWARP_ERR_INVALID_ARGUMENT;
+    for (uint32_t i = 0; i < in->vertex_count; ++i)
+        if (!sw_finite3(&in->vertices[i])) return SWARP_ERR_NON_FINITE;
+    for (uint32_t f = 0; f < in->face_count; ++f) {
+        if (in->face_vertex_count[f] > SWARP_POLY_MAX_FACE_VERTICES) return SWARP_ERR_INVALID_ARGUMENT;
+        for (uint32_t k = 0; k < in->face_vertex_count[f]; ++k)
+            if (in->face_vertices[f][k] >= in->vertex_count) return SWARP_ERR_INVALID_ARGUMENT;
+    }
+    return SWARP_OK;
+}
+
+SWARP_API swarp_status swarp_poly_clip(const swarp_polyhedron* in, const swarp_plane* plane,
+                                       swarp_polyhedron* out) {
+    if (!in || !plane || !out) return SWARP_ERR_NULL_POINTER;
+    if (!sw_finite(plane->a) || !sw_finite(plane->b) || !sw_finite(plane->c) || !sw_finite(plane->d))
+        return SWARP_ERR_NON_FINITE;
+    swarp_status s = sw_poly_validate(in);
+    if (s != SWARP_OK) return s;
+    swarp_vec3 n = {plane->a, plane->b, plane->c};
+    if (!(sw_glen(n) > 0.0)) return SWARP_ERR_ZERO_VECTOR;
+    /* compute into a local: outputs stay untouched on error */
+    swarp_polyhedron t;
+    s = sw_poly_clip(in, n, plane->d, &t);
+    if (s != SWARP_OK) return s;
+    memcpy(out, &t, sizeof t);
+    return SWARP_OK;
+}
+
+SWARP_API swarp_status swarp_poly_clip_aabb(const swarp_polyhedron* in, const swarp_aabb* box,
+                                            swarp_polyhedron* out) {
+    if (!in || !box || !out) return SWARP_ERR_NULL_POINTER;
+    if (!sw_finite3(&box->min) || !sw_finite3(&box->max)) return SWARP_ERR_NON_FINITE;
+    if (!(box->min.x <= box->max.x && box->min.y <= box->max.y && box->min.z <= box->max.z))
+        return SWARP_ERR_BOX_INVERTED;
+    swarp_status s = sw_poly_validate(in);
+    if (s != SWARP_OK) return s;
+    swarp_polyhedron t;
+    s = sw_poly_clip_box(in, box, &t);
+    if (s != SWARP_OK) return s;
+    memcpy(out, &t, sizeof t);
+    return SWARP_OK;
+}

@@ -1,0 +1,723 @@
+/* The one call for engines: camera + light + scene box + options -> light
+ * view, light projection, their product, the points of B, the n' used and
+ * the predicted maximum errors.  Built from the separately callable stages:
+ *
+ *   swarp_setup        H = V ∩ S, adjusted near/far [RHS] §3.3.1, B, then
+ *   swarp_setup_range  the same for an explicit view depth range (a split),
+ *                      without adjusting it, then
+ *   swarp_setup_points the light matrix for given points of B (and of the
+ *                      receivers H, for pancaking and the nearest vertex). */
+#include <float.h>
+
+#include "geometry/geometry_internal.h"
+
+/* min_depth took two of the four reserved words: the size is unchanged */
+_Static_assert(sizeof(swarp_setup_options) == 12 * 4 + 5 * 8 + 8, "swarp_setup_options size");
+_Static_assert(sizeof(swarp_setup_options) == 12 * 4 + 4 * 8 + 16, "swarp_setup_options size kept");
+_Static_assert(sizeof(swarp_setup_result) == 3 * 128 + 9 * 8 + 8 + 16, "swarp_setup_result size");
+_Static_assert(sizeof(swarp_warp_options) == 8 + 3 * 8 + 16, "swarp_warp_options size");
+_Static_assert(sizeof(swarp_warp_info) == 6 * 8 + 16, "swarp_warp_info size");
+
+#define SW_DEFAULT_MAP 2048u
+#define SW_DEFAULT_SCREEN_W 1920u
+#define SW_DEFAULT_SCREEN_H 1080u
+/* Point lights: points of B nearer to the light than this fraction of the
+ * farthest one are cut off by the light's near plane (a perspective map
+ * cannot reach its own apex). */
+#define SW_LIGHT_NEAR_MIN_REL 1e-4
+/* Point lights: a single perspective map covers half-angles up to
+ * atan(1e3) ≈ 89.94°; beyond that the light is inside B. */
+#define SW_LIGHT_MAX_TAN 1e3
+
+static swarp_status sw_check_setup_options(const swarp_setup_options* o) {
+    if (!sw_reserved_zero(o->_reserved, 2) || o->_pad0 != 0 || o->_pad1 != 0) return SWARP_ERR_RESERVED_NONZERO;
+    if (isnan(o->min_depth)) return SWARP_ERR_NON_FINITE;
+    if (o->min_depth < 0.0) return SWARP_ERR_OUT_OF_RANGE; /* also -INFINITY */
+    if ((uint32_t)o->technique > (uint32_t)SWARP_TECHNIQUE_PSM) return SWARP_ERR_UNKNOWN_ENUM;
+    if (sw_check_depth_range(o->depth_range) != SWARP_OK) return SWARP_ERR_UNKNOWN_ENUM;
+    if (o->pancake > 1 || o->psm_slideback > 1) return SWARP_ERR_OUT_OF_RANGE;
+    if (!sw_finite(o->slideback)) return SWARP_ERR_NON_FINITE;
+    if (o->slideback < 0.0) return SWARP_ERR_OUT_OF_RANGE;
+    swarp_warp_options w;
+    memset(&w, 0, sizeof w);
+    w.param = o->param;
+    w.center = o->center;
+    w.n_user = o->n_user;
+    w.pseudo_near = o->pseudo_near;
+    w.pseudo_far = o->pseudo_far;
+    if ((uint32_t)w.param > (uint32_t)SWARP_WARP_PARAM_USER) return SWARP_ERR_UNKNOWN_ENUM;
+    if ((uint32_t)w.center > (uint32_t)SWARP_WARP_CENTER_NEAREST_VERTEX) return SWARP_ERR_UNKNOWN_ENUM;
+    if (o->technique == SWARP_TECHNIQUE_LISPSM || o->technique == SWARP_TECHNIQUE_DEFAULT) {
+        if (w.param == SWARP_WARP_PARAM_USER) {
+            if (isnan(w.n_user)) return SWARP_ERR_NON_FINITE;
+            if (!(w.n_user > 0.0)) return SWARP_ERR_OUT_OF_RANGE;
+        }
+        if (w.param == SWARP_WARP_PARAM_PSEUDO) {
+            if (!sw_finite(w.pseudo_near) || !sw_finite(w.pseudo_far)) return SWARP_ERR_NON_FINITE;
+            if (!(w.pseudo_near >= 0.0 && w.pseudo_far >= 0.0 && w.pseudo_near + w.pseudo_far < 1.0))
+                return SWARP_ERR_OUT_OF_RANGE;
+        }
+    }
+    return SWARP_OK;
+}
+
+/* More important informational statuses win. */
+static swarp_status sw_info_merge(swarp_status a, swarp_status b) {
+    static const swarp_status order[] = {SWARP_INFO_PSM_INVERSE, SWARP_INFO_WARP_UNIFORM,
+                                         SWARP_INFO_LIGHT_NEAR_CLIPPED, SWARP_INFO_LIGHT_PARALLEL,
+                                         SWARP_INFO_FLAT_EXTENT};
+    for (size_t i = 0; i < sizeof order / sizeof order[0]; ++i)
+        if (a == order[i] || b == order[i]) return order[i];
+    return a != SWARP_OK ? a : b;
+}
+
+/* The light's view axis for a point light: the spot axis, or the direction
+ * to the centre of the points' bounding box. */
+static int sw_point_axis(const swarp_light* light, const swarp_vec3* pts, size_t n, swarp_vec3* a) {
+    if (light->cone_angle > 0.0) return sw_gnormalize(light->direction, a);
+    swarp_vec3 lo = pts[0], hi = pts[0];
+    for (size_t i = 1; i < n; ++i) {
+        lo = sw_v3(fmin(lo.x, pts[i].x), fmin(lo.y, pts[i].y), fmin(lo.z, pts[i].z));
+        hi = sw_v3(fmax(hi.x, pts[i].x), fmax(hi.y, pts[i].y), fmax(hi.z, pts[i].z));
+    }
+    swarp_vec3 c = sw_scale(sw_add(lo, hi), 0.5);
+    return sw_gnormalize(sw_sub(c, light->position), a);
+}
+
+/* The nearest vertex e of [WS06] (the WS06 warp centre): the vertex of
+ * least eye depth.  H is usually cut by the near plane, and then several
+ * vertices share that depth exactly: which one is "the" nearest was decided
+ * by the rounding of their depths, and the centre (P's lateral position,
+ * hence the whole map) jumped between them with the caller's rounding mode
+ * (issue 9, fenv test: light_proj 1.04 <-> 1.70 for a flat box seen from
+ * its face).  Instead e is the average of the vertices weighted by
+ * max(0, 1 - (z_i - z_min) / (SW_NEAREST_TIE_REL · span)), span = the
+ * larger of the points' depth extent and their largest coordinate: exactly
+ * the nearest vertex when it is alone (every other vertex deeper by more
+ * than the band), the middle of the near-plane
+ * polygon when the vertices tie, and continuous in the inputs in between.
+ * The band is 1e-6 of the span: far above the rounding of the depths (a few
+ * eps of |z|), so a rounding change moves e by ~eps/1e-6 = 2e-10 of the
+ * polygon's size at most, and far below any real difference in depth.
+ * Depths relative to the eye (the points are camera-relative). */
+#define SW_NEAREST_TIE_REL 1e-6
+static int sw_nearest_vertex(const swarp_vec3* p, size_t n, swarp_vec3 eye, swarp_vec3 v, double world_mag,
+                             swarp_vec3* e) {
+    double zmin = INFINITY, zmax = -INFINITY, mag = world_mag;
+    for (size_t i = 0; i < n; ++i) {
+        swarp_vec3 q = sw_sub(p[i], eye);
+        double z = sw_dot(q, v);
+        zmin = fmin(zmin, z);
+        zmax = fmax(zmax, z);
+        mag = fmax(mag, fmax(fabs(q.x), fmax(fabs(q.y), fabs(q.z))));
+    }
+    if (!(zmin <= zmax)) return 0;
+    /* the depths carry rounding of eps times the coordinates' magnitude
+     * (which exceeds the depth extent of a thin split): the band is 1e-6 of
+     * the larger of the two.  The magnitude is the WORLD coordinates' (the
+     * caller's world_mag): p is camera-relative, but it was formed as
+     * world - eye and carries eps |world| of noise, not eps |p| (fenv test,
+     * cascade_setup case 8336: a scene at 3e6 with a band of 1.6e-4 moved
+     * e by 4e-6 of the polygon with the rounding mode). */
+    double band = SW_NEAREST_TIE_REL * fmax(zmax - zmin, mag);
+    swarp_vec3 acc = {0, 0, 0};
+    double wsum = 0.0;
+    for (size_t i = 0; i < n; ++i) {
+        double z = sw_dot(sw_sub(p[i], eye), v);
+        double w = band > 0.0 ? fmax(0.0, 1.0 - (z - zmin) / band) : 1.0;
+        if (!(w > 0.0)) continue;
+        acc = sw_add(acc, sw_scale(sw_sub(p[i], eye), w));
+        wsum += w;
+    }
+    if (!(wsum > 0.0)) return 0;
+    *e = sw_add(eye, sw_scale(acc, 1.0 / wsum));
+    return 1;
+}
+
+/* Everything after B: light view, warp, fit, error model. */
+/* r = a b for an affine b (last row 0 0 0 1: a look-at, or A_fit's
+ * columns): 12 fewer products than sw_mul and no loop overhead; the same
+ * sums in the same order as sw_mul (the dropped terms are exact zeros,
+ * products with b's 0 0 0 1 row exact), so the values are sw_mul's (a zero
+ * may differ in sign). */
+static void sw_mul_affine_b(const swarp_mat4* a, const swarp_mat4* b, swarp_mat4* r) {
+    swarp_mat4 t;
+    const double* A = a->m;
+    const double* B = b->m;
+    for (int c = 0; c < 3; ++c) {
+        const double b0 = B[c * 4], b1 = B[c * 4 + 1], b2 = B[c * 4 + 2];
+        t.m[c * 4 + 0] = A[0] * b0 + A[4] * b1 + A[8] * b2;
+        t.m[c * 4 + 1] = A[1] * b0 + A[5] * b1 + A[9] * b2;
+        t.m[c * 4 + 2] = A[2] * b0 + A[6] * b1 + A[10] * b2;
+        t.m[c * 4 + 3] = A[3] * b0 + A[7] * b1 + A[11] * b2;
+    }
+    const double b0 = B[12], b1 = B[13], b2 = B[14];
+    t.m[12] = A[0] * b0 + A[4] * b1 + A[8] * b2 + A[12];
+    t.m[13] = A[1] * b0 + A[5] * b1 + A[9] * b2 + A[13];
+    t.m[14] = A[2] * b0 + A[6] * b1 + A[10] * b2 + A[14];
+    t.m[15] = A[3] * b0 + A[7] * b1 + A[11] * b2 + A[15];
+    *r = t;
+}
+
+/* The map coordinates of B must be resolved by its camera-relative
+ * coordinates to this fraction of the map (the map spans 2): 1e-6, the
+ * accuracy the hard-case sweep asks of the fit (docs/quality.md).  The
+ * bound it is compared with is first order and worst case (every rounding
+ * of a coordinate adding up); a 1e-9 rad light on a 1-unit body (the warp
+ * axis stretched 1e9 times, test_geometry sweep_large_offset_parallel_light)
+ * reaches 5e-7 and maps B inside to the sweep's tolerance.  Refused are
+ * bodies whose map is finer than their coordinates relative to the eye:
+ * an eye 1e145 from a 40-unit body, a 1e-9 sliver 1e6 away. */
+#define SW_REL_RESOLVE 1e-6
+
+/* Can the world-space matrix (m · T(-eye), applied to p + eye) be evaluated
+ * in double at the camera-relative points p?  Its w carries rounding of
+ * about eps times the sizes of the terms summed; when that reaches w itself
+ * (a map of a body far below the resolution of world coordinates of size
+ * |eye|: B a 1e-21 sliver at 25 units, or a 1e-9 rad grazing light
+ * stretching a 1e6-offset scene 1e10 times) the map is meaningless in world
+ * coordinates.  64 eps of margin. */
+/* The per-point form of the light-view resolution test below (see there) */
+static int sw_light_resolves(const swarp_mat4* proj, const swarp_mat4* L, const swarp_vec3* p, size_t n) {
+    for (size_t i = 0; i < n; ++i) {
+        const double px = p[i].x, py = p[i].y, pz = p[i].z;
+        double l[3], mag[3];
+        for (int j = 0; j < 3; ++j) {
+            const double a0 = sw_at(L, j, 0) * px, a1 = sw_at(L, j, 1) * py, a2 = sw_at(L, j, 2) * pz, a3 = sw_at(L, j, 3);
+            l[j] = a0 + a1 + a2 + a3;
+            mag[j] = fabs(a0) + fabs(a1) + fabs(a2) + fabs(a3);
+        }
+        double X = sw_at(proj, 0, 3), Y = sw_at(proj, 1, 3), W = sw_at(proj, 3, 3);
+        for (int j = 0; j < 3; ++j) {
+            X += sw_at(proj, 0, j) * l[j];
+            Y += sw_at(proj, 1, j) * l[j];
+            W += sw_at(proj, 3, j) * l[j];
+        }
+        const double x = X / W, y = Y / W;
+        double cx = 0.0, cy = 0.0;
+        for (int j = 0; j < 3; ++j) {
+            cx += fabs(sw_at(proj, 0, j) - x * sw_at(proj, 3, j)) * mag[j];
+            cy += fabs(sw_at(proj, 1, j) - y * sw_at(proj, 3, j)) * mag[j];
+        }
+        if (!(DBL_EPSILON * fmax(cx, cy) <= SW_REL_RESOLVE * fabs(W))) return 0;
+    }
+    return 1;
+}
+
+static int sw_world_resolves(const swarp_mat4* m, const swarp_mat4* proj, const swarp_mat4* L, const swarp_vec3* p,
+                             size_t n, swarp_vec3 eye) {
+    const double ax = fabs(eye.x), ay = fabs(eye.y), az = fabs(eye.z);
+    const double m30 = sw_at(m, 3, 0), m31 = sw_at(m, 3, 1), m32 = sw_at(m, 3, 2), m33 = sw_at(m, 3, 3);
+    double wmin = INFINITY, p1 = 0.0;
+    for (size_t i = 0; i < n; ++i) {
+        const double px = fabs(p[i].x), py = fabs(p[i].y), pz = fabs(p[i].z);
+        double w = m30 * p[i].x + m31 * p[i].y + m32 * p[i].z + m33;
+        double k = fabs(m30) * (px + 2.0 * ax) + fabs(m31) * (py + 2.0 * ay) + fabs(m32) * (pz + 2.0 * az) + fabs(m33);
+        if (!(w > 64.0 * DBL_EPSILON * k)) return 0;
+        wmin = w < wmin ? w : wmin;
+        p1 = fmax(p1, px + py + pz);
+    }
+    /* The light-view coordinates l = L p carry rounding of eps times the
+     * sizes summed, mag_j = |L_j0 p_x| + |L_j1 p_y| + |L_j2 p_z| + |L_j3|
+     * (the camera-relative point, src: sw_rel_camera, and a point light's
+     * distance in the translation).  Moved by that, the map coordinate
+     * x = X/W (X, W rows of light_proj at l) moves by
+     * eps sum_j |proj_xj - x proj_wj| mag_j / W.  Beyond SW_REL_RESOLVE of
+     * the map (half its width is 1) the map is finer than the coordinates
+     * resolve B: an eye 1e145 from a 40-unit body (its points all equal
+     * relative to the eye) was "mapped" to x = 1e4, a spot light 2e154
+     * above a 50-unit body to x = -2.1, both with SWARP_OK (issue 9,
+     * hard-case sweep).  First a bound for all points at once (L's rows
+     * are unit: mag_j <= |p|_1 + |L_j3|; B maps into |x| <= 1, 2 allowed):
+     * it passes for every ordinary scene, and the per-point test (about
+     * 15 % of swarp_setup's time) runs only where it does not. */
+    double sx = 0.0, sy = 0.0;
+    for (int j = 0; j < 3; ++j) {
+        const double mj = p1 + fabs(sw_at(L, j, 3)), wj = 2.0 * fabs(sw_at(proj, 3, j));
+        sx += (fabs(sw_at(proj, 0, j)) + wj) * mj;
+        sy += (fabs(sw_at(proj, 1, j)) + wj) * mj;
+    }
+    if (DBL_EPSILON * fmax(sx, sy) <= SW_REL_RESOLVE * wmin) return 1;
+    return sw_light_resolves(proj, L, p, n);
+}
+
+/* L^-1 -> (P0 L)^-1 = L^-1 P0^-1: P0 maps (x, y, z, w) to (x, y, w, -z), so
+ * P0^-1 maps (X, Y, Z, W) to (X, Y, -W, Z): the columns of L^-1 become
+ * [c0, c1, c3, -c2] (exact) */
+static void sw_p0_inverse_after(swarp_mat4* m) {
+    for (int r = 0; r < 4; ++r) {
+        double c2 = sw_at(m, r, 2), c3 = sw_at(m, r, 3);
+        sw_set(m, r, 2, c3);
+        sw_set(m, r, 3, -c2);
+    }
+}
+
+/* PSM's matrices (a post-perspective space, maybe the inverse projection:
+ * w < 0 on B is fine) get the coarse form of sw_world_resolves' test: B's
+ * extent against the rounding of its camera-relative coordinates, eps |p|.
+ * An eye at -DBL_MAX from a 1e4 body made light_proj · light_view
+ * overflow (inf - inf) though matrix was finite (hard-case sweep,
+ * setup_points, PSM). */
+static int sw_rel_resolves(const swarp_vec3* p, size_t n) {
+    double mag = 0.0, lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+    for (size_t i = 0; i < n; ++i) {
+        const double c[3] = {p[i].x, p[i].y, p[i].z};
+        for (int k = 0; k < 3; ++k) {
+            lo[k] = fmin(lo[k], c[k]), hi[k] = fmax(hi[k], c[k]);
+            mag = fmax(mag, fabs(c[k]));
+        }
+    }
+    double ext = fmax(hi[0] - lo[0], fmax(hi[1] - lo[1], hi[2] - lo[2]));
+    return DBL_EPSILON * mag <= SW_REL_RESOLVE * ext;
+}
+
+/* cam, light, B, H: camera-relative (src: sw_rel_camera); eye: the world eye */
+static swarp_status sw_setup_points(const swarp_camera* cam, const swarp_light* light, const swarp_vec3* B,
+                                    size_t nb, const swarp_polyhedron* B_poly, const swarp_vec3* H, size_t nh, double near, double far,
+                                    const swarp_setup_options* o, swarp_vec3 eye, const sw_follow* fw,
+                                    swarp_setup_result* out) {
+    swarp_status info = SWARP_OK, s;
+    swarp_technique tech = o->technique == SWARP_TECHNIQUE_DEFAULT ? SWARP_TECHNIQUE_LISPSM : o->technique;
+    swarp_depth_range dr = o->depth_range == SWARP_DEPTH_DEFAULT ? SWARP_DEPTH_NEG_ONE_TO_ONE : o->depth_range;
+    swarp_vec3 v, r, u;
+    sw_camera_basis(cam, &v, &r, &u);
+    /* nearest vertex e of H (the receivers) for the WS06 centre */
+    const swarp_vec3* ep = NULL;
+    swarp_vec3 e_near;
+    if (o->center == SWARP_WARP_CENTER_NEAREST_VERTEX) { /* only the WS06 centre uses it */
+        const swarp_vec3* src = H ? H : B;
+        size_t ns = H ? nh : nb;
+        const double world_mag = fmax(fabs(eye.x), fmax(fabs(eye.y), fabs(eye.z)));
+        if (sw_nearest_vertex(src, ns, cam->eye, v, world_mag, &e_near)) ep = &e_near;
+    }
+    swarp_setup_result res;
+    memset(&res, 0, sizeof res);
+    res.view_near = near;
+    res.view_far = far;
+
+    if (tech == SWARP_TECHNIQUE_PSM) {
+        s = sw_psm_setup(cam, light, B, nb, B_poly, H, nh, near, far, o, fw, &res);
+        if (swarp_status_is_error(s)) return s;
+        if (!sw_rel_resolves(B, nb)) return SWARP_ERR_DEGENERATE;
+        info = sw_info_merge(info, s);
+    } else {
+        swarp_mat4 L, P0, M, M_inv;
+        sw_identity(&P0);
+        if (light->type == SWARP_LIGHT_POINT) {
+            swarp_vec3 a = {0, 0, -1};
+            if (!sw_point_axis(light, B, nb, &a)) return SWARP_ERR_LIGHT_INSIDE_BODY;
+            s = fw ? sw_follow_light_view(cam, light->position, a, fw, &L) : sw_light_view(cam, light->position, a, &L);
+            /* a light ~DBL_MAX from the eye: B's angular size is far below
+             * what its coordinates resolve (the documented DEGENERATE) */
+            if (s == SWARP_ERR_OVERFLOW) return SWARP_ERR_DEGENERATE;
+            if (swarp_status_is_error(s)) return s;
+            info = sw_info_merge(info, s);
+            /* every point must lie in front of the light within the widest
+             * perspective a map can have */
+            double dmax = 0.0, bmag = 0.0;
+            for (size_t i = 0; i < nb; ++i) {
+                swarp_vec4 h = sw_xform_point(&L, B[i]);
+                double D = -h.z;
+                if (D > dmax) dmax = D;
+                bmag = fmax(bmag, fmax(fabs(B[i].x), fmax(fabs(B[i].y), fabs(B[i].z))));
+            }
+            /* and never below the rounding of D = a·(p - l), computed as
+             * a·p - a·l from terms of p and l: 192 eps of the larger max
+             * norm (no sum to overflow near DBL_MAX).  A point of B at the light
+             * itself (B = {l}: a spot's apex alone) got D = -7e-15, 0 or
+             * +1e-14 by rounding mode: SWARP_ERR_LIGHT_INSIDE_BODY or a
+             * map of D = 0, SWARP_ERR_DEGENERATE (issue 9, fenv
+             * swarp_setup_points 120000 cases 67704, 110180).  At the light
+             * it is the apex (a spot: clipped) or the light inside B. */
+            const swarp_vec3 lp = light->position;
+            const double lmag = fmax(fabs(lp.x), fmax(fabs(lp.y), fabs(lp.z)));
+            double dmin_allowed = fmax(SW_LIGHT_NEAR_MIN_REL * dmax, 192.0 * DBL_EPSILON * fmax(bmag, lmag));
+            for (size_t i = 0; i < nb; ++i) {
+                swarp_vec4 h = sw_xform_point(&L, B[i]);
+                double D = -h.z;
+                if (D < dmin_allowed) {
+                    if (light->cone_angle > 0.0 && D > -dmin_allowed) { /* the apex of a spot */
+                        info = sw_info_merge(info, SWARP_INFO_LIGHT_NEAR_CLIPPED);
+                        continue;
+                    }
+                    return SWARP_ERR_LIGHT_INSIDE_BODY;
+                }
+                if (hypot(h.x, h.y) > SW_LIGHT_MAX_TAN * D) return SWARP_ERR_LIGHT_INSIDE_BODY;
+            }
+            /* P0: (x, y, z) -> (x/D, y/D, 1/D), D = -z: a point light becomes
+             * a directional one travelling toward -z */
+            memset(&P0, 0, sizeof P0);
+            sw_set(&P0, 0, 0, 1.0);
+            sw_set(&P0, 1, 1, 1.0);
+            sw_set(&P0, 2, 3, 1.0);
+            sw_set(&P0, 3, 2, -1.0);
+            res.light_near = fmax(dmin_allowed, 0.0);
+            res.light_far = dmax;
+        } else {
+            s = fw ? sw_follow_light_view(cam, cam->eye, light->direction, fw, &L)
+                   : sw_light_view(cam, cam->eye, light->direction, &L);
+            if (swarp_status_is_error(s)) return s;
+            info = sw_info_merge(info, s);
+        }
+        if (light->type == SWARP_LIGHT_POINT)
+            sw_mul(&P0, &L, &M);
+        else
+            M = L; /* P0 = I: skip the product */
+        sw_rigid_inverse(&L, &M_inv);
+        if (light->type == SWARP_LIGHT_POINT) sw_p0_inverse_after(&M_inv);
+        /* the points the map must see; point lights drop the apex region
+         * (into Bk, Hk); a directional light uses B and H as they are */
+        swarp_vec3 Bk[SWARP_BODY_MAX_POINTS + 1];
+        swarp_vec3 Hk[SWARP_BODY_MAX_POINTS];
+        const swarp_vec3* Bp = B;
+        const swarp_vec3* Hp = H;
+        size_t nbk = nb < SWARP_BODY_MAX_POINTS ? nb : SWARP_BODY_MAX_POINTS;
+        size_t nhk = !H ? 0 : nh < SWARP_BODY_MAX_POINTS ? nh : SWARP_BODY_MAX_POINTS;
+        if (light->type == SWARP_LIGHT_POINT) {
+            nbk = 0;
+            for (size_t i = 0; i < nb && nbk < SWARP_BODY_MAX_POINTS; ++i) {
+                swarp_vec4 h = sw_xform_point(&L, B[i]);
+                if (-h.z < res.light_near) continue;
+                Bk[nbk++] = B[i];
+            }
+            /* the receivers for pancaking, with the same cut */
+            nhk = 0;
+            for (size_t i = 0; H && i < nh && nhk < SWARP_BODY_MAX_POINTS; ++i) {
+                swarp_vec4 h = sw_xform_point(&L, H[i]);
+                if (-h.z < res.light_near) continue;
+                Hk[nhk++] = H[i];
+            }
+            Bp = Bk;
+            Hp = Hk;
+        }
+        if (nbk == 0) return SWARP_ERR_BODY_EMPTY;
+        if (light->type == SWARP_LIGHT_POINT) { /* the depth actually covered */
+            double dmin = INFINITY;
+            for (size_t i = 0; i < nbk; ++i) dmin = fmin(dmin, -sw_xform_point(&L, Bp[i]).z);
+            res.light_near = dmin;
+        }
+        swarp_mat4 P;
+        swarp_warp_info wi;
+        memset(&wi, 0, sizeof wi);
+        if (tech == SWARP_TECHNIQUE_LISPSM) {
+            swarp_warp_options w;
+            memset(&w, 0, sizeof w);
+            w.param = o->param;
+            w.center = o->center;
+            w.n_user = o->n_user;
+            w.pseudo_near = o->pseudo_near;
+            w.pseudo_far = o->pseudo_far;
+            s = sw_warp_lispsm_oriented(&M, &M_inv, cam, near, far, Bp, nbk, ep, &w, &P, &wi);
+            if (swarp_status_is_error(s)) return s;
+            info = sw_info_merge(info, s);
+        } else {
+            /* uniform: flip z so depth grows away from the light */
+            sw_identity(&P);
+            sw_set(&P, 2, 2, -1.0);
+            wi.n_light = wi.n_eye = INFINITY;
+        }
+        swarp_mat4 PM, A;
+        if (light->type == SWARP_LIGHT_POINT)
+            sw_mul(&P, &M, &PM);
+        else
+            sw_mul_affine_b(&P, &M, &PM); /* M = L, a look-at */
+        /* pancaking: the depth range covers the receivers H only; casters
+         * nearer the light are clamped to the near plane by the renderer */
+        const swarp_vec3* zp = (o->pancake && nhk > 0) ? Hp : NULL;
+        s = sw_focus_fit(&PM, Bp, nbk, zp, nhk, dr, &A);
+        if (swarp_status_is_error(s)) return s;
+        info = sw_info_merge(info, s);
+        swarp_mat4 proj = P; /* P P0, P0 = I for a directional light */
+        if (light->type == SWARP_LIGHT_POINT) sw_mul(&P, &P0, &proj);
+        sw_mul(&A, &proj, &res.light_proj);
+        res.light_view = L;
+        sw_mul_affine_b(&res.light_proj, &L, &res.matrix); /* L: a look-at */
+        if (!sw_world_resolves(&res.matrix, &res.light_proj, &L, Bp, nbk, eye)) return SWARP_ERR_DEGENERATE;
+        res.n_light = wi.n_light;
+        res.n_eye = wi.n_eye;
+        res.gamma = wi.gamma;
+        if (tech != SWARP_TECHNIQUE_LISPSM) {
+            double vz = sw_at(&M, 2, 0) * v.x + sw_at(&M, 2, 1) * v.y + sw_at(&M, 2, 2) * v.z;
+            res.gamma = acos(fmax(-1.0, fmin(1.0, -vz)));
+        }
+        if (light->type != SWARP_LIGHT_POINT) {
+            /* light depth range in light view units (distance along the light) */
+            double lo = INFINITY, hi = -INFINITY;
+            const swarp_vec3* zs = zp ? zp : Bp;
+            size_t zn = zp ? nhk : nbk;
+            /* only the z row of the rigid L is needed; the points are finite */
+            const double l20 = sw_at(&L, 2, 0), l21 = sw_at(&L, 2, 1), l22 = sw_at(&L, 2, 2), l23 = sw_at(&L, 2, 3);
+            for (size_t i = 0; i < zn; ++i) {
+                double D = -(l20 * zs[i].x + l21 * zs[i].y + l22 * zs[i].z + l23);
+                lo = D < lo ? D : lo;
+                hi = D > hi ? D : hi;
+            }
+            res.light_near = lo;
+            res.light_far = hi;
+        }
+    }
+    /* the error model [RHS] (2.3)-(2.8) for n' in eye units */
+    {
+        uint32_t mw = o->map_width ? o->map_width : SW_DEFAULT_MAP;
+        uint32_t mh = o->map_height ? o->map_height : mw;
+        uint32_t sw = o->screen_width ? o->screen_width : SW_DEFAULT_SCREEN_W;
+        uint32_t sh = o->screen_height ? o->screen_height : SW_DEFAULT_SCREEN_H;
+        swarp_error_config cfg;
+        memset(&cfg, 0, sizeof cfg);
+        cfg.near = near;
+        cfg.far = far;
+        cfg.theta = sw_half_fovy(cam->fovy);
+        cfg.res_ix = sw > sh ? sw : sh;
+        cfg.res_iy = sw > sh ? sh : sw;
+        cfg.res_s = mw > mh ? mw : mh;
+        cfg.res_t = mw > mh ? mh : mw;
+        double mx = NAN, mz = NAN;
+        s = swarp_error_max(&cfg, res.n_eye, &mx, &mz);
+        if (swarp_status_is_error(s) || !sw_finite(mx) || !sw_finite(mz)) return SWARP_ERR_DEGENERATE;
+        res.max_mx = mx;
+        res.max_mz = mz;
+    }
+    if (!sw_mat_finite(&res.matrix) || !sw_mat_finite(&res.light_proj) || !sw_mat_finite(&res.light_view))
+        return SWARP_ERR_DEGENERATE;
+    res.point_count = (uint32_t)nb;
+    *out = res;
+    return info;
+}
+
+/* ---- camera-relative coordinates -------------------------------------------
+ * Everything is computed with the eye at the origin: the box, the light
+ * position and the points of B are translated by -eye first, and the
+ * translation is folded back into the light view and the matrix at the end
+ * (only their last columns change).  In world coordinates of magnitude X
+ * (large worlds: 1e5..1e6) every light-space coordinate carries rounding of
+ * eps X, which is the whole extent of a small body B (near = 1e-6, or a
+ * flat box seen edge-on: a zero extent then looks like rounding noise and
+ * the fit stretched the noise over the map, putting points of B outside
+ * it); relative to the eye the coordinates are of the size of B and of its
+ * distance from the eye.  Issue 9, hard-case sweep. */
+static void sw_rel_camera(const swarp_camera* cam, swarp_camera* rc) {
+    *rc = *cam;
+    rc->eye = sw_v3(0.0, 0.0, 0.0);
+}
+static void sw_rel_light(const swarp_light* light, swarp_vec3 eye, swarp_light* rl) {
+    *rl = *light;
+    /* a directional light's position is not used (and need not be finite) */
+    rl->position = light->type == SWARP_LIGHT_POINT ? sw_sub(light->position, eye) : sw_v3(0.0, 0.0, 0.0);
+}
+static void sw_rel_box(const swarp_aabb* box, swarp_vec3 eye, swarp_aabb* rb) {
+    rb->min = sw_sub(box->min, eye);
+    rb->max = sw_sub(box->max, eye);
+}
+/* m · T(-eye): the last column gets -m[:, 0..2] · eye */
+static void sw_fold_eye(swarp_mat4* m, swarp_vec3 eye) {
+    for (int r = 0; r < 4; ++r)
+        sw_set(m, r, 3,
+               sw_at(m, r, 3) - (sw_at(m, r, 0) * eye.x + sw_at(m, r, 1) * eye.y + sw_at(m, r, 2) * eye.z));
+}
+/* Folds the eye back into light_view and matrix; 0 when a changed entry
+ * (their last columns, the rest was checked before) overflowed. */
+static int sw_fold_result(swarp_setup_result* res, swarp_vec3 eye) {
+    sw_fold_eye(&res->light_view, eye);
+    sw_fold_eye(&res->matrix, eye);
+    int ok = 1;
+    for (int i = 12; i < 16; ++i) ok &= sw_finite(res->light_view.m[i]) & sw_finite(res->matrix.m[i]);
+    return ok;
+}
+
+static swarp_status sw_setup_defaults(const swarp_setup_options* opts, swarp_setup_options* o) {
+    memset(o, 0, sizeof *o);
+    if (opts) *o = *opts;
+    return sw_check_setup_options(o);
+}
+
+static swarp_status sw_check_common(const swarp_camera* cam, const swarp_light* light,
+                                    const swarp_setup_options* opts, swarp_setup_options* o) {
+    swarp_status s = sw_check_camera_shape(cam);
+    if (s != SWARP_OK) return s;
+    s = sw_check_light(light);
+    if (s != SWARP_OK) return s;
+    return sw_setup_defaults(opts, o);
+}
+
+/* Capacity check only: the needed count is written early only together with
+ * SWARP_ERR_CAPACITY (the documented exception); on every other error the
+ * outputs stay untouched, so the count is written at the very end. */
+static swarp_status sw_check_points_capacity(const swarp_polyhedron* B, const swarp_vec3* out_points,
+                                             size_t capacity, size_t* out_count) {
+    if (out_points && capacity < B->vertex_count) {
+        if (out_count) *out_count = B->vertex_count;
+        return SWARP_ERR_CAPACITY;
+    }
+    return SWARP_OK;
+}
+
+/* cam, light, scene: camera-relative (eye at the origin); eye: the world
+ * eye, folded back into the results */
+static swarp_status sw_setup_range(const swarp_camera* cam, const swarp_light* light, const swarp_aabb* scene,
+                                   double near, double far, const swarp_polyhedron* Hin,
+                                   const swarp_setup_options* o, swarp_vec3 eye, const sw_follow* fw,
+                                   swarp_setup_result* out,
+                                   swarp_vec3* out_points, size_t capacity, size_t* out_count) {
+    swarp_polyhedron Hl, B;
+    const swarp_polyhedron* Hp = Hin;
+    swarp_status s;
+    if (!Hp) {
+        s = sw_body_h(cam, near, far, scene, &Hl);
+        if (s != SWARP_OK) return s;
+        Hp = &Hl;
+    }
+    s = sw_body_from_h_clipped(Hp, light, scene, &B); /* H from sw_body_h: the clipper's */
+    if (s != SWARP_OK) return s;
+    s = sw_check_points_capacity(&B, out_points, capacity, out_count);
+    if (s != SWARP_OK) return s;
+    /* the receivers a spot lights: H ∩ L */
+    swarp_polyhedron HL;
+    if (light->type == SWARP_LIGHT_POINT && light->cone_angle > 0.0) {
+        sw_poly_copy(Hp, &HL);
+        s = sw_clip_light_pyramid(&HL, light);
+        if (s != SWARP_OK) return s;
+        if (HL.vertex_count == 0) return SWARP_ERR_BODY_EMPTY;
+        Hp = &HL;
+    }
+    swarp_setup_result res;
+    swarp_status info = sw_setup_points(cam, light, B.vertices, B.vertex_count, &B, Hp->vertices, Hp->vertex_count, near,
+                                        far, o, eye, fw, &res);
+    if (swarp_status_is_error(info)) return info;
+    if (!sw_fold_result(&res, eye)) return SWARP_ERR_DEGENERATE;
+    *out = res;
+    if (out_points)
+        for (uint32_t i = 0; i < B.vertex_count; ++i) out_points[i] = sw_add(B.vertices[i], eye);
+    if (out_count) *out_count = B.vertex_count;
+    return info;
+}
+
+/* swarp_setup, with the previous light frame to follow (NULL: stateless) */
+static swarp_status sw_setup_main(const swarp_camera* cam, const swarp_light* light, const swarp_aabb* scene,
+                                  const swarp_setup_options* opts, const sw_follow* fw, swarp_setup_result* out,
+                                  swarp_vec3* out_points, size_t capacity, size_t* out_count) {
+    if (!cam || !light || !scene || !out) return SWARP_ERR_NULL_POINTER;
+    swarp_setup_options o;
+    swarp_status s = sw_check_common(cam, light, opts, &o);
+    if (s != SWARP_OK) return s;
+    if (!sw_finite(cam->near) || !sw_finite(cam->far)) return SWARP_ERR_NON_FINITE;
+    if (!(cam->near > 0.0 && cam->far > cam->near)) return SWARP_ERR_NEAR_FAR;
+    s = sw_check_box(scene);
+    if (s != SWARP_OK) return s;
+    /* [RHS] §4.3: a measured min depth moves the near plane out (never
+     * past what the depth buffer saw); 0 = not given, the camera's own */
+    double cam_near = cam->near;
+    if (o.min_depth > 0.0) {
+        s = swarp_mindepth_near(cam->near, cam->far, o.min_depth, NULL, &cam_near);
+        if (swarp_status_is_error(s)) return s;
+    }
+    swarp_camera rc;
+    swarp_light rl;
+    swarp_aabb rs;
+    sw_rel_camera(cam, &rc);
+    sw_rel_light(light, cam->eye, &rl);
+    sw_rel_box(scene, cam->eye, &rs);
+    if (!sw_finite3(&rl.position) || !sw_finite3(&rs.min) || !sw_finite3(&rs.max)) return SWARP_ERR_NON_FINITE;
+    /* adjusted near/far [RHS] §3.3.1: V ∩ S over [near', far'] is H itself */
+    swarp_polyhedron H;
+    double zn, zf;
+    s = sw_body_h_eye(cam, cam_near, cam->far, scene, &H, &zn, &zf);
+    if (s != SWARP_OK) return s;
+    zn = fmin(fmax(zn, cam_near), cam->far);
+    zf = fmin(fmax(zf, zn), cam->far);
+    if (!(zf > zn)) { /* H lies in one depth plane (box face on a view plane): keep a sliver */
+        double pad = fmax(1e-9 * zn, 1e-300);
+        if (zn - pad > cam_near) zn -= pad;
+        else zf += pad;
+    }
+    return sw_setup_range(&rc, &rl, &rs, zn, zf, &H, &o, cam->eye, fw, out, out_points, capacity, out_count);
+}
+
+SWARP_API swarp_status swarp_setup(const swarp_camera* cam, const swarp_light* light, const swarp_aabb* scene,
+                                   const swarp_setup_options* opts, swarp_setup_result* out,
+                                   swarp_vec3* out_points, size_t capacity, size_t* out_count) {
+    return sw_setup_main(cam, light, scene, opts, NULL, out, out_points, capacity, out_count);
+}
+
+/* [RHS] §3.2.1 light-space alignment kept coherent over time (src/follow.c) */
+SWARP_API swarp_status swarp_setup_follow(const swarp_camera* cam, const swarp_light* light,
+                                          const swarp_aabb* scene, const swarp_setup_options* opts,
+                                          const swarp_camera* previous_cam, const swarp_setup_result* previous,
+                                          swarp_setup_result* out, swarp_vec3* out_points, size_t capacity,
+                                          size_t* out_count) {
+    if (!previous) return sw_setup_main(cam, light, scene, opts, NULL, out, out_points, capacity, out_count);
+    if (!cam || !light || !scene || !out) return SWARP_ERR_NULL_POINTER;
+    swarp_setup_options o;
+    swarp_status s = sw_check_common(cam, light, opts, &o);
+    if (s != SWARP_OK) return s;
+    if (previous_cam) {
+        s = sw_check_camera_shape(previous_cam);
+        if (s != SWARP_OK) return s;
+    }
+    swarp_technique tech = o.technique == SWARP_TECHNIQUE_DEFAULT ? SWARP_TECHNIQUE_LISPSM : o.technique;
+    sw_follow fw;
+    s = sw_follow_from_result(previous, cam, previous_cam, tech, &fw);
+    if (s != SWARP_OK) return s;
+    return sw_setup_main(cam, light, scene, opts, &fw, out, out_points, capacity, out_count);
+}
+
+SWARP_API swarp_status swarp_setup_range(const swarp_camera* cam, const swarp_light* light,
+                                         const swarp_aabb* scene, double near, double far,
+                                         const swarp_setup_options* opts, swarp_setup_result* out,
+                                         swarp_vec3* out_points, size_t capacity, size_t* out_count) {
+    if (!cam || !light || !scene || !out) return SWARP_ERR_NULL_POINTER;
+    swarp_setup_options o;
+    swarp_status s = sw_check_common(cam, light, opts, &o);
+    if (s != SWARP_OK) return s;
+    if (!sw_finite(near) || !sw_finite(far)) return SWARP_ERR_NON_FINITE;
+    if (!(near > 0.0 && far > near)) return SWARP_ERR_NEAR_FAR;
+    s = sw_check_box(scene);
+    if (s != SWARP_OK) return s;
+    swarp_camera rc;
+    swarp_light rl;
+    swarp_aabb rs;
+    sw_rel_camera(cam, &rc);
+    sw_rel_light(light, cam->eye, &rl);
+    sw_rel_box(scene, cam->eye, &rs);
+    if (!sw_finite3(&rl.position) || !sw_finite3(&rs.min) || !sw_finite3(&rs.max)) return SWARP_ERR_NON_FINITE;
+    return sw_setup_range(&rc, &rl, &rs, near, far, NULL, &o, cam->eye, NULL, out, out_points, capacity, out_count);
+}
+
+SWARP_API swarp_status swarp_setup_points(const swarp_camera* cam, const swarp_light* light,
+                                          const swarp_vec3* points, size_t count, const swarp_vec3* receivers,
+                                          size_t receiver_count, double near, double far,
+                                          const swarp_setup_options* opts, swarp_setup_result* out) {
+    if (!cam || !light || !points || !out) return SWARP_ERR_NULL_POINTER;
+    swarp_setup_options o;
+    swarp_status s = sw_check_common(cam, light, opts, &o);
+    if (s != SWARP_OK) return s;
+    if (!sw_finite(near) || !sw_finite(far)) return SWARP_ERR_NON_FINITE;
+    if (!(near > 0.0 && far > near)) return SWARP_ERR_NEAR_FAR;
+    if (count == 0 || count > SWARP_BODY_MAX_POINTS ||
+        (receivers && (receiver_count == 0 || receiver_count > SWARP_BODY_MAX_POINTS)))
+        return SWARP_ERR_INVALID_ARGUMENT;
+    for (size_t i = 0; i < count; ++i)
+        if (!sw_finite3(&points[i])) return SWARP_ERR_NON_FINITE;
+    if (receivers)
+        for (size_t i = 0; i < receiver_count; ++i)
+            if (!sw_finite3(&receivers[i])) return SWARP_ERR_NON_FINITE;
+    /* camera-relative, as swarp_setup (see sw_rel_camera) */
+    swarp_camera rc;
+    swarp_light rl;
+    sw_rel_camera(cam, &rc);
+    sw_rel_light(light, cam->eye, &rl);
+    swarp_vec3 Br[SWARP_BODY_MAX_POINTS], Hr[SWARP_BODY_MAX_POINTS];
+    for (size_t i = 0; i < count; ++i) Br[i] = sw_sub(points[i], cam->eye);
+    for (size_t i = 0; receivers && i < receiver_count; ++i) Hr[i] = sw_sub(receivers[i], cam->eye);
+    if (!sw_finite3(&rl.position)) return SWARP_ERR_NON_FINITE;
+    for (size_t i = 0; i < count; ++i)
+        if (!sw_finite3(&Br[i])) return SWARP_ERR_NON_FINITE;
+    for (size_t i = 0; receivers && i < receiver_count; ++i)
+        if (!sw_finite3(&Hr[i])) return SWARP_ERR_NON_FINITE;
+    swarp_setup_result res;
+    s = sw_setup_points(&rc, &rl, Br, count, NULL, receivers ? Hr : NULL, receivers ? receiver_count : 0, near, far,
+                        &o, cam->eye, NULL, &res);
+    if (swarp_status_is_error(s)) return s;
+    if (!sw_fold_result(&res, cam->eye)) return SWARP_ERR_DEGENERATE;
+    *out = res;
+    return s;
+}

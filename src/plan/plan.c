@@ -1,0 +1,1198 @@
+/* The planner: the cheapest chain of shadow-map effects whose predicted error
+ * meets the caller's budget, with a reason for every choice.
+ *
+ *   error model   Lloyd's m_x, m_z [RHS] (2.3)-(2.8) generalised to a light
+ *                 at angle γ to the view (sw_split_error below; reduces to
+ *                 (2.3)/(2.4) at γ = 90°, light-space extent = W_lz of
+ *                 [RHS] (3.5) for γ >= Θ)            docs/planning.md §2
+ *   warp params   core: [RHS] (3.2), (3.3)-(3.5), (4.2), [GMNPR] (8)
+ *   split schemes core: [RHS] (3.7), (3.8)
+ *   cost model    passes × per-pass time + prefilter blur passes,
+ *                 default per-pass time fitted to [RHS] Table 7.1  §3
+ *   selection     fewest passes that meet the budget, then lower error,
+ *                 then the simpler (earlier) candidate              §4
+ *
+ * Everything is closed form: a plan evaluates 96 candidate chains with at
+ * most 16 splits each and two error evaluations per split (the maxima of the
+ * generalised curves lie at the split ends), a few microseconds.
+ */
+#include <float.h>
+#include <stddef.h>
+
+#include "common/swarp_internal.h"
+
+/* ---- constants (docs/planning.md says where each comes from) ------------ */
+
+/* Default per-pass time: the linear fit of [RHS] Table 7.1 (Sights of Paris):
+ * 1+1 passes 143 fps, 4+1 90 fps, 8+1 60 fps, 16+1 36 fps give 1.39 ms per
+ * additional shadow pass (the three slopes are 1.37, 1.39 and 1.39 ms). */
+#define SW_DEFAULT_PASS_NS 1.39e6
+/* Prefilter blur pass (separable, one direction over one map): assumed a
+ * quarter of a geometry pass until the demo measures it. */
+#define SW_DEFAULT_BLUR_FRACTION 0.25
+/* 64-level approximate stabilisation [RHS] §3.5: the focus extent rounds up
+ * to the next level; with levels 1/64 of the extent apart the texels grow by
+ * at most 1/64 (an assumption: [RHS] gives the level count only). */
+#define SW_STABLE_FACTOR (1.0 + 1.0 / 64.0)
+/* Practical split scheme weight λ = 0.5, Zhang et al.'s choice [RHS] §3.3.2. */
+#define SW_PSSM_LAMBDA 0.5
+/* Pseudo-near and pseudo-far as fractions of the depth range: [RHS] Fig. 4.2
+ * used n_p ≈ f_p ≈ 30 of a [1, 300] range, i.e. 0.1 each. */
+#define SW_PSEUDO_NP 0.1
+#define SW_PSEUDO_FP 0.1
+/* Kernels up to this width (texels) are cheaper as PCF (w² taps, no
+ * prefilter passes, no light bleeding) than as a prefiltered moment map. */
+#define SW_PCF_MAX_WIDTH 4.0
+#define SW_DEFAULT_SOFT_WIDTH 3.0
+#define SW_LVSM_LAYERS 4u       /* [VSM] Fig. 4.2 used a 4-layer LVSM */
+#define SW_EVSM_C_POS 40.0      /* exponents that stay finite in fp32 [VSM] §4.2 */
+#define SW_EVSM_C_NEG 5.0
+/* Lixel planes: the light must reach the plane at more than 5° elevation,
+ * else the plane's light image degenerates ([LIXEL] §4 bad cases). */
+#define SW_LIXEL_MIN_ELEVATION_SIN 0.08715574274765817 /* sin 5° */
+/* Two errors closer than this relative amount are a tie (then the simpler
+ * candidate wins); far above rounding, far below any meaningful difference. */
+#define SW_ERR_TIE_REL 1e-9
+/* The largest resolution / pass count accepted (sanity limits). */
+#define SW_MAX_RES 65536u
+#define SW_MAX_PASSES 32u
+
+/* ---- resolved inputs ------------------------------------------------------ */
+
+typedef struct sw_pin {
+    swarp_vec3 eye, view, up;   /* view and up unit length */
+    double theta;               /* Θ = fovy / 2 */
+    double aspect;
+    double near, far;           /* adjusted range */
+    int near_far_adjusted;
+    swarp_vec3 to_light;        /* unit, from the scene toward the light */
+    int point_light;
+    swarp_vec3 light_pos;
+    double gamma;               /* angle(view, to_light) in [0, pi] */
+    double gamma_f;             /* folded to [0, pi/2] */
+    double res_ix, res_iy;      /* screen */
+    int moves, soft;
+    double soft_width;
+    swarp_plan_bleed bleed;
+    int allow_clamp;
+    uint32_t plane_count;
+    swarp_plane planes[SWARP_PLAN_MAX_PLANES];
+    /* budget */
+    double max_error;
+    uint32_t map_res, atlas_limit, max_passes;
+    double time_budget, pass_ns, blur_ns;
+} sw_pin;
+
+static int sw_all_zero(const void* p, size_t n) {
+    const unsigned char* b = (const unsigned char*)p;
+    for (size_t i = 0; i < n; ++i)
+        if (b[i]) return 0;
+    return 1;
+}
+
+static swarp_status sw_check_camera(const swarp_camera* c, sw_pin* in) {
+    if (!sw_reserved_zero(c->_reserved, 4)) return SWARP_ERR_RESERVED_NONZERO;
+    if (!sw_finite3(&c->eye) || !sw_finite3(&c->dir) || !sw_finite3(&c->up) ||
+        !sw_finite(c->fovy) || !sw_finite(c->aspect) || !sw_finite(c->near) ||
+        !sw_finite(c->far))
+        return SWARP_ERR_NON_FINITE;
+    swarp_vec3 v, u;
+    if (!sw_normalize(c->dir, &v) || !sw_normalize(c->up, &u)) return SWARP_ERR_ZERO_VECTOR;
+    /* up parallel to dir: no image plane orientation (1e-12: rounding of a
+     * cross product of unit vectors) */
+    if (sw_len(sw_cross(v, u)) < 1e-12) return SWARP_ERR_DEGENERATE;
+    if (!(c->fovy > 0.0 && c->fovy < SWARP_PI)) return SWARP_ERR_FOV;
+    if (!(c->aspect > 0.0)) return SWARP_ERR_OUT_OF_RANGE;
+    if (!(c->near > 0.0 && c->far > c->near)) return SWARP_ERR_NEAR_FAR;
+    in->eye = c->eye;
+    in->view = v;
+    in->up = u;
+    in->theta = 0.5 * c->fovy;
+    in->aspect = c->aspect;
+    in->near = c->near;
+    in->far = c->far;
+    return SWARP_OK;
+}
+
+static swarp_status sw_check_light(const swarp_light* l, sw_pin* in) {
+    if (l->_reserved0 != 0 || !sw_reserved_zero(l->_reserved, 4)) return SWARP_ERR_RESERVED_NONZERO;
+    if (l->type != SWARP_LIGHT_DEFAULT && l->type != SWARP_LIGHT_DIRECTIONAL &&
+        l->type != SWARP_LIGHT_POINT)
+        return SWARP_ERR_UNKNOWN_ENUM;
+    if (!sw_finite3(&l->direction) || !sw_finite3(&l->position) || !sw_finite(l->cone_angle))
+        return SWARP_ERR_NON_FINITE;
+    if (l->type == SWARP_LIGHT_POINT) {
+        if (!(l->cone_angle >= 0.0 && l->cone_angle < 0.5 * SWARP_PI)) return SWARP_ERR_OUT_OF_RANGE;
+        in->point_light = 1;
+        in->light_pos = l->position;
+    } else {
+        swarp_vec3 d;
+        if (!sw_normalize(l->direction, &d)) return SWARP_ERR_ZERO_VECTOR;
+        in->point_light = 0;
+        in->to_light = sw_scale(d, -1.0);
+    }
+    return SWARP_OK;
+}
+
+static swarp_status sw_resolve(const swarp_scene_needs* needs, const swarp_budget* budget,
+                               sw_pin* in) {
+    static const swarp_scene_needs zero_needs; /* const: not mutable state */
+    static const swarp_budget zero_budget;
+    if (!needs) needs = &zero_needs;
+    if (!budget) budget = &zero_budget;
+    memset(in, 0, sizeof *in);
+
+    if (!sw_reserved_zero(needs->_reserved, 4) || needs->_pad0 != 0 ||
+        !sw_reserved_zero(budget->_reserved, 4) || budget->_pad0 != 0)
+        return SWARP_ERR_RESERVED_NONZERO;
+
+    swarp_status s;
+    if (sw_all_zero(&needs->camera, sizeof needs->camera)) {
+        /* default camera: 2 units above the ground looking along -z */
+        in->eye = sw_v3(0.0, 2.0, 0.0);
+        in->view = sw_v3(0.0, 0.0, -1.0);
+        in->up = sw_v3(0.0, 1.0, 0.0);
+        in->theta = SWARP_PI / 6.0;
+        in->aspect = 4.0 / 3.0;
+        in->near = 1.0;
+        in->far = 100.0;
+    } else if ((s = sw_check_camera(&needs->camera, in)) != SWARP_OK) {
+        return s;
+    }
+    if (sw_all_zero(&needs->light, sizeof needs->light)) {
+        in->point_light = 0;
+        in->to_light = sw_v3(0.0, 1.0, 0.0); /* sun at zenith */
+    } else if ((s = sw_check_light(&needs->light, in)) != SWARP_OK) {
+        return s;
+    }
+
+    /* scene box: all zero = unbounded */
+    const swarp_aabb* box = &needs->scene_box;
+    int have_box = !sw_all_zero(box, sizeof *box);
+    if (have_box) {
+        if (!sw_finite3(&box->min) || !sw_finite3(&box->max)) return SWARP_ERR_NON_FINITE;
+        if (box->min.x > box->max.x || box->min.y > box->max.y || box->min.z > box->max.z)
+            return SWARP_ERR_OUT_OF_RANGE;
+    }
+    if (!sw_finite(needs->soft_width)) return SWARP_ERR_NON_FINITE;
+    if (needs->camera_moves > 1 || needs->soft_shadows > 1 || needs->allow_depth_clamp > 1)
+        return SWARP_ERR_OUT_OF_RANGE;
+    if (needs->soft_width != 0.0 && !(needs->soft_width >= 1.0)) return SWARP_ERR_OUT_OF_RANGE;
+    if ((uint32_t)needs->bleed_risk > (uint32_t)SWARP_PLAN_BLEED_EXTREME)
+        return SWARP_ERR_UNKNOWN_ENUM;
+    if (needs->plane_count > SWARP_PLAN_MAX_PLANES) return SWARP_ERR_PLAN_TOO_MANY_PLANES;
+    for (uint32_t i = 0; i < needs->plane_count; ++i) {
+        const swarp_plane* p = &needs->planes[i];
+        if (!sw_finite(p->a) || !sw_finite(p->b) || !sw_finite(p->c) || !sw_finite(p->d))
+            return SWARP_ERR_NON_FINITE;
+        if (p->a == 0.0 && p->b == 0.0 && p->c == 0.0) return SWARP_ERR_ZERO_VECTOR;
+    }
+    if (needs->screen_width > SW_MAX_RES || needs->screen_height > SW_MAX_RES)
+        return SWARP_ERR_RESOLUTION;
+
+    /* budget */
+    if (!sw_finite(budget->max_error) || !sw_finite(budget->time_budget_ns) ||
+        !sw_finite(budget->pass_cost_ns) || !sw_finite(budget->blur_pass_cost_ns))
+        return SWARP_ERR_NON_FINITE;
+    if (budget->max_error < 0.0 || budget->time_budget_ns < 0.0 || budget->pass_cost_ns < 0.0 ||
+        budget->blur_pass_cost_ns < 0.0 || budget->max_passes > SW_MAX_PASSES)
+        return SWARP_ERR_OUT_OF_RANGE;
+    /* a cost near DBL_MAX made K x pass cost overflow to inf (found by the
+     * hard-case sweep): the documented limit keeps every cost finite */
+    if (budget->time_budget_ns > SWARP_PLAN_MAX_COST_NS || budget->pass_cost_ns > SWARP_PLAN_MAX_COST_NS ||
+        budget->blur_pass_cost_ns > SWARP_PLAN_MAX_COST_NS)
+        return SWARP_ERR_OUT_OF_RANGE;
+    if (budget->map_resolution > SW_MAX_RES || budget->atlas_limit > SW_MAX_RES)
+        return SWARP_ERR_RESOLUTION;
+
+    in->res_ix = needs->screen_width ? (double)needs->screen_width : 1024.0;
+    in->res_iy = needs->screen_height ? (double)needs->screen_height : 768.0;
+    in->moves = (int)needs->camera_moves;
+    in->soft = (int)needs->soft_shadows;
+    in->soft_width = needs->soft_width > 0.0 ? needs->soft_width : SW_DEFAULT_SOFT_WIDTH;
+    in->bleed = needs->bleed_risk == SWARP_PLAN_BLEED_DEFAULT ? SWARP_PLAN_BLEED_NONE
+                                                               : needs->bleed_risk;
+    in->allow_clamp = (int)needs->allow_depth_clamp;
+    in->plane_count = needs->plane_count;
+    for (uint32_t i = 0; i < needs->plane_count; ++i) in->planes[i] = needs->planes[i];
+
+    in->max_error = budget->max_error > 0.0 ? budget->max_error : 1.0;
+    in->map_res = budget->map_resolution ? budget->map_resolution : 2048u;
+    in->atlas_limit = budget->atlas_limit ? budget->atlas_limit : 8192u;
+    in->max_passes = budget->max_passes ? budget->max_passes : 16u;
+    in->time_budget = budget->time_budget_ns;
+    in->pass_ns = budget->pass_cost_ns > 0.0 ? budget->pass_cost_ns : SW_DEFAULT_PASS_NS;
+    in->blur_ns = budget->blur_pass_cost_ns > 0.0 ? budget->blur_pass_cost_ns
+                                                  : SW_DEFAULT_BLUR_FRACTION * in->pass_ns;
+
+    /* [RHS] §3.3.1 adjusted near/far, conservatively: the depth range of the
+     * box corners along the view direction clipped to [near, far] (contains
+     * the depth range of H = V ∩ S, so nothing visible is lost). */
+    if (have_box) {
+        double dmin = INFINITY, dmax = -INFINITY;
+        for (int k = 0; k < 8; ++k) {
+            swarp_vec3 c = sw_v3((k & 1) ? box->max.x : box->min.x,
+                                 (k & 2) ? box->max.y : box->min.y,
+                                 (k & 4) ? box->max.z : box->min.z);
+            double d = sw_dot(sw_sub(c, in->eye), in->view);
+            if (d < dmin) dmin = d;
+            if (d > dmax) dmax = d;
+        }
+        if (dmax < in->near || dmin > in->far) return SWARP_ERR_PLAN_EMPTY_VIEW;
+        double n = dmin > in->near ? dmin : in->near;
+        double f = dmax < in->far ? dmax : in->far;
+        /* a box flat across the view: keep a tiny positive depth range
+         * (1e-6 relative, far above rounding) so every ratio stays finite */
+        if (f < n * (1.0 + 1e-6)) f = n * (1.0 + 1e-6);
+        if (n != in->near || f != in->far) in->near_far_adjusted = 1;
+        in->near = n;
+        in->far = f;
+    }
+
+    /* a point light is planned as a directional light from the light toward
+     * the centre of the (adjusted) view frustum ([RHS] §3.2.2 treats a
+     * narrow point light as directional) */
+    if (in->point_light) {
+        /* relative to the eye first: light - (eye + c v) rounded the centre
+         * at the eye's magnitude (1e6 worlds: 1e-10), which turned a light
+         * at the eye (exactly γ = π) by 1e-14 rad with the caller's rounding
+         * mode; (light - eye) is exact there and small nearby */
+        swarp_vec3 to = sw_sub(sw_sub(in->light_pos, in->eye), sw_scale(in->view, 0.5 * (in->near + in->far)));
+        if (!sw_normalize(to, &in->to_light)) return SWARP_ERR_DEGENERATE;
+    }
+    /* γ = atan2(|v × l|, v · l), not acos(v · l): acos is ill-conditioned
+     * next to 0 and π (d acos/dc = -1/sin γ), where a light along the view
+     * (or a point light at the eye) puts γ; an ulp of c there moved γ by
+     * sqrt(eps) ~ 1.5e-8 and the planner's n' and errors with it (the
+     * caller's rounding mode changed max_error by 1e-7 relative, issue 9).
+     * atan2 of the two components is accurate to an ulp everywhere. */
+    in->gamma = atan2(sw_len(sw_cross(in->view, in->to_light)), sw_dot(in->view, in->to_light));
+    in->gamma_f = in->gamma > 0.5 * SWARP_PI ? SWARP_PI - in->gamma : in->gamma;
+    return SWARP_OK;
+}
+
+/* ---- the generalised error model ------------------------------------------ */
+/*
+ * In the plane spanned by the view direction and the light direction, a view
+ * point at depth z and lateral offset y (|y| <= z tanΘ) lands on the shadow
+ * map's light-space z axis at t = z sinγ + y cosγ; over the frustum [n, f]
+ * t spans [t_lo, t_hi] with t_hi = f sin(γ+Θ)/cosΘ and
+ * t_lo = min(n, f) · sin(γ-Θ)/cosΘ, so W = t_hi - t_lo (= W_lz of [RHS] (3.5)
+ * for γ >= Θ).  The warp is a perspective along t with its centre n' before
+ * t_lo: p = n' + t - t_lo.  Texel sizes and the pixel size 2 z tanΘ / res give
+ *   m_z(z) = res_iy/res_t · W / (2 z tanΘ) · (p_hi(z)/n')² / ((n' + W)/n')
+ *   m_x(z) = res_ix/res_s · max_{z'∈{n,f}} z' p_hi(z) / (p_lo(z') z)
+ * with p_hi/p_lo the largest/smallest p at depth z.  At γ = 90° these are
+ * exactly [RHS] (2.4) and (2.3); n' = inf gives (2.8) (with W) and (2.7).
+ * Both are convex (m_z ∝ (a + b z)²/z) or monotone (m_x ∝ a/z + b) in z, so
+ * the maxima are at z = n or z = f.  Written with 1/n' so that n' = inf
+ * (uniform) and n' = DBL_MAX (core's clamp) need no special case.
+ */
+typedef struct sw_split_geo {
+    double sp, sm;   /* sin(γ ± Θ) / cosΘ */
+    double t_lo, W;
+} sw_split_geo;
+
+static sw_split_geo sw_geo(double gamma_f, double theta, double n, double f) {
+    sw_split_geo g;
+    double ct = cos(theta);
+    g.sp = sin(gamma_f + theta) / ct;
+    g.sm = sin(gamma_f - theta) / ct;
+    double tn = n * g.sm, tf = f * g.sm;
+    g.t_lo = tn < tf ? tn : tf;
+    g.W = f * g.sp - g.t_lo;
+    return g;
+}
+
+static void sw_split_error(const sw_split_geo* g, double theta, double n, double f, double n_l,
+                           double r_x, double r_y, double* out_mx, double* out_mz) {
+    double inv = sw_finite(n_l) ? 1.0 / n_l : 0.0;
+    double tt = tan(theta);
+    double zs[2] = {n, f};
+    double cx = 0.0; /* max z' / (p_lo(z') / n') */
+    for (int k = 0; k < 2; ++k) {
+        double a_lo = zs[k] * g->sm - g->t_lo;
+        if (a_lo < 0.0) a_lo = 0.0; /* rounding only: t_lo is the minimum */
+        double v = zs[k] / (1.0 + a_lo * inv);
+        if (v > cx) cx = v;
+    }
+    double mx = 0.0, mz = 0.0;
+    for (int k = 0; k < 2; ++k) {
+        double z = zs[k];
+        double ph = 1.0 + (z * g->sp - g->t_lo) * inv; /* p_hi / n' */
+        double ex = r_x * cx * ph / z;
+        double ez = r_y * g->W / (2.0 * z * tt) * ph * ph / (1.0 + g->W * inv);
+        if (ex > mx) mx = ex;
+        if (ez > mz) mz = ez;
+    }
+    *out_mx = mx;
+    *out_mz = mz;
+}
+
+/* Warp parameter of one split [c0, c1] in light-space units (+inf uniform).
+ * Returns a core error status if the core refuses (never expected). */
+static swarp_status sw_warp_param(swarp_plan_warp w, const sw_split_geo* g, double gamma_f,
+                                  double theta, double c0, double c1, double* out) {
+    double z1 = c0 + g->W * sin(gamma_f); /* WS06: eye depth one extent d along light z */
+    if (z1 < c0) z1 = c0;
+    double v = INFINITY, eta = 0.0, lambda = 0.0;
+    swarp_status s = SWARP_OK;
+    switch (w) {
+    case SWARP_PLAN_WARP_UNIFORM: v = INFINITY; break;
+    case SWARP_PLAN_WARP_LISPSM_NOPT: s = swarp_warp_nopt(g->W, c0, z1, &v); break; /* [RHS] (3.2) */
+    case SWARP_PLAN_WARP_LISPSM_PSEUDO: /* [RHS] (4.2) */
+        s = swarp_warp_nopt_pseudo(g->W, c0, z1, SW_PSEUDO_NP, SW_PSEUDO_FP, &v);
+        break;
+    case SWARP_PLAN_WARP_LISPSM_NREPAR: /* [RHS] (3.3), (3.4) with W for W_lz */
+        s = swarp_warp_eta(gamma_f, theta, &eta);
+        if (!swarp_status_is_error(s)) s = swarp_warp_nrepar(eta, c1 / c0, g->W, &v);
+        break;
+    case SWARP_PLAN_WARP_PSM: /* n_repar(η = 1): n' = n_e for the overhead light */
+        s = swarp_warp_nrepar(1.0, c1 / c0, g->W, &v);
+        break;
+    case SWARP_PLAN_WARP_LISPSM_GMNPR: /* [GMNPR] (8): λ = P_n / (P_f - P_n) */
+        s = swarp_gmnpr_lambda(gamma_f, theta, c0, c1, &lambda);
+        if (!swarp_status_is_error(s)) v = sw_finite(lambda) ? lambda * g->W : INFINITY;
+        break;
+    default: return SWARP_ERR_UNKNOWN_ENUM;
+    }
+    if (swarp_status_is_error(s)) return s;
+    if (!(v > 0.0)) return SWARP_ERR_DEGENERATE;
+    *out = v;
+    return SWARP_OK;
+}
+
+/* ---- candidates ----------------------------------------------------------- */
+
+#define SW_SINGLE_WARPS 6
+#define SW_SPLIT_VARIANTS 6
+#define SW_CANDIDATES (SW_SINGLE_WARPS + (SWARP_PLAN_MAX_SPLITS - 1) * SW_SPLIT_VARIANTS)
+
+/* Candidate i in the fixed order that breaks ties (simpler first). */
+static swarp_plan_chain sw_candidate(uint32_t i) {
+    static const swarp_plan_warp single[SW_SINGLE_WARPS] = {
+        SWARP_PLAN_WARP_UNIFORM,      SWARP_PLAN_WARP_LISPSM_NOPT,   SWARP_PLAN_WARP_LISPSM_NREPAR,
+        SWARP_PLAN_WARP_LISPSM_GMNPR, SWARP_PLAN_WARP_LISPSM_PSEUDO, SWARP_PLAN_WARP_PSM};
+    static const swarp_plan_warp split_warp[3] = {
+        SWARP_PLAN_WARP_UNIFORM, SWARP_PLAN_WARP_LISPSM_NOPT, SWARP_PLAN_WARP_LISPSM_NREPAR};
+    swarp_plan_chain c;
+    memset(&c, 0, sizeof c);
+    if (i < SW_SINGLE_WARPS) {
+        c.warp = single[i];
+        c.scheme = SWARP_PLAN_SCHEME_NONE;
+        c.split_count = 1;
+    } else {
+        uint32_t j = i - SW_SINGLE_WARPS;
+        c.split_count = 2 + j / SW_SPLIT_VARIANTS;
+        uint32_t v = j % SW_SPLIT_VARIANTS;
+        c.scheme = v < 3 ? SWARP_PLAN_SCHEME_PRACTICAL : SWARP_PLAN_SCHEME_LOG;
+        c.warp = split_warp[v % 3];
+    }
+    c.stabilize = SWARP_PLAN_STABILIZE_DEFAULT;
+    return c;
+}
+
+/* ---- filter decision (depends on the needs only) -------------------------- */
+
+typedef struct sw_filter {
+    swarp_plan_filter kind;
+    uint32_t layers;
+    double width, c_pos, c_neg;
+    uint32_t blur_per_map; /* separable blur passes per map */
+} sw_filter;
+
+static sw_filter sw_choose_filter(const sw_pin* in) {
+    sw_filter f;
+    memset(&f, 0, sizeof f);
+    f.kind = SWARP_PLAN_FILTER_NONE;
+    if (!in->soft) return f;
+    f.width = in->soft_width;
+    if (in->soft_width <= SW_PCF_MAX_WIDTH) {
+        f.kind = SWARP_PLAN_FILTER_PCF; /* taps in the lighting pass, no bleeding */
+        return f;
+    }
+    f.blur_per_map = 2; /* separable prefilter: one pass per axis */
+    switch (in->bleed) {
+    case SWARP_PLAN_BLEED_LOW: f.kind = SWARP_PLAN_FILTER_MSM; break;
+    case SWARP_PLAN_BLEED_HIGH:
+        f.kind = SWARP_PLAN_FILTER_EVSM;
+        f.c_pos = SW_EVSM_C_POS;
+        f.c_neg = SW_EVSM_C_NEG;
+        break;
+    case SWARP_PLAN_BLEED_EXTREME:
+        f.kind = SWARP_PLAN_FILTER_LVSM;
+        f.layers = SW_LVSM_LAYERS;
+        f.blur_per_map = 2 * (SW_LVSM_LAYERS / 2); /* two layers per RGBA texture */
+        break;
+    default: f.kind = SWARP_PLAN_FILTER_VSM; break; /* exact for one planar occluder */
+    }
+    return f;
+}
+
+/* ---- evaluation of one chain ---------------------------------------------- */
+
+typedef struct sw_eval {
+    uint32_t K, r, tiles;
+    double splits[SWARP_PLAN_MAX_SPLITS + 1];
+    double n_prime[SWARP_PLAN_MAX_SPLITS];
+    double smx[SWARP_PLAN_MAX_SPLITS], smz[SWARP_PLAN_MAX_SPLITS];
+    double mx, mz, err, cost;
+    swarp_plan_stabilize stab;
+    int ok;
+} sw_eval;
+
+static uint32_t sw_tiles(uint32_t K) {
+    uint32_t t = 1;
+    while (t * t < K) ++t;
+    return t;
+}
+
+static void sw_evaluate(const sw_pin* in, const sw_filter* flt, const swarp_plan_chain* c,
+                        sw_eval* e) {
+    memset(e, 0, sizeof *e);
+    uint32_t K = c->split_count ? c->split_count : 1;
+    e->K = K;
+    e->tiles = sw_tiles(K);
+    uint32_t r = in->atlas_limit / e->tiles;
+    if (r > in->map_res) r = in->map_res;
+    if (r < 1) r = 1;
+    e->r = r;
+    size_t cnt = 0;
+    swarp_status s = SWARP_OK;
+    if (K == 1) {
+        e->splits[0] = in->near;
+        e->splits[1] = in->far;
+    } else if (c->scheme == SWARP_PLAN_SCHEME_LOG) {
+        s = swarp_split_log(in->near, in->far, K, e->splits, SWARP_PLAN_MAX_SPLITS + 1, &cnt);
+    } else {
+        s = swarp_split_practical(in->near, in->far, SW_PSSM_LAMBDA, K, e->splits,
+                                  SWARP_PLAN_MAX_SPLITS + 1, &cnt);
+    }
+    if (swarp_status_is_error(s)) return;
+    e->stab = c->stabilize;
+    if (e->stab == SWARP_PLAN_STABILIZE_DEFAULT)
+        e->stab = (in->moves && c->warp == SWARP_PLAN_WARP_UNIFORM) ? SWARP_PLAN_STABILIZE_APPROX64
+                                                                    : SWARP_PLAN_STABILIZE_NONE;
+    double grow = e->stab == SWARP_PLAN_STABILIZE_APPROX64 ? SW_STABLE_FACTOR : 1.0;
+    double r_x = in->res_ix / (double)r * grow, r_y = in->res_iy / (double)r * grow;
+    e->mx = e->mz = 0.0;
+    for (uint32_t i = 0; i < K; ++i) {
+        double c0 = e->splits[i], c1 = e->splits[i + 1];
+        if (!(c1 > c0)) return;
+        sw_split_geo g = sw_geo(in->gamma_f, in->theta, c0, c1);
+        double n_l;
+        if (swarp_status_is_error(sw_warp_param(c->warp, &g, in->gamma_f, in->theta, c0, c1, &n_l)))
+            return;
+        e->n_prime[i] = n_l;
+        sw_split_error(&g, in->theta, c0, c1, n_l, r_x, r_y, &e->smx[i], &e->smz[i]);
+        if (!sw_finite(e->smx[i]) || !sw_finite(e->smz[i])) return;
+        if (e->smx[i] > e->mx) e->mx = e->smx[i];
+        if (e->smz[i] > e->mz) e->mz = e->smz[i];
+    }
+    e->err = e->mx > e->mz ? e->mx : e->mz;
+    e->cost = (double)K * in->pass_ns + (double)(K * flt->blur_per_map) * in->blur_ns;
+    e->ok = 1;
+}
+
+/* ---- lixel planes ---------------------------------------------------------- */
+
+/* Smallest near/far ratio of the depth range in the lixel check's
+ * view-projection (below). */
+#define SW_LIXEL_CHECK_MIN_NEAR_RATIO 0x1p-20
+
+/* The viewer's view-projection (OpenGL clip space, right-handed look-at),
+ * for the lixel stage's own check below.  Its depth row
+ * -(f+n)/(f-n) z - 2fn/(f-n) tends to the w row -z as n/f -> 0: V^-1 loses
+ * log2(f/n) bits, and below n/f ~ eps the two rows are equal or one ulp apart
+ * by the rounding of (f+n)/(f-n), V singular or not by the caller's rounding
+ * mode (fenv swarp_plan 240000 cases 198218, 201223: near 1e-31, far 2e5, a
+ * lixel map with directed rounding only).  The lixel matrix does not depend
+ * on the depth range: it is made of the rays through the corner pixels
+ * (rows 0, 1, 3 of V, [LIXEL] (2)) and the eye; the depth row enters only
+ * V^-1, through which the lixel stage images the plane for its through-eye
+ * test (|pi'_z| ~ |h| / 2n of an O(1) whole, h the eye's distance to the
+ * plane, which sw_plane_check already requires above 1e-9 f: >= 5e-4 at
+ * n = 2^-20 f, far above LX_EYE_EPS) and the view direction (n-free).  So the
+ * check uses n' = max(n, 2^-20 f): exact (a power of two), the same matrix as
+ * before for n/f >= 2^-20, and V^-1 keeps >= 30 bits below. */
+static void sw_view_projection(const sw_pin* in, swarp_mat4* out) {
+    swarp_vec3 f = in->view, s = sw_v3(1.0, 0.0, 0.0), u;
+    (void)sw_normalize(sw_cross(f, in->up), &s); /* checked non-parallel */
+    u = sw_cross(s, f);
+    swarp_mat4 V, P;
+    sw_identity(&V);
+    sw_set(&V, 0, 0, s.x); sw_set(&V, 0, 1, s.y); sw_set(&V, 0, 2, s.z);
+    sw_set(&V, 1, 0, u.x); sw_set(&V, 1, 1, u.y); sw_set(&V, 1, 2, u.z);
+    sw_set(&V, 2, 0, -f.x); sw_set(&V, 2, 1, -f.y); sw_set(&V, 2, 2, -f.z);
+    sw_set(&V, 0, 3, -sw_dot(s, in->eye));
+    sw_set(&V, 1, 3, -sw_dot(u, in->eye));
+    sw_set(&V, 2, 3, sw_dot(f, in->eye));
+    memset(&P, 0, sizeof P);
+    const double fa = in->far, n = fmax(in->near, SW_LIXEL_CHECK_MIN_NEAR_RATIO * fa);
+    const double t = 1.0 / tan(in->theta);
+    sw_set(&P, 0, 0, t / in->aspect);
+    sw_set(&P, 1, 1, t);
+    sw_set(&P, 2, 2, -(fa + n) / (fa - n));
+    sw_set(&P, 2, 3, -2.0 * fa * n / (fa - n));
+    sw_set(&P, 3, 2, -1.0);
+    sw_mul(&P, &V, out);
+}
+
+/* Is the plane lixel-friendly ([LIXEL] §3-§5): seen from its front by the
+ * camera, lit from the same side above 5° elevation, crossing the view
+ * frustum, and accepted by the lixel stage's swarp_lixel_matrix (which
+ * refuses planes through the eye, lights on or parallel to the plane and
+ * planes out of view, and notes a light behind the plane)?  Returns
+ * SWARP_PLAN_PLANE_USED when it is. */
+static uint32_t sw_lixel_accepts(const sw_pin* in, const swarp_plane* pl) {
+    swarp_mat4 M_v, M_l;
+    sw_view_projection(in, &M_v);
+    swarp_light light;
+    memset(&light, 0, sizeof light);
+    if (in->point_light) {
+        light.type = SWARP_LIGHT_POINT;
+        light.position = in->light_pos;
+    } else {
+        light.type = SWARP_LIGHT_DIRECTIONAL;
+        light.direction = sw_scale(in->to_light, -1.0);
+    }
+    swarp_status s = swarp_lixel_matrix(&M_v, (uint32_t)in->res_ix, (uint32_t)in->res_iy, &light, pl,
+                                        NULL, &M_l, NULL);
+    switch (s) {
+    case SWARP_ERR_LIXEL_PLANE_THROUGH_EYE: return SWARP_PLAN_PLANE_CAMERA_ON_PLANE;
+    case SWARP_ERR_LIXEL_LIGHT_ON_PLANE:
+    case SWARP_ERR_LIXEL_LIGHT_PARALLEL_PLANE:
+    case SWARP_INFO_LIXEL_LIGHT_BEHIND_PLANE: return SWARP_PLAN_PLANE_LIGHT_GRAZING;
+    case SWARP_ERR_LIXEL_PLANE_NOT_VISIBLE: return SWARP_PLAN_PLANE_NOT_VISIBLE;
+    default: return swarp_status_is_error(s) ? SWARP_PLAN_PLANE_LIXEL_REFUSED : SWARP_PLAN_PLANE_USED;
+    }
+}
+
+static uint32_t sw_plane_check(const sw_pin* in, const swarp_plane* pl) {
+    swarp_vec3 nrm = sw_v3(pl->a, pl->b, pl->c);
+    double len = sw_len(nrm);
+    nrm = sw_scale(nrm, 1.0 / len);
+    double d = pl->d / len;
+    double h = sw_dot(nrm, in->eye) + d;
+    /* the camera on the plane (within 1e-9 of the view range): no front side */
+    if (fabs(h) <= 1e-9 * in->far) return SWARP_PLAN_PLANE_CAMERA_ON_PLANE;
+    if (h < 0.0) {
+        nrm = sw_scale(nrm, -1.0);
+        d = -d;
+    }
+    if (in->point_light) {
+        double hl = sw_dot(nrm, in->light_pos) + d;
+        if (!(hl > 0.0)) return SWARP_PLAN_PLANE_LIGHT_GRAZING;
+    } else if (!(sw_dot(nrm, in->to_light) > SW_LIXEL_MIN_ELEVATION_SIN)) {
+        return SWARP_PLAN_PLANE_LIGHT_GRAZING;
+    }
+    /* frustum corners: some must lie behind the plane */
+    swarp_vec3 right = sw_v3(1.0, 0.0, 0.0);
+    (void)sw_normalize(sw_cross(in->view, in->up), &right); /* checked non-parallel */
+    swarp_vec3 up = sw_cross(right, in->view);
+    double ty = tan(in->theta), tx = ty * in->aspect;
+    double ds[2] = {in->near, in->far};
+    for (int k = 0; k < 8; ++k) {
+        double z = ds[k >> 2];
+        swarp_vec3 p = sw_add(in->eye, sw_scale(in->view, z));
+        p = sw_add(p, sw_scale(right, ((k & 1) ? 1.0 : -1.0) * z * tx));
+        p = sw_add(p, sw_scale(up, ((k & 2) ? 1.0 : -1.0) * z * ty));
+        if (sw_dot(nrm, p) + d <= 0.0) return sw_lixel_accepts(in, pl);
+    }
+    return SWARP_PLAN_PLANE_NOT_VISIBLE;
+}
+
+/* ---- assembling the plan ---------------------------------------------------- */
+
+static void sw_fill(const sw_pin* in, const sw_filter* flt, const swarp_plan_chain* c,
+                    const sw_eval* e, swarp_plan_result* p) {
+    memset(p, 0, sizeof *p);
+    p->warp = c->warp;
+    p->scheme = e->K == 1 ? SWARP_PLAN_SCHEME_NONE : c->scheme;
+    p->split_count = e->K;
+    p->map_resolution = e->r;
+    p->atlas_tiles = e->tiles;
+    p->stabilize = e->stab;
+    p->gamma = in->gamma;
+    p->near = in->near;
+    p->far = in->far;
+    for (uint32_t i = 0; i <= e->K; ++i) p->splits[i] = e->splits[i];
+    for (uint32_t i = 0; i < e->K; ++i) {
+        p->n_prime[i] = e->n_prime[i];
+        p->split_max_mx[i] = e->smx[i];
+        p->split_max_mz[i] = e->smz[i];
+    }
+    p->max_mx = e->mx;
+    p->max_mz = e->mz;
+    p->max_error = e->err;
+    p->error_area = e->mx * e->mz;
+
+    uint32_t R = 0;
+    /* inverse projection: PSM only, light behind the camera [KOZ] */
+    if (c->warp == SWARP_PLAN_WARP_PSM && in->gamma > 0.5 * SWARP_PI) {
+        p->inverse_projection = 1;
+        R |= SWARP_PLAN_WHY_INVERSE_PROJECTION;
+    } else {
+        R |= SWARP_PLAN_WHY_NO_INVERSE;
+    }
+    R |= in->moves ? SWARP_PLAN_WHY_STABILIZE_MOVING : SWARP_PLAN_WHY_NO_STABILIZE_STATIC;
+    if (c->warp == SWARP_PLAN_WARP_UNIFORM)
+        R |= in->moves ? SWARP_PLAN_WHY_NO_WARP_MOVING : SWARP_PLAN_WHY_NO_WARP_NO_GAIN;
+    else
+        R |= SWARP_PLAN_WHY_WARP_LOWERS_ERROR;
+    if (!in->allow_clamp) {
+        R |= SWARP_PLAN_WHY_NO_CLAMP_DISALLOWED;
+    } else if (c->warp != SWARP_PLAN_WARP_UNIFORM) {
+        R |= SWARP_PLAN_WHY_NO_CLAMP_WARPED;
+    } else {
+        p->depth_clamp = 1;
+        R |= SWARP_PLAN_WHY_DEPTH_CLAMP;
+    }
+    p->filter = flt->kind;
+    p->filter_layers = flt->layers;
+    p->filter_width = flt->width;
+    p->filter_exponent_pos = flt->c_pos;
+    p->filter_exponent_neg = flt->c_neg;
+    R |= in->soft ? SWARP_PLAN_WHY_FILTER_SOFT : SWARP_PLAN_WHY_NO_FILTER_HARD;
+    if (e->r < in->map_res) R |= SWARP_PLAN_WHY_ATLAS_SHRINK;
+    if (in->near_far_adjusted) R |= SWARP_PLAN_WHY_NEAR_FAR_ADJUSTED;
+    if (in->point_light) R |= SWARP_PLAN_WHY_POINT_AS_DIRECTIONAL;
+
+    p->shadow_passes = e->K;
+    p->blur_passes = e->K * flt->blur_per_map;
+    p->texels = (double)e->K * (double)e->r * (double)e->r;
+    p->cost_ns = e->cost;
+    p->meets_budget = e->err <= in->max_error &&
+                      (in->time_budget <= 0.0 || e->cost <= in->time_budget);
+
+    /* lixel maps with the passes (and time) left over */
+    p->plane_count = in->plane_count;
+    if (in->plane_count == 0) R |= SWARP_PLAN_WHY_NO_LIXEL_NONE;
+    double lixel_cost = in->pass_ns + (double)flt->blur_per_map * in->blur_ns;
+    for (uint32_t i = 0; i < in->plane_count; ++i) {
+        uint32_t why = sw_plane_check(in, &in->planes[i]);
+        if (why == SWARP_PLAN_PLANE_USED) {
+            int pass_ok = p->shadow_passes < in->max_passes;
+            int time_ok = in->time_budget <= 0.0 || p->cost_ns + lixel_cost <= in->time_budget;
+            if (!pass_ok || !time_ok) why = SWARP_PLAN_PLANE_NO_PASS_LEFT;
+        }
+        p->plane_reason[i] = why;
+        if (why == SWARP_PLAN_PLANE_USED) {
+            p->lixel_planes[p->lixel_count++] = i;
+            p->shadow_passes += 1;
+            p->blur_passes += flt->blur_per_map;
+            p->texels += (double)in->map_res * (double)in->map_res;
+            p->cost_ns += lixel_cost;
+            R |= SWARP_PLAN_WHY_LIXEL_PLANE;
+        } else {
+            R |= SWARP_PLAN_WHY_NO_LIXEL_SKIPPED;
+        }
+    }
+    if (p->lixel_count) {
+        /* the light image of the plane is affine to the screen [LIXEL] (10):
+         * one texel per max(screen)/map pixels along either axis */
+        double big = in->res_ix > in->res_iy ? in->res_ix : in->res_iy;
+        p->lixel_error = big / (double)in->map_res;
+    }
+    p->reasons = R;
+}
+
+static int sw_better_error(const sw_eval* a, const sw_eval* b) {
+    /* a strictly more accurate than b (beyond the tie tolerance) */
+    return a->err < b->err * (1.0 - SW_ERR_TIE_REL);
+}
+
+SWARP_API swarp_status swarp_plan(const swarp_scene_needs* needs, const swarp_budget* budget,
+                                  struct swarp_plan* out_plan) {
+    if (!out_plan) return SWARP_ERR_NULL_POINTER;
+    sw_pin in;
+    swarp_status s = sw_resolve(needs, budget, &in);
+    if (s != SWARP_OK) return s;
+    sw_filter flt = sw_choose_filter(&in);
+
+    sw_eval best, fallback, cur;
+    swarp_plan_chain best_c, fb_c;
+    memset(&best_c, 0, sizeof best_c);
+    memset(&fb_c, 0, sizeof fb_c);
+    int have_best = 0, have_fb = 0, time_limited = 0, pass_limited = 0;
+    uint32_t evaluated = 0;
+    for (uint32_t i = 0; i < SW_CANDIDATES; ++i) {
+        swarp_plan_chain c = sw_candidate(i);
+        /* candidates come in order of K and the cost grows strictly with K
+         * (pass cost > 0): once a chain meets the budget, no later K can be
+         * cheaper, so the search stops there (the usual case stays cheap) */
+        if (have_best && c.split_count > best.K) break;
+        /* a moving camera needs stabilisation, which warps do not admit
+         * [RHS] §3.5 */
+        if (in.moves && c.warp != SWARP_PLAN_WARP_UNIFORM) continue;
+        sw_evaluate(&in, &flt, &c, &cur);
+        ++evaluated;
+        if (!cur.ok) continue;
+        int err_ok = cur.err <= in.max_error;
+        if (c.split_count > in.max_passes) {
+            if (err_ok) pass_limited = 1;
+            continue;
+        }
+        int time_ok = in.time_budget <= 0.0 || cur.cost <= in.time_budget;
+        if (err_ok && !time_ok) time_limited = 1;
+        /* most accurate within the pass limit: lower error, then cheaper,
+         * then earlier */
+        if (!have_fb || sw_better_error(&cur, &fallback) ||
+            (!sw_better_error(&fallback, &cur) && cur.cost < fallback.cost)) {
+            fallback = cur;
+            fb_c = c;
+            have_fb = 1;
+        }
+        if (err_ok && time_ok) {
+            /* cheapest, then more accurate, then earlier */
+            if (!have_best || cur.cost < best.cost ||
+                (cur.cost == best.cost && sw_better_error(&cur, &best))) {
+                best = cur;
+                best_c = c;
+                have_best = 1;
+            }
+        }
+    }
+    if (!have_fb) return SWARP_ERR_DEGENERATE; /* no candidate computable: not expected */
+
+    swarp_plan_result p;
+    swarp_status st;
+    if (have_best) {
+        sw_fill(&in, &flt, &best_c, &best, &p);
+        p.reasons |= best.K == 1 ? SWARP_PLAN_WHY_ONE_MAP_MEETS : SWARP_PLAN_WHY_SPLITS_NEEDED;
+        if (time_limited) p.reasons |= SWARP_PLAN_WHY_TIME_LIMITED;
+        st = in.point_light ? SWARP_INFO_PLAN_POINT_LIGHT : SWARP_OK;
+    } else {
+        sw_fill(&in, &flt, &fb_c, &fallback, &p);
+        p.meets_budget = 0;
+        p.reasons |= SWARP_PLAN_WHY_BUDGET_UNMET;
+        if (time_limited) p.reasons |= SWARP_PLAN_WHY_TIME_LIMITED;
+        if (pass_limited) p.reasons |= SWARP_PLAN_WHY_PASS_LIMITED;
+        st = SWARP_INFO_PLAN_BUDGET_UNMET;
+    }
+    p.candidates = evaluated;
+    *out_plan = p;
+    return st;
+}
+
+SWARP_API swarp_status swarp_plan_evaluate(const swarp_scene_needs* needs,
+                                           const swarp_budget* budget,
+                                           const swarp_plan_chain* chain,
+                                           struct swarp_plan* out_plan) {
+    if (!out_plan || !chain) return SWARP_ERR_NULL_POINTER;
+    if (!sw_reserved_zero(chain->_reserved, 4)) return SWARP_ERR_RESERVED_NONZERO;
+    swarp_plan_chain c = *chain;
+    if (c.warp == SWARP_PLAN_WARP_DEFAULT) c.warp = SWARP_PLAN_WARP_UNIFORM;
+    if ((uint32_t)c.warp > (uint32_t)SWARP_PLAN_WARP_PSM || (uint32_t)c.scheme > (uint32_t)SWARP_PLAN_SCHEME_LOG ||
+        (uint32_t)c.stabilize > (uint32_t)SWARP_PLAN_STABILIZE_APPROX64)
+        return SWARP_ERR_UNKNOWN_ENUM;
+    if (c.split_count == 0) c.split_count = 1;
+    if (c.scheme == SWARP_PLAN_SCHEME_DEFAULT) c.scheme = SWARP_PLAN_SCHEME_NONE;
+    if (c.split_count > SWARP_PLAN_MAX_SPLITS ||
+        (c.split_count > 1) != (c.scheme != SWARP_PLAN_SCHEME_NONE))
+        return SWARP_ERR_SPLIT_COUNT;
+    sw_pin in;
+    swarp_status s = sw_resolve(needs, budget, &in);
+    if (s != SWARP_OK) return s;
+    sw_filter flt = sw_choose_filter(&in);
+    sw_eval e;
+    sw_evaluate(&in, &flt, &c, &e);
+    if (!e.ok) return SWARP_ERR_DEGENERATE;
+    swarp_plan_result p;
+    sw_fill(&in, &flt, &c, &e, &p);
+    /* the warp was not chosen, so no reason about it is claimed */
+    p.reasons &= ~(SWARP_PLAN_WHY_WARP_LOWERS_ERROR | SWARP_PLAN_WHY_NO_WARP_NO_GAIN |
+                   SWARP_PLAN_WHY_NO_WARP_MOVING);
+    p.reasons |= SWARP_PLAN_WHY_FORCED;
+    p.candidates = 1;
+    *out_plan = p;
+    return in.point_light ? SWARP_INFO_PLAN_POINT_LIGHT : SWARP_OK;
+}
+
+/* ---- names and text --------------------------------------------------------- */
+
+SWARP_API const char* swarp_plan_warp_name(swarp_plan_warp w) {
+    switch (w) {
+    case SWARP_PLAN_WARP_DEFAULT:
+    case SWARP_PLAN_WARP_UNIFORM: return "uniform";
+    case SWARP_PLAN_WARP_LISPSM_NOPT: return "lispsm-nopt";
+    case SWARP_PLAN_WARP_LISPSM_NREPAR: return "lispsm-nrepar";
+    case SWARP_PLAN_WARP_LISPSM_GMNPR: return "lispsm-gmnpr";
+    case SWARP_PLAN_WARP_LISPSM_PSEUDO: return "lispsm-pseudo";
+    case SWARP_PLAN_WARP_PSM: return "psm";
+    default: return "?";
+    }
+}
+
+SWARP_API const char* swarp_plan_scheme_name(swarp_plan_scheme s) {
+    switch (s) {
+    case SWARP_PLAN_SCHEME_DEFAULT:
+    case SWARP_PLAN_SCHEME_NONE: return "none";
+    case SWARP_PLAN_SCHEME_PRACTICAL: return "pssm-practical";
+    case SWARP_PLAN_SCHEME_LOG: return "pssm-log";
+    default: return "?";
+    }
+}
+
+SWARP_API const char* swarp_plan_filter_name(swarp_plan_filter f) {
+    switch (f) {
+    case SWARP_PLAN_FILTER_DEFAULT:
+    case SWARP_PLAN_FILTER_NONE: return "none";
+    case SWARP_PLAN_FILTER_PCF: return "pcf";
+    case SWARP_PLAN_FILTER_VSM: return "vsm";
+    case SWARP_PLAN_FILTER_MSM: return "msm";
+    case SWARP_PLAN_FILTER_EVSM: return "evsm";
+    case SWARP_PLAN_FILTER_LVSM: return "lvsm";
+    default: return "?";
+    }
+}
+
+/* Text builder: counts always, writes only when asked (two runs: count, then
+ * write, so a too-small buffer stays untouched). */
+typedef struct sw_text {
+    char* out;
+    size_t n;
+    int write;
+} sw_text;
+
+static void sw_puts(sw_text* t, const char* s) {
+    for (; *s; ++s) {
+        if (t->write) t->out[t->n] = *s;
+        ++t->n;
+    }
+}
+
+static void sw_putu(sw_text* t, uint64_t v) {
+    char buf[24];
+    int k = 0;
+    do {
+        buf[k++] = (char)('0' + v % 10);
+        v /= 10;
+    } while (v);
+    char s[24];
+    for (int i = 0; i < k; ++i) s[i] = buf[k - 1 - i];
+    s[k] = 0;
+    sw_puts(t, s);
+}
+
+/* Exact decimal rounding for sw_putd.  The digits must not depend on the
+ * caller's rounding mode (issue 9, fenv test): log10, pow, a division and a
+ * product rounded upward or downward move a value across a decimal rounding
+ * boundary (0.5325 -> "0.532" or "0.533").  The floating-point path below
+ * only estimates; every decision is an exact comparison of the double v =
+ * M 2^E with (num2 / 2) 10^k in integers, M 2^(E+1) 10^-k vs num2 10^k with
+ * the powers of two cancelled: at most ~830 bits for any double. */
+#define SW_BIG_WORDS 40
+typedef struct sw_big {
+    uint32_t w[SW_BIG_WORDS]; /* little-endian 32-bit words */
+    int n;                    /* words in use (the rest are zero) */
+} sw_big;
+
+static void sw_big_set(sw_big* b, uint64_t v) {
+    b->w[0] = (uint32_t)v;
+    b->w[1] = (uint32_t)(v >> 32);
+    b->n = 2;
+}
+static void sw_big_mul_small(sw_big* b, uint32_t m) {
+    uint64_t carry = 0;
+    for (int i = 0; i < b->n; ++i) {
+        uint64_t x = (uint64_t)b->w[i] * m + carry;
+        b->w[i] = (uint32_t)x;
+        carry = x >> 32;
+    }
+    if (carry) b->w[b->n++] = (uint32_t)carry; /* n stays below SW_BIG_WORDS: ~830 bits at most */
+}
+static void sw_big_shl(sw_big* b, int bits) {
+    const int words = bits / 32, r = bits % 32;
+    const int n = b->n + words + 1;
+    for (int i = n - 1; i >= 0; --i) {
+        uint64_t hi = (i - words >= 0 && i - words < b->n) ? b->w[i - words] : 0;
+        uint64_t lo = (r && i - words - 1 >= 0 && i - words - 1 < b->n) ? b->w[i - words - 1] : 0;
+        b->w[i] = (uint32_t)((hi << r) | (r ? lo >> (32 - r) : 0));
+    }
+    b->n = n;
+}
+static int sw_big_cmp(const sw_big* a, const sw_big* b) {
+    const int n = a->n > b->n ? a->n : b->n;
+    for (int i = n - 1; i >= 0; --i) {
+        uint32_t x = i < a->n ? a->w[i] : 0, y = i < b->n ? b->w[i] : 0;
+        if (x != y) return x < y ? -1 : 1;
+    }
+    return 0;
+}
+static void sw_big_mul_pow5(sw_big* b, int n) {
+    for (; n >= 13; n -= 13) sw_big_mul_small(b, 1220703125u); /* 5^13 */
+    uint32_t p = 1;
+    for (; n > 0; --n) p *= 5;
+    sw_big_mul_small(b, p);
+}
+
+/* v = M 2^E for finite v > 0, from the bits: no floating-point operation,
+ * so neither the rounding mode nor DAZ (subnormal inputs read as 0) enters. */
+static uint64_t sw_mantissa(double v, int* E) {
+    uint64_t b;
+    memcpy(&b, &v, sizeof b);
+    const int ex = (int)((b >> 52) & 0x7FF);
+    const uint64_t frac = b & ((1ull << 52) - 1);
+    if (ex == 0) {
+        *E = -1074;
+        return frac;
+    }
+    *E = ex - 1075;
+    return frac | (1ull << 52);
+}
+
+/* sign of v - (num2 / 2) 10^k, exactly; v > 0 finite, |k| <= 340 */
+static int sw_cmp_decimal(double v, uint64_t num2, int k) {
+    int E;
+    uint64_t M = sw_mantissa(v, &E); /* v = M 2^E */
+    sw_big L, R;
+    sw_big_set(&L, M);
+    sw_big_set(&R, num2);
+    int l2 = E + 1, r2 = 0; /* 2 v = M 2^(E+1) */
+    if (k < 0) {
+        sw_big_mul_pow5(&L, -k);
+        l2 -= k;
+    } else {
+        sw_big_mul_pow5(&R, k);
+        r2 += k;
+    }
+    if (l2 > r2) sw_big_shl(&L, l2 - r2);
+    else sw_big_shl(&R, r2 - l2);
+    return sw_big_cmp(&L, &R);
+}
+
+/* A double with 3 significant digits, locale-independent ("0.532", "12.3",
+ * "4.19e+06", "inf"); rounding half away from zero, decided exactly (the
+ * text is the same in every rounding mode). */
+static void sw_putd(sw_text* t, double v) {
+    if (v != v) { sw_puts(t, "nan"); return; }
+    if (v < 0.0) { sw_puts(t, "-"); v = -v; }
+    if (v == INFINITY) { sw_puts(t, "inf"); return; }
+    if (v == 0.0) { sw_puts(t, "0"); return; }
+    /* decimal exponent: an integer estimate from the binary one (floor(e2
+     * log10 2) within 1, 1233/4096 ~ log10 2), then exact: 10^e10 <= v <
+     * 10^(e10+1).  No floating-point estimate: under DAZ log10 of a
+     * subnormal is -inf. */
+    int E;
+    uint64_t M = sw_mantissa(v, &E);
+    int e2 = E;
+    for (uint64_t m = M; m > 1; m >>= 1) ++e2; /* floor(log2 v) */
+    int e10 = (e2 * 1233) >> 12; /* arithmetic shift: floor */
+    if (M == 0) { sw_puts(t, "0"); return; } /* a subnormal read as 0 (DAZ) */
+    while (sw_cmp_decimal(v, 2, e10) < 0) --e10;
+    while (sw_cmp_decimal(v, 2, e10 + 1) >= 0) ++e10;
+    int sci, k;
+    uint64_t q;
+    for (;;) {
+        sci = e10 >= 7 || e10 < -3;
+        /* the rounding unit 10^k: 3 significant digits, whole numbers at least */
+        k = sci ? e10 - 2 : (e10 - 2 < 0 ? e10 - 2 : 0);
+        /* q: (q - 1/2) 10^k <= v < (q + 1/2) 10^k.  A floating-point
+         * estimate (right or off by one in every mode) checked by two exact
+         * comparisons; bisection on the exact comparison when the estimate
+         * is not usable (DAZ, a subnormal v: q <= 10^3 in scientific form,
+         * <= 10^7 in fixed form). */
+        const uint64_t q_max = sci ? 1000 : 10000000;
+        const double est = k >= 0 ? v / pow(10.0, k) : v * pow(10.0, -k);
+        q = (est >= 1.0 && est < (double)q_max) ? (uint64_t)llround(est) : 0;
+        if (!(q >= 1 && sw_cmp_decimal(v, 2 * q - 1, k) >= 0 && sw_cmp_decimal(v, 2 * q + 1, k) < 0)) {
+            uint64_t lo = 0, hi = q_max; /* invariant: q in [lo, hi] */
+            while (lo < hi) {
+                uint64_t mid = lo + (hi - lo + 1) / 2;
+                if (sw_cmp_decimal(v, 2 * mid - 1, k) >= 0)
+                    lo = mid;
+                else
+                    hi = mid - 1;
+            }
+            q = lo;
+        }
+        /* rounding carried into the next decade (99.96 -> 100): format as
+         * that decade, so 99.99999999999999 and 100 give the same "100" */
+        uint64_t next = 1;
+        for (int i = k; i <= e10; ++i) next *= 10;
+        if (q < next) break;
+        ++e10;
+    }
+    if (sci) {
+        const int ex = e10;
+        sw_putu(t, q / 100);
+        sw_puts(t, ".");
+        sw_putu(t, (q / 10) % 10);
+        sw_putu(t, q % 10);
+        sw_puts(t, ex < 0 ? "e-" : "e+");
+        int ae = ex < 0 ? -ex : ex;
+        if (ae < 10) sw_puts(t, "0");
+        sw_putu(t, (uint64_t)ae);
+        return;
+    }
+    int dec = -k;
+    uint64_t scale = 1;
+    for (int i = 0; i < dec; ++i) scale *= 10;
+    sw_putu(t, q / scale);
+    if (dec > 0) {
+        sw_puts(t, ".");
+        uint64_t frac = q % scale;
+        for (uint64_t d = scale / 10; d > 0; d /= 10) sw_putu(t, (frac / d) % 10);
+    }
+}
+
+static const struct { uint32_t bit; const char* text; } sw_why_text[] = {
+    {SWARP_PLAN_WHY_ONE_MAP_MEETS, "one map meets the error budget: no splits"},
+    {SWARP_PLAN_WHY_SPLITS_NEEDED, "no cheaper chain meets the error budget: this is the fewest splits that does"},
+    {SWARP_PLAN_WHY_WARP_LOWERS_ERROR, "the warp lowers the predicted error at no extra pass"},
+    {SWARP_PLAN_WHY_NO_WARP_NO_GAIN, "no warp: none lowers the predicted error here (duelling frusta fade warps to uniform)"},
+    {SWARP_PLAN_WHY_NO_WARP_MOVING, "no warp: the camera moves and warped maps cannot be stabilised [RHS] 3.5"},
+    {SWARP_PLAN_WHY_STABILIZE_MOVING, "stabilised (64 scale levels + texel snapping) because the camera moves [RHS] 3.5"},
+    {SWARP_PLAN_WHY_NO_STABILIZE_STATIC, "no stabilisation: the camera is static"},
+    {SWARP_PLAN_WHY_INVERSE_PROJECTION, "inverse projection: PSM with the light behind the camera [KOZ]"},
+    {SWARP_PLAN_WHY_NO_INVERSE, "no inverse projection: not PSM, or the light is in front of the camera"},
+    {SWARP_PLAN_WHY_FILTER_SOFT, "filter: soft shadows requested (kind by kernel width and light-bleeding risk [VSM] 3.4)"},
+    {SWARP_PLAN_WHY_NO_FILTER_HARD, "no filter: hard shadows requested"},
+    {SWARP_PLAN_WHY_LIXEL_PLANE, "lixel map for each declared lixel-friendly plane [LIXEL]"},
+    {SWARP_PLAN_WHY_NO_LIXEL_NONE, "no lixel map: no plane of interest declared"},
+    {SWARP_PLAN_WHY_NO_LIXEL_SKIPPED, "a declared plane got no lixel map (see below)"},
+    {SWARP_PLAN_WHY_DEPTH_CLAMP, "casters clamped to the light's near plane (allowed, unwarped chain)"},
+    {SWARP_PLAN_WHY_NO_CLAMP_DISALLOWED, "no depth clamping: not allowed by the scene"},
+    {SWARP_PLAN_WHY_NO_CLAMP_WARPED, "no depth clamping: it breaks warped maps [RHS] 3.1.2"},
+    {SWARP_PLAN_WHY_BUDGET_UNMET, "NOTHING MEETS THE BUDGET: this is the most accurate chain within the pass limit"},
+    {SWARP_PLAN_WHY_TIME_LIMITED, "the time budget excluded chains that met the error budget"},
+    {SWARP_PLAN_WHY_ATLAS_SHRINK, "the atlas limit shrinks each split's map"},
+    {SWARP_PLAN_WHY_NEAR_FAR_ADJUSTED, "near/far fitted to the scene box [RHS] 3.3.1"},
+    {SWARP_PLAN_WHY_POINT_AS_DIRECTIONAL, "point light planned as directional toward the view frustum's centre"},
+    {SWARP_PLAN_WHY_PASS_LIMITED, "more passes than the limit would have met the error budget"},
+    {SWARP_PLAN_WHY_FORCED, "chain given by the caller (evaluated, not chosen)"},
+};
+
+static const char* sw_plane_text(uint32_t why) {
+    switch (why) {
+    case SWARP_PLAN_PLANE_USED: return "lixel map";
+    case SWARP_PLAN_PLANE_CAMERA_ON_PLANE: return "left out: the camera lies on the plane";
+    case SWARP_PLAN_PLANE_LIGHT_GRAZING: return "left out: lit from the other side or below 5 degrees";
+    case SWARP_PLAN_PLANE_NOT_VISIBLE: return "left out: the plane misses the view frustum";
+    case SWARP_PLAN_PLANE_NO_PASS_LEFT: return "left out: no pass (or time) left";
+    case SWARP_PLAN_PLANE_LIXEL_REFUSED: return "left out: swarp_lixel_matrix refused the configuration";
+    default: return "?";
+    }
+}
+
+/* "<pre>a<mid>b": the explain text's number pairs ("[n, f", "m_x .., m_z ..",
+ * "c+ .., c- .."). */
+static void sw_putdd(sw_text* t, const char* pre, double a, const char* mid, double b) {
+    sw_puts(t, pre);
+    sw_putd(t, a);
+    sw_puts(t, mid);
+    sw_putd(t, b);
+}
+
+static void sw_explain(const swarp_plan_result* p, sw_text* t) {
+    sw_puts(t, "chain: ");
+    sw_puts(t, swarp_plan_warp_name(p->warp));
+    if (p->split_count > 1) {
+        sw_puts(t, ", ");
+        sw_putu(t, p->split_count);
+        sw_puts(t, " splits (");
+        sw_puts(t, swarp_plan_scheme_name(p->scheme));
+        sw_puts(t, ")");
+    } else {
+        sw_puts(t, ", one map");
+    }
+    sw_puts(t, ", ");
+    sw_putu(t, p->map_resolution);
+    sw_puts(t, "^2 texels per map");
+    if (p->stabilize == SWARP_PLAN_STABILIZE_APPROX64) sw_puts(t, ", stabilised");
+    if (p->inverse_projection) sw_puts(t, ", inverse projection");
+    if (p->depth_clamp) sw_puts(t, ", depth clamp");
+    sw_puts(t, ", filter ");
+    sw_puts(t, swarp_plan_filter_name(p->filter));
+    if (p->filter != SWARP_PLAN_FILTER_NONE && p->filter != SWARP_PLAN_FILTER_DEFAULT) {
+        sw_puts(t, " (width ");
+        sw_putd(t, p->filter_width);
+        sw_puts(t, " texels");
+        if (p->filter_layers) { sw_puts(t, ", "); sw_putu(t, p->filter_layers); sw_puts(t, " layers"); }
+        if (p->filter_exponent_pos > 0.0) {
+            sw_putdd(t, ", c+ ", p->filter_exponent_pos, ", c- ", p->filter_exponent_neg);
+        }
+        sw_puts(t, ")");
+    }
+    sw_puts(t, "\nlight/view angle gamma ");
+    sw_putd(t, p->gamma * 180.0 / SWARP_PI);
+    sw_putdd(t, " deg, depth range [", p->near, ", ", p->far);
+    sw_putdd(t, "]\npredicted max m_x ", p->max_mx, ", m_z ", p->max_mz);
+    sw_puts(t, " (pixels per texel), area ");
+    sw_putd(t, p->error_area);
+    sw_puts(t, p->meets_budget ? ": meets the budget\n" : ": does NOT meet the budget\n");
+    for (uint32_t i = 0; i < p->split_count && p->split_count > 1; ++i) {
+        sw_puts(t, "  split ");
+        sw_putu(t, i);
+        sw_putdd(t, " [", p->splits[i], ", ", p->splits[i + 1]);
+        sw_puts(t, "]: n' ");
+        sw_putd(t, p->n_prime[i]);
+        sw_putdd(t, ", m_x ", p->split_max_mx[i], ", m_z ", p->split_max_mz[i]);
+        sw_puts(t, "\n");
+    }
+    sw_puts(t, "cost: ");
+    sw_putu(t, p->shadow_passes);
+    sw_puts(t, " shadow passes, ");
+    sw_putu(t, p->blur_passes);
+    sw_puts(t, " blur passes, ");
+    sw_putd(t, p->texels);
+    sw_puts(t, " texels, ");
+    sw_putd(t, p->cost_ns * 1e-6);
+    sw_puts(t, " ms predicted\n");
+    for (size_t i = 0; i < sizeof sw_why_text / sizeof sw_why_text[0]; ++i)
+        if (p->reasons & sw_why_text[i].bit) {
+            sw_puts(t, "why: ");
+            sw_puts(t, sw_why_text[i].text);
+            sw_puts(t, "\n");
+        }
+    for (uint32_t i = 0; i < SWARP_PLAN_MAX_PLANES; ++i) {
+        if (i >= p->plane_count) break;
+        int used = 0;
+        for (uint32_t k = 0; k < p->lixel_count; ++k)
+            if (p->lixel_planes[k] == i) used = 1;
+        sw_puts(t, "plane ");
+        sw_putu(t, i);
+        sw_puts(t, ": ");
+        sw_puts(t, sw_plane_text(p->plane_reason[i]));
+        if (used) {
+            sw_puts(t, ", ");
+            sw_putd(t, p->lixel_error);
+            sw_puts(t, " pixels per texel on the plane");
+        }
+        sw_puts(t, "\n");
+    }
+}
+
+SWARP_API swarp_status swarp_plan_explain(const struct swarp_plan* plan, char* out, size_t capacity,
+                                          size_t* out_count) {
+    if (!plan || !out_count || (!out && capacity > 0)) return SWARP_ERR_NULL_POINTER;
+    if ((uint32_t)plan->warp > (uint32_t)SWARP_PLAN_WARP_PSM ||
+        (uint32_t)plan->scheme > (uint32_t)SWARP_PLAN_SCHEME_LOG ||
+        (uint32_t)plan->filter > (uint32_t)SWARP_PLAN_FILTER_LVSM ||
+        (uint32_t)plan->stabilize > (uint32_t)SWARP_PLAN_STABILIZE_APPROX64 ||
+        plan->split_count > SWARP_PLAN_MAX_SPLITS || plan->lixel_count > SWARP_PLAN_MAX_PLANES ||
+        plan->plane_count > SWARP_PLAN_MAX_PLANES)
+        return SWARP_ERR_UNKNOWN_ENUM;
+    sw_text t = {NULL, 0, 0};
+    sw_explain(plan, &t);
+    size_t need = t.n + 1;
+    if (capacity < need) {
+        *out_count = need;
+        return SWARP_ERR_CAPACITY;
+    }
+    sw_text w = {out, 0, 1};
+    sw_explain(plan, &w);
+    out[w.n] = '\0';
+    *out_count = need;
+    return SWARP_OK;
+}
+
+/* The ABI of the planner's structs (plain doubles and 32-bit fields, no
+ * padding surprises across compilers and bindings). */
+_Static_assert(sizeof(swarp_plan_chain) == 32, "swarp_plan_chain ABI");
+_Static_assert(sizeof(swarp_budget) == 64, "swarp_budget ABI");
+_Static_assert(sizeof(swarp_scene_needs) == 432, "swarp_scene_needs ABI");
+_Static_assert(sizeof(struct swarp_plan) == 744, "swarp_plan ABI");
+_Static_assert(offsetof(struct swarp_plan, reasons) == 716, "swarp_plan ABI");
+_Static_assert(offsetof(swarp_scene_needs, planes) == 288, "swarp_scene_needs ABI");
