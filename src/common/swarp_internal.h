@@ -147,4 +147,63 @@ static inline int sw_mat_finite(const swarp_mat4* m) {
 /* Gauss-Jordan with partial pivoting; returns 0 when singular. */
 int sw_invert(const swarp_mat4* a, swarp_mat4* out);
 
+/* ==== input checks (src/common/check.c) =================================
+ * The one set of argument checks and named thresholds of the entry points,
+ * and the defaults they resolve ("zero means default").  Each check returns
+ * SWARP_OK or the status the header documents for the first bad field. */
+
+/* up must leave a usable right vector r = dir x up: sin(angle(dir, up)) of
+ * at least 1e-9.  r then carries a relative rounding error of about
+ * eps / 1e-9 = 2e-7 (unit inputs, one cross product), still a direction the
+ * frustum corners, the light-space alignment and the warp can be built on;
+ * closer to parallel the image plane has no defined orientation. */
+#define SW_CAMERA_MIN_UP_SIN 1e-9
+
+/* Defaults of the setup options (swarp_setup, swarp_cascade_setup). */
+#define SW_DEFAULT_MAP_RES 2048u    /* map side in texels; also swarp_budget.map_resolution */
+#define SW_DEFAULT_SCREEN_W 1920u   /* screen in pixels for the error model */
+#define SW_DEFAULT_SCREEN_H 1080u
+/* The planner's screen default (swarp_scene_needs): the resolution of [RHS]'s
+ * measurements, documented apart from the setup's. */
+#define SW_PLAN_DEFAULT_SCREEN_W 1024u
+#define SW_PLAN_DEFAULT_SCREEN_H 768u
+/* Split count and PSSM weight λ: Zhang et al.'s practical scheme with four
+ * splits, [RHS] §3.3.2 (swarp_cascade_splits, swarp_cascade_setup, plan). */
+#define SW_DEFAULT_SPLIT_COUNT 4u
+#define SW_DEFAULT_PSSM_LAMBDA 0.5
+
+static inline swarp_technique sw_resolve_technique(swarp_technique t) {
+    return t == SWARP_TECHNIQUE_DEFAULT ? SWARP_TECHNIQUE_LISPSM : t;
+}
+static inline swarp_depth_range sw_resolve_depth_range(swarp_depth_range d) {
+    return d == SWARP_DEPTH_DEFAULT ? SWARP_DEPTH_NEG_ONE_TO_ONE : d;
+}
+
+swarp_status sw_check_depth_range(swarp_depth_range d);
+/* reserved, non-finite, fovy in (0, pi), aspect > 0, dir and up non-zero,
+ * up not parallel to dir (SW_CAMERA_MIN_UP_SIN); not near/far */
+swarp_status sw_check_camera_shape(const swarp_camera* cam);
+/* finite, 0 < near < far (SWARP_ERR_NON_FINITE, SWARP_ERR_NEAR_FAR) */
+swarp_status sw_check_view_range(double near, double far);
+/* the shape, then the camera's own near/far */
+swarp_status sw_check_camera(const swarp_camera* cam);
+/* reserved, type, then only the fields the type uses */
+swarp_status sw_check_light(const swarp_light* light);
+/* finite, min <= max, at most one zero extent */
+swarp_status sw_check_box(const swarp_aabb* box);
+swarp_status sw_check_setup_options(const swarp_setup_options* o);
+/* *o = *opts (zeroed for NULL), then checked */
+swarp_status sw_resolve_setup_options(const swarp_setup_options* opts, swarp_setup_options* o);
+/* v[0..m] finite (SWARP_ERR_NON_FINITE) and strictly increasing
+ * (SWARP_ERR_NOT_INCREASING): split distances, layer borders */
+swarp_status sw_check_increasing(const double* v, size_t m);
+/* the LiSPSM fields of the setup options as swarp_warp_options */
+swarp_warp_options sw_setup_warp_options(const swarp_setup_options* o);
+/* map width and height with the defaults resolved (height 0: = width) */
+void sw_setup_map_size(const swarp_setup_options* o, uint32_t* width, uint32_t* height);
+/* the error model's configuration of a setup: screen and map with their
+ * defaults, Θ = theta, the view range [near, far] */
+void sw_setup_error_config(const swarp_setup_options* o, double theta, double near, double far,
+                           swarp_error_config* cfg);
+
 #endif

@@ -44,12 +44,8 @@ static inline double sw_half_fovy(double fovy) {
 static inline double sw_max(double a, double b) { return a > b ? a : b; }
 static inline double sw_min(double a, double b) { return a < b ? a : b; }
 
-/* ---- argument checks shared by the geometry entry points ---------------- */
-swarp_status sw_check_camera_shape(const swarp_camera* cam);   /* all but near/far */
-swarp_status sw_check_camera(const swarp_camera* cam);         /* + near/far */
-swarp_status sw_check_light(const swarp_light* light);
-swarp_status sw_check_box(const swarp_aabb* box);               /* + degenerate */
-swarp_status sw_check_depth_range(swarp_depth_range d);
+/* The argument checks (sw_check_camera, sw_check_light, sw_check_box, ...)
+ * are src/common/check.c, declared in common/swarp_internal.h. */
 
 /* Orthonormal camera basis: f (forward), r (right), u (up). */
 void sw_camera_basis(const swarp_camera* cam, swarp_vec3* f, swarp_vec3* r, swarp_vec3* u);

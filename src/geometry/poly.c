@@ -6,66 +6,8 @@
 _Static_assert(sizeof(swarp_polyhedron) == SWARP_POLY_SIZE, "swarp_polyhedron size");
 _Static_assert(SWARP_POLY_MAX_VERTICES <= 255, "face indices are uint8_t");
 
-/* ---- shared argument checks ---------------------------------------------- */
-
-swarp_status sw_check_depth_range(swarp_depth_range d) {
-    if (d != SWARP_DEPTH_DEFAULT && d != SWARP_DEPTH_NEG_ONE_TO_ONE && d != SWARP_DEPTH_ZERO_TO_ONE)
-        return SWARP_ERR_UNKNOWN_ENUM;
-    return SWARP_OK;
-}
-
-swarp_status sw_check_camera_shape(const swarp_camera* cam) {
-    if (!sw_reserved_zero(cam->_reserved, 4)) return SWARP_ERR_RESERVED_NONZERO;
-    if (!sw_finite3(&cam->eye) || !sw_finite3(&cam->dir) || !sw_finite3(&cam->up) ||
-        !sw_finite(cam->fovy) || !sw_finite(cam->aspect))
-        return SWARP_ERR_NON_FINITE;
-    if (!(cam->fovy > 0.0 && cam->fovy < SWARP_PI)) return SWARP_ERR_FOV;
-    if (!(cam->aspect > 0.0)) return SWARP_ERR_OUT_OF_RANGE;
-    swarp_vec3 f, u;
-    if (!sw_gnormalize(cam->dir, &f) || !sw_gnormalize(cam->up, &u)) return SWARP_ERR_ZERO_VECTOR;
-    /* up must leave a usable right vector: sin(angle(dir, up)) >= 1e-9 */
-    if (!(sw_glen(sw_cross(f, u)) >= 1e-9)) return SWARP_ERR_DEGENERATE;
-    return SWARP_OK;
-}
-
-swarp_status sw_check_camera(const swarp_camera* cam) {
-    swarp_status s = sw_check_camera_shape(cam);
-    if (s != SWARP_OK) return s;
-    if (!sw_finite(cam->near) || !sw_finite(cam->far)) return SWARP_ERR_NON_FINITE;
-    if (!(cam->near > 0.0 && cam->far > cam->near)) return SWARP_ERR_NEAR_FAR;
-    return SWARP_OK;
-}
-
-swarp_status sw_check_light(const swarp_light* light) {
-    if (light->_reserved0 != 0 || !sw_reserved_zero(light->_reserved, 4))
-        return SWARP_ERR_RESERVED_NONZERO;
-    swarp_light_type t = light->type;
-    if (t != SWARP_LIGHT_DEFAULT && t != SWARP_LIGHT_DIRECTIONAL && t != SWARP_LIGHT_POINT)
-        return SWARP_ERR_UNKNOWN_ENUM;
-    if (t == SWARP_LIGHT_POINT) {
-        if (!sw_finite3(&light->position) || !sw_finite(light->cone_angle)) return SWARP_ERR_NON_FINITE;
-        if (light->cone_angle != 0.0) {
-            if (!(light->cone_angle > 0.0 && light->cone_angle < 0.5 * SWARP_PI)) return SWARP_ERR_OUT_OF_RANGE;
-            if (!sw_finite3(&light->direction)) return SWARP_ERR_NON_FINITE;
-            swarp_vec3 a;
-            if (!sw_gnormalize(light->direction, &a)) return SWARP_ERR_ZERO_VECTOR;
-        }
-    } else {
-        if (!sw_finite3(&light->direction)) return SWARP_ERR_NON_FINITE;
-        swarp_vec3 a;
-        if (!sw_gnormalize(light->direction, &a)) return SWARP_ERR_ZERO_VECTOR;
-    }
-    return SWARP_OK;
-}
-
-swarp_status sw_check_box(const swarp_aabb* box) {
-    if (!sw_finite3(&box->min) || !sw_finite3(&box->max)) return SWARP_ERR_NON_FINITE;
-    if (!(box->min.x <= box->max.x && box->min.y <= box->max.y && box->min.z <= box->max.z))
-        return SWARP_ERR_BOX_INVERTED;
-    int zero = (box->min.x == box->max.x) + (box->min.y == box->max.y) + (box->min.z == box->max.z);
-    if (zero >= 2) return SWARP_ERR_BOX_DEGENERATE;
-    return SWARP_OK;
-}
+/* ---- the camera's frame ------------------------------------------------------
+ * (the argument checks are src/common/check.c) */
 
 void sw_camera_basis(const swarp_camera* cam, swarp_vec3* f, swarp_vec3* r, swarp_vec3* u) {
     swarp_vec3 ff = {0, 0, -1}, uu, rr = {1, 0, 0};

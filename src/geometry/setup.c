@@ -11,16 +11,14 @@
 
 #include "geometry/geometry_internal.h"
 
-/* min_depth took two of the four reserved words: the size is unchanged */
+/* 12 words of enums and counts, 5 doubles, 2 reserved words: the size of
+ * 4 doubles and a 4-word reserved tail, which the ABI fixes */
 _Static_assert(sizeof(swarp_setup_options) == 12 * 4 + 5 * 8 + 8, "swarp_setup_options size");
 _Static_assert(sizeof(swarp_setup_options) == 12 * 4 + 4 * 8 + 16, "swarp_setup_options size kept");
 _Static_assert(sizeof(swarp_setup_result) == 3 * 128 + 9 * 8 + 8 + 16, "swarp_setup_result size");
 _Static_assert(sizeof(swarp_warp_options) == 8 + 3 * 8 + 16, "swarp_warp_options size");
 _Static_assert(sizeof(swarp_warp_info) == 6 * 8 + 16, "swarp_warp_info size");
 
-#define SW_DEFAULT_MAP 2048u
-#define SW_DEFAULT_SCREEN_W 1920u
-#define SW_DEFAULT_SCREEN_H 1080u
 /* Point lights: points of B nearer to the light than this fraction of the
  * farthest one are cut off by the light's near plane (a perspective map
  * cannot reach its own apex). */
@@ -28,38 +26,6 @@ _Static_assert(sizeof(swarp_warp_info) == 6 * 8 + 16, "swarp_warp_info size");
 /* Point lights: a single perspective map covers half-angles up to
  * atan(1e3) ≈ 89.94°; beyond that the light is inside B. */
 #define SW_LIGHT_MAX_TAN 1e3
-
-static swarp_status sw_check_setup_options(const swarp_setup_options* o) {
-    if (!sw_reserved_zero(o->_reserved, 2) || o->_pad0 != 0 || o->_pad1 != 0) return SWARP_ERR_RESERVED_NONZERO;
-    if (isnan(o->min_depth)) return SWARP_ERR_NON_FINITE;
-    if (o->min_depth < 0.0) return SWARP_ERR_OUT_OF_RANGE; /* also -INFINITY */
-    if ((uint32_t)o->technique > (uint32_t)SWARP_TECHNIQUE_PSM) return SWARP_ERR_UNKNOWN_ENUM;
-    if (sw_check_depth_range(o->depth_range) != SWARP_OK) return SWARP_ERR_UNKNOWN_ENUM;
-    if (o->pancake > 1 || o->psm_slideback > 1) return SWARP_ERR_OUT_OF_RANGE;
-    if (!sw_finite(o->slideback)) return SWARP_ERR_NON_FINITE;
-    if (o->slideback < 0.0) return SWARP_ERR_OUT_OF_RANGE;
-    swarp_warp_options w;
-    memset(&w, 0, sizeof w);
-    w.param = o->param;
-    w.center = o->center;
-    w.n_user = o->n_user;
-    w.pseudo_near = o->pseudo_near;
-    w.pseudo_far = o->pseudo_far;
-    if ((uint32_t)w.param > (uint32_t)SWARP_WARP_PARAM_USER) return SWARP_ERR_UNKNOWN_ENUM;
-    if ((uint32_t)w.center > (uint32_t)SWARP_WARP_CENTER_NEAREST_VERTEX) return SWARP_ERR_UNKNOWN_ENUM;
-    if (o->technique == SWARP_TECHNIQUE_LISPSM || o->technique == SWARP_TECHNIQUE_DEFAULT) {
-        if (w.param == SWARP_WARP_PARAM_USER) {
-            if (isnan(w.n_user)) return SWARP_ERR_NON_FINITE;
-            if (!(w.n_user > 0.0)) return SWARP_ERR_OUT_OF_RANGE;
-        }
-        if (w.param == SWARP_WARP_PARAM_PSEUDO) {
-            if (!sw_finite(w.pseudo_near) || !sw_finite(w.pseudo_far)) return SWARP_ERR_NON_FINITE;
-            if (!(w.pseudo_near >= 0.0 && w.pseudo_far >= 0.0 && w.pseudo_near + w.pseudo_far < 1.0))
-                return SWARP_ERR_OUT_OF_RANGE;
-        }
-    }
-    return SWARP_OK;
-}
 
 /* More important informational statuses win. */
 static swarp_status sw_info_merge(swarp_status a, swarp_status b) {
@@ -86,11 +52,10 @@ static int sw_point_axis(const swarp_light* light, const swarp_vec3* pts, size_t
 
 /* The nearest vertex e of [WS06] (the WS06 warp centre): the vertex of
  * least eye depth.  H is usually cut by the near plane, and then several
- * vertices share that depth exactly: which one is "the" nearest was decided
- * by the rounding of their depths, and the centre (P's lateral position,
- * hence the whole map) jumped between them with the caller's rounding mode
- * (issue 9, fenv test: light_proj 1.04 <-> 1.70 for a flat box seen from
- * its face).  Instead e is the average of the vertices weighted by
+ * vertices share that depth exactly: picking one of them would let the
+ * rounding of their depths decide, and the centre (P's lateral position,
+ * hence the whole map) would jump between them with the caller's rounding
+ * mode.  Instead e is the average of the vertices weighted by
  * max(0, 1 - (z_i - z_min) / (SW_NEAREST_TIE_REL · span)), span = the
  * larger of the points' depth extent and their largest coordinate: exactly
  * the nearest vertex when it is alone (every other vertex deeper by more
@@ -116,9 +81,9 @@ static int sw_nearest_vertex(const swarp_vec3* p, size_t n, swarp_vec3 eye, swar
      * (which exceeds the depth extent of a thin split): the band is 1e-6 of
      * the larger of the two.  The magnitude is the WORLD coordinates' (the
      * caller's world_mag): p is camera-relative, but it was formed as
-     * world - eye and carries eps |world| of noise, not eps |p| (fenv test,
-     * cascade_setup case 8336: a scene at 3e6 with a band of 1.6e-4 moved
-     * e by 4e-6 of the polygon with the rounding mode). */
+     * world - eye and carries eps |world| of noise, not eps |p| (a scene at
+     * 3e6 has noise of 1e-9 in depths that a band of eps |p| would not
+     * cover). */
     double band = SW_NEAREST_TIE_REL * fmax(zmax - zmin, mag);
     swarp_vec3 acc = {0, 0, 0};
     double wsum = 0.0;
@@ -134,7 +99,6 @@ static int sw_nearest_vertex(const swarp_vec3* p, size_t n, swarp_vec3 eye, swar
     return 1;
 }
 
-/* Everything after B: light view, warp, fit, error model. */
 /* r = a b for an affine b (last row 0 0 0 1: a look-at, or A_fit's
  * columns): 12 fewer products than sw_mul and no loop overhead; the same
  * sums in the same order as sw_mul (the dropped terms are exact zeros,
@@ -161,23 +125,17 @@ static void sw_mul_affine_b(const swarp_mat4* a, const swarp_mat4* b, swarp_mat4
 
 /* The map coordinates of B must be resolved by its camera-relative
  * coordinates to this fraction of the map (the map spans 2): 1e-6, the
- * accuracy the hard-case sweep asks of the fit (docs/quality.md).  The
- * bound it is compared with is first order and worst case (every rounding
- * of a coordinate adding up); a 1e-9 rad light on a 1-unit body (the warp
- * axis stretched 1e9 times, test_geometry sweep_large_offset_parallel_light)
- * reaches 5e-7 and maps B inside to the sweep's tolerance.  Refused are
+ * accuracy asked of the fit (docs/quality.md).  The bound it is compared
+ * with is first order and worst case (every rounding of a coordinate adding
+ * up); a 1e-9 rad light on a 1-unit body (the warp axis stretched 1e9
+ * times) reaches 5e-7 and still maps B inside the map to 1e-6.  Refused are
  * bodies whose map is finer than their coordinates relative to the eye:
  * an eye 1e145 from a 40-unit body, a 1e-9 sliver 1e6 away. */
 #define SW_REL_RESOLVE 1e-6
 
-/* Can the world-space matrix (m · T(-eye), applied to p + eye) be evaluated
- * in double at the camera-relative points p?  Its w carries rounding of
- * about eps times the sizes of the terms summed; when that reaches w itself
- * (a map of a body far below the resolution of world coordinates of size
- * |eye|: B a 1e-21 sliver at 25 units, or a 1e-9 rad grazing light
- * stretching a 1e6-offset scene 1e10 times) the map is meaningless in world
- * coordinates.  64 eps of margin. */
-/* The per-point form of the light-view resolution test below (see there) */
+/* The per-point form of the light-view resolution test of sw_world_resolves
+ * (see there): at each point the map coordinates' rounding, eps times the
+ * sizes summed into X, Y and W, against SW_REL_RESOLVE of W. */
 static int sw_light_resolves(const swarp_mat4* proj, const swarp_mat4* L, const swarp_vec3* p, size_t n) {
     for (size_t i = 0; i < n; ++i) {
         const double px = p[i].x, py = p[i].y, pz = p[i].z;
@@ -204,6 +162,13 @@ static int sw_light_resolves(const swarp_mat4* proj, const swarp_mat4* L, const 
     return 1;
 }
 
+/* Can the world-space matrix (m · T(-eye), applied to p + eye) be evaluated
+ * in double at the camera-relative points p?  Its w carries rounding of
+ * about eps times the sizes of the terms summed; when that reaches w itself
+ * (a map of a body far below the resolution of world coordinates of size
+ * |eye|: B a 1e-21 sliver at 25 units, or a 1e-9 rad grazing light
+ * stretching a 1e6-offset scene 1e10 times) the map is meaningless in world
+ * coordinates.  64 eps of margin. */
 static int sw_world_resolves(const swarp_mat4* m, const swarp_mat4* proj, const swarp_mat4* L, const swarp_vec3* p,
                              size_t n, swarp_vec3 eye) {
     const double ax = fabs(eye.x), ay = fabs(eye.y), az = fabs(eye.z);
@@ -225,9 +190,8 @@ static int sw_world_resolves(const swarp_mat4* m, const swarp_mat4* proj, const 
      * eps sum_j |proj_xj - x proj_wj| mag_j / W.  Beyond SW_REL_RESOLVE of
      * the map (half its width is 1) the map is finer than the coordinates
      * resolve B: an eye 1e145 from a 40-unit body (its points all equal
-     * relative to the eye) was "mapped" to x = 1e4, a spot light 2e154
-     * above a 50-unit body to x = -2.1, both with SWARP_OK (issue 9,
-     * hard-case sweep).  First a bound for all points at once (L's rows
+     * relative to the eye) would be "mapped" to x = 1e4, a spot light 2e154
+     * above a 50-unit body to x = -2.1.  First a bound for all points at once (L's rows
      * are unit: mag_j <= |p|_1 + |L_j3|; B maps into |x| <= 1, 2 allowed):
      * it passes for every ordinary scene, and the per-point test (about
      * 15 % of swarp_setup's time) runs only where it does not. */
@@ -255,9 +219,8 @@ static void sw_p0_inverse_after(swarp_mat4* m) {
 /* PSM's matrices (a post-perspective space, maybe the inverse projection:
  * w < 0 on B is fine) get the coarse form of sw_world_resolves' test: B's
  * extent against the rounding of its camera-relative coordinates, eps |p|.
- * An eye at -DBL_MAX from a 1e4 body made light_proj · light_view
- * overflow (inf - inf) though matrix was finite (hard-case sweep,
- * setup_points, PSM). */
+ * Beyond it (an eye at -DBL_MAX from a 1e4 body) light_proj · light_view
+ * overflows (inf - inf) though matrix is finite. */
 static int sw_rel_resolves(const swarp_vec3* p, size_t n) {
     double mag = 0.0, lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
     for (size_t i = 0; i < n; ++i) {
@@ -271,20 +234,257 @@ static int sw_rel_resolves(const swarp_vec3* p, size_t n) {
     return DBL_EPSILON * mag <= SW_REL_RESOLVE * ext;
 }
 
-/* cam, light, B, H: camera-relative (src: sw_rel_camera); eye: the world eye */
+/* ---- the light matrix for the points of B ----------------------------------
+ * cam, light, B, H are camera-relative (sw_rel_camera); eye is the world eye,
+ * which only the world-space resolution test needs. */
+
+/* The light space M (world to the space the warp works in) and its inverse:
+ * M = L for a directional light; M = P0 L for a point light. */
+typedef struct sw_light_space {
+    swarp_mat4 L, P0, M, M_inv;
+    int point; /* P0 is a perspective */
+} sw_light_space;
+
+/* [RHS] §3.2.2 a point light: the view L from the light toward B (the spot
+ * axis or B's centre), and P0 (x, y, z) -> (x/D, y/D, 1/D), D = -z, which
+ * turns it into a directional light travelling toward -z.  Every point must
+ * lie in front of the light within the widest perspective a map can have;
+ * res->light_near/far: the light depth range allowed. */
+static swarp_status sw_point_light_view(const swarp_camera* cam, const swarp_light* light, const swarp_vec3* B,
+                                        size_t nb, const sw_follow* fw, sw_light_space* ls, swarp_setup_result* res,
+                                        swarp_status* info) {
+    swarp_vec3 a = {0, 0, -1};
+    if (!sw_point_axis(light, B, nb, &a)) return SWARP_ERR_LIGHT_INSIDE_BODY;
+    swarp_status s = fw ? sw_follow_light_view(cam, light->position, a, fw, &ls->L)
+                        : sw_light_view(cam, light->position, a, &ls->L);
+    /* a light ~DBL_MAX from the eye: B's angular size is far below
+     * what its coordinates resolve (the documented DEGENERATE) */
+    if (s == SWARP_ERR_OVERFLOW) return SWARP_ERR_DEGENERATE;
+    if (swarp_status_is_error(s)) return s;
+    *info = sw_info_merge(*info, s);
+    double dmax = 0.0, bmag = 0.0;
+    for (size_t i = 0; i < nb; ++i) {
+        swarp_vec4 h = sw_xform_point(&ls->L, B[i]);
+        double D = -h.z;
+        if (D > dmax) dmax = D;
+        bmag = fmax(bmag, fmax(fabs(B[i].x), fmax(fabs(B[i].y), fabs(B[i].z))));
+    }
+    /* and never below the rounding of D = a·(p - l), computed as a·p - a·l
+     * from terms of p and l: 192 eps of the larger max norm (no sum to
+     * overflow near DBL_MAX).  A point of B at the light itself (B = {l}: a
+     * spot's apex alone) has a D of a few eps of either sign, by rounding;
+     * within that band it is the apex (a spot: clipped) or the light is
+     * inside B, never a map of D = 0. */
+    const swarp_vec3 lp = light->position;
+    const double lmag = fmax(fabs(lp.x), fmax(fabs(lp.y), fabs(lp.z)));
+    double dmin_allowed = fmax(SW_LIGHT_NEAR_MIN_REL * dmax, 192.0 * DBL_EPSILON * fmax(bmag, lmag));
+    for (size_t i = 0; i < nb; ++i) {
+        swarp_vec4 h = sw_xform_point(&ls->L, B[i]);
+        double D = -h.z;
+        if (D < dmin_allowed) {
+            if (light->cone_angle > 0.0 && D > -dmin_allowed) { /* the apex of a spot */
+                *info = sw_info_merge(*info, SWARP_INFO_LIGHT_NEAR_CLIPPED);
+                continue;
+            }
+            return SWARP_ERR_LIGHT_INSIDE_BODY;
+        }
+        if (hypot(h.x, h.y) > SW_LIGHT_MAX_TAN * D) return SWARP_ERR_LIGHT_INSIDE_BODY;
+    }
+    memset(&ls->P0, 0, sizeof ls->P0);
+    sw_set(&ls->P0, 0, 0, 1.0);
+    sw_set(&ls->P0, 1, 1, 1.0);
+    sw_set(&ls->P0, 2, 3, 1.0);
+    sw_set(&ls->P0, 3, 2, -1.0);
+    res->light_near = fmax(dmin_allowed, 0.0);
+    res->light_far = dmax;
+    return SWARP_OK;
+}
+
+/* The light view (a directional light's along its direction, with the
+ * light-space alignment of [RHS] §3.2.1, or the point light's), M and M^-1. */
+static swarp_status sw_light_space_of(const swarp_camera* cam, const swarp_light* light, const swarp_vec3* B,
+                                      size_t nb, const sw_follow* fw, sw_light_space* ls, swarp_setup_result* res,
+                                      swarp_status* info) {
+    swarp_status s;
+    sw_identity(&ls->P0);
+    ls->point = light->type == SWARP_LIGHT_POINT;
+    if (ls->point) {
+        s = sw_point_light_view(cam, light, B, nb, fw, ls, res, info);
+        if (s != SWARP_OK) return s;
+    } else {
+        s = fw ? sw_follow_light_view(cam, cam->eye, light->direction, fw, &ls->L)
+               : sw_light_view(cam, cam->eye, light->direction, &ls->L);
+        if (swarp_status_is_error(s)) return s;
+        *info = sw_info_merge(*info, s);
+    }
+    if (ls->point)
+        sw_mul(&ls->P0, &ls->L, &ls->M);
+    else
+        ls->M = ls->L; /* P0 = I: skip the product */
+    sw_rigid_inverse(&ls->L, &ls->M_inv);
+    if (ls->point) sw_p0_inverse_after(&ls->M_inv);
+    return SWARP_OK;
+}
+
+/* The points the map must see: a point light drops those in front of its
+ * near plane (the apex region) from B (into Bk) and from the receivers H
+ * (into Hk) and narrows light_near to the depth actually covered; a
+ * directional light uses B and H as they are. */
+static swarp_status sw_cut_light_near(const sw_light_space* ls, const swarp_vec3* B, size_t nb, const swarp_vec3* H,
+                                      size_t nh, swarp_vec3* Bk, swarp_vec3* Hk, const swarp_vec3** Bp, size_t* nbk,
+                                      const swarp_vec3** Hp, size_t* nhk, swarp_setup_result* res) {
+    *Bp = B;
+    *Hp = H;
+    *nbk = nb < SWARP_BODY_MAX_POINTS ? nb : SWARP_BODY_MAX_POINTS;
+    *nhk = !H ? 0 : nh < SWARP_BODY_MAX_POINTS ? nh : SWARP_BODY_MAX_POINTS;
+    if (ls->point) {
+        size_t k = 0;
+        for (size_t i = 0; i < nb && k < SWARP_BODY_MAX_POINTS; ++i) {
+            swarp_vec4 h = sw_xform_point(&ls->L, B[i]);
+            if (-h.z < res->light_near) continue;
+            Bk[k++] = B[i];
+        }
+        *nbk = k;
+        /* the receivers for pancaking, with the same cut */
+        k = 0;
+        for (size_t i = 0; H && i < nh && k < SWARP_BODY_MAX_POINTS; ++i) {
+            swarp_vec4 h = sw_xform_point(&ls->L, H[i]);
+            if (-h.z < res->light_near) continue;
+            Hk[k++] = H[i];
+        }
+        *nhk = k;
+        *Bp = Bk;
+        *Hp = Hk;
+    }
+    if (*nbk == 0) return SWARP_ERR_BODY_EMPTY;
+    if (ls->point) {
+        double dmin = INFINITY;
+        for (size_t i = 0; i < *nbk; ++i) dmin = fmin(dmin, -sw_xform_point(&ls->L, (*Bp)[i]).z);
+        res->light_near = dmin;
+    }
+    return SWARP_OK;
+}
+
+/* The warp P after M: LiSPSM [RHS] §3.2.1 oriented along the light frame,
+ * or the uniform map's z flip (depth grows away from the light). */
+static swarp_status sw_warp_step(swarp_technique tech, const swarp_setup_options* o, const sw_light_space* ls,
+                                 const swarp_camera* cam, double near, double far, const swarp_vec3* Bp, size_t nbk,
+                                 const swarp_vec3* ep, swarp_mat4* P, swarp_warp_info* wi, swarp_status* info) {
+    memset(wi, 0, sizeof *wi);
+    if (tech == SWARP_TECHNIQUE_LISPSM) {
+        const swarp_warp_options w = sw_setup_warp_options(o);
+        swarp_status s = sw_warp_lispsm_oriented(&ls->M, &ls->M_inv, cam, near, far, Bp, nbk, ep, &w, P, wi);
+        if (swarp_status_is_error(s)) return s;
+        *info = sw_info_merge(*info, s);
+    } else {
+        sw_identity(P);
+        sw_set(P, 2, 2, -1.0);
+        wi->n_light = wi->n_eye = INFINITY;
+    }
+    return SWARP_OK;
+}
+
+/* Focusing [RHS] (3.1): A_fit fits P M of the points Bp (their depth range:
+ * the receivers zp when pancaking), light_proj = A_fit P P0, matrix =
+ * light_proj L, which must resolve B in world coordinates. */
+static swarp_status sw_focus_step(const sw_light_space* ls, const swarp_mat4* P, const swarp_vec3* Bp, size_t nbk,
+                                  const swarp_vec3* zp, size_t nhk, swarp_depth_range dr, swarp_vec3 eye,
+                                  swarp_setup_result* res, swarp_status* info) {
+    swarp_mat4 PM, A;
+    if (ls->point)
+        sw_mul(P, &ls->M, &PM);
+    else
+        sw_mul_affine_b(P, &ls->M, &PM); /* M = L, a look-at */
+    swarp_status s = sw_focus_fit(&PM, Bp, nbk, zp, nhk, dr, &A);
+    if (swarp_status_is_error(s)) return s;
+    *info = sw_info_merge(*info, s);
+    swarp_mat4 proj = *P; /* P P0, P0 = I for a directional light */
+    if (ls->point) sw_mul(P, &ls->P0, &proj);
+    sw_mul(&A, &proj, &res->light_proj);
+    res->light_view = ls->L;
+    sw_mul_affine_b(&res->light_proj, &ls->L, &res->matrix); /* L: a look-at */
+    if (!sw_world_resolves(&res->matrix, &res->light_proj, &ls->L, Bp, nbk, eye)) return SWARP_ERR_DEGENERATE;
+    return SWARP_OK;
+}
+
+/* A directional light's depth range in light view units (distance along
+ * the light) over zs: only the z row of the rigid L is needed, the points
+ * are finite. */
+static void sw_light_depth_range(const swarp_mat4* L, const swarp_vec3* zs, size_t zn, swarp_setup_result* res) {
+    double lo = INFINITY, hi = -INFINITY;
+    const double l20 = sw_at(L, 2, 0), l21 = sw_at(L, 2, 1), l22 = sw_at(L, 2, 2), l23 = sw_at(L, 2, 3);
+    for (size_t i = 0; i < zn; ++i) {
+        double D = -(l20 * zs[i].x + l21 * zs[i].y + l22 * zs[i].z + l23);
+        lo = D < lo ? D : lo;
+        hi = D > hi ? D : hi;
+    }
+    res->light_near = lo;
+    res->light_far = hi;
+}
+
+/* Uniform and LiSPSM maps: light space, the cut at a point light's near
+ * plane, the warp, focusing, then the report (n', γ, light depth range). */
+static swarp_status sw_setup_lispsm(swarp_technique tech, const swarp_camera* cam, const swarp_light* light,
+                                    const swarp_vec3* B, size_t nb, const swarp_vec3* H, size_t nh, double near,
+                                    double far, const swarp_setup_options* o, swarp_vec3 eye, const sw_follow* fw,
+                                    swarp_vec3 v, const swarp_vec3* ep, swarp_setup_result* res, swarp_status* info) {
+    sw_light_space ls;
+    swarp_status s = sw_light_space_of(cam, light, B, nb, fw, &ls, res, info);
+    if (s != SWARP_OK) return s;
+    swarp_vec3 Bk[SWARP_BODY_MAX_POINTS + 1];
+    swarp_vec3 Hk[SWARP_BODY_MAX_POINTS];
+    const swarp_vec3 *Bp, *Hp;
+    size_t nbk, nhk;
+    s = sw_cut_light_near(&ls, B, nb, H, nh, Bk, Hk, &Bp, &nbk, &Hp, &nhk, res);
+    if (s != SWARP_OK) return s;
+    swarp_mat4 P;
+    swarp_warp_info wi;
+    s = sw_warp_step(tech, o, &ls, cam, near, far, Bp, nbk, ep, &P, &wi, info);
+    if (s != SWARP_OK) return s;
+    /* pancaking: the depth range covers the receivers H only; casters
+     * nearer the light are clamped to the near plane by the renderer */
+    const swarp_vec3* zp = (o->pancake && nhk > 0) ? Hp : NULL;
+    s = sw_focus_step(&ls, &P, Bp, nbk, zp, nhk, sw_resolve_depth_range(o->depth_range), eye, res, info);
+    if (s != SWARP_OK) return s;
+    res->n_light = wi.n_light;
+    res->n_eye = wi.n_eye;
+    res->gamma = wi.gamma;
+    if (tech != SWARP_TECHNIQUE_LISPSM) {
+        double vz = sw_at(&ls.M, 2, 0) * v.x + sw_at(&ls.M, 2, 1) * v.y + sw_at(&ls.M, 2, 2) * v.z;
+        res->gamma = acos(fmax(-1.0, fmin(1.0, -vz)));
+    }
+    if (!ls.point) sw_light_depth_range(&ls.L, zp ? zp : Bp, zp ? nhk : nbk, res);
+    return SWARP_OK;
+}
+
+/* The error model [RHS] (2.3)-(2.8) for n' in eye units over [near, far]. */
+static swarp_status sw_predict_error(const swarp_camera* cam, const swarp_setup_options* o, double near,
+                                     double far, swarp_setup_result* res) {
+    swarp_error_config cfg;
+    sw_setup_error_config(o, sw_half_fovy(cam->fovy), near, far, &cfg);
+    double mx = NAN, mz = NAN;
+    swarp_status s = swarp_error_max(&cfg, res->n_eye, &mx, &mz);
+    if (swarp_status_is_error(s) || !sw_finite(mx) || !sw_finite(mz)) return SWARP_ERR_DEGENERATE;
+    res->max_mx = mx;
+    res->max_mz = mz;
+    return SWARP_OK;
+}
+
+/* The light matrix for the points B of the body (B_poly: B as a polyhedron,
+ * for PSM; may be NULL) and the receivers H (may be NULL), then the
+ * predicted error.  *out written only on success. */
 static swarp_status sw_setup_points(const swarp_camera* cam, const swarp_light* light, const swarp_vec3* B,
-                                    size_t nb, const swarp_polyhedron* B_poly, const swarp_vec3* H, size_t nh, double near, double far,
-                                    const swarp_setup_options* o, swarp_vec3 eye, const sw_follow* fw,
-                                    swarp_setup_result* out) {
+                                    size_t nb, const swarp_polyhedron* B_poly, const swarp_vec3* H, size_t nh,
+                                    double near, double far, const swarp_setup_options* o, swarp_vec3 eye,
+                                    const sw_follow* fw, swarp_setup_result* out) {
     swarp_status info = SWARP_OK, s;
-    swarp_technique tech = o->technique == SWARP_TECHNIQUE_DEFAULT ? SWARP_TECHNIQUE_LISPSM : o->technique;
-    swarp_depth_range dr = o->depth_range == SWARP_DEPTH_DEFAULT ? SWARP_DEPTH_NEG_ONE_TO_ONE : o->depth_range;
+    const swarp_technique tech = sw_resolve_technique(o->technique);
     swarp_vec3 v, r, u;
     sw_camera_basis(cam, &v, &r, &u);
-    /* nearest vertex e of H (the receivers) for the WS06 centre */
+    /* nearest vertex e of H (the receivers): only the WS06 centre uses it */
     const swarp_vec3* ep = NULL;
     swarp_vec3 e_near;
-    if (o->center == SWARP_WARP_CENTER_NEAREST_VERTEX) { /* only the WS06 centre uses it */
+    if (o->center == SWARP_WARP_CENTER_NEAREST_VERTEX) {
         const swarp_vec3* src = H ? H : B;
         size_t ns = H ? nh : nb;
         const double world_mag = fmax(fabs(eye.x), fmax(fabs(eye.y), fabs(eye.z)));
@@ -294,189 +494,16 @@ static swarp_status sw_setup_points(const swarp_camera* cam, const swarp_light* 
     memset(&res, 0, sizeof res);
     res.view_near = near;
     res.view_far = far;
-
     if (tech == SWARP_TECHNIQUE_PSM) {
         s = sw_psm_setup(cam, light, B, nb, B_poly, H, nh, near, far, o, fw, &res);
         if (swarp_status_is_error(s)) return s;
         if (!sw_rel_resolves(B, nb)) return SWARP_ERR_DEGENERATE;
         info = sw_info_merge(info, s);
     } else {
-        swarp_mat4 L, P0, M, M_inv;
-        sw_identity(&P0);
-        if (light->type == SWARP_LIGHT_POINT) {
-            swarp_vec3 a = {0, 0, -1};
-            if (!sw_point_axis(light, B, nb, &a)) return SWARP_ERR_LIGHT_INSIDE_BODY;
-            s = fw ? sw_follow_light_view(cam, light->position, a, fw, &L) : sw_light_view(cam, light->position, a, &L);
-            /* a light ~DBL_MAX from the eye: B's angular size is far below
-             * what its coordinates resolve (the documented DEGENERATE) */
-            if (s == SWARP_ERR_OVERFLOW) return SWARP_ERR_DEGENERATE;
-            if (swarp_status_is_error(s)) return s;
-            info = sw_info_merge(info, s);
-            /* every point must lie in front of the light within the widest
-             * perspective a map can have */
-            double dmax = 0.0, bmag = 0.0;
-            for (size_t i = 0; i < nb; ++i) {
-                swarp_vec4 h = sw_xform_point(&L, B[i]);
-                double D = -h.z;
-                if (D > dmax) dmax = D;
-                bmag = fmax(bmag, fmax(fabs(B[i].x), fmax(fabs(B[i].y), fabs(B[i].z))));
-            }
-            /* and never below the rounding of D = a·(p - l), computed as
-             * a·p - a·l from terms of p and l: 192 eps of the larger max
-             * norm (no sum to overflow near DBL_MAX).  A point of B at the light
-             * itself (B = {l}: a spot's apex alone) got D = -7e-15, 0 or
-             * +1e-14 by rounding mode: SWARP_ERR_LIGHT_INSIDE_BODY or a
-             * map of D = 0, SWARP_ERR_DEGENERATE (issue 9, fenv
-             * swarp_setup_points 120000 cases 67704, 110180).  At the light
-             * it is the apex (a spot: clipped) or the light inside B. */
-            const swarp_vec3 lp = light->position;
-            const double lmag = fmax(fabs(lp.x), fmax(fabs(lp.y), fabs(lp.z)));
-            double dmin_allowed = fmax(SW_LIGHT_NEAR_MIN_REL * dmax, 192.0 * DBL_EPSILON * fmax(bmag, lmag));
-            for (size_t i = 0; i < nb; ++i) {
-                swarp_vec4 h = sw_xform_point(&L, B[i]);
-                double D = -h.z;
-                if (D < dmin_allowed) {
-                    if (light->cone_angle > 0.0 && D > -dmin_allowed) { /* the apex of a spot */
-                        info = sw_info_merge(info, SWARP_INFO_LIGHT_NEAR_CLIPPED);
-                        continue;
-                    }
-                    return SWARP_ERR_LIGHT_INSIDE_BODY;
-                }
-                if (hypot(h.x, h.y) > SW_LIGHT_MAX_TAN * D) return SWARP_ERR_LIGHT_INSIDE_BODY;
-            }
-            /* P0: (x, y, z) -> (x/D, y/D, 1/D), D = -z: a point light becomes
-             * a directional one travelling toward -z */
-            memset(&P0, 0, sizeof P0);
-            sw_set(&P0, 0, 0, 1.0);
-            sw_set(&P0, 1, 1, 1.0);
-            sw_set(&P0, 2, 3, 1.0);
-            sw_set(&P0, 3, 2, -1.0);
-            res.light_near = fmax(dmin_allowed, 0.0);
-            res.light_far = dmax;
-        } else {
-            s = fw ? sw_follow_light_view(cam, cam->eye, light->direction, fw, &L)
-                   : sw_light_view(cam, cam->eye, light->direction, &L);
-            if (swarp_status_is_error(s)) return s;
-            info = sw_info_merge(info, s);
-        }
-        if (light->type == SWARP_LIGHT_POINT)
-            sw_mul(&P0, &L, &M);
-        else
-            M = L; /* P0 = I: skip the product */
-        sw_rigid_inverse(&L, &M_inv);
-        if (light->type == SWARP_LIGHT_POINT) sw_p0_inverse_after(&M_inv);
-        /* the points the map must see; point lights drop the apex region
-         * (into Bk, Hk); a directional light uses B and H as they are */
-        swarp_vec3 Bk[SWARP_BODY_MAX_POINTS + 1];
-        swarp_vec3 Hk[SWARP_BODY_MAX_POINTS];
-        const swarp_vec3* Bp = B;
-        const swarp_vec3* Hp = H;
-        size_t nbk = nb < SWARP_BODY_MAX_POINTS ? nb : SWARP_BODY_MAX_POINTS;
-        size_t nhk = !H ? 0 : nh < SWARP_BODY_MAX_POINTS ? nh : SWARP_BODY_MAX_POINTS;
-        if (light->type == SWARP_LIGHT_POINT) {
-            nbk = 0;
-            for (size_t i = 0; i < nb && nbk < SWARP_BODY_MAX_POINTS; ++i) {
-                swarp_vec4 h = sw_xform_point(&L, B[i]);
-                if (-h.z < res.light_near) continue;
-                Bk[nbk++] = B[i];
-            }
-            /* the receivers for pancaking, with the same cut */
-            nhk = 0;
-            for (size_t i = 0; H && i < nh && nhk < SWARP_BODY_MAX_POINTS; ++i) {
-                swarp_vec4 h = sw_xform_point(&L, H[i]);
-                if (-h.z < res.light_near) continue;
-                Hk[nhk++] = H[i];
-            }
-            Bp = Bk;
-            Hp = Hk;
-        }
-        if (nbk == 0) return SWARP_ERR_BODY_EMPTY;
-        if (light->type == SWARP_LIGHT_POINT) { /* the depth actually covered */
-            double dmin = INFINITY;
-            for (size_t i = 0; i < nbk; ++i) dmin = fmin(dmin, -sw_xform_point(&L, Bp[i]).z);
-            res.light_near = dmin;
-        }
-        swarp_mat4 P;
-        swarp_warp_info wi;
-        memset(&wi, 0, sizeof wi);
-        if (tech == SWARP_TECHNIQUE_LISPSM) {
-            swarp_warp_options w;
-            memset(&w, 0, sizeof w);
-            w.param = o->param;
-            w.center = o->center;
-            w.n_user = o->n_user;
-            w.pseudo_near = o->pseudo_near;
-            w.pseudo_far = o->pseudo_far;
-            s = sw_warp_lispsm_oriented(&M, &M_inv, cam, near, far, Bp, nbk, ep, &w, &P, &wi);
-            if (swarp_status_is_error(s)) return s;
-            info = sw_info_merge(info, s);
-        } else {
-            /* uniform: flip z so depth grows away from the light */
-            sw_identity(&P);
-            sw_set(&P, 2, 2, -1.0);
-            wi.n_light = wi.n_eye = INFINITY;
-        }
-        swarp_mat4 PM, A;
-        if (light->type == SWARP_LIGHT_POINT)
-            sw_mul(&P, &M, &PM);
-        else
-            sw_mul_affine_b(&P, &M, &PM); /* M = L, a look-at */
-        /* pancaking: the depth range covers the receivers H only; casters
-         * nearer the light are clamped to the near plane by the renderer */
-        const swarp_vec3* zp = (o->pancake && nhk > 0) ? Hp : NULL;
-        s = sw_focus_fit(&PM, Bp, nbk, zp, nhk, dr, &A);
-        if (swarp_status_is_error(s)) return s;
-        info = sw_info_merge(info, s);
-        swarp_mat4 proj = P; /* P P0, P0 = I for a directional light */
-        if (light->type == SWARP_LIGHT_POINT) sw_mul(&P, &P0, &proj);
-        sw_mul(&A, &proj, &res.light_proj);
-        res.light_view = L;
-        sw_mul_affine_b(&res.light_proj, &L, &res.matrix); /* L: a look-at */
-        if (!sw_world_resolves(&res.matrix, &res.light_proj, &L, Bp, nbk, eye)) return SWARP_ERR_DEGENERATE;
-        res.n_light = wi.n_light;
-        res.n_eye = wi.n_eye;
-        res.gamma = wi.gamma;
-        if (tech != SWARP_TECHNIQUE_LISPSM) {
-            double vz = sw_at(&M, 2, 0) * v.x + sw_at(&M, 2, 1) * v.y + sw_at(&M, 2, 2) * v.z;
-            res.gamma = acos(fmax(-1.0, fmin(1.0, -vz)));
-        }
-        if (light->type != SWARP_LIGHT_POINT) {
-            /* light depth range in light view units (distance along the light) */
-            double lo = INFINITY, hi = -INFINITY;
-            const swarp_vec3* zs = zp ? zp : Bp;
-            size_t zn = zp ? nhk : nbk;
-            /* only the z row of the rigid L is needed; the points are finite */
-            const double l20 = sw_at(&L, 2, 0), l21 = sw_at(&L, 2, 1), l22 = sw_at(&L, 2, 2), l23 = sw_at(&L, 2, 3);
-            for (size_t i = 0; i < zn; ++i) {
-                double D = -(l20 * zs[i].x + l21 * zs[i].y + l22 * zs[i].z + l23);
-                lo = D < lo ? D : lo;
-                hi = D > hi ? D : hi;
-            }
-            res.light_near = lo;
-            res.light_far = hi;
-        }
+        s = sw_setup_lispsm(tech, cam, light, B, nb, H, nh, near, far, o, eye, fw, v, ep, &res, &info);
+        if (s != SWARP_OK) return s;
     }
-    /* the error model [RHS] (2.3)-(2.8) for n' in eye units */
-    {
-        uint32_t mw = o->map_width ? o->map_width : SW_DEFAULT_MAP;
-        uint32_t mh = o->map_height ? o->map_height : mw;
-        uint32_t sw = o->screen_width ? o->screen_width : SW_DEFAULT_SCREEN_W;
-        uint32_t sh = o->screen_height ? o->screen_height : SW_DEFAULT_SCREEN_H;
-        swarp_error_config cfg;
-        memset(&cfg, 0, sizeof cfg);
-        cfg.near = near;
-        cfg.far = far;
-        cfg.theta = sw_half_fovy(cam->fovy);
-        cfg.res_ix = sw > sh ? sw : sh;
-        cfg.res_iy = sw > sh ? sh : sw;
-        cfg.res_s = mw > mh ? mw : mh;
-        cfg.res_t = mw > mh ? mh : mw;
-        double mx = NAN, mz = NAN;
-        s = swarp_error_max(&cfg, res.n_eye, &mx, &mz);
-        if (swarp_status_is_error(s) || !sw_finite(mx) || !sw_finite(mz)) return SWARP_ERR_DEGENERATE;
-        res.max_mx = mx;
-        res.max_mz = mz;
-    }
+    if ((s = sw_predict_error(cam, o, near, far, &res)) != SWARP_OK) return s;
     if (!sw_mat_finite(&res.matrix) || !sw_mat_finite(&res.light_proj) || !sw_mat_finite(&res.light_view))
         return SWARP_ERR_DEGENERATE;
     res.point_count = (uint32_t)nb;
@@ -492,9 +519,9 @@ static swarp_status sw_setup_points(const swarp_camera* cam, const swarp_light* 
  * (large worlds: 1e5..1e6) every light-space coordinate carries rounding of
  * eps X, which is the whole extent of a small body B (near = 1e-6, or a
  * flat box seen edge-on: a zero extent then looks like rounding noise and
- * the fit stretched the noise over the map, putting points of B outside
+ * the fit would stretch the noise over the map, putting points of B outside
  * it); relative to the eye the coordinates are of the size of B and of its
- * distance from the eye.  Issue 9, hard-case sweep. */
+ * distance from the eye. */
 static void sw_rel_camera(const swarp_camera* cam, swarp_camera* rc) {
     *rc = *cam;
     rc->eye = sw_v3(0.0, 0.0, 0.0);
@@ -507,6 +534,15 @@ static void sw_rel_light(const swarp_light* light, swarp_vec3 eye, swarp_light* 
 static void sw_rel_box(const swarp_aabb* box, swarp_vec3 eye, swarp_aabb* rb) {
     rb->min = sw_sub(box->min, eye);
     rb->max = sw_sub(box->max, eye);
+}
+/* camera, light and box relative to the eye; 0 when a translated
+ * coordinate overflowed (finite inputs near DBL_MAX of opposite signs) */
+static int sw_rel_scene(const swarp_camera* cam, const swarp_light* light, const swarp_aabb* scene,
+                        swarp_camera* rc, swarp_light* rl, swarp_aabb* rs) {
+    sw_rel_camera(cam, rc);
+    sw_rel_light(light, cam->eye, rl);
+    sw_rel_box(scene, cam->eye, rs);
+    return sw_finite3(&rl->position) && sw_finite3(&rs->min) && sw_finite3(&rs->max);
 }
 /* m · T(-eye): the last column gets -m[:, 0..2] · eye */
 static void sw_fold_eye(swarp_mat4* m, swarp_vec3 eye) {
@@ -524,19 +560,15 @@ static int sw_fold_result(swarp_setup_result* res, swarp_vec3 eye) {
     return ok;
 }
 
-static swarp_status sw_setup_defaults(const swarp_setup_options* opts, swarp_setup_options* o) {
-    memset(o, 0, sizeof *o);
-    if (opts) *o = *opts;
-    return sw_check_setup_options(o);
-}
-
+/* The checks every setup entry point makes first, in the common order
+ * (camera, light, options; src/common/check.c); *o: the options resolved. */
 static swarp_status sw_check_common(const swarp_camera* cam, const swarp_light* light,
                                     const swarp_setup_options* opts, swarp_setup_options* o) {
     swarp_status s = sw_check_camera_shape(cam);
     if (s != SWARP_OK) return s;
     s = sw_check_light(light);
     if (s != SWARP_OK) return s;
-    return sw_setup_defaults(opts, o);
+    return sw_resolve_setup_options(opts, o);
 }
 
 /* Capacity check only: the needed count is written early only together with
@@ -599,8 +631,7 @@ static swarp_status sw_setup_main(const swarp_camera* cam, const swarp_light* li
     swarp_setup_options o;
     swarp_status s = sw_check_common(cam, light, opts, &o);
     if (s != SWARP_OK) return s;
-    if (!sw_finite(cam->near) || !sw_finite(cam->far)) return SWARP_ERR_NON_FINITE;
-    if (!(cam->near > 0.0 && cam->far > cam->near)) return SWARP_ERR_NEAR_FAR;
+    if ((s = sw_check_view_range(cam->near, cam->far)) != SWARP_OK) return s;
     s = sw_check_box(scene);
     if (s != SWARP_OK) return s;
     /* [RHS] §4.3: a measured min depth moves the near plane out (never
@@ -613,10 +644,7 @@ static swarp_status sw_setup_main(const swarp_camera* cam, const swarp_light* li
     swarp_camera rc;
     swarp_light rl;
     swarp_aabb rs;
-    sw_rel_camera(cam, &rc);
-    sw_rel_light(light, cam->eye, &rl);
-    sw_rel_box(scene, cam->eye, &rs);
-    if (!sw_finite3(&rl.position) || !sw_finite3(&rs.min) || !sw_finite3(&rs.max)) return SWARP_ERR_NON_FINITE;
+    if (!sw_rel_scene(cam, light, scene, &rc, &rl, &rs)) return SWARP_ERR_NON_FINITE;
     /* adjusted near/far [RHS] §3.3.1: V ∩ S over [near', far'] is H itself */
     swarp_polyhedron H;
     double zn, zf;
@@ -653,7 +681,7 @@ SWARP_API swarp_status swarp_setup_follow(const swarp_camera* cam, const swarp_l
         s = sw_check_camera_shape(previous_cam);
         if (s != SWARP_OK) return s;
     }
-    swarp_technique tech = o.technique == SWARP_TECHNIQUE_DEFAULT ? SWARP_TECHNIQUE_LISPSM : o.technique;
+    const swarp_technique tech = sw_resolve_technique(o.technique);
     sw_follow fw;
     s = sw_follow_from_result(previous, cam, previous_cam, tech, &fw);
     if (s != SWARP_OK) return s;
@@ -668,17 +696,13 @@ SWARP_API swarp_status swarp_setup_range(const swarp_camera* cam, const swarp_li
     swarp_setup_options o;
     swarp_status s = sw_check_common(cam, light, opts, &o);
     if (s != SWARP_OK) return s;
-    if (!sw_finite(near) || !sw_finite(far)) return SWARP_ERR_NON_FINITE;
-    if (!(near > 0.0 && far > near)) return SWARP_ERR_NEAR_FAR;
+    if ((s = sw_check_view_range(near, far)) != SWARP_OK) return s;
     s = sw_check_box(scene);
     if (s != SWARP_OK) return s;
     swarp_camera rc;
     swarp_light rl;
     swarp_aabb rs;
-    sw_rel_camera(cam, &rc);
-    sw_rel_light(light, cam->eye, &rl);
-    sw_rel_box(scene, cam->eye, &rs);
-    if (!sw_finite3(&rl.position) || !sw_finite3(&rs.min) || !sw_finite3(&rs.max)) return SWARP_ERR_NON_FINITE;
+    if (!sw_rel_scene(cam, light, scene, &rc, &rl, &rs)) return SWARP_ERR_NON_FINITE;
     return sw_setup_range(&rc, &rl, &rs, near, far, NULL, &o, cam->eye, NULL, out, out_points, capacity, out_count);
 }
 
@@ -690,8 +714,7 @@ SWARP_API swarp_status swarp_setup_points(const swarp_camera* cam, const swarp_l
     swarp_setup_options o;
     swarp_status s = sw_check_common(cam, light, opts, &o);
     if (s != SWARP_OK) return s;
-    if (!sw_finite(near) || !sw_finite(far)) return SWARP_ERR_NON_FINITE;
-    if (!(near > 0.0 && far > near)) return SWARP_ERR_NEAR_FAR;
+    if ((s = sw_check_view_range(near, far)) != SWARP_OK) return s;
     if (count == 0 || count > SWARP_BODY_MAX_POINTS ||
         (receivers && (receiver_count == 0 || receiver_count > SWARP_BODY_MAX_POINTS)))
         return SWARP_ERR_INVALID_ARGUMENT;

@@ -34,8 +34,6 @@
  * to the next level; with levels 1/64 of the extent apart the texels grow by
  * at most 1/64 (an assumption: [RHS] gives the level count only). */
 #define SW_STABLE_FACTOR (1.0 + 1.0 / 64.0)
-/* Practical split scheme weight λ = 0.5, Zhang et al.'s choice [RHS] §3.3.2. */
-#define SW_PSSM_LAMBDA 0.5
 /* Pseudo-near and pseudo-far as fractions of the depth range: [RHS] Fig. 4.2
  * used n_p ≈ f_p ≈ 30 of a [1, 300] range, i.e. 0.1 each. */
 #define SW_PSEUDO_NP 0.1
@@ -90,20 +88,14 @@ static int sw_all_zero(const void* p, size_t n) {
     return 1;
 }
 
-static swarp_status sw_check_camera(const swarp_camera* c, sw_pin* in) {
-    if (!sw_reserved_zero(c->_reserved, 4)) return SWARP_ERR_RESERVED_NONZERO;
-    if (!sw_finite3(&c->eye) || !sw_finite3(&c->dir) || !sw_finite3(&c->up) ||
-        !sw_finite(c->fovy) || !sw_finite(c->aspect) || !sw_finite(c->near) ||
-        !sw_finite(c->far))
-        return SWARP_ERR_NON_FINITE;
+/* The caller's camera, checked by the common camera check
+ * (src/common/check.c), as the planner's view frame: unit view and up,
+ * Θ = fovy / 2, the camera's own depth range. */
+static swarp_status sw_resolve_camera(const swarp_camera* c, sw_pin* in) {
+    swarp_status s = sw_check_camera(c);
+    if (s != SWARP_OK) return s;
     swarp_vec3 v, u;
     if (!sw_normalize(c->dir, &v) || !sw_normalize(c->up, &u)) return SWARP_ERR_ZERO_VECTOR;
-    /* up parallel to dir: no image plane orientation (1e-12: rounding of a
-     * cross product of unit vectors) */
-    if (sw_len(sw_cross(v, u)) < 1e-12) return SWARP_ERR_DEGENERATE;
-    if (!(c->fovy > 0.0 && c->fovy < SWARP_PI)) return SWARP_ERR_FOV;
-    if (!(c->aspect > 0.0)) return SWARP_ERR_OUT_OF_RANGE;
-    if (!(c->near > 0.0 && c->far > c->near)) return SWARP_ERR_NEAR_FAR;
     in->eye = c->eye;
     in->view = v;
     in->up = u;
@@ -114,15 +106,12 @@ static swarp_status sw_check_camera(const swarp_camera* c, sw_pin* in) {
     return SWARP_OK;
 }
 
-static swarp_status sw_check_light(const swarp_light* l, sw_pin* in) {
-    if (l->_reserved0 != 0 || !sw_reserved_zero(l->_reserved, 4)) return SWARP_ERR_RESERVED_NONZERO;
-    if (l->type != SWARP_LIGHT_DEFAULT && l->type != SWARP_LIGHT_DIRECTIONAL &&
-        l->type != SWARP_LIGHT_POINT)
-        return SWARP_ERR_UNKNOWN_ENUM;
-    if (!sw_finite3(&l->direction) || !sw_finite3(&l->position) || !sw_finite(l->cone_angle))
-        return SWARP_ERR_NON_FINITE;
+/* The caller's light, checked by the common light check: a point light's
+ * position, or the unit direction toward a directional light. */
+static swarp_status sw_resolve_light(const swarp_light* l, sw_pin* in) {
+    swarp_status s = sw_check_light(l);
+    if (s != SWARP_OK) return s;
     if (l->type == SWARP_LIGHT_POINT) {
-        if (!(l->cone_angle >= 0.0 && l->cone_angle < 0.5 * SWARP_PI)) return SWARP_ERR_OUT_OF_RANGE;
         in->point_light = 1;
         in->light_pos = l->position;
     } else {
@@ -134,21 +123,12 @@ static swarp_status sw_check_light(const swarp_light* l, sw_pin* in) {
     return SWARP_OK;
 }
 
-static swarp_status sw_resolve(const swarp_scene_needs* needs, const swarp_budget* budget,
-                               sw_pin* in) {
-    static const swarp_scene_needs zero_needs; /* const: not mutable state */
-    static const swarp_budget zero_budget;
-    if (!needs) needs = &zero_needs;
-    if (!budget) budget = &zero_budget;
-    memset(in, 0, sizeof *in);
-
-    if (!sw_reserved_zero(needs->_reserved, 4) || needs->_pad0 != 0 ||
-        !sw_reserved_zero(budget->_reserved, 4) || budget->_pad0 != 0)
-        return SWARP_ERR_RESERVED_NONZERO;
-
+/* Camera and light, each all zero for the documented default: camera 2
+ * units above the ground looking along -z (fovy 60°, aspect 4/3, [1, 100]),
+ * the sun at zenith. */
+static swarp_status sw_resolve_view(const swarp_scene_needs* needs, sw_pin* in) {
     swarp_status s;
     if (sw_all_zero(&needs->camera, sizeof needs->camera)) {
-        /* default camera: 2 units above the ground looking along -z */
         in->eye = sw_v3(0.0, 2.0, 0.0);
         in->view = sw_v3(0.0, 0.0, -1.0);
         in->up = sw_v3(0.0, 1.0, 0.0);
@@ -156,23 +136,25 @@ static swarp_status sw_resolve(const swarp_scene_needs* needs, const swarp_budge
         in->aspect = 4.0 / 3.0;
         in->near = 1.0;
         in->far = 100.0;
-    } else if ((s = sw_check_camera(&needs->camera, in)) != SWARP_OK) {
+    } else if ((s = sw_resolve_camera(&needs->camera, in)) != SWARP_OK) {
         return s;
     }
     if (sw_all_zero(&needs->light, sizeof needs->light)) {
         in->point_light = 0;
-        in->to_light = sw_v3(0.0, 1.0, 0.0); /* sun at zenith */
-    } else if ((s = sw_check_light(&needs->light, in)) != SWARP_OK) {
+        in->to_light = sw_v3(0.0, 1.0, 0.0);
+    } else if ((s = sw_resolve_light(&needs->light, in)) != SWARP_OK) {
         return s;
     }
+    return SWARP_OK;
+}
 
-    /* scene box: all zero = unbounded */
+/* The scene needs besides camera and light: the box (all zero: unbounded,
+ * else the common box check), flags, filter width, bleed, planes, screen. */
+static swarp_status sw_check_needs(const swarp_scene_needs* needs) {
     const swarp_aabb* box = &needs->scene_box;
-    int have_box = !sw_all_zero(box, sizeof *box);
-    if (have_box) {
-        if (!sw_finite3(&box->min) || !sw_finite3(&box->max)) return SWARP_ERR_NON_FINITE;
-        if (box->min.x > box->max.x || box->min.y > box->max.y || box->min.z > box->max.z)
-            return SWARP_ERR_OUT_OF_RANGE;
+    if (!sw_all_zero(box, sizeof *box)) {
+        swarp_status s = sw_check_box(box);
+        if (s != SWARP_OK) return s;
     }
     if (!sw_finite(needs->soft_width)) return SWARP_ERR_NON_FINITE;
     if (needs->camera_moves > 1 || needs->soft_shadows > 1 || needs->allow_depth_clamp > 1)
@@ -189,24 +171,30 @@ static swarp_status sw_resolve(const swarp_scene_needs* needs, const swarp_budge
     }
     if (needs->screen_width > SW_MAX_RES || needs->screen_height > SW_MAX_RES)
         return SWARP_ERR_RESOLUTION;
+    return SWARP_OK;
+}
 
-    /* budget */
+static swarp_status sw_check_budget(const swarp_budget* budget) {
     if (!sw_finite(budget->max_error) || !sw_finite(budget->time_budget_ns) ||
         !sw_finite(budget->pass_cost_ns) || !sw_finite(budget->blur_pass_cost_ns))
         return SWARP_ERR_NON_FINITE;
     if (budget->max_error < 0.0 || budget->time_budget_ns < 0.0 || budget->pass_cost_ns < 0.0 ||
         budget->blur_pass_cost_ns < 0.0 || budget->max_passes > SW_MAX_PASSES)
         return SWARP_ERR_OUT_OF_RANGE;
-    /* a cost near DBL_MAX made K x pass cost overflow to inf (found by the
-     * hard-case sweep): the documented limit keeps every cost finite */
+    /* the documented limit keeps every cost finite: a pass cost near
+     * DBL_MAX times K passes would overflow to inf */
     if (budget->time_budget_ns > SWARP_PLAN_MAX_COST_NS || budget->pass_cost_ns > SWARP_PLAN_MAX_COST_NS ||
         budget->blur_pass_cost_ns > SWARP_PLAN_MAX_COST_NS)
         return SWARP_ERR_OUT_OF_RANGE;
     if (budget->map_resolution > SW_MAX_RES || budget->atlas_limit > SW_MAX_RES)
         return SWARP_ERR_RESOLUTION;
+    return SWARP_OK;
+}
 
-    in->res_ix = needs->screen_width ? (double)needs->screen_width : 1024.0;
-    in->res_iy = needs->screen_height ? (double)needs->screen_height : 768.0;
+/* "Zero means default" for the needs and the budget (the header's values). */
+static void sw_resolve_defaults(const swarp_scene_needs* needs, const swarp_budget* budget, sw_pin* in) {
+    in->res_ix = needs->screen_width ? (double)needs->screen_width : (double)SW_PLAN_DEFAULT_SCREEN_W;
+    in->res_iy = needs->screen_height ? (double)needs->screen_height : (double)SW_PLAN_DEFAULT_SCREEN_H;
     in->moves = (int)needs->camera_moves;
     in->soft = (int)needs->soft_shadows;
     in->soft_width = needs->soft_width > 0.0 ? needs->soft_width : SW_DEFAULT_SOFT_WIDTH;
@@ -217,58 +205,83 @@ static swarp_status sw_resolve(const swarp_scene_needs* needs, const swarp_budge
     for (uint32_t i = 0; i < needs->plane_count; ++i) in->planes[i] = needs->planes[i];
 
     in->max_error = budget->max_error > 0.0 ? budget->max_error : 1.0;
-    in->map_res = budget->map_resolution ? budget->map_resolution : 2048u;
+    in->map_res = budget->map_resolution ? budget->map_resolution : SW_DEFAULT_MAP_RES;
     in->atlas_limit = budget->atlas_limit ? budget->atlas_limit : 8192u;
     in->max_passes = budget->max_passes ? budget->max_passes : 16u;
     in->time_budget = budget->time_budget_ns;
     in->pass_ns = budget->pass_cost_ns > 0.0 ? budget->pass_cost_ns : SW_DEFAULT_PASS_NS;
     in->blur_ns = budget->blur_pass_cost_ns > 0.0 ? budget->blur_pass_cost_ns
                                                   : SW_DEFAULT_BLUR_FRACTION * in->pass_ns;
+}
 
-    /* [RHS] §3.3.1 adjusted near/far, conservatively: the depth range of the
-     * box corners along the view direction clipped to [near, far] (contains
-     * the depth range of H = V ∩ S, so nothing visible is lost). */
-    if (have_box) {
-        double dmin = INFINITY, dmax = -INFINITY;
-        for (int k = 0; k < 8; ++k) {
-            swarp_vec3 c = sw_v3((k & 1) ? box->max.x : box->min.x,
-                                 (k & 2) ? box->max.y : box->min.y,
-                                 (k & 4) ? box->max.z : box->min.z);
-            double d = sw_dot(sw_sub(c, in->eye), in->view);
-            if (d < dmin) dmin = d;
-            if (d > dmax) dmax = d;
-        }
-        if (dmax < in->near || dmin > in->far) return SWARP_ERR_PLAN_EMPTY_VIEW;
-        double n = dmin > in->near ? dmin : in->near;
-        double f = dmax < in->far ? dmax : in->far;
-        /* a box flat across the view: keep a tiny positive depth range
-         * (1e-6 relative, far above rounding) so every ratio stays finite */
-        if (f < n * (1.0 + 1e-6)) f = n * (1.0 + 1e-6);
-        if (n != in->near || f != in->far) in->near_far_adjusted = 1;
-        in->near = n;
-        in->far = f;
+/* [RHS] §3.3.1 adjusted near/far, conservatively: the depth range of the
+ * box corners along the view direction clipped to [near, far] (contains
+ * the depth range of H = V ∩ S, so nothing visible is lost). */
+static swarp_status sw_adjust_near_far(const swarp_aabb* box, sw_pin* in) {
+    double dmin = INFINITY, dmax = -INFINITY;
+    for (int k = 0; k < 8; ++k) {
+        swarp_vec3 c = sw_v3((k & 1) ? box->max.x : box->min.x,
+                             (k & 2) ? box->max.y : box->min.y,
+                             (k & 4) ? box->max.z : box->min.z);
+        double d = sw_dot(sw_sub(c, in->eye), in->view);
+        if (d < dmin) dmin = d;
+        if (d > dmax) dmax = d;
     }
+    if (dmax < in->near || dmin > in->far) return SWARP_ERR_PLAN_EMPTY_VIEW;
+    double n = dmin > in->near ? dmin : in->near;
+    double f = dmax < in->far ? dmax : in->far;
+    /* a box flat across the view: keep a tiny positive depth range
+     * (1e-6 relative, far above rounding) so every ratio stays finite */
+    if (f < n * (1.0 + 1e-6)) f = n * (1.0 + 1e-6);
+    if (n != in->near || f != in->far) in->near_far_adjusted = 1;
+    in->near = n;
+    in->far = f;
+    return SWARP_OK;
+}
 
-    /* a point light is planned as a directional light from the light toward
-     * the centre of the (adjusted) view frustum ([RHS] §3.2.2 treats a
-     * narrow point light as directional) */
+/* The light's angle γ to the view.  A point light is planned as a
+ * directional light from the light toward the centre of the (adjusted)
+ * view frustum ([RHS] §3.2.2 treats a narrow point light as directional). */
+static swarp_status sw_resolve_gamma(sw_pin* in) {
     if (in->point_light) {
-        /* relative to the eye first: light - (eye + c v) rounded the centre
-         * at the eye's magnitude (1e6 worlds: 1e-10), which turned a light
-         * at the eye (exactly γ = π) by 1e-14 rad with the caller's rounding
-         * mode; (light - eye) is exact there and small nearby */
+        /* relative to the eye first: light - (eye + c v) would round the
+         * centre at the eye's magnitude (1e6 worlds: 1e-10) and turn a
+         * light at the eye (exactly γ = π) by 1e-14 rad with the caller's
+         * rounding mode; (light - eye) is exact there and small nearby */
         swarp_vec3 to = sw_sub(sw_sub(in->light_pos, in->eye), sw_scale(in->view, 0.5 * (in->near + in->far)));
         if (!sw_normalize(to, &in->to_light)) return SWARP_ERR_DEGENERATE;
     }
     /* γ = atan2(|v × l|, v · l), not acos(v · l): acos is ill-conditioned
      * next to 0 and π (d acos/dc = -1/sin γ), where a light along the view
-     * (or a point light at the eye) puts γ; an ulp of c there moved γ by
-     * sqrt(eps) ~ 1.5e-8 and the planner's n' and errors with it (the
-     * caller's rounding mode changed max_error by 1e-7 relative, issue 9).
+     * (or a point light at the eye) puts γ; an ulp of c there would move γ
+     * by sqrt(eps) ~ 1.5e-8 and the planner's n' and errors with it.
      * atan2 of the two components is accurate to an ulp everywhere. */
     in->gamma = atan2(sw_len(sw_cross(in->view, in->to_light)), sw_dot(in->view, in->to_light));
     in->gamma_f = in->gamma > 0.5 * SWARP_PI ? SWARP_PI - in->gamma : in->gamma;
     return SWARP_OK;
+}
+
+/* Check every input, resolve the defaults, then the adjusted range and γ. */
+static swarp_status sw_resolve(const swarp_scene_needs* needs, const swarp_budget* budget,
+                               sw_pin* in) {
+    static const swarp_scene_needs zero_needs; /* const: not mutable state */
+    static const swarp_budget zero_budget;
+    if (!needs) needs = &zero_needs;
+    if (!budget) budget = &zero_budget;
+    memset(in, 0, sizeof *in);
+
+    if (!sw_reserved_zero(needs->_reserved, 4) || needs->_pad0 != 0 ||
+        !sw_reserved_zero(budget->_reserved, 4) || budget->_pad0 != 0)
+        return SWARP_ERR_RESERVED_NONZERO;
+    swarp_status s;
+    if ((s = sw_resolve_view(needs, in)) != SWARP_OK) return s;
+    if ((s = sw_check_needs(needs)) != SWARP_OK) return s;
+    if ((s = sw_check_budget(budget)) != SWARP_OK) return s;
+    sw_resolve_defaults(needs, budget, in);
+    if (!sw_all_zero(&needs->scene_box, sizeof needs->scene_box) &&
+        (s = sw_adjust_near_far(&needs->scene_box, in)) != SWARP_OK)
+        return s;
+    return sw_resolve_gamma(in);
 }
 
 /* ---- the generalised error model ------------------------------------------ */
@@ -465,7 +478,7 @@ static void sw_evaluate(const sw_pin* in, const sw_filter* flt, const swarp_plan
     } else if (c->scheme == SWARP_PLAN_SCHEME_LOG) {
         s = swarp_split_log(in->near, in->far, K, e->splits, SWARP_PLAN_MAX_SPLITS + 1, &cnt);
     } else {
-        s = swarp_split_practical(in->near, in->far, SW_PSSM_LAMBDA, K, e->splits,
+        s = swarp_split_practical(in->near, in->far, SW_DEFAULT_PSSM_LAMBDA, K, e->splits,
                                   SWARP_PLAN_MAX_SPLITS + 1, &cnt);
     }
     if (swarp_status_is_error(s)) return;
