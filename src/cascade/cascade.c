@@ -6,14 +6,11 @@
 #include "cascade/cascade_internal.h"
 #include "geometry/geometry_internal.h"
 
-static swarp_status sw_check_splits(const double* splits, size_t m) {
+/* m split distances C_0 < ... < C_m, 1 <= m <= SWARP_SPLIT_MAX_COUNT */
+static swarp_status sw_check_split_distances(const double* splits, size_t m) {
     if (!splits) return SWARP_ERR_NULL_POINTER;
     if (m < 1 || m > SWARP_SPLIT_MAX_COUNT) return SWARP_ERR_SPLIT_COUNT;
-    for (size_t i = 0; i <= m; ++i)
-        if (!sw_finite(splits[i])) return SWARP_ERR_NON_FINITE;
-    for (size_t i = 0; i < m; ++i)
-        if (!(splits[i + 1] > splits[i])) return SWARP_ERR_NOT_INCREASING;
-    return SWARP_OK;
+    return sw_check_increasing(splits, m);
 }
 
 /* Depth selection without checks: the split containing z, clamped. */
@@ -41,8 +38,8 @@ SWARP_API swarp_status swarp_cascade_view_depth(const swarp_camera* cam, const s
         /* p - eye (or the sum) overflowed for coordinates near DBL_MAX:
          * again at a quarter scale (|p/4 - eye/4| <= DBL_MAX/2 per
          * component, the sum below DBL_MAX); a depth beyond DBL_MAX is not
-         * representable (issue 9, hard-case sweep: NON_FINITE for finite
-         * arguments) */
+         * representable: SWARP_ERR_OVERFLOW, never NON_FINITE for finite
+         * arguments */
         const double q = sw_dot(sw_sub(sw_scale(*p, 0.25), sw_scale(cam->eye, 0.25)), f);
         if (!(fabs(q) <= 0.25 * DBL_MAX)) return SWARP_ERR_OVERFLOW;
         z = 4.0 * q;
@@ -54,7 +51,7 @@ SWARP_API swarp_status swarp_cascade_view_depth(const swarp_camera* cam, const s
 SWARP_API swarp_status swarp_cascade_select_depth(const double* splits, size_t m, double view_depth,
                                                   uint32_t* out_index) {
     if (!out_index) return SWARP_ERR_NULL_POINTER;
-    swarp_status st = sw_check_splits(splits, m);
+    swarp_status st = sw_check_split_distances(splits, m);
     if (st != SWARP_OK) return st;
     if (!sw_finite(view_depth)) return SWARP_ERR_NON_FINITE;
     int outside;
@@ -65,7 +62,7 @@ SWARP_API swarp_status swarp_cascade_select_depth(const double* splits, size_t m
 SWARP_API swarp_status swarp_cascade_blend(const double* splits, size_t m, double view_depth,
                                            double band, uint32_t* out_index, double* out_weight) {
     if (!out_index || !out_weight) return SWARP_ERR_NULL_POINTER;
-    swarp_status st = sw_check_splits(splits, m);
+    swarp_status st = sw_check_split_distances(splits, m);
     if (st != SWARP_OK) return st;
     if (!sw_finite(view_depth) || !sw_finite(band)) return SWARP_ERR_NON_FINITE;
     if (!(band >= 0.0 && band < 1.0)) return SWARP_ERR_OUT_OF_RANGE;
@@ -136,10 +133,10 @@ SWARP_API swarp_status swarp_cascade_splits(double n, double f, const swarp_spli
     memset(&o, 0, sizeof o);
     if (opt) o = *opt;
     if (!sw_reserved_zero(o._reserved, 4)) return SWARP_ERR_RESERVED_NONZERO;
-    if (o.count == 0) o.count = 4;
+    if (o.count == 0) o.count = SW_DEFAULT_SPLIT_COUNT;
     if (o.scheme == SWARP_SCHEME_DEFAULT) {
         o.scheme = SWARP_SCHEME_PRACTICAL;
-        o.lambda = 0.5; /* PSSM's choice, [RHS] §3.3.2 */
+        o.lambda = SW_DEFAULT_PSSM_LAMBDA;
     }
     if (o.scheme != SWARP_SCHEME_UNIFORM && o.scheme != SWARP_SCHEME_LOG &&
         o.scheme != SWARP_SCHEME_PRACTICAL && o.scheme != SWARP_SCHEME_PSEUDO)
@@ -187,7 +184,7 @@ SWARP_API swarp_status swarp_cascade_splits(double n, double f, const swarp_spli
 SWARP_API swarp_status swarp_cascade_nopt(const double* splits, size_t m, double pseudo_near,
                                           double pseudo_far, double* out_n_primes) {
     if (!out_n_primes) return SWARP_ERR_NULL_POINTER;
-    swarp_status st = sw_check_splits(splits, m);
+    swarp_status st = sw_check_split_distances(splits, m);
     if (st != SWARP_OK) return st;
     double tmp[SWARP_SPLIT_MAX_COUNT];
     swarp_status info = SWARP_OK;
@@ -210,7 +207,7 @@ SWARP_API swarp_status swarp_cascade_error_curve(const swarp_error_config* cfg,
                                                  double* out_z, double* out_mx, double* out_mz,
                                                  size_t capacity, size_t* out_count) {
     if (!cfg || !n_primes || !out_count || !out_z) return SWARP_ERR_NULL_POINTER;
-    swarp_status st = sw_check_splits(splits, m);
+    swarp_status st = sw_check_split_distances(splits, m);
     if (st != SWARP_OK) return st;
     if (samples_per_split < 2 || samples_per_split > ((size_t)1 << 24)) return SWARP_ERR_OUT_OF_RANGE;
     const size_t total = m * samples_per_split;
@@ -259,7 +256,7 @@ _Static_assert(sizeof(swarp_cascade_options) ==
                    sizeof(swarp_setup_options) + sizeof(swarp_split_options) +
                        sizeof(swarp_stabilize_options) + (1 + SWARP_CASCADE_MAX_SPLITS) * sizeof(double) + 16,
                "swarp_cascade_options size");
-/* warp_per_split took one of the four reserved words: the size is unchanged */
+/* warp_per_split and three reserved words: the size of a 4-word reserved tail */
 _Static_assert(sizeof(swarp_cascade_options) ==
                    sizeof(swarp_setup_options) + sizeof(swarp_split_options) +
                        sizeof(swarp_stabilize_options) + (1 + SWARP_CASCADE_MAX_SPLITS) * sizeof(double) +
@@ -303,24 +300,351 @@ static void sw_kernel_scale(const swarp_mat4* M, swarp_vec3 c, double r_l, doubl
 static swarp_status sw_split_errors(const swarp_camera* cam, const swarp_setup_options* so,
                                     swarp_cascade_split* sp) {
     swarp_error_config cfg;
-    memset(&cfg, 0, sizeof cfg);
-    const double sw = so->screen_width ? so->screen_width : 1920.0;
-    const double sh = so->screen_height ? so->screen_height : 1080.0;
-    const double mw = so->map_width ? so->map_width : 2048.0;
-    const double mh = so->map_height ? so->map_height : mw;
-    cfg.near = sp->near;
-    cfg.far = sp->far;
-    cfg.theta = sw_half_fovy(cam->fovy);
-    cfg.res_ix = fmax(sw, sh);
-    cfg.res_iy = fmin(sw, sh);
-    cfg.res_s = fmax(mw, mh);
-    cfg.res_t = fmin(mw, mh);
+    sw_setup_error_config(so, sw_half_fovy(cam->fovy), sp->near, sp->far, &cfg);
     swarp_status st = swarp_error_max(&cfg, sp->n_eye, &sp->max_mx, &sp->max_mz);
     if (swarp_status_is_error(st)) return st;
     if (swarp_status_is_error(st = swarp_error_mx(&cfg, sp->near, sp->n_eye, &sp->mx_start))) return st;
     if (swarp_status_is_error(st = swarp_error_mz(&cfg, sp->near, sp->n_eye, &sp->mz_start))) return st;
     if (swarp_status_is_error(st = swarp_error_mx(&cfg, sp->far, sp->n_eye, &sp->mx_end))) return st;
     if (swarp_status_is_error(st = swarp_error_mz(&cfg, sp->far, sp->n_eye, &sp->mz_end))) return st;
+    return SWARP_OK;
+}
+
+/* One call's resolved options and the state its steps share. */
+typedef struct sw_cascade_run {
+    const swarp_camera* cam;
+    const swarp_light* light;
+    const swarp_aabb* scene;
+    swarp_cascade_options o;
+    swarp_cascade_warp wmode;
+    swarp_stabilize_mode smode;
+    uint32_t K, tile_res;
+    double r_l;               /* r_l of [RHS] (3.9) */
+    int any_user, user_warp;  /* some n_user[i] given; one of them a warp (not +inf) */
+    int single;               /* one split, unstabilised, no user warp: swarp_setup itself */
+    swarp_polyhedron H, Hi, Bi; /* H = V ∩ S; one split's H_i and B_i */
+    swarp_vec3 cam_f, cam_r, cam_u;
+    swarp_setup_result sr;    /* the current split's setup */
+    swarp_vec3 pts_buf[SWARP_BODY_MAX_POINTS];
+    const swarp_vec3* pts;    /* the current split's points of B_i */
+    size_t npts;
+} sw_cascade_run;
+
+/* The cascade's own options (the setup's are checked with the camera):
+ * reserved fields, enums, count and capacity, kernel size, per-split warps,
+ * stabilisation mode; their defaults resolved into *c. */
+static swarp_status sw_check_cascade_options(const swarp_cascade_options* opts, swarp_cascade_split* out_splits,
+                                             size_t capacity, size_t* out_count, sw_cascade_run* c) {
+    memset(&c->o, 0, sizeof c->o);
+    if (opts) c->o = *opts;
+    const swarp_cascade_options* o = &c->o;
+    if (!sw_reserved_zero(o->_reserved, 3)) return SWARP_ERR_RESERVED_NONZERO;
+    c->wmode = o->warp_per_split == SWARP_CASCADE_WARP_DEFAULT ? SWARP_CASCADE_WARP_EACH : o->warp_per_split;
+    if (c->wmode != SWARP_CASCADE_WARP_EACH && c->wmode != SWARP_CASCADE_WARP_FROM_FIRST)
+        return SWARP_ERR_UNKNOWN_ENUM;
+    c->K = o->split.count ? o->split.count : SW_DEFAULT_SPLIT_COUNT;
+    if (c->K > SWARP_CASCADE_MAX_SPLITS) return SWARP_ERR_SPLIT_COUNT;
+    if (capacity < c->K) {
+        *out_count = c->K;
+        return SWARP_ERR_CAPACITY;
+    }
+    if (!out_splits) return SWARP_ERR_NULL_POINTER;
+    if (!sw_finite(o->kernel_world_size)) return SWARP_ERR_NON_FINITE;
+    if (o->kernel_world_size < 0.0) return SWARP_ERR_OUT_OF_RANGE;
+    c->r_l = o->kernel_world_size > 0.0 ? o->kernel_world_size : 1.0;
+    c->any_user = c->user_warp = 0;
+    for (uint32_t i = 0; i < SWARP_CASCADE_MAX_SPLITS; ++i) {
+        const double nu = o->n_user[i];
+        if (isnan(nu) || nu == -INFINITY) return SWARP_ERR_NON_FINITE;
+        if (nu < 0.0) return SWARP_ERR_OUT_OF_RANGE;
+        if (nu != 0.0 && i < c->K) {
+            c->any_user = 1;
+            if (nu != INFINITY) c->user_warp = 1;
+        }
+    }
+    if (!sw_reserved_zero(o->stabilize._reserved, 4) || o->stabilize._reserved0 != 0)
+        return SWARP_ERR_RESERVED_NONZERO;
+    c->smode = o->stabilize.mode == SWARP_STABILIZE_DEFAULT ? SWARP_STABILIZE_NONE : o->stabilize.mode;
+    if (c->smode != SWARP_STABILIZE_NONE && c->smode != SWARP_STABILIZE_SPHERE && c->smode != SWARP_STABILIZE_LEVELS)
+        return SWARP_ERR_UNKNOWN_ENUM;
+    return SWARP_OK;
+}
+
+/* Camera, light, setup options, view range and box with the common checks
+ * in swarp_setup's order (every path of the cascade, also those that never
+ * call swarp_setup, sees the same statuses), then what stabilisation needs. */
+static swarp_status sw_check_cascade_scene(const sw_cascade_run* c) {
+    swarp_status st;
+    if ((st = sw_check_camera_shape(c->cam)) != SWARP_OK) return st;
+    if ((st = sw_check_light(c->light)) != SWARP_OK) return st;
+    if ((st = sw_check_setup_options(&c->o.setup)) != SWARP_OK) return st;
+    if ((st = sw_check_view_range(c->cam->near, c->cam->far)) != SWARP_OK) return st;
+    if ((st = sw_check_box(c->scene)) != SWARP_OK) return st;
+    if (c->smode != SWARP_STABILIZE_NONE) {
+        /* [RHS] §3.5: both solutions need the uniform texel grid */
+        if (c->o.setup.technique != SWARP_TECHNIQUE_UNIFORM || c->user_warp) return SWARP_ERR_STABILIZE_WARPED;
+        if (c->light->type != SWARP_LIGHT_DEFAULT && c->light->type != SWARP_LIGHT_DIRECTIONAL)
+            return SWARP_ERR_STABILIZE_LIGHT;
+    }
+    return SWARP_OK;
+}
+
+/* One split IS the single map: swarp_setup, bit for bit; the split options
+ * are still validated, and one split is [n, f] exactly. */
+static swarp_status sw_cascade_single_range(sw_cascade_run* c, swarp_cascade_result* res, swarp_status* st0) {
+    size_t cnt;
+    swarp_status st = swarp_setup(c->cam, c->light, c->scene, &c->o.setup, &c->sr, c->pts_buf,
+                                  SWARP_BODY_MAX_POINTS, &c->npts);
+    if (swarp_status_is_error(st)) return st;
+    *st0 = st;
+    swarp_split_options so = c->o.split;
+    so.count = 1;
+    swarp_status sst = swarp_cascade_splits(c->sr.view_near, c->sr.view_far, &so, res->splits,
+                                            SWARP_CASCADE_MAX_SPLITS + 1, &cnt);
+    if (swarp_status_is_error(sst)) return sst;
+    res->view_near = res->splits[0] = c->sr.view_near;
+    res->view_far = res->splits[1] = c->sr.view_far;
+    return SWARP_OK;
+}
+
+/* [RHS] §3.3.1 adjusted near/far (exactly as swarp_body_adjusted_range),
+ * keeping H = V ∩ S: each split's H_i is H clipped to its depth slab,
+ * cheaper than building V_i ∩ S again; then the split distances. */
+static swarp_status sw_cascade_split_range(sw_cascade_run* c, swarp_cascade_result* res) {
+    const swarp_camera* cam = c->cam;
+    swarp_status st;
+    /* [RHS] §4.3: a measured min depth moves the near plane out, as in
+     * swarp_setup; not for stabilised maps (constant ranges, below) */
+    double cam_near = cam->near;
+    if (c->o.setup.min_depth > 0.0 && c->smode == SWARP_STABILIZE_NONE) {
+        st = swarp_mindepth_near(cam->near, cam->far, c->o.setup.min_depth, NULL, &cam_near);
+        if (swarp_status_is_error(st)) return st;
+    }
+    /* H and the adjusted range camera-relative, as swarp_setup computes
+     * them (the same view range); H then back in world coordinates */
+    double n_adj, f_adj;
+    if ((st = sw_body_h_eye(cam, cam_near, cam->far, c->scene, &c->H, &n_adj, &f_adj)) != SWARP_OK) return st;
+    sw_poly_translate(&c->H, cam->eye);
+    sw_camera_basis(cam, &c->cam_f, &c->cam_r, &c->cam_u);
+    n_adj = sw_max(n_adj, cam_near);
+    f_adj = sw_min(sw_max(f_adj, n_adj), cam->far);
+    if (c->smode != SWARP_STABILIZE_NONE) {
+        /* [RHS] §3.5: both solutions need constant split ranges, so no
+         * view frustum adjustment: split the camera's own [near, far].
+         * The adjusted far moves with the camera (by fractions of a unit
+         * per frame in a walk), which would move every split border, the
+         * sphere and the level size, and the texels would drift. */
+        n_adj = cam->near;
+        f_adj = cam->far;
+    }
+    if (!(f_adj > n_adj)) {
+        /* H lies in one view plane: keep a sliver, as swarp_setup does */
+        const double pad = fmax(1e-9 * n_adj, 1e-300);
+        if (n_adj - pad > cam_near) n_adj -= pad;
+        else f_adj += pad;
+    }
+    swarp_split_options so = c->o.split;
+    so.count = c->K;
+    size_t cnt;
+    st = swarp_cascade_splits(n_adj, f_adj, &so, res->splits, SWARP_CASCADE_MAX_SPLITS + 1, &cnt);
+    if (swarp_status_is_error(st)) return st;
+    res->view_near = n_adj;
+    res->view_far = f_adj;
+    return SWARP_OK;
+}
+
+/* Split i's setup options: its own n_user ([RHS] §3.4 "adjust the warping
+ * strength for each split independently"), the first split's strength
+ * carried through the scheme (FROM_FIRST), or the pseudo-near/far of
+ * [RHS] §4.2 on the outer splits only. */
+static swarp_setup_options sw_split_setup_options(const sw_cascade_run* c, uint32_t i, const double* nu,
+                                                  const swarp_cascade_split* sp, const swarp_cascade_result* res) {
+    const swarp_cascade_split* s = &sp[i];
+    swarp_setup_options so = c->o.setup;
+    if (c->o.n_user[i] != 0.0) {
+        so.technique = c->o.n_user[i] == INFINITY ? SWARP_TECHNIQUE_UNIFORM : SWARP_TECHNIQUE_LISPSM;
+        so.param = SWARP_WARP_PARAM_USER;
+        so.n_user = c->o.n_user[i];
+    } else if (c->wmode == SWARP_CASCADE_WARP_FROM_FIRST && i > 0) {
+        /* [RHS] §3.4 arbitrary warping "based upon the variable first
+         * split according to the currently used split scheme":
+         * n'_i = n'_0 nu_i / nu_0 (uniform first split: all uniform) */
+        const double n0 = sp[0].n_eye, ni = n0 * (nu[i] / nu[0]);
+        if (!(n0 < INFINITY) || !(ni < INFINITY)) {
+            so.technique = SWARP_TECHNIQUE_UNIFORM;
+        } else {
+            so.technique = SWARP_TECHNIQUE_LISPSM;
+            so.param = SWARP_WARP_PARAM_USER;
+            so.n_user = ni;
+        }
+    } else if (so.param == SWARP_WARP_PARAM_PSEUDO && c->K > 1) {
+        /* the fractions of the whole range become fractions of the split's */
+        const double whole = res->view_far - res->view_near, len = s->far - s->near;
+        so.pseudo_near = i == 0 ? fmin(c->o.setup.pseudo_near * whole / len, SW_PSEUDO_MAX_FRACTION) : 0.0;
+        so.pseudo_far = i + 1 == c->K ? fmin(c->o.setup.pseudo_far * whole / len, SW_PSEUDO_MAX_FRACTION) : 0.0;
+    }
+    return so;
+}
+
+/* B_i of split i from H_i = H within C_i <= (p - eye).f <= C_{i+1} (the
+ * outer ends are H's own) and its light matrix (swarp_setup_points); a
+ * LEVELS split past the scene maps its own frustum. */
+static swarp_status sw_split_body_matrix(sw_cascade_run* c, const swarp_cascade_split* s, uint32_t i,
+                                         double f_dot_eye, const swarp_setup_options* so) {
+    swarp_status st;
+    const swarp_polyhedron* hp = &c->H;
+    if (i > 0) {
+        if ((st = sw_poly_clip(hp, sw_scale(c->cam_f, -1.0), f_dot_eye + s->near, &c->Hi)) != SWARP_OK) return st;
+        hp = &c->Hi;
+    }
+    if (i + 1 < c->K) {
+        if ((st = sw_poly_clip(hp, c->cam_f, -f_dot_eye - s->far, &c->Hi)) != SWARP_OK) return st;
+        hp = &c->Hi;
+    }
+    if (hp->vertex_count == 0 && c->smode == SWARP_STABILIZE_LEVELS) {
+        /* the constant split range ([RHS] §3.5) may reach past the scene:
+         * nothing to shadow there, the map covers the split frustum */
+        sw_cam_frame fr;
+        fr.eye = c->cam->eye;
+        fr.f = c->cam_f;
+        fr.r = c->cam_r;
+        fr.u = c->cam_u;
+        fr.tan_half = tan(0.5 * c->cam->fovy);
+        fr.aspect = c->cam->aspect;
+        sw_frustum_corners(&fr, s->near, s->far, c->pts_buf);
+        c->pts = c->pts_buf;
+        c->npts = 8;
+        sw_identity(&c->sr.matrix); /* replaced by the stabiliser */
+        c->sr.n_eye = INFINITY;
+        return SWARP_INFO_SPLIT_NO_SCENE;
+    }
+    if (hp->vertex_count == 0) return SWARP_ERR_SPLIT_EMPTY;
+    st = sw_body_from_h(hp, c->light, c->scene, &c->Bi);
+    if (st == SWARP_ERR_BODY_EMPTY) return SWARP_ERR_SPLIT_EMPTY;
+    if (st != SWARP_OK) return st;
+    if (c->light->type == SWARP_LIGHT_POINT && c->light->cone_angle > 0.0) {
+        /* receivers a spot lights: H_i ∩ L (as swarp_setup_range) */
+        st = swarp_body_receivers(hp, c->light, &c->Hi);
+        if (st == SWARP_ERR_BODY_EMPTY) return SWARP_ERR_SPLIT_EMPTY;
+        if (st != SWARP_OK) return st;
+        hp = &c->Hi;
+    }
+    st = swarp_setup_points(c->cam, c->light, c->Bi.vertices, c->Bi.vertex_count, hp->vertices, hp->vertex_count,
+                            s->near, s->far, so, &c->sr);
+    if (swarp_status_is_error(st)) return st;
+    c->pts = c->Bi.vertices;
+    c->npts = c->Bi.vertex_count;
+    return st;
+}
+
+/* Split i's light matrix into c->sr (and its points c->pts): the sphere of
+ * SPHERE stabilisation alone, PSM's full call (its unit-cube clipping wants
+ * B as a polyhedron), or B_i from H_i.  The single map has it already. */
+static swarp_status sw_split_matrix(sw_cascade_run* c, const swarp_cascade_split* s, uint32_t i, double f_dot_eye,
+                                    const swarp_setup_options* so, swarp_status single_st) {
+    if (c->smode == SWARP_STABILIZE_SPHERE) {
+        /* no body needed (a split beyond the scene still gets its
+         * constant-size map) */
+        c->npts = 0;
+        sw_identity(&c->sr.matrix); /* replaced below */
+        c->sr.n_eye = INFINITY;
+        return SWARP_OK;
+    }
+    if (c->single) return single_st;
+    if (so->technique == SWARP_TECHNIQUE_PSM) {
+        swarp_status st = swarp_setup_range(c->cam, c->light, c->scene, s->near, s->far, so, &c->sr, c->pts_buf,
+                                            SWARP_BODY_MAX_POINTS, &c->npts);
+        c->pts = c->pts_buf;
+        if (st == SWARP_ERR_BODY_EMPTY) return SWARP_ERR_SPLIT_EMPTY;
+        return st;
+    }
+    return sw_split_body_matrix(c, s, i, f_dot_eye, so);
+}
+
+/* [RHS] §3.5 flicker reduction of split i's matrix (sphere or levels);
+ * the whole cascade uses the setup's depth convention. */
+static swarp_status sw_split_stabilize(const sw_cascade_run* c, swarp_cascade_split* s, swarp_vec3* sphere_center,
+                                       swarp_status* info) {
+    swarp_stabilize_report rep;
+    memset(&rep, 0, sizeof rep);
+    swarp_stabilize_options sto = c->o.stabilize;
+    sto.depth = c->o.setup.depth_range;
+    swarp_status st = swarp_stabilize_directional(c->cam, s->near, s->far, &c->light->direction, c->pts, c->npts,
+                                                  c->scene, c->tile_res, &sto, &s->matrix, &rep);
+    if (swarp_status_is_error(st)) return st;
+    if (st != SWARP_OK) {
+        s->status = st;
+        if (*info == SWARP_OK) *info = st;
+    }
+    s->texel_size = fmax(rep.texel_size_x, rep.texel_size_y);
+    *sphere_center = rep.sphere_center;
+    s->n_eye = INFINITY;
+    return SWARP_OK;
+}
+
+/* Split i's atlas place, kernel scale [RHS] (3.9) and depth per world unit
+ * at the centroid of B_i (origin-relative when stabilised), and its error
+ * model values. */
+static swarp_status sw_split_report(const sw_cascade_run* c, swarp_cascade_split* s, const swarp_atlas_tile* tile,
+                                    swarp_vec3 sphere_center, const swarp_atlas_info* atlas) {
+    s->tile = *tile;
+    sw_mul(&tile->clip_to_atlas, &s->matrix, &s->atlas_matrix);
+    swarp_vec3 ctr = sw_v3(0, 0, 0);
+    for (size_t k = 0; k < c->npts; ++k) ctr = sw_add(ctr, c->pts[k]);
+    ctr = c->npts ? sw_scale(ctr, 1.0 / (double)c->npts) : sphere_center;
+    if (c->smode != SWARP_STABILIZE_NONE) ctr = sw_sub(ctr, c->o.stabilize.origin);
+    sw_kernel_scale(&s->matrix, ctr, c->r_l, atlas->l_sc, s->kernel_scale);
+    /* world bias -> this split's depth units, at the centroid */
+    swarp_bias_map bm;
+    memset(&bm, 0, sizeof bm);
+    bm.world_to_clip = s->matrix;
+    bm.res_s = bm.res_t = (double)c->tile_res;
+    bm.depth = c->o.setup.depth_range;
+    swarp_light lw = *c->light;
+    if (c->smode != SWARP_STABILIZE_NONE) lw.position = sw_sub(lw.position, c->o.stabilize.origin);
+    if (swarp_bias_depth_per_world(&bm, &lw, &ctr, &s->depth_per_world) != SWARP_OK)
+        s->depth_per_world = 0.0; /* point light at the centroid */
+    swarp_status st = sw_split_errors(c->cam, &c->o.setup, s);
+    if (st != SWARP_OK) return st;
+    if (!sw_mat_finite(&s->matrix) || !sw_mat_finite(&s->atlas_matrix) || !sw_finite(s->kernel_scale[0]) ||
+        !sw_finite(s->kernel_scale[1]))
+        return SWARP_ERR_NON_FINITE;
+    return SWARP_OK;
+}
+
+/* Every split: its setup options, light matrix, stabilisation and report;
+ * res collects the maxima, *info the first informational status. */
+static swarp_status sw_cascade_splits_compute(sw_cascade_run* c, swarp_status single_st, const swarp_atlas_tile* tiles,
+                                              swarp_cascade_result* res, swarp_cascade_split* sp,
+                                              swarp_status* info) {
+    const double f_dot_eye = sw_dot(c->cam_f, c->cam->eye);
+    /* FROM_FIRST: nu_i = n_opt of (3.2) for each split's own range, the
+     * scale by which the first split's n' is carried to split i */
+    double nu[SWARP_CASCADE_MAX_SPLITS];
+    swarp_status st;
+    if (c->wmode == SWARP_CASCADE_WARP_FROM_FIRST && c->K > 1) {
+        st = swarp_cascade_nopt(res->splits, c->K, 0.0, 0.0, nu);
+        if (swarp_status_is_error(st)) return st;
+    }
+    for (uint32_t i = 0; i < c->K; ++i) {
+        swarp_cascade_split* s = &sp[i];
+        swarp_vec3 sphere_center = sw_v3(0, 0, 0);
+        s->near = res->splits[i];
+        s->far = res->splits[i + 1];
+        const swarp_setup_options so = sw_split_setup_options(c, i, nu, sp, res);
+        st = sw_split_matrix(c, s, i, f_dot_eye, &so, single_st);
+        if (swarp_status_is_error(st)) return st;
+        s->status = st;
+        if (st != SWARP_OK && *info == SWARP_OK) *info = st;
+        s->point_count = (uint32_t)c->npts;
+        s->matrix = c->sr.matrix;
+        s->n_eye = c->sr.n_eye;
+        if (c->smode != SWARP_STABILIZE_NONE && (st = sw_split_stabilize(c, s, &sphere_center, info)) != SWARP_OK)
+            return st;
+        if ((st = sw_split_report(c, s, &tiles[i], sphere_center, &res->atlas)) != SWARP_OK) return st;
+        if (s->max_mx > res->max_mx) res->max_mx = s->max_mx;
+        if (s->max_mz > res->max_mz) res->max_mz = s->max_mz;
+    }
     return SWARP_OK;
 }
 
@@ -331,293 +655,36 @@ SWARP_API swarp_status swarp_cascade_setup(const swarp_camera* cam, const swarp_
                                            swarp_cascade_split* out_splits, size_t capacity,
                                            size_t* out_count) {
     if (!cam || !light || !scene || !out || !out_count) return SWARP_ERR_NULL_POINTER;
-    swarp_cascade_options o;
-    memset(&o, 0, sizeof o);
-    if (opts) o = *opts;
-    if (!sw_reserved_zero(o._reserved, 3)) return SWARP_ERR_RESERVED_NONZERO;
-    const swarp_cascade_warp wmode =
-        o.warp_per_split == SWARP_CASCADE_WARP_DEFAULT ? SWARP_CASCADE_WARP_EACH : o.warp_per_split;
-    if (wmode != SWARP_CASCADE_WARP_EACH && wmode != SWARP_CASCADE_WARP_FROM_FIRST)
-        return SWARP_ERR_UNKNOWN_ENUM;
-    /* the setup's enums up front: the split path overrides technique and
-     * param per split (user warps), so a bad value could otherwise pass
-     * (found by the hard-case sweep: SWARP_OK with technique 367000474) */
-    if (!sw_reserved_zero(o.setup._reserved, 2) || o.setup._pad0 != 0 || o.setup._pad1 != 0)
-        return SWARP_ERR_RESERVED_NONZERO; /* the stabilised path never reaches swarp_setup's check */
-    if ((uint32_t)o.setup.technique > (uint32_t)SWARP_TECHNIQUE_PSM ||
-        (uint32_t)o.setup.param > (uint32_t)SWARP_WARP_PARAM_USER ||
-        (uint32_t)o.setup.center > (uint32_t)SWARP_WARP_CENTER_NEAREST_VERTEX ||
-        (uint32_t)o.setup.depth_range > (uint32_t)SWARP_DEPTH_ZERO_TO_ONE)
-        return SWARP_ERR_UNKNOWN_ENUM;
-    const uint32_t K = o.split.count ? o.split.count : 4;
-    if (K > SWARP_CASCADE_MAX_SPLITS) return SWARP_ERR_SPLIT_COUNT;
-    if (capacity < K) {
-        *out_count = K;
-        return SWARP_ERR_CAPACITY;
-    }
-    if (!out_splits) return SWARP_ERR_NULL_POINTER;
-    if (!sw_finite(o.kernel_world_size)) return SWARP_ERR_NON_FINITE;
-    if (o.kernel_world_size < 0.0) return SWARP_ERR_OUT_OF_RANGE;
-    const double r_l = o.kernel_world_size > 0.0 ? o.kernel_world_size : 1.0;
-    int any_user = 0, user_warp = 0;
-    for (uint32_t i = 0; i < SWARP_CASCADE_MAX_SPLITS; ++i) {
-        const double nu = o.n_user[i];
-        if (isnan(nu) || nu == -INFINITY) return SWARP_ERR_NON_FINITE;
-        if (nu < 0.0) return SWARP_ERR_OUT_OF_RANGE;
-        if (nu != 0.0 && i < K) {
-            any_user = 1;
-            if (nu != INFINITY) user_warp = 1;
-        }
-    }
-    if (!sw_reserved_zero(o.stabilize._reserved, 4) || o.stabilize._reserved0 != 0)
-        return SWARP_ERR_RESERVED_NONZERO;
-    swarp_stabilize_mode smode = o.stabilize.mode == SWARP_STABILIZE_DEFAULT ? SWARP_STABILIZE_NONE
-                                                                             : o.stabilize.mode;
-    if (smode != SWARP_STABILIZE_NONE && smode != SWARP_STABILIZE_SPHERE &&
-        smode != SWARP_STABILIZE_LEVELS)
-        return SWARP_ERR_UNKNOWN_ENUM;
-    if (smode != SWARP_STABILIZE_NONE) {
-        /* [RHS] §3.5: both solutions need the uniform texel grid */
-        if (o.setup.technique != SWARP_TECHNIQUE_UNIFORM || user_warp) return SWARP_ERR_STABILIZE_WARPED;
-        if (light->type != SWARP_LIGHT_DEFAULT && light->type != SWARP_LIGHT_DIRECTIONAL)
-            return SWARP_ERR_STABILIZE_LIGHT;
-    }
-    const uint32_t tile_res = o.setup.map_width ? o.setup.map_width : 2048u;
+    sw_cascade_run c;
+    c.cam = cam;
+    c.light = light;
+    c.scene = scene;
+    swarp_status st = sw_check_cascade_options(opts, out_splits, capacity, out_count, &c);
+    if (st != SWARP_OK) return st;
+    if ((st = sw_check_cascade_scene(&c)) != SWARP_OK) return st;
+    uint32_t map_h;
+    sw_setup_map_size(&c.o.setup, &c.tile_res, &map_h); /* the atlas tile: map_width */
 
     swarp_cascade_result res;
     memset(&res, 0, sizeof res);
-    res.split_count = K;
+    res.split_count = c.K;
     swarp_cascade_split sp[SWARP_CASCADE_MAX_SPLITS];
-    memset(sp, 0, K * sizeof sp[0]);
+    memset(sp, 0, c.K * sizeof sp[0]);
     swarp_atlas_tile tiles[SWARP_ATLAS_MAX_SPLITS];
     size_t cnt;
-    swarp_status st = swarp_atlas_layout(K, tile_res, o.setup.depth_range, &res.atlas, tiles,
-                                         SWARP_ATLAS_MAX_SPLITS, &cnt);
+    st = swarp_atlas_layout(c.K, c.tile_res, c.o.setup.depth_range, &res.atlas, tiles, SWARP_ATLAS_MAX_SPLITS, &cnt);
     if (st != SWARP_OK) return st;
 
-    swarp_vec3 pts_buf[SWARP_BODY_MAX_POINTS];
-    const swarp_vec3* pts = pts_buf;
-    size_t npts = 0;
-    swarp_setup_result sr;
-    swarp_polyhedron H, Hi, Bi;
-    swarp_vec3 cam_f = {0, 0, -1}, cam_r, cam_u;
-    swarp_status info = SWARP_OK;
-    const int single = (K == 1 && smode == SWARP_STABILIZE_NONE && !any_user);
-    /* the setup's own checks (min_depth among them) also on the split path */
-    if (isnan(o.setup.min_depth)) return SWARP_ERR_NON_FINITE;
-    if (o.setup.min_depth < 0.0) return SWARP_ERR_OUT_OF_RANGE;
-    if (single) {
-        /* one split IS the single map: the same call, bit for bit */
-        st = swarp_setup(cam, light, scene, &o.setup, &sr, pts_buf, SWARP_BODY_MAX_POINTS, &npts);
-        if (swarp_status_is_error(st)) return st;
-        /* the split options are still validated; one split is [n, f] exactly */
-        swarp_split_options so = o.split;
-        so.count = 1;
-        swarp_status sst = swarp_cascade_splits(sr.view_near, sr.view_far, &so, res.splits,
-                                                SWARP_CASCADE_MAX_SPLITS + 1, &cnt);
-        if (swarp_status_is_error(sst)) return sst;
-        res.view_near = res.splits[0] = sr.view_near;
-        res.view_far = res.splits[1] = sr.view_far;
-    } else {
-        /* [RHS] §3.3.1 adjusted near/far (exactly as swarp_body_adjusted_range),
-         * keeping H = V ∩ S: each split's H_i is H clipped to its depth slab,
-         * cheaper than building V_i ∩ S again */
-        if ((st = sw_check_camera(cam)) != SWARP_OK) return st;
-        if ((st = sw_check_light(light)) != SWARP_OK) return st;
-        if ((st = sw_check_box(scene)) != SWARP_OK) return st;
-        /* [RHS] §4.3: a measured min depth moves the near plane out, as in
-         * swarp_setup; not for stabilised maps (constant ranges, below) */
-        double cam_near = cam->near;
-        if (o.setup.min_depth > 0.0 && smode == SWARP_STABILIZE_NONE) {
-            st = swarp_mindepth_near(cam->near, cam->far, o.setup.min_depth, NULL, &cam_near);
-            if (swarp_status_is_error(st)) return st;
-        }
-        /* H and the adjusted range camera-relative, as swarp_setup computes
-         * them (the same view range); H then back in world coordinates */
-        double n_adj, f_adj;
-        if ((st = sw_body_h_eye(cam, cam_near, cam->far, scene, &H, &n_adj, &f_adj)) != SWARP_OK) return st;
-        sw_poly_translate(&H, cam->eye);
-        sw_camera_basis(cam, &cam_f, &cam_r, &cam_u);
-        n_adj = sw_max(n_adj, cam_near);
-        f_adj = sw_min(sw_max(f_adj, n_adj), cam->far);
-        if (smode != SWARP_STABILIZE_NONE) {
-            /* [RHS] §3.5: both solutions need constant split ranges, so no
-             * view frustum adjustment: split the camera's own [near, far].
-             * The adjusted far moves with the camera (the demo measured
-             * 792.80 -> 793.22 -> 793.58 in three frames of a walk), which
-             * moves every split border, the sphere and the level size, and
-             * the texels drift by fractions per frame. */
-            n_adj = cam->near;
-            f_adj = cam->far;
-        }
-        if (!(f_adj > n_adj)) {
-            /* H lies in one view plane: keep a sliver, as swarp_setup does */
-            const double pad = fmax(1e-9 * n_adj, 1e-300);
-            if (n_adj - pad > cam_near) n_adj -= pad;
-            else f_adj += pad;
-        }
-        swarp_split_options so = o.split;
-        so.count = K;
-        st = swarp_cascade_splits(n_adj, f_adj, &so, res.splits, SWARP_CASCADE_MAX_SPLITS + 1, &cnt);
-        if (swarp_status_is_error(st)) return st;
-        res.view_near = n_adj;
-        res.view_far = f_adj;
-    }
-    const double f_dot_eye = sw_dot(cam_f, cam->eye);
-    /* FROM_FIRST: nu_i = n_opt of (3.2) for each split's own range, the
-     * scale by which the first split's n' is carried to split i */
-    double nu[SWARP_CASCADE_MAX_SPLITS];
-    if (wmode == SWARP_CASCADE_WARP_FROM_FIRST && K > 1) {
-        st = swarp_cascade_nopt(res.splits, K, 0.0, 0.0, nu);
-        if (swarp_status_is_error(st)) return st;
-    }
-
-    for (uint32_t i = 0; i < K; ++i) {
-        swarp_cascade_split* s = &sp[i];
-        swarp_vec3 sphere_center = sw_v3(0, 0, 0);
-        s->near = res.splits[i];
-        s->far = res.splits[i + 1];
-        swarp_setup_options so = o.setup;
-        if (o.n_user[i] != 0.0) {
-            /* per-split warp strength ([RHS] §3.4: "adjust the warping
-             * strength for each split independently") */
-            so.technique = o.n_user[i] == INFINITY ? SWARP_TECHNIQUE_UNIFORM : SWARP_TECHNIQUE_LISPSM;
-            so.param = SWARP_WARP_PARAM_USER;
-            so.n_user = o.n_user[i];
-        } else if (wmode == SWARP_CASCADE_WARP_FROM_FIRST && i > 0) {
-            /* [RHS] §3.4 arbitrary warping "based upon the variable first
-             * split according to the currently used split scheme":
-             * n'_i = n'_0 nu_i / nu_0 (uniform first split: all uniform) */
-            const double n0 = sp[0].n_eye, ni = n0 * (nu[i] / nu[0]);
-            if (!(n0 < INFINITY) || !(ni < INFINITY)) {
-                so.technique = SWARP_TECHNIQUE_UNIFORM;
-            } else {
-                so.technique = SWARP_TECHNIQUE_LISPSM;
-                so.param = SWARP_WARP_PARAM_USER;
-                so.n_user = ni;
-            }
-        } else if (so.param == SWARP_WARP_PARAM_PSEUDO && K > 1) {
-            /* [RHS] §4.2: pseudo-near only for the first split, pseudo-far only
-             * for the last; the fractions of the whole range become fractions
-             * of that split's range */
-            const double whole = res.view_far - res.view_near, len = s->far - s->near;
-            so.pseudo_near = i == 0 ? fmin(o.setup.pseudo_near * whole / len, SW_PSEUDO_MAX_FRACTION) : 0.0;
-            so.pseudo_far = i + 1 == K ? fmin(o.setup.pseudo_far * whole / len, SW_PSEUDO_MAX_FRACTION) : 0.0;
-        }
-        if (smode == SWARP_STABILIZE_SPHERE) {
-            /* the sphere alone decides the map: no body needed (a split
-             * beyond the scene still gets its constant-size map) */
-            npts = 0;
-            st = SWARP_OK;
-            sw_identity(&sr.matrix); /* replaced below */
-            sr.n_eye = INFINITY;
-        } else if (!single && so.technique == SWARP_TECHNIQUE_PSM) {
-            /* PSM's unit-cube clipping wants B as a polyhedron: the full call */
-            st = swarp_setup_range(cam, light, scene, s->near, s->far, &so, &sr, pts_buf,
-                                   SWARP_BODY_MAX_POINTS, &npts);
-            pts = pts_buf;
-            if (st == SWARP_ERR_BODY_EMPTY) return SWARP_ERR_SPLIT_EMPTY;
-            if (swarp_status_is_error(st)) return st;
-        } else if (!single) {
-            /* H_i = H within C_i <= (p - eye).f <= C_{i+1} (outer ends are H's own) */
-            const swarp_polyhedron* hp = &H;
-            if (i > 0) {
-                st = sw_poly_clip(hp, sw_scale(cam_f, -1.0), f_dot_eye + s->near, &Hi);
-                if (st != SWARP_OK) return st;
-                hp = &Hi;
-            }
-            if (i + 1 < K) {
-                st = sw_poly_clip(hp, cam_f, -f_dot_eye - s->far, &Hi);
-                if (st != SWARP_OK) return st;
-                hp = &Hi;
-            }
-            if (hp->vertex_count == 0 && smode == SWARP_STABILIZE_LEVELS) {
-                /* the constant split range ([RHS] §3.5) may reach past the
-                 * scene: nothing to shadow there, the map covers the split
-                 * frustum itself */
-                sw_cam_frame fr;
-                fr.eye = cam->eye;
-                fr.f = cam_f;
-                fr.r = cam_r;
-                fr.u = cam_u;
-                fr.tan_half = tan(0.5 * cam->fovy);
-                fr.aspect = cam->aspect;
-                sw_frustum_corners(&fr, s->near, s->far, pts_buf);
-                pts = pts_buf;
-                npts = 8;
-                st = SWARP_INFO_SPLIT_NO_SCENE;
-                sw_identity(&sr.matrix); /* replaced by the stabiliser */
-                sr.n_eye = INFINITY;
-            } else {
-            if (hp->vertex_count == 0) return SWARP_ERR_SPLIT_EMPTY;
-            st = sw_body_from_h(hp, light, scene, &Bi);
-            if (st == SWARP_ERR_BODY_EMPTY) return SWARP_ERR_SPLIT_EMPTY;
-            if (st != SWARP_OK) return st;
-            if (light->type == SWARP_LIGHT_POINT && light->cone_angle > 0.0) {
-                /* receivers a spot lights: H_i ∩ L (as swarp_setup_range) */
-                st = swarp_body_receivers(hp, light, &Hi);
-                if (st == SWARP_ERR_BODY_EMPTY) return SWARP_ERR_SPLIT_EMPTY;
-                if (st != SWARP_OK) return st;
-                hp = &Hi;
-            }
-            st = swarp_setup_points(cam, light, Bi.vertices, Bi.vertex_count, hp->vertices,
-                                    hp->vertex_count, s->near, s->far, &so, &sr);
-            if (swarp_status_is_error(st)) return st;
-            pts = Bi.vertices;
-            npts = Bi.vertex_count;
-            }
-        }
-        s->status = st;
-        if (st != SWARP_OK && info == SWARP_OK) info = st;
-        s->point_count = (uint32_t)npts;
-        s->matrix = sr.matrix;
-        s->n_eye = sr.n_eye;
-        if (smode != SWARP_STABILIZE_NONE) {
-            swarp_stabilize_report rep;
-            memset(&rep, 0, sizeof rep);
-            /* one depth convention for the whole cascade: the setup's */
-            swarp_stabilize_options sto = o.stabilize;
-            sto.depth = o.setup.depth_range;
-            st = swarp_stabilize_directional(cam, s->near, s->far, &light->direction, pts, npts, scene,
-                                             tile_res, &sto, &s->matrix, &rep);
-            if (swarp_status_is_error(st)) return st;
-            if (st != SWARP_OK) {
-                s->status = st;
-                if (info == SWARP_OK) info = st;
-            }
-            s->texel_size = fmax(rep.texel_size_x, rep.texel_size_y);
-            sphere_center = rep.sphere_center;
-            s->n_eye = INFINITY;
-        }
-        s->tile = tiles[i];
-        sw_mul(&tiles[i].clip_to_atlas, &s->matrix, &s->atlas_matrix);
-        /* kernel scale at the centroid of B_i (origin-relative when stabilised) */
-        swarp_vec3 c = sw_v3(0, 0, 0);
-        for (size_t k = 0; k < npts; ++k) c = sw_add(c, pts[k]);
-        c = npts ? sw_scale(c, 1.0 / (double)npts) : sphere_center;
-        if (smode != SWARP_STABILIZE_NONE) c = sw_sub(c, o.stabilize.origin);
-        sw_kernel_scale(&s->matrix, c, r_l, res.atlas.l_sc, s->kernel_scale);
-        {
-            /* world bias -> this split's depth units, at the centroid */
-            swarp_bias_map bm;
-            memset(&bm, 0, sizeof bm);
-            bm.world_to_clip = s->matrix;
-            bm.res_s = bm.res_t = (double)tile_res;
-            bm.depth = o.setup.depth_range;
-            swarp_light lw = *light;
-            if (smode != SWARP_STABILIZE_NONE) lw.position = sw_sub(lw.position, o.stabilize.origin);
-            st = swarp_bias_depth_per_world(&bm, &lw, &c, &s->depth_per_world);
-            if (st != SWARP_OK) s->depth_per_world = 0.0; /* point light at the centroid */
-        }
-        if ((st = sw_split_errors(cam, &o.setup, s)) != SWARP_OK) return st;
-        if (s->max_mx > res.max_mx) res.max_mx = s->max_mx;
-        if (s->max_mz > res.max_mz) res.max_mz = s->max_mz;
-        if (!sw_mat_finite(&s->matrix) || !sw_mat_finite(&s->atlas_matrix) ||
-            !sw_finite(s->kernel_scale[0]) || !sw_finite(s->kernel_scale[1]))
-            return SWARP_ERR_NON_FINITE;
-    }
-    memcpy(out_splits, sp, K * sizeof *sp);
+    c.pts = c.pts_buf;
+    c.npts = 0;
+    c.cam_f = sw_v3(0, 0, -1);
+    c.single = (c.K == 1 && c.smode == SWARP_STABILIZE_NONE && !c.any_user);
+    swarp_status single_st = SWARP_OK, info = SWARP_OK;
+    st = c.single ? sw_cascade_single_range(&c, &res, &single_st) : sw_cascade_split_range(&c, &res);
+    if (st != SWARP_OK) return st;
+    if ((st = sw_cascade_splits_compute(&c, single_st, tiles, &res, sp, &info)) != SWARP_OK) return st;
+    memcpy(out_splits, sp, c.K * sizeof *sp);
     *out = res;
-    *out_count = K;
+    *out_count = c.K;
     return info;
 }

@@ -1,4 +1,4 @@
-/* Internal helpers of the splits stage (cascade, stabilise, bias, atlas). */
+/* Internal helpers of the cascade stage (cascade, stabilise, bias, atlas). */
 #ifndef SWARP_CASCADE_INTERNAL_H
 #define SWARP_CASCADE_INTERNAL_H
 
@@ -11,26 +11,18 @@ typedef struct sw_cam_frame {
     double aspect;
 } sw_cam_frame;
 
-/* Validates a camera except near/far (the caller checks its own range) and
- * builds its frame.  Returns a status; *out written only on SWARP_OK. */
+/* Validates a camera except near/far with the common camera check (the
+ * caller checks its own range) and builds its frame.  Returns a status;
+ * *out written only on SWARP_OK. */
 static inline swarp_status sw_cam_frame_make(const swarp_camera* cam, sw_cam_frame* out) {
     if (!cam) return SWARP_ERR_NULL_POINTER;
-    if (!sw_reserved_zero(cam->_reserved, 4)) return SWARP_ERR_RESERVED_NONZERO;
-    if (!sw_finite3(&cam->eye) || !sw_finite3(&cam->dir) || !sw_finite3(&cam->up) ||
-        !sw_finite(cam->fovy) || !sw_finite(cam->aspect))
-        return SWARP_ERR_NON_FINITE;
-    if (!(cam->fovy > 0.0 && cam->fovy < SWARP_PI)) return SWARP_ERR_FOV;
-    if (!(cam->aspect > 0.0)) return SWARP_ERR_OUT_OF_RANGE;
+    swarp_status s = sw_check_camera_shape(cam);
+    if (s != SWARP_OK) return s;
     sw_cam_frame fr;
-    if (!sw_normalize(cam->dir, &fr.f)) return SWARP_ERR_ZERO_VECTOR;
     swarp_vec3 up;
-    if (!sw_normalize(cam->up, &up)) return SWARP_ERR_ZERO_VECTOR;
-    /* |f x up| below this means up is within ~1e-6 degrees of the view
-     * direction: no meaningful right vector. */
-    const double parallel_eps = 1e-8;
-    swarp_vec3 r = sw_cross(fr.f, up);
-    if (!(sw_len(r) > parallel_eps)) return SWARP_ERR_DEGENERATE;
-    sw_normalize(r, &fr.r);
+    if (!sw_normalize(cam->dir, &fr.f) || !sw_normalize(cam->up, &up)) return SWARP_ERR_ZERO_VECTOR;
+    /* |f x up| >= SW_CAMERA_MIN_UP_SIN (checked) up to rounding */
+    if (!sw_normalize(sw_cross(fr.f, up), &fr.r)) return SWARP_ERR_DEGENERATE;
     fr.u = sw_cross(fr.r, fr.f);
     fr.eye = cam->eye;
     fr.tan_half = tan(0.5 * cam->fovy);
@@ -56,9 +48,7 @@ static inline void sw_frustum_corners(const sw_cam_frame* fr, double n, double f
     }
 }
 
-static inline int sw_depth_range_ok(swarp_depth_range d) {
-    return d == SWARP_DEPTH_DEFAULT || d == SWARP_DEPTH_NEG_ONE_TO_ONE ||
-           d == SWARP_DEPTH_ZERO_TO_ONE;
-}
+/* the common depth-range check as a predicate */
+static inline int sw_depth_range_ok(swarp_depth_range d) { return sw_check_depth_range(d) == SWARP_OK; }
 
 #endif
