@@ -570,15 +570,25 @@ SWARP_API swarp_status swarp_setup_points(const swarp_camera* cam, const swarp_l
 /** @brief The points of B (its vertices) for the view depths [near, far].
  *  @param[out] out capacity points; SWARP_BODY_MAX_POINTS always suffices.
  *  @param[out] out_count number of points (also on SWARP_ERR_CAPACITY).
- *  @return as swarp_body_h and swarp_body_from_h, SWARP_ERR_CAPACITY. */
+ *  @return SWARP_OK, SWARP_ERR_BODY_EMPTY, SWARP_ERR_BOX_DEGENERATE,
+ *          SWARP_ERR_CAPACITY, and the argument errors of the camera, light
+ *          and box (SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
+ *          SWARP_ERR_FOV, SWARP_ERR_NEAR_FAR, SWARP_ERR_ZERO_VECTOR,
+ *          SWARP_ERR_DEGENERATE (up parallel to dir), SWARP_ERR_UNKNOWN_ENUM,
+ *          SWARP_ERR_RESERVED_NONZERO, SWARP_ERR_OUT_OF_RANGE): the statuses
+ *          of the experimental swarp_body_h and swarp_body_from_h. */
 SWARP_API swarp_status swarp_body_points(const swarp_camera* cam, double near, double far,
                                          const swarp_light* light, const swarp_aabb* scene,
                                          swarp_vec3* out, size_t capacity, size_t* out_count);
 
-
 /** @brief Adjusted near/far [RHS] §3.3.1 ([ZSN07]): min and max view depth
  *  over the points of H = V ∩ S (view frustum cam->near..cam->far).
- *  @return SWARP_OK, SWARP_ERR_BODY_EMPTY, statuses of swarp_body_h. */
+ *  @return SWARP_OK, SWARP_ERR_BODY_EMPTY, SWARP_ERR_BOX_DEGENERATE, and the
+ *          argument errors of the camera and box (SWARP_ERR_NULL_POINTER,
+ *          SWARP_ERR_NON_FINITE, SWARP_ERR_FOV, SWARP_ERR_NEAR_FAR,
+ *          SWARP_ERR_ZERO_VECTOR, SWARP_ERR_DEGENERATE,
+ *          SWARP_ERR_RESERVED_NONZERO, SWARP_ERR_OUT_OF_RANGE): the statuses
+ *          of the experimental swarp_body_h. */
 SWARP_API swarp_status swarp_body_adjusted_range(const swarp_camera* cam, const swarp_aabb* scene,
                                                  double* out_near, double* out_far);
 
@@ -2462,7 +2472,7 @@ SWARP_API const char* swarp_plan_scheme_name(swarp_plan_scheme s);
 SWARP_API const char* swarp_plan_filter_name(swarp_plan_filter f);
 
 /* ---- 9.5 cube maps in post-projective space, [KOZ] §14.2.2 -------------- */
-/* *
+/*
  * In the camera's post-projective space the view frustum is the unit cube
  * [-1, 1]^3 and (almost) every light is a point P.  The shadow map is a cube
  * map "with displaced centre" whose faces are the unit-cube faces that are
@@ -2553,7 +2563,7 @@ SWARP_API swarp_status swarp_cube_lookup(const swarp_vec4* ps_light, const swarp
 
 
 /* ---- 9.6 the min-depth near plane, [RHS] §4.3 ---------------------------- */
-/* *
+/*
  * The nearest visible depth of the frame, read from a LINEAR depth buffer
  * (view-space distance along the view direction, not radial distance and not
  * the non-linear z-buffer value), becomes the largest near plane that clips
