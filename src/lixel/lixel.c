@@ -31,6 +31,9 @@ _Static_assert(sizeof(swarp_lixel_restrict_options) == 3 * sizeof(double) + 16 +
 #define SW_LX_VIEW_PARALLEL_EPS 1e-9
 /* Snap distance (lixels) of the rectangle corners to integers. */
 #define SW_LX_SNAP 1e-6
+/* Largest |corner| of a restricted rectangle (lixels): below 2^31, so the
+ * corners convert to int32_t exactly. */
+#define SW_LX_RECT_MAX_COORD 2e9
 /* A vertex of C with q below this fraction of |row 4| |X| is outside. */
 #define SW_LX_Q_EPS 1e-12
 
@@ -605,7 +608,8 @@ SWARP_API swarp_status swarp_lixel_restrict(const swarp_mat4* M_l, const swarp_v
     double x0 = floor(lo_x + SW_LX_SNAP), x1 = ceil(hi_x - SW_LX_SNAP), y0 = floor(lo_y + SW_LX_SNAP),
            y1 = ceil(hi_y - SW_LX_SNAP);
     if (!(x1 - x0 + 1.0 <= (double)max_size) || !(y1 - y0 + 1.0 <= (double)max_size) ||
-        !(fabs(x0) < 2e9) || !(fabs(x1) < 2e9) || !(fabs(y0) < 2e9) || !(fabs(y1) < 2e9))
+        !(fabs(x0) < SW_LX_RECT_MAX_COORD) || !(fabs(x1) < SW_LX_RECT_MAX_COORD) ||
+        !(fabs(y0) < SW_LX_RECT_MAX_COORD) || !(fabs(y1) < SW_LX_RECT_MAX_COORD))
         return SWARP_ERR_LIXEL_RECT_TOO_LARGE;
     swarp_mat4 A;
     sw_identity(&A);
@@ -658,9 +662,9 @@ SWARP_API swarp_status swarp_lixel_twist_for_line(const swarp_mat4* M_l, const s
     /* `below` on the line (its distance within SW_LX_TWIST_EPS of the image
      * scale, as for the line's length above) has no side: the sign of rel
      * would be the rounding's, and the twist would flip by pi with the
-     * caller's rounding mode (issue 9: b and below on a line parallel to x,
-     * a at 1e97 on x imaging to its vanishing point; below 5e-17 lixel off
-     * the line in exact arithmetic) */
+     * caller's rounding mode (e.g. b and below on a line parallel to x, a at
+     * 1e97 on x imaging to its vanishing point, below 5e-17 lixel off the
+     * line in exact arithmetic) */
     const double scale_c = fmax(scale, fmax(fabs(xc), fabs(yc)) + 1.0);
     if (!(fabs(rel) > SW_LX_TWIST_EPS * scale_c)) return SWARP_ERR_LIXEL_TWIST_LINE;
     if (rel > 0.0) twist = twist > 0.0 ? twist - SWARP_PI : twist + SWARP_PI;
@@ -716,6 +720,10 @@ SWARP_API swarp_status swarp_lixel_factor(const swarp_mat4* M_l, uint32_t width,
 
 /* |u| = |n_floor x n_wall| below this (unit normals): the planes are parallel. */
 #define SW_LX_SPLIT_EPS 1e-9
+/* Added to the light-to-line distance: a floor for the scale of the
+ * SW_LX_SPLIT_EPS test, so a light at the line's point A itself (distance
+ * 0) does not pass with a subnormal |n_Sigma| of pure rounding. */
+#define SW_LX_TINY 1e-300
 
 /* Sutherland-Hodgman against side(X) = sign * Sigma.X >= 0; writes at most
  * n + 1 vertices when out != NULL, returns the count. */
@@ -779,15 +787,15 @@ SWARP_API swarp_status swarp_lixel_split(const swarp_light* light, const swarp_p
     /* Sigma: the plane through the light and the line */
     swarp_vec3 n_sigma = L.w == 0.0 ? sw_cross(u, d_unit) : sw_cross(u, sw_sub(sw_v3(L.x, L.y, L.z), A));
     double ls = sw_len(n_sigma);
-    double lscale = L.w == 0.0 ? 1.0 : sw_len(sw_sub(sw_v3(L.x, L.y, L.z), A)) + 1e-300;
+    double lscale = L.w == 0.0 ? 1.0 : sw_len(sw_sub(sw_v3(L.x, L.y, L.z), A)) + SW_LX_TINY;
     if (!(ls > SW_LX_SPLIT_EPS * lscale)) return SWARP_ERR_DEGENERATE; /* light on the line / along it */
     n_sigma = sw_scale(n_sigma, 1.0 / ls);
     swarp_vec4 Sigma = lx_v4(n_sigma.x, n_sigma.y, n_sigma.z, -sw_dot(n_sigma, A));
     /* a floor point in front of the wall (on the side its normal points to):
      * F = A + w_f / |w_f|, so Σ · F = n_Σ · w_f / |w_f| -- formed from the
      * unit vectors, not as n_Σ · F - n_Σ · A: with the line 1e6 from the
-     * origin that difference carried 1e-10 of rounding against the 1e-9
-     * bound, and the caller's rounding mode decided DEGENERATE (issue 9) */
+     * origin that difference carries 1e-10 of rounding against the
+     * SW_LX_SPLIT_EPS bound, and the rounding mode would decide DEGENERATE */
     swarp_vec3 w_f = sw_sub(nw, sw_scale(nf, sw_dot(nw, nf)));
     double side_floor = sw_dot(n_sigma, w_f) / sw_len(w_f);
     if (!(fabs(side_floor) > SW_LX_SPLIT_EPS)) return SWARP_ERR_DEGENERATE; /* light on the floor */

@@ -66,9 +66,9 @@ static void sw_sort_small(double* v, int n) {
  * points (those within s of c) coincide to rounding and some four are
  * coplanar; normalised, that rounding would be scaled up to unit size and
  * its determinants decide against SW_LX_COPLANAR_EPS (a 1e-15 rad field of view
- * seeing a floor 2.5e5 from the origin: the four corner hits 1e-14 apart,
- * conditioning 5.6e-21 or 1.2e-13 by the caller's rounding mode, fenv
- * swarp_plan 480000 case 385901). */
+ * seeing a floor 2.5e5 from the origin puts the four corner hits 1e-14
+ * apart: the conditioning would be 5.6e-21 or 1.2e-13 depending on the
+ * caller's rounding mode). */
 static int sw_normalise_set(const swarp_vec4 p[5], swarp_vec4 out[5], swarp_mat4* T, swarp_mat4* T_inv) {
     double cx[5], cy[5], cz[5];
     int m = 0;
