@@ -144,8 +144,8 @@ static swarp_status sw_transition(double t, const double* splits, uint32_t n_lay
         /* w = (t - (s - band)) / (2 band) as ((t - s) + band) / (2 band):
          * t - s is exact next to s (Sterbenz), while s - band rounded at the
          * magnitude of s (an ulp of s is ~1e-7 of a band of 1e-9 at s ~ 1,
-         * and all of a band below an ulp of s), so w depended on the caller's
-         * rounding mode by up to the whole [0, 1] (fenv cases 3626, 7332). */
+         * and all of a band below an ulp of s), so w would depend on the
+         * caller's rounding mode by up to the whole [0, 1]. */
         if (j > 0 && t - splits[j] < band) { /* just above inner split s_j */
             *lo = j - 1;
             *w_hi = ((t - splits[j]) + band) / (2.0 * band);

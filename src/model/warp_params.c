@@ -55,7 +55,8 @@ static double sw_mul_div(double a, double b, double c) {
 /* sw_nopt_core for z_0 < 2^-900 z_1, all in mantissa/exponent form (sw_xd):
  * there z_0 4^-k is subnormal or nearly, n_p (z_1 - z_0) 4^-k underflows for
  * subnormal n_p, and z_0 + sqrt(.) sqrt(.) is no longer dominated by normal
- * numbers (n_opt of z_0 = 5e-324, n_p = 5e-324 was 8% off).  The pseudo-far
+ * numbers (in plain doubles n_opt of z_0 = 5e-324, n_p = 5e-324 would be
+ * 8% off).  The pseudo-far
  * depth is written z_0 + (1 - f_p) dz, equal to z_1 - f_p dz in exact
  * arithmetic, without its cancellation for f_p near 1 (1 - f_p is exact for
  * f_p >= 1/2).  Off the hot path: only extreme depth ratios get here. */
@@ -83,7 +84,7 @@ static swarp_status sw_nopt_core(double d, double z_0, double z_1, double n_p, d
     /* The ratio (z_0 + root) / dz is homogeneous of degree 0 in the depths,
      * so they are scaled by s = 2^(-2k) (exact) to put z_1 s in [1, 4): the
      * subnormal depths and depths near DBL_MAX neither lose bits nor
-     * overflow (d / dz used to overflow for z_1 = 4e-319).  sqrt(z s) =
+     * overflow (d / dz unscaled overflows for z_1 = 4e-319).  sqrt(z s) =
      * sqrt(z) 2^-k keeps the root exact even where z_0 s would be subnormal. */
     int e = ilogb(z_1);
     int k = (e - (e & 1)) / 2; /* floor(e / 2): scaling z by 4^j changes k by exactly j */
@@ -428,7 +429,7 @@ SWARP_API swarp_status swarp_gmnpr_offset(double lambda, double theta, double ph
 
 /* [GMNPR] (2), F = psi (z + varphi)^2 / z, evaluated by sw_gmnpr_F_value so
  * large lambda (psi ~ 1/lambda^2, varphi ~ lambda) and huge f, z neither
- * overflow nor underflow in between (F used to come out 0 with SWARP_OK for
+ * overflow nor underflow in between (the direct product underflows to 0 for
  * lambda ~ 1e274). */
 SWARP_API swarp_status swarp_gmnpr_F(double lambda, double theta, double phi, double n,
                                      double f, double z, double* out_F) {
@@ -477,8 +478,8 @@ static double sw_lambda_1(double theta, double phi, double n, double f) {
 /* lambda_2 of [GMNPR] (4): (f + sqrt(fn))/(2f) tan(theta)/tan(phi) - 1/2,
  * with (f + sqrt(fn))/(2f) = (1 + r)/2, r = sqrt(n/f), written as
  *   ((1 - t) + r) / (2 t)   (theta >= phi)  and  ((u - 1) + u r) / 2:
- * 1 - t and u - 1 are exact near theta = phi (Sterbenz), where the old
- * c/t - 1/2 lost r < 2^-53 entirely (lambda_2 = 0 for f = DBL_MAX). */
+ * 1 - t and u - 1 are exact near theta = phi (Sterbenz), where the direct
+ * c/t - 1/2 loses r < 2^-53 entirely (lambda_2 = 0 for f = DBL_MAX). */
 static double sw_lambda_2(double theta, double phi, double n, double f) {
     double r = sqrt(n) / sqrt(f);
     if (theta >= phi) {
@@ -533,7 +534,7 @@ static swarp_status sw_theta_closed_check(double theta, double phi, double n, do
 static swarp_status sw_lambda_gmnpr(double theta, double phi, double n, double f, double* out) {
     if (theta == 0.0) {
         /* (6): converges to the standard (uniform) shadow map.  The contract of
-         * lambda is "never Inf on [0, pi/2]" (issue 2), so theta = 0 writes the
+         * lambda is "never Inf on [0, pi/2]" (the header), so theta = 0 writes the
          * largest finite double, which the error model and the warp treat as
          * uniform exactly like +INFINITY. */
         *out = DBL_MAX;
