@@ -15,6 +15,9 @@ _Static_assert(sizeof(swarp_bias_map) == sizeof(swarp_mat4) + 2 * sizeof(double)
 /* Largest tan of the receiver slope used by the slope-scaled bias: ~84
  * degrees; beyond, the bias would grow without bound (grazing receivers). */
 #define SW_BIAS_MAX_SLOPE 10.0
+/* A receiver plane whose two tangents image parallel to within this angle
+ * (rad, relative |det| in texel space) is edge-on (swarp_bias_receiver_plane). */
+#define SW_BIAS_EDGE_ON_EPS 1e-12
 
 static swarp_status sw_map_check(const swarp_bias_map* map) {
     if (!sw_reserved_zero(map->_reserved, 4) || map->_reserved0 != 0)
@@ -359,7 +362,7 @@ SWARP_API swarp_status swarp_bias_receiver_plane(const swarp_bias_map* map, cons
     const double scale = (fabs(a[0][0]) + fabs(a[0][1])) * (fabs(a[1][0]) + fabs(a[1][1]));
     const double det_err = fabs(a[0][0]) * ea[1][1] + ea[0][0] * fabs(a[1][1]) + fabs(a[1][0]) * ea[0][1] +
                            ea[1][0] * fabs(a[0][1]) + 2.0 * DBL_EPSILON * (fabs(p0) + fabs(p1));
-    if (!(fabs(det) > 1e-12 * scale) || !(fabs(det) > 2.0 * det_err)) return SWARP_ERR_DEGENERATE;
+    if (!(fabs(det) > SW_BIAS_EDGE_ON_EPS * scale) || !(fabs(det) > 2.0 * det_err)) return SWARP_ERR_DEGENERATE;
     /* Cramer in the scaled texel space, then back: d = ws u_z per unit of
      * the row, texels = (res_max / 2) a, so g = 2 ws (...) / (det res_max). */
     const double ws = sw_window_scale(map->depth);

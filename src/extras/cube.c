@@ -14,6 +14,9 @@
  * the unit cube around the light, as small as 24-bit depth comfortably
  * allows for the [KOZ] ratios (Z_f/Z_n = 100). */
 #define SW_CUBE_DEFAULT_Z1 0.01
+/* A light position beyond this (any component) counts as at infinity: its
+ * products with the face distances would overflow the matrices. */
+#define SW_CUBE_LIGHT_FAR 1e150
 
 _Static_assert(sizeof(swarp_cube_face) == 8 + 8 + 3 * sizeof(swarp_vec3) + 3 * sizeof(swarp_mat4),
                "swarp_cube_face size");
@@ -56,7 +59,8 @@ static swarp_status sw_cube_setup_make(const swarp_vec4* L, const swarp_cube_opt
     if (L->w == 0.0) return SWARP_ERR_CUBE_LIGHT_AT_INFINITY;
     s->P = sw_v3(L->x / L->w, L->y / L->w, L->z / L->w);
     /* |P| so large that d_i * P overflows the matrices: a light at infinity */
-    if (!sw_finite3(&s->P) || fabs(s->P.x) > 1e150 || fabs(s->P.y) > 1e150 || fabs(s->P.z) > 1e150)
+    if (!sw_finite3(&s->P) || fabs(s->P.x) > SW_CUBE_LIGHT_FAR || fabs(s->P.y) > SW_CUBE_LIGHT_FAR ||
+        fabs(s->P.z) > SW_CUBE_LIGHT_FAR)
         return SWARP_ERR_CUBE_LIGHT_AT_INFINITY;
     s->inverse = L->w < 0.0;
     s->z1 = z1;

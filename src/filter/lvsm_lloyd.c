@@ -216,7 +216,7 @@ SWARP_API swarp_status swarp_lvsm_lloyd(const double* mu, const double* sigma2, 
                                         const double* splits_in, uint32_t n_layers,
                                         double* splits_out, swarp_lloyd_report* out_report) {
     if (!mu || !sigma2 || !splits_out) return SWARP_ERR_NULL_POINTER;
-    swarp_status st = sw_check_splits(splits_in, n_layers);
+    swarp_status st = sw_lvsm_check_splits(splits_in, n_layers);
     if (st != SWARP_OK) return st;
     if (count == 0) return SWARP_ERR_FILTER_NO_SAMPLES;
     swarp_lloyd_options o;

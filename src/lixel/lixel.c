@@ -44,12 +44,12 @@ static swarp_status sw_lixel_light(const swarp_light* light, swarp_vec4* L, swar
         if (!sw_finite3(&light->direction)) return SWARP_ERR_NON_FINITE;
         if (!sw_normalize(light->direction, d_unit)) return SWARP_ERR_ZERO_VECTOR;
         /* the centre of projection is the point at infinity of the rays */
-        *L = lx_v4(d_unit->x, d_unit->y, d_unit->z, 0.0);
+        *L = sw_v4(d_unit->x, d_unit->y, d_unit->z, 0.0);
         return SWARP_OK;
     }
     if (t == SWARP_LIGHT_POINT) {
         if (!sw_finite3(&light->position)) return SWARP_ERR_NON_FINITE;
-        *L = lx_v4(light->position.x, light->position.y, light->position.z, 1.0);
+        *L = sw_v4(light->position.x, light->position.y, light->position.z, 1.0);
         *d_unit = sw_v3(0.0, 0.0, 0.0);
         return SWARP_OK;
     }
@@ -66,7 +66,7 @@ static void sw_viewport_pixels(double g, double h, swarp_mat4* Vp) {
 }
 
 static swarp_vec4 sw_xform_col(const swarp_mat4* m, double x, double y, double z, double w) {
-    return sw_xform4(m, lx_v4(x, y, z, w));
+    return sw_xform4(m, sw_v4(x, y, z, w));
 }
 
 /* The point of P whose viewer pixel is (x, y): the ray of (2) is the line
@@ -77,12 +77,12 @@ static swarp_vec4 sw_xform_col(const swarp_mat4* m, double x, double y, double z
  * makes the viewer's q = row3.X positive: then X.w > 0 means the hit is in
  * front of the eye, X.w < 0 behind it, X.w = 0 on the horizon. */
 static swarp_vec4 sw_plane_point(const swarp_vec4 rows[4], swarp_vec4 pi, double x, double y) {
-    swarp_vec4 a = lx_unit4(lx_v4(rows[0].x - x * rows[3].x, rows[0].y - x * rows[3].y,
+    swarp_vec4 a = sw_unit4(sw_v4(rows[0].x - x * rows[3].x, rows[0].y - x * rows[3].y,
                                    rows[0].z - x * rows[3].z, rows[0].w - x * rows[3].w));
-    swarp_vec4 b = lx_unit4(lx_v4(rows[1].x - y * rows[3].x, rows[1].y - y * rows[3].y,
+    swarp_vec4 b = sw_unit4(sw_v4(rows[1].x - y * rows[3].x, rows[1].y - y * rows[3].y,
                                    rows[1].z - y * rows[3].z, rows[1].w - y * rows[3].w));
-    swarp_vec4 X = lx_unit4(lx_cross4(a, b, pi));
-    if (lx_dot4(rows[3], X) < 0.0) X = lx_scale4(X, -1.0);
+    swarp_vec4 X = sw_unit4(sw_cross4(a, b, pi));
+    if (sw_dot4(rows[3], X) < 0.0) X = sw_scale4(X, -1.0);
     return X;
 }
 
@@ -131,7 +131,7 @@ static swarp_status sw_lixel_check(const swarp_mat4* M_v, uint32_t g, uint32_t h
     if (st != SWARP_OK) return st;
     double n_len = sw_len(sw_v3(plane->a, plane->b, plane->c));
     if (!(n_len > 0.0)) return SWARP_ERR_ZERO_VECTOR;
-    s->pi = lx_v4(plane->a / n_len, plane->b / n_len, plane->c / n_len, plane->d / n_len);
+    s->pi = sw_v4(plane->a / n_len, plane->b / n_len, plane->c / n_len, plane->d / n_len);
     s->n_unit = sw_v3(s->pi.x, s->pi.y, s->pi.z);
     return SWARP_OK;
 }
@@ -145,15 +145,15 @@ static swarp_status sw_lixel_viewer(const swarp_mat4* M_v, sw_lx_setup* s) {
     if (!sw_invert(&s->V, &V_inv)) return SWARP_ERR_SINGULAR;
     /* pi' = V^-t pi: the plane in viewer-image space */
     swarp_vec4 pi_img;
-    pi_img.x = lx_dot4(s->pi, sw_xform_col(&V_inv, 1, 0, 0, 0));
-    pi_img.y = lx_dot4(s->pi, sw_xform_col(&V_inv, 0, 1, 0, 0));
-    pi_img.z = lx_dot4(s->pi, sw_xform_col(&V_inv, 0, 0, 1, 0));
-    pi_img.w = lx_dot4(s->pi, sw_xform_col(&V_inv, 0, 0, 0, 1));
+    pi_img.x = sw_dot4(s->pi, sw_xform_col(&V_inv, 1, 0, 0, 0));
+    pi_img.y = sw_dot4(s->pi, sw_xform_col(&V_inv, 0, 1, 0, 0));
+    pi_img.z = sw_dot4(s->pi, sw_xform_col(&V_inv, 0, 0, 1, 0));
+    pi_img.w = sw_dot4(s->pi, sw_xform_col(&V_inv, 0, 0, 0, 1));
     /* pi'_z = pi . eye (the eye is V^-1 (0,0,1,0)); compared with the plane
      * in units where pixel coordinates are O(1) */
     double pi_scale = hypot(hypot(pi_img.x * s->g, pi_img.y * s->h), hypot(pi_img.z, pi_img.w));
     if (!(fabs(pi_img.z) > SW_LX_EYE_EPS * pi_scale)) return SWARP_ERR_LIXEL_PLANE_THROUGH_EYE;
-    for (int i = 0; i < 4; ++i) s->rows[i] = lx_row(&s->V, i);
+    for (int i = 0; i < 4; ++i) s->rows[i] = sw_row4(&s->V, i);
     return SWARP_OK;
 }
 
@@ -168,7 +168,7 @@ static swarp_status sw_lixel_corners(sw_lx_setup* s) {
         s->px[i] = px[i];
         s->py[i] = py[i];
         s->P[i] = sw_plane_point(s->rows, s->pi, px[i], py[i]);
-        if (!lx_finite4(s->P[i])) return SWARP_ERR_SINGULAR;
+        if (!sw_finite4(s->P[i])) return SWARP_ERR_SINGULAR;
         if (s->P[i].w > SW_LX_FRONT_EPS) {
             ++s->in_front;
             if (s->best < 0 || s->P[i].w > s->P[s->best].w) s->best = i;
@@ -191,12 +191,12 @@ static swarp_status sw_lixel_raise(sw_lx_setup* s) {
         if (fabs(sw_dot(s->n_unit, s->d_unit)) < SW_LX_PARALLEL_EPS) return SWARP_ERR_LIXEL_LIGHT_PARALLEL_PLANE;
     } else {
         swarp_vec3 l = sw_v3(L.x, L.y, L.z);
-        double dist = fabs(lx_dot4(s->pi, L));
+        double dist = fabs(sw_dot4(s->pi, L));
         if (!(dist > SW_LX_ON_PLANE_EPS * sw_len(sw_sub(l, p_r)))) return SWARP_ERR_LIXEL_LIGHT_ON_PLANE;
     }
     /* the eye (finite for a perspective viewer) */
-    swarp_vec4 E = lx_cross4(lx_unit4(s->rows[0]), lx_unit4(s->rows[1]), lx_unit4(s->rows[3]));
-    s->eye_finite = fabs(E.w) > SW_LX_FRONT_EPS * lx_len4(E);
+    swarp_vec4 E = sw_cross4(sw_unit4(s->rows[0]), sw_unit4(s->rows[1]), sw_unit4(s->rows[3]));
+    s->eye_finite = fabs(E.w) > SW_LX_FRONT_EPS * sw_len4(E);
     s->e = s->eye_finite ? sw_scale(sw_v3(E.x, E.y, E.z), 1.0 / E.w) : sw_v3(0, 0, 0);
     if (L.w == 0.0) {
         double d = s->eye_finite ? sw_len(sw_sub(p_r, s->e)) : sw_len(p_r) + 1.0;
@@ -218,12 +218,12 @@ static swarp_status sw_lixel_raise(sw_lx_setup* s) {
 static swarp_status sw_lixel_solve(const sw_lx_setup* s, swarp_mat4* M, double* cond) {
     swarp_vec4 src[5], dst[5];
     src[0] = s->L;
-    dst[0] = lx_v4(0.0, 0.0, 1.0, 0.0);
+    dst[0] = sw_v4(0.0, 0.0, 1.0, 0.0);
     for (int i = 0; i < 4; ++i) {
         src[i + 1] = s->P[i];
-        dst[i + 1] = lx_v4(s->px[i], s->py[i], 1.0, 1.0);
+        dst[i + 1] = sw_v4(s->px[i], s->py[i], 1.0, 1.0);
     }
-    src[s->r + 1] = lx_v4(s->p_hat.x, s->p_hat.y, s->p_hat.z, 1.0);
+    src[s->r + 1] = sw_v4(s->p_hat.x, s->p_hat.y, s->p_hat.z, 1.0);
     dst[s->r + 1].z = -1.0;
     *cond = 0.0;
     swarp_status sst = swarp_lixel_solve5(src, dst, M, cond);
@@ -253,8 +253,8 @@ static swarp_status sw_lixel_info_status(const sw_lx_setup* s, swarp_status sst)
         sw_normalize(sw_v3(rows[1].x - c_y * rows[3].x, rows[1].y - c_y * rows[3].y, rows[1].z - c_y * rows[3].z),
                      &rb) &&
         sw_normalize(sw_cross(ra, rb), &v_unit) && fabs(sw_dot(v_unit, s->n_unit)) < SW_LX_VIEW_PARALLEL_EPS;
-    double side_eye = s->eye_finite ? lx_dot4(s->pi, lx_v4(s->e.x, s->e.y, s->e.z, 1.0)) : 0.0;
-    double side_light = s->L.w == 0.0 ? -sw_dot(s->n_unit, s->d_unit) : lx_dot4(s->pi, s->L);
+    double side_eye = s->eye_finite ? sw_dot4(s->pi, sw_v4(s->e.x, s->e.y, s->e.z, 1.0)) : 0.0;
+    double side_light = s->L.w == 0.0 ? -sw_dot(s->n_unit, s->d_unit) : sw_dot4(s->pi, s->L);
     if (sst == SWARP_INFO_LIXEL_ILL_CONDITIONED) return sst;
     if (view_parallel) return SWARP_INFO_LIXEL_PLANE_PARALLEL_VIEW;
     if (s->in_front < 4) return SWARP_INFO_LIXEL_QUAD_ACROSS_INFINITY;
@@ -283,7 +283,7 @@ SWARP_API swarp_status swarp_lixel_matrix(const swarp_mat4* M_v, uint32_t g, uin
         swarp_lixel_info inf;
         memset(&inf, 0, sizeof inf);
         for (int i = 0; i < 4; ++i) inf.corners[i] = s.P[i];
-        inf.raised = lx_v4(s.p_hat.x, s.p_hat.y, s.p_hat.z, 1.0);
+        inf.raised = sw_v4(s.p_hat.x, s.p_hat.y, s.p_hat.z, 1.0);
         inf.raised_index = (uint32_t)s.r;
         inf.corners_in_front = s.in_front;
         inf.conditioning = cond;
@@ -297,13 +297,13 @@ SWARP_API swarp_status swarp_lixel_matrix(const swarp_mat4* M_v, uint32_t g, uin
 /* A vertex of C as a homogeneous point: w != 0 is divided out (a point),
  * w = 0 stays a direction from the light. */
 static swarp_vec4 sw_ray_vertex(swarp_vec4 c) {
-    return c.w != 0.0 ? lx_v4(c.x / c.w, c.y / c.w, c.z / c.w, 1.0) : c;
+    return c.w != 0.0 ? sw_v4(c.x / c.w, c.y / c.w, c.z / c.w, 1.0) : c;
 }
 
 /* Light-image (x, y) of X when q is safely positive. */
 static int sw_light_xy(const swarp_mat4* M, swarp_vec4 X, double* x, double* y) {
     swarp_vec4 o = sw_xform4(M, X);
-    double q_scale = lx_len4(lx_row(M, 3)) * lx_len4(X);
+    double q_scale = sw_len4(sw_row4(M, 3)) * sw_len4(X);
     if (!(o.w > SW_LX_Q_EPS * q_scale)) return 0;
     *x = o.x / o.w;
     *y = o.y / o.w;
@@ -584,7 +584,7 @@ SWARP_API swarp_status swarp_lixel_restrict(const swarp_mat4* M_l, const swarp_v
     }
     if (!sw_mat_finite(M_l)) return SWARP_ERR_NON_FINITE;
     for (size_t j = 0; j < n; ++j)
-        if (!lx_finite4(C[j])) return SWARP_ERR_NON_FINITE;
+        if (!sw_finite4(C[j])) return SWARP_ERR_NON_FINITE;
     /* A_l without the translation: scale . rotate(twist) on (x, y) */
     double c = cos(twist), s = sin(twist);
     sw_box2 box = {INFINITY, INFINITY, -INFINITY, -INFINITY};
@@ -647,9 +647,9 @@ SWARP_API swarp_status swarp_lixel_twist_for_line(const swarp_mat4* M_l, const s
     if (!M_l || !a || !b || !below || !out_twist) return SWARP_ERR_NULL_POINTER;
     if (!sw_mat_finite(M_l) || !sw_finite3(a) || !sw_finite3(b) || !sw_finite3(below)) return SWARP_ERR_NON_FINITE;
     double xa, ya, xb, yb, xc, yc;
-    if (!sw_light_xy(M_l, lx_v4(a->x, a->y, a->z, 1.0), &xa, &ya) ||
-        !sw_light_xy(M_l, lx_v4(b->x, b->y, b->z, 1.0), &xb, &yb) ||
-        !sw_light_xy(M_l, lx_v4(below->x, below->y, below->z, 1.0), &xc, &yc))
+    if (!sw_light_xy(M_l, sw_v4(a->x, a->y, a->z, 1.0), &xa, &ya) ||
+        !sw_light_xy(M_l, sw_v4(b->x, b->y, b->z, 1.0), &xb, &yb) ||
+        !sw_light_xy(M_l, sw_v4(below->x, below->y, below->z, 1.0), &xc, &yc))
         return SWARP_ERR_LIXEL_TWIST_LINE;
     double dx = xb - xa, dy = yb - ya;
     double scale = fmax(fmax(fabs(xa), fabs(ya)), fmax(fabs(xb), fabs(yb))) + 1.0;
@@ -686,7 +686,7 @@ SWARP_API swarp_status swarp_lixel_factor(const swarp_mat4* M_l, uint32_t width,
     if (plane_depth < 0.0 || plane_depth >= 1.0) return SWARP_ERR_OUT_OF_RANGE;
     double f = plane_depth > 0.0 ? plane_depth : 0.5;
     double W = (double)width, H = (double)height;
-    swarp_vec4 X = lx_row(M_l, 0), Y = lx_row(M_l, 1), Z = lx_row(M_l, 2), Q = lx_row(M_l, 3);
+    swarp_vec4 X = sw_row4(M_l, 0), Y = sw_row4(M_l, 1), Z = sw_row4(M_l, 2), Q = sw_row4(M_l, 3);
     /* depth z' = alpha z + beta: p-hat (z = -1) to the near plane, P (z = 1)
      * to the fraction f of the range ([LIXEL] footnote: any affine map of z) */
     double alpha, beta;
@@ -699,13 +699,13 @@ SWARP_API swarp_status swarp_lixel_factor(const swarp_mat4* M_l, uint32_t width,
     }
     swarp_mat4 P, Vw;
     /* x_ndc = (2 x + 1)/W - 1: lixel centres 0 .. W-1 inside (-1, 1) */
-    lx_set_row(&P, 0, lx_v4(2.0 / W * X.x + (1.0 / W - 1.0) * Q.x, 2.0 / W * X.y + (1.0 / W - 1.0) * Q.y,
+    sw_set_row4(&P, 0, sw_v4(2.0 / W * X.x + (1.0 / W - 1.0) * Q.x, 2.0 / W * X.y + (1.0 / W - 1.0) * Q.y,
                             2.0 / W * X.z + (1.0 / W - 1.0) * Q.z, 2.0 / W * X.w + (1.0 / W - 1.0) * Q.w));
-    lx_set_row(&P, 1, lx_v4(2.0 / H * Y.x + (1.0 / H - 1.0) * Q.x, 2.0 / H * Y.y + (1.0 / H - 1.0) * Q.y,
+    sw_set_row4(&P, 1, sw_v4(2.0 / H * Y.x + (1.0 / H - 1.0) * Q.x, 2.0 / H * Y.y + (1.0 / H - 1.0) * Q.y,
                             2.0 / H * Y.z + (1.0 / H - 1.0) * Q.z, 2.0 / H * Y.w + (1.0 / H - 1.0) * Q.w));
-    lx_set_row(&P, 2, lx_v4(alpha * Z.x + beta * Q.x, alpha * Z.y + beta * Q.y, alpha * Z.z + beta * Q.z,
+    sw_set_row4(&P, 2, sw_v4(alpha * Z.x + beta * Q.x, alpha * Z.y + beta * Q.y, alpha * Z.z + beta * Q.z,
                             alpha * Z.w + beta * Q.w));
-    lx_set_row(&P, 3, Q);
+    sw_set_row4(&P, 3, Q);
     sw_viewport_pixels(W, H, &Vw);
     /* finite M_l but an entry of GLP beyond DBL_MAX (row 0/1 reach
      * (2/W + 1) max|M_l| <= 3 max|M_l|): the inputs were valid, the result is
@@ -731,7 +731,7 @@ static size_t sw_clip_side(const swarp_vec4* C, size_t n, swarp_vec4 Sigma, doub
     size_t m = 0;
     for (size_t j = 0; j < n; ++j) {
         swarp_vec4 A = sw_ray_vertex(C[j]), B = sw_ray_vertex(C[(j + 1) % n]);
-        double sa = sign * lx_dot4(Sigma, A), sb = sign * lx_dot4(Sigma, B);
+        double sa = sign * sw_dot4(Sigma, A), sb = sign * sw_dot4(Sigma, B);
         if (sa >= 0.0) {
             if (out) out[m] = A;
             ++m;
@@ -740,7 +740,7 @@ static size_t sw_clip_side(const swarp_vec4* C, size_t n, swarp_vec4 Sigma, doub
             /* the point of segment AB on Sigma: (sa B - sb A)/(sa - sb) */
             double ta = -sb / (sa - sb), tb = sa / (sa - sb);
             if (out)
-                out[m] = lx_v4(ta * A.x + tb * B.x, ta * A.y + tb * B.y, ta * A.z + tb * B.z, ta * A.w + tb * B.w);
+                out[m] = sw_v4(ta * A.x + tb * B.x, ta * A.y + tb * B.y, ta * A.z + tb * B.z, ta * A.w + tb * B.w);
             ++m;
         }
     }
@@ -766,7 +766,7 @@ SWARP_API swarp_status swarp_lixel_split(const swarp_light* light, const swarp_p
             return SWARP_ERR_NON_FINITE;
     int kind = -1; /* 1: points, 0: directions */
     for (size_t j = 0; j < n; ++j) {
-        if (!lx_finite4(C_tot[j])) return SWARP_ERR_NON_FINITE;
+        if (!sw_finite4(C_tot[j])) return SWARP_ERR_NON_FINITE;
         int k = C_tot[j].w != 0.0;
         if (kind >= 0 && k != kind) return SWARP_ERR_INVALID_ARGUMENT; /* mixed */
         kind = k;
@@ -790,7 +790,7 @@ SWARP_API swarp_status swarp_lixel_split(const swarp_light* light, const swarp_p
     double lscale = L.w == 0.0 ? 1.0 : sw_len(sw_sub(sw_v3(L.x, L.y, L.z), A)) + SW_LX_TINY;
     if (!(ls > SW_LX_SPLIT_EPS * lscale)) return SWARP_ERR_DEGENERATE; /* light on the line / along it */
     n_sigma = sw_scale(n_sigma, 1.0 / ls);
-    swarp_vec4 Sigma = lx_v4(n_sigma.x, n_sigma.y, n_sigma.z, -sw_dot(n_sigma, A));
+    swarp_vec4 Sigma = sw_v4(n_sigma.x, n_sigma.y, n_sigma.z, -sw_dot(n_sigma, A));
     /* a floor point in front of the wall (on the side its normal points to):
      * F = A + w_f / |w_f|, so Σ · F = n_Σ · w_f / |w_f| -- formed from the
      * unit vectors, not as n_Σ · F - n_Σ · A: with the line 1e6 from the

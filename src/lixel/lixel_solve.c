@@ -113,9 +113,9 @@ static int sw_normalise_set(const swarp_vec4 p[5], swarp_vec4 out[5], swarp_mat4
     }
     for (int i = 0; i < 5; ++i) {
         swarp_vec4 q = sw_xform4(T, p[i]);
-        double l = lx_len4(q);
+        double l = sw_len4(q);
         if (!(l > 0.0) || !sw_finite(l)) return 0;
-        out[i] = lx_scale4(q, 1.0 / l);
+        out[i] = sw_scale4(q, 1.0 / l);
     }
     return 1;
 }
@@ -156,12 +156,12 @@ static double sw_min_abs5(const double D[5]) {
 
 /* Distance of the unit vector of a from +-(unit vector of b). */
 static double sw_parallel_residual(swarp_vec4 a, swarp_vec4 b) {
-    double la = lx_len4(a), lb = lx_len4(b);
+    double la = sw_len4(a), lb = sw_len4(b);
     if (!(la > 0.0) || !(lb > 0.0)) return 1.0;
-    a = lx_scale4(a, 1.0 / la);
-    b = lx_scale4(b, 1.0 / lb);
-    double dp = lx_len4(lx_v4(a.x - b.x, a.y - b.y, a.z - b.z, a.w - b.w));
-    double dm = lx_len4(lx_v4(a.x + b.x, a.y + b.y, a.z + b.z, a.w + b.w));
+    a = sw_scale4(a, 1.0 / la);
+    b = sw_scale4(b, 1.0 / lb);
+    double dp = sw_len4(sw_v4(a.x - b.x, a.y - b.y, a.z - b.z, a.w - b.w));
+    double dm = sw_len4(sw_v4(a.x + b.x, a.y + b.y, a.z + b.z, a.w + b.w));
     return dp < dm ? dp : dm;
 }
 
@@ -173,7 +173,7 @@ SWARP_API swarp_status swarp_lixel_solve5(const swarp_vec4 src[5], const swarp_v
                                           swarp_mat4* out_M, double* out_conditioning) {
     if (!src || !dst || !out_M) return SWARP_ERR_NULL_POINTER;
     for (int i = 0; i < 5; ++i)
-        if (!lx_finite4(src[i]) || !lx_finite4(dst[i])) return SWARP_ERR_NON_FINITE;
+        if (!sw_finite4(src[i]) || !sw_finite4(dst[i])) return SWARP_ERR_NON_FINITE;
     swarp_vec4 qs[5], qd[5];
     swarp_mat4 Ts, Ts_inv, Td, Td_inv;
     if (!sw_normalise_set(src, qs, &Ts, &Ts_inv) || !sw_normalise_set(dst, qd, &Td, &Td_inv))
