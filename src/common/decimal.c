@@ -113,68 +113,59 @@ static int sw_cmp_decimal(double v, uint64_t num2, int k) {
     return sw_big_cmp(&L, &R);
 }
 
-/* decimal.h: 3 significant digits, half away from zero, decided exactly. */
-void sw_putd(sw_text* t, double v) {
-    if (v != v) { sw_puts(t, "nan"); return; }
-    if (v < 0.0) { sw_puts(t, "-"); v = -v; }
-    if (v == INFINITY) { sw_puts(t, "inf"); return; }
-    if (v == 0.0) { sw_puts(t, "0"); return; }
-    /* decimal exponent: an integer estimate from the binary one (floor(e2
-     * log10 2) within 1, 1233/4096 ~ log10 2), then exact: 10^e10 <= v <
-     * 10^(e10+1).  No floating-point estimate: under DAZ log10 of a
-     * subnormal is -inf. */
-    int E;
-    uint64_t M = sw_mantissa(v, &E);
+/* Decimal exponents from 10^7 up, and below 10^-3, are printed in
+ * scientific form. */
+#define SW_DEC_SCI_HI 7
+#define SW_DEC_SCI_LO (-3)
+/* floor(e2 log10 2) as (e2 * 1233) >> 12 (1233/4096 ~ log10 2), within 1
+ * for every double's binary exponent. */
+#define SW_DEC_LOG10_2_Q12 1233
+
+/* The decimal exponent e10 of v = M 2^E > 0: 10^e10 <= v < 10^(e10+1).  An
+ * integer estimate from the binary exponent, then exact comparisons; no
+ * floating-point estimate (under DAZ log10 of a subnormal is -inf). */
+static int sw_decimal_exponent(double v, uint64_t M, int E) {
     int e2 = E;
     for (uint64_t m = M; m > 1; m >>= 1) ++e2; /* floor(log2 v) */
-    int e10 = (e2 * 1233) >> 12; /* arithmetic shift: floor */
-    if (M == 0) { sw_puts(t, "0"); return; } /* a subnormal read as 0 (DAZ) */
+    int e10 = (e2 * SW_DEC_LOG10_2_Q12) >> 12; /* arithmetic shift: floor */
     while (sw_cmp_decimal(v, 2, e10) < 0) --e10;
     while (sw_cmp_decimal(v, 2, e10 + 1) >= 0) ++e10;
-    int sci, k;
-    uint64_t q;
-    for (;;) {
-        sci = e10 >= 7 || e10 < -3;
-        /* the rounding unit 10^k: 3 significant digits, whole numbers at least */
-        k = sci ? e10 - 2 : (e10 - 2 < 0 ? e10 - 2 : 0);
-        /* q: (q - 1/2) 10^k <= v < (q + 1/2) 10^k.  A floating-point
-         * estimate (right or off by one in every mode) checked by two exact
-         * comparisons; bisection on the exact comparison when the estimate
-         * is not usable (DAZ, a subnormal v: q <= 10^3 in scientific form,
-         * <= 10^7 in fixed form). */
-        const uint64_t q_max = sci ? 1000 : 10000000;
-        const double est = k >= 0 ? v / pow(10.0, k) : v * pow(10.0, -k);
-        q = (est >= 1.0 && est < (double)q_max) ? (uint64_t)llround(est) : 0;
-        if (!(q >= 1 && sw_cmp_decimal(v, 2 * q - 1, k) >= 0 && sw_cmp_decimal(v, 2 * q + 1, k) < 0)) {
-            uint64_t lo = 0, hi = q_max; /* invariant: q in [lo, hi] */
-            while (lo < hi) {
-                uint64_t mid = lo + (hi - lo + 1) / 2;
-                if (sw_cmp_decimal(v, 2 * mid - 1, k) >= 0)
-                    lo = mid;
-                else
-                    hi = mid - 1;
-            }
-            q = lo;
-        }
-        /* rounding carried into the next decade (99.96 -> 100): format as
-         * that decade, so 99.99999999999999 and 100 give the same "100" */
-        uint64_t next = 1;
-        for (int i = k; i <= e10; ++i) next *= 10;
-        if (q < next) break;
-        ++e10;
+    return e10;
+}
+
+/* q with (q - 1/2) 10^k <= v < (q + 1/2) 10^k, q <= q_max.  A
+ * floating-point estimate (right or off by one in every mode) checked by two
+ * exact comparisons; bisection on the exact comparison when the estimate is
+ * not usable (DAZ, a subnormal v). */
+static uint64_t sw_decimal_round(double v, int k, uint64_t q_max) {
+    const double est = k >= 0 ? v / pow(10.0, k) : v * pow(10.0, -k);
+    uint64_t q = (est >= 1.0 && est < (double)q_max) ? (uint64_t)llround(est) : 0;
+    if (q >= 1 && sw_cmp_decimal(v, 2 * q - 1, k) >= 0 && sw_cmp_decimal(v, 2 * q + 1, k) < 0) return q;
+    uint64_t lo = 0, hi = q_max; /* invariant: q in [lo, hi] */
+    while (lo < hi) {
+        uint64_t mid = lo + (hi - lo + 1) / 2;
+        if (sw_cmp_decimal(v, 2 * mid - 1, k) >= 0)
+            lo = mid;
+        else
+            hi = mid - 1;
     }
-    if (sci) {
-        const int ex = e10;
-        sw_putu(t, q / 100);
-        sw_puts(t, ".");
-        sw_putu(t, (q / 10) % 10);
-        sw_putu(t, q % 10);
-        sw_puts(t, ex < 0 ? "e-" : "e+");
-        int ae = ex < 0 ? -ex : ex;
-        if (ae < 10) sw_puts(t, "0");
-        sw_putu(t, (uint64_t)ae);
-        return;
-    }
+    return lo;
+}
+
+/* q (3 digits) 10^(e10 - 2) as "d.dde+XX". */
+static void sw_put_sci(sw_text* t, uint64_t q, int e10) {
+    sw_putu(t, q / 100);
+    sw_puts(t, ".");
+    sw_putu(t, (q / 10) % 10);
+    sw_putu(t, q % 10);
+    sw_puts(t, e10 < 0 ? "e-" : "e+");
+    int ae = e10 < 0 ? -e10 : e10;
+    if (ae < 10) sw_puts(t, "0");
+    sw_putu(t, (uint64_t)ae);
+}
+
+/* q 10^k, k <= 0, in fixed form with -k decimals. */
+static void sw_put_fixed(sw_text* t, uint64_t q, int k) {
     int dec = -k;
     uint64_t scale = 1;
     for (int i = 0; i < dec; ++i) scale *= 10;
@@ -184,4 +175,35 @@ void sw_putd(sw_text* t, double v) {
         uint64_t frac = q % scale;
         for (uint64_t d = scale / 10; d > 0; d /= 10) sw_putu(t, (frac / d) % 10);
     }
+}
+
+/* decimal.h: 3 significant digits, half away from zero, decided exactly. */
+void sw_putd(sw_text* t, double v) {
+    if (v != v) { sw_puts(t, "nan"); return; }
+    if (v < 0.0) { sw_puts(t, "-"); v = -v; }
+    if (v == INFINITY) { sw_puts(t, "inf"); return; }
+    if (v == 0.0) { sw_puts(t, "0"); return; }
+    int E;
+    uint64_t M = sw_mantissa(v, &E);
+    if (M == 0) { sw_puts(t, "0"); return; } /* a subnormal read as 0 (DAZ) */
+    int e10 = sw_decimal_exponent(v, M, E);
+    int sci, k;
+    uint64_t q;
+    for (;;) {
+        sci = e10 >= SW_DEC_SCI_HI || e10 < SW_DEC_SCI_LO;
+        /* the rounding unit 10^k: 3 significant digits, whole numbers at
+         * least; then q <= 10^3 in scientific form, <= 10^7 in fixed form */
+        k = sci ? e10 - 2 : (e10 - 2 < 0 ? e10 - 2 : 0);
+        q = sw_decimal_round(v, k, sci ? 1000 : 10000000);
+        /* rounding carried into the next decade (99.96 -> 100): format as
+         * that decade, so 99.99999999999999 and 100 give the same "100" */
+        uint64_t next = 1;
+        for (int i = k; i <= e10; ++i) next *= 10;
+        if (q < next) break;
+        ++e10;
+    }
+    if (sci)
+        sw_put_sci(t, q, e10);
+    else
+        sw_put_fixed(t, q, k);
 }
