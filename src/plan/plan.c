@@ -847,6 +847,7 @@ SWARP_API const char* swarp_plan_filter_name(swarp_plan_filter f) {
     }
 }
 
+/* ---- the explanation text (sw_text, sw_puts, sw_putu, sw_putd) ---------- */
 #include "common/decimal.h"
 
 static const struct { uint32_t bit; const char* text; } sw_why_text[] = {
