@@ -54,7 +54,7 @@ int demo_bench_clone(const demo_options* o) {
         return 2;
     }
     if (tsv) {
-        fprintf(tsv, "# demo --test bench-clone: geometry cloning vs K + 1 passes ([RHS] 3.3.6, Tables 7.1/7.2)\n");
+        fprintf(tsv, "# demo-check --test bench-clone: geometry cloning vs K + 1 passes ([RHS] 3.3.6, Tables 7.1/7.2)\n");
         fprintf(tsv, "# machine\t%s\n", machine);
         fprintf(tsv, "# setup\t%dx%d\t%d\t%d\t%zu\n", v.w, v.h, o->map, F, scene.count / 3);
         fprintf(tsv, "# K\tvariant\tpasses\tshadow_ms\tmain_ms\tframe_ms\n");
