@@ -14,7 +14,7 @@
  *
  * --out-dir writes DIR/accuracy-cost.md and DIR/plots/accuracy-cost.dat (and
  * accuracy-cost-front.dat, the Pareto fronts) for docs/plots/regen_accuracy_cost.sh.
- * Until the demo lands on main its measured columns read "n/a".
+ * Without the demo (no OSMesa) its measured columns read "n/a".
  * --clone-data F: the TSV of `demo-check --test bench-clone --bench-out F` (geometry
  * cloning against K + 1 passes, [RHS] §3.3.6), folded in as a table shaped
  * like [RHS] Tables 7.1/7.2; a file holding "# unavailable<TAB>reason" instead
@@ -522,9 +522,9 @@ int cmd_bench_report(sw_args* a) {
     FILE* dd = demo_data ? fopen(demo_data, "r") : NULL;
     if (dd) {
         fprintf(md, "## Measured in the demo\n\n"
-                    "`examples/demo` (on main) with `--camera measure` (horizontal view from 20 above the ground,\n"
+                    "`examples/demo` with `--camera measure` (horizontal view from 20 above the ground,\n"
                     "near 1, far 600), 1024x768, light at γ to the view in the view/up plane (γ = 150: behind\n"
-                    "the camera), filter pcf3; every technique the demo renders and measures on main (PSSM:\n"
+                    "the camera), filter pcf3; every technique the demo renders and measures (PSSM:\n"
                     "practical λ = 0.5), with the matrices the demo gets from the library (the geometry stage's\n"
                     "focused setup). meas m_z: the largest m_z measured from the\n"
                     "read-back along the view vector on the ground; pred m_z: the core's overhead-light\n"
