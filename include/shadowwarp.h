@@ -2,8 +2,11 @@
  * shadowwarp.h -- libshadowwarp, the one public header.
  *
  * libshadowwarp computes the matrices and parameters of warped, partitioned
- * and filtered shadow maps together with the analytic error model that says
- * how good a choice is.  It is a library of pure functions.
+ * and filtered shadow maps -- uniform, LiSPSM and PSM light matrices,
+ * cascades with their atlas, flicker reduction and bias, and the shading
+ * maths of VSM-family filters -- together with the analytic error model that
+ * says how good a choice is.  It is a library of pure functions: the engine
+ * renders; this library tells it with which matrices.
  *
  * THE SHORT MANUAL
  * ----------------
@@ -29,7 +32,7 @@
  *                 parameter n' together with SWARP_INFO_WARP_UNIFORM (n' = inf
  *                 IS the uniform shadow map; the error model accepts it), and
  *                 +INFINITY as the minimum of an empty depth buffer with
- *                 SWARP_INFO_MINDEPTH_EMPTY (extras).
+ *                 SWARP_INFO_MINDEPTH_EMPTY (experimental min-depth functions).
  * Memory, threads No function allocates, keeps global state, does I/O or
  *                 reads the locale.  Everything is reentrant and thread-safe.
  *                 Output arrays follow (T* out, size_t capacity, size_t*
@@ -41,8 +44,13 @@
  *                 (SWARP_ERR_RESERVED_NONZERO otherwise).
  * ABI             Plain structs of doubles and 32-bit enums; no unions,
  *                 bitfields, bool or alignment attributes.  Every enum has a
- *                 _FORCE_I32 sentinel.  Experimental additions sit behind
- *                 SWARP_EXPERIMENTAL_API.
+ *                 _FORCE_I32 sentinel.
+ * Stability       Sections 1-8 below are the stable API.  Section 9 is
+ *                 experimental: it is declared only when the caller defines
+ *                 SWARP_EXPERIMENTAL_API before including this header, and its
+ *                 functions and structs may still change in a minor release.
+ *                 The library always exports both parts; the statuses of both
+ *                 are in the one status list.
  * Papers          Comments cite the papers by tag and equation, e.g.
  *                 [RHS] (3.4):  [RHS] Stingl, "Robust Hard Shadows";
  *                 [GMNPR] Zhang et al., "Generalized Minimum-Norm Perspective
@@ -53,7 +61,71 @@
  *
  * This header includes only the C standard library and compiles as C99 and
  * as C++.
+ *
+ * STEP BY STEP: THE CALLS IN THE ORDER AN ENGINE MAKES THEM
+ * ---------------------------------------------------------
+ * 1. One shadow map per frame (directional light, LiSPSM with n_opt):
+ *
+ *      swarp_camera cam = {0};   // eye, dir, up, fovy (full, radians), aspect, near, far
+ *      swarp_light light = {0};  // type 0 = directional; direction = where light travels
+ *      swarp_aabb scene = {0};   // box S around every caster and receiver
+ *      swarp_setup_options opt = {0};   // zero = LiSPSM n_opt, 2048 x 2048 map, depth [-1, 1]
+ *      swarp_setup_result r;
+ *      swarp_status s = swarp_setup(&cam, &light, &scene, &opt, &r, NULL, 0, NULL);
+ *      if (swarp_status_is_error(s))      // r untouched: keep the last frame's matrix
+ *          log(swarp_status_string(s));
+ *      float m[16];
+ *      swarp_mat4_to_float(&r.matrix, m); // world -> light clip space: render the
+ *                                         // casters with it; receivers project with
+ *                                         // it and divide by w
+ *
+ * 2. Cascades (split frusta in one atlas, here flicker-free for a moving camera):
+ *
+ *      swarp_cascade_options co = {0};    // zero = 4 PSSM splits (lambda 0.5),
+ *                                         // LiSPSM per split, 2048 x 2048 tiles
+ *      co.setup.technique = SWARP_TECHNIQUE_UNIFORM;  // stabilisation needs uniform maps
+ *      co.stabilize.mode = SWARP_STABILIZE_SPHERE;
+ *      swarp_cascade_result cr;
+ *      swarp_cascade_split sp[SWARP_CASCADE_MAX_SPLITS];
+ *      size_t n;
+ *      s = swarp_cascade_setup(&cam, &light, &scene, &co, &cr, sp,
+ *                              SWARP_CASCADE_MAX_SPLITS, &n);
+ *      // split i: render into sp[i].tile.viewport_* with sp[i].matrix; the
+ *      // receiver shader picks i by view depth against cr.splits
+ *      // (swarp_cascade_select_depth), samples with sp[i].atlas_matrix, blends
+ *      // across borders (swarp_cascade_blend) and biases with
+ *      // sp[i].depth_per_world or swarp_bias_normal_offset.  The GLSL twins of
+ *      // these functions are in shaders/splits.glsl, those of the filters of
+ *      // section 8 in shaders/filtering.glsl.
+ *
+ * 3. The plan (experimental; when the scene, the budget or the hardware
+ *    changes, not per frame):
+ *
+ *      #define SWARP_EXPERIMENTAL_API   // before #include "shadowwarp.h"
+ *      swarp_scene_needs needs = {0};
+ *      needs.camera = cam; needs.light = light; needs.scene_box = scene;
+ *      needs.camera_moves = 1;
+ *      swarp_budget budget = {0};        // zero = 1 screen pixel per texel, 2048 maps
+ *      swarp_plan_result plan;
+ *      s = swarp_plan(&needs, &budget, &plan);
+ *      char text[SWARP_PLAN_EXPLAIN_MAX];
+ *      size_t len;
+ *      swarp_plan_explain(&plan, text, sizeof text, &len);  // why this chain
+ *      // then configure step 1 or 2 with plan.warp, plan.scheme,
+ *      // plan.split_count, plan.stabilize and plan.filter.
+ *
+ * CONTENTS
+ * --------
+ *   1. Boundary types               6. Error model (Lloyd's m_x, m_z)
+ *   2. Camera, light, scene box     7. Cascades: split schemes, atlas,
+ *   3. Status codes                    stabilisation, bias, the one call
+ *   4. Matrix helpers, version      8. Filtering: VSM, LVSM, EVSM, MSM, PCF
+ *   5. One shadow map: swarp_setup  9. Experimental (SWARP_EXPERIMENTAL_API):
+ *      and its steps; closed-form       polyhedra and bodies, light frames
+ *      warp parameters                  that follow, lixel maps, planner,
+ *                                       cube maps, min-depth near plane
  */
+
 #ifndef SHADOWWARP_H
 #define SHADOWWARP_H
 
@@ -90,197 +162,13 @@ extern "C" {
 #endif
 
 /* ======================================================================== */
-/* Status codes                                                             */
-/* ======================================================================== */
-/*
- * One X-macro list per stage, X(NAME, NUMBER, "message").  Errors 1..999,
- * informational 1000..1999.  Ranges per stage: core 1..99, geometry 100..199,
- * lixel 200..299, filter 300..399, splits/stabilise/bias 400..499,
- * plan 500..599, seeds' extras 600..699; informational likewise 1000 + ...
- * Numbers are part of the ABI: never renumber, never reuse.
- */
-#define SWARP_STATUS_LIST_CORE(X)                                                   \
-    X(SWARP_OK, 0, "ok")                                                            \
-    X(SWARP_ERR_NULL_POINTER, 1, "a required pointer argument is NULL")             \
-    X(SWARP_ERR_NON_FINITE, 2, "an input value is NaN or infinite")                 \
-    X(SWARP_ERR_INVALID_ARGUMENT, 3, "an argument is invalid")                      \
-    X(SWARP_ERR_OUT_OF_RANGE, 4, "a value lies outside its documented domain")      \
-    X(SWARP_ERR_NEAR_FAR, 5, "near must be > 0 and far must be > near")             \
-    X(SWARP_ERR_FOV, 6, "field of view (or half angle) outside its open interval")  \
-    X(SWARP_ERR_RESOLUTION, 7, "a resolution is zero, negative or not finite")      \
-    X(SWARP_ERR_CAPACITY, 8, "output capacity too small; needed count written")     \
-    X(SWARP_ERR_ZERO_VECTOR, 9, "a direction vector has zero length")               \
-    X(SWARP_ERR_RESERVED_NONZERO, 10, "a _reserved field is not zero")              \
-    X(SWARP_ERR_DEGENERATE, 11, "degenerate configuration")                         \
-    X(SWARP_ERR_SPLIT_COUNT, 12, "split count m is 0 (or above SWARP_SPLIT_MAX_COUNT for a split scheme)") \
-    X(SWARP_ERR_UNKNOWN_ENUM, 13, "an enum value is not one of the documented ones")\
-    X(SWARP_ERR_NOT_INCREASING, 14, "split distances must be strictly increasing")  \
-    X(SWARP_ERR_SINGULAR, 15, "a matrix is singular or too ill-conditioned")        \
-    X(SWARP_ERR_OVERFLOW, 16, "the result does not fit a finite double (inputs too extreme)") \
-    X(SWARP_INFO_WARP_UNIFORM, 1000,                                                \
-      "warp faded to uniform (duelling frusta: light parallel to the view)")        \
-    X(SWARP_INFO_GMNPR_ADJUSTED, 1001,                                              \
-      "theta < phi: lambda_GMNPR uses the adjusted branch lambda_2* of eq. (7)")    \
-    X(SWARP_INFO_GLPR_NO_SOLUTION, 1002,                                            \
-      "GLPR has no positive lambda here (theta <= phi); lambda_GMNPR was written")
-
-/* >>> status: geometry (100..199, 1100..1199) */
-#define SWARP_STATUS_LIST_GEOMETRY(X)                                                   \
-    X(SWARP_ERR_BODY_EMPTY, 100,                                                        \
-      "the view frustum misses the scene box (H = V intersect S is empty)")              \
-    X(SWARP_ERR_BOX_INVERTED, 101, "scene box min exceeds max on some axis")            \
-    X(SWARP_ERR_BOX_DEGENERATE, 102,                                                    \
-      "scene box has zero extent along two or more axes")                               \
-    X(SWARP_ERR_LIGHT_INSIDE_BODY, 103,                                                 \
-      "point light inside the body B: one perspective map cannot cover it")             \
-    X(SWARP_ERR_FOLLOW_FRAME, 104,                                                      \
-      "the previous result's light frame is not orthonormal or not from this technique")  \
-    X(SWARP_INFO_LIGHT_PARALLEL, 1100,                                                  \
-      "light nearly parallel to the view: light-space up blended toward camera right")  \
-    X(SWARP_INFO_FLAT_EXTENT, 1101,                                                     \
-      "an extent of the focused body is zero; its width was padded")                    \
-    X(SWARP_INFO_PSM_INVERSE, 1102,                                                     \
-      "light behind the camera: PSM uses the inverse projection (near < 0 < far)")      \
-    X(SWARP_INFO_LIGHT_NEAR_CLIPPED, 1103,                                              \
-      "spot light on or inside B: points nearer than its near plane left out")          \
-    X(SWARP_INFO_FOLLOW_LAG, 1104,                                                      \
-      "followed light frame still turning toward the aligned one (light near the view axis; LiSPSM weaker)")
-/* <<< status: geometry */
-
-/* >>> status: lixel (200..299, 1200..1299) */
-#define SWARP_STATUS_LIST_LIXEL(X)                                                  \
-    X(SWARP_ERR_LIXEL_COPLANAR, 200,                                                \
-      "four of the five points are coplanar (or a point is zero): no unique matrix")\
-    X(SWARP_ERR_LIXEL_PLANE_THROUGH_EYE, 201,                                       \
-      "the plane of interest passes through the viewer's eye")                      \
-    X(SWARP_ERR_LIXEL_LIGHT_ON_PLANE, 202, "the point light lies on the plane of interest") \
-    X(SWARP_ERR_LIXEL_LIGHT_PARALLEL_PLANE, 203,                                    \
-      "the directional light is parallel to the plane of interest")                 \
-    X(SWARP_ERR_LIXEL_PLANE_NOT_VISIBLE, 204,                                       \
-      "no corner ray of the viewer hits the plane of interest in front of the eye") \
-    X(SWARP_ERR_LIXEL_RAY_OUTSIDE, 205,                                             \
-      "a ray of C is outside the light frustum of M_l (q <= 0)")                    \
-    X(SWARP_ERR_LIXEL_RECT_TOO_LARGE, 206,                                          \
-      "the light-image rectangle exceeds the allowed size (C approaches the line pi)") \
-    X(SWARP_ERR_LIXEL_TWIST_LINE, 207,                                              \
-      "the twist line projects to a point in the light image")                      \
-    X(SWARP_ERR_LIXEL_EMPTY, 208,                                                   \
-      "no ray of C hits the plane inside the viewer's frustum")                     \
-    X(SWARP_INFO_LIXEL_ILL_CONDITIONED, 1200,                                       \
-      "the five-point configuration is ill-conditioned; the matrix may be inaccurate") \
-    X(SWARP_INFO_LIXEL_QUAD_ACROSS_INFINITY, 1201,                                  \
-      "the quad Q straddles infinity (horizon visible); exact on the visible part") \
-    X(SWARP_INFO_LIXEL_PLANE_PARALLEL_VIEW, 1202,                                   \
-      "the plane of interest is parallel to the view direction (horizon through the centre)") \
-    X(SWARP_INFO_LIXEL_LIGHT_BEHIND_PLANE, 1203,                                    \
-      "light and viewer are on opposite sides of the plane of interest")
-/* <<< status: lixel */
-
-/* >>> status: filter (300..399, 1300..1399) */
-#define SWARP_STATUS_LIST_FILTER(X)                                                      \
-    X(SWARP_ERR_FILTER_LAYER_COUNT, 300,                                                 \
-      "LVSM layer count must be in 1..SWARP_LVSM_MAX_LAYERS")                            \
-    X(SWARP_ERR_FILTER_OVERLAP, 301,                                                     \
-      "LVSM overlap delta must be >= 0 and smaller than the thinnest layer")             \
-    X(SWARP_ERR_FILTER_BAND, 302,                                                        \
-      "LVSM transition band must lie in [0, delta] and below half the thinnest layer")   \
-    X(SWARP_ERR_FILTER_NO_SAMPLES, 303, "Lloyd relaxation needs at least one sample")    \
-    X(SWARP_ERR_FILTER_BLOCKER, 304,                                                     \
-      "PCSS blocker depth must be > 0 and not beyond the receiver")                      \
-    X(SWARP_ERR_FILTER_EXPONENT, 305,                                                    \
-      "EVSM exponent must be > 0 and keep e^(2c) finite in double")                      \
-    X(SWARP_INFO_FILTER_NOT_CONVERGED, 1300,                                             \
-      "Lloyd relaxation reached its iteration bound before converging; splits written")  \
-    X(SWARP_INFO_FILTER_NO_WEIGHT, 1301,                                                 \
-      "all Lloyd sample weights are zero: splits written unchanged")                     \
-    X(SWARP_INFO_FILTER_MSM_DEGENERATE, 1302,                                            \
-      "moment matrix singular (at most two distinct depths): exact discrete form used")  \
-    X(SWARP_INFO_FILTER_DEPTH_CLAMPED, 1303,                                             \
-      "depth outside [s_0, s_N]: the first or last layer was used")
-/* <<< status: filter */
-
-/* >>> status: splits (400..499, 1400..1499) */
-#define SWARP_STATUS_LIST_SPLITS(X)                                                  \
-    X(SWARP_ERR_ATLAS_SPLITS, 400, "atlas layouts hold 1..16 splits")                 \
-    X(SWARP_ERR_STABILIZE_WARPED, 401,                                               \
-      "stabilisation is defined for uniform light-space aligned maps; a warp was requested") \
-    X(SWARP_ERR_STABILIZE_LIGHT, 402, "stabilisation needs a directional light")      \
-    X(SWARP_ERR_BEHIND_PROJECTION, 403,                                              \
-      "the point maps to w <= 0 (behind the centre of projection of the light matrix)") \
-    X(SWARP_ERR_SPLIT_EMPTY, 404, "a split frustum does not intersect the scene")    \
-    X(SWARP_INFO_LEVEL_ABOVE_RANGE, 1400,                                            \
-      "the body is larger than the reference size: quantised level above the level count") \
-    X(SWARP_INFO_OUTSIDE_SPLITS, 1401,                                               \
-      "the point lies in no split map; the split nearest in eye depth was chosen")   \
-    X(SWARP_INFO_BACKFACING, 1402,                                                   \
-      "the normal faces away from the light; N.L clamped to 0")                      \
-    X(SWARP_INFO_SPLIT_NO_SCENE, 1403,                                               \
-      "a stabilised split misses the scene box; its map covers the split frustum")
-/* <<< status: splits */
-
-/* >>> status: plan (500..599, 1500..1599) */
-#define SWARP_STATUS_LIST_PLAN(X)                                                   \
-    X(SWARP_ERR_PLAN_TOO_MANY_PLANES, 500,                                          \
-      "plane_count exceeds SWARP_PLAN_MAX_PLANES")                                  \
-    X(SWARP_ERR_PLAN_EMPTY_VIEW, 501,                                               \
-      "the scene box lies entirely outside the view depth range: nothing to shadow")\
-    X(SWARP_INFO_PLAN_BUDGET_UNMET, 1500,                                           \
-      "no chain meets the budget; the plan is the most accurate within the pass limit") \
-    X(SWARP_INFO_PLAN_POINT_LIGHT, 1501,                                            \
-      "point light planned as a directional light toward the view frustum's centre")
-/* <<< status: plan */
-
-/* >>> status: extras (600..699, 1600..1699) */
-#define SWARP_STATUS_LIST_EXTRAS(X)                                                 \
-    X(SWARP_ERR_CUBE_LIGHT_AT_INFINITY, 600,                                        \
-      "light at infinity in post-projective space (w = 0): no cube map, use one orthographic map") \
-    X(SWARP_ERR_CUBE_POINT_UNCOVERED, 601,                                          \
-      "the point is in no cube-map face frustum (it coincides with the light or lies behind it)") \
-    X(SWARP_INFO_CUBE_NEAR_CLIPPED, 1601,                                           \
-      "the point lies inside the faces' near cube (a < Z_1): the face camera clips it") \
-    X(SWARP_INFO_MINDEPTH_EMPTY, 1600,                                              \
-      "the depth buffer holds nothing nearer than far: near plane left unchanged")
-/* <<< status: extras */
-
-#define SWARP_STATUS_LIST(X)          \
-    SWARP_STATUS_LIST_CORE(X)         \
-    SWARP_STATUS_LIST_GEOMETRY(X)     \
-    SWARP_STATUS_LIST_LIXEL(X)        \
-    SWARP_STATUS_LIST_FILTER(X)       \
-    SWARP_STATUS_LIST_SPLITS(X)       \
-    SWARP_STATUS_LIST_PLAN(X)         \
-    SWARP_STATUS_LIST_EXTRAS(X)
-
-#define SWARP_STATUS_ENUM_ENTRY_(name, value, message) name = value,
-typedef enum swarp_status {
-    SWARP_STATUS_LIST(SWARP_STATUS_ENUM_ENTRY_)
-    SWARP_STATUS_FORCE_I32 = 0x7FFFFFFF
-} swarp_status;
-#undef SWARP_STATUS_ENUM_ENTRY_
-
-/** @brief Readable message for a status; never NULL ("unknown status" for
- *  numbers not in the list).  The string is static. */
-SWARP_API const char* swarp_status_string(swarp_status status);
-/** @brief Symbolic name of a status ("SWARP_ERR_CAPACITY"); never NULL. */
-SWARP_API const char* swarp_status_name(swarp_status status);
-/** @brief 1 if status is an error (1..999 or unknown), 0 for SWARP_OK and
- *  informational results (1000..1999). */
-SWARP_API int swarp_status_is_error(swarp_status status);
-
-/** @brief SWARP_VERSION_NUMBER of the library actually linked. */
-SWARP_API int swarp_version_number(void);
-/** @brief SWARP_VERSION_STRING of the library actually linked. */
-SWARP_API const char* swarp_version_string(void);
-
-/* ======================================================================== */
-/* Types at the boundary                                                    */
+/* 1. Boundary types                                                        */
 /* ======================================================================== */
 
 typedef struct swarp_vec3 { double x, y, z; } swarp_vec3;
 typedef struct swarp_vec4 { double x, y, z, w; } swarp_vec4;
 /** Column-major 4x4 matrix: element (row r, column c) is m[c*4 + r]. */
 typedef struct swarp_mat4 { double m[16]; } swarp_mat4;
-typedef struct swarp_aabb { swarp_vec3 min, max; } swarp_aabb;
 /** Plane a*x + b*y + c*z + d = 0; (a, b, c) is the normal (any length > 0). */
 typedef struct swarp_plane { double a, b, c, d; } swarp_plane;
 
@@ -291,6 +179,10 @@ typedef enum swarp_depth_range {
     SWARP_DEPTH_ZERO_TO_ONE = 2,      /**< D3D, Vulkan, Metal: z_ndc in [0, 1] */
     SWARP_DEPTH_RANGE_FORCE_I32 = 0x7FFFFFFF
 } swarp_depth_range;
+
+/* ======================================================================== */
+/* 2. Camera, light and scene box                                           */
+/* ======================================================================== */
 
 /** The viewer.  dir and up need not be unit length; up must not be parallel
  *  to dir.  fovy is the FULL vertical field of view in radians, in (0, pi);
@@ -326,6 +218,194 @@ typedef struct swarp_light {
     uint32_t _reserved[4];
 } swarp_light;
 
+/** The scene box S: the axis-aligned bounds of every shadow caster and
+ *  receiver, world units, min <= max componentwise. */
+typedef struct swarp_aabb { swarp_vec3 min, max; } swarp_aabb;
+
+/* ======================================================================== */
+/* 3. Status codes                                                          */
+/* ======================================================================== */
+/*
+ * The status every function returns.  It stands here, before the first
+ * function, because C and C++ need an enum complete before a prototype
+ * returns it.  One X-macro list per stage, X(NAME, NUMBER, "message").
+ * Errors 1..999, informational 1000..1999.  Ranges per stage: core 1..99,
+ * geometry 100..199, lixel 200..299, filter 300..399, cascades (splits,
+ * atlas, stabilisation, bias) 400..499, plan 500..599, extras (cube maps,
+ * min depth) 600..699; informational likewise 1000 + ...  Numbers are part
+ * of the ABI: never renumber, never reuse.
+ */
+#define SWARP_STATUS_LIST_CORE(X)                                                   \
+    X(SWARP_OK, 0, "ok")                                                            \
+    X(SWARP_ERR_NULL_POINTER, 1, "a required pointer argument is NULL")             \
+    X(SWARP_ERR_NON_FINITE, 2, "an input value is NaN or infinite")                 \
+    X(SWARP_ERR_INVALID_ARGUMENT, 3, "an argument is invalid")                      \
+    X(SWARP_ERR_OUT_OF_RANGE, 4, "a value lies outside its documented domain")      \
+    X(SWARP_ERR_NEAR_FAR, 5, "near must be > 0 and far must be > near")             \
+    X(SWARP_ERR_FOV, 6, "field of view (or half angle) outside its open interval")  \
+    X(SWARP_ERR_RESOLUTION, 7, "a resolution is zero, negative or not finite")      \
+    X(SWARP_ERR_CAPACITY, 8, "output capacity too small; needed count written")     \
+    X(SWARP_ERR_ZERO_VECTOR, 9, "a direction vector has zero length")               \
+    X(SWARP_ERR_RESERVED_NONZERO, 10, "a _reserved field is not zero")              \
+    X(SWARP_ERR_DEGENERATE, 11, "degenerate configuration")                         \
+    X(SWARP_ERR_SPLIT_COUNT, 12, "split count m is 0 (or above SWARP_SPLIT_MAX_COUNT for a split scheme)") \
+    X(SWARP_ERR_UNKNOWN_ENUM, 13, "an enum value is not one of the documented ones")\
+    X(SWARP_ERR_NOT_INCREASING, 14, "split distances must be strictly increasing")  \
+    X(SWARP_ERR_SINGULAR, 15, "a matrix is singular or too ill-conditioned")        \
+    X(SWARP_ERR_OVERFLOW, 16, "the result does not fit a finite double (inputs too extreme)") \
+    X(SWARP_INFO_WARP_UNIFORM, 1000,                                                \
+      "warp faded to uniform (duelling frusta: light parallel to the view)")        \
+    X(SWARP_INFO_GMNPR_ADJUSTED, 1001,                                              \
+      "theta < phi: lambda_GMNPR uses the adjusted branch lambda_2* of eq. (7)")    \
+    X(SWARP_INFO_GLPR_NO_SOLUTION, 1002,                                            \
+      "GLPR has no positive lambda here (theta <= phi); lambda_GMNPR was written")
+
+/* geometry: 100..199, 1100..1199 */
+#define SWARP_STATUS_LIST_GEOMETRY(X)                                                   \
+    X(SWARP_ERR_BODY_EMPTY, 100,                                                        \
+      "the view frustum misses the scene box (H = V intersect S is empty)")              \
+    X(SWARP_ERR_BOX_INVERTED, 101, "scene box min exceeds max on some axis")            \
+    X(SWARP_ERR_BOX_DEGENERATE, 102,                                                    \
+      "scene box has zero extent along two or more axes")                               \
+    X(SWARP_ERR_LIGHT_INSIDE_BODY, 103,                                                 \
+      "point light inside the body B: one perspective map cannot cover it")             \
+    X(SWARP_ERR_FOLLOW_FRAME, 104,                                                      \
+      "the previous result's light frame is not orthonormal or not from this technique")  \
+    X(SWARP_INFO_LIGHT_PARALLEL, 1100,                                                  \
+      "light nearly parallel to the view: light-space up blended toward camera right")  \
+    X(SWARP_INFO_FLAT_EXTENT, 1101,                                                     \
+      "an extent of the focused body is zero; its width was padded")                    \
+    X(SWARP_INFO_PSM_INVERSE, 1102,                                                     \
+      "light behind the camera: PSM uses the inverse projection (near < 0 < far)")      \
+    X(SWARP_INFO_LIGHT_NEAR_CLIPPED, 1103,                                              \
+      "spot light on or inside B: points nearer than its near plane left out")          \
+    X(SWARP_INFO_FOLLOW_LAG, 1104,                                                      \
+      "followed light frame still turning toward the aligned one (light near the view axis; LiSPSM weaker)")
+
+/* lixel: 200..299, 1200..1299 */
+#define SWARP_STATUS_LIST_LIXEL(X)                                                  \
+    X(SWARP_ERR_LIXEL_COPLANAR, 200,                                                \
+      "four of the five points are coplanar (or a point is zero): no unique matrix")\
+    X(SWARP_ERR_LIXEL_PLANE_THROUGH_EYE, 201,                                       \
+      "the plane of interest passes through the viewer's eye")                      \
+    X(SWARP_ERR_LIXEL_LIGHT_ON_PLANE, 202, "the point light lies on the plane of interest") \
+    X(SWARP_ERR_LIXEL_LIGHT_PARALLEL_PLANE, 203,                                    \
+      "the directional light is parallel to the plane of interest")                 \
+    X(SWARP_ERR_LIXEL_PLANE_NOT_VISIBLE, 204,                                       \
+      "no corner ray of the viewer hits the plane of interest in front of the eye") \
+    X(SWARP_ERR_LIXEL_RAY_OUTSIDE, 205,                                             \
+      "a ray of C is outside the light frustum of M_l (q <= 0)")                    \
+    X(SWARP_ERR_LIXEL_RECT_TOO_LARGE, 206,                                          \
+      "the light-image rectangle exceeds the allowed size (C approaches the line pi)") \
+    X(SWARP_ERR_LIXEL_TWIST_LINE, 207,                                              \
+      "the twist line projects to a point in the light image")                      \
+    X(SWARP_ERR_LIXEL_EMPTY, 208,                                                   \
+      "no ray of C hits the plane inside the viewer's frustum")                     \
+    X(SWARP_INFO_LIXEL_ILL_CONDITIONED, 1200,                                       \
+      "the five-point configuration is ill-conditioned; the matrix may be inaccurate") \
+    X(SWARP_INFO_LIXEL_QUAD_ACROSS_INFINITY, 1201,                                  \
+      "the quad Q straddles infinity (horizon visible); exact on the visible part") \
+    X(SWARP_INFO_LIXEL_PLANE_PARALLEL_VIEW, 1202,                                   \
+      "the plane of interest is parallel to the view direction (horizon through the centre)") \
+    X(SWARP_INFO_LIXEL_LIGHT_BEHIND_PLANE, 1203,                                    \
+      "light and viewer are on opposite sides of the plane of interest")
+
+/* filter: 300..399, 1300..1399 */
+#define SWARP_STATUS_LIST_FILTER(X)                                                      \
+    X(SWARP_ERR_FILTER_LAYER_COUNT, 300,                                                 \
+      "LVSM layer count must be in 1..SWARP_LVSM_MAX_LAYERS")                            \
+    X(SWARP_ERR_FILTER_OVERLAP, 301,                                                     \
+      "LVSM overlap delta must be >= 0 and smaller than the thinnest layer")             \
+    X(SWARP_ERR_FILTER_BAND, 302,                                                        \
+      "LVSM transition band must lie in [0, delta] and below half the thinnest layer")   \
+    X(SWARP_ERR_FILTER_NO_SAMPLES, 303, "Lloyd relaxation needs at least one sample")    \
+    X(SWARP_ERR_FILTER_BLOCKER, 304,                                                     \
+      "PCSS blocker depth must be > 0 and not beyond the receiver")                      \
+    X(SWARP_ERR_FILTER_EXPONENT, 305,                                                    \
+      "EVSM exponent must be > 0 and keep e^(2c) finite in double")                      \
+    X(SWARP_INFO_FILTER_NOT_CONVERGED, 1300,                                             \
+      "Lloyd relaxation reached its iteration bound before converging; splits written")  \
+    X(SWARP_INFO_FILTER_NO_WEIGHT, 1301,                                                 \
+      "all Lloyd sample weights are zero: splits written unchanged")                     \
+    X(SWARP_INFO_FILTER_MSM_DEGENERATE, 1302,                                            \
+      "moment matrix singular (at most two distinct depths): exact discrete form used")  \
+    X(SWARP_INFO_FILTER_DEPTH_CLAMPED, 1303,                                             \
+      "depth outside [s_0, s_N]: the first or last layer was used")
+
+/* cascades: 400..499, 1400..1499 */
+#define SWARP_STATUS_LIST_SPLITS(X)                                                  \
+    X(SWARP_ERR_ATLAS_SPLITS, 400, "atlas layouts hold 1..16 splits")                 \
+    X(SWARP_ERR_STABILIZE_WARPED, 401,                                               \
+      "stabilisation is defined for uniform light-space aligned maps; a warp was requested") \
+    X(SWARP_ERR_STABILIZE_LIGHT, 402, "stabilisation needs a directional light")      \
+    X(SWARP_ERR_BEHIND_PROJECTION, 403,                                              \
+      "the point maps to w <= 0 (behind the centre of projection of the light matrix)") \
+    X(SWARP_ERR_SPLIT_EMPTY, 404, "a split frustum does not intersect the scene")    \
+    X(SWARP_INFO_LEVEL_ABOVE_RANGE, 1400,                                            \
+      "the body is larger than the reference size: quantised level above the level count") \
+    X(SWARP_INFO_OUTSIDE_SPLITS, 1401,                                               \
+      "the point lies in no split map; the split nearest in eye depth was chosen")   \
+    X(SWARP_INFO_BACKFACING, 1402,                                                   \
+      "the normal faces away from the light; N.L clamped to 0")                      \
+    X(SWARP_INFO_SPLIT_NO_SCENE, 1403,                                               \
+      "a stabilised split misses the scene box; its map covers the split frustum")
+
+/* plan: 500..599, 1500..1599 */
+#define SWARP_STATUS_LIST_PLAN(X)                                                   \
+    X(SWARP_ERR_PLAN_TOO_MANY_PLANES, 500,                                          \
+      "plane_count exceeds SWARP_PLAN_MAX_PLANES")                                  \
+    X(SWARP_ERR_PLAN_EMPTY_VIEW, 501,                                               \
+      "the scene box lies entirely outside the view depth range: nothing to shadow")\
+    X(SWARP_INFO_PLAN_BUDGET_UNMET, 1500,                                           \
+      "no chain meets the budget; the plan is the most accurate within the pass limit") \
+    X(SWARP_INFO_PLAN_POINT_LIGHT, 1501,                                            \
+      "point light planned as a directional light toward the view frustum's centre")
+
+/* extras: 600..699, 1600..1699 */
+#define SWARP_STATUS_LIST_EXTRAS(X)                                                 \
+    X(SWARP_ERR_CUBE_LIGHT_AT_INFINITY, 600,                                        \
+      "light at infinity in post-projective space (w = 0): no cube map, use one orthographic map") \
+    X(SWARP_ERR_CUBE_POINT_UNCOVERED, 601,                                          \
+      "the point is in no cube-map face frustum (it coincides with the light or lies behind it)") \
+    X(SWARP_INFO_CUBE_NEAR_CLIPPED, 1601,                                           \
+      "the point lies inside the faces' near cube (a < Z_1): the face camera clips it") \
+    X(SWARP_INFO_MINDEPTH_EMPTY, 1600,                                              \
+      "the depth buffer holds nothing nearer than far: near plane left unchanged")
+
+#define SWARP_STATUS_LIST(X)          \
+    SWARP_STATUS_LIST_CORE(X)         \
+    SWARP_STATUS_LIST_GEOMETRY(X)     \
+    SWARP_STATUS_LIST_LIXEL(X)        \
+    SWARP_STATUS_LIST_FILTER(X)       \
+    SWARP_STATUS_LIST_SPLITS(X)       \
+    SWARP_STATUS_LIST_PLAN(X)         \
+    SWARP_STATUS_LIST_EXTRAS(X)
+
+#define SWARP_STATUS_ENUM_ENTRY_(name, value, message) name = value,
+typedef enum swarp_status {
+    SWARP_STATUS_LIST(SWARP_STATUS_ENUM_ENTRY_)
+    SWARP_STATUS_FORCE_I32 = 0x7FFFFFFF
+} swarp_status;
+#undef SWARP_STATUS_ENUM_ENTRY_
+
+/** @brief Readable message for a status; never NULL ("unknown status" for
+ *  numbers not in the list).  The string is static. */
+SWARP_API const char* swarp_status_string(swarp_status status);
+/** @brief Symbolic name of a status ("SWARP_ERR_CAPACITY"); never NULL. */
+SWARP_API const char* swarp_status_name(swarp_status status);
+/** @brief 1 if status is an error (1..999 or unknown), 0 for SWARP_OK and
+ *  informational results (1000..1999). */
+SWARP_API int swarp_status_is_error(swarp_status status);
+
+/* ======================================================================== */
+/* 4. Matrix helpers and version                                            */
+/* ======================================================================== */
+
+/** @brief SWARP_VERSION_NUMBER of the library actually linked. */
+SWARP_API int swarp_version_number(void);
+/** @brief SWARP_VERSION_STRING of the library actually linked. */
+SWARP_API const char* swarp_version_string(void);
+
 /** @brief Convert a matrix to float for the GPU (column-major kept).
  *  @param[in] m  matrix; @param[out] out 16 floats.
  *  @return SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE (an element is NaN/Inf
@@ -355,8 +435,278 @@ SWARP_API swarp_status swarp_mat4_invert(const swarp_mat4* a, swarp_mat4* r);
 SWARP_API swarp_status swarp_mat4_transform(const swarp_mat4* m, const swarp_vec3* p, swarp_vec4* out);
 
 /* ======================================================================== */
-/* Core: closed-form warp parameters            (src/params.c)              */
+/* 5. One shadow map: swarp_setup and its steps                             */
 /* ======================================================================== */
+typedef enum swarp_warp_param {
+    SWARP_WARP_PARAM_DEFAULT = 0,   /**< = SWARP_WARP_PARAM_NOPT */
+    SWARP_WARP_PARAM_NOPT = 1,      /**< n_opt [RHS] (3.2), z_0, z_1 from B */
+    SWARP_WARP_PARAM_NREPAR = 2,    /**< n_repar(η(γ, Θ)) [RHS] (3.3)-(3.4) */
+    SWARP_WARP_PARAM_GMNPR = 3,     /**< λ_GMNPR [GMNPR] (8) times d */
+    SWARP_WARP_PARAM_PSEUDO = 4,    /**< pseudo-near/far n_opt [RHS] (4.2) */
+    SWARP_WARP_PARAM_USER = 5,      /**< caller's n' (eye units) */
+    SWARP_WARP_PARAM_FORCE_I32 = 0x7FFFFFFF
+} swarp_warp_param;
+
+typedef enum swarp_warp_center {
+    SWARP_WARP_CENTER_DEFAULT = 0,        /**< = VIEW_VECTOR */
+    SWARP_WARP_CENTER_VIEW_VECTOR = 1,    /**< [RHS] §4.1: C_start from s on the view vector */
+    SWARP_WARP_CENTER_NEAREST_VERTEX = 2, /**< [WS06]: C_start from the nearest vertex e */
+    SWARP_WARP_CENTER_FORCE_I32 = 0x7FFFFFFF
+} swarp_warp_center;
+
+typedef enum swarp_technique {
+    SWARP_TECHNIQUE_DEFAULT = 0, /**< = SWARP_TECHNIQUE_LISPSM */
+    SWARP_TECHNIQUE_UNIFORM = 1, /**< focused uniform map [RHS] §3.1 */
+    SWARP_TECHNIQUE_LISPSM = 2,  /**< LiSPSM [RHS] §3.2.1, parameter per swarp_warp_param */
+    SWARP_TECHNIQUE_PSM = 3,     /**< PSM in the camera's post-perspective space [KOZ] */
+    SWARP_TECHNIQUE_FORCE_I32 = 0x7FFFFFFF
+} swarp_technique;
+
+/** Options of swarp_setup; a zeroed struct is a valid request. */
+typedef struct swarp_setup_options {
+    swarp_technique technique;
+    swarp_warp_param param;        /**< LiSPSM parameter (default n_opt) */
+    swarp_warp_center center;      /**< LiSPSM projection centre (default [RHS] §4.1) */
+    swarp_depth_range depth_range; /**< default [-1, 1] */
+    uint32_t map_width, map_height;       /**< texels; 0: 2048 (height 0: = width) */
+    uint32_t screen_width, screen_height; /**< pixels; 0: 1920 x 1080 */
+    uint32_t pancake;       /**< 1: light depth range over the receivers H only ("pancaking") */
+    uint32_t psm_slideback; /**< PSM, light behind the camera: 1 = virtual slide-back instead
+                                 of Kozlov's inverse projection */
+    uint32_t _pad0, _pad1;  /**< must be zero */
+    double n_user;          /**< SWARP_WARP_PARAM_USER: n' in eye units */
+    double pseudo_near;     /**< SWARP_WARP_PARAM_PSEUDO: n_p in [0, 1) */
+    double pseudo_far;      /**< SWARP_WARP_PARAM_PSEUDO: f_p in [0, 1) */
+    double slideback;       /**< PSM: extra slide-back distance (world units, >= 0) that
+                                 keeps the near-plane quad [KOZ] Fig. 14-6 */
+    double min_depth;       /**< [RHS] §4.3 measured minimum LINEAR view depth of the
+                                 frame (e.g. from the last frame's depth buffer); 0 = not
+                                 given.  swarp_setup (and swarp_cascade_setup
+                                 unstabilised) replace the camera's near by
+                                 max(near, min_depth (1 - 1e-3)) before the adjusted
+                                 near/far of §3.3.1 (swarp_mindepth_near with the default
+                                 margin); min_depth >= far, or +INFINITY (nothing seen),
+                                 keeps the near.  Ignored by swarp_setup_range/_points
+                                 (explicit range).  >= 0 */
+    uint32_t _reserved[2];  /**< must be zero */
+} swarp_setup_options;
+
+/** Results of swarp_setup.  matrix = light_proj · light_view maps world
+ *  space to the light's clip space (x, y in [-1, 1], depth per the depth
+ *  range; divide by w). */
+typedef struct swarp_setup_result {
+    swarp_mat4 light_view;
+    swarp_mat4 light_proj;
+    swarp_mat4 matrix;
+    double n_eye;      /**< n' used, eye units ((3.2) scaled by (f - n)/d); +inf uniform;
+                            PSM: near + slide-back */
+    double n_light;    /**< n in the warp's light-space units; +inf uniform */
+    double view_near;  /**< the view depth range used (adjusted [RHS] §3.3.1 in swarp_setup) */
+    double view_far;
+    double gamma;      /**< angle between view direction and light axis, radians */
+    double max_mx;     /**< predicted max m_x over [view_near, view_far], [RHS] (2.3) */
+    double max_mz;     /**< predicted max m_z, [RHS] (2.4) */
+    double light_near; /**< light depth range covered (world units along the light; PSM: */
+    double light_far;  /**<   post-perspective units), informational */
+    uint32_t point_count; /**< number of points of B */
+    uint32_t _pad;
+    uint32_t _reserved[4];
+} swarp_setup_result;
+
+/** @brief The one call: H = V ∩ S, adjusted near/far [RHS] §3.3.1, B
+ *  [RHS] §3.1.1, light view with light-space alignment, the technique's
+ *  warp ([RHS] §3.2.1 / [KOZ]), focusing [RHS] (3.1) and the error model's
+ *  prediction [RHS] (2.3)-(2.8).  No allocation.
+ *  @param[in] cam, light, scene  (scene: the box S of casters and receivers)
+ *  @param[in] opts     NULL or zeroed for defaults
+ *  @param[out] out     matrices and report
+ *  @param[out] out_points  the points of B (NULL: not wanted); capacity
+ *                      SWARP_BODY_MAX_POINTS always suffices
+ *  @param[out] out_count   number of points of B (may be NULL)
+ *  @return SWARP_OK or an informational status (SWARP_INFO_WARP_UNIFORM,
+ *          SWARP_INFO_PSM_INVERSE, SWARP_INFO_LIGHT_PARALLEL,
+ *          SWARP_INFO_LIGHT_NEAR_CLIPPED, SWARP_INFO_FLAT_EXTENT);
+ *          SWARP_ERR_BODY_EMPTY (camera looks away from the box),
+ *          SWARP_ERR_LIGHT_INSIDE_BODY, SWARP_ERR_BOX_INVERTED,
+ *          SWARP_ERR_BOX_DEGENERATE, SWARP_ERR_CAPACITY, and the argument
+ *          errors (NULL, NON_FINITE, FOV, NEAR_FAR, ZERO_VECTOR, DEGENERATE,
+ *          UNKNOWN_ENUM, RESERVED_NONZERO, OUT_OF_RANGE); SWARP_ERR_DEGENERATE
+ *          also when the map is finer than world coordinates resolve (B far
+ *          below the rounding of coordinates of size |eye|: its world-space
+ *          matrix cannot be evaluated in double).  Computed relative to the
+ *          eye (the translation is folded into light_view and matrix). */
+SWARP_API swarp_status swarp_setup(const swarp_camera* cam, const swarp_light* light,
+                                   const swarp_aabb* scene, const swarp_setup_options* opts,
+                                   swarp_setup_result* out, swarp_vec3* out_points,
+                                   size_t capacity, size_t* out_count);
+
+/** @brief swarp_setup for an explicit view depth range [near, far] (a split
+ *  frustum), used as given (no adjustment).  cam->near/far are ignored.
+ *  @return as swarp_setup. */
+SWARP_API swarp_status swarp_setup_range(const swarp_camera* cam, const swarp_light* light,
+                                         const swarp_aabb* scene, double near, double far,
+                                         const swarp_setup_options* opts, swarp_setup_result* out,
+                                         swarp_vec3* out_points, size_t capacity,
+                                         size_t* out_count);
+
+/** @brief The light matrices for given points of B (count <=
+ *  SWARP_BODY_MAX_POINTS) and the view depth range [near, far] they refer
+ *  to.  receivers (may be NULL): the points of H, used for pancaking, the
+ *  nearest vertex e ([WS06] centre) and PSM's unit cube clipping.
+ *  @return as swarp_setup; SWARP_ERR_INVALID_ARGUMENT for count 0 or above
+ *          the maximum. */
+SWARP_API swarp_status swarp_setup_points(const swarp_camera* cam, const swarp_light* light,
+                                          const swarp_vec3* points, size_t count,
+                                          const swarp_vec3* receivers, size_t receiver_count,
+                                          double near, double far,
+                                          const swarp_setup_options* opts,
+                                          swarp_setup_result* out);
+
+/* ---- the steps of swarp_setup, each callable on its own ---------------- */
+
+/** Worst case of points of B written by swarp_body_points / swarp_setup. */
+#define SWARP_BODY_MAX_POINTS 128
+
+/** @brief The points of B (its vertices) for the view depths [near, far].
+ *  @param[out] out capacity points; SWARP_BODY_MAX_POINTS always suffices.
+ *  @param[out] out_count number of points (also on SWARP_ERR_CAPACITY).
+ *  @return SWARP_OK, SWARP_ERR_BODY_EMPTY, SWARP_ERR_BOX_DEGENERATE,
+ *          SWARP_ERR_CAPACITY, and the argument errors of the camera, light
+ *          and box (SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
+ *          SWARP_ERR_FOV, SWARP_ERR_NEAR_FAR, SWARP_ERR_ZERO_VECTOR,
+ *          SWARP_ERR_DEGENERATE (up parallel to dir), SWARP_ERR_UNKNOWN_ENUM,
+ *          SWARP_ERR_RESERVED_NONZERO, SWARP_ERR_OUT_OF_RANGE): the statuses
+ *          of the experimental swarp_body_h and swarp_body_from_h. */
+SWARP_API swarp_status swarp_body_points(const swarp_camera* cam, double near, double far,
+                                         const swarp_light* light, const swarp_aabb* scene,
+                                         swarp_vec3* out, size_t capacity, size_t* out_count);
+
+/** @brief Adjusted near/far [RHS] §3.3.1 ([ZSN07]): min and max view depth
+ *  over the points of H = V ∩ S (view frustum cam->near..cam->far).
+ *  @return SWARP_OK, SWARP_ERR_BODY_EMPTY, SWARP_ERR_BOX_DEGENERATE, and the
+ *          argument errors of the camera and box (SWARP_ERR_NULL_POINTER,
+ *          SWARP_ERR_NON_FINITE, SWARP_ERR_FOV, SWARP_ERR_NEAR_FAR,
+ *          SWARP_ERR_ZERO_VECTOR, SWARP_ERR_DEGENERATE,
+ *          SWARP_ERR_RESERVED_NONZERO, SWARP_ERR_OUT_OF_RANGE): the statuses
+ *          of the experimental swarp_body_h. */
+SWARP_API swarp_status swarp_body_adjusted_range(const swarp_camera* cam, const swarp_aabb* scene,
+                                                 double* out_near, double* out_far);
+
+/*
+ * Light-space alignment ([RHS] §3.2.1, [WS06]): the light view looks along
+ * the light (directional: the direction light travels; point light: the
+ * axis a given by the caller, usually the spot axis or the direction to the
+ * centre of B) and its up vector (+y) is the view direction v projected on
+ * the plane perpendicular to that axis, v_perp = v - (v·a) a, |v_perp| =
+ * sin γ.  Continuous fallback near γ = 0 and γ = 180°: the up vector is
+ * normalize(v_perp + w(sin γ) r_perp), r the camera's right vector and
+ * w(s) = SWARP_FOCUS_BLEND_WEIGHT (1 - s/SWARP_FOCUS_BLEND_SIN)^2 for
+ * s < SWARP_FOCUS_BLEND_SIN (0 above): no threshold switch, the basis turns
+ * smoothly through the right vector when the light passes parallel or
+ * antiparallel to the view in the plane of v and the camera's up vector.
+ * (Every continuous tangent field on the sphere has a zero: this one's lies
+ * off that plane, on the v-r great circle, at γ ≈ 5.6° (sin γ ≈ 0.097); see
+ * docs/geometry.md; the experimental swarp_setup_follow has no such point.)
+ * SWARP_INFO_LIGHT_PARALLEL reports that the blend is active.
+ */
+#define SWARP_FOCUS_BLEND_SIN 0.17364817766693033 /* sin 10° */
+#define SWARP_FOCUS_BLEND_WEIGHT 0.5
+
+/** @brief Light view matrix (right-handed, looks down -z) with light-space
+ *  alignment.  [RHS] §3.2.1
+ *  @param[in] cam    the viewer (its dir and up give the alignment)
+ *  @param[in] light  the light
+ *  @param[in] axis   point lights: the direction the light view looks along
+ *                    (any length > 0); NULL means light->direction (spot)
+ *                    or, for an omni light, the direction to cam->eye.
+ *                    Ignored for directional lights.
+ *  @param[out] out_view  light view; origin at cam->eye (directional) or at
+ *                    the light position (point light).
+ *  @return SWARP_OK, SWARP_INFO_LIGHT_PARALLEL, SWARP_ERR_NULL_POINTER,
+ *          SWARP_ERR_NON_FINITE, SWARP_ERR_ZERO_VECTOR, SWARP_ERR_OVERFLOW
+ *          (an origin so far out, |origin| near DBL_MAX, that its distance
+ *          along an axis of the view, the matrix's translation, exceeds
+ *          DBL_MAX), ... */
+SWARP_API swarp_status swarp_focus_light_view(const swarp_camera* cam, const swarp_light* light,
+                                              const swarp_vec3* axis, swarp_mat4* out_view);
+
+/** @brief The focusing matrix A_fit.  [RHS] (3.1)
+ *  Maps the bounding box of the points transformed by m (with perspective
+ *  division) to x, y in [-1, 1] and z in [-1, 1] (SWARP_DEPTH_NEG_ONE_TO_ONE)
+ *  or [0, 1] (SWARP_DEPTH_ZERO_TO_ONE); (3.1) is the [0, 1] case.
+ *  @param[in] m          transform applied to the points first (e.g. P·L)
+ *  @param[in] points     world-space points (xy extent), count >= 1
+ *  @param[in] z_points   points whose depth extent is used (NULL: points).
+ *                        Pancaking passes the receivers (H) here.
+ *  @param[out] out_A_fit the fit; a flat extent (below 1e-12 of its
+ *                        coordinates: rounding noise) gets the widest other
+ *                        extent as its width, or, all flat, width 1 (1e-6
+ *                        of the coordinates beyond 1e6) (status).
+ *  @return SWARP_OK, SWARP_INFO_FLAT_EXTENT (an extent was zero),
+ *          SWARP_ERR_NULL_POINTER, SWARP_ERR_INVALID_ARGUMENT (count 0, or
+ *          z_points given with z_count 0), SWARP_ERR_NON_FINITE,
+ *          SWARP_ERR_UNKNOWN_ENUM, SWARP_ERR_DEGENERATE (a point maps to
+ *          w <= 0). */
+SWARP_API swarp_status swarp_focus_fit(const swarp_mat4* m, const swarp_vec3* points, size_t count,
+                                       const swarp_vec3* z_points, size_t z_count,
+                                       swarp_depth_range depth_range, swarp_mat4* out_A_fit);
+
+
+/** Options of the LiSPSM warp; zero means default. */
+typedef struct swarp_warp_options {
+    swarp_warp_param param;
+    swarp_warp_center center;
+    double n_user;       /**< SWARP_WARP_PARAM_USER: n' in eye units (> 0; +inf = uniform) */
+    double pseudo_near;  /**< n_p of (4.2), fraction in [0, 1) */
+    double pseudo_far;   /**< f_p of (4.2), fraction in [0, 1), n_p + f_p < 1 */
+    uint32_t _reserved[4];
+} swarp_warp_options;
+
+/** What the warp used (outputs of swarp_warp_lispsm). */
+typedef struct swarp_warp_info {
+    double n_light;   /**< n in light-space units (distance C to near plane of P); +inf = uniform */
+    double n_eye;     /**< n' in eye units: n_light (f - n) / d, what the error model takes */
+    double d;         /**< extent of B along the warp axis (light-space y) */
+    double z_0, z_1;  /**< eye depths of the near and far ends of P's axis */
+    double gamma;     /**< angle between view and light axis, radians [0, pi] */
+    uint32_t _reserved[4];
+} swarp_warp_info;
+
+/** @brief The LiSPSM warp P for the points of B in light view space.
+ *  [RHS] §3.2.1, (3.2), §4.1; [WS06].
+ *  P is a perspective along light-space +y with projection centre C, written
+ *  in the normalised form w = 1 + (y - y_min)/n, so n = +inf is exactly the
+ *  identity-like uniform map (continuous fade as γ -> 0).  Follow it with
+ *  swarp_focus_fit(P·L, ...).  n (out_info->n_light) is at least 1e-6 times
+ *  the largest |y| of B in light space: below that the matrix cannot carry
+ *  the 1 of w next to the rounding of y (w would reach 0 on B), so a smaller
+ *  parameter is raised to this bound (w >= 1 on B to ~1e-9 relative).
+ *  @param[in] light_view  L from swarp_focus_light_view
+ *  @param[in] cam         the viewer (eye, dir, fovy)
+ *  @param[in] near, far   the view depth range the warp refers to (adjusted
+ *                         or split range; 0 < near < far)
+ *  @param[in] points      points of B (world), count >= 1
+ *  @param[in] nearest     the nearest vertex e of H to the eye (used by
+ *                         SWARP_WARP_CENTER_NEAREST_VERTEX; NULL: the point
+ *                         s on the view vector at depth near, [RHS] §4.1)
+ *  @param[in] opts        NULL or zeroed for defaults
+ *  @param[out] out_P      the warp (applied after L)
+ *  @param[out] out_info   may be NULL
+ *  @return SWARP_OK, SWARP_INFO_WARP_UNIFORM (n = inf: θ -> 0 or η = -1),
+ *          SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE, SWARP_ERR_NEAR_FAR,
+ *          SWARP_ERR_UNKNOWN_ENUM, SWARP_ERR_RESERVED_NONZERO,
+ *          SWARP_ERR_OUT_OF_RANGE (n_user, pseudo fractions),
+ *          SWARP_ERR_DEGENERATE (a point of B at w <= 0 under light_view, or
+ *          a warp that cannot be represented), SWARP_ERR_SINGULAR (a
+ *          light_view that is not a rigid look-at and not invertible; a
+ *          look-at is inverted exactly). */
+SWARP_API swarp_status swarp_warp_lispsm(const swarp_mat4* light_view, const swarp_camera* cam,
+                                         double near, double far, const swarp_vec3* points,
+                                         size_t count, const swarp_vec3* nearest,
+                                         const swarp_warp_options* opts,
+                                         swarp_mat4* out_P, swarp_warp_info* out_info);
+
+/* ---- closed-form warp parameters ----------------------------------------- */
 /*
  * Naming: the warp parameter n (or n') is the distance from the projection
  * centre C of the warping frustum P to its near plane [RHS] §3.2.1.  n = n_e
@@ -500,8 +850,9 @@ SWARP_API swarp_status swarp_gmnpr_lambda_glpr(double theta, double phi, double 
                                                double* out_lambda);
 
 /* ======================================================================== */
-/* Core: Lloyd's error metric                    (src/error.c)              */
+/* 6. Error model: Lloyd's m_x, m_z                                         */
 /* ======================================================================== */
+
 
 /** Inputs of Lloyd's error metric [RHS] (2.3)-(2.8).  res_ix x res_iy is the
  *  image resolution (pixels; the paper has res_ix >= res_iy), res_s x res_t
@@ -574,8 +925,9 @@ SWARP_API swarp_status swarp_error_split_max(const swarp_error_config* cfg,
                                              double* out_max_mx, double* out_max_mz);
 
 /* ======================================================================== */
-/* Core: split schemes                           (src/split.c)              */
+/* 7. Cascades: split schemes, atlas, stabilisation, bias, the one call     */
 /* ======================================================================== */
+/* ---- split schemes ------------------------------------------------------- */
 /** Largest split count m the schemes accept; they write m + 1 values, so an
  *  array of SWARP_SPLIT_MAX_COUNT + 1 doubles always suffices. */
 #define SWARP_SPLIT_MAX_COUNT 64
@@ -611,10 +963,845 @@ SWARP_API swarp_status swarp_split_pseudo(double n, double f, double n_p, double
                                           double lambda, uint32_t m, double* out,
                                           size_t capacity, size_t* out_count);
 
-/* >>> api: geometry (src/poly.c body.c focus.c warp.c psm.c setup.c) */
+/* ---- texture atlas and filter kernel, [RHS] §3.3.5, (3.9) --------------- */
+
+/** Most splits an atlas layout holds ([RHS] Fig. 3.16c: a 4 x 4 grid). */
+#define SWARP_ATLAS_MAX_SPLITS 16
+
+/** Whole-atlas facts of a layout.  grid x grid tiles of tile_res x tile_res
+ *  texels; atlas_res = grid * tile_res; l_sc = 1/grid ([RHS] (3.9)). */
+typedef struct swarp_atlas_info {
+    uint32_t split_count; /**< m */
+    uint32_t grid;        /**< 1 (m = 1), 2 (m <= 4), 3 (m <= 9), 4 (m <= 16) */
+    double tile_res;      /**< texels per tile side */
+    double atlas_res;     /**< texels per atlas side */
+    double l_sc;          /**< [RHS] (3.9): 1, 1/2, 1/3, 1/4 */
+    uint32_t _reserved[4];
+} swarp_atlas_info;
+
+/** One split's place in the atlas.  Tiles are numbered row by row starting
+ *  at texture coordinate (0, 0) (x = i mod grid, y = i / grid), the order
+ *  of [RHS] Fig. 3.16.  viewport_* are glViewport()-style texel numbers.
+ *  clip_to_atlas maps the split's clip coordinates (x, y, z, w) to
+ *  homogeneous atlas coordinates (u w, v w, d w, w): after the divide u, v
+ *  are atlas texture coordinates in [u0, u0 + l_sc] x [v0, v0 + l_sc] and d
+ *  the window depth in [0, 1] (whatever the clip depth range). */
+typedef struct swarp_atlas_tile {
+    double viewport_x, viewport_y;          /**< lower-left texel */
+    double viewport_width, viewport_height; /**< texels */
+    swarp_mat4 clip_to_atlas;
+} swarp_atlas_tile;
+
+/** @brief Atlas layout for m splits ([RHS] §3.3.5, Fig. 3.16).
+ *  m = 1 uses the whole texture (grid 1, l_sc = 1); 2..4 a 2 x 2 grid,
+ *  5..9 a 3 x 3 grid, 10..16 a 4 x 4 grid.
+ *  @param m          number of splits, 1..SWARP_ATLAS_MAX_SPLITS
+ *  @param tile_res   texels per tile side (> 0, at most 2^24)
+ *  @param depth      clip depth convention of the split matrices
+ *  @param[out] out_info  layout facts (may be NULL)
+ *  @param[out] out_tiles m tiles; capacity >= m
+ *  @param[out] out_count m (also written with SWARP_ERR_CAPACITY)
+ *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_ATLAS_SPLITS,
+ *          SWARP_ERR_RESOLUTION, SWARP_ERR_UNKNOWN_ENUM, SWARP_ERR_CAPACITY. */
+SWARP_API swarp_status swarp_atlas_layout(uint32_t m, uint32_t tile_res, swarp_depth_range depth,
+                                          swarp_atlas_info* out_info, swarp_atlas_tile* out_tiles,
+                                          size_t capacity, size_t* out_count);
+
+/** @brief l_sc of [RHS] (3.9) for m splits: 1 (m = 1), 1/2, 1/3, 1/4. */
+SWARP_API swarp_status swarp_atlas_lsc(uint32_t m, double* out_l_sc);
+
+/** @brief PCF kernel scale of one split, [RHS] (3.9):
+ *  s_i = r_l l_sc (2/(max_x - min_x), 2/(max_y - min_y)).
+ *  min/max are the split's focus box in light space (the box of (3.1)), in
+ *  world units for a uniform map.  s_i is in the split's clip units scaled by
+ *  l_sc; s_i/2 is the extent of r_l in atlas texture coordinates, so a kernel
+ *  of s_i has the same world size r_l in every split.
+ *  @param r_l  kernel size in world units (>= 0)
+ *  @param m    split count (selects l_sc)
+ *  @param min_x, max_x, min_y, max_y  max > min
+ *  @param[out] out_s  s_i (x, y)
+ *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
+ *          SWARP_ERR_OUT_OF_RANGE (r_l < 0, max <= min), SWARP_ERR_ATLAS_SPLITS,
+ *          SWARP_ERR_OVERFLOW (a scale beyond DBL_MAX: width ~ r_l/DBL_MAX). */
+SWARP_API swarp_status swarp_atlas_kernel_scale(double r_l, uint32_t m, double min_x,
+                                                double max_x, double min_y, double max_y,
+                                                double out_s[2]);
+
+/* ---- flicker reduction, [RHS] §3.5 (ZZB09) ------------------------------ */
+
+typedef enum swarp_stabilize_mode {
+    SWARP_STABILIZE_DEFAULT = 0, /**< = SWARP_STABILIZE_NONE */
+    SWARP_STABILIZE_NONE = 1,    /**< light-aligned focus on the body box, no snapping */
+    SWARP_STABILIZE_SPHERE = 2,  /**< exact solution: minimal sphere of the split frustum */
+    SWARP_STABILIZE_LEVELS = 3,  /**< approximate solution: quantised scale */
+    SWARP_STABILIZE_MODE_FORCE_I32 = 0x7FFFFFFF
+} swarp_stabilize_mode;
+
+/** Options of the stabilised light matrix.  Zero means default. */
+typedef struct swarp_stabilize_options {
+    swarp_stabilize_mode mode;
+    uint32_t levels;       /**< LEVELS: number of scale levels; 0 = 64 [RHS] §3.5 */
+    swarp_vec3 origin;     /**< world origin of snapping AND of the output matrix */
+    double level_max_size; /**< LEVELS: world size of level `levels`; 0 = diameter of
+                                the split frustum's minimal sphere */
+    swarp_depth_range depth;
+    uint32_t _reserved0;
+    uint32_t _reserved[4];
+} swarp_stabilize_options;
+
+/** What the stabiliser did. */
+typedef struct swarp_stabilize_report {
+    swarp_vec3 sphere_center;     /**< exact minimal enclosing sphere of the split frustum */
+    double sphere_radius;
+    double centroid_radius;       /**< sphere about the 8 corners' centroid */
+    double area_saved;            /**< 1 - (r_min / r_centroid)^2: map area the exact
+                                       sphere saves against the centroid sphere */
+    double texel_size_x;          /**< world size of one texel along light-space x */
+    double texel_size_y;
+    double offset_x, offset_y;    /**< light-space centre of the map relative to origin,
+                                       whole multiples of the texel size */
+    uint32_t level_x, level_y;    /**< LEVELS: quantised level (1..); else 0 */
+    uint32_t _reserved[4];
+} swarp_stabilize_report;
+
+/** @brief Exact minimal enclosing sphere of the split frustum [n_i, f_i] of a
+ *  camera (closed form: by the frustum's two mirror symmetries the centre
+ *  lies on the view axis at depth min(f_i, (n_i + f_i)(1 + k^2)/2), k^2 =
+ *  tan^2(fovy/2)(1 + aspect^2)), and the centroid sphere engines use.
+ *  [RHS] §3.5 exact solution (ZZB09).
+ *  @param cam      camera (near/far ignored; the split range is n_i, f_i)
+ *  @param n_i, f_i split range, 0 < n_i < f_i
+ *  @param[out] out_center world centre; @param[out] out_radius radius
+ *  (> 0: at least the smallest positive double, for a range of a few
+ *  subnormals); @param[out] out_centroid_radius may be NULL (>= radius)
+ *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
+ *          SWARP_ERR_NEAR_FAR, SWARP_ERR_FOV, SWARP_ERR_ZERO_VECTOR,
+ *          SWARP_ERR_OUT_OF_RANGE (aspect <= 0), SWARP_ERR_DEGENERATE (up
+ *          parallel to dir), SWARP_ERR_RESERVED_NONZERO, SWARP_ERR_OVERFLOW
+ *          (the sphere's radius or centre exceeds DBL_MAX, e.g. f tan(fovy/2)
+ *          aspect > DBL_MAX). */
+SWARP_API swarp_status swarp_stabilize_sphere(const swarp_camera* cam, double n_i, double f_i,
+                                              swarp_vec3* out_center, double* out_radius,
+                                              double* out_centroid_radius);
+
+/** @brief Light-space basis of a directional light used by the stabiliser:
+ *  rows of out_view are u (right), v (up), w = -light direction, each unit;
+ *  out_view maps origin-relative world coordinates to light view space (a
+ *  right-handed view looking along the light).  It depends on the light
+ *  direction only, never on the camera, so texels keep their orientation.
+ *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
+ *          SWARP_ERR_ZERO_VECTOR. */
+SWARP_API swarp_status swarp_stabilize_light_view(const swarp_vec3* light_dir, swarp_mat4* out_view);
+
+/** @brief Stabilised (flicker-free) uniform light matrix of one split for a
+ *  directional light.  [RHS] §3.5 (ZZB09).
+ *  SPHERE: the map covers the split frustum's exact minimal sphere (constant
+ *  world size 2 r res/(res - 1), rounded up to 2^-20 relative so ulp-level
+ *  wobble of n_i, f_i leaves it bit-identical); LEVELS: the light-space box of body_points
+ *  with each axis' size rounded up to a multiple of level_max_size/levels;
+ *  NONE: that box unquantised and unsnapped.  SPHERE and LEVELS snap the
+ *  light-space map centre to whole texels relative to opt->origin, in double,
+ *  so a world point's texel coordinates change by whole numbers only and
+ *  jitter does not grow with the distance from the world origin.
+ *  Depth covers the sphere / body and, toward the light, the scene box.
+ *  out_matrix maps ORIGIN-RELATIVE world coordinates (p - origin) to clip
+ *  space (large-world rendering); for origin = 0 it is the ordinary matrix.
+ *  @param cam        camera; @param n_i, f_i split range (0 < n_i < f_i)
+ *  @param light_dir  direction the light travels (non-zero)
+ *  @param body_points world points of the split's body B_i (LEVELS, NONE:
+ *                     count >= 1 required; SPHERE: may be NULL, 0)
+ *  @param scene      scene box (may be NULL): extends depth toward the light
+ *  @param res        map resolution in texels (>= 2)
+ *  @param opt        options (may be NULL = defaults)
+ *  @param[out] out_matrix  the light matrix; @param[out] out_report may be NULL
+ *  @return SWARP_OK, SWARP_INFO_LEVEL_ABOVE_RANGE, SWARP_ERR_NULL_POINTER,
+ *          SWARP_ERR_NON_FINITE, SWARP_ERR_NEAR_FAR, SWARP_ERR_FOV,
+ *          SWARP_ERR_ZERO_VECTOR, SWARP_ERR_RESOLUTION, SWARP_ERR_UNKNOWN_ENUM,
+ *          SWARP_ERR_RESERVED_NONZERO, SWARP_ERR_OUT_OF_RANGE,
+ *          SWARP_ERR_DEGENERATE, SWARP_ERR_OVERFLOW (finite arguments but a
+ *          matrix entry or texel size beyond DBL_MAX: coordinates near
+ *          DBL_MAX, or an extent tiny against the coordinates). */
+SWARP_API swarp_status swarp_stabilize_directional(const swarp_camera* cam, double n_i, double f_i,
+                                                   const swarp_vec3* light_dir,
+                                                   const swarp_vec3* body_points, size_t body_count,
+                                                   const swarp_aabb* scene, uint32_t res,
+                                                   const swarp_stabilize_options* opt,
+                                                   swarp_mat4* out_matrix,
+                                                   swarp_stabilize_report* out_report);
+
+/** @brief Offset snapping for a caller's own uniform light matrix ([RHS]
+ *  §3.5, the offset problem): shifts the clip-space translation by less than
+ *  half a texel so that `origin` lands on a texel corner.  While the matrix's
+ *  scale and orientation stay the same (e.g. quantised with LEVELS), every
+ *  world point then moves by whole texels between frames.  Done in double on
+ *  (origin-relative) coordinates.
+ *  @param[in] m  world -> clip matrix of a uniform map (last row 0 0 0 w)
+ *  @param res_s, res_t  map resolution in texels (> 0)
+ *  @param[in] origin  snapping origin (world)
+ *  @param[out] out  the snapped matrix (may alias m)
+ *  @return SWARP_OK, SWARP_ERR_STABILIZE_WARPED (m is projective: a warped
+ *          map has no uniform texel grid), SWARP_ERR_NULL_POINTER,
+ *          SWARP_ERR_NON_FINITE, SWARP_ERR_RESOLUTION, SWARP_ERR_SINGULAR
+ *          (w = 0). */
+SWARP_API swarp_status swarp_stabilize_snap_matrix(const swarp_mat4* m, double res_s, double res_t,
+                                                   const swarp_vec3* origin, swarp_mat4* out);
+
+/* ---- bias, [KOZ] §14.2.3 ------------------------------------------------ */
+
+/** A shadow map as the bias functions see it: the final world -> clip matrix
+ *  (uniform or warped, per split), its resolution and clip depth range.
+ *  "Depth units" below are WINDOW depth d in [0, 1] (the value stored in the
+ *  depth texture): d = (z_ndc + 1)/2 for [-1, 1], d = z_ndc for [0, 1]. */
+typedef struct swarp_bias_map {
+    swarp_mat4 world_to_clip;
+    double res_s;  /**< texels along clip x */
+    double res_t;  /**< texels along clip y */
+    swarp_depth_range depth;
+    uint32_t _reserved0;
+    uint32_t _reserved[4];
+} swarp_bias_map;
+
+/** @brief World-space size of the texel at p ([KOZ] §14.2.3): p is mapped to
+ *  the map, shifted by one texel along s (and t) at constant depth and
+ *  mapped back; the lengths of the world displacements are L_s and L_t.
+ *  Exact for warped maps at any point (finite one-texel step, no centre-of-
+ *  map approximation).  L_texel = max(L_s, L_t).
+ *  @param[out] out_L_texel, out_L_s, out_L_t (each may be NULL, not all)
+ *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
+ *          SWARP_ERR_RESOLUTION, SWARP_ERR_UNKNOWN_ENUM,
+ *          SWARP_ERR_RESERVED_NONZERO, SWARP_ERR_SINGULAR,
+ *          SWARP_ERR_BEHIND_PROJECTION. */
+SWARP_API swarp_status swarp_bias_texel_size(const swarp_bias_map* map, const swarp_vec3* p,
+                                             double* out_L_texel, double* out_L_s, double* out_L_t);
+
+/** @brief Unit vector from p toward the light (the L of [KOZ] §14.2.3):
+ *  -direction for a directional light, (position - p)/|.| for a point light.
+ *  @param[in] light, p; @param[out] out_L unit vector
+ *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
+ *          SWARP_ERR_UNKNOWN_ENUM, SWARP_ERR_RESERVED_NONZERO,
+ *          SWARP_ERR_ZERO_VECTOR (zero direction, point light at p). */
+SWARP_API swarp_status swarp_bias_to_light(const swarp_light* light, const swarp_vec3* p,
+                                           swarp_vec3* out_L);
+
+/** @brief [KOZ] §14.2.3 world-space bias: P_biased = P + L (a + b L_texel),
+ *  L the unit vector toward the light, L_texel from swarp_bias_texel_size.
+ *  The point moves toward the light by exactly a + b L_texel world units.
+ *  @param a  constant bias, world units; @param b  bias per texel size
+ *  (dimensionless); a + b L_texel must be >= 0 (else SWARP_ERR_OUT_OF_RANGE)
+ *  @param[out] out_p  biased point; @param[out] out_amount may be NULL
+ *  @return as swarp_bias_texel_size, plus SWARP_ERR_OUT_OF_RANGE,
+ *          SWARP_ERR_ZERO_VECTOR (point light at p). */
+SWARP_API swarp_status swarp_bias_kozlov(const swarp_bias_map* map, const swarp_light* light,
+                                         const swarp_vec3* p, double a, double b,
+                                         swarp_vec3* out_p, double* out_amount);
+
+/** @brief Normal-offset bias: P' = P + N k L_texel (1 - N.L), N the unit
+ *  normal, L the unit vector to the light, N.L clamped to [0, 1] (a back-
+ *  facing normal gives SWARP_INFO_BACKFACING and the full offset k L_texel).
+ *  @param k  offset in texels (>= 0)
+ *  @param[out] out_p; @param[out] out_amount offset length in world units
+ *  (may be NULL).
+ *  @return SWARP_OK, SWARP_INFO_BACKFACING, SWARP_ERR_OUT_OF_RANGE (k < 0),
+ *          SWARP_ERR_ZERO_VECTOR (normal), and the errors of
+ *          swarp_bias_texel_size and swarp_bias_to_light. */
+SWARP_API swarp_status swarp_bias_normal_offset(const swarp_bias_map* map, const swarp_light* light,
+                                                const swarp_vec3* p, const swarp_vec3* normal,
+                                                double k, swarp_vec3* out_p, double* out_amount);
+
+/** @brief Constant plus slope-scaled depth bias, given in WORLD units and
+ *  converted to the map's depth units at p:
+ *  world bias  = c + s L_texel tan(acos(N.L))  (tan clamped to 10; the depth
+ *  step of a receiver tilted by the angle between N and L across one texel),
+ *  depth bias  = window-depth difference between p and p moved by the world
+ *  bias toward the light (exact for warped maps; linear for uniform maps).
+ *  @param c  constant, world units (>= 0); @param s slope scale (>= 0)
+ *  @param[out] out_world_bias, out_depth_bias (either may be NULL, not both)
+ *  @return as swarp_bias_normal_offset. */
+SWARP_API swarp_status swarp_bias_slope_scaled(const swarp_bias_map* map, const swarp_light* light,
+                                               const swarp_vec3* p, const swarp_vec3* normal,
+                                               double c, double s, double* out_world_bias,
+                                               double* out_depth_bias);
+
+/** @brief Window depth per world unit toward the light at p: the factor that
+ *  turns a world-space bias into the depth units of this split's map (minus
+ *  the derivative of d along L at p, so > 0 for a map looking along the
+ *  light).  Uniform maps: constant per split.
+ *  @param[out] out_depth_per_world window depth units per world unit
+ *  @return SWARP_OK, SWARP_ERR_BEHIND_PROJECTION, and the argument errors of
+ *          swarp_bias_texel_size and swarp_bias_to_light. */
+SWARP_API swarp_status swarp_bias_depth_per_world(const swarp_bias_map* map, const swarp_light* light,
+                                                  const swarp_vec3* p, double* out_depth_per_world);
+
+/** @brief Receiver-plane depth bias: the depth gradient (dd/ds, dd/dt) in
+ *  window depth per TEXEL of the receiver plane at p spanned by the world
+ *  tangents tangent_a, tangent_b (e.g. dFdx/dFdy of the world position, or
+ *  two edges of the triangle).  Exact derivative of the (possibly
+ *  projective) map at p.  A PCF tap offset by (ds, dt) texels compares
+ *  against d + dd/ds ds + dd/dt dt.  GLSL twin in shaders/splits.glsl.
+ *  @return as swarp_bias_texel_size; SWARP_ERR_DEGENERATE when the plane is
+ *          seen edge-on by the light (its texel-space image is a line): the
+ *          tangents' texel-space images parallel to 1e-12, or their
+ *          determinant within its own rounding bound (the double evaluation
+ *          of M p and M T cannot tell the plane from an edge-on one, e.g.
+ *          a point far from the map's centre of projection). */
+SWARP_API swarp_status swarp_bias_receiver_plane(const swarp_bias_map* map, const swarp_vec3* p,
+                                                 const swarp_vec3* tangent_a,
+                                                 const swarp_vec3* tangent_b, double out_grad[2]);
+
+/* ---- cascades: split selection and blending, [RHS] §3.3.3 --------------- */
+
+/** @brief View depth of a world point: (p - eye) . dir/|dir|, the z that
+ *  swarp_cascade_select_depth and swarp_cascade_blend take (in a shader:
+ *  -view_space_position.z).
+ *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
+ *          SWARP_ERR_ZERO_VECTOR, SWARP_ERR_OVERFLOW (the depth exceeds
+ *          DBL_MAX: p and eye near opposite ends of the double range). */
+SWARP_API swarp_status swarp_cascade_view_depth(const swarp_camera* cam, const swarp_vec3* p,
+                                                double* out_depth);
+
+/** @brief Split selection by eye depth (PSSM, ZSXL06; [RHS] §3.3.3):
+ *  the i with splits[i] <= view_depth < splits[i+1] (a depth on a border
+ *  belongs to the split that starts there; the far end to the last split).
+ *  GLSL twin in shaders/splits.glsl.
+ *  @param splits   m + 1 strictly increasing eye-space distances
+ *  @param m        split count (1..SWARP_SPLIT_MAX_COUNT)
+ *  @param view_depth  positive distance along the view direction
+ *  @param[out] out_index
+ *  @return SWARP_OK; SWARP_INFO_OUTSIDE_SPLITS (depth before the first or
+ *          after the last split: the nearest split is written);
+ *          SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE, SWARP_ERR_SPLIT_COUNT,
+ *          SWARP_ERR_NOT_INCREASING. */
+SWARP_API swarp_status swarp_cascade_select_depth(const double* splits, size_t m, double view_depth,
+                                                  uint32_t* out_index);
+
+/** @brief Split selection by best resolution (ZZB09; [RHS] §3.3.3): among
+ *  the splits whose map covers p (w > 0, |x|, |y| <= w, depth inside the clip
+ *  range) the one with the smallest world texel size L_texel at p (exact,
+ *  swarp_bias_texel_size; ties go to the lower index).  GLSL twin in
+ *  shaders/splits.glsl.
+ *  @param maps  m split maps (world -> clip, resolution, depth range)
+ *  @param fallback_index  written with SWARP_INFO_OUTSIDE_SPLITS when no map
+ *                         covers p (pass the depth selection), < m
+ *  @param[out] out_index; @param[out] out_L_texel (may be NULL; the chosen
+ *  split's L_texel, 0 for the fallback)
+ *  @return SWARP_OK, SWARP_INFO_OUTSIDE_SPLITS, SWARP_ERR_NULL_POINTER,
+ *          SWARP_ERR_NON_FINITE, SWARP_ERR_SPLIT_COUNT, SWARP_ERR_OUT_OF_RANGE
+ *          (fallback_index >= m), and the map errors of swarp_bias_texel_size. */
+SWARP_API swarp_status swarp_cascade_select_best(const swarp_bias_map* maps, size_t m,
+                                                 const swarp_vec3* p, uint32_t fallback_index,
+                                                 uint32_t* out_index, double* out_L_texel);
+
+/** @brief Cascade blend weight in a transition band: the last `band` fraction
+ *  of each split's depth range (except the last split's) fades linearly into
+ *  the next split.  Writes the depth-selected split i and the weight w of
+ *  split i; the shader mixes shadow_i w + shadow_{i+1} (1 - w).  w = 1
+ *  outside the bands, w -> 0 at the border, so the result is continuous.
+ *  GLSL twin in shaders/splits.glsl.
+ *  @param band  fraction of each split's length, in [0, 1) (0: hard switch)
+ *  @return as swarp_cascade_select_depth; SWARP_ERR_OUT_OF_RANGE for band. */
+SWARP_API swarp_status swarp_cascade_blend(const double* splits, size_t m, double view_depth,
+                                           double band, uint32_t* out_index, double* out_weight);
+
+/* ---- cascades: split distances and the configuration's error curve ----- */
+
+typedef enum swarp_split_scheme {
+    SWARP_SCHEME_DEFAULT = 0,   /**< = PRACTICAL with lambda 0.5 (PSSM, ZSXL06) */
+    SWARP_SCHEME_UNIFORM = 1,   /**< [RHS] (3.6) */
+    SWARP_SCHEME_LOG = 2,       /**< [RHS] (3.7) */
+    SWARP_SCHEME_PRACTICAL = 3, /**< [RHS] (3.8), lambda as given (0 = uniform) */
+    SWARP_SCHEME_PSEUDO = 4,    /**< [RHS] (4.1): practical over [n_p, f_p] */
+    SWARP_SCHEME_FORCE_I32 = 0x7FFFFFFF
+} swarp_split_scheme;
+
+/** How to split [n, f].  Zero means default (4 splits, PSSM lambda 0.5). */
+typedef struct swarp_split_options {
+    uint32_t count;            /**< m, 1..SWARP_SPLIT_MAX_COUNT; 0 = 4 */
+    swarp_split_scheme scheme;
+    double lambda;             /**< PRACTICAL, PSEUDO: in [0, 1] */
+    double pseudo_near;        /**< PSEUDO (and the warp of the FIRST split): n_p as a
+                                    fraction of f - n measured from n, [0, 1) */
+    double pseudo_far;         /**< PSEUDO (and the warp of the LAST split): f_p as a
+                                    fraction of f - n measured from f; n_p + f_p < 1 */
+    uint32_t _reserved[4];
+} swarp_split_options;
+
+/** @brief Split distances C_0 = n < C_1 < ... < C_m = f of a scheme, on the
+ *  (adjusted, [RHS] §3.3.1) range [n, f], through the core schemes
+ *  swarp_split_uniform/log/practical/pseudo.  PSEUDO converts the fractions
+ *  to distances n + n_p (f - n) and f - f_p (f - n) for (4.1).
+ *  @param[out] out  m + 1 distances; capacity >= m + 1 (SWARP_ERR_CAPACITY
+ *  with the count written otherwise)
+ *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
+ *          SWARP_ERR_NEAR_FAR, SWARP_ERR_SPLIT_COUNT, SWARP_ERR_OUT_OF_RANGE,
+ *          SWARP_ERR_UNKNOWN_ENUM, SWARP_ERR_RESERVED_NONZERO,
+ *          SWARP_ERR_CAPACITY. */
+SWARP_API swarp_status swarp_cascade_splits(double n, double f, const swarp_split_options* opt,
+                                            double* out, size_t capacity, size_t* out_count);
+
+/** @brief Warp parameter n' of each split for LiSPSM with an overhead light
+ *  in the error model's frame: n_opt of [RHS] (3.2) with d = C_{i+1} - C_i,
+ *  z_0 = C_i, z_1 = C_{i+1}; the first split uses the pseudo-near fraction
+ *  and the last the pseudo-far fraction of (4.2) ([RHS] §4.2), when given.
+ *  @param[out] out_n_primes m values.
+ *  @return SWARP_OK and the errors of swarp_warp_nopt_pseudo. */
+SWARP_API swarp_status swarp_cascade_nopt(const double* splits, size_t m, double pseudo_near,
+                                          double pseudo_far, double* out_n_primes);
+
+/** Worst-case sample count of swarp_cascade_error_curve. */
+#define SWARP_CASCADE_CURVE_MAX(m, samples_per_split) ((m) * (samples_per_split))
+
+/** @brief The error curve of a whole configuration ([RHS] §3.3.4, Fig. 3.15,
+ *  3.18) through the core's piecewise model swarp_error_split_curve: for
+ *  each split `samples_per_split` depths from C_i (the value just after the
+ *  border: a border belongs to the split that starts there) up to the left
+ *  limit at C_{i+1} (the last sample is nextafter(C_{i+1}, 0), f itself for
+ *  the last split).  out_mx or out_mz may be NULL.
+ *  @param samples_per_split >= 2
+ *  @return SWARP_OK, SWARP_ERR_CAPACITY (count written), SWARP_ERR_NULL_POINTER,
+ *          SWARP_ERR_OUT_OF_RANGE, and the errors of swarp_error_split_curve. */
+SWARP_API swarp_status swarp_cascade_error_curve(const swarp_error_config* cfg,
+                                                 const double* splits, const double* n_primes,
+                                                 size_t m, size_t samples_per_split,
+                                                 double* out_z, double* out_mx, double* out_mz,
+                                                 size_t capacity, size_t* out_count);
+
+/* ---- cascades: the one call, [RHS] §3.3-3.4 ----------------------------- */
+
+/** Most splits swarp_cascade_setup computes (the largest atlas, Fig. 3.16c). */
+#define SWARP_CASCADE_MAX_SPLITS 16
+
+/** Warp strength of the splits 1.. of a cascade ([RHS] §3.4 "arbitrary
+ *  warping": "adjust the warping strength for each split independently or
+ *  based upon the variable first split according to the currently used split
+ *  scheme"). */
+typedef enum swarp_cascade_warp {
+    SWARP_CASCADE_WARP_DEFAULT = 0,    /**< = EACH */
+    SWARP_CASCADE_WARP_EACH = 1,       /**< every split its own: n_user[i] when given, else
+                                            the setup's parameter on the split (n_opt ...) */
+    SWARP_CASCADE_WARP_FROM_FIRST = 2, /**< split 0 as EACH (its n'_0); every split i >= 1
+                                            with n_user[i] == 0 gets
+                                            n'_i = n'_0 * nu_i / nu_0,  nu_i = C_i + sqrt(C_i C_{i+1})
+                                            (n_opt of [RHS] (3.2) for the split's own range in
+                                            the overhead frame, swarp_cascade_nopt): the first
+                                            split's strength relative to its optimum carried
+                                            through the scheme (log scheme: n'_0 (C_i / C_0)) */
+    SWARP_CASCADE_WARP_FORCE_I32 = 0x7FFFFFFF
+} swarp_cascade_warp;
+
+/** Options of swarp_cascade_setup; a zeroed struct is a valid request
+ *  (4 PSSM splits, LiSPSM n_opt per split, 2048² tiles, no stabilisation). */
+typedef struct swarp_cascade_options {
+    swarp_setup_options setup;         /**< technique and parameters for every split;
+                                            map_width = atlas tile size.  param PSEUDO:
+                                            pseudo_near/far are fractions of the whole
+                                            adjusted range; pseudo-near acts on the FIRST
+                                            split only, pseudo-far on the LAST ([RHS] §4.2) */
+    swarp_split_options split;         /**< scheme and count (count 1..16) */
+    swarp_stabilize_options stabilize; /**< mode != NONE needs technique UNIFORM and a
+                                            directional light; its depth field is
+                                            ignored (setup.depth_range is used).
+                                            SPHERE and LEVELS split the camera's own
+                                            near..far: no adjustment and no min_depth,
+                                            since [RHS] §3.5 needs constant split
+                                            ranges (the adjusted far moves with the
+                                            camera and the texels would drift) */
+    double kernel_world_size;          /**< r_l of [RHS] (3.9), world units; 0 = 1 */
+    double n_user[SWARP_CASCADE_MAX_SPLITS]; /**< per-split warp: n' in eye units for
+                                            split i (+INFINITY = uniform); 0 = use setup
+                                            (or, FROM_FIRST, derived from split 0) */
+    swarp_cascade_warp warp_per_split; /**< how splits 1.. get their warp strength */
+    uint32_t _reserved[3];             /**< must be zero */
+} swarp_cascade_options;
+
+/** One split of a cascade. */
+typedef struct swarp_cascade_split {
+    double near, far;          /**< C_i, C_{i+1}: eye-space depth range */
+    swarp_mat4 matrix;         /**< world -> split clip space (stabilised: takes p - origin) */
+    swarp_mat4 atlas_matrix;   /**< tile.clip_to_atlas * matrix: world -> atlas texture
+                                    coordinates (homogeneous; divide by w) */
+    swarp_atlas_tile tile;     /**< viewport in texels and clip -> atlas matrix */
+    double n_eye;              /**< warp parameter n' used (eye units); +inf uniform */
+    double kernel_scale[2];    /**< s_i of [RHS] (3.9) for kernel_world_size */
+    double max_mx, max_mz;     /**< exact maxima over [near, far], [RHS] (2.3)-(2.8) */
+    double mx_start, mz_start; /**< values at C_i: just after the border into this split */
+    double mx_end, mz_end;     /**< values at C_{i+1} with this split's map (just before) */
+    double texel_size;         /**< stabilised: world texel size; else 0 */
+    double depth_per_world;    /**< window depth per world unit toward the light at the
+                                    centroid of B_i (swarp_bias_depth_per_world): converts
+                                    a world-space bias to this split's depth units
+                                    (constant over the split for uniform maps) */
+    swarp_status status;       /**< this split's own (informational) status */
+    uint32_t point_count;      /**< points of B_i */
+    uint32_t _reserved[4];
+} swarp_cascade_split;
+
+/** Whole-cascade facts. */
+typedef struct swarp_cascade_result {
+    uint32_t split_count;
+    uint32_t _pad;
+    double view_near, view_far;  /**< adjusted near/far [RHS] §3.3.1 */
+    double splits[SWARP_CASCADE_MAX_SPLITS + 1]; /**< C_0 .. C_m */
+    double max_mx, max_mz;       /**< maxima of the whole configuration */
+    swarp_atlas_info atlas;
+    uint32_t _reserved[4];
+} swarp_cascade_result;
+
+/** @brief Cascaded (z-partitioned) shadow maps with any geometry technique.
+ *  [RHS] §3.3-3.4, §4.1-4.2, §3.3.5, (3.9), §3.5.
+ *  Adjusted near/far ([RHS] §3.3.1), split distances (swarp_cascade_splits),
+ *  per split its body B_i and light matrix through swarp_setup_range (the
+ *  split frustum instead of the view frustum, [RHS] §3.4; LiSPSM with the
+ *  robust projection centre of §4.1 unless setup.center says otherwise),
+ *  the atlas place and kernel scale, the stabilised matrix if asked for,
+ *  and the error model's values per split.  With one split the result is
+ *  swarp_setup's, bit for bit.
+ *  @param[in] cam, light, scene  as swarp_setup
+ *  @param[in] opts   NULL or zeroed for defaults
+ *  @param[out] out   whole-cascade facts
+ *  @param[out] out_splits  one entry per split; capacity >= count
+ *  @param[out] out_count   split count (also with SWARP_ERR_CAPACITY)
+ *  o.warp_per_split FROM_FIRST: [RHS] §3.4 arbitrary warping, see
+ *  swarp_cascade_warp.  o.setup.min_depth: [RHS] §4.3 measured min depth, as
+ *  in swarp_setup (not for stabilised cascades).
+ *  @return SWARP_OK or the first informational status of a split
+ *          (SWARP_INFO_SPLIT_NO_SCENE: LEVELS, a split of the constant
+ *          range misses the scene box and its map covers the split frustum);
+ *          SWARP_ERR_STABILIZE_WARPED, SWARP_ERR_STABILIZE_LIGHT,
+ *          SWARP_ERR_SPLIT_COUNT (count > 16), SWARP_ERR_SPLIT_EMPTY,
+ *          SWARP_ERR_CAPACITY, and the errors of swarp_setup,
+ *          swarp_cascade_splits and swarp_stabilize_directional (with
+ *          stabilisation: SWARP_ERR_OVERFLOW when the split's sphere or
+ *          matrix exceeds DBL_MAX). */
+SWARP_API swarp_status swarp_cascade_setup(const swarp_camera* cam, const swarp_light* light,
+                                           const swarp_aabb* scene,
+                                           const swarp_cascade_options* opts,
+                                           swarp_cascade_result* out,
+                                           swarp_cascade_split* out_splits, size_t capacity,
+                                           size_t* out_count);
+
 /* ======================================================================== */
-/* Geometry: convex polyhedra                    (src/poly.c)               */
+/* 8. Filtering: VSM, layered VSM, EVSM, MSM, PCF and PCSS                  */
 /* ======================================================================== */
+/*
+ * Filtered shadows: the maths an engine mirrors in its shaders (GLSL twins in
+ * shaders/filtering.glsl, derivations in docs/filtering.md).  Depths are light-space depths; "t" is the depth of the
+ * receiver being shaded, and visibility is the lit fraction P(X >= t) of the
+ * filter region (a texel at exactly the receiver depth counts as lit).
+ */
+
+/* ---- variance shadow maps ------------------------------------------------ */
+
+/** @brief Moments of one depth sample, [VSM] (3.1): out = (x, x^2).
+ *  Filtering (averaging) these over a region gives M_1 = E[x], M_2 = E[x^2].
+ *  Also the moments of a warped depth: pass the warped value.
+ *  @param[in] x  depth (any finite value; VSMs usually store [0, 1])
+ *  @param[out] out_moments  (M_1, M_2)
+ *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE. */
+SWARP_API swarp_status swarp_vsm_moments(double x, double out_moments[2]);
+
+/** @brief Chebyshev's one-tailed bound p_max(t), [VSM] (3.2)-(3.3):
+ *  mu = M_1, sigma2 = max(M_2 - M_1^2, min_variance),
+ *  p_max = sigma2 / (sigma2 + (t - mu)^2) for t > mu, and 1 for t <= mu.
+ *  @param[in] moments  filtered (M_1, M_2), same depth units as t
+ *  @param[in] t  receiver depth
+ *  @param[in] min_variance  >= 0, depth units squared: the clamp that hides
+ *             rounding of M_2 - M_1^2 (it also makes flat lit regions stay lit)
+ *  @param[out] out_p_max  in [0, 1]: an upper bound of the lit fraction
+ *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
+ *          SWARP_ERR_OUT_OF_RANGE (min_variance < 0). */
+SWARP_API swarp_status swarp_vsm_chebyshev(const double moments[2], double t, double min_variance,
+                                           double* out_p_max);
+
+/** @brief Light-bleeding reduction by clamping ([VSM] §3.4, ref. [10] there),
+ *  a separate step after the bound: out = linstep(amount, 1, p) =
+ *  clamp((p - amount) / (1 - amount), 0, 1).  It darkens every penumbra: tails
+ *  of the bound below `amount` vanish, the rest is stretched to [0, 1].
+ *  @param[in] p  visibility in [0, 1]; @param[in] amount in [0, 1)
+ *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
+ *          SWARP_ERR_OUT_OF_RANGE. */
+SWARP_API swarp_status swarp_vsm_reduce_bleeding(double p, double amount, double* out_p);
+
+/* ---- layered VSM --------------------------------------------------------- */
+
+/** Worst case layer count of the LVSM functions (splits hold N + 1 values). */
+#define SWARP_LVSM_MAX_LAYERS 64
+
+/* Splits, wherever an LVSM function takes them: N + 1 finite, strictly
+ * increasing values with s_N - s_0 finite; otherwise SWARP_ERR_NON_FINITE,
+ * SWARP_ERR_NOT_INCREASING or SWARP_ERR_OUT_OF_RANGE (range overflows). */
+
+/** @brief Depth interval [p_i, q_i] of layer i with overlaps, [VSM] §4.1.1:
+ *  L_0 = [s_0, s_1 + delta], L_i = [s_i - delta, s_{i+1} + delta],
+ *  L_{N-1} = [s_{N-1} - delta, s_N] (layers counted from 0 here).
+ *  @param[in] splits  N + 1 strictly increasing split depths s_0..s_N
+ *  @param[in] n_layers N in 1..SWARP_LVSM_MAX_LAYERS; @param[in] i in 0..N-1
+ *  @param[in] delta  overlap, 0 <= delta < thinnest layer
+ *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
+ *          SWARP_ERR_FILTER_LAYER_COUNT, SWARP_ERR_OUT_OF_RANGE (i >= N),
+ *          SWARP_ERR_NOT_INCREASING, SWARP_ERR_FILTER_OVERLAP. */
+SWARP_API swarp_status swarp_lvsm_layer_interval(const double* splits, uint32_t n_layers,
+                                                 uint32_t i, double delta, double* out_p,
+                                                 double* out_q);
+
+/** @brief Layer warp phi_i(t), [VSM] (4.2): 0 for t <= p, (t - p)/(q - p)
+ *  inside, 1 for t >= q.
+ *  @param[in] p, q  layer interval, p < q
+ *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
+ *          SWARP_ERR_OUT_OF_RANGE (q <= p). */
+SWARP_API swarp_status swarp_lvsm_warp(double t, double p, double q, double* out_phi);
+
+/** @brief Moments of a warped depth for layer [p, q]: (phi, phi^2), [VSM]
+ *  (4.2) then (3.1).  Same statuses as swarp_lvsm_warp. */
+SWARP_API swarp_status swarp_lvsm_moments(double t, double p, double q, double out_moments[2]);
+
+/** @brief The layer holding depth t for the uniform scheme s_i = s_0 +
+ *  (s_N - s_0) i / N, in closed form ([VSM] §4.1.3).  A depth on a split
+ *  belongs to the layer that starts there; t outside [s_0, s_N] gives the
+ *  first/last layer and SWARP_INFO_FILTER_DEPTH_CLAMPED.
+ *  @return SWARP_OK, SWARP_INFO_FILTER_DEPTH_CLAMPED, SWARP_ERR_NULL_POINTER,
+ *          SWARP_ERR_NON_FINITE, SWARP_ERR_FILTER_LAYER_COUNT,
+ *          SWARP_ERR_NOT_INCREASING (s_N <= s_0). */
+SWARP_API swarp_status swarp_lvsm_layer_uniform(double t, double s_0, double s_N,
+                                                uint32_t n_layers, uint32_t* out_layer);
+
+/** @brief The layer holding depth t for given split points (binary search of
+ *  the monotonic split sequence, [VSM] §4.1.3).  Conventions and statuses as
+ *  swarp_lvsm_layer_uniform; splits must be strictly increasing, and
+ *  SWARP_ERR_OUT_OF_RANGE when the range s_N - s_0 overflows a double. */
+SWARP_API swarp_status swarp_lvsm_layer_find(double t, const double* splits, uint32_t n_layers,
+                                             uint32_t* out_layer);
+
+/** @brief Transition band between adjacent layers ([VSM] §4.1.3): for t
+ *  within `band` of an inner split s_j the visibility is
+ *  (1 - w) V_{j-1} + w V_j with w = (t - (s_j - band)) / (2 band) rising
+ *  linearly across the band; elsewhere lo = hi = the layer of t and w = 0.
+ *  band = 0 switches blending off.
+ *  @param[in] band  half width, 0 <= band < half the thinnest layer
+ *  @param[out] out_layer_lo, out_layer_hi, out_w_hi
+ *  @return as swarp_lvsm_layer_find, plus SWARP_ERR_FILTER_BAND. */
+SWARP_API swarp_status swarp_lvsm_transition(double t, const double* splits, uint32_t n_layers,
+                                             double band, uint32_t* out_layer_lo,
+                                             uint32_t* out_layer_hi, double* out_w_hi);
+
+/** @brief Full LVSM shading of a receiver at depth t ([VSM] §4.1): pick the
+ *  layer (and its neighbour in a transition band), warp t with the layer's
+ *  overlapped interval (4.2), apply Chebyshev (3.3) to the layer's filtered
+ *  warped moments and blend.  The minimum variance is given in depth units
+ *  and scaled by 1/(q - p)^2 into each layer's warped space.
+ *  @param[in] layer_moments  2 N values: filtered (M_1, M_2) of layer i at
+ *             [2i], [2i+1], made with swarp_lvsm_moments and the intervals of
+ *             swarp_lvsm_layer_interval(splits, N, i, delta)
+ *  @param[in] band  transition half width, 0 <= band <= delta
+ *  @return SWARP_OK, SWARP_INFO_FILTER_DEPTH_CLAMPED, and the errors of the
+ *          functions above (SWARP_ERR_FILTER_BAND for band > delta). */
+SWARP_API swarp_status swarp_lvsm_visibility(const double* layer_moments, const double* splits,
+                                             uint32_t n_layers, double delta, double band,
+                                             double t, double min_variance,
+                                             double* out_visibility);
+
+/** @brief Second-occluder depth estimate mu + sigma ([VSM] §4.1.2), exact
+ *  (= max(a, b)) for two depths at coverage 1/2.  sigma2 < 0 (rounding of a
+ *  filtered VSM) counts as 0.
+ *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE. */
+SWARP_API swarp_status swarp_lvsm_second_occluder(double mu, double sigma2, double* out_depth);
+
+/** Options of swarp_lvsm_lloyd; zero means default. */
+typedef struct swarp_lloyd_options {
+    uint32_t max_iterations; /**< bound on relaxation steps; 0 = 100 */
+    uint32_t _pad0;          /**< must be 0 */
+    double weight_clamp_lo;  /**< weights are clamp(sigma2, lo, hi); 0 = no low clamp */
+    double weight_clamp_hi;  /**< 0 = no high clamp; else >= weight_clamp_lo */
+    double tolerance;        /**< converged when no split moves more than this
+                                  (depth units); 0 = 1e-9 (s_N - s_0) */
+    uint32_t _reserved[4];
+} swarp_lloyd_options;
+
+/** What swarp_lvsm_lloyd did. */
+typedef struct swarp_lloyd_report {
+    uint32_t iterations; /**< relaxation steps taken (teleports included) */
+    uint32_t teleports;  /**< empty clusters repaired by teleportation */
+    uint32_t converged;  /**< 1 if the last step moved no split more than tolerance */
+    uint32_t _pad0;
+    double max_shift;    /**< largest split movement in the last step */
+} swarp_lloyd_report;
+
+/** @brief Layer placement by weighted Lloyd relaxation, [VSM] §4.1.2: 1-D
+ *  weighted k-means whose K = N - 1 "means" are the inner split points
+ *  s_1..s_{N-1}.  Sample j has position mu_j + sigma_j (second-occluder
+ *  estimate, clamped to [s_0, s_N]) and weight clamp(sigma2_j, lo, hi); each
+ *  sample joins its nearest split point (ties to the lower one), each split
+ *  moves to the weighted mean of its samples.  Teleportation: a cluster with
+ *  zero total weight is removed (its two adjacent layers merge) and the
+ *  heaviest cluster is split in two at its weighted mean -/+ its weighted
+ *  standard deviation.  s_0 and s_N stay fixed; splits are kept strictly
+ *  increasing (minimum gap max(1e-9 (s_N - s_0), 2 ulp(max(|s_0|, |s_N|))),
+ *  at least one ulp when the range holds too few doubles for that).
+ *  Deterministic, no allocation.
+ *  @param[in] mu, sigma2  count samples of an unwarped VSM (e.g. 2x2 filtered)
+ *  @param[in] opt  may be NULL (all defaults)
+ *  @param[in] splits_in  N + 1 strictly increasing initial splits
+ *  @param[out] splits_out N + 1 relaxed splits (may alias splits_in)
+ *  @param[out] out_report may be NULL
+ *  @return SWARP_OK (converged), SWARP_INFO_FILTER_NOT_CONVERGED,
+ *          SWARP_INFO_FILTER_NO_WEIGHT, SWARP_ERR_NULL_POINTER,
+ *          SWARP_ERR_NON_FINITE, SWARP_ERR_FILTER_NO_SAMPLES,
+ *          SWARP_ERR_FILTER_LAYER_COUNT, SWARP_ERR_NOT_INCREASING,
+ *          SWARP_ERR_OUT_OF_RANGE (bad clamps or tolerance),
+ *          SWARP_ERR_RESERVED_NONZERO. */
+SWARP_API swarp_status swarp_lvsm_lloyd(const double* mu, const double* sigma2, size_t count,
+                                        const swarp_lloyd_options* opt,
+                                        const double* splits_in, uint32_t n_layers,
+                                        double* splits_out, swarp_lloyd_report* out_report);
+
+/* ---- exponential VSM ----------------------------------------------------- */
+
+/** Storage format of the moments in the texture. */
+typedef enum swarp_texel_format {
+    SWARP_TEXEL_DEFAULT = 0, /**< = SWARP_TEXEL_FP32 */
+    SWARP_TEXEL_FP16 = 1,    /**< IEEE binary16: 10 mantissa bits, max 65504 */
+    SWARP_TEXEL_FP32 = 2,    /**< IEEE binary32 */
+    SWARP_TEXEL_FORMAT_FORCE_I32 = 0x7FFFFFFF
+} swarp_texel_format;
+
+/** @brief Largest safe EVSM exponent c for a texel format ([VSM] §4.2): for
+ *  depths x in [0, 1] the largest moment is e^{2c}, so c = (ln F_max - m)/2
+ *  where F_max = (2 - 2^-p) 2^e_max is the format's largest finite value
+ *  (computed from p mantissa bits and e_max) and m = 4 u (u = 2^-(p+1), the
+ *  unit roundoff) leaves room for a few ulps of GPU exp() error.  Averaging
+ *  (filtering) never exceeds the largest texel, so filtered moments stay
+ *  finite too.  fp32 gives c ~ 44.36, fp16 c ~ 5.545.
+ *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_UNKNOWN_ENUM. */
+SWARP_API swarp_status swarp_evsm_max_exponent(swarp_texel_format format, double* out_c);
+
+/** @brief EVSM moments of depth x ([VSM] §4.2): positive warp e^{c_pos x}
+ *  and negative warp -e^{-c_neg x}, each with its square:
+ *  out = (e^{c_pos x}, e^{2 c_pos x}, -e^{-c_neg x}, e^{-2 c_neg x}).
+ *  @param[in] c_pos, c_neg  in (0, 354]: e^{2c} finite in double, so every
+ *                 depth in [0, 1] has finite moments
+ *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE (x, c_pos or
+ *          c_neg NaN/Inf), SWARP_ERR_FILTER_EXPONENT (c_pos or c_neg <= 0 or
+ *          > 354, or a moment e^{2c|x|} overflows for this x, |x| > 1). */
+SWARP_API swarp_status swarp_evsm_moments(double x, double c_pos, double c_neg,
+                                          double out_moments[4]);
+
+/** @brief EVSM visibility ([VSM] §4.2): Chebyshev (3.3) on the positive and
+ *  on the negative warp, then the minimum of both upper bounds.  The minimum
+ *  variance is given in depth units and mapped into each warp by its
+ *  derivative at t: min_variance (c e^{+-c t})^2.
+ *  @param[in] moments  filtered moments laid out as swarp_evsm_moments
+ *  @return as swarp_evsm_moments (SWARP_ERR_FILTER_EXPONENT also when
+ *          e^{c|t|} overflows for the receiver depth t), plus
+ *          SWARP_ERR_OUT_OF_RANGE (min_variance < 0) and SWARP_ERR_NON_FINITE
+ *          (a moment, t or min_variance NaN/Inf; finite moments of any
+ *          magnitude and a floor min_variance (c e^{c t})^2 beyond DBL_MAX
+ *          give a bound in [0, 1]). */
+SWARP_API swarp_status swarp_evsm_visibility(const double moments[4], double t, double c_pos,
+                                             double c_neg, double min_variance,
+                                             double* out_visibility);
+
+/* ---- moment shadow maps -------------------------------------------------- */
+
+/** Moment bias Peters & Klein 2015 ("Moment Shadow Mapping", I3D) use for
+ *  moments stored with 16 bits each; double or fp32 storage tolerates less. */
+#define SWARP_MSM_ALPHA_DEFAULT 3.0e-5
+
+/** @brief The four power moments of a depth z in [0, 1]: (z, z^2, z^3, z^4)
+ *  (Peters & Klein 2015, §3; the optimised quantisation transform is a GPU
+ *  storage detail and not part of this).
+ *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
+ *          SWARP_ERR_OUT_OF_RANGE (z outside [0, 1]). */
+SWARP_API swarp_status swarp_msm_moments(double z, double out_b[4]);
+
+/** @brief Moment bias (Peters & Klein 2015, Algorithm 3 step 1):
+ *  b' = (1 - alpha) b + alpha (1/2, 1/2, 1/2, 1/2), a blend toward the
+ *  moments of half the mass at 0 and half at 1, which keeps the Hankel matrix
+ *  positive definite after quantisation.
+ *  @param[in] alpha in [0, 1]
+ *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
+ *          SWARP_ERR_OUT_OF_RANGE. */
+SWARP_API swarp_status swarp_msm_bias(const double b[4], double alpha, double out_b[4]);
+
+/** @brief Hamburger 4-moment shadow bound (Peters & Klein 2015, Algorithm 3):
+ *  solve B c = (1, z_f, z_f^2) with the Hankel matrix B of (1, b_1..b_4)
+ *  (Cholesky), take the roots z_2 <= z_3 of c_1 + c_2 z + c_3 z^2, and the
+ *  sharp lower bound G of the occluded fraction from the three-atom
+ *  distribution at (z_f, z_2, z_3).  Visibility = 1 - G, clamped to [0, 1].
+ *  When B is singular to rounding (one or two distinct depths, no bias) the
+ *  distribution is determined by its moments and the exact discrete answer
+ *  is returned with SWARP_INFO_FILTER_MSM_DEGENERATE.
+ *  @param[in] b  filtered (and usually biased) moments
+ *  @param[in] z_f  receiver depth
+ *  Moments with b_2 < b_1^2 (rounding) count as a single depth at b_1; in
+ *  the degenerate branch a receiver within ~1e-7 (relative) of a recovered
+ *  depth counts as at it, hence lit (recovered depths carry rounding).
+ *  @return SWARP_OK, SWARP_INFO_FILTER_MSM_DEGENERATE, SWARP_ERR_NULL_POINTER,
+ *          SWARP_ERR_NON_FINITE (a NaN/Inf input, or recovered depths that
+ *          overflow; moments and z_f of any magnitude are first rescaled by a
+ *          power of two, the bound being invariant under depth scaling),
+ *          SWARP_ERR_OUT_OF_RANGE
+ *          (b_2 < 0 or b_4 < 0: not moments of any distribution). */
+SWARP_API swarp_status swarp_msm_visibility(const double b[4], double z_f,
+                                            double* out_visibility);
+
+/* ---- PCF and PCSS -------------------------------------------------------- */
+
+/** Worst case point count of swarp_pcf_poisson_disk. */
+#define SWARP_PCF_MAX_SAMPLES 256
+
+/** @brief Poisson-disk sample set in the unit disk for PCF ([RHS] §3.6,
+ *  after Fernando's PCSS), deterministic from a seed: Mitchell's best
+ *  candidate (each new point is the candidate farthest from the points so
+ *  far) with a splitmix64 generator.  Writes count points as x, y pairs.
+ *  @param[in] seed  any value; the same seed gives the same set everywhere
+ *  @param[in] count 1..SWARP_PCF_MAX_SAMPLES points
+ *  @param[in] candidates  candidates per point, 0 = 32
+ *  @param[out] out_xy  2 * count doubles; capacity counts POINTS
+ *  @param[out] out_count  count (or the needed count with SWARP_ERR_CAPACITY)
+ *  @param[out] out_min_distance  smallest pairwise distance (0 for count = 1)
+ *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_OUT_OF_RANGE,
+ *          SWARP_ERR_CAPACITY. */
+SWARP_API swarp_status swarp_pcf_poisson_disk(uint64_t seed, uint32_t count, uint32_t candidates,
+                                              double* out_xy, size_t capacity,
+                                              size_t* out_count, double* out_min_distance);
+
+/** @brief PCSS blocker-search width ([RHS] §3.6, Fernando 2005): by similar
+ *  triangles between the light of width w_light (measured on the light's
+ *  near plane, e.g. in shadow-map UV) and the receiver at depth d_r,
+ *  w_search = w_light (d_r - n_light) / d_r.
+ *  @param[in] n_light  light near-plane distance, 0 < n_light <= d_r
+ *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
+ *          SWARP_ERR_OUT_OF_RANGE. */
+SWARP_API swarp_status swarp_pcss_search_width(double w_light, double n_light, double d_r,
+                                               double* out_w_search);
+
+/** @brief PCSS penumbra width w = (d_r - d_b) w_light / d_b ([RHS] §3.6,
+ *  Fernando 2005), d_b the average blocker depth, d_r the receiver depth
+ *  (both distances from the light), in the units of w_light.
+ *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
+ *          SWARP_ERR_OUT_OF_RANGE (w_light < 0),
+ *          SWARP_ERR_FILTER_BLOCKER (d_b <= 0 or d_b > d_r),
+ *          SWARP_ERR_OVERFLOW (the width exceeds DBL_MAX). */
+SWARP_API swarp_status swarp_pcss_penumbra(double d_r, double d_b, double w_light,
+                                           double* out_w_penumbra);
+
+/** @brief PCSS filter width on the shadow map's near plane: the penumbra at
+ *  the receiver projected back, w_filter = w_penumbra n_light / d_r.
+ *  @return as swarp_pcss_search_width. */
+SWARP_API swarp_status swarp_pcss_filter_width(double w_penumbra, double n_light, double d_r,
+                                               double* out_w_filter);
+
+/* ======================================================================== */
+/* 9. Experimental API (define SWARP_EXPERIMENTAL_API to use it)            */
+/* ======================================================================== */
+/*
+ * Not yet promised: the declarations below may change in a minor release.
+ * The library exports them in every build; a caller that wants them
+ * defines SWARP_EXPERIMENTAL_API before including this header.  The types
+ * the stable structs above need are all declared above.
+ */
+#ifdef SWARP_EXPERIMENTAL_API
+
+/* ---- 9.1 convex polyhedra and the intersection bodies H and B ----------- */
 /*
  * A convex polyhedron with a fixed capacity (no allocation).  Vertices are a
  * point set; each face is a loop of vertex indices, counter-clockwise seen
@@ -630,9 +1817,9 @@ SWARP_API swarp_status swarp_split_pseudo(double n, double f, double n_p, double
  *
  * Capacity: V ∩ S has at most 12 faces and 20 vertices; the bodies B built
  * from it stay far below the maxima (docs/geometry.md gives the counts).
- * sizeof(swarp_polyhedron) == SWARP_POLY_SIZE bytes (about 7.3 KiB).
+ * sizeof(swarp_polyhedron) == SWARP_POLY_SIZE bytes (7 432 bytes).
  */
-#define SWARP_POLY_MAX_VERTICES 128
+#define SWARP_POLY_MAX_VERTICES SWARP_BODY_MAX_POINTS /* 128 */
 #define SWARP_POLY_MAX_FACES 64
 #define SWARP_POLY_MAX_FACE_VERTICES 32
 #define SWARP_POLY_EPS_REL 1e-12
@@ -693,12 +1880,6 @@ SWARP_API swarp_status swarp_poly_clip(const swarp_polyhedron* in, const swarp_p
 SWARP_API swarp_status swarp_poly_clip_aabb(const swarp_polyhedron* in, const swarp_aabb* box,
                                             swarp_polyhedron* out);
 
-/* ======================================================================== */
-/* Geometry: the intersection body B             (src/body.c)               */
-/* ======================================================================== */
-/** Worst case of points of B written by swarp_body_points / swarp_setup. */
-#define SWARP_BODY_MAX_POINTS SWARP_POLY_MAX_VERTICES
-
 /** @brief H = V ∩ S for the view depths [near, far].  [RHS] §3.1.1
  *  @return SWARP_OK, SWARP_ERR_BODY_EMPTY (the frustum misses the box,
  *          e.g. the camera looks away from it), SWARP_ERR_BOX_DEGENERATE,
@@ -718,13 +1899,6 @@ SWARP_API swarp_status swarp_body_h(const swarp_camera* cam, double near, double
 SWARP_API swarp_status swarp_body_from_h(const swarp_polyhedron* H, const swarp_light* light,
                                          const swarp_aabb* scene, swarp_polyhedron* out_B);
 
-/** @brief The points of B (its vertices) for the view depths [near, far].
- *  @param[out] out capacity points; SWARP_BODY_MAX_POINTS always suffices.
- *  @param[out] out_count number of points (also on SWARP_ERR_CAPACITY).
- *  @return as swarp_body_h and swarp_body_from_h, SWARP_ERR_CAPACITY. */
-SWARP_API swarp_status swarp_body_points(const swarp_camera* cam, double near, double far,
-                                         const swarp_light* light, const swarp_aabb* scene,
-                                         swarp_vec3* out, size_t capacity, size_t* out_count);
 
 /** @brief The receivers a light can reach: H ∩ L for a spot light (L the
  *  square pyramid around its cone, as in swarp_body_from_h), H itself for
@@ -735,261 +1909,8 @@ SWARP_API swarp_status swarp_body_points(const swarp_camera* cam, double near, d
 SWARP_API swarp_status swarp_body_receivers(const swarp_polyhedron* H, const swarp_light* light,
                                             swarp_polyhedron* out);
 
-/** @brief Adjusted near/far [RHS] §3.3.1 ([ZSN07]): min and max view depth
- *  over the points of H = V ∩ S (view frustum cam->near..cam->far).
- *  @return SWARP_OK, SWARP_ERR_BODY_EMPTY, statuses of swarp_body_h. */
-SWARP_API swarp_status swarp_body_adjusted_range(const swarp_camera* cam, const swarp_aabb* scene,
-                                                 double* out_near, double* out_far);
 
-/* ======================================================================== */
-/* Geometry: light space and focusing            (src/focus.c)              */
-/* ======================================================================== */
-/*
- * Light-space alignment ([RHS] §3.2.1, [WS06]): the light view looks along
- * the light (directional: the direction light travels; point light: the
- * axis a given by the caller, usually the spot axis or the direction to the
- * centre of B) and its up vector (+y) is the view direction v projected on
- * the plane perpendicular to that axis, v_perp = v - (v·a) a, |v_perp| =
- * sin γ.  Continuous fallback near γ = 0 and γ = 180°: the up vector is
- * normalize(v_perp + w(sin γ) r_perp), r the camera's right vector and
- * w(s) = SWARP_FOCUS_BLEND_WEIGHT (1 - s/SWARP_FOCUS_BLEND_SIN)^2 for
- * s < SWARP_FOCUS_BLEND_SIN (0 above): no threshold switch, the basis turns
- * smoothly through the right vector when the light passes parallel or
- * antiparallel to the view in the plane of v and the camera's up vector.
- * (Every continuous tangent field on the sphere has a zero: this one's lies
- * off that plane, on the v-r great circle, at γ ≈ 5.6° (sin γ ≈ 0.097); see
- * docs/geometry.md; swarp_setup_follow below has no such point.)
- * SWARP_INFO_LIGHT_PARALLEL reports that the blend is active.
- */
-#define SWARP_FOCUS_BLEND_SIN 0.17364817766693033 /* sin 10° */
-#define SWARP_FOCUS_BLEND_WEIGHT 0.5
-
-/** @brief Light view matrix (right-handed, looks down -z) with light-space
- *  alignment.  [RHS] §3.2.1
- *  @param[in] cam    the viewer (its dir and up give the alignment)
- *  @param[in] light  the light
- *  @param[in] axis   point lights: the direction the light view looks along
- *                    (any length > 0); NULL means light->direction (spot)
- *                    or, for an omni light, the direction to cam->eye.
- *                    Ignored for directional lights.
- *  @param[out] out_view  light view; origin at cam->eye (directional) or at
- *                    the light position (point light).
- *  @return SWARP_OK, SWARP_INFO_LIGHT_PARALLEL, SWARP_ERR_NULL_POINTER,
- *          SWARP_ERR_NON_FINITE, SWARP_ERR_ZERO_VECTOR, SWARP_ERR_OVERFLOW
- *          (an origin so far out, |origin| near DBL_MAX, that its distance
- *          along an axis of the view, the matrix's translation, exceeds
- *          DBL_MAX), ... */
-SWARP_API swarp_status swarp_focus_light_view(const swarp_camera* cam, const swarp_light* light,
-                                              const swarp_vec3* axis, swarp_mat4* out_view);
-
-/** @brief The focusing matrix A_fit.  [RHS] (3.1)
- *  Maps the bounding box of the points transformed by m (with perspective
- *  division) to x, y in [-1, 1] and z in [-1, 1] (SWARP_DEPTH_NEG_ONE_TO_ONE)
- *  or [0, 1] (SWARP_DEPTH_ZERO_TO_ONE); (3.1) is the [0, 1] case.
- *  @param[in] m          transform applied to the points first (e.g. P·L)
- *  @param[in] points     world-space points (xy extent), count >= 1
- *  @param[in] z_points   points whose depth extent is used (NULL: points).
- *                        Pancaking passes the receivers (H) here.
- *  @param[out] out_A_fit the fit; a flat extent (below 1e-12 of its
- *                        coordinates: rounding noise) gets the widest other
- *                        extent as its width, or, all flat, width 1 (1e-6
- *                        of the coordinates beyond 1e6) (status).
- *  @return SWARP_OK, SWARP_INFO_FLAT_EXTENT (an extent was zero),
- *          SWARP_ERR_NULL_POINTER, SWARP_ERR_INVALID_ARGUMENT (count 0, or
- *          z_points given with z_count 0), SWARP_ERR_NON_FINITE,
- *          SWARP_ERR_UNKNOWN_ENUM, SWARP_ERR_DEGENERATE (a point maps to
- *          w <= 0). */
-SWARP_API swarp_status swarp_focus_fit(const swarp_mat4* m, const swarp_vec3* points, size_t count,
-                                       const swarp_vec3* z_points, size_t z_count,
-                                       swarp_depth_range depth_range, swarp_mat4* out_A_fit);
-
-/* ======================================================================== */
-/* Geometry: LiSPSM warping frustum              (src/warp.c)               */
-/* ======================================================================== */
-typedef enum swarp_warp_param {
-    SWARP_WARP_PARAM_DEFAULT = 0,   /**< = SWARP_WARP_PARAM_NOPT */
-    SWARP_WARP_PARAM_NOPT = 1,      /**< n_opt [RHS] (3.2), z_0, z_1 from B */
-    SWARP_WARP_PARAM_NREPAR = 2,    /**< n_repar(η(γ, Θ)) [RHS] (3.3)-(3.4) */
-    SWARP_WARP_PARAM_GMNPR = 3,     /**< λ_GMNPR [GMNPR] (8) times d */
-    SWARP_WARP_PARAM_PSEUDO = 4,    /**< pseudo-near/far n_opt [RHS] (4.2) */
-    SWARP_WARP_PARAM_USER = 5,      /**< caller's n' (eye units) */
-    SWARP_WARP_PARAM_FORCE_I32 = 0x7FFFFFFF
-} swarp_warp_param;
-
-typedef enum swarp_warp_center {
-    SWARP_WARP_CENTER_DEFAULT = 0,        /**< = VIEW_VECTOR */
-    SWARP_WARP_CENTER_VIEW_VECTOR = 1,    /**< [RHS] §4.1: C_start from s on the view vector */
-    SWARP_WARP_CENTER_NEAREST_VERTEX = 2, /**< [WS06]: C_start from the nearest vertex e */
-    SWARP_WARP_CENTER_FORCE_I32 = 0x7FFFFFFF
-} swarp_warp_center;
-
-/** Options of the LiSPSM warp; zero means default. */
-typedef struct swarp_warp_options {
-    swarp_warp_param param;
-    swarp_warp_center center;
-    double n_user;       /**< SWARP_WARP_PARAM_USER: n' in eye units (> 0; +inf = uniform) */
-    double pseudo_near;  /**< n_p of (4.2), fraction in [0, 1) */
-    double pseudo_far;   /**< f_p of (4.2), fraction in [0, 1), n_p + f_p < 1 */
-    uint32_t _reserved[4];
-} swarp_warp_options;
-
-/** What the warp used (outputs of swarp_warp_lispsm). */
-typedef struct swarp_warp_info {
-    double n_light;   /**< n in light-space units (distance C to near plane of P); +inf = uniform */
-    double n_eye;     /**< n' in eye units: n_light (f - n) / d, what the error model takes */
-    double d;         /**< extent of B along the warp axis (light-space y) */
-    double z_0, z_1;  /**< eye depths of the near and far ends of P's axis */
-    double gamma;     /**< angle between view and light axis, radians [0, pi] */
-    uint32_t _reserved[4];
-} swarp_warp_info;
-
-/** @brief The LiSPSM warp P for the points of B in light view space.
- *  [RHS] §3.2.1, (3.2), §4.1; [WS06].
- *  P is a perspective along light-space +y with projection centre C, written
- *  in the normalised form w = 1 + (y - y_min)/n, so n = +inf is exactly the
- *  identity-like uniform map (continuous fade as γ -> 0).  Follow it with
- *  swarp_focus_fit(P·L, ...).  n (out_info->n_light) is at least 1e-6 times
- *  the largest |y| of B in light space: below that the matrix cannot carry
- *  the 1 of w next to the rounding of y (w would reach 0 on B), so a smaller
- *  parameter is raised to this bound (w >= 1 on B to ~1e-9 relative).
- *  @param[in] light_view  L from swarp_focus_light_view
- *  @param[in] cam         the viewer (eye, dir, fovy)
- *  @param[in] near, far   the view depth range the warp refers to (adjusted
- *                         or split range; 0 < near < far)
- *  @param[in] points      points of B (world), count >= 1
- *  @param[in] nearest     the nearest vertex e of H to the eye (used by
- *                         SWARP_WARP_CENTER_NEAREST_VERTEX; NULL: the point
- *                         s on the view vector at depth near, [RHS] §4.1)
- *  @param[in] opts        NULL or zeroed for defaults
- *  @param[out] out_P      the warp (applied after L)
- *  @param[out] out_info   may be NULL
- *  @return SWARP_OK, SWARP_INFO_WARP_UNIFORM (n = inf: θ -> 0 or η = -1),
- *          SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE, SWARP_ERR_NEAR_FAR,
- *          SWARP_ERR_UNKNOWN_ENUM, SWARP_ERR_RESERVED_NONZERO,
- *          SWARP_ERR_OUT_OF_RANGE (n_user, pseudo fractions),
- *          SWARP_ERR_DEGENERATE (a point of B at w <= 0 under light_view, or
- *          a warp that cannot be represented), SWARP_ERR_SINGULAR (a
- *          light_view that is not a rigid look-at and not invertible; a
- *          look-at is inverted exactly). */
-SWARP_API swarp_status swarp_warp_lispsm(const swarp_mat4* light_view, const swarp_camera* cam,
-                                         double near, double far, const swarp_vec3* points,
-                                         size_t count, const swarp_vec3* nearest,
-                                         const swarp_warp_options* opts,
-                                         swarp_mat4* out_P, swarp_warp_info* out_info);
-
-/* ======================================================================== */
-/* Geometry: the one call for engines            (src/setup.c)              */
-/* ======================================================================== */
-typedef enum swarp_technique {
-    SWARP_TECHNIQUE_DEFAULT = 0, /**< = SWARP_TECHNIQUE_LISPSM */
-    SWARP_TECHNIQUE_UNIFORM = 1, /**< focused uniform map [RHS] §3.1 */
-    SWARP_TECHNIQUE_LISPSM = 2,  /**< LiSPSM [RHS] §3.2.1, parameter per swarp_warp_param */
-    SWARP_TECHNIQUE_PSM = 3,     /**< PSM in the camera's post-perspective space [KOZ] */
-    SWARP_TECHNIQUE_FORCE_I32 = 0x7FFFFFFF
-} swarp_technique;
-
-/** Options of swarp_setup; a zeroed struct is a valid request. */
-typedef struct swarp_setup_options {
-    swarp_technique technique;
-    swarp_warp_param param;        /**< LiSPSM parameter (default n_opt) */
-    swarp_warp_center center;      /**< LiSPSM projection centre (default [RHS] §4.1) */
-    swarp_depth_range depth_range; /**< default [-1, 1] */
-    uint32_t map_width, map_height;       /**< texels; 0: 2048 (height 0: = width) */
-    uint32_t screen_width, screen_height; /**< pixels; 0: 1920 x 1080 */
-    uint32_t pancake;       /**< 1: light depth range over the receivers H only ("pancaking") */
-    uint32_t psm_slideback; /**< PSM, light behind the camera: 1 = virtual slide-back instead
-                                 of Kozlov's inverse projection */
-    uint32_t _pad0, _pad1;  /**< must be zero */
-    double n_user;          /**< SWARP_WARP_PARAM_USER: n' in eye units */
-    double pseudo_near;     /**< SWARP_WARP_PARAM_PSEUDO: n_p in [0, 1) */
-    double pseudo_far;      /**< SWARP_WARP_PARAM_PSEUDO: f_p in [0, 1) */
-    double slideback;       /**< PSM: extra slide-back distance (world units, >= 0) that
-                                 keeps the near-plane quad [KOZ] Fig. 14-6 */
-    double min_depth;       /**< [RHS] §4.3 measured minimum LINEAR view depth of the
-                                 frame (swarp_mindepth_pyramid/direct); 0 = not given.
-                                 swarp_setup (and swarp_cascade_setup unstabilised)
-                                 replace the camera's near by swarp_mindepth_near(near,
-                                 far, min_depth) before the adjusted near/far of §3.3.1;
-                                 +INFINITY (nothing seen) keeps the near.  Ignored by
-                                 swarp_setup_range/_points (explicit range).  >= 0 */
-    uint32_t _reserved[2];  /**< must be zero (two words went to min_depth) */
-} swarp_setup_options;
-
-/** Results of swarp_setup.  matrix = light_proj · light_view maps world
- *  space to the light's clip space (x, y in [-1, 1], depth per the depth
- *  range; divide by w). */
-typedef struct swarp_setup_result {
-    swarp_mat4 light_view;
-    swarp_mat4 light_proj;
-    swarp_mat4 matrix;
-    double n_eye;      /**< n' used, eye units ((3.2) scaled by (f - n)/d); +inf uniform;
-                            PSM: near + slide-back */
-    double n_light;    /**< n in the warp's light-space units; +inf uniform */
-    double view_near;  /**< the view depth range used (adjusted [RHS] §3.3.1 in swarp_setup) */
-    double view_far;
-    double gamma;      /**< angle between view direction and light axis, radians */
-    double max_mx;     /**< predicted max m_x over [view_near, view_far], [RHS] (2.3) */
-    double max_mz;     /**< predicted max m_z, [RHS] (2.4) */
-    double light_near; /**< light depth range covered (world units along the light; PSM: */
-    double light_far;  /**<   post-perspective units), informational */
-    uint32_t point_count; /**< number of points of B */
-    uint32_t _pad;
-    uint32_t _reserved[4];
-} swarp_setup_result;
-
-/** @brief The one call: H = V ∩ S, adjusted near/far [RHS] §3.3.1, B
- *  [RHS] §3.1.1, light view with light-space alignment, the technique's
- *  warp ([RHS] §3.2.1 / [KOZ]), focusing [RHS] (3.1) and the error model's
- *  prediction [RHS] (2.3)-(2.8).  No allocation; about 2 µs per call
- *  (docs/performance.md).
- *  @param[in] cam, light, scene  (scene: the box S of casters and receivers)
- *  @param[in] opts     NULL or zeroed for defaults
- *  @param[out] out     matrices and report
- *  @param[out] out_points  the points of B (NULL: not wanted); capacity
- *                      SWARP_BODY_MAX_POINTS always suffices
- *  @param[out] out_count   number of points of B (may be NULL)
- *  @return SWARP_OK or an informational status (SWARP_INFO_WARP_UNIFORM,
- *          SWARP_INFO_PSM_INVERSE, SWARP_INFO_LIGHT_PARALLEL,
- *          SWARP_INFO_LIGHT_NEAR_CLIPPED, SWARP_INFO_FLAT_EXTENT);
- *          SWARP_ERR_BODY_EMPTY (camera looks away from the box),
- *          SWARP_ERR_LIGHT_INSIDE_BODY, SWARP_ERR_BOX_INVERTED,
- *          SWARP_ERR_BOX_DEGENERATE, SWARP_ERR_CAPACITY, and the argument
- *          errors (NULL, NON_FINITE, FOV, NEAR_FAR, ZERO_VECTOR, DEGENERATE,
- *          UNKNOWN_ENUM, RESERVED_NONZERO, OUT_OF_RANGE); SWARP_ERR_DEGENERATE
- *          also when the map is finer than world coordinates resolve (B far
- *          below the rounding of coordinates of size |eye|: its world-space
- *          matrix cannot be evaluated in double).  Computed relative to the
- *          eye (the translation is folded into light_view and matrix). */
-SWARP_API swarp_status swarp_setup(const swarp_camera* cam, const swarp_light* light,
-                                   const swarp_aabb* scene, const swarp_setup_options* opts,
-                                   swarp_setup_result* out, swarp_vec3* out_points,
-                                   size_t capacity, size_t* out_count);
-
-/** @brief swarp_setup for an explicit view depth range [near, far] (a split
- *  frustum), used as given (no adjustment).  cam->near/far are ignored.
- *  @return as swarp_setup. */
-SWARP_API swarp_status swarp_setup_range(const swarp_camera* cam, const swarp_light* light,
-                                         const swarp_aabb* scene, double near, double far,
-                                         const swarp_setup_options* opts, swarp_setup_result* out,
-                                         swarp_vec3* out_points, size_t capacity,
-                                         size_t* out_count);
-
-/** @brief The light matrices for given points of B (count <=
- *  SWARP_BODY_MAX_POINTS) and the view depth range [near, far] they refer
- *  to.  receivers (may be NULL): the points of H, used for pancaking, the
- *  nearest vertex e ([WS06] centre) and PSM's unit cube clipping.
- *  @return as swarp_setup; SWARP_ERR_INVALID_ARGUMENT for count 0 or above
- *          the maximum. */
-SWARP_API swarp_status swarp_setup_points(const swarp_camera* cam, const swarp_light* light,
-                                          const swarp_vec3* points, size_t count,
-                                          const swarp_vec3* receivers, size_t receiver_count,
-                                          double near, double far,
-                                          const swarp_setup_options* opts,
-                                          swarp_setup_result* out);
-
-/* ======================================================================== */
-/* Geometry: coherent light frames over time     (src/follow.c)             */
-/* ======================================================================== */
+/* ---- 9.2 light frames that follow the previous frame -------------------- */
 /*
  * Continuity over the whole sphere of light directions (docs/geometry.md,
  * "Continuity over the whole sphere").  No stateless rule can give the light
@@ -1064,9 +1985,8 @@ SWARP_API swarp_status swarp_setup_follow(const swarp_camera* cam, const swarp_l
 SWARP_API swarp_status swarp_focus_light_view_follow(const swarp_camera* cam, const swarp_light* light,
                                                      const swarp_vec3* axis, const swarp_camera* previous_cam,
                                                      const swarp_mat4* previous_view, swarp_mat4* out_view);
-/* <<< api: geometry */
 
-/* >>> api: lixel (src/lixel.c) */
+/* ---- 9.3 lixel maps: plane-stabilised light matrices [LIXEL] ------------ */
 /*
  * Plane-stabilised light matrices, [LIXEL] Chong & Gortler.  M_l maps world
  * points to LIGHT-IMAGE coordinates [x_l q, y_l q, z_l q, q] where (x_l, y_l)
@@ -1281,843 +2201,8 @@ SWARP_API swarp_status swarp_lixel_split(const swarp_light* light, const swarp_p
  *  @return SWARP_OK; SWARP_ERR_NON_FINITE, SWARP_ERR_NULL_POINTER. */
 SWARP_API swarp_status swarp_lixel_select(const swarp_mat4* GLP, size_t count, const swarp_vec3* p,
                                           uint32_t* out_index);
-/* <<< api: lixel */
 
-/* >>> api: filter (src/filter.c) */
-/*
- * Filtered shadows: the maths an engine mirrors in its shaders (GLSL twins in
- * docs/filtering.md).  Depths are light-space depths; "t" is the depth of the
- * receiver being shaded, and visibility is the lit fraction P(X >= t) of the
- * filter region (a texel at exactly the receiver depth counts as lit).
- * Files: src/filter_vsm.c (VSM), filter_lvsm.c (layered VSM), filter_lloyd.c (its Lloyd
- * layer placement), filter_evsm.c, filter_msm.c, filter_pcf.c (PCF and PCSS).
- */
-
-/* ---- variance shadow maps                    (src/filter_vsm.c) -------- */
-
-/** @brief Moments of one depth sample, [VSM] (3.1): out = (x, x^2).
- *  Filtering (averaging) these over a region gives M_1 = E[x], M_2 = E[x^2].
- *  Also the moments of a warped depth: pass the warped value.
- *  @param[in] x  depth (any finite value; VSMs usually store [0, 1])
- *  @param[out] out_moments  (M_1, M_2)
- *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE. */
-SWARP_API swarp_status swarp_vsm_moments(double x, double out_moments[2]);
-
-/** @brief Chebyshev's one-tailed bound p_max(t), [VSM] (3.2)-(3.3):
- *  mu = M_1, sigma2 = max(M_2 - M_1^2, min_variance),
- *  p_max = sigma2 / (sigma2 + (t - mu)^2) for t > mu, and 1 for t <= mu.
- *  @param[in] moments  filtered (M_1, M_2), same depth units as t
- *  @param[in] t  receiver depth
- *  @param[in] min_variance  >= 0, depth units squared: the clamp that hides
- *             rounding of M_2 - M_1^2 (it also makes flat lit regions stay lit)
- *  @param[out] out_p_max  in [0, 1]: an upper bound of the lit fraction
- *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
- *          SWARP_ERR_OUT_OF_RANGE (min_variance < 0). */
-SWARP_API swarp_status swarp_vsm_chebyshev(const double moments[2], double t, double min_variance,
-                                           double* out_p_max);
-
-/** @brief Light-bleeding reduction by clamping ([VSM] §3.4, ref. [10] there),
- *  a separate step after the bound: out = linstep(amount, 1, p) =
- *  clamp((p - amount) / (1 - amount), 0, 1).  It darkens every penumbra: tails
- *  of the bound below `amount` vanish, the rest is stretched to [0, 1].
- *  @param[in] p  visibility in [0, 1]; @param[in] amount in [0, 1)
- *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
- *          SWARP_ERR_OUT_OF_RANGE. */
-SWARP_API swarp_status swarp_vsm_reduce_bleeding(double p, double amount, double* out_p);
-
-/* ---- layered VSM                             (src/filter_lvsm.c) ------- */
-
-/** Worst case layer count of the LVSM functions (splits hold N + 1 values). */
-#define SWARP_LVSM_MAX_LAYERS 64
-
-/* Splits, wherever an LVSM function takes them: N + 1 finite, strictly
- * increasing values with s_N - s_0 finite; otherwise SWARP_ERR_NON_FINITE,
- * SWARP_ERR_NOT_INCREASING or SWARP_ERR_OUT_OF_RANGE (range overflows). */
-
-/** @brief Depth interval [p_i, q_i] of layer i with overlaps, [VSM] §4.1.1:
- *  L_0 = [s_0, s_1 + delta], L_i = [s_i - delta, s_{i+1} + delta],
- *  L_{N-1} = [s_{N-1} - delta, s_N] (layers counted from 0 here).
- *  @param[in] splits  N + 1 strictly increasing split depths s_0..s_N
- *  @param[in] n_layers N in 1..SWARP_LVSM_MAX_LAYERS; @param[in] i in 0..N-1
- *  @param[in] delta  overlap, 0 <= delta < thinnest layer
- *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
- *          SWARP_ERR_FILTER_LAYER_COUNT, SWARP_ERR_OUT_OF_RANGE (i >= N),
- *          SWARP_ERR_NOT_INCREASING, SWARP_ERR_FILTER_OVERLAP. */
-SWARP_API swarp_status swarp_lvsm_layer_interval(const double* splits, uint32_t n_layers,
-                                                 uint32_t i, double delta, double* out_p,
-                                                 double* out_q);
-
-/** @brief Layer warp phi_i(t), [VSM] (4.2): 0 for t <= p, (t - p)/(q - p)
- *  inside, 1 for t >= q.
- *  @param[in] p, q  layer interval, p < q
- *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
- *          SWARP_ERR_OUT_OF_RANGE (q <= p). */
-SWARP_API swarp_status swarp_lvsm_warp(double t, double p, double q, double* out_phi);
-
-/** @brief Moments of a warped depth for layer [p, q]: (phi, phi^2), [VSM]
- *  (4.2) then (3.1).  Same statuses as swarp_lvsm_warp. */
-SWARP_API swarp_status swarp_lvsm_moments(double t, double p, double q, double out_moments[2]);
-
-/** @brief The layer holding depth t for the uniform scheme s_i = s_0 +
- *  (s_N - s_0) i / N, in closed form ([VSM] §4.1.3).  A depth on a split
- *  belongs to the layer that starts there; t outside [s_0, s_N] gives the
- *  first/last layer and SWARP_INFO_FILTER_DEPTH_CLAMPED.
- *  @return SWARP_OK, SWARP_INFO_FILTER_DEPTH_CLAMPED, SWARP_ERR_NULL_POINTER,
- *          SWARP_ERR_NON_FINITE, SWARP_ERR_FILTER_LAYER_COUNT,
- *          SWARP_ERR_NOT_INCREASING (s_N <= s_0). */
-SWARP_API swarp_status swarp_lvsm_layer_uniform(double t, double s_0, double s_N,
-                                                uint32_t n_layers, uint32_t* out_layer);
-
-/** @brief The layer holding depth t for given split points (binary search of
- *  the monotonic split sequence, [VSM] §4.1.3).  Conventions and statuses as
- *  swarp_lvsm_layer_uniform; splits must be strictly increasing, and
- *  SWARP_ERR_OUT_OF_RANGE when the range s_N - s_0 overflows a double. */
-SWARP_API swarp_status swarp_lvsm_layer_find(double t, const double* splits, uint32_t n_layers,
-                                             uint32_t* out_layer);
-
-/** @brief Transition band between adjacent layers ([VSM] §4.1.3): for t
- *  within `band` of an inner split s_j the visibility is
- *  (1 - w) V_{j-1} + w V_j with w = (t - (s_j - band)) / (2 band) rising
- *  linearly across the band; elsewhere lo = hi = the layer of t and w = 0.
- *  band = 0 switches blending off.
- *  @param[in] band  half width, 0 <= band < half the thinnest layer
- *  @param[out] out_layer_lo, out_layer_hi, out_w_hi
- *  @return as swarp_lvsm_layer_find, plus SWARP_ERR_FILTER_BAND. */
-SWARP_API swarp_status swarp_lvsm_transition(double t, const double* splits, uint32_t n_layers,
-                                             double band, uint32_t* out_layer_lo,
-                                             uint32_t* out_layer_hi, double* out_w_hi);
-
-/** @brief Full LVSM shading of a receiver at depth t ([VSM] §4.1): pick the
- *  layer (and its neighbour in a transition band), warp t with the layer's
- *  overlapped interval (4.2), apply Chebyshev (3.3) to the layer's filtered
- *  warped moments and blend.  The minimum variance is given in depth units
- *  and scaled by 1/(q - p)^2 into each layer's warped space.
- *  @param[in] layer_moments  2 N values: filtered (M_1, M_2) of layer i at
- *             [2i], [2i+1], made with swarp_lvsm_moments and the intervals of
- *             swarp_lvsm_layer_interval(splits, N, i, delta)
- *  @param[in] band  transition half width, 0 <= band <= delta
- *  @return SWARP_OK, SWARP_INFO_FILTER_DEPTH_CLAMPED, and the errors of the
- *          functions above (SWARP_ERR_FILTER_BAND for band > delta). */
-SWARP_API swarp_status swarp_lvsm_visibility(const double* layer_moments, const double* splits,
-                                             uint32_t n_layers, double delta, double band,
-                                             double t, double min_variance,
-                                             double* out_visibility);
-
-/** @brief Second-occluder depth estimate mu + sigma ([VSM] §4.1.2), exact
- *  (= max(a, b)) for two depths at coverage 1/2.  sigma2 < 0 (rounding of a
- *  filtered VSM) counts as 0.
- *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE. */
-SWARP_API swarp_status swarp_lvsm_second_occluder(double mu, double sigma2, double* out_depth);
-
-/** Options of swarp_lvsm_lloyd; zero means default. */
-typedef struct swarp_lloyd_options {
-    uint32_t max_iterations; /**< bound on relaxation steps; 0 = 100 */
-    uint32_t _pad0;          /**< must be 0 */
-    double weight_clamp_lo;  /**< weights are clamp(sigma2, lo, hi); 0 = no low clamp */
-    double weight_clamp_hi;  /**< 0 = no high clamp; else >= weight_clamp_lo */
-    double tolerance;        /**< converged when no split moves more than this
-                                  (depth units); 0 = 1e-9 (s_N - s_0) */
-    uint32_t _reserved[4];
-} swarp_lloyd_options;
-
-/** What swarp_lvsm_lloyd did. */
-typedef struct swarp_lloyd_report {
-    uint32_t iterations; /**< relaxation steps taken (teleports included) */
-    uint32_t teleports;  /**< empty clusters repaired by teleportation */
-    uint32_t converged;  /**< 1 if the last step moved no split more than tolerance */
-    uint32_t _pad0;
-    double max_shift;    /**< largest split movement in the last step */
-} swarp_lloyd_report;
-
-/** @brief Layer placement by weighted Lloyd relaxation, [VSM] §4.1.2: 1-D
- *  weighted k-means whose K = N - 1 "means" are the inner split points
- *  s_1..s_{N-1}.  Sample j has position mu_j + sigma_j (second-occluder
- *  estimate, clamped to [s_0, s_N]) and weight clamp(sigma2_j, lo, hi); each
- *  sample joins its nearest split point (ties to the lower one), each split
- *  moves to the weighted mean of its samples.  Teleportation: a cluster with
- *  zero total weight is removed (its two adjacent layers merge) and the
- *  heaviest cluster is split in two at its weighted mean -/+ its weighted
- *  standard deviation.  s_0 and s_N stay fixed; splits are kept strictly
- *  increasing (minimum gap max(1e-9 (s_N - s_0), 2 ulp(max(|s_0|, |s_N|))),
- *  at least one ulp when the range holds too few doubles for that).
- *  Deterministic, no allocation.
- *  @param[in] mu, sigma2  count samples of an unwarped VSM (e.g. 2x2 filtered)
- *  @param[in] opt  may be NULL (all defaults)
- *  @param[in] splits_in  N + 1 strictly increasing initial splits
- *  @param[out] splits_out N + 1 relaxed splits (may alias splits_in)
- *  @param[out] out_report may be NULL
- *  @return SWARP_OK (converged), SWARP_INFO_FILTER_NOT_CONVERGED,
- *          SWARP_INFO_FILTER_NO_WEIGHT, SWARP_ERR_NULL_POINTER,
- *          SWARP_ERR_NON_FINITE, SWARP_ERR_FILTER_NO_SAMPLES,
- *          SWARP_ERR_FILTER_LAYER_COUNT, SWARP_ERR_NOT_INCREASING,
- *          SWARP_ERR_OUT_OF_RANGE (bad clamps or tolerance),
- *          SWARP_ERR_RESERVED_NONZERO. */
-SWARP_API swarp_status swarp_lvsm_lloyd(const double* mu, const double* sigma2, size_t count,
-                                        const swarp_lloyd_options* opt,
-                                        const double* splits_in, uint32_t n_layers,
-                                        double* splits_out, swarp_lloyd_report* out_report);
-
-/* ---- exponential VSM                         (src/filter_evsm.c) ------- */
-
-/** Storage format of the moments in the texture. */
-typedef enum swarp_texel_format {
-    SWARP_TEXEL_DEFAULT = 0, /**< = SWARP_TEXEL_FP32 */
-    SWARP_TEXEL_FP16 = 1,    /**< IEEE binary16: 10 mantissa bits, max 65504 */
-    SWARP_TEXEL_FP32 = 2,    /**< IEEE binary32 */
-    SWARP_TEXEL_FORMAT_FORCE_I32 = 0x7FFFFFFF
-} swarp_texel_format;
-
-/** @brief Largest safe EVSM exponent c for a texel format ([VSM] §4.2): for
- *  depths x in [0, 1] the largest moment is e^{2c}, so c = (ln F_max - m)/2
- *  where F_max = (2 - 2^-p) 2^e_max is the format's largest finite value
- *  (computed from p mantissa bits and e_max) and m = 4 u (u = 2^-(p+1), the
- *  unit roundoff) leaves room for a few ulps of GPU exp() error.  Averaging
- *  (filtering) never exceeds the largest texel, so filtered moments stay
- *  finite too.  fp32 gives c ~ 44.36, fp16 c ~ 5.545.
- *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_UNKNOWN_ENUM. */
-SWARP_API swarp_status swarp_evsm_max_exponent(swarp_texel_format format, double* out_c);
-
-/** @brief EVSM moments of depth x ([VSM] §4.2): positive warp e^{c_pos x}
- *  and negative warp -e^{-c_neg x}, each with its square:
- *  out = (e^{c_pos x}, e^{2 c_pos x}, -e^{-c_neg x}, e^{-2 c_neg x}).
- *  @param[in] c_pos, c_neg  in (0, 354]: e^{2c} finite in double, so every
- *                 depth in [0, 1] has finite moments
- *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE (x, c_pos or
- *          c_neg NaN/Inf), SWARP_ERR_FILTER_EXPONENT (c_pos or c_neg <= 0 or
- *          > 354, or a moment e^{2c|x|} overflows for this x, |x| > 1). */
-SWARP_API swarp_status swarp_evsm_moments(double x, double c_pos, double c_neg,
-                                          double out_moments[4]);
-
-/** @brief EVSM visibility ([VSM] §4.2): Chebyshev (3.3) on the positive and
- *  on the negative warp, then the minimum of both upper bounds.  The minimum
- *  variance is given in depth units and mapped into each warp by its
- *  derivative at t: min_variance (c e^{+-c t})^2.
- *  @param[in] moments  filtered moments laid out as swarp_evsm_moments
- *  @return as swarp_evsm_moments (SWARP_ERR_FILTER_EXPONENT also when
- *          e^{c|t|} overflows for the receiver depth t), plus
- *          SWARP_ERR_OUT_OF_RANGE (min_variance < 0) and SWARP_ERR_NON_FINITE
- *          (a moment, t or min_variance NaN/Inf; finite moments of any
- *          magnitude and a floor min_variance (c e^{c t})^2 beyond DBL_MAX
- *          give a bound in [0, 1]). */
-SWARP_API swarp_status swarp_evsm_visibility(const double moments[4], double t, double c_pos,
-                                             double c_neg, double min_variance,
-                                             double* out_visibility);
-
-/* ---- moment shadow maps                      (src/filter_msm.c) -------- */
-
-/** Moment bias Peters & Klein 2015 ("Moment Shadow Mapping", I3D) use for
- *  moments stored with 16 bits each; double or fp32 storage tolerates less. */
-#define SWARP_MSM_ALPHA_DEFAULT 3.0e-5
-
-/** @brief The four power moments of a depth z in [0, 1]: (z, z^2, z^3, z^4)
- *  (Peters & Klein 2015, §3; the optimised quantisation transform is a GPU
- *  storage detail and not part of this).
- *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
- *          SWARP_ERR_OUT_OF_RANGE (z outside [0, 1]). */
-SWARP_API swarp_status swarp_msm_moments(double z, double out_b[4]);
-
-/** @brief Moment bias (Peters & Klein 2015, Algorithm 3 step 1):
- *  b' = (1 - alpha) b + alpha (1/2, 1/2, 1/2, 1/2), a blend toward the
- *  moments of half the mass at 0 and half at 1, which keeps the Hankel matrix
- *  positive definite after quantisation.
- *  @param[in] alpha in [0, 1]
- *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
- *          SWARP_ERR_OUT_OF_RANGE. */
-SWARP_API swarp_status swarp_msm_bias(const double b[4], double alpha, double out_b[4]);
-
-/** @brief Hamburger 4-moment shadow bound (Peters & Klein 2015, Algorithm 3):
- *  solve B c = (1, z_f, z_f^2) with the Hankel matrix B of (1, b_1..b_4)
- *  (Cholesky), take the roots z_2 <= z_3 of c_1 + c_2 z + c_3 z^2, and the
- *  sharp lower bound G of the occluded fraction from the three-atom
- *  distribution at (z_f, z_2, z_3).  Visibility = 1 - G, clamped to [0, 1].
- *  When B is singular to rounding (one or two distinct depths, no bias) the
- *  distribution is determined by its moments and the exact discrete answer
- *  is returned with SWARP_INFO_FILTER_MSM_DEGENERATE.
- *  @param[in] b  filtered (and usually biased) moments
- *  @param[in] z_f  receiver depth
- *  Moments with b_2 < b_1^2 (rounding) count as a single depth at b_1; in
- *  the degenerate branch a receiver within ~1e-7 (relative) of a recovered
- *  depth counts as at it, hence lit (recovered depths carry rounding).
- *  @return SWARP_OK, SWARP_INFO_FILTER_MSM_DEGENERATE, SWARP_ERR_NULL_POINTER,
- *          SWARP_ERR_NON_FINITE (a NaN/Inf input, or recovered depths that
- *          overflow; moments and z_f of any magnitude are first rescaled by a
- *          power of two, the bound being invariant under depth scaling),
- *          SWARP_ERR_OUT_OF_RANGE
- *          (b_2 < 0 or b_4 < 0: not moments of any distribution). */
-SWARP_API swarp_status swarp_msm_visibility(const double b[4], double z_f,
-                                            double* out_visibility);
-
-/* ---- PCF and PCSS                            (src/filter_pcf.c) -------- */
-
-/** Worst case point count of swarp_pcf_poisson_disk. */
-#define SWARP_PCF_MAX_SAMPLES 256
-
-/** @brief Poisson-disk sample set in the unit disk for PCF ([RHS] §3.6,
- *  after Fernando's PCSS), deterministic from a seed: Mitchell's best
- *  candidate (each new point is the candidate farthest from the points so
- *  far) with a splitmix64 generator.  Writes count points as x, y pairs.
- *  @param[in] seed  any value; the same seed gives the same set everywhere
- *  @param[in] count 1..SWARP_PCF_MAX_SAMPLES points
- *  @param[in] candidates  candidates per point, 0 = 32
- *  @param[out] out_xy  2 * count doubles; capacity counts POINTS
- *  @param[out] out_count  count (or the needed count with SWARP_ERR_CAPACITY)
- *  @param[out] out_min_distance  smallest pairwise distance (0 for count = 1)
- *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_OUT_OF_RANGE,
- *          SWARP_ERR_CAPACITY. */
-SWARP_API swarp_status swarp_pcf_poisson_disk(uint64_t seed, uint32_t count, uint32_t candidates,
-                                              double* out_xy, size_t capacity,
-                                              size_t* out_count, double* out_min_distance);
-
-/** @brief PCSS blocker-search width ([RHS] §3.6, Fernando 2005): by similar
- *  triangles between the light of width w_light (measured on the light's
- *  near plane, e.g. in shadow-map UV) and the receiver at depth d_r,
- *  w_search = w_light (d_r - n_light) / d_r.
- *  @param[in] n_light  light near-plane distance, 0 < n_light <= d_r
- *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
- *          SWARP_ERR_OUT_OF_RANGE. */
-SWARP_API swarp_status swarp_pcss_search_width(double w_light, double n_light, double d_r,
-                                               double* out_w_search);
-
-/** @brief PCSS penumbra width w = (d_r - d_b) w_light / d_b ([RHS] §3.6,
- *  Fernando 2005), d_b the average blocker depth, d_r the receiver depth
- *  (both distances from the light), in the units of w_light.
- *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
- *          SWARP_ERR_OUT_OF_RANGE (w_light < 0),
- *          SWARP_ERR_FILTER_BLOCKER (d_b <= 0 or d_b > d_r),
- *          SWARP_ERR_OVERFLOW (the width exceeds DBL_MAX). */
-SWARP_API swarp_status swarp_pcss_penumbra(double d_r, double d_b, double w_light,
-                                           double* out_w_penumbra);
-
-/** @brief PCSS filter width on the shadow map's near plane: the penumbra at
- *  the receiver projected back, w_filter = w_penumbra n_light / d_r.
- *  @return as swarp_pcss_search_width. */
-SWARP_API swarp_status swarp_pcss_filter_width(double w_penumbra, double n_light, double d_r,
-                                               double* out_w_filter);
-/* <<< api: filter */
-
-/* >>> api: splits (src/cascade.c stabilize.c bias.c atlas.c) */
-/*
- * Splits, atlas, stabilisation and bias.  Guide: docs/splits.md.
- */
-
-/* ---- texture atlas and filter kernel   (src/atlas.c)   [RHS] §3.3.5, (3.9) */
-
-/** Most splits an atlas layout holds ([RHS] Fig. 3.16c: a 4 x 4 grid). */
-#define SWARP_ATLAS_MAX_SPLITS 16
-
-/** Whole-atlas facts of a layout.  grid x grid tiles of tile_res x tile_res
- *  texels; atlas_res = grid * tile_res; l_sc = 1/grid ([RHS] (3.9)). */
-typedef struct swarp_atlas_info {
-    uint32_t split_count; /**< m */
-    uint32_t grid;        /**< 1 (m = 1), 2 (m <= 4), 3 (m <= 9), 4 (m <= 16) */
-    double tile_res;      /**< texels per tile side */
-    double atlas_res;     /**< texels per atlas side */
-    double l_sc;          /**< [RHS] (3.9): 1, 1/2, 1/3, 1/4 */
-    uint32_t _reserved[4];
-} swarp_atlas_info;
-
-/** One split's place in the atlas.  Tiles are numbered row by row starting
- *  at texture coordinate (0, 0) (x = i mod grid, y = i / grid), the order
- *  of [RHS] Fig. 3.16.  viewport_* are glViewport()-style texel numbers.
- *  clip_to_atlas maps the split's clip coordinates (x, y, z, w) to
- *  homogeneous atlas coordinates (u w, v w, d w, w): after the divide u, v
- *  are atlas texture coordinates in [u0, u0 + l_sc] x [v0, v0 + l_sc] and d
- *  the window depth in [0, 1] (whatever the clip depth range). */
-typedef struct swarp_atlas_tile {
-    double viewport_x, viewport_y;          /**< lower-left texel */
-    double viewport_width, viewport_height; /**< texels */
-    swarp_mat4 clip_to_atlas;
-} swarp_atlas_tile;
-
-/** @brief Atlas layout for m splits ([RHS] §3.3.5, Fig. 3.16).
- *  m = 1 uses the whole texture (grid 1, l_sc = 1); 2..4 a 2 x 2 grid,
- *  5..9 a 3 x 3 grid, 10..16 a 4 x 4 grid.
- *  @param m          number of splits, 1..SWARP_ATLAS_MAX_SPLITS
- *  @param tile_res   texels per tile side (> 0, at most 2^24)
- *  @param depth      clip depth convention of the split matrices
- *  @param[out] out_info  layout facts (may be NULL)
- *  @param[out] out_tiles m tiles; capacity >= m
- *  @param[out] out_count m (also written with SWARP_ERR_CAPACITY)
- *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_ATLAS_SPLITS,
- *          SWARP_ERR_RESOLUTION, SWARP_ERR_UNKNOWN_ENUM, SWARP_ERR_CAPACITY. */
-SWARP_API swarp_status swarp_atlas_layout(uint32_t m, uint32_t tile_res, swarp_depth_range depth,
-                                          swarp_atlas_info* out_info, swarp_atlas_tile* out_tiles,
-                                          size_t capacity, size_t* out_count);
-
-/** @brief l_sc of [RHS] (3.9) for m splits: 1 (m = 1), 1/2, 1/3, 1/4. */
-SWARP_API swarp_status swarp_atlas_lsc(uint32_t m, double* out_l_sc);
-
-/** @brief PCF kernel scale of one split, [RHS] (3.9):
- *  s_i = r_l l_sc (2/(max_x - min_x), 2/(max_y - min_y)).
- *  min/max are the split's focus box in light space (the box of (3.1)), in
- *  world units for a uniform map.  s_i is in the split's clip units scaled by
- *  l_sc; s_i/2 is the extent of r_l in atlas texture coordinates, so a kernel
- *  of s_i has the same world size r_l in every split.
- *  @param r_l  kernel size in world units (>= 0)
- *  @param m    split count (selects l_sc)
- *  @param min_x, max_x, min_y, max_y  max > min
- *  @param[out] out_s  s_i (x, y)
- *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
- *          SWARP_ERR_OUT_OF_RANGE (r_l < 0, max <= min), SWARP_ERR_ATLAS_SPLITS,
- *          SWARP_ERR_OVERFLOW (a scale beyond DBL_MAX: width ~ r_l/DBL_MAX). */
-SWARP_API swarp_status swarp_atlas_kernel_scale(double r_l, uint32_t m, double min_x,
-                                                double max_x, double min_y, double max_y,
-                                                double out_s[2]);
-
-/* ---- flicker reduction                 (src/stabilize.c)   [RHS] §3.5 (ZZB09) */
-
-typedef enum swarp_stabilize_mode {
-    SWARP_STABILIZE_DEFAULT = 0, /**< = SWARP_STABILIZE_NONE */
-    SWARP_STABILIZE_NONE = 1,    /**< light-aligned focus on the body box, no snapping */
-    SWARP_STABILIZE_SPHERE = 2,  /**< exact solution: minimal sphere of the split frustum */
-    SWARP_STABILIZE_LEVELS = 3,  /**< approximate solution: quantised scale */
-    SWARP_STABILIZE_MODE_FORCE_I32 = 0x7FFFFFFF
-} swarp_stabilize_mode;
-
-/** Options of the stabilised light matrix.  Zero means default. */
-typedef struct swarp_stabilize_options {
-    swarp_stabilize_mode mode;
-    uint32_t levels;       /**< LEVELS: number of scale levels; 0 = 64 [RHS] §3.5 */
-    swarp_vec3 origin;     /**< world origin of snapping AND of the output matrix */
-    double level_max_size; /**< LEVELS: world size of level `levels`; 0 = diameter of
-                                the split frustum's minimal sphere */
-    swarp_depth_range depth;
-    uint32_t _reserved0;
-    uint32_t _reserved[4];
-} swarp_stabilize_options;
-
-/** What the stabiliser did. */
-typedef struct swarp_stabilize_report {
-    swarp_vec3 sphere_center;     /**< exact minimal enclosing sphere of the split frustum */
-    double sphere_radius;
-    double centroid_radius;       /**< sphere about the 8 corners' centroid */
-    double area_saved;            /**< 1 - (r_min / r_centroid)^2: map area the exact
-                                       sphere saves against the centroid sphere */
-    double texel_size_x;          /**< world size of one texel along light-space x */
-    double texel_size_y;
-    double offset_x, offset_y;    /**< light-space centre of the map relative to origin,
-                                       whole multiples of the texel size */
-    uint32_t level_x, level_y;    /**< LEVELS: quantised level (1..); else 0 */
-    uint32_t _reserved[4];
-} swarp_stabilize_report;
-
-/** @brief Exact minimal enclosing sphere of the split frustum [n_i, f_i] of a
- *  camera (closed form: by the frustum's two mirror symmetries the centre
- *  lies on the view axis at depth min(f_i, (n_i + f_i)(1 + k^2)/2), k^2 =
- *  tan^2(fovy/2)(1 + aspect^2)), and the centroid sphere engines use.
- *  [RHS] §3.5 exact solution (ZZB09).
- *  @param cam      camera (near/far ignored; the split range is n_i, f_i)
- *  @param n_i, f_i split range, 0 < n_i < f_i
- *  @param[out] out_center world centre; @param[out] out_radius radius
- *  (> 0: at least the smallest positive double, for a range of a few
- *  subnormals); @param[out] out_centroid_radius may be NULL (>= radius)
- *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
- *          SWARP_ERR_NEAR_FAR, SWARP_ERR_FOV, SWARP_ERR_ZERO_VECTOR,
- *          SWARP_ERR_OUT_OF_RANGE (aspect <= 0), SWARP_ERR_DEGENERATE (up
- *          parallel to dir), SWARP_ERR_RESERVED_NONZERO, SWARP_ERR_OVERFLOW
- *          (the sphere's radius or centre exceeds DBL_MAX, e.g. f tan(fovy/2)
- *          aspect > DBL_MAX). */
-SWARP_API swarp_status swarp_stabilize_sphere(const swarp_camera* cam, double n_i, double f_i,
-                                              swarp_vec3* out_center, double* out_radius,
-                                              double* out_centroid_radius);
-
-/** @brief Light-space basis of a directional light used by the stabiliser:
- *  rows of out_view are u (right), v (up), w = -light direction, each unit;
- *  out_view maps origin-relative world coordinates to light view space (a
- *  right-handed view looking along the light).  It depends on the light
- *  direction only, never on the camera, so texels keep their orientation.
- *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
- *          SWARP_ERR_ZERO_VECTOR. */
-SWARP_API swarp_status swarp_stabilize_light_view(const swarp_vec3* light_dir, swarp_mat4* out_view);
-
-/** @brief Stabilised (flicker-free) uniform light matrix of one split for a
- *  directional light.  [RHS] §3.5 (ZZB09).
- *  SPHERE: the map covers the split frustum's exact minimal sphere (constant
- *  world size 2 r res/(res - 1), rounded up to 2^-20 relative so ulp-level
- *  wobble of n_i, f_i leaves it bit-identical); LEVELS: the light-space box of body_points
- *  with each axis' size rounded up to a multiple of level_max_size/levels;
- *  NONE: that box unquantised and unsnapped.  SPHERE and LEVELS snap the
- *  light-space map centre to whole texels relative to opt->origin, in double,
- *  so a world point's texel coordinates change by whole numbers only and
- *  jitter does not grow with the distance from the world origin.
- *  Depth covers the sphere / body and, toward the light, the scene box.
- *  out_matrix maps ORIGIN-RELATIVE world coordinates (p - origin) to clip
- *  space (large-world rendering); for origin = 0 it is the ordinary matrix.
- *  @param cam        camera; @param n_i, f_i split range (0 < n_i < f_i)
- *  @param light_dir  direction the light travels (non-zero)
- *  @param body_points world points of the split's body B_i (LEVELS, NONE:
- *                     count >= 1 required; SPHERE: may be NULL, 0)
- *  @param scene      scene box (may be NULL): extends depth toward the light
- *  @param res        map resolution in texels (>= 2)
- *  @param opt        options (may be NULL = defaults)
- *  @param[out] out_matrix  the light matrix; @param[out] out_report may be NULL
- *  @return SWARP_OK, SWARP_INFO_LEVEL_ABOVE_RANGE, SWARP_ERR_NULL_POINTER,
- *          SWARP_ERR_NON_FINITE, SWARP_ERR_NEAR_FAR, SWARP_ERR_FOV,
- *          SWARP_ERR_ZERO_VECTOR, SWARP_ERR_RESOLUTION, SWARP_ERR_UNKNOWN_ENUM,
- *          SWARP_ERR_RESERVED_NONZERO, SWARP_ERR_OUT_OF_RANGE,
- *          SWARP_ERR_DEGENERATE, SWARP_ERR_OVERFLOW (finite arguments but a
- *          matrix entry or texel size beyond DBL_MAX: coordinates near
- *          DBL_MAX, or an extent tiny against the coordinates). */
-SWARP_API swarp_status swarp_stabilize_directional(const swarp_camera* cam, double n_i, double f_i,
-                                                   const swarp_vec3* light_dir,
-                                                   const swarp_vec3* body_points, size_t body_count,
-                                                   const swarp_aabb* scene, uint32_t res,
-                                                   const swarp_stabilize_options* opt,
-                                                   swarp_mat4* out_matrix,
-                                                   swarp_stabilize_report* out_report);
-
-/** @brief Offset snapping for a caller's own uniform light matrix ([RHS]
- *  §3.5, the offset problem): shifts the clip-space translation by less than
- *  half a texel so that `origin` lands on a texel corner.  While the matrix's
- *  scale and orientation stay the same (e.g. quantised with LEVELS), every
- *  world point then moves by whole texels between frames.  Done in double on
- *  (origin-relative) coordinates.
- *  @param[in] m  world -> clip matrix of a uniform map (last row 0 0 0 w)
- *  @param res_s, res_t  map resolution in texels (> 0)
- *  @param[in] origin  snapping origin (world)
- *  @param[out] out  the snapped matrix (may alias m)
- *  @return SWARP_OK, SWARP_ERR_STABILIZE_WARPED (m is projective: a warped
- *          map has no uniform texel grid), SWARP_ERR_NULL_POINTER,
- *          SWARP_ERR_NON_FINITE, SWARP_ERR_RESOLUTION, SWARP_ERR_SINGULAR
- *          (w = 0). */
-SWARP_API swarp_status swarp_stabilize_snap_matrix(const swarp_mat4* m, double res_s, double res_t,
-                                                   const swarp_vec3* origin, swarp_mat4* out);
-
-/* ---- bias                               (src/bias.c)   [KOZ] §14.2.3 */
-
-/** A shadow map as the bias functions see it: the final world -> clip matrix
- *  (uniform or warped, per split), its resolution and clip depth range.
- *  "Depth units" below are WINDOW depth d in [0, 1] (the value stored in the
- *  depth texture): d = (z_ndc + 1)/2 for [-1, 1], d = z_ndc for [0, 1]. */
-typedef struct swarp_bias_map {
-    swarp_mat4 world_to_clip;
-    double res_s;  /**< texels along clip x */
-    double res_t;  /**< texels along clip y */
-    swarp_depth_range depth;
-    uint32_t _reserved0;
-    uint32_t _reserved[4];
-} swarp_bias_map;
-
-/** @brief World-space size of the texel at p ([KOZ] §14.2.3): p is mapped to
- *  the map, shifted by one texel along s (and t) at constant depth and
- *  mapped back; the lengths of the world displacements are L_s and L_t.
- *  Exact for warped maps at any point (finite one-texel step, no centre-of-
- *  map approximation).  L_texel = max(L_s, L_t).
- *  @param[out] out_L_texel, out_L_s, out_L_t (each may be NULL, not all)
- *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
- *          SWARP_ERR_RESOLUTION, SWARP_ERR_UNKNOWN_ENUM,
- *          SWARP_ERR_RESERVED_NONZERO, SWARP_ERR_SINGULAR,
- *          SWARP_ERR_BEHIND_PROJECTION. */
-SWARP_API swarp_status swarp_bias_texel_size(const swarp_bias_map* map, const swarp_vec3* p,
-                                             double* out_L_texel, double* out_L_s, double* out_L_t);
-
-/** @brief Unit vector from p toward the light (the L of [KOZ] §14.2.3):
- *  -direction for a directional light, (position - p)/|.| for a point light.
- *  @param[in] light, p; @param[out] out_L unit vector
- *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
- *          SWARP_ERR_UNKNOWN_ENUM, SWARP_ERR_RESERVED_NONZERO,
- *          SWARP_ERR_ZERO_VECTOR (zero direction, point light at p). */
-SWARP_API swarp_status swarp_bias_to_light(const swarp_light* light, const swarp_vec3* p,
-                                           swarp_vec3* out_L);
-
-/** @brief [KOZ] §14.2.3 world-space bias: P_biased = P + L (a + b L_texel),
- *  L the unit vector toward the light, L_texel from swarp_bias_texel_size.
- *  The point moves toward the light by exactly a + b L_texel world units.
- *  @param a  constant bias, world units; @param b  bias per texel size
- *  (dimensionless); a + b L_texel must be >= 0 (else SWARP_ERR_OUT_OF_RANGE)
- *  @param[out] out_p  biased point; @param[out] out_amount may be NULL
- *  @return as swarp_bias_texel_size, plus SWARP_ERR_OUT_OF_RANGE,
- *          SWARP_ERR_ZERO_VECTOR (point light at p). */
-SWARP_API swarp_status swarp_bias_kozlov(const swarp_bias_map* map, const swarp_light* light,
-                                         const swarp_vec3* p, double a, double b,
-                                         swarp_vec3* out_p, double* out_amount);
-
-/** @brief Normal-offset bias: P' = P + N k L_texel (1 - N.L), N the unit
- *  normal, L the unit vector to the light, N.L clamped to [0, 1] (a back-
- *  facing normal gives SWARP_INFO_BACKFACING and the full offset k L_texel).
- *  @param k  offset in texels (>= 0)
- *  @param[out] out_p; @param[out] out_amount offset length in world units
- *  (may be NULL).
- *  @return SWARP_OK, SWARP_INFO_BACKFACING, SWARP_ERR_OUT_OF_RANGE (k < 0),
- *          SWARP_ERR_ZERO_VECTOR (normal), and the errors of
- *          swarp_bias_texel_size and swarp_bias_to_light. */
-SWARP_API swarp_status swarp_bias_normal_offset(const swarp_bias_map* map, const swarp_light* light,
-                                                const swarp_vec3* p, const swarp_vec3* normal,
-                                                double k, swarp_vec3* out_p, double* out_amount);
-
-/** @brief Constant plus slope-scaled depth bias, given in WORLD units and
- *  converted to the map's depth units at p:
- *  world bias  = c + s L_texel tan(acos(N.L))  (tan clamped to 10; the depth
- *  step of a receiver tilted by the angle between N and L across one texel),
- *  depth bias  = window-depth difference between p and p moved by the world
- *  bias toward the light (exact for warped maps; linear for uniform maps).
- *  @param c  constant, world units (>= 0); @param s slope scale (>= 0)
- *  @param[out] out_world_bias, out_depth_bias (either may be NULL, not both)
- *  @return as swarp_bias_normal_offset. */
-SWARP_API swarp_status swarp_bias_slope_scaled(const swarp_bias_map* map, const swarp_light* light,
-                                               const swarp_vec3* p, const swarp_vec3* normal,
-                                               double c, double s, double* out_world_bias,
-                                               double* out_depth_bias);
-
-/** @brief Window depth per world unit toward the light at p: the factor that
- *  turns a world-space bias into the depth units of this split's map (minus
- *  the derivative of d along L at p, so > 0 for a map looking along the
- *  light).  Uniform maps: constant per split.
- *  @param[out] out_depth_per_world window depth units per world unit
- *  @return SWARP_OK, SWARP_ERR_BEHIND_PROJECTION, and the argument errors of
- *          swarp_bias_texel_size and swarp_bias_to_light. */
-SWARP_API swarp_status swarp_bias_depth_per_world(const swarp_bias_map* map, const swarp_light* light,
-                                                  const swarp_vec3* p, double* out_depth_per_world);
-
-/** @brief Receiver-plane depth bias: the depth gradient (dd/ds, dd/dt) in
- *  window depth per TEXEL of the receiver plane at p spanned by the world
- *  tangents tangent_a, tangent_b (e.g. dFdx/dFdy of the world position, or
- *  two edges of the triangle).  Exact derivative of the (possibly
- *  projective) map at p.  A PCF tap offset by (ds, dt) texels compares
- *  against d + dd/ds ds + dd/dt dt.  GLSL twin in docs/splits.md.
- *  @return as swarp_bias_texel_size; SWARP_ERR_DEGENERATE when the plane is
- *          seen edge-on by the light (its texel-space image is a line): the
- *          tangents' texel-space images parallel to 1e-12, or their
- *          determinant within its own rounding bound (the double evaluation
- *          of M p and M T cannot tell the plane from an edge-on one, e.g.
- *          a point far from the map's centre of projection). */
-SWARP_API swarp_status swarp_bias_receiver_plane(const swarp_bias_map* map, const swarp_vec3* p,
-                                                 const swarp_vec3* tangent_a,
-                                                 const swarp_vec3* tangent_b, double out_grad[2]);
-
-/* ---- cascades: split selection and blending   (src/cascade.c)   [RHS] §3.3.3 */
-
-/** @brief View depth of a world point: (p - eye) . dir/|dir|, the z that
- *  swarp_cascade_select_depth and swarp_cascade_blend take (in a shader:
- *  -view_space_position.z).
- *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
- *          SWARP_ERR_ZERO_VECTOR, SWARP_ERR_OVERFLOW (the depth exceeds
- *          DBL_MAX: p and eye near opposite ends of the double range). */
-SWARP_API swarp_status swarp_cascade_view_depth(const swarp_camera* cam, const swarp_vec3* p,
-                                                double* out_depth);
-
-/** @brief Split selection by eye depth (PSSM, ZSXL06; [RHS] §3.3.3):
- *  the i with splits[i] <= view_depth < splits[i+1] (a depth on a border
- *  belongs to the split that starts there; the far end to the last split).
- *  GLSL twin in docs/splits.md.
- *  @param splits   m + 1 strictly increasing eye-space distances
- *  @param m        split count (1..SWARP_SPLIT_MAX_COUNT)
- *  @param view_depth  positive distance along the view direction
- *  @param[out] out_index
- *  @return SWARP_OK; SWARP_INFO_OUTSIDE_SPLITS (depth before the first or
- *          after the last split: the nearest split is written);
- *          SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE, SWARP_ERR_SPLIT_COUNT,
- *          SWARP_ERR_NOT_INCREASING. */
-SWARP_API swarp_status swarp_cascade_select_depth(const double* splits, size_t m, double view_depth,
-                                                  uint32_t* out_index);
-
-/** @brief Split selection by best resolution (ZZB09; [RHS] §3.3.3): among
- *  the splits whose map covers p (w > 0, |x|, |y| <= w, depth inside the clip
- *  range) the one with the smallest world texel size L_texel at p (exact,
- *  swarp_bias_texel_size; ties go to the lower index).  GLSL twin in
- *  docs/splits.md.
- *  @param maps  m split maps (world -> clip, resolution, depth range)
- *  @param fallback_index  written with SWARP_INFO_OUTSIDE_SPLITS when no map
- *                         covers p (pass the depth selection), < m
- *  @param[out] out_index; @param[out] out_L_texel (may be NULL; the chosen
- *  split's L_texel, 0 for the fallback)
- *  @return SWARP_OK, SWARP_INFO_OUTSIDE_SPLITS, SWARP_ERR_NULL_POINTER,
- *          SWARP_ERR_NON_FINITE, SWARP_ERR_SPLIT_COUNT, SWARP_ERR_OUT_OF_RANGE
- *          (fallback_index >= m), and the map errors of swarp_bias_texel_size. */
-SWARP_API swarp_status swarp_cascade_select_best(const swarp_bias_map* maps, size_t m,
-                                                 const swarp_vec3* p, uint32_t fallback_index,
-                                                 uint32_t* out_index, double* out_L_texel);
-
-/** @brief Cascade blend weight in a transition band: the last `band` fraction
- *  of each split's depth range (except the last split's) fades linearly into
- *  the next split.  Writes the depth-selected split i and the weight w of
- *  split i; the shader mixes shadow_i w + shadow_{i+1} (1 - w).  w = 1
- *  outside the bands, w -> 0 at the border, so the result is continuous.
- *  GLSL twin in docs/splits.md.
- *  @param band  fraction of each split's length, in [0, 1) (0: hard switch)
- *  @return as swarp_cascade_select_depth; SWARP_ERR_OUT_OF_RANGE for band. */
-SWARP_API swarp_status swarp_cascade_blend(const double* splits, size_t m, double view_depth,
-                                           double band, uint32_t* out_index, double* out_weight);
-
-/* ---- cascades: split distances and the configuration's error curve */
-
-typedef enum swarp_split_scheme {
-    SWARP_SCHEME_DEFAULT = 0,   /**< = PRACTICAL with lambda 0.5 (PSSM, ZSXL06) */
-    SWARP_SCHEME_UNIFORM = 1,   /**< [RHS] (3.6) */
-    SWARP_SCHEME_LOG = 2,       /**< [RHS] (3.7) */
-    SWARP_SCHEME_PRACTICAL = 3, /**< [RHS] (3.8), lambda as given (0 = uniform) */
-    SWARP_SCHEME_PSEUDO = 4,    /**< [RHS] (4.1): practical over [n_p, f_p] */
-    SWARP_SCHEME_FORCE_I32 = 0x7FFFFFFF
-} swarp_split_scheme;
-
-/** How to split [n, f].  Zero means default (4 splits, PSSM lambda 0.5). */
-typedef struct swarp_split_options {
-    uint32_t count;            /**< m, 1..SWARP_SPLIT_MAX_COUNT; 0 = 4 */
-    swarp_split_scheme scheme;
-    double lambda;             /**< PRACTICAL, PSEUDO: in [0, 1] */
-    double pseudo_near;        /**< PSEUDO (and the warp of the FIRST split): n_p as a
-                                    fraction of f - n measured from n, [0, 1) */
-    double pseudo_far;         /**< PSEUDO (and the warp of the LAST split): f_p as a
-                                    fraction of f - n measured from f; n_p + f_p < 1 */
-    uint32_t _reserved[4];
-} swarp_split_options;
-
-/** @brief Split distances C_0 = n < C_1 < ... < C_m = f of a scheme, on the
- *  (adjusted, [RHS] §3.3.1) range [n, f], through the core schemes
- *  swarp_split_uniform/log/practical/pseudo.  PSEUDO converts the fractions
- *  to distances n + n_p (f - n) and f - f_p (f - n) for (4.1).
- *  @param[out] out  m + 1 distances; capacity >= m + 1 (SWARP_ERR_CAPACITY
- *  with the count written otherwise)
- *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
- *          SWARP_ERR_NEAR_FAR, SWARP_ERR_SPLIT_COUNT, SWARP_ERR_OUT_OF_RANGE,
- *          SWARP_ERR_UNKNOWN_ENUM, SWARP_ERR_RESERVED_NONZERO,
- *          SWARP_ERR_CAPACITY. */
-SWARP_API swarp_status swarp_cascade_splits(double n, double f, const swarp_split_options* opt,
-                                            double* out, size_t capacity, size_t* out_count);
-
-/** @brief Warp parameter n' of each split for LiSPSM with an overhead light
- *  in the error model's frame: n_opt of [RHS] (3.2) with d = C_{i+1} - C_i,
- *  z_0 = C_i, z_1 = C_{i+1}; the first split uses the pseudo-near fraction
- *  and the last the pseudo-far fraction of (4.2) ([RHS] §4.2), when given.
- *  @param[out] out_n_primes m values.
- *  @return SWARP_OK and the errors of swarp_warp_nopt_pseudo. */
-SWARP_API swarp_status swarp_cascade_nopt(const double* splits, size_t m, double pseudo_near,
-                                          double pseudo_far, double* out_n_primes);
-
-/** Worst-case sample count of swarp_cascade_error_curve. */
-#define SWARP_CASCADE_CURVE_MAX(m, samples_per_split) ((m) * (samples_per_split))
-
-/** @brief The error curve of a whole configuration ([RHS] §3.3.4, Fig. 3.15,
- *  3.18) through the core's piecewise model swarp_error_split_curve: for
- *  each split `samples_per_split` depths from C_i (the value just after the
- *  border: a border belongs to the split that starts there) up to the left
- *  limit at C_{i+1} (the last sample is nextafter(C_{i+1}, 0), f itself for
- *  the last split).  out_mx or out_mz may be NULL.
- *  @param samples_per_split >= 2
- *  @return SWARP_OK, SWARP_ERR_CAPACITY (count written), SWARP_ERR_NULL_POINTER,
- *          SWARP_ERR_OUT_OF_RANGE, and the errors of swarp_error_split_curve. */
-SWARP_API swarp_status swarp_cascade_error_curve(const swarp_error_config* cfg,
-                                                 const double* splits, const double* n_primes,
-                                                 size_t m, size_t samples_per_split,
-                                                 double* out_z, double* out_mx, double* out_mz,
-                                                 size_t capacity, size_t* out_count);
-
-/* ---- cascades: the one call                  (src/cascade.c)   [RHS] §3.3-3.4 */
-
-/** Most splits swarp_cascade_setup computes (the largest atlas, Fig. 3.16c). */
-#define SWARP_CASCADE_MAX_SPLITS 16
-
-/** Warp strength of the splits 1.. of a cascade ([RHS] §3.4 "arbitrary
- *  warping": "adjust the warping strength for each split independently or
- *  based upon the variable first split according to the currently used split
- *  scheme"). */
-typedef enum swarp_cascade_warp {
-    SWARP_CASCADE_WARP_DEFAULT = 0,    /**< = EACH */
-    SWARP_CASCADE_WARP_EACH = 1,       /**< every split its own: n_user[i] when given, else
-                                            the setup's parameter on the split (n_opt ...) */
-    SWARP_CASCADE_WARP_FROM_FIRST = 2, /**< split 0 as EACH (its n'_0); every split i >= 1
-                                            with n_user[i] == 0 gets
-                                            n'_i = n'_0 * nu_i / nu_0,  nu_i = C_i + sqrt(C_i C_{i+1})
-                                            (n_opt of [RHS] (3.2) for the split's own range in
-                                            the overhead frame, swarp_cascade_nopt): the first
-                                            split's strength relative to its optimum carried
-                                            through the scheme (log scheme: n'_0 (C_i / C_0)) */
-    SWARP_CASCADE_WARP_FORCE_I32 = 0x7FFFFFFF
-} swarp_cascade_warp;
-
-/** Options of swarp_cascade_setup; a zeroed struct is a valid request
- *  (4 PSSM splits, LiSPSM n_opt per split, 2048² tiles, no stabilisation). */
-typedef struct swarp_cascade_options {
-    swarp_setup_options setup;         /**< technique and parameters for every split;
-                                            map_width = atlas tile size.  param PSEUDO:
-                                            pseudo_near/far are fractions of the whole
-                                            adjusted range; pseudo-near acts on the FIRST
-                                            split only, pseudo-far on the LAST ([RHS] §4.2) */
-    swarp_split_options split;         /**< scheme and count (count 1..16) */
-    swarp_stabilize_options stabilize; /**< mode != NONE needs technique UNIFORM and a
-                                            directional light; its depth field is
-                                            ignored (setup.depth_range is used).
-                                            SPHERE and LEVELS split the camera's own
-                                            near..far: no adjustment and no min_depth,
-                                            since [RHS] §3.5 needs constant split
-                                            ranges (the adjusted far moves with the
-                                            camera and the texels would drift) */
-    double kernel_world_size;          /**< r_l of [RHS] (3.9), world units; 0 = 1 */
-    double n_user[SWARP_CASCADE_MAX_SPLITS]; /**< per-split warp: n' in eye units for
-                                            split i (+INFINITY = uniform); 0 = use setup
-                                            (or, FROM_FIRST, derived from split 0) */
-    swarp_cascade_warp warp_per_split; /**< how splits 1.. get their warp strength */
-    uint32_t _reserved[3];             /**< must be zero (one word went to warp_per_split) */
-} swarp_cascade_options;
-
-/** One split of a cascade. */
-typedef struct swarp_cascade_split {
-    double near, far;          /**< C_i, C_{i+1}: eye-space depth range */
-    swarp_mat4 matrix;         /**< world -> split clip space (stabilised: takes p - origin) */
-    swarp_mat4 atlas_matrix;   /**< tile.clip_to_atlas * matrix: world -> atlas texture
-                                    coordinates (homogeneous; divide by w) */
-    swarp_atlas_tile tile;     /**< viewport in texels and clip -> atlas matrix */
-    double n_eye;              /**< warp parameter n' used (eye units); +inf uniform */
-    double kernel_scale[2];    /**< s_i of [RHS] (3.9) for kernel_world_size */
-    double max_mx, max_mz;     /**< exact maxima over [near, far], [RHS] (2.3)-(2.8) */
-    double mx_start, mz_start; /**< values at C_i: just after the border into this split */
-    double mx_end, mz_end;     /**< values at C_{i+1} with this split's map (just before) */
-    double texel_size;         /**< stabilised: world texel size; else 0 */
-    double depth_per_world;    /**< window depth per world unit toward the light at the
-                                    centroid of B_i (swarp_bias_depth_per_world): converts
-                                    a world-space bias to this split's depth units
-                                    (constant over the split for uniform maps) */
-    swarp_status status;       /**< this split's own (informational) status */
-    uint32_t point_count;      /**< points of B_i */
-    uint32_t _reserved[4];
-} swarp_cascade_split;
-
-/** Whole-cascade facts. */
-typedef struct swarp_cascade_result {
-    uint32_t split_count;
-    uint32_t _pad;
-    double view_near, view_far;  /**< adjusted near/far [RHS] §3.3.1 */
-    double splits[SWARP_CASCADE_MAX_SPLITS + 1]; /**< C_0 .. C_m */
-    double max_mx, max_mz;       /**< maxima of the whole configuration */
-    swarp_atlas_info atlas;
-    uint32_t _reserved[4];
-} swarp_cascade_result;
-
-/** @brief Cascaded (z-partitioned) shadow maps with any geometry technique.
- *  [RHS] §3.3-3.4, §4.1-4.2, §3.3.5, (3.9), §3.5.
- *  Adjusted near/far ([RHS] §3.3.1), split distances (swarp_cascade_splits),
- *  per split its body B_i and light matrix through swarp_setup_range (the
- *  split frustum instead of the view frustum, [RHS] §3.4; LiSPSM with the
- *  robust projection centre of §4.1 unless setup.center says otherwise),
- *  the atlas place and kernel scale, the stabilised matrix if asked for,
- *  and the error model's values per split.  With one split the result is
- *  swarp_setup's, bit for bit.
- *  @param[in] cam, light, scene  as swarp_setup
- *  @param[in] opts   NULL or zeroed for defaults
- *  @param[out] out   whole-cascade facts
- *  @param[out] out_splits  one entry per split; capacity >= count
- *  @param[out] out_count   split count (also with SWARP_ERR_CAPACITY)
- *  o.warp_per_split FROM_FIRST: [RHS] §3.4 arbitrary warping, see
- *  swarp_cascade_warp.  o.setup.min_depth: [RHS] §4.3 measured min depth, as
- *  in swarp_setup (not for stabilised cascades).
- *  @return SWARP_OK or the first informational status of a split
- *          (SWARP_INFO_SPLIT_NO_SCENE: LEVELS, a split of the constant
- *          range misses the scene box and its map covers the split frustum);
- *          SWARP_ERR_STABILIZE_WARPED, SWARP_ERR_STABILIZE_LIGHT,
- *          SWARP_ERR_SPLIT_COUNT (count > 16), SWARP_ERR_SPLIT_EMPTY,
- *          SWARP_ERR_CAPACITY, and the errors of swarp_setup,
- *          swarp_cascade_splits and swarp_stabilize_directional (with
- *          stabilisation: SWARP_ERR_OVERFLOW when the split's sphere or
- *          matrix exceeds DBL_MAX). */
-SWARP_API swarp_status swarp_cascade_setup(const swarp_camera* cam, const swarp_light* light,
-                                           const swarp_aabb* scene,
-                                           const swarp_cascade_options* opts,
-                                           swarp_cascade_result* out,
-                                           swarp_cascade_split* out_splits, size_t capacity,
-                                           size_t* out_count);
-/* <<< api: splits */
-
-/* >>> api: plan (src/plan.c) */
+/* ---- 9.4 the planner ---------------------------------------------------- */
 /*
  * The planner: from what the scene needs and what the caller can spend, the
  * cheapest chain (warp, splits, stabilisation, inverse projection, lixel
@@ -2385,11 +2470,9 @@ SWARP_API const char* swarp_plan_scheme_name(swarp_plan_scheme s);
  *  @param f the filter kind
  *  @return a static string, never NULL ("?" for values not in the enum). */
 SWARP_API const char* swarp_plan_filter_name(swarp_plan_filter f);
-/* <<< api: plan */
 
-/* >>> api: extras (src/cube.c mindepth.c) */
-/* ---- [KOZ] §14.2.2 "Using Cube Maps": cube-map faces in post-projective space (src/cube.c)
- *
+/* ---- 9.5 cube maps in post-projective space, [KOZ] §14.2.2 -------------- */
+/*
  * In the camera's post-projective space the view frustum is the unit cube
  * [-1, 1]^3 and (almost) every light is a point P.  The shadow map is a cube
  * map "with displaced centre" whose faces are the unit-cube faces that are
@@ -2478,8 +2561,9 @@ SWARP_API swarp_status swarp_cube_lookup(const swarp_vec4* ps_light, const swarp
                                          const swarp_vec3* ps_point, uint32_t* out_face,
                                          swarp_vec3* out_texcoord, double* out_depth);
 
-/* ---- [RHS] §4.3 min-depth near plane (src/mindepth.c)
- *
+
+/* ---- 9.6 the min-depth near plane, [RHS] §4.3 ---------------------------- */
+/*
  * The nearest visible depth of the frame, read from a LINEAR depth buffer
  * (view-space distance along the view direction, not radial distance and not
  * the non-linear z-buffer value), becomes the largest near plane that clips
@@ -2534,7 +2618,8 @@ typedef struct swarp_mindepth_options {
  *  SWARP_ERR_RESERVED_NONZERO. */
 SWARP_API swarp_status swarp_mindepth_near(double n, double f, double min_depth,
                                            const swarp_mindepth_options* opt, double* out_near);
-/* <<< api: extras */
+
+#endif /* SWARP_EXPERIMENTAL_API */
 
 #ifdef __cplusplus
 } /* extern "C" */

@@ -6,6 +6,9 @@ set -eu
 B=${1:-build}
 T=$(mktemp -d)
 "$B/examples/demo/demo" --out "$T" --size 960x540 --map 1024 >/dev/null
+# the old pictures go first, so that a picture the gallery no longer makes
+# does not stay behind
+rm -f docs/img/demo_*.png
 # the comparison sheets (the default gallery ends with them): projective blur
 # vs PCF, single-map PSM vs the cube map, sun in front of and behind the camera
 for n in blur_sheet cube_sheet cube_sheet_behind; do
@@ -13,7 +16,6 @@ for n in blur_sheet cube_sheet cube_sheet_behind; do
 done
 "$B/examples/demo/demo" --out "$T/measure" --camera measure --light-angle 90 --size 960x540 \
     --technique lispsm >/dev/null
-rm -f docs/img/demo_*.png
 for n in sheet_techniques uniform_sampling lispsm_sampling pssm4_sampling psm_sampling \
          lispsm_light pssm4_light pssm-lispsm4_light lispsm_grid pssm4_splits pssm4_error \
          lispsm_error pssm4_third lispsm_third lixel_sampling lixel_shaded pssm4_shaded \

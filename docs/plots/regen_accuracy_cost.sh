@@ -50,7 +50,7 @@ if [ "${SWARP_NO_DEMO:-0}" = "1" ] && [ -f "$CLONE_DAT" ]; then
     echo "regen_accuracy_cost: SWARP_NO_DEMO=1: reusing $CLONE_DAT"
 elif [ -x "$DEMO" ]; then
     rc=0
-    "$DEMO" --test bench-clone --size 960x540 --map 1024 --frames "${CLONE_FRAMES:-31}" \
+    "$BUILD/examples/demo/demo-check" --test bench-clone --size 960x540 --map 1024 --frames "${CLONE_FRAMES:-31}" \
         --bench-out "$CLONE_DAT.tmp" || rc=$?
     if [ "$rc" = 0 ]; then
         mv "$CLONE_DAT.tmp" "$CLONE_DAT"
@@ -60,7 +60,7 @@ elif [ -x "$DEMO" ]; then
         echo "regen_accuracy_cost: no OSMesa context: the geometry-cloning table is left out of the report" >&2
     else
         rm -f "$CLONE_DAT.tmp"
-        echo "regen_accuracy_cost: demo --test bench-clone failed (exit $rc)" >&2
+        echo "regen_accuracy_cost: demo-check --test bench-clone failed (exit $rc)" >&2
         exit 1
     fi
 else

@@ -1,4 +1,5 @@
-/* demo.h -- what main.c, measure.c and pictures.c share. */
+/* demo.h -- what the views, the techniques, the measurement, the pictures
+ * and the checks of the demo share. */
 #ifndef DEMO_DEMO_H
 #define DEMO_DEMO_H
 

@@ -55,6 +55,39 @@ static GLuint r32f(int w, int h) {
     return t;
 }
 
+/* Step 3 of demo_mindepth: the level-0 buffer (lvl0, bound to the current
+ * framebuffer) read back whole and reduced by swarp_mindepth_pyramid and
+ * swarp_mindepth_direct, each timed.  0, or -1 when either failed. */
+static int cpu_reductions(int w, int h, GLuint lvl0, demo_mindepth_result* out) {
+    float* buf0 = malloc(sizeof(float) * (size_t)w * h);
+    int rc = buf0 ? 0 : -1;
+    if (buf0) {
+        double t0 = demo_now_ms();
+        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, lvl0, 0);
+        glReadPixels(0, 0, w, h, GL_RED, GL_FLOAT, buf0);
+        out->readback_ms = demo_now_ms() - t0;
+        size_t need = SWARP_MINDEPTH_SCRATCH(w, h), got = 0;
+        float* scratch = malloc(sizeof(float) * need);
+        swarp_status s1 = SWARP_ERR_NULL_POINTER, s2;
+        t0 = demo_now_ms();
+        if (scratch)
+            s1 = swarp_mindepth_pyramid(buf0, (uint32_t)w, (uint32_t)h, (size_t)w, scratch, need,
+                                        &got, &out->cpu_pyramid_min);
+        out->cpu_pyramid_ms = demo_now_ms() - t0;
+        t0 = demo_now_ms();
+        s2 = swarp_mindepth_direct(buf0, (uint32_t)w, (uint32_t)h, (size_t)w, &out->cpu_direct_min);
+        out->cpu_direct_ms = demo_now_ms() - t0;
+        if (swarp_status_is_error(s1) || swarp_status_is_error(s2)) {
+            fprintf(stderr, "demo: swarp_mindepth_*: %s / %s\n", swarp_status_string(s1),
+                    swarp_status_string(s2));
+            rc = -1;
+        }
+        free(scratch);
+        free(buf0);
+    }
+    return rc;
+}
+
 int demo_mindepth(demo_renderer* r, const demo_view* v, demo_mindepth_result* out) {
     memset(out, 0, sizeof *out);
     int w = v->w, h = v->h;
@@ -123,32 +156,7 @@ int demo_mindepth(demo_renderer* r, const demo_view* v, demo_mindepth_result* ou
     errors += demo_gl_check("min chain");
     glDeleteTextures(1, &src);
     /* 3. the whole buffer read back and reduced on the CPU by the library */
-    float* buf0 = malloc(sizeof(float) * (size_t)w * h);
-    int rc = buf0 ? 0 : -1;
-    if (buf0) {
-        t0 = demo_now_ms();
-        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, lvl0, 0);
-        glReadPixels(0, 0, w, h, GL_RED, GL_FLOAT, buf0);
-        out->readback_ms = demo_now_ms() - t0;
-        size_t need = SWARP_MINDEPTH_SCRATCH(w, h), got = 0;
-        float* scratch = malloc(sizeof(float) * need);
-        swarp_status s1 = SWARP_ERR_NULL_POINTER, s2;
-        t0 = demo_now_ms();
-        if (scratch)
-            s1 = swarp_mindepth_pyramid(buf0, (uint32_t)w, (uint32_t)h, (size_t)w, scratch, need,
-                                        &got, &out->cpu_pyramid_min);
-        out->cpu_pyramid_ms = demo_now_ms() - t0;
-        t0 = demo_now_ms();
-        s2 = swarp_mindepth_direct(buf0, (uint32_t)w, (uint32_t)h, (size_t)w, &out->cpu_direct_min);
-        out->cpu_direct_ms = demo_now_ms() - t0;
-        if (swarp_status_is_error(s1) || swarp_status_is_error(s2)) {
-            fprintf(stderr, "demo: swarp_mindepth_*: %s / %s\n", swarp_status_string(s1),
-                    swarp_status_string(s2));
-            rc = -1;
-        }
-        free(scratch);
-        free(buf0);
-    }
+    int rc = cpu_reductions(w, h, lvl0, out);
     out->gpu_min = gpu_min;
     swarp_status s3 = swarp_mindepth_near(v->cam.near, v->cam.far, out->gpu_min, NULL,
                                           &out->adjusted_near);

@@ -1,4 +1,4 @@
-/* plan.c -- the demo's default run asks the planner (swarp_plan, issue 8)
+/* plan.c -- the demo's default run asks the planner (swarp_plan)
  * what the scene calls for and renders only that: see plan.h. */
 #include "plan.h"
 
@@ -15,30 +15,39 @@ static double filter_width(demo_filter f) {
     }
 }
 
+/* The needs of the view and the budget, in the planner's terms. */
+static void plan_request(const swarp_camera* cam, const swarp_light* light, const swarp_aabb* box,
+                         int screen_w, int screen_h, int map_res, int max_passes,
+                         int camera_moves, demo_filter wanted, const swarp_plane* planes,
+                         int plane_count, swarp_scene_needs* needs, swarp_budget* budget) {
+    memset(needs, 0, sizeof *needs);
+    needs->camera = *cam;
+    needs->light = *light;
+    needs->scene_box = *box;
+    needs->screen_width = (uint32_t)screen_w;
+    needs->screen_height = (uint32_t)screen_h;
+    needs->camera_moves = camera_moves ? 1u : 0u;
+    needs->soft_shadows = wanted != DEMO_FILTER_NONE;
+    needs->soft_width = needs->soft_shadows ? filter_width(wanted) : 0;
+    /* the demo's depth pass pancakes casters only for the lixel and cube
+     * maps; the planner keeps clamping out of warped maps anyway */
+    needs->allow_depth_clamp = 0;
+    if (plane_count > SWARP_PLAN_MAX_PLANES) plane_count = SWARP_PLAN_MAX_PLANES;
+    for (int i = 0; i < plane_count; ++i) needs->planes[i] = planes[i];
+    needs->plane_count = (uint32_t)(plane_count > 0 ? plane_count : 0);
+    memset(budget, 0, sizeof *budget); /* max_error 0: the default 1 pixel per texel */
+    budget->map_resolution = (uint32_t)map_res;
+    budget->max_passes = (uint32_t)max_passes;
+}
+
 int demo_plan_make(const swarp_camera* cam, const swarp_light* light, const swarp_aabb* box,
                    int screen_w, int screen_h, int map_res, int max_passes, int camera_moves,
                    demo_filter wanted, const swarp_plane* planes, int plane_count,
                    demo_plan* out) {
     swarp_scene_needs needs;
-    memset(&needs, 0, sizeof needs);
-    needs.camera = *cam;
-    needs.light = *light;
-    needs.scene_box = *box;
-    needs.screen_width = (uint32_t)screen_w;
-    needs.screen_height = (uint32_t)screen_h;
-    needs.camera_moves = camera_moves ? 1u : 0u;
-    needs.soft_shadows = wanted != DEMO_FILTER_NONE;
-    needs.soft_width = needs.soft_shadows ? filter_width(wanted) : 0;
-    /* the demo's depth pass pancakes casters only for the lixel and cube
-     * maps; the planner keeps clamping out of warped maps anyway */
-    needs.allow_depth_clamp = 0;
-    if (plane_count > SWARP_PLAN_MAX_PLANES) plane_count = SWARP_PLAN_MAX_PLANES;
-    for (int i = 0; i < plane_count; ++i) needs.planes[i] = planes[i];
-    needs.plane_count = (uint32_t)(plane_count > 0 ? plane_count : 0);
     swarp_budget budget;
-    memset(&budget, 0, sizeof budget); /* max_error 0: the default 1 pixel per texel */
-    budget.map_resolution = (uint32_t)map_res;
-    budget.max_passes = (uint32_t)max_passes;
+    plan_request(cam, light, box, screen_w, screen_h, map_res, max_passes, camera_moves, wanted,
+                 planes, plane_count, &needs, &budget);
 
     demo_plan p;
     memset(&p, 0, sizeof p);

@@ -1,4 +1,4 @@
-/* plan.h -- the demo's use of the planner (swarp_plan, issue 8): the needs
+/* plan.h -- the demo's use of the planner (swarp_plan): the needs
  * of the view it renders, the plan with its reasons, and the plan mapped
  * onto the demo's own technique / scheme / filter options. */
 #ifndef DEMO_PLAN_H

@@ -205,6 +205,201 @@ static const char* matrix_source(demo_technique t) {
     return "library (swarp_setup)";
 }
 
+/* The maps of lixel and cube-face configurations each cover the whole
+ * adjusted range [near, far] (no eye-depth splits), are picked per fragment
+ * by `select`, clamp depth for casters in front of the near plane, and lie
+ * outside Lloyd's model of a warped map along the view. */
+static void whole_view_maps(demo_shadow* sh, int count, demo_select select, swarp_status status,
+                            const char* source) {
+    sh->count = count;
+    sh->split[0] = sh->near;
+    sh->split[1] = sh->far;
+    sh->select = select;
+    sh->depth_clamp = 1;
+    sh->model_applies = 0;
+    sh->status = status;
+    sh->source = source;
+}
+
+/* [LIXEL] §3 for the room corner: a map for the floor, one for the wall,
+ * and a conventional fallback map for everything else.  sh holds the
+ * defaults of demo_shadow_setup. */
+static int setup_lixel(const swarp_camera* cam, const swarp_light* light, const swarp_aabb* scene,
+                       const demo_shadow_request* req, demo_shadow* sh) {
+    swarp_status st = SWARP_OK;
+    demo_room room;
+    demo_scene_room(&room);
+    swarp_mat4 M_v;
+    viewer_matrix(cam, &M_v);
+    int n = 0;
+    const swarp_plane* planes[2] = {&room.floor, &room.wall};
+    const swarp_vec3* rects[2] = {room.floor_rect, room.wall_rect};
+    for (int k = 0; k < 2; ++k) {
+        swarp_status sk;
+        if (lixel_map(&M_v, req, light, planes[k], rects[k], &sh->light[n], sh->viewport[n], &sk) == 0)
+            ++n;
+        if (sk != SWARP_OK && st == SWARP_OK) st = sk; /* first note or error */
+    }
+    swarp_status sf;
+    if (conventional_map(cam, light, scene, req, DEMO_TECH_UNIFORM, &sh->light[n],
+                         &sh->n_prime[n], &sh->near, &sh->far, NULL, NULL, &sf))
+        return -1;
+    whole_view_maps(sh, n + 1, DEMO_SELECT_LIXEL, st != SWARP_OK ? st : sf,
+                    n == 2 ? "library (swarp_lixel_* + uniform fallback)"
+                           : "library (swarp_lixel_*: a plane failed; + uniform fallback)");
+    return 0;
+}
+
+/* [KOZ] §14.2.2: the adjusted view range from the setup, the camera's
+ * post-projective space over it, the light there, and one map per
+ * back-facing face of the unit cube. */
+static int setup_cube(const swarp_camera* cam, const swarp_light* light, const swarp_aabb* scene,
+                      const demo_shadow_request* req, demo_shadow* sh) {
+    swarp_status st = SWARP_OK;
+    double nprime;
+    if (conventional_map(cam, light, scene, req, DEMO_TECH_UNIFORM, &sh->light[0],
+                         &nprime, &sh->near, &sh->far, sh->body, &sh->body_count, &st))
+        return -1;
+    swarp_camera c2 = *cam;
+    c2.near = sh->near;
+    c2.far = sh->far;
+    viewer_matrix(&c2, &sh->cube_camera);
+    swarp_vec3 lp = light->type == SWARP_LIGHT_POINT ? light->position : light->direction;
+    swarp_vec4 hl;
+    swarp_mat4_transform(&sh->cube_camera, &lp, &hl);
+    if (light->type != SWARP_LIGHT_POINT) {
+        /* (-d, 0): C (-d, 0) = -(C (d, 1) - C (0, 1)) */
+        swarp_vec3 zero = {0, 0, 0};
+        swarp_vec4 h0;
+        swarp_mat4_transform(&sh->cube_camera, &zero, &h0);
+        hl = (swarp_vec4){-(hl.x - h0.x), -(hl.y - h0.y), -(hl.z - h0.z), -(hl.w - h0.w)};
+    }
+    sh->cube_light = hl;
+    swarp_cube_face faces[SWARP_CUBE_MAX_FACES];
+    size_t nf = 0;
+    swarp_status sc = swarp_cube_faces(&hl, NULL, faces, SWARP_CUBE_MAX_FACES, &nf);
+    if (swarp_status_is_error(sc)) {
+        fprintf(stderr, "demo: swarp_cube_faces: %s\n", swarp_status_string(sc));
+        return -1;
+    }
+    for (size_t i = 0; i < nf; ++i) {
+        swarp_mat4_mul(&faces[i].view_proj, &sh->cube_camera, &sh->light[i]);
+        sh->cube_normal[i] = faces[i].normal;
+        sh->cube_distance[i] = faces[i].distance;
+        sh->cube_face[i] = faces[i].face;
+        sh->n_prime[i] = NAN;
+    }
+    whole_view_maps(sh, (int)nf, DEMO_SELECT_CUBE, sc != SWARP_OK ? sc : st,
+                    "library (swarp_setup's range + swarp_cube_faces)");
+    return 0;
+}
+
+/* [RHS] §3.5 exact solution per split: the split frustum's minimal
+ * sphere, texel-snapped.  The splits divide the CAMERA's fixed [near, far]:
+ * swarp_cascade_setup would split the adjusted range of §3.3.1, which moves
+ * with the camera, so the spheres and their texels would change size every
+ * frame (measured: 0.4 texel of drift per frame against 0.0000 here; see
+ * --frames).  *st: the first note. */
+static int setup_stable(const swarp_camera* cam, const swarp_light* light,
+                        const swarp_aabb* scene, const demo_shadow_request* req, demo_shadow* sh,
+                        swarp_status* st) {
+    sh->near = cam->near;
+    sh->far = cam->far;
+    size_t n = 0;
+    swarp_status ss;
+    if (req->scheme == DEMO_SCHEME_UNIFORM)
+        ss = swarp_split_uniform(sh->near, sh->far, (uint32_t)sh->count, sh->split,
+                                 DEMO_MAX_SPLITS + 1, &n);
+    else if (req->scheme == DEMO_SCHEME_LOG)
+        ss = swarp_split_log(sh->near, sh->far, (uint32_t)sh->count, sh->split, DEMO_MAX_SPLITS + 1,
+                             &n);
+    else if (req->scheme == DEMO_SCHEME_PSEUDO)
+        ss = swarp_split_pseudo(sh->near, sh->far, sh->near + req->scheme_np * (sh->far - sh->near),
+                                sh->far - req->scheme_fp * (sh->far - sh->near), req->scheme_lambda,
+                                (uint32_t)sh->count, sh->split, DEMO_MAX_SPLITS + 1, &n);
+    else
+        ss = swarp_split_practical(sh->near, sh->far, req->scheme_lambda, (uint32_t)sh->count,
+                                   sh->split, DEMO_MAX_SPLITS + 1, &n);
+    if (swarp_status_is_error(ss) || n != (size_t)sh->count + 1) {
+        fprintf(stderr, "demo: split scheme: %s\n", swarp_status_string(ss));
+        return -1;
+    }
+    for (int i = 0; i < sh->count; ++i) {
+        swarp_stabilize_options so;
+        memset(&so, 0, sizeof so);
+        so.mode = SWARP_STABILIZE_SPHERE;
+        swarp_status si = swarp_stabilize_directional(cam, sh->split[i], sh->split[i + 1],
+                                                      &light->direction, NULL, 0, scene,
+                                                      (uint32_t)req->map_res, &so,
+                                                      &sh->light[i], NULL);
+        if (swarp_status_is_error(si)) {
+            fprintf(stderr, "demo: swarp_stabilize_directional: %s\n", swarp_status_string(si));
+            return -1;
+        }
+        sh->n_prime[i] = INFINITY;
+        if (si != SWARP_OK && *st == SWARP_OK) *st = si;
+    }
+    return 0;
+}
+
+/* [RHS] §3.3-3.4 in one library call: adjusted range, split distances,
+ * per split B_i and its matrix.  *st: the call's note. */
+static int setup_cascade(const swarp_camera* cam, const swarp_light* light,
+                         const swarp_aabb* scene, const demo_shadow_request* req,
+                         demo_technique t, demo_shadow* sh, swarp_status* st) {
+    swarp_cascade_options co;
+    memset(&co, 0, sizeof co);
+    setup_options(req, t == DEMO_TECH_PSSM_LISPSM ? DEMO_TECH_LISPSM : DEMO_TECH_UNIFORM,
+                  &co.setup);
+    co.split.count = (uint32_t)sh->count;
+    co.split.scheme = req->scheme == DEMO_SCHEME_UNIFORM ? SWARP_SCHEME_UNIFORM
+                      : req->scheme == DEMO_SCHEME_LOG   ? SWARP_SCHEME_LOG
+                      : req->scheme == DEMO_SCHEME_PSEUDO ? SWARP_SCHEME_PSEUDO
+                                                          : SWARP_SCHEME_PRACTICAL;
+    co.split.lambda = req->scheme_lambda;
+    co.split.pseudo_near = req->scheme_np;
+    co.split.pseudo_far = req->scheme_fp;
+    swarp_cascade_result cr;
+    swarp_cascade_split cs[SWARP_CASCADE_MAX_SPLITS];
+    size_t n = 0;
+    swarp_status sc = swarp_cascade_setup(cam, light, scene, &co, &cr, cs,
+                                          SWARP_CASCADE_MAX_SPLITS, &n);
+    if (swarp_status_is_error(sc) || n != (size_t)sh->count) {
+        fprintf(stderr, "demo: swarp_cascade_setup (%s): %s\n", demo_technique_name(t),
+                swarp_status_string(sc));
+        return -1;
+    }
+    sh->near = cr.view_near;
+    sh->far = cr.view_far;
+    for (int i = 0; i <= sh->count; ++i) sh->split[i] = cr.splits[i];
+    for (int i = 0; i < sh->count; ++i) {
+        sh->light[i] = cs[i].matrix;
+        sh->n_prime[i] = cs[i].n_eye;
+    }
+    if (sc != SWARP_OK) *st = sc;
+    return 0;
+}
+
+/* The predicted worst error of the whole configuration [RHS] (2.3)-(2.8),
+ * piecewise for splits; left NAN when the model cannot say. */
+static void predict_max_error(const swarp_camera* cam, const demo_shadow_request* req,
+                              demo_shadow* sh) {
+    swarp_error_config cfg;
+    memset(&cfg, 0, sizeof cfg);
+    cfg.near = sh->near;
+    cfg.far = sh->far;
+    cfg.theta = 0.5 * cam->fovy;
+    cfg.res_ix = req->screen_w;
+    cfg.res_iy = req->screen_h;
+    cfg.res_s = cfg.res_t = req->map_res;
+    double mx, mz;
+    if (!swarp_status_is_error(swarp_error_split_max(&cfg, sh->split, sh->n_prime,
+                                                     (size_t)sh->count, NULL, NULL, &mx, &mz))) {
+        sh->predicted_max_mx = mx;
+        sh->predicted_max_mz = mz;
+    }
+}
+
 int demo_shadow_setup(const swarp_camera* cam, const swarp_light* light,
                       const swarp_aabb* scene, const demo_shadow_request* req,
                       demo_shadow* out) {
@@ -221,83 +416,10 @@ int demo_shadow_setup(const swarp_camera* cam, const swarp_light* light,
     for (int i = 0; i < DEMO_MAX_SPLITS; ++i) sh.viewport[i][0] = sh.viewport[i][1] = req->map_res;
     swarp_status st = SWARP_OK;
     demo_technique t = req->technique;
-    if (t == DEMO_TECH_LIXEL) {
-        /* [LIXEL] §3: a map for the floor, one for the wall, and a
-         * conventional fallback map for everything else */
-        demo_room room;
-        demo_scene_room(&room);
-        swarp_mat4 M_v;
-        viewer_matrix(cam, &M_v);
-        int n = 0;
-        const swarp_plane* planes[2] = {&room.floor, &room.wall};
-        const swarp_vec3* rects[2] = {room.floor_rect, room.wall_rect};
-        for (int k = 0; k < 2; ++k) {
-            swarp_status sk;
-            if (lixel_map(&M_v, req, light, planes[k], rects[k], &sh.light[n], sh.viewport[n], &sk) == 0)
-                ++n;
-            if (sk != SWARP_OK && st == SWARP_OK) st = sk; /* first note or error */
-        }
-        swarp_status sf;
-        if (conventional_map(cam, light, scene, req, DEMO_TECH_UNIFORM, &sh.light[n],
-                             &sh.n_prime[n], &sh.near, &sh.far, NULL, NULL, &sf))
-            return -1;
-        sh.count = n + 1;
-        sh.split[0] = sh.near;
-        sh.split[1] = sh.far;
-        sh.select = DEMO_SELECT_LIXEL;
-        sh.depth_clamp = 1;
-        sh.model_applies = 0;
-        sh.status = st != SWARP_OK ? st : sf;
-        sh.source = n == 2 ? "library (swarp_lixel_* + uniform fallback)"
-                           : "library (swarp_lixel_*: a plane failed; + uniform fallback)";
-        *out = sh;
-        return 0;
-    }
-    if (t == DEMO_TECH_PSM_CUBE) {
-        /* [KOZ] §14.2.2: the adjusted view range from the setup, the
-         * camera's post-projective space over it, the light there, and one
-         * map per back-facing face of the unit cube */
-        double nprime;
-        if (conventional_map(cam, light, scene, req, DEMO_TECH_UNIFORM, &sh.light[0],
-                             &nprime, &sh.near, &sh.far, sh.body, &sh.body_count, &st))
-            return -1;
-        swarp_camera c2 = *cam;
-        c2.near = sh.near;
-        c2.far = sh.far;
-        viewer_matrix(&c2, &sh.cube_camera);
-        swarp_vec3 lp = light->type == SWARP_LIGHT_POINT ? light->position : light->direction;
-        swarp_vec4 hl;
-        swarp_mat4_transform(&sh.cube_camera, &lp, &hl);
-        if (light->type != SWARP_LIGHT_POINT) {
-            /* (-d, 0): C (-d, 0) = -(C (d, 1) - C (0, 1)) */
-            swarp_vec3 zero = {0, 0, 0};
-            swarp_vec4 h0;
-            swarp_mat4_transform(&sh.cube_camera, &zero, &h0);
-            hl = (swarp_vec4){-(hl.x - h0.x), -(hl.y - h0.y), -(hl.z - h0.z), -(hl.w - h0.w)};
-        }
-        sh.cube_light = hl;
-        swarp_cube_face faces[SWARP_CUBE_MAX_FACES];
-        size_t nf = 0;
-        swarp_status sc = swarp_cube_faces(&hl, NULL, faces, SWARP_CUBE_MAX_FACES, &nf);
-        if (swarp_status_is_error(sc)) {
-            fprintf(stderr, "demo: swarp_cube_faces: %s\n", swarp_status_string(sc));
-            return -1;
-        }
-        for (size_t i = 0; i < nf; ++i) {
-            swarp_mat4_mul(&faces[i].view_proj, &sh.cube_camera, &sh.light[i]);
-            sh.cube_normal[i] = faces[i].normal;
-            sh.cube_distance[i] = faces[i].distance;
-            sh.cube_face[i] = faces[i].face;
-            sh.n_prime[i] = NAN;
-        }
-        sh.count = (int)nf;
-        sh.split[0] = sh.near;
-        sh.split[1] = sh.far;
-        sh.select = DEMO_SELECT_CUBE;
-        sh.depth_clamp = 1;
-        sh.model_applies = 0;
-        sh.status = sc != SWARP_OK ? sc : st;
-        sh.source = "library (swarp_setup's range + swarp_cube_faces)";
+    if (t == DEMO_TECH_LIXEL || t == DEMO_TECH_PSM_CUBE) {
+        int e = t == DEMO_TECH_LIXEL ? setup_lixel(cam, light, scene, req, &sh)
+                                     : setup_cube(cam, light, scene, req, &sh);
+        if (e) return -1;
         *out = sh;
         return 0;
     }
@@ -305,81 +427,9 @@ int demo_shadow_setup(const swarp_camera* cam, const swarp_light* light,
     sh.count = pssm ? req->splits : 1;
     if (sh.count < 1 || sh.count > DEMO_MAX_SPLITS) return -1;
     if (t == DEMO_TECH_PSSM_STABLE) {
-        /* [RHS] §3.5 exact solution per split: the split frustum's minimal
-         * sphere, texel-snapped.  The splits divide the CAMERA's fixed
-         * [near, far]: swarp_cascade_setup would split the adjusted range
-         * of §3.3.1, which moves with the camera, so the spheres and their
-         * texels would change size every frame (measured: 0.4 texel of
-         * drift per frame against 0.0000 here; see --frames). */
-        sh.near = cam->near;
-        sh.far = cam->far;
-        size_t n = 0;
-        swarp_status ss;
-        if (req->scheme == DEMO_SCHEME_UNIFORM)
-            ss = swarp_split_uniform(sh.near, sh.far, (uint32_t)sh.count, sh.split,
-                                     DEMO_MAX_SPLITS + 1, &n);
-        else if (req->scheme == DEMO_SCHEME_LOG)
-            ss = swarp_split_log(sh.near, sh.far, (uint32_t)sh.count, sh.split, DEMO_MAX_SPLITS + 1,
-                                 &n);
-        else if (req->scheme == DEMO_SCHEME_PSEUDO)
-            ss = swarp_split_pseudo(sh.near, sh.far, sh.near + req->scheme_np * (sh.far - sh.near),
-                                    sh.far - req->scheme_fp * (sh.far - sh.near), req->scheme_lambda,
-                                    (uint32_t)sh.count, sh.split, DEMO_MAX_SPLITS + 1, &n);
-        else
-            ss = swarp_split_practical(sh.near, sh.far, req->scheme_lambda, (uint32_t)sh.count,
-                                       sh.split, DEMO_MAX_SPLITS + 1, &n);
-        if (swarp_status_is_error(ss) || n != (size_t)sh.count + 1) {
-            fprintf(stderr, "demo: split scheme: %s\n", swarp_status_string(ss));
-            return -1;
-        }
-        for (int i = 0; i < sh.count; ++i) {
-            swarp_stabilize_options so;
-            memset(&so, 0, sizeof so);
-            so.mode = SWARP_STABILIZE_SPHERE;
-            swarp_status si = swarp_stabilize_directional(cam, sh.split[i], sh.split[i + 1],
-                                                          &light->direction, NULL, 0, scene,
-                                                          (uint32_t)req->map_res, &so,
-                                                          &sh.light[i], NULL);
-            if (swarp_status_is_error(si)) {
-                fprintf(stderr, "demo: swarp_stabilize_directional: %s\n", swarp_status_string(si));
-                return -1;
-            }
-            sh.n_prime[i] = INFINITY;
-            if (si != SWARP_OK && st == SWARP_OK) st = si;
-        }
+        if (setup_stable(cam, light, scene, req, &sh, &st)) return -1;
     } else if (pssm) {
-        /* [RHS] §3.3-3.4 in one library call: adjusted range, split
-         * distances, per split B_i and its matrix */
-        swarp_cascade_options co;
-        memset(&co, 0, sizeof co);
-        setup_options(req, t == DEMO_TECH_PSSM_LISPSM ? DEMO_TECH_LISPSM : DEMO_TECH_UNIFORM,
-                      &co.setup);
-        co.split.count = (uint32_t)sh.count;
-        co.split.scheme = req->scheme == DEMO_SCHEME_UNIFORM ? SWARP_SCHEME_UNIFORM
-                          : req->scheme == DEMO_SCHEME_LOG   ? SWARP_SCHEME_LOG
-                          : req->scheme == DEMO_SCHEME_PSEUDO ? SWARP_SCHEME_PSEUDO
-                                                              : SWARP_SCHEME_PRACTICAL;
-        co.split.lambda = req->scheme_lambda;
-        co.split.pseudo_near = req->scheme_np;
-        co.split.pseudo_far = req->scheme_fp;
-        swarp_cascade_result cr;
-        swarp_cascade_split cs[SWARP_CASCADE_MAX_SPLITS];
-        size_t n = 0;
-        swarp_status sc = swarp_cascade_setup(cam, light, scene, &co, &cr, cs,
-                                              SWARP_CASCADE_MAX_SPLITS, &n);
-        if (swarp_status_is_error(sc) || n != (size_t)sh.count) {
-            fprintf(stderr, "demo: swarp_cascade_setup (%s): %s\n", demo_technique_name(t),
-                    swarp_status_string(sc));
-            return -1;
-        }
-        sh.near = cr.view_near;
-        sh.far = cr.view_far;
-        for (int i = 0; i <= sh.count; ++i) sh.split[i] = cr.splits[i];
-        for (int i = 0; i < sh.count; ++i) {
-            sh.light[i] = cs[i].matrix;
-            sh.n_prime[i] = cs[i].n_eye;
-        }
-        if (sc != SWARP_OK) st = sc;
+        if (setup_cascade(cam, light, scene, req, t, &sh, &st)) return -1;
     } else {
         /* one map over the view's adjusted range [RHS] §3.3.1 */
         if (conventional_map(cam, light, scene, req, t, &sh.light[0], &sh.n_prime[0], &sh.near,
@@ -388,24 +438,7 @@ int demo_shadow_setup(const swarp_camera* cam, const swarp_light* light,
         sh.split[0] = sh.near;
         sh.split[1] = sh.far;
     }
-    {
-        /* the predicted worst error of the whole configuration [RHS]
-         * (2.3)-(2.8), piecewise for splits */
-        swarp_error_config cfg;
-        memset(&cfg, 0, sizeof cfg);
-        cfg.near = sh.near;
-        cfg.far = sh.far;
-        cfg.theta = 0.5 * cam->fovy;
-        cfg.res_ix = req->screen_w;
-        cfg.res_iy = req->screen_h;
-        cfg.res_s = cfg.res_t = req->map_res;
-        double mx, mz;
-        if (!swarp_status_is_error(swarp_error_split_max(&cfg, sh.split, sh.n_prime,
-                                                         (size_t)sh.count, NULL, NULL, &mx, &mz))) {
-            sh.predicted_max_mx = mx;
-            sh.predicted_max_mz = mz;
-        }
-    }
+    predict_max_error(cam, req, &sh);
     sh.status = st;
     sh.source = matrix_source(t);
     *out = sh;

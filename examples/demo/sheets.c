@@ -1,4 +1,4 @@
-/* sheets.c -- the gallery's two comparison sheets of issue 10:
+/* sheets.c -- the gallery's two comparison sheets:
  *   blur_sheet.png          [KOZ] §14.3.2 projective blur (--filter projblur)
  *                           against PCF 3x3 on the same view, full and crop
  *   cube_sheet.png,         [KOZ] §14.2.2 PSM with cube-map faces (psm-cube)

@@ -4,6 +4,11 @@
 
 #include <stdio.h>
 
+/* swtool drives every stage, the experimental ones (follow, lixel, plan,
+ * cube, min depth) included */
+#ifndef SWARP_EXPERIMENTAL_API
+#define SWARP_EXPERIMENTAL_API 1
+#endif
 #include "shadowwarp.h"
 
 typedef struct sw_args {

@@ -14,8 +14,8 @@
  *
  * --out-dir writes DIR/accuracy-cost.md and DIR/plots/accuracy-cost.dat (and
  * accuracy-cost-front.dat, the Pareto fronts) for docs/plots/regen_accuracy_cost.sh.
- * Until the demo lands on main its measured columns read "n/a".
- * --clone-data F: the TSV of `demo --test bench-clone --bench-out F` (geometry
+ * Without the demo (no OSMesa) its measured columns read "n/a".
+ * --clone-data F: the TSV of `demo-check --test bench-clone --bench-out F` (geometry
  * cloning against K + 1 passes, [RHS] §3.3.6), folded in as a table shaped
  * like [RHS] Tables 7.1/7.2; a file holding "# unavailable<TAB>reason" instead
  * (no OSMesa context) gives the section with that reason and no numbers.
@@ -345,14 +345,14 @@ static void br_clone_section(FILE* md, const char* path) {
                 why[0] ? why : "the demo wrote no rows");
         return;
     }
-    fprintf(md, "`demo --test bench-clone` (docs/demo.md, \"One pass for all splits\"): PSSM(K) + LiSPSM on the demo's\n"
+    fprintf(md, "`demo-check --test bench-clone` (docs/demo.md, \"One pass for all splits\"): PSSM(K) + LiSPSM on the demo's\n"
                 "default view, %s pixels, %u² maps, %u triangles. The K + 1 pass version renders K shadow\n"
                 "passes and the main pass; geometry cloning ([RHS] §3.3.6, Listing A.1) renders all K maps in\n"
                 "one pass (a geometry shader emits each triangle into every split's layer and viewport) and\n"
                 "the main pass. Both variants of one K run in the same frame loop, alternating which goes\n"
                 "first; every number is the median over %u frames of glFinish-bracketed milliseconds, and\n"
                 "the ratios compare against the K + 1 pass row measured in the same run. The shadow masks\n"
-                "of both are identical bit for bit (`demo --test clone`). Shaped like [RHS] Tables 7.1/7.2\n"
+                "of both are identical bit for bit (`demo-check --test clone`). Shaped like [RHS] Tables 7.1/7.2\n"
                 "(which measured 90 fps for PSSM(4) + LiSPSM with K + 1 passes and 76 fps with cloning on\n"
                 "a GeForce 8800 GTX). Machine: %s.\n\n",
             size, map, tris, frames, machine);
@@ -522,9 +522,9 @@ int cmd_bench_report(sw_args* a) {
     FILE* dd = demo_data ? fopen(demo_data, "r") : NULL;
     if (dd) {
         fprintf(md, "## Measured in the demo\n\n"
-                    "`examples/demo` (on main) with `--camera measure` (horizontal view from 20 above the ground,\n"
+                    "`examples/demo` with `--camera measure` (horizontal view from 20 above the ground,\n"
                     "near 1, far 600), 1024x768, light at γ to the view in the view/up plane (γ = 150: behind\n"
-                    "the camera), filter pcf3; every technique the demo renders and measures on main (PSSM:\n"
+                    "the camera), filter pcf3; every technique the demo renders and measures (PSSM:\n"
                     "practical λ = 0.5), with the matrices the demo gets from the library (the geometry stage's\n"
                     "focused setup). meas m_z: the largest m_z measured from the\n"
                     "read-back along the view vector on the ground; pred m_z: the core's overhead-light\n"

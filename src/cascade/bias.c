@@ -15,6 +15,9 @@ _Static_assert(sizeof(swarp_bias_map) == sizeof(swarp_mat4) + 2 * sizeof(double)
 /* Largest tan of the receiver slope used by the slope-scaled bias: ~84
  * degrees; beyond, the bias would grow without bound (grazing receivers). */
 #define SW_BIAS_MAX_SLOPE 10.0
+/* A receiver plane whose two tangents image parallel to within this angle
+ * (rad, relative |det| in texel space) is edge-on (swarp_bias_receiver_plane). */
+#define SW_BIAS_EDGE_ON_EPS 1e-12
 
 static swarp_status sw_map_check(const swarp_bias_map* map) {
     if (!sw_reserved_zero(map->_reserved, 4) || map->_reserved0 != 0)
@@ -68,9 +71,9 @@ static swarp_status sw_texel_size(const swarp_bias_map* map, swarp_vec3 p, doubl
      * the homogeneous factor, b = column k of M^-1 (M^-1 h = (p, 1)), so
      *   p' - p = h_w d (b_xyz - p b_w) / (1 + h_w d b_w)
      * exactly: the step itself, not the difference of two points of
-     * magnitude |p| (a far point's texel lost |p| / L_texel ulps to that
-     * cancellation, its last digits set by the caller's rounding mode:
-     * robust_fenv 30000, swarp_bias_texel_size cases 26894, 29298). */
+     * magnitude |p| (a far point's texel would lose |p| / L_texel ulps to
+     * that cancellation, its last digits set by the caller's rounding
+     * mode). */
     const double step[2] = {2.0 / map->res_s, 2.0 / map->res_t};
     double L[2];
     for (int k = 0; k < 2; ++k) {
@@ -186,9 +189,9 @@ SWARP_API swarp_status swarp_bias_normal_offset(const swarp_bias_map* map, const
     swarp_status st = sw_bias_prep_normal(map, light, p, normal, &fr);
     if (st != SWARP_OK) return st;
     /* 1 - N.L as |N - L|^2 / 2 (both unit): N = L (a normal facing the
-     * light) gives 0 exactly in every rounding mode, where 1 - N.L left
-     * 1 - |N|^2, an ulp or two whose sign the caller's rounding mode chose,
-     * times k L_texel (robust_fenv: k = 1e95 moved p' by 1e79).  Its error
+     * light) gives 0 exactly in every rounding mode, where 1 - N.L leaves
+     * 1 - |N|^2, an ulp or two whose sign the caller's rounding mode
+     * chooses, times k L_texel (k = 1e95 would move p' by 1e79).  Its error
      * is eps |N - L| instead of eps: better near N = L, the same elsewhere. */
     double one_minus_ndl = 1.0;
     if (!fr.back) {
@@ -210,9 +213,9 @@ SWARP_API swarp_status swarp_bias_normal_offset(const swarp_bias_map* map, const
  * the secant form of the ratio derivative below (sw_ndc_derivative): a
  * small t gives a small difference with the relative accuracy of its
  * factors, where subtracting the two depths (each O(1), rounded to eps)
- * left a result of 1e-13 whose leading digits the caller's rounding mode
- * chose (robust_fenv 30000, swarp_bias_slope_scaled case 13490: 6.4e-14 or
- * 1.1e-13).  BEHIND_PROJECTION when the moved point's w is not positive. */
+ * leaves a difference of 1e-13 whose leading digits the caller's rounding
+ * mode chooses (6.4e-14 or 1.1e-13 for the same input).
+ * BEHIND_PROJECTION when the moved point's w is not positive. */
 static swarp_status sw_depth_step(const swarp_bias_map* map, swarp_vec3 p, swarp_vec3 L, double t,
                                   double* out) {
     swarp_vec4 h;
@@ -241,8 +244,8 @@ SWARP_API swarp_status swarp_bias_slope_scaled(const swarp_bias_map* map, const 
     if (st != SWARP_OK) return st;
     /* tan of the angle between N and L: depth step per unit of lateral move.
      * sin from |N x L|, not sqrt(1 - (N.L)^2): that loses half the digits
-     * when N is almost parallel to L (an error of ~1e-8 in tan that moved
-     * with the rounding mode; found by the fenv sweep) */
+     * when N is almost parallel to L (an error of ~1e-8 in tan that moves
+     * with the rounding mode) */
     const double ndl = fr.ndl, sin_nl = sw_len(sw_cross(fr.N, fr.L));
     double slope = SW_BIAS_MAX_SLOPE;
     if (ndl * SW_BIAS_MAX_SLOPE > sin_nl) slope = sin_nl / ndl;
@@ -258,8 +261,8 @@ SWARP_API swarp_status swarp_bias_slope_scaled(const swarp_bias_map* map, const 
 /* Exact derivative of NDC (x, y, z)/w along a world direction T at p, in
  * the ratio form d(x/w) = (dx - (x/w) dw)/w, h = M p, dh = M T.  Not
  * dx/w - x dw/w^2: for a far point (|w| > 1e154) 1/w^2 underflows to 0 and
- * the second term vanishes, leaving dx/w alone (found by the hard-case
- * sweep: a depth derivative of 1e-300 where it is 0). */
+ * the second term vanishes, leaving dx/w alone (a depth derivative of
+ * 1e-300 where it is 0). */
 static void sw_ndc_derivative(const swarp_mat4* M, const swarp_vec4* h, swarp_vec3 T, double out[3]) {
     swarp_vec4 t4 = {T.x, T.y, T.z, 0.0};
     swarp_vec4 g = sw_xform4(M, t4);
@@ -359,7 +362,7 @@ SWARP_API swarp_status swarp_bias_receiver_plane(const swarp_bias_map* map, cons
     const double scale = (fabs(a[0][0]) + fabs(a[0][1])) * (fabs(a[1][0]) + fabs(a[1][1]));
     const double det_err = fabs(a[0][0]) * ea[1][1] + ea[0][0] * fabs(a[1][1]) + fabs(a[1][0]) * ea[0][1] +
                            ea[1][0] * fabs(a[0][1]) + 2.0 * DBL_EPSILON * (fabs(p0) + fabs(p1));
-    if (!(fabs(det) > 1e-12 * scale) || !(fabs(det) > 2.0 * det_err)) return SWARP_ERR_DEGENERATE;
+    if (!(fabs(det) > SW_BIAS_EDGE_ON_EPS * scale) || !(fabs(det) > 2.0 * det_err)) return SWARP_ERR_DEGENERATE;
     /* Cramer in the scaled texel space, then back: d = ws u_z per unit of
      * the row, texels = (res_max / 2) a, so g = 2 ws (...) / (det res_max). */
     const double ws = sw_window_scale(map->depth);

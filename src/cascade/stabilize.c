@@ -21,7 +21,7 @@ _Static_assert(sizeof(swarp_stabilize_report) == 10 * sizeof(double) + 8 + 16,
 static void sw_min_sphere(const sw_cam_frame* fr, double n, double f, swarp_vec3* c,
                           double* r, double* r_centroid) {
     /* k = tan_half sqrt(1 + aspect^2) and f k as hypots: aspect ~ 1e167 or
-     * DBL_MAX overflowed k^2 although the sphere (radius ~ f k) is
+     * DBL_MAX overflows k^2 although the sphere (radius ~ f k) is
      * representable for a small enough f.  For k >= 1, (n + f)(1 + k^2)/2 >= f:
      * the clamp below applies without forming k^2. */
     const double t = fr->tan_half, a = fr->aspect;
@@ -31,17 +31,17 @@ static void sw_min_sphere(const sw_cam_frame* fr, double n, double f, swarp_vec3
     const double fk = sw_finite(k) ? f * k : hypot(f * t, (f * t) * a);
     /* z0 = (n + f)(1 + k^2)/2 clamped to f, through its distance to the far
      * plane f - z0 = (f - n)/2 - (n + f) k^2/2, formed from f - n (exact for
-     * n, f within a factor 2): with n, f one ulp apart the rounded z0 equals
-     * f and gave a radius 0 */
+     * n, f within a factor 2): with n, f one ulp apart the rounded z0 would
+     * equal f and give a radius 0 */
     double d_far = k < 1.0 ? 0.5 * (f - n) - 0.5 * (n + f) * (k * k) : 0.0;
     if (!(d_far > 0.0)) d_far = 0.0;
     double z0 = f - d_far;
     *c = sw_add(fr->eye, sw_scale(fr->f, z0));
     *r = hypot(d_far, fk);
     /* f > n, so the exact radius is > 0; for n, f a few subnormal ulps
-     * apart it is below half the smallest subnormal and rounded to 0 (found
-     * by the hard-case sweep): a point, not an enclosing sphere.  Rounded up
-     * instead, to the smallest positive double. */
+     * apart it is below half the smallest subnormal and rounds to 0: a
+     * point, not an enclosing sphere.  Rounded up instead, to the smallest
+     * positive double. */
     if (!(*r > 0.0)) *r = DBL_TRUE_MIN;
     /* Centroid of the 8 corners is on the axis at (n + f)/2; the far
      * corners are the farther ones.  Never below the minimal radius (it is
@@ -78,13 +78,18 @@ SWARP_API swarp_status swarp_stabilize_sphere(const swarp_camera* cam, double n_
     return SWARP_OK;
 }
 
+/* |d.y| above this (the light within ~8 degrees of vertical): the helper
+ * axis of sw_light_basis is world x, not world y, which would be nearly
+ * parallel to d. */
+#define SW_STABILIZE_VERTICAL 0.99
+
 /* Light basis from the light direction alone: forward d, right u, up v,
  * like a look-at with a fixed helper axis (world y, or world x when the light
- * is within ~8 degrees of vertical: |d.y| > 0.99). */
+ * is near vertical). */
 static int sw_light_basis(const swarp_vec3* light_dir, swarp_vec3* u, swarp_vec3* v,
                           swarp_vec3* d) {
     if (!sw_normalize(*light_dir, d)) return 0;
-    swarp_vec3 helper = fabs(d->y) > 0.99 ? sw_v3(1, 0, 0) : sw_v3(0, 1, 0);
+    swarp_vec3 helper = fabs(d->y) > SW_STABILIZE_VERTICAL ? sw_v3(1, 0, 0) : sw_v3(0, 1, 0);
     if (!sw_normalize(sw_cross(*d, helper), u)) return 0;
     *v = sw_cross(*u, *d);
     return 1;
@@ -112,6 +117,9 @@ SWARP_API swarp_status swarp_stabilize_light_view(const swarp_vec3* light_dir, s
  * h >= (e/2) res/(res - 1). */
 static double sw_padded_half(double e, double res) { return 0.5 * e * res / (res - 1.0); }
 
+/* Bits of the binade kept by sw_round_up_coarse. */
+#define SW_STABILIZE_COARSE_BITS 20
+
 /* Round up to a multiple of 2^-20 of the value's binade: the exact
  * solution's size then stays bit-identical when the split range wobbles by a
  * few ulps (e.g. an adjusted near/far recomputed each frame), at a cost of
@@ -119,7 +127,7 @@ static double sw_padded_half(double e, double res) { return 0.5 * e * res / (res
 static double sw_round_up_coarse(double h) {
     int e;
     (void)frexp(h, &e);
-    const double step = ldexp(1.0, e - 20);
+    const double step = ldexp(1.0, e - SW_STABILIZE_COARSE_BITS);
     return ceil(h / step) * step;
 }
 
@@ -133,6 +141,168 @@ static double sw_quantise(double size, double step, uint32_t* level) {
     return k * step;
 }
 
+/* ZZB09's empirical number of scale levels, [RHS] §3.5. */
+#define SW_STABILIZE_DEFAULT_LEVELS 64
+
+/* Checks the options and resolves their defaults (mode NONE, 64 levels). */
+static swarp_status sw_stabilize_options_resolve(const swarp_stabilize_options* opt,
+                                                 swarp_stabilize_options* o) {
+    memset(o, 0, sizeof *o);
+    if (opt) *o = *opt;
+    if (!sw_reserved_zero(o->_reserved, 4) || o->_reserved0 != 0) return SWARP_ERR_RESERVED_NONZERO;
+    if (o->mode == SWARP_STABILIZE_DEFAULT) o->mode = SWARP_STABILIZE_NONE;
+    if (o->mode != SWARP_STABILIZE_NONE && o->mode != SWARP_STABILIZE_SPHERE &&
+        o->mode != SWARP_STABILIZE_LEVELS)
+        return SWARP_ERR_UNKNOWN_ENUM;
+    if (!sw_depth_range_ok(o->depth)) return SWARP_ERR_UNKNOWN_ENUM;
+    if (o->levels == 0) o->levels = SW_STABILIZE_DEFAULT_LEVELS;
+    if (!sw_finite3(&o->origin) || !sw_finite(o->level_max_size)) return SWARP_ERR_NON_FINITE;
+    if (o->level_max_size < 0.0) return SWARP_ERR_OUT_OF_RANGE;
+    return SWARP_OK;
+}
+
+/* Checks the camera, split range, light, resolution, body and scene box, in
+ * that order; the body is needed by every mode but SPHERE. */
+static swarp_status sw_stabilize_check(const swarp_camera* cam, double n_i, double f_i,
+                                       const swarp_vec3* light_dir, const swarp_vec3* body_points,
+                                       size_t body_count, const swarp_aabb* scene, uint32_t res,
+                                       swarp_stabilize_mode mode, sw_cam_frame* fr) {
+    swarp_status st = sw_frame_and_range(cam, n_i, f_i, fr);
+    if (st != SWARP_OK) return st;
+    if (!sw_finite3(light_dir)) return SWARP_ERR_NON_FINITE;
+    if (res < 2) return SWARP_ERR_RESOLUTION;
+    const int need_body = (mode != SWARP_STABILIZE_SPHERE);
+    if (need_body && (!body_points || body_count == 0)) return SWARP_ERR_NULL_POINTER;
+    if (body_points)
+        for (size_t i = 0; i < body_count; ++i)
+            if (!sw_finite3(&body_points[i])) return SWARP_ERR_NON_FINITE;
+    if (scene && (!sw_finite3(&scene->min) || !sw_finite3(&scene->max))) return SWARP_ERR_NON_FINITE;
+    if (scene && (scene->min.x > scene->max.x || scene->min.y > scene->max.y ||
+                  scene->min.z > scene->max.z))
+        return SWARP_ERR_OUT_OF_RANGE;
+    return SWARP_OK;
+}
+
+/* The map in light space relative to the origin O: centre (cx, cy),
+ * half-widths (hx, hy), depth interval [t_min, t_max] along the light;
+ * x = u.(p - O), y = v.(p - O), t = d.(p - O). */
+typedef struct sw_stab_map {
+    swarp_vec3 u, v, d;
+    double cx, cy, hx, hy, t_min, t_max;
+} sw_stab_map;
+
+/* [RHS] §3.5 exact solution: the minimal sphere's bounding square, its size
+ * padded for the half-texel offset and rounded to a coarse constant. */
+static void sw_stabilize_sphere_map(const swarp_stabilize_report* rep, swarp_vec3 O, double dres,
+                                    sw_stab_map* s) {
+    const swarp_vec3 c = sw_sub(rep->sphere_center, O);
+    s->cx = sw_dot(c, s->u);
+    s->cy = sw_dot(c, s->v);
+    const double tc = sw_dot(c, s->d);
+    s->hx = s->hy = sw_round_up_coarse(sw_padded_half(2.0 * rep->sphere_radius, dres));
+    s->t_min = tc - rep->sphere_radius;
+    s->t_max = tc + rep->sphere_radius;
+}
+
+/* The body's light-space bounds; unstabilised (NONE) the map fits them,
+ * with LEVELS [RHS] §3.5's approximate solution quantises each padded size
+ * up to a whole number of steps (the reference size / levels).  Returns
+ * DEGENERATE for a body without extent, INFO_LEVEL_ABOVE_RANGE when a size
+ * needs more levels than asked for. */
+static swarp_status sw_stabilize_body_map(const swarp_vec3* body_points, size_t body_count,
+                                          const swarp_stabilize_options* o, double dres,
+                                          swarp_stabilize_report* rep, sw_stab_map* s) {
+    double mn[3] = {INFINITY, INFINITY, INFINITY}, mx[3] = {-INFINITY, -INFINITY, -INFINITY};
+    for (size_t i = 0; i < body_count; ++i) {
+        const swarp_vec3 q = sw_sub(body_points[i], o->origin);
+        const double c3[3] = {sw_dot(q, s->u), sw_dot(q, s->v), sw_dot(q, s->d)};
+        for (int k = 0; k < 3; ++k) {
+            if (c3[k] < mn[k]) mn[k] = c3[k];
+            if (c3[k] > mx[k]) mx[k] = c3[k];
+        }
+    }
+    s->cx = 0.5 * (mn[0] + mx[0]);
+    s->cy = 0.5 * (mn[1] + mx[1]);
+    s->t_min = mn[2];
+    s->t_max = mx[2];
+    const double ex = mx[0] - mn[0], ey = mx[1] - mn[1];
+    if (o->mode == SWARP_STABILIZE_NONE) {
+        if (!(ex > 0.0) || !(ey > 0.0)) return SWARP_ERR_DEGENERATE;
+        s->hx = 0.5 * ex;
+        s->hy = 0.5 * ey;
+        return SWARP_OK;
+    }
+    const double ref = o->level_max_size > 0.0 ? o->level_max_size : 2.0 * rep->sphere_radius;
+    const double step = ref / (double)o->levels;
+    s->hx = 0.5 * sw_quantise(2.0 * sw_padded_half(ex, dres), step, &rep->level_x);
+    s->hy = 0.5 * sw_quantise(2.0 * sw_padded_half(ey, dres), step, &rep->level_y);
+    if (rep->level_x > o->levels || rep->level_y > o->levels) return SWARP_INFO_LEVEL_ABOVE_RANGE;
+    return SWARP_OK;
+}
+
+/* The depth interval: extended toward the light to the scene box (casters
+ * in front of the split), and opened when the body is flat across the
+ * light; *dt = t_max - t_min and *t_sum = t_max + t_min. */
+static void sw_stabilize_depth(const swarp_aabb* scene, swarp_vec3 O, double texel, sw_stab_map* s,
+                               double* dt_out, double* t_sum_out) {
+    if (scene)
+        for (int k = 0; k < 8; ++k) {
+            const swarp_vec3 q = sw_v3(k & 1 ? scene->max.x : scene->min.x,
+                                       k & 2 ? scene->max.y : scene->min.y,
+                                       k & 4 ? scene->max.z : scene->min.z);
+            const double t = sw_dot(sw_sub(q, O), s->d);
+            if (t < s->t_min) s->t_min = t;
+        }
+    double dt = s->t_max - s->t_min, t_sum = s->t_max + s->t_min;
+    if (!(s->t_max > s->t_min)) {
+        /* A body flat across the light: give depth one texel either side,
+         * and at least one ulp of t.  The ulp is taken exactly (the
+         * difference of neighbours), not from whether t -+ texel rounds
+         * away from t: with the texel between half an ulp and an ulp (a
+         * 1e-5 split at a 1e6 origin: texel 8.5e-11, ulp 1.2e-10) that
+         * decision would be the rounding mode's, and the depth row 2/dt
+         * would move by a third between modes. */
+        const double t = s->t_min, ulp_t = nextafter(fabs(t), INFINITY) - fabs(t);
+        const double half = fmax(texel, ulp_t);
+        s->t_min = t - half;
+        s->t_max = t + half;
+        /* extent and sum from t and the texel, not from the rounded t -+
+         * texel: with the texel far below |t| (a split at a 1e6 offset) that
+         * difference carries ulp(t)/texel of relative error, whose sign and
+         * size the caller's rounding mode would decide */
+        dt = 2.0 * half;
+        t_sum = 2.0 * t;
+        /* the step is one ulp at least, so t_max > t > t_min in every
+         * rounding mode; what is left for this guard is a t at the end of
+         * the double range (its ulp is inf) or a subnormal step under DAZ */
+        if (!(s->t_max > s->t_min) || !(s->t_min < t) || !(s->t_max > t)) {
+            s->t_min = nextafter(t, -INFINITY);
+            s->t_max = nextafter(t, INFINITY);
+            dt = s->t_max - s->t_min;
+            t_sum = s->t_max + s->t_min;
+        }
+    }
+    *dt_out = dt;
+    *t_sum_out = t_sum;
+}
+
+/* clip = A_fit-style scale/translate of light coordinates ([RHS] (3.1)). */
+static void sw_stabilize_matrix(const sw_stab_map* s, double dt, double t_sum, swarp_depth_range depth,
+                                swarp_mat4* m) {
+    const int zero_one = (depth == SWARP_DEPTH_ZERO_TO_ONE);
+    const double za = zero_one ? 1.0 / dt : 2.0 / dt;
+    const double zb = zero_one ? -s->t_min / dt : -t_sum / dt;
+    sw_identity(m);
+    const swarp_vec3 rows[3] = {sw_scale(s->u, 1.0 / s->hx), sw_scale(s->v, 1.0 / s->hy), sw_scale(s->d, za)};
+    const double trans[3] = {-s->cx / s->hx, -s->cy / s->hy, zb};
+    for (int r = 0; r < 3; ++r) {
+        sw_set(m, r, 0, rows[r].x);
+        sw_set(m, r, 1, rows[r].y);
+        sw_set(m, r, 2, rows[r].z);
+        sw_set(m, r, 3, trans[r]);
+    }
+}
+
 SWARP_API swarp_status swarp_stabilize_directional(const swarp_camera* cam, double n_i, double f_i,
                                                    const swarp_vec3* light_dir,
                                                    const swarp_vec3* body_points, size_t body_count,
@@ -142,35 +312,13 @@ SWARP_API swarp_status swarp_stabilize_directional(const swarp_camera* cam, doub
                                                    swarp_stabilize_report* out_report) {
     if (!cam || !light_dir || !out_matrix) return SWARP_ERR_NULL_POINTER;
     swarp_stabilize_options o;
-    memset(&o, 0, sizeof o);
-    if (opt) o = *opt;
-    if (!sw_reserved_zero(o._reserved, 4) || o._reserved0 != 0) return SWARP_ERR_RESERVED_NONZERO;
-    if (o.mode == SWARP_STABILIZE_DEFAULT) o.mode = SWARP_STABILIZE_NONE;
-    if (o.mode != SWARP_STABILIZE_NONE && o.mode != SWARP_STABILIZE_SPHERE &&
-        o.mode != SWARP_STABILIZE_LEVELS)
-        return SWARP_ERR_UNKNOWN_ENUM;
-    if (!sw_depth_range_ok(o.depth)) return SWARP_ERR_UNKNOWN_ENUM;
-    if (o.levels == 0) o.levels = 64; /* ZZB09's empirical 64 levels, [RHS] §3.5 */
-    if (!sw_finite3(&o.origin) || !sw_finite(o.level_max_size)) return SWARP_ERR_NON_FINITE;
-    if (o.level_max_size < 0.0) return SWARP_ERR_OUT_OF_RANGE;
-
-    sw_cam_frame fr;
-    swarp_status st = sw_frame_and_range(cam, n_i, f_i, &fr);
+    swarp_status st = sw_stabilize_options_resolve(opt, &o);
     if (st != SWARP_OK) return st;
-    if (!sw_finite3(light_dir)) return SWARP_ERR_NON_FINITE;
-    if (res < 2) return SWARP_ERR_RESOLUTION;
-    const int need_body = (o.mode != SWARP_STABILIZE_SPHERE);
-    if (need_body && (!body_points || body_count == 0)) return SWARP_ERR_NULL_POINTER;
-    if (body_points)
-        for (size_t i = 0; i < body_count; ++i)
-            if (!sw_finite3(&body_points[i])) return SWARP_ERR_NON_FINITE;
-    if (scene && (!sw_finite3(&scene->min) || !sw_finite3(&scene->max))) return SWARP_ERR_NON_FINITE;
-    if (scene && (scene->min.x > scene->max.x || scene->min.y > scene->max.y ||
-                  scene->min.z > scene->max.z))
-        return SWARP_ERR_OUT_OF_RANGE;
-
-    swarp_vec3 u, v, d;
-    if (!sw_light_basis(light_dir, &u, &v, &d)) return SWARP_ERR_ZERO_VECTOR;
+    sw_cam_frame fr;
+    st = sw_stabilize_check(cam, n_i, f_i, light_dir, body_points, body_count, scene, res, o.mode, &fr);
+    if (st != SWARP_OK) return st;
+    sw_stab_map s;
+    if (!sw_light_basis(light_dir, &s.u, &s.v, &s.d)) return SWARP_ERR_ZERO_VECTOR;
 
     swarp_stabilize_report rep;
     memset(&rep, 0, sizeof rep);
@@ -178,115 +326,29 @@ SWARP_API swarp_status swarp_stabilize_directional(const swarp_camera* cam, doub
     const double ratio = rep.sphere_radius / rep.centroid_radius;
     rep.area_saved = 1.0 - ratio * ratio;
 
-    /* Everything below in light space relative to the origin, in double:
-     * x = u.(p - O), y = v.(p - O), t = d.(p - O) (distance along the light). */
-    const swarp_vec3 O = o.origin;
     const double dres = (double)res;
-    double cx, cy, hx, hy, t_min, t_max;
     swarp_status info = SWARP_OK;
-    if (o.mode == SWARP_STABILIZE_SPHERE) {
-        const swarp_vec3 c = sw_sub(rep.sphere_center, O);
-        cx = sw_dot(c, u);
-        cy = sw_dot(c, v);
-        const double tc = sw_dot(c, d);
-        hx = hy = sw_round_up_coarse(sw_padded_half(2.0 * rep.sphere_radius, dres));
-        t_min = tc - rep.sphere_radius;
-        t_max = tc + rep.sphere_radius;
-    } else {
-        double mn[3] = {INFINITY, INFINITY, INFINITY}, mx[3] = {-INFINITY, -INFINITY, -INFINITY};
-        for (size_t i = 0; i < body_count; ++i) {
-            const swarp_vec3 q = sw_sub(body_points[i], O);
-            const double c3[3] = {sw_dot(q, u), sw_dot(q, v), sw_dot(q, d)};
-            for (int k = 0; k < 3; ++k) {
-                if (c3[k] < mn[k]) mn[k] = c3[k];
-                if (c3[k] > mx[k]) mx[k] = c3[k];
-            }
-        }
-        cx = 0.5 * (mn[0] + mx[0]);
-        cy = 0.5 * (mn[1] + mx[1]);
-        t_min = mn[2];
-        t_max = mx[2];
-        const double ex = mx[0] - mn[0], ey = mx[1] - mn[1];
-        if (o.mode == SWARP_STABILIZE_NONE) {
-            if (!(ex > 0.0) || !(ey > 0.0)) return SWARP_ERR_DEGENERATE;
-            hx = 0.5 * ex;
-            hy = 0.5 * ey;
-        } else {
-            const double ref = o.level_max_size > 0.0 ? o.level_max_size : 2.0 * rep.sphere_radius;
-            const double step = ref / (double)o.levels;
-            hx = 0.5 * sw_quantise(2.0 * sw_padded_half(ex, dres), step, &rep.level_x);
-            hy = 0.5 * sw_quantise(2.0 * sw_padded_half(ey, dres), step, &rep.level_y);
-            if (rep.level_x > o.levels || rep.level_y > o.levels) info = SWARP_INFO_LEVEL_ABOVE_RANGE;
-        }
-    }
-    rep.texel_size_x = 2.0 * hx / dres;
-    rep.texel_size_y = 2.0 * hy / dres;
+    if (o.mode == SWARP_STABILIZE_SPHERE)
+        sw_stabilize_sphere_map(&rep, o.origin, dres, &s);
+    else
+        info = sw_stabilize_body_map(body_points, body_count, &o, dres, &rep, &s);
+    if (swarp_status_is_error(info)) return info;
+    rep.texel_size_x = 2.0 * s.hx / dres;
+    rep.texel_size_y = 2.0 * s.hy / dres;
     if (o.mode != SWARP_STABILIZE_NONE) {
         /* the offset problem: the map centre moves in whole texels only.
          * round(), not nearbyint(): the nearest whole texel whatever the
-         * caller's rounding mode (nearbyint under FE_UPWARD is ceil, and the
-         * map then misses up to a whole texel of the sphere; found by the
-         * fenv sweep) */
-        cx = round(cx / rep.texel_size_x) * rep.texel_size_x;
-        cy = round(cy / rep.texel_size_y) * rep.texel_size_y;
+         * caller's rounding mode (nearbyint rounding upward is ceil, and the
+         * map would then miss up to a whole texel of the sphere) */
+        s.cx = round(s.cx / rep.texel_size_x) * rep.texel_size_x;
+        s.cy = round(s.cy / rep.texel_size_y) * rep.texel_size_y;
     }
-    rep.offset_x = cx;
-    rep.offset_y = cy;
-
-    /* Depth: the scene box toward the light (casters in front of the split). */
-    if (scene)
-        for (int k = 0; k < 8; ++k) {
-            const swarp_vec3 q = sw_v3(k & 1 ? scene->max.x : scene->min.x,
-                                       k & 2 ? scene->max.y : scene->min.y,
-                                       k & 4 ? scene->max.z : scene->min.z);
-            const double t = sw_dot(sw_sub(q, O), d);
-            if (t < t_min) t_min = t;
-        }
-    double dt = t_max - t_min, t_sum = t_max + t_min;
-    if (!(t_max > t_min)) {
-        /* A body flat across the light: give depth one texel either side,
-         * and at least one ulp of t.  The ulp is taken exactly (the
-         * difference of neighbours), not from whether t -+ texel rounds
-         * away from t: with the texel between half an ulp and an ulp (a
-         * 1e-5 split at a 1e6 origin: texel 8.5e-11, ulp 1.2e-10) that
-         * decision was the rounding mode's, and the depth row 2/dt moved
-         * by a third between modes (issue 9, fenv swarp_stabilize_directional
-         * 480000 cases 300594, 449874). */
-        const double t = t_min, ulp_t = nextafter(fabs(t), INFINITY) - fabs(t);
-        const double half = fmax(rep.texel_size_x, ulp_t);
-        t_min = t - half;
-        t_max = t + half;
-        /* extent and sum from t and the texel, not from the rounded t -+
-         * texel: with the texel far below |t| (a split at a 1e6 offset) that
-         * difference carried ulp(t)/texel of relative error, whose sign and
-         * size the caller's rounding mode decided (fenv sweep) */
-        dt = 2.0 * half;
-        t_sum = 2.0 * t;
-        /* the step is one ulp at least, so t_max > t > t_min in every
-         * rounding mode; what is left for this guard is a t at the end of
-         * the double range (its ulp is inf) or a subnormal step under DAZ */
-        if (!(t_max > t_min) || !(t_min < t) || !(t_max > t)) {
-            t_min = nextafter(t, -INFINITY);
-            t_max = nextafter(t, INFINITY);
-            dt = t_max - t_min;
-            t_sum = t_max + t_min;
-        }
-    }
-
-    /* clip = A_fit-style scale/translate of light coordinates ([RHS] (3.1)) */
-    const int zero_one = (o.depth == SWARP_DEPTH_ZERO_TO_ONE);
-    const double za = zero_one ? 1.0 / dt : 2.0 / dt;
-    const double zb = zero_one ? -t_min / dt : -t_sum / dt;
+    rep.offset_x = s.cx;
+    rep.offset_y = s.cy;
+    double dt, t_sum;
+    sw_stabilize_depth(scene, o.origin, rep.texel_size_x, &s, &dt, &t_sum);
     swarp_mat4 m;
-    sw_identity(&m);
-    const swarp_vec3 rows[3] = {sw_scale(u, 1.0 / hx), sw_scale(v, 1.0 / hy), sw_scale(d, za)};
-    const double trans[3] = {-cx / hx, -cy / hy, zb};
-    for (int r = 0; r < 3; ++r) {
-        sw_set(&m, r, 0, rows[r].x);
-        sw_set(&m, r, 1, rows[r].y);
-        sw_set(&m, r, 2, rows[r].z);
-        sw_set(&m, r, 3, trans[r]);
-    }
+    sw_stabilize_matrix(&s, dt, t_sum, o.depth, &m);
     /* every input was checked finite above: a non-finite matrix or texel size
      * here is a result beyond DBL_MAX (coordinates near DBL_MAX, or 1/extent
      * of a subnormal extent), not representable: the documented OVERFLOW */
@@ -312,7 +374,7 @@ SWARP_API swarp_status swarp_stabilize_snap_matrix(const swarp_mat4* m, double r
     /* texel coordinate of the origin; move it to the nearest whole texel */
     const swarp_vec4 h = sw_xform_point(m, *origin);
     const double s = (h.x / w + 1.0) * 0.5 * res_s, t = (h.y / w + 1.0) * 0.5 * res_t;
-    /* round(): the nearest corner in every rounding mode (see above) */
+    /* round(), not nearbyint(): the nearest corner in every rounding mode */
     const double ds = round(s) - s, dt = round(t) - t;
     swarp_mat4 r = *m;
     r.m[12] += 2.0 * ds / res_s * w;

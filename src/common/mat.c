@@ -34,6 +34,10 @@ SWARP_API swarp_status swarp_mat4_mul(const swarp_mat4* a, const swarp_mat4* b, 
     return SWARP_OK;
 }
 
+/* A pivot below this fraction of the largest entry means the matrix is
+ * numerically singular in double (about 2^-1000 of the scale). */
+#define SW_INVERT_TINY 1e-300
+
 int sw_invert(const swarp_mat4* a, swarp_mat4* out) {
     double w[4][8];
     double amax = 0.0;
@@ -44,9 +48,7 @@ int sw_invert(const swarp_mat4* a, swarp_mat4* out) {
             if (fabs(w[r][c]) > amax) amax = fabs(w[r][c]);
         }
     if (!(amax > 0.0) || !sw_finite(amax)) return 0;
-    /* A pivot below this fraction of the largest entry means the matrix is
-     * numerically singular in double (about 2^-1000 of the scale). */
-    const double tiny = amax * 1e-300;
+    const double tiny = amax * SW_INVERT_TINY;
     for (int c = 0; c < 4; ++c) {
         int p = c;
         for (int r = c + 1; r < 4; ++r)

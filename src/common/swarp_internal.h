@@ -6,6 +6,9 @@
 #include <math.h>
 #include <string.h>
 
+#ifndef SWARP_EXPERIMENTAL_API /* the library defines every declaration */
+#define SWARP_EXPERIMENTAL_API 1
+#endif
 #include "shadowwarp.h"
 
 /* Every exported definition carries SWARP_API; the build defines

@@ -14,6 +14,9 @@
  * the unit cube around the light, as small as 24-bit depth comfortably
  * allows for the [KOZ] ratios (Z_f/Z_n = 100). */
 #define SW_CUBE_DEFAULT_Z1 0.01
+/* A light position beyond this (any component) counts as at infinity: its
+ * products with the face distances would overflow the matrices. */
+#define SW_CUBE_LIGHT_FAR 1e150
 
 _Static_assert(sizeof(swarp_cube_face) == 8 + 8 + 3 * sizeof(swarp_vec3) + 3 * sizeof(swarp_mat4),
                "swarp_cube_face size");
@@ -56,7 +59,8 @@ static swarp_status sw_cube_setup_make(const swarp_vec4* L, const swarp_cube_opt
     if (L->w == 0.0) return SWARP_ERR_CUBE_LIGHT_AT_INFINITY;
     s->P = sw_v3(L->x / L->w, L->y / L->w, L->z / L->w);
     /* |P| so large that d_i * P overflows the matrices: a light at infinity */
-    if (!sw_finite3(&s->P) || fabs(s->P.x) > 1e150 || fabs(s->P.y) > 1e150 || fabs(s->P.z) > 1e150)
+    if (!sw_finite3(&s->P) || fabs(s->P.x) > SW_CUBE_LIGHT_FAR || fabs(s->P.y) > SW_CUBE_LIGHT_FAR ||
+        fabs(s->P.z) > SW_CUBE_LIGHT_FAR)
         return SWARP_ERR_CUBE_LIGHT_AT_INFINITY;
     s->inverse = L->w < 0.0;
     s->z1 = z1;
@@ -72,9 +76,9 @@ static swarp_status sw_cube_setup_make(const swarp_vec4* L, const swarp_cube_opt
  * z_ndc = alpha + beta / e with the near plane at -1 (or 0) and far at 1.
  * In ratio form, with n and f the multiples Z_n/Z_f of d: alpha depends on
  * Z_1 only and beta = bd d.  The textbook (f + n)/(f - n) with n = Z_1 d
- * rounded first lost up to eps/(1 - Z_1) of alpha (f - n cancels for Z_1
- * near 1), a loss the caller's rounding mode decided (robust_fenv: alpha
- * ~ 2e9 moved by 2e-7 relative between FE_UPWARD and the default); here
+ * rounded first loses up to eps/(1 - Z_1) of alpha (f - n cancels for Z_1
+ * near 1), a loss the caller's rounding mode decides (alpha ~ 2e9 would
+ * move by 2e-7 relative between rounding upward and to nearest); here
  * 1 - Z_1 is exact for Z_1 >= 1/2 (Sterbenz) and alpha, bd carry a few eps.
  *   regular  n = Z_1, f = 1:  alpha = (1 + Z_1)/(1 - Z_1), bd = -2 Z_1/(1 - Z_1)
  *                             ([0, 1]: 1/(1 - Z_1), -Z_1/(1 - Z_1))
@@ -128,9 +132,9 @@ static void sw_cube_face_make(const sw_cube_setup* s, int i, swarp_cube_face* F)
     sw_set(Pm, 3, 2, -1.0);
     /* view_proj = proj view in closed form (R, U, Z are axis vectors, so
      * every entry is one rounded operation).  The product evaluated in
-     * floating point summed d (R.P) - (R.P)(Z.P) with Z.P = d - 1 to the
+     * floating point would sum d (R.P) - (R.P)(Z.P) with Z.P = d - 1 to the
      * exact -R.P: for a far light (|P| ~ 3e6) a cancellation of |P| d, which
-     * the caller's rounding mode moved by 1e-9 of the matrix (robust_fenv).
+     * the caller's rounding mode would move by 1e-9 of the matrix.
      * Row 2's translation alpha Z.P + beta is (alpha + bd) d - alpha, with
      * alpha + bd = 1 (regular), Z_1 (inverse), (1 + Z_1)/2 (inverse, [0, 1]). */
     sw_cube_depth_ratio(s, &alpha, &(double){0.0});
@@ -192,8 +196,8 @@ SWARP_API swarp_status swarp_cube_lookup(const swarp_vec4* ps_light, const swarp
     /* S = P + u/a does not depend on the scale of u: u scaled by 2^-k
      * (exact) when its largest component is beyond 2^960, so that
      * a = (u . N)/d (d >= 2^-53 when > 0) cannot overflow -- a component
-     * near DBL_MAX made a = inf, u/a = 0 and S = P, off the cube (found by
-     * the hard-case sweep).  Only down to 2^900: a smaller component that
+     * near DBL_MAX would make a = inf, u/a = 0 and S = P, off the cube.
+     * Only down to 2^900: a smaller component that
      * decides a is >= a d_i, far above the subnormals, as long as S is
      * finite (all the way to [1, 2) would make it subnormal).  Below 2^-500
      * up to [1, 2) (no component shrinks): a = |u| / d with d up to 1e150

@@ -62,7 +62,7 @@ static inline double sw_chebyshev(double M_1, double M_2, double t, double min_v
 }
 
 /* Validates N + 1 strictly increasing finite splits. */
-static inline swarp_status sw_check_splits(const double* splits, uint32_t n_layers) {
+static inline swarp_status sw_lvsm_check_splits(const double* splits, uint32_t n_layers) {
     if (!splits) return SWARP_ERR_NULL_POINTER;
     if (n_layers < 1 || n_layers > SWARP_LVSM_MAX_LAYERS) return SWARP_ERR_FILTER_LAYER_COUNT;
     for (uint32_t i = 0; i <= n_layers; ++i)

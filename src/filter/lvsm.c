@@ -13,7 +13,7 @@ SWARP_API swarp_status swarp_lvsm_layer_interval(const double* splits, uint32_t 
                                                  uint32_t i, double delta, double* out_p,
                                                  double* out_q) {
     if (!out_p || !out_q) return SWARP_ERR_NULL_POINTER;
-    swarp_status st = sw_check_splits(splits, n_layers);
+    swarp_status st = sw_lvsm_check_splits(splits, n_layers);
     if (st != SWARP_OK) return st;
     if (!sw_finite(delta)) return SWARP_ERR_NON_FINITE;
     if (i >= n_layers) return SWARP_ERR_OUT_OF_RANGE;
@@ -124,7 +124,7 @@ static swarp_status sw_layer_of(double t, const double* splits, uint32_t n_layer
 SWARP_API swarp_status swarp_lvsm_layer_find(double t, const double* splits, uint32_t n_layers,
                                              uint32_t* out_layer) {
     if (!out_layer) return SWARP_ERR_NULL_POINTER;
-    swarp_status st = sw_check_splits(splits, n_layers);
+    swarp_status st = sw_lvsm_check_splits(splits, n_layers);
     if (st != SWARP_OK) return st;
     if (!sw_finite(t)) return SWARP_ERR_NON_FINITE;
     uint32_t j;
@@ -144,8 +144,8 @@ static swarp_status sw_transition(double t, const double* splits, uint32_t n_lay
         /* w = (t - (s - band)) / (2 band) as ((t - s) + band) / (2 band):
          * t - s is exact next to s (Sterbenz), while s - band rounded at the
          * magnitude of s (an ulp of s is ~1e-7 of a band of 1e-9 at s ~ 1,
-         * and all of a band below an ulp of s), so w depended on the caller's
-         * rounding mode by up to the whole [0, 1] (fenv cases 3626, 7332). */
+         * and all of a band below an ulp of s), so w would depend on the
+         * caller's rounding mode by up to the whole [0, 1]. */
         if (j > 0 && t - splits[j] < band) { /* just above inner split s_j */
             *lo = j - 1;
             *w_hi = ((t - splits[j]) + band) / (2.0 * band);
@@ -169,7 +169,7 @@ SWARP_API swarp_status swarp_lvsm_transition(double t, const double* splits, uin
                                              double band, uint32_t* out_layer_lo,
                                              uint32_t* out_layer_hi, double* out_w_hi) {
     if (!out_layer_lo || !out_layer_hi || !out_w_hi) return SWARP_ERR_NULL_POINTER;
-    swarp_status st = sw_check_splits(splits, n_layers);
+    swarp_status st = sw_lvsm_check_splits(splits, n_layers);
     if (st != SWARP_OK) return st;
     if (!sw_finite(t)) return SWARP_ERR_NON_FINITE;
     st = sw_check_band(splits, n_layers, band);
@@ -208,7 +208,7 @@ SWARP_API swarp_status swarp_lvsm_visibility(const double* layer_moments, const 
                                              double t, double min_variance,
                                              double* out_visibility) {
     if (!layer_moments || !out_visibility) return SWARP_ERR_NULL_POINTER;
-    swarp_status st = sw_check_splits(splits, n_layers);
+    swarp_status st = sw_lvsm_check_splits(splits, n_layers);
     if (st != SWARP_OK) return st;
     if (!sw_finite(t) || !sw_finite(delta) || !sw_finite(band) || !sw_finite(min_variance))
         return SWARP_ERR_NON_FINITE;

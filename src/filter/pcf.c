@@ -63,9 +63,16 @@ SWARP_API swarp_status swarp_pcf_poisson_disk(uint64_t seed, uint32_t count, uin
     return SWARP_OK;
 }
 
-static swarp_status sw_check_near(double w, double n_light, double d_r) {
+/* Similar triangles through the light's near plane n_light for a receiver
+ * at d_r >= n_light: the search region of the near plane that can hold
+ * blockers (search: w (d_r - n_light)/d_r) or the penumbra's width on the
+ * near plane (w n_light/d_r).  Each ratio is in [0, 1]: no overflow for
+ * any finite w. */
+static swarp_status sw_pcss_near_plane(double w, double n_light, double d_r, int search, double* out) {
+    if (!out) return SWARP_ERR_NULL_POINTER;
     if (!sw_finite(w) || !sw_finite(n_light) || !sw_finite(d_r)) return SWARP_ERR_NON_FINITE;
     if (w < 0.0 || !(n_light > 0.0) || d_r < n_light) return SWARP_ERR_OUT_OF_RANGE;
+    *out = search ? w * ((d_r - n_light) / d_r) : w * (n_light / d_r);
     return SWARP_OK;
 }
 
@@ -73,12 +80,7 @@ static swarp_status sw_check_near(double w, double n_light, double d_r) {
  * blockers of a receiver at d_r, by similar triangles. */
 SWARP_API swarp_status swarp_pcss_search_width(double w_light, double n_light, double d_r,
                                                double* out_w_search) {
-    if (!out_w_search) return SWARP_ERR_NULL_POINTER;
-    swarp_status st = sw_check_near(w_light, n_light, d_r);
-    if (st != SWARP_OK) return st;
-    /* the ratio is in [0, 1): no overflow for any finite w_light */
-    *out_w_search = w_light * ((d_r - n_light) / d_r);
-    return SWARP_OK;
+    return sw_pcss_near_plane(w_light, n_light, d_r, 1, out_w_search);
 }
 
 /* [RHS] §3.6 (Fernando 2005): w = (d_r - d_b) w_light / d_b. */
@@ -100,11 +102,8 @@ SWARP_API swarp_status swarp_pcss_penumbra(double d_r, double d_b, double w_ligh
     return SWARP_OK;
 }
 
+/* [RHS] §3.6: the penumbra width scaled to the near plane. */
 SWARP_API swarp_status swarp_pcss_filter_width(double w_penumbra, double n_light, double d_r,
                                                double* out_w_filter) {
-    if (!out_w_filter) return SWARP_ERR_NULL_POINTER;
-    swarp_status st = sw_check_near(w_penumbra, n_light, d_r);
-    if (st != SWARP_OK) return st;
-    *out_w_filter = w_penumbra * (n_light / d_r); /* ratio in (0, 1] */
-    return SWARP_OK;
+    return sw_pcss_near_plane(w_penumbra, n_light, d_r, 0, out_w_filter);
 }

@@ -55,7 +55,8 @@ static double sw_mul_div(double a, double b, double c) {
 /* sw_nopt_core for z_0 < 2^-900 z_1, all in mantissa/exponent form (sw_xd):
  * there z_0 4^-k is subnormal or nearly, n_p (z_1 - z_0) 4^-k underflows for
  * subnormal n_p, and z_0 + sqrt(.) sqrt(.) is no longer dominated by normal
- * numbers (n_opt of z_0 = 5e-324, n_p = 5e-324 was 8% off).  The pseudo-far
+ * numbers (in plain doubles n_opt of z_0 = 5e-324, n_p = 5e-324 would be
+ * 8% off).  The pseudo-far
  * depth is written z_0 + (1 - f_p) dz, equal to z_1 - f_p dz in exact
  * arithmetic, without its cancellation for f_p near 1 (1 - f_p is exact for
  * f_p >= 1/2).  Off the hot path: only extreme depth ratios get here. */
@@ -83,7 +84,7 @@ static swarp_status sw_nopt_core(double d, double z_0, double z_1, double n_p, d
     /* The ratio (z_0 + root) / dz is homogeneous of degree 0 in the depths,
      * so they are scaled by s = 2^(-2k) (exact) to put z_1 s in [1, 4): the
      * subnormal depths and depths near DBL_MAX neither lose bits nor
-     * overflow (d / dz used to overflow for z_1 = 4e-319).  sqrt(z s) =
+     * overflow (d / dz unscaled overflows for z_1 = 4e-319).  sqrt(z s) =
      * sqrt(z) 2^-k keeps the root exact even where z_0 s would be subnormal. */
     int e = ilogb(z_1);
     int k = (e - (e & 1)) / 2; /* floor(e / 2): scaling z by 4^j changes k by exactly j */
@@ -133,6 +134,11 @@ SWARP_API swarp_status swarp_warp_nopt_pseudo(double d, double z_0, double z_1, 
 /* Lloyd's breakpoints and levels of [RHS] (3.3). */
 #define SW_ETA_B (-0.2)
 #define SW_ETA_C 0.0
+/* [RHS] (3.3): the breakpoint gamma_c lies this fraction of the way from
+ * Theta to pi/2. */
+#define SW_ETA_GAMMA_C_FRACTION 0.3
+/* Below this angle tan(x) = x to 1e-16 (x (1 + x^2/3 + ...)). */
+#define SW_TAN_LINEAR 1e-8
 
 /* [RHS] (3.3) */
 SWARP_API swarp_status swarp_warp_eta(double gamma, double theta, double* out_eta) {
@@ -142,7 +148,7 @@ SWARP_API swarp_status swarp_warp_eta(double gamma, double theta, double* out_et
     if (!sw_angle_closed(gamma)) return SWARP_ERR_OUT_OF_RANGE;
     double gamma_a = theta / 3.0;
     double gamma_b = theta;
-    double gamma_c = theta + 0.3 * (SW_HALF_PI - theta);
+    double gamma_c = theta + SW_ETA_GAMMA_C_FRACTION * (SW_HALF_PI - theta);
     double eta;
     if (gamma <= gamma_a)
         eta = -1.0;
@@ -398,37 +404,37 @@ static int sw_gmnpr_F_value(double lambda, double theta, double phi, double n, d
     return 1;
 }
 
-/* [GMNPR] (2), psi */
-SWARP_API swarp_status swarp_gmnpr_psi(double lambda, double theta, double phi, double n,
-                                       double f, double* out_psi) {
-    if (!out_psi) return SWARP_ERR_NULL_POINTER;
+/* [GMNPR] (2): psi (want_offset 0) or varphi (1), both from one
+ * evaluation; OVERFLOW when the one asked for is above DBL_MAX or below the
+ * subnormals. */
+static swarp_status sw_gmnpr_psi_or_offset(double lambda, double theta, double phi, double n, double f,
+                                           int want_offset, double* out) {
+    if (!out) return SWARP_ERR_NULL_POINTER;
     swarp_status s = sw_gmnpr_args(lambda, theta, phi, n, f);
     if (s != SWARP_OK) return s;
     double psi, offset;
     int psi_ok, offset_ok;
     sw_gmnpr_psi_offset(lambda, theta, phi, n, f, &psi, &psi_ok, &offset, &offset_ok);
-    if (!psi_ok) return SWARP_ERR_OVERFLOW; /* above DBL_MAX, or below the subnormals */
-    *out_psi = psi;
+    if (!(want_offset ? offset_ok : psi_ok)) return SWARP_ERR_OVERFLOW;
+    *out = want_offset ? offset : psi;
     return SWARP_OK;
+}
+
+/* [GMNPR] (2), psi */
+SWARP_API swarp_status swarp_gmnpr_psi(double lambda, double theta, double phi, double n,
+                                       double f, double* out_psi) {
+    return sw_gmnpr_psi_or_offset(lambda, theta, phi, n, f, 0, out_psi);
 }
 
 /* [GMNPR] (2), varphi */
 SWARP_API swarp_status swarp_gmnpr_offset(double lambda, double theta, double phi, double n,
                                           double f, double* out_offset) {
-    if (!out_offset) return SWARP_ERR_NULL_POINTER;
-    swarp_status s = sw_gmnpr_args(lambda, theta, phi, n, f);
-    if (s != SWARP_OK) return s;
-    double psi, offset;
-    int psi_ok, offset_ok;
-    sw_gmnpr_psi_offset(lambda, theta, phi, n, f, &psi, &psi_ok, &offset, &offset_ok);
-    if (!offset_ok) return SWARP_ERR_OVERFLOW;
-    *out_offset = offset;
-    return SWARP_OK;
+    return sw_gmnpr_psi_or_offset(lambda, theta, phi, n, f, 1, out_offset);
 }
 
 /* [GMNPR] (2), F = psi (z + varphi)^2 / z, evaluated by sw_gmnpr_F_value so
  * large lambda (psi ~ 1/lambda^2, varphi ~ lambda) and huge f, z neither
- * overflow nor underflow in between (F used to come out 0 with SWARP_OK for
+ * overflow nor underflow in between (the direct product underflows to 0 for
  * lambda ~ 1e274). */
 SWARP_API swarp_status swarp_gmnpr_F(double lambda, double theta, double phi, double n,
                                      double f, double z, double* out_F) {
@@ -477,8 +483,8 @@ static double sw_lambda_1(double theta, double phi, double n, double f) {
 /* lambda_2 of [GMNPR] (4): (f + sqrt(fn))/(2f) tan(theta)/tan(phi) - 1/2,
  * with (f + sqrt(fn))/(2f) = (1 + r)/2, r = sqrt(n/f), written as
  *   ((1 - t) + r) / (2 t)   (theta >= phi)  and  ((u - 1) + u r) / 2:
- * 1 - t and u - 1 are exact near theta = phi (Sterbenz), where the old
- * c/t - 1/2 lost r < 2^-53 entirely (lambda_2 = 0 for f = DBL_MAX). */
+ * 1 - t and u - 1 are exact near theta = phi (Sterbenz), where the direct
+ * c/t - 1/2 loses r < 2^-53 entirely (lambda_2 = 0 for f = DBL_MAX). */
 static double sw_lambda_2(double theta, double phi, double n, double f) {
     double r = sqrt(n) / sqrt(f);
     if (theta >= phi) {
@@ -529,11 +535,21 @@ static swarp_status sw_theta_closed_check(double theta, double phi, double n, do
     return SWARP_OK;
 }
 
+/* The checks shared by the lambda entry points, then (n, f) normalised by
+ * sw_normalise_nf (lambda is homogeneous of degree 0 in them). */
+static swarp_status sw_lambda_args(const double* out_lambda, double theta, double phi, double* n, double* f) {
+    if (!out_lambda) return SWARP_ERR_NULL_POINTER;
+    swarp_status s = sw_theta_closed_check(theta, phi, *n, *f);
+    if (s != SWARP_OK) return s;
+    sw_normalise_nf(n, f);
+    return SWARP_OK;
+}
+
 /* lambda_GMNPR without checks; theta in [0, pi/2]. */
 static swarp_status sw_lambda_gmnpr(double theta, double phi, double n, double f, double* out) {
     if (theta == 0.0) {
         /* (6): converges to the standard (uniform) shadow map.  The contract of
-         * lambda is "never Inf on [0, pi/2]" (issue 2), so theta = 0 writes the
+         * lambda is "never Inf on [0, pi/2]" (the header), so theta = 0 writes the
          * largest finite double, which the error model and the warp treat as
          * uniform exactly like +INFINITY. */
         *out = DBL_MAX;
@@ -546,7 +562,7 @@ static swarp_status sw_lambda_gmnpr(double theta, double phi, double n, double f
     /* [GMNPR] (7): lambda_2* = lambda_1(phi) / tan(theta pi / (4 phi)), lambda_1(phi) = sqrt(fn)/(2f) */
     double lambda_1_phi = 0.5 * sqrt(n) / sqrt(f);
     double lambda;
-    if (theta < 1e-8 * (4.0 * phi / SWARP_PI)) {
+    if (theta < SW_TAN_LINEAR * (4.0 * phi / SWARP_PI)) {
         /* tan(x) = x (1 + x^2/3 + ...) = x to 1e-16 for x < 1e-8; as a ratio
          * of factors, since x itself is subnormal for theta ~ 1e-323 and
          * lambda ~ 1e-300 / theta overflows only when it does */
@@ -561,20 +577,16 @@ static swarp_status sw_lambda_gmnpr(double theta, double phi, double n, double f
 /* [GMNPR] (8) with (7) */
 SWARP_API swarp_status swarp_gmnpr_lambda(double theta, double phi, double n, double f,
                                           double* out_lambda) {
-    if (!out_lambda) return SWARP_ERR_NULL_POINTER;
-    swarp_status s = sw_theta_closed_check(theta, phi, n, f);
+    swarp_status s = sw_lambda_args(out_lambda, theta, phi, &n, &f);
     if (s != SWARP_OK) return s;
-    sw_normalise_nf(&n, &f);
     return sw_lambda_gmnpr(theta, phi, n, f, out_lambda);
 }
 
 /* [GMNPR] (9): P_n = (n + sqrt(fn))/sin(theta) over the normalised depth P_f - P_n. */
 SWARP_API swarp_status swarp_gmnpr_lambda_lispsm(double theta, double phi, double n, double f,
                                                  double* out_lambda) {
-    if (!out_lambda) return SWARP_ERR_NULL_POINTER;
-    swarp_status s = sw_theta_closed_check(theta, phi, n, f);
+    swarp_status s = sw_lambda_args(out_lambda, theta, phi, &n, &f);
     if (s != SWARP_OK) return s;
-    sw_normalise_nf(&n, &f);
     if (theta == 0.0) {
         *out_lambda = DBL_MAX; /* P_n = inf: duelling frusta; finite, like lambda_GMNPR */
         return SWARP_INFO_WARP_UNIFORM;
@@ -618,10 +630,8 @@ SWARP_API swarp_status swarp_gmnpr_lambda_lispsm(double theta, double phi, doubl
  *          SWARP_INFO_GLPR_NO_SOLUTION (theta = 0: +INFINITY, WARP_UNIFORM). */
 SWARP_API swarp_status swarp_gmnpr_lambda_glpr(double theta, double phi, double n, double f,
                                                double* out_lambda) {
-    if (!out_lambda) return SWARP_ERR_NULL_POINTER;
-    swarp_status s = sw_theta_closed_check(theta, phi, n, f);
+    swarp_status s = sw_lambda_args(out_lambda, theta, phi, &n, &f);
     if (s != SWARP_OK) return s;
-    sw_normalise_nf(&n, &f);
     if (theta > phi) {
         double D = sw_case1_D(sw_t_ratio(theta, phi), n, f);
         double one_minus_t = sin(theta - phi) / (sin(theta) * cos(phi));

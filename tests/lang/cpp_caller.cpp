@@ -1,6 +1,8 @@
 // The public header compiles as C++17 with -Wall -Wextra -Wpedantic -Werror
 // (tests/meson.build: cpp_std=c++17, warning_level=3, werror=true) and C++
 // calls the library: extern "C" linkage, enums, structs, status strings.
+// This caller sees the experimental section too (tests/meson.build passes
+// -DSWARP_EXPERIMENTAL_API; tests/lang/c99_pedantic.c compiles without it).
 #include "shadowwarp.h"
 
 #include <cmath>
@@ -13,6 +15,10 @@ static_assert(std::is_standard_layout<swarp_camera>::value, "swarp_camera is sta
 static_assert(std::is_trivially_copyable<swarp_mat4>::value, "swarp_mat4 is trivially copyable");
 static_assert(sizeof(swarp_status) == 4, "32-bit enum");
 static_assert(sizeof(swarp_camera) == 13 * sizeof(double) + 16, "camera layout as in C");
+#ifndef SWARP_EXPERIMENTAL_API
+#error "tests/meson.build builds this caller with -DSWARP_EXPERIMENTAL_API"
+#endif
+static_assert(sizeof(swarp_polyhedron) == SWARP_POLY_SIZE, "polyhedron layout as in C");
 
 int main() {
     swarp_mat4 a{}, inv{}, prod{};
@@ -37,6 +43,10 @@ int main() {
     light.type = SWARP_LIGHT_DIRECTIONAL;
     (void)cam;
     (void)light;
+    // an experimental function: the [RHS] §4.3 near plane from a measured min depth
+    double near_adj = 0.0;
+    if (swarp_mindepth_near(1.0, 100.0, 10.0, nullptr, &near_adj) != SWARP_OK || !(near_adj > 9.0 && near_adj < 10.0))
+        return 7;
     std::printf("C++ caller ok (%s, %s)\n", swarp_version_string(), swarp_status_string(SWARP_OK));
     return 0;
 }
