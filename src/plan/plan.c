@@ -518,8 +518,8 @@ static void sw_evaluate(const sw_pin* in, const sw_filter* flt, const swarp_plan
  * -(f+n)/(f-n) z - 2fn/(f-n) tends to the w row -z as n/f -> 0: V^-1 loses
  * log2(f/n) bits, and below n/f ~ eps the two rows are equal or one ulp apart
  * by the rounding of (f+n)/(f-n), V singular or not by the caller's rounding
- * mode (fenv swarp_plan 240000 cases 198218, 201223: near 1e-31, far 2e5, a
- * lixel map with directed rounding only).  The lixel matrix does not depend
+ * mode (near 1e-31, far 2e5: a lixel map under directed rounding only).
+ * The lixel matrix does not depend
  * on the depth range: it is made of the rays through the corner pixels
  * (rows 0, 1, 3 of V, [LIXEL] (2)) and the eye; the depth row enters only
  * V^-1, through which the lixel stage images the plane for its through-eye
