@@ -435,7 +435,8 @@ swarp_status sw_body_h_eye(const swarp_camera* cam, double near, double far, con
 swarp_status sw_clip_light_pyramid(swarp_polyhedron* B, const swarp_light* light) {
     swarp_vec3 a = {0, 0, 1}, e1 = {1, 0, 0}, e2;
     sw_gnormalize(light->direction, &a); /* subnormal directions are valid (sw_gnormalize scales them) */
-    swarp_vec3 ref = fabs(a.x) < 0.6 ? sw_v3(1, 0, 0) : (fabs(a.y) < 0.6 ? sw_v3(0, 1, 0) : sw_v3(0, 0, 1));
+    swarp_vec3 ref = fabs(a.x) < SW_REF_AXIS_MAX ? sw_v3(1, 0, 0)
+                   : (fabs(a.y) < SW_REF_AXIS_MAX ? sw_v3(0, 1, 0) : sw_v3(0, 0, 1));
     sw_gnormalize(sw_cross(ref, a), &e1);
     e2 = sw_cross(a, e1);
     double c = cos(light->cone_angle), s = sin(light->cone_angle);
@@ -576,16 +577,11 @@ SWARP_API swarp_status swarp_body_from_h(const swarp_polyhedron* H, const swarp_
     if (s != SWARP_OK) return s;
     s = sw_check_box(scene);
     if (s != SWARP_OK) return s;
-    if (H->vertex_count > SWARP_POLY_MAX_VERTICES || H->face_count > SWARP_POLY_MAX_FACES)
-        return SWARP_ERR_INVALID_ARGUMENT;
+    s = sw_poly_check_counts(H);
+    if (s != SWARP_OK) return s;
     if (H->vertex_count == 0) return SWARP_ERR_BODY_EMPTY;
-    for (uint32_t i = 0; i < H->vertex_count; ++i)
-        if (!sw_finite3(&H->vertices[i])) return SWARP_ERR_NON_FINITE;
-    for (uint32_t f = 0; f < H->face_count; ++f) {
-        if (H->face_vertex_count[f] > SWARP_POLY_MAX_FACE_VERTICES) return SWARP_ERR_INVALID_ARGUMENT;
-        for (uint32_t k = 0; k < H->face_vertex_count[f]; ++k)
-            if (H->face_vertices[f][k] >= H->vertex_count) return SWARP_ERR_INVALID_ARGUMENT;
-    }
+    s = sw_poly_check_contents(H);
+    if (s != SWARP_OK) return s;
     swarp_polyhedron B;
     s = sw_body_from_h(H, light, scene, &B);
     if (s != SWARP_OK) return s;
@@ -635,15 +631,8 @@ SWARP_API swarp_status swarp_body_receivers(const swarp_polyhedron* H, const swa
     if (!H || !light || !out) return SWARP_ERR_NULL_POINTER;
     swarp_status s = sw_check_light(light);
     if (s != SWARP_OK) return s;
-    if (H->vertex_count > SWARP_POLY_MAX_VERTICES || H->face_count > SWARP_POLY_MAX_FACES)
-        return SWARP_ERR_INVALID_ARGUMENT;
-    for (uint32_t i = 0; i < H->vertex_count; ++i)
-        if (!sw_finite3(&H->vertices[i])) return SWARP_ERR_NON_FINITE;
-    for (uint32_t f = 0; f < H->face_count; ++f) {
-        if (H->face_vertex_count[f] > SWARP_POLY_MAX_FACE_VERTICES) return SWARP_ERR_INVALID_ARGUMENT;
-        for (uint32_t k = 0; k < H->face_vertex_count[f]; ++k)
-            if (H->face_vertices[f][k] >= H->vertex_count) return SWARP_ERR_INVALID_ARGUMENT;
-    }
+    s = sw_poly_validate(H);
+    if (s != SWARP_OK) return s;
     if (H->vertex_count == 0) return SWARP_ERR_BODY_EMPTY;
     swarp_polyhedron R;
     sw_poly_copy(H, &R);

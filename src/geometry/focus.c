@@ -80,7 +80,7 @@ static int sw_aligned_up(const swarp_camera* cam, swarp_vec3 a, swarp_vec3* up) 
     }
     if (!sw_gnormalize(u, up)) {
         /* the field's single zero (measure zero): any perpendicular works */
-        swarp_vec3 ref = fabs(a.x) < 0.6 ? sw_v3(1, 0, 0) : sw_v3(0, 1, 0);
+        swarp_vec3 ref = fabs(a.x) < SW_REF_AXIS_MAX ? sw_v3(1, 0, 0) : sw_v3(0, 1, 0);
         sw_gnormalize(sw_cross(a, ref), up);
     }
     /* exact perpendicularity for the look-at */

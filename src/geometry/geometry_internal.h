@@ -43,6 +43,10 @@ static inline double sw_half_fovy(double fovy) {
 }
 static inline double sw_max(double a, double b) { return a > b ? a : b; }
 static inline double sw_min(double a, double b) { return a < b ? a : b; }
+/* A reference axis for a vector perpendicular to the unit n: the first of
+ * x, y, z with |n_k| below this.  One always is (three components of 0.6 or
+ * more would make |n| >= 1.04), so ref x n is at least 0.8 long. */
+#define SW_REF_AXIS_MAX 0.6
 
 /* ---- argument checks shared by the geometry entry points ---------------- */
 swarp_status sw_check_camera_shape(const swarp_camera* cam);   /* all but near/far */
@@ -77,6 +81,14 @@ double sw_poly_scale(const swarp_polyhedron* p);
 void sw_poly_finalize(swarp_polyhedron* p, uint32_t first_new, double scale /* 0: compute */);
 /* copy only the used parts */
 void sw_poly_copy(const swarp_polyhedron* in, swarp_polyhedron* out);
+/* a caller's polyhedron: vertex and face counts within capacity
+ * (SWARP_ERR_INVALID_ARGUMENT) ... */
+swarp_status sw_poly_check_counts(const swarp_polyhedron* in);
+/* ... then finite vertices (SWARP_ERR_NON_FINITE), loops within capacity
+ * and indices below vertex_count (SWARP_ERR_INVALID_ARGUMENT) */
+swarp_status sw_poly_check_contents(const swarp_polyhedron* in);
+/* both: a caller's polyhedron, counts within capacity, indices valid, finite */
+swarp_status sw_poly_validate(const swarp_polyhedron* in);
 
 /* H = V ∩ S and B without argument checks. */
 swarp_status sw_body_h(const swarp_camera* cam, double near, double far, const swarp_aabb* box,
