@@ -72,9 +72,9 @@ swarp_vec3 sw_follow_turn(swarp_vec3 h, swarp_vec3 t, swarp_vec3 a, double budge
 static int sw_perp_unit_len(swarp_vec3 h, swarp_vec3 a, swarp_vec3* out, double* len) {
     swarp_vec3 p = sw_sub(h, sw_scale(a, sw_dot(h, a)));
     *len = sw_glen(p);
-    /* below 1e-8 the direction is rounding noise of a previous axis 90°
-     * or more away: no usable transport (a teleport) */
-    if (!(*len > 1e-8)) return 0;
+    /* below SW_FOLLOW_PERP_MIN the direction is rounding noise of a
+     * previous axis 90° or more away: no usable transport (a teleport) */
+    if (!(*len > SW_FOLLOW_PERP_MIN)) return 0;
     return sw_gnormalize(p, out);
 }
 static int sw_perp_unit(swarp_vec3 h, swarp_vec3 a, swarp_vec3* out) {

@@ -157,6 +157,11 @@ typedef struct sw_follow {
     swarp_vec3 up;   /* unit, perpendicular to axis */
     swarp_vec3 view; /* the previous view direction (unit) */
 } sw_follow;
+/* A previous direction projected normal to the new axis is rounding noise
+ * below this length (sin of its angle to the axis; a unit vector's rounding
+ * is ~1e-16, so its direction would be off by eps/length): the previous
+ * axis turned by about 90° or more, nothing to follow. */
+#define SW_FOLLOW_PERP_MIN 1e-8
 /* h (unit, perpendicular to a) turned about a toward t (unit, perpendicular
  * to a, t·h >= 0) by at most budget radians; *lag = 1 when it stopped short
  * by more than `aligned` radians (sw_follow_aligned_tol) */
