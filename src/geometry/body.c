@@ -23,6 +23,9 @@
  * flat H's normal grazes its plane: the rounding of unit vectors (a few
  * eps), so B is built in the plane (sw_flat_extend). */
 #define SW_BODY_GRAZING_COS 1e-15
+/* The longest sweep H + T u: finite for |H| below DBL_MAX/2 (see
+ * sw_body_from_h_ex). */
+#define SW_SWEEP_T_MAX (0.25 * DBL_MAX)
 
 static int sw_face_is_front(swarp_plane p, swarp_vec3 u) {
     double c = p.a * u.x + p.b * u.y + p.c * u.z;
@@ -593,11 +596,12 @@ static swarp_status sw_body_from_h_ex(const swarp_polyhedron* H, const swarp_lig
         double T = 2.0 * diag + 1e-300;
         /* a box reaching to ±DBL_MAX (valid input) has diag(S) ~ DBL_MAX:
          * 2 diag overflows and the extruded copies would be inf (inf
-         * vertices of B with SWARP_OK).  DBL_MAX/4 is as far as H + T u stays finite for |H| below
-         * DBL_MAX/2; the box clip then cuts the sweep where it leaves S, and
-         * a sweep longer than that inside S leaves the double range (checked
-         * below: SWARP_ERR_OUT_OF_RANGE). */
-        if (!(T <= 0.25 * DBL_MAX)) T = 0.25 * DBL_MAX;
+         * vertices of B with SWARP_OK).  SW_SWEEP_T_MAX = DBL_MAX/4 is as
+         * far as H + T u stays finite for |H| below DBL_MAX/2; the box clip
+         * then cuts the sweep where it leaves S, and a sweep longer than
+         * that inside S leaves the double range (checked below:
+         * SWARP_ERR_OUT_OF_RANGE). */
+        if (!(T <= SW_SWEEP_T_MAX)) T = SW_SWEEP_T_MAX;
         int finalized = 0;
         s = flat ? sw_flat_extend(H, u, T, NULL, &M) : sw_extend(H, u, T, NULL, h_tidy, &M, &finalized);
         if (s != SWARP_OK) return s;

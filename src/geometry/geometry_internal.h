@@ -99,7 +99,7 @@ swarp_status sw_body_from_h(const swarp_polyhedron* H, const swarp_light* light,
 swarp_status sw_body_from_h_clipped(const swarp_polyhedron* H, const swarp_light* light, const swarp_aabb* box,
                                     swarp_polyhedron* B);
 /* H = V ∩ S with the eye at the origin (H_rel camera-relative) and its view
- * depth range: the adjusted near/far of swarp_setup (src/body.c) */
+ * depth range: the adjusted near/far of swarp_setup (body.c) */
 swarp_status sw_body_h_eye(const swarp_camera* cam, double near, double far, const swarp_aabb* box,
                            swarp_polyhedron* H_rel, double* zmin, double* zmax);
 /* p + t (vertices and planes) */
@@ -141,14 +141,14 @@ static inline swarp_vec3 sw_project(const swarp_mat4* m, swarp_vec3 p) {
     return sw_v3(h.x / h.w, h.y / h.w, h.z / h.w);
 }
 
-struct sw_follow; /* src/follow.c, below */
-/* PSM [KOZ] for the one call (src/psm.c); fills light_view, light_proj,
+struct sw_follow; /* follow.c, below */
+/* PSM [KOZ] for the one call (psm.c); fills light_view, light_proj,
  * matrix, n_eye, n_light, gamma, light_near/far of res. */
 swarp_status sw_psm_setup(const swarp_camera* cam, const swarp_light* light, const swarp_vec3* B, size_t nb,
                           const swarp_polyhedron* B_poly, const swarp_vec3* H, size_t nh, double near, double far,
                           const swarp_setup_options* o, const struct sw_follow* fw, swarp_setup_result* res);
 
-/* ---- coherent light frames (src/follow.c) -------------------------------
+/* ---- coherent light frames (follow.c) -----------------------------------
  * The previous frame's light frame for swarp_setup_follow: directional and
  * point lights: the light view's axis and up (world); PSM: the light
  * camera's axis (sign free) and right vector in post-perspective space. */

@@ -154,7 +154,7 @@ SWARP_API swarp_status swarp_warp_lispsm(const swarp_mat4* light_view, const swa
     swarp_mat4 P, L_inv;
     swarp_warp_info info;
     /* a look-at (swarp_focus_light_view's): its exact rigid inverse; a
-     * general inversion called light views 1e300 from the origin singular */
+     * general inversion reports light views 1e300 from the origin singular */
     if (sw_is_rigid(light_view)) sw_rigid_inverse(light_view, &L_inv);
     else if (!sw_invert(light_view, &L_inv)) return SWARP_ERR_SINGULAR;
     for (size_t i = 0; i < count; ++i) {
