@@ -43,10 +43,6 @@ static inline double sw_half_fovy(double fovy) {
 }
 static inline double sw_max(double a, double b) { return a > b ? a : b; }
 static inline double sw_min(double a, double b) { return a < b ? a : b; }
-/* A reference axis for a vector perpendicular to the unit n: the first of
- * x, y, z with |n_k| below this.  One always is (three components of 0.6 or
- * more would make |n| >= 1.04), so ref x n is at least 0.8 long. */
-#define SW_REF_AXIS_MAX 0.6
 
 /* ---- argument checks shared by the geometry entry points ---------------- */
 swarp_status sw_check_camera_shape(const swarp_camera* cam);   /* all but near/far */
@@ -140,6 +136,10 @@ static inline swarp_vec3 sw_project(const swarp_mat4* m, swarp_vec3 p) {
     swarp_vec4 h = sw_xform_point(m, p);
     return sw_v3(h.x / h.w, h.y / h.w, h.z / h.w);
 }
+/* A reference axis for a vector perpendicular to the unit n: the first of
+ * x, y, z with |n_k| below this.  One always is (three components of 0.6 or
+ * more would make |n| >= 1.04), so ref x n is at least 0.8 long. */
+#define SW_REF_AXIS_MAX 0.6
 
 struct sw_follow; /* follow.c, below */
 /* PSM [KOZ] for the one call (psm.c); fills light_view, light_proj,
