@@ -19,6 +19,13 @@
 /* Faces of H whose plane passes within this many scale units of the light
  * position count as not visible from it (the light lies on their plane). */
 #define SW_BODY_VISIBLE_EPS_REL 1e-12
+/* A directional light whose direction makes a cosine below this with a
+ * flat H's normal grazes its plane: the rounding of unit vectors (a few
+ * eps), so B is built in the plane (sw_flat_extend). */
+#define SW_BODY_GRAZING_COS 1e-15
+/* The longest sweep H + T u: finite for |H| below DBL_MAX/2 (see
+ * sw_body_from_h_ex). */
+#define SW_SWEEP_T_MAX (0.25 * DBL_MAX)
 
 static int sw_face_is_front(swarp_plane p, swarp_vec3 u) {
     double c = p.a * u.x + p.b * u.y + p.c * u.z;
@@ -89,14 +96,14 @@ static swarp_status sw_flat_extend(const swarp_polyhedron* H, swarp_vec3 u, doub
             cls[i] = sw_dot(m, u) > 0.0;
     }
     /* The sweep stays in H's plane: u less its normal part (the light
-     * grazes the plane within 1e-15, the caller's test).  H + T u with u's
-     * normal part of 9e-16 moved the copies off a plane x = 1e5 by
-     * 5.6e-14, which rounded to the plane or an ulp (1.5e-11) below it by
-     * rounding mode; the light 1e-15 off that plane then saw B 7e-15 thick
-     * (SWARP_INFO_FLAT_EXTENT) or 3e-11, finer than the coordinates
-     * resolve (SWARP_ERR_DEGENERATE) (issue 9, fenv swarp_cascade_setup
-     * 960000 case 686393).  For an axis plane, n = ±e_k, u's k coordinate
-     * becomes 0 exactly and the copies keep H's exactly. */
+     * grazes the plane within SW_BODY_GRAZING_COS, the caller's test).
+     * With u's normal part kept (up to 1e-15), H + T u would move the
+     * copies off the plane by T times that, which can round to the plane or
+     * an ulp off it (1.5e-11 at x = 1e5) as the rounding falls; B would
+     * then be flat (SWARP_INFO_FLAT_EXTENT) or an ulp thick, finer than
+     * the coordinates resolve (SWARP_ERR_DEGENERATE).  For an axis plane,
+     * n = ±e_k, u's k coordinate becomes 0 exactly and the copies keep H's
+     * exactly. */
     if (!point) u = sw_sub(u, sw_scale(n, sw_dot(n, u)));
     swarp_vec3 pts[2 * SWARP_POLY_MAX_FACE_VERTICES + 1];
     uint32_t np = 0;
@@ -128,22 +135,32 @@ static swarp_status sw_flat_extend(const swarp_polyhedron* H, swarp_vec3 u, doub
  * -c_k p_j + c_j p_k <= 0: a non-negative combination of two of H's own
  * planes, so H lies inside it whatever the rounding, and it contains u (or
  * l) up to the rounding of the c.  The cross product (a - b) x u of the
- * edge's end points used before flips when the edge is all but parallel to
- * u (a grazing light, issue 9) and cut H.  The combination cancels in turn
+ * edge's end points, by contrast, flips when the edge is all but parallel
+ * to u (a grazing light) and would cut H.  The combination cancels in turn
  * when p_j and p_k are all but opposite (an all but flat H): its normal is
- * then |n| << w_j + w_k, and the cross product is taken.  Weights below
- * 1e-150 are scaled to 1 first: their products must not underflow.  0: no side
- * face (both weights 0, or an edge parallel to u: zero area). */
+ * then |n| < SW_SIDE_CANCEL_REL (w_j + w_k), and the cross product is
+ * taken.  Weights below SW_SIDE_WEIGHT_TINY are scaled to 1 first: their
+ * products must not underflow.  0: no side face (both weights 0, or an
+ * edge parallel to u: zero area). */
+/* Weights of a silhouette plane below this are scaled to 1 first: their
+ * products with unit normals (down to 1e-150 per component) stay normal
+ * doubles with full precision. */
+#define SW_SIDE_WEIGHT_TINY 1e-150
+/* A combined normal shorter than this fraction of the weights has lost
+ * three digits or more to cancellation (all but opposite faces): the
+ * plane is taken through the edge's end points instead. */
+#define SW_SIDE_CANCEL_REL 1e-3
+
 static int sw_side_plane(const swarp_polyhedron* H, uint8_t a, uint8_t b, uint32_t j, double cj, uint32_t k,
                          double ck, swarp_vec3 u, const swarp_vec3* apex, swarp_plane* out) {
     const swarp_plane pj = H->planes[j], pk = H->planes[k];
     double wj = ck < 0.0 ? -ck : 0.0, wk = cj > 0.0 ? cj : 0.0;
     const double m = sw_max(wj, wk);
     if (!(m > 0.0)) return 0;
-    if (m < 1e-150) wj /= m, wk /= m; /* their products with the normals would underflow */
+    if (m < SW_SIDE_WEIGHT_TINY) wj /= m, wk /= m; /* their products with the normals would underflow */
     swarp_vec3 n = sw_v3(wj * pj.a + wk * pk.a, wj * pj.b + wk * pk.b, wj * pj.c + wk * pk.c);
     double len = sw_glen(n), d = wj * pj.d + wk * pk.d;
-    if (!(len >= 1e-3 * (wj + wk))) {
+    if (!(len >= SW_SIDE_CANCEL_REL * (wj + wk))) {
         /* all but opposite faces (an all but flat H): the combination is
          * the noise of the two normals; the plane through the end points
          * and u holds the edge and its sweep whatever the noise.  Its side:
@@ -205,139 +222,183 @@ static int sw_loops_tidy(const swarp_polyhedron* H) {
     return 1;
 }
 
-/* conv(H ∪ (H + T u)) (apex == NULL) or conv(H ∪ {apex}) for a solid H.
- *
- * For the sweep of a tidy H (the usual case) the result is written already
- * in the form sw_poly_finalize would give it, and *finalized is set: only
- * the vertices some face uses (a vertex of H on a back face, a translated
- * copy of one on a front face), numbered in the same order.  Otherwise every
- * vertex of H and of its copy (or the apex) is written and the caller
- * finalizes. */
-static swarp_status sw_extend(const swarp_polyhedron* H, swarp_vec3 u, double T, const swarp_vec3* apex,
-                              int h_tidy, swarp_polyhedron* out, int* finalized) {
-    const uint32_t nv = H->vertex_count;
+/* The working state of sw_extend: which faces of H face u (or the apex),
+ * their weights c, the output index of each vertex and copy, and the front
+ * faces' directed edges. */
+typedef struct sw_ext {
     int front[SWARP_POLY_MAX_FACES];
     /* c[f]: face f's plane at the apex, or n_f·u (its value at the point at
-     * infinity along u): the weights of the silhouette planes below */
+     * infinity along u): the weights of the silhouette planes */
     double c[SWARP_POLY_MAX_FACES];
+    /* id[]: the output index of each vertex of H (slot nv + i: the copy of
+     * vertex i, or slot nv: the apex) */
+    uint8_t id[SWARP_POLY_MAX_VERTICES];
+    /* directed edges of the front faces, as bit sets per start vertex */
+    uint64_t front_edge[SWARP_POLY_MAX_VERTICES][SWARP_POLY_MAX_VERTICES / 64];
+    /* front_faces[p]: the front faces at vertex p, as a bit set (64 faces) */
+    uint64_t front_faces[SWARP_POLY_MAX_VERTICES];
+    uint32_t tf; /* output faces so far */
+} sw_ext;
+_Static_assert(SWARP_POLY_MAX_FACES <= 64, "face sets are 64-bit");
+
+/* Which faces of H face u (the sweep) or see the apex (by more than the
+ * visibility tolerance), and their weights.  Returns whether any does. */
+static int sw_extend_classify(const swarp_polyhedron* H, swarp_vec3 u, const swarp_vec3* apex, sw_ext* x) {
     int any_front = 0;
-    *finalized = 0;
     /* the tolerance is only needed for the apex (a pass over H's vertices) */
     const double eps = apex ? SW_BODY_VISIBLE_EPS_REL * sw_poly_scale(H) : 0.0;
     for (uint32_t f = 0; f < H->face_count; ++f) {
         swarp_plane p = H->planes[f];
         if (apex) {
-            c[f] = p.a * apex->x + p.b * apex->y + p.c * apex->z + p.d;
-            front[f] = c[f] > eps;
+            x->c[f] = p.a * apex->x + p.b * apex->y + p.c * apex->z + p.d;
+            x->front[f] = x->c[f] > eps;
         } else {
-            c[f] = p.a * u.x + p.b * u.y + p.c * u.z;
-            front[f] = sw_face_is_front(p, u);
+            x->c[f] = p.a * u.x + p.b * u.y + p.c * u.z;
+            x->front[f] = sw_face_is_front(p, u);
         }
-        any_front |= front[f];
+        any_front |= x->front[f];
     }
-    if (!any_front) { /* apex inside H: the hull is H */
+    return any_front;
+}
+
+/* The sweep's vertices as sw_poly_finalize would leave them for a tidy H:
+ * only those some face uses (a vertex of H on a back face, a translated
+ * copy of one on a front face), numbered in the same order.  Returns their
+ * count. */
+static uint32_t sw_sweep_vertices_used(const swarp_polyhedron* H, swarp_vec3 u, double T, sw_ext* x,
+                                       swarp_polyhedron* out) {
+    const uint32_t nv = H->vertex_count;
+    uint8_t on_back[SWARP_POLY_MAX_VERTICES], on_front[SWARP_POLY_MAX_VERTICES];
+    memset(on_back, 0, nv);
+    memset(on_front, 0, nv);
+    for (uint32_t g = 0; g < H->face_count; ++g) {
+        uint8_t* mark = x->front[g] ? on_front : on_back;
+        for (uint32_t j = 0; j < H->face_vertex_count[g]; ++j) mark[H->face_vertices[g][j]] = 1;
+    }
+    uint32_t k = 0;
+    for (uint32_t i = 0; i < nv; ++i)
+        if (on_back[i]) {
+            x->id[i] = (uint8_t)k;
+            out->vertices[k++] = H->vertices[i];
+        }
+    for (uint32_t i = 0; i < nv; ++i)
+        if (on_front[i]) {
+            x->id[nv + i] = (uint8_t)k;
+            out->vertices[k++] = sw_add(H->vertices[i], sw_scale(u, T));
+        }
+    return k;
+}
+
+/* The front faces' directed edges and the front faces at each vertex. */
+static void sw_front_edges(const swarp_polyhedron* H, sw_ext* x) {
+    const uint32_t nv = H->vertex_count;
+    memset(x->front_edge, 0, nv * sizeof x->front_edge[0]);
+    memset(x->front_faces, 0, nv * sizeof x->front_faces[0]);
+    for (uint32_t g = 0; g < H->face_count; ++g) {
+        if (!x->front[g]) continue;
+        uint32_t m = H->face_vertex_count[g];
+        for (uint32_t j = 0; j < m; ++j) {
+            uint8_t p = H->face_vertices[g][j], q = H->face_vertices[g][j + 1 == m ? 0 : j + 1];
+            x->front_edge[p][q >> 6] |= (uint64_t)1 << (q & 63);
+            x->front_faces[p] |= (uint64_t)1 << g;
+        }
+    }
+}
+
+/* The back face f of H, kept, and a side face for each of its silhouette
+ * edges a -> b (the twin b -> a lies in a front face): the quad
+ * b -> a -> a' -> b' of the sweep, or the triangle b -> a -> apex. */
+static swarp_status sw_extend_back_face(const swarp_polyhedron* H, uint32_t f, swarp_vec3 u, const swarp_vec3* apex,
+                                        sw_ext* x, swarp_polyhedron* out) {
+    const uint32_t nv = H->vertex_count, n = H->face_vertex_count[f];
+    const uint8_t* l = H->face_vertices[f];
+    if (x->tf >= SWARP_POLY_MAX_FACES) return SWARP_ERR_CAPACITY;
+    out->planes[x->tf] = H->planes[f];
+    out->face_vertex_count[x->tf] = n;
+    for (uint32_t k = 0; k < n; ++k) out->face_vertices[x->tf][k] = x->id[l[k]];
+    ++x->tf;
+    for (uint32_t k = 0; k < n; ++k) {
+        uint8_t a = l[k], b = l[k + 1 == n ? 0 : k + 1];
+        int twin_front = (x->front_edge[b][a >> 6] >> (a & 63)) & 1u;
+        if (!twin_front) continue;
+        if (x->tf >= SWARP_POLY_MAX_FACES) return SWARP_ERR_CAPACITY;
+        uint8_t* q = out->face_vertices[x->tf];
+        uint32_t qn;
+        q[0] = x->id[b];
+        q[1] = x->id[a];
+        if (apex) {
+            q[2] = x->id[nv];
+            qn = 3;
+        } else {
+            q[2] = x->id[nv + a];
+            q[3] = x->id[nv + b];
+            qn = 4;
+        }
+        /* the plane through the edge containing u (or the apex) */
+        const uint32_t g = sw_face_with_edge(H, x->front_faces[a] & x->front_faces[b], b, a);
+        if (!sw_side_plane(H, a, b, g, x->c[g], f, x->c[f], u, apex, &out->planes[x->tf])) continue;
+        out->face_vertex_count[x->tf] = qn;
+        ++x->tf;
+    }
+    return SWARP_OK;
+}
+
+/* The front face f of H moved to H + T u: plane d' = d - n·(T u). */
+static swarp_status sw_extend_front_face(const swarp_polyhedron* H, uint32_t f, swarp_vec3 u, double T, sw_ext* x,
+                                         swarp_polyhedron* out) {
+    const uint32_t nv = H->vertex_count, n = H->face_vertex_count[f];
+    const uint8_t* l = H->face_vertices[f];
+    if (x->tf >= SWARP_POLY_MAX_FACES) return SWARP_ERR_CAPACITY;
+    swarp_plane p = H->planes[f];
+    p.d -= T * (p.a * u.x + p.b * u.y + p.c * u.z);
+    out->planes[x->tf] = p;
+    out->face_vertex_count[x->tf] = n;
+    for (uint32_t k = 0; k < n; ++k) out->face_vertices[x->tf][k] = x->id[nv + l[k]];
+    ++x->tf;
+    return SWARP_OK;
+}
+
+/* conv(H ∪ (H + T u)) (apex == NULL) or conv(H ∪ {apex}) for a solid H.
+ *
+ * For the sweep of a tidy H (the usual case) the result is written already
+ * in the form sw_poly_finalize would give it, and *finalized is set
+ * (sw_sweep_vertices_used).  Otherwise every vertex of H and of its copy
+ * (or the apex) is written and the caller finalizes. */
+static swarp_status sw_extend(const swarp_polyhedron* H, swarp_vec3 u, double T, const swarp_vec3* apex,
+                              int h_tidy, swarp_polyhedron* out, int* finalized) {
+    const uint32_t nv = H->vertex_count;
+    sw_ext x;
+    *finalized = 0;
+    if (!sw_extend_classify(H, u, apex, &x)) { /* apex inside H: the hull is H */
         sw_poly_copy(H, out);
         return SWARP_OK;
     }
-    /* vertices: H's, then either the translated copies or the apex; id[]
-     * is the output index of each (slot nv + i: the copy of vertex i) */
+    /* vertices: H's, then either the translated copies or the apex */
     uint32_t tv = apex ? nv + 1 : 2 * nv;
     if (tv > SWARP_POLY_MAX_VERTICES) return SWARP_ERR_CAPACITY;
-    uint8_t id[SWARP_POLY_MAX_VERTICES];
     if (!apex && (h_tidy || sw_loops_tidy(H))) {
-        uint8_t on_back[SWARP_POLY_MAX_VERTICES], on_front[SWARP_POLY_MAX_VERTICES];
-        memset(on_back, 0, nv);
-        memset(on_front, 0, nv);
-        for (uint32_t g = 0; g < H->face_count; ++g) {
-            uint8_t* mark = front[g] ? on_front : on_back;
-            for (uint32_t j = 0; j < H->face_vertex_count[g]; ++j) mark[H->face_vertices[g][j]] = 1;
-        }
-        uint32_t k = 0;
-        for (uint32_t i = 0; i < nv; ++i)
-            if (on_back[i]) {
-                id[i] = (uint8_t)k;
-                out->vertices[k++] = H->vertices[i];
-            }
-        for (uint32_t i = 0; i < nv; ++i)
-            if (on_front[i]) {
-                id[nv + i] = (uint8_t)k;
-                out->vertices[k++] = sw_add(H->vertices[i], sw_scale(u, T));
-            }
-        tv = k;
+        tv = sw_sweep_vertices_used(H, u, T, &x, out);
         *finalized = 1;
     } else {
-        for (uint32_t i = 0; i < tv; ++i) id[i] = (uint8_t)i;
+        for (uint32_t i = 0; i < tv; ++i) x.id[i] = (uint8_t)i;
         for (uint32_t i = 0; i < nv; ++i) out->vertices[i] = H->vertices[i];
         if (apex)
             out->vertices[nv] = *apex;
         else
             for (uint32_t i = 0; i < nv; ++i) out->vertices[nv + i] = sw_add(H->vertices[i], sw_scale(u, T));
     }
-    /* directed edges of the front faces, as bit sets per start vertex */
-    uint64_t front_edge[SWARP_POLY_MAX_VERTICES][SWARP_POLY_MAX_VERTICES / 64];
-    /* front_faces[p]: the front faces at vertex p, as a bit set (64 faces) */
-    _Static_assert(SWARP_POLY_MAX_FACES <= 64, "face sets are 64-bit");
-    uint64_t front_faces[SWARP_POLY_MAX_VERTICES];
-    memset(front_edge, 0, nv * sizeof front_edge[0]);
-    memset(front_faces, 0, nv * sizeof front_faces[0]);
-    for (uint32_t g = 0; g < H->face_count; ++g) {
-        if (!front[g]) continue;
-        uint32_t m = H->face_vertex_count[g];
-        for (uint32_t j = 0; j < m; ++j) {
-            uint8_t p = H->face_vertices[g][j], q = H->face_vertices[g][j + 1 == m ? 0 : j + 1];
-            front_edge[p][q >> 6] |= (uint64_t)1 << (q & 63);
-            front_faces[p] |= (uint64_t)1 << g;
-        }
-    }
-    uint32_t tf = 0;
+    sw_front_edges(H, &x);
+    x.tf = 0;
     for (uint32_t f = 0; f < H->face_count; ++f) {
-        uint32_t n = H->face_vertex_count[f];
-        const uint8_t* l = H->face_vertices[f];
-        if (!front[f]) {
-            if (tf >= SWARP_POLY_MAX_FACES) return SWARP_ERR_CAPACITY;
-            out->planes[tf] = H->planes[f];
-            out->face_vertex_count[tf] = n;
-            for (uint32_t k = 0; k < n; ++k) out->face_vertices[tf][k] = id[l[k]];
-            ++tf;
-            /* silhouette edges: edge a->b of this back face whose twin b->a
-             * lies in a front face */
-            for (uint32_t k = 0; k < n; ++k) {
-                uint8_t a = l[k], b = l[k + 1 == n ? 0 : k + 1];
-                int twin_front = (front_edge[b][a >> 6] >> (a & 63)) & 1u;
-                if (!twin_front) continue;
-                if (tf >= SWARP_POLY_MAX_FACES) return SWARP_ERR_CAPACITY;
-                /* side face b -> a -> a' -> b' (or b -> a -> apex) */
-                uint8_t* q = out->face_vertices[tf];
-                uint32_t qn;
-                q[0] = id[b];
-                q[1] = id[a];
-                if (apex) {
-                    q[2] = id[nv];
-                    qn = 3;
-                } else {
-                    q[2] = id[nv + a];
-                    q[3] = id[nv + b];
-                    qn = 4;
-                }
-                /* the plane through the edge containing u (or the apex) */
-                const uint32_t g = sw_face_with_edge(H, front_faces[a] & front_faces[b], b, a);
-                if (!sw_side_plane(H, a, b, g, c[g], f, c[f], u, apex, &out->planes[tf])) continue;
-                out->face_vertex_count[tf] = qn;
-                ++tf;
-            }
-        } else if (!apex) {
-            if (tf >= SWARP_POLY_MAX_FACES) return SWARP_ERR_CAPACITY;
-            swarp_plane p = H->planes[f];
-            /* translated plane: d' = d - n·(T u) */
-            p.d -= T * (p.a * u.x + p.b * u.y + p.c * u.z);
-            out->planes[tf] = p;
-            out->face_vertex_count[tf] = n;
-            for (uint32_t k = 0; k < n; ++k) out->face_vertices[tf][k] = id[nv + l[k]];
-            ++tf;
-        }
+        swarp_status s = SWARP_OK;
+        if (!x.front[f])
+            s = sw_extend_back_face(H, f, u, apex, &x, out);
+        else if (!apex)
+            s = sw_extend_front_face(H, f, u, T, &x, out);
+        if (s != SWARP_OK) return s;
     }
     out->vertex_count = tv;
-    out->face_count = tf;
+    out->face_count = x.tf;
     return SWARP_OK;
 }
 
@@ -355,12 +416,17 @@ void sw_depth_range_of(const swarp_polyhedron* P, swarp_vec3 eye, swarp_vec3 f, 
 /* A half-angle of the frustum beyond atan(SW_WIDE_TAN) (89.94°): its
  * corners reach far·tan, up to 1e12 far (an aspect of 1e300 is valid), and
  * V clipped by the box works at that scale: the clipper's tolerance (1e-12
- * of it) swallowed the box (H's vertices outside S, off their faces;
- * issue 9).  Such an H is built the other way round (sw_body_h_wide).  The
- * test costs no tan for the usual cameras. */
+ * of it) would swallow the box (H's vertices outside S, off their faces).
+ * Such an H is built the other way round (sw_body_h_wide).  The test costs
+ * no tan for the usual cameras (fovy <= SW_WIDE_FOVY and aspect <=
+ * SW_WIDE_ASPECT).  That shortcut is not exact: tan(3.1/2) = 48.1, so a
+ * camera with fovy just below 3.1 and an aspect just below 100 has
+ * tan(fovy/2)·aspect up to 4.8e3 > SW_WIDE_TAN and is not classed wide. */
 #define SW_WIDE_TAN 1e3
+#define SW_WIDE_FOVY 3.1
+#define SW_WIDE_ASPECT 1e2
 static int sw_frustum_is_wide(const swarp_camera* cam) {
-    if (!(cam->aspect > 1e2 || cam->fovy > 3.1)) return 0; /* tan(fovy/2) < 24.1: aspect 100 is short of 1e3 */
+    if (!(cam->aspect > SW_WIDE_ASPECT || cam->fovy > SW_WIDE_FOVY)) return 0;
     const double ty = tan(0.5 * cam->fovy);
     return ty > SW_WIDE_TAN || ty * cam->aspect > SW_WIDE_TAN;
 }
@@ -415,7 +481,7 @@ swarp_status sw_body_h(const swarp_camera* cam, double near, double far, const s
 }
 
 /* H = V ∩ S computed with the eye at the origin (as swarp_setup works, see
- * src/setup.c: coordinates of the size of H, not of the world) and its view
+ * setup.c: coordinates of the size of H, not of the world) and its view
  * depth range [zmin, zmax]; H_rel is in those camera-relative coordinates. */
 swarp_status sw_body_h_eye(const swarp_camera* cam, double near, double far, const swarp_aabb* box,
                            swarp_polyhedron* H_rel, double* zmin, double* zmax) {
@@ -435,7 +501,8 @@ swarp_status sw_body_h_eye(const swarp_camera* cam, double near, double far, con
 swarp_status sw_clip_light_pyramid(swarp_polyhedron* B, const swarp_light* light) {
     swarp_vec3 a = {0, 0, 1}, e1 = {1, 0, 0}, e2;
     sw_gnormalize(light->direction, &a); /* subnormal directions are valid (sw_gnormalize scales them) */
-    swarp_vec3 ref = fabs(a.x) < 0.6 ? sw_v3(1, 0, 0) : (fabs(a.y) < 0.6 ? sw_v3(0, 1, 0) : sw_v3(0, 0, 1));
+    swarp_vec3 ref = fabs(a.x) < SW_REF_AXIS_MAX ? sw_v3(1, 0, 0)
+                   : (fabs(a.y) < SW_REF_AXIS_MAX ? sw_v3(0, 1, 0) : sw_v3(0, 0, 1));
     sw_gnormalize(sw_cross(ref, a), &e1);
     e2 = sw_cross(a, e1);
     double c = cos(light->cone_angle), s = sin(light->cone_angle);
@@ -505,7 +572,7 @@ static swarp_status sw_body_from_h_ex(const swarp_polyhedron* H, const swarp_lig
         } else {
             swarp_vec3 dd = {0, -1, 0};
             sw_gnormalize(light->direction, &dd);
-            flat = fabs(p.a * dd.x + p.b * dd.y + p.c * dd.z) <= 1e-15; /* exactly grazing */
+            flat = fabs(p.a * dd.x + p.b * dd.y + p.c * dd.z) <= SW_BODY_GRAZING_COS;
         }
     }
     if (light->type == SWARP_LIGHT_POINT) {
@@ -528,13 +595,13 @@ static swarp_status sw_body_from_h_ex(const swarp_polyhedron* H, const swarp_lig
         double diag = sw_glen(sw_sub(box->max, box->min));
         double T = 2.0 * diag + 1e-300;
         /* a box reaching to ±DBL_MAX (valid input) has diag(S) ~ DBL_MAX:
-         * 2 diag overflows and the extruded copies became inf (inf vertices
-         * of B with SWARP_OK; issue 9, found through swarp_setup_points).
-         * DBL_MAX/4 is as far as H + T u stays finite for |H| below
-         * DBL_MAX/2; the box clip then cuts the sweep where it leaves S, and
-         * a sweep longer than that inside S leaves the double range (checked
-         * below: SWARP_ERR_OUT_OF_RANGE). */
-        if (!(T <= 0.25 * DBL_MAX)) T = 0.25 * DBL_MAX;
+         * 2 diag overflows and the extruded copies would be inf (inf
+         * vertices of B with SWARP_OK).  SW_SWEEP_T_MAX = DBL_MAX/4 is as
+         * far as H + T u stays finite for |H| below DBL_MAX/2; the box clip
+         * then cuts the sweep where it leaves S, and a sweep longer than
+         * that inside S leaves the double range (checked below:
+         * SWARP_ERR_OUT_OF_RANGE). */
+        if (!(T <= SW_SWEEP_T_MAX)) T = SW_SWEEP_T_MAX;
         int finalized = 0;
         s = flat ? sw_flat_extend(H, u, T, NULL, &M) : sw_extend(H, u, T, NULL, h_tidy, &M, &finalized);
         if (s != SWARP_OK) return s;
@@ -576,16 +643,11 @@ SWARP_API swarp_status swarp_body_from_h(const swarp_polyhedron* H, const swarp_
     if (s != SWARP_OK) return s;
     s = sw_check_box(scene);
     if (s != SWARP_OK) return s;
-    if (H->vertex_count > SWARP_POLY_MAX_VERTICES || H->face_count > SWARP_POLY_MAX_FACES)
-        return SWARP_ERR_INVALID_ARGUMENT;
+    s = sw_poly_check_counts(H);
+    if (s != SWARP_OK) return s;
     if (H->vertex_count == 0) return SWARP_ERR_BODY_EMPTY;
-    for (uint32_t i = 0; i < H->vertex_count; ++i)
-        if (!sw_finite3(&H->vertices[i])) return SWARP_ERR_NON_FINITE;
-    for (uint32_t f = 0; f < H->face_count; ++f) {
-        if (H->face_vertex_count[f] > SWARP_POLY_MAX_FACE_VERTICES) return SWARP_ERR_INVALID_ARGUMENT;
-        for (uint32_t k = 0; k < H->face_vertex_count[f]; ++k)
-            if (H->face_vertices[f][k] >= H->vertex_count) return SWARP_ERR_INVALID_ARGUMENT;
-    }
+    s = sw_poly_check_contents(H);
+    if (s != SWARP_OK) return s;
     swarp_polyhedron B;
     s = sw_body_from_h(H, light, scene, &B);
     if (s != SWARP_OK) return s;
@@ -623,8 +685,8 @@ SWARP_API swarp_status swarp_body_adjusted_range(const swarp_camera* cam, const 
     s = sw_body_h_eye(cam, cam->near, cam->far, scene, &H, &mn, &mx);
     if (s != SWARP_OK) return s;
     /* H ⊂ V: clamp rounding to the frustum's own range, near included: for
-     * a range one ulp wide the depths of H rounded above far, and near came
-     * out above far (issue 9, seed 7 case 715126) */
+     * a range one ulp wide the depths of H can round above far, and near
+     * would come out above far */
     *out_near = sw_min(sw_max(mn, cam->near), cam->far);
     *out_far = sw_min(sw_max(mx, *out_near), cam->far);
     return SWARP_OK;
@@ -635,15 +697,8 @@ SWARP_API swarp_status swarp_body_receivers(const swarp_polyhedron* H, const swa
     if (!H || !light || !out) return SWARP_ERR_NULL_POINTER;
     swarp_status s = sw_check_light(light);
     if (s != SWARP_OK) return s;
-    if (H->vertex_count > SWARP_POLY_MAX_VERTICES || H->face_count > SWARP_POLY_MAX_FACES)
-        return SWARP_ERR_INVALID_ARGUMENT;
-    for (uint32_t i = 0; i < H->vertex_count; ++i)
-        if (!sw_finite3(&H->vertices[i])) return SWARP_ERR_NON_FINITE;
-    for (uint32_t f = 0; f < H->face_count; ++f) {
-        if (H->face_vertex_count[f] > SWARP_POLY_MAX_FACE_VERTICES) return SWARP_ERR_INVALID_ARGUMENT;
-        for (uint32_t k = 0; k < H->face_vertex_count[f]; ++k)
-            if (H->face_vertices[f][k] >= H->vertex_count) return SWARP_ERR_INVALID_ARGUMENT;
-    }
+    s = sw_poly_validate(H);
+    if (s != SWARP_OK) return s;
     if (H->vertex_count == 0) return SWARP_ERR_BODY_EMPTY;
     swarp_polyhedron R;
     sw_poly_copy(H, &R);

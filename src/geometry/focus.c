@@ -36,10 +36,9 @@ int sw_look_at_finite(const swarp_mat4* m) {
 }
 
 /* The inverse of a rigid look-at L (rows R, translation t): R^T and -R^T t.
- * Exact where a general inversion rounds, and defined for every finite L: a
- * general inversion of P0 L called a point light 1e308 away singular
- * (issue 9, hard-case sweep: swarp_setup and swarp_warp_lispsm returned the
- * undocumented SWARP_ERR_SINGULAR). */
+ * Exact where a general inversion rounds, and defined for every finite L:
+ * a general inversion of P0 L for a point light 1e308 away (translations
+ * near DBL_MAX) reports the matrix singular. */
 void sw_rigid_inverse(const swarp_mat4* L, swarp_mat4* out) {
     swarp_mat4 m;
     memset(&m, 0, sizeof m);
@@ -51,14 +50,19 @@ void sw_rigid_inverse(const swarp_mat4* L, swarp_mat4* out) {
     sw_set(&m, 3, 3, 1.0);
     *out = m;
 }
-/* Is m a rigid motion (rows of its 3x3 orthonormal to 1e-9, last row
- * 0 0 0 1): a look-at of swarp_focus_light_view? */
+/* Rows of a rigid look-at are orthonormal to the rounding of unit vectors
+ * (~1e-16); 1e-9 accepts those and rejects any matrix that is not rigid
+ * (a scale or a shear by more than that). */
+#define SW_RIGID_TOL 1e-9
+
+/* Is m a rigid motion (rows of its 3x3 orthonormal to SW_RIGID_TOL, last
+ * row 0 0 0 1): a look-at of swarp_focus_light_view? */
 int sw_is_rigid(const swarp_mat4* m) {
     if (sw_at(m, 3, 0) != 0.0 || sw_at(m, 3, 1) != 0.0 || sw_at(m, 3, 2) != 0.0 || sw_at(m, 3, 3) != 1.0) return 0;
     for (int a = 0; a < 3; ++a)
         for (int b = a; b < 3; ++b) {
             double d = sw_at(m, a, 0) * sw_at(m, b, 0) + sw_at(m, a, 1) * sw_at(m, b, 1) + sw_at(m, a, 2) * sw_at(m, b, 2);
-            if (!(fabs(d - (a == b)) <= 1e-9)) return 0;
+            if (!(fabs(d - (a == b)) <= SW_RIGID_TOL)) return 0;
         }
     return 1;
 }
@@ -80,7 +84,7 @@ static int sw_aligned_up(const swarp_camera* cam, swarp_vec3 a, swarp_vec3* up) 
     }
     if (!sw_gnormalize(u, up)) {
         /* the field's single zero (measure zero): any perpendicular works */
-        swarp_vec3 ref = fabs(a.x) < 0.6 ? sw_v3(1, 0, 0) : sw_v3(0, 1, 0);
+        swarp_vec3 ref = fabs(a.x) < SW_REF_AXIS_MAX ? sw_v3(1, 0, 0) : sw_v3(0, 1, 0);
         sw_gnormalize(sw_cross(a, ref), up);
     }
     /* exact perpendicularity for the look-at */
@@ -95,8 +99,7 @@ swarp_status sw_light_view(const swarp_camera* cam, swarp_vec3 origin, swarp_vec
     swarp_mat4 m;
     sw_look_at(origin, a, up, &m);
     /* an origin near DBL_MAX: its distance along a row (the translation)
-     * can exceed DBL_MAX; the view is not representable (issue 9, hard-case
-     * sweep: an infinite view with SWARP_OK) */
+     * can exceed DBL_MAX; the view is not representable */
     if (!sw_look_at_finite(&m)) return SWARP_ERR_OVERFLOW;
     *out = m;
     return blend ? SWARP_INFO_LIGHT_PARALLEL : SWARP_OK;
@@ -150,6 +153,10 @@ SWARP_API swarp_status swarp_focus_light_view(const swarp_camera* cam, const swa
  * factor 1e4 for that, and an aspect ratio of 1e12 is far beyond what a
  * shadow map (or a float depth buffer, 2^-24) resolves. */
 #define SW_FIT_FLAT_REL 1e-12
+/* The width given to an all-flat B, relative to its coordinates' magnitude
+ * where 1 is below their rounding: 1e-6 is 1e10 ulps, far above the noise,
+ * and still a point at the map's resolution. */
+#define SW_FIT_FLAT_WIDTH_REL 1e-6
 
 static int sw_extent(const swarp_mat4* m, const swarp_vec3* pts, size_t n, double lo[3], double hi[3]) {
     double lx = INFINITY, ly = INFINITY, lz = INFINITY, hx = -INFINITY, hy = -INFINITY, hz = -INFINITY;
@@ -190,9 +197,9 @@ swarp_status sw_focus_fit(const swarp_mat4* m, const swarp_vec3* pts, size_t n, 
     swarp_status st = SWARP_OK;
     /* Every extent flat (B one point, to the rounding of its coordinates):
      * the widest extent is itself noise (1 ulp of 5.5 stretched over the
-     * map put B's only point at x = -1.4, hard-case sweep, setup_points
-     * case 154580); the width is 1 as documented, or 1e-6 of the
-     * coordinates where 1 is below their rounding. */
+     * map would put B's only point anywhere in it, x = -1.4 say); the width
+     * is 1 as documented, or SW_FIT_FLAT_WIDTH_REL of the coordinates where
+     * 1 is below their rounding. */
     {
         int flat_all = 1;
         double cmag = 0.0;
@@ -201,7 +208,7 @@ swarp_status sw_focus_fit(const swarp_mat4* m, const swarp_vec3* pts, size_t n, 
             flat_all &= !(w[k] > SW_FIT_FLAT_REL * mag) || !(w[k] > 0.0);
             cmag = fmax(cmag, fmax(fabs(lo[k]), fabs(hi[k])));
         }
-        if (flat_all) wmax = fmax(1.0, 1e-6 * cmag);
+        if (flat_all) wmax = fmax(1.0, SW_FIT_FLAT_WIDTH_REL * cmag);
     }
     for (int k = 0; k < 3; ++k) {
         /* below SW_FIT_FLAT_REL of the value's magnitude, or of the widest

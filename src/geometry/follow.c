@@ -17,7 +17,7 @@
  *        Δ = angle(previous axis, a) + angle(previous view dir, view dir).
  *
  * LiSPSM then warps along the frame's y axis, oriented by σ = sign(y·v),
- * with the strength of γ_eff = asin|y·v| (src/warp.c): exactly [RHS]'s warp
+ * with the strength of γ_eff = asin|y·v| (lispsm.c): exactly [RHS]'s warp
  * when y = ±v̂, exactly uniform where y ⟂ v_perp, where σ may change sign
  * without a jump (the warp is uniform there).  swarp_setup uses the same
  * oriented warp: its blended frame near parallel can have y·v < 0 too, and
@@ -37,9 +37,9 @@
  * directions compared are projections normal to the axis, unit vectors
  * divided by their length s (sin of the angle to the axis, down to 1e-8),
  * so their rounding is a few eps/s: up to 2e-8 rad, above this bound, and
- * whether a frame followed with Δ ~ 0 "lagged" was the rounding mode's
- * choice (issue 9, fenv swarp_setup_follow case 38987: a light 1e-7 from
- * the view, φ = 0.8e-9 to 2.9e-9 by mode).  The bound used is this plus
+ * with this bound alone whether a frame followed with Δ ~ 0 "lagged" (a
+ * light 1e-7 from the view: φ of 1e-9 to 3e-9) would be the rounding's
+ * choice.  The bound used is this plus
  * SW_FOLLOW_ALIGNED_EPS eps/s of both projections (sw_follow_aligned_tol):
  * at most 7e-7 rad, below what the follow bound allows for rounding (1e-6,
  * tests/robust). */
@@ -72,9 +72,9 @@ swarp_vec3 sw_follow_turn(swarp_vec3 h, swarp_vec3 t, swarp_vec3 a, double budge
 static int sw_perp_unit_len(swarp_vec3 h, swarp_vec3 a, swarp_vec3* out, double* len) {
     swarp_vec3 p = sw_sub(h, sw_scale(a, sw_dot(h, a)));
     *len = sw_glen(p);
-    /* below 1e-8 the direction is rounding noise of a previous axis 90°
-     * or more away: no usable transport (a teleport) */
-    if (!(*len > 1e-8)) return 0;
+    /* below SW_FOLLOW_PERP_MIN the direction is rounding noise of a
+     * previous axis 90° or more away: no usable transport (a teleport) */
+    if (!(*len > SW_FOLLOW_PERP_MIN)) return 0;
     return sw_gnormalize(p, out);
 }
 static int sw_perp_unit(swarp_vec3 h, swarp_vec3 a, swarp_vec3* out) {
@@ -139,7 +139,7 @@ swarp_status sw_warp_lispsm_oriented(const swarp_mat4* M, const swarp_mat4* M_in
  * light_proj = A_fit·Q·P_c, so A_fit·Q = light_proj·P_c^-1 with P_c the
  * (slid-back) camera projection of that frame (near + δ = n_eye).  Rows 2
  * and 3 of A_fit·Q are multiples of the axis a, row 0 is a multiple of the
- * right vector e1 plus one of a (src/psm.c). */
+ * right vector e1 plus one of a (psm.c). */
 static swarp_status sw_follow_psm(const swarp_setup_result* p, const swarp_camera* pc, sw_follow* out) {
     double N = p->n_eye, F = p->view_far + (p->n_eye - p->view_near);
     if (!sw_finite(N) || !sw_finite(F) || !sw_finite(p->view_near) || !sw_finite(p->view_far))
@@ -156,10 +156,10 @@ static swarp_status sw_follow_psm(const swarp_setup_result* p, const swarp_camer
         row[i] = sw_v3(sw_at(m, i, 0) * tx, sw_at(m, i, 1) * ty, sw_at(m, i, 3) / c23);
     }
     if (!sw_finite(tx)) {
-        /* aspect near DBL_MAX: t_x overflows (the rows became inf/NaN and
-         * the axis a "zero vector", hard-case sweep, setup_follow seed 7
-         * case 112641).  Only the rows' directions are used: all divided
-         * by t_x, (m_i0, m_i1 / aspect, m_i3 / (c23 t_y aspect)). */
+        /* aspect near DBL_MAX: t_x overflows (the rows would be inf/NaN
+         * and the axis a "zero vector").  Only the rows' directions are
+         * used: all divided by t_x, (m_i0, m_i1 / aspect, m_i3 / (c23 t_y
+         * aspect)). */
         for (int i = 0; i < 4; ++i) {
             const swarp_mat4* m = &p->light_proj;
             row[i] = sw_v3(sw_at(m, i, 0), sw_at(m, i, 1) / pc->aspect, sw_at(m, i, 3) / c23 / ty / pc->aspect);

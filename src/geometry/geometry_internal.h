@@ -73,6 +73,14 @@ double sw_poly_scale(const swarp_polyhedron* p);
 void sw_poly_finalize(swarp_polyhedron* p, uint32_t first_new, double scale /* 0: compute */);
 /* copy only the used parts */
 void sw_poly_copy(const swarp_polyhedron* in, swarp_polyhedron* out);
+/* a caller's polyhedron: vertex and face counts within capacity
+ * (SWARP_ERR_INVALID_ARGUMENT) ... */
+swarp_status sw_poly_check_counts(const swarp_polyhedron* in);
+/* ... then finite vertices (SWARP_ERR_NON_FINITE), loops within capacity
+ * and indices below vertex_count (SWARP_ERR_INVALID_ARGUMENT) */
+swarp_status sw_poly_check_contents(const swarp_polyhedron* in);
+/* both: a caller's polyhedron, counts within capacity, indices valid, finite */
+swarp_status sw_poly_validate(const swarp_polyhedron* in);
 
 /* H = V ∩ S and B without argument checks. */
 swarp_status sw_body_h(const swarp_camera* cam, double near, double far, const swarp_aabb* box,
@@ -83,7 +91,7 @@ swarp_status sw_body_from_h(const swarp_polyhedron* H, const swarp_light* light,
 swarp_status sw_body_from_h_clipped(const swarp_polyhedron* H, const swarp_light* light, const swarp_aabb* box,
                                     swarp_polyhedron* B);
 /* H = V ∩ S with the eye at the origin (H_rel camera-relative) and its view
- * depth range: the adjusted near/far of swarp_setup (src/body.c) */
+ * depth range: the adjusted near/far of swarp_setup (body.c) */
 swarp_status sw_body_h_eye(const swarp_camera* cam, double near, double far, const swarp_aabb* box,
                            swarp_polyhedron* H_rel, double* zmin, double* zmax);
 /* p + t (vertices and planes) */
@@ -124,15 +132,19 @@ static inline swarp_vec3 sw_project(const swarp_mat4* m, swarp_vec3 p) {
     swarp_vec4 h = sw_xform_point(m, p);
     return sw_v3(h.x / h.w, h.y / h.w, h.z / h.w);
 }
+/* A reference axis for a vector perpendicular to the unit n: the first of
+ * x, y, z with |n_k| below this.  One always is (three components of 0.6 or
+ * more would make |n| >= 1.04), so ref x n is at least 0.8 long. */
+#define SW_REF_AXIS_MAX 0.6
 
-struct sw_follow; /* src/follow.c, below */
-/* PSM [KOZ] for the one call (src/psm.c); fills light_view, light_proj,
+struct sw_follow; /* follow.c, below */
+/* PSM [KOZ] for the one call (psm.c); fills light_view, light_proj,
  * matrix, n_eye, n_light, gamma, light_near/far of res. */
 swarp_status sw_psm_setup(const swarp_camera* cam, const swarp_light* light, const swarp_vec3* B, size_t nb,
                           const swarp_polyhedron* B_poly, const swarp_vec3* H, size_t nh, double near, double far,
                           const swarp_setup_options* o, const struct sw_follow* fw, swarp_setup_result* res);
 
-/* ---- coherent light frames (src/follow.c) -------------------------------
+/* ---- coherent light frames (follow.c) -----------------------------------
  * The previous frame's light frame for swarp_setup_follow: directional and
  * point lights: the light view's axis and up (world); PSM: the light
  * camera's axis (sign free) and right vector in post-perspective space. */
@@ -141,6 +153,11 @@ typedef struct sw_follow {
     swarp_vec3 up;   /* unit, perpendicular to axis */
     swarp_vec3 view; /* the previous view direction (unit) */
 } sw_follow;
+/* A previous direction projected normal to the new axis is rounding noise
+ * below this length (sin of its angle to the axis; a unit vector's rounding
+ * is ~1e-16, so its direction would be off by eps/length): the previous
+ * axis turned by about 90° or more, nothing to follow. */
+#define SW_FOLLOW_PERP_MIN 1e-8
 /* h (unit, perpendicular to a) turned about a toward t (unit, perpendicular
  * to a, t·h >= 0) by at most budget radians; *lag = 1 when it stopped short
  * by more than `aligned` radians (sw_follow_aligned_tol) */

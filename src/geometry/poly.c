@@ -21,9 +21,13 @@ void sw_camera_basis(const swarp_camera* cam, swarp_vec3* f, swarp_vec3* r, swar
 
 /* ---- construction ---------------------------------------------------------- */
 
+/* The floor of a polyhedron's scale: keeps the relative epsilons
+ * (SWARP_POLY_EPS_REL times the scale) > 0 for a polyhedron at the origin. */
+#define SW_POLY_SCALE_MIN 1e-300
+
 /* Largest absolute coordinate (at least the extent): the scale the relative
  * epsilons refer to.  Never 0 for a non-empty polyhedron of non-zero size;
- * a tiny floor keeps eps > 0 for a polyhedron at the origin. */
+ * SW_POLY_SCALE_MIN keeps eps > 0 for a polyhedron at the origin. */
 double sw_poly_scale(const swarp_polyhedron* p) {
     double s = 0.0;
     for (uint32_t i = 0; i < p->vertex_count; ++i) {
@@ -33,10 +37,9 @@ double sw_poly_scale(const swarp_polyhedron* p) {
         s = ay > s ? ay : s;
         s = az > s ? az : s;
     }
-    return s > 1e-300 ? s : 1e-300;
+    return s > SW_POLY_SCALE_MIN ? s : SW_POLY_SCALE_MIN;
 }
 
-/* Newell normal of a loop (robust for non-planar or tiny loops). */
 /* Renumber every face loop through remap, drop repeated neighbours and faces
  * left with fewer than 3 vertices (compacted in place: row nf <= f, and within
  * a row m <= k), mark the vertices still used and return the face count.
@@ -63,21 +66,28 @@ static uint32_t sw_remap_faces(swarp_polyhedron* p, const uint8_t* remap, uint8_
     return nf;
 }
 
+/* A loop less than this across (centred) is scaled to size 1 before
+ * Newell's products: theirs are then at least 1e-200 (normal doubles, full
+ * precision) for every loop above 1e-100, and a smaller one is scaled. */
+#define SW_NEWELL_TINY 1e-100
+
+/* Newell normal of a loop (robust for non-planar or tiny loops). */
 static swarp_vec3 sw_newell(const swarp_vec3* v, const uint8_t* idx, uint32_t n) {
     swarp_vec3 nn = {0, 0, 0};
     swarp_vec3 c = {0, 0, 0};
     for (uint32_t i = 0; i < n; ++i) c = sw_add(c, v[idx[i]]);
     c = sw_scale(c, 1.0 / n); /* centred: no cancellation for large worlds */
     /* a loop 1e-160 across (the corners of a matrix with w ~ 1e160) has
-     * products of 1e-320: subnormal, and its unit normal came out inf
-     * (issue 9); such a loop is scaled to size 1 first.  (A loop 1e300
-     * across overflows to inf: the face is dropped as collapsed.) */
+     * products of 1e-320: subnormal, with too few digits for a direction,
+     * and its unit normal would come out inf; such a loop is scaled to size
+     * 1 first (SW_NEWELL_TINY).  (A loop 1e300 across overflows to inf: the
+     * face is dropped as collapsed.) */
     double m = 0.0, inv = 1.0;
     for (uint32_t i = 0; i < n; ++i) {
         swarp_vec3 a = sw_sub(v[idx[i]], c);
         m = sw_max(m, sw_max(fabs(a.x), sw_max(fabs(a.y), fabs(a.z))));
     }
-    const int scaled = m < 1e-100 && m > 0.0;
+    const int scaled = m < SW_NEWELL_TINY && m > 0.0;
     if (scaled) inv = m;
     for (uint32_t i = 0; i < n; ++i) {
         swarp_vec3 a = sw_sub(v[idx[i]], c), b = sw_sub(v[idx[i + 1 == n ? 0 : i + 1]], c);
@@ -199,11 +209,10 @@ static int sw_points_apart(const swarp_vec3* v, uint32_t n, double eps) {
  * corner order), so one decision orients them all: the face whose centre
  * lies farthest from the centroid along its normal says whether they point
  * away from it (so the corner order's handedness does not matter).  Each
- * face deciding for itself let rounding decide for the two faces of a
- * hexahedron flat across them (a frustum of aspect 1e-87: the distance is
- * 1e-93 against a rounding of 1e-22) and oriented both the same way, an H
- * with no inside: the body came out empty or not by rounding (issue 9,
- * fenv: swarp_setup_follow 30000 case 27474). */
+ * face deciding for itself would let rounding decide for the two faces of
+ * a hexahedron flat across them (a frustum of aspect 1e-87: the distance
+ * is 1e-93 against a rounding of 1e-22) and could orient both the same
+ * way, an H with no inside, empty or not by rounding alone. */
 void sw_poly_from_corners(const swarp_vec3 c[8], swarp_polyhedron* out) {
     static const uint8_t quads[6][4] = {{0, 4, 6, 2}, {1, 3, 7, 5}, {0, 1, 5, 4},
                                         {2, 6, 7, 3}, {0, 2, 3, 1}, {4, 5, 7, 6}};
@@ -315,7 +324,7 @@ swarp_status sw_poly_from_frustum(const swarp_camera* cam, double near, double f
     double ty = fmin(tan(0.5 * cam->fovy), SW_FRUSTUM_MAX_TAN), tx = fmin(ty * cam->aspect, SW_FRUSTUM_MAX_TAN);
     swarp_vec3 c[8];
     sw_frustum_corners_b(cam, f, r, u, tx, ty, near, far, c);
-    double scale = 1e-300;
+    double scale = SW_POLY_SCALE_MIN;
     for (int i = 0; i < 8; ++i) {
         if (!sw_finite3(&c[i])) return SWARP_ERR_NON_FINITE;
         scale = sw_max(scale, sw_max(fabs(c[i].x), sw_max(fabs(c[i].y), fabs(c[i].z))));
@@ -420,11 +429,10 @@ static double sw_pseudo_angle(double x, double y) {
 /* Where the edge i-j crosses the plane (dist: signed distances of its
  * ends, of opposite signs), interpolated from the end nearer to the plane:
  * p = a + (b - a) s with s = dist_a / (dist_a - dist_b) <= 1/2 is rounded by
- * eps (|a| + |p - a|).  From the far end, s ~ 1 and p = b + (a - b) s was
- * rounded by eps |b|: an edge from the light (50 units away) to a vertex of
- * H at 1.6e8 was cut 2e-8 off the box plane x = -45.3, by an amount and
- * direction the rounding mode decided (issue 9, fenv swarp_body_from_h
- * 480000 case 295909). */
+ * eps (|a| + |p - a|).  From the far end, s ~ 1 and p = b + (a - b) s is
+ * rounded by eps |b|: for an edge from a point near the plane to a vertex
+ * far beyond it (|b| >> |a|) that error exceeds the clip tolerance, and the
+ * cut would leave the plane by an amount and direction the rounding picks. */
 static inline swarp_vec3 sw_edge_cut(const swarp_vec3* v, const double* dist, uint8_t i, uint8_t j) {
     const uint8_t ia = fabs(dist[i]) <= fabs(dist[j]) ? i : j, ib = ia == i ? j : i;
     const double s = dist[ia] / (dist[ia] - dist[ib]);
@@ -434,63 +442,97 @@ static inline swarp_vec3 sw_edge_cut(const swarp_vec3* v, const double* dist, ui
 
 /* A cut on a box plane (n = ±e_k, unit_normal): its coordinate k is the
  * plane's, -d n_k, exactly.  Interpolated it carries a few ulps of the
- * coordinates (eps |a| + eps |p - a|): a view frustum clipped by a box
- * flat along x at 1e5 had H's cut vertices on the plane or 1 ulp (1.5e-11)
- * off it by rounding mode, and a light grazing that plane 1e-15 rad saw B
- * 7e-15 thick (SWARP_INFO_FLAT_EXTENT) or 3e-11, finer than the
- * coordinates resolve (SWARP_ERR_DEGENERATE) (issue 9, fenv
- * swarp_cascade_setup 960000 case 686393). */
+ * coordinates (eps |a| + eps |p - a|), so H's cut vertices would lie on the
+ * plane or an ulp off it as the rounding falls, and a light grazing that
+ * plane would see B either flat (SWARP_INFO_FLAT_EXTENT) or one ulp thick,
+ * finer than the coordinates resolve (SWARP_ERR_DEGENERATE).  Set exactly,
+ * the cut face lies in the box plane. */
 static inline void sw_cut_on_axis_plane(swarp_vec3* p, swarp_vec3 n, double d) {
     if (n.x != 0.0) p->x = -d * n.x;
     else if (n.y != 0.0) p->y = -d * n.y;
     else p->z = -d * n.z;
 }
 
-/* Keeps n·x + d <= 0; n need not be unit.  in and out may alias. */
-/* Clips in into out (out != in).  When no vertex lies outside, *unchanged
- * is set and out is not written. */
-static swarp_status sw_poly_clip_to(const swarp_polyhedron* in, swarp_vec3 n_raw, double d_raw,
-                                    swarp_polyhedron* out, int* unchanged, double scale /* 0: compute */,
-                                    int unit_normal /* n is a unit axis (box planes): no sqrt, no division */) {
-    *unchanged = 0;
-    swarp_vec3 n = n_raw;
-    double d = d_raw;
-    if (!unit_normal) {
-        /* coefficients of 1e-321 (valid: not zero) are scaled to 1 first:
-         * 1/|n| overflowed and the clip kept what it should cut (issue 9) */
-        const double m = sw_max(fabs(n_raw.x), sw_max(fabs(n_raw.y), fabs(n_raw.z)));
-        if (!(m > 0.0)) return SWARP_ERR_ZERO_VECTOR;
-        if (m < 1e-150 || m > 1e150) {
-            n_raw = sw_v3(n_raw.x / m, n_raw.y / m, n_raw.z / m);
-            d_raw /= m;
-            if (!sw_finite(d_raw)) { /* the plane beyond the double range: all kept or all cut */
-                if (d_raw < 0.0) {
-                    *unchanged = 1;
-                } else {
-                    out->vertex_count = 0;
-                    out->face_count = 0;
-                }
-                return SWARP_OK;
-            }
-        }
-        double len = sw_glen(n_raw);
-        if (!(len > 0.0)) return SWARP_ERR_ZERO_VECTOR;
-        n = sw_scale(n_raw, 1.0 / len);
-        d = d_raw / len;
-    }
-    const uint32_t nv = in->vertex_count;
-    if (nv == 0) {
-        *unchanged = 1;
-        return SWARP_OK;
-    }
-    /* tolerance for "on the plane": see SWARP_POLY_EPS_REL */
-    const double in_scale = scale > 0.0 ? scale : sw_poly_scale(in);
-    const double eps = SWARP_POLY_EPS_REL * sw_max(in_scale, fabs(d));
+/* The working state of one clip: the plane (unit normal), each input
+ * vertex's signed distance and class, and the output's bookkeeping: the
+ * output index of each kept input vertex (map), the on-plane output
+ * vertices (the cap's corners), the successor of each on the cap (the
+ * cap's edges are the in-plane edges of the kept faces, reversed), and the
+ * cut point of each strictly crossing edge (keyed by its end points, so
+ * both faces of an edge get the very same point). */
+typedef struct sw_clip {
+    swarp_vec3 n;
+    double d;
+    int unit_normal; /* n is a unit axis (box planes): no sqrt, no division */
     double dist[SWARP_POLY_MAX_VERTICES];
-    /* class bits per vertex: SW_IN, SW_ON (within eps of the plane), SW_OUT */
-    uint8_t cls[SWARP_POLY_MAX_VERTICES];
+    uint8_t cls[SWARP_POLY_MAX_VERTICES]; /* SW_IN, SW_ON (within eps of the plane), SW_OUT */
+    uint8_t map[SWARP_POLY_MAX_VERTICES];
+    uint8_t on_plane[SWARP_POLY_MAX_VERTICES];
+    uint32_t n_on;
+    uint8_t onf[SWARP_POLY_MAX_VERTICES], nxt[SWARP_POLY_MAX_VERTICES];
+    uint32_t n_cap;
+    int cap_bad;
+    int cap_coincides; /* a kept face lies in the plane, facing along +n */
+    uint8_t edge_lo[SWARP_POLY_MAX_VERTICES], edge_hi[SWARP_POLY_MAX_VERTICES], edge_v[SWARP_POLY_MAX_VERTICES];
+    uint32_t n_edges;
+    uint32_t tv, tf; /* output vertices and faces so far */
+} sw_clip;
+
+/* Outcomes of a clip decided before any face is walked. */
+enum { SW_CLIP_CUTS = 0, SW_CLIP_KEEPS_ALL, SW_CLIP_CUTS_ALL };
+
+/* Plane coefficients whose largest magnitude m lies outside [TINY, HUGE]
+ * are divided by m first: 1/|n| overflows for |n| below 1/DBL_MAX (a valid,
+ * non-zero n of 1e-321 would keep what it should cut), and divided by m the
+ * normal has a component of magnitude 1, well inside the range where its
+ * length is the plain sqrt of the sum of squares.  1e±150 keeps the squares
+ * of the coefficients in the normal range. */
+#define SW_CLIP_PLANE_TINY 1e-150
+#define SW_CLIP_PLANE_HUGE 1e150
+
+/* The plane n·x + d <= 0 with a unit normal (n need not be unit).  *trivial:
+ * SW_CLIP_KEEPS_ALL or SW_CLIP_CUTS_ALL when the rescaled offset leaves the
+ * double range (the plane is beyond every finite point). */
+static swarp_status sw_clip_plane_unit(swarp_vec3 n_raw, double d_raw, swarp_vec3* n, double* d, int* trivial) {
+    *trivial = SW_CLIP_CUTS;
+    const double m = sw_max(fabs(n_raw.x), sw_max(fabs(n_raw.y), fabs(n_raw.z)));
+    if (!(m > 0.0)) return SWARP_ERR_ZERO_VECTOR;
+    if (m < SW_CLIP_PLANE_TINY || m > SW_CLIP_PLANE_HUGE) {
+        n_raw = sw_v3(n_raw.x / m, n_raw.y / m, n_raw.z / m);
+        d_raw /= m;
+        if (!sw_finite(d_raw)) { /* the plane beyond the double range: all kept or all cut */
+            *trivial = d_raw < 0.0 ? SW_CLIP_KEEPS_ALL : SW_CLIP_CUTS_ALL;
+            return SWARP_OK;
+        }
+    }
+    double len = sw_glen(n_raw);
+    if (!(len > 0.0)) return SWARP_ERR_ZERO_VECTOR;
+    *n = sw_scale(n_raw, 1.0 / len);
+    *d = d_raw / len;
+    return SWARP_OK;
+}
+
+/* A clip that keeps everything (*unchanged, out not written) or nothing. */
+static swarp_status sw_clip_trivial(int trivial, swarp_polyhedron* out, int* unchanged) {
+    if (trivial == SW_CLIP_KEEPS_ALL) {
+        *unchanged = 1;
+    } else {
+        out->vertex_count = 0;
+        out->face_count = 0;
+    }
+    return SWARP_OK;
+}
+
+/* Signed distances and classes of in's vertices (eps: the on-plane
+ * tolerance).  Returns SW_CLIP_CUTS, or the trivial outcome when no vertex
+ * lies outside, or none inside or on the plane. */
+static int sw_clip_classify(const swarp_polyhedron* in, sw_clip* c, double eps) {
+    const uint32_t nv = in->vertex_count;
+    const swarp_vec3 n = c->n;
+    const double d = c->d;
+    double* dist = c->dist;
     int any_out = 0, any_in = 0;
-    if (unit_normal) { /* ±(one coordinate) + d: the same values as the dot with the axis */
+    if (c->unit_normal) { /* ±(one coordinate) + d: the same values as the dot with the axis */
         const swarp_vec3* v = in->vertices;
         if (n.x != 0.0)
             for (uint32_t i = 0; i < nv; ++i) dist[i] = n.x * v[i].x + d;
@@ -503,198 +545,269 @@ static swarp_status sw_poly_clip_to(const swarp_polyhedron* in, swarp_vec3 n_raw
     }
     for (uint32_t i = 0; i < nv; ++i) {
         int o = dist[i] > eps, u = dist[i] < -eps; /* branch-free */
-        cls[i] = (uint8_t)(SW_ON + 2 * o - u);     /* 4, 2 or 1 */
+        c->cls[i] = (uint8_t)(SW_ON + 2 * o - u);  /* 4, 2 or 1 */
         any_out |= o;
         any_in |= !o;
     }
-    if (!any_out) {
-        *unchanged = 1;
-        return SWARP_OK;
-    }
-    if (!any_in) {
-        out->vertex_count = 0;
-        out->face_count = 0;
-        return SWARP_OK;
-    }
+    if (!any_out) return SW_CLIP_KEEPS_ALL;
+    if (!any_in) return SW_CLIP_CUTS_ALL;
+    return SW_CLIP_CUTS;
+}
 
-    swarp_polyhedron* t = out; /* built in place (out != in) */
-    uint8_t map[SWARP_POLY_MAX_VERTICES];
+/* The kept (in or on) vertices of in, in order, as t's first vertices. */
+static void sw_clip_keep_vertices(const swarp_polyhedron* in, sw_clip* c, swarp_polyhedron* t) {
     uint32_t tv = 0;
-    uint8_t on_plane[SWARP_POLY_MAX_VERTICES];
-    uint32_t n_on = 0;
-    /* per output vertex: on the plane?  and its successor on the cap (the
-     * cap's edges are the in-plane edges of the kept faces, reversed) */
-    uint8_t onf[SWARP_POLY_MAX_VERTICES], nxt[SWARP_POLY_MAX_VERTICES];
-    uint32_t n_cap = 0;
-    int cap_bad = 0;
-    for (uint32_t i = 0; i < nv; ++i) {
-        if (cls[i] != SW_OUT) {
-            map[i] = (uint8_t)tv;
+    c->n_on = 0;
+    c->n_cap = 0;
+    c->cap_bad = 0;
+    c->cap_coincides = 0;
+    c->n_edges = 0;
+    c->tf = 0;
+    for (uint32_t i = 0; i < in->vertex_count; ++i) {
+        if (c->cls[i] != SW_OUT) {
+            c->map[i] = (uint8_t)tv;
             t->vertices[tv] = in->vertices[i];
-            onf[tv] = cls[i] == SW_ON;
-            nxt[tv] = 0xFF;
-            if (cls[i] == SW_ON) on_plane[n_on++] = (uint8_t)tv;
+            c->onf[tv] = c->cls[i] == SW_ON;
+            c->nxt[tv] = 0xFF;
+            if (c->cls[i] == SW_ON) c->on_plane[c->n_on++] = (uint8_t)tv;
             ++tv;
         }
     }
-    /* intersection points, one per crossing edge (keyed by its end points) */
-    const uint32_t n_kept = tv;
-    uint8_t edge_lo[SWARP_POLY_MAX_VERTICES], edge_hi[SWARP_POLY_MAX_VERTICES], edge_v[SWARP_POLY_MAX_VERTICES];
-    uint32_t n_edges = 0;
-    uint32_t tf = 0;
-    int cap_coincides = 0;
+    c->tv = tv;
+}
+
+/* The output vertex where the strictly crossing edge i-j meets the plane:
+ * cut once per edge and cached, so both faces of the edge share it. */
+static swarp_status sw_clip_edge_vertex(const swarp_polyhedron* in, sw_clip* c, swarp_polyhedron* t, uint8_t i,
+                                        uint8_t j, uint8_t* v) {
+    uint8_t lo = i < j ? i : j, hi = i < j ? j : i;
+    uint32_t e = 0;
+    for (; e < c->n_edges; ++e)
+        if (c->edge_lo[e] == lo && c->edge_hi[e] == hi) break;
+    if (e == c->n_edges) {
+        const uint32_t tv = c->tv;
+        if (tv >= SWARP_POLY_MAX_VERTICES) return SWARP_ERR_CAPACITY;
+        t->vertices[tv] = sw_edge_cut(in->vertices, c->dist, lo, hi);
+        if (c->unit_normal) sw_cut_on_axis_plane(&t->vertices[tv], c->n, c->d);
+        c->edge_lo[e] = lo;
+        c->edge_hi[e] = hi;
+        c->edge_v[e] = (uint8_t)tv;
+        c->onf[tv] = 1;
+        c->nxt[tv] = 0xFF;
+        c->on_plane[c->n_on++] = (uint8_t)tv;
+        c->tv = tv + 1;
+        ++c->n_edges;
+    }
+    *v = c->edge_v[e];
+    return SWARP_OK;
+}
+
+/* The loop of the cut face fl (fn vertices): its kept vertices and, between
+ * them, the cut point of each strictly crossing edge, into loop (*m). */
+static swarp_status sw_clip_cut_loop(const swarp_polyhedron* in, sw_clip* c, swarp_polyhedron* t,
+                                     const uint8_t* fl, uint32_t fn, uint8_t* loop, uint32_t* m_out) {
+    uint32_t m = 0;
+    for (uint32_t k = 0; k < fn; ++k) {
+        uint8_t i = fl[k], j = fl[k + 1 == fn ? 0 : k + 1];
+        if (c->cls[i] != SW_OUT) {
+            if (m >= SWARP_POLY_MAX_FACE_VERTICES) return SWARP_ERR_CAPACITY;
+            loop[m++] = c->map[i];
+        }
+        if ((c->cls[i] | c->cls[j]) == (SW_IN | SW_OUT)) { /* strictly crossing */
+            uint8_t v;
+            swarp_status s = sw_clip_edge_vertex(in, c, t, i, j, &v);
+            if (s != SWARP_OK) return s;
+            if (m >= SWARP_POLY_MAX_FACE_VERTICES) return SWARP_ERR_CAPACITY;
+            loop[m++] = v;
+        }
+    }
+    *m_out = m;
+    return SWARP_OK;
+}
+
+/* A kept face's in-plane edges p -> q give the cap's edges q -> p. */
+static void sw_clip_note_cap_edges(sw_clip* c, const uint8_t* loop, uint32_t m) {
+    uint8_t p = loop[m - 1];
+    for (uint32_t k = 0; k < m; ++k) {
+        const uint8_t q = loop[k];
+        if (c->onf[p] & c->onf[q]) {
+            c->cap_bad |= c->nxt[q] != 0xFF;
+            c->nxt[q] = p;
+            ++c->n_cap;
+        }
+        p = q;
+    }
+}
+
+/* Every face of in, clipped, into t's faces (those wholly outside, or left
+ * with fewer than 3 vertices, dropped). */
+static swarp_status sw_clip_faces(const swarp_polyhedron* in, sw_clip* c, swarp_polyhedron* t) {
     for (uint32_t f = 0; f < in->face_count; ++f) {
         uint32_t fn = in->face_vertex_count[f];
         const uint8_t* fl = in->face_vertices[f];
-        uint8_t* loop = t->face_vertices[tf]; /* tf <= f < SWARP_POLY_MAX_FACES */
+        uint8_t* loop = t->face_vertices[c->tf]; /* tf <= f < SWARP_POLY_MAX_FACES */
         /* most faces lie wholly on one side: only cut faces need the walk
          * over their edges */
         unsigned any = 0;
-        for (uint32_t k = 0; k < fn; ++k) any |= cls[fl[k]];
+        for (uint32_t k = 0; k < fn; ++k) any |= c->cls[fl[k]];
         if (any == SW_OUT) continue; /* wholly outside */
         uint32_t m = 0;
         if (!(any & SW_OUT)) { /* wholly kept: no edge crosses */
-            for (uint32_t k = 0; k < fn; ++k) loop[k] = map[fl[k]];
+            for (uint32_t k = 0; k < fn; ++k) loop[k] = c->map[fl[k]];
             m = fn;
         } else {
-            for (uint32_t k = 0; k < fn; ++k) {
-                uint8_t i = fl[k], j = fl[k + 1 == fn ? 0 : k + 1];
-                if (cls[i] != SW_OUT) {
-                    if (m >= SWARP_POLY_MAX_FACE_VERTICES) return SWARP_ERR_CAPACITY;
-                    loop[m++] = map[i];
-                }
-                if ((cls[i] | cls[j]) == (SW_IN | SW_OUT)) { /* strictly crossing */
-                    uint8_t lo = i < j ? i : j, hi = i < j ? j : i;
-                    uint32_t e = 0;
-                    for (; e < n_edges; ++e)
-                        if (edge_lo[e] == lo && edge_hi[e] == hi) break;
-                    if (e == n_edges) {
-                        if (tv >= SWARP_POLY_MAX_VERTICES) return SWARP_ERR_CAPACITY;
-                        /* once per edge (cached): both faces get the very same point */
-                        t->vertices[tv] = sw_edge_cut(in->vertices, dist, lo, hi);
-                        if (unit_normal) sw_cut_on_axis_plane(&t->vertices[tv], n, d);
-                        edge_lo[e] = lo;
-                        edge_hi[e] = hi;
-                        edge_v[e] = (uint8_t)tv;
-                        onf[tv] = 1;
-                        nxt[tv] = 0xFF;
-                        on_plane[n_on++] = (uint8_t)tv;
-                        ++tv;
-                        ++n_edges;
-                    }
-                    if (m >= SWARP_POLY_MAX_FACE_VERTICES) return SWARP_ERR_CAPACITY;
-                    loop[m++] = edge_v[e];
-                }
-            }
+            swarp_status s = sw_clip_cut_loop(in, c, t, fl, fn, loop, &m);
+            if (s != SWARP_OK) return s;
         }
         if (m < 3) continue;
         if (any == SW_ON) { /* the face lies in the clip plane */
             swarp_vec3 fnrm = {in->planes[f].a, in->planes[f].b, in->planes[f].c};
-            if (sw_dot(fnrm, n) > 0.0) cap_coincides = 1;
+            if (sw_dot(fnrm, c->n) > 0.0) c->cap_coincides = 1;
         }
-        if (any & (SW_ON | SW_OUT)) { /* its in-plane edges p -> q: cap edges q -> p */
-            uint8_t p = loop[m - 1];
-            for (uint32_t k = 0; k < m; ++k) {
-                const uint8_t q = loop[k];
-                if (onf[p] & onf[q]) {
-                    cap_bad |= nxt[q] != 0xFF;
-                    nxt[q] = p;
-                    ++n_cap;
-                }
-                p = q;
-            }
-        }
-        t->face_vertex_count[tf] = m;
-        t->planes[tf] = in->planes[f];
-        ++tf;
+        if (any & (SW_ON | SW_OUT)) sw_clip_note_cap_edges(c, loop, m);
+        t->face_vertex_count[c->tf] = m;
+        t->planes[c->tf] = in->planes[f];
+        ++c->tf;
     }
-    /* No faces: a point set, in practice a collapse onto a line (a flat
-     * polygon thinner than eps loses its loops, sw_remap_faces) whose hull
-     * is the segment between its ends.  The face walk above cut no edge,
-     * so the clip kept the inner vertices only: cutting a 64-long segment
-     * of B at a box plane left its inner end, a point, or the segment, as
-     * the rounding had collapsed it earlier or not (issue 9, fenv
-     * swarp_body_from_h 240000 case 169801).  Each strictly crossing pair
-     * is cut (the hull of the kept and the cut points is the clipped hull);
-     * a cut within eps of a point kept or cut already adds nothing (for a
-     * segment the cuts are all one point). */
-    if (in->face_count == 0) {
-        const double cut_eps = SWARP_POLY_EPS_REL * in_scale;
-        for (uint32_t i = 0; i < nv; ++i) {
-            if (cls[i] != SW_IN) continue;
-            for (uint32_t j = 0; j < nv; ++j) {
-                if (cls[j] != SW_OUT) continue;
-                swarp_vec3 p = sw_edge_cut(in->vertices, dist, (uint8_t)i, (uint8_t)j);
-                if (unit_normal) sw_cut_on_axis_plane(&p, n, d);
-                uint32_t k = 0;
-                for (; k < tv; ++k) {
-                    const swarp_vec3 w = t->vertices[k];
-                    if (fabs(p.x - w.x) <= cut_eps && fabs(p.y - w.y) <= cut_eps && fabs(p.z - w.z) <= cut_eps) break;
-                }
-                if (k < tv) continue;
-                if (tv >= SWARP_POLY_MAX_VERTICES) return SWARP_ERR_CAPACITY;
-                t->vertices[tv++] = p;
+    return SWARP_OK;
+}
+
+/* A point set (no faces), in practice a collapse onto a line (a flat
+ * polygon thinner than eps loses its loops, sw_remap_faces) whose hull is
+ * the segment between its ends.  The face walk cuts no edge of it and
+ * would keep the inner vertices only: a segment cut by a plane would become
+ * a point or stay a segment as the earlier rounding had collapsed it or
+ * not.  Each strictly crossing pair is cut (the hull of the kept and the
+ * cut points is the clipped hull); a cut within eps of a point kept or cut
+ * already adds nothing (for a segment the cuts are all one point). */
+static swarp_status sw_clip_point_set(const swarp_polyhedron* in, const sw_clip* c, swarp_polyhedron* t,
+                                      double in_scale) {
+    const double cut_eps = SWARP_POLY_EPS_REL * in_scale;
+    uint32_t tv = c->tv;
+    for (uint32_t i = 0; i < in->vertex_count; ++i) {
+        if (c->cls[i] != SW_IN) continue;
+        for (uint32_t j = 0; j < in->vertex_count; ++j) {
+            if (c->cls[j] != SW_OUT) continue;
+            swarp_vec3 p = sw_edge_cut(in->vertices, c->dist, (uint8_t)i, (uint8_t)j);
+            if (c->unit_normal) sw_cut_on_axis_plane(&p, c->n, c->d);
+            uint32_t k = 0;
+            for (; k < tv; ++k) {
+                const swarp_vec3 w = t->vertices[k];
+                if (fabs(p.x - w.x) <= cut_eps && fabs(p.y - w.y) <= cut_eps && fabs(p.z - w.z) <= cut_eps) break;
             }
+            if (k < tv) continue;
+            if (tv >= SWARP_POLY_MAX_VERTICES) return SWARP_ERR_CAPACITY;
+            t->vertices[tv++] = p;
         }
-        t->vertex_count = tv;
-        t->face_count = 0;
-        return SWARP_OK;
-    }
-    /* the cap: the new face on the clip plane, sorted counter-clockwise seen
-     * from outside (along +n) */
-    if (n_on >= 3 && !cap_coincides) {
-        if (n_on > SWARP_POLY_MAX_FACE_VERTICES) return SWARP_ERR_CAPACITY;
-        if (tf >= SWARP_POLY_MAX_FACES) return SWARP_ERR_CAPACITY;
-        uint8_t* idx = t->face_vertices[tf];
-        /* usually the in-plane edges chain into the cap's loop: one cycle
-         * through all n_on on-plane vertices */
-        int chained = !cap_bad && n_cap == n_on;
-        if (chained) {
-            uint8_t v = on_plane[0];
-            idx[0] = v;
-            for (uint32_t k = 1; k < n_on && chained; ++k) {
-                v = nxt[v];
-                chained = v != 0xFF && v != on_plane[0];
-                idx[k] = v;
-            }
-            chained = chained && nxt[v] == on_plane[0];
-        }
-        if (!chained) { /* degenerate: sort by angle around the centroid */
-        swarp_vec3 c = {0, 0, 0};
-        for (uint32_t k = 0; k < n_on; ++k) c = sw_add(c, t->vertices[on_plane[k]]);
-        c = sw_scale(c, 1.0 / n_on);
-        /* in-plane basis (e1, e2) with e1 x e2 = n */
-        swarp_vec3 ref = fabs(n.x) < 0.6 ? sw_v3(1, 0, 0) : (fabs(n.y) < 0.6 ? sw_v3(0, 1, 0) : sw_v3(0, 0, 1));
-        swarp_vec3 e1 = {1, 0, 0}, e2;
-        if (unit_normal) /* an axis: ref x n is a unit axis already */
-            e1 = sw_cross(ref, n);
-        else
-            sw_gnormalize(sw_cross(ref, n), &e1);
-        e2 = sw_cross(n, e1);
-        double key[SWARP_POLY_MAX_FACE_VERTICES];
-        for (uint32_t k = 0; k < n_on; ++k) {
-            swarp_vec3 q = sw_sub(t->vertices[on_plane[k]], c);
-            double kk = sw_pseudo_angle(sw_dot(q, e1), sw_dot(q, e2));
-            uint32_t j = k;
-            while (j > 0 && key[j - 1] > kk) {
-                key[j] = key[j - 1];
-                idx[j] = idx[j - 1];
-                --j;
-            }
-            key[j] = kk;
-            idx[j] = on_plane[k];
-        }
-        }
-        t->face_vertex_count[tf] = n_on;
-        t->planes[tf].a = n.x;
-        t->planes[tf].b = n.y;
-        t->planes[tf].c = n.z;
-        t->planes[tf].d = d;
-        ++tf;
     }
     t->vertex_count = tv;
-    t->face_count = tf;
-    sw_poly_merge_on_plane(t, on_plane, n_on, n_kept, SWARP_POLY_EPS_REL * in_scale);
+    t->face_count = 0;
+    return SWARP_OK;
+}
+
+/* The cap's loop from the in-plane edges, into idx: usually they chain into
+ * one cycle through all n_on on-plane vertices.  0 when they do not. */
+static int sw_cap_chain(const sw_clip* c, uint8_t* idx) {
+    const uint32_t n_on = c->n_on;
+    int chained = !c->cap_bad && c->n_cap == n_on;
+    if (chained) {
+        uint8_t v = c->on_plane[0];
+        idx[0] = v;
+        for (uint32_t k = 1; k < n_on && chained; ++k) {
+            v = c->nxt[v];
+            chained = v != 0xFF && v != c->on_plane[0];
+            idx[k] = v;
+        }
+        chained = chained && c->nxt[v] == c->on_plane[0];
+    }
+    return chained;
+}
+
+/* The cap's loop when the edges do not chain (degenerate cuts): the
+ * on-plane vertices sorted by angle around their centroid in an in-plane
+ * basis (e1, e2) with e1 x e2 = n, counter-clockwise seen along +n. */
+static void sw_cap_sort_by_angle(const sw_clip* c, const swarp_polyhedron* t, uint8_t* idx) {
+    const uint32_t n_on = c->n_on;
+    const swarp_vec3 n = c->n;
+    swarp_vec3 ctr = {0, 0, 0};
+    for (uint32_t k = 0; k < n_on; ++k) ctr = sw_add(ctr, t->vertices[c->on_plane[k]]);
+    ctr = sw_scale(ctr, 1.0 / n_on);
+    swarp_vec3 ref = fabs(n.x) < SW_REF_AXIS_MAX ? sw_v3(1, 0, 0)
+                   : (fabs(n.y) < SW_REF_AXIS_MAX ? sw_v3(0, 1, 0) : sw_v3(0, 0, 1));
+    swarp_vec3 e1 = {1, 0, 0}, e2;
+    if (c->unit_normal) /* an axis: ref x n is a unit axis already */
+        e1 = sw_cross(ref, n);
+    else
+        sw_gnormalize(sw_cross(ref, n), &e1);
+    e2 = sw_cross(n, e1);
+    double key[SWARP_POLY_MAX_FACE_VERTICES];
+    for (uint32_t k = 0; k < n_on; ++k) {
+        swarp_vec3 q = sw_sub(t->vertices[c->on_plane[k]], ctr);
+        double kk = sw_pseudo_angle(sw_dot(q, e1), sw_dot(q, e2));
+        uint32_t j = k;
+        while (j > 0 && key[j - 1] > kk) {
+            key[j] = key[j - 1];
+            idx[j] = idx[j - 1];
+            --j;
+        }
+        key[j] = kk;
+        idx[j] = c->on_plane[k];
+    }
+}
+
+/* The cap: the new face on the clip plane, counter-clockwise seen from
+ * outside (along +n); none when a kept face already covers the plane. */
+static swarp_status sw_clip_cap(sw_clip* c, swarp_polyhedron* t) {
+    if (c->n_on < 3 || c->cap_coincides) return SWARP_OK;
+    if (c->n_on > SWARP_POLY_MAX_FACE_VERTICES) return SWARP_ERR_CAPACITY;
+    if (c->tf >= SWARP_POLY_MAX_FACES) return SWARP_ERR_CAPACITY;
+    uint8_t* idx = t->face_vertices[c->tf];
+    if (!sw_cap_chain(c, idx)) sw_cap_sort_by_angle(c, t, idx);
+    t->face_vertex_count[c->tf] = c->n_on;
+    t->planes[c->tf].a = c->n.x;
+    t->planes[c->tf].b = c->n.y;
+    t->planes[c->tf].c = c->n.z;
+    t->planes[c->tf].d = c->d;
+    ++c->tf;
+    return SWARP_OK;
+}
+
+/* Clips in by n·x + d <= 0 into out (out != in; n need not be unit).  When
+ * no vertex lies outside, *unchanged is set and out is not written. */
+static swarp_status sw_poly_clip_to(const swarp_polyhedron* in, swarp_vec3 n_raw, double d_raw,
+                                    swarp_polyhedron* out, int* unchanged, double scale /* 0: compute */,
+                                    int unit_normal /* n is a unit axis (box planes): no sqrt, no division */) {
+    *unchanged = 0;
+    sw_clip c;
+    c.n = n_raw;
+    c.d = d_raw;
+    c.unit_normal = unit_normal;
+    if (!unit_normal) {
+        int trivial;
+        swarp_status s = sw_clip_plane_unit(n_raw, d_raw, &c.n, &c.d, &trivial);
+        if (s != SWARP_OK) return s;
+        if (trivial != SW_CLIP_CUTS) return sw_clip_trivial(trivial, out, unchanged);
+    }
+    if (in->vertex_count == 0) {
+        *unchanged = 1;
+        return SWARP_OK;
+    }
+    /* tolerance for "on the plane": see SWARP_POLY_EPS_REL */
+    const double in_scale = scale > 0.0 ? scale : sw_poly_scale(in);
+    const double eps = SWARP_POLY_EPS_REL * sw_max(in_scale, fabs(c.d));
+    const int trivial = sw_clip_classify(in, &c, eps);
+    if (trivial != SW_CLIP_CUTS) return sw_clip_trivial(trivial, out, unchanged);
+    swarp_polyhedron* t = out; /* built in place (out != in) */
+    sw_clip_keep_vertices(in, &c, t);
+    const uint32_t n_kept = c.tv;
+    swarp_status s = sw_clip_faces(in, &c, t);
+    if (s != SWARP_OK) return s;
+    if (in->face_count == 0) return sw_clip_point_set(in, &c, t, in_scale);
+    s = sw_clip_cap(&c, t);
+    if (s != SWARP_OK) return s;
+    t->vertex_count = c.tv;
+    t->face_count = c.tf;
+    sw_poly_merge_on_plane(t, c.on_plane, c.n_on, n_kept, SWARP_POLY_EPS_REL * in_scale);
     return SWARP_OK;
 }
 
@@ -765,7 +878,7 @@ swarp_status sw_poly_clip_box_order(const swarp_polyhedron* in, const swarp_aabb
         swarp_polyhedron* dst = (src == out) ? &buf : out;
         int unchanged = 0;
         /* the scale from the bounds: the largest absolute coordinate */
-        double sc = 1e-300;
+        double sc = SW_POLY_SCALE_MIN;
         for (int a = 0; a < 3; ++a) sc = sw_max(sc, sw_max(fabs(lo[a]), fabs(hi[a])));
         swarp_status s = sw_poly_clip_to(src, ns[k], ds[k], dst, &unchanged, sc, 1);
         if (s != SWARP_OK) return s;
@@ -783,10 +896,13 @@ swarp_status sw_poly_clip_box(const swarp_polyhedron* in, const swarp_aabb* box,
     return sw_poly_clip_box_order(in, box, order, out);
 }
 
-/* A caller's polyhedron: counts within capacity, indices valid, finite. */
-static swarp_status sw_poly_validate(const swarp_polyhedron* in) {
+swarp_status sw_poly_check_counts(const swarp_polyhedron* in) {
     if (in->vertex_count > SWARP_POLY_MAX_VERTICES || in->face_count > SWARP_POLY_MAX_FACES)
         return SWARP_ERR_INVALID_ARGUMENT;
+    return SWARP_OK;
+}
+
+swarp_status sw_poly_check_contents(const swarp_polyhedron* in) {
     for (uint32_t i = 0; i < in->vertex_count; ++i)
         if (!sw_finite3(&in->vertices[i])) return SWARP_ERR_NON_FINITE;
     for (uint32_t f = 0; f < in->face_count; ++f) {
@@ -795,6 +911,12 @@ static swarp_status sw_poly_validate(const swarp_polyhedron* in) {
             if (in->face_vertices[f][k] >= in->vertex_count) return SWARP_ERR_INVALID_ARGUMENT;
     }
     return SWARP_OK;
+}
+
+swarp_status sw_poly_validate(const swarp_polyhedron* in) {
+    swarp_status s = sw_poly_check_counts(in);
+    if (s != SWARP_OK) return s;
+    return sw_poly_check_contents(in);
 }
 
 SWARP_API swarp_status swarp_poly_clip(const swarp_polyhedron* in, const swarp_plane* plane,

@@ -48,16 +48,20 @@
  * hemisphere (checked by the caller through the cap's cos radius). */
 typedef struct sw_cap { swarp_vec3 c; double cosr; } sw_cap;
 
+/* The cosine slack of a cap's membership test for the rounding of unit
+ * vectors (a few eps each, summed over a dot product), with a margin. */
+#define SW_CAP_SLACK 1e-13
+
 static int sw_in_cap(const sw_cap* k, swarp_vec3 r) {
-    /* slack 1e-13 in the cosine: rounding of unit vectors; plus the
+    /* slack SW_CAP_SLACK in the cosine: rounding of unit vectors; plus the
      * rounding of the centre, eps/|a + b| = eps/(2 cos r) rad for the cap of
      * a pair (the sum of two unit vectors all but opposite), which moves
-     * c·r by up to that: receivers spanning 179.995° in PPS (cos r = 4e-5)
-     * saw a point 8.8e-10 from a support outside the pair's cap by 5e-12,
-     * and the circle through the three, 2.5e4/8.8e-10 times as sensitive,
-     * turned the axis by 3e-3..6e-3 rad with the rounding mode (issue 9,
-     * fenv swarp_setup_follow 960000 case 653923) */
-    const double slack = 1e-13 + (k->cosr > 0.0 ? 4.0 * DBL_EPSILON / k->cosr : 0.0);
+     * c·r by up to that.  Without it, for receivers spanning almost 180° in
+     * PPS (cos r = 4e-5) a point 1e-9 from a support falls outside the
+     * pair's cap by 5e-12 or not as the rounding falls, and the circle
+     * through the three, 3e13 times as sensitive, turns the axis by
+     * milliradians. */
+    const double slack = SW_CAP_SLACK + (k->cosr > 0.0 ? 4.0 * DBL_EPSILON / k->cosr : 0.0);
     return sw_dot(k->c, r) >= k->cosr - slack;
 }
 static sw_cap sw_cap2(swarp_vec3 a, swarp_vec3 b) {
@@ -82,10 +86,9 @@ static swarp_vec3 sw_cap_tangent(swarp_vec3 a, swarp_vec3 r, double* h) {
  * resolved to eps of its size, whatever the radius.  The plane normal
  * (b - a) x (c - a) is not: the rounding of a unit vector's norm (eps,
  * radial) moves b - a along a by eps, which tilts the normal by eps/|b - a|,
- * 1/sin(r) times what the directions' own (tangential) rounding does.  Two
- * vertices 6e-6 apart on a cap of 0.007 rad moved its axis by 4e-11 rad
- * with the rounding mode, and the PSM row offsets (e·q̂)/τ, τ = 0.0055, by
- * 2e-8 relative (issue 9, fenv swarp_setup_points 480000 case 405914). */
+ * 1/sin(r) times what the directions' own (tangential) rounding does: for
+ * two vertices 6e-6 apart on a cap of 0.007 rad a tilt of 4e-11 rad of the
+ * axis, which the PSM row offsets (e·q̂)/τ magnify by 1/τ. */
 static sw_cap sw_cap3(swarp_vec3 a, swarp_vec3 b, swarp_vec3 c) {
     sw_cap k;
     double hb, hc;
@@ -138,8 +141,13 @@ static swarp_vec3 sw_perp_ref(swarp_vec3 n) {
     return b;
 }
 
+/* The shortest sw_perp_ref's projection gets before it is normalised: it
+ * is blended away from its zero and is at least 0.08 long; 0.05 is the
+ * length its rounding (sw_follow_aligned_tol) is bounded with. */
+#define SW_PERP_REF_MIN_LEN 0.05
+
 /* swarp_setup_follow: the light camera's right vector e1 follows the
- * previous one (src/follow.c) toward the stateless e1 (given in *e1: the
+ * previous one (follow.c) toward the stateless e1 (given in *e1: the
  * post-perspective x axis projected perpendicular to the axis, sw_perp_ref),
  * by at most SWARP_FOLLOW_KAPPA times the angle the axis turned; the sign of
  * the target is free (PSM has no preferred orientation).  Returns 0 when
@@ -149,15 +157,13 @@ static int sw_psm_follow_e1(const sw_follow* fw, swarp_vec3 a, swarp_vec3* e1, i
     *lag = 0;
     swarp_vec3 ph = sw_sub(fw->up, sw_scale(a, sw_dot(fw->up, a)));
     const double s_h = sw_glen(ph);
-    /* 1e-8: below it the projected direction is rounding noise (the
-     * previous axis was 90° away: nothing to follow, take the target) */
-    if (!(s_h > 1e-8) || !sw_gnormalize(ph, &h)) return 0;
+    /* below SW_FOLLOW_PERP_MIN the projected direction is rounding noise
+     * (the previous axis was 90° away: nothing to follow, take the target) */
+    if (!(s_h > SW_FOLLOW_PERP_MIN) || !sw_gnormalize(ph, &h)) return 0;
     /* the axis' sign is free in a previous result: the angle between lines */
     double delta = atan2(sw_glen(sw_cross(fw->axis, a)), fabs(sw_dot(fw->axis, a)));
     if (sw_dot(h, t) < 0.0) t = sw_scale(t, -1.0);
-    /* t (sw_perp_ref) is blended away from its zero: at least 0.08 long
-     * before it is normalised (0.05 taken) */
-    h = sw_follow_turn(h, t, a, SWARP_FOLLOW_KAPPA * delta, sw_follow_aligned_tol(s_h, 0.05), lag);
+    h = sw_follow_turn(h, t, a, SWARP_FOLLOW_KAPPA * delta, sw_follow_aligned_tol(s_h, SW_PERP_REF_MIN_LEN), lag);
     swarp_vec3 p = sw_sub(h, sw_scale(a, sw_dot(h, a)));
     return sw_gnormalize(p, e1);
 }
@@ -169,7 +175,7 @@ static swarp_status sw_info_follow(swarp_status info) {
 
 /* The camera (possibly slid back by delta) as M_c = P_c V_c, GL depth;
  * P_c is returned too: light_proj is formed from it, not from M_c V_c^-1
- * (see sw_psm_setup). */
+ * (see sw_psm_result). */
 static void sw_camera_matrix(const swarp_camera* cam, double near, double far, double delta, swarp_mat4* Mc,
                              swarp_mat4* Vc, swarp_mat4* Pc) {
     swarp_vec3 f, r, u;
@@ -191,24 +197,216 @@ static void sw_camera_matrix(const swarp_camera* cam, double near, double far, d
  * (64 eps of the sizes of the terms summed)?  A point on the light's own
  * plane w = 0 -- the light itself, a vertex of B when it lies in the scene
  * box ([RHS] §3.1.1: B = conv(H ∪ {l}) ∩ S) -- has w = 0 up to that
- * rounding, whose sign the rounding mode set: taken as a caster its depth
- * z/w of 1e15 stretched the depth extent, the fit then called x and y flat
- * beside it and the map collapsed (SWARP_INFO_FLAT_EXTENT under
- * FE_DOWNWARD only; issue 9, fenv swarp_setup_points case 28597).  It
- * casts no shadow into the light frustum. */
-/* wab: the sizes of the terms of QM's w row as the product Q M_c summed
+ * rounding, whose sign is the rounding's: taken as a caster its depth z/w
+ * (~1e15) would stretch the depth extent until the fit called x and y flat
+ * beside it and the map collapsed.  It casts no shadow into the light
+ * frustum.
+ *
+ * wab: the sizes of the terms of QM's w row as the product Q M_c summed
  * them, sum_k |Q_3k| |M_c,kj|.  QM's entries carry eps of those terms, more
- * than eps of the entries themselves where the terms cancel, so w at p is
- * rounded to eps of sum_j wab_j |p_j| too -- with only its own terms as
- * the bound the light, a vertex of B, had w > 0 beyond it under
- * FE_DOWNWARD, passed as a caster with depth -2.8e15 and the fit called x
- * and y flat beside it (issue 9, fenv swarp_setup_points 3840000 case
- * 3804776: a scene 1e5 from the origin, the light 1 unit above the eye). */
+ * than eps of the entries themselves where the terms cancel (a scene far
+ * from the origin, the light near the eye), so w at p is rounded to eps of
+ * sum_j wab_j |p_j| too; with only its own terms as the bound, the light
+ * could pass as a caster with w > 0 by rounding alone. */
 static int sw_psm_in_front(const swarp_mat4* QM, const double wab[4], swarp_vec3 p) {
     const double t0 = sw_at(QM, 3, 0) * p.x, t1 = sw_at(QM, 3, 1) * p.y, t2 = sw_at(QM, 3, 2) * p.z, t3 = sw_at(QM, 3, 3);
     const double terms = fmax(fabs(t0) + fabs(t1) + fabs(t2) + fabs(t3),
                               wab[0] * fabs(p.x) + wab[1] * fabs(p.y) + wab[2] * fabs(p.z) + wab[3]);
     return t0 + t1 + t2 + t3 > 64.0 * DBL_EPSILON * terms;
+}
+
+/* Virtual slide-back [KOZ] Fig. 14-6: the eye moved back by delta, near
+ * and far moved with it, so the near plane stays where it was.  Automatic
+ * (psm_slideback without a given delta): every point of B in front of the
+ * virtual camera. */
+static double sw_psm_slideback(const swarp_camera* cam, swarp_vec3 f, const swarp_vec3* B, size_t nb, double near,
+                               const swarp_setup_options* o) {
+    double delta = o->slideback;
+    if (o->psm_slideback && delta == 0.0) {
+        double zmin = INFINITY;
+        for (size_t i = 0; i < nb; ++i) zmin = sw_min(zmin, sw_dot(sw_sub(B[i], cam->eye), f));
+        if (zmin < near) delta = near - zmin;
+    }
+    return delta;
+}
+
+/* The light in PPS, L_h = M_c (l, 1) or M_c (-d, 0), normalised
+ * homogeneous: q̂ = q_h/|q_h| and τ = w_l/|q_h| (0: the light at infinity in
+ * PPS).  *inverse: w_l < 0, the light behind the camera ([KOZ] §14.2.1). */
+static swarp_status sw_psm_light_pps(const swarp_light* light, const swarp_mat4* Mc, swarp_vec3* qn, double* tau,
+                                     int* inverse) {
+    swarp_vec4 Lw = light->type == SWARP_LIGHT_POINT
+                        ? (swarp_vec4){light->position.x, light->position.y, light->position.z, 1.0}
+                        : (swarp_vec4){-light->direction.x, -light->direction.y, -light->direction.z, 0.0};
+    swarp_vec4 Lh = sw_xform4(Mc, Lw);
+    swarp_vec3 qh = sw_v3(Lh.x, Lh.y, Lh.z);
+    double qlen = sw_glen(qh);
+    if (!(qlen > 0.0)) return SWARP_ERR_LIGHT_INSIDE_BODY; /* the light is the eye itself */
+    *qn = sw_scale(qh, 1.0 / qlen);
+    *tau = Lh.w / qlen;
+    *inverse = Lh.w < 0.0;
+    return SWARP_OK;
+}
+
+/* The receivers' centroid in PPS (reference point of the depth row). */
+static swarp_status sw_psm_centroid(const swarp_mat4* Mc, const swarp_vec3* H, size_t nh, swarp_vec3* p0) {
+    swarp_vec3 c = {0, 0, 0};
+    for (size_t i = 0; i < nh; ++i) {
+        swarp_vec4 X = sw_xform_point(Mc, H[i]);
+        if (!(X.w > 0.0)) return SWARP_ERR_DEGENERATE;
+        c = sw_add(c, sw_v3(X.x / X.w, X.y / X.w, X.z / X.w));
+    }
+    *p0 = sw_scale(c, 1.0 / (double)nh);
+    return SWARP_OK;
+}
+
+/* The light camera's frame in PPS and its row offsets (see the top):
+ * x = e1·X - w_c cx1, y = e2·X - w_c cx2, z = a·X, w = wa a·X + ww w_c. */
+typedef struct sw_psm_rows {
+    swarp_vec3 a, e1, e2;
+    double cx1, cx2; /* x, y row offsets: (e·q̂)/τ */
+    double wa, ww;
+} sw_psm_rows;
+
+/* The light camera's roll: e1 the PPS x axis projected perpendicular to the
+ * axis (blended near a = ±x), a function of the axis alone, so that the
+ * follow rule's budget κΔ (Δ: the axis' turn) covers the target's motion;
+ * followed from fw when given (*lag: it stopped short). */
+static void sw_psm_roll(const sw_follow* fw, sw_psm_rows* q, int* lag) {
+    q->e1 = sw_perp_ref(q->a);
+    *lag = 0;
+    if (fw && !sw_psm_follow_e1(fw, q->a, &q->e1, lag)) *lag = 0;
+    q->e2 = sw_cross(q->a, q->e1);
+}
+
+/* The axis of the minimal cone around the light-to-receiver directions
+ * R = τ x - q̂ (homogeneous-safe, w_c = 1) [KOZ] §14.2.2. */
+static swarp_status sw_psm_cone_axis(const swarp_mat4* Mc, const swarp_vec3* H, size_t nh, swarp_vec3 qn, double tau,
+                                     swarp_vec3* a) {
+    swarp_vec3 rd[SWARP_BODY_MAX_POINTS];
+    size_t nr = 0;
+    for (size_t i = 0; i < nh && nr < SWARP_BODY_MAX_POINTS; ++i) {
+        swarp_vec4 X = sw_xform_point(Mc, H[i]);
+        if (!(X.w > 0.0)) return SWARP_ERR_DEGENERATE;
+        swarp_vec3 x = sw_v3(X.x / X.w, X.y / X.w, X.z / X.w);
+        swarp_vec3 R = sw_sub(sw_scale(x, tau), qn);
+        if (!sw_gnormalize(R, &rd[nr])) return SWARP_ERR_LIGHT_INSIDE_BODY; /* receiver at the light */
+        ++nr;
+    }
+    if (nr == 0) return SWARP_ERR_BODY_EMPTY;
+    sw_cap cap = sw_min_cap(rd, nr);
+    /* a cone of 90° or more: the light sits among the receivers */
+    if (!(cap.cosr > SW_PSM_MIN_COS)) return SWARP_ERR_LIGHT_INSIDE_BODY;
+    *a = cap.c;
+    return SWARP_OK;
+}
+
+/* The light camera's rows: orthographic along -q̂ when the light is at
+ * infinity in PPS (the limit of the general rows, up to a translation A_fit
+ * absorbs), else the perspective from q̂ along the cone axis divided by w_l. */
+static swarp_status sw_psm_light_rows(const swarp_mat4* Mc, const swarp_vec3* H, size_t nh, swarp_vec3 qn, double tau,
+                                      const sw_follow* fw, sw_psm_rows* q, int* lag) {
+    q->cx1 = 0.0, q->cx2 = 0.0;
+    q->wa = 0.0, q->ww = 1.0;
+    if (fabs(tau) < SW_PSM_TAU_ORTHO) {
+        q->a = sw_scale(qn, -1.0);
+        sw_psm_roll(fw, q, lag);
+        return SWARP_OK;
+    }
+    swarp_status s = sw_psm_cone_axis(Mc, H, nh, qn, tau, &q->a);
+    if (s != SWARP_OK) return s;
+    sw_psm_roll(fw, q, lag);
+    /* rows: x = e1·R/w_l = e1·X - w_c (e1·q̂)/τ (finite as τ -> 0: the
+     * axis tilts away from -q̂ by O(τ); the rounding of e1·q̂ only moves
+     * the image, which A_fit absorbs); w = a·R/|q_h| > 0 */
+    q->cx1 = sw_dot(q->e1, qn) / tau;
+    q->cx2 = sw_dot(q->e2, qn) / tau;
+    q->wa = tau;
+    q->ww = -sw_dot(q->a, qn);
+    return SWARP_OK;
+}
+
+/* The light camera Q over PPS from its rows.  Depth z = a·(X - w_c p0), p0
+ * the receivers' centroid in PPS: then z/w = (u - u0)/(c0 + τu) has
+ * derivative a·R(p0)/(...)^2 > 0, i.e. it increases along every light ray
+ * for any position of the origin. */
+static void sw_psm_light_camera(const sw_psm_rows* q, swarp_vec3 p0, swarp_mat4* Q) {
+    const swarp_vec3 a = q->a, e1 = q->e1, e2 = q->e2;
+    const double wa = q->wa;
+    memset(Q, 0, sizeof *Q);
+    sw_set(Q, 0, 0, e1.x), sw_set(Q, 0, 1, e1.y), sw_set(Q, 0, 2, e1.z), sw_set(Q, 0, 3, -q->cx1);
+    sw_set(Q, 1, 0, e2.x), sw_set(Q, 1, 1, e2.y), sw_set(Q, 1, 2, e2.z), sw_set(Q, 1, 3, -q->cx2);
+    sw_set(Q, 2, 0, a.x), sw_set(Q, 2, 1, a.y), sw_set(Q, 2, 2, a.z), sw_set(Q, 2, 3, -sw_dot(a, p0));
+    sw_set(Q, 3, 0, wa * a.x), sw_set(Q, 3, 1, wa * a.y), sw_set(Q, 3, 2, wa * a.z), sw_set(Q, 3, 3, q->ww);
+}
+
+/* The casters that can shadow the receivers, for the depth range ([KOZ]
+ * §14.2.2 unit cube clipping): H, and B inside the light frustum over the
+ * receivers' window F = A QM (its four side planes pulled back to world
+ * space; this also keeps w > 0).  Clipping B, rather than dropping points
+ * with w <= 0, keeps the depth range continuous as the light moves.
+ * Without B's polyhedron (swarp_setup_points) the points of B in front of
+ * the light camera are used. */
+static size_t sw_psm_casters(const swarp_vec3* B, size_t nb, const swarp_polyhedron* B_poly, const swarp_vec3* H,
+                             size_t nh, const swarp_mat4* A, const swarp_mat4* QM, const double wab[4], int pancake,
+                             swarp_vec3* zp) {
+    size_t nz = 0;
+    for (size_t i = 0; i < nh && nz < SWARP_BODY_MAX_POINTS; ++i) zp[nz++] = H[i];
+    if (pancake) return nz;
+    if (!B_poly) {
+        for (size_t i = 0; i < nb && nz < SWARP_BODY_MAX_POINTS + SWARP_POLY_MAX_VERTICES; ++i)
+            if (sw_psm_in_front(QM, wab, B[i])) zp[nz++] = B[i];
+        return nz;
+    }
+    swarp_mat4 F;
+    sw_mul(A, QM, &F);
+    swarp_polyhedron C;
+    sw_poly_copy(B_poly, &C);
+    for (int k = 0; k < 4 && C.vertex_count > 0; ++k) {
+        int row = k / 2;
+        double sg = (k & 1) ? -1.0 : 1.0; /* sg·(row) - w <= 0 */
+        swarp_vec3 n = sw_v3(sg * sw_at(&F, row, 0) - sw_at(&F, 3, 0), sg * sw_at(&F, row, 1) - sw_at(&F, 3, 1),
+                             sg * sw_at(&F, row, 2) - sw_at(&F, 3, 2));
+        double d = sg * sw_at(&F, row, 3) - sw_at(&F, 3, 3);
+        if (sw_poly_clip(&C, n, d, &C) != SWARP_OK) break;
+    }
+    for (uint32_t i = 0; i < C.vertex_count; ++i)
+        if (sw_psm_in_front(QM, wab, C.vertices[i])) zp[nz++] = C.vertices[i];
+    return nz;
+}
+
+/* The result's matrices and figures.  light_proj = A Q P_c with the camera
+ * projection itself: recovered as M_c V_c^-1 it would carry the rounding of
+ * V_c's translation (the slid-back eye, delta from the camera) times P_c,
+ * eps delta absolute in entries that are 0 (a slide-back of 1e12 puts 1e6
+ * where 0 belongs, in a sign the rounding picks), and light_proj light_view
+ * would be off the matrix by far more than its rounding. */
+static void sw_psm_result(const swarp_camera* cam, const swarp_light* light, swarp_vec3 f, const swarp_mat4* A,
+                          const swarp_mat4* Q, const swarp_mat4* QM, const swarp_mat4* Vc, const swarp_mat4* Pc,
+                          double n_eye, const swarp_vec3* zp, size_t nz, swarp_setup_result* res) {
+    swarp_mat4 AQ;
+    sw_mul(A, Q, &AQ);
+    sw_mul(&AQ, Pc, &res->light_proj);
+    res->light_view = *Vc;
+    sw_mul(A, QM, &res->matrix);
+    res->n_eye = n_eye; /* [RHS] (2.5)-(2.6): n' = n for PSM */
+    res->n_light = n_eye;
+    res->gamma = 0.0;
+    swarp_vec3 ld = {0, 0, 0};
+    if (light->type == SWARP_LIGHT_POINT) {
+        sw_gnormalize(sw_sub(cam->eye, light->position), &ld);
+    } else {
+        sw_gnormalize(light->direction, &ld);
+    }
+    res->gamma = acos(sw_max(-1.0, sw_min(1.0, sw_dot(ld, f))));
+    double lo = INFINITY, hi = -INFINITY;
+    for (size_t i = 0; i < nz; ++i) {
+        swarp_vec4 h = sw_xform_point(QM, zp[i]);
+        lo = sw_min(lo, h.z / h.w);
+        hi = sw_max(hi, h.z / h.w);
+    }
+    res->light_near = lo;
+    res->light_far = hi;
 }
 
 swarp_status sw_psm_setup(const swarp_camera* cam, const swarp_light* light, const swarp_vec3* B, size_t nb,
@@ -219,170 +417,47 @@ swarp_status sw_psm_setup(const swarp_camera* cam, const swarp_light* light, con
     if (!H) H = B, nh = nb;
     swarp_vec3 f, r, u;
     sw_camera_basis(cam, &f, &r, &u);
-    /* virtual slide-back [KOZ] Fig. 14-6: eye moved back by delta, near and
-     * far moved with it, so the near plane stays where it was */
-    double delta = o->slideback;
-    if (o->psm_slideback && delta == 0.0) {
-        /* automatic: every point of B in front of the virtual camera */
-        double zmin = INFINITY;
-        for (size_t i = 0; i < nb; ++i) zmin = sw_min(zmin, sw_dot(sw_sub(B[i], cam->eye), f));
-        if (zmin < near) delta = near - zmin;
-    }
+    const double delta = sw_psm_slideback(cam, f, B, nb, near, o);
     swarp_mat4 Mc, Vc, Pc;
     sw_camera_matrix(cam, near, far, delta, &Mc, &Vc, &Pc);
-    /* the light in PPS, normalised homogeneous */
-    swarp_vec4 Lw = light->type == SWARP_LIGHT_POINT
-                        ? (swarp_vec4){light->position.x, light->position.y, light->position.z, 1.0}
-                        : (swarp_vec4){-light->direction.x, -light->direction.y, -light->direction.z, 0.0};
-    swarp_vec4 Lh = sw_xform4(&Mc, Lw);
-    swarp_vec3 qh = sw_v3(Lh.x, Lh.y, Lh.z);
-    double qlen = sw_glen(qh);
-    if (!(qlen > 0.0)) return SWARP_ERR_LIGHT_INSIDE_BODY; /* the light is the eye itself */
-    swarp_vec3 qn = sw_scale(qh, 1.0 / qlen);
-    double tau = Lh.w / qlen; /* w_l / |q_h|: 0 = light at infinity in PPS */
-    if (Lh.w < 0.0) info = SWARP_INFO_PSM_INVERSE;
-    swarp_vec3 a, e1, e2;
+    swarp_vec3 qn;
+    double tau;
+    int inverse;
+    swarp_status s = sw_psm_light_pps(light, &Mc, &qn, &tau, &inverse);
+    if (s != SWARP_OK) return s;
+    if (inverse) info = SWARP_INFO_PSM_INVERSE;
+    swarp_vec3 p0;
+    s = sw_psm_centroid(&Mc, H, nh, &p0);
+    if (s != SWARP_OK) return s;
+    sw_psm_rows q;
     int lag = 0;
-    /* the receivers' centroid in PPS (reference point of the depth row) */
-    swarp_vec3 p0 = {0, 0, 0};
-    for (size_t i = 0; i < nh; ++i) {
-        swarp_vec4 X = sw_xform_point(&Mc, H[i]);
-        if (!(X.w > 0.0)) return SWARP_ERR_DEGENERATE;
-        p0 = sw_add(p0, sw_v3(X.x / X.w, X.y / X.w, X.z / X.w));
-    }
-    p0 = sw_scale(p0, 1.0 / (double)nh);
-    double cx1 = 0.0, cx2 = 0.0; /* x, y row offsets: (e·q̂)/τ */
-    double wa = 0.0, ww = 1.0;   /* w row = wa a·X + ww w_c */
-    if (fabs(tau) < SW_PSM_TAU_ORTHO) {
-        /* the light is at infinity in PPS: orthographic along -q̂ (the limit
-         * of the general rows below, up to a translation A_fit absorbs) */
-        a = sw_scale(qn, -1.0);
-        e1 = sw_perp_ref(a); /* roll reference, continuous in the axis */
-        if (fw && sw_psm_follow_e1(fw, a, &e1, &lag) && lag) info = sw_info_follow(info);
-        e2 = sw_cross(a, e1);
-    } else {
-        /* light-to-receiver directions R = τ x - q̂ (homogeneous-safe, w_c = 1)
-         * and the minimal cone around them [KOZ] §14.2.2 */
-        swarp_vec3 rd[SWARP_BODY_MAX_POINTS];
-        size_t nr = 0;
-        for (size_t i = 0; i < nh && nr < SWARP_BODY_MAX_POINTS; ++i) {
-            swarp_vec4 X = sw_xform_point(&Mc, H[i]);
-            if (!(X.w > 0.0)) return SWARP_ERR_DEGENERATE;
-            swarp_vec3 x = sw_v3(X.x / X.w, X.y / X.w, X.z / X.w);
-            swarp_vec3 R = sw_sub(sw_scale(x, tau), qn);
-            if (!sw_gnormalize(R, &rd[nr])) return SWARP_ERR_LIGHT_INSIDE_BODY; /* receiver at the light */
-            ++nr;
-        }
-        if (nr == 0) return SWARP_ERR_BODY_EMPTY;
-        sw_cap cap = sw_min_cap(rd, nr);
-        /* a cone of 90° or more: the light sits among the receivers */
-        if (!(cap.cosr > SW_PSM_MIN_COS)) return SWARP_ERR_LIGHT_INSIDE_BODY;
-        a = cap.c;
-        /* roll: the PPS x axis projected perpendicular to the axis (blended
-         * near a = ±x), a function of the axis alone, so that the follow
-         * rule's budget κΔ (Δ: the axis' turn) covers the target's motion */
-        e1 = sw_perp_ref(a);
-        if (fw && sw_psm_follow_e1(fw, a, &e1, &lag) && lag) info = sw_info_follow(info);
-        e2 = sw_cross(a, e1);
-        /* rows: x = e1·R/w_l = e1·X - w_c (e1·q̂)/τ (finite as τ -> 0: the
-         * axis tilts away from -q̂ by O(τ); the rounding of e1·q̂ only moves
-         * the image, which A_fit absorbs); w = a·R/|q_h| > 0 */
-        cx1 = sw_dot(e1, qn) / tau;
-        cx2 = sw_dot(e2, qn) / tau;
-        wa = tau;
-        ww = -sw_dot(a, qn);
-    }
-    swarp_mat4 Q;
-    memset(&Q, 0, sizeof Q);
-    sw_set(&Q, 0, 0, e1.x), sw_set(&Q, 0, 1, e1.y), sw_set(&Q, 0, 2, e1.z), sw_set(&Q, 0, 3, -cx1);
-    sw_set(&Q, 1, 0, e2.x), sw_set(&Q, 1, 1, e2.y), sw_set(&Q, 1, 2, e2.z), sw_set(&Q, 1, 3, -cx2);
-    /* depth z = a·(X - w_c p0), p0 the receivers' centroid in PPS: then
-     * z/w = (u - u0)/(c0 + τu) has derivative a·R(p0)/(...)^2 > 0, i.e. it
-     * increases along every light ray for any position of the origin */
-    sw_set(&Q, 2, 0, a.x), sw_set(&Q, 2, 1, a.y), sw_set(&Q, 2, 2, a.z), sw_set(&Q, 2, 3, -sw_dot(a, p0));
-    sw_set(&Q, 3, 0, wa * a.x), sw_set(&Q, 3, 1, wa * a.y), sw_set(&Q, 3, 2, wa * a.z), sw_set(&Q, 3, 3, ww);
-    swarp_mat4 QM;
+    s = sw_psm_light_rows(&Mc, H, nh, qn, tau, fw, &q, &lag);
+    if (s != SWARP_OK) return s;
+    if (lag) info = sw_info_follow(info);
+    swarp_mat4 Q, QM;
+    sw_psm_light_camera(&q, p0, &Q);
     sw_mul(&Q, &Mc, &QM);
     double wab[4];
     for (int j = 0; j < 4; ++j) {
         wab[j] = 0.0;
         for (int k = 0; k < 4; ++k) wab[j] += fabs(sw_at(&Q, 3, k)) * fabs(sw_at(&Mc, k, j));
     }
-    /* unit cube clipping [KOZ] §14.2.2: x, y over the receivers H.  Depth:
-     * over H and the casters that can shadow them, i.e. B inside the light
-     * frustum over the receivers' window (its four side planes pulled back to
-     * world space; this also keeps w > 0).  Clipping B, rather than dropping
-     * points with w <= 0, keeps the depth range continuous as the light
-     * moves.  Without B's polyhedron (swarp_setup_points) the points of B
-     * with w > 0 are used. */
     /* a receiver on the light's plane w = 0 up to rounding (the light
      * itself, a vertex of B, when B is the receivers: swarp_setup_points
-     * without H) is as much "among the receivers" as one behind it: under
-     * FE_TOWARDZERO its w came out +1e-16 and the map collapsed around it
-     * (SWARP_INFO_FLAT_EXTENT; issue 9, fenv swarp_setup_points case 38519) */
+     * without H) is as much "among the receivers" as one behind it: its w
+     * is the rounding's sign, and counted in front it would collapse the
+     * map around it (SWARP_INFO_FLAT_EXTENT) */
     for (size_t i = 0; i < nh; ++i)
         if (!sw_psm_in_front(&QM, wab, H[i])) return SWARP_ERR_LIGHT_INSIDE_BODY;
+    /* x, y over the receivers H ([KOZ] §14.2.2), then depth over the casters */
     swarp_mat4 A;
-    swarp_status s = sw_focus_fit(&QM, H, nh, NULL, 0, dr, &A);
+    s = sw_focus_fit(&QM, H, nh, NULL, 0, dr, &A);
     if (swarp_status_is_error(s)) return s;
     swarp_vec3 zp[SWARP_BODY_MAX_POINTS + SWARP_POLY_MAX_VERTICES];
-    size_t nz = 0;
-    for (size_t i = 0; i < nh && nz < SWARP_BODY_MAX_POINTS; ++i) zp[nz++] = H[i];
-    if (!o->pancake) {
-        if (B_poly) {
-            swarp_mat4 F;
-            sw_mul(&A, &QM, &F);
-            swarp_polyhedron C;
-            sw_poly_copy(B_poly, &C);
-            for (int k = 0; k < 4 && C.vertex_count > 0; ++k) {
-                int row = k / 2;
-                double sg = (k & 1) ? -1.0 : 1.0; /* sg·(row) - w <= 0 */
-                swarp_vec3 n = sw_v3(sg * sw_at(&F, row, 0) - sw_at(&F, 3, 0), sg * sw_at(&F, row, 1) - sw_at(&F, 3, 1),
-                                     sg * sw_at(&F, row, 2) - sw_at(&F, 3, 2));
-                double d = sg * sw_at(&F, row, 3) - sw_at(&F, 3, 3);
-                if (sw_poly_clip(&C, n, d, &C) != SWARP_OK) break;
-            }
-            for (uint32_t i = 0; i < C.vertex_count; ++i)
-                if (sw_psm_in_front(&QM, wab, C.vertices[i])) zp[nz++] = C.vertices[i];
-        } else {
-            for (size_t i = 0; i < nb && nz < SWARP_BODY_MAX_POINTS + SWARP_POLY_MAX_VERTICES; ++i)
-                if (sw_psm_in_front(&QM, wab, B[i])) zp[nz++] = B[i];
-        }
-    }
+    const size_t nz = sw_psm_casters(B, nb, B_poly, H, nh, &A, &QM, wab, o->pancake, zp);
     s = sw_focus_fit(&QM, H, nh, zp, nz, dr, &A);
     if (swarp_status_is_error(s)) return s;
     if (s != SWARP_OK && info == SWARP_OK) info = s;
-    /* light_proj = A Q P_c with the camera projection itself: recovered
-     * as M_c V_c^-1 it carried the rounding of V_c's translation (the
-     * slid-back eye, delta from the camera) times P_c, eps delta absolute in
-     * entries that are 0 (a slide-back of 3.8e12: P_c's y translation 3.7e6
-     * instead of 0, another sign in each rounding mode), and light_proj
-     * light_view was off the matrix by 1e-6 of it (issue 9, fenv
-     * swarp_setup_points 960000 case 866211). */
-    swarp_mat4 AQ;
-    sw_mul(&A, &Q, &AQ);
-    sw_mul(&AQ, &Pc, &res->light_proj);
-    res->light_view = Vc;
-    sw_mul(&A, &QM, &res->matrix);
-    res->n_eye = near + delta; /* [RHS] (2.5)-(2.6): n' = n for PSM */
-    res->n_light = near + delta;
-    res->gamma = 0.0;
-    {
-        swarp_vec3 ld = {0, 0, 0};
-        if (light->type == SWARP_LIGHT_POINT) {
-            sw_gnormalize(sw_sub(cam->eye, light->position), &ld);
-        } else {
-            sw_gnormalize(light->direction, &ld);
-        }
-        res->gamma = acos(sw_max(-1.0, sw_min(1.0, sw_dot(ld, f))));
-    }
-    double lo = INFINITY, hi = -INFINITY;
-    for (size_t i = 0; i < nz; ++i) {
-        swarp_vec4 h = sw_xform_point(&QM, zp[i]);
-        lo = sw_min(lo, h.z / h.w);
-        hi = sw_max(hi, h.z / h.w);
-    }
-    res->light_near = lo;
-    res->light_far = hi;
+    sw_psm_result(cam, light, f, &A, &Q, &QM, &Vc, &Pc, near + delta, zp, nz, res);
     return info;
 }
