@@ -413,6 +413,74 @@ START_TEST(unused_light_fields_ignored) {
 }
 END_TEST
 
+/* Two bad fields at once: the first in the one order of the checks wins
+ * everywhere (camera: reserved, non-finite, fovy, aspect, zero vectors, up
+ * parallel; then the light, the setup options, the view range, the box). */
+MUT(m_fov_and_zero_up, in->cam.fovy = 0.0; in->cam.up = (swarp_vec3){0, 0, 0})
+MUT(m_aspect_and_parallel, in->cam.aspect = -1.0; in->cam.up = in->cam.dir)
+MUT(m_fov_and_near_nan, in->cam.fovy = 4.0; in->cam.near = NAN)
+MUT(m_reserved_and_nan, in->cam._reserved[1] = 1; in->cam.eye.y = NAN)
+MUT(m_camera_and_light, in->cam.dir = (swarp_vec3){0, 0, 0}; in->light.type = (swarp_light_type)9)
+MUT(m_light_and_box, in->light.direction.z = NAN; in->box.min.x = 99.0)
+MUT(m_light_and_options, in->light._reserved0 = 3; in->opt.pancake = 9)
+MUT(m_options_and_range, in->opt.slideback = -2.0; in->cam.near = 0.0)
+MUT(m_range_and_box, in->cam.far = 0.25; in->box.max = in->box.min)
+
+static const struct {
+    const char* name;
+    mutate_fn fn;
+    swarp_status want;
+    unsigned skip;
+} two_bad[] = {
+    {"fovy 0 and up zero", m_fov_and_zero_up, SWARP_ERR_FOV, ALL},
+    {"aspect < 0 and up = dir", m_aspect_and_parallel, SWARP_ERR_OUT_OF_RANGE, ALL},
+    {"fovy 4 and near NaN", m_fov_and_near_nan, SWARP_ERR_FOV, ALL},
+    {"camera _reserved and eye NaN", m_reserved_and_nan, SWARP_ERR_RESERVED_NONZERO, ALL},
+    {"dir zero and light type 9", m_camera_and_light, SWARP_ERR_ZERO_VECTOR, ALL},
+    {"light NaN and box inverted", m_light_and_box, SWARP_ERR_NON_FINITE, ALL},
+    {"light _reserved0 and pancake 9", m_light_and_options, SWARP_ERR_RESERVED_NONZERO, NO_PLAN},
+    {"slideback < 0 and near 0", m_options_and_range, SWARP_ERR_OUT_OF_RANGE, NO_PLAN},
+    {"far < near and box a point", m_range_and_box, SWARP_ERR_NEAR_FAR, ALL},
+};
+
+START_TEST(two_bad_fields_same_first_status) {
+    inputs in = base();
+    two_bad[_i].fn(&in);
+    for (int e = 0; e < E_COUNT; ++e) {
+        if (!applies(e, two_bad[_i].skip)) continue;
+        outputs out;
+        swarp_status s = call(e, &in, N_NONE, &out);
+        ck_assert_msg(s == two_bad[_i].want, "%s, %s: %s (first in order: %s)", two_bad[_i].name, entry_name[e],
+                      swarp_status_name(s), swarp_status_name(two_bad[_i].want));
+        ck_assert_msg(outputs_untouched(e, &out), "%s, %s: an output was written", two_bad[_i].name, entry_name[e]);
+    }
+}
+END_TEST
+
+/* The stabilisation stage's own entry points take the camera through the
+ * same check: the same statuses at the same bound. */
+START_TEST(stabilize_camera_same_bound) {
+    static const struct {
+        double s;
+        swarp_status want;
+    } k[] = {{0.5e-9, SWARP_ERR_DEGENERATE}, {0.9e-9, SWARP_ERR_DEGENERATE}, {1.1e-9, SWARP_OK},
+             {3e-9, SWARP_OK}, {5e-9, SWARP_OK}, {1e-6, SWARP_OK}};
+    for (size_t i = 0; i < sizeof k / sizeof k[0]; ++i) {
+        inputs in = base();
+        up_at(&in, k[i].s, 0);
+        swarp_vec3 c;
+        double r;
+        memset(&c, CANARY, sizeof c);
+        memset(&r, CANARY, sizeof r);
+        swarp_status s = swarp_stabilize_sphere(&in.cam, 1.0, 50.0, &c, &r, NULL);
+        ck_assert_msg(s == k[i].want, "sin %g: %s", k[i].s, swarp_status_name(s));
+        if (s != SWARP_OK) ck_assert(untouched(&c, sizeof c) && untouched(&r, sizeof r));
+        outputs out;
+        ck_assert_int_eq(call(E_SETUP, &in, N_NONE, &out) == SWARP_ERR_DEGENERATE, k[i].want == SWARP_ERR_DEGENERATE);
+    }
+}
+END_TEST
+
 static Suite* checks_suite(void) {
     Suite* s = suite_create("checks");
     TCase* t = tcase_create("core");
@@ -421,6 +489,8 @@ static Suite* checks_suite(void) {
     tcase_add_test(t, null_pointer_same_status);
     tcase_add_test(t, up_near_parallel_above_bound_valid);
     tcase_add_test(t, unused_light_fields_ignored);
+    tcase_add_loop_test(t, two_bad_fields_same_first_status, 0, (int)(sizeof two_bad / sizeof two_bad[0]));
+    tcase_add_test(t, stabilize_camera_same_bound);
     suite_add_tcase(s, t);
     return s;
 }
