@@ -837,7 +837,7 @@ static const struct {
     {m_planes, SWARP_ERR_PLAN_TOO_MANY_PLANES},
     {m_plane_zero, SWARP_ERR_ZERO_VECTOR},
     {m_plane_nan, SWARP_ERR_NON_FINITE},
-    {m_box_inverted, SWARP_ERR_OUT_OF_RANGE},
+    {m_box_inverted, SWARP_ERR_BOX_INVERTED},
     {m_box_nan, SWARP_ERR_NON_FINITE},
     {m_box_behind, SWARP_ERR_PLAN_EMPTY_VIEW},
     {m_soft_width, SWARP_ERR_OUT_OF_RANGE},

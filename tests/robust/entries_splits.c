@@ -148,6 +148,18 @@ static void expect_cam(swr_ctx* c, const swarp_camera* cam) {
         if (cam->_reserved[i]) swr_expect(c, SWARP_ERR_RESERVED_NONZERO);
     swr_domain(c, SWARP_ERR_DEGENERATE);
     swr_domain(c, SWARP_ERR_ZERO_VECTOR);
+    /* sin(angle(dir, up)) on the documented 1e-9 bound (dir drawn 1e-9
+     * from up): DEGENERATE or not is decided by rounding */
+    double md = fmax(fabs(cam->dir.x), fmax(fabs(cam->dir.y), fabs(cam->dir.z)));
+    double mu = fmax(fabs(cam->up.x), fmax(fabs(cam->up.y), fabs(cam->up.z)));
+    if (fin3(&cam->dir) && fin3(&cam->up) && md > 0 && mu > 0) {
+        const swarp_vec3 d = {cam->dir.x / md, cam->dir.y / md, cam->dir.z / md};
+        const swarp_vec3 u = {cam->up.x / mu, cam->up.y / mu, cam->up.z / mu};
+        const swarp_vec3 r = {d.y * u.z - d.z * u.y, d.z * u.x - d.x * u.z, d.x * u.y - d.y * u.x};
+        const double rr = r.x * r.x + r.y * r.y + r.z * r.z, dd = d.x * d.x + d.y * d.y + d.z * d.z,
+                     uu = u.x * u.x + u.y * u.y + u.z * u.z;
+        if (fabs(sqrt(rr / (dd * uu)) / 1e-9 - 1) < 1e-9) c->rounding_edge = 1;
+    }
 }
 
 static void e_stabilize_sphere(swr_ctx* c) {
