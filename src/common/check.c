@@ -25,8 +25,8 @@ swarp_status sw_check_camera_shape(const swarp_camera* cam) {
     if (!(cam->fovy > 0.0 && cam->fovy < SWARP_PI)) return SWARP_ERR_FOV;
     if (!(cam->aspect > 0.0)) return SWARP_ERR_OUT_OF_RANGE;
     swarp_vec3 f, u;
-    if (!sw_gnormalize(cam->dir, &f) || !sw_gnormalize(cam->up, &u)) return SWARP_ERR_ZERO_VECTOR;
-    if (!(sw_glen(sw_cross(f, u)) >= SW_CAMERA_MIN_UP_SIN)) return SWARP_ERR_DEGENERATE;
+    if (!sw_normalize_fast(cam->dir, &f) || !sw_normalize_fast(cam->up, &u)) return SWARP_ERR_ZERO_VECTOR;
+    if (!(sw_len_fast(sw_cross(f, u)) >= SW_CAMERA_MIN_UP_SIN)) return SWARP_ERR_DEGENERATE;
     return SWARP_OK;
 }
 
@@ -46,7 +46,7 @@ swarp_status sw_check_camera(const swarp_camera* cam) {
 static swarp_status sw_check_direction(const swarp_vec3* d) {
     if (!sw_finite3(d)) return SWARP_ERR_NON_FINITE;
     swarp_vec3 a;
-    if (!sw_gnormalize(*d, &a)) return SWARP_ERR_ZERO_VECTOR;
+    if (!sw_normalize_fast(*d, &a)) return SWARP_ERR_ZERO_VECTOR;
     return SWARP_OK;
 }
 

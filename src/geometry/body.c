@@ -91,7 +91,7 @@ static swarp_status sw_flat_extend(const swarp_polyhedron* H, swarp_vec3 u, doub
         swarp_vec3 a = H->vertices[loop[i]], b = H->vertices[loop[i + 1 == k ? 0 : i + 1]];
         swarp_vec3 m = sw_cross(sw_sub(b, a), n); /* outward in-plane edge normal */
         if (point)
-            cls[i] = sw_dot(m, sw_sub(*point, a)) > eps * sw_glen(m);
+            cls[i] = sw_dot(m, sw_sub(*point, a)) > eps * sw_len_fast(m);
         else
             cls[i] = sw_dot(m, u) > 0.0;
     }
@@ -159,7 +159,7 @@ static int sw_side_plane(const swarp_polyhedron* H, uint8_t a, uint8_t b, uint32
     if (!(m > 0.0)) return 0;
     if (m < SW_SIDE_WEIGHT_TINY) wj /= m, wk /= m; /* their products with the normals would underflow */
     swarp_vec3 n = sw_v3(wj * pj.a + wk * pk.a, wj * pj.b + wk * pk.b, wj * pj.c + wk * pk.c);
-    double len = sw_glen(n), d = wj * pj.d + wk * pk.d;
+    double len = sw_len_fast(n), d = wj * pj.d + wk * pk.d;
     if (!(len >= SW_SIDE_CANCEL_REL * (wj + wk))) {
         /* all but opposite faces (an all but flat H): the combination is
          * the noise of the two normals; the plane through the end points
@@ -169,7 +169,7 @@ static int sw_side_plane(const swarp_polyhedron* H, uint8_t a, uint8_t b, uint32
         swarp_vec3 va = H->vertices[a], vb = H->vertices[b];
         swarp_vec3 dir = apex ? sw_sub(*apex, va) : u;
         swarp_vec3 nn = sw_cross(sw_sub(va, vb), dir); /* (a - b) x u: outward for CCW b->a->... */
-        double lc = sw_glen(nn);
+        double lc = sw_len_fast(nn);
         if (lc > 0.0 && sw_finite(lc)) {
             n = nn, len = lc;
             d = -sw_dot(nn, va);
@@ -456,7 +456,7 @@ swarp_status sw_body_h(const swarp_camera* cam, double near, double far, const s
      * plane leaves H empty */
     {
         swarp_vec3 f = {0, 0, -1};
-        sw_gnormalize(cam->dir, &f);
+        sw_normalize_fast(cam->dir, &f);
         double zbox = -INFINITY;
         for (int i = 0; i < 8; ++i) {
             swarp_vec3 c = sw_v3((i & 1) ? box->max.x : box->min.x, (i & 2) ? box->max.y : box->min.y,
@@ -500,10 +500,10 @@ swarp_status sw_body_h_eye(const swarp_camera* cam, double near, double far, con
 /* The square pyramid L circumscribing the spot cone: 4 planes through l. */
 swarp_status sw_clip_light_pyramid(swarp_polyhedron* B, const swarp_light* light) {
     swarp_vec3 a = {0, 0, 1}, e1 = {1, 0, 0}, e2;
-    sw_gnormalize(light->direction, &a); /* subnormal directions are valid (sw_gnormalize scales them) */
+    sw_normalize_fast(light->direction, &a); /* subnormal directions are valid (sw_normalize_fast scales them) */
     swarp_vec3 ref = fabs(a.x) < SW_REF_AXIS_MAX ? sw_v3(1, 0, 0)
                    : (fabs(a.y) < SW_REF_AXIS_MAX ? sw_v3(0, 1, 0) : sw_v3(0, 0, 1));
-    sw_gnormalize(sw_cross(ref, a), &e1);
+    sw_normalize_fast(sw_cross(ref, a), &e1);
     e2 = sw_cross(a, e1);
     double c = cos(light->cone_angle), s = sin(light->cone_angle);
     swarp_vec3 ns[4] = {sw_sub(sw_scale(e1, c), sw_scale(a, s)), sw_sub(sw_scale(e1, -c), sw_scale(a, s)),
@@ -568,10 +568,10 @@ static swarp_status sw_body_from_h_ex(const swarp_polyhedron* H, const swarp_lig
         if (light->type == SWARP_LIGHT_POINT) {
             const swarp_vec3* l = &light->position;
             double off = p.a * l->x + p.b * l->y + p.c * l->z + p.d;
-            flat = fabs(off) <= SW_BODY_VISIBLE_EPS_REL * sw_max(sw_poly_scale(H), sw_glen(*l));
+            flat = fabs(off) <= SW_BODY_VISIBLE_EPS_REL * sw_max(sw_poly_scale(H), sw_len_fast(*l));
         } else {
             swarp_vec3 dd = {0, -1, 0};
-            sw_gnormalize(light->direction, &dd);
+            sw_normalize_fast(light->direction, &dd);
             flat = fabs(p.a * dd.x + p.b * dd.y + p.c * dd.z) <= SW_BODY_GRAZING_COS;
         }
     }
@@ -590,9 +590,9 @@ static swarp_status sw_body_from_h_ex(const swarp_polyhedron* H, const swarp_lig
         }
     } else {
         swarp_vec3 u = {0, 0, 1};
-        sw_gnormalize(sw_scale(light->direction, -1.0), &u);
+        sw_normalize_fast(sw_scale(light->direction, -1.0), &u);
         /* T: longer than any path inside S */
-        double diag = sw_glen(sw_sub(box->max, box->min));
+        double diag = sw_len_fast(sw_sub(box->max, box->min));
         double T = 2.0 * diag + 1e-300;
         /* a box reaching to ±DBL_MAX (valid input) has diag(S) ~ DBL_MAX:
          * 2 diag overflows and the extruded copies would be inf (inf

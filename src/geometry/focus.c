@@ -73,7 +73,7 @@ static int sw_aligned_up(const swarp_camera* cam, swarp_vec3 a, swarp_vec3* up) 
     swarp_vec3 v, r, cu;
     sw_camera_basis(cam, &v, &r, &cu);
     swarp_vec3 v_perp = sw_sub(v, sw_scale(a, sw_dot(v, a)));
-    double s = sw_glen(v_perp); /* sin γ */
+    double s = sw_len_fast(v_perp); /* sin γ */
     int blend = s < SWARP_FOCUS_BLEND_SIN;
     swarp_vec3 u = v_perp;
     if (blend) {
@@ -82,19 +82,19 @@ static int sw_aligned_up(const swarp_camera* cam, swarp_vec3 a, swarp_vec3* up) 
         swarp_vec3 r_perp = sw_sub(r, sw_scale(a, sw_dot(r, a)));
         u = sw_add(v_perp, sw_scale(r_perp, w));
     }
-    if (!sw_gnormalize(u, up)) {
+    if (!sw_normalize_fast(u, up)) {
         /* the field's single zero (measure zero): any perpendicular works */
         swarp_vec3 ref = fabs(a.x) < SW_REF_AXIS_MAX ? sw_v3(1, 0, 0) : sw_v3(0, 1, 0);
-        sw_gnormalize(sw_cross(a, ref), up);
+        sw_normalize_fast(sw_cross(a, ref), up);
     }
     /* exact perpendicularity for the look-at */
-    sw_gnormalize(sw_sub(*up, sw_scale(a, sw_dot(*up, a))), up);
+    sw_normalize_fast(sw_sub(*up, sw_scale(a, sw_dot(*up, a))), up);
     return blend;
 }
 
 swarp_status sw_light_view(const swarp_camera* cam, swarp_vec3 origin, swarp_vec3 forward, swarp_mat4* out) {
     swarp_vec3 a = {0, 0, -1}, up = {0, 1, 0};
-    if (!sw_gnormalize(forward, &a)) return SWARP_ERR_ZERO_VECTOR;
+    if (!sw_normalize_fast(forward, &a)) return SWARP_ERR_ZERO_VECTOR;
     int blend = sw_aligned_up(cam, a, &up);
     swarp_mat4 m;
     sw_look_at(origin, a, up, &m);
@@ -125,7 +125,7 @@ swarp_status sw_light_origin_axis(const swarp_camera* cam, const swarp_light* li
     } else {
         *forward = sw_sub(cam->eye, light->position);
     }
-    return sw_glen(*forward) > 0.0 ? SWARP_OK : SWARP_ERR_ZERO_VECTOR;
+    return sw_len_fast(*forward) > 0.0 ? SWARP_OK : SWARP_ERR_ZERO_VECTOR;
 }
 
 SWARP_API swarp_status swarp_focus_light_view(const swarp_camera* cam, const swarp_light* light,

@@ -51,12 +51,12 @@ double sw_follow_aligned_tol(double s_h, double s_t) {
 }
 
 double sw_follow_angle(swarp_vec3 a, swarp_vec3 b) {
-    return atan2(sw_glen(sw_cross(a, b)), sw_dot(a, b));
+    return atan2(sw_len_fast(sw_cross(a, b)), sw_dot(a, b));
 }
 
 swarp_vec3 sw_follow_turn(swarp_vec3 h, swarp_vec3 t, swarp_vec3 a, double budget, double aligned, int* lag) {
     swarp_vec3 c = sw_cross(h, t);
-    double phi = atan2(sw_glen(c), sw_dot(h, t)); /* in [0, pi/2] as t·h >= 0 */
+    double phi = atan2(sw_len_fast(c), sw_dot(h, t)); /* in [0, pi/2] as t·h >= 0 */
     *lag = 0;
     /* within `aligned` (sw_follow_aligned_tol) the frame is aligned:
      * rounding of a frame followed with Δ = 0 must not count as lagging */
@@ -71,11 +71,11 @@ swarp_vec3 sw_follow_turn(swarp_vec3 h, swarp_vec3 t, swarp_vec3 a, double budge
  * a; *len: the projection's length (sin of the angle between h and a) */
 static int sw_perp_unit_len(swarp_vec3 h, swarp_vec3 a, swarp_vec3* out, double* len) {
     swarp_vec3 p = sw_sub(h, sw_scale(a, sw_dot(h, a)));
-    *len = sw_glen(p);
+    *len = sw_len_fast(p);
     /* below SW_FOLLOW_PERP_MIN the direction is rounding noise of a
      * previous axis 90° or more away: no usable transport (a teleport) */
     if (!(*len > SW_FOLLOW_PERP_MIN)) return 0;
-    return sw_gnormalize(p, out);
+    return sw_normalize_fast(p, out);
 }
 static int sw_perp_unit(swarp_vec3 h, swarp_vec3 a, swarp_vec3* out) {
     double len;
@@ -85,7 +85,7 @@ static int sw_perp_unit(swarp_vec3 h, swarp_vec3 a, swarp_vec3* out) {
 swarp_status sw_follow_light_view(const swarp_camera* cam, swarp_vec3 origin, swarp_vec3 forward,
                                   const sw_follow* fw, swarp_mat4* out) {
     swarp_vec3 a, v, r, u, h, t;
-    if (!sw_gnormalize(forward, &a)) return SWARP_ERR_ZERO_VECTOR;
+    if (!sw_normalize_fast(forward, &a)) return SWARP_ERR_ZERO_VECTOR;
     sw_camera_basis(cam, &v, &r, &u);
     double s_h, s_t;
     int have_h = sw_perp_unit_len(fw->up, a, &h, &s_h);
@@ -165,8 +165,8 @@ static swarp_status sw_follow_psm(const swarp_setup_result* p, const swarp_camer
             row[i] = sw_v3(sw_at(m, i, 0), sw_at(m, i, 1) / pc->aspect, sw_at(m, i, 3) / c23 / ty / pc->aspect);
         }
     }
-    swarp_vec3 a = sw_glen(row[3]) > sw_glen(row[2]) ? row[3] : row[2];
-    if (!sw_gnormalize(a, &a)) return SWARP_ERR_ZERO_VECTOR;
+    swarp_vec3 a = sw_len_fast(row[3]) > sw_len_fast(row[2]) ? row[3] : row[2];
+    if (!sw_normalize_fast(a, &a)) return SWARP_ERR_ZERO_VECTOR;
     swarp_vec3 e1;
     if (!sw_perp_unit(row[0], a, &e1)) return SWARP_ERR_FOLLOW_FRAME;
     out->axis = a;
@@ -181,7 +181,7 @@ static swarp_status sw_follow_rows(const swarp_mat4* L, swarp_vec3 rows[3]) {
     for (int i = 0; i < 3; ++i)
         if (!sw_finite3(&rows[i])) return SWARP_ERR_NON_FINITE;
     for (int i = 0; i < 3; ++i)
-        if (!(sw_glen(rows[i]) > 0.0)) return SWARP_ERR_ZERO_VECTOR;
+        if (!(sw_len_fast(rows[i]) > 0.0)) return SWARP_ERR_ZERO_VECTOR;
     /* a rigid frame: unit rows, orthogonal, right-handed (PSM: the camera's
      * own view, also rigid) */
     for (int i = 0; i < 3; ++i) {

@@ -5,42 +5,6 @@
 
 #include "common/swarp_internal.h"
 
-/* Fast length for the hot paths: sqrt of the sum of squares, exact enough
- * and safe up to |v| ~ 1e150; falls back to the overflow-proof hypot of
- * swarp_internal.h outside that range. */
-static inline double sw_glen(swarp_vec3 a) {
-    double s = a.x * a.x + a.y * a.y + a.z * a.z;
-    if (s > 1e-290 && s < 1e290) return sqrt(s);
-    return sw_len(a);
-}
-/* Unit vector of a; 0 (and *out untouched) for a zero or non-finite a.
- * Outside the fast range the vector is divided by its largest component
- * first: a subnormal a (|a| = 5e-324: 1/|a| overflows, and inf * 0 gave
- * NaN components) and an a near DBL_MAX (|a| overflows) are valid
- * directions (issue 9, hard-case sweep: swarp_focus_light_view returned a
- * NaN view with SWARP_OK for the direction (5e-324, 0, 0)). */
-static inline int sw_gnormalize(swarp_vec3 a, swarp_vec3* out) {
-    double s = a.x * a.x + a.y * a.y + a.z * a.z;
-    if (s > 1e-290 && s < 1e290) {
-        *out = sw_scale(a, 1.0 / sqrt(s));
-        return 1;
-    }
-    /* a NaN component fails the range test above too, and fmax would skip it */
-    if (!sw_finite3(&a)) return 0;
-    double m = fmax(fabs(a.x), fmax(fabs(a.y), fabs(a.z)));
-    if (!(m > 0.0)) return 0;
-    swarp_vec3 b = sw_v3(a.x / m, a.y / m, a.z / m); /* exact-ish: a component is ±1 */
-    *out = sw_scale(b, 1.0 / sqrt(sw_dot(b, b)));
-    return 1;
-}
-/* Θ = fovy/2 for the error model and the parameters: the smallest
- * subnormal fovy (valid, > 0) halves to 0, which they refuse as a field of
- * view (SWARP_ERR_FOV on valid arguments, issue 9, hard-case sweep); it is
- * kept at the smallest positive double instead. */
-static inline double sw_half_fovy(double fovy) {
-    double t = 0.5 * fovy;
-    return t > 0.0 ? t : 0x1p-1074;
-}
 static inline double sw_max(double a, double b) { return a > b ? a : b; }
 static inline double sw_min(double a, double b) { return a < b ? a : b; }
 

@@ -11,8 +11,8 @@ _Static_assert(SWARP_POLY_MAX_VERTICES <= 255, "face indices are uint8_t");
 
 void sw_camera_basis(const swarp_camera* cam, swarp_vec3* f, swarp_vec3* r, swarp_vec3* u) {
     swarp_vec3 ff = {0, 0, -1}, uu, rr = {1, 0, 0};
-    sw_gnormalize(cam->dir, &ff);
-    sw_gnormalize(sw_cross(ff, cam->up), &rr);
+    sw_normalize_fast(cam->dir, &ff);
+    sw_normalize_fast(sw_cross(ff, cam->up), &rr);
     uu = sw_cross(rr, ff);
     *f = ff;
     *r = rr;
@@ -230,9 +230,9 @@ void sw_poly_from_corners(const swarp_vec3 c[8], swarp_polyhedron* out) {
         swarp_vec3 n = sw_newell(out->vertices, loop, 4);
         swarp_vec3 nu = {0, 0, 1};
         /* collapsed face (flat box), or corners near DBL_MAX whose products
-         * overflowed to inf - inf = NaN (sw_gnormalize's scaled branch
+         * overflowed to inf - inf = NaN (sw_normalize_fast's scaled branch
          * takes fmax of the components, which skips a NaN: checked here) */
-        if (!sw_finite3(&n) || !sw_gnormalize(n, &nu)) continue;
+        if (!sw_finite3(&n) || !sw_normalize_fast(n, &nu)) continue;
         swarp_vec3 fc = sw_scale(sw_add(sw_add(c[loop[0]], c[loop[1]]), sw_add(c[loop[2]], c[loop[3]])), 0.25);
         const double dc = sw_dot(nu, sw_sub(fc, centroid));
         if (fabs(dc) > fabs(far_dot)) far_dot = dc;
@@ -505,7 +505,7 @@ static swarp_status sw_clip_plane_unit(swarp_vec3 n_raw, double d_raw, swarp_vec
             return SWARP_OK;
         }
     }
-    double len = sw_glen(n_raw);
+    double len = sw_len_fast(n_raw);
     if (!(len > 0.0)) return SWARP_ERR_ZERO_VECTOR;
     *n = sw_scale(n_raw, 1.0 / len);
     *d = d_raw / len;
@@ -738,7 +738,7 @@ static void sw_cap_sort_by_angle(const sw_clip* c, const swarp_polyhedron* t, ui
     if (c->unit_normal) /* an axis: ref x n is a unit axis already */
         e1 = sw_cross(ref, n);
     else
-        sw_gnormalize(sw_cross(ref, n), &e1);
+        sw_normalize_fast(sw_cross(ref, n), &e1);
     e2 = sw_cross(n, e1);
     double key[SWARP_POLY_MAX_FACE_VERTICES];
     for (uint32_t k = 0; k < n_on; ++k) {
@@ -927,7 +927,7 @@ SWARP_API swarp_status swarp_poly_clip(const swarp_polyhedron* in, const swarp_p
     swarp_status s = sw_poly_validate(in);
     if (s != SWARP_OK) return s;
     swarp_vec3 n = {plane->a, plane->b, plane->c};
-    if (!(sw_glen(n) > 0.0)) return SWARP_ERR_ZERO_VECTOR;
+    if (!(sw_len_fast(n) > 0.0)) return SWARP_ERR_ZERO_VECTOR;
     /* compute into a local: outputs stay untouched on error */
     swarp_polyhedron t;
     s = sw_poly_clip(in, n, plane->d, &t);

@@ -66,7 +66,7 @@ static int sw_in_cap(const sw_cap* k, swarp_vec3 r) {
 }
 static sw_cap sw_cap2(swarp_vec3 a, swarp_vec3 b) {
     sw_cap k = {a, 1.0};
-    if (sw_gnormalize(sw_add(a, b), &k.c)) k.cosr = sw_dot(k.c, a);
+    if (sw_normalize_fast(sw_add(a, b), &k.c)) k.cosr = sw_dot(k.c, a);
     else k.cosr = -1.0; /* antipodal: no cap smaller than a hemisphere */
     return k;
 }
@@ -98,7 +98,7 @@ static sw_cap sw_cap3(swarp_vec3 a, swarp_vec3 b, swarp_vec3 c) {
      * (a, b, c near one great circle: a cap of almost 90°) */
     const double det = sw_dot(a, sw_cross(vb, vc));
     const swarp_vec3 u = sw_scale(sw_add(sw_scale(sw_cross(vc, a), hb), sw_scale(sw_cross(a, vb), hc)), 1.0 / det);
-    if (!(det != 0.0) || !sw_gnormalize(sw_add(a, u), &k.c)) { /* on one great circle: the widest pair */
+    if (!(det != 0.0) || !sw_normalize_fast(sw_add(a, u), &k.c)) { /* on one great circle: the widest pair */
         sw_cap k1 = sw_cap2(a, b), k2 = sw_cap2(a, c), k3 = sw_cap2(b, c);
         k = k1;
         if (k2.cosr < k.cosr) k = k2;
@@ -130,14 +130,14 @@ static sw_cap sw_min_cap(const swarp_vec3* r, size_t n) {
 static swarp_vec3 sw_perp_ref(swarp_vec3 n) {
     swarp_vec3 x = sw_v3(1, 0, 0), y = sw_v3(0, 1, 0);
     swarp_vec3 px = sw_sub(x, sw_scale(n, n.x));
-    double s = sw_glen(px);
+    double s = sw_len_fast(px);
     if (s < SWARP_FOCUS_BLEND_SIN) {
         double t = 1.0 - s / SWARP_FOCUS_BLEND_SIN;
         swarp_vec3 py = sw_sub(y, sw_scale(n, n.y));
         px = sw_add(px, sw_scale(py, SWARP_FOCUS_BLEND_WEIGHT * t * t));
     }
     swarp_vec3 b = {0, 0, 1};
-    if (!sw_gnormalize(px, &b)) sw_gnormalize(sw_cross(n, sw_v3(0, 0, 1)), &b);
+    if (!sw_normalize_fast(px, &b)) sw_normalize_fast(sw_cross(n, sw_v3(0, 0, 1)), &b);
     return b;
 }
 
@@ -156,16 +156,16 @@ static int sw_psm_follow_e1(const sw_follow* fw, swarp_vec3 a, swarp_vec3* e1, i
     swarp_vec3 h, t = *e1;
     *lag = 0;
     swarp_vec3 ph = sw_sub(fw->up, sw_scale(a, sw_dot(fw->up, a)));
-    const double s_h = sw_glen(ph);
+    const double s_h = sw_len_fast(ph);
     /* below SW_FOLLOW_PERP_MIN the projected direction is rounding noise
      * (the previous axis was 90° away: nothing to follow, take the target) */
-    if (!(s_h > SW_FOLLOW_PERP_MIN) || !sw_gnormalize(ph, &h)) return 0;
+    if (!(s_h > SW_FOLLOW_PERP_MIN) || !sw_normalize_fast(ph, &h)) return 0;
     /* the axis' sign is free in a previous result: the angle between lines */
-    double delta = atan2(sw_glen(sw_cross(fw->axis, a)), fabs(sw_dot(fw->axis, a)));
+    double delta = atan2(sw_len_fast(sw_cross(fw->axis, a)), fabs(sw_dot(fw->axis, a)));
     if (sw_dot(h, t) < 0.0) t = sw_scale(t, -1.0);
     h = sw_follow_turn(h, t, a, SWARP_FOLLOW_KAPPA * delta, sw_follow_aligned_tol(s_h, SW_PERP_REF_MIN_LEN), lag);
     swarp_vec3 p = sw_sub(h, sw_scale(a, sw_dot(h, a)));
-    return sw_gnormalize(p, e1);
+    return sw_normalize_fast(p, e1);
 }
 
 /* PSM_INVERSE is the more important information */
@@ -240,7 +240,7 @@ static swarp_status sw_psm_light_pps(const swarp_light* light, const swarp_mat4*
                         : (swarp_vec4){-light->direction.x, -light->direction.y, -light->direction.z, 0.0};
     swarp_vec4 Lh = sw_xform4(Mc, Lw);
     swarp_vec3 qh = sw_v3(Lh.x, Lh.y, Lh.z);
-    double qlen = sw_glen(qh);
+    double qlen = sw_len_fast(qh);
     if (!(qlen > 0.0)) return SWARP_ERR_LIGHT_INSIDE_BODY; /* the light is the eye itself */
     *qn = sw_scale(qh, 1.0 / qlen);
     *tau = Lh.w / qlen;
@@ -290,7 +290,7 @@ static swarp_status sw_psm_cone_axis(const swarp_mat4* Mc, const swarp_vec3* H, 
         if (!(X.w > 0.0)) return SWARP_ERR_DEGENERATE;
         swarp_vec3 x = sw_v3(X.x / X.w, X.y / X.w, X.z / X.w);
         swarp_vec3 R = sw_sub(sw_scale(x, tau), qn);
-        if (!sw_gnormalize(R, &rd[nr])) return SWARP_ERR_LIGHT_INSIDE_BODY; /* receiver at the light */
+        if (!sw_normalize_fast(R, &rd[nr])) return SWARP_ERR_LIGHT_INSIDE_BODY; /* receiver at the light */
         ++nr;
     }
     if (nr == 0) return SWARP_ERR_BODY_EMPTY;
@@ -394,9 +394,9 @@ static void sw_psm_result(const swarp_camera* cam, const swarp_light* light, swa
     res->gamma = 0.0;
     swarp_vec3 ld = {0, 0, 0};
     if (light->type == SWARP_LIGHT_POINT) {
-        sw_gnormalize(sw_sub(cam->eye, light->position), &ld);
+        sw_normalize_fast(sw_sub(cam->eye, light->position), &ld);
     } else {
-        sw_gnormalize(light->direction, &ld);
+        sw_normalize_fast(light->direction, &ld);
     }
     res->gamma = acos(sw_max(-1.0, sw_min(1.0, sw_dot(ld, f))));
     double lo = INFINITY, hi = -INFINITY;

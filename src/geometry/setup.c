@@ -40,14 +40,14 @@ static swarp_status sw_info_merge(swarp_status a, swarp_status b) {
 /* The light's view axis for a point light: the spot axis, or the direction
  * to the centre of the points' bounding box. */
 static int sw_point_axis(const swarp_light* light, const swarp_vec3* pts, size_t n, swarp_vec3* a) {
-    if (light->cone_angle > 0.0) return sw_gnormalize(light->direction, a);
+    if (light->cone_angle > 0.0) return sw_normalize_fast(light->direction, a);
     swarp_vec3 lo = pts[0], hi = pts[0];
     for (size_t i = 1; i < n; ++i) {
         lo = sw_v3(fmin(lo.x, pts[i].x), fmin(lo.y, pts[i].y), fmin(lo.z, pts[i].z));
         hi = sw_v3(fmax(hi.x, pts[i].x), fmax(hi.y, pts[i].y), fmax(hi.z, pts[i].z));
     }
     swarp_vec3 c = sw_scale(sw_add(lo, hi), 0.5);
-    return sw_gnormalize(sw_sub(c, light->position), a);
+    return sw_normalize_fast(sw_sub(c, light->position), a);
 }
 
 /* The nearest vertex e of [WS06] (the WS06 warp centre): the vertex of
