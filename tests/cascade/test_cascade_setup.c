@@ -1,5 +1,5 @@
 #define _POSIX_C_SOURCE 200809L
-/* Cascade loose ends: stabilised cascades keep constant split ranges
+/* swarp_cascade_setup's options: stabilised cascades keep constant split ranges
  * ([RHS] §3.5), spot lights' receivers H_i ∩ L, [RHS] §3.4 "arbitrary
  * warping" (per split / derived from the first split), and the [RHS] §4.3
  * measured min depth as an input of the setup call. */
