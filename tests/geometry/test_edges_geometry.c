@@ -1234,7 +1234,7 @@ END_TEST
  * rounding (+-1e-15); taken into the casters' depth range when the
  * rounding makes w positive (FE_DOWNWARD), a depth of -5e15 would make the
  * fit call x and y flat and collapse the map (SWARP_INFO_FLAT_EXTENT, rows
- * of 1e-17).  Casters count only with w above its rounding (src/psm.c), so
+ * of 1e-17).  Casters count only with w above its rounding (src/geometry/psm.c), so
  * every mode gives the default mode's map. */
 START_TEST(setup_points_psm_light_in_b_rounding_mode) {
     swarp_camera cam = {{0x1.e844419ef06e8p+19, 0x1.9c16768fb6f8bp+1, 0x1.e84a3a2358517p+19},
@@ -1279,7 +1279,7 @@ END_TEST
  * target up (the view projected normal to the light, 1e-7 long) is rounded
  * to eps/1e-7 = 2e-9 rad, above a fixed 1e-9 alignment bound: φ is 0.8e-9
  * to nearest and 1.8e-9, 2.9e-9 in the directed modes.  The bound adds
- * 16 eps over each projection's length (src/follow.c), so every mode calls
+ * 16 eps over each projection's length (src/geometry/follow.c), so every mode calls
  * the frame aligned and gives the same status. */
 START_TEST(setup_follow_aligned_rounding_mode) {
     swarp_camera cam = {{-0x1.24a14cfe4aaaap+2, 0x1.5489c2e3efd6p+2, -0x1.ce986f28b59e9p+4},
@@ -1323,7 +1323,7 @@ END_TEST
  * vertex of B.  Its w in the light camera is 0 up to rounding (+1e-16
  * under FE_TOWARDZERO, which would collapse the map around it to
  * SWARP_INFO_FLAT_EXTENT).  A receiver must be in front of the light by
- * more than the rounding of its w (src/psm.c): the light is refused among
+ * more than the rounding of its w (src/geometry/psm.c): the light is refused among
  * the receivers (SWARP_ERR_LIGHT_INSIDE_BODY) in every mode. */
 START_TEST(setup_points_psm_light_is_receiver_rounding_mode) {
     swarp_camera cam = {{-0x1.3feeaa7e822a5p+3, -0x1.8e460d304ac5fp+1, 0x1.bae3635bc42bp+3},
@@ -1365,7 +1365,7 @@ END_TEST
  * the light's axis is -7e-15, 0 or +1e-14 by rounding mode, which would
  * read as the light inside B (SWARP_ERR_LIGHT_INSIDE_BODY) or a map divided
  * by D = 0 (SWARP_ERR_DEGENERATE).  A point within the rounding of D of the
- * light is the apex, clipped as any (src/setup.c): nothing is left of B,
+ * light is the apex, clipped as any (src/geometry/setup.c): nothing is left of B,
  * SWARP_ERR_BODY_EMPTY in every mode. */
 START_TEST(setup_points_b_is_the_spot_apex_rounding_mode) {
     swarp_camera cam = {{-0x1.541efcd5d2f0cp+5, 0x1.2b331b2f89836p+3, 0x1.ddf1ad5d7cd2bp+5},
@@ -1409,7 +1409,7 @@ static void setup_status_in_every_mode(const swarp_camera* cam, const swarp_ligh
  * near plane, so z_0 = z_1 = near exactly and their computed difference is
  * rounding (+-1e-14): n_opt 1e17 or +inf by mode if taken literally.
  * Within their rounding the depths count as equal: uniform
- * (SWARP_INFO_WARP_UNIFORM) in every mode (src/warp.c). */
+ * (SWARP_INFO_WARP_UNIFORM) in every mode (src/geometry/lispsm.c). */
 START_TEST(setup_nopt_equal_depths_rounding_mode) {
     swarp_camera cam = {{-0x1.e8482c636ea16p+19, 0x1.dfe0a6dd51096p+4, -0x1.e84c66bd330b1p+19},
                         {-0x1.2e9f9ca9cb6d5p-2, -0x1.e095edba9856p-1, -0x1.6c1d25ca25f5p-3},
@@ -1461,7 +1461,7 @@ END_TEST
  * away: the depths (0.033) are reconstructed from the light's space and
  * carry the rounding of its 300-unit coordinates, z_1 - z_0 = -2e-14 to
  * +2e-14 by mode (n' 7e13..7e14, or uniform under FE_TOWARDZERO).  The
- * depths' rounding bound takes the sizes of their terms (src/warp.c). */
+ * depths' rounding bound takes the sizes of their terms (src/geometry/lispsm.c). */
 START_TEST(setup_nopt_equal_depths_point_light_rounding_mode) {
     swarp_camera cam = {{0x1.c879bde18ae3p+3, -0x1.99fb6266c0d47p+2, -0x1.3c740062d85f4p+5},
                         {-0x1.335b0e8d92de4p-1, 0x1.997bb20dee2c9p-1, 0},
@@ -1488,7 +1488,7 @@ START_TEST(setup_nopt_equal_depths_point_light_rounding_mode) {
 END_TEST
 
 /* PSM's light camera axis is the minimal cone around the receivers' light
- * directions ([KOZ] §14.2.2, src/psm.c).  Here a cone of 0.007 rad through
+ * directions ([KOZ] §14.2.2, src/geometry/psm.c).  Here a cone of 0.007 rad through
  * three directions, two of them 6e-6 apart.  As the normal
  * (b - a) x (c - a) its axis would be tilted by the rounding of the unit
  * vectors' norms, eps/6e-6: 4e-11 rad between rounding modes, moving the
@@ -1758,8 +1758,8 @@ END_TEST
 /* A box flat in x at 1e5 (min.x = max.x) and a directional light 9e-16 rad
  * off that plane.  The view frustum's edges cut at the box plane x = c, if
  * interpolated, land on c to nearest and 1 ulp (1.5e-11) below it under
- * FE_DOWNWARD; the box clip sets the cut's x to c (src/poly.c).  The light
- * grazes the plane, so B is H swept in the plane (src/body.c
+ * FE_DOWNWARD; the box clip sets the cut's x to c (src/geometry/poly.c).  The light
+ * grazes the plane, so B is H swept in the plane (src/geometry/body.c
  * sw_flat_extend): copies H + T u carrying u's normal part, 5.6e-14, would
  * round to c or an ulp off it by mode, and B off its plane by ulps is a
  * 3e-11 extent the coordinates do not resolve (SWARP_ERR_DEGENERATE).  In
@@ -1942,7 +1942,7 @@ END_TEST
  * picks (-0 under FE_DOWNWARD).  Clamping by the sign of w would put the
  * centre at z_max in one mode and z_min in another (z_0 0.013 vs 0.74, n 6 %
  * off, light_proj entries of opposite sign).  A zero w takes the
- * numerator's side, or the middle of B's box (src/warp.c); every mode gives
+ * numerator's side, or the middle of B's box (src/geometry/lispsm.c); every mode gives
  * the default mode's map to 1e-9. */
 START_TEST(setup_points_centre_at_point_light_rounding_mode) {
     const swarp_camera cam = {{-0x1.552be393132dfp+5, -0x1.b8f2f2c2f3cb8p+2, -0x1.71d45bf1feefp+4},

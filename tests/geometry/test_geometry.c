@@ -1248,7 +1248,7 @@ END_TEST
  * ulps of 1e6 (a point of B would map to y = 1.25), so it is computed
  * relative to the eye.  The frustum (aspect 1e-111) is flat and the light
  * 1e-9 rad off its plane, so B (H swept toward the light, 8 points since
- * H's two faces are opposite, src/poly.c) is 1e-9 thick as the light sees
+ * H's two faces are opposite, src/geometry/poly.c) is 1e-9 thick as the light sees
  * it and the map stretches that 2e9 times: relative to the eye B maps
  * inside to 1e-6, while its world points, rounded to ulp(1e6) = 1e-10,
  * move by 0.2 in the map -- the condition number the sweep allows for
