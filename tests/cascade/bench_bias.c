@@ -1,6 +1,6 @@
 #define _POSIX_C_SOURCE 200809L
 /* Benchmark (not a test): per-call cost of the bias functions ([KOZ] §14.2.3,
- * src/bias.c), median and p99 over many repetitions, for a uniform
+ * src/cascade/bias.c), median and p99 over many repetitions, for a uniform
  * (orthographic, directional light) map and a projective (spot light) map.
  * Each row also gives the ratio of its median to a baseline timed in the
  * same run: one swarp_mat4_transform (a world point to clip space, what a

@@ -9,6 +9,7 @@
 
 #include "shadowwarp.h"
 #include "test_util.h"
+#include "test_vec.h"
 
 /* ---- small seeded PRNG (splitmix64) ------------------------------------ */
 static uint64_t rng_state;
@@ -17,19 +18,6 @@ static double rng_uniform(double a, double b) { return tu_uniform(&rng_state, a,
 
 #define PI 3.14159265358979323846
 
-static swarp_vec3 v3(double x, double y, double z) {
-    swarp_vec3 v = {x, y, z};
-    return v;
-}
-static swarp_vec3 vsub(swarp_vec3 a, swarp_vec3 b) { return v3(a.x - b.x, a.y - b.y, a.z - b.z); }
-static swarp_vec3 vadd(swarp_vec3 a, swarp_vec3 b) { return v3(a.x + b.x, a.y + b.y, a.z + b.z); }
-static swarp_vec3 vscale(swarp_vec3 a, double s) { return v3(a.x * s, a.y * s, a.z * s); }
-static double vdot(swarp_vec3 a, swarp_vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-static swarp_vec3 vcross(swarp_vec3 a, swarp_vec3 b) {
-    return v3(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x);
-}
-static double vlen(swarp_vec3 a) { return sqrt(vdot(a, a)); }
-static swarp_vec3 vnorm(swarp_vec3 a) { return vscale(a, 1.0 / vlen(a)); }
 static swarp_vec3 rand_unit(void) {
     for (;;) {
         swarp_vec3 v = v3(rng_uniform(-1, 1), rng_uniform(-1, 1), rng_uniform(-1, 1));

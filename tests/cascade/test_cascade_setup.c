@@ -1,5 +1,5 @@
 #define _POSIX_C_SOURCE 200809L
-/* Cascade loose ends: stabilised cascades keep constant split ranges
+/* swarp_cascade_setup's options: stabilised cascades keep constant split ranges
  * ([RHS] §3.5), spot lights' receivers H_i ∩ L, [RHS] §3.4 "arbitrary
  * warping" (per split / derived from the first split), and the [RHS] §4.3
  * measured min depth as an input of the setup call. */
@@ -10,31 +10,12 @@
 #include <string.h>
 
 #include "shadowwarp.h"
+#include "test_util.h"
+#include "test_vec.h"
 
 /* ---- small seeded PRNG (splitmix64) ------------------------------------ */
 static uint64_t rng_state;
-static uint64_t rng_next(void) {
-    uint64_t z = (rng_state += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    return z ^ (z >> 31);
-}
-static double rng_uniform(double a, double b) {
-    return a + (b - a) * ((double)(rng_next() >> 11) * (1.0 / 9007199254740992.0));
-}
-
-static swarp_vec3 v3(double x, double y, double z) {
-    swarp_vec3 v = {x, y, z};
-    return v;
-}
-static swarp_vec3 vsub(swarp_vec3 a, swarp_vec3 b) { return v3(a.x - b.x, a.y - b.y, a.z - b.z); }
-static swarp_vec3 vadd(swarp_vec3 a, swarp_vec3 b) { return v3(a.x + b.x, a.y + b.y, a.z + b.z); }
-static swarp_vec3 vscale(swarp_vec3 a, double s) { return v3(a.x * s, a.y * s, a.z * s); }
-static double vdot(swarp_vec3 a, swarp_vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-static swarp_vec3 vcross(swarp_vec3 a, swarp_vec3 b) {
-    return v3(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x);
-}
-static swarp_vec3 vnorm(swarp_vec3 a) { return vscale(a, 1.0 / sqrt(vdot(a, a))); }
+static double rng_uniform(double a, double b) { return tu_uniform(&rng_state, a, b); }
 static swarp_vec3 rand_unit(void) {
     for (;;) {
         swarp_vec3 v = v3(rng_uniform(-1, 1), rng_uniform(-1, 1), rng_uniform(-1, 1));
@@ -686,9 +667,5 @@ int main(void) {
     tcase_add_test(t, min_depth_ignored_by_stabilized_cascades);
     tcase_add_test(t, min_depth_bad_inputs);
     suite_add_tcase(s, t);
-    SRunner* sr = srunner_create(s);
-    srunner_run_all(sr, CK_NORMAL);
-    int failed = srunner_ntests_failed(sr);
-    srunner_free(sr);
-    return failed ? EXIT_FAILURE : EXIT_SUCCESS;
+    return tu_run_suite(s) ? EXIT_FAILURE : EXIT_SUCCESS;
 }

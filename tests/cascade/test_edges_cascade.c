@@ -1,6 +1,6 @@
 #define _POSIX_C_SOURCE 200809L
-/* Argument checks and edge branches of the swarp_bias_* functions (issue 9,
- * branch coverage): every bad input gives its documented status with the
+/* Argument checks and edge branches of the cascade stage's functions (bias,
+ * stabilisation, selection): every bad input gives its documented status with the
  * outputs untouched, and the valid results are compared with an independent
  * evaluation (an orthographic map, where the world-space texel is
  * width / resolution and depth is linear in the light's z). */
@@ -73,7 +73,7 @@ START_TEST(bias_valid_against_orthographic_closed_form) {
         ck_assert(tu_rel(amount, 1.5 * (W / 512.0) * (1.0 - 0.5)) < 1e-12);
         ck_assert(fabs(q.x - (p.x + amount * N.x)) < 1e-12);
         /* the same normal scaled to DBL_MAX: |N| overflows but N is a valid
-         * direction (finding 20: was SWARP_ERR_ZERO_VECTOR) */
+         * direction, so no SWARP_ERR_ZERO_VECTOR */
         const swarp_vec3 Nhuge = {0.95 * DBL_MAX, 0.95 * DBL_MAX * (N.y / N.x), 0.0}; /* |N| = 1.1 DBL_MAX */
         double amount_huge = SENTINEL;
         ck_assert_int_eq(swarp_bias_normal_offset(&m, &l, &p, &Nhuge, 1.5, &q, &amount_huge), SWARP_OK);
@@ -660,9 +660,9 @@ START_TEST(cascade_select_blend_curve_edges) {
 END_TEST
 
 /* The bounding sphere where k^2 = tan^2(fovy/2)(1 + aspect^2) overflows
- * (aspect 1e167) but the sphere is representable (was NON_FINITE), and n, f
- * one ulp apart with a vanishing fovy (the rounded centre landed on f: radius
- * 0; the true radius is (f - n)/2). */
+ * (aspect 1e167) but the sphere is representable (so no NON_FINITE), and n, f
+ * one ulp apart with a vanishing fovy (a rounded centre can land on f,
+ * radius 0; the true radius is (f - n)/2). */
 START_TEST(stabilize_sphere_extreme_aspect_and_thin_range) {
     swarp_camera cam = camera();
     cam.aspect = 1e167;
@@ -698,7 +698,7 @@ START_TEST(atlas_kernel_scale_extreme_widths) {
 END_TEST
 
 /* View depth with a direction whose length overflows (components near
- * DBL_MAX): any non-zero finite dir is valid (was SWARP_ERR_ZERO_VECTOR). */
+ * DBL_MAX): any non-zero finite dir is valid (no SWARP_ERR_ZERO_VECTOR). */
 START_TEST(cascade_view_depth_huge_dir) {
     swarp_camera cam = camera();
     cam.eye = (swarp_vec3){0, 0, 0};
@@ -713,7 +713,7 @@ END_TEST
 
 /* Error curve samples at subnormal depths: a + (b - a) j/(s - 1) rounds up
  * to b (here a = m, b = 3m, j = 3 of 5: m + 1.5m -> 3m) — the sample must
- * stay in [C_i, C_{i+1}) (was exactly C_1, outside split 0). */
+ * stay in [C_i, C_{i+1}) (not exactly C_1, which is outside split 0). */
 START_TEST(cascade_error_curve_subnormal_splits) {
     const double m = DBL_TRUE_MIN;
     swarp_error_config cfg;
@@ -738,8 +738,8 @@ START_TEST(cascade_error_curve_subnormal_splits) {
 END_TEST
 
 /* A tiny split (1e-68) far from the origin along the light (1e6): the flat
- * depth range's one-texel padding was absorbed by the ulp of t (1e-10) and
- * 2/dt overflowed (was NON_FINITE); now padded by an ulp at least.  A truly
+ * depth range's one-texel padding is absorbed by the ulp of t (1e-10), so
+ * 2/dt would overflow; the range is padded by an ulp at least.  A truly
  * unrepresentable matrix is SWARP_ERR_OVERFLOW, outputs untouched. */
 START_TEST(stabilize_directional_tiny_split_far_origin) {
     swarp_camera cam = camera();
@@ -773,7 +773,7 @@ START_TEST(stabilize_directional_tiny_split_far_origin) {
 END_TEST
 
 
-/* ---- planfix pass: regressions from the hard-case sweep (issue 9) ---- */
+/* ---- the bias and stabilisation at the ends of the double range ---- */
 static swarp_bias_map bias_map_of(const double m[16], double rs, double rt, int depth) {
     swarp_bias_map b;
     memset(&b, 0, sizeof b);
@@ -782,12 +782,11 @@ static swarp_bias_map bias_map_of(const double m[16], double rs, double rt, int 
     return b;
 }
 
-/* hard_cases --entry swarp_bias_receiver_plane --seed 7 --case 753857: a
- * point 7e37 from the map's origin; the tangents' texel images are exactly
- * parallel (the harness's long double determinant is 0), but the double
- * one came out above the 1e-12 threshold: SWARP_OK with a gradient of noise.
- * The determinant is now compared with its rounding bound too. */
-START_TEST(planfix_receiver_plane_edge_on_far_point) {
+/* A point 7e37 from the map's origin; the tangents' texel images are
+ * exactly parallel (the long double determinant is 0), but the double one
+ * can come out above the 1e-12 threshold, a gradient of noise.  The
+ * determinant is compared with its rounding bound too: edge-on. */
+START_TEST(receiver_plane_edge_on_far_point) {
     const double m[16] = {0x1.ea5fc42df7421p+0, -0x1.30f0d6b387b16p-9, 0x1.e2838fd436291p-2, 0x1.e283840154e3cp-2,
                           -0x1.8f3544dad65fcp+1, 0x1.1ca1cbd83d95fp-10, 0x1.b8d16f3188637p-1, 0x1.b8d164643778dp-1,
                           0x1.29cbb154b003cp+3, 0x1.b9d9c7a64b8ccp-11, 0x1.884ca68e86239p-3, 0x1.884c9cf1929bp-3,
@@ -802,11 +801,11 @@ START_TEST(planfix_receiver_plane_edge_on_far_point) {
 }
 END_TEST
 
-/* hard_cases --entry swarp_bias_receiver_plane --case 902901: res = 2^-1022
- * made the texel derivatives subnormal and the determinant lost most of its
- * bits (dd/ds 13% off).  The gradient per texel is exactly 2^1022 times the
- * one at res = 1. */
-START_TEST(planfix_receiver_plane_subnormal_resolution) {
+/* res = 2^-1022 makes the texel derivatives subnormal, where the
+ * determinant would lose most of its bits (dd/ds 13% off).  The gradient
+ * per texel is exactly 2^1022 times the one at res = 1 (a power-of-two
+ * scaling is exact): the reference. */
+START_TEST(receiver_plane_subnormal_resolution) {
     const double m[16] = {0x1.5f58af0757c57p-14, 0x1.5cf932bb0245ep-11, 0x1.1de838d1fc287p-24, 0,
                           0x1.a21a5a0a7b1e5p-15, -0x1.c7c2d1c0561f6p-11, -0x1.07fb6c2f9e4cbp-21, 0,
                           0x1.76b35eb81ed38p-16, -0x1.23c917a4ae0c7p-11, 0x1.c71362ed3d6d3p-21, 0,
@@ -822,11 +821,10 @@ START_TEST(planfix_receiver_plane_subnormal_resolution) {
 }
 END_TEST
 
-/* hard_cases --entry swarp_bias_depth_per_world --seed 7 --case 115336: a
- * point at y = 1e300 seen along the light: the derivative is ~1e-600 (0 in
- * double), but dz/w - z dw/w^2 lost its second term to 1/w^2 underflowing
- * and gave 1e-300.  Bound: eps |dh| / |w| ~ 1e-316. */
-START_TEST(planfix_depth_per_world_far_point) {
+/* A point at y = 1e300 seen along the light: the derivative is ~1e-600 (0
+ * in double), but dz/w - z dw/w^2 loses its second term to 1/w^2
+ * underflowing and gives 1e-300.  Bound: eps |dh| / |w| ~ 1e-316. */
+START_TEST(depth_per_world_far_point) {
     const double m[16] = {0x1.30309f5938d21p-7, -0x1.0d7dbca875d17p-1, 0x1.ea1546fbb8b03p-1, 0x1.e227c7282ec98p-1,
                           -0x1.8cca2fe49c1bap-10, 0x1.35bd4572da0bcp+3, 0x1.3dc80c9bf35aep-4, 0x1.38a412f59a4c4p-4,
                           0x1.af5c080267047p-6, 0x1.7bf001579932bp-1, -0x1.5508a5057da9bp-2, -0x1.4f8460e20cce4p-2,
@@ -843,11 +841,11 @@ START_TEST(planfix_depth_per_world_far_point) {
 }
 END_TEST
 
-/* hard_cases --entry swarp_stabilize_sphere --case 771240: n, f the two
- * smallest subnormals and a narrow fovy: the exact radius (~(f - n)/2) is
- * below half the smallest subnormal and came back 0, a point instead of a
- * sphere around the frustum.  Rounded up to DBL_TRUE_MIN. */
-START_TEST(planfix_stabilize_sphere_subnormal_range) {
+/* n, f the two smallest subnormals and a narrow fovy: the exact radius
+ * (~(f - n)/2) is below half the smallest subnormal and would round to 0, a
+ * point instead of a sphere around the frustum.  It is rounded up to
+ * DBL_TRUE_MIN, so the sphere still holds the frustum. */
+START_TEST(stabilize_sphere_subnormal_range) {
     swarp_camera cam = camera();
     cam.fovy = 1.000001e-06;
     cam.aspect = 1.2183229238794722;
@@ -858,11 +856,11 @@ START_TEST(planfix_stabilize_sphere_subnormal_range) {
 }
 END_TEST
 
-/* setupfix pass: p - eye overflowing for coordinates near DBL_MAX gave
- * SWARP_ERR_NON_FINITE for finite arguments.  A representable depth is
- * computed (at a quarter scale); one beyond DBL_MAX is SWARP_ERR_OVERFLOW,
- * the output untouched. */
-START_TEST(sf_cascade_view_depth_opposite_ends) {
+/* p - eye overflows for coordinates near DBL_MAX, yet the arguments are
+ * finite (no SWARP_ERR_NON_FINITE).  A representable depth is computed (at
+ * a quarter scale, exact); one beyond DBL_MAX is SWARP_ERR_OVERFLOW, the
+ * output untouched. */
+START_TEST(cascade_view_depth_opposite_ends) {
     swarp_camera cam = {{-DBL_MAX, 0, 0}, {0, 1, 0}, {0, 0, 1}, 1.0, 1.0, 1, 100, {0, 0, 0, 0}};
     swarp_vec3 p = {DBL_MAX, 3, 0};
     double z = -1;
@@ -882,12 +880,11 @@ START_TEST(sf_cascade_view_depth_opposite_ends) {
 }
 END_TEST
 
-/* fenvb pass: robust_fenv 10000 (issue 9), swarp_bias_normal_offset case
- * 4699: a normal facing the light exactly (N = -direction) has 1 - N.L = 0,
- * but 1 - |N|^2 left an ulp whose sign the rounding mode chose, times
- * k L_texel with k = 9.6e94: p' moved by 1e79 under FE_UPWARD.  p' = p in
- * every mode. */
-START_TEST(fenvb_bias_normal_offset_facing_light_rounding_mode) {
+/* A normal facing the light exactly (N = -direction) has 1 - N.L = 0, but
+ * 1 - |N|^2 can leave an ulp whose sign the rounding mode chooses, times
+ * k L_texel with k = 9.6e94: p' would move by 1e79 under FE_UPWARD.
+ * p' = p in every mode. */
+START_TEST(bias_normal_offset_facing_light_rounding_mode) {
     swarp_bias_map map;
     memset(&map, 0, sizeof map);
     static const double M[16] = {-1.6095275700642623e-06, -0.17352574943382518, 0.20775622705305702, 0,
@@ -916,14 +913,13 @@ START_TEST(fenvb_bias_normal_offset_facing_light_rounding_mode) {
 }
 END_TEST
 
-/* fenvd: the depth bias of a tiny world bias (c = s = 1e-12) on an ortho map
- * was d(p) - d(p + t L), two window depths of order 1 rounded to eps: a
- * difference of 6.4e-14 that read 8.2e-14, 9.6e-14 or 1.1e-13 with the
- * caller's rounding mode (robust_fenv 30000, swarp_bias_slope_scaled case
- * 13490).  The secant form t (g_z - z g_w)/(h_w + t g_w) keeps its factors'
+/* The depth bias of a tiny world bias (c = s = 1e-12) on an ortho map as
+ * d(p) - d(p + t L), two window depths of order 1 rounded to eps, is a
+ * difference of 6.4e-14 that reads 8.2e-14, 9.6e-14 or 1.1e-13 with the
+ * caller's rounding mode.  The secant form t (g_z - z g_w)/(h_w + t g_w) keeps its factors'
  * relative accuracy: the same to 1e-12 in every mode, and -t g_z / 2 here
  * (ortho, depth [-1, 1] -> window [0, 1]). */
-START_TEST(fenvd_bias_slope_scaled_tiny_depth_bias_rounding_mode) {
+START_TEST(bias_slope_scaled_tiny_depth_bias_rounding_mode) {
     swarp_bias_map map;
     memset(&map, 0, sizeof map);
     static const double M[16] = {-0.26339782772477321, 7.8109187900805884e-05, -0.12499191710449216, 0,
@@ -951,15 +947,15 @@ START_TEST(fenvd_bias_slope_scaled_tiny_depth_bias_rounding_mode) {
 }
 END_TEST
 
-/* fenvd: the texel size of a far point (|p| ~ 3e8, L_texel ~ 1e5) of a
- * perspective map was |M^-1 (ndc + step) - p|, a difference of two points of
- * magnitude |p| that the far point's tiny homogeneous w resolves coarsely:
- * 93118.54 in the default mode, 93121.43 under FE_TOWARDZERO (robust_fenv
- * 30000, swarp_bias_texel_size case 26894).  The step form
+/* The texel size of a far point (|p| ~ 3e8, L_texel ~ 1e5) of a
+ * perspective map as |M^-1 (ndc + step) - p| is a difference of two points
+ * of magnitude |p| that the far point's tiny homogeneous w resolves
+ * coarsely: 93118.54 in the default mode, 93121.43 under FE_TOWARDZERO.
+ * The step form
  * h_w d (b_xyz - p b_w) / (1 + h_w d b_w) (b a column of M^-1) never forms
  * p': within 1e-7 in every mode (2e-9 seen: the inverse's own rounding,
  * the map's condition number is ~2e9). */
-START_TEST(fenvd_bias_texel_size_far_point_rounding_mode) {
+START_TEST(bias_texel_size_far_point_rounding_mode) {
     swarp_bias_map map;
     memset(&map, 0, sizeof map);
     static const double M[16] = {-3.9283760701198864, -0.0090772364843252282, -0.4777251719134416, -0.47772466130453467,
@@ -984,12 +980,11 @@ START_TEST(fenvd_bias_texel_size_far_point_rounding_mode) {
 }
 END_TEST
 
-/* fenva: a one-point body (flat across the light) at a 1e6 offset: the depth
- * row's zb = -(t_max + t_min)/dt came from dt = (t + texel) - (t - texel),
- * which carried ulp(t)/texel ~ 1e-8 of relative error, its sign set by the
- * caller's rounding mode (robust_fenv 10000, swarp_stabilize_directional case
- * 6739); now the same to 1e-13 in every mode. */
-START_TEST(fenva_stabilize_directional_flat_body_rounding) {
+/* A one-point body (flat across the light) at a 1e6 offset: the depth
+ * row's zb = -(t_max + t_min)/dt with dt = (t + texel) - (t - texel) would
+ * carry ulp(t)/texel ~ 1e-8 of relative error, its sign set by the caller's
+ * rounding mode; the depth row is the same to 1e-13 in every mode. */
+START_TEST(stabilize_directional_flat_body_rounding_mode) {
     swarp_camera cam;
     memset(&cam, 0, sizeof cam);
     cam.eye = (swarp_vec3){999996.0, 7.26264, 999990.0};
@@ -1020,14 +1015,13 @@ START_TEST(fenva_stabilize_directional_flat_body_rounding) {
 }
 END_TEST
 
-/* fenvk pass (issue 9, fenv swarp_stabilize_directional 480000 case
- * 300594): one body point (flat across the light) of a 1e-5 split, 1e6 from
- * the origin: depth is one texel either side of t, and the texel (8.5e-11)
- * lies between half an ulp and an ulp of t.  Whether t -+ texel rounded
- * away from t, which decided between 2 texels and 2 ulps for the depth
- * extent, was the rounding mode's: the depth row moved by a third.  It is
- * max(texel, ulp(t)) either side in every mode now. */
-START_TEST(fe_stabilize_directional_flat_body_texel_below_ulp) {
+/* One body point (flat across the light) of a 1e-5 split, 1e6 from the
+ * origin: depth is one texel either side of t, and the texel (8.5e-11)
+ * lies between half an ulp and an ulp of t.  Whether t -+ texel rounds
+ * away from t (2 texels or 2 ulps of depth extent) is the rounding mode's,
+ * which would move the depth row by a third.  It is max(texel, ulp(t))
+ * either side in every mode. */
+START_TEST(stabilize_directional_flat_body_texel_below_ulp_rounding_mode) {
     swarp_camera cam;
     memset(&cam, 0, sizeof cam);
     cam.eye = (swarp_vec3){0x1.e846cp+19, 0x1.038c8f6ca65afp+3, 0x1.e8486b1228227p+19};
@@ -1059,7 +1053,7 @@ START_TEST(fe_stabilize_directional_flat_body_texel_below_ulp) {
 END_TEST
 
 int main(void) {
-    Suite* s = suite_create("edges_splits");
+    Suite* s = suite_create("edges_cascade");
     TCase* t = tcase_create("bias");
     tcase_add_test(t, bias_valid_against_orthographic_closed_form);
     tcase_add_test(t, bias_bad_inputs_untouched);
@@ -1073,28 +1067,22 @@ int main(void) {
     tcase_add_test(t, cascade_view_depth_huge_dir);
     tcase_add_test(t, cascade_error_curve_subnormal_splits);
     tcase_add_test(t, stabilize_directional_tiny_split_far_origin);
-    /* setupfix pass */
-    tcase_add_test(t, sf_cascade_view_depth_opposite_ends);
+    tcase_add_test(t, cascade_view_depth_opposite_ends);
     suite_add_tcase(s, t);
-    /* planfix pass */
-    t = tcase_create("planfix");
-    tcase_add_test(t, planfix_receiver_plane_edge_on_far_point);
-    tcase_add_test(t, planfix_receiver_plane_subnormal_resolution);
-    tcase_add_test(t, planfix_depth_per_world_far_point);
-    tcase_add_test(t, planfix_stabilize_sphere_subnormal_range);
-    /* fenva pass */
-    tcase_add_test(t, fenva_stabilize_directional_flat_body_rounding);
+    t = tcase_create("extreme_magnitudes");
+    tcase_add_test(t, receiver_plane_edge_on_far_point);
+    tcase_add_test(t, receiver_plane_subnormal_resolution);
+    tcase_add_test(t, depth_per_world_far_point);
+    tcase_add_test(t, stabilize_sphere_subnormal_range);
+    tcase_add_test(t, stabilize_directional_flat_body_rounding_mode);
     suite_add_tcase(s, t);
-    /* fenvb pass */
-    t = tcase_create("fenvb");
-    tcase_add_test(t, fenvb_bias_normal_offset_facing_light_rounding_mode);
+    t = tcase_create("normal_offset_rounding_mode");
+    tcase_add_test(t, bias_normal_offset_facing_light_rounding_mode);
     suite_add_tcase(s, t);
-    /* fenvd pass */
-    t = tcase_create("fenvd");
-    tcase_add_test(t, fenvd_bias_slope_scaled_tiny_depth_bias_rounding_mode);
-    tcase_add_test(t, fenvd_bias_texel_size_far_point_rounding_mode);
-    /* fenvk pass */
-    tcase_add_test(t, fe_stabilize_directional_flat_body_texel_below_ulp);
+    t = tcase_create("bias_and_stabilize_rounding_mode");
+    tcase_add_test(t, bias_slope_scaled_tiny_depth_bias_rounding_mode);
+    tcase_add_test(t, bias_texel_size_far_point_rounding_mode);
+    tcase_add_test(t, stabilize_directional_flat_body_texel_below_ulp_rounding_mode);
     suite_add_tcase(s, t);
     return tu_run_suite(s) ? 1 : 0;
 }

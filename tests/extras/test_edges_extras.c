@@ -1,6 +1,6 @@
 #define _POSIX_C_SOURCE 200809L
-/* Argument checks and edge branches of the extras (cube maps, min depth)
- * (issue 9, branch coverage): bad input gives its documented status with
+/* Argument checks and edge branches of the extras (cube maps, min depth):
+ * bad input gives its documented status with
  * the outputs untouched; valid edge results are checked against the
  * defining property (brute-force minimum, a point on the unit cube). */
 #include <check.h>
@@ -175,12 +175,11 @@ START_TEST(mindepth_edges) {
 }
 END_TEST
 
-/* ---- planfix pass: regressions from the hard-case sweep (issue 9) ---- */
+/* ---- cube lookups at the ends of the double range ---- */
 
-/* hard_cases --entry swarp_cube_lookup --case 1224: V.x = DBL_MAX made
- * a = (u . N)/d overflow to inf, u/a = 0 and S = P (S.x = 0.85, off the
- * cube; 378 such findings at 10^6).  The exit face is +x: S.x = 1. */
-START_TEST(planfix_cube_lookup_huge_point) {
+/* V.x = DBL_MAX makes a = (u . N)/d overflow to inf, so unscaled u/a = 0
+ * and S = P (S.x = 0.85, off the cube).  The exit face is +x: S.x = 1. */
+START_TEST(cube_lookup_huge_point) {
     const swarp_vec4 L = {0x1.b1ed320f5bd18p-1, -0x1.57d598e777458p-1, 0x1.a04a543f83298p-1, 1.0};
     const swarp_vec3 V = {DBL_MAX, -1.5, 0x1.3b5b5c3b38864p+0};
     uint32_t face = 99;
@@ -195,12 +194,11 @@ START_TEST(planfix_cube_lookup_huge_point) {
 }
 END_TEST
 
-/* hard_cases --entry swarp_cube_lookup --case 485954: the same with the
- * exit face decided by a small component (u.x = 1e-9 beside u.y = DBL_MAX):
- * scaling u all the way to [1, 2) would make u.x subnormal (S.y 2e-7 off).
- * A guard on the scaling threshold of the fix above (the code before it
- * passed this one: no scaling, no overflow here). */
-START_TEST(planfix_cube_lookup_huge_and_small_components) {
+/* The same with the exit face decided by a small component (u.x = 1e-9
+ * beside u.y = DBL_MAX): scaling u all the way to [1, 2) would make u.x
+ * subnormal (S.y 2e-7 off), so this pins the scaling threshold of the test
+ * above from the other side. */
+START_TEST(cube_lookup_huge_and_small_components) {
     REQUIRE_WIDE_LONG_DOUBLE();
     const swarp_vec4 L = {0x1.01820f73113bdp+0, 0x1.9e53434cb75dfp+0, -0x1.c81789dcf401p-1, 0x1.01820f776338ep+0};
     const swarp_vec3 V = {0x1.0000000001198p+0, DBL_MAX, 0x1.12e0be826d695p-30};
@@ -217,20 +215,20 @@ START_TEST(planfix_cube_lookup_huge_and_small_components) {
 }
 END_TEST
 
-/* fenvb pass: robust_fenv 10000 (issue 9), swarp_cube_faces cases 3130 and
- * 3140.  The face matrices must not depend on the caller's rounding mode
- * beyond a few eps of their scale: with Z_1 = 1 - 1e-9, alpha = (f + n)/(f - n)
- * from n = Z_1 d lost 1e-7 relative under FE_UPWARD (now in ratio form), and
- * for a light at 3e6 the product proj view cancelled d (R.P) - (R.P)(Z.P) to
- * -R.P, 1e-9 of the matrix moved by the mode (now in closed form). */
-static void fenvb_faces(const swarp_vec4* L, const swarp_cube_options* o, int mode, swarp_cube_face* f,
-                        size_t* n) {
+/* The face matrices must not depend on the caller's rounding mode beyond a
+ * few eps of their scale: with Z_1 = 1 - 1e-9, alpha = (f + n)/(f - n)
+ * formed from n = Z_1 d would lose 1e-7 relative under FE_UPWARD (hence the
+ * ratio form), and for a light at 3e6 the product proj view cancels
+ * d (R.P) - (R.P)(Z.P) to -R.P, moving 1e-9 of the matrix with the mode
+ * (hence the closed form). */
+static void cube_faces_in_mode(const swarp_vec4* L, const swarp_cube_options* o, int mode, swarp_cube_face* f,
+                               size_t* n) {
     fesetround(mode);
     swarp_status st = swarp_cube_faces(L, o, f, SWARP_CUBE_MAX_FACES, n);
     fesetround(FE_TONEAREST);
     ck_assert_int_eq(st, SWARP_OK);
 }
-START_TEST(fenvb_cube_faces_rounding_mode) {
+START_TEST(cube_faces_rounding_mode) {
     static const swarp_vec4 lights[2] = {{-0.8573087920171597, 2.0285826279546053, -2.2679433718553126, 1.0034271873637741},
                                          {2999999.9999999995, 2934658.0867776205, -1000000, 1}};
     static const double z1s[2] = {1 - 1e-9, 0.756044};
@@ -240,9 +238,9 @@ START_TEST(fenvb_cube_faces_rounding_mode) {
         o.z1 = z1s[j];
         swarp_cube_face f0[SWARP_CUBE_MAX_FACES], f1[SWARP_CUBE_MAX_FACES];
         size_t n0, n1;
-        fenvb_faces(&lights[j], &o, FE_TONEAREST, f0, &n0);
+        cube_faces_in_mode(&lights[j], &o, FE_TONEAREST, f0, &n0);
         for (int m = 0; m < 3; ++m) {
-            fenvb_faces(&lights[j], &o, modes[m], f1, &n1);
+            cube_faces_in_mode(&lights[j], &o, modes[m], f1, &n1);
             ck_assert_uint_eq(n0, n1);
             for (size_t i = 0; i < n0; ++i) {
                 double sc = 0;
@@ -263,14 +261,12 @@ int main(void) {
     tcase_add_test(t, cube_edges);
     tcase_add_test(t, mindepth_edges);
     suite_add_tcase(s, t);
-    /* planfix pass */
-    t = tcase_create("planfix");
-    tcase_add_test(t, planfix_cube_lookup_huge_point);
-    tcase_add_test(t, planfix_cube_lookup_huge_and_small_components);
+    t = tcase_create("cube_lookup_extreme");
+    tcase_add_test(t, cube_lookup_huge_point);
+    tcase_add_test(t, cube_lookup_huge_and_small_components);
     suite_add_tcase(s, t);
-    /* fenvb pass */
-    t = tcase_create("fenvb");
-    tcase_add_test(t, fenvb_cube_faces_rounding_mode);
+    t = tcase_create("cube_faces_rounding_mode");
+    tcase_add_test(t, cube_faces_rounding_mode);
     suite_add_tcase(s, t);
     return tu_run_suite(s) ? 1 : 0;
 }

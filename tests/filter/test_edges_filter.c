@@ -1,6 +1,5 @@
 #define _POSIX_C_SOURCE 200809L
-/* Edge cases of the filter stage found by the robustness sweep (issue 9,
- * docs/quality.md "Findings"): EVSM's documented exponent status on
+/* Edge cases of the filter stage at the ends of the double range: EVSM's documented exponent status on
  * overflow, and Lloyd's minimum split gap far from the origin. */
 #include <check.h>
 #include <fenv.h>
@@ -80,8 +79,8 @@ START_TEST(lloyd_gap_far_from_origin) {
 END_TEST
 
 /* PCSS penumbra w_light (d_r - d_b)/d_b without intermediate overflow or
- * underflow (was NON_FINITE for a representable width, and 100 instead of
- * 129 DBL_TRUE_MIN for a subnormal w_light); an unrepresentable width is
+ * underflow (a representable width is not NON_FINITE, and a subnormal
+ * w_light gives 129 DBL_TRUE_MIN, not a product rounded to 100); an unrepresentable width is
  * SWARP_ERR_OVERFLOW with the output untouched. */
 START_TEST(pcss_penumbra_extreme_scales) {
     double w = -1;
@@ -145,11 +144,11 @@ START_TEST(lvsm_visibility_huge_variance_floor) {
 }
 END_TEST
 
-/* ---- paramfix pass (issue 9, sweep findings at 10^6) -------------------- */
+/* ---- visibility forms whose literal evaluation over- or underflows ------ */
 
 /* The references use long double for its 15-bit exponent (d^2 ~ 1e308,
  * DBL_MAX k^2); valgrind emulates it with doubles, so there the tests skip
- * (saying so), as in test_edges_core.c.  The -Werror and sanitizer runs check. */
+ * (saying so), as in tests/model/test_edges_model.c.  The -Werror and sanitizer runs check. */
 /* long_double_is_wide() and REQUIRE_WIDE_LONG_DOUBLE(): test_util.h */
 
 /* [VSM] (3.3) in long double, floor mv k^2 */
@@ -160,9 +159,9 @@ static long double ref_cheb(long double m1, long double m2, long double t, long 
     return s2 / (s2 + d * d);
 }
 
-/* (t - mu)^2 beyond DBL_MAX with sigma^2 ~ DBL_MAX, or the floor ~ DBL_MAX
- * (hard_cases swarp_vsm_chebyshev cases 904227, 660236, 859006, default
- * seed): sigma2 + d^2 overflowed and p_max came out 0 instead of 0.18 or 1. */
+/* (t - mu)^2 beyond DBL_MAX with sigma^2 ~ DBL_MAX, or the floor ~ DBL_MAX:
+ * sigma2 + d^2 overflows, and the literal ratio gives 0 instead of 0.18 or
+ * 1; the ratio form keeps p_max. */
 START_TEST(vsm_chebyshev_ratio_form) {
     REQUIRE_WIDE_LONG_DOUBLE();
     const double cases[][4] = {{0.17778446959859262, 1.7976931348623157e+308, 2.9055173683535986e+154,
@@ -180,9 +179,9 @@ START_TEST(vsm_chebyshev_ratio_form) {
 }
 END_TEST
 
-/* EVSM with min_variance = DBL_MAX (hard_cases swarp_evsm_visibility case
- * 29946, default seed): the floor min_variance (c e^{c t})^2 overflowed to
- * Inf, Inf/Inf = NaN was refused as SWARP_ERR_NON_FINITE; the bound is ~1. */
+/* EVSM with min_variance = DBL_MAX: the floor min_variance (c e^{c t})^2
+ * overflows to Inf, and Inf/Inf = NaN must not surface as
+ * SWARP_ERR_NON_FINITE for valid input; the bound is ~1. */
 START_TEST(evsm_visibility_huge_floor) {
     REQUIRE_WIDE_LONG_DOUBLE();
     const double M[4] = {1, 1, -1, 1}, t = 0.027107479101624476, cp = 4.5366975434941672,
@@ -197,10 +196,10 @@ START_TEST(evsm_visibility_huge_floor) {
 }
 END_TEST
 
-/* Uniform LVSM layers of a subnormal depth range (hard_cases
- * swarp_lvsm_layer_uniform cases 196417 and 328273, default seed): the width
- * h = (s_N - s_0)/N was 0 and t = s_0 landed in layer 1.  The range is now
- * scaled by a power of two first (exact), so splits are where they belong. */
+/* Uniform LVSM layers of a subnormal depth range: the width
+ * h = (s_N - s_0)/N rounds to 0, which would put t = s_0 in layer 1.  The
+ * range is scaled by a power of two first (exact), so splits are where they
+ * belong. */
 START_TEST(lvsm_layer_uniform_subnormal_range) {
     uint32_t L = 99;
     ck_assert_int_eq(swarp_lvsm_layer_uniform(0.0, 0.0, DBL_TRUE_MIN, 3, &L), SWARP_OK);
@@ -219,10 +218,10 @@ START_TEST(lvsm_layer_uniform_subnormal_range) {
 }
 END_TEST
 
-/* fenvc pass: the transition weight w = (t - (s - band)) / (2 band) rounded
- * s - band at the magnitude of s: with band below an ulp of s and t = s the
- * weight was 0 under round-to-nearest and 1 under FE_DOWNWARD (fenv case
- * 7332); the exact value is 1/2 in every rounding mode. */
+/* The transition weight w = (t - (s - band)) / (2 band) as written rounds
+ * s - band at the magnitude of s: with band below an ulp of s and t = s it
+ * gives 0 under round-to-nearest and 1 under FE_DOWNWARD; the exact value
+ * is 1/2, and it must be that in every rounding mode. */
 START_TEST(lvsm_transition_rounding_mode) {
     static const int modes[] = {FE_TONEAREST, FE_UPWARD, FE_DOWNWARD, FE_TOWARDZERO};
     const double s[3] = {1.0, 2.0, 3.0};
@@ -231,7 +230,7 @@ START_TEST(lvsm_transition_rounding_mode) {
         double w = SENTINEL, w2 = SENTINEL;
         fesetround(modes[k]);
         swarp_status st = swarp_lvsm_transition(2.0, s, 2, 1e-69, &lo, &hi, &w);
-        /* band 1e-9 next to s = 0.5 (case 3626 shape): t = s - band exactly
+        /* band 1e-9 next to s = 0.5: t = s - band exactly
          * representable to an ulp of 0.5, the weight within 1e-6 of 0 */
         const double s2[3] = {0.25, 0.5, 0.75};
         uint32_t lo2, hi2;
@@ -249,21 +248,19 @@ END_TEST
 
 int main(void) {
     Suite* s = suite_create("edges_filter");
-    TCase* t = tcase_create("findings");
+    TCase* t = tcase_create("extreme_scales");
     tcase_add_test(t, evsm_overflow_is_exponent_error);
     tcase_add_test(t, lloyd_gap_far_from_origin);
     tcase_add_test(t, pcss_penumbra_extreme_scales);
     tcase_add_test(t, msm_visibility_extreme_scales);
     tcase_add_test(t, lvsm_visibility_huge_variance_floor);
     suite_add_tcase(s, t);
-    /* paramfix pass */
-    t = tcase_create("paramfix");
+    t = tcase_create("no_intermediate_overflow");
     tcase_add_test(t, vsm_chebyshev_ratio_form);
     tcase_add_test(t, evsm_visibility_huge_floor);
     tcase_add_test(t, lvsm_layer_uniform_subnormal_range);
     suite_add_tcase(s, t);
-    /* fenvc pass */
-    t = tcase_create("fenvc");
+    t = tcase_create("transition_rounding_mode");
     tcase_add_test(t, lvsm_transition_rounding_mode);
     suite_add_tcase(s, t);
     return tu_run_suite(s) ? 1 : 0;

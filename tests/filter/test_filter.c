@@ -75,7 +75,7 @@ static double cond_tol(double M_2, double sigma2) { return 8.0 * DBL_EPSILON * M
 
 /* [VSM] §3.2: one planar occluder at d_1, receiver at d_2, unoccluded
  * fraction p gives p_max(d_2) = p.  Part 1: dyadic p = k/64, d = m/64, so
- * every moment is exact in double and the assertion is the issue's 1e-12
+ * every moment is exact in double and the assertion is the required 1e-12
  * relative, unconditionally.  Part 2: arbitrary reals, relative 1e-12 plus
  * the conditioning of the moments (cond_tol). */
 START_TEST(vsm_planar_exact_sweep) {

@@ -1,4 +1,4 @@
-/* Continuity over the whole sphere of light directions (issue 3; docs/geometry.md,
+/* Continuity over the whole sphere of light directions (docs/geometry.md,
  * "Continuity over the whole sphere"): swarp_setup_follow fed back its own
  * previous result along many light paths in 0.01° steps, through parallel and
  * antiparallel to the view, for uniform, LiSPSM (n_opt; n_repar and λ_GMNPR on

@@ -1,6 +1,6 @@
 #define _POSIX_C_SOURCE 200809L
-/* Public geometry functions the sweep does not call (issue 9, branch
- * coverage): swarp_poly_clip_aabb, swarp_body_from_h, swarp_focus_light_view
+/* Public geometry functions the robustness sweep does not call, and the
+ * edges of the ones it does: swarp_poly_clip_aabb, swarp_body_from_h, swarp_focus_light_view
  * with point lights, swarp_warp_lispsm's options.  Valid results against an
  * independent evaluation (box intersections by hand, the extrusion's
  * bounding box, the view axis, (4.2) through swarp_warp_nopt_pseudo), bad
@@ -287,7 +287,7 @@ START_TEST(warp_lispsm_options) {
 }
 END_TEST
 
-/* ---- the caller's rounding mode (issue 9, tests/robust/fenv.c) ------------
+/* ---- the caller's rounding mode (as tests/robust/fenv.c) -----------------
  * Each test runs the library under FE_UPWARD / FE_DOWNWARD / FE_TOWARDZERO
  * and compares with the default mode: the outputs must agree within 1e-9 of
  * their largest magnitude (the scenes are well conditioned). */
@@ -319,7 +319,7 @@ START_TEST(setup_nearest_vertex_rounding_mode) {
     l.direction = (swarp_vec3){-0.889186, -0.156768, 0.542136};
     swarp_aabb box = {{-20, -10, -40}, {40, 10, 40}};
     for (int flat = 0; flat < 2; ++flat) {
-        if (flat) { /* a flat box with the eye 1 ulp above it (the fenv case) */
+        if (flat) { /* a flat box with the eye 1 ulp above it (the nearest-vertex tie) */
             box.min.y = box.max.y = -10.0;
             cam.eye.y = nextafter(-10.0, 0.0);
         }
@@ -343,11 +343,12 @@ START_TEST(setup_nearest_vertex_rounding_mode) {
 END_TEST
 
 /* The planner's γ next to π (a light travelling along the view): acos of
- * the rounded cosine moved γ by sqrt(eps) ~ 1e-8 with the rounding mode and
- * the predicted errors by 1e-7 relative; atan2(|v × l|, v · l) is exact to
- * an ulp.  A point light at the eye of a 1e6 world: the direction to the
- * frustum centre was rounded at the eye's magnitude (γ off π by 1e-14,
- * max_error by 3e-9 between modes); relative to the eye it is exact.  Independent reference: γ = π - (angle between the directions),
+ * the rounded cosine would move γ by sqrt(eps) ~ 1e-8 with the rounding
+ * mode and the predicted errors by 1e-7 relative; atan2(|v × l|, v · l) is
+ * exact to an ulp.  A point light at the eye of a 1e6 world: the direction
+ * to the frustum centre, rounded at the eye's magnitude, would put γ off π
+ * by 1e-14 (max_error by 3e-9 between modes); relative to the eye it is
+ * exact.  Independent reference: γ = π - (angle between the directions),
  * evaluated here from the construction. */
 START_TEST(plan_gamma_rounding_mode) {
     for (int k = 0; k < 8; ++k) {
@@ -394,9 +395,8 @@ START_TEST(plan_gamma_rounding_mode) {
 }
 END_TEST
 
-/* Issue 9 finding (swarp_warp_lispsm, hard_cases): a tiny n (here the
- * caller's n' = 1e-200) made P's w row eps y + (1 - eps y_min) lose its 1,
- * so w = 0 at y_min on B.  w = 1 + (y - y_min)/n >= 1 on B is the defining
+/* A tiny n (here the caller's n' = 1e-200) would make P's w row
+ * eps y + (1 - eps y_min) lose its 1, so w = 0 at y_min on B.  w = 1 + (y - y_min)/n >= 1 on B is the defining
  * property of the warp; n is raised to 1e-6 max|y| (documented). */
 static swarp_vec4 tu_xform(const swarp_mat4* m, swarp_vec3 p) { /* column-major m·(p, 1) */
     swarp_vec4 o;
@@ -439,10 +439,9 @@ START_TEST(warp_lispsm_tiny_n) {
 }
 END_TEST
 
-/* Issue 9 finding (swarp_poly_from_camera(_range), hard_cases): far = DBL_MAX
- * is finite, valid input; its corners overflow, which was reported as
- * SWARP_ERR_NON_FINITE.  Now the documented SWARP_ERR_OUT_OF_RANGE, output
- * untouched; just inside the range the frustum is finite. */
+/* far = DBL_MAX is finite, valid input whose corners overflow: the
+ * documented SWARP_ERR_OUT_OF_RANGE (not NON_FINITE, which is for bad
+ * input), output untouched; just inside the range the frustum is finite. */
 START_TEST(poly_from_camera_overflow) {
     swarp_camera cam = camera();
     swarp_polyhedron P;
@@ -458,9 +457,8 @@ START_TEST(poly_from_camera_overflow) {
 }
 END_TEST
 
-/* Issue 9 finding (swarp_setup_points, hard_cases): a scene box reaching to
- * z = -DBL_MAX (valid) made the sweep length 2 diag(S) overflow, and
- * swarp_body_points returned 10 inf vertices with SWARP_OK.  B must be
+/* A scene box reaching to z = -DBL_MAX (valid) overflows a sweep length
+ * of 2 diag(S), which would give inf vertices with SWARP_OK.  B must be
  * finite: here it is H's 7 vertices swept the short way to the box's max
  * faces, all inside the box. */
 START_TEST(body_points_box_to_dbl_max) {
@@ -487,7 +485,7 @@ START_TEST(body_points_box_to_dbl_max) {
 }
 END_TEST
 
-/* ---- setupfix pass (issue 9, hard-case sweep findings) ------------------ */
+/* ---- valid input at the ends of the double range: setup ---------------- */
 
 static int mat_finite(const swarp_mat4* m) {
     for (int i = 0; i < 16; ++i)
@@ -495,9 +493,9 @@ static int mat_finite(const swarp_mat4* m) {
     return 1;
 }
 
-/* A subnormal light direction is a valid direction: the view was NaN with
- * SWARP_OK (1/|a| overflowed in the normalisation, inf * 0). */
-START_TEST(sf_focus_light_view_subnormal_direction) {
+/* A subnormal light direction is a valid direction: the view must be
+ * finite (normalising by 1/|a| would overflow, inf * 0 = NaN). */
+START_TEST(focus_light_view_subnormal_direction_is_finite) {
     swarp_camera cam = {{1, 2, 3}, {0, 0, -1}, {0, 1, 0}, 1.0, 1.5, 1, 100, {0, 0, 0, 0}};
     swarp_light l;
     memset(&l, 0, sizeof l);
@@ -517,9 +515,9 @@ START_TEST(sf_focus_light_view_subnormal_direction) {
 END_TEST
 
 /* An origin near DBL_MAX whose distance along the view axis exceeds
- * DBL_MAX: an infinite view came with SWARP_OK; now SWARP_ERR_OVERFLOW and
- * the output untouched. */
-START_TEST(sf_focus_light_view_translation_overflow) {
+ * DBL_MAX: the view is not representable, so SWARP_ERR_OVERFLOW and the
+ * output untouched. */
+START_TEST(focus_light_view_translation_overflow_is_reported) {
     swarp_camera cam = {{0, 0, 0}, {0, 0, -1}, {0, 1, 0}, 1.0, 1.5, 1, 100, {0, 0, 0, 0}};
     swarp_light l;
     memset(&l, 0, sizeof l);
@@ -545,10 +543,10 @@ START_TEST(sf_focus_light_view_translation_overflow) {
 }
 END_TEST
 
-/* Point light 1e300 from the scene: the general inversion of P0 L called it
- * singular (SWARP_ERR_SINGULAR, undocumented); the rigid inverse is exact.
- * Hard-case sweep swarp_setup case 236679 (seed default). */
-START_TEST(sf_setup_point_light_far) {
+/* Point light 1e300 from the scene: a general inversion of P0 L calls it
+ * singular (SWARP_ERR_SINGULAR, undocumented); the rigid inverse is exact,
+ * so the setup succeeds. */
+START_TEST(setup_point_light_1e300_away_rigid_inverse) {
     swarp_camera cam = {{0x1.71e732314ff46p+4, 0x1.d359e7729f874p+3, -0x1.71ce7489ccf2p+4},
                         {-0x1.793a0395a490fp-806, -0x1.c0bf34083786ep-1, 0x1.ed0849c0029adp-2},
                         {0x0p+0, 0x1p+0, 0x0p+0},
@@ -568,9 +566,9 @@ START_TEST(sf_setup_point_light_far) {
 }
 END_TEST
 
-/* swarp_warp_lispsm with the look-at of a spot light 1e302 above: its
- * general inversion failed (SWARP_ERR_SINGULAR, undocumented). */
-START_TEST(sf_warp_lispsm_far_light_view) {
+/* swarp_warp_lispsm with the look-at of a spot light 1e302 above: a rigid
+ * view has an exact inverse, so no SWARP_ERR_SINGULAR (undocumented). */
+START_TEST(warp_lispsm_far_light_view_rigid_inverse) {
     swarp_camera cam = {{0, 5, 0}, {0, 0, -1}, {0, 1, 0}, 1.0, 1.5, 1, 100, {0, 0, 0, 0}};
     swarp_light l;
     memset(&l, 0, sizeof l);
@@ -588,10 +586,9 @@ START_TEST(sf_warp_lispsm_far_light_view) {
 END_TEST
 
 /* An eye 1e145 from a 40-unit body: relative to the eye its points are all
- * equal, and the map put them at x = 1e4 with SWARP_OK.  Now the documented
- * SWARP_ERR_DEGENERATE (the map is finer than the coordinates resolve).
- * Hard-case sweep swarp_setup_points case 9279 (seed default). */
-START_TEST(sf_setup_points_eye_far_from_body) {
+ * equal, so no map puts them in the unit square: the documented
+ * SWARP_ERR_DEGENERATE (the map is finer than the coordinates resolve). */
+START_TEST(setup_points_eye_far_from_body_is_degenerate) {
     swarp_camera cam = {{0x1.49af6d2161444p+481, 0x1.898860b8bbd58p+3, -0x1.e848p+19},
                         {0x1.159f5e7fdada8p-1, -0x1.6ec3667adb363p-6, -0x1.ae0b6b71f612ap-1},
                         {0x0p+0, 0x1p+0, 0x0p+0},
@@ -634,11 +631,13 @@ START_TEST(sf_setup_points_eye_far_from_body) {
 }
 END_TEST
 
-/* bodyfix pass: B of a light all but parallel to faces of H (issue 9).
- * The side face through a silhouette edge came from the cross product of
- * the edge and u; with the edge all but parallel to u its plane tilted at
- * random and cut H (a vertex of B 1.9 outside its own face in a box of
- * size 80).  H below are the sweep's, written out exactly. */
+/* ---- B and H at grazing lights and at the ends of the double range ----- */
+
+/* B of a light all but parallel to faces of H.  A side face through a
+ * silhouette edge taken from the cross product of the edge and u tilts at
+ * random when the edge is all but parallel to u, and cuts H (a vertex of B
+ * 1.9 outside its own face in a box of size 80).  The H below are written
+ * out exactly in hex. */
 static swarp_polyhedron poly_of(const swarp_vec3* v, uint32_t nv, const swarp_plane* pl, const uint8_t (*loops)[8],
                                 const uint32_t* counts, uint32_t nf) {
     swarp_polyhedron p;
@@ -654,7 +653,7 @@ static swarp_polyhedron poly_of(const swarp_vec3* v, uint32_t nv, const swarp_pl
     return p;
 }
 static double plane_at(const swarp_plane* p, swarp_vec3 v) { return p->a * v.x + p->b * v.y + p->c * v.z + p->d; }
-/* B a valid convex polyhedron holding H (tol: 1e-9 of the coordinates, the sweep's) */
+/* B a valid convex polyhedron holding H (tol: 1e-9 of the coordinates, as tests/robust) */
 static void check_body(const swarp_polyhedron* B, const swarp_polyhedron* H, double tol) {
     ck_assert(B->vertex_count > 0);
     for (uint32_t f = 0; f < B->face_count; ++f) {
@@ -669,7 +668,7 @@ static void check_body(const swarp_polyhedron* B, const swarp_polyhedron* H, dou
     }
 }
 START_TEST(body_from_h_grazing) {
-    { /* hard_cases --entry swarp_body_from_h --case 381: faces of H along u */
+    { /* faces of H along u */
         const swarp_vec3 v[8] = {{1000013.2954460557, -8.9844438238526063, 1000047.9719960216},
                                  {1000013.2636823052, -8.9844438238526063, 1000048.0026541286},
                                  {1000013.3525812096, -8.8624380987345592, 1000048.0311916781},
@@ -693,7 +692,7 @@ START_TEST(body_from_h_grazing) {
         ck_assert_int_eq(swarp_body_from_h(&H, &l, &box, &B), SWARP_OK);
         check_body(&B, &H, 1e-9 * 1000100.0);
     }
-    { /* --seed 7 --case 114554: a sliver H (1.7e-7 thick at 1e5) in a flat box */
+    { /* a sliver H (1.7e-7 thick at 1e5) in a flat box */
         const swarp_vec3 v[6] = {{100048.25590152819, -2.0543779807876397, 99958.893644363838},
                                  {100048.25590152819, -2.0543779807876397, 99958.893644190059},
                                  {100048.25590162282, -2.054377543344311, 99958.893644363838},
@@ -715,7 +714,7 @@ START_TEST(body_from_h_grazing) {
         ck_assert_int_eq(swarp_body_from_h(&H, &l, &box, &B), SWARP_OK);
         check_body(&B, &H, 1e-9 * 100048.25590255289);
     }
-    { /* --case 221183: a flat H, u 1e-9 out of its plane: the two faces at a
+    { /* a flat H, u 1e-9 out of its plane: the two faces at a
          silhouette edge are opposite, their combination cancels (the side
          plane comes from the edge then) */
         const swarp_vec3 v[4] = {{999957.33045117056, -2.4299542947557908, 999996.63614671386},
@@ -733,9 +732,9 @@ START_TEST(body_from_h_grazing) {
         ck_assert_int_eq(swarp_body_from_h(&H, &l, &box, &B), SWARP_OK);
         check_body(&B, &H, 1e-9 * 999996.63614671386);
     }
-    { /* --case 86671: a flat H 1e-6 across at 1e6 (1e-12 relative): its two
-         faces' normals are noise 6e-6 apart, their combination was the
-         same plane for all four side faces (B's vertices 0.05 off them) */
+    { /* a flat H 1e-6 across at 1e6 (1e-12 relative): its two faces'
+         normals are noise 6e-6 apart, their combination can be the same
+         plane for all four side faces (B's vertices 0.05 off them) */
         const swarp_vec3 v[4] = {{1000019.2898066387, -9.6434890779410534, 999987.01980257814},
                                  {1000019.2898077613, -9.6434890779410534, 999987.01980135264},
                                  {1000019.2898066947, -9.6434866056056485, 999987.01980262937},
@@ -752,8 +751,8 @@ START_TEST(body_from_h_grazing) {
         ck_assert_int_eq(swarp_body_from_h(&H, &l, &box, &B), SWARP_OK);
         check_body(&B, &H, 1e-9 * 1000019.289807965);
     }
-    { /* --case 637158: a spot whose direction is (4.9e-324, 0, 0) (valid: not
-         zero) was rejected with SWARP_ERR_ZERO_VECTOR (its unit vector was inf) */
+    { /* a spot whose direction is (4.9e-324, 0, 0) is valid (not zero): no
+         SWARP_ERR_ZERO_VECTOR, though 1/|d| overflows */
         const swarp_aabb hb = {{-2, -8, -40}, {12, -8, 50}}, scene = {{-3, -9, -45}, {13, 10, 56}};
         swarp_polyhedron H, B, R;
         ck_assert_int_eq(swarp_poly_from_aabb(&hb, &H), SWARP_OK);
@@ -771,11 +770,10 @@ START_TEST(body_from_h_grazing) {
 }
 END_TEST
 
-/* bodyfix pass: H of a frustum 1e308 times wider than high (aspect > 0 is
- * valid).  Its corners reach 1e12 far, and V clipped by the box worked at
- * that scale: H came back with vertices outside S (hard_cases --entry
- * swarp_body_h --case 3032, 12049 off face by 0.016).  H is S clipped by V's
- * planes now. */
+/* H of a frustum 1e308 times wider than high (aspect > 0 is valid).  Its
+ * corners reach 1e12 far, and clipping V by the box works at that scale
+ * (vertices of H off S's faces by 0.016); H is S clipped by V's planes, at
+ * S's scale, so H lies in S. */
 START_TEST(body_h_wide_frustum) {
     const struct {
         swarp_vec3 eye, dir;
@@ -817,12 +815,10 @@ START_TEST(body_h_wide_frustum) {
 }
 END_TEST
 
-/* bodyfix pass: magnitudes at the ends of the double range (issue 9).  A
- * clip plane with coefficients of 1e-321 (valid: not zero) had 1/|n| = inf
- * and kept what it should cut (hard_cases --entry swarp_poly_clip --case
- * 209191); the frustum of a matrix with w ~ 6e159 is 1e-160 across, its
- * Newell normals were products of 1e-320 and came out inf
- * (swarp_poly_from_inverse_matrix --case 690952). */
+/* Magnitudes at the ends of the double range.  A clip plane with
+ * coefficients of 1e-321 (valid: not zero) has 1/|n| = inf and must still
+ * cut; the frustum of a matrix with w ~ 6e159 is 1e-160 across, and its
+ * Newell normals, products of 1e-320, must be scaled to stay finite. */
 START_TEST(poly_tiny_magnitudes) {
     const swarp_aabb box = {{-30, -30, -30}, {30, 30, 30}};
     swarp_polyhedron P, Q;
@@ -844,10 +840,10 @@ START_TEST(poly_tiny_magnitudes) {
 }
 END_TEST
 
-/* The smallest subnormal fovy is a valid field of view; halved it was 0 and
- * the warp parameter refused it (SWARP_ERR_FOV, undocumented for a valid
- * fovy).  Hard-case sweep swarp_setup_range case 184736 (seed default). */
-START_TEST(sf_setup_range_subnormal_fovy) {
+/* The smallest subnormal fovy is a valid field of view; halved it is 0,
+ * which the warp parameter must not refuse (SWARP_ERR_FOV is undocumented
+ * for a valid fovy). */
+START_TEST(setup_range_subnormal_fovy_is_valid) {
     swarp_camera cam = {{0x1.86c4978ef9536p+16, -0x1.7e12ad692e853p+1, 0x1.8683be8199ed1p+16},
                         {-0x1.c6ae222b55f79p-1, 0x1.06ee28b51c309p-4, -0x1.d22cb9b34eeb2p-2},
                         {0x0p+0, 0x1p+0, 0x0p+0},
@@ -875,10 +871,9 @@ START_TEST(sf_setup_range_subnormal_fovy) {
 }
 END_TEST
 
-/* near = DBL_MIN: α = z_1/z_0 of [RHS] (3.4) overflowed and n_repar
- * refused it (SWARP_ERR_NON_FINITE for valid arguments).  Hard-case sweep
- * swarp_setup_follow case 471357 (seed default, previous NULL). */
-START_TEST(sf_setup_nrepar_near_dbl_min) {
+/* near = DBL_MIN: α = z_1/z_0 of [RHS] (3.4) overflows, and n_repar must
+ * still accept the valid arguments (no SWARP_ERR_NON_FINITE). */
+START_TEST(setup_nrepar_near_dbl_min_is_valid) {
     swarp_camera cam = {{-0x1.1c9549fe5c6c1p+4, -0x1.f792bb36cd1f9p-1, 0x1.18d1b543d373ep+5},
                         {0x1.a2ef07efc7027p-1, 0x1.9e45c0e4a9906p-4, -0x1.21c0d5e1e81edp-1},
                         {0x0p+0, 0x1p+0, 0x0p+0},
@@ -906,10 +901,10 @@ START_TEST(sf_setup_nrepar_near_dbl_min) {
 END_TEST
 
 /* A spot light straight above the eye with a horizontal axis: s (on the
- * view vector at the near depth) lies in the light's plane, its x/D = 1e17
- * became the uniform warp's x translation and swamped B's x in the map
- * (all points at x = 1.2).  Hard-case sweep swarp_setup_points case 56085. */
-START_TEST(sf_setup_points_uniform_warp_centre) {
+ * view vector at the near depth) lies in the light's plane, and its
+ * x/D = 1e17 taken as the uniform warp's x translation would swamp B's x in
+ * the map (all points at x = 1.2).  The fit must stay tight on B. */
+START_TEST(setup_points_uniform_warp_centre_keeps_fit_tight) {
     swarp_camera cam = {{-0x1.e848247b8083p+19, 0x1.96ed5aa033d04p+2, -0x1.e84c2c75ac433p+19},
                         {0x1.d02ea0429890ap-2, -0x1.e82c012416c1ep-4, 0x1.c446ceb05efc7p-1},
                         {0x0p+0, 0x1p+0, 0x0p+0},
@@ -946,15 +941,14 @@ START_TEST(sf_setup_points_uniform_warp_centre) {
         ck_assert_msg(fabs(x) <= 1 + 1e-6 && fabs(y) <= 1 + 1e-6, "point %d at (%g, %g)", i, x, y);
         xlo = fmin(xlo, x), xhi = fmax(xhi, x);
     }
-    ck_assert(xlo < -1 + 1e-6 && xhi > 1 - 1e-6); /* the fit is tight again */
+    ck_assert(xlo < -1 + 1e-6 && xhi > 1 - 1e-6); /* the fit is tight */
 }
 END_TEST
 
 /* PSM with the eye 1e289 from a 50-unit body: relative to the eye the body
- * is one point, and light_proj · light_view overflowed (inf - inf) while
- * matrix was finite, with SWARP_INFO.  Now the documented DEGENERATE.
- * Hard-case sweep swarp_setup_points case 742279 (seed default). */
-START_TEST(sf_setup_points_psm_eye_far_from_body) {
+ * is one point, and light_proj · light_view overflows (inf - inf) while
+ * matrix is finite: the documented DEGENERATE, not a map with SWARP_INFO. */
+START_TEST(setup_points_psm_eye_far_from_body_is_degenerate) {
     swarp_camera cam = {{0x1.aac211d559113p+959, 0x1.74fe32580155ep+1, 0x1.5d2432787951p+0},
                         {-0x1.e6807cfbc537ep-1, -0x1.268e4e5a6a742p-2, -0x1.eb24e534fe96cp-4},
                         {0x0p+0, 0x1p+0, 0x0p+0},
@@ -980,10 +974,9 @@ START_TEST(sf_setup_points_psm_eye_far_from_body) {
 }
 END_TEST
 
-/* bodyfix pass: the adjusted range of a camera range one ulp wide
- * ([0.99999999999999989, 1]): H's depths rounded above far and the
- * adjusted near came out above far (hard_cases --entry
- * swarp_body_adjusted_range --seed 7 --case 715126). */
+/* The adjusted range of a camera range one ulp wide
+ * ([0.99999999999999989, 1]): H's depths can round above far, and the
+ * adjusted range must still be clamped to [near, far]. */
 START_TEST(body_adjusted_range_one_ulp) {
     swarp_camera cam;
     memset(&cam, 0, sizeof cam);
@@ -998,10 +991,9 @@ START_TEST(body_adjusted_range_one_ulp) {
 }
 END_TEST
 
-/* bodyfix pass: the frustum of a matrix with an entry of DBL_MAX has
- * corners near 1e308; their Newell products overflow to inf - inf = NaN,
- * and a NaN normal came back as a face (swarp_poly_from_inverse_matrix
- * --case 37539: face 0 normal length NaN). */
+/* The frustum of a matrix with an entry of DBL_MAX has corners near 1e308;
+ * their Newell products overflow to inf - inf = NaN, and no NaN normal may
+ * be returned as a face. */
 START_TEST(poly_inverse_matrix_huge_corners) {
     const swarp_mat4 m = {{1.9999999999989999, -1.1416761360720704, -1.9634786958989037, 0, 0.12766934452880419,
                            1.9716232880096882, -1.7976931348623157e+308, 0.43955323912948341, -1.6191533742741608,
@@ -1015,11 +1007,11 @@ START_TEST(poly_inverse_matrix_huge_corners) {
 END_TEST
 
 /* A spot light 0.27 above a flat box, the eye in the box's plane: s (on the
- * view vector at the near depth) lay on the light's plane (D ~ 1e-11), its
- * x/D = 5e10 became the warp's lateral centre and the shear it brings put
- * B's x below its rounding (a point at x = 1.00004).  Hard-case sweep
- * swarp_setup seed 7 case 955443. */
-START_TEST(sf_setup_point_light_centre_on_light_plane) {
+ * view vector at the near depth) lies on the light's plane (D ~ 1e-11); its
+ * x/D = 5e10 taken as the warp's lateral centre would bring a shear that
+ * puts B's x below its rounding (a point at x = 1.00004).  B must map into
+ * the unit square. */
+START_TEST(setup_point_light_centre_on_light_plane_maps_inside) {
     swarp_camera cam = {{0x1.e8489b298e53p+19, -0x1.4e03ed68df875p+2, 0x1.e846d0a22d44ap+19},
                         {0x1.c3aec609db329p-1, 0x0p+0, 0x1.e230911a52e69p-2},
                         {0x0p+0, 0x1p+0, 0x0p+0},
@@ -1054,10 +1046,9 @@ START_TEST(sf_setup_point_light_centre_on_light_plane) {
 END_TEST
 
 /* A spot light 2e154 above a 50-unit body: its light-view coordinates
- * (the translation 2e154) do not resolve the body, and the map put a point
- * at x = -2.1 with SWARP_INFO.  Now the documented DEGENERATE.  Hard-case
- * sweep swarp_setup case 879764 (seed default). */
-START_TEST(sf_setup_point_light_2e154_away) {
+ * (the translation 2e154) do not resolve the body, so no map fits it (a
+ * point would land at x = -2.1): the documented DEGENERATE. */
+START_TEST(setup_point_light_2e154_away_is_degenerate) {
     swarp_camera cam = {{-0x1.6e3746b57bb8cp+21, 0x1.3330e86131c35p+5, -0x1.6e35e263c471ep+21},
                         {-0x1.91a556151761bp-3, -0x1.bdc23e852900dp-1, -0x1.cdff9fb356447p-2},
                         {0x0p+0, 0x1p+0, 0x0p+0},
@@ -1086,10 +1077,9 @@ START_TEST(sf_setup_point_light_2e154_away) {
 END_TEST
 
 /* PSM with aspect = DBL_MAX: recovering the previous frame's light camera
- * multiplied by t_x = t_y aspect = inf, and the follow call called a valid
- * previous result a zero vector.  Hard-case sweep swarp_setup_follow seed 7
- * case 112641. */
-START_TEST(sf_setup_follow_psm_huge_aspect) {
+ * multiplies by t_x = t_y aspect = inf, and a valid previous result must
+ * not be called a zero vector. */
+START_TEST(setup_follow_psm_huge_aspect_no_zero_vector) {
     swarp_camera cam = {{0x1.240283d4ef769p+20, -0x1.1a29897f74798p-2, 0x1.23ffb15341e55p+20},
                         {0x1.c8b217d9ea3b4p-2, -0x1.432dc5cd31b8cp-1, -0x1.44e51b6ce2b8dp-1},
                         {0x0p+0, 0x1p+0, 0x0p+0},
@@ -1117,10 +1107,10 @@ START_TEST(sf_setup_follow_psm_huge_aspect) {
 END_TEST
 
 /* B of three points 1e299 from the eye along y with x, z within 60: every
- * extent of their light-space box is flat (a few ulps), and the fit took
- * the widest of those ulps as the map's width (the point at x = -1.4).
- * Hard-case sweep swarp_setup_points case 154580 (seed default). */
-START_TEST(sf_setup_points_all_extents_flat) {
+ * extent of their light-space box is flat (a few ulps); taking the widest
+ * of those ulps as the map's width would put a point at x = -1.4.  The
+ * points must map inside the unit square. */
+START_TEST(setup_points_all_extents_flat_maps_inside) {
     swarp_camera cam = {{0x1.342c37258b8a8p+18, 0x0p+0, 0x1.342050053f726p+18},
                         {0x1.67c56b508176dp-1, 0x1.6d635d0494d02p-3, 0x1.60a745ad68eeap-1},
                         {0x0p+0, 0x1p+0, 0x0p+0},
@@ -1153,16 +1143,15 @@ START_TEST(sf_setup_points_all_extents_flat) {
 }
 END_TEST
 
-/* Issue 9 (fenv, swarp_setup_follow case 27474 and swarp_body_points case
- * 22423 at 30000 cases): a frustum flat across two of its faces (aspect
- * 1.5e-87, or near and far one ulp apart) is built from its 8 corners; each
- * face was oriented away from the centroid by itself, and for the two faces
- * of the flat direction that distance (1e-93) is below the rounding of the
- * coordinates, so the rounding mode oriented them, often both the same way:
- * an H with no inside, and B came out empty (SWARP_ERR_BODY_EMPTY) or not
- * depending on the mode.  The faces of a hexahedron are now oriented by one
- * decision (src/poly.c, sw_poly_from_corners). */
-START_TEST(fe_poly_flat_frustum_faces_opposite) {
+/* A frustum flat across two of its faces (aspect 1.5e-87, or near and far
+ * one ulp apart) is built from its 8 corners.  Orienting each face away
+ * from the centroid by itself fails for the two faces of the flat
+ * direction: that distance (1e-93) is below the rounding of the
+ * coordinates, so the rounding mode would orient them, often both the same
+ * way (an H with no inside, B empty in some modes only).  The faces of a
+ * hexahedron are oriented by one decision (sw_poly_from_corners), so the
+ * two flat faces are opposite and the status is the same in every mode. */
+START_TEST(poly_flat_frustum_faces_opposite_rounding_mode) {
     swarp_camera cam = {{0, 0, 0},
                         {0x1.fa6f1162aabeap-1, 0x1.1fe7f9dd7b870p-3, -0x1.617f1d9118a72p-5},
                         {0, 1, 0},
@@ -1184,7 +1173,9 @@ START_TEST(fe_poly_flat_frustum_faces_opposite) {
 }
 END_TEST
 
-START_TEST(fe_setup_flat_frustum_rounding_mode) {
+/* Flat frusta of the kind above, through swarp_setup: the same status and
+ * point count in every rounding mode. */
+START_TEST(setup_flat_frustum_rounding_mode) {
     swarp_camera cam = {{0x1.86a392f3c81dep+16, 0x1.1947dc1f70c3cp+3, 0x1.869d3b8d5066cp+16},
                         {0x1.fa6f1162aabeap-1, 0x1.1fe7f9dd7b870p-3, -0x1.617f1d9118a72p-5},
                         {0, 1, 0},
@@ -1210,7 +1201,9 @@ START_TEST(fe_setup_flat_frustum_rounding_mode) {
 }
 END_TEST
 
-START_TEST(fe_body_points_one_ulp_range_rounding_mode) {
+/* Near and far one ulp apart: the frustum is flat along the view, and B
+ * has the same status in every rounding mode. */
+START_TEST(body_points_one_ulp_range_rounding_mode) {
     swarp_camera cam = {{-0x1.e8487d98eaea7p+19, 0x1.2007fa164b51fp+0, -0x1.e8498e2844f6dp+19},
                         {0x1.34822d0e88ebap-1, 0x1.73db85a7575ffp-3, 0x1.8de64f57dc779p-1},
                         {0, 1, 0},
@@ -1236,14 +1229,14 @@ START_TEST(fe_body_points_one_ulp_range_rounding_mode) {
 }
 END_TEST
 
-/* Issue 9 (fenv, swarp_setup_points case 28597 at 30000 cases): PSM with
- * an omni light inside the scene box, so the light itself is a vertex of B
- * ([RHS] §3.1.1).  On the light camera's w = 0 plane its w is rounding
- * (+-1e-15), and the casters' depth range took it when the rounding made w
- * positive (FE_DOWNWARD): a depth of -5e15 made the fit call x and y flat
- * and the map collapsed (SWARP_INFO_FLAT_EXTENT, rows of 1e-17).  Casters
- * are now taken only with w above its rounding (src/psm.c). */
-START_TEST(fe_setup_points_psm_light_in_b) {
+/* PSM with an omni light inside the scene box, so the light itself is a
+ * vertex of B ([RHS] §3.1.1).  On the light camera's w = 0 plane its w is
+ * rounding (+-1e-15); taken into the casters' depth range when the
+ * rounding makes w positive (FE_DOWNWARD), a depth of -5e15 would make the
+ * fit call x and y flat and collapse the map (SWARP_INFO_FLAT_EXTENT, rows
+ * of 1e-17).  Casters count only with w above its rounding (src/geometry/psm.c), so
+ * every mode gives the default mode's map. */
+START_TEST(setup_points_psm_light_in_b_rounding_mode) {
     swarp_camera cam = {{0x1.e844419ef06e8p+19, 0x1.9c16768fb6f8bp+1, 0x1.e84a3a2358517p+19},
                         {0x1.ef942ece7d0e1p-1, -0x1.b5f06e8950acbp-5, 0x1.f6bc44aa9d276p-3},
                         {0, 1, 0},
@@ -1282,14 +1275,13 @@ START_TEST(fe_setup_points_psm_light_in_b) {
 }
 END_TEST
 
-/* Issue 9 (fenv, swarp_setup_follow case 38987 at 60000 cases): a light
- * 1e-7 rad from the view direction, followed with Δ = 4e-14.  The target
- * up (the view projected normal to the light, 1e-7 long) is rounded to
- * eps/1e-7 = 2e-9 rad, above the 1e-9 below which the follow rule called
- * the frame aligned, so FE_TONEAREST gave SWARP_OK (φ = 0.8e-9) and the
- * directed modes SWARP_INFO_FOLLOW_LAG (φ = 1.8e-9, 2.9e-9).  The bound now
- * adds 16 eps over each projection's length (src/follow.c). */
-START_TEST(fe_setup_follow_aligned_rounding_mode) {
+/* A light 1e-7 rad from the view direction, followed with Δ = 4e-14.  The
+ * target up (the view projected normal to the light, 1e-7 long) is rounded
+ * to eps/1e-7 = 2e-9 rad, above a fixed 1e-9 alignment bound: φ is 0.8e-9
+ * to nearest and 1.8e-9, 2.9e-9 in the directed modes.  The bound adds
+ * 16 eps over each projection's length (src/geometry/follow.c), so every mode calls
+ * the frame aligned and gives the same status. */
+START_TEST(setup_follow_aligned_rounding_mode) {
     swarp_camera cam = {{-0x1.24a14cfe4aaaap+2, 0x1.5489c2e3efd6p+2, -0x1.ce986f28b59e9p+4},
                         {0x1.d99b26bb2f639p-1, -0x1.0519369f9fb89p-3, 0x1.6e7ff22cc397dp-2},
                         {0, 1, 0},
@@ -1327,14 +1319,13 @@ START_TEST(fe_setup_follow_aligned_rounding_mode) {
 }
 END_TEST
 
-/* Issue 9 (fenv, swarp_setup_points case 38519 at 60000 cases): PSM without
- * receivers (B is both), an omni light that is itself a vertex of B.  Its w
- * in the light camera is 0 up to rounding: FE_TONEAREST, UPWARD and
- * DOWNWARD refused the light among the receivers
- * (SWARP_ERR_LIGHT_INSIDE_BODY), FE_TOWARDZERO got w = +1e-16 and a map
- * collapsed around it (SWARP_INFO_FLAT_EXTENT).  A receiver must be in
- * front of the light by more than the rounding of its w (src/psm.c). */
-START_TEST(fe_setup_points_psm_light_is_receiver) {
+/* PSM without receivers (B is both), an omni light that is itself a
+ * vertex of B.  Its w in the light camera is 0 up to rounding (+1e-16
+ * under FE_TOWARDZERO, which would collapse the map around it to
+ * SWARP_INFO_FLAT_EXTENT).  A receiver must be in front of the light by
+ * more than the rounding of its w (src/geometry/psm.c): the light is refused among
+ * the receivers (SWARP_ERR_LIGHT_INSIDE_BODY) in every mode. */
+START_TEST(setup_points_psm_light_is_receiver_rounding_mode) {
     swarp_camera cam = {{-0x1.3feeaa7e822a5p+3, -0x1.8e460d304ac5fp+1, 0x1.bae3635bc42bp+3},
                         {0x1.46f2a24266ed7p-1, 0x1.2b5a7869c70afp-3, -0x1.82d8178f3c57ap-1},
                         {0, 1, 0},
@@ -1370,14 +1361,13 @@ START_TEST(fe_setup_points_psm_light_is_receiver) {
 }
 END_TEST
 
-/* Issue 9 (fenv, swarp_setup_points 120000 cases 67704, 110180): B is a
- * spot light's apex alone (the light position).  Its distance along the
- * light's axis came out -7e-15, 0 or +1e-14 by rounding mode: the light
- * inside B (SWARP_ERR_LIGHT_INSIDE_BODY) under FE_UPWARD, a map divided by
- * D = 0 (SWARP_ERR_DEGENERATE) otherwise.  A point within the rounding of D
- * of the light is now the apex, clipped as any (src/setup.c): nothing is
- * left of B, SWARP_ERR_BODY_EMPTY in every mode. */
-START_TEST(fe_setup_points_b_is_the_spot_apex) {
+/* B is a spot light's apex alone (the light position).  Its distance along
+ * the light's axis is -7e-15, 0 or +1e-14 by rounding mode, which would
+ * read as the light inside B (SWARP_ERR_LIGHT_INSIDE_BODY) or a map divided
+ * by D = 0 (SWARP_ERR_DEGENERATE).  A point within the rounding of D of the
+ * light is the apex, clipped as any (src/geometry/setup.c): nothing is left of B,
+ * SWARP_ERR_BODY_EMPTY in every mode. */
+START_TEST(setup_points_b_is_the_spot_apex_rounding_mode) {
     swarp_camera cam = {{-0x1.541efcd5d2f0cp+5, 0x1.2b331b2f89836p+3, 0x1.ddf1ad5d7cd2bp+5},
                         {0x1.62bc7967489eap-1, 0x1.69318c75e827fp-20, -0x1.71325b6e4a4c8p-1},
                         {0, 1, 0},
@@ -1402,7 +1392,7 @@ START_TEST(fe_setup_points_b_is_the_spot_apex) {
 END_TEST
 
 /* swarp_setup's status under every directed rounding mode is s0, the
- * default mode's (the fenv passes' status-flip regressions) */
+ * default mode's */
 static void setup_status_in_every_mode(const swarp_camera* cam, const swarp_light* l, const swarp_aabb* box,
                                        const swarp_setup_options* o, swarp_status s0) {
     swarp_setup_result r;
@@ -1414,14 +1404,13 @@ static void setup_status_in_every_mode(const swarp_camera* cam, const swarp_ligh
     }
 }
 
-/* Issue 9 (fenv, swarp_setup 240000 case 215976): a flat box seen from
- * above, the [WS06] centre: C_start is the nearest vertex at the y_max end
- * of P's axis and the y_min end lies before the near plane, so z_0 = z_1 =
- * near exactly and their difference was rounding (+-1e-14): n_opt 1e17
- * (SWARP_OK) under FE_TONEAREST and FE_DOWNWARD, +inf
- * (SWARP_INFO_WARP_UNIFORM) under the others.  Within their rounding the
- * depths count as equal: uniform in every mode (src/warp.c). */
-START_TEST(fe_setup_nopt_equal_depths_rounding_mode) {
+/* A flat box seen from above, the [WS06] centre: C_start is the nearest
+ * vertex at the y_max end of P's axis and the y_min end lies before the
+ * near plane, so z_0 = z_1 = near exactly and their computed difference is
+ * rounding (+-1e-14): n_opt 1e17 or +inf by mode if taken literally.
+ * Within their rounding the depths count as equal: uniform
+ * (SWARP_INFO_WARP_UNIFORM) in every mode (src/geometry/lispsm.c). */
+START_TEST(setup_nopt_equal_depths_rounding_mode) {
     swarp_camera cam = {{-0x1.e8482c636ea16p+19, 0x1.dfe0a6dd51096p+4, -0x1.e84c66bd330b1p+19},
                         {-0x1.2e9f9ca9cb6d5p-2, -0x1.e095edba9856p-1, -0x1.6c1d25ca25f5p-3},
                         {0, 1, 0},
@@ -1445,13 +1434,13 @@ START_TEST(fe_setup_nopt_equal_depths_rounding_mode) {
 }
 END_TEST
 
-/* Issue 9 (fenv, swarp_setup_follow 480000 case 381864): the warp told a
- * point light's P0·L from a directional light's L by the z entry of its w
- * row alone, which is 0 when the light axis has no world-z component (eye,
- * light and view in one z plane): γ came out 90° instead of the angle, and
- * the rounding of that 0 chose between the two warps.  The same scene with
- * the light 1e-7 off that plane must give nearly the same map. */
-START_TEST(fe_setup_point_light_axis_in_z_plane) {
+/* Telling a point light's P0·L from a directional light's L by the z entry
+ * of its w row alone fails when the light axis has no world-z component
+ * (eye, light and view in one z plane): that entry is 0, γ would read 90°
+ * instead of the angle, and the rounding of that 0 would choose between the
+ * two warps.  The map is continuous there: the same scene with the light
+ * 1e-7 off that plane must give nearly the same map. */
+START_TEST(setup_point_light_axis_in_z_plane_continuous) {
     swarp_camera cam = {{0, 0, 0}, {1, 0.3, 0}, {0, 1, 0}, 1.0, 1.5, 0.5, 50, {0, 0, 0, 0}};
     swarp_aabb box = {{-10, -10, -20}, {40, 10, 20}};
     swarp_light l = {SWARP_LIGHT_POINT, 0, {0, -1, 0}, {-5, 40, 0}, 0, {0, 0, 0, 0}};
@@ -1468,13 +1457,12 @@ START_TEST(fe_setup_point_light_axis_in_z_plane) {
 }
 END_TEST
 
-/* Issue 9 (fenv, swarp_setup 480000 case 332177): as
- * fe_setup_nopt_equal_depths_rounding_mode, with a spot light 300 units
+/* As setup_nopt_equal_depths_rounding_mode, with a spot light 300 units
  * away: the depths (0.033) are reconstructed from the light's space and
  * carry the rounding of its 300-unit coordinates, z_1 - z_0 = -2e-14 to
  * +2e-14 by mode (n' 7e13..7e14, or uniform under FE_TOWARDZERO).  The
- * depths' rounding bound takes the sizes of their terms (src/warp.c). */
-START_TEST(fe_setup_nopt_equal_depths_point_light) {
+ * depths' rounding bound takes the sizes of their terms (src/geometry/lispsm.c). */
+START_TEST(setup_nopt_equal_depths_point_light_rounding_mode) {
     swarp_camera cam = {{0x1.c879bde18ae3p+3, -0x1.99fb6266c0d47p+2, -0x1.3c740062d85f4p+5},
                         {-0x1.335b0e8d92de4p-1, 0x1.997bb20dee2c9p-1, 0},
                         {0, 1, 0},
@@ -1499,15 +1487,14 @@ START_TEST(fe_setup_nopt_equal_depths_point_light) {
 }
 END_TEST
 
-/* fenvg pass: PSM's light camera axis is the minimal cone around the
- * receivers' light directions ([KOZ] §14.2.2, src/psm.c).  Here a cone of
- * 0.007 rad through three directions, two of them 6e-6 apart; its axis was
- * the normal (b - a) x (c - a), which the rounding of the unit vectors'
- * norms tilted by eps/6e-6: 4e-11 rad between rounding modes, and the row
- * offsets (e·q̂)/τ (τ = 0.0055) moved 2e-8 of the largest output (issue 9,
- * fenv swarp_setup_points 480000 case 405914).  The axis is now solved in
- * the tangent plane: the map is the same in every rounding mode to 1e-9. */
-START_TEST(fe_setup_points_psm_small_cone_rounding_mode) {
+/* PSM's light camera axis is the minimal cone around the receivers' light
+ * directions ([KOZ] §14.2.2, src/geometry/psm.c).  Here a cone of 0.007 rad through
+ * three directions, two of them 6e-6 apart.  As the normal
+ * (b - a) x (c - a) its axis would be tilted by the rounding of the unit
+ * vectors' norms, eps/6e-6: 4e-11 rad between rounding modes, moving the
+ * row offsets (e·q̂)/τ (τ = 0.0055) by 2e-8 of the largest output.  Solved
+ * in the tangent plane, the map is the same in every rounding mode to 1e-9. */
+START_TEST(setup_points_psm_small_cone_rounding_mode) {
     const swarp_camera cam = {{0x1.04da202c6b4d6p+5, 0x1.12cb4d5f8af88p+2, 0x1.2ddfb7cc89899p+5},
                               {-0x1.3672bb50dc043p-1, -0x1.1d53626e89fd5p-6, -0x1.970bc56826685p-1},
                               {0, 1, 0},
@@ -1562,11 +1549,11 @@ START_TEST(fe_setup_points_psm_small_cone_rounding_mode) {
 }
 END_TEST
 
-/* fenvk pass: a polyhedron without faces (what the clipper leaves when a
- * flat polygon collapses onto a line: a segment of 2 vertices) clipped by a
- * plane through it kept its inner end and dropped the outer one, instead of
- * cutting the segment where it crosses the plane. */
-START_TEST(fe_poly_clip_segment_without_faces) {
+/* A polyhedron without faces (what the clipper leaves when a flat polygon
+ * collapses onto a line: a segment of 2 vertices) clipped by a plane
+ * through it is cut where it crosses the plane: the inner end and the
+ * crossing, not the inner end alone. */
+START_TEST(poly_clip_cuts_segment_without_faces) {
     swarp_polyhedron P, out;
     memset(&P, 0, sizeof P);
     P.vertex_count = 2;
@@ -1583,7 +1570,7 @@ START_TEST(fe_poly_clip_segment_without_faces) {
 END_TEST
 
 /* H := the hexahedron with vertices v and face planes pl, the face loops of
- * the two fixtures below (copied from the failing runs' H) in the order of pl */
+ * the two fixtures below (their H written out exactly) in the order of pl */
 static void fill_hexahedron(swarp_polyhedron* H, const swarp_vec3 v[8], const swarp_plane pl[6]) {
     static const uint8_t loops[6][4] = {{0, 2, 6, 4}, {1, 5, 7, 3}, {0, 4, 5, 1},
                                         {2, 3, 7, 6}, {0, 1, 3, 2}, {4, 6, 7, 5}};
@@ -1597,14 +1584,13 @@ static void fill_hexahedron(swarp_polyhedron* H, const swarp_vec3 v[8], const sw
     }
 }
 
-/* fenvk pass (issue 9, fenv swarp_body_from_h 240000 case 169801): a box
- * 70 long and 1e-6 thick in y and z at 1e6, the clipper's merge distance
- * (SWARP_POLY_EPS_REL x 1e6): the sweep of H collapses onto a segment on
- * the box's edge line, and the last clip (x >= min x) kept only its inner
- * end (the collapse has no faces, so no edge was cut): B was the point
- * x = 1000050.14 to nearest and the segment down to the box's min x =
- * 999986.47 in the directed modes.  B is that segment in every mode. */
-START_TEST(fe_body_from_h_needle_box_rounding_mode) {
+/* A box 70 long and 1e-6 thick in y and z at 1e6, the clipper's merge
+ * distance (SWARP_POLY_EPS_REL x 1e6): the sweep of H collapses onto a
+ * segment on the box's edge line, which the last clip (x >= min x) must
+ * cut although the collapse has no faces (keeping only its inner end would
+ * leave the point x = 1000050.14 in one mode and the segment down to the
+ * box's min x = 999986.47 in others).  B is that segment in every mode. */
+START_TEST(body_from_h_needle_box_rounding_mode) {
     swarp_polyhedron H;
     memset(&H, 0, sizeof H);
     const swarp_vec3 v[8] = {
@@ -1640,14 +1626,13 @@ START_TEST(fe_body_from_h_needle_box_rounding_mode) {
 }
 END_TEST
 
-/* fenvk pass (issue 9, fenv swarp_body_from_h 480000 case 295909): a point
- * light 50 units from a 45-unit box and H reaching 1.6e8 (a frustum with a
- * far plane 8e7 away): conv(H ∪ {l}) clipped to the box is the box, but
- * the cuts of the edges from l to H's far vertices were interpolated from
- * the far end and rounded by eps |1.6e8|: B's corners 1e-8 to 3e-8 off the
- * box, by rounding mode (6e-8 between FE_TONEAREST and FE_TOWARDZERO).
- * Cut from the nearer end, they are on the box to rounding. */
-START_TEST(fe_body_from_h_point_light_far_h_rounding_mode) {
+/* A point light 50 units from a 45-unit box and H reaching 1.6e8 (a
+ * frustum with a far plane 8e7 away): conv(H ∪ {l}) clipped to the box is
+ * the box.  Cuts of the edges from l to H's far vertices interpolated from
+ * the far end would be rounded by eps |1.6e8| (B's corners 1e-8 to 3e-8 off
+ * the box by rounding mode); cut from the nearer end, they are on the box
+ * to rounding in every mode. */
+START_TEST(body_from_h_point_light_far_h_rounding_mode) {
     swarp_polyhedron H;
     memset(&H, 0, sizeof H);
     const swarp_vec3 v[8] = {
@@ -1686,16 +1671,15 @@ START_TEST(fe_body_from_h_point_light_far_h_rounding_mode) {
 }
 END_TEST
 
-/* fenvl pass: PSM with a caller's slide-back of 3.8e12 ([KOZ] Fig. 14-6,
- * swarp_setup_options.slideback): light_view is the slid-back camera's view,
- * translation 3.8e12, and light_proj was recovered as M_c V_c^-1, so the
- * camera projection in it carried eps 3.8e12 = 8e-4 of rounding in entries
- * that are 0 -- times P's rows of 1e11, light_proj light_view was off the
- * matrix by 3e-7 of it, another amount in each rounding mode (issue 9, fenv
- * swarp_setup_points 960000 case 866211).  light_proj is now A Q P_c with
- * the projection itself: the product is the matrix to rounding in every
- * mode, and every matrix is the default mode's to 1e-9. */
-START_TEST(fe_setup_points_psm_huge_slideback) {
+/* PSM with a caller's slide-back of 3.8e12 ([KOZ] Fig. 14-6,
+ * swarp_setup_options.slideback): light_view is the slid-back camera's
+ * view, translation 3.8e12.  Recovering light_proj as M_c V_c^-1 would put
+ * eps 3.8e12 = 8e-4 of rounding in entries that are 0 -- times P's rows of
+ * 1e11, light_proj light_view off the matrix by 3e-7 of it, differently in
+ * each rounding mode.  light_proj is A Q P_c with the projection itself:
+ * the product is the matrix to rounding in every mode, and every matrix is
+ * the default mode's to 1e-9. */
+START_TEST(setup_points_psm_huge_slideback_rounding_mode) {
     const swarp_camera cam = {{-0x1.0199b1f2db084p+5, 0x1.20c81efa3776ep+3, -0x1.d6cf5b2c342b8p+0},
                               {0x1.f561349d08566p-1, 0x1.b6bc97fc98057p-5, -0x1.90359c841832ap-3},
                               {0, 1, 0},
@@ -1771,18 +1755,16 @@ START_TEST(fe_setup_points_psm_huge_slideback) {
 }
 END_TEST
 
-/* fenvm pass (issue 9, fenv swarp_cascade_setup 960000 case 686393): the
- * scene of that case, a box flat in x at 1e5 (min.x = max.x) and a
- * directional light 9e-16 rad off that plane.  The view frustum's edges cut
- * at the box plane x = c were interpolated: on c to nearest, 1 ulp
- * (1.5e-11) below it under FE_DOWNWARD; the box clip sets the cut's x to c
- * now (src/poly.c).  The light grazes the plane, so B is H swept in the
- * plane (src/body.c sw_flat_extend): its copies H + T u carried u's normal
- * part, 5.6e-14, which rounded to c or an ulp off it by mode.  B off its
- * plane by ulps was a 3e-11 extent the coordinates do not resolve
- * (SWARP_ERR_DEGENERATE); in the plane it is flat (SWARP_INFO_FLAT_EXTENT),
- * as to nearest. */
-static void fenvm_flat_x_scene(swarp_camera* cam, swarp_light* l, swarp_aabb* b) {
+/* A box flat in x at 1e5 (min.x = max.x) and a directional light 9e-16 rad
+ * off that plane.  The view frustum's edges cut at the box plane x = c, if
+ * interpolated, land on c to nearest and 1 ulp (1.5e-11) below it under
+ * FE_DOWNWARD; the box clip sets the cut's x to c (src/geometry/poly.c).  The light
+ * grazes the plane, so B is H swept in the plane (src/geometry/body.c
+ * sw_flat_extend): copies H + T u carrying u's normal part, 5.6e-14, would
+ * round to c or an ulp off it by mode, and B off its plane by ulps is a
+ * 3e-11 extent the coordinates do not resolve (SWARP_ERR_DEGENERATE).  In
+ * the plane it is flat (SWARP_INFO_FLAT_EXTENT) in every mode. */
+static void flat_x_box_grazing_light_scene(swarp_camera* cam, swarp_light* l, swarp_aabb* b) {
     memset(cam, 0, sizeof *cam);
     cam->eye = (swarp_vec3){0x1.868ba1b7b7e0ap+16, -0x1.a3f61053e45e4p-2, 0x1.8681f276586bcp+16};
     cam->dir = (swarp_vec3){0x1.203af9ee75616p-50, 0x1.d48237d9a2e68p-1, 0x1.9d01b64f0c798p-2};
@@ -1798,11 +1780,11 @@ static void fenvm_flat_x_scene(swarp_camera* cam, swarp_light* l, swarp_aabb* b)
                       {0x1.868c8f1e3be8ep+16, 0x1.d97027beb06e7p+4, 0x1.8694fded10315p+16}};
 }
 
-START_TEST(fe_body_h_flat_box_cut_on_its_plane) {
+START_TEST(body_h_flat_box_cut_on_its_plane_rounding_mode) {
     swarp_camera cam;
     swarp_light l;
     swarp_aabb b;
-    fenvm_flat_x_scene(&cam, &l, &b);
+    flat_x_box_grazing_light_scene(&cam, &l, &b);
     /* camera-relative, as swarp_setup and swarp_cascade_setup clip (the
      * differences are exact: Sterbenz) */
     const swarp_vec3 e = cam.eye;
@@ -1822,11 +1804,11 @@ START_TEST(fe_body_h_flat_box_cut_on_its_plane) {
 }
 END_TEST
 
-START_TEST(fe_cascade_flat_box_grazing_light_rounding_mode) {
+START_TEST(cascade_flat_box_grazing_light_rounding_mode) {
     swarp_camera cam;
     swarp_light l;
     swarp_aabb b;
-    fenvm_flat_x_scene(&cam, &l, &b);
+    flat_x_box_grazing_light_scene(&cam, &l, &b);
     swarp_cascade_options o;
     memset(&o, 0, sizeof o);
     o.split.count = 7;
@@ -1856,13 +1838,13 @@ START_TEST(fe_cascade_flat_box_grazing_light_rounding_mode) {
 }
 END_TEST
 
-/* fenvm pass (issue 9, fenv swarp_cascade_setup 960000 case 572608): a box
- * flat in x through the eye (min.x = max.x = eye.x) and one ulp thick in y
- * at 3e6, a 1e-5 frustum.  The frustum's edges cut at x = eye.x came out on
- * the plane or off it by rounding mode, and split 0's B was two points
- * 4.4e-16 apart or a segment off the plane: DEGENERATE to nearest,
- * WARP_UNIFORM under FE_DOWNWARD.  The box-plane cut is exact now. */
-START_TEST(fe_cascade_box_flat_through_eye_rounding_mode) {
+/* A box flat in x through the eye (min.x = max.x = eye.x) and one ulp
+ * thick in y at 3e6, a 1e-5 frustum.  Frustum edges cut at x = eye.x by
+ * interpolation would land on the plane or off it by rounding mode (split
+ * 0's B two points 4.4e-16 apart, or a segment off the plane: DEGENERATE in
+ * one mode, WARP_UNIFORM in another).  The box-plane cut is exact, so the
+ * status is the same in every mode. */
+START_TEST(cascade_box_flat_through_eye_rounding_mode) {
     swarp_camera cam;
     memset(&cam, 0, sizeof cam);
     cam.eye = (swarp_vec3){-0x1.6e36b23669e25p+21, -0x1.2d6e3383869c7p+1, -0x1.6e36fd9ebc33dp+21};
@@ -1899,15 +1881,14 @@ START_TEST(fe_cascade_box_flat_through_eye_rounding_mode) {
 }
 END_TEST
 
-/* fenvm pass (issue 9, fenv swarp_setup_follow 960000 case 653923, no
- * previous frame: swarp_setup): PSM over a slab 1e-7 thick at 3e6 with the
- * eye in it, a light 1e-9 rad off its plane.  The receivers' directions in
- * PPS span 179.995° (cos r = 4e-5): the pair cap's centre carries eps/cos r,
- * a point 8.8e-10 from a support fell outside it by that, and the cap
- * through the three turned the PSM axis by 3e-3..6e-3 rad with the rounding
- * mode (light_proj's y scale -8006, -8770, -107).  The in-cap test allows
- * the centre's rounding now: the same map in every mode. */
-START_TEST(fe_setup_psm_hemisphere_cap_rounding_mode) {
+/* PSM over a slab 1e-7 thick at 3e6 with the eye in it, a light 1e-9 rad
+ * off its plane.  The receivers' directions in PPS span 179.995°
+ * (cos r = 4e-5): the pair cap's centre carries eps/cos r, so a point
+ * 8.8e-10 from a support can fall outside it by rounding alone, and a cap
+ * through the three would turn the PSM axis by 3e-3..6e-3 rad with the
+ * rounding mode (light_proj's y scale -8006, -8770, -107).  The in-cap test
+ * allows the centre's rounding: the same map in every mode. */
+START_TEST(setup_psm_hemisphere_cap_rounding_mode) {
     swarp_camera cam;
     memset(&cam, 0, sizeof cam);
     cam.eye = (swarp_vec3){-0x1.6e35a0f3725e7p+21, -0x1.ddf9f165dac0bp+2, -0x1.6e36700b3d69dp+21};
@@ -1948,22 +1929,22 @@ START_TEST(fe_setup_psm_hemisphere_cap_rounding_mode) {
         for (int i = 0; i < 16; ++i)
             /* the map's own conditioning (the harness measures 7.5e9: points
              * 5e-4 from the eye at 3e6, resolved to 1e-6 of their distance);
-             * before, the entries differed by 20 % and 75x */
+             * far below the 20 % and 75x a turned axis gives */
             ck_assert_msg(fabs(r.matrix.m[i] - r0.matrix.m[i]) <= 1e-6 * scale, "mode %d: matrix %d = %.17g, default %.17g", k, i,
                           r.matrix.m[i], r0.matrix.m[i]);
     }
 }
 END_TEST
 
-/* fenvn pass: LiSPSM with the [WS06] centre, B's nearest vertex the point
- * light itself (B = conv(H u {l}) n S), so C_start is the light: (0, 0, 1, 0)
- * in its space, x/w = 0/0 and z/w = 1/0 with a zero w whose sign the
- * rounding picks (-0 under FE_DOWNWARD).  The centre was clamped to z_max
- * to nearest and to z_min downward (z_0 0.013 vs 0.74, n 6 % off, light_proj
- * entries of opposite sign; issue 9, fenv swarp_setup_points 3840000 case
- * 2167489).  A zero w takes the numerator's side, or the middle of B's box
- * (src/warp.c); every mode gives the default mode's map to 1e-9. */
-START_TEST(fe_setup_points_centre_at_point_light) {
+/* LiSPSM with the [WS06] centre, B's nearest vertex the point light itself
+ * (B = conv(H u {l}) n S), so C_start is the light: (0, 0, 1, 0) in its
+ * space, x/w = 0/0 and z/w = 1/0 with a zero w whose sign the rounding
+ * picks (-0 under FE_DOWNWARD).  Clamping by the sign of w would put the
+ * centre at z_max in one mode and z_min in another (z_0 0.013 vs 0.74, n 6 %
+ * off, light_proj entries of opposite sign).  A zero w takes the
+ * numerator's side, or the middle of B's box (src/geometry/lispsm.c); every mode gives
+ * the default mode's map to 1e-9. */
+START_TEST(setup_points_centre_at_point_light_rounding_mode) {
     const swarp_camera cam = {{-0x1.552be393132dfp+5, -0x1.b8f2f2c2f3cb8p+2, -0x1.71d45bf1feefp+4},
                               {-0x1.ab668fa63bb28p-2, -0x1.13029b718ea04p-1, 0x1.774b427f1a26dp-1},
                               {0, 1, 0},
@@ -2019,14 +2000,14 @@ START_TEST(fe_setup_points_centre_at_point_light) {
 }
 END_TEST
 
-/* fenvn pass: PSM, a point light 1 unit above the eye that is a vertex of B
+/* PSM, a point light 1 unit above the eye that is a vertex of B
  * (B = conv(H u {l}) n S), the scene 1e5 from the origin.  The light lies
  * on its own plane w = 0; QM = Q M_c's w row carries eps of the product's
- * terms, more than eps of the terms of w at the light, and under
- * FE_DOWNWARD its w came out positive beyond that smaller bound: a caster
- * at depth -2.8e15, x and y flat beside it (SWARP_INFO_FLAT_EXTENT instead
- * of SWARP_OK; issue 9, fenv swarp_setup_points 3840000 case 3804776). */
-START_TEST(fe_setup_points_psm_light_vertex_product_rounding) {
+ * terms, more than eps of the terms of w at the light, so the bound on w's
+ * rounding must be taken from the product's terms: with the smaller bound
+ * FE_DOWNWARD gives w positive beyond it, a caster at depth -2.8e15 and x,
+ * y flat beside it (SWARP_INFO_FLAT_EXTENT instead of SWARP_OK). */
+START_TEST(setup_points_psm_light_vertex_product_rounding_mode) {
     const swarp_camera cam = {{0x1.8696a23881e22p+16, 0x1.2b825212bde47p+4, 0x1.86d331525b447p+16},
                               {0x1.b3a3b09071fdbp-3, 0x1.ad7f29abcaf48p-24, -0x1.947659d5302cdp-1},
                               {0, 1, 0},
@@ -2085,53 +2066,48 @@ int main(void) {
     tcase_add_test(t, warp_lispsm_tiny_n);
     tcase_add_test(t, poly_from_camera_overflow);
     tcase_add_test(t, body_points_box_to_dbl_max);
-    /* setupfix pass */
-    tcase_add_test(t, sf_focus_light_view_subnormal_direction);
-    tcase_add_test(t, sf_focus_light_view_translation_overflow);
-    tcase_add_test(t, sf_setup_point_light_far);
-    tcase_add_test(t, sf_warp_lispsm_far_light_view);
-    tcase_add_test(t, sf_setup_points_eye_far_from_body);
-    tcase_add_test(t, sf_setup_range_subnormal_fovy);
-    tcase_add_test(t, sf_setup_nrepar_near_dbl_min);
-    tcase_add_test(t, sf_setup_points_uniform_warp_centre);
-    tcase_add_test(t, sf_setup_points_psm_eye_far_from_body);
-    tcase_add_test(t, sf_setup_point_light_centre_on_light_plane);
-    tcase_add_test(t, sf_setup_point_light_2e154_away);
-    tcase_add_test(t, sf_setup_follow_psm_huge_aspect);
-    tcase_add_test(t, sf_setup_points_all_extents_flat);
-    /* bodyfix pass */
+    /* valid input at the ends of the double range: setup */
+    tcase_add_test(t, focus_light_view_subnormal_direction_is_finite);
+    tcase_add_test(t, focus_light_view_translation_overflow_is_reported);
+    tcase_add_test(t, setup_point_light_1e300_away_rigid_inverse);
+    tcase_add_test(t, warp_lispsm_far_light_view_rigid_inverse);
+    tcase_add_test(t, setup_points_eye_far_from_body_is_degenerate);
+    tcase_add_test(t, setup_range_subnormal_fovy_is_valid);
+    tcase_add_test(t, setup_nrepar_near_dbl_min_is_valid);
+    tcase_add_test(t, setup_points_uniform_warp_centre_keeps_fit_tight);
+    tcase_add_test(t, setup_points_psm_eye_far_from_body_is_degenerate);
+    tcase_add_test(t, setup_point_light_centre_on_light_plane_maps_inside);
+    tcase_add_test(t, setup_point_light_2e154_away_is_degenerate);
+    tcase_add_test(t, setup_follow_psm_huge_aspect_no_zero_vector);
+    tcase_add_test(t, setup_points_all_extents_flat_maps_inside);
+    /* B and H at grazing lights and at the ends of the double range */
     tcase_add_test(t, body_from_h_grazing);
     tcase_add_test(t, body_h_wide_frustum);
     tcase_add_test(t, poly_tiny_magnitudes);
     tcase_add_test(t, body_adjusted_range_one_ulp);
     tcase_add_test(t, poly_inverse_matrix_huge_corners);
-    /* fenve pass */
-    tcase_add_test(t, fe_poly_flat_frustum_faces_opposite);
-    tcase_add_test(t, fe_setup_flat_frustum_rounding_mode);
-    tcase_add_test(t, fe_body_points_one_ulp_range_rounding_mode);
-    tcase_add_test(t, fe_setup_points_psm_light_in_b);
-    tcase_add_test(t, fe_setup_follow_aligned_rounding_mode);
-    tcase_add_test(t, fe_setup_points_psm_light_is_receiver);
-    tcase_add_test(t, fe_setup_points_b_is_the_spot_apex);
-    tcase_add_test(t, fe_setup_nopt_equal_depths_rounding_mode);
-    tcase_add_test(t, fe_setup_point_light_axis_in_z_plane);
-    tcase_add_test(t, fe_setup_nopt_equal_depths_point_light);
-    /* fenvg pass */
-    tcase_add_test(t, fe_setup_points_psm_small_cone_rounding_mode);
-    /* fenvk pass */
-    tcase_add_test(t, fe_poly_clip_segment_without_faces);
-    tcase_add_test(t, fe_body_from_h_needle_box_rounding_mode);
-    tcase_add_test(t, fe_body_from_h_point_light_far_h_rounding_mode);
-    /* fenvl pass */
-    tcase_add_test(t, fe_setup_points_psm_huge_slideback);
-    /* fenvm pass */
-    tcase_add_test(t, fe_body_h_flat_box_cut_on_its_plane);
-    tcase_add_test(t, fe_cascade_flat_box_grazing_light_rounding_mode);
-    tcase_add_test(t, fe_cascade_box_flat_through_eye_rounding_mode);
-    tcase_add_test(t, fe_setup_psm_hemisphere_cap_rounding_mode);
-    /* fenvn pass */
-    tcase_add_test(t, fe_setup_points_centre_at_point_light);
-    tcase_add_test(t, fe_setup_points_psm_light_vertex_product_rounding);
+    /* the same status or map in every rounding mode */
+    tcase_add_test(t, poly_flat_frustum_faces_opposite_rounding_mode);
+    tcase_add_test(t, setup_flat_frustum_rounding_mode);
+    tcase_add_test(t, body_points_one_ulp_range_rounding_mode);
+    tcase_add_test(t, setup_points_psm_light_in_b_rounding_mode);
+    tcase_add_test(t, setup_follow_aligned_rounding_mode);
+    tcase_add_test(t, setup_points_psm_light_is_receiver_rounding_mode);
+    tcase_add_test(t, setup_points_b_is_the_spot_apex_rounding_mode);
+    tcase_add_test(t, setup_nopt_equal_depths_rounding_mode);
+    tcase_add_test(t, setup_point_light_axis_in_z_plane_continuous);
+    tcase_add_test(t, setup_nopt_equal_depths_point_light_rounding_mode);
+    tcase_add_test(t, setup_points_psm_small_cone_rounding_mode);
+    tcase_add_test(t, poly_clip_cuts_segment_without_faces);
+    tcase_add_test(t, body_from_h_needle_box_rounding_mode);
+    tcase_add_test(t, body_from_h_point_light_far_h_rounding_mode);
+    tcase_add_test(t, setup_points_psm_huge_slideback_rounding_mode);
+    tcase_add_test(t, body_h_flat_box_cut_on_its_plane_rounding_mode);
+    tcase_add_test(t, cascade_flat_box_grazing_light_rounding_mode);
+    tcase_add_test(t, cascade_box_flat_through_eye_rounding_mode);
+    tcase_add_test(t, setup_psm_hemisphere_cap_rounding_mode);
+    tcase_add_test(t, setup_points_centre_at_point_light_rounding_mode);
+    tcase_add_test(t, setup_points_psm_light_vertex_product_rounding_mode);
     suite_add_tcase(s, t);
     return tu_run_suite(s) ? 1 : 0;
 }

@@ -179,7 +179,8 @@ typedef struct sweep_stats {
     long ok, empty, inside, total, extr_checked, cover_checked, inverse;
 } sweep_stats;
 
-/* Runs every property of the issue on one configuration and technique. */
+/* Runs every property of the geometry stage (docs/geometry.md) on one
+ * configuration and technique. */
 /* variant v picks the LiSPSM parameterisation and centre, pancaking and the
  * PSM slide-back, so the sweep covers every option */
 static void check_config_v(rng* R, const config* c, swarp_technique tech, swarp_depth_range dr, sweep_stats* st,
@@ -329,10 +330,11 @@ static void check_config(rng* R, const config* c, swarp_technique tech, swarp_de
 }
 
 /* sw_normalize_fast: the unit vector for every finite non-zero direction,
- * subnormal and near DBL_MAX included (issue 9), and 0 with *out untouched
+ * subnormal and near DBL_MAX included, and 0 with *out untouched
  * for a zero or non-finite one -- a NaN component must not slip through the
- * scaled path (fmax ignores NaN; it once returned 1 with NaN components). */
-START_TEST(gnormalize_range_and_nan) {
+ * scaled path (fmax ignores NaN, so a scaled norm can be 1 with NaN
+ * components). */
+START_TEST(normalize_fast_range_and_nan) {
     const swarp_vec3 in[] = {{0x1p-1074, 0, 0}, {3e-320, -4e-320, 0}, {DBL_MAX, DBL_MAX, 0}, {1, 2, 2}};
     const swarp_vec3 want[] = {{1, 0, 0}, {0.6, -0.8, 0}, {0.70710678118654752, 0.70710678118654752, 0}, {1.0 / 3, 2.0 / 3, 2.0 / 3}};
     for (int i = 0; i < 4; ++i) {
@@ -1180,17 +1182,18 @@ START_TEST(psm_light_behind_camera) {
 }
 END_TEST
 
-/* ---- regressions of the hard-case sweep (issue 9), geometry findings ------
- * Each scene is a case the sweep (tests/hard_cases.c) reported before the
- * fix, with its arguments at full precision. */
+/* ---- scenes at the edges of the double range ------------------------------
+ * Each scene's arguments are given at full precision; each pins that B maps
+ * into the map (or the documented status) where the literal arithmetic
+ * over- or underflows or loses B to rounding. */
 
 /* Every point of B maps into the map: w > 0 and |x/w|, |y/w| <= 1 within
  * 1e-6, plus (cond != 0) the rounding of evaluating the world-space double
- * matrix at p (64 eps times its condition number, as the sweep allows).
- * The scenes of the fixed findings are well conditioned after the fix and
- * are checked without that term: the old results were ill-conditioned
- * matrices (entries up to 1e15) that the term alone would have excused. */
-static void sweep_check_inside_c(const swarp_setup_result* r, const swarp_vec3* p, size_t n, const char* what,
+ * matrix at p (64 eps times its condition number, as tests/robust allows).
+ * The scenes below are well conditioned and are checked without that term:
+ * an ill-conditioned result (entries up to 1e15) is what the term alone
+ * would excuse. */
+static void check_b_inside_map_cond(const swarp_setup_result* r, const swarp_vec3* p, size_t n, const char* what,
                                  int cond) {
     for (size_t i = 0; i < n; ++i) {
         const double* m = r->matrix.m;
@@ -1208,15 +1211,15 @@ static void sweep_check_inside_c(const swarp_setup_result* r, const swarp_vec3* 
     }
 }
 
-static void sweep_check_inside(const swarp_setup_result* r, const swarp_vec3* p, size_t n, const char* what) {
-    sweep_check_inside_c(r, p, n, what, 0);
+static void check_b_inside_map(const swarp_setup_result* r, const swarp_vec3* p, size_t n, const char* what) {
+    check_b_inside_map_cond(r, p, n, what, 0);
 }
 
 /* A flat box (zero depth in z) and a directional light within 1.2e-16 of its
- * plane: B's extent across the warp axis was rounding noise (1e-15), the
- * warp divided by it and points of B landed at y = 4.  Now flat: uniform
- * across it, the fit pads the extent. */
-START_TEST(sweep_grazing_light_flat_box) {
+ * plane: B's extent across the warp axis is rounding noise (1e-15), and a
+ * warp dividing by it would put points of B at y = 4.  Flat: uniform across
+ * it, the fit pads the extent. */
+START_TEST(grazing_light_flat_box_maps_inside) {
     swarp_camera cam = {{2.5527718668437753, -0.80185209559958159, -12.101852857609369},
                         {0.95985551529399782, 0.28049490148609446, 0},
                         {0, 1, 0},
@@ -1236,22 +1239,22 @@ START_TEST(sweep_grazing_light_flat_box) {
     size_t n = 0;
     swarp_status st = swarp_setup(&cam, &light, &box, NULL, &r, pts, SWARP_BODY_MAX_POINTS, &n);
     ck_assert_msg(!swarp_status_is_error(st), "%s", swarp_status_name(st));
-    sweep_check_inside(&r, pts, n, "grazing light, flat box");
+    check_b_inside_map(&r, pts, n, "grazing light, flat box");
 }
 END_TEST
 
 /* Eye at a 1e6 offset, near 1, far 2, light within 1e-9 of the view
- * direction: in world coordinates the body's light-space extent was a few
- * ulps of 1e6 and a point of B mapped to y = 1.25.  Now computed relative
- * to the eye.  The frustum (aspect 1e-111) is flat and the light 1e-9 rad
- * off its plane, so B (H swept toward the light, 8 points since H's two
- * faces are opposite: fenve, src/poly.c) is 1e-9 thick as the light sees
+ * direction: in world coordinates the body's light-space extent is a few
+ * ulps of 1e6 (a point of B would map to y = 1.25), so it is computed
+ * relative to the eye.  The frustum (aspect 1e-111) is flat and the light
+ * 1e-9 rad off its plane, so B (H swept toward the light, 8 points since
+ * H's two faces are opposite, src/geometry/poly.c) is 1e-9 thick as the light sees
  * it and the map stretches that 2e9 times: relative to the eye B maps
  * inside to 1e-6, while its world points, rounded to ulp(1e6) = 1e-10,
  * move by 0.2 in the map -- the condition number the sweep allows for
- * (sweep_check_inside_c).  The old H, its faces oriented alike, gave B =
- * H alone (4 points in H's plane, whose rounding the matrix shared). */
-START_TEST(sweep_large_offset_parallel_light) {
+ * (check_b_inside_map_cond).  An H with its faces oriented alike would give
+ * B = H alone (4 points in H's plane, whose rounding the matrix shares). */
+START_TEST(large_offset_parallel_light_maps_inside) {
     swarp_camera cam = {{999988.91868873662, 0.23033861672625111, 999986.04749523092},
                         {0.41324454888588158, -0.23278984443987108, -0.88036232946541104},
                         {0, 1, 0},
@@ -1277,7 +1280,7 @@ START_TEST(sweep_large_offset_parallel_light) {
     size_t n = 0;
     swarp_status st = swarp_setup(&cam, &light, &box, &o, &r, pts, SWARP_BODY_MAX_POINTS, &n);
     ck_assert_msg(!swarp_status_is_error(st), "%s", swarp_status_name(st));
-    sweep_check_inside_c(&r, pts, n, "1e6 offset, light parallel to the view", 1);
+    check_b_inside_map_cond(&r, pts, n, "1e6 offset, light parallel to the view", 1);
     /* the same scene moved to the origin gives the same map (the library
      * works relative to the eye): equal matrices up to the translation, and
      * there B maps inside without the world's rounding */
@@ -1290,15 +1293,15 @@ START_TEST(sweep_large_offset_parallel_light) {
     size_t n0 = 0;
     ck_assert_int_eq(swarp_setup(&c0, &light, &b0, &o, &r0, p0, SWARP_BODY_MAX_POINTS, &n0), st);
     ck_assert_uint_eq(n0, n);
-    sweep_check_inside(&r0, p0, n0, "the same scene at the origin");
+    check_b_inside_map(&r0, p0, n0, "the same scene at the origin");
     for (int k = 0; k < 12; ++k) ck_assert(r.light_proj.m[k] == r0.light_proj.m[k]);
 }
 END_TEST
 
-/* far = DBL_MAX (or 1e308): the frustum's far corners overflowed and valid
- * arguments got SWARP_ERR_NON_FINITE.  H lies in S, so the far plane only
+/* far = DBL_MAX (or 1e308): the frustum's far corners overflow, yet the
+ * arguments are valid (no SWARP_ERR_NON_FINITE).  H lies in S, so the far plane only
  * has to lie beyond S: the result equals that of far = 1e4. */
-START_TEST(sweep_far_dbl_max) {
+START_TEST(far_dbl_max_equals_finite_far) {
     swarp_camera cam = {{0, 10, 0}, {0, -0.3, -1}, {0, 1, 0}, 1.0, 1.5, 0.5, DBL_MAX, {0, 0, 0, 0}};
     swarp_light light;
     memset(&light, 0, sizeof light);
@@ -1310,7 +1313,7 @@ START_TEST(sweep_far_dbl_max) {
     size_t n = 0;
     swarp_status st = swarp_setup(&cam, &light, &box, NULL, &r, pts, SWARP_BODY_MAX_POINTS, &n);
     ck_assert_msg(!swarp_status_is_error(st), "%s", swarp_status_name(st));
-    sweep_check_inside(&r, pts, n, "far = DBL_MAX");
+    check_b_inside_map(&r, pts, n, "far = DBL_MAX");
     cam.far = 1e4;
     ck_assert_int_eq(swarp_setup(&cam, &light, &box, NULL, &r4, NULL, 0, NULL), st);
     ck_assert(fabs(r.view_far - r4.view_far) <= 1e-9 * r4.view_far && r.view_near == r4.view_near);
@@ -1321,9 +1324,10 @@ START_TEST(sweep_far_dbl_max) {
 }
 END_TEST
 
-/* aspect = DBL_MAX: the frustum's corners overflowed (SWARP_ERR_NON_FINITE
- * on valid arguments); the half-angle is kept below 90° - 1e-12 rad. */
-START_TEST(sweep_aspect_huge) {
+/* aspect = DBL_MAX: the frustum's corners would overflow (valid arguments
+ * must not get SWARP_ERR_NON_FINITE); the half-angle is kept below
+ * 90° - 1e-12 rad and B maps inside. */
+START_TEST(aspect_dbl_max_maps_inside) {
     swarp_camera cam = {{0, 10, 0}, {0, -0.3, -1}, {0, 1, 0}, 1.0, DBL_MAX, 0.5, 300, {0, 0, 0, 0}};
     swarp_light light;
     memset(&light, 0, sizeof light);
@@ -1335,15 +1339,15 @@ START_TEST(sweep_aspect_huge) {
     size_t n = 0;
     swarp_status st = swarp_setup(&cam, &light, &box, NULL, &r, pts, SWARP_BODY_MAX_POINTS, &n);
     ck_assert_msg(!swarp_status_is_error(st), "%s", swarp_status_name(st));
-    sweep_check_inside(&r, pts, n, "aspect = DBL_MAX");
+    check_b_inside_map(&r, pts, n, "aspect = DBL_MAX");
 }
 END_TEST
 
 /* A view range of 1e-22..1e-21 at 100 units from the origin: B is far below
  * the resolution of world coordinates (all its points round to the eye) and
- * the world-space matrix (entries 1e22) mapped it to w = 0 with a success
- * status.  Now SWARP_ERR_DEGENERATE, outputs untouched. */
-START_TEST(sweep_body_below_world_resolution) {
+ * a world-space matrix (entries 1e22) would map it to w = 0: the documented
+ * SWARP_ERR_DEGENERATE, outputs untouched. */
+START_TEST(body_below_world_resolution_is_degenerate) {
     swarp_camera cam = {{100, 5, 100}, {1, 0.1, 0.3}, {0, 1, 0}, 1.0, 1.5, 0.5, 300, {0, 0, 0, 0}};
     swarp_light light;
     memset(&light, 0, sizeof light);
@@ -1361,17 +1365,15 @@ START_TEST(sweep_body_below_world_resolution) {
     size_t n = 0;
     st = swarp_setup_range(&cam, &light, &box, 1.0, 50.0, NULL, &r, pts, SWARP_BODY_MAX_POINTS, &n);
     ck_assert_msg(!swarp_status_is_error(st), "%s", swarp_status_name(st));
-    sweep_check_inside(&r, pts, n, "range [1, 50]");
+    check_b_inside_map(&r, pts, n, "range [1, 50]");
 }
 END_TEST
 
 /* A spot light at the eye: B's apex is the light itself (w = 0 there).
  * Documented: the points nearer than the light's near plane (distance below
  * light_near) are left out, status SWARP_INFO_LIGHT_NEAR_CLIPPED (or the
- * more important SWARP_INFO_WARP_UNIFORM); every other point is in the map.
- * (Behaviour unchanged by the sweep's fixes; the sweep's check now follows
- * the documentation.) */
-START_TEST(sweep_spot_light_at_eye) {
+ * more important SWARP_INFO_WARP_UNIFORM); every other point is in the map. */
+START_TEST(spot_light_at_eye_near_clipped) {
     swarp_camera cam = {{0, 10, 0}, {0, -0.3, -1}, {0, 1, 0}, 1.0, 1.5, 0.5, 300, {0, 0, 0, 0}};
     swarp_light light;
     memset(&light, 0, sizeof light);
@@ -1396,20 +1398,20 @@ START_TEST(sweep_spot_light_at_eye) {
             else kept[nk++] = pts[i];
         }
         ck_assert(left >= 1 && nk >= 4);
-        sweep_check_inside(&r, kept, nk, on_near ? "spot light on the near plane" : "spot light at the eye");
+        check_b_inside_map(&r, kept, nk, on_near ? "spot light on the near plane" : "spot light at the eye");
     }
 }
 END_TEST
 
-static void add_sweep_regressions(Suite* s) {
-    TCase* tc = tcase_create("sweep_regressions");
-    tcase_add_test(tc, gnormalize_range_and_nan);
-    tcase_add_test(tc, sweep_grazing_light_flat_box);
-    tcase_add_test(tc, sweep_large_offset_parallel_light);
-    tcase_add_test(tc, sweep_far_dbl_max);
-    tcase_add_test(tc, sweep_aspect_huge);
-    tcase_add_test(tc, sweep_body_below_world_resolution);
-    tcase_add_test(tc, sweep_spot_light_at_eye);
+static void add_extreme_scenes(Suite* s) {
+    TCase* tc = tcase_create("extreme_scenes");
+    tcase_add_test(tc, normalize_fast_range_and_nan);
+    tcase_add_test(tc, grazing_light_flat_box_maps_inside);
+    tcase_add_test(tc, large_offset_parallel_light_maps_inside);
+    tcase_add_test(tc, far_dbl_max_equals_finite_far);
+    tcase_add_test(tc, aspect_dbl_max_maps_inside);
+    tcase_add_test(tc, body_below_world_resolution_is_degenerate);
+    tcase_add_test(tc, spot_light_at_eye_near_clipped);
     suite_add_tcase(s, tc);
 }
 
@@ -1436,7 +1438,7 @@ Suite* geometry_suite(void) {
     tcase_add_test(tc, warp_lispsm_direct);
     tcase_add_test(tc, psm_light_behind_camera);
     suite_add_tcase(s, tc);
-    add_sweep_regressions(s);
+    add_extreme_scenes(s);
     return s;
 }
 

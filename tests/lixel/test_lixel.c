@@ -1104,15 +1104,15 @@ START_TEST(overflowing_results_are_out_of_range) {
 }
 END_TEST
 
-/* fenvf pass: robust_fenv 30000 (issue 9), swarp_lixel_twist_for_line case
- * 11102.  a at 1e97 along x images to the vanishing point of x; b and below
+/* a at 1e97 along x images to the vanishing point of x; b and below
  * lie on a line parallel to x, so the three images are collinear: below is
  * 5e-17 lixel off the line (exact arithmetic), far below the rounding of
- * the image coordinates (~1e-15).  The side of below was decided by the
- * rounding of rel: TWIST_LINE (rel == 0) to nearest, twist -2.46 under
- * FE_UPWARD, +0.68 under FE_DOWNWARD.  Now `below` within LX_TWIST_EPS of
- * the image scale of the line has no side: TWIST_LINE in every mode. */
-START_TEST(fenvf_twist_below_on_line_rounding_mode) {
+ * the image coordinates (~1e-15).  Deciding the side of below by the sign
+ * of rel would let the rounding choose: TWIST_LINE (rel == 0) to nearest,
+ * twist -2.46 under FE_UPWARD, +0.68 under FE_DOWNWARD.  `below` within
+ * LX_TWIST_EPS of the image scale of the line has no side: TWIST_LINE in
+ * every mode. */
+START_TEST(twist_below_on_line_rounding_mode) {
     static const swarp_mat4 M = {{-0x1.0000000000001p+0, 0x1.099c85c4712c4p-1, 0x1p+1, 0x1.69f95bee07d28p-3,
                                   0x1.86b6cdd9c0fd2p-1, -0x1.008b66862ef8p-4, 0x1p+0, -0x1.1d5b823f2a546p-1,
                                   0x1.060a26630e6p-1, 0x1p+0, 0x1.ad7f29abcaf48p-24, -0x1p+0, -0x1p+0,
@@ -1143,13 +1143,13 @@ START_TEST(fenvf_twist_below_on_line_rounding_mode) {
 }
 END_TEST
 
-/* fenvf pass: robust_fenv 120000 (issue 9), swarp_lixel_split case 103034.
- * The floor x = -1e6, the wall y = 0.41, a light whose x component is 1 ulp
+/* The floor x = -1e6, the wall y = 0.41, a light whose x component is 1 ulp
  * off 1e-9: Sigma is 1e-9 (rad) from the floor, on the "light on the floor"
- * bound.  The test's side = Sigma . F was formed as n . F - n . A with F, A
- * of 1e6 (rounding 1e-10): DEGENERATE to nearest, OK in the directed modes.
- * Now n . w_f (unit vectors, rounding ~eps): the same status in every mode. */
-START_TEST(fenvf_split_light_floor_bound_rounding_mode) {
+ * bound.  The side = Sigma . F formed as n . F - n . A with F, A of 1e6
+ * carries 1e-10 of rounding, enough to flip DEGENERATE and OK between
+ * modes; as n . w_f (unit vectors, rounding ~eps) it gives the same status
+ * in every mode. */
+START_TEST(split_light_floor_bound_rounding_mode) {
     swarp_light light;
     memset(&light, 0, sizeof light);
     light.type = SWARP_LIGHT_DIRECTIONAL;
@@ -1204,16 +1204,16 @@ static void restrict_same_in_every_mode(const swarp_mat4* M, const swarp_vec4* C
     }
 }
 
-/* fenvf pass: robust_fenv 120000 (issue 9), swarp_lixel_restrict case
- * 104071.  M's q row is 1e78 times its x, y rows and C holds one direction
+/* M's q row is 1e78 times its x, y rows and C holds one direction
  * (q = 0): the cone's image is a ray from within 1e-76 lixel of the origin
  * toward (0.95, -0.30), a wedge flat to rounding.  The view-clipping corner
- * test compared the corner's side of each edge with the interior vector S's;
- * S lies on the plane of the edges through the direction (its side 1e-77
- * against rounding 2e-16), and under FE_UPWARD the corner (g - 1, 0) counted
- * as inside: rect x0 -1099 instead of 0, A_l M_l's translation 1e81.  Now
- * an edge plane holding S (flat cone) keeps only corners on it. */
-START_TEST(fenvf_restrict_flat_cone_rounding_mode) {
+ * test compares the corner's side of each edge with the interior vector
+ * S's; S lies on the plane of the edges through the direction (its side
+ * 1e-77 against rounding 2e-16), so by sign alone FE_UPWARD would count the
+ * corner (g - 1, 0) inside (rect x0 -1099 instead of 0, A_l M_l's
+ * translation 1e81).  An edge plane holding S (flat cone) keeps only
+ * corners on it. */
+START_TEST(restrict_flat_cone_rounding_mode) {
     static const swarp_mat4 M = {{0x1.6cde06a370998p-2, -0x1.4bc252de49ddap-1, 0x1.fea9a411e36fep-1, 0x0p+0,
                                   0x1.7228f6f0775d2p-1, -0x1.3f49068b5a344p-2, -0x1p+0, 0x0p+0, -0x1.623fab8bf5c0cp-1,
                                   -0x1.5ba931c9fb568p-2, 0x1.fffffffffffffp-1, 0x0p+0, 0x1.4f7fdedb6a206p-1,
@@ -1237,20 +1237,18 @@ START_TEST(fenvf_restrict_flat_cone_rounding_mode) {
 }
 END_TEST
 
-/* fenvi pass: robust_fenv 240000 (issue 9), swarp_lixel_restrict case
- * 163021.  M is affine (q = 0.53 for every point) and two vertices of C lie
+/* M is affine (q = 0.53 for every point) and two vertices of C lie
  * 1.7e38 and 4.7e31 out along x, on either side: their light images are
  * 1.6e38 and 4e31 lixels out along one direction u = M's first column, and
  * the edge between them images to a line through M (0, 2e-5, -68), 95 lixels
- * from the view's corner (0, 0).  The view clipping formed that line from the
- * two unit image vectors, antipodal to 1e-30: their x, y parts cancelled
- * (a + b = (0, 0, 2e-32) to nearest, +-1e-16 noise in the directed modes),
- * the edge's crossings of the sides landed at (0, 0) or nowhere, and the
- * corner test took the triangle for flat.  Exactly, the clipped triangle is
- * (0, 0), (95.36, 0), (414, 305.6), (414, 513.1), (0, 116.0): the rect
- * [-232, 35] x [0, 2379]; before, to nearest [-232, 0] x [0, 2379], directed
- * [-232, -86] x [203, 2379]. */
-START_TEST(fenvi_restrict_antipodal_edge_rounding_mode) {
+ * from the view's corner (0, 0).  Formed from the two unit image vectors,
+ * antipodal to 1e-30, that line cancels in x, y (a + b = (0, 0, 2e-32) to
+ * nearest, +-1e-16 noise in the directed modes): the edge's crossings of
+ * the sides would land at (0, 0) or nowhere and the triangle read as flat
+ * ([-232, 0] x [0, 2379] to nearest, [-232, -86] x [203, 2379] directed).
+ * Exactly, the clipped triangle is (0, 0), (95.36, 0), (414, 305.6),
+ * (414, 513.1), (0, 116.0): the rect [-232, 35] x [0, 2379], the reference. */
+START_TEST(restrict_antipodal_edge_rounding_mode) {
     static const swarp_mat4 M = {{-0x1.355ed3ad362fp-2, -0x1.28bc28e9de454p-2, -0x1.b91a7d7155f9ap-1, 0x0p+0,
                                   0x1.ba5e4cee39e48p-2, 0x1.9c81a4d6aac46p-1, 0x1.2638bf971efbcp-2, 0x0p+0,
                                   0x1.1bc107721c85cp-2, 0x1p+0, -0x1.5dd19d1fd5a58p-2, 0x0p+0, -0x1p+0, 0x1p+0,
@@ -1279,16 +1277,15 @@ START_TEST(fenvi_restrict_antipodal_edge_rounding_mode) {
 }
 END_TEST
 
-/* fenvi pass: robust_fenv 2000000 (issue 9), swarp_lixel_matrix case
- * 530050.  The eye 1.4e6 from the origin looks along the plane z = -999996.6
- * (n . v = 2e-15, far - near = 4.35).  PLANE_PARALLEL_VIEW compared
- * |n . v| with 1e-9 for the view direction taken as V^-1's far point minus
- * its near point, which cancelled at the eye's magnitude to 1e-10 of
- * rounding: QUAD_ACROSS_INFINITY under FE_TOWARDZERO.  Now the direction is
- * the cross product of M_v's rows' x, y, z parts.  ILL_CONDITIONED (of higher
+/* The eye 1.4e6 from the origin looks along the plane z = -999996.6
+ * (n . v = 2e-15, far - near = 4.35).  PLANE_PARALLEL_VIEW compares |n . v|
+ * with 1e-9; a view direction taken as V^-1's far point minus its near
+ * point cancels at the eye's magnitude to 1e-10 of rounding (and gives
+ * QUAD_ACROSS_INFINITY under FE_TOWARDZERO), so the direction is the cross
+ * product of M_v's rows' x, y, z parts, exact to rounding.  ILL_CONDITIONED (of higher
  * priority) is the solver's conditioning threshold, which rounding decides
  * here; across infinity must not come. */
-START_TEST(fenvi_matrix_parallel_view_rounding_mode) {
+START_TEST(matrix_parallel_view_rounding_mode) {
     static const swarp_mat4 Mv = {{-0x1.25f7c8cfb36b4p-50, 0x1.7523af7f55577p-2, 0x1.eb47677322518p-2,
                                    0x1.e31794b4f80b1p-2, 0x0p+0, 0x1.8f4cd7c30f5ep-3, -0x1.cb178eaa1ad89p-1,
                                    -0x1.c3710b910b455p-1, 0x1.ebee4c31ec4cap-3, 0x1.bdf609a685cafp-50,
@@ -1316,16 +1313,16 @@ START_TEST(fenvi_matrix_parallel_view_rounding_mode) {
 }
 END_TEST
 
-/* fenv swarp_plan 480000 case 385901: a 1e-15 rad field of view seeing the
+/* A 1e-15 rad field of view seeing the
  * floor y = 0.6 from 2.5e5 off the origin.  The planner's swarp_lixel_matrix
  * call hands solve5 the light, three corner hits that coincide to rounding
- * (1e-14 apart in truth, 1e-10 of noise at 2.5e5) and the raised point; the
- * median normalisation scaled the noise up to unit size, and the
- * conditioning came out 5.6e-21 (COPLANAR) or 1.2e-13 (ILL_CONDITIONED, a
+ * (1e-14 apart in truth, 1e-10 of noise at 2.5e5) and the raised point; a
+ * median normalisation scales the noise up to unit size, and the
+ * conditioning would read 5.6e-21 (COPLANAR) or 1.2e-13 (ILL_CONDITIONED, a
  * lixel map) by rounding mode.  Points within 64 eps |c| of their median
  * centre c coincide to rounding: COPLANAR in every mode (the set below is the
  * one FE_DOWNWARD computed); and the same for a cluster built by hand. */
-START_TEST(fenvj_solve5_cluster_coplanar_rounding_mode) {
+START_TEST(solve5_cluster_coplanar_rounding_mode) {
     static const swarp_vec4 src[5] = {
         {-255359.16000000001, 110.58582116327303, -255353.47635140818, 1.0},
         {-0.7071148453377012, 1.6770163927463192e-06, -0.7070987169360149, 2.769110070550273e-06},
@@ -1353,17 +1350,16 @@ START_TEST(fenvj_solve5_cluster_coplanar_rounding_mode) {
 }
 END_TEST
 
-/* fenvi pass: robust_fenv 6000000 (issue 9), swarp_lixel_restrict case
- * 3500922.  C is not convex (outside the documented domain; the hard-case
- * generator draws its vertices at random): two of them 1.4e54 and 4.4e25
+/* C is not convex (outside the documented domain, but a caller can pass
+ * one; tests/robust draws its vertices at random): two of them 1.4e54 and 4.4e25
  * out image to antipodal directions, the interior vector S lies on the
- * plane of the edge from the direction vertex, and that edge took the
+ * plane of the edge from the direction vertex, and that edge takes the
  * cone's orientation, the sign of the largest (sum_j l_j) . a_m -- a near
- * tie between two vertices of opposite sign, which the rounding broke:
- * three view corners inside (rect [77, 3107] x [-364, 3300]) or none
- * ([77, 365] x [-89, 203], FE_DOWNWARD).  Both signs beyond rounding now
- * give no orientation. */
-START_TEST(fenvi_restrict_nonconvex_orientation_rounding_mode) {
+ * tie between two vertices of opposite sign, which the rounding would
+ * break (three view corners inside, rect [77, 3107] x [-364, 3300], or
+ * none, [77, 365] x [-89, 203]).  Both signs beyond rounding give no
+ * orientation, the same rectangle in every mode. */
+START_TEST(restrict_nonconvex_orientation_rounding_mode) {
     static const swarp_mat4 M = {{0x1.9a0458143e19ep-1, -0x1.43fc5f3f91b6p-1, -0x1.7c5876a1703c8p-2, 0x0p+0,
                                   -0x1.867f298351bep-5, -0x1.1eca8d29333d8p-1, -0x1.0919919050384p-1, 0x0p+0,
                                   0x1.10d43bbb7e17cp-2, -0x1.bd0c8246ecd14p-1, -0x1.263a096734e1cp-1, 0x0p+0,
@@ -1406,13 +1402,14 @@ static Suite* lixel_suite(void) {
     tcase_add_test(tc, orthographic_viewer);
     tcase_add_test(tc, near_degenerate_never_nan);
     tcase_add_test(tc, overflowing_results_are_out_of_range);
-    tcase_add_test(tc, fenvf_twist_below_on_line_rounding_mode); /* fenvf pass */
-    tcase_add_test(tc, fenvf_split_light_floor_bound_rounding_mode); /* fenvf pass */
-    tcase_add_test(tc, fenvf_restrict_flat_cone_rounding_mode); /* fenvf pass */
-    tcase_add_test(tc, fenvi_restrict_antipodal_edge_rounding_mode); /* fenvi pass */
-    tcase_add_test(tc, fenvi_matrix_parallel_view_rounding_mode); /* fenvi pass */
-    tcase_add_test(tc, fenvj_solve5_cluster_coplanar_rounding_mode); /* fenvj pass */
-    tcase_add_test(tc, fenvi_restrict_nonconvex_orientation_rounding_mode); /* fenvi pass */
+    /* the same status and result in every rounding mode */
+    tcase_add_test(tc, twist_below_on_line_rounding_mode);
+    tcase_add_test(tc, split_light_floor_bound_rounding_mode);
+    tcase_add_test(tc, restrict_flat_cone_rounding_mode);
+    tcase_add_test(tc, restrict_antipodal_edge_rounding_mode);
+    tcase_add_test(tc, matrix_parallel_view_rounding_mode);
+    tcase_add_test(tc, solve5_cluster_coplanar_rounding_mode);
+    tcase_add_test(tc, restrict_nonconvex_orientation_rounding_mode);
     /* @@MORE_TCASES@@ */
     suite_add_tcase(s, tc);
     return s;

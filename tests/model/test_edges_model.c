@@ -1,6 +1,6 @@
 #define _POSIX_C_SOURCE 200809L
-/* Edge cases of the core stage found by the robustness sweep (issue 9,
- * docs/quality.md "Findings"): the condition test of swarp_mat4_invert and
+/* Edge cases of the model stage at the ends of the double range: the
+ * condition test of swarp_mat4_invert and
  * the overflow/underflow-safe forms of n_opt, n_repar, psi and F at
  * magnitudes beyond 1e100.  References are evaluated independently in long
  * double (64-bit mantissa, 15-bit exponent: no intermediate overflow for
@@ -183,9 +183,9 @@ static long double ref_nopt(double d, double z0, double z1) {
 START_TEST(nopt_subnormal_and_huge_depths) {
     REQUIRE_WIDE_LONG_DOUBLE();
     const double cases[][3] = {
-        {0.19323405592958692, 4.9406564584124654e-324, 4.9406564584124654e-317}, /* was DBL_MAX */
-        {9999.9999999999982, 2.2250738585072009e-308, 2.2250738585072014e-308},  /* was DBL_MAX */
-        {1e-300, 4.0492795740303305e+171, 3.4123093990295732e+178},               /* was 0 */
+        {0.19323405592958692, 4.9406564584124654e-324, 4.9406564584124654e-317}, /* the literal form: DBL_MAX */
+        {9999.9999999999982, 2.2250738585072009e-308, 2.2250738585072014e-308},  /* the literal form: DBL_MAX */
+        {1e-300, 4.0492795740303305e+171, 3.4123093990295732e+178},               /* the literal form: 0 */
         {3.0, 1e300, 1.7e308},
         {2.5, 1e-310, 3e-300},
     };
@@ -224,10 +224,10 @@ static long double ref_nrepar(double eta, double alpha, double W) {
 START_TEST(nrepar_extreme_alpha) {
     REQUIRE_WIDE_LONG_DOUBLE();
     const double cases[][3] = {
-        {-0.14846982218324345, 1.7976931348623157e+308, 1.0000000000000002e-06}, /* W/(alpha-1) was subnormal */
+        {-0.14846982218324345, 1.7976931348623157e+308, 1.0000000000000002e-06}, /* W/(alpha-1) is subnormal */
         {-0.35601037187359519, 1.7976931348623157e+308, 1.5948425457844012e-06},
-        {-1.0 + 0x1p-52, 1e300, 1.0},                                             /* eta (alpha - 1) overflowed */
-        {-1.0850344206875686e-63, 1.5388407449206508e+185, 1.5336797372969295e-232}, /* was 0 */
+        {-1.0 + 0x1p-52, 1e300, 1.0},                                             /* eta (alpha - 1) overflows */
+        {-1.0850344206875686e-63, 1.5388407449206508e+185, 1.5336797372969295e-232}, /* the literal form: 0 */
         {0.5, 1.7976931348623157e+308, 3.0},
         {0.0, 1.0 + 0x1p-52, 1e-3},
     };
@@ -265,7 +265,7 @@ static long double ref_F(double l_, double th_, double ph_, double n_, double f_
 START_TEST(gmnpr_F_and_psi_huge_lambda) {
     REQUIRE_WIDE_LONG_DOUBLE();
     const double cases[][6] = {
-        /* lambda, theta, phi, n, f, z: F came out 0 with SWARP_OK */
+        /* lambda, theta, phi, n, f, z: the product form of F underflows to 0 */
         {1.6077200186449224e+274, 1.4568674924698055, 1.5607963267948963, 1.0000000000000002, 6044747.6222206205,
          35.312656685534016},
         {1.9580203865100371e+223, 0.85431485665607443, 1.3879348321975787e-196, 502.26804758778741,
@@ -293,7 +293,7 @@ START_TEST(gmnpr_F_and_psi_huge_lambda) {
         else /* below the normal range: the correctly rounded subnormal, within its spacing */
             ck_assert(fabsl(psi - psi_ref) <= 0x1p-1074L + 1e-12L * psi_ref);
     }
-    /* psi no longer fails because the offset overflows: lambda = 1e300 */
+    /* psi does not depend on the offset being representable: lambda = 1e300 */
     double psi = SENTINEL, off = SENTINEL;
     ck_assert_int_eq(swarp_gmnpr_psi(1e300, 0.9, 0.5, 1.0, 1e9, &psi), SWARP_OK);
     ck_assert_int_eq(swarp_gmnpr_offset(1e300, 0.9, 0.5, 1.0, 1e9, &off), SWARP_ERR_OVERFLOW);
@@ -396,8 +396,8 @@ END_TEST
 
 /* theta > phi with n subnormal and f >> n: the GLPR solution n (1 - t)/D
  * (about 6e-333 here) exists but is below DBL_TRUE_MIN -> DBL_TRUE_MIN with
- * SWARP_OK (was lambda_GMNPR with SWARP_INFO_GLPR_NO_SOLUTION, which says
- * there is no solution). */
+ * SWARP_OK, not the lambda_GMNPR fallback with SWARP_INFO_GLPR_NO_SOLUTION
+ * (which would say there is no solution). */
 START_TEST(glpr_lambda_below_true_min) {
     double lam = -1;
     ck_assert_int_eq(swarp_gmnpr_lambda_glpr(0.14180588291489093, 1.000001e-06, DBL_TRUE_MIN, 783214767.65697455, &lam),
@@ -411,8 +411,8 @@ START_TEST(glpr_lambda_below_true_min) {
 END_TEST
 
 /* A subnormal or tiny near plane with an ordinary far one: f/n overflows
- * double (was Inf -> 0 * Inf = NaN -> SWARP_ERR_DEGENERATE for every scheme)
- * though every split is representable. */
+ * double (Inf, then 0 * Inf = NaN, if formed) though every split is
+ * representable, so no scheme may return SWARP_ERR_DEGENERATE. */
 START_TEST(split_schemes_huge_ratio) {
     double out[5];
     size_t cnt = 0;
@@ -433,7 +433,7 @@ START_TEST(split_schemes_huge_ratio) {
 END_TEST
 
 /* res_iy/res_t below DBL_TRUE_MIN/2 while m_z itself is representable
- * (~1e-317): the product is kept as mantissa * 2^e (was 0 with SWARP_OK). */
+ * (~1e-317): the product is kept as mantissa * 2^e, not flushed to 0. */
 START_TEST(error_tiny_resolution_no_spurious_underflow) {
     REQUIRE_WIDE_LONG_DOUBLE();
     swarp_error_config cfg;
@@ -462,13 +462,12 @@ START_TEST(error_tiny_resolution_no_spurious_underflow) {
 }
 END_TEST
 
-/* ---- paramfix pass (issue 9, sweep findings at 10^6) -------------------- */
+/* ---- closed forms whose literal evaluation over- or underflows ---------- */
 
-/* theta == phi with f = DBL_MAX (hard_cases swarp_gmnpr_lambda12 seed 7 case
- * 28753, swarp_gmnpr_lambda case 679648): the rounded tan/cos/sin gave
- * t = 1 + 2^-52, the halved depth overflowed and lambda_1 came out 0;
- * lambda_2 = r/2 with r = sqrt(n/f) < 2^-53 was lost to c - 1/2.  At t = 1
- * both are sqrt(n/f)/2 exactly. */
+/* theta == phi with f = DBL_MAX: the rounded tan/cos/sin can give
+ * t = 1 + 2^-52, where halving the depth overflows and lambda_1 collapses to
+ * 0, and lambda_2 = r/2 with r = sqrt(n/f) < 2^-53 is lost to c - 1/2 unless
+ * formed directly.  At t = 1 both are sqrt(n/f)/2 exactly, the reference. */
 START_TEST(gmnpr_lambda_theta_eq_phi_huge_far) {
     const double cases[][2] = {{0.01, 1.7023779630233584e-05},
                                {0.50344839343569725, 0.00069428559076514925},
@@ -489,11 +488,11 @@ START_TEST(gmnpr_lambda_theta_eq_phi_huge_far) {
 }
 END_TEST
 
-/* psi and varphi of [GMNPR] (2) at subnormal depths (hard_cases
- * swarp_gmnpr_psi case 190150, swarp_gmnpr_offset case 292871, default
- * seed): D = f - n + (f + n) t was formed from subnormals with a few bits;
- * psi (degree -1) and varphi (degree 1) are now evaluated on depths scaled
- * into [1, 4).  Case 1 of (2), reference in long double. */
+/* psi and varphi of [GMNPR] (2) at subnormal depths: D = f - n + (f + n) t
+ * formed from subnormals keeps only a few bits, so psi (degree -1) and
+ * varphi (degree 1) must be evaluated on depths scaled into [1, 4) (exact
+ * power-of-two scaling, undone by their degree).  Case 1 of (2), reference
+ * in long double, where the depths are normal. */
 static long double ref_case1_D(double theta, double phi, double n, double f, long double* t) {
     *t = tanl(phi) / tanl(theta);
     return ((long double)f - n) + ((long double)f + n) * *t;
@@ -519,9 +518,10 @@ START_TEST(gmnpr_psi_offset_subnormal_depths) {
 }
 END_TEST
 
-/* [RHS] (4.2) with a subnormal near depth and pseudo-near (hard_cases
- * swarp_warp_nopt_pseudo case 39311 default seed, 25654 and 43815 seed 7):
- * z_0 4^-k and n_p (z_1 - z_0) 4^-k underflowed, n_opt was up to 16% off. */
+/* [RHS] (4.2) with a subnormal near depth and pseudo-near: a scaled form
+ * z_0 4^-k, n_p (z_1 - z_0) 4^-k underflows and loses up to 16% of n_opt;
+ * the reference is (4.2) written literally in long double, whose exponent
+ * range holds every term. */
 START_TEST(nopt_pseudo_subnormal_near) {
     REQUIRE_WIDE_LONG_DOUBLE();
     const double cases[][5] = {
@@ -546,11 +546,10 @@ START_TEST(nopt_pseudo_subnormal_near) {
 END_TEST
 
 /* [RHS] (3.5) with theta and gamma within 1e-12 of pi/2 and f_e beyond
- * 1e292 (hard_cases swarp_warp_wlz case 422843 default seed, 385998 seed 7):
- * W_s = (f_e - n_e)/cos(theta) overflows but its weight sin(theta + gamma)
- * is ~1e-12, so W_lz ~ 1e300 fits; it was SWARP_ERR_OVERFLOW.  The weight
- * is formed without rounding theta + gamma near pi (that alone was 28% off
- * in the second case). */
+ * 1e292: W_s = (f_e - n_e)/cos(theta) overflows but its weight
+ * sin(theta + gamma) is ~1e-12, so W_lz ~ 1e300 fits and must be returned,
+ * not SWARP_ERR_OVERFLOW.  The weight must be formed without rounding
+ * theta + gamma near pi (rounding it alone is 28% off in the second case). */
 START_TEST(wlz_side_face_overflow) {
     REQUIRE_WIDE_LONG_DOUBLE();
     const double cases[][5] = {
@@ -572,9 +571,7 @@ END_TEST
 /* lambda_2 = (f + sqrt(fn))/(2f) tan(theta)/tan(phi) - 1/2 just below
  * DBL_MAX (theta = pi/2, phi = 1.2e-292: tan(phi)/tan(theta) ~ 7e-309):
  * the form ((1 - t) + r)/(2t) must halve before dividing, or
- * (1 + r)/t ~ 2.3e308 overflows on the way (hard_cases
- * swarp_gmnpr_lambda12, seeds 3 and 11: 73 and 70 cases became
- * SWARP_ERR_OVERFLOW with the first form). */
+ * (1 + r)/t ~ 2.3e308 overflows on the way to a result below DBL_MAX. */
 START_TEST(gmnpr_lambda_2_near_dbl_max) {
     REQUIRE_WIDE_LONG_DOUBLE();
     double th = 0.5 * 3.14159265358979323846, ph = 1.2e-292, n = 1.0, f = 2.0;
@@ -587,7 +584,7 @@ START_TEST(gmnpr_lambda_2_near_dbl_max) {
 END_TEST
 
 int main(void) {
-    Suite* s = suite_create("edges_core");
+    Suite* s = suite_create("edges_model");
     TCase* t = tcase_create("mat4_invert");
     tcase_add_test(t, invert_refuses_numerically_singular);
     tcase_add_test(t, invert_rank_deficient_every_rounding_mode);
@@ -604,8 +601,7 @@ int main(void) {
     tcase_add_test(t, split_schemes_huge_ratio);
     tcase_add_test(t, error_tiny_resolution_no_spurious_underflow);
     suite_add_tcase(s, t);
-    /* paramfix pass */
-    t = tcase_create("paramfix");
+    t = tcase_create("params_no_intermediate_overflow");
     tcase_add_test(t, gmnpr_lambda_theta_eq_phi_huge_far);
     tcase_add_test(t, gmnpr_psi_offset_subnormal_depths);
     tcase_add_test(t, nopt_pseudo_subnormal_near);

@@ -1,6 +1,6 @@
 #define _POSIX_C_SOURCE 200809L
-/* swarp_plan_explain's numbers do not depend on the caller's rounding mode
- * (issue 9, fenv finding): values just below a decimal rounding boundary
+/* swarp_plan_explain's numbers do not depend on the caller's rounding mode:
+ * values just below a decimal rounding boundary
  * (0.5325 is 0.53249999999999997... in binary) are printed as the exact
  * binary value rounds, in every mode; the reference is glibc's printf, which
  * converts the exact binary value (round-to-nearest, no ties here). */
@@ -103,13 +103,12 @@ START_TEST(explain_random_values_every_mode) {
 }
 END_TEST
 
-/* ---- planfix pass: regressions from the hard-case sweep (issue 9) ---- */
+/* ---- costs at the ends of the double range ---- */
 
-/* hard_cases --entry swarp_plan / swarp_plan_evaluate (e.g. case 54333): a
- * pass cost near DBL_MAX gave cost_ns = K x pass cost = inf.  Costs above
- * SWARP_PLAN_MAX_COST_NS are refused (documented); at the limit the cost of
- * every chain is finite. */
-START_TEST(planfix_plan_cost_limit) {
+/* A pass cost near DBL_MAX would make cost_ns = K x pass cost = inf.
+ * Costs above SWARP_PLAN_MAX_COST_NS are refused (documented); at the limit
+ * the cost of every chain is finite. */
+START_TEST(plan_cost_above_limit_refused_at_limit_finite) {
     const double costs[3] = {DBL_MAX, 1e300, SWARP_PLAN_MAX_COST_NS * 2};
     for (int i = 0; i < 3; ++i) {
         for (int field = 0; field < 3; ++field) {
@@ -144,17 +143,17 @@ START_TEST(planfix_plan_cost_limit) {
 }
 END_TEST
 
-/* ---- fenvj pass: the planner's lixel check under a tiny near (issue 9) ---- */
+/* ---- the planner's lixel check in every rounding mode ---- */
 
-/* fenv swarp_plan 240000 cases 198218, 201223: a floor (y = 0) seen by a
- * camera with near/far below eps got a lixel map or not by the caller's
- * rounding mode.  The planner asks swarp_lixel_matrix about a view-projection
+/* A floor (y = 0) seen by a camera with near/far below eps must get a lixel
+ * map or not independently of the caller's rounding mode.  The planner asks swarp_lixel_matrix about a view-projection
  * it builds itself; its depth row -(f+n)/(f-n) z - 2fn/(f-n) tends to the w
  * row -z as n/f -> 0, and below n/f ~ eps the two rows are equal or one ulp
- * apart by the rounding of (f+n)/(f-n): V singular (LIXEL_REFUSED) or not
- * (USED, 1 more pass).  The lixel matrix is made of the rays (rows 0, 1, 3,
- * [LIXEL] (2)), so the plane is lixel-friendly whatever the depth range: used
- * in every mode, at every near. */
+ * apart by the rounding of (f+n)/(f-n), so a check on V would call it
+ * singular (LIXEL_REFUSED) or not (USED, 1 more pass).  The lixel matrix is
+ * made of the rays (rows 0, 1, 3, [LIXEL] (2)), so the plane is
+ * lixel-friendly whatever the depth range: used in every mode, at every
+ * near. */
 static void plan_floor(double near, int mode, swarp_status* st, swarp_plan_result* p) {
     swarp_scene_needs n;
     swarp_budget b;
@@ -175,8 +174,8 @@ static void plan_floor(double near, int mode, swarp_status* st, swarp_plan_resul
     fesetround(FE_TONEAREST);
 }
 
-/* the harness's case 201223 (hex floats as decoded): 2 planes, a 2048 atlas */
-static void plan_case_201223(int mode, swarp_status* st, swarp_plan_result* p) {
+/* a tiny-near scene with 2 planes and a 2048 atlas, its arguments in hex */
+static void plan_two_planes_tiny_near(int mode, swarp_status* st, swarp_plan_result* p) {
     swarp_scene_needs n;
     swarp_budget b;
     memset(&n, 0, sizeof n);
@@ -211,7 +210,7 @@ static void same_plan(const swarp_plan_result* a, const swarp_plan_result* r, in
     ck_assert_msg(a->cost_ns == r->cost_ns, "mode %d: cost %.17g, %.17g by default", mode, a->cost_ns, r->cost_ns);
 }
 
-START_TEST(fenvj_lixel_check_tiny_near_every_mode) {
+START_TEST(lixel_check_tiny_near_every_mode) {
     static const int modes[] = {FE_TONEAREST, FE_UPWARD, FE_DOWNWARD, FE_TOWARDZERO};
     static const double nears[] = {1e-30, 1e-20, 1e-17, 1e-16, 1e-6, 0.1};
     for (size_t k = 0; k < sizeof nears / sizeof nears[0]; ++k) {
@@ -229,23 +228,22 @@ START_TEST(fenvj_lixel_check_tiny_near_every_mode) {
     }
     swarp_status st0, st;
     swarp_plan_result r, p;
-    plan_case_201223(FE_TONEAREST, &st0, &r);
+    plan_two_planes_tiny_near(FE_TONEAREST, &st0, &r);
     ck_assert_int_eq(st0, SWARP_INFO_PLAN_BUDGET_UNMET);
     ck_assert_uint_eq(r.lixel_count, 2);
     for (int m = 1; m < 4; ++m) {
-        plan_case_201223(modes[m], &st, &p);
+        plan_two_planes_tiny_near(modes[m], &st, &p);
         ck_assert_int_eq(st, st0);
         same_plan(&p, &r, m);
     }
 }
 END_TEST
 
-/* fenv swarp_plan 480000 case 385901 (hex floats as decoded): a 1e-15 rad
- * field of view 2.5e5 off the origin, a point light above the eye, floor
+/* A 1e-15 rad field of view (arguments in hex) 2.5e5 off the origin, a point light above the eye, floor
  * planes y = 0.6 and y = -0.86.  The corner rays hit plane 0 at points that
- * coincide to rounding; swarp_lixel_solve5 judged their noise, and the plane
- * got a lixel map under FE_DOWNWARD only.  Refused in every mode. */
-static void plan_case_385901(int mode, swarp_status* st, swarp_plan_result* p) {
+ * coincide to rounding; judging their noise, swarp_lixel_solve5 would give
+ * the plane a lixel map in one mode only.  Refused in every mode. */
+static void plan_tiny_fov_clustered_corners(int mode, swarp_status* st, swarp_plan_result* p) {
     swarp_scene_needs n;
     swarp_budget b;
     memset(&n, 0, sizeof n);
@@ -278,16 +276,16 @@ static void plan_case_385901(int mode, swarp_status* st, swarp_plan_result* p) {
     fesetround(FE_TONEAREST);
 }
 
-START_TEST(fenvj_lixel_check_clustered_corners_every_mode) {
+START_TEST(lixel_check_clustered_corners_every_mode) {
     static const int modes[] = {FE_TONEAREST, FE_UPWARD, FE_DOWNWARD, FE_TOWARDZERO};
     swarp_status st0, st;
     swarp_plan_result r, p;
-    plan_case_385901(FE_TONEAREST, &st0, &r);
+    plan_tiny_fov_clustered_corners(FE_TONEAREST, &st0, &r);
     ck_assert_int_eq(st0, SWARP_INFO_PLAN_BUDGET_UNMET);
     ck_assert_uint_eq(r.plane_reason[0], SWARP_PLAN_PLANE_LIXEL_REFUSED);
     ck_assert_uint_eq(r.lixel_count, 0);
     for (int m = 1; m < 4; ++m) {
-        plan_case_385901(modes[m], &st, &p);
+        plan_tiny_fov_clustered_corners(modes[m], &st, &p);
         ck_assert_int_eq(st, st0);
         same_plan(&p, &r, m);
     }
@@ -301,14 +299,12 @@ int main(void) {
     tcase_add_test(t, explain_text_independent_of_rounding_mode);
     tcase_add_test(t, explain_random_values_every_mode);
     suite_add_tcase(s, t);
-    /* planfix pass */
-    t = tcase_create("planfix");
-    tcase_add_test(t, planfix_plan_cost_limit);
+    t = tcase_create("cost_limit");
+    tcase_add_test(t, plan_cost_above_limit_refused_at_limit_finite);
     suite_add_tcase(s, t);
-    /* fenvj pass */
-    t = tcase_create("fenvj");
-    tcase_add_test(t, fenvj_lixel_check_tiny_near_every_mode);
-    tcase_add_test(t, fenvj_lixel_check_clustered_corners_every_mode);
+    t = tcase_create("lixel_check_rounding_mode");
+    tcase_add_test(t, lixel_check_tiny_near_every_mode);
+    tcase_add_test(t, lixel_check_clustered_corners_every_mode);
     suite_add_tcase(s, t);
     return tu_run_suite(s) ? 1 : 0;
 }

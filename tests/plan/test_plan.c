@@ -1,5 +1,5 @@
 #define _POSIX_C_SOURCE 200809L
-/* The planner (src/plan.c, docs/planning.md).
+/* The planner (src/plan/plan.c, docs/planning.md).
  *
  *  1. the generalised error model: equal to the core's [RHS] (2.3)/(2.4)
  *     at γ = 90°, equal to a dense sampling of the frustum (written here in

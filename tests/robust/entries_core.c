@@ -739,7 +739,7 @@ static void e_gmnpr_lambda(swr_ctx* c) {
     if (!swr_done(c, st)) return;
     const double args[4] = {g.theta, g.phi, g.n, g.f};
     long double ref = g.theta > 0 ? ref_lgmnpr((const long double[]){g.theta, g.phi, g.n, g.f}) : INFINITY;
-    /* theta = 0 is finite by contract (DBL_MAX + INFO_WARP_UNIFORM, issue 2): not "degenerate" */
+    /* theta = 0 is finite by contract (DBL_MAX + INFO_WARP_UNIFORM, documented): not "degenerate" */
     if (!check_huge(c, "lambda_GMNPR", out, 0, ref)) return;
     SWR_CHECK_ACC(c, out > 0, "lambda = %g <= 0", out);
     if (g.theta >= g.phi) SWR_CHECK(c, st == SWARP_OK, "theta >= phi but %s", swarp_status_name(st));
@@ -1085,9 +1085,9 @@ static void e_split_scheme(swr_ctx* c, int kind) {
     if (swr_isfin(width) && width <= 64.0 * (a.m + 1.0) * ulp_f) {
         swr_allow(c, SWARP_ERR_DEGENERATE);
         /* the documented "[n, f] too narrow for m distinct splits" threshold
-         * (src/split.c, strict increase of C_i): with C_i a few ulp apart,
+         * (src/cascade/split_schemes.c, strict increase of C_i): with C_i a few ulp apart,
          * whether a rounded C_i lands on its neighbour is decided by the
-         * rounding mode (fenv case 2336: n, f 2 ulp apart, m = 2, DEGENERATE
+         * rounding mode (e.g. n, f 2 ulp apart, m = 2, DEGENERATE
          * under every directed mode) -- a legitimate rounding edge */
         c->rounding_edge = 1;
     }

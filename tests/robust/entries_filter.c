@@ -230,8 +230,8 @@ static void e_lvsm_layer_uniform(swr_ctx* c) {
          * three times (h, h j, the sum) in the caller's mode: each within
          * 3 eps max(|s_0|, |s_N|) of the exact split (|h j| <= |s_N - s_0|
          * <= 2 max).  A t that close to the nearest exact split sits on it as
-         * far as rounding can tell (case 15516: layers of 0.27 ulp, t 0.18
-         * ulp from s_8). */
+         * far as rounding can tell (e.g. layers of 0.27 ulp, t 0.18 ulp from
+         * s_8). */
         if (n > 0 && isfinite(u) && fabs(u) < 1e9) {
             long double jn = nearbyintl((long double)u), sj = s0 + ((long double)sN - s0) * jn / n;
             if (jn >= 0 && jn <= n && fabsl(t - sj) <= 4 * EPS * fmax(fabs(s0), fabs(sN))) c->rounding_edge = 1;
@@ -402,7 +402,7 @@ static void e_lvsm_second_occluder(swr_ctx* c) {
      * sigma2 = 1 + 1e-9): its condition number (|mu| + sigma)/|mu + sigma|,
      * which the check below already allows for, is recorded for the fenv
      * comparison, where a correctly rounded sqrt in another rounding mode moves
-     * sigma by an ulp (fenv case 2125: 4e-7 relative at condition 4e9) */
+     * sigma by an ulp (e.g. 4e-7 relative at condition 4e9) */
     if (ref != 0) swr_cond(c, (double)((fabsl(ref - mu) + fabs(mu)) / fabsl(ref)));
     SWR_CHECK_ACC(c, fabsl(o - ref) <= 4 * EPS * (fabsl(ref) + fabs(mu)), "mu + sigma = %.17g, want %.17Lg", o, ref);
 }
@@ -551,7 +551,7 @@ static void e_evsm_moments(swr_ctx* c) {
  * (c |t| + 2) |w| / |d|, plus 2 (c |t| + 2) v (1 - v) when the floor
  * min_var (c w)^2 is the variance.  A receiver a hair behind a huge warped
  * mean (w ~ 1e11, d ~ 1e-8 w) has v near 1 move by 1e-8 with the rounding
- * mode (robust_fenv 200000, cases 103970, 129647).  The bound v = min(v+, v-)
+ * mode.  The bound v = min(v+, v-)
  * takes the warp that gives it (both when they are within 1e-6). */
 static void evsm_vis_cond(swr_ctx* c, const double m[4], double t, double cp, double cn, double mv) {
     if (!(fabs(t) * fmax(cp, cn) <= 350) || !(cp > 0) || !(cn > 0)) return;
@@ -609,7 +609,7 @@ static void e_evsm_visibility(swr_ctx* c) {
      * the documented 0 <-> 1 of a zero variance): the library's w carries
      * c t's rounding times c |t| plus exp's own (an ulp or two), so
      * |w - M_1| <= 4 eps (c |t| + 2) |w| is on the threshold as far as
-     * rounding can tell (case 14186: t = x, the negative warp one ulp off
+     * rounding can tell (e.g. t = x, the negative warp one ulp off
      * its mean under FE_DOWNWARD, v 0 instead of 1) */
     if (swr_isfin(t) && cp > 0 && cn > 0 && fabs(t) * fmax(cp, cn) <= 350) {
         const long double w[2] = {expl((long double)cp * t), -expl(-(long double)cn * t)}, ct[2] = {cp * fabs(t), cn * fabs(t)};
@@ -709,7 +709,7 @@ static void e_msm_visibility(swr_ctx* c) {
      * S / D.  Just above the library's degeneracy threshold (D33 > 64 eps
      * S33) that is up to 1/(64 eps): a mixture of depths 1 with the default
      * bias gave D33 = 2e-14, S33 / D33 = 7e13, and the visibility moved by
-     * 1e-3 with the rounding mode (fenv 60000 case 51494). */
+     * 1e-3 with the rounding mode. */
     if (st == SWARP_OK) {
         const long double b1 = b[0], b2 = b[1], b3 = b[2], b4 = b[3];
         const long double D22 = b2 - b1 * b1, S22 = b2 + b1 * b1;

@@ -1,6 +1,6 @@
 /* Hard-case / fuzz entries for the geometry stage: the one call swarp_setup
  * (and swarp_setup_range), the body B (swarp_body_points) and the box
- * polyhedron, with the edges of issue 9: light within 1e-9 rad of parallel
+ * polyhedron, with the hard edges: light within 1e-9 rad of parallel
  * and antiparallel to the view, near = 1e-6 and far/near up to 1e7,
  * coordinates offset by 1e6, boxes of zero extent on one or more axes, the
  * camera on a box face, edge or corner, point lights on the near plane and at
@@ -113,7 +113,7 @@ static void gen_setup_scene(swr_ctx* c, scene_args* s) {
      * within 1e-9/1e-12 of them): the same degenerate configurations.  At
      * γ = 0 / π the warp axis y is perpendicular to the view, and two
      * documented decisions take the sign of rounding noise there: which of
-     * ±y the warp runs along (σ = sign(y·v), src/follow.c; a user or
+     * ±y the warp runs along (σ = sign(y·v), src/geometry/follow.c; a user or
      * pseudo-near n keeps a strong warp there, so the map flips by 180°)
      * and whether z_1 > z_0 (n_opt finite, ~1e16, or +inf: uniform) */
     if (fmin(ang, PI_ - ang) <= 1.000001e-9) s->degenerate_light = 1;
@@ -183,9 +183,9 @@ static void scene_cond(swr_ctx* c, const scene_args* s, double near, double far)
      * of the map's span.  The condition is |l| / ext(B) >= |l| / ext(box)
      * (B lies in the box; the box's extent gives the lower bound, never a
      * loosening beyond the true condition).  A point light 3.4e68 from a
-     * 44-unit box (fenv 480000 setup_range case 291491): condition 8e66;
+     * 44-unit box: condition 8e66;
      * in the directed modes a point of B got the light-view coordinate
-     * y = -5e38, so src/setup.c's resolution test (sw_world_resolves)
+     * y = -5e38, so src/geometry/setup.c's resolution test (sw_world_resolves)
      * refused the map, SWARP_ERR_DEGENERATE; WARP_UNIFORM to nearest. */
     if (s->light.type == SWARP_LIGHT_POINT && fin3(&s->light.position)) {
         const swarp_vec3 lp = s->light.position;
@@ -279,7 +279,7 @@ static void expect_parts(swr_ctx* c, const scene_args* s, int uses_cam_range, in
     if (s->degenerate_light) c->rounding_edge = 1;
     /* PSM with a directional light perpendicular to the view (γ = 90°, the
      * drawn angle pi/2): the light is at infinity in post-perspective space
-     * (τ = w_l/|q_h| = 0, src/psm.c), and SWARP_INFO_PSM_INVERSE (w_l < 0,
+     * (τ = w_l/|q_h| = 0, src/geometry/psm.c), and SWARP_INFO_PSM_INVERSE (w_l < 0,
      * the light behind the viewer) is the sign of rounding noise there.  The
      * matrices are continuous across it (orthographic rows for |τ| < 1e-9);
      * the status is a documented threshold decision. */
@@ -342,8 +342,8 @@ static void setup_point_k(const swarp_mat4* m, const swarp_vec3* p, double k[3])
  * |p - o| sum_j |proj_kj - u_k proj_3j| / |W|: its condition number with
  * respect to the light's direction.  Large where the fit is much finer than
  * the distance from the origin: a 1e-9 slab seen edge-on 30 units away
- * (entries of 2e9 that FE_UPWARD moved by 9e-7, fenv swarp_setup_follow
- * 120000 case 108539, k = 6e10), a far point light. */
+ * (entries of 2e9 that FE_UPWARD moved by 9e-7, k = 6e10), a far point
+ * light. */
 static double setup_point_k_rot(const swarp_setup_result* r, const swarp_vec3* p) {
     const double* V = r->light_view.m;
     swarp_vec3 o = v3(-(V[12] * V[0] + V[13] * V[1] + V[14] * V[2]), -(V[12] * V[4] + V[13] * V[5] + V[14] * V[6]),
@@ -365,13 +365,13 @@ static double setup_point_k_rot(const swarp_setup_result* r, const swarp_vec3* p
  * light-space coordinates of B resolved to eps times their terms (k/2 of
  * them) over its extent E, e.g. a light grazing a flat 1e6-offset box (E
  * 3e-9 against terms of 8.5: matrix entries 2e9 that the rounding mode
- * moves by 2e-6, fenv 10000 case 9020).  Depth as well as x and y: a
+ * moves by 2e-6).  Depth as well as x and y: a
  * directional light 1.9e-9 off the normal of a flat box (z = -50) sees B's
  * depths within 5e-8, fitted to [-1, 1] by a translation of 1e9 that
- * FE_TOWARDZERO moved by 9e-9 (fenv 30000 case 15179; k_z 1e9).  Plus the
+ * FE_TOWARDZERO moved by 9e-9 (k_z 1e9).  Plus the
  * light view's rotation (setup_point_k_rot).  PSM maps only the receivers
  * and the casters in front of them: its points with w resolved from 0 and
- * inside the map count (fenv 120000 case 77521: a flat box grazed at
+ * inside the map count (e.g. a flat box grazed at
  * 1.7e-12 rad by camera and light).  k_rows: the rounding of the view's
  * rows in units of eps (1 for swarp_setup's frame; a followed frame's up is
  * a projection's direction, eps/s, follow_up_cond). */
@@ -401,7 +401,7 @@ static void setup_b_cond(swr_ctx* c, const scene_args* s, swarp_status st, const
  * entry (gtol): B = conv(H ∪ {l}) ∩ S is clipped with the on-plane
  * tolerance SWARP_POLY_EPS_REL of the clipped polyhedron's scale, which is
  * |l| for a far light, so a vertex that far outside a face is on it
- * (fenv 1920000 setup_points case 1455776, the default mode too: a light
+ * (the default mode too: a light
  * at y = 1e7, an edge of conv(H ∪ {l}) leaving S through the face
  * z = -27.01 at a slope of 5.8e-6, cut by the face y = -0.986 one unit on,
  * 5.9e-6 outside; merge distance 1e-5). */
@@ -429,7 +429,7 @@ static void check_setup_result(swr_ctx* c, const scene_args* s, swarp_status st,
     /* n_eye, n_light: "+inf uniform" (documented for the uniform technique
      * and for SWARP_INFO_WARP_UNIFORM).  Recorded as the warp strengths
      * e = (view_far - view_near)/n (0: uniform), not as n: the map depends
-     * on 1/n continuously (src/warp.c: w = 1 + (y - y_min)/n, the uniform
+     * on 1/n continuously (src/geometry/lispsm.c: w = 1 + (y - y_min)/n, the uniform
      * map exactly at 1/n = 0), and as the view turns perpendicular to the
      * warp axis (a light (anti)parallel to the view) n_opt -> inf with
      * z_1 - z_0 -> 0: n = 5e15 and n = 1.6e16 there are both "uniform to
@@ -502,9 +502,10 @@ static void check_setup_result(swr_ctx* c, const scene_args* s, swarp_status st,
         if (setup_point_unmapped(s, st, r, p)) continue;
         swarp_vec4 q = xf(&r->matrix, *p);
         if (!(q.w > 0)) {
-            /* (finding 21/23 of docs/quality.md, fixed: a point light on the
-             * boundary of B -- at the eye, on the near plane, on a face of a
-             * flat box -- was a known problem until 2026-12-01) */
+            /* w > 0 on every mapped point of B, also for a point light on
+             * the boundary of B (at the eye, on the near plane, on a face of
+             * a flat box); the points the documentation leaves out are
+             * skipped above (setup_point_unmapped) */
             swr_fail(c, "focus: point %zu of B has w = %g (point light %s)", i, q.w,
                       s->light_at_eye ? "at the eye / near plane" : "on B's boundary");
             return;
@@ -522,9 +523,9 @@ static void check_setup_result(swr_ctx* c, const scene_args* s, swarp_status st,
             tol = fmax(tol, 1e-6 + 64 * DBL_EPSILON * fmax(k[0], k[1]));
         }
         if (!(fabs(x) <= 1 + tol && fabs(y) <= 1 + tol)) {
-            /* (findings 2-3 of docs/quality.md, fixed: 1e5..1e6 offsets, lights
+            /* the hard edges included: 1e5..1e6 offsets, lights
              * (anti)parallel to the view, grazing lights, near ~ far and
-             * 1e-15 frusta were a known problem until 2026-12-01) */
+             * 1e-15 frusta, within the conditioning tolerance above */
             swr_fail(c, "focus: point %zu of B maps to (%g, %g), outside [-1, 1]^2 (offset %g%s)", i, x, y, cmax,
                       s->degenerate_light ? ", light (anti)parallel" : "");
             return;
@@ -541,9 +542,8 @@ static double box_scale(const swarp_aabb* b);
  * SWARP_POLY_EPS_REL of the coordinates' scale (documented: it never leaves
  * two vertices closer): its corners merge or not by rounding, and H
  * collapses to a flat polygon whose face planes are noise, so B is empty or
- * not, and its vertex count, are decided by rounding (fenv 480000
- * body_points case 388435: a 6e-7 deep frustum at 1e6, merge distance
- * 1e-6; fenv 120000 setup_range case 67112: 1.8e-7 deep at 1e5, B of 11
+ * not, and its vertex count, are decided by rounding (e.g. a 6e-7 deep
+ * frustum at 1e6, merge distance 1e-6; or 1.8e-7 deep at 1e5, B of 11
  * vertices to nearest, 8, 12 and 10 in the directed modes).  Computed as
  * body_points does, in world coordinates. */
 static int frustum_below_merge(const scene_args* s, double near, double far) {
@@ -764,9 +764,9 @@ static double box_scale(const swarp_aabb* b) { return fmax(vmax(b->min), vmax(b-
 static double gtol(double s) { return 1e-9 * s + 1e-300; }
 /* a frustum 1e6 times wider than high (valid: aspect > 0) reaches
  * coordinates far tan(fovy/2) aspect: its clips sit on thresholds that the
- * rounding decides, so the fenv test leaves it out (rounding_edge).  It was
- * known problem 21 (H, B and the receivers outside S) until body_h built
- * such an H as S clipped by V's planes (finding 31). */
+ * rounding decides, so the fenv test leaves it out (rounding_edge).  H, B
+ * and the receivers stay inside S because body_h builds such an H as S
+ * clipped by V's planes, at S's scale. */
 static int wide(const swarp_camera* cam) { return cam->aspect >= 1e6 || cam->aspect <= 1e-6; }
 
 /* A valid polyhedron (header: counts within the maxima, face indices valid,
@@ -1096,11 +1096,11 @@ static void e_poly_clip_common(swr_ctx* c, int with_box) {
      * t moves by eps T / |d_u - d_v| and the cut point by that times
      * |v - u|: relative to the polyhedron's scale, cond = T |v - u| /
      * (|d_u - d_v| scale).  Large for an edge whose ends are both within a
-     * cancellation of the plane (fenv 60000 case 57809: d = -9e-4 and 5e-4
+     * cancellation of the plane (e.g. d = -9e-4 and 5e-4
      * from terms of 8e3, an edge of 40, the cut moved 4e-8).  A polyhedron
      * without faces (a point set: a segment, in practice) has its crossing
-     * pairs cut instead of its edges (poly.c): every pair counts (fenv
-     * 240000 case 145240: a segment 44 long within 1e-7 rad of the plane,
+     * pairs cut instead of its edges (poly.c): every pair counts (e.g. a
+     * segment 44 long within 1e-7 rad of the plane,
      * cut 6e-8 apart by rounding mode; cond 2e7). */
     for (uint32_t f = 0; f < in.face_count && f < SWARP_POLY_MAX_FACES; ++f) {
         const uint32_t nv = in.face_vertex_count[f] <= SWARP_POLY_MAX_FACE_VERTICES ? in.face_vertex_count[f] : 0;
@@ -1183,7 +1183,7 @@ static void e_body_from_h(swr_ctx* c) {
      * light, conv(H ∪ {l}) for a point light): the box planes classify
      * every vertex within that distance as on them, so B is the sweep cut
      * or not, or empty (BODY_EMPTY), by rounding, as frustum_below_merge
-     * for H (fenv 1920000 case 1268095: a box 45 x 5e43 x 70 at 7.7e5, X =
+     * for H (e.g. a box 45 x 5e43 x 70 at 7.7e5, X =
      * 1e44, merge distance 1e32 against a B 3e7 across; SWARP_OK to
      * nearest, BODY_EMPTY under FE_UPWARD).  A B of one point is one. */
     {
@@ -1280,7 +1280,7 @@ static swarp_vec3 unit_scaled(swarp_vec3 a) {
 }
 
 /* The condition of B's cuts of its sweep by the faces of S.  B is H's
- * sweep toward the light clipped by S (src/body.c), in world coordinates:
+ * sweep toward the light clipped by S (src/geometry/body.c), in world coordinates:
  * for a directional light the edges from each vertex h of H to h - T u (u
  * the light's unit direction, T = 2 diag(S)), for a point light from h to
  * l.  An edge h-w crossing the face x_k = f is cut where the distance
@@ -1291,7 +1291,7 @@ static swarp_vec3 unit_scaled(swarp_vec3 a) {
  * entry (clip_cut_cond).  Large where the light grazes the face: a slab
  * 1e-9 thick at y = -10 with the light 2.4e-10 rad off its plane, an edge
  * from H's vertex on the bottom face rising through the top face 4 units
- * on (fenv 960000 case 894956: h_y = -10 one ulp up or down by rounding
+ * on (e.g. h_y = -10 one ulp up or down by rounding
  * mode, the cut moved 7.9e-6 along the edge, 1.7e-7 of B's 45; condition
  * 1.6e9).  Recorded for the cuts that are vertices of B (within the cut's
  * own rounding; an edge inside the sweep is cut too, but is no vertex), H
@@ -1340,9 +1340,9 @@ static void body_sweep_cut_cond(swr_ctx* c, const scene_args* s, double near, do
  * within its rounding, |n·u| <= 64 eps (n and u unit vectors rounded to a
  * few eps: the light exactly in the plane of a frustum face, e.g. along the
  * camera's right axis, which lies in the top and bottom planes), is swept
- * or kept by the sign of the rounding (src/body.c, sw_face_is_front).  The
+ * or kept by the sign of the rounding (src/geometry/body.c, sw_face_is_front).  The
  * body is the same set either way, but its vertex list differs by that
- * face's vertices: kept, they lie on edges of B (fenv case 23947: 16
+ * face's vertices: kept, they lie on edges of B (e.g. 16
  * vertices under FE_TONEAREST, 14 under the directed modes, n·u = -6e-18
  * and 4e-17).  So the status is a rounding edge when the capacity is
  * within G of B's count, G the number of vertices of those faces.  H is
@@ -1496,9 +1496,9 @@ static void e_focus_fit(swr_ctx* c) {
      * not |u_k|, which is small when a shear cancels a 1e6 offset.  The
      * extents are those the library fits: x, y over the points, z over the
      * z_points when given (the z_points' x, y widened the extent the
-     * condition was measured on: fenv cases 16881, x at -3e6 over 0.35, and
-     * 18639, y at -4.5e5 over 0.008, drifted 1.3e-9 and 7e-9 with cond 1e7
-     * and 5e7 recorded as 3e4). */
+     * condition was measured on: x at -3e6 over 0.35, and y at -4.5e5 over
+     * 0.008, drifted 1.3e-9 and 7e-9 with cond 1e7 and 5e7 measured as
+     * 3e4). */
     {
         double flo[3] = {INFINITY, INFINITY, INFINITY}, fhi[3] = {-INFINITY, -INFINITY, -INFINITY}, R[3] = {0, 0, 0};
         /* the coordinates u_k depends on (rows k and w of m) are the same
@@ -1613,8 +1613,8 @@ static void e_warp_lispsm(swr_ctx* c) {
          * swarp_cascade_splits' entries: n_p = 0.5 + 1e-9 and f_p = 0.5 -
          * 1e-9 with an exact sum of 1 - 2^-54 give 1 to nearest (a tie, to
          * even: refused) and 1 - 2^-53 downward (accepted), so within an ulp
-         * of 1 the rounding mode decides the status (fenv 960000 cases
-         * 523343, 644283).  The exact gap in long double (within 2^-64); a
+         * of 1 the rounding mode decides the status.  The exact gap in long
+         * double (within 2^-64); a
          * sum of 1 or more is refused in every mode. */
         if ((int)o.param == 4 && swr_isfin(o.pseudo_near) && swr_isfin(o.pseudo_far)) {
             const long double gap = 1.0L - o.pseudo_near - o.pseudo_far;
@@ -1632,8 +1632,8 @@ static void e_warp_lispsm(swr_ctx* c) {
      * may be far larger than y (B 1e6 from the origin, near L's origin:
      * y ~ 1e-6 from terms of 1e6).  Each y is off by up to ~7 eps of its
      * terms in a directed mode, so when the exact extent is within 64 eps
-     * of them the rounding decides between uniform and a full warp (fenv
-     * 120000 case 72815: two points on one light ray, d = 0 to nearest,
+     * of them the rounding decides between uniform and a full warp (e.g. two
+     * points on one light ray, d = 0 to nearest,
      * 2 ulps of 1e6 under FE_UPWARD, P's entries 2 vs 8.6e9). */
     if (n >= 1 && n <= SWARP_BODY_MAX_POINTS) {
         long double ylo = INFINITY, yhi = -INFINITY, noise = 0;
@@ -1661,8 +1661,8 @@ static void e_warp_lispsm(swr_ctx* c) {
          * (y - y_min)/n with n = n' d / (far - near) for the caller's n';
          * n_opt, (4.2) and λ d scale with d too): P's entries move by
          * eps noise / d relative.  cond = noise / d, numerically singular
-         * (> 1/(64 eps)) exactly on the edge above (fenv 240000 case
-         * 179820: seven points at 1e6, light-space y of 1.4 from terms of
+         * (> 1/(64 eps)) exactly on the edge above (e.g. seven points at 1e6,
+         * light-space y of 1.4 from terms of
          * 1.6e6, d = 0.0061 moved by 1 ulp of 1e6 with the rounding mode,
          * P's w row by 2e-8 relative; cond 2.6e8). */
         if (!same && noise > 0 && yhi > ylo) swr_cond(c, (double)(noise / (yhi - ylo)));
@@ -1676,7 +1676,7 @@ static void e_warp_lispsm(swr_ctx* c) {
          * d / n_light = (far - near) / n_eye (0: uniform), as in swarp_setup's
          * entry: the map depends on 1/n continuously (w = 1 + (y - y_min)/n,
          * y - y_min in [0, d]); next to the uniform limit n is as large as
-         * the rounding noise makes it (fenv 60000 case 58226: n_eye = 8.5e10
+         * the rounding noise makes it (e.g. n_eye = 8.5e10
          * for a depth range of 1.4e5, n_light = 2e7 for d = 34, a strength
          * of 1.7e-6, moved by 4e-6 relative with the rounding mode: the
          * same map to 1e-11), while compared as n they differ beyond the
@@ -1730,8 +1730,8 @@ static void e_warp_lispsm(swr_ctx* c) {
  * extent in PPS (a point light with it: the light's cone is formed from
  * differences with its PPS position) that is the condition number of what
  * the fit, the light's cone and its axis are computed from.  B far beyond
- * the far plane squeezes its PPS depths into b Δd/d^2 (fenv 3840000
- * swarp_setup_points case 2005391: B 1.7e6 deep with far = 301, the PPS z of
+ * the far plane squeezes its PPS depths into b Δd/d^2 (e.g. B 1.7e6 deep with
+ * far = 301, the PPS z of
  * B and the light within 4.4e-11 of 1.01, cond 2.3e10; light_proj's y row
  * moved by 1.5e-5 relative with the rounding mode). */
 typedef struct {
@@ -1767,7 +1767,7 @@ static void psm_pps_cond(swr_ctx* c, const scene_args* s, const swarp_vec3* pts,
     k.eye = cam->eye;
     k.f = unit_scaled(cam->dir), k.r = unit_scaled(cross(k.f, cam->up)), k.u = cross(k.r, k.f);
     k.delta = s->opt.slideback;
-    if (s->opt.psm_slideback && k.delta == 0) { /* src/psm.c: automatic slide-back */
+    if (s->opt.psm_slideback && k.delta == 0) { /* src/geometry/psm.c: automatic slide-back */
         long double zmin = INFINITY;
         for (size_t i = 0; i < n; ++i) zmin = fminl(zmin, dot(v3(pts[i].x - cam->eye.x, pts[i].y - cam->eye.y, pts[i].z - cam->eye.z), k.f));
         if (zmin < near) k.delta = near - zmin;
@@ -1792,8 +1792,8 @@ static void psm_pps_cond(swr_ctx* c, const scene_args* s, const swarp_vec3* pts,
      * directions from the light to the receivers H (B without H), formed in
      * PPS: a receiver at PPS distance δ from the light has its direction
      * rounded to eps (R_light + R_receiver)/δ, and the cap (the map's axis
-     * and opening) moves with it (fenv 3840000 swarp_setup_points case
-     * 3105881: a vertex of B near a point light 2 units from the eye at 3e6,
+     * and opening) moves with it (e.g. a vertex of B near a point light 2
+     * units from the eye at 3e6,
      * the cap's centre 5e-5 different by rounding mode). */
     long double vl[3], el[3];
     if (!point || !pps_point(&k, s->light.position, vl, el)) return;
@@ -1896,7 +1896,7 @@ static double split_map_cond(const swarp_mat4* m) {
  * it or inside by the rounding of their distance (a few eps of the
  * coordinates, 16 eps / 1e-12 = 3.6e-3 of the tolerance), and B collapses
  * onto the first face or keeps its 1e-12-thin extent, its depth range
- * 1e-6 different at 1e6 (fenv 480000 swarp_cascade_setup case 291366: a
+ * 1e-6 different at 1e6 (e.g. a
  * box 1.00001e-6 thick at 1.00007e6, tolerance 1.00007e-6; the depth row of
  * split 0 moved 7e-7 relative under FE_UPWARD).  A documented threshold
  * (the header's "never leaves two vertices closer"); an exactly flat box
@@ -2005,7 +2005,7 @@ static void e_cascade_setup(swr_ctx* c) {
          * entry records it (see check_setup_result): the split's map depends
          * on 1/n' continuously (w = 1 + (y - y_min)/n'), and next to the
          * uniform limit n' is as large as the rounding makes it.  Compared as
-         * n' (fenv 480000 case 160316, no options: n' = 3.2e8, 4.9e8 and
+         * n' (no options: n' = 3.2e8, 4.9e8 and
          * 1.4e9 for splits 1-3, moved 1e-8 relative by the rounding mode)
          * it failed the tolerance while the splits' matrices agreed to it. */
         if (c->n_rec < SWR_MAX_REC) c->rec[c->n_rec++] = q->n_eye == INFINITY ? 0.0 : (q->far - q->near) / q->n_eye;
@@ -2018,8 +2018,8 @@ static void e_cascade_setup(swr_ctx* c) {
                          q->tile.viewport_y + q->tile.viewport_height <= atlas,
                   "tile %u outside the atlas", i);
     }
-    /* raised after the checks, for the fenv comparison (fenv 10000 cases
-     * 3054, 3719, 8336: matrix translations moved 1e-6..5e-4 of the outputs
+    /* raised after the checks, for the fenv comparison (e.g. matrix
+     * translations moved 1e-6..5e-4 of the outputs
      * by the rounding mode, within this conditioning) */
     for (uint32_t i = 0; i < K; ++i) swr_cond(c, split_map_cond(&sp[i].matrix));
     /* the configuration's maxima are the largest of the splits' */
@@ -2028,7 +2028,7 @@ static void e_cascade_setup(swr_ctx* c) {
 }
 
 /* ------------------------------------------------------------------------ */
-/* coherent light frames over time (src/follow.c)                           */
+/* coherent light frames over time (src/geometry/follow.c)                           */
 /* ------------------------------------------------------------------------ */
 SWR_WEAK(swarp_setup_follow)
 SWR_WEAK(swarp_focus_light_view_follow)
@@ -2076,7 +2076,7 @@ static void check_follow_bound(swr_ctx* c, const swarp_mat4* V, const swarp_mat4
                   SWARP_FOLLOW_KAPPA, delta);
 }
 
-/* The condition of a followed light frame's up vector (src/follow.c,
+/* The condition of a followed light frame's up vector (src/geometry/follow.c,
  * sw_follow_light_view): it is t = v_perp/|v_perp| (the view direction
  * projected normal to the light axis a, [RHS] §3.2.1) when the frame
  * follows the target, else h = the previous up projected normal to a,
@@ -2085,8 +2085,7 @@ static void check_follow_bound(swr_ctx* c, const swarp_mat4* V, const swarp_mat4
  * absolute eps and its direction eps/|projection|: cond = 1/sin(angle).  The
  * library uses a projection only above 1e-8 (cond <= 1e8).  Near γ = 0
  * the stateless light view blends (cond bounded); the follow rule does not:
- * fenv cases 16906 and 23921, an omni light 3e-4 from an eye at 1e6 looking
- * back along the view, sin γ = 2e-8, rows drifted 3e-9. */
+ * e.g. an omni light 3e-4 from an eye at 1e6 looking back along the view, sin γ = 2e-8, rows drifted 3e-9. */
 static void follow_cond(swr_ctx* c, const swarp_mat4* V, const swarp_mat4* P, swarp_vec3 dir) {
     swarp_vec3 a = v3(-V->m[2], -V->m[6], -V->m[10]), upp = v3(P->m[1], P->m[5], P->m[9]), v = unit_scaled(dir);
     double kv = dot(v, a), kh = dot(upp, a);
@@ -2101,14 +2100,14 @@ static void follow_cond(swr_ctx* c, const swarp_mat4* V, const swarp_mat4* P, sw
     else if (have_h) swr_cond(c, 1 / sh);
 }
 
-/* The rounding of a followed frame's rows in units of eps (src/follow.c):
+/* The rounding of a followed frame's rows in units of eps (src/geometry/follow.c):
  * the up row is the direction of a projection normal to the axis a, of t
  * (the view direction's, length s_t) when the frame follows the target,
  * else of h (the previous up's, s_h: lagging, or kept); a and the unit
  * vectors projected carry eps each, so the direction eps/s.  Whether the
  * frame followed t is read from the result (its up along ±t), as the
- * status may carry another info.  The right row is up x axis.  (fenv 960000
- * case 584739: a directional light 1e-7 off the view direction over a flat
+ * status may carry another info.  The right row is up x axis.  (e.g. a
+ * directional light 1e-7 off the view direction over a flat
  * box in the eye's plane, s_t = 1e-7; B's light-space y extent is 1e-7 of
  * its length, and the up row's 6e-11 of rounding moved light_proj's y scale
  * by 1.4e-4 relative.) */

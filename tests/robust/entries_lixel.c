@@ -191,15 +191,15 @@ static void gen_scene(swr_ctx* c, const viewer* v, swarp_light* L, swarp_plane* 
     /* the same degeneracy when an offset above came out 0 (the generator
      * favours 0) and the normal is an axis: P then contains the eye to
      * within the rounding of its d, and PLANE_THROUGH_EYE (LX_EYE_EPS) is
-     * decided by the rounding of V^-1 at the eye's magnitude (fenv cases
-     * 2076, 2555, 6936: eye ~1e5..1e6, THROUGH_EYE under round-to-nearest,
+     * decided by the rounding of V^-1 at the eye's magnitude (e.g. eye
+     * ~1e5..1e6, THROUGH_EYE under round-to-nearest,
      * NOT_VISIBLE / LIGHT_PARALLEL_PLANE / LIGHT_ON_PLANE under directed).
      * The eye is implied by M_v, whose translation column (magnitude
      * |eye|) the harness rounds twice (V, then P V) and the library inverts
      * (V^-1, condition a few): it is known to a few ulps of |eye| times
      * that, 64 eps |eye| as the fenv tolerance takes it.  A plane within
-     * that of the eye is through it to rounding (fenv 2000000 cases 854050,
-     * 1651362: planes 9 and 10 ulps of 1e6 from the eye, pi'_z/|pi'| = 1e-10
+     * that of the eye is through it to rounding (e.g. planes 9 and 10 ulps of
+     * 1e6 from the eye, pi'_z/|pi'| = 1e-10
      * = LX_EYE_EPS to nearest, 0.7e-10 .. 1.7e-10 by rounding mode). */
     {
         long double e = (long double)nrm.x * v->eye.x + (long double)nrm.y * v->eye.y + (long double)nrm.z * v->eye.z;
@@ -252,7 +252,7 @@ static void expect_light(swr_ctx* c, const swarp_light* L) {
  * that distance (P's d, of magnitude |n| |eye| for a plane near the eye,
  * moves P as much).  A point light's position enters as given: eps |l| against
  * its distance to P, which its images (p-hat, the centre of projection) are
- * measured by.  (fenv 240000 case 147509: eye 1.4e6 from the origin, 0.73
+ * measured by.  (e.g. eye 1.4e6 from the origin, 0.73
  * above the floor, 1/k^2 = 55: M_l 1.1e-9 relative by rounding mode; M_v's
  * entries moved by one ulp move M_l by 7.5e6 eps, below 55 * 1.4e6.) */
 static double offset_cond(const viewer* v, const swarp_light* L, const swarp_plane* P) {
@@ -321,7 +321,7 @@ static void e_lixel_matrix(swr_ctx* c) {
      * unit normal and the view direction, which the library takes from the
      * x, y, z parts of M_v's rows (rounded by the harness's P V product:
      * a few eps, the rows' condition a few): within 64 eps of the bound the
-     * rounding decides (fenv 2000000 cases 1030799, 1429309: the
+     * rounding decides (e.g. the
      * generator's 1e-9 component of dir along n, |n . v| - 1e-9 = 3e-25;
      * PARALLEL_VIEW or QUAD_ACROSS_INFINITY by rounding mode) */
     {
@@ -517,9 +517,9 @@ static void e_lixel_factor(swr_ctx* c) {
  * ~16 eps absolute); for a point light n_Σ = u x (L - A) also carries the
  * rounding of L - A, eps (|L| + |A|) / |L - A| of its direction.  When the
  * exact side (long double) is within that of the bound, the caller's
- * rounding mode decides DEGENERATE (fenv 120000 cases 82105, 103034 had
- * |side| = 1e-9 within 3e-12 when the library still formed n_Σ · F -
- * n_Σ · A, 1e-10 of rounding with the line 1e6 from the origin). */
+ * rounding mode decides DEGENERATE (e.g. |side| = 1e-9 within 3e-12; formed
+ * as n_Σ · F - n_Σ · A it would carry 1e-10 of rounding with the line 1e6
+ * from the origin). */
 static int split_side_on_bound(const swarp_light* L, const swarp_plane* fl, const swarp_plane* wa) {
     typedef long double ld;
     const int point = L->type == SWARP_LIGHT_POINT;

@@ -167,7 +167,7 @@ static void check_plan(swr_ctx* c, swarp_status st, const swarp_budget* b, const
  * directed mode, so the errors of two rounding modes differ by well under
  * 64 eps relative (measured: <= 5 ulps).  The chains the search rejected
  * before the chosen one are the ones with fewer splits (same order as the
- * planner's candidate list, src/plan.c sw_candidate); the chosen chain
+ * planner's candidate list, src/plan/plan.c sw_candidate); the chosen chain
  * itself is on the edge when its error is.  Evaluated in the default
  * environment (outside SWR_CALL). */
 static int plan_on_budget_edge(const swarp_scene_needs* n, const swarp_budget* b, const swarp_plan_result* p, swarp_status st) {

@@ -651,7 +651,7 @@ static int expect_map(swr_ctx* c, const bias_args* b) {
     const swarp_bias_map* m = &b->map;
     int ok = 1;
     /* a normal whose length overflows (components near DBL_MAX) is a valid
-     * direction (it was refused with ZERO_VECTOR until finding 20 was fixed) */
+     * direction, not a ZERO_VECTOR */
     ok = expect_map_fields(c, m);
     if (!fin3(&b->p)) swr_expect(c, SWARP_ERR_NON_FINITE), ok = 0;
     if (ok) {
@@ -663,8 +663,8 @@ static int expect_map(swr_ctx* c, const bias_args* b) {
         else if (!(h[3] > 0)) swr_expect(c, SWARP_ERR_BEHIND_PROJECTION), ok = 0;
         /* the library inverts M before it looks at w: a numerically singular
          * M (cond > 1/(64 eps)) may be refused with SINGULAR in one rounding
-         * mode and pass on to BEHIND_PROJECTION in another (robust_fenv
-         * 200000, swarp_bias_kozlov case 124443: a 2e25 entry swamps the
+         * mode and pass on to BEHIND_PROJECTION in another (e.g. a 2e25
+         * entry swamps the
          * rest of M's last column in the elimination, the last pivot is 0
          * or rounding noise), whatever the sign of w */
         if (!(h[3] > 0)) swr_cond(c, mat_cond(&m->world_to_clip));
@@ -1059,7 +1059,7 @@ static void e_cascade_select_best(swr_ctx* c) {
      * |w'| times M's) is beyond the 1e10 up to which ref_texel trusts the
      * double back-projection, whether it is exactly 0 is the rounding's:
      * under FE_DOWNWARD the map passes and a later map's own error (a NaN
-     * resolution: RESOLUTION) is reported instead (fenv 60000 case 46804:
+     * resolution: RESOLUTION) is reported instead (e.g.
      * p at 1e10, a map of condition 5e8).  Maps after one with invalid
      * fields are never reached. */
     if (st == SWARP_ERR_SINGULAR && fin3(&p) && m <= SWARP_SPLIT_MAX_COUNT) {
@@ -1333,8 +1333,7 @@ static void e_stabilize_directional(swr_ctx* c) {
      * also times the aspect): the matrix divides coordinates resolved to eps
      * |eye| by it, so its relative condition is (coordinates) / (width) as
      * well (fovy 1e-6 at an eye 3e6 away: width 7.5e-6, cond 6e11; the
-     * translation moved by 8e-9 with the rounding mode, fenv 120000 case
-     * 93263) */
+     * translation moved by 8e-9 with the rounding mode) */
     if (swr_isfin(cam.fovy) && cam.fovy > 0 && cam.fovy < 3.14159 && swr_isfin(cam.aspect) && cam.aspect > 0 && swr_isfin(f) && f > 0) {
         const double width = f * tan(cam.fovy / 2) * fmin(1.0, cam.aspect);
         if (width > 0) swr_cond(c, (vmax3(cam.eye) + vmax3(o.origin) + f) / width);
@@ -1345,13 +1344,12 @@ static void e_stabilize_directional(swr_ctx* c) {
      * from coordinates resolved to eps (|eye| + |origin| + f): the depth
      * row's relative condition is (coordinates) / dt (body points 0.08 deep
      * along the light, the origin 1e6 away: cond 1.2e7; the depth
-     * translation -2.5e7 moved by 4e-9 relative with the rounding mode,
-     * fenv 240000 case 201233).  dt = 0 is the library's flat case (one
+     * translation -2.5e7 moved by 4e-9 relative with the rounding mode).  dt = 0 is the library's flat case (one
      * texel either side, covered by the width's).  The extents are taken
      * from differences to the first point (p - p_0 is exact in long
      * double): a light axis 1e-95 off a world axis adds 1e-95 x to the
      * coordinates, which a sum at the origin's 1e6 loses and a difference
-     * keeps (fenv 1920000 cases 1030818, 1186048, 1758585: two points with
+     * keeps (e.g. two points with
      * the same z under such a light, extent 0 to nearest, DEGENERATE, and
      * one ulp in the directed modes). */
     if (mode != 2 && pp && np > 0 && fin3(&ld_) && vmax3(ld_) > 0) {
@@ -1373,7 +1371,7 @@ static void e_stabilize_directional(swr_ctx* c) {
          * condition is (coordinates) / (smaller extent) (two points whose x
          * differ by 2 ulps of 5e5 under a vertical light: h_y 5.8e-11, 1/h_y
          * 2^34 to nearest and 2^33 in the directed modes, cond 4e15:
-         * numerically singular, fenv 480000 case 467443). */
+         * numerically singular). */
         /* LEVELS quantises the padded extent e res/(res - 1) up to a whole
          * number of steps ref/levels (ref: level_max_size, or the diameter
          * of the split's minimal sphere): the level is an integer the
@@ -1384,12 +1382,12 @@ static void e_stabilize_directional(swr_ctx* c) {
          * (the + 1: res/(res - 1) and the step's own rounding).  7 points
          * 3e-6 across at 1.1e6 from the origin: cond 4e11, q = 23.9998 (2e-4
          * from 24 against a bound of 0.016), level 24 or 25 by rounding
-         * mode, the map 4 % larger (fenv 1920000 case 1396899). */
+         * mode, the map 4 % larger. */
         const int levels_mode = mode == 3 && use_o;
         ld step = 0;
         if (levels_mode && res >= 2 && swr_isfin(n) && swr_isfin(f) && f > n && swr_isfin(o.level_max_size)) {
             ld ref = o.level_max_size;
-            if (!(ref > 0)) { /* 2 r of the minimal sphere, as src/stabilize.c */
+            if (!(ref > 0)) { /* 2 r of the minimal sphere, as src/cascade/stabilize.c */
                 const ld t = tanl((ld)cam.fovy / 2), k = hypotl(t, t * cam.aspect);
                 ld d_far = k < 1 ? 0.5L * ((ld)f - n) - 0.5L * ((ld)n + f) * k * k : 0;
                 if (!(d_far > 0)) d_far = 0;

@@ -45,19 +45,17 @@ typedef struct mode {
 } mode;
 
 /* Entry points whose differences are counted and printed, not failed
- * (SWARP_STRICT=1 fails them too): none left.  swarp_setup*, the geometry
- * steps behind it, swarp_cascade_setup and the planner were listed here
- * (the warp parameter jumped by orders of magnitude with the rounding mode);
- * issue 9 fixed the causes (docs/quality.md, finding 4 "Rounding mode"):
- * the [WS06] nearest vertex picked among tied near-plane vertices by
- * rounding (src/setup.c), the planner's γ from acos next to π and its point
- * light rounded at the eye's magnitude (src/plan.c); the harness compares
+ * (SWARP_STRICT=1 fails them too): none.  Every entry point gives the same
+ * result in every rounding mode because what rounding would decide is
+ * decided otherwise: the [WS06] nearest vertex among tied near-plane
+ * vertices (src/geometry/setup.c), the planner's γ by atan2 rather than acos next to
+ * π and its point light relative to the eye (src/plan/plan.c); the harness compares
  * point sets by their support function (order and near-duplicates depend on
  * rounding), n' as the warp strength (range)/n' (n' ~ 1e16 and +inf are the
  * same uniform map), and flags the documented thresholds that rounding
  * decides (lights exactly (anti)parallel or at 90° for PSM, a body of one
  * or two points, a capacity within 2 of B's count) as rounding_edge.  Add
- * an entry point here only with a reason and a finding in docs/quality.md. */
+ * an entry point here only with its reason documented in docs/. */
 static const char* const known_sensitive[] = {NULL};
 static int is_known(const char* name) {
     for (size_t i = 0; known_sensitive[i]; ++i)

@@ -1,6 +1,6 @@
 /*
  * swr.h -- the robustness harness shared by the hard-case sweep
- * (tests/hard_cases.c), the libFuzzer targets and their corpus replay
+ * (tests/robust/hard_cases.c), the libFuzzer targets and their corpus replay
  * (tests/fuzz/), the threads test and the floating-point-environment test.
  *
  * Every public entry point of libshadowwarp has ONE function
