@@ -185,7 +185,8 @@ typedef enum swarp_depth_range {
 /* ======================================================================== */
 
 /** The viewer.  dir and up need not be unit length; up must not be parallel
- *  to dir.  fovy is the FULL vertical field of view in radians, in (0, pi);
+ *  to dir: every entry point refuses sin(angle(dir, up)) < 1e-9 with
+ *  SWARP_ERR_DEGENERATE (no right vector survives the rounding).  fovy is the FULL vertical field of view in radians, in (0, pi);
  *  Θ = fovy/2 in the papers.  aspect = width/height > 0; 0 < near < far. */
 typedef struct swarp_camera {
     swarp_vec3 eye;
@@ -208,7 +209,9 @@ typedef enum swarp_light_type {
 /** A light.  direction is the direction light TRAVELS (from the light toward
  *  the scene, e.g. (0,-1,0) for the sun at zenith); any length > 0.
  *  cone_angle: point light spot half-angle in radians, in (0, pi/2); 0 means
- *  an omni light (no light frustum L). */
+ *  an omni light (no light frustum L).  Fields the type does not use (a
+ *  directional light's position and cone, an omni light's direction) are
+ *  not checked. */
 typedef struct swarp_light {
     swarp_light_type type;
     uint32_t _reserved0;
@@ -1454,7 +1457,8 @@ typedef struct swarp_cascade_result {
  *  robust projection centre of §4.1 unless setup.center says otherwise),
  *  the atlas place and kernel scale, the stabilised matrix if asked for,
  *  and the error model's values per split.  With one split the result is
- *  swarp_setup's, bit for bit.
+ *  swarp_setup's, bit for bit.  opts->setup is checked as swarp_setup checks its
+ *  options, on every path (stabilised too).
  *  @param[in] cam, light, scene  as swarp_setup
  *  @param[in] opts   NULL or zeroed for defaults
  *  @param[out] out   whole-cascade facts
@@ -2429,7 +2433,9 @@ typedef struct swarp_plan_chain {
  *          SWARP_ERR_ZERO_VECTOR, SWARP_ERR_DEGENERATE (up parallel to dir),
  *          SWARP_ERR_FOV, SWARP_ERR_NEAR_FAR, SWARP_ERR_OUT_OF_RANGE (aspect,
  *          cone, soft_width, max_error, time, costs (negative or above
- *          SWARP_PLAN_MAX_COST_NS), max_passes > 32, scene box min > max), SWARP_ERR_RESOLUTION (screen or map above 65536),
+ *          SWARP_PLAN_MAX_COST_NS), max_passes > 32), SWARP_ERR_BOX_INVERTED, SWARP_ERR_BOX_DEGENERATE
+ *          (as swarp_setup; the all-zero box means unbounded),
+ *          SWARP_ERR_RESOLUTION (screen or map above 65536),
  *          SWARP_ERR_PLAN_TOO_MANY_PLANES, SWARP_ERR_PLAN_EMPTY_VIEW. */
 SWARP_API swarp_status swarp_plan(const swarp_scene_needs* needs, const swarp_budget* budget,
                                   struct swarp_plan* out_plan);

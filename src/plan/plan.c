@@ -20,6 +20,7 @@
 #include <stddef.h>
 
 #include "common/swarp_internal.h"
+#include "common/decimal.h"
 
 /* ---- constants (docs/planning.md says where each comes from) ------------ */
 
@@ -861,7 +862,6 @@ SWARP_API const char* swarp_plan_filter_name(swarp_plan_filter f) {
 }
 
 /* ---- the explanation text (sw_text, sw_puts, sw_putu, sw_putd) ---------- */
-#include "common/decimal.h"
 
 static const struct { uint32_t bit; const char* text; } sw_why_text[] = {
     {SWARP_PLAN_WHY_ONE_MAP_MEETS, "one map meets the error budget: no splits"},

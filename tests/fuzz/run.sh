@@ -21,9 +21,9 @@ mkdir -p "$out"
 CC_FUZZ="${CC_FUZZ:-clang}"
 # shellcheck disable=SC2046
 "$CC_FUZZ" -std=c11 -g -O1 -fno-omit-frame-pointer -fsanitize=fuzzer,address,undefined \
-    -fno-sanitize-recover=undefined -DSWARP_STATIC -Iinclude -Isrc \
+    -fno-sanitize-recover=undefined -DSWARP_STATIC -DSWARP_EXPERIMENTAL_API -Iinclude -Isrc \
     $(find src -name "*.c" | sort) tests/robust/swr.c tests/robust/entries*.c tests/fuzz/fuzz_target.c -lm -o "$out/fuzz_target"
-"$CC_FUZZ" -std=c11 -O1 -DSWARP_STATIC -Iinclude -Isrc $(find src -name "*.c" | sort) tests/robust/swr.c tests/robust/entries*.c tests/robust/hard_cases.c -lm \
+"$CC_FUZZ" -std=c11 -O1 -DSWARP_STATIC -DSWARP_EXPERIMENTAL_API -Iinclude -Isrc $(find src -name "*.c" | sort) tests/robust/swr.c tests/robust/entries*.c tests/robust/hard_cases.c -lm \
     -o "$out/hard_cases_list"
 targets="$("$out/hard_cases_list" --list | awk '$3 == "available" {print $1}')"
 n="$(echo "$targets" | wc -w)"
@@ -48,7 +48,7 @@ for t in $targets; do
         -seed=1 -print_final_stats=1 -interrupted_exit_code=0 -artifact_prefix="$tmp/art-$t/" >"$tmp/$t.log" 2>&1
     rc=$?
     [ "$rc" -eq 124 ] && rc=0 # timed out without a finding
-    # Now and then libFuzzer does not leave on the SIGINT (seen 2026-12-01:
+    # Now and then libFuzzer does not leave on the SIGINT (seen with
     # swarp_gmnpr_offset and swarp_error_mx hung for minutes): timeout -k
     # kills it 5 s later (137).  That is a hang of the fuzzer's shutdown, not
     # a finding; the target has no stats then and is rerun count-bounded below.
