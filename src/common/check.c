@@ -7,9 +7,6 @@
  * reserved fields, enums, non-finite values, domains, then geometry (zero
  * vectors, up parallel to dir); the order is that of swarp_setup. */
 #include "common/swarp_internal.h"
-/* the fast length and normalisation the camera check shares with the
- * geometry it guards (the same rounding decides the threshold) */
-#include "geometry/geometry_internal.h"
 
 swarp_status sw_check_depth_range(swarp_depth_range d) {
     if (d != SWARP_DEPTH_DEFAULT && d != SWARP_DEPTH_NEG_ONE_TO_ONE && d != SWARP_DEPTH_ZERO_TO_ONE)
