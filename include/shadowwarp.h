@@ -116,7 +116,7 @@
  *
  * CONTENTS
  * --------
- *   1. Boundary types               6. Error model (Lloyd's m_x, m_z)
+ *   1. Boundary types               6. Error: measured, and Lloyd's m_x, m_z
  *   2. Camera, light, scene box     7. Cascades: split schemes, atlas,
  *   3. Status codes                    stabilisation, bias, the one call
  *   4. Matrix helpers, version      8. Filtering: VSM, LVSM, EVSM, MSM, PCF
@@ -261,7 +261,9 @@ typedef struct swarp_aabb { swarp_vec3 min, max; } swarp_aabb;
     X(SWARP_INFO_GMNPR_ADJUSTED, 1001,                                              \
       "theta < phi: lambda_GMNPR uses the adjusted branch lambda_2* of eq. (7)")    \
     X(SWARP_INFO_GLPR_NO_SOLUTION, 1002,                                            \
-      "GLPR has no positive lambda here (theta <= phi); lambda_GMNPR was written")
+      "GLPR has no positive lambda here (theta <= phi); lambda_GMNPR was written") \
+    X(SWARP_INFO_MEASURE_SINGULAR, 1003,                                            \
+      "the map is singular at a measured point: its error is +inf there")
 
 /* geometry: 100..199, 1100..1199 */
 #define SWARP_STATUS_LIST_GEOMETRY(X)                                                   \
@@ -440,6 +442,66 @@ SWARP_API swarp_status swarp_mat4_transform(const swarp_mat4* m, const swarp_vec
 /* ======================================================================== */
 /* 5. One shadow map: swarp_setup and its steps                             */
 /* ======================================================================== */
+
+/* ------------------------------------------------------------------------ */
+/* The measured error: what the results report (functions in section 6)   */
+/* ------------------------------------------------------------------------ */
+
+/** Screen and map resolutions the measured error refers to; each > 0
+ *  (SWARP_ERR_RESOLUTION).  map_height 0 means map_height = map_width. */
+typedef struct swarp_measure_res {
+    uint32_t screen_width, screen_height; /**< pixels */
+    uint32_t map_width, map_height;       /**< texels */
+} swarp_measure_res;
+
+/** What a point's measurement says beside its numbers (bit set). */
+typedef enum swarp_texel_flag {
+    SWARP_TEXEL_INSIDE = 1u,     /**< the point projects into the map: w > 0, |x|, |y| <= w */
+    SWARP_TEXEL_BEHIND_EYE = 2u, /**< planar depth <= 0: not on screen; m_s = m_t = sigma = 0 */
+    SWARP_TEXEL_SINGULAR = 4u,   /**< the map's Jacobian is singular there (w <= 0 or its
+                                      determinant vanishes): m_s = m_t = sigma = +inf */
+    SWARP_TEXEL_FLAG_FORCE_U32 = 0x7FFFFFFF
+} swarp_texel_flag;
+
+/** The aliasing error of a world->light-clip matrix at one receiver point X
+ *  with unit normal N.  Tangents w_x = normalize(r - (r.N)N) (r the camera's
+ *  right vector; the camera's up vector when N is parallel to r) and
+ *  w_z = N x w_x span the receiver; J_scr = d(pixel x, y)/d(w_x, w_z) (planar
+ *  depth, screen resolution), J_tex = d(texel s, t)/d(w_x, w_z) (the matrix
+ *  with its division by w, map resolution), D = J_scr J_tex^-1 (screen pixels
+ *  per texel step).  m_s = |D e_s|, m_t = |D e_t| generalise [RHS]'s m_x, m_z
+ *  (2.3)/(2.4), which they equal for an overhead light on the view axis with
+ *  bisector receivers; sigma is D's largest singular value (the worst
+ *  direction): sigma >= max(m_s, m_t), sigma <= hypot(m_s, m_t).  Above 1 the
+ *  map undersamples the screen there. */
+typedef struct swarp_texel_error {
+    double m_s;     /**< screen pixels per texel step along the map's s (clip x) axis */
+    double m_t;     /**< screen pixels per texel step along the map's t (clip y) axis */
+    double sigma;   /**< largest singular value of D */
+    uint32_t flags; /**< swarp_texel_flag bits */
+    uint32_t _pad;  /**< written as zero */
+} swarp_texel_error;
+
+/** Maximum of the measured error over a receiver region. */
+typedef struct swarp_measured_error {
+    double max_m_s;     /**< largest m_s over the samples */
+    double max_m_t;     /**< largest m_t over the samples */
+    double max_sigma;   /**< largest sigma over the samples (+inf: the map is singular
+                             somewhere in the region) */
+    swarp_vec3 at;      /**< the sample where max_sigma occurs */
+    uint32_t samples;   /**< points of the region evaluated (0: not measured) */
+    uint32_t outside;   /**< of them, points that do not project into the map */
+} swarp_measured_error;
+
+/** Sampling of swarp_measure_max; zero means default. */
+typedef struct swarp_measure_options {
+    uint32_t grid;        /**< NDC samples per screen axis (default 9, >= 2) */
+    uint32_t depths;      /**< depth samples, geometric in [z_near, z_far] (default 17, >= 2) */
+    uint32_t refine;      /**< local refinement steps around the worst sample (default 16) */
+    uint32_t _reserved;   /**< must be zero */
+} swarp_measure_options;
+
+
 typedef enum swarp_warp_param {
     SWARP_WARP_PARAM_DEFAULT = 0,   /**< = SWARP_WARP_PARAM_NOPT */
     SWARP_WARP_PARAM_NOPT = 1,      /**< n_opt [RHS] (3.2), z_0, z_1 from B */
@@ -853,8 +915,53 @@ SWARP_API swarp_status swarp_gmnpr_lambda_glpr(double theta, double phi, double 
                                                double* out_lambda);
 
 /* ======================================================================== */
-/* 6. Error model: Lloyd's m_x, m_z                                         */
+/* 6. Error: the measured error of a matrix, and Lloyd's model              */
 /* ======================================================================== */
+
+/** @brief The measured error of matrix at caller-given receiver points and
+ *  normals (e.g. world positions and normals read back from the G-buffer).
+ *  Analytic, in double; the camera's near/far are not used (any planar depth
+ *  > 0 is on screen).
+ *  @param[in] cam     the camera the screen belongs to (checked as in swarp_setup
+ *                     except near/far)
+ *  @param[in] matrix  world -> light clip (swarp_setup_result.matrix, a split's matrix)
+ *  @param[in] res     screen and map resolutions
+ *  @param[in] points, normals  count points and their normals (any length > 0)
+ *  @param[out] out    count results
+ *  @return SWARP_OK; SWARP_INFO_MEASURE_SINGULAR (some point has
+ *          SWARP_TEXEL_SINGULAR: its values are +inf); SWARP_ERR_NULL_POINTER
+ *          (NULL with count > 0), SWARP_ERR_NON_FINITE (a matrix element, point
+ *          or normal), SWARP_ERR_ZERO_VECTOR (a zero normal), SWARP_ERR_RESOLUTION,
+ *          and the camera's errors.  On error out is untouched. */
+SWARP_API swarp_status swarp_measure_points(const swarp_camera* cam, const swarp_mat4* matrix,
+                                            const swarp_measure_res* res,
+                                            const swarp_vec3* points, const swarp_vec3* normals,
+                                            size_t count, swarp_texel_error* out);
+
+/** @brief The largest measured error of matrix over H = V ∩ S, V the view
+ *  frustum between planar depths z_near and z_far (a split's range, or the
+ *  adjusted range of swarp_setup_result.view_near/view_far), with bisector
+ *  receivers: N = normalize(e + l), e and l the unit directions from the
+ *  point to the eye and to the light (the receiver for which projection
+ *  aliasing vanishes, leaving the perspective aliasing of the parameterisation).
+ *  Sampling: a grid x grid NDC lattice at depths geometric in [z_near, z_far],
+ *  points outside the box S skipped, then refine steps of a deterministic
+ *  pattern search around the worst sample (halving the step each time it
+ *  finds no larger sigma).  No allocation; the result is deterministic.
+ *  @return SWARP_OK; SWARP_INFO_MEASURE_SINGULAR (max_sigma = +inf);
+ *          SWARP_ERR_BODY_EMPTY (no sample of V lies in S); the errors of
+ *          swarp_measure_points, SWARP_ERR_NEAR_FAR (not 0 < z_near < z_far),
+ *          the light's and box's errors as in swarp_setup, SWARP_ERR_OUT_OF_RANGE
+ *          (grid or depths 1), SWARP_ERR_RESERVED_NONZERO.  On error out is
+ *          untouched. */
+SWARP_API swarp_status swarp_measure_max(const swarp_camera* cam, double z_near, double z_far,
+                                         const swarp_light* light, const swarp_aabb* scene,
+                                         const swarp_mat4* matrix, const swarp_measure_res* res,
+                                         const swarp_measure_options* opts,
+                                         swarp_measured_error* out);
+
+/* ---- Lloyd's model [RHS] (2.3)-(2.8): the overhead light on the view axis -- */
+
 
 
 /** Inputs of Lloyd's error metric [RHS] (2.3)-(2.8).  res_ix x res_iy is the
@@ -2626,6 +2733,7 @@ SWARP_API swarp_status swarp_mindepth_near(double n, double f, double min_depth,
                                            const swarp_mindepth_options* opt, double* out_near);
 
 #endif /* SWARP_EXPERIMENTAL_API */
+
 
 #ifdef __cplusplus
 } /* extern "C" */

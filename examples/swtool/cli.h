@@ -63,6 +63,7 @@ int cli_report_status(const sw_args* a, swarp_status s, const char* what);
 int cmd_params(sw_args* a);
 int cmd_curve(sw_args* a);
 int cmd_report(sw_args* a);
+int cmd_measure(sw_args* a);
 /* stage: geometry */
 int cmd_setup(sw_args* a);
 

@@ -18,6 +18,8 @@ static const sw_cmd commands[] = {
     /* stage: geometry */
     {"setup", cmd_setup, "light view/projection/matrix for --eye --dir --box and a light (swarp_setup)"},
 
+    {"measure", cmd_measure, "measured error m_s, m_t, sigma of --matrix at --points FILE (x y z nx ny nz)"},
+
     /* stage: lixel */
     {"lixel", cmd_lixel, "plane-stabilised light matrix M_l for --eye --dir --plane --light-pos|--light-dir"},
 

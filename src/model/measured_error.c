@@ -1,0 +1,385 @@
+/* The measured aliasing error of a returned matrix: at a receiver point X
+ * with normal N, D = J_scr J_tex^-1 maps one texel step on the receiver to
+ * the screen displacement it covers.  [RHS] (2.3)-(2.8) are the closed forms
+ * of |D e_s| and |D e_t| for an overhead light on the view axis with bisector
+ * receivers; here D is evaluated from the camera and the matrix themselves,
+ * at any point, for any light, so the figure reported is the figure of the
+ * matrix returned. */
+#include "geometry/geometry_internal.h"
+
+/* J_tex is treated as singular below this ratio |det J| / (|J|_F^2 / 2): its
+ * condition number is then above about 2e12, and D = J_scr J_tex^-1 keeps
+ * fewer than four significant digits in double; the point is reported with
+ * sigma = +inf (the map does not resolve the receiver there). */
+#define SW_JTEX_SINGULAR_REL 1e-12
+
+/* A unit normal N whose component orthogonal to r is below this fraction is
+ * taken as parallel to r, and w_x is built from the camera's up vector
+ * instead (r - (r.N)N has then lost all but a few bits to cancellation). */
+#define SW_NORMAL_PARALLEL_R 1e-6
+
+/* A point counts as inside the map when |x|, |y| <= w (1 + SW_INSIDE_REL):
+ * the boundary of H is fitted to the map's edge, where the fit's rounding
+ * leaves |x / w| a few units of 1e-16 above 1. */
+#define SW_INSIDE_REL 1e-12
+
+/* Defaults of swarp_measure_max: a 9 x 9 NDC lattice at 17 depths and 16
+ * pattern-search steps.  The worst sample of the lattice lies within one
+ * cell of the true maximum, and the search then resolves it to 2^-16 of a
+ * cell; tests/model/test_measured_error.c states the difference from a 33 x
+ * 33 x 65 lattice with the same search. */
+#define SW_MEASURE_GRID 9u
+#define SW_MEASURE_DEPTHS 17u
+#define SW_MEASURE_REFINE 16u
+
+/* The camera's projection at one point, as the screen sees it. */
+typedef struct sw_screen {
+    swarp_vec3 eye, f, r, u;
+    double sx, sy; /* pixels per unit of (x/z, y/z): W / (2 tanΘ a), H / (2 tanΘ) */
+} sw_screen;
+
+static void sw_screen_make(const swarp_camera* cam, const swarp_measure_res* res, sw_screen* s) {
+    sw_camera_basis(cam, &s->f, &s->r, &s->u);
+    s->eye = cam->eye;
+    const double t = tan(sw_half_fovy(cam->fovy));
+    s->sx = (double)res->screen_width / (2.0 * t * cam->aspect);
+    s->sy = (double)res->screen_height / (2.0 * t);
+}
+
+/* The receiver's tangent frame (w_x, w_z) of the definition above. */
+static void sw_receiver_tangents(const sw_screen* s, swarp_vec3 n, swarp_vec3* wx, swarp_vec3* wz) {
+    swarp_vec3 t = sw_sub(s->r, sw_scale(n, sw_dot(s->r, n)));
+    if (!(sw_len(t) > SW_NORMAL_PARALLEL_R)) t = sw_sub(s->u, sw_scale(n, sw_dot(s->u, n)));
+    sw_normalize(t, wx);
+    *wz = sw_cross(n, *wx);
+}
+
+/* d(pixel x, y)/d(w) of the perspective division by the planar depth
+ * z = d.f:  d(a/z) = (da z - a dz)/z^2, a = d.r (d.u). */
+static void sw_screen_jacobian(const sw_screen* s, swarp_vec3 d, double z, swarp_vec3 w,
+                               double col[2]) {
+    const double dz = sw_dot(w, s->f);
+    col[0] = s->sx * (sw_dot(w, s->r) * z - sw_dot(d, s->r) * dz) / (z * z);
+    col[1] = s->sy * (sw_dot(w, s->u) * z - sw_dot(d, s->u) * dz) / (z * z);
+}
+
+static swarp_vec4 sw_apply(const swarp_mat4* m, swarp_vec3 p, double w) {
+    swarp_vec4 c;
+    c.x = sw_at(m, 0, 0) * p.x + sw_at(m, 0, 1) * p.y + sw_at(m, 0, 2) * p.z + sw_at(m, 0, 3) * w;
+    c.y = sw_at(m, 1, 0) * p.x + sw_at(m, 1, 1) * p.y + sw_at(m, 1, 2) * p.z + sw_at(m, 1, 3) * w;
+    c.z = sw_at(m, 2, 0) * p.x + sw_at(m, 2, 1) * p.y + sw_at(m, 2, 2) * p.z + sw_at(m, 2, 3) * w;
+    c.w = sw_at(m, 3, 0) * p.x + sw_at(m, 3, 1) * p.y + sw_at(m, 3, 2) * p.z + sw_at(m, 3, 3) * w;
+    return c;
+}
+
+/* d(texel s, t)/d(w) of clip (x/w, y/w), c the point's clip coordinates:
+ * d(x/w) = (dx w - x dw)/w^2, with (dx, dy, dw) = M (w, 0). */
+static void sw_map_jacobian(const swarp_mat4* m, const swarp_measure_res* res, swarp_vec4 c,
+                            swarp_vec3 w, double col[2]) {
+    const swarp_vec4 dc = sw_apply(m, w, 0.0);
+    const double w2 = c.w * c.w;
+    col[0] = 0.5 * (double)res->map_width * (dc.x * c.w - c.x * dc.w) / w2;
+    col[1] = 0.5 * (double)res->map_height * (dc.y * c.w - c.y * dc.w) / w2;
+}
+
+/* Largest singular value of the 2x2 matrix [a b; c d]:
+ * sigma^2 = (F + sqrt(F^2 - 4 det^2)) / 2, F the squared Frobenius norm,
+ * written with hypot so that F^2 - 4 det^2 = ((a-d)^2 + (b+c)^2)((a+d)^2 + (b-c)^2)
+ * never cancels below zero. */
+static double sw_sigma_max(double a, double b, double c, double d) {
+    const double p = hypot(a - d, b + c), q = hypot(a + d, b - c);
+    return 0.5 * (p + q);
+}
+
+static void sw_measure_one(const sw_screen* s, const swarp_mat4* m, const swarp_measure_res* res,
+                           swarp_vec3 x, swarp_vec3 n_unit, swarp_texel_error* out) {
+    swarp_texel_error e = {0.0, 0.0, 0.0, 0u, 0u};
+    const swarp_vec3 d = sw_sub(x, s->eye);
+    const double z = sw_dot(d, s->f);
+    const swarp_vec4 c = sw_apply(m, x, 1.0);
+    const double edge = c.w * (1.0 + SW_INSIDE_REL);
+    if (c.w > 0.0 && fabs(c.x) <= edge && fabs(c.y) <= edge) e.flags |= SWARP_TEXEL_INSIDE;
+    if (!(z > 0.0)) {
+        e.flags |= SWARP_TEXEL_BEHIND_EYE;
+        *out = e;
+        return;
+    }
+    swarp_vec3 wx, wz;
+    sw_receiver_tangents(s, n_unit, &wx, &wz);
+    double js[2][2], jt[2][2]; /* [column][row]: column 0 along w_x, 1 along w_z */
+    sw_screen_jacobian(s, d, z, wx, js[0]);
+    sw_screen_jacobian(s, d, z, wz, js[1]);
+    sw_map_jacobian(m, res, c, wx, jt[0]);
+    sw_map_jacobian(m, res, c, wz, jt[1]);
+    const double det = jt[0][0] * jt[1][1] - jt[1][0] * jt[0][1];
+    const double fro = jt[0][0] * jt[0][0] + jt[0][1] * jt[0][1] + jt[1][0] * jt[1][0] +
+                       jt[1][1] * jt[1][1];
+    if (!(c.w > 0.0) || !(fabs(det) > SW_JTEX_SINGULAR_REL * 0.5 * fro) || !sw_finite(det)) {
+        e.m_s = e.m_t = e.sigma = INFINITY;
+        e.flags |= SWARP_TEXEL_SINGULAR;
+        *out = e;
+        return;
+    }
+    /* J_tex^-1 = [jt11 -jt10; -jt01 jt00] / det (rows s, t of the texel
+     * step; columns w_x, w_z), D = J_scr J_tex^-1 */
+    const double i00 = jt[1][1] / det, i01 = -jt[1][0] / det;
+    const double i10 = -jt[0][1] / det, i11 = jt[0][0] / det;
+    const double d00 = js[0][0] * i00 + js[1][0] * i10, d01 = js[0][0] * i01 + js[1][0] * i11;
+    const double d10 = js[0][1] * i00 + js[1][1] * i10, d11 = js[0][1] * i01 + js[1][1] * i11;
+    e.m_s = hypot(d00, d10);
+    e.m_t = hypot(d01, d11);
+    e.sigma = sw_sigma_max(d00, d01, d10, d11);
+    *out = e;
+}
+
+static swarp_status sw_check_measure_res(const swarp_measure_res* res, swarp_measure_res* out) {
+    if (!res) return SWARP_ERR_NULL_POINTER;
+    swarp_measure_res r = *res;
+    if (r.map_height == 0) r.map_height = r.map_width;
+    if (!r.screen_width || !r.screen_height || !r.map_width) return SWARP_ERR_RESOLUTION;
+    *out = r;
+    return SWARP_OK;
+}
+
+static int sw_mat4_finite(const swarp_mat4* m) {
+    for (int i = 0; i < 16; ++i)
+        if (!sw_finite(m->m[i])) return 0;
+    return 1;
+}
+
+static swarp_status sw_check_measure_inputs(const swarp_camera* cam, const swarp_mat4* matrix,
+                                            const swarp_measure_res* res, swarp_measure_res* r) {
+    if (!cam || !matrix) return SWARP_ERR_NULL_POINTER;
+    swarp_status st = sw_check_camera_shape(cam);
+    if (st != SWARP_OK) return st;
+    if (!sw_mat4_finite(matrix)) return SWARP_ERR_NON_FINITE;
+    return sw_check_measure_res(res, r);
+}
+
+SWARP_API swarp_status swarp_measure_points(const swarp_camera* cam, const swarp_mat4* matrix,
+                                            const swarp_measure_res* res,
+                                            const swarp_vec3* points, const swarp_vec3* normals,
+                                            size_t count, swarp_texel_error* out) {
+    swarp_measure_res r;
+    swarp_status st = sw_check_measure_inputs(cam, matrix, res, &r);
+    if (st != SWARP_OK) return st;
+    if (count == 0) return SWARP_OK;
+    if (!points || !normals || !out) return SWARP_ERR_NULL_POINTER;
+    for (size_t i = 0; i < count; ++i) {
+        if (!sw_finite3(&points[i]) || !sw_finite3(&normals[i])) return SWARP_ERR_NON_FINITE;
+        swarp_vec3 n;
+        if (!sw_normalize(normals[i], &n)) return SWARP_ERR_ZERO_VECTOR;
+    }
+    sw_screen s;
+    sw_screen_make(cam, &r, &s);
+    swarp_status result = SWARP_OK;
+    for (size_t i = 0; i < count; ++i) {
+        swarp_vec3 n;
+        sw_normalize(normals[i], &n);
+        sw_measure_one(&s, matrix, &r, points[i], n, &out[i]);
+        if (out[i].flags & SWARP_TEXEL_SINGULAR) result = SWARP_INFO_MEASURE_SINGULAR;
+    }
+    return result;
+}
+
+/* ---- the maximum over H = V ∩ S ----------------------------------------- */
+
+typedef struct sw_region {
+    sw_screen s;
+    double t_x, t_y;      /* tanΘ a, tanΘ: NDC -> view-plane offsets */
+    double lz0, lz1;      /* log of the planar depth range */
+    swarp_aabb box, slack;  /* S, and S with the slack of its face points */
+    swarp_light light;    /* direction normalised */
+    const swarp_mat4* m;
+    swarp_measure_res res;
+} sw_region;
+
+typedef struct sw_best {
+    swarp_measured_error acc; /* running maxima and counts */
+    double u[3];              /* NDC x, y and log z of the worst sample */
+} sw_best;
+
+/* S grown by SW_BOX_SLACK_REL of its extent on each side: the vertices of
+ * H lie on S's faces, where the rounding of the point rebuilt from its
+ * (NDC, depth) coordinates would otherwise drop them. */
+#define SW_BOX_SLACK_REL 1e-9
+
+static swarp_aabb sw_box_with_slack(const swarp_aabb* b) {
+    const swarp_vec3 e = sw_scale(sw_sub(b->max, b->min), SW_BOX_SLACK_REL);
+    const swarp_aabb out = {sw_sub(b->min, e), sw_add(b->max, e)};
+    return out;
+}
+
+static int sw_in_box(const swarp_aabb* b, swarp_vec3 p) {
+    return p.x >= b->min.x && p.x <= b->max.x && p.y >= b->min.y && p.y <= b->max.y &&
+           p.z >= b->min.z && p.z <= b->max.z;
+}
+
+/* The point of V at NDC (x, y) and planar depth exp(lz). */
+static swarp_vec3 sw_region_point(const sw_region* g, const double u[3]) {
+    const double z = exp(u[2]);
+    swarp_vec3 dir = sw_add(g->s.f, sw_add(sw_scale(g->s.r, u[0] * g->t_x),
+                                           sw_scale(g->s.u, u[1] * g->t_y)));
+    return sw_add(g->s.eye, sw_scale(dir, z));
+}
+
+/* Bisector receiver: N halfway between the directions to the eye and to the
+ * light, where cos ψ_e / cos ψ_l of [RHS] (2.2) is 1.  A point light at the
+ * point itself, or the eye and light directions opposite, leave no bisector:
+ * the view direction's reverse is used (the receiver faces the eye). */
+static swarp_vec3 sw_bisector(const sw_region* g, swarp_vec3 x) {
+    swarp_vec3 e, l, n;
+    if (!sw_normalize(sw_sub(g->s.eye, x), &e)) e = sw_scale(g->s.f, -1.0);
+    if (g->light.type == SWARP_LIGHT_POINT) {
+        if (!sw_normalize(sw_sub(g->light.position, x), &l)) l = e;
+    } else {
+        l = sw_scale(g->light.direction, -1.0);
+    }
+    if (!sw_normalize(sw_add(e, l), &n)) n = e;
+    return n;
+}
+
+/* Evaluates the sample at u; returns its sigma, or -1 outside S. */
+static double sw_sample(const sw_region* g, const double u[3], sw_best* b) {
+    const swarp_vec3 x = sw_region_point(g, u);
+    if (!sw_in_box(&g->slack, x)) return -1.0;
+    swarp_texel_error e;
+    sw_measure_one(&g->s, g->m, &g->res, x, sw_bisector(g, x), &e);
+    swarp_measured_error* a = &b->acc;
+    a->samples++;
+    if (!(e.flags & SWARP_TEXEL_INSIDE)) a->outside++;
+    if (e.m_s > a->max_m_s) a->max_m_s = e.m_s;
+    if (e.m_t > a->max_m_t) a->max_m_t = e.m_t;
+    if (e.sigma > a->max_sigma || a->samples == 1) {
+        a->max_sigma = e.sigma;
+        a->at = x;
+        b->u[0] = u[0], b->u[1] = u[1], b->u[2] = u[2];
+    }
+    return e.sigma;
+}
+
+static void sw_sample_lattice(const sw_region* g, uint32_t n, uint32_t k, sw_best* b) {
+    for (uint32_t iz = 0; iz < k; ++iz) {
+        for (uint32_t iy = 0; iy < n; ++iy) {
+            for (uint32_t ix = 0; ix < n; ++ix) {
+                double u[3] = {-1.0 + 2.0 * ix / (n - 1), -1.0 + 2.0 * iy / (n - 1),
+                               g->lz0 + (g->lz1 - g->lz0) * iz / (k - 1)};
+                sw_sample(g, u, b);
+            }
+        }
+    }
+}
+
+static double sw_clampd(double v, double lo, double hi) { return v < lo ? lo : (v > hi ? hi : v); }
+
+/* Pattern search from a seed: the 26 neighbours at the current step in
+ * (NDC x, NDC y, log z), moving to a worse one when found, halving the step
+ * when none is.  Deterministic; the lattice spacing is the first step. */
+static void sw_refine(const sw_region* g, uint32_t n, uint32_t k, uint32_t steps,
+                      const double seed[3], double seed_sigma, sw_best* b) {
+    double h[3] = {2.0 / (n - 1), 2.0 / (n - 1), (g->lz1 - g->lz0) / (k - 1)};
+    const double lo[3] = {-1.0, -1.0, g->lz0}, hi[3] = {1.0, 1.0, g->lz1};
+    double c[3] = {seed[0], seed[1], seed[2]}, best = seed_sigma;
+    for (uint32_t it = 0; it < steps && best < INFINITY; ++it) {
+        double next[3] = {c[0], c[1], c[2]};
+        int moved = 0;
+        for (int dz = -1; dz <= 1; ++dz)
+            for (int dy = -1; dy <= 1; ++dy)
+                for (int dx = -1; dx <= 1; ++dx) {
+                    if (!dx && !dy && !dz) continue;
+                    const double u[3] = {sw_clampd(c[0] + dx * h[0], lo[0], hi[0]),
+                                         sw_clampd(c[1] + dy * h[1], lo[1], hi[1]),
+                                         sw_clampd(c[2] + dz * h[2], lo[2], hi[2])};
+                    const double v = sw_sample(g, u, b);
+                    if (v > best) best = v, next[0] = u[0], next[1] = u[1], next[2] = u[2], moved = 1;
+                }
+        if (moved) c[0] = next[0], c[1] = next[1], c[2] = next[2];
+        else h[0] *= 0.5, h[1] *= 0.5, h[2] *= 0.5;
+    }
+}
+
+/* The vertices of H: where the maximum of a projective map's error over a
+ * convex region usually lies (at a corner of V cut by S); each is a
+ * sample and the worst a seed.  Returns 0 when H is empty. */
+static int sw_sample_vertices(const sw_region* g, const swarp_camera* cam, double z_near,
+                              double z_far, double seed[3], double* seed_sigma, sw_best* b) {
+    swarp_polyhedron v, h;
+    if (swarp_poly_from_camera_range(cam, z_near, z_far, &v) != SWARP_OK) return 0;
+    if (swarp_poly_clip_aabb(&v, &g->box, &h) != SWARP_OK) return 0;
+    *seed_sigma = -1.0;
+    for (uint32_t i = 0; i < h.vertex_count; ++i) {
+        const swarp_vec3 d = sw_sub(h.vertices[i], g->s.eye);
+        const double z = sw_dot(d, g->s.f);
+        if (!(z > 0.0)) continue;
+        const double u[3] = {sw_clampd(sw_dot(d, g->s.r) / (z * g->t_x), -1.0, 1.0),
+                             sw_clampd(sw_dot(d, g->s.u) / (z * g->t_y), -1.0, 1.0),
+                             sw_clampd(log(z), g->lz0, g->lz1)};
+        const double sigma = sw_sample(g, u, b);
+        if (sigma > *seed_sigma) *seed_sigma = sigma, seed[0] = u[0], seed[1] = u[1], seed[2] = u[2];
+    }
+    return h.vertex_count > 0;
+}
+
+static swarp_status sw_check_measure_max(const swarp_camera* cam, double z_near, double z_far,
+                                         const swarp_light* light, const swarp_aabb* scene,
+                                         const swarp_measure_options* o) {
+    if (!light || !scene) return SWARP_ERR_NULL_POINTER;
+    swarp_status st = sw_check_light(light);
+    if (st != SWARP_OK) return st;
+    st = sw_check_box(scene);
+    if (st != SWARP_OK) return st;
+    if (!sw_finite(z_near) || !sw_finite(z_far)) return SWARP_ERR_NON_FINITE;
+    if (!(z_near > 0.0 && z_far > z_near)) return SWARP_ERR_NEAR_FAR;
+    (void)cam;
+    if (o) {
+        if (o->_reserved) return SWARP_ERR_RESERVED_NONZERO;
+        if (o->grid == 1 || o->depths == 1) return SWARP_ERR_OUT_OF_RANGE;
+    }
+    return SWARP_OK;
+}
+
+static void sw_region_make(const swarp_camera* cam, double z_near, double z_far,
+                           const swarp_light* light, const swarp_aabb* scene,
+                           const swarp_mat4* m, const swarp_measure_res* r, sw_region* g) {
+    sw_screen_make(cam, r, &g->s);
+    g->t_y = tan(sw_half_fovy(cam->fovy));
+    g->t_x = g->t_y * cam->aspect;
+    g->lz0 = log(z_near);
+    g->lz1 = log(z_far);
+    g->box = *scene;
+    g->slack = sw_box_with_slack(scene);
+    g->light = *light;
+    if (light->type != SWARP_LIGHT_POINT) sw_normalize(light->direction, &g->light.direction);
+    g->m = m;
+    g->res = *r;
+}
+
+SWARP_API swarp_status swarp_measure_max(const swarp_camera* cam, double z_near, double z_far,
+                                         const swarp_light* light, const swarp_aabb* scene,
+                                         const swarp_mat4* matrix, const swarp_measure_res* res,
+                                         const swarp_measure_options* opts,
+                                         swarp_measured_error* out) {
+    swarp_measure_res r;
+    swarp_status st = sw_check_measure_inputs(cam, matrix, res, &r);
+    if (st != SWARP_OK) return st;
+    st = sw_check_measure_max(cam, z_near, z_far, light, scene, opts);
+    if (st != SWARP_OK) return st;
+    if (!out) return SWARP_ERR_NULL_POINTER;
+    const uint32_t n = opts && opts->grid ? opts->grid : SW_MEASURE_GRID;
+    const uint32_t k = opts && opts->depths ? opts->depths : SW_MEASURE_DEPTHS;
+    const uint32_t steps = opts && opts->refine ? opts->refine : SW_MEASURE_REFINE;
+    sw_region g;
+    sw_region_make(cam, z_near, z_far, light, scene, matrix, &r, &g);
+    sw_best b;
+    memset(&b, 0, sizeof b);
+    double seed[3], seed_sigma;
+    const int have_vertices = sw_sample_vertices(&g, cam, z_near, z_far, seed, &seed_sigma, &b);
+    sw_sample_lattice(&g, n, k, &b);
+    if (b.acc.samples == 0) return SWARP_ERR_BODY_EMPTY;
+    const double lattice_seed[3] = {b.u[0], b.u[1], b.u[2]};
+    const double lattice_sigma = b.acc.max_sigma;
+    sw_refine(&g, n, k, steps, lattice_seed, lattice_sigma, &b);
+    if (have_vertices && seed_sigma >= 0.0) sw_refine(&g, n, k, steps, seed, seed_sigma, &b);
+    *out = b.acc;
+    return b.acc.max_sigma == INFINITY ? SWARP_INFO_MEASURE_SINGULAR : SWARP_OK;
+}
