@@ -194,8 +194,8 @@ typedef struct swarp_camera {
     swarp_vec3 up;
     double fovy;
     double aspect;
-    double near;
-    double far;
+    double z_near;
+    double z_far;
     uint32_t _reserved[4];
 } swarp_camera;
 
@@ -606,10 +606,10 @@ SWARP_API swarp_status swarp_setup(const swarp_camera* cam, const swarp_light* l
                                    size_t capacity, size_t* out_count);
 
 /** @brief swarp_setup for an explicit view depth range [near, far] (a split
- *  frustum), used as given (no adjustment).  cam->near/far are ignored.
+ *  frustum), used as given (no adjustment).  cam->z_near/far are ignored.
  *  @return as swarp_setup. */
 SWARP_API swarp_status swarp_setup_range(const swarp_camera* cam, const swarp_light* light,
-                                         const swarp_aabb* scene, double near, double far,
+                                         const swarp_aabb* scene, double z_near, double z_far,
                                          const swarp_setup_options* opts, swarp_setup_result* out,
                                          swarp_vec3* out_points, size_t capacity,
                                          size_t* out_count);
@@ -623,7 +623,7 @@ SWARP_API swarp_status swarp_setup_range(const swarp_camera* cam, const swarp_li
 SWARP_API swarp_status swarp_setup_points(const swarp_camera* cam, const swarp_light* light,
                                           const swarp_vec3* points, size_t count,
                                           const swarp_vec3* receivers, size_t receiver_count,
-                                          double near, double far,
+                                          double z_near, double z_far,
                                           const swarp_setup_options* opts,
                                           swarp_setup_result* out);
 
@@ -642,12 +642,12 @@ SWARP_API swarp_status swarp_setup_points(const swarp_camera* cam, const swarp_l
  *          SWARP_ERR_DEGENERATE (up parallel to dir), SWARP_ERR_UNKNOWN_ENUM,
  *          SWARP_ERR_RESERVED_NONZERO, SWARP_ERR_OUT_OF_RANGE): the statuses
  *          of the experimental swarp_body_h and swarp_body_from_h. */
-SWARP_API swarp_status swarp_body_points(const swarp_camera* cam, double near, double far,
+SWARP_API swarp_status swarp_body_points(const swarp_camera* cam, double z_near, double z_far,
                                          const swarp_light* light, const swarp_aabb* scene,
                                          swarp_vec3* out, size_t capacity, size_t* out_count);
 
 /** @brief Adjusted near/far [RHS] §3.3.1 ([ZSN07]): min and max view depth
- *  over the points of H = V ∩ S (view frustum cam->near..cam->far).
+ *  over the points of H = V ∩ S (view frustum cam->z_near..cam->z_far).
  *  @return SWARP_OK, SWARP_ERR_BODY_EMPTY, SWARP_ERR_BOX_DEGENERATE, and the
  *          argument errors of the camera and box (SWARP_ERR_NULL_POINTER,
  *          SWARP_ERR_NON_FINITE, SWARP_ERR_FOV, SWARP_ERR_NEAR_FAR,
@@ -766,7 +766,7 @@ typedef struct swarp_warp_info {
  *          light_view that is not a rigid look-at and not invertible; a
  *          look-at is inverted exactly). */
 SWARP_API swarp_status swarp_warp_lispsm(const swarp_mat4* light_view, const swarp_camera* cam,
-                                         double near, double far, const swarp_vec3* points,
+                                         double z_near, double z_far, const swarp_vec3* points,
                                          size_t count, const swarp_vec3* nearest,
                                          const swarp_warp_options* opts,
                                          swarp_mat4* out_P, swarp_warp_info* out_info);
@@ -971,8 +971,8 @@ SWARP_API swarp_status swarp_measure_max(const swarp_camera* cam, double z_near,
  *  (0, pi/2) (SWARP_ERR_FOV).  near/far are the range [n, f] the curve refers
  *  to (SWARP_ERR_NEAR_FAR unless 0 < near < far).  _reserved must be zero. */
 typedef struct swarp_error_config {
-    double near;
-    double far;
+    double z_near;
+    double z_far;
     double theta;
     double res_ix;
     double res_iy;
@@ -1010,7 +1010,7 @@ SWARP_API swarp_status swarp_error_max(const swarp_error_config* cfg, double n_p
  *  split i covers [splits[i], splits[i+1]] with its own warp n_primes[i] and
  *  a full map of res_s x res_t (the metric evaluated with n = splits[i],
  *  f = splits[i+1]).  splits has m + 1 strictly increasing entries, the first
- *  > 0 (cfg->near/far are ignored).  Evaluates at each z[k] in
+ *  > 0 (cfg->z_near/far are ignored).  Evaluates at each z[k] in
  *  [splits[0], splits[m]] (a z on a border belongs to the split that starts
  *  there; splits[m] to the last split).  out_mx or out_mz may be NULL; z may
  *  be NULL when count is 0.
@@ -1511,7 +1511,7 @@ typedef struct swarp_cascade_options {
                                             directional light; its depth field is
                                             ignored (setup.depth_range is used).
                                             SPHERE and LEVELS split the camera's own
-                                            near..far: no adjustment and no min_depth,
+                                            near..z_far: no adjustment and no min_depth,
                                             since [RHS] §3.5 needs constant split
                                             ranges (the adjusted far moves with the
                                             camera and the texels would drift) */
@@ -1525,7 +1525,7 @@ typedef struct swarp_cascade_options {
 
 /** One split of a cascade. */
 typedef struct swarp_cascade_split {
-    double near, far;          /**< C_i, C_{i+1}: eye-space depth range */
+    double z_near, z_far;          /**< C_i, C_{i+1}: eye-space depth range */
     swarp_mat4 matrix;         /**< world -> split clip space (stabilised: takes p - origin) */
     swarp_mat4 atlas_matrix;   /**< tile.clip_to_atlas * matrix: world -> atlas texture
                                     coordinates (homogeneous; divide by w) */
@@ -1955,7 +1955,7 @@ typedef struct swarp_polyhedron {
 SWARP_API swarp_status swarp_poly_from_aabb(const swarp_aabb* box, swarp_polyhedron* out);
 
 /** @brief The camera's view frustum V between view depths near and far
- *  (world units along cam->dir; cam->near/far are ignored, so a split
+ *  (world units along cam->dir; cam->z_near/far are ignored, so a split
  *  frustum [RHS] §3.3 is the same call).
  *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
  *          SWARP_ERR_FOV, SWARP_ERR_NEAR_FAR, SWARP_ERR_ZERO_VECTOR,
@@ -1963,9 +1963,9 @@ SWARP_API swarp_status swarp_poly_from_aabb(const swarp_aabb* box, swarp_polyhed
  *          SWARP_ERR_RESERVED_NONZERO, SWARP_ERR_OUT_OF_RANGE (aspect <= 0, or a
  *          corner beyond the double range: |eye| + far·|(1, tan, aspect·tan)|
  *          over DBL_MAX). */
-SWARP_API swarp_status swarp_poly_from_camera_range(const swarp_camera* cam, double near,
-                                                    double far, swarp_polyhedron* out);
-/** @brief The camera's view frustum V between cam->near and cam->far. */
+SWARP_API swarp_status swarp_poly_from_camera_range(const swarp_camera* cam, double z_near,
+                                                    double z_far, swarp_polyhedron* out);
+/** @brief The camera's view frustum V between cam->z_near and cam->z_far. */
 SWARP_API swarp_status swarp_poly_from_camera(const swarp_camera* cam, swarp_polyhedron* out);
 
 /** @brief The frustum whose clip cube is mapped to world space by an inverse
@@ -1995,7 +1995,7 @@ SWARP_API swarp_status swarp_poly_clip_aabb(const swarp_polyhedron* in, const sw
  *  @return SWARP_OK, SWARP_ERR_BODY_EMPTY (the frustum misses the box,
  *          e.g. the camera looks away from it), SWARP_ERR_BOX_DEGENERATE,
  *          and the statuses of swarp_poly_from_camera_range. */
-SWARP_API swarp_status swarp_body_h(const swarp_camera* cam, double near, double far,
+SWARP_API swarp_status swarp_body_h(const swarp_camera* cam, double z_near, double z_far,
                                     const swarp_aabb* scene, swarp_polyhedron* out_H);
 
 /** @brief B from H.  [RHS] §3.1.1 (Fig. 3.2).  Directional light: H extruded
@@ -2481,7 +2481,7 @@ typedef struct swarp_plan {
     uint32_t inverse_projection;      /**< 1: PSM with the light behind the camera [KOZ] */
     uint32_t depth_clamp;             /**< 1: clamp casters to the light near plane */
     double gamma;                     /**< angle view dir / direction to the light, rad in [0, pi] */
-    double near, far;                 /**< the view depth range planned for (after adjustment) */
+    double z_near, z_far;                 /**< the view depth range planned for (after adjustment) */
     double splits[SWARP_PLAN_MAX_SPLITS + 1]; /**< C_0 = near .. C_K = far */
     double n_prime[SWARP_PLAN_MAX_SPLITS];    /**< warp parameter per split in light-space
                                                    units; +INFINITY = uniform */

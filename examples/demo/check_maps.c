@@ -56,8 +56,8 @@ int demo_check_iou(const demo_options* o) {
     v.cam.up = (swarp_vec3){0, 1, 0};
     v.cam.fovy = 50 * DEMO_DEG;
     v.cam.aspect = (double)v.w / v.h;
-    v.cam.near = 1;
-    v.cam.far = 150;
+    v.cam.z_near = 1;
+    v.cam.z_far = 150;
     v.light.type = SWARP_LIGHT_DIRECTIONAL;
     demo_view_update(&v);
     demo_renderer r;

@@ -141,10 +141,10 @@ static int mindepth_clips_nothing(const demo_options* o, demo_renderer* r,
         ok = 0;
     } else {
         errs += demo_render_shadow(r, &sh, DEMO_FILTER_NONE, NULL);
-        const double nears[3] = {v->cam.near, md->adjusted_near, 1.05 * md->gpu_min};
+        const double nears[3] = {v->cam.z_near, md->adjusted_near, 1.05 * md->gpu_min};
         for (int k = 0; k < 3; ++k) {
             demo_view vk = *v;
-            vk.cam.near = nears[k];
+            vk.cam.z_near = nears[k];
             demo_view_update(&vk);
             errs += eye_depths(r, &vk, &sh, tex, pos, d[k]);
         }

@@ -157,8 +157,8 @@ static void entry_report(gallery* g, int t, demo_technique tt, const demo_option
         printf("planned        rendered %d shadow passes (%s, filter %s) over [%.3g, %.3g]; "
                "the plan asks for %u over [%.3g, %.3g]\n",
                res->passes - 1, demo_technique_name(tt), demo_filter_name(q->filter),
-               res->sh.near, res->sh.far, plan->plan.shadow_passes, plan->plan.near,
-               plan->plan.far);
+               res->sh.z_near, res->sh.z_far, plan->plan.shadow_passes, plan->plan.z_near,
+               plan->plan.z_far);
         if (g->rep) g->rep->planned_passes = res->passes - 1;
     }
     if (g->single) {

@@ -16,7 +16,7 @@ void demo_view_update(demo_view* v) {
     vec3 up = {(float)c->up.x, (float)c->up.y, (float)c->up.z};
     mat4 view, proj;
     glm_look(eye, dir, up, view);
-    glm_perspective((float)c->fovy, (float)c->aspect, (float)c->near, (float)c->far, proj);
+    glm_perspective((float)c->fovy, (float)c->aspect, (float)c->z_near, (float)c->z_far, proj);
     memcpy(v->view, view, sizeof v->view);
     memcpy(v->proj, proj, sizeof v->proj);
 }
@@ -82,7 +82,7 @@ int demo_measure(const demo_view* v, const demo_shadow* sh, int map_res, const f
     sample* all = malloc(sizeof *all * (size_t)h * COLS);
     if (!all) return 0;
     int n_all = 0;
-    double ln0 = log(sh->near), ln1 = log(sh->far);
+    double ln0 = log(sh->z_near), ln1 = log(sh->z_far);
     /* the centre columns (the view vector is the centre of the picture) */
     for (int dx = -COLS / 2; dx < COLS / 2; ++dx) {
         int x = w / 2 + dx;
@@ -105,7 +105,7 @@ int demo_measure(const demo_view* v, const demo_shadow* sh, int map_res, const f
             double dw_x = sqrt(pow(p2[0] - p0[0], 2) + pow(p2[1] - p0[1], 2) + pow(p2[2] - p0[2], 2));
             if (dst_z <= 0 || dst_x <= 0) continue;
             double z = 0.5 * ((double)t0[3] + t1[3]);
-            if (z < sh->near || z > sh->far) continue;
+            if (z < sh->z_near || z > sh->z_far) continue;
             int split = (int)t0[2];
             /* the sample must lie in the split the library's curve uses for
              * its z (depth selection): skip the pixel pairs that straddle a
@@ -174,7 +174,7 @@ int demo_error_graph(const demo_view* v, const demo_shadow* sh, int map_res,
     double zs[NS], mx[NS], mz[NS];
     double lo = INFINITY, hi = -INFINITY;
     for (int i = 0; i < NS; ++i) {
-        zs[i] = sh->near + (sh->far - sh->near) * i / (NS - 1.0);
+        zs[i] = sh->z_near + (sh->z_far - sh->z_near) * i / (NS - 1.0);
         if (demo_predict(sh, v->cam.fovy, v->w, v->h, map_res, zs[i], &mx[i], &mz[i])) {
             mx[i] = mz[i] = NAN;
             continue;
@@ -193,7 +193,7 @@ int demo_error_graph(const demo_view* v, const demo_shadow* sh, int map_res,
     /* log y axis over whole decades */
     double y0 = floor(log10(lo)), y1 = ceil(log10(hi));
     if (y1 <= y0) y1 = y0 + 1;
-#define PX(z) (L + ((z) - sh->near) / (sh->far - sh->near) * (W - L - R))
+#define PX(z) (L + ((z) - sh->z_near) / (sh->z_far - sh->z_near) * (W - L - R))
 #define PY(m) (H - B - (log10(m) - y0) / (y1 - y0) * (H - T - B))
     char buf[128];
     for (double d = y0; d <= y1 + 1e-9; d += 1) {

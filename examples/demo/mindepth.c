@@ -158,7 +158,7 @@ int demo_mindepth(demo_renderer* r, const demo_view* v, demo_mindepth_result* ou
     /* 3. the whole buffer read back and reduced on the CPU by the library */
     int rc = cpu_reductions(w, h, lvl0, out);
     out->gpu_min = gpu_min;
-    swarp_status s3 = swarp_mindepth_near(v->cam.near, v->cam.far, out->gpu_min, NULL,
+    swarp_status s3 = swarp_mindepth_near(v->cam.z_near, v->cam.z_far, out->gpu_min, NULL,
                                           &out->adjusted_near);
     if (swarp_status_is_error(s3)) rc = -1;
     glDeleteTextures(1, &lvl0);

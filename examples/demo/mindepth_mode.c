@@ -9,8 +9,8 @@
 int demo_mindepth_report(demo_renderer* r, const char* cam, const demo_view* v,
                          demo_mindepth_result* md) {
     int rc = demo_mindepth(r, v, md) ? 1 : 0;
-    printf("min depth of the view, camera %s (near %.3g, far %.3g):\n", cam, v->cam.near,
-           v->cam.far);
+    printf("min depth of the view, camera %s (near %.3g, far %.3g):\n", cam, v->cam.z_near,
+           v->cam.z_far);
     printf("  GPU 2x2 min chain (%d passes) %.6f   [depth pass %.2f ms, chain + 1-texel read-back "
            "%.2f ms]\n",
            md->levels, md->gpu_min, md->depth_pass_ms, md->chain_ms);
@@ -27,7 +27,7 @@ int demo_mindepth_report(demo_renderer* r, const char* cam, const demo_view* v,
  * lies in [camera near, min], so it clips nothing the camera saw. */
 int demo_mindepth_consistent(const demo_view* v, const demo_mindepth_result* md) {
     int same = md->gpu_min == md->cpu_pyramid_min && md->gpu_min == md->cpu_direct_min;
-    int safe = md->adjusted_near <= md->gpu_min && md->adjusted_near >= v->cam.near;
+    int safe = md->adjusted_near <= md->gpu_min && md->adjusted_near >= v->cam.z_near;
     if (!same || !safe || md->gl_errors)
         printf("  FAIL: %s%s%s\n", same ? "" : "GPU and CPU minima differ; ",
                safe ? "" : "adjusted near clips what the camera saw; ",
@@ -44,7 +44,7 @@ static int mindepth_sampling_picture(const demo_options* o, demo_renderer* r,
                                      const demo_mindepth_result* md, int k) {
     static const char* const names[3] = {"near", "adjusted", "pseudo"};
     demo_view vk = *v;
-    if (k == 1) vk.cam.near = md->adjusted_near;
+    if (k == 1) vk.cam.z_near = md->adjusted_near;
     demo_view_update(&vk);
     demo_options q = *o;
     q.pseudo_near = k == 2 ? 0.05 : 0;
@@ -66,13 +66,13 @@ static int mindepth_sampling_picture(const demo_options* o, demo_renderer* r,
              k == 0   ? "camera near"
              : k == 1 ? "adjusted near [RHS] 4.3"
                       : "pseudo-near 0.05 (4.2)",
-             res.sh.near, res.sh.predicted_max_mz);
+             res.sh.z_near, res.sh.predicted_max_mz);
     demo_image_label(&im, 8, 8, 1, cap);
     demo_image_sampling_legend(&im, 20, vk.h - 44, vk.w / 2 > 420 ? 420 : vk.w / 2);
     int rc = demo_write_png(o, label, "sampling", &im) ? 1 : 0;
     printf("  %-28s view range [%.3f, %.1f], n' %.3f, predicted max m_x %.3f, m_z %.3f -> "
            "%s/%s_sampling.png\n",
-           cap, res.sh.near, res.sh.far, res.sh.n_prime[0], res.sh.predicted_max_mx,
+           cap, res.sh.z_near, res.sh.z_far, res.sh.n_prime[0], res.sh.predicted_max_mx,
            res.sh.predicted_max_mz, o->out, label);
     if (res.gl_errors) rc = 1;
     demo_image_free(&im);

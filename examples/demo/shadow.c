@@ -80,7 +80,7 @@ static void viewer_matrix(const swarp_camera* cam, swarp_mat4* out) {
     vec3 up = {(float)cam->up.x, (float)cam->up.y, (float)cam->up.z};
     mat4 view, proj;
     glm_look(eye, dir, up, view);
-    glm_perspective((float)cam->fovy, (float)cam->aspect, (float)cam->near, (float)cam->far, proj);
+    glm_perspective((float)cam->fovy, (float)cam->aspect, (float)cam->z_near, (float)cam->z_far, proj);
     swarp_mat4 v, p;
     swarp_cglm_mat4_to_swarp(view, &v);
     swarp_cglm_mat4_to_swarp(proj, &p);
@@ -212,8 +212,8 @@ static const char* matrix_source(demo_technique t) {
 static void whole_view_maps(demo_shadow* sh, int count, demo_select select, swarp_status status,
                             const char* source) {
     sh->count = count;
-    sh->split[0] = sh->near;
-    sh->split[1] = sh->far;
+    sh->split[0] = sh->z_near;
+    sh->split[1] = sh->z_far;
     sh->select = select;
     sh->depth_clamp = 1;
     sh->model_applies = 0;
@@ -242,7 +242,7 @@ static int setup_lixel(const swarp_camera* cam, const swarp_light* light, const 
     }
     swarp_status sf;
     if (conventional_map(cam, light, scene, req, DEMO_TECH_UNIFORM, &sh->light[n],
-                         &sh->n_prime[n], &sh->near, &sh->far, NULL, NULL, &sf))
+                         &sh->n_prime[n], &sh->z_near, &sh->z_far, NULL, NULL, &sf))
         return -1;
     whole_view_maps(sh, n + 1, DEMO_SELECT_LIXEL, st != SWARP_OK ? st : sf,
                     n == 2 ? "library (swarp_lixel_* + uniform fallback)"
@@ -258,11 +258,11 @@ static int setup_cube(const swarp_camera* cam, const swarp_light* light, const s
     swarp_status st = SWARP_OK;
     double nprime;
     if (conventional_map(cam, light, scene, req, DEMO_TECH_UNIFORM, &sh->light[0],
-                         &nprime, &sh->near, &sh->far, sh->body, &sh->body_count, &st))
+                         &nprime, &sh->z_near, &sh->z_far, sh->body, &sh->body_count, &st))
         return -1;
     swarp_camera c2 = *cam;
-    c2.near = sh->near;
-    c2.far = sh->far;
+    c2.z_near = sh->z_near;
+    c2.z_far = sh->z_far;
     viewer_matrix(&c2, &sh->cube_camera);
     swarp_vec3 lp = light->type == SWARP_LIGHT_POINT ? light->position : light->direction;
     swarp_vec4 hl;
@@ -303,22 +303,22 @@ static int setup_cube(const swarp_camera* cam, const swarp_light* light, const s
 static int setup_stable(const swarp_camera* cam, const swarp_light* light,
                         const swarp_aabb* scene, const demo_shadow_request* req, demo_shadow* sh,
                         swarp_status* st) {
-    sh->near = cam->near;
-    sh->far = cam->far;
+    sh->z_near = cam->z_near;
+    sh->z_far = cam->z_far;
     size_t n = 0;
     swarp_status ss;
     if (req->scheme == DEMO_SCHEME_UNIFORM)
-        ss = swarp_split_uniform(sh->near, sh->far, (uint32_t)sh->count, sh->split,
+        ss = swarp_split_uniform(sh->z_near, sh->z_far, (uint32_t)sh->count, sh->split,
                                  DEMO_MAX_SPLITS + 1, &n);
     else if (req->scheme == DEMO_SCHEME_LOG)
-        ss = swarp_split_log(sh->near, sh->far, (uint32_t)sh->count, sh->split, DEMO_MAX_SPLITS + 1,
+        ss = swarp_split_log(sh->z_near, sh->z_far, (uint32_t)sh->count, sh->split, DEMO_MAX_SPLITS + 1,
                              &n);
     else if (req->scheme == DEMO_SCHEME_PSEUDO)
-        ss = swarp_split_pseudo(sh->near, sh->far, sh->near + req->scheme_np * (sh->far - sh->near),
-                                sh->far - req->scheme_fp * (sh->far - sh->near), req->scheme_lambda,
+        ss = swarp_split_pseudo(sh->z_near, sh->z_far, sh->z_near + req->scheme_np * (sh->z_far - sh->z_near),
+                                sh->z_far - req->scheme_fp * (sh->z_far - sh->z_near), req->scheme_lambda,
                                 (uint32_t)sh->count, sh->split, DEMO_MAX_SPLITS + 1, &n);
     else
-        ss = swarp_split_practical(sh->near, sh->far, req->scheme_lambda, (uint32_t)sh->count,
+        ss = swarp_split_practical(sh->z_near, sh->z_far, req->scheme_lambda, (uint32_t)sh->count,
                                    sh->split, DEMO_MAX_SPLITS + 1, &n);
     if (swarp_status_is_error(ss) || n != (size_t)sh->count + 1) {
         fprintf(stderr, "demo: split scheme: %s\n", swarp_status_string(ss));
@@ -369,8 +369,8 @@ static int setup_cascade(const swarp_camera* cam, const swarp_light* light,
                 swarp_status_string(sc));
         return -1;
     }
-    sh->near = cr.view_near;
-    sh->far = cr.view_far;
+    sh->z_near = cr.view_near;
+    sh->z_far = cr.view_far;
     for (int i = 0; i <= sh->count; ++i) sh->split[i] = cr.splits[i];
     for (int i = 0; i < sh->count; ++i) {
         sh->light[i] = cs[i].matrix;
@@ -386,8 +386,8 @@ static void predict_max_error(const swarp_camera* cam, const demo_shadow_request
                               demo_shadow* sh) {
     swarp_error_config cfg;
     memset(&cfg, 0, sizeof cfg);
-    cfg.near = sh->near;
-    cfg.far = sh->far;
+    cfg.z_near = sh->z_near;
+    cfg.z_far = sh->z_far;
     cfg.theta = 0.5 * cam->fovy;
     cfg.res_ix = req->screen_w;
     cfg.res_iy = req->screen_h;
@@ -432,11 +432,11 @@ int demo_shadow_setup(const swarp_camera* cam, const swarp_light* light,
         if (setup_cascade(cam, light, scene, req, t, &sh, &st)) return -1;
     } else {
         /* one map over the view's adjusted range [RHS] §3.3.1 */
-        if (conventional_map(cam, light, scene, req, t, &sh.light[0], &sh.n_prime[0], &sh.near,
-                             &sh.far, sh.body, &sh.body_count, &st))
+        if (conventional_map(cam, light, scene, req, t, &sh.light[0], &sh.n_prime[0], &sh.z_near,
+                             &sh.z_far, sh.body, &sh.body_count, &st))
             return -1;
-        sh.split[0] = sh.near;
-        sh.split[1] = sh.far;
+        sh.split[0] = sh.z_near;
+        sh.split[1] = sh.z_far;
     }
     predict_max_error(cam, req, &sh);
     sh.status = st;
@@ -453,8 +453,8 @@ int demo_predict(const demo_shadow* sh, double fovy, int w, int h, int map_res, 
     }
     swarp_error_config cfg;
     memset(&cfg, 0, sizeof cfg);
-    cfg.near = sh->near;
-    cfg.far = sh->far;
+    cfg.z_near = sh->z_near;
+    cfg.z_far = sh->z_far;
     cfg.theta = 0.5 * fovy;
     cfg.res_ix = w;
     cfg.res_iy = h;

@@ -64,7 +64,7 @@ typedef struct demo_shadow {
     swarp_mat4 light[DEMO_MAX_SPLITS];      /**< world -> light clip, per map */
     double split[DEMO_MAX_SPLITS + 1];      /**< eye-depth split distances C_i */
     double n_prime[DEMO_MAX_SPLITS];        /**< warp n' per map (INFINITY = uniform) */
-    double near, far;                       /**< eye-depth range the maps cover */
+    double z_near, z_far;                       /**< eye-depth range the maps cover */
     double predicted_max_mx, predicted_max_mz; /**< NAN when not available */
     swarp_status status;                    /**< library status of the setup */
     const char* source;                     /**< who computed the matrices */

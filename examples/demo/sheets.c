@@ -137,7 +137,7 @@ static int cube_rows(demo_renderer* r, const demo_view* v, const demo_scene* sce
     if (setup(v, scene, DEMO_TECH_PSM, map, &sh[0]) || setup(v, scene, DEMO_TECH_PSM_CUBE, map, &sh[1]))
         return 1;
     printf("  camera near %.2f: light in post-projective space (%.4g, %.4g, %.4g, %.4g), %d faces:",
-           v->cam.near, sh[1].cube_light.x, sh[1].cube_light.y, sh[1].cube_light.z, sh[1].cube_light.w,
+           v->cam.z_near, sh[1].cube_light.x, sh[1].cube_light.y, sh[1].cube_light.z, sh[1].cube_light.w,
            sh[1].count);
     for (int i = 0; i < sh[1].count; ++i)
         printf(" %s (d = %.3f)", face_name(sh[1].cube_face[i]), sh[1].cube_distance[i]);
@@ -156,9 +156,9 @@ static int cube_rows(demo_renderer* r, const demo_view* v, const demo_scene* sce
             if (c == 0) {
                 char lab[128];
                 if (row)
-                    snprintf(lab, sizeof lab, "PSM cube map, %d faces, near %.1f", sh[1].count, v->cam.near);
+                    snprintf(lab, sizeof lab, "PSM cube map, %d faces, near %.1f", sh[1].count, v->cam.z_near);
                 else
-                    snprintf(lab, sizeof lab, "PSM one map (unit cube clip), near %.1f", v->cam.near);
+                    snprintf(lab, sizeof lab, "PSM one map (unit cube clip), near %.1f", v->cam.z_near);
                 demo_image_label(&im, 8, 8, 2, lab);
             }
             blit_scaled(sheet, &im, c * cw, hdr + (row0 + row) * ch, cw, ch);
@@ -188,11 +188,11 @@ int demo_sheet_cube(demo_renderer* r, const demo_view* v, const demo_scene* scen
          * GPU min-depth chain measured ([RHS] §4.3: what PSM needs most) */
         rc |= cube_rows(r, &lv, scene, map, &sheet, 0, cw, ch, hdr);
         demo_mindepth_result md;
-        if (demo_mindepth(r, &lv, &md) || !(md.adjusted_near > lv.cam.near)) {
+        if (demo_mindepth(r, &lv, &md) || !(md.adjusted_near > lv.cam.z_near)) {
             fprintf(stderr, "demo: the min-depth chain gave no near plane\n");
             rc = 1;
         } else {
-            lv.cam.near = md.adjusted_near;
+            lv.cam.z_near = md.adjusted_near;
             demo_view_update(&lv);
             rc |= cube_rows(r, &lv, scene, map, &sheet, 2, cw, ch, hdr);
         }

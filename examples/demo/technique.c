@@ -60,8 +60,8 @@ static int light_view_picture(demo_renderer* r, const demo_view* v, const demo_s
         const uint8_t black[3] = {0, 0, 0};
         /* split frustum for cascades, the whole view for lixel maps */
         int whole = sh->select == DEMO_SELECT_LIXEL;
-        demo_draw_frustum(&t, &sh->light[i], v, whole ? sh->near : sh->split[i],
-                          whole ? sh->far : sh->split[i + 1], black, i == 0);
+        demo_draw_frustum(&t, &sh->light[i], v, whole ? sh->z_near : sh->split[i],
+                          whole ? sh->z_far : sh->split[i + 1], black, i == 0);
         char lab[32];
         snprintf(lab, sizeof lab, "map %d", i);
         if (k > 1) demo_image_label(&t, 6, 6, 1, lab);

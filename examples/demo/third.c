@@ -144,7 +144,7 @@ int demo_third_person(demo_renderer* r, const demo_view* v, const demo_shadow* s
     double hl = sqrt(d.x * d.x + d.z * d.z);
     swarp_vec3 dh = hl > 1e-6 ? (swarp_vec3){d.x / hl, 0, d.z / hl} : (swarp_vec3){0, 0, -1};
     swarp_vec3 right = {-dh.z, 0, dh.x};
-    double reach = fmin(sh->far, 700.0);
+    double reach = fmin(sh->z_far, 700.0);
     swarp_vec3 target = {c->eye.x + d.x * reach * 0.4, fmax(0.0, c->eye.y + d.y * reach * 0.4),
                          c->eye.z + d.z * reach * 0.4};
     swarp_vec3 eye3 = {c->eye.x - dh.x * reach * 0.3 + right.x * reach * 0.7,
@@ -190,14 +190,14 @@ int demo_third_person(demo_renderer* r, const demo_view* v, const demo_shadow* s
     int faces = 0;
     const uint8_t black[3] = {0, 0, 0}, magenta[3] = {230, 0, 230}, yellow[3] = {255, 230, 0};
     for (int i = 0; i < (cascade ? sh->count : 1); ++i) {
-        double d0 = cascade ? sh->split[i] : sh->near, d1 = cascade ? sh->split[i + 1] : sh->far;
+        double d0 = cascade ? sh->split[i] : sh->z_near, d1 = cascade ? sh->split[i + 1] : sh->z_far;
         int nf = draw_body(out, &M3, v, scene, d0, d1, cascade ? split_rgb[i % 4] : magenta);
         faces += nf > 0 ? nf : 0;
         if (cascade) demo_draw_frustum(out, &M3, v, d0, d1, split_rgb[i % 4], 0);
     }
     if (out_body_faces) *out_body_faces = faces;
     /* the view frustum (black) with the view vector (blue) */
-    demo_draw_frustum(out, &M3, v, sh->near, sh->far, black, 1);
+    demo_draw_frustum(out, &M3, v, sh->z_near, sh->z_far, black, 1);
     /* the points of B (magenta) */
     for (int i = 0; i < sh->body_count; ++i) {
         double x, y;

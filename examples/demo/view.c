@@ -14,8 +14,8 @@ int demo_camera_preset(const char* name, int w, int h, swarp_camera* c) {
     c->up.y = 1;
     c->fovy = 60 * DEMO_DEG;
     c->aspect = (double)w / h;
-    c->near = 1;
-    c->far = 800;
+    c->z_near = 1;
+    c->z_far = 800;
     if (!strcmp(name, "default")) {
         c->eye = (swarp_vec3){8, 28, 395};
         c->dir = (swarp_vec3){-0.02, -0.11, -1};
@@ -23,19 +23,19 @@ int demo_camera_preset(const char* name, int w, int h, swarp_camera* c) {
         /* horizontal view, the setting of Lloyd's error model */
         c->eye = (swarp_vec3){0, 20, 390};
         c->dir = (swarp_vec3){0, 0, -1};
-        c->far = 600;
+        c->z_far = 600;
     } else if (!strcmp(name, "street")) {
         c->eye = (swarp_vec3){0, 2, 385};
         c->dir = (swarp_vec3){0, 0.05, -1};
     } else if (!strcmp(name, "high")) {
         c->eye = (swarp_vec3){-220, 160, 390};
         c->dir = (swarp_vec3){220, -160, -480};
-        c->far = 1000;
+        c->z_far = 1000;
     } else if (!strcmp(name, "room")) {
         c->eye = (swarp_vec3){-52, 12, 48};
         c->dir = (swarp_vec3){-23, -11, -40};
-        c->near = 0.5;
-        c->far = 600;
+        c->z_near = 0.5;
+        c->z_far = 600;
     } else if (!strcmp(name, "path")) {
         /* a camera path file: presets' defaults, eye/dir set by the caller */
         c->eye = (swarp_vec3){0, 20, 390};

@@ -217,7 +217,7 @@ def _vec3(v):
 
 class Camera(ctypes.Structure):
     _fields_ = [("eye", Vec3), ("dir", Vec3), ("up", Vec3), ("fovy", ctypes.c_double),
-                ("aspect", ctypes.c_double), ("near", ctypes.c_double), ("far", ctypes.c_double),
+                ("aspect", ctypes.c_double), ("z_near", ctypes.c_double), ("z_far", ctypes.c_double),
                 ("_reserved", ctypes.c_uint32 * 4)]
 
     def __init__(self, eye=(0, 0, 0), dir=(0, 0, -1), up=(0, 1, 0), fovy=math.pi / 3,
@@ -241,7 +241,7 @@ class Light(ctypes.Structure):
 
 class ErrorConfig(ctypes.Structure):
     """Inputs of Lloyd's error metric [RHS] (2.3)-(2.8)."""
-    _fields_ = [("near", ctypes.c_double), ("far", ctypes.c_double), ("theta", ctypes.c_double),
+    _fields_ = [("z_near", ctypes.c_double), ("z_far", ctypes.c_double), ("theta", ctypes.c_double),
                 ("res_ix", ctypes.c_double), ("res_iy", ctypes.c_double),
                 ("res_s", ctypes.c_double), ("res_t", ctypes.c_double),
                 ("_reserved", ctypes.c_uint32 * 4)]
@@ -341,7 +341,7 @@ _error_split_max = _fn("swarp_error_split_max",
 
 
 def error_mx(cfg, z, n_prime):
-    """[RHS] (2.3); n_prime = cfg.near gives PSM (2.5), math.inf uniform (2.7)."""
+    """[RHS] (2.3); n_prime = cfg.z_near gives PSM (2.5), math.inf uniform (2.7)."""
     out = ctypes.c_double()
     st = _check(_error_mx(ctypes.byref(cfg), z, n_prime, ctypes.byref(out)), "swarp_error_mx")
     return _float(out.value, st)
@@ -642,7 +642,7 @@ class Plan(ctypes.Structure):
                 ("map_resolution", ctypes.c_uint32), ("atlas_tiles", ctypes.c_uint32),
                 ("stabilize", ctypes.c_int32), ("inverse_projection", ctypes.c_uint32),
                 ("depth_clamp", ctypes.c_uint32), ("gamma", ctypes.c_double),
-                ("near", ctypes.c_double), ("far", ctypes.c_double),
+                ("z_near", ctypes.c_double), ("z_far", ctypes.c_double),
                 ("splits", ctypes.c_double * (PLAN_MAX_SPLITS + 1)),
                 ("n_prime", ctypes.c_double * PLAN_MAX_SPLITS),
                 ("split_max_mx", ctypes.c_double * PLAN_MAX_SPLITS),

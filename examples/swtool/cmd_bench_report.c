@@ -101,8 +101,8 @@ static void br_scene(double gamma_deg, double fn, int floor, swarp_scene_needs* 
     n->camera.up = (swarp_vec3){0.0, 1.0, 0.0};
     n->camera.fovy = 60.0 * SW_DEG;
     n->camera.aspect = 4.0 / 3.0;
-    n->camera.near = 1.0;
-    n->camera.far = fn;
+    n->camera.z_near = 1.0;
+    n->camera.z_far = fn;
     n->light.type = SWARP_LIGHT_DIRECTIONAL;
     n->light.direction = (swarp_vec3){0.0, -sin(gamma_deg * SW_DEG), cos(gamma_deg * SW_DEG)};
     n->screen_width = 1024;
@@ -137,12 +137,12 @@ static swarp_status br_setup_once(const br_tech* t, const swarp_scene_needs* n, 
     uint32_t K = t->K ? t->K : 1;
     swarp_status s = SWARP_OK;
     if (K == 1) {
-        splits[0] = n->camera.near;
-        splits[1] = n->camera.far;
+        splits[0] = n->camera.z_near;
+        splits[1] = n->camera.z_far;
     } else if (t->scheme == SWARP_PLAN_SCHEME_LOG) {
-        s = swarp_split_log(n->camera.near, n->camera.far, K, splits, SWARP_PLAN_MAX_SPLITS + 1, &cnt);
+        s = swarp_split_log(n->camera.z_near, n->camera.z_far, K, splits, SWARP_PLAN_MAX_SPLITS + 1, &cnt);
     } else {
-        s = swarp_split_practical(n->camera.near, n->camera.far, 0.5, K, splits, SWARP_PLAN_MAX_SPLITS + 1, &cnt);
+        s = swarp_split_practical(n->camera.z_near, n->camera.z_far, 0.5, K, splits, SWARP_PLAN_MAX_SPLITS + 1, &cnt);
     }
     if (swarp_status_is_error(s)) return s;
     swarp_setup_options o;
@@ -196,7 +196,7 @@ static swarp_status br_setup_once(const br_tech* t, const swarp_scene_needs* n, 
                          -(sd.x * c->eye.x + sd.y * c->eye.y + sd.z * c->eye.z),
                          -(u.x * c->eye.x + u.y * c->eye.y + u.z * c->eye.z),
                          f.x * c->eye.x + f.y * c->eye.y + f.z * c->eye.z, 1}};
-        double tt = 1.0 / tan(0.5 * c->fovy), nn = c->near, ff = c->far;
+        double tt = 1.0 / tan(0.5 * c->fovy), nn = c->z_near, ff = c->z_far;
         swarp_mat4 P = {{tt / c->aspect, 0, 0, 0, 0, tt, 0, 0, 0, 0, -(ff + nn) / (ff - nn), -1, 0, 0,
                          -2.0 * ff * nn / (ff - nn), 0}};
         swarp_mat4 Mv, Ml;

@@ -124,8 +124,8 @@ int cmd_stabwalk(sw_args* a) {
         cam.up.y = 1.0;
         cam.fovy = 60.0 * SW_DEG;
         cam.aspect = 16.0 / 9.0;
-        cam.near = n;
-        cam.far = f;
+        cam.z_near = n;
+        cam.z_far = f;
         swarp_vec3 body[8];
         walk_corners(&cam, n, f, body);
         double st[3][2];
@@ -210,8 +210,8 @@ static int cascade_model(sw_args* a) {
     }
     swarp_error_config cfg;
     memset(&cfg, 0, sizeof cfg);
-    cfg.near = n;
-    cfg.far = f;
+    cfg.z_near = n;
+    cfg.z_far = f;
     cfg.theta = 0.5 * fovy * SW_DEG;
     cfg.res_ix = iw > ih ? iw : ih;
     cfg.res_iy = iw > ih ? ih : iw;
@@ -326,8 +326,8 @@ static int cascade_scene(sw_args* a) {
     if (!cli_vec3(a, "eye", 1, &cam.eye) || !cli_vec3(a, "dir", 1, &cam.dir)) return 2;
     cam.up = (swarp_vec3){0, 1, 0};
     if (!cli_vec3(a, "up", 0, &cam.up) || !cli_double(a, "fovy", 60.0, &fovy_deg) ||
-        !cli_double(a, "aspect", 16.0 / 9.0, &cam.aspect) || !cli_double(a, "near", 1.0, &cam.near) ||
-        !cli_double(a, "far", 100.0, &cam.far) || !cli_uint(a, "map", 1024, &map) ||
+        !cli_double(a, "aspect", 16.0 / 9.0, &cam.aspect) || !cli_double(a, "near", 1.0, &cam.z_near) ||
+        !cli_double(a, "far", 100.0, &cam.z_far) || !cli_uint(a, "map", 1024, &map) ||
         !cli_size(a, "screen", 1920, 1080, &sw, &sh) || !cli_uint(a, "splits", 4, &K) ||
         !cli_double(a, "kernel", 1.0, &kernel) || !cli_uint(a, "samples", 64, &samples) ||
         !cli_vec3(a, "origin", 0, &o.stabilize.origin) || !cli_double(a, "min-depth", 0.0, &o.setup.min_depth))
@@ -411,8 +411,8 @@ static int cascade_scene(sw_args* a) {
         }
         swarp_error_config cfg;
         memset(&cfg, 0, sizeof cfg);
-        cfg.near = r.view_near;
-        cfg.far = r.view_far;
+        cfg.z_near = r.view_near;
+        cfg.z_far = r.view_far;
         cfg.theta = 0.5 * cam.fovy;
         cfg.res_ix = sw > sh ? sw : sh;
         cfg.res_iy = sw > sh ? sh : sw;
@@ -438,8 +438,8 @@ static int cascade_scene(sw_args* a) {
         for (size_t i = 0; i < n; ++i) {
             json_open_obj();
             json_kv_str("status", swarp_status_name(sp[i].status));
-            json_kv_num("near", sp[i].near);
-            json_kv_num("far", sp[i].far);
+            json_kv_num("near", sp[i].z_near);
+            json_kv_num("far", sp[i].z_far);
             json_kv_mat("matrix", &sp[i].matrix);
             json_kv_mat("atlas_matrix", &sp[i].atlas_matrix);
             double vp[4] = {sp[i].tile.viewport_x, sp[i].tile.viewport_y, sp[i].tile.viewport_width,
@@ -475,7 +475,7 @@ static int cascade_scene(sw_args* a) {
     printf("whole       max m_x %.6g, max m_z %.6g\n", r.max_mx, r.max_mz);
     for (size_t i = 0; i < n; ++i) {
         const swarp_cascade_split* q = &sp[i];
-        printf("\nsplit %zu     [%.9g, %.9g]  %s\n", i, q->near, q->far, swarp_status_name(q->status));
+        printf("\nsplit %zu     [%.9g, %.9g]  %s\n", i, q->z_near, q->z_far, swarp_status_name(q->status));
         printf("  n'         %.9g\n", q->n_eye);
         printf("  viewport   %g,%g %gx%g\n", q->tile.viewport_x, q->tile.viewport_y, q->tile.viewport_width,
                q->tile.viewport_height);

@@ -41,7 +41,7 @@ static int plan_inputs(const sw_args* a, swarp_scene_needs* n, swarp_budget* b) 
     memset(b, 0, sizeof *b);
     double fovy, gamma;
     if (!cli_double(a, "fovy", 60.0, &fovy) || !cli_double(a, "aspect", 4.0 / 3.0, &n->camera.aspect) ||
-        !cli_double(a, "near", 1.0, &n->camera.near) || !cli_double(a, "far", 100.0, &n->camera.far) ||
+        !cli_double(a, "near", 1.0, &n->camera.z_near) || !cli_double(a, "far", 100.0, &n->camera.z_far) ||
         !cli_double(a, "gamma", 90.0, &gamma))
         return 0;
     n->camera.fovy = fovy * SW_DEG;
@@ -120,8 +120,8 @@ static void print_json(const struct swarp_plan* p, swarp_status s, const char* t
     json_kv_num("inverse_projection", p->inverse_projection);
     json_kv_num("depth_clamp", p->depth_clamp);
     json_kv_num("gamma_deg", p->gamma / SW_DEG);
-    json_kv_num("near", p->near);
-    json_kv_num("far", p->far);
+    json_kv_num("near", p->z_near);
+    json_kv_num("far", p->z_far);
     json_kv_arr("splits", p->splits, p->split_count + 1);
     json_kv_arr("n_prime", p->n_prime, p->split_count);
     json_kv_arr("split_max_mx", p->split_max_mx, p->split_count);

@@ -37,7 +37,7 @@ int cmd_setup(sw_args* a) {
     cam.up = (swarp_vec3){0, 1, 0};
     if (!cli_vec3(a, "up", 0, &cam.up)) return 2;
     if (!cli_double(a, "fovy", 60.0, &fovy_deg) || !cli_double(a, "aspect", 16.0 / 9.0, &cam.aspect) ||
-        !cli_double(a, "near", 1.0, &cam.near) || !cli_double(a, "far", 100.0, &cam.far))
+        !cli_double(a, "near", 1.0, &cam.z_near) || !cli_double(a, "far", 100.0, &cam.z_far))
         return 2;
     cam.fovy = fovy_deg * SW_DEG;
     const char* ld = cli_opt(a, "light-dir");

@@ -300,13 +300,13 @@ static void sw_kernel_scale(const swarp_mat4* M, swarp_vec3 c, double r_l, doubl
 static swarp_status sw_split_errors(const swarp_camera* cam, const swarp_setup_options* so,
                                     swarp_cascade_split* sp) {
     swarp_error_config cfg;
-    sw_setup_error_config(so, sw_half_fovy(cam->fovy), sp->near, sp->far, &cfg);
+    sw_setup_error_config(so, sw_half_fovy(cam->fovy), sp->z_near, sp->z_far, &cfg);
     swarp_status st = swarp_error_max(&cfg, sp->n_eye, &sp->max_mx, &sp->max_mz);
     if (swarp_status_is_error(st)) return st;
-    if (swarp_status_is_error(st = swarp_error_mx(&cfg, sp->near, sp->n_eye, &sp->mx_start))) return st;
-    if (swarp_status_is_error(st = swarp_error_mz(&cfg, sp->near, sp->n_eye, &sp->mz_start))) return st;
-    if (swarp_status_is_error(st = swarp_error_mx(&cfg, sp->far, sp->n_eye, &sp->mx_end))) return st;
-    if (swarp_status_is_error(st = swarp_error_mz(&cfg, sp->far, sp->n_eye, &sp->mz_end))) return st;
+    if (swarp_status_is_error(st = swarp_error_mx(&cfg, sp->z_near, sp->n_eye, &sp->mx_start))) return st;
+    if (swarp_status_is_error(st = swarp_error_mz(&cfg, sp->z_near, sp->n_eye, &sp->mz_start))) return st;
+    if (swarp_status_is_error(st = swarp_error_mx(&cfg, sp->z_far, sp->n_eye, &sp->mx_end))) return st;
+    if (swarp_status_is_error(st = swarp_error_mz(&cfg, sp->z_far, sp->n_eye, &sp->mz_end))) return st;
     return SWARP_OK;
 }
 
@@ -378,7 +378,7 @@ static swarp_status sw_check_cascade_scene(const sw_cascade_run* c) {
     if ((st = sw_check_camera_shape(c->cam)) != SWARP_OK) return st;
     if ((st = sw_check_light(c->light)) != SWARP_OK) return st;
     if ((st = sw_check_setup_options(&c->o.setup)) != SWARP_OK) return st;
-    if ((st = sw_check_view_range(c->cam->near, c->cam->far)) != SWARP_OK) return st;
+    if ((st = sw_check_view_range(c->cam->z_near, c->cam->z_far)) != SWARP_OK) return st;
     if ((st = sw_check_box(c->scene)) != SWARP_OK) return st;
     if (c->smode != SWARP_STABILIZE_NONE) {
         /* [RHS] §3.5: both solutions need the uniform texel grid */
@@ -415,27 +415,27 @@ static swarp_status sw_cascade_split_range(sw_cascade_run* c, swarp_cascade_resu
     swarp_status st;
     /* [RHS] §4.3: a measured min depth moves the near plane out, as in
      * swarp_setup; not for stabilised maps (constant ranges, below) */
-    double cam_near = cam->near;
+    double cam_near = cam->z_near;
     if (c->o.setup.min_depth > 0.0 && c->smode == SWARP_STABILIZE_NONE) {
-        st = swarp_mindepth_near(cam->near, cam->far, c->o.setup.min_depth, NULL, &cam_near);
+        st = swarp_mindepth_near(cam->z_near, cam->z_far, c->o.setup.min_depth, NULL, &cam_near);
         if (swarp_status_is_error(st)) return st;
     }
     /* H and the adjusted range camera-relative, as swarp_setup computes
      * them (the same view range); H then back in world coordinates */
     double n_adj, f_adj;
-    if ((st = sw_body_h_eye(cam, cam_near, cam->far, c->scene, &c->H, &n_adj, &f_adj)) != SWARP_OK) return st;
+    if ((st = sw_body_h_eye(cam, cam_near, cam->z_far, c->scene, &c->H, &n_adj, &f_adj)) != SWARP_OK) return st;
     sw_poly_translate(&c->H, cam->eye);
     sw_camera_basis(cam, &c->cam_f, &c->cam_r, &c->cam_u);
     n_adj = sw_max(n_adj, cam_near);
-    f_adj = sw_min(sw_max(f_adj, n_adj), cam->far);
+    f_adj = sw_min(sw_max(f_adj, n_adj), cam->z_far);
     if (c->smode != SWARP_STABILIZE_NONE) {
         /* [RHS] §3.5: both solutions need constant split ranges, so no
          * view frustum adjustment: split the camera's own [near, far].
          * The adjusted far moves with the camera (by fractions of a unit
          * per frame in a walk), which would move every split border, the
          * sphere and the level size, and the texels would drift. */
-        n_adj = cam->near;
-        f_adj = cam->far;
+        n_adj = cam->z_near;
+        f_adj = cam->z_far;
     }
     if (!(f_adj > n_adj)) {
         /* H lies in one view plane: keep a sliver, as swarp_setup does */
@@ -479,7 +479,7 @@ static swarp_setup_options sw_split_setup_options(const sw_cascade_run* c, uint3
         }
     } else if (so.param == SWARP_WARP_PARAM_PSEUDO && c->K > 1) {
         /* the fractions of the whole range become fractions of the split's */
-        const double whole = res->view_far - res->view_near, len = s->far - s->near;
+        const double whole = res->view_far - res->view_near, len = s->z_far - s->z_near;
         so.pseudo_near = i == 0 ? fmin(c->o.setup.pseudo_near * whole / len, SW_PSEUDO_MAX_FRACTION) : 0.0;
         so.pseudo_far = i + 1 == c->K ? fmin(c->o.setup.pseudo_far * whole / len, SW_PSEUDO_MAX_FRACTION) : 0.0;
     }
@@ -494,11 +494,11 @@ static swarp_status sw_split_body_matrix(sw_cascade_run* c, const swarp_cascade_
     swarp_status st;
     const swarp_polyhedron* hp = &c->H;
     if (i > 0) {
-        if ((st = sw_poly_clip(hp, sw_scale(c->cam_f, -1.0), f_dot_eye + s->near, &c->Hi)) != SWARP_OK) return st;
+        if ((st = sw_poly_clip(hp, sw_scale(c->cam_f, -1.0), f_dot_eye + s->z_near, &c->Hi)) != SWARP_OK) return st;
         hp = &c->Hi;
     }
     if (i + 1 < c->K) {
-        if ((st = sw_poly_clip(hp, c->cam_f, -f_dot_eye - s->far, &c->Hi)) != SWARP_OK) return st;
+        if ((st = sw_poly_clip(hp, c->cam_f, -f_dot_eye - s->z_far, &c->Hi)) != SWARP_OK) return st;
         hp = &c->Hi;
     }
     if (hp->vertex_count == 0 && c->smode == SWARP_STABILIZE_LEVELS) {
@@ -511,7 +511,7 @@ static swarp_status sw_split_body_matrix(sw_cascade_run* c, const swarp_cascade_
         fr.u = c->cam_u;
         fr.tan_half = tan(0.5 * c->cam->fovy);
         fr.aspect = c->cam->aspect;
-        sw_frustum_corners(&fr, s->near, s->far, c->pts_buf);
+        sw_frustum_corners(&fr, s->z_near, s->z_far, c->pts_buf);
         c->pts = c->pts_buf;
         c->npts = 8;
         sw_identity(&c->sr.matrix); /* replaced by the stabiliser */
@@ -530,7 +530,7 @@ static swarp_status sw_split_body_matrix(sw_cascade_run* c, const swarp_cascade_
         hp = &c->Hi;
     }
     st = swarp_setup_points(c->cam, c->light, c->Bi.vertices, c->Bi.vertex_count, hp->vertices, hp->vertex_count,
-                            s->near, s->far, so, &c->sr);
+                            s->z_near, s->z_far, so, &c->sr);
     if (swarp_status_is_error(st)) return st;
     c->pts = c->Bi.vertices;
     c->npts = c->Bi.vertex_count;
@@ -552,7 +552,7 @@ static swarp_status sw_split_matrix(sw_cascade_run* c, const swarp_cascade_split
     }
     if (c->single) return single_st;
     if (so->technique == SWARP_TECHNIQUE_PSM) {
-        swarp_status st = swarp_setup_range(c->cam, c->light, c->scene, s->near, s->far, so, &c->sr, c->pts_buf,
+        swarp_status st = swarp_setup_range(c->cam, c->light, c->scene, s->z_near, s->z_far, so, &c->sr, c->pts_buf,
                                             SWARP_BODY_MAX_POINTS, &c->npts);
         c->pts = c->pts_buf;
         if (st == SWARP_ERR_BODY_EMPTY) return SWARP_ERR_SPLIT_EMPTY;
@@ -569,7 +569,7 @@ static swarp_status sw_split_stabilize(const sw_cascade_run* c, swarp_cascade_sp
     memset(&rep, 0, sizeof rep);
     swarp_stabilize_options sto = c->o.stabilize;
     sto.depth = c->o.setup.depth_range;
-    swarp_status st = swarp_stabilize_directional(c->cam, s->near, s->far, &c->light->direction, c->pts, c->npts,
+    swarp_status st = swarp_stabilize_directional(c->cam, s->z_near, s->z_far, &c->light->direction, c->pts, c->npts,
                                                   c->scene, c->tile_res, &sto, &s->matrix, &rep);
     if (swarp_status_is_error(st)) return st;
     if (st != SWARP_OK) {
@@ -629,8 +629,8 @@ static swarp_status sw_cascade_splits_compute(sw_cascade_run* c, swarp_status si
     for (uint32_t i = 0; i < c->K; ++i) {
         swarp_cascade_split* s = &sp[i];
         swarp_vec3 sphere_center = sw_v3(0, 0, 0);
-        s->near = res->splits[i];
-        s->far = res->splits[i + 1];
+        s->z_near = res->splits[i];
+        s->z_far = res->splits[i + 1];
         const swarp_setup_options so = sw_split_setup_options(c, i, nu, sp, res);
         st = sw_split_matrix(c, s, i, f_dot_eye, &so, single_st);
         if (swarp_status_is_error(st)) return st;

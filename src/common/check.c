@@ -36,7 +36,7 @@ swarp_status sw_check_view_range(double near, double far) {
 swarp_status sw_check_camera(const swarp_camera* cam) {
     swarp_status s = sw_check_camera_shape(cam);
     if (s != SWARP_OK) return s;
-    return sw_check_view_range(cam->near, cam->far);
+    return sw_check_view_range(cam->z_near, cam->z_far);
 }
 
 /* A direction the caller must give: finite and not zero. */
@@ -145,8 +145,8 @@ void sw_setup_error_config(const swarp_setup_options* o, double theta, double ne
     const uint32_t sw = o->screen_width ? o->screen_width : SW_DEFAULT_SCREEN_W;
     const uint32_t sh = o->screen_height ? o->screen_height : SW_DEFAULT_SCREEN_H;
     memset(cfg, 0, sizeof *cfg);
-    cfg->near = near;
-    cfg->far = far;
+    cfg->z_near = near;
+    cfg->z_far = far;
     cfg->theta = theta;
     cfg->res_ix = sw > sh ? sw : sh;
     cfg->res_iy = sw > sh ? sh : sw;

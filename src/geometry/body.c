@@ -682,13 +682,13 @@ SWARP_API swarp_status swarp_body_adjusted_range(const swarp_camera* cam, const 
     /* camera-relative, as swarp_setup: the same adjusted range */
     swarp_polyhedron H;
     double mn, mx;
-    s = sw_body_h_eye(cam, cam->near, cam->far, scene, &H, &mn, &mx);
+    s = sw_body_h_eye(cam, cam->z_near, cam->z_far, scene, &H, &mn, &mx);
     if (s != SWARP_OK) return s;
     /* H ⊂ V: clamp rounding to the frustum's own range, near included: for
      * a range one ulp wide the depths of H can round above far, and near
      * would come out above far */
-    *out_near = sw_min(sw_max(mn, cam->near), cam->far);
-    *out_far = sw_min(sw_max(mx, *out_near), cam->far);
+    *out_near = sw_min(sw_max(mn, cam->z_near), cam->z_far);
+    *out_far = sw_min(sw_max(mx, *out_near), cam->z_far);
     return SWARP_OK;
 }
 

@@ -372,7 +372,7 @@ SWARP_API swarp_status swarp_poly_from_camera_range(const swarp_camera* cam, dou
 
 SWARP_API swarp_status swarp_poly_from_camera(const swarp_camera* cam, swarp_polyhedron* out) {
     if (!cam || !out) return SWARP_ERR_NULL_POINTER;
-    return swarp_poly_from_camera_range(cam, cam->near, cam->far, out);
+    return swarp_poly_from_camera_range(cam, cam->z_near, cam->z_far, out);
 }
 
 SWARP_API swarp_status swarp_poly_from_inverse_matrix(const swarp_mat4* inv, swarp_depth_range dr,

@@ -631,14 +631,14 @@ static swarp_status sw_setup_main(const swarp_camera* cam, const swarp_light* li
     swarp_setup_options o;
     swarp_status s = sw_check_common(cam, light, opts, &o);
     if (s != SWARP_OK) return s;
-    if ((s = sw_check_view_range(cam->near, cam->far)) != SWARP_OK) return s;
+    if ((s = sw_check_view_range(cam->z_near, cam->z_far)) != SWARP_OK) return s;
     s = sw_check_box(scene);
     if (s != SWARP_OK) return s;
     /* [RHS] §4.3: a measured min depth moves the near plane out (never
      * past what the depth buffer saw); 0 = not given, the camera's own */
-    double cam_near = cam->near;
+    double cam_near = cam->z_near;
     if (o.min_depth > 0.0) {
-        s = swarp_mindepth_near(cam->near, cam->far, o.min_depth, NULL, &cam_near);
+        s = swarp_mindepth_near(cam->z_near, cam->z_far, o.min_depth, NULL, &cam_near);
         if (swarp_status_is_error(s)) return s;
     }
     swarp_camera rc;
@@ -648,10 +648,10 @@ static swarp_status sw_setup_main(const swarp_camera* cam, const swarp_light* li
     /* adjusted near/far [RHS] §3.3.1: V ∩ S over [near', far'] is H itself */
     swarp_polyhedron H;
     double zn, zf;
-    s = sw_body_h_eye(cam, cam_near, cam->far, scene, &H, &zn, &zf);
+    s = sw_body_h_eye(cam, cam_near, cam->z_far, scene, &H, &zn, &zf);
     if (s != SWARP_OK) return s;
-    zn = fmin(fmax(zn, cam_near), cam->far);
-    zf = fmin(fmax(zf, zn), cam->far);
+    zn = fmin(fmax(zn, cam_near), cam->z_far);
+    zf = fmin(fmax(zf, zn), cam->z_far);
     if (!(zf > zn)) { /* H lies in one depth plane (box face on a view plane): keep a sliver */
         double pad = fmax(1e-9 * zn, 1e-300);
         if (zn - pad > cam_near) zn -= pad;

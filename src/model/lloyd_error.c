@@ -43,7 +43,7 @@ static swarp_status sw_near_far(double n, double f) {
 static swarp_status sw_cfg_full(const swarp_error_config* c) {
     swarp_status s = sw_cfg_common(c);
     if (s != SWARP_OK) return s;
-    return sw_near_far(c->near, c->far);
+    return sw_near_far(c->z_near, c->z_far);
 }
 
 /* n' in (0, +inf]: +INFINITY is the uniform map. */
@@ -129,9 +129,9 @@ static swarp_status sw_point(const swarp_error_config* cfg, double z, double n_p
     if (s != SWARP_OK) return s;
     if (!sw_finite(z)) return SWARP_ERR_NON_FINITE;
     if ((s = sw_nprime(n_prime)) != SWARP_OK) return s;
-    if (!(z >= cfg->near && z <= cfg->far)) return SWARP_ERR_OUT_OF_RANGE;
+    if (!(z >= cfg->z_near && z <= cfg->z_far)) return SWARP_ERR_OUT_OF_RANGE;
     double v;
-    if (!m(cfg, cfg->near, cfg->far, z, n_prime, &v)) return SWARP_ERR_OVERFLOW;
+    if (!m(cfg, cfg->z_near, cfg->z_far, z, n_prime, &v)) return SWARP_ERR_OVERFLOW;
     *out = v;
     return SWARP_OK;
 }
@@ -168,7 +168,7 @@ SWARP_API swarp_status swarp_error_max(const swarp_error_config* cfg, double n_p
     if (s != SWARP_OK) return s;
     if ((s = sw_nprime(n_prime)) != SWARP_OK) return s;
     double mx, mz;
-    if (!sw_range_max(cfg, cfg->near, cfg->far, n_prime, &mx, &mz)) return SWARP_ERR_OVERFLOW;
+    if (!sw_range_max(cfg, cfg->z_near, cfg->z_far, n_prime, &mx, &mz)) return SWARP_ERR_OVERFLOW;
     if (out_max_mx) *out_max_mx = mx;
     if (out_max_mz) *out_max_mz = mz;
     return SWARP_OK;

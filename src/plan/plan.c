@@ -62,7 +62,7 @@ typedef struct sw_pin {
     swarp_vec3 eye, view, up;   /* view and up unit length */
     double theta;               /* Θ = fovy / 2 */
     double aspect;
-    double near, far;           /* adjusted range */
+    double z_near, z_far;           /* adjusted range */
     int near_far_adjusted;
     swarp_vec3 to_light;        /* unit, from the scene toward the light */
     int point_light;
@@ -102,8 +102,8 @@ static swarp_status sw_resolve_camera(const swarp_camera* c, sw_pin* in) {
     in->up = u;
     in->theta = 0.5 * c->fovy;
     in->aspect = c->aspect;
-    in->near = c->near;
-    in->far = c->far;
+    in->z_near = c->z_near;
+    in->z_far = c->z_far;
     return SWARP_OK;
 }
 
@@ -135,8 +135,8 @@ static swarp_status sw_resolve_view(const swarp_scene_needs* needs, sw_pin* in) 
         in->up = sw_v3(0.0, 1.0, 0.0);
         in->theta = SWARP_PI / 6.0;
         in->aspect = 4.0 / 3.0;
-        in->near = 1.0;
-        in->far = 100.0;
+        in->z_near = 1.0;
+        in->z_far = 100.0;
     } else if ((s = sw_resolve_camera(&needs->camera, in)) != SWARP_OK) {
         return s;
     }
@@ -228,15 +228,15 @@ static swarp_status sw_adjust_near_far(const swarp_aabb* box, sw_pin* in) {
         if (d < dmin) dmin = d;
         if (d > dmax) dmax = d;
     }
-    if (dmax < in->near || dmin > in->far) return SWARP_ERR_PLAN_EMPTY_VIEW;
-    double n = dmin > in->near ? dmin : in->near;
-    double f = dmax < in->far ? dmax : in->far;
+    if (dmax < in->z_near || dmin > in->z_far) return SWARP_ERR_PLAN_EMPTY_VIEW;
+    double n = dmin > in->z_near ? dmin : in->z_near;
+    double f = dmax < in->z_far ? dmax : in->z_far;
     /* a box flat across the view: keep a tiny positive depth range
      * (1e-6 relative, far above rounding) so every ratio stays finite */
     if (f < n * (1.0 + 1e-6)) f = n * (1.0 + 1e-6);
-    if (n != in->near || f != in->far) in->near_far_adjusted = 1;
-    in->near = n;
-    in->far = f;
+    if (n != in->z_near || f != in->z_far) in->near_far_adjusted = 1;
+    in->z_near = n;
+    in->z_far = f;
     return SWARP_OK;
 }
 
@@ -249,7 +249,7 @@ static swarp_status sw_resolve_gamma(sw_pin* in) {
          * centre at the eye's magnitude (1e6 worlds: 1e-10) and turn a
          * light at the eye (exactly γ = π) by 1e-14 rad with the caller's
          * rounding mode; (light - eye) is exact there and small nearby */
-        swarp_vec3 to = sw_sub(sw_sub(in->light_pos, in->eye), sw_scale(in->view, 0.5 * (in->near + in->far)));
+        swarp_vec3 to = sw_sub(sw_sub(in->light_pos, in->eye), sw_scale(in->view, 0.5 * (in->z_near + in->z_far)));
         if (!sw_normalize(to, &in->to_light)) return SWARP_ERR_DEGENERATE;
     }
     /* γ = atan2(|v × l|, v · l), not acos(v · l): acos is ill-conditioned
@@ -474,12 +474,12 @@ static void sw_evaluate(const sw_pin* in, const sw_filter* flt, const swarp_plan
     size_t cnt = 0;
     swarp_status s = SWARP_OK;
     if (K == 1) {
-        e->splits[0] = in->near;
-        e->splits[1] = in->far;
+        e->splits[0] = in->z_near;
+        e->splits[1] = in->z_far;
     } else if (c->scheme == SWARP_PLAN_SCHEME_LOG) {
-        s = swarp_split_log(in->near, in->far, K, e->splits, SWARP_PLAN_MAX_SPLITS + 1, &cnt);
+        s = swarp_split_log(in->z_near, in->z_far, K, e->splits, SWARP_PLAN_MAX_SPLITS + 1, &cnt);
     } else {
-        s = swarp_split_practical(in->near, in->far, SW_DEFAULT_PSSM_LAMBDA, K, e->splits,
+        s = swarp_split_practical(in->z_near, in->z_far, SW_DEFAULT_PSSM_LAMBDA, K, e->splits,
                                   SWARP_PLAN_MAX_SPLITS + 1, &cnt);
     }
     if (swarp_status_is_error(s)) return;
@@ -542,7 +542,7 @@ static void sw_view_projection(const sw_pin* in, swarp_mat4* out) {
     sw_set(&V, 1, 3, -sw_dot(u, in->eye));
     sw_set(&V, 2, 3, sw_dot(f, in->eye));
     memset(&P, 0, sizeof P);
-    const double fa = in->far, n = fmax(in->near, SW_LIXEL_CHECK_MIN_NEAR_RATIO * fa);
+    const double fa = in->z_far, n = fmax(in->z_near, SW_LIXEL_CHECK_MIN_NEAR_RATIO * fa);
     const double t = 1.0 / tan(in->theta);
     sw_set(&P, 0, 0, t / in->aspect);
     sw_set(&P, 1, 1, t);
@@ -589,7 +589,7 @@ static uint32_t sw_plane_check(const sw_pin* in, const swarp_plane* pl) {
     double d = pl->d / len;
     double h = sw_dot(nrm, in->eye) + d;
     /* the camera on the plane (within 1e-9 of the view range): no front side */
-    if (fabs(h) <= 1e-9 * in->far) return SWARP_PLAN_PLANE_CAMERA_ON_PLANE;
+    if (fabs(h) <= 1e-9 * in->z_far) return SWARP_PLAN_PLANE_CAMERA_ON_PLANE;
     if (h < 0.0) {
         nrm = sw_scale(nrm, -1.0);
         d = -d;
@@ -605,7 +605,7 @@ static uint32_t sw_plane_check(const sw_pin* in, const swarp_plane* pl) {
     (void)sw_normalize(sw_cross(in->view, in->up), &right); /* checked non-parallel */
     swarp_vec3 up = sw_cross(right, in->view);
     double ty = tan(in->theta), tx = ty * in->aspect;
-    double ds[2] = {in->near, in->far};
+    double ds[2] = {in->z_near, in->z_far};
     for (int k = 0; k < 8; ++k) {
         double z = ds[k >> 2];
         swarp_vec3 p = sw_add(in->eye, sw_scale(in->view, z));
@@ -628,8 +628,8 @@ static void sw_fill(const sw_pin* in, const sw_filter* flt, const swarp_plan_cha
     p->atlas_tiles = e->tiles;
     p->stabilize = e->stab;
     p->gamma = in->gamma;
-    p->near = in->near;
-    p->far = in->far;
+    p->z_near = in->z_near;
+    p->z_far = in->z_far;
     for (uint32_t i = 0; i <= e->K; ++i) p->splits[i] = e->splits[i];
     for (uint32_t i = 0; i < e->K; ++i) {
         p->n_prime[i] = e->n_prime[i];
@@ -943,7 +943,7 @@ static void sw_explain(const swarp_plan_result* p, sw_text* t) {
     }
     sw_puts(t, "\nlight/view angle gamma ");
     sw_putd(t, p->gamma * 180.0 / SWARP_PI);
-    sw_putdd(t, " deg, depth range [", p->near, ", ", p->far);
+    sw_putdd(t, " deg, depth range [", p->z_near, ", ", p->z_far);
     sw_putdd(t, "]\npredicted max m_x ", p->max_mx, ", m_z ", p->max_mz);
     sw_puts(t, " (pixels per texel), area ");
     sw_putd(t, p->error_area);

@@ -104,8 +104,8 @@ int main(int argc, char** argv) {
     c.cam.up = (swarp_vec3){0.0, 1.0, 0.0};
     c.cam.fovy = 60.0 * 3.14159265358979323846 / 180.0;
     c.cam.aspect = 16.0 / 9.0;
-    c.cam.near = 0.5;
-    c.cam.far = 2000.0;
+    c.cam.z_near = 0.5;
+    c.cam.z_far = 2000.0;
     c.light.type = SWARP_LIGHT_DIRECTIONAL;
     c.light.direction = (swarp_vec3){0.3, -1.0, 0.2};
     c.scene.min = (swarp_vec3){-1000.0, -10.0, -1000.0};

@@ -239,8 +239,8 @@ static int make_scene(void) {
     cam.up = (swarp_vec3){0, 1, 0};
     cam.fovy = 1.0;
     cam.aspect = 1.5;
-    cam.near = 0.5;
-    cam.far = 400;
+    cam.z_near = 0.5;
+    cam.z_far = 400;
     swarp_light l;
     memset(&l, 0, sizeof l);
     l.type = SWARP_LIGHT_DIRECTIONAL;

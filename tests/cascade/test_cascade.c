@@ -40,8 +40,8 @@ static swarp_camera make_camera(swarp_vec3 eye, swarp_vec3 dir, double fovy, dou
     c.up = fabs(vnorm(dir).y) > 0.95 ? v3(1, 0, 0) : v3(0, 1, 0);
     c.fovy = fovy;
     c.aspect = aspect;
-    c.near = n;
-    c.far = f;
+    c.z_near = n;
+    c.z_far = f;
     return c;
 }
 
@@ -969,8 +969,8 @@ static double curve_min(const double* v, size_t n) {
 static swarp_error_config fig_cfg(double n, double f) {
     swarp_error_config cfg;
     memset(&cfg, 0, sizeof cfg);
-    cfg.near = n;
-    cfg.far = f;
+    cfg.z_near = n;
+    cfg.z_far = f;
     cfg.theta = PI / 6; /* Θ = 30°, Fig. 3.15 / 3.18 */
     cfg.res_ix = cfg.res_iy = 1024;
     cfg.res_s = cfg.res_t = 1024;
@@ -1066,8 +1066,8 @@ START_TEST(error_curve_samples_borders) {
         if (i < 2) ck_assert(z[i * 10 + 9] == nextafter(c[i + 1], 0)); /* left limit */
         /* just after the border == the split's own model at its near plane */
         swarp_error_config sc = cfg;
-        sc.near = c[i];
-        sc.far = c[i + 1];
+        sc.z_near = c[i];
+        sc.z_far = c[i + 1];
         double ex, ez;
         swarp_error_mx(&sc, c[i], np[i], &ex);
         swarp_error_mz(&sc, c[i], np[i], &ez);
@@ -1143,7 +1143,7 @@ static scene_cfg random_scene(int overhead) {
     c.cam = make_camera(v3(rng_uniform(-0.5, 0.5) * W, rng_uniform(2, 30), rng_uniform(-0.5, 0.5) * W),
                         v3(rng_uniform(-1, 1), rng_uniform(-0.6, 0.0), rng_uniform(-1, 1)),
                         rng_uniform(0.6, 1.4), rng_uniform(1, 2), rng_uniform(0.1, 1), 0);
-    c.cam.far = c.cam.near * rng_uniform(100, 5000);
+    c.cam.z_far = c.cam.z_near * rng_uniform(100, 5000);
     c.light.type = SWARP_LIGHT_DIRECTIONAL;
     c.light.direction = overhead ? v3(0, -1, 0) : vadd(v3(0, -1, 0), vscale(rand_unit(), 0.8));
     return c;
@@ -1173,7 +1173,7 @@ START_TEST(cascade_one_split_equals_single_map_bit_for_bit) {
         ck_assert_mem_eq(&sp[0].matrix, &single.matrix, sizeof single.matrix);
         ck_assert(memcmp(&sp[0].n_eye, &single.n_eye, sizeof(double)) == 0);
         ck_assert(r.view_near == single.view_near && r.view_far == single.view_far);
-        ck_assert(sp[0].near == single.view_near && sp[0].far == single.view_far);
+        ck_assert(sp[0].z_near == single.view_near && sp[0].z_far == single.view_far);
     }
     ck_assert_int_gt(tested, 100);
 }
@@ -1217,14 +1217,14 @@ START_TEST(cascade_splits_cover_bodies_and_range) {
         double an, af;
         ck_assert_int_eq(swarp_body_adjusted_range(&c.cam, &c.box, &an, &af), SWARP_OK);
         ck_assert(r.view_near == an && r.view_far == af);
-        ck_assert(sp[0].near == an && sp[k - 1].far == af);
-        for (size_t i = 0; i + 1 < k; ++i) ck_assert(sp[i].far == sp[i + 1].near && sp[i].far > sp[i].near);
+        ck_assert(sp[0].z_near == an && sp[k - 1].z_far == af);
+        for (size_t i = 0; i + 1 < k; ++i) ck_assert(sp[i].z_far == sp[i + 1].z_near && sp[i].z_far > sp[i].z_near);
         double l_sc = r.atlas.l_sc;
         for (size_t i = 0; i < k; ++i) {
             /* every point of B_i inside the split's clip cube */
             swarp_vec3 B[SWARP_BODY_MAX_POINTS];
             size_t nb;
-            ck_assert_int_eq(swarp_body_points(&c.cam, sp[i].near, sp[i].far, &c.light, &c.box, B,
+            ck_assert_int_eq(swarp_body_points(&c.cam, sp[i].z_near, sp[i].z_far, &c.light, &c.box, B,
                                                SWARP_BODY_MAX_POINTS, &nb), SWARP_OK);
             double lo = INFINITY, hi = -INFINITY;
             double e[3] = {sp[i].matrix.m[0], sp[i].matrix.m[4], sp[i].matrix.m[8]};
@@ -1326,8 +1326,8 @@ START_TEST(cascade_error_values_at_borders) {
     for (int i = 0; i < 4; ++i) n_primes[i] = sp[i].n_eye;
     swarp_error_config cfg;
     memset(&cfg, 0, sizeof cfg);
-    cfg.near = r.view_near;
-    cfg.far = r.view_far;
+    cfg.z_near = r.view_near;
+    cfg.z_far = r.view_far;
     cfg.theta = c.cam.fovy / 2;
     cfg.res_ix = 1280;
     cfg.res_iy = 720;
@@ -1378,12 +1378,12 @@ START_TEST(cascade_stabilized_whole_texels) {
         size_t k;
         swarp_status st = swarp_cascade_setup(&c.cam, &c.light, &c.box, &o, &r, sp, 4, &k);
         ck_assert_msg(!swarp_status_is_error(st), "%s", swarp_status_name(st));
-        ck_assert(r.view_near == c.cam.near && r.view_far == c.cam.far); /* not adjusted */
+        ck_assert(r.view_near == c.cam.z_near && r.view_far == c.cam.z_far); /* not adjusted */
         for (int i = 0; i < 4; ++i) {
             if (it == 0) { /* B_i inside the map, depth in [0, 1] */
                 swarp_vec3 B[SWARP_BODY_MAX_POINTS];
                 size_t nb;
-                swarp_status bs = swarp_body_points(&c.cam, sp[i].near, sp[i].far, &c.light, &c.box, B,
+                swarp_status bs = swarp_body_points(&c.cam, sp[i].z_near, sp[i].z_far, &c.light, &c.box, B,
                                                     SWARP_BODY_MAX_POINTS, &nb);
                 ck_assert(bs == SWARP_OK || bs == SWARP_ERR_BODY_EMPTY);
                 if (bs != SWARP_OK) nb = 0;

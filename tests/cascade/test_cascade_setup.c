@@ -45,8 +45,8 @@ static swarp_camera make_camera(swarp_vec3 eye, swarp_vec3 dir, double fovy, dou
     c.up = v3(0, 1, 0);
     c.fovy = fovy;
     c.aspect = aspect;
-    c.near = n;
-    c.far = f;
+    c.z_near = n;
+    c.z_far = f;
     return c;
 }
 
@@ -100,7 +100,7 @@ static void walk(swarp_stabilize_mode mode, double world_offset) {
         swarp_status st = swarp_cascade_setup(&cam, &light, &box, &o, &r, sp, K, &k);
         ck_assert_msg(!swarp_status_is_error(st), "%s", swarp_status_name(st));
         /* the split range is the camera's own, the same every frame */
-        ck_assert(r.view_near == cam.near && r.view_far == cam.far);
+        ck_assert(r.view_near == cam.z_near && r.view_far == cam.z_far);
         if (it == 0) memcpy(first_splits, r.splits, sizeof first_splits);
         ck_assert(memcmp(first_splits, r.splits, (K + 1) * sizeof(double)) == 0);
         for (uint32_t i = 0; i < K; ++i) {
@@ -216,7 +216,7 @@ START_TEST(spot_cascade_receivers_inside_and_tight) {
         ++tested;
         for (size_t i = 0; i < k; ++i) {
             static swarp_polyhedron H, R;
-            ck_assert_int_eq(swarp_body_h(&cam, sp[i].near, sp[i].far, &box, &H), SWARP_OK);
+            ck_assert_int_eq(swarp_body_h(&cam, sp[i].z_near, sp[i].z_far, &box, &H), SWARP_OK);
             ck_assert_int_eq(swarp_body_receivers(&H, &light, &R), SWARP_OK);
             double lo = INFINITY, hi = -INFINITY, lo_h = INFINITY, hi_h = -INFINITY;
             for (uint32_t j = 0; j < R.vertex_count; ++j) {
@@ -458,7 +458,7 @@ static void render_depth(const md_scene* s, float* buf, swarp_vec3* hits, size_t
             }
             for (int b = 0; b < 3; ++b) z = fmin(z, ray_box(c->eye, d, &s->obj[b]));
             /* what the camera can see: inside [near, far] */
-            if (!(z >= c->near && z <= c->far)) z = INFINITY;
+            if (!(z >= c->z_near && z <= c->z_far)) z = INFINITY;
             buf[j * MD_W + i] = (float)z;
             if (z < INFINITY) hits[(*nhits)++] = vadd(c->eye, vscale(d, z));
         }
@@ -514,7 +514,7 @@ START_TEST(min_depth_moves_near_out_without_clipping) {
         ++tested;
         /* the near plane of [RHS] §4.3, evaluated by its own call */
         double n43;
-        ck_assert(!swarp_status_is_error(swarp_mindepth_near(s.cam.near, s.cam.far, md, NULL, &n43)));
+        ck_assert(!swarp_status_is_error(swarp_mindepth_near(s.cam.z_near, s.cam.z_far, md, NULL, &n43)));
         ck_assert(r1.view_near >= r0.view_near);
         ck_assert(r1.view_near >= n43 || r1.view_near == r0.view_near);
         /* the far end of H is the same, up to the clipping's rounding */
@@ -574,7 +574,7 @@ START_TEST(min_depth_zero_keeps_result) {
         if (swarp_status_is_error(s0)) continue;
         /* not given, nothing seen (+inf), seen nearer than the near plane:
          * the old result bit for bit */
-        const double mds[3] = {0.0, INFINITY, 0.5 * s.cam.near};
+        const double mds[3] = {0.0, INFINITY, 0.5 * s.cam.z_near};
         for (int m = 0; m < 3; ++m) {
             o.min_depth = mds[m];
             o.technique = SWARP_TECHNIQUE_DEFAULT;
@@ -603,7 +603,7 @@ START_TEST(min_depth_ignored_by_stabilized_cascades) {
         size_t k;
         swarp_status s0 = swarp_cascade_setup(&s.cam, &s.light, &s.bound, &o, &r0, a, 3, &k);
         ck_assert_msg(!swarp_status_is_error(s0), "%s", swarp_status_name(s0));
-        o.setup.min_depth = 0.5 * (s.cam.near + s.cam.far);
+        o.setup.min_depth = 0.5 * (s.cam.z_near + s.cam.z_far);
         ck_assert_int_eq(swarp_cascade_setup(&s.cam, &s.light, &s.bound, &o, &r1, b, 3, &k), s0);
         ck_assert(memcmp(&r0, &r1, sizeof r0) == 0 && memcmp(a, b, sizeof a) == 0);
     }

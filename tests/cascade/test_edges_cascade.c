@@ -314,8 +314,8 @@ static swarp_camera camera(void) {
     c.up = (swarp_vec3){0.0, 1.0, 0.0};
     c.fovy = 1.0;
     c.aspect = 1.5;
-    c.near = 0.5;
-    c.far = 200.0;
+    c.z_near = 0.5;
+    c.z_far = 200.0;
     return c;
 }
 
@@ -625,8 +625,8 @@ START_TEST(cascade_select_blend_curve_edges) {
     /* error curve: arguments; values equal swarp_error_split_curve's */
     swarp_error_config cfg;
     memset(&cfg, 0, sizeof cfg);
-    cfg.near = 1.0;
-    cfg.far = 256.0;
+    cfg.z_near = 1.0;
+    cfg.z_far = 256.0;
     cfg.theta = 0.8;
     cfg.res_ix = cfg.res_iy = 1024.0;
     cfg.res_s = cfg.res_t = 2048.0;
@@ -718,8 +718,8 @@ START_TEST(cascade_error_curve_subnormal_splits) {
     const double m = DBL_TRUE_MIN;
     swarp_error_config cfg;
     memset(&cfg, 0, sizeof cfg);
-    cfg.near = m;
-    cfg.far = 5 * m;
+    cfg.z_near = m;
+    cfg.z_far = 5 * m;
     cfg.theta = 0.8;
     cfg.res_ix = cfg.res_iy = 1024.0;
     cfg.res_s = cfg.res_t = 2048.0;

@@ -36,8 +36,8 @@ static inputs base(void) {
     in.cam.up = (swarp_vec3){0.0, 1.0, 0.0};
     in.cam.fovy = 1.0;
     in.cam.aspect = 1.5;
-    in.cam.near = 1.0;
-    in.cam.far = 100.0;
+    in.cam.z_near = 1.0;
+    in.cam.z_far = 100.0;
     in.light.type = SWARP_LIGHT_DIRECTIONAL;
     in.light.direction = (swarp_vec3){0.3, -1.0, 0.2};
     in.box.min = (swarp_vec3){-20.0, -1.0, -40.0};
@@ -97,8 +97,8 @@ static swarp_status call(int e, const inputs* in, int null_arg, outputs* out) {
     case E_SETUP:
         return swarp_setup(cam, light, box, &in->opt, no_out ? NULL : &out->res, out->pts, SWARP_BODY_MAX_POINTS,
                            &out->count);
-    case E_RANGE: /* the camera's range as the explicit one (cam->near/far are ignored) */
-        return swarp_setup_range(cam, light, box, in->cam.near, in->cam.far, &in->opt, no_out ? NULL : &out->res,
+    case E_RANGE: /* the camera's range as the explicit one (cam->z_near/far are ignored) */
+        return swarp_setup_range(cam, light, box, in->cam.z_near, in->cam.z_far, &in->opt, no_out ? NULL : &out->res,
                                  out->pts, SWARP_BODY_MAX_POINTS, &out->count);
     case E_CASCADE_STABLE: /* a path that never calls swarp_setup */
         co.setup.technique = SWARP_TECHNIQUE_UNIFORM;
@@ -154,12 +154,12 @@ MUT(c_fovy_4, in->cam.fovy = 4.0)
 MUT(c_aspect_nan, in->cam.aspect = NAN)
 MUT(c_aspect_zero, in->cam.aspect = 0.0)
 MUT(c_aspect_neg, in->cam.aspect = -1.5)
-MUT(c_near_nan, in->cam.near = NAN)
-MUT(c_far_inf, in->cam.far = INFINITY)
-MUT(c_near_zero, in->cam.near = 0.0)
-MUT(c_near_neg, in->cam.near = -1.0)
-MUT(c_far_eq_near, in->cam.far = in->cam.near)
-MUT(c_far_lt_near, in->cam.far = 0.5)
+MUT(c_near_nan, in->cam.z_near = NAN)
+MUT(c_far_inf, in->cam.z_far = INFINITY)
+MUT(c_near_zero, in->cam.z_near = 0.0)
+MUT(c_near_neg, in->cam.z_near = -1.0)
+MUT(c_far_eq_near, in->cam.z_far = in->cam.z_near)
+MUT(c_far_lt_near, in->cam.z_far = 0.5)
 MUT(c_reserved0, in->cam._reserved[0] = 1)
 MUT(c_reserved3, in->cam._reserved[3] = 0x80000000u)
 /* up parallel to dir: exactly, and with sin(angle) below the bound 1e-9 */
@@ -418,13 +418,13 @@ END_TEST
  * parallel; then the light, the setup options, the view range, the box). */
 MUT(m_fov_and_zero_up, in->cam.fovy = 0.0; in->cam.up = (swarp_vec3){0, 0, 0})
 MUT(m_aspect_and_parallel, in->cam.aspect = -1.0; in->cam.up = in->cam.dir)
-MUT(m_fov_and_near_nan, in->cam.fovy = 4.0; in->cam.near = NAN)
+MUT(m_fov_and_near_nan, in->cam.fovy = 4.0; in->cam.z_near = NAN)
 MUT(m_reserved_and_nan, in->cam._reserved[1] = 1; in->cam.eye.y = NAN)
 MUT(m_camera_and_light, in->cam.dir = (swarp_vec3){0, 0, 0}; in->light.type = (swarp_light_type)9)
 MUT(m_light_and_box, in->light.direction.z = NAN; in->box.min.x = 99.0)
 MUT(m_light_and_options, in->light._reserved0 = 3; in->opt.pancake = 9)
-MUT(m_options_and_range, in->opt.slideback = -2.0; in->cam.near = 0.0)
-MUT(m_range_and_box, in->cam.far = 0.25; in->box.max = in->box.min)
+MUT(m_options_and_range, in->opt.slideback = -2.0; in->cam.z_near = 0.0)
+MUT(m_range_and_box, in->cam.z_far = 0.25; in->box.max = in->box.min)
 
 static const struct {
     const char* name;

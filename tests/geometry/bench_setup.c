@@ -70,8 +70,8 @@ int main(int argc, char** argv) {
         cams[i].up = (swarp_vec3){0, 1, 0};
         cams[i].fovy = 60 * 3.14159265358979 / 180;
         cams[i].aspect = 16.0 / 9.0;
-        cams[i].near = 0.5;
-        cams[i].far = 400;
+        cams[i].z_near = 0.5;
+        cams[i].z_far = 400;
         double el = rnd(0.3, 1.5), az = rnd(0, 6.283);
         dirs[i] = (swarp_vec3){-cos(el) * sin(az), -sin(el), cos(el) * cos(az)};
     }

@@ -34,8 +34,8 @@ int main(void) {
     cam.up = (swarp_vec3){0, 1, 0};
     cam.fovy = 50 * DEG;
     cam.aspect = 16.0 / 9.0;
-    cam.near = 1;
-    cam.far = 60;
+    cam.z_near = 1;
+    cam.z_far = 60;
     swarp_aabb box = {{-80, 0, -80}, {80, 6, 10}};
     double s30 = sin(30 * DEG), c30 = cos(30 * DEG), s20 = sin(20 * DEG), c20 = cos(20 * DEG);
     const swarp_vec3 lights[3] = {{0, -1, 0}, {0, -s30, c30} /* toward the camera */,

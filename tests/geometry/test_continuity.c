@@ -76,8 +76,8 @@ static swarp_camera scene_camera(void) {
     c.up = v3(0, 1, 0);
     c.fovy = 60 * DEG;
     c.aspect = 1920.0 / 1080.0;
-    c.near = 1;
-    c.far = 100;
+    c.z_near = 1;
+    c.z_far = 100;
     return c;
 }
 static const swarp_aabb scene_box = {{-300, -5, -150}, {300, 40, 50}};

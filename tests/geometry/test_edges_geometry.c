@@ -182,8 +182,8 @@ static swarp_camera camera(void) {
     c.up = (swarp_vec3){0, 1, 0};
     c.fovy = 1.0;
     c.aspect = 1.5;
-    c.near = 1.0;
-    c.far = 100.0;
+    c.z_near = 1.0;
+    c.z_far = 100.0;
     return c;
 }
 
@@ -311,8 +311,8 @@ START_TEST(setup_nearest_vertex_rounding_mode) {
     cam.up = (swarp_vec3){0, 1, 0};
     cam.fovy = 1.0;
     cam.aspect = 1.5;
-    cam.near = 1.0;
-    cam.far = 300.0;
+    cam.z_near = 1.0;
+    cam.z_far = 300.0;
     swarp_light l;
     memset(&l, 0, sizeof l);
     l.type = SWARP_LIGHT_DIRECTIONAL;
@@ -361,8 +361,8 @@ START_TEST(plan_gamma_rounding_mode) {
         n.camera.up = (swarp_vec3){0, 1, 0};
         n.camera.fovy = 1.0;
         n.camera.aspect = 1.5;
-        n.camera.near = 0.5;
-        n.camera.far = 2000.0;
+        n.camera.z_near = 0.5;
+        n.camera.z_far = 2000.0;
         if (k < 4) {
             n.light.type = SWARP_LIGHT_DIRECTIONAL;
             n.light.direction = n.camera.dir; /* travelling along the view: γ = π */
@@ -448,7 +448,7 @@ START_TEST(poly_from_camera_overflow) {
     tu_fill(&P.vertices[0].x, 3, -7.25e33);
     ck_assert_int_eq(swarp_poly_from_camera_range(&cam, 0.5, DBL_MAX, &P), SWARP_ERR_OUT_OF_RANGE);
     ck_assert(tu_untouched(&P.vertices[0].x, 3, -7.25e33));
-    cam.far = DBL_MAX;
+    cam.z_far = DBL_MAX;
     ck_assert_int_eq(swarp_poly_from_camera(&cam, &P), SWARP_ERR_OUT_OF_RANGE);
     ck_assert(tu_untouched(&P.vertices[0].x, 3, -7.25e33));
     ck_assert_int_eq(swarp_poly_from_camera_range(&cam, 0.5, 1e300, &P), SWARP_OK);
@@ -474,7 +474,7 @@ START_TEST(body_points_box_to_dbl_max) {
                             {1366538.0912439211, 20.539473778929995, 1366557.5993474743}};
     swarp_vec3 p[SWARP_BODY_MAX_POINTS];
     size_t n = 0;
-    swarp_status s = swarp_body_points(&cam, cam.near, cam.far, &l, &box, p, SWARP_BODY_MAX_POINTS, &n);
+    swarp_status s = swarp_body_points(&cam, cam.z_near, cam.z_far, &l, &box, p, SWARP_BODY_MAX_POINTS, &n);
     ck_assert_msg(!swarp_status_is_error(s), "%s", swarp_status_name(s));
     ck_assert(n >= 1);
     for (size_t i = 0; i < n; ++i) {
@@ -610,13 +610,13 @@ START_TEST(setup_points_eye_far_from_body_is_degenerate) {
     /* the documented DEGENERATE, or (the body is one point to the rounding
      * of its coordinates: SWARP_INFO_FLAT_EXTENT, a width of 1e-6 of them)
      * a map with B inside */
-    swarp_status st = swarp_setup_points(&cam, &l, pts, 2, NULL, 0, cam.near, cam.far, &o, &r);
+    swarp_status st = swarp_setup_points(&cam, &l, pts, 2, NULL, 0, cam.z_near, cam.z_far, &o, &r);
     ck_assert_msg(st == SWARP_ERR_DEGENERATE || st == SWARP_INFO_FLAT_EXTENT, "%s", swarp_status_name(st));
     if (st == SWARP_ERR_DEGENERATE) ck_assert(memcmp(&r, &s, sizeof r) == 0);
     for (int pass = 0; pass < 2; ++pass) {
         if (pass == 1) { /* the same body seen from 100 units: mapped into the unit square */
             cam.eye = (swarp_vec3){-1000100, 5, -1000000};
-            st = swarp_setup_points(&cam, &l, pts, 2, NULL, 0, cam.near, cam.far, &o, &r);
+            st = swarp_setup_points(&cam, &l, pts, 2, NULL, 0, cam.z_near, cam.z_far, &o, &r);
             ck_assert_msg(!swarp_status_is_error(st), "%s", swarp_status_name(st));
         }
         if (st == SWARP_ERR_DEGENERATE) continue;
@@ -777,7 +777,7 @@ END_TEST
 START_TEST(body_h_wide_frustum) {
     const struct {
         swarp_vec3 eye, dir;
-        double fovy, aspect, near, far;
+        double fovy, aspect, z_near, z_far;
         swarp_aabb box;
     } cs[2] = {{{-31.751584031759648, 100.45574252696035, 62.857658427288321},
                 {-0.018260733025294202, -0.95564929522641417, -0.29394041940950671},
@@ -793,11 +793,11 @@ START_TEST(body_h_wide_frustum) {
         swarp_camera cam;
         memset(&cam, 0, sizeof cam);
         cam.eye = cs[i].eye, cam.dir = cs[i].dir, cam.up = (swarp_vec3){0, 1, 0};
-        cam.fovy = cs[i].fovy, cam.aspect = cs[i].aspect, cam.near = cs[i].near, cam.far = cs[i].far;
+        cam.fovy = cs[i].fovy, cam.aspect = cs[i].aspect, cam.z_near = cs[i].z_near, cam.z_far = cs[i].z_far;
         swarp_polyhedron H;
-        ck_assert_int_eq(swarp_body_h(&cam, cam.near, cam.far, &cs[i].box, &H), SWARP_OK);
+        ck_assert_int_eq(swarp_body_h(&cam, cam.z_near, cam.z_far, &cs[i].box, &H), SWARP_OK);
         const swarp_aabb* b = &cs[i].box;
-        const double tol = 1e-9 * (cam.far + 100);
+        const double tol = 1e-9 * (cam.z_far + 100);
         const double dl = sqrt(cam.dir.x * cam.dir.x + cam.dir.y * cam.dir.y + cam.dir.z * cam.dir.z);
         ck_assert(H.vertex_count > 0);
         for (uint32_t v = 0; v < H.vertex_count; ++v) {
@@ -806,7 +806,7 @@ START_TEST(body_h_wide_frustum) {
                               p.z >= b->min.z - tol && p.z <= b->max.z + tol,
                           "case %d: vertex %u (%.17g %.17g %.17g) outside S", i, v, p.x, p.y, p.z);
             const double z = ((p.x - cam.eye.x) * cam.dir.x + (p.y - cam.eye.y) * cam.dir.y + (p.z - cam.eye.z) * cam.dir.z) / dl;
-            ck_assert_msg(z >= cam.near - tol && z <= cam.far + tol, "case %d: vertex %u at depth %g", i, v, z);
+            ck_assert_msg(z >= cam.z_near - tol && z <= cam.z_far + tol, "case %d: vertex %u at depth %g", i, v, z);
         }
         for (uint32_t f = 0; f < H.face_count; ++f)
             for (uint32_t k = 0; k < H.face_vertex_count[f]; ++k)
@@ -930,7 +930,7 @@ START_TEST(setup_points_uniform_warp_centre_keeps_fit_tight) {
     o.pseudo_near = 0x1.664ad2a28c6f8p-2;
     o.pseudo_far = 0x0.0000000000001p-1022;
     swarp_setup_result r;
-    swarp_status st = swarp_setup_points(&cam, &l, pt, 6, NULL, 0, cam.near, cam.far, &o, &r);
+    swarp_status st = swarp_setup_points(&cam, &l, pt, 6, NULL, 0, cam.z_near, cam.z_far, &o, &r);
     ck_assert_msg(!swarp_status_is_error(st), "%s", swarp_status_name(st));
     double xlo = INFINITY, xhi = -INFINITY;
     for (int i = 0; i < 6; ++i) {
@@ -969,7 +969,7 @@ START_TEST(setup_points_psm_eye_far_from_body_is_degenerate) {
     swarp_setup_result r, s;
     memset(&r, 0xA5, sizeof r);
     s = r;
-    ck_assert_int_eq(swarp_setup_points(&cam, &l, pt, 3, NULL, 0, cam.near, cam.far, &o, &r), SWARP_ERR_DEGENERATE);
+    ck_assert_int_eq(swarp_setup_points(&cam, &l, pt, 3, NULL, 0, cam.z_near, cam.z_far, &o, &r), SWARP_ERR_DEGENERATE);
     ck_assert(memcmp(&r, &s, sizeof r) == 0);
 }
 END_TEST
@@ -983,11 +983,11 @@ START_TEST(body_adjusted_range_one_ulp) {
     cam.eye = (swarp_vec3){11.509831960162812, -7.2106133800437053, 0.34703178313814753};
     cam.dir = (swarp_vec3){-0.26106181297126391, -0.88646162764194136, 0.38214200570803103};
     cam.up = (swarp_vec3){0, 1, 0};
-    cam.fovy = 1.7508506598448992, cam.aspect = 3, cam.near = 0.99999999999999989, cam.far = 1;
+    cam.fovy = 1.7508506598448992, cam.aspect = 3, cam.z_near = 0.99999999999999989, cam.z_far = 1;
     const swarp_aabb box = {{-9.9561291108274386, -10, -5.6886195800143984}, {78.505664793093032, 9.8170292419075551, 3.1276577551680216}};
     double n = 0, f = 0;
     ck_assert_int_eq(swarp_body_adjusted_range(&cam, &box, &n, &f), SWARP_OK);
-    ck_assert_msg(n > 0 && n <= f && n >= cam.near && f <= cam.far, "[%.17g, %.17g]", n, f);
+    ck_assert_msg(n > 0 && n <= f && n >= cam.z_near && f <= cam.z_far, "[%.17g, %.17g]", n, f);
 }
 END_TEST
 
@@ -1130,7 +1130,7 @@ START_TEST(setup_points_all_extents_flat_maps_inside) {
     o.center = SWARP_WARP_CENTER_NEAREST_VERTEX;
     o.depth_range = SWARP_DEPTH_ZERO_TO_ONE;
     swarp_setup_result r;
-    swarp_status st = swarp_setup_points(&cam, &l, pt, 3, NULL, 0, cam.near, cam.far, &o, &r);
+    swarp_status st = swarp_setup_points(&cam, &l, pt, 3, NULL, 0, cam.z_near, cam.z_far, &o, &r);
     if (st == SWARP_ERR_DEGENERATE) return;
     ck_assert_msg(!swarp_status_is_error(st), "%s", swarp_status_name(st));
     for (int i = 0; i < 3; ++i) {
@@ -1218,11 +1218,11 @@ START_TEST(body_points_one_ulp_range_rounding_mode) {
                       {-0x1.e84128dcb8e1dp+19, 0x1.316fe87ac5c8ap+4, -0x1.e8417b756b3bbp+19}};
     swarp_vec3 pts[SWARP_BODY_MAX_POINTS];
     size_t n0 = 0, n = 0;
-    swarp_status s0 = swarp_body_points(&cam, cam.near, cam.far, &l, &box, pts, SWARP_BODY_MAX_POINTS, &n0);
+    swarp_status s0 = swarp_body_points(&cam, cam.z_near, cam.z_far, &l, &box, pts, SWARP_BODY_MAX_POINTS, &n0);
     ck_assert_msg(s0 == SWARP_OK, "%s", swarp_status_name(s0));
     for (size_t m = 0; m < sizeof tu_modes / sizeof tu_modes[0]; ++m) {
         fesetround(tu_modes[m]);
-        swarp_status s = swarp_body_points(&cam, cam.near, cam.far, &l, &box, pts, SWARP_BODY_MAX_POINTS, &n);
+        swarp_status s = swarp_body_points(&cam, cam.z_near, cam.z_far, &l, &box, pts, SWARP_BODY_MAX_POINTS, &n);
         fesetround(FE_TONEAREST);
         ck_assert_msg(s == s0, "mode %zu: %s, default %s", m, swarp_status_name(s), swarp_status_name(s0));
     }
@@ -1255,17 +1255,17 @@ START_TEST(setup_points_psm_light_in_b_rounding_mode) {
     o.depth_range = SWARP_DEPTH_NEG_ONE_TO_ONE;
     swarp_vec3 B[SWARP_BODY_MAX_POINTS];
     size_t nb = 0;
-    ck_assert_int_eq(swarp_body_points(&cam, cam.near, cam.far, &l, &box, B, SWARP_BODY_MAX_POINTS, &nb), SWARP_OK);
+    ck_assert_int_eq(swarp_body_points(&cam, cam.z_near, cam.z_far, &l, &box, B, SWARP_BODY_MAX_POINTS, &nb), SWARP_OK);
     swarp_polyhedron H;
-    ck_assert_int_eq(swarp_body_h(&cam, cam.near, cam.far, &box, &H), SWARP_OK);
+    ck_assert_int_eq(swarp_body_h(&cam, cam.z_near, cam.z_far, &box, &H), SWARP_OK);
     swarp_setup_result r0, r;
-    swarp_status s0 = swarp_setup_points(&cam, &l, B, nb, H.vertices, H.vertex_count, cam.near, cam.far, &o, &r0);
+    swarp_status s0 = swarp_setup_points(&cam, &l, B, nb, H.vertices, H.vertex_count, cam.z_near, cam.z_far, &o, &r0);
     ck_assert_msg(s0 == SWARP_OK, "%s", swarp_status_name(s0));
     double scale = 0;
     for (int k = 0; k < 16; ++k) scale = fmax(scale, fabs(r0.light_proj.m[k]));
     for (size_t m = 0; m < sizeof tu_modes / sizeof tu_modes[0]; ++m) {
         fesetround(tu_modes[m]);
-        swarp_status s = swarp_setup_points(&cam, &l, B, nb, H.vertices, H.vertex_count, cam.near, cam.far, &o, &r);
+        swarp_status s = swarp_setup_points(&cam, &l, B, nb, H.vertices, H.vertex_count, cam.z_near, cam.z_far, &o, &r);
         fesetround(FE_TONEAREST);
         ck_assert_msg(s == s0, "mode %zu: %s, default %s", m, swarp_status_name(s), swarp_status_name(s0));
         for (int k = 0; k < 16; ++k)
@@ -1350,11 +1350,11 @@ START_TEST(setup_points_psm_light_is_receiver_rounding_mode) {
     o.technique = SWARP_TECHNIQUE_PSM;
     o.slideback = 10.0;
     swarp_setup_result r;
-    swarp_status s0 = swarp_setup_points(&cam, &l, B, 9, NULL, 0, cam.near, cam.far, &o, &r);
+    swarp_status s0 = swarp_setup_points(&cam, &l, B, 9, NULL, 0, cam.z_near, cam.z_far, &o, &r);
     ck_assert_msg(s0 == SWARP_ERR_LIGHT_INSIDE_BODY, "%s", swarp_status_name(s0));
     for (size_t m = 0; m < sizeof tu_modes / sizeof tu_modes[0]; ++m) {
         fesetround(tu_modes[m]);
-        swarp_status s = swarp_setup_points(&cam, &l, B, 9, NULL, 0, cam.near, cam.far, &o, &r);
+        swarp_status s = swarp_setup_points(&cam, &l, B, 9, NULL, 0, cam.z_near, cam.z_far, &o, &r);
         fesetround(FE_TONEAREST);
         ck_assert_msg(s == s0, "mode %zu: %s, default %s", m, swarp_status_name(s), swarp_status_name(s0));
     }
@@ -1380,11 +1380,11 @@ START_TEST(setup_points_b_is_the_spot_apex_rounding_mode) {
                      0x1.f6042193c636ep-1, {0, 0, 0, 0}};
     const swarp_vec3 B[1] = {l.position};
     swarp_setup_result r;
-    swarp_status s0 = swarp_setup_points(&cam, &l, B, 1, NULL, 0, cam.near, cam.far, NULL, &r);
+    swarp_status s0 = swarp_setup_points(&cam, &l, B, 1, NULL, 0, cam.z_near, cam.z_far, NULL, &r);
     ck_assert_msg(s0 == SWARP_ERR_BODY_EMPTY, "%s", swarp_status_name(s0));
     for (size_t m = 0; m < sizeof tu_modes / sizeof tu_modes[0]; ++m) {
         fesetround(tu_modes[m]);
-        swarp_status s = swarp_setup_points(&cam, &l, B, 1, NULL, 0, cam.near, cam.far, NULL, &r);
+        swarp_status s = swarp_setup_points(&cam, &l, B, 1, NULL, 0, cam.z_near, cam.z_far, NULL, &r);
         fesetround(FE_TONEAREST);
         ck_assert_msg(s == s0, "mode %zu: %s, default %s", m, swarp_status_name(s), swarp_status_name(s0));
     }
@@ -1529,7 +1529,7 @@ START_TEST(setup_points_psm_small_cone_rounding_mode) {
     o.pseudo_near = 0x1.55be0ebf00872p-4;
     o.pseudo_far = 0x1.6d35377d284bp-1;
     swarp_setup_result r0, r;
-    const swarp_status s0 = swarp_setup_points(&cam, &l, pts, 12, NULL, 0, cam.near, cam.far, &o, &r0);
+    const swarp_status s0 = swarp_setup_points(&cam, &l, pts, 12, NULL, 0, cam.z_near, cam.z_far, &o, &r0);
     ck_assert_msg(!swarp_status_is_error(s0), "%s", swarp_status_name(s0));
     const swarp_mat4* m0[3] = {&r0.light_view, &r0.light_proj, &r0.matrix};
     double big = 0;
@@ -1537,7 +1537,7 @@ START_TEST(setup_points_psm_small_cone_rounding_mode) {
         for (int i = 0; i < 16; ++i) big = fmax(big, fabs(m0[k]->m[i]));
     for (size_t m = 0; m < sizeof tu_modes / sizeof tu_modes[0]; ++m) {
         fesetround(tu_modes[m]);
-        const swarp_status s = swarp_setup_points(&cam, &l, pts, 12, NULL, 0, cam.near, cam.far, &o, &r);
+        const swarp_status s = swarp_setup_points(&cam, &l, pts, 12, NULL, 0, cam.z_near, cam.z_far, &o, &r);
         fesetround(FE_TONEAREST);
         ck_assert_msg(s == s0, "mode %zu: %s, default %s", m, swarp_status_name(s), swarp_status_name(s0));
         const swarp_mat4* m1[3] = {&r.light_view, &r.light_proj, &r.matrix};
@@ -1720,7 +1720,7 @@ START_TEST(setup_points_psm_huge_slideback_rounding_mode) {
     o.pseudo_far = 0x1.d5241f3838887p-3;
     o.slideback = 0x1.b6ec9acbae3a3p+41;
     swarp_setup_result r0, r;
-    const swarp_status s0 = swarp_setup_points(&cam, &l, pts, 16, pts, 16, cam.near, cam.far, &o, &r0);
+    const swarp_status s0 = swarp_setup_points(&cam, &l, pts, 16, pts, 16, cam.z_near, cam.z_far, &o, &r0);
     ck_assert_msg(!swarp_status_is_error(s0), "%s", swarp_status_name(s0));
     const swarp_mat4* m0[3] = {&r0.light_view, &r0.light_proj, &r0.matrix};
     double big = 0;
@@ -1729,7 +1729,7 @@ START_TEST(setup_points_psm_huge_slideback_rounding_mode) {
     for (size_t m = 0; m <= sizeof tu_modes / sizeof tu_modes[0]; ++m) { /* the last: to nearest */
         const int mode = m < sizeof tu_modes / sizeof tu_modes[0] ? tu_modes[m] : FE_TONEAREST;
         fesetround(mode);
-        const swarp_status s = swarp_setup_points(&cam, &l, pts, 16, pts, 16, cam.near, cam.far, &o, &r);
+        const swarp_status s = swarp_setup_points(&cam, &l, pts, 16, pts, 16, cam.z_near, cam.z_far, &o, &r);
         fesetround(FE_TONEAREST);
         ck_assert_msg(s == s0, "mode %zu: %s, default %s", m, swarp_status_name(s), swarp_status_name(s0));
         /* light_proj light_view = matrix, normwise: rounding of the terms */
@@ -1769,8 +1769,8 @@ static void flat_x_box_grazing_light_scene(swarp_camera* cam, swarp_light* l, sw
     cam->eye = (swarp_vec3){0x1.868ba1b7b7e0ap+16, -0x1.a3f61053e45e4p-2, 0x1.8681f276586bcp+16};
     cam->dir = (swarp_vec3){0x1.203af9ee75616p-50, 0x1.d48237d9a2e68p-1, 0x1.9d01b64f0c798p-2};
     cam->up = (swarp_vec3){0, 1, 0};
-    cam->near = 0x1.b8f6889236fa2p+0;
-    cam->far = 0x1.bce3ef5726ac1p+22;
+    cam->z_near = 0x1.b8f6889236fa2p+0;
+    cam->z_far = 0x1.bce3ef5726ac1p+22;
     cam->fovy = 0x1.55cf5c7959d87p+0;
     cam->aspect = 0x1.e58427d2d195cp-1;
     memset(l, 0, sizeof *l);
@@ -1794,7 +1794,7 @@ START_TEST(body_h_flat_box_cut_on_its_plane_rounding_mode) {
     for (int k = 0; k < 4; ++k) {
         swarp_polyhedron H;
         fesetround(modes[k]);
-        const swarp_status st = swarp_body_h(&cam, cam.near, cam.far, &b, &H);
+        const swarp_status st = swarp_body_h(&cam, cam.z_near, cam.z_far, &b, &H);
         fesetround(FE_TONEAREST);
         ck_assert_int_eq(st, SWARP_OK);
         ck_assert_uint_gt(H.vertex_count, 2);
@@ -1850,8 +1850,8 @@ START_TEST(cascade_box_flat_through_eye_rounding_mode) {
     cam.eye = (swarp_vec3){-0x1.6e36b23669e25p+21, -0x1.2d6e3383869c7p+1, -0x1.6e36fd9ebc33dp+21};
     cam.dir = (swarp_vec3){-0x1.69d40f542b7c6p-3, 0x0p+0, 0x1.f7f2296a35f6bp-1};
     cam.up = (swarp_vec3){0, 1, 0};
-    cam.near = 0x1.acd780e92a976p-19;
-    cam.far = 0x1.85f4d4f17385ep-17;
+    cam.z_near = 0x1.acd780e92a976p-19;
+    cam.z_far = 0x1.85f4d4f17385ep-17;
     cam.fovy = 0x1.765df4734700bp-1;
     cam.aspect = 0x1.0fd0819ec143cp+1;
     swarp_light l;
@@ -1894,8 +1894,8 @@ START_TEST(setup_psm_hemisphere_cap_rounding_mode) {
     cam.eye = (swarp_vec3){-0x1.6e35a0f3725e7p+21, -0x1.ddf9f165dac0bp+2, -0x1.6e36700b3d69dp+21};
     cam.dir = (swarp_vec3){-0x1.b657f7be61dfbp-1, -0x1.2690fdce9e973p-30, 0x1.0892af80c155fp-1};
     cam.up = (swarp_vec3){0, 1, 0};
-    cam.near = 0x1.a2de39b858b1ep-12;
-    cam.far = 0x1.6f08f119c527fp+9;
+    cam.z_near = 0x1.a2de39b858b1ep-12;
+    cam.z_far = 0x1.6f08f119c527fp+9;
     cam.fovy = 0x1.4343fd88fef7bp+1;
     cam.aspect = 0x1.3333333333333p-2;
     swarp_light l;
@@ -1980,14 +1980,14 @@ START_TEST(setup_points_centre_at_point_light_rounding_mode) {
     o.pseudo_far = 0x1.677d629d6df67p-1;
     o.slideback = 0x1.76897cc63854cp-1;
     swarp_setup_result r0;
-    const swarp_status s0 = swarp_setup_points(&cam, &l, pts, 11, NULL, 0, cam.near, cam.far, &o, &r0);
+    const swarp_status s0 = swarp_setup_points(&cam, &l, pts, 11, NULL, 0, cam.z_near, cam.z_far, &o, &r0);
     ck_assert_msg(!swarp_status_is_error(s0), "%s", swarp_status_name(s0));
     double scale = 0;
     for (int i = 0; i < 16; ++i) scale = fmax(scale, fmax(fabs(r0.light_proj.m[i]), fabs(r0.matrix.m[i])));
     for (size_t m = 0; m < sizeof tu_modes / sizeof tu_modes[0]; ++m) {
         swarp_setup_result r1;
         fesetround(tu_modes[m]);
-        const swarp_status s1 = swarp_setup_points(&cam, &l, pts, 11, NULL, 0, cam.near, cam.far, &o, &r1);
+        const swarp_status s1 = swarp_setup_points(&cam, &l, pts, 11, NULL, 0, cam.z_near, cam.z_far, &o, &r1);
         fesetround(FE_TONEAREST);
         ck_assert_msg(s1 == s0, "mode %zu: %s, default %s", m, swarp_status_name(s1), swarp_status_name(s0));
         for (int i = 0; i < 16; ++i) {
@@ -2041,12 +2041,12 @@ START_TEST(setup_points_psm_light_vertex_product_rounding_mode) {
     o.pseudo_far = 0x1.a1c5b68ebe16fp-4;
     o.slideback = 0x1.0eaa1069428ap-2;
     swarp_setup_result r0;
-    const swarp_status s0 = swarp_setup_points(&cam, &l, pts, 11, pts, 10, cam.near, cam.far, &o, &r0);
+    const swarp_status s0 = swarp_setup_points(&cam, &l, pts, 11, pts, 10, cam.z_near, cam.z_far, &o, &r0);
     ck_assert_msg(s0 == SWARP_OK, "%s", swarp_status_name(s0));
     for (size_t m = 0; m < sizeof tu_modes / sizeof tu_modes[0]; ++m) {
         swarp_setup_result r1;
         fesetround(tu_modes[m]);
-        const swarp_status s1 = swarp_setup_points(&cam, &l, pts, 11, pts, 10, cam.near, cam.far, &o, &r1);
+        const swarp_status s1 = swarp_setup_points(&cam, &l, pts, 11, pts, 10, cam.z_near, cam.z_far, &o, &r1);
         fesetround(FE_TONEAREST);
         ck_assert_msg(s1 == s0, "mode %zu: %s, default %s", m, swarp_status_name(s1), swarp_status_name(s0));
     }

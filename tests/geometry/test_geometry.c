@@ -103,7 +103,7 @@ static void dump_config(const config* c) {
             "near %.17g far %.17g\n  light type %d dir %.17g,%.17g,%.17g pos %.17g,%.17g,%.17g cone %.17g\n"
             "  box %.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n",
             c->cam.eye.x, c->cam.eye.y, c->cam.eye.z, c->cam.dir.x, c->cam.dir.y, c->cam.dir.z, c->cam.up.x,
-            c->cam.up.y, c->cam.up.z, c->cam.fovy, c->cam.aspect, c->cam.near, c->cam.far, (int)c->light.type,
+            c->cam.up.y, c->cam.up.z, c->cam.fovy, c->cam.aspect, c->cam.z_near, c->cam.z_far, (int)c->light.type,
             c->light.direction.x, c->light.direction.y, c->light.direction.z, c->light.position.x,
             c->light.position.y, c->light.position.z, c->light.cone_angle, c->box.min.x, c->box.min.y,
             c->box.min.z, c->box.max.x, c->box.max.y, c->box.max.z);
@@ -132,8 +132,8 @@ static void rnd_config(rng* R, config* c, double offset) {
     while (len(cross(c->cam.up, c->cam.dir)) < 0.1);
     c->cam.fovy = rnd(R, 20, 100) * DEG;
     c->cam.aspect = rnd(R, 0.5, 2.5);
-    c->cam.near = rnd(R, 0.05, 2);
-    c->cam.far = c->cam.near * exp(rnd(R, log(10.0), log(2000.0)));
+    c->cam.z_near = rnd(R, 0.05, 2);
+    c->cam.z_far = c->cam.z_near * exp(rnd(R, log(10.0), log(2000.0)));
     int kind = (int)(rng_next(R) % 4);
     if (kind <= 1) {
         c->light.type = SWARP_LIGHT_DIRECTIONAL;
@@ -206,7 +206,7 @@ static void check_config_v(rng* R, const config* c, swarp_technique tech, swarp_
         /* independent: no sampled point of V lies in S (and in the spot's
          * cone L: a spot that lights nothing visible also has an empty B) */
         for (int k = 0; k < 200; ++k) {
-            swarp_vec3 p = rnd_in_frustum(R, &c->cam, c->cam.near, c->cam.far);
+            swarp_vec3 p = rnd_in_frustum(R, &c->cam, c->cam.z_near, c->cam.z_far);
             int lit = 1;
             if (c->light.type == SWARP_LIGHT_POINT && c->light.cone_angle > 0) {
                 swarp_vec3 a = unit(c->light.direction), q = sub(p, c->light.position);
@@ -227,7 +227,7 @@ static void check_config_v(rng* R, const config* c, swarp_technique tech, swarp_
     for (int i = 0; i < 16; ++i) ck_assert(isfinite(res.matrix.m[i]));
     ck_assert(np >= 1 && np <= SWARP_BODY_MAX_POINTS);
     ck_assert(res.max_mx > 0 && isfinite(res.max_mx) && res.max_mz > 0 && isfinite(res.max_mz));
-    ck_assert(res.view_near >= c->cam.near && res.view_far <= c->cam.far && res.view_near < res.view_far);
+    ck_assert(res.view_near >= c->cam.z_near && res.view_far <= c->cam.z_far && res.view_near < res.view_far);
     ck_assert(res.n_eye > 0);
     /* B ⊆ S */
     for (size_t i = 0; i < np; ++i) CHECK(in_box(&c->box, pts[i], tol), "B point outside S");
@@ -241,7 +241,7 @@ static void check_config_v(rng* R, const config* c, swarp_technique tech, swarp_
     /* tightness: B touches the x and y bounds */
     /* (PSM: unit cube clipping fits the receivers H, [KOZ] §14.2.2) */
     swarp_polyhedron Ht;
-    ck_assert_int_eq(swarp_body_h(&c->cam, c->cam.near, c->cam.far, &c->box, &Ht), SWARP_OK); /* as swarp_setup */
+    ck_assert_int_eq(swarp_body_h(&c->cam, c->cam.z_near, c->cam.z_far, &c->box, &Ht), SWARP_OK); /* as swarp_setup */
     const swarp_vec3* tp = tech == SWARP_TECHNIQUE_PSM ? Ht.vertices : pts;
     size_t ntp = tech == SWARP_TECHNIQUE_PSM ? Ht.vertex_count : np;
     double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
@@ -262,9 +262,9 @@ static void check_config_v(rng* R, const config* c, swarp_technique tech, swarp_
         }
     /* coverage: vertices of H and random points of V ∩ S */
     swarp_polyhedron H;
-    ck_assert_int_eq(swarp_body_h(&c->cam, c->cam.near, c->cam.far, &c->box, &H), SWARP_OK);
+    ck_assert_int_eq(swarp_body_h(&c->cam, c->cam.z_near, c->cam.z_far, &c->box, &H), SWARP_OK);
     for (uint32_t i = 0; i < H.vertex_count; ++i) {
-        ck_assert(in_frustum(&c->cam, c->cam.near, c->cam.far, H.vertices[i], tol));
+        ck_assert(in_frustum(&c->cam, c->cam.z_near, c->cam.z_far, H.vertices[i], tol));
         ck_assert(in_box(&c->box, H.vertices[i], tol));
         if (!lit_by(c, H.vertices[i])) continue;
         double cc[4];
@@ -275,7 +275,7 @@ static void check_config_v(rng* R, const config* c, swarp_technique tech, swarp_
     int got = 0;
     swarp_vec3 samples[24];
     for (int k = 0; k < 400 && got < 24; ++k) {
-        swarp_vec3 p = rnd_in_frustum(R, &c->cam, c->cam.near, c->cam.far);
+        swarp_vec3 p = rnd_in_frustum(R, &c->cam, c->cam.z_near, c->cam.z_far);
         if (!in_box(&c->box, p, 0.0) || !lit_by(c, p)) continue;
         samples[got++] = p;
         double cc[4];
@@ -384,8 +384,8 @@ static swarp_camera overhead_camera(void) {
     c.up = v3(0, 1, 0);
     c.fovy = 60 * DEG;
     c.aspect = 1920.0 / 1080.0;
-    c.near = 1;
-    c.far = 100;
+    c.z_near = 1;
+    c.z_far = 100;
     return c;
 }
 
@@ -423,8 +423,8 @@ START_TEST(model_agreement_overhead) {
         if (techs[t] == SWARP_TECHNIQUE_UNIFORM) ck_assert(isinf(r.n_eye));
         swarp_error_config cfg;
         memset(&cfg, 0, sizeof cfg);
-        cfg.near = r.view_near;
-        cfg.far = r.view_far;
+        cfg.z_near = r.view_near;
+        cfg.z_far = r.view_far;
         cfg.theta = 0.5 * cam.fovy;
         cfg.res_ix = sw;
         cfg.res_iy = sh;
@@ -573,13 +573,13 @@ static void all_techniques_ok(const config* c, const char* what) {
 
 START_TEST(hard_far_near_ratio_and_tiny_near) {
     config c = base_config();
-    c.cam.near = 1e-3;
-    c.cam.far = 1e3; /* f/n = 1e6 */
+    c.cam.z_near = 1e-3;
+    c.cam.z_far = 1e3; /* f/n = 1e6 */
     c.box.min = v3(-2000, -5, -2000);
     c.box.max = v3(2000, 30, 2000);
     all_techniques_ok(&c, "f/n = 1e6, near = 1e-3");
-    c.cam.near = 1e-3;
-    c.cam.far = 50;
+    c.cam.z_near = 1e-3;
+    c.cam.z_far = 50;
     all_techniques_ok(&c, "near = 1e-3");
 }
 END_TEST
@@ -612,7 +612,7 @@ START_TEST(hard_flat_box) {
      * light's direction lies in B */
     swarp_vec3 pts[SWARP_BODY_MAX_POINTS];
     size_t np = 0;
-    ck_assert_int_eq(swarp_body_points(&c.cam, c.cam.near, c.cam.far, &c.light, &c.box, pts, SWARP_BODY_MAX_POINTS, &np),
+    ck_assert_int_eq(swarp_body_points(&c.cam, c.cam.z_near, c.cam.z_far, &c.light, &c.box, pts, SWARP_BODY_MAX_POINTS, &np),
                      SWARP_OK);
     double xmin = INFINITY;
     for (size_t i = 0; i < np; ++i) {
@@ -635,7 +635,7 @@ START_TEST(hard_camera_placement) {
     all_techniques_ok(&c, "camera on a face");
     /* outside, looking at it */
     c.cam.eye = v3(0, 100, 200);
-    c.cam.far = 600;
+    c.cam.z_far = 600;
     c.cam.dir = unit(sub(v3(0, 0, -100), c.cam.eye));
     all_techniques_ok(&c, "camera outside");
     /* outside, looking away: H empty, its own status, outputs untouched */
@@ -725,7 +725,7 @@ START_TEST(hard_point_light_positions) {
     }
     /* on the near plane (omni): the body surrounds the light's half space */
     c.light.cone_angle = 0;
-    c.light.position = add(c.cam.eye, scl(c.cam.dir, c.cam.near));
+    c.light.position = add(c.cam.eye, scl(c.cam.dir, c.cam.z_near));
     for (int t = 0; t < 3; ++t) {
         swarp_setup_options o;
         memset(&o, 0, sizeof o);
@@ -802,7 +802,7 @@ START_TEST(bad_input_non_finite_and_null) {
     b.cam.fovy = PI;
     ck_assert_int_eq(swarp_setup(&b.cam, &b.light, &b.box, NULL, &r, NULL, 0, NULL), SWARP_ERR_FOV);
     b = c;
-    b.cam.far = b.cam.near;
+    b.cam.z_far = b.cam.z_near;
     ck_assert_int_eq(swarp_setup(&b.cam, &b.light, &b.box, NULL, &r, NULL, 0, NULL), SWARP_ERR_NEAR_FAR);
     b = c;
     b.cam._reserved[2] = 1;
@@ -913,7 +913,7 @@ START_TEST(poly_camera_and_inverse_matrix_agree) {
         swarp_vec3 f = unit(c.cam.dir), r = unit(cross(f, c.cam.up)), u = cross(r, f);
         swarp_mat4 V = {{r.x, u.x, -f.x, 0, r.y, u.y, -f.y, 0, r.z, u.z, -f.z, 0, -dot(r, c.cam.eye), -dot(u, c.cam.eye),
                          dot(f, c.cam.eye), 1}};
-        double ty = tan(0.5 * c.cam.fovy), n = c.cam.near, fa = c.cam.far;
+        double ty = tan(0.5 * c.cam.fovy), n = c.cam.z_near, fa = c.cam.z_far;
         swarp_mat4 P = {{1 / (ty * c.cam.aspect), 0, 0, 0, 0, 1 / ty, 0, 0, 0, 0, -(fa + n) / (fa - n), -1, 0, 0,
                          -2 * fa * n / (fa - n), 0}};
         swarp_mat4 VP, inv;
@@ -956,17 +956,17 @@ START_TEST(adjusted_range_brackets_samples) {
         swarp_status s = swarp_body_adjusted_range(&c.cam, &c.box, &n, &f);
         if (s == SWARP_ERR_BODY_EMPTY) continue;
         ck_assert_int_eq(s, SWARP_OK);
-        ck_assert(n >= c.cam.near && f <= c.cam.far && n <= f);
+        ck_assert(n >= c.cam.z_near && f <= c.cam.z_far && n <= f);
         swarp_vec3 v = unit(c.cam.dir);
         double lo = INFINITY, hi = -INFINITY;
         for (int k = 0; k < 3000; ++k) {
-            swarp_vec3 p = rnd_in_frustum(&R, &c.cam, c.cam.near, c.cam.far);
+            swarp_vec3 p = rnd_in_frustum(&R, &c.cam, c.cam.z_near, c.cam.z_far);
             if (!in_box(&c.box, p, 0)) continue;
             double z = dot(sub(p, c.cam.eye), v);
             lo = fmin(lo, z), hi = fmax(hi, z);
         }
         if (!(lo <= hi)) continue;
-        double tol = 1e-9 * c.cam.far;
+        double tol = 1e-9 * c.cam.z_far;
         ck_assert(lo >= n - tol && hi <= f + tol);
         checked++;
     }
@@ -1159,7 +1159,7 @@ START_TEST(psm_light_behind_camera) {
             int behind = 0;
             rng R = {(uint64_t)deg};
             for (int k = 0; k < 400; ++k) {
-                swarp_vec3 h = rnd_in_frustum(&R, &cam, cam.near, cam.far);
+                swarp_vec3 h = rnd_in_frustum(&R, &cam, cam.z_near, cam.z_far);
                 if (!in_box(&box, h, 0)) continue;
                 double ch[4];
                 clip(&r.matrix, h, ch);
@@ -1314,12 +1314,12 @@ START_TEST(far_dbl_max_equals_finite_far) {
     swarp_status st = swarp_setup(&cam, &light, &box, NULL, &r, pts, SWARP_BODY_MAX_POINTS, &n);
     ck_assert_msg(!swarp_status_is_error(st), "%s", swarp_status_name(st));
     check_b_inside_map(&r, pts, n, "far = DBL_MAX");
-    cam.far = 1e4;
+    cam.z_far = 1e4;
     ck_assert_int_eq(swarp_setup(&cam, &light, &box, NULL, &r4, NULL, 0, NULL), st);
     ck_assert(fabs(r.view_far - r4.view_far) <= 1e-9 * r4.view_far && r.view_near == r4.view_near);
     /* a box wholly before the near plane: H is empty */
-    cam.far = DBL_MAX;
-    cam.near = 1e4;
+    cam.z_far = DBL_MAX;
+    cam.z_near = 1e4;
     ck_assert_int_eq(swarp_setup(&cam, &light, &box, NULL, &r, NULL, 0, NULL), SWARP_ERR_BODY_EMPTY);
 }
 END_TEST

@@ -31,8 +31,8 @@ static int one_map(void) {
     cam.up.y = 1.0;
     cam.fovy = 1.0;
     cam.aspect = 16.0 / 9.0;
-    cam.near = 0.5;
-    cam.far = 100.0;
+    cam.z_near = 0.5;
+    cam.z_far = 100.0;
     light.direction.x = 0.3;
     light.direction.y = -1.0;
     light.direction.z = 0.2;

@@ -40,7 +40,7 @@ static v3 rnd_unit(void) {
 /* ---- the viewer, evaluated from its basis ------------------------------- */
 typedef struct cam {
     v3 eye, f, s, u; /* forward, right, up (orthonormal) */
-    double tan_half, aspect, near, far;
+    double tan_half, aspect, z_near, z_far;
     unsigned g, h;
 } cam;
 
@@ -53,8 +53,8 @@ static cam make_cam(v3 eye, v3 dir, v3 up, double fovy, double aspect, double ne
     c.u = cross(c.s, c.f);
     c.tan_half = tan(0.5 * fovy);
     c.aspect = aspect;
-    c.near = near;
-    c.far = far;
+    c.z_near = near;
+    c.z_far = far;
     c.g = g;
     c.h = h;
     return c;
@@ -62,7 +62,7 @@ static cam make_cam(v3 eye, v3 dir, v3 up, double fovy, double aspect, double ne
 
 /* OpenGL lookAt * perspective, written out element by element. */
 static swarp_mat4 cam_matrix(const cam* c) {
-    double f = 1.0 / c->tan_half, n = c->near, fa = c->far;
+    double f = 1.0 / c->tan_half, n = c->z_near, fa = c->z_far;
     double P[4][4] = {{f / c->aspect, 0, 0, 0}, {0, f, 0, 0}, {0, 0, (fa + n) / (n - fa), 2 * fa * n / (n - fa)}, {0, 0, -1, 0}};
     double Vw[4][4] = {{c->s.x, c->s.y, c->s.z, -dot(c->s, c->eye)},
                        {c->u.x, c->u.y, c->u.z, -dot(c->u, c->eye)},
@@ -207,7 +207,7 @@ static void check_exact(const config* k, const swarp_mat4* Ml, int samples, doub
         v3 X;
         double t = cam_hit(&k->c, &k->P, x, y, &X);
         /* visible and within the viewer's depth range */
-        if (!(t > k->c.near) || t > k->c.far) continue;
+        if (!(t > k->c.z_near) || t > k->c.z_far) continue;
         double xl, yl, zl, q;
         light_px(Ml, X, &xl, &yl, &zl, &q);
         if (!(q > 0)) ++*bad_sign;
@@ -272,7 +272,7 @@ START_TEST(jacobian_is_identity) {
         for (int s = 0; s < 4; ++s) {
             double x = rnd(1, k.c.g - 2), y = rnd(1, k.c.h - 2), d = 1e-3;
             v3 X;
-            if (!(cam_hit(&k.c, &k.P, x, y, &X) > k.c.near)) continue;
+            if (!(cam_hit(&k.c, &k.P, x, y, &X) > k.c.z_near)) continue;
             double J[2][2];
             for (int a = 0; a < 2; ++a) {
                 v3 Xp, Xm;
@@ -431,7 +431,7 @@ START_TEST(large_world_coordinates) {
             double x = rnd(0, k.c.g - 1), y = rnd(0, k.c.h - 1);
             v3 X;
             double t = cam_hit(&k.c, &k.P, x, y, &X);
-            if (!(t > k.c.near) || t > k.c.far) continue;
+            if (!(t > k.c.z_near) || t > k.c.z_far) continue;
             double xl, yl, zl, q, xr, yr;
             light_px(&Ml, X, &xl, &yl, &zl, &q);
             cam_pixel(&k.c, X, &xr, &yr);
@@ -610,7 +610,7 @@ START_TEST(restrict_rectangle_encloses_and_is_tight) {
             double x = rnd(0, k.c.g - 1), y = rnd(0, k.c.h - 1);
             v3 X;
             double t = cam_hit(&k.c, &k.P, x, y, &X);
-            if (!(t > k.c.near) || t > k.c.far) continue;
+            if (!(t > k.c.z_near) || t > k.c.z_far) continue;
             C[m] = P4(X, 1.0);
             vx[m] = x, vy[m] = y;
             ++m;
@@ -721,7 +721,7 @@ START_TEST(restrict_clipped_to_view_matches_sampling) {
         ck_assert(!swarp_status_is_error(swarp_lixel_matrix(&k.Mv, k.c.g, k.c.h, &k.light, &k.P, NULL, &Ml, NULL)));
         /* C: a quad of P around a visible point, partly out of view */
         v3 X0;
-        if (!(cam_hit(&k.c, &k.P, rnd(0, k.c.g - 1), rnd(0, k.c.h - 1), &X0) > k.c.near)) continue;
+        if (!(cam_hit(&k.c, &k.P, rnd(0, k.c.g - 1), rnd(0, k.c.h - 1), &X0) > k.c.z_near)) continue;
         v3 n = unit(V(k.P.a, k.P.b, k.P.c));
         v3 e1 = unit(cross(n, fabs(n.x) < 0.9 ? V(1, 0, 0) : V(0, 1, 0))), e2 = cross(n, e1);
         double r = rnd(0.5, 20);
@@ -808,7 +808,7 @@ START_TEST(factor_viewport_times_projection) {
         for (int s = 0; s < 4; ++s) {
             v3 X;
             double t = cam_hit(&k.c, &k.P, rnd(0, k.c.g - 1), rnd(0, k.c.h - 1), &X);
-            if (!(t > k.c.near) || t > k.c.far) continue;
+            if (!(t > k.c.z_near) || t > k.c.z_far) continue;
             light_px(&GLP, X, &x, &y, &z, &q);
             ck_assert_double_gt(q, 0);
             ck_assert_double_eq_tol(z, dr == SWARP_DEPTH_ZERO_TO_ONE ? f_eff : 2 * f_eff - 1, 1e-6);
@@ -1046,7 +1046,7 @@ START_TEST(near_degenerate_never_nan) {
             v3 X;
             double xs = rnd(0, k.c.g - 1), ys = rnd(0, k.c.h - 1);
             double t = cam_hit(&k.c, &k.P, xs, ys, &X);
-            if (!(t > k.c.near) || t > k.c.far) continue;
+            if (!(t > k.c.z_near) || t > k.c.z_far) continue;
             double x, y, z, q;
             light_px(&Ml, X, &x, &y, &z, &q);
             ck_assert(isfinite(q));

@@ -34,13 +34,13 @@ static int make_config(uint64_t* s, swarp_camera* c, swarp_light* l, swarp_aabb*
     c->up = (swarp_vec3){0, 1, 0};
     c->fovy = tu_uniform(s, 30, 90) * PI / 180;
     c->aspect = 16.0 / 9.0;
-    c->near = tu_uniform(s, 0.1, 2);
-    c->far = c->near * pow(10, tu_uniform(s, 2, 4));
+    c->z_near = tu_uniform(s, 0.1, 2);
+    c->z_far = c->z_near * pow(10, tu_uniform(s, 2, 4));
     /* light direction uniform over the sphere */
     const double zl = tu_uniform(s, -1, 1), al = tu_uniform(s, -PI, PI), rl = sqrt(1 - zl * zl);
     l->type = SWARP_LIGHT_DIRECTIONAL;
     l->direction = (swarp_vec3){rl * cos(al), zl, rl * sin(al)};
-    const double e = fmin(c->far, 2000);
+    const double e = fmin(c->z_far, 2000);
     const int with_eye = tu_uniform(s, 0, 1) < 0.5;
     box->min = (swarp_vec3){-e, 0, -e};
     box->max = (swarp_vec3){e, with_eye ? c->eye.y + 30 : c->eye.y * 0.5, e};

@@ -438,26 +438,26 @@ START_TEST(error_tiny_resolution_no_spurious_underflow) {
     REQUIRE_WIDE_LONG_DOUBLE();
     swarp_error_config cfg;
     memset(&cfg, 0, sizeof cfg);
-    cfg.near = 10.0;
-    cfg.far = 1e8 + 10.0;
+    cfg.z_near = 10.0;
+    cfg.z_far = 1e8 + 10.0;
     cfg.theta = 0.5;
     cfg.res_ix = 1e-320;
     cfg.res_iy = 1e-320;
     cfg.res_s = 1e4;
     cfg.res_t = 1e4;
     double mz = -1, mx = -1;
-    ck_assert_int_eq(swarp_error_mz(&cfg, cfg.far, cfg.near, &mz), SWARP_OK);
+    ck_assert_int_eq(swarp_error_mz(&cfg, cfg.z_far, cfg.z_near, &mz), SWARP_OK);
     /* (2.6) at z = f, n' = n: k_z (n' + f - n)^2/(f n' (n' + f - n)) = k_z / n */
-    long double kz = (long double)cfg.res_iy / 1e4L * ((long double)cfg.far - 10.0L) / (2.0L * tanl(0.5L));
+    long double kz = (long double)cfg.res_iy / 1e4L * ((long double)cfg.z_far - 10.0L) / (2.0L * tanl(0.5L));
     long double ref = kz / 10.0L;
     ck_assert(mz > 0 && fabsl(mz - ref) <= 1e-12L * ref + DBL_TRUE_MIN);
     /* (2.5) at z = n: res_ix/res_s f/n (n + 0)/(n + f - n) = res_ix/res_s ~ 5e-324 -> rounds to
      * DBL_TRUE_MIN; with res_s = 1e4 (1e-324 < DBL_TRUE_MIN/2) it is 0 */
     cfg.res_s = 2e3;
-    ck_assert_int_eq(swarp_error_mx(&cfg, cfg.near, cfg.near, &mx), SWARP_OK);
+    ck_assert_int_eq(swarp_error_mx(&cfg, cfg.z_near, cfg.z_near, &mx), SWARP_OK);
     ck_assert(mx == DBL_TRUE_MIN);
     cfg.res_s = 1e4;
-    ck_assert_int_eq(swarp_error_mx(&cfg, cfg.near, cfg.near, &mx), SWARP_OK);
+    ck_assert_int_eq(swarp_error_mx(&cfg, cfg.z_near, cfg.z_near, &mx), SWARP_OK);
     ck_assert(mx == 0.0);
 }
 END_TEST

@@ -16,20 +16,20 @@ static double lit_mz(const swarp_error_config* c, double n, double f, double z, 
 }
 static double lit_mx_psm(const swarp_error_config* c) { return c->res_ix / c->res_s; } /* [RHS] (2.5) */
 static double lit_mz_psm(const swarp_error_config* c, double z) { /* [RHS] (2.6) */
-    return c->res_iy / c->res_t * (c->far - c->near) / (2 * tan(c->theta)) * z / (c->near * c->far);
+    return c->res_iy / c->res_t * (c->z_far - c->z_near) / (2 * tan(c->theta)) * z / (c->z_near * c->z_far);
 }
 static double lit_mx_uni(const swarp_error_config* c, double z) { /* [RHS] (2.7) */
-    return c->res_ix / c->res_s * c->far / z;
+    return c->res_ix / c->res_s * c->z_far / z;
 }
 static double lit_mz_uni(const swarp_error_config* c, double z) { /* [RHS] (2.8) */
-    return c->res_iy / c->res_t * (c->far - c->near) / (2 * tan(c->theta)) / z;
+    return c->res_iy / c->res_t * (c->z_far - c->z_near) / (2 * tan(c->theta)) / z;
 }
 
 static swarp_error_config rand_cfg(uint64_t* s) {
     swarp_error_config c;
     memset(&c, 0, sizeof c);
-    c.near = tc_logu(s, 1e-2, 1e2);
-    c.far = c.near * tc_logu(s, 1.05, 1e4);
+    c.z_near = tc_logu(s, 1e-2, 1e2);
+    c.z_far = c.z_near * tc_logu(s, 1.05, 1e4);
     c.theta = tc_uniform(s, 5, 80) * TC_DEG;
     c.res_ix = floor(tc_uniform(s, 64, 4096));
     c.res_iy = floor(tc_uniform(s, 64, c.res_ix + 1));
@@ -42,12 +42,12 @@ START_TEST(mx_mz_match_23_24) {
     uint64_t s = 0x5eed1001;
     for (int k = 0; k < 500; ++k) {
         swarp_error_config c = rand_cfg(&s);
-        double z = tc_uniform(&s, c.near, c.far), np = c.near * tc_logu(&s, 1e-2, 1e6);
+        double z = tc_uniform(&s, c.z_near, c.z_far), np = c.z_near * tc_logu(&s, 1e-2, 1e6);
         double mx = 0, mz = 0;
         ck_assert_int_eq(swarp_error_mx(&c, z, np, &mx), SWARP_OK);
         ck_assert_int_eq(swarp_error_mz(&c, z, np, &mz), SWARP_OK);
-        ck_assert_rel(mx, lit_mx(&c, c.near, c.far, z, np), 1e-12);
-        ck_assert_rel(mz, lit_mz(&c, c.near, c.far, z, np), 1e-12);
+        ck_assert_rel(mx, lit_mx(&c, c.z_near, c.z_far, z, np), 1e-12);
+        ck_assert_rel(mz, lit_mz(&c, c.z_near, c.z_far, z, np), 1e-12);
     }
 }
 END_TEST
@@ -56,12 +56,12 @@ START_TEST(psm_and_uniform_limits) {
     uint64_t s = 0x5eed1002;
     for (int k = 0; k < 800; ++k) {
         swarp_error_config c = rand_cfg(&s);
-        c.far = c.near * tc_logu(&s, 1.05, 1e3);
-        double z = (k % 5 == 0) ? c.near : (k % 5 == 1) ? c.far : tc_uniform(&s, c.near, c.far);
+        c.z_far = c.z_near * tc_logu(&s, 1.05, 1e3);
+        double z = (k % 5 == 0) ? c.z_near : (k % 5 == 1) ? c.z_far : tc_uniform(&s, c.z_near, c.z_far);
         double mx = 0, mz = 0;
         /* n' = n: PSM (2.5), (2.6) */
-        ck_assert_int_eq(swarp_error_mx(&c, z, c.near, &mx), SWARP_OK);
-        ck_assert_int_eq(swarp_error_mz(&c, z, c.near, &mz), SWARP_OK);
+        ck_assert_int_eq(swarp_error_mx(&c, z, c.z_near, &mx), SWARP_OK);
+        ck_assert_int_eq(swarp_error_mz(&c, z, c.z_near, &mz), SWARP_OK);
         ck_assert_rel(mx, lit_mx_psm(&c), 1e-14);
         ck_assert_rel(mz, lit_mz_psm(&c, z), 1e-13);
         /* n' = +inf: the closed-form uniform limit (2.7), (2.8) */
@@ -73,11 +73,11 @@ START_TEST(psm_and_uniform_limits) {
         double bx = 0, bz = 0;
         ck_assert_int_eq(swarp_error_mx(&c, z, 1e12, &bx), SWARP_OK);
         ck_assert_int_eq(swarp_error_mz(&c, z, 1e12, &bz), SWARP_OK);
-        double tol = 2.0 * (c.far - c.near) / 1e12 + 1e-14; /* r1 r2 - 1 <= 2 (f - n)/n' */
+        double tol = 2.0 * (c.z_far - c.z_near) / 1e12 + 1e-14; /* r1 r2 - 1 <= 2 (f - n)/n' */
         ck_assert_rel(bx, mx, tol);
         ck_assert_rel(bz, mz, tol);
-        ck_assert_rel(lit_mx(&c, c.near, c.far, z, 1e12), mx, tol);
-        ck_assert_rel(lit_mz(&c, c.near, c.far, z, 1e12), mz, tol);
+        ck_assert_rel(lit_mx(&c, c.z_near, c.z_far, z, 1e12), mx, tol);
+        ck_assert_rel(lit_mz(&c, c.z_near, c.z_far, z, 1e12), mz, tol);
         /* and n' = 1e300 neither overflows nor loses accuracy */
         ck_assert_int_eq(swarp_error_mz(&c, z, 1e300, &bz), SWARP_OK);
         ck_assert_rel(bz, mz, 1e-14);
@@ -89,14 +89,14 @@ START_TEST(max_equals_dense_sample_max) {
     uint64_t s = 0x5eed1003;
     for (int k = 0; k < 200; ++k) {
         swarp_error_config c = rand_cfg(&s);
-        double np = (k % 4 == 0) ? INFINITY : c.near * tc_logu(&s, 0.05, 1e5);
+        double np = (k % 4 == 0) ? INFINITY : c.z_near * tc_logu(&s, 0.05, 1e5);
         double max_mx = 0, max_mz = 0, dx = 0, dz = 0;
         ck_assert_int_eq(swarp_error_max(&c, np, &max_mx, &max_mz), SWARP_OK);
         const int N = 20000;
         int bad = 0;
         for (int i = 0; i <= N; ++i) {
             /* geometric spacing (dense near n where the curves are steep) */
-            double z = (i == N) ? c.far : c.near * pow(c.far / c.near, (double)i / N);
+            double z = (i == N) ? c.z_far : c.z_near * pow(c.z_far / c.z_near, (double)i / N);
             double vx = 0, vz = 0;
             /* (one assertion per point is too slow under Check: count instead) */
             bad += swarp_error_mx(&c, z, np, &vx) != SWARP_OK;
@@ -129,11 +129,11 @@ START_TEST(bad_inputs_single_range) {
         rows[k].z = zz, rows[k].np = npp, rows[k].want = st; \
         ++k;                                           \
     } while (0)
-    ROW(near, 0.0, 50, 1, SWARP_ERR_NEAR_FAR);
-    ROW(near, -1.0, 50, 1, SWARP_ERR_NEAR_FAR);
-    ROW(near, NAN, 50, 1, SWARP_ERR_NON_FINITE);
-    ROW(far, 1.0, 1, 1, SWARP_ERR_NEAR_FAR);
-    ROW(far, INFINITY, 50, 1, SWARP_ERR_NON_FINITE);
+    ROW(z_near, 0.0, 50, 1, SWARP_ERR_NEAR_FAR);
+    ROW(z_near, -1.0, 50, 1, SWARP_ERR_NEAR_FAR);
+    ROW(z_near, NAN, 50, 1, SWARP_ERR_NON_FINITE);
+    ROW(z_far, 1.0, 1, 1, SWARP_ERR_NEAR_FAR);
+    ROW(z_far, INFINITY, 50, 1, SWARP_ERR_NON_FINITE);
     ROW(theta, 0.0, 50, 1, SWARP_ERR_FOV);
     ROW(theta, TC_HALF_PI, 50, 1, SWARP_ERR_FOV);
     ROW(theta, NAN, 50, 1, SWARP_ERR_NON_FINITE);
@@ -142,16 +142,16 @@ START_TEST(bad_inputs_single_range) {
     ROW(res_s, NAN, 50, 1, SWARP_ERR_RESOLUTION);
     ROW(res_t, INFINITY, 50, 1, SWARP_ERR_RESOLUTION);
     ROW(_reserved[2], 1u, 50, 1, SWARP_ERR_RESERVED_NONZERO);
-    ROW(near, 1.0, 0.5, 1, SWARP_ERR_OUT_OF_RANGE);
-    ROW(near, 1.0, 100.5, 1, SWARP_ERR_OUT_OF_RANGE);
-    ROW(near, 1.0, NAN, 1, SWARP_ERR_NON_FINITE);
-    ROW(near, 1.0, INFINITY, 1, SWARP_ERR_NON_FINITE);
-    ROW(near, 1.0, 50, 0.0, SWARP_ERR_OUT_OF_RANGE);
-    ROW(near, 1.0, 50, -3.0, SWARP_ERR_OUT_OF_RANGE);
-    ROW(near, 1.0, 50, NAN, SWARP_ERR_NON_FINITE);
-    ROW(near, 1.0, 50, -INFINITY, SWARP_ERR_NON_FINITE);
+    ROW(z_near, 1.0, 0.5, 1, SWARP_ERR_OUT_OF_RANGE);
+    ROW(z_near, 1.0, 100.5, 1, SWARP_ERR_OUT_OF_RANGE);
+    ROW(z_near, 1.0, NAN, 1, SWARP_ERR_NON_FINITE);
+    ROW(z_near, 1.0, INFINITY, 1, SWARP_ERR_NON_FINITE);
+    ROW(z_near, 1.0, 50, 0.0, SWARP_ERR_OUT_OF_RANGE);
+    ROW(z_near, 1.0, 50, -3.0, SWARP_ERR_OUT_OF_RANGE);
+    ROW(z_near, 1.0, 50, NAN, SWARP_ERR_NON_FINITE);
+    ROW(z_near, 1.0, 50, -INFINITY, SWARP_ERR_NON_FINITE);
     /* n' so small that (n' + z - n)/n' overflows */
-    ROW(far, 1e300, 1e300, 1e-300, SWARP_ERR_OVERFLOW);
+    ROW(z_far, 1e300, 1e300, 1e-300, SWARP_ERR_OVERFLOW);
 #undef ROW
     for (int i = 0; i < k; ++i) {
         const row* r = &rows[i];
@@ -184,12 +184,12 @@ START_TEST(split_curve_is_per_split_metric) {
         size_t m = 1 + (size_t)(tc_next(&s) % 8);
         double splits[9], nps[8];
         /* random strictly increasing splits */
-        splits[0] = c.near;
+        splits[0] = c.z_near;
         for (size_t i = 1; i <= m; ++i) splits[i] = splits[i - 1] * tc_logu(&s, 1.05, 10.0);
         for (size_t i = 0; i < m; ++i)
             nps[i] = (tc_next(&s) % 3 == 0) ? INFINITY : splits[i] * tc_logu(&s, 0.1, 1e3);
         /* cfg near/far are ignored: make them nonsense */
-        c.near = -7, c.far = -9;
+        c.z_near = -7, c.z_far = -9;
         enum { N = 400 };
         double z[N + 18], mx[N + 18], mz[N + 18];
         size_t cnt = 0;
@@ -205,9 +205,9 @@ START_TEST(split_curve_is_per_split_metric) {
             size_t i = 0;
             while (i + 1 < m && z[j] >= splits[i + 1]) ++i;
             swarp_error_config ci = c;
-            ci.near = splits[i], ci.far = splits[i + 1];
-            double ex = isinf(nps[i]) ? lit_mx_uni(&ci, z[j]) : lit_mx(&ci, ci.near, ci.far, z[j], nps[i]);
-            double ez = isinf(nps[i]) ? lit_mz_uni(&ci, z[j]) : lit_mz(&ci, ci.near, ci.far, z[j], nps[i]);
+            ci.z_near = splits[i], ci.z_far = splits[i + 1];
+            double ex = isinf(nps[i]) ? lit_mx_uni(&ci, z[j]) : lit_mx(&ci, ci.z_near, ci.z_far, z[j], nps[i]);
+            double ez = isinf(nps[i]) ? lit_mz_uni(&ci, z[j]) : lit_mz(&ci, ci.z_near, ci.z_far, z[j], nps[i]);
             ck_assert_rel(mx[j], ex, 1e-12);
             ck_assert_rel(mz[j], ez, 1e-12);
             dense_mx = mx[j] > dense_mx ? mx[j] : dense_mx;
@@ -219,7 +219,7 @@ START_TEST(split_curve_is_per_split_metric) {
         double bx = 0, bz = 0;
         for (size_t i = 0; i < m; ++i) {
             swarp_error_config ci = c;
-            ci.near = splits[i], ci.far = splits[i + 1];
+            ci.z_near = splits[i], ci.z_far = splits[i + 1];
             double ex = 0, ez = 0;
             ck_assert_int_eq(swarp_error_max(&ci, nps[i], &ex, &ez), SWARP_OK);
             ck_assert(smx[i] == ex && smz[i] == ez);
@@ -234,7 +234,7 @@ START_TEST(split_curve_is_per_split_metric) {
         /* one split is the single-range metric */
         if (m == 1) {
             swarp_error_config c1 = c;
-            c1.near = splits[0], c1.far = splits[1];
+            c1.z_near = splits[0], c1.z_far = splits[1];
             double ex = 0;
             ck_assert_int_eq(swarp_error_mz(&c1, z[5], nps[0], &ex), SWARP_OK);
             ck_assert(ex == mz[5]);

@@ -32,8 +32,8 @@ static swarp_camera level_camera(void) {
     c.up = (swarp_vec3){0, 1, 0};
     c.fovy = 60.0 * PI / 180.0;
     c.aspect = (double)W / H;
-    c.near = 1.0;
-    c.far = 100.0;
+    c.z_near = 1.0;
+    c.z_far = 100.0;
     return c;
 }
 
@@ -178,10 +178,10 @@ START_TEST(random_configurations_match_finite_differences) {
         swarp_camera c = level_camera();
         const double pitch = tu_uniform(&s, -0.5, 0.2), yaw = tu_uniform(&s, -3, 3);
         c.dir = (swarp_vec3){sin(yaw) * cos(pitch), sin(pitch), -cos(yaw) * cos(pitch)};
-        c.far = c.near * pow(10, tu_uniform(&s, 1, 3));
+        c.z_far = c.z_near * pow(10, tu_uniform(&s, 1, 3));
         const double th = tu_uniform(&s, 0, 2 * PI), el = tu_uniform(&s, 0.05, 1.5);
         const swarp_light l = sun(cos(el) * cos(th), -sin(el), cos(el) * sin(th));
-        const swarp_aabb box = {{-c.far, -1, -c.far}, {c.far, 30, c.far}};
+        const swarp_aabb box = {{-c.z_far, -1, -c.z_far}, {c.z_far, 30, c.z_far}};
         const swarp_technique t = (swarp_technique)(1 + cfg % 3);
         swarp_setup_result r;
         if (swarp_status_is_error(setup(&c, &l, &box, t, &r))) continue;
@@ -313,10 +313,10 @@ START_TEST(maximum_over_h_bounds_random_points_and_dense_sampling) {
         swarp_camera c = level_camera();
         const double pitch = tu_uniform(&s, -0.5, 0.1);
         c.dir = (swarp_vec3){0.2, sin(pitch), -cos(pitch)};
-        c.far = pow(10, tu_uniform(&s, 1.5, 3));
+        c.z_far = pow(10, tu_uniform(&s, 1.5, 3));
         const double th = tu_uniform(&s, 0, 2 * PI), el = tu_uniform(&s, 0.1, 1.5);
         const swarp_light l = sun(cos(el) * cos(th), -sin(el), cos(el) * sin(th));
-        const swarp_aabb box = {{-c.far, -1, -c.far}, {c.far, 30, c.far}};
+        const swarp_aabb box = {{-c.z_far, -1, -c.z_far}, {c.z_far, 30, c.z_far}};
         swarp_setup_result r;
         if (swarp_status_is_error(setup(&c, &l, &box, techs[_i], &r))) continue;
         swarp_measured_error m, dense;

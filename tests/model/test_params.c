@@ -73,7 +73,7 @@ START_TEST(nopt_equalises_mz_at_near_and_far_overhead) {
         ck_assert_rel(n_opt, lit_nopt(f - n, n, f), 1e-12);
         /* the defining property, literal (2.4) and the library's m_z */
         ck_assert_rel(lit_mz(n, f, n, n_opt), lit_mz(n, f, f, n_opt), 1e-12);
-        cfg.near = n, cfg.far = f;
+        cfg.z_near = n, cfg.z_far = f;
         double mz_n = 0, mz_f = 0;
         ck_assert_int_eq(swarp_error_mz(&cfg, n, n_opt, &mz_n), SWARP_OK);
         ck_assert_int_eq(swarp_error_mz(&cfg, f, n_opt, &mz_f), SWARP_OK);

@@ -32,8 +32,8 @@ START_TEST(explain_text_independent_of_rounding_mode) {
     swarp_plan_result p;
     ck_assert(!swarp_status_is_error(swarp_plan(&needs, &budget, &p)));
     /* values on the wrong side of a boundary after one directed rounding */
-    p.near = 0.5325;       /* "0.532" (the old code printed 0.533 in every mode but downward) */
-    p.far = 2.675;         /* "2.67" */
+    p.z_near = 0.5325;       /* "0.532" (the old code printed 0.533 in every mode but downward) */
+    p.z_far = 2.675;         /* "2.67" */
     p.max_mx = 4.4445e-5;  /* "4.44e-05" */
     p.max_mz = 1.0005e-3;  /* "0.00100": 0.0010004999999999999... */
     p.error_area = 99.95;  /* "100": 99.9500000000000028... rounds up */
@@ -47,7 +47,7 @@ START_TEST(explain_text_independent_of_rounding_mode) {
     }
     /* the digits are the exact value's (printf converts exactly) */
     char want[64];
-    snprintf(want, sizeof want, "%.3g", p.near);
+    snprintf(want, sizeof want, "%.3g", p.z_near);
     ck_assert_str_eq(want, "0.532");
     ck_assert_msg(strstr(ref, "depth range [0.532, 2.67]") != NULL, "%s", ref);
     snprintf(want, sizeof want, "max m_x %.2e", p.max_mx);
@@ -58,14 +58,14 @@ START_TEST(explain_text_independent_of_rounding_mode) {
     /* a rounding that carries into the next decade is formatted in that
      * decade: one ulp below 100 prints as 100 exactly does ("100", not
      * "100.0"), and one ulp below 1e7 as "1.00e+07" */
-    p.near = nextafter(100.0, 0.0);
-    p.far = nextafter(1e7, 0.0);
+    p.z_near = nextafter(100.0, 0.0);
+    p.z_far = nextafter(1e7, 0.0);
     for (int m = 0; m < 4; ++m) {
         explain(&p, modes[m], got, sizeof got);
         ck_assert_msg(strstr(got, "depth range [100, 1.00e+07]") != NULL, "mode %d: %s", m, got);
     }
-    p.near = 100.0;
-    p.far = 1e7;
+    p.z_near = 100.0;
+    p.z_far = 1e7;
     explain(&p, FE_TONEAREST, got, sizeof got);
     ck_assert_msg(strstr(got, "depth range [100, 1.00e+07]") != NULL, "%s", got);
 }
@@ -164,8 +164,8 @@ static void plan_floor(double near, int mode, swarp_status* st, swarp_plan_resul
     n.camera.up = (swarp_vec3){0.0, 1.0, 0.0};
     n.camera.fovy = 1.0;
     n.camera.aspect = 1.5;
-    n.camera.near = near;
-    n.camera.far = 100.0;
+    n.camera.z_near = near;
+    n.camera.z_far = 100.0;
     n.plane_count = 1;
     n.planes[0].b = 1.0; /* the floor y = 0, lit by the default sun (0, -1, 0) */
     b.max_passes = 32;   /* a pass left for the lixel map after 16 splits */
@@ -185,8 +185,8 @@ static void plan_two_planes_tiny_near(int mode, swarp_status* st, swarp_plan_res
     n.camera.up = (swarp_vec3){0.0, 1.0, 0.0};
     n.camera.fovy = 0x1.69587353f4dbfp+0;
     n.camera.aspect = 2.5;
-    n.camera.near = 0x1.e0425cee492d8p-101;
-    n.camera.far = 0x1.52db33ed1aa1bp+18;
+    n.camera.z_near = 0x1.e0425cee492d8p-101;
+    n.camera.z_far = 0x1.52db33ed1aa1bp+18;
     n.bleed_risk = (swarp_plan_bleed)1;
     n.plane_count = 2;
     n.planes[0].b = n.planes[1].b = 1.0;
@@ -253,8 +253,8 @@ static void plan_tiny_fov_clustered_corners(int mode, swarp_status* st, swarp_pl
     n.camera.up = (swarp_vec3){0.0, 1.0, 0.0};
     n.camera.fovy = 0x1.203af9ee75616p-50;
     n.camera.aspect = 0x1.09aa7cd0985b6p+1;
-    n.camera.near = 0x1.f62c71bd39841p-11;
-    n.camera.far = 0x1.1ab53fc425b8ap+11;
+    n.camera.z_near = 0x1.f62c71bd39841p-11;
+    n.camera.z_far = 0x1.1ab53fc425b8ap+11;
     n.light.type = SWARP_LIGHT_POINT;
     n.light.direction = (swarp_vec3){-0x1.798a04743a5cp-1, -0x1p+0, -0x1.47b21ebbc2078p-1};
     n.light.position = (swarp_vec3){-0x1.f2bf947ae147bp+17, 0x1.ba57e180c63fep+6, -0x1.f2bcbcf9153bcp+17};

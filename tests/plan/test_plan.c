@@ -44,8 +44,8 @@ static swarp_scene_needs scene(double gamma_deg, double fn) {
     n.camera.up = (swarp_vec3){0.0, 1.0, 0.0};
     n.camera.fovy = 60.0 * DEG;
     n.camera.aspect = 4.0 / 3.0;
-    n.camera.near = 1.0;
-    n.camera.far = fn;
+    n.camera.z_near = 1.0;
+    n.camera.z_far = fn;
     double g = gamma_deg * DEG;
     n.light.type = SWARP_LIGHT_DIRECTIONAL;
     n.light.direction = (swarp_vec3){0.0, -sin(g), cos(g)};
@@ -153,8 +153,8 @@ START_TEST(model_equals_core_lloyd_at_overhead_light) {
                 ck_assert_int_eq(swarp_plan_evaluate(&n, &b, &c, &p), SWARP_OK);
                 swarp_error_config cfg;
                 memset(&cfg, 0, sizeof cfg);
-                cfg.near = 1.0;
-                cfg.far = fns[fi];
+                cfg.z_near = 1.0;
+                cfg.z_far = fns[fi];
                 cfg.theta = 30.0 * DEG;
                 cfg.res_ix = 1024;
                 cfg.res_iy = 768;
@@ -656,8 +656,8 @@ static void random_scene(swarp_scene_needs* n, swarp_budget* b) {
     n->camera.up = a;
     n->camera.fovy = rng_range(20.0, 110.0) * DEG;
     n->camera.aspect = rng_range(0.5, 2.5);
-    n->camera.near = rng_log(0.01, 10.0);
-    n->camera.far = n->camera.near * rng_log(1.2, 1e5);
+    n->camera.z_near = rng_log(0.01, 10.0);
+    n->camera.z_far = n->camera.z_near * rng_log(1.2, 1e5);
     double g = rng_unit() < 0.1 ? (rng_unit() < 0.5 ? 0.0 : PI) : rng_range(0.0, PI);
     swarp_vec3 tl = {cos(g) * v.x + sin(g) * w.x, cos(g) * v.y + sin(g) * w.y, cos(g) * v.z + sin(g) * w.z};
     n->light.type = SWARP_LIGHT_DIRECTIONAL;
@@ -778,8 +778,8 @@ MUT(m_dir_zero, n->camera.dir = (swarp_vec3){0, 0, 0})
 MUT(m_up_parallel, n->camera.up = (swarp_vec3){0, 0, -3})
 MUT(m_fovy_zero, n->camera.fovy = 0.0)
 MUT(m_fovy_pi, n->camera.fovy = PI)
-MUT(m_near_zero, n->camera.near = 0.0)
-MUT(m_far_le_near, n->camera.far = 0.5)
+MUT(m_near_zero, n->camera.z_near = 0.0)
+MUT(m_far_le_near, n->camera.z_far = 0.5)
 MUT(m_aspect, n->camera.aspect = -1.0)
 MUT(m_cam_reserved, n->camera._reserved[2] = 1)
 MUT(m_needs_reserved, n->_reserved[0] = 1)
@@ -978,8 +978,8 @@ START_TEST(random_wild_inputs_never_nan) {
         n.camera.up = (swarp_vec3){rng_range(-1, 1), rng_range(-1, 1), rng_range(-1, 1)};
         n.camera.fovy = rng_range(1e-3, PI - 1e-3);
         n.camera.aspect = rng_log(1e-3, 1e3);
-        n.camera.near = rng_log(1e-4, 1e4);
-        n.camera.far = n.camera.near * rng_log(1.0001, 3e6);
+        n.camera.z_near = rng_log(1e-4, 1e4);
+        n.camera.z_far = n.camera.z_near * rng_log(1.0001, 3e6);
         n.light.type = rng_unit() < 0.2 ? SWARP_LIGHT_POINT : SWARP_LIGHT_DIRECTIONAL;
         n.light.direction = (swarp_vec3){rng_range(-1, 1), rng_range(-1, 1), rng_range(-1, 1)};
         double r = rng_unit();

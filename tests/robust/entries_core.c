@@ -813,7 +813,7 @@ static void e_gmnpr_lambda_glpr(swr_ctx* c) {
 static void gen_cfg(swr_ctx* c, swarp_error_config* cfg) {
     static const double brk_res[] = {1.0, 4096.0, 16384.0};
     memset(cfg, 0, sizeof *cfg);
-    gen_near_far(c, &cfg->near, &cfg->far);
+    gen_near_far(c, &cfg->z_near, &cfg->z_far);
     cfg->theta = gen_theta(c);
     cfg->res_ix = swr_num(c, 1.0, 16384.0, brk_res, 3);
     cfg->res_iy = swr_num(c, 1.0, 16384.0, brk_res, 3);
@@ -826,9 +826,9 @@ static void gen_cfg(swr_ctx* c, swarp_error_config* cfg) {
     cfg->_reserved[swr_u8(c) % 4] = swr_reserved(c);
 }
 static void expect_cfg(swr_ctx* c, const swarp_error_config* cfg, int uses_near_far) {
-    swr_args(c, "near=%.17g far=%.17g theta=%.17g res=%.17g %.17g %.17g %.17g", cfg->near, cfg->far, cfg->theta,
+    swr_args(c, "near=%.17g far=%.17g theta=%.17g res=%.17g %.17g %.17g %.17g", cfg->z_near, cfg->z_far, cfg->theta,
              cfg->res_ix, cfg->res_iy, cfg->res_s, cfg->res_t);
-    if (uses_near_far) expect_near_far(c, cfg->near, cfg->far);
+    if (uses_near_far) expect_near_far(c, cfg->z_near, cfg->z_far);
     expect_theta(c, cfg->theta);
     const double r[4] = {cfg->res_ix, cfg->res_iy, cfg->res_s, cfg->res_t};
     for (int i = 0; i < 4; ++i)
@@ -853,14 +853,14 @@ typedef swarp_status (*err_fn)(const swarp_error_config*, double, double, double
 static void e_error_curve(swr_ctx* c, err_fn fn, const char* what) {
     swarp_error_config cfg;
     gen_cfg(c, &cfg);
-    const double brk_z[] = {cfg.near, cfg.far};
-    double z = swr_num(c, cfg.near, cfg.far, brk_z, 2);
-    double np = gen_nprime(c, cfg.near);
+    const double brk_z[] = {cfg.z_near, cfg.z_far};
+    double z = swr_num(c, cfg.z_near, cfg.z_far, brk_z, 2);
+    double np = gen_nprime(c, cfg.z_near);
     int n_cfg = swr_null(c), n_out = swr_null(c);
     if (n_cfg || n_out) swr_expect(c, SWARP_ERR_NULL_POINTER);
     expect_cfg(c, &cfg, 1);
     FIN(c, z);
-    if (swr_isfin(cfg.near) && swr_isfin(cfg.far) && cfg.near > 0 && cfg.far > cfg.near && !(z >= cfg.near && z <= cfg.far))
+    if (swr_isfin(cfg.z_near) && swr_isfin(cfg.z_far) && cfg.z_near > 0 && cfg.z_far > cfg.z_near && !(z >= cfg.z_near && z <= cfg.z_far))
         swr_expect(c, SWARP_ERR_OUT_OF_RANGE);
     expect_nprime(c, np);
     allow_overflow(c, -1);
@@ -876,7 +876,7 @@ static void e_error_curve(swr_ctx* c, err_fn fn, const char* what) {
         /* [RHS] (2.3)/(2.4) in long double (no underflow there): a true value
          * below DBL_TRUE_MIN/2 (e.g. res_ix = DBL_TRUE_MIN) rounds to 0, as
          * documented; only a representable one must come back positive */
-        long double n = cfg.near, f = cfg.far, zz = z, npl = np, ref;
+        long double n = cfg.z_near, f = cfg.z_far, zz = z, npl = np, ref;
         long double r = isinf(np) ? 1.0L : (npl + zz - n) / (npl + f - n);
         if (what[2] == 'x')
             ref = (long double)cfg.res_ix / cfg.res_s * (f / zz) * r;
@@ -888,7 +888,7 @@ static void e_error_curve(swr_ctx* c, err_fn fn, const char* what) {
     /* the uniform limit (2.7)/(2.8) is the limit of (2.3)/(2.4) */
     if (np == INFINITY) {
         double big;
-        if (!swarp_status_is_error(fn(&cfg, z, 1e9 * cfg.far, &big)))
+        if (!swarp_status_is_error(fn(&cfg, z, 1e9 * cfg.z_far, &big)))
             SWR_CHECK(c, fabs(big - out) <= 1e-5 * out, "%s(n' = inf) = %.17g, %s(n' = 1e9 f) = %.17g", what, out,
                       what, big);
     }
@@ -906,7 +906,7 @@ static void e_error_max(swr_ctx* c) {
     SKIP_IF_MISSING(c, swarp_error_max);
     swarp_error_config cfg;
     gen_cfg(c, &cfg);
-    double np = gen_nprime(c, cfg.near);
+    double np = gen_nprime(c, cfg.z_near);
     int n_cfg = swr_null(c), n_x = swr_null(c) || swr_one_in(c, 8), n_z = swr_null(c) || swr_one_in(c, 8);
     if (n_cfg) swr_expect(c, SWARP_ERR_NULL_POINTER);
     if (n_x && n_z) swr_allow(c, SWARP_ERR_NULL_POINTER);
@@ -922,9 +922,9 @@ static void e_error_max(swr_ctx* c) {
     if (!n_z) swr_rec(c, "max m_z", mz);
     /* the curves are convex in z: the maximum is at an end point */
     double a, b;
-    if (!n_x && swarp_error_mx && SWR_CALL(c, swarp_error_mx(&cfg, cfg.near, np, &a)) == st && SWR_CALL(c, swarp_error_mx(&cfg, cfg.far, np, &b)) == st)
+    if (!n_x && swarp_error_mx && SWR_CALL(c, swarp_error_mx(&cfg, cfg.z_near, np, &a)) == st && SWR_CALL(c, swarp_error_mx(&cfg, cfg.z_far, np, &b)) == st)
         SWR_CHECK(c, mx == fmax(a, b), "max m_x = %.17g, ends %.17g %.17g", mx, a, b);
-    if (!n_z && swarp_error_mz && SWR_CALL(c, swarp_error_mz(&cfg, cfg.near, np, &a)) == st && SWR_CALL(c, swarp_error_mz(&cfg, cfg.far, np, &b)) == st)
+    if (!n_z && swarp_error_mz && SWR_CALL(c, swarp_error_mz(&cfg, cfg.z_near, np, &a)) == st && SWR_CALL(c, swarp_error_mz(&cfg, cfg.z_far, np, &b)) == st)
         SWR_CHECK(c, mz == fmax(a, b), "max m_z = %.17g, ends %.17g %.17g", mz, a, b);
 }
 
@@ -938,7 +938,7 @@ typedef struct split_args {
 static void gen_split_args(swr_ctx* c, split_args* s) {
     gen_cfg(c, &s->cfg);
     s->m = swr_one_in(c, 24) ? 0 : 1 + swr_u8(c) % MAX_M;
-    double n = s->cfg.near, f = s->cfg.far;
+    double n = s->cfg.z_near, f = s->cfg.z_far;
     uint8_t k = swr_u8(c) % 6;
     for (size_t i = 0; i <= s->m; ++i) {
         double t = s->m ? (double)i / (double)s->m : 0.0;
@@ -1000,8 +1000,8 @@ static void e_error_split_curve(swr_ctx* c) {
             for (size_t i = 0; i < s.m; ++i)
                 if (z[k] > s.splits[i] && z[k] < s.splits[i + 1]) {
                     swarp_error_config ci = s.cfg;
-                    ci.near = s.splits[i];
-                    ci.far = s.splits[i + 1];
+                    ci.z_near = s.splits[i];
+                    ci.z_far = s.splits[i + 1];
                     double v;
                     if (!swarp_status_is_error(SWR_CALL(c, swarp_error_mx(&ci, z[k], s.np[i], &v))))
                         SWR_CHECK(c, fabs(v - mx[k]) <= 1e-12 * v, "split curve m_x(%g) = %.17g, m_x of split %zu = %.17g",

@@ -98,8 +98,8 @@ static void gen_setup_scene(swr_ctx* c, scene_args* s) {
     cam->aspect = swr_num_in(c, 0.3, 3, NULL, 0);
     static const double brk_n[] = {1e-6, 1.0};
     static const double brk_r[] = {1e7, 1.0 + 1e-9};
-    cam->near = swr_num_in(c, 1e-6, 2, brk_n, 2);
-    cam->far = cam->near * swr_num_in(c, 1.5, 1e7, brk_r, 2);
+    cam->z_near = swr_num_in(c, 1e-6, 2, brk_n, 2);
+    cam->z_far = cam->z_near * swr_num_in(c, 1.5, 1e7, brk_r, 2);
     cam->_reserved[swr_u8(c) % 4] = swr_reserved(c);
     /* the light: at an angle to the view direction, 1e-9 from (anti)parallel */
     swarp_light* L = &s->light;
@@ -123,7 +123,7 @@ static void gen_setup_scene(swr_ctx* c, scene_args* s) {
     uint8_t pk = swr_u8(c) % 6;
     swarp_vec3 d = unit(cam->dir);
     if (pk == 0) L->position = cam->eye; /* at the eye */
-    else if (pk == 1) L->position = v3(cam->eye.x + cam->near * d.x, cam->eye.y + cam->near * d.y, cam->eye.z + cam->near * d.z);
+    else if (pk == 1) L->position = v3(cam->eye.x + cam->z_near * d.x, cam->eye.y + cam->z_near * d.y, cam->eye.z + cam->z_near * d.z);
     else L->position = v3(cam->eye.x + swr_num_in(c, -100, 100, NULL, 0), cam->eye.y + swr_num_in(c, 1, 300, NULL, 0),
                           cam->eye.z + swr_num_in(c, -100, 100, NULL, 0));
     if (pk <= 1) s->degenerate_light = 1;
@@ -154,7 +154,7 @@ static void gen_setup_scene(swr_ctx* c, scene_args* s) {
     }
     /* one field with an edge or invalid value (NaN, inf, 0, -0, huge, ...) */
     if (swr_one_in(c, 3)) {
-        double* fields[] = {&cam->eye.x, &cam->dir.y, &cam->fovy, &cam->aspect, &cam->near, &cam->far,
+        double* fields[] = {&cam->eye.x, &cam->dir.y, &cam->fovy, &cam->aspect, &cam->z_near, &cam->z_far,
                             &L->direction.x, &L->position.y, &L->cone_angle, &s->box.min.z, &s->box.max.y,
                             &o->n_user, &o->pseudo_near, &o->slideback};
         double* f = fields[swr_u8(c) % (sizeof fields / sizeof fields[0])];
@@ -206,12 +206,12 @@ static void expect_parts(swr_ctx* c, const scene_args* s, int uses_cam_range, in
     const swarp_camera* cam = &s->cam;
     if (parts & X_CAM) {
     if (!fin3(&cam->eye) || !fin3(&cam->dir) || !fin3(&cam->up) || !fin(cam->fovy) || !fin(cam->aspect) ||
-        (uses_cam_range && (!fin(cam->near) || !fin(cam->far))))
+        (uses_cam_range && (!fin(cam->z_near) || !fin(cam->z_far))))
         swr_expect(c, SWARP_ERR_NON_FINITE);
     if (fin(cam->fovy) && !(cam->fovy > 0 && cam->fovy < PI_)) swr_expect(c, SWARP_ERR_FOV);
     if (fin(cam->aspect) && !(cam->aspect > 0)) swr_domain(c, SWARP_ERR_OUT_OF_RANGE), swr_domain(c, SWARP_ERR_FOV),
         swr_domain(c, SWARP_ERR_INVALID_ARGUMENT);
-    if (uses_cam_range && fin(cam->near) && fin(cam->far) && !(cam->near > 0 && cam->far > cam->near))
+    if (uses_cam_range && fin(cam->z_near) && fin(cam->z_far) && !(cam->z_near > 0 && cam->z_far > cam->z_near))
         swr_expect(c, SWARP_ERR_NEAR_FAR);
     if (cam->dir.x == 0 && cam->dir.y == 0 && cam->dir.z == 0) swr_expect(c, SWARP_ERR_ZERO_VECTOR);
     else if (fin3(&cam->dir) && fin3(&cam->up)) {
@@ -555,9 +555,9 @@ static int frustum_below_merge(const scene_args* s, double near, double far) {
 static void e_setup_common(swr_ctx* c, int range) {
     scene_args s;
     gen_setup_scene(c, &s);
-    double near = s.cam.near, far = s.cam.far;
+    double near = s.cam.z_near, far = s.cam.z_far;
     if (range) {
-        near = s.cam.near * swr_num(c, 1, 10, NULL, 0);
+        near = s.cam.z_near * swr_num(c, 1, 10, NULL, 0);
         far = swr_one_in(c, 16) ? near : near * swr_num(c, 1.01, 1e4, NULL, 0);
     }
     size_t cap = swr_one_in(c, 10) ? swr_u8(c) % 16 : SWARP_BODY_MAX_POINTS;
@@ -664,7 +664,7 @@ static void e_body_points(swr_ctx* c) {
     if (n_cam || n_l || n_b || (n_o && cap > 0) || n_cnt) swr_expect(c, SWARP_ERR_NULL_POINTER);
     if (n_o && cap == 0) swr_domain(c, SWARP_ERR_NULL_POINTER), swr_domain(c, SWARP_ERR_CAPACITY);
     expect_scene(c, &s, 0);
-    double near = s.cam.near, far = s.cam.far;
+    double near = s.cam.z_near, far = s.cam.z_far;
     if (!fin(near) || !fin(far)) swr_expect(c, SWARP_ERR_NON_FINITE);
     else if (!(near > 0 && far > near)) swr_expect(c, SWARP_ERR_NEAR_FAR);
     swr_domain(c, SWARP_ERR_CAPACITY);
@@ -860,7 +860,7 @@ static void gen_poly(swr_ctx* c, const scene_args* s, swarp_polyhedron* P) {
     memset(P, 0, sizeof *P);
     uint8_t k = swr_u8(c) % 4;
     swarp_status st = SWARP_ERR_INVALID_ARGUMENT;
-    if (k == 0 && swarp_body_h) st = swarp_body_h(&s->cam, s->cam.near, s->cam.far, &s->box, P);
+    if (k == 0 && swarp_body_h) st = swarp_body_h(&s->cam, s->cam.z_near, s->cam.z_far, &s->box, P);
     if (k == 1 && swarp_poly_from_camera) st = swarp_poly_from_camera(&s->cam, P);
     if (swarp_status_is_error(st) && swarp_poly_from_aabb) st = swarp_poly_from_aabb(&s->box, P);
     if (swarp_status_is_error(st)) { /* a unit box */
@@ -884,7 +884,7 @@ static void gen_poly(swr_ctx* c, const scene_args* s, swarp_polyhedron* P) {
 static void e_poly_camera_common(swr_ctx* c, int range) {
     scene_args s;
     gen_setup_scene(c, &s);
-    double near = s.cam.near, far = s.cam.far;
+    double near = s.cam.z_near, far = s.cam.z_far;
     if (range) {
         static const double brk[] = {1e-6, 0.0};
         near = swr_num(c, 1e-6, 10, brk, 2);
@@ -1137,7 +1137,7 @@ static void e_body_h(swr_ctx* c) {
     SKIP_IF_MISSING(c, swarp_body_h);
     scene_args s;
     gen_setup_scene(c, &s);
-    double near = s.cam.near, far = swr_one_in(c, 16) ? near : s.cam.far;
+    double near = s.cam.z_near, far = swr_one_in(c, 16) ? near : s.cam.z_far;
     FIN(c, near);
     FIN(c, far);
     if (fin(near) && fin(far) && !(near > 0 && far > near)) swr_expect(c, SWARP_ERR_NEAR_FAR);
@@ -1244,10 +1244,10 @@ static void e_body_adjusted_range(swr_ctx* c) {
     double* pn = swr_out(c, &n, sizeof n, SWR_REQ);
     double* pf = swr_out(c, &f, sizeof f, SWR_REQ);
     expect_parts(c, &s, 1, X_CAM | X_BOX | X_GEOM);
-    scene_cond(c, &s, s.cam.near, s.cam.far);
+    scene_cond(c, &s, s.cam.z_near, s.cam.z_far);
     swr_args(c, "eye (%.17g %.17g %.17g) dir (%.17g %.17g %.17g) up (%g %g %g) fovy %.17g aspect %.17g near %.17g far %.17g box (%.17g %.17g %.17g)-(%.17g %.17g %.17g)",
              s.cam.eye.x, s.cam.eye.y, s.cam.eye.z, s.cam.dir.x, s.cam.dir.y, s.cam.dir.z, s.cam.up.x, s.cam.up.y, s.cam.up.z, s.cam.fovy,
-             s.cam.aspect, s.cam.near, s.cam.far, s.box.min.x, s.box.min.y, s.box.min.z, s.box.max.x, s.box.max.y, s.box.max.z);
+             s.cam.aspect, s.cam.z_near, s.cam.z_far, s.box.min.x, s.box.min.y, s.box.min.z, s.box.max.x, s.box.max.y, s.box.max.z);
     if (!swr_done(c, SWR_CALL(c, swarp_body_adjusted_range(pc, pb, pn, pf)))) return;
     swr_rec(c, "near", n);
     swr_rec(c, "far", f);
@@ -1259,11 +1259,11 @@ static void e_body_adjusted_range(swr_ctx* c) {
         double z = depth_of(&s.cam, p);
         zlo = fmin(zlo, z), zhi = fmax(zhi, z);
     }
-    double tol = gtol(fmax(box_scale(&s.box), vmax(s.cam.eye)) + s.cam.far);
+    double tol = gtol(fmax(box_scale(&s.box), vmax(s.cam.eye)) + s.cam.z_far);
     if (wide(&s.cam)) c->rounding_edge = 1;
     SWR_CHECK(c, n > 0 && n <= f, "adjusted range [%.17g, %.17g]", n, f);
-    SWR_CHECK_ACC(c, n >= s.cam.near - tol && f <= s.cam.far + tol, "adjusted [%.17g, %.17g] outside the camera's [%.17g, %.17g]",
-                  n, f, s.cam.near, s.cam.far);
+    SWR_CHECK_ACC(c, n >= s.cam.z_near - tol && f <= s.cam.z_far + tol, "adjusted [%.17g, %.17g] outside the camera's [%.17g, %.17g]",
+                  n, f, s.cam.z_near, s.cam.z_far);
     SWR_CHECK_ACC(c, n >= zlo - tol && f <= zhi + tol, "adjusted [%.17g, %.17g] outside the box's depths [%.17g, %.17g]", n, f,
                   zlo, zhi);
 }
@@ -1566,14 +1566,14 @@ static void e_warp_lispsm(swr_ctx* c) {
     size_t n = 0;
     if (!swarp_focus_light_view || swarp_status_is_error(swarp_focus_light_view(&s.cam, &s.light, NULL, &L)) ||
         !swarp_body_points ||
-        swarp_status_is_error(swarp_body_points(&s.cam, s.cam.near, s.cam.far, &s.light, &s.box, pts, SWARP_BODY_MAX_POINTS, &n))) {
+        swarp_status_is_error(swarp_body_points(&s.cam, s.cam.z_near, s.cam.z_far, &s.light, &s.box, pts, SWARP_BODY_MAX_POINTS, &n))) {
         /* a plain overhead light and a few points in front of the camera */
         s.cam = (swarp_camera){{0, 5, 0}, {0, 0, -1}, {0, 1, 0}, 1.0, 1.5, 1, 100, {0, 0, 0, 0}};
         L = (swarp_mat4){{1, 0, 0, 0, 0, 0, -1, 0, 0, 1, 0, 0, 0, 0, 5, 1}}; /* looks down -y */
         n = 1 + swr_u8(c) % 8;
         for (size_t i = 0; i < n; ++i) pts[i] = v3(swr_num_in(c, -50, 50, NULL, 0), swr_num_in(c, 0, 5, NULL, 0), -swr_num_in(c, 1, 100, NULL, 0));
     }
-    double near = s.cam.near, far = s.cam.far;
+    double near = s.cam.z_near, far = s.cam.z_far;
     if (swr_one_in(c, 16)) far = swr_one_in(c, 2) ? near : NAN;
     if (swr_one_in(c, 32)) n = 0;
     if (swr_one_in(c, 32) && n) pts[swr_u8(c) % n].z = swr_num(c, -1, 1, NULL, 0);
@@ -1758,7 +1758,7 @@ static int pps_point(const pps_cam* k, swarp_vec3 p, long double v[3], long doub
 
 static void psm_pps_cond(swr_ctx* c, const scene_args* s, const swarp_vec3* pts, size_t n, const swarp_vec3* H, size_t nh) {
     const swarp_camera* cam = &s->cam;
-    const double near = cam->near, far = cam->far;
+    const double near = cam->z_near, far = cam->z_far;
     if (!(s->use_opt && s->opt.technique == SWARP_TECHNIQUE_PSM) || n == 0 || n > SWARP_BODY_MAX_POINTS) return;
     if (!(near > 0 && far > near && isfinite(far)) || !fin3(&cam->eye) || !fin(cam->fovy) || !fin(cam->aspect) ||
         !fin(s->opt.slideback))
@@ -1819,7 +1819,7 @@ static void e_setup_points(swr_ctx* c) {
         s.box.min.z > s.box.max.z)
         s.box = (swarp_aabb){{-10, -10, -10}, {10, 10, 10}};
     if (!swarp_body_points ||
-        swarp_status_is_error(swarp_body_points(&s.cam, s.cam.near, s.cam.far, &s.light, &s.box, pts, SWARP_BODY_MAX_POINTS, &n))) {
+        swarp_status_is_error(swarp_body_points(&s.cam, s.cam.z_near, s.cam.z_far, &s.light, &s.box, pts, SWARP_BODY_MAX_POINTS, &n))) {
         n = 1 + swr_u8(c) % 12; /* points in the box */
         for (size_t i = 0; i < n; ++i)
             pts[i] = v3(s.box.min.x + swr_num_in(c, 0, 1, NULL, 0) * (s.box.max.x - s.box.min.x),
@@ -1828,7 +1828,7 @@ static void e_setup_points(swr_ctx* c) {
     }
     if (swr_one_in(c, 2)) {
         swarp_polyhedron H;
-        if (swarp_body_h && swarp_body_h(&s.cam, s.cam.near, s.cam.far, &s.box, &H) == SWARP_OK) {
+        if (swarp_body_h && swarp_body_h(&s.cam, s.cam.z_near, s.cam.z_far, &s.box, &H) == SWARP_OK) {
             nr = H.vertex_count;
             memcpy(rcv, H.vertices, nr * sizeof rcv[0]);
         }
@@ -1840,15 +1840,15 @@ static void e_setup_points(swr_ctx* c) {
     const swarp_camera* pc = swr_in(c, &s.cam);
     swarp_setup_result* pr = swr_out(c, &r, sizeof r, SWR_REQ);
     expect_parts(c, &s, 0, X_CAM | X_LIGHT | X_OPT | X_GEOM);
-    if (!fin(s.cam.near) || !fin(s.cam.far)) swr_expect(c, SWARP_ERR_NON_FINITE);
-    else if (!(s.cam.near > 0 && s.cam.far > s.cam.near)) swr_expect(c, SWARP_ERR_NEAR_FAR);
+    if (!fin(s.cam.z_near) || !fin(s.cam.z_far)) swr_expect(c, SWARP_ERR_NON_FINITE);
+    else if (!(s.cam.z_near > 0 && s.cam.z_far > s.cam.z_near)) swr_expect(c, SWARP_ERR_NEAR_FAR);
     if (n == 0 || n > SWARP_BODY_MAX_POINTS) swr_expect(c, SWARP_ERR_INVALID_ARGUMENT), swr_domain(c, SWARP_ERR_NULL_POINTER);
-    scene_cond(c, &s, s.cam.near, s.cam.far);
+    scene_cond(c, &s, s.cam.z_near, s.cam.z_far);
     psm_pps_cond(c, &s, pts, n, nr ? rcv : NULL, nr);
     swr_args(c, "n %zu p0 (%g %g %g) nr %zu near %g far %g tech %d param %d n_user %g pseudo %g %g slideback %g", n, pts[0].x, pts[0].y,
-             pts[0].z, nr, s.cam.near, s.cam.far, s.use_opt ? (int)s.opt.technique : -1, (int)s.opt.param, s.opt.n_user,
+             pts[0].z, nr, s.cam.z_near, s.cam.z_far, s.use_opt ? (int)s.opt.technique : -1, (int)s.opt.param, s.opt.n_user,
              s.opt.pseudo_near, s.opt.pseudo_far, s.opt.slideback);
-    swarp_status st = SWR_CALL(c, swarp_setup_points(pc, pl, pp, n, nr ? rcv : NULL, nr, s.cam.near, s.cam.far,
+    swarp_status st = SWR_CALL(c, swarp_setup_points(pc, pl, pp, n, nr ? rcv : NULL, nr, s.cam.z_near, s.cam.z_far,
                                                     s.use_opt ? &s.opt : NULL, pr));
     if (!swr_done(c, st)) return;
     check_setup_result(c, &s, st, &r, pts, n, 1);
@@ -1974,7 +1974,7 @@ static void e_cascade_setup(swr_ctx* c) {
     if (K <= SWARP_CASCADE_MAX_SPLITS && cap < K) swr_expect(c, SWARP_ERR_CAPACITY);
     if (!psp && cap == 0) swr_domain(c, SWARP_ERR_CAPACITY);
     swr_domain(c, SWARP_ERR_SPLIT_EMPTY), swr_domain(c, SWARP_ERR_NEAR_FAR), swr_domain(c, SWARP_ERR_NON_FINITE);
-    scene_cond(c, &s, s.cam.near, s.cam.far);
+    scene_cond(c, &s, s.cam.z_near, s.cam.z_far);
     if (box_at_merge_distance(&s)) c->rounding_edge = 1;
     swr_args(c, "K %u scheme %d stabilize %d warp_per_split %d technique %d param %d center %d depth %d reserved: cam %u %u %u %u light %u %u %u %u %u setup %u %u split %u %u %u %u cascade %u %u %u use_o %d",
              K, (int)o.split.scheme, (int)o.stabilize.mode, (int)o.warp_per_split, (int)o.setup.technique, (int)o.setup.param,
@@ -1997,7 +1997,7 @@ static void e_cascade_setup(swr_ctx* c) {
     for (uint32_t i = 0; i < K; ++i) {
         const swarp_cascade_split* q = &sp[i];
         SWR_CHECK(c, r.splits[i + 1] > r.splits[i], "splits not increasing at %u", i);
-        SWR_CHECK(c, q->near == r.splits[i] && q->far == r.splits[i + 1], "split %u [%g, %g], C [%g, %g]", i, q->near, q->far,
+        SWR_CHECK(c, q->z_near == r.splits[i] && q->z_far == r.splits[i + 1], "split %u [%g, %g], C [%g, %g]", i, q->z_near, q->z_far,
                   r.splits[i], r.splits[i + 1]);
         for (int e = 0; e < 16; ++e) swr_rec(c, "matrix", q->matrix.m[e]), swr_rec(c, "atlas_matrix", q->atlas_matrix.m[e]);
         /* n' recorded as the split's warp strength (far - near)/n' (0: a
@@ -2008,7 +2008,7 @@ static void e_cascade_setup(swr_ctx* c) {
          * n' (no options: n' = 3.2e8, 4.9e8 and
          * 1.4e9 for splits 1-3, moved 1e-8 relative by the rounding mode)
          * it failed the tolerance while the splits' matrices agreed to it. */
-        if (c->n_rec < SWR_MAX_REC) c->rec[c->n_rec++] = q->n_eye == INFINITY ? 0.0 : (q->far - q->near) / q->n_eye;
+        if (c->n_rec < SWR_MAX_REC) c->rec[c->n_rec++] = q->n_eye == INFINITY ? 0.0 : (q->z_far - q->z_near) / q->n_eye;
         SWR_CHECK(c, q->n_eye > 0, "split %u n_eye %g", i, q->n_eye);
         swr_rec(c, "max_mx", q->max_mx), swr_rec(c, "max_mz", q->max_mz);
         SWR_CHECK(c, !swarp_status_is_error(q->status), "split %u status %s", i, swarp_status_name(q->status));
@@ -2144,9 +2144,9 @@ static void e_setup_follow(swr_ctx* c) {
     size_t* pn = swr_out(c, &count, sizeof count, SWR_NONULL);
     expect_scene(c, &s, 1);
     swr_domain(c, SWARP_ERR_CAPACITY), swr_domain(c, SWARP_ERR_FOLLOW_FRAME); /* PSM: a previous light camera out of range */
-    scene_cond(c, &s, s.cam.near, s.cam.far);
+    scene_cond(c, &s, s.cam.z_near, s.cam.z_far);
     swr_args(c, "eye=(%.17g %.17g %.17g) dir=(%g %g %g) near=%g far=%g light %d dir=(%g %g %g) pos=(%.9g %.9g %.9g) cone %g box=(%.17g %.17g %.17g)-(%.17g %.17g %.17g) tech %d prev %d pcam %d",
-             s.cam.eye.x, s.cam.eye.y, s.cam.eye.z, s.cam.dir.x, s.cam.dir.y, s.cam.dir.z, s.cam.near, s.cam.far, (int)s.light.type,
+             s.cam.eye.x, s.cam.eye.y, s.cam.eye.z, s.cam.dir.x, s.cam.dir.y, s.cam.dir.z, s.cam.z_near, s.cam.z_far, (int)s.light.type,
              s.light.direction.x, s.light.direction.y, s.light.direction.z, s.light.position.x, s.light.position.y,
              s.light.position.z, s.light.cone_angle, s.box.min.x, s.box.min.y, s.box.min.z, s.box.max.x, s.box.max.y, s.box.max.z,
              s.use_opt ? (int)s.opt.technique : -1, have_prev, use_pcam);

@@ -70,7 +70,7 @@ static swarp_vec3 gen_dir(swr_ctx* c) {
  * fovy, aspect; M_v = P V (OpenGL). */
 typedef struct viewer {
     swarp_vec3 eye, dir, up;
-    double fovy, aspect, near, far;
+    double fovy, aspect, z_near, z_far;
     swarp_mat4 M_v;
 } viewer;
 static void gen_viewer(swr_ctx* c, viewer* v) {
@@ -81,8 +81,8 @@ static void gen_viewer(swr_ctx* c, viewer* v) {
     if (fabs(v->dir.y) > 0.999) v->up = v3(1, 0, 0);
     v->fovy = swr_num_in(c, 0.2, 2.5, NULL, 0);
     v->aspect = swr_num_in(c, 0.5, 2.5, NULL, 0);
-    v->near = swr_num_in(c, 1e-3, 1, NULL, 0);
-    v->far = v->near * swr_num_in(c, 10, 1e5, NULL, 0);
+    v->z_near = swr_num_in(c, 1e-3, 1, NULL, 0);
+    v->z_far = v->z_near * swr_num_in(c, 10, 1e5, NULL, 0);
     swarp_vec3 f = v->dir, s = unit(cross(f, v->up)), u = cross(s, f);
     swarp_mat4 V = {{0}}, P = {{0}};
     V.m[0] = s.x; V.m[4] = s.y; V.m[8] = s.z;
@@ -92,9 +92,9 @@ static void gen_viewer(swr_ctx* c, viewer* v) {
     V.m[15] = 1;
     double t = 1.0 / tan(v->fovy / 2);
     P.m[0] = t / v->aspect; P.m[5] = t;
-    P.m[10] = -(v->far + v->near) / (v->far - v->near);
+    P.m[10] = -(v->z_far + v->z_near) / (v->z_far - v->z_near);
     P.m[11] = -1;
-    P.m[14] = -2 * v->far * v->near / (v->far - v->near);
+    P.m[14] = -2 * v->z_far * v->z_near / (v->z_far - v->z_near);
     for (int col = 0; col < 4; ++col)
         for (int row = 0; row < 4; ++row) {
             double acc = 0;
@@ -311,7 +311,7 @@ static void e_lixel_matrix(swr_ctx* c) {
     swr_fill(&M, sizeof M);
     swr_fill(&info, sizeof info);
     swr_args(c, "eye=(%.17g %.17g %.17g) dir=(%.17g %.17g %.17g) fovy %.17g aspect %.17g near %.17g far %.17g light type %d dir=(%.17g %.17g %.17g) pos=(%.17g %.17g %.17g) plane (%.17g %.17g %.17g %.17g) g=%u h=%u raise %.17g%s",
-             v.eye.x, v.eye.y, v.eye.z, v.dir.x, v.dir.y, v.dir.z, v.fovy, v.aspect, v.near, v.far, (int)L.type,
+             v.eye.x, v.eye.y, v.eye.z, v.dir.x, v.dir.y, v.dir.z, v.fovy, v.aspect, v.z_near, v.z_far, (int)L.type,
              L.direction.x, L.direction.y, L.direction.z, L.position.x, L.position.y, L.position.z, P.a, P.b, P.c, P.d, g, h,
              opt.raise, use_opt ? "" : " (no options)");
     swarp_status st = SWR_CALL(c, swarp_lixel_matrix(n_mv ? NULL : &v.M_v, g, h, n_l ? NULL : &L, n_p ? NULL : &P,

@@ -36,8 +36,8 @@ static void gen_needs(swr_ctx* c, swarp_scene_needs* n, swarp_budget* b) {
         n->camera.fovy = swr_num_in(c, 0.2, 2.5, NULL, 0);
         n->camera.aspect = swr_num_in(c, 0.5, 2.5, NULL, 0);
         static const double brk_n[] = {1e-6, 1.0};
-        n->camera.near = swr_num_in(c, 1e-6, 2, brk_n, 2);
-        n->camera.far = n->camera.near * swr_num_in(c, 2, 1e7, NULL, 0);
+        n->camera.z_near = swr_num_in(c, 1e-6, 2, brk_n, 2);
+        n->camera.z_far = n->camera.z_near * swr_num_in(c, 2, 1e7, NULL, 0);
         if (swr_one_in(c, 4)) { /* the scene box around the camera, sometimes flat */
             n->scene_box.min.x = n->camera.eye.x - swr_num_in(c, 1, 100, NULL, 0);
             n->scene_box.min.y = swr_num_in(c, -5, 0, NULL, 0);
@@ -79,7 +79,7 @@ static void gen_needs(swr_ctx* c, swarp_scene_needs* n, swarp_budget* b) {
     b->_reserved[swr_u8(c) % 4] = swr_reserved(c);
     /* one field with an edge or invalid value */
     if (swr_one_in(c, 3)) {
-        double* fields[] = {&n->camera.eye.x, &n->camera.fovy, &n->camera.near, &n->camera.far, &n->light.direction.y,
+        double* fields[] = {&n->camera.eye.x, &n->camera.fovy, &n->camera.z_near, &n->camera.z_far, &n->light.direction.y,
                             &n->soft_width, &b->max_error, &b->time_budget_ns, &b->pass_cost_ns, &n->scene_box.max.x};
         double* f = fields[swr_u8(c) % (sizeof fields / sizeof fields[0])];
         *f = swr_num(c, *f - 1, *f + 1, f, 1);
@@ -119,8 +119,8 @@ static void check_plan(swr_ctx* c, swarp_status st, const swarp_budget* b, const
     uint32_t K = p->split_count;
     SWR_CHECK(c, K >= 1 && K <= SWARP_PLAN_MAX_SPLITS, "split_count %u", K);
     if (!(K >= 1 && K <= SWARP_PLAN_MAX_SPLITS)) return;
-    swr_rec(c, "near", p->near);
-    swr_rec(c, "far", p->far);
+    swr_rec(c, "near", p->z_near);
+    swr_rec(c, "far", p->z_far);
     swr_rec(c, "max_error", p->max_error);
     swr_rec(c, "cost_ns", p->cost_ns);
     swr_rec(c, "gamma", p->gamma);
@@ -139,8 +139,8 @@ static void check_plan(swr_ctx* c, swarp_status st, const swarp_budget* b, const
         swr_rec(c, "split_max_mx", p->split_max_mx[i]);
         swr_rec(c, "split_max_mz", p->split_max_mz[i]);
     }
-    SWR_CHECK(c, p->splits[0] == p->near && p->splits[K] == p->far, "splits [%g .. %g], near/far %g %g", p->splits[0],
-              p->splits[K], p->near, p->far);
+    SWR_CHECK(c, p->splits[0] == p->z_near && p->splits[K] == p->z_far, "splits [%g .. %g], near/far %g %g", p->splits[0],
+              p->splits[K], p->z_near, p->z_far);
     for (uint32_t i = 0; i < K; ++i) SWR_CHECK(c, p->splits[i + 1] > p->splits[i], "splits not increasing at %u", i);
     SWR_CHECK(c, p->max_error == fmax(p->max_mx, p->max_mz), "max_error %g, max(m_x, m_z) %g", p->max_error,
               fmax(p->max_mx, p->max_mz));
