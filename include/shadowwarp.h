@@ -133,7 +133,7 @@
 #include <stdint.h>
 
 #define SWARP_VERSION_MAJOR 0
-#define SWARP_VERSION_MINOR 1
+#define SWARP_VERSION_MINOR 2
 #define SWARP_VERSION_PATCH 0
 #define SWARP_VERSION_NUMBER \
     (SWARP_VERSION_MAJOR * 10000 + SWARP_VERSION_MINOR * 100 + SWARP_VERSION_PATCH)
@@ -495,9 +495,9 @@ typedef struct swarp_measured_error {
 
 /** Sampling of swarp_measure_max; zero means default. */
 typedef struct swarp_measure_options {
-    uint32_t grid;        /**< NDC samples per screen axis (default 9, >= 2) */
-    uint32_t depths;      /**< depth samples, geometric in [z_near, z_far] (default 17, >= 2) */
-    uint32_t refine;      /**< local refinement steps around the worst sample (default 16) */
+    uint32_t grid;        /**< NDC samples per screen axis (default 7, >= 2) */
+    uint32_t depths;      /**< depth samples, geometric in [z_near, z_far] (default 9, >= 2) */
+    uint32_t refine;      /**< compass-search steps from each seed (default 24) */
     uint32_t _reserved;   /**< must be zero */
 } swarp_measure_options;
 
@@ -553,7 +553,9 @@ typedef struct swarp_setup_options {
                                  margin); min_depth >= far, or +INFINITY (nothing seen),
                                  keeps the near.  Ignored by swarp_setup_range/_points
                                  (explicit range).  >= 0 */
-    uint32_t _reserved[2];  /**< must be zero */
+    uint32_t skip_measure;  /**< 1: do not measure the returned matrix (result.measured
+                                 stays zero, samples = 0); 0: measure (the default) */
+    uint32_t _reserved[1];  /**< must be zero */
 } swarp_setup_options;
 
 /** Results of swarp_setup.  matrix = light_proj · light_view maps world
@@ -569,12 +571,17 @@ typedef struct swarp_setup_result {
     double view_near;  /**< the view depth range used (adjusted [RHS] §3.3.1 in swarp_setup) */
     double view_far;
     double gamma;      /**< angle between view direction and light axis, radians */
-    double max_mx;     /**< predicted max m_x over [view_near, view_far], [RHS] (2.3) */
-    double max_mz;     /**< predicted max m_z, [RHS] (2.4) */
+    double max_mx;     /**< Lloyd's model: max m_x over [view_near, view_far], [RHS] (2.3),
+                            for an overhead light on the view axis (exact only there) */
+    double max_mz;     /**< Lloyd's model: max m_z, [RHS] (2.4), same frame */
     double light_near; /**< light depth range covered (world units along the light; PSM: */
     double light_far;  /**<   post-perspective units), informational */
     uint32_t point_count; /**< number of points of B */
     uint32_t _pad;
+    swarp_measured_error measured; /**< the measured error of matrix over H with bisector
+                                        receivers (swarp_measure_max with the options' screen
+                                        and map); zero when skip_measure is set or for
+                                        swarp_setup_points (no scene) */
     uint32_t _reserved[4];
 } swarp_setup_result;
 
@@ -944,10 +951,11 @@ SWARP_API swarp_status swarp_measure_points(const swarp_camera* cam, const swarp
  *  receivers: N = normalize(e + l), e and l the unit directions from the
  *  point to the eye and to the light (the receiver for which projection
  *  aliasing vanishes, leaving the perspective aliasing of the parameterisation).
- *  Sampling: a grid x grid NDC lattice at depths geometric in [z_near, z_far],
- *  points outside the box S skipped, then refine steps of a deterministic
- *  pattern search around the worst sample (halving the step each time it
- *  finds no larger sigma).  No allocation; the result is deterministic.
+ *  Sampling: the vertices of H, a grid x grid NDC lattice at depths geometric
+ *  in [z_near, z_far] (points outside S skipped), then from the worst vertex
+ *  and the worst lattice sample refine steps of a deterministic compass
+ *  search over (NDC x, NDC y, log z), halving the step each time it finds no
+ *  larger sigma (docs/accuracy.md states its error).  No allocation; the result is deterministic.
  *  @return SWARP_OK; SWARP_INFO_MEASURE_SINGULAR (max_sigma = +inf);
  *          SWARP_ERR_BODY_EMPTY (no sample of V lies in S); the errors of
  *          swarp_measure_points, SWARP_ERR_NEAR_FAR (not 0 < z_near < z_far),
@@ -1532,7 +1540,8 @@ typedef struct swarp_cascade_split {
     swarp_atlas_tile tile;     /**< viewport in texels and clip -> atlas matrix */
     double n_eye;              /**< warp parameter n' used (eye units); +inf uniform */
     double kernel_scale[2];    /**< s_i of [RHS] (3.9) for kernel_world_size */
-    double max_mx, max_mz;     /**< exact maxima over [near, far], [RHS] (2.3)-(2.8) */
+    double max_mx, max_mz;     /**< Lloyd's model's maxima over [z_near, z_far], [RHS]
+                                    (2.3)-(2.8) (overhead light, view axis) */
     double mx_start, mz_start; /**< values at C_i: just after the border into this split */
     double mx_end, mz_end;     /**< values at C_{i+1} with this split's map (just before) */
     double texel_size;         /**< stabilised: world texel size; else 0 */
@@ -1542,6 +1551,8 @@ typedef struct swarp_cascade_split {
                                     (constant over the split for uniform maps) */
     swarp_status status;       /**< this split's own (informational) status */
     uint32_t point_count;      /**< points of B_i */
+    swarp_measured_error measured; /**< the measured error of matrix over the split frustum
+                                        ∩ S (swarp_measure_max); zero with skip_measure */
     uint32_t _reserved[4];
 } swarp_cascade_split;
 
@@ -1551,8 +1562,11 @@ typedef struct swarp_cascade_result {
     uint32_t _pad;
     double view_near, view_far;  /**< adjusted near/far [RHS] §3.3.1 */
     double splits[SWARP_CASCADE_MAX_SPLITS + 1]; /**< C_0 .. C_m */
-    double max_mx, max_mz;       /**< maxima of the whole configuration */
+    double max_mx, max_mz;       /**< Lloyd's model's maxima of the whole configuration */
     swarp_atlas_info atlas;
+    swarp_measured_error measured; /**< the worst split's measured error (max_m_s, max_m_t,
+                                        max_sigma and at of the splits' maxima; samples and
+                                        outside summed) */
     uint32_t _reserved[4];
 } swarp_cascade_result;
 

@@ -104,7 +104,8 @@ static swarp_status sw_check_setup_warp(const swarp_setup_options* o) {
 }
 
 swarp_status sw_check_setup_options(const swarp_setup_options* o) {
-    if (!sw_reserved_zero(o->_reserved, 2) || o->_pad0 != 0 || o->_pad1 != 0) return SWARP_ERR_RESERVED_NONZERO;
+    if (!sw_reserved_zero(o->_reserved, 1) || o->_pad0 != 0 || o->_pad1 != 0) return SWARP_ERR_RESERVED_NONZERO;
+    if (o->skip_measure > 1) return SWARP_ERR_OUT_OF_RANGE;
     if (isnan(o->min_depth)) return SWARP_ERR_NON_FINITE;
     if (o->min_depth < 0.0) return SWARP_ERR_OUT_OF_RANGE; /* also -INFINITY; +INFINITY: nothing seen */
     if ((uint32_t)o->technique > (uint32_t)SWARP_TECHNIQUE_PSM) return SWARP_ERR_UNKNOWN_ENUM;
