@@ -537,6 +537,14 @@ static swarp_status sw_clip_plane_unit(swarp_vec3 n_raw, double d_raw, swarp_vec
     if (!(len > 0.0)) return SWARP_ERR_ZERO_VECTOR;
     *n = sw_scale(n_raw, 1.0 / len);
     *d = d_raw / len;
+    /* |d_raw| within a factor len (< 1 by rounding for a unit normal) of
+     * DBL_MAX: the offset overflows although the plane is finite.  Its
+     * distance |d_raw|/len from the origin exceeds DBL_MAX >= |v| >= |n·v|
+     * for every vertex v of Euclidean norm up to DBL_MAX, so every such
+     * vertex lies strictly on the side of the sign of d_raw, as for the
+     * rescaled planes above (an infinite d would instead give distances
+     * inf - inf and an infinite tolerance that keeps everything). */
+    if (!sw_finite(*d)) *trivial = d_raw < 0.0 ? SW_CLIP_KEEPS_ALL : SW_CLIP_CUTS_ALL;
     return SWARP_OK;
 }
 
