@@ -1,8 +1,7 @@
 /* Every byte the library writes is a function of its inputs alone.
  *
- * The property (include/shadowwarp.h: "every output is written in full";
- * docs/TESTING.md "Determinism"): for every entry point that writes a
- * struct or an array, two identical calls give byte-identical outputs even
+ * The property: for every entry point that writes a struct or an array,
+ * two identical calls give byte-identical outputs even
  * when the caller's output memory and the stack the library runs on hold
  * different bytes before the call.  Fixed-size outputs (structs, matrices,
  * fixed arrays, polyhedra) are compared byte for byte over their whole size,
