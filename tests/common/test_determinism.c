@@ -341,34 +341,38 @@ static swarp_status c_warp_lispsm(det_out* o) {
     return swarp_warp_lispsm(&r.light_view, &c, r.view_near, r.view_far, lv, n, NULL, NULL,
                              det_alloc(o, sizeof(swarp_mat4)), det_alloc(o, sizeof(swarp_warp_info)));
 }
+/* swarp_setup's result for cam0, sun0, box0 (inputs of the cases below) */
+static swarp_status setup0(swarp_camera* c, swarp_light* l, swarp_aabb* b, swarp_setup_result* r) {
+    *c = cam0();
+    *l = sun0();
+    *b = box0();
+    return swarp_setup(c, l, b, NULL, r, NULL, 0, NULL);
+}
 static swarp_measure_res res0(void) {
     swarp_measure_res r = {1920, 1080, 2048, 2048};
     return r;
 }
-static swarp_status c_measure_points(det_out* o) {
-    swarp_camera c = cam0();
-    swarp_light l = sun0();
-    swarp_aabb b = box0();
+/* the measured error of sun0's map at three points (one behind the eye),
+ * or its maximum over H */
+static swarp_status measure_with(det_out* o, int max) {
+    swarp_camera c;
+    swarp_light l;
+    swarp_aabb b;
     swarp_setup_result r;
-    swarp_status s = swarp_setup(&c, &l, &b, NULL, &r, NULL, 0, NULL);
+    swarp_status s = setup0(&c, &l, &b, &r);
     if (swarp_status_is_error(s)) return s;
     swarp_measure_res res = res0();
-    swarp_vec3 p[3] = {{0, 0, -5}, {3, 0, -20}, {0, 0, 30}}; /* the last behind the eye */
+    if (max) {
+        swarp_measure_options mo = {3, 3, 2, 0};
+        return swarp_measure_max(&c, r.view_near, r.view_far, &l, &b, &r.matrix, &res, &mo,
+                                 det_alloc(o, sizeof(swarp_measured_error)));
+    }
+    swarp_vec3 p[3] = {{0, 0, -5}, {3, 0, -20}, {0, 0, 30}};
     swarp_vec3 nrm[3] = {{0, 1, 0}, {0, 1, 0}, {0, 1, 0}};
     return swarp_measure_points(&c, &r.matrix, &res, p, nrm, 3, det_alloc(o, 3 * sizeof(swarp_texel_error)));
 }
-static swarp_status c_measure_max(det_out* o) {
-    swarp_camera c = cam0();
-    swarp_light l = sun0();
-    swarp_aabb b = box0();
-    swarp_setup_result r;
-    swarp_status s = swarp_setup(&c, &l, &b, NULL, &r, NULL, 0, NULL);
-    if (swarp_status_is_error(s)) return s;
-    swarp_measure_res res = res0();
-    swarp_measure_options mo = {3, 3, 2, 0};
-    return swarp_measure_max(&c, r.view_near, r.view_far, &l, &b, &r.matrix, &res, &mo,
-                             det_alloc(o, sizeof(swarp_measured_error)));
-}
+static swarp_status c_measure_points(det_out* o) { return measure_with(o, 0); }
+static swarp_status c_measure_max(det_out* o) { return measure_with(o, 1); }
 static swarp_status c_setup_follow(det_out* o) {
     swarp_camera c = cam0();
     swarp_light l = sun0();
@@ -449,39 +453,32 @@ static swarp_status c_body_h(det_out* o) {
     swarp_aabb b = box0();
     return swarp_body_h(&c, 1.0, 100.0, &b, det_alloc(o, sizeof(swarp_polyhedron)));
 }
-static swarp_status body_from_h_with(det_out* o, const swarp_light* l) {
+/* H = V ∩ S of cam0 and box0 over [1, 100], then B (from_h) or the
+ * receivers for light l */
+static swarp_status body_step_with(det_out* o, const swarp_light* l, int receivers) {
     swarp_camera c = cam0();
     swarp_aabb b = box0();
     swarp_polyhedron H;
     swarp_status s = swarp_body_h(&c, 1.0, 100.0, &b, &H);
     if (swarp_status_is_error(s)) return s;
-    return swarp_body_from_h(&H, l, &b, det_alloc(o, sizeof(swarp_polyhedron)));
+    swarp_polyhedron* out = det_alloc(o, sizeof *out);
+    return receivers ? swarp_body_receivers(&H, l, out) : swarp_body_from_h(&H, l, &b, out);
 }
 static swarp_status c_body_from_h_sun(det_out* o) {
     swarp_light l = sun0();
-    return body_from_h_with(o, &l);
+    return body_step_with(o, &l, 0);
 }
 static swarp_status c_body_from_h_spot(det_out* o) {
     swarp_light l = point0(0.6);
-    return body_from_h_with(o, &l);
+    return body_step_with(o, &l, 0);
 }
 static swarp_status c_body_receivers_spot(det_out* o) {
-    swarp_camera c = cam0();
-    swarp_aabb b = box0();
     swarp_light l = point0(0.3);
-    swarp_polyhedron H;
-    swarp_status s = swarp_body_h(&c, 1.0, 100.0, &b, &H);
-    if (swarp_status_is_error(s)) return s;
-    return swarp_body_receivers(&H, &l, det_alloc(o, sizeof(swarp_polyhedron)));
+    return body_step_with(o, &l, 1);
 }
 static swarp_status c_body_receivers_sun(det_out* o) {
-    swarp_camera c = cam0();
-    swarp_aabb b = box0();
     swarp_light l = sun0();
-    swarp_polyhedron H;
-    swarp_status s = swarp_body_h(&c, 1.0, 100.0, &b, &H);
-    if (swarp_status_is_error(s)) return s;
-    return swarp_body_receivers(&H, &l, det_alloc(o, sizeof(swarp_polyhedron)));
+    return body_step_with(o, &l, 1);
 }
 
 /* Bytes of p beyond its counts that are not zero, read field by field from
