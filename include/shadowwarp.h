@@ -2503,7 +2503,8 @@ typedef struct swarp_plan {
     double split_max_mz[SWARP_PLAN_MAX_SPLITS];
     double max_mx, max_mz;            /**< over the whole view */
     double max_error;                 /**< max(max_mx, max_mz), compared with the budget */
-    double error_area;                /**< max_mx * max_mz (texel-area error bound) */
+    double error_area;                /**< max_mx * max_mz (texel-area error bound); DBL_MAX when the
+                                           product exceeds the double range */
     uint32_t lixel_count;             /**< planes with a lixel map */
     uint32_t lixel_planes[SWARP_PLAN_MAX_PLANES]; /**< their indices in needs->planes */
     uint32_t plane_reason[SWARP_PLAN_MAX_PLANES]; /**< SWARP_PLAN_PLANE_* per declared plane */
