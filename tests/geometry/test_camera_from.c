@@ -103,18 +103,25 @@ static void assert_same_camera(const swarp_camera* c, const cam_in* in) {
 typedef void (*persp_fn)(float, float, float, float, mat4);
 typedef void (*look_fn)(vec3, vec3, vec3, mat4);
 
+/* the view and projection cglm builds for camera `in`, as swarp matrices */
+static void cglm_pair(const cam_in* in, look_fn look, persp_fn persp, swarp_mat4* V, swarp_mat4* P) {
+    mat4 v, p;
+    vec3 eye, dir, up;
+    glm_vec3_copy((float*)in->eye, eye);
+    glm_vec3_copy((float*)in->dir, dir);
+    glm_vec3_copy((float*)in->up, up);
+    look(eye, dir, up, v);
+    persp(in->fovy, in->aspect, in->n, in->f, p);
+    to_swarp(v, V);
+    to_swarp(p, P);
+}
+
 static void cglm_round_trip(look_fn look, persp_fn persp, swarp_matrix_convention conv, swarp_depth_range dr,
                             double zn, double zf) {
     for (size_t i = 0; i < NCAMS; ++i) {
         const cam_in* in = &cams[i];
-        mat4 v, p;
-        vec3 dir;
-        glm_vec3_copy((float*)in->dir, dir);
-        look((float*)in->eye, dir, (float*)in->up, v);
-        persp(in->fovy, in->aspect, in->n, in->f, p);
         swarp_mat4 V, P;
-        to_swarp(v, &V);
-        to_swarp(p, &P);
+        cglm_pair(in, look, persp, &V, &P);
         swarp_camera c;
         swarp_camera_from_info info;
         ck_assert_int_eq(swarp_camera_from_matrices(&V, &P, conv, dr, NULL, &c, &info), SWARP_OK);
@@ -271,12 +278,8 @@ START_TEST(off_center_frustum_gives_the_smallest_containing_symmetric_one) {
 END_TEST
 
 START_TEST(vulkan_y_flip_leaves_the_camera_unchanged) {
-    mat4 v, p;
-    glm_look_rh((float*)cams[0].eye, (float*)cams[0].dir, (float*)cams[0].up, v);
-    glm_perspective_rh_zo(cams[0].fovy, cams[0].aspect, cams[0].n, cams[0].f, p);
     swarp_mat4 V, P;
-    to_swarp(v, &V);
-    to_swarp(p, &P);
+    cglm_pair(&cams[0], glm_look_rh, glm_perspective_rh_zo, &V, &P);
     swarp_camera c0, c1;
     ck_assert_int_eq(swarp_camera_from_matrices(&V, &P, SWARP_MATRIX_RH, SWARP_DEPTH_ZERO_TO_ONE, NULL, &c0, NULL), SWARP_OK);
     P.m[5] = -P.m[5];
@@ -298,13 +301,10 @@ static void assert_refused(const swarp_mat4* V, const swarp_mat4* P, swarp_matri
 }
 
 START_TEST(non_perspective_matrices_get_specific_statuses) {
-    mat4 v, p, o;
-    glm_look_rh((float*)cams[0].eye, (float*)cams[0].dir, (float*)cams[0].up, v);
-    glm_perspective_rh_no(cams[0].fovy, cams[0].aspect, cams[0].n, cams[0].f, p);
+    mat4 o;
     glm_ortho_rh_no(-10, 10, -10, 10, 1, 100, o);
     swarp_mat4 V, P, O, X;
-    to_swarp(v, &V);
-    to_swarp(p, &P);
+    cglm_pair(&cams[0], glm_look_rh, glm_perspective_rh_no, &V, &P);
     to_swarp(o, &O);
     assert_refused(&V, &O, SWARP_MATRIX_RH, SWARP_ERR_CAMERA_NOT_PERSPECTIVE);
     X = P, X.m[4] = 0.1; /* x from y: sheared */
