@@ -3,6 +3,7 @@
  * the approximate solution (scale quantised to levels, snapped offset).
  * [RHS] §3.5 after ZZB09. */
 #include "cascade/cascade_internal.h"
+#include "common/depth_range.h"
 
 #include <float.h>
 
@@ -153,7 +154,7 @@ static swarp_status sw_stabilize_options_resolve(const swarp_stabilize_options* 
     if (o->mode != SWARP_STABILIZE_NONE && o->mode != SWARP_STABILIZE_SPHERE &&
         o->mode != SWARP_STABILIZE_LEVELS)
         return SWARP_ERR_UNKNOWN_ENUM;
-    if (!sw_depth_range_ok(o->depth)) return SWARP_ERR_UNKNOWN_ENUM;
+    if (!sw_light_depth_range_ok(o->depth)) return SWARP_ERR_UNKNOWN_ENUM;
     if (o->levels == 0) o->levels = SW_STABILIZE_DEFAULT_LEVELS;
     if (!sw_finite3(&o->origin) || !sw_finite(o->level_max_size)) return SWARP_ERR_NON_FINITE;
     if (o->level_max_size < 0.0) return SWARP_ERR_OUT_OF_RANGE;
@@ -293,7 +294,7 @@ static void sw_stabilize_depth(const swarp_aabb* scene, swarp_vec3 O, double tex
 /* clip = A_fit-style scale/translate of light coordinates ([RHS] (3.1)). */
 static void sw_stabilize_matrix(const sw_stab_map* s, double dt, double t_sum, swarp_depth_range depth,
                                 swarp_mat4* m) {
-    const int zero_one = (depth == SWARP_DEPTH_ZERO_TO_ONE);
+    const int zero_one = sw_depth_zero_based(depth);
     const double za = zero_one ? 1.0 / dt : 2.0 / dt;
     const double zb = zero_one ? -s->t_min / dt : -t_sum / dt;
     sw_identity(m);
@@ -305,6 +306,7 @@ static void sw_stabilize_matrix(const sw_stab_map* s, double dt, double t_sum, s
         sw_set(m, r, 2, rows[r].z);
         sw_set(m, r, 3, trans[r]);
     }
+    sw_depth_reverse_if(depth, m);
 }
 
 SWARP_API swarp_status swarp_stabilize_directional(const swarp_camera* cam, double n_i, double f_i,

@@ -208,7 +208,7 @@ MUT(o_technique, in->opt.technique = (swarp_technique)4)
 MUT(o_technique_force, in->opt.technique = SWARP_TECHNIQUE_FORCE_I32)
 MUT(o_param, in->opt.param = (swarp_warp_param)6)
 MUT(o_center, in->opt.center = (swarp_warp_center)3)
-MUT(o_depth, in->opt.depth_range = (swarp_depth_range)3)
+MUT(o_depth, in->opt.depth_range = (swarp_depth_range)4)
 MUT(o_pancake, in->opt.pancake = 2)
 MUT(o_psm_slideback, in->opt.psm_slideback = 5)
 MUT(o_slideback_nan, in->opt.slideback = NAN)
@@ -300,7 +300,7 @@ static const struct {
     {"options technique FORCE_I32", o_technique_force, SWARP_ERR_UNKNOWN_ENUM, NO_PLAN | NO_STABLE},
     {"options param 6", o_param, SWARP_ERR_UNKNOWN_ENUM, NO_PLAN},
     {"options center 3", o_center, SWARP_ERR_UNKNOWN_ENUM, NO_PLAN},
-    {"options depth_range 3", o_depth, SWARP_ERR_UNKNOWN_ENUM, NO_PLAN},
+    {"options depth_range 4", o_depth, SWARP_ERR_UNKNOWN_ENUM, NO_PLAN},
     {"options pancake 2", o_pancake, SWARP_ERR_OUT_OF_RANGE, NO_PLAN},
     {"options psm_slideback 5", o_psm_slideback, SWARP_ERR_OUT_OF_RANGE, NO_PLAN},
     {"options slideback NaN", o_slideback_nan, SWARP_ERR_NON_FINITE, NO_PLAN},
