@@ -1,7 +1,9 @@
 #!/bin/sh
 # The whole test suite: installs what is missing, builds with
 # -Wall -Wextra -Werror, runs every Check suite, then the same suite again
-# under AddressSanitizer + UndefinedBehaviorSanitizer.
+# under AddressSanitizer + UndefinedBehaviorSanitizer, then the robustness
+# and packaging steps (valgrind, coverage, consumers, Debian packages, ABI,
+# fuzz).
 #   sh tests/run.sh            everything
 #   SWARP_QUICK=1 sh tests/run.sh   only the plain build
 set -eu
@@ -72,6 +74,9 @@ step coverage coverage_step
 
 echo "== consumers (pkg-config, CMake, meson subproject)"
 step consumers sh tests/consumers/run.sh
+
+echo "== Debian packages (build, lintian, install, C and Python consumers, purge)"
+step packages sh tests/packages/run.sh
 
 echo "== ABI (abidiff against tests/abi/shadowwarp.abi)"
 step abi sh tests/abi/check.sh build-ci

@@ -7,8 +7,9 @@
 #   3. the four .debs installed with apt-get (their dependencies resolved
 #      like any package's),
 #   4. consumers against the installed files only: tests/consumers/consumer.c
-#      through pkg-config (shared and static), README.md's API tour with its
-#      pkg-config command, swtool and its man page, and a Python program
+#      through pkg-config (shared and static) and CMake find_package,
+#      README.md's API tour with its pkg-config command, swtool and its man
+#      page, and a Python program
 #      (import shadowwarp) with SHADOWWARP_LIB unset,
 #   5. the packages purged again, also when a step fails.
 # Usage: sh tests/packages/run.sh [SOURCE_DIR]   (root or sudo; refuses to
@@ -94,6 +95,12 @@ if ldd ./pc_static | grep -q libshadowwarp; then
     echo "packages: pc_static links libshadowwarp dynamically"; exit 1
 fi
 /usr/bin/python3 "$src/tests/readme/check_tour.py" --installed "$src/README.md"
+
+echo "-- packages: CMake find_package(shadowwarp) from the multiarch libdir"
+cmake -S "$src/tests/consumers/cmake" -B "$tmp/cmake" -DCMAKE_BUILD_TYPE=Release >"$tmp/cmake.log" 2>&1 &&
+    cmake --build "$tmp/cmake" >>"$tmp/cmake.log" 2>&1 || { cat "$tmp/cmake.log"; exit 1; }
+"$tmp/cmake/consumer_shared"
+"$tmp/cmake/consumer_static"
 
 echo "-- packages: swtool"
 swtool report >/dev/null

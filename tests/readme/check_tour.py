@@ -1,13 +1,17 @@
 #!/usr/bin/python3
 """README.md's API tour compiles and runs as written.
 
-    check_tour.py README.md LIBSHADOWWARP_A
+    check_tour.py README.md LIBSHADOWWARP_A    the source-tree command
+    check_tour.py --installed README.md        the pkg-config command
 
 Takes the section "## API tour" of README.md: its C block is saved as
-tour.c, its sh block is run as given (with sh, in a scratch directory that
-holds tour.c, include/ -> the source tree's include/ and
-build/src/libshadowwarp.a -> the library meson built), and what the program
-prints must equal the section's text block line for line.  The compiler must
+tour.c, one command of its sh block is run as given with sh, and what the
+program prints must equal the section's text block line for line.  The
+source-tree command (the one without pkg-config) runs in a scratch directory
+that holds tour.c, include/ -> the source tree's include/ and
+build/src/libshadowwarp.a -> the library meson built; the pkg-config one
+(--installed, tests/packages/run.sh) in a scratch directory with tour.c
+alone, against the installed libshadowwarp-dev.  The compiler must
 be silent: the command has -Wall -Wextra -pedantic, a warning is a failure.
 
 The printed numbers are also checked against their definitions, evaluated
@@ -51,16 +55,28 @@ def one_block(blocks, lang):
     return found[0]
 
 
+def the_command(block, installed):
+    """The sh block's command line with pkg-config (installed) or without."""
+    lines = [l.strip() for l in block.splitlines() if l.strip() and not l.strip().startswith("#")]
+    found = [l for l in lines if ("pkg-config" in l) == installed]
+    if len(found) != 1:
+        fail("the API tour's sh block needs one command %s pkg-config, has %d"
+             % ("with" if installed else "without", len(found)))
+    return found[0]
+
+
 def run_command(command, source, lib):
     """Runs README's command as written in a scratch copy of the layout it
-    expects (the top of a source tree with a meson build in build/)."""
+    expects: the top of a source tree with a meson build in build/ (lib), or
+    any directory (lib None: the installed package)."""
     scratch = tempfile.mkdtemp(prefix="swarp-readme.")
     try:
         with open(os.path.join(scratch, "tour.c"), "w") as f:
             f.write(source)
-        os.symlink(os.path.join(SRC_ROOT, "include"), os.path.join(scratch, "include"))
-        os.makedirs(os.path.join(scratch, "build", "src"))
-        os.symlink(lib, os.path.join(scratch, "build", "src", "libshadowwarp.a"))
+        if lib is not None:
+            os.symlink(os.path.join(SRC_ROOT, "include"), os.path.join(scratch, "include"))
+            os.makedirs(os.path.join(scratch, "build", "src"))
+            os.symlink(lib, os.path.join(scratch, "build", "src", "libshadowwarp.a"))
         p = subprocess.run(["sh", "-c", command], cwd=scratch, capture_output=True, text=True)
     finally:
         shutil.rmtree(scratch)
@@ -91,14 +107,18 @@ def check_definitions(lines):
 
 def main():
     global SRC_ROOT
-    readme, lib = sys.argv[1], os.path.abspath(sys.argv[2])
+    installed = sys.argv[1:2] == ["--installed"]
+    if installed and len(sys.argv) == 3:
+        readme, lib = sys.argv[2], None
+    elif not installed and len(sys.argv) == 3:
+        readme, lib = sys.argv[1], os.path.abspath(sys.argv[2])
+    else:
+        fail("usage: check_tour.py README.md LIBSHADOWWARP_A | --installed README.md")
     SRC_ROOT = os.path.dirname(os.path.abspath(readme))
     with open(readme) as f:
         blocks = fenced_blocks(tour_section(f.read()))
-    source, command, expected = one_block(blocks, "c"), one_block(blocks, "sh"), one_block(blocks, "text")
-    command = command.strip()
-    if "\n" in command:
-        fail("the build command is more than one line")
+    source, expected = one_block(blocks, "c"), one_block(blocks, "text")
+    command = the_command(one_block(blocks, "sh"), installed)
     compiler = command.split()[0]
     if shutil.which(compiler) is None:
         print("readme_tour: %s not installed, skipped" % compiler)
