@@ -59,7 +59,7 @@ jobs="$(nproc 2>/dev/null || echo 1)"
 for p in $pkgs; do
     ls "$tmp/${p}_"*.deb >/dev/null 2>&1 || { echo "packages: $p was not built"; exit 1; }
 done
-ls "$tmp"/*.deb | sed 's#.*/#   #'
+for deb in "$tmp"/*.deb; do echo "   ${deb##*/}"; done
 
 echo "-- packages: lintian"
 changes="$(ls "$tmp"/*.changes)"
@@ -98,8 +98,9 @@ fi
 /usr/bin/python3 "$src/tests/readme/check_tour.py" --installed "$src/README.md"
 
 echo "-- packages: CMake find_package(shadowwarp) from the multiarch libdir"
-cmake -S "$src/tests/consumers/cmake" -B "$tmp/cmake" -DCMAKE_BUILD_TYPE=Release >"$tmp/cmake.log" 2>&1 &&
-    cmake --build "$tmp/cmake" >>"$tmp/cmake.log" 2>&1 || { cat "$tmp/cmake.log"; exit 1; }
+cmake -S "$src/tests/consumers/cmake" -B "$tmp/cmake" -DCMAKE_BUILD_TYPE=Release >"$tmp/cmake.log" 2>&1 ||
+    { cat "$tmp/cmake.log"; exit 1; }
+cmake --build "$tmp/cmake" >>"$tmp/cmake.log" 2>&1 || { cat "$tmp/cmake.log"; exit 1; }
 "$tmp/cmake/consumer_shared"
 "$tmp/cmake/consumer_static"
 
