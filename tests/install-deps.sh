@@ -7,13 +7,14 @@
 #   build    the library and swtool
 #   demo     the OSMesa demo (OpenGL offscreen, PNG output, cglm, stb)
 #   test     the Check suites, sanitizers, valgrind, coverage, the consumers
-#            (CMake, C++), the ABI check, the fuzzer, the plots (gnuplot)
+#            (CMake, C++), the ABI check, the fuzzer, the plots (gnuplot), the
+#            HLSL path (glslang, spirv-cross), the OGRE adapter, numpy
 #   package  dpkg-buildpackage, lintian and the Build-Depends of debian/control
 #            (tests/packages/run.sh)
 set -eu
 pkgs_build="meson ninja-build pkg-config gcc libc6-dev"
 pkgs_demo="libcglm-dev libosmesa6-dev libpng-dev libstb-dev"
-pkgs_test="libcglm-dev check python3 gnuplot-nox clang libclang-rt-14-dev valgrind gcovr cmake g++ abigail-tools"
+pkgs_test="libcglm-dev check python3 python3-numpy gnuplot-nox clang libclang-rt-14-dev valgrind gcovr cmake g++ abigail-tools glslang-tools spirv-cross libogre-1.12-dev"
 pkgs_package="dpkg-dev debhelper dh-python python3 lintian libcglm-dev check"
 [ "$#" -gt 0 ] || set -- build demo test package
 PKGS=""

@@ -18,7 +18,7 @@
 set -eu
 here="$(cd "$(dirname "$0")" && pwd)"
 src="$(cd "${1:-$here/../..}" && pwd)"
-pkgs="libshadowwarp0 libshadowwarp-dev shadowwarp-tools python3-shadowwarp"
+pkgs="libshadowwarp0.2 libshadowwarp-dev shadowwarp-tools python3-shadowwarp"
 SUDO=""
 [ "$(id -u)" -eq 0 ] || SUDO="sudo"
 for p in $pkgs; do
@@ -81,12 +81,12 @@ mkdir "$tmp/use" && cd "$tmp/use"
 "$cc" -std=c99 -Wall -Wextra -Werror -pedantic "$src/tests/consumers/consumer.c" -o pc_shared \
     $(pkg-config --cflags --libs shadowwarp)
 ./pc_shared
-# the file the loader resolves belongs to libshadowwarp0 (dpkg -S; the
+# the file the loader resolves belongs to libshadowwarp0.2 (dpkg -S; the
 # realpath, since the loader may name it through the merged /lib)
 loaded="$(ldd ./pc_shared | awk '/libshadowwarp/{print $3}')"
 owner="$(dpkg -S "$(readlink -f "$loaded")" 2>/dev/null | cut -d: -f1)"
-[ "$owner" = libshadowwarp0 ] ||
-    { ldd ./pc_shared; echo "packages: pc_shared loads '$loaded', not libshadowwarp0's library"; exit 1; }
+[ "$owner" = libshadowwarp0.2 ] ||
+    { ldd ./pc_shared; echo "packages: pc_shared loads '$loaded', not libshadowwarp0.2's library"; exit 1; }
 # shellcheck disable=SC2046
 "$cc" -std=c99 -Wall -Wextra -Werror -pedantic "$src/tests/consumers/consumer.c" -o pc_static \
     $(pkg-config --cflags shadowwarp) -Wl,-Bstatic -lshadowwarp -Wl,-Bdynamic \
