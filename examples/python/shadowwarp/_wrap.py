@@ -97,6 +97,15 @@ SPECS: Dict[str, Dict[str, Any]] = {
                    "depth holds fewer than (height - 1) * row_stride + width values")]},
 }
 
+# Functions whose pointer-and-count pairs follow the plain rule (an array of
+# exactly count elements), each checked against its comment in the header.
+# A new array function must be added here or to SPECS: until then calling it
+# raises NotImplementedError and tests/python/test_header.py fails.
+REVIEWED_PLAIN_ARRAYS = {
+    "swarp_setup_points", "swarp_focus_fit", "swarp_warp_lispsm", "swarp_stabilize_directional",
+    "swarp_cascade_select_best", "swarp_lixel_restrict", "swarp_lixel_select",
+}
+
 _SCALARS = ("double", "float", "uint8_t", "uint32_t", "int32_t", "uint64_t", "int", "size_t") + tuple(_capi.ENUMS)
 
 
@@ -196,6 +205,8 @@ class Wrapper:
         self.outputs = [p for p in self.params if p.role in ("out_one", "out_fixed", "out_array", "out_string")
                         and p.name not in hidden]
         self._fn = None
+        self.reviewed = name in SPECS or name in REVIEWED_PLAIN_ARRAYS or not any(
+            p.role in ("in_array", "out_array", "count", "capacity", "out_count", "out_string") for p in self.params)
         self.__name__ = name[len("swarp_"):]
         self.__qualname__ = self.__name__
         self.__doc__ = self._doc()
@@ -258,6 +269,8 @@ class Wrapper:
         return {p.name: bound.arguments[p.py_name] for p in self.inputs}
 
     def __call__(self, *args: Any, **kwargs: Any) -> Any:
+        if not self.reviewed:
+            raise NotImplementedError("%s: array lengths not reviewed (shadowwarp/_wrap.py SPECS)" % self.c_name)
         values = self.bind(args, kwargs)
         env: Dict[str, Any] = {}
         converted: Dict[str, Any] = {}
@@ -266,6 +279,9 @@ class Wrapper:
             v = values[p.name]
             if p.role == "in_scalar":
                 converted[p.name] = env[p.name] = to_scalar(v, p.base, p.py_name)
+            elif p.role == "in_array" and v is None:  # NULL with a count of 0: nothing is read
+                seqs[p.name] = None
+                env[p.name] = []
             elif p.role in ("in_fixed", "in_array"):
                 seqs[p.name] = env[p.name] = sequence(v, p.py_name)
             else:
@@ -288,6 +304,9 @@ class Wrapper:
             if p.role in ("in_fixed", "in_array"):
                 n = p.dims[0] if p.role == "in_fixed" else _eval(p.length, env)
                 items = seqs[p.name]
+                if items is None:
+                    call.append(None)
+                    continue
                 if len(items) != n:
                     raise ValueError("%s: %s needs %d values, got %d" % (self.__name__, p.py_name, n, len(items)))
                 call.append(_in_array(p, items))

@@ -1,0 +1,94 @@
+#!/usr/bin/python3
+"""The package against include/shadowwarp.h: nothing missing, nothing stale.
+
+* _capi.py is what gen_capi.py makes of the header now (a header change
+  without regenerating fails here, with the command to run);
+* every SWARP_API function declared outside the SWARP_EXPERIMENTAL_API
+  block is a callable of the package, and every experimental one of
+  shadowwarp.experimental; the declarations are found here by a line scan
+  independent of the generator's parser.
+"""
+import os
+import re
+import sys
+import unittest
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from support import HEADER, SOURCE_PACKAGE, header_text  # noqa: E402
+import shadowwarp as sw  # noqa: E402
+
+
+def declared_functions():
+    """(stable, experimental) function names: each `SWARP_API ... swarp_x(`
+    of the header, split at its `#ifdef SWARP_EXPERIMENTAL_API` line."""
+    stable, experimental, inside = set(), set(), False
+    for line in header_text().splitlines():
+        if line.startswith("#ifdef SWARP_EXPERIMENTAL_API"):
+            inside = True
+        elif line.startswith("#endif /* SWARP_EXPERIMENTAL_API"):
+            inside = False
+        m = re.match(r"\s*SWARP_API\b.*?\b(swarp_\w+)\s*\(", line)
+        if m:
+            (experimental if inside else stable).add(m.group(1))
+    return stable, experimental
+
+
+class Header(unittest.TestCase):
+    def test_every_stable_function_is_wrapped(self):
+        stable, _ = declared_functions()
+        self.assertGreater(len(stable), 80)
+        missing = sorted(n for n in stable if not callable(getattr(sw, n[len("swarp_"):], None)))
+        self.assertEqual(missing, [], "stable functions of the header without a wrapper")
+        self.assertEqual(set(sw.STABLE), stable)
+
+    def test_every_experimental_function_is_wrapped(self):
+        _, experimental = declared_functions()
+        self.assertGreater(len(experimental), 10)
+        missing = sorted(n for n in experimental if not callable(getattr(sw.experimental, n[len("swarp_"):], None)))
+        self.assertEqual(missing, [])
+        for n in experimental:  # the stable namespace stays stable
+            self.assertFalse(hasattr(sw, n[len("swarp_"):]), n)
+
+    def test_every_array_convention_is_reviewed(self):
+        from shadowwarp._wrap import WRAPPERS
+        self.assertEqual(sorted(n for n, w in WRAPPERS.items() if not w.reviewed), [])
+
+    def test_every_wrapped_function_is_in_the_library(self):
+        stable, experimental = declared_functions()
+        lib = sw.load(os.environ.get("SHADOWWARP_LIB"))
+        self.assertEqual(sorted(n for n in stable | experimental if not hasattr(lib, n)), [])
+
+    def test_generated_api_is_current(self):
+        if os.environ.get("SHADOWWARP_TEST_INSTALLED"):
+            self.skipTest("installed package: checked in the source tree")
+        sys.path.insert(0, SOURCE_PACKAGE)
+        import gen_capi
+        with open(os.path.join(SOURCE_PACKAGE, "shadowwarp", "_capi.py"), encoding="utf-8") as f:
+            committed = f.read()
+        self.assertEqual(gen_capi.generate(HEADER), committed,
+                         "examples/python/shadowwarp/_capi.py is stale: run /usr/bin/python3 "
+                         "examples/python/gen_capi.py include/shadowwarp.h examples/python/shadowwarp/_capi.py")
+
+    def test_detects_a_new_function(self):
+        # the check above is not vacuous: a header with one more stable
+        # declaration generates a different API with a function the package lacks
+        sys.path.insert(0, SOURCE_PACKAGE)
+        import gen_capi
+        import tempfile
+        text = header_text().replace(
+            "#ifdef SWARP_EXPERIMENTAL_API",
+            "SWARP_API swarp_status swarp_new_function(double x, double* out_y);\n#ifdef SWARP_EXPERIMENTAL_API", 1)
+        with tempfile.NamedTemporaryFile("w", suffix=".h", delete=False) as f:
+            f.write(text)
+        try:
+            ns = {}
+            exec(gen_capi.generate(f.name), ns)  # noqa: S102 - the generator's own output
+        finally:
+            os.unlink(f.name)
+        names = {fn[0] for fn in ns["FUNCTIONS"] if not fn[3]}
+        self.assertIn("swarp_new_function", names)
+        self.assertNotIn("swarp_new_function", sw.STABLE)
+
+
+if __name__ == "__main__":
+    unittest.main(verbosity=2)
