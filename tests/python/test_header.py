@@ -69,6 +69,18 @@ class Header(unittest.TestCase):
                          "examples/python/shadowwarp/_capi.py is stale: run /usr/bin/python3 "
                          "examples/python/gen_capi.py include/shadowwarp.h examples/python/shadowwarp/_capi.py")
 
+    def test_packaging_lists_every_module_and_the_version(self):
+        if os.environ.get("SHADOWWARP_TEST_INSTALLED"):
+            self.skipTest("installed package: checked in the source tree")
+        pkg = os.path.join(SOURCE_PACKAGE, "shadowwarp")
+        files = sorted(f for f in os.listdir(pkg) if f.endswith(".py") or f == "py.typed")
+        with open(os.path.join(SOURCE_PACKAGE, "meson.build"), encoding="utf-8") as f:
+            listed = sorted(os.path.basename(x) for x in re.findall(r"'shadowwarp/([^']+)'", f.read()))
+        self.assertEqual(listed, files, "examples/python/meson.build must install every module")
+        with open(os.path.join(SOURCE_PACKAGE, "pyproject.toml"), encoding="utf-8") as f:
+            version = re.search(r'^version = "([^"]+)"', f.read(), re.M).group(1)
+        self.assertEqual(version, sw.__version__, "pyproject.toml version is the header's")
+
     def test_detects_a_new_function(self):
         # the check above is not vacuous: a header with one more stable
         # declaration generates a different API with a function the package lacks
