@@ -81,6 +81,24 @@ class Header(unittest.TestCase):
             version = re.search(r'^version = "([^"]+)"', f.read(), re.M).group(1)
         self.assertEqual(version, sw.__version__, "pyproject.toml version is the header's")
 
+    def test_loads_by_soname_or_the_given_path(self):
+        lib = os.environ.get("SHADOWWARP_LIB")
+        if not lib or not sys.platform.startswith("linux"):
+            self.skipTest("needs the built library on Linux")
+        import subprocess
+        code = "import shadowwarp as sw; sw.version(); print(sw.loaded_path())"
+        env = {k: v for k, v in os.environ.items() if k != "SHADOWWARP_LIB"}
+        env["LD_LIBRARY_PATH"] = os.path.dirname(os.path.abspath(lib))
+        out = subprocess.run([sys.executable, "-c", code], env=env, capture_output=True, text=True, check=True)
+        self.assertEqual(out.stdout.strip(), "libshadowwarp.so.0")  # the SONAME, through the system loader
+        env.pop("LD_LIBRARY_PATH")
+        code = "import shadowwarp as sw; sw.load(%r); print(sw.loaded_path(), sw.version()[0])" % lib
+        out = subprocess.run([sys.executable, "-c", code], env=env, capture_output=True, text=True, check=True)
+        self.assertEqual(out.stdout.split(), [lib, sw.__version__])
+        code = "import shadowwarp as sw\ntry:\n sw.load('/nonexistent/libshadowwarp.so.0')\nexcept OSError as e:\n print(e)"
+        out = subprocess.run([sys.executable, "-c", code], env=env, capture_output=True, text=True, check=True)
+        self.assertIn("SHADOWWARP_LIB", out.stdout)
+
     def test_detects_a_new_function(self):
         # the check above is not vacuous: a header with one more stable
         # declaration generates a different API with a function the package lacks
