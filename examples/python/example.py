@@ -2,10 +2,10 @@
 """The worked example of docs/python.md: one LiSPSM matrix, one 4-split
 cascade and the measured error of both.
 
-    SHADOWWARP_LIB=build/src/libshadowwarp.so PYTHONPATH=examples/python \\
-        /usr/bin/python3 examples/python/example.py > docs/python_example.txt
+    SHADOWWARP_LIB=build/src/libshadowwarp.so PYTHONPATH=examples/python \
+        /usr/bin/python3 examples/python/example.py
 
-(with the packages installed: /usr/bin/python3 /usr/share/doc/python3-shadowwarp/examples/example.py)
+(tests/python/test_docs.py --update copies its output into docs/python.md)
 """
 import math
 
