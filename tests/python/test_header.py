@@ -69,11 +69,27 @@ class Header(unittest.TestCase):
                          "examples/python/shadowwarp/_capi.py is stale: run /usr/bin/python3 "
                          "examples/python/gen_capi.py include/shadowwarp.h examples/python/shadowwarp/_capi.py")
 
+    def test_type_stubs_are_current(self):
+        if os.environ.get("SHADOWWARP_TEST_INSTALLED"):
+            self.skipTest("installed package: checked in the source tree")
+        import ast
+        sys.path.insert(0, SOURCE_PACKAGE)
+        import gen_stubs
+        for name, text in (("__init__.pyi", gen_stubs.module_stub()), ("experimental.pyi", gen_stubs.experimental_stub())):
+            with open(os.path.join(SOURCE_PACKAGE, "shadowwarp", name), encoding="utf-8") as f:
+                committed = f.read()
+            self.assertEqual(text, committed, "%s is stale: run PYTHONPATH=examples/python /usr/bin/python3 "
+                             "examples/python/gen_stubs.py" % name)
+            tree = ast.parse(committed)
+            defined = {n.name for n in tree.body if isinstance(n, ast.FunctionDef)}
+            wanted = sw.STABLE if name == "__init__.pyi" else sw.experimental.EXPERIMENTAL
+            self.assertEqual(sorted(n[len("swarp_"):] for n in wanted if n[len("swarp_"):] not in defined), [])
+
     def test_packaging_lists_every_module_and_the_version(self):
         if os.environ.get("SHADOWWARP_TEST_INSTALLED"):
             self.skipTest("installed package: checked in the source tree")
         pkg = os.path.join(SOURCE_PACKAGE, "shadowwarp")
-        files = sorted(f for f in os.listdir(pkg) if f.endswith(".py") or f == "py.typed")
+        files = sorted(f for f in os.listdir(pkg) if f.endswith((".py", ".pyi")) or f == "py.typed")
         with open(os.path.join(SOURCE_PACKAGE, "meson.build"), encoding="utf-8") as f:
             listed = sorted(os.path.basename(x) for x in re.findall(r"'shadowwarp/([^']+)'", f.read()))
         self.assertEqual(listed, files, "examples/python/meson.build must install every module")
