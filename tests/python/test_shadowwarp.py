@@ -436,6 +436,40 @@ class Measured(unittest.TestCase):
         self.assertAlmostEqual(e.sigma / mx.max_sigma, 1.0, delta=1e-9)
 
 
+HAS_MEASURED = "measured" in sw.SetupResult._field_types
+
+
+@unittest.skipUnless(HAS_MEASURED, "the results carry no measured error in this header")
+class MeasuredInResults(unittest.TestCase):
+    """The measured fields of the results are swarp_measure_max of the
+    returned matrices (their definition in the header)."""
+
+    OPTS = {"technique": sw.TECHNIQUE_LISPSM, "map_width": 1024, "map_height": 1024,
+            "screen_width": 1280, "screen_height": 720}
+    RES = dict(screen_width=1280, screen_height=720, map_width=1024, map_height=1024)
+
+    def test_setup_result_measured_is_measure_max(self):
+        cam = scene_camera()
+        res = sw.setup(cam, SUN, SCENE_BOX, self.OPTS).result
+        m = sw.measure_max(cam, res.view_near, res.view_far, SUN, SCENE_BOX, res.matrix, self.RES)
+        self.assertGreater(res.measured.samples, 0)
+        self.assertEqual(bytes(res.measured), bytes(m))
+        off = sw.setup(cam, SUN, SCENE_BOX, dict(self.OPTS, skip_measure=1)).result
+        self.assertEqual(off.measured.samples, 0)
+        self.assertEqual(rows(off.matrix), rows(res.matrix))  # the measurement changes no matrix
+
+    def test_cascade_measured_is_the_worst_split(self):
+        cam = scene_camera()
+        res, splits = sw.cascade_setup(cam, SUN, SCENE_BOX, {"setup": self.OPTS, "split": {"count": 4}})
+        for sp in splits:
+            self.assertGreater(sp.measured.samples, 0)
+            m = sw.measure_max(cam, sp.z_near, sp.z_far, SUN, SCENE_BOX, sp.matrix, self.RES)
+            self.assertEqual(bytes(sp.measured), bytes(m))
+        self.assertEqual(res.measured.max_sigma, max(sp.measured.max_sigma for sp in splits))
+        self.assertEqual(res.measured.max_m_s, max(sp.measured.max_m_s for sp in splits))
+        self.assertEqual(res.measured.samples, sum(sp.measured.samples for sp in splits))
+
+
 class Experimental(unittest.TestCase):
     def test_lixel_plane_is_pixel_for_pixel(self):
         # viewer looking down at the floor y = 0 from (0, 2, 4), 640 x 480
