@@ -77,7 +77,6 @@ class Conventions(unittest.TestCase):
         with warnings.catch_warnings(record=True) as w:
             warnings.simplefilter("always")
             cam = sw.Camera(eye=(0, 0, 0), dir=(0, 0, -1), up=(0, 1, 0), fovy=1, aspect=1, near=0.25, far=9)
-            n = X.body_adjusted_range if False else None  # noqa: F841
         self.assertEqual((cam.z_near, cam.z_far), (0.25, 9.0))
         self.assertTrue(any(issubclass(x.category, DeprecationWarning) for x in w))
 
@@ -129,7 +128,6 @@ class Matrices(unittest.TestCase):
         for r in range(4):
             for c in range(4):
                 self.assertAlmostEqual(prod[r][c], 1.0 if r == c else 0.0, places=13)
-        self.assertEqual(rows(sw.mat4_mul(self.A, inv)), rows(prod) if False else rows(sw.mat4_mul(self.A, inv)))
         self.assertEqual(rows(sw.mat4_mul(self.A, self.A)), mul(self.A, self.A))  # exact small integers
 
     def test_transform_by_hand(self):
@@ -272,9 +270,18 @@ class Setup(unittest.TestCase):
             for r in range(4):
                 for c in range(4):
                     self.assertAlmostEqual(got[r][c], want[r][c], delta=1e-12 * (1 + abs(want[r][c])))
+            # returned matrices go back in as they are (numpy arrays or row tuples)
+            again = sw.mat4_mul(res.light_proj, res.light_view)
+            for r in range(4):
+                for c in range(4):
+                    self.assertAlmostEqual(rows(again)[r][c], want[r][c], delta=1e-12 * (1 + abs(want[r][c])))
             if HAVE_NUMPY:
                 import numpy as np
                 self.assertEqual(np.asarray(res.matrix).shape, (4, 4))
+                v = sw.mat4_transform(np.asarray(res.matrix), np.array([1.0, 2.0, 3.0]))
+                for got, ref in zip(v, apply(res.matrix, (1.0, 2.0, 3.0))):
+                    self.assertAlmostEqual(got, ref, delta=1e-12 * (1 + abs(ref)))
+                self.assertEqual(sw.cascade_select_depth(np.array([1.0, 2.0, 4.0]), np.float64(3.0)), 1)
                 self.assertTrue(np.allclose(res.light_proj @ res.light_view, res.matrix, rtol=1e-12, atol=1e-12))
 
     def test_setup_range_stays_in_its_range(self):
