@@ -9,11 +9,11 @@ valid-looking one.
 """
 import ctypes
 import keyword
-import math
 import numbers
 import operator
 import warnings
-from typing import Any, Dict, Iterator, List, Optional, Sequence, Tuple
+import typing as t
+from typing import Any, Dict, Iterator, Optional, Sequence
 
 from . import _capi
 
@@ -104,7 +104,7 @@ class Result(tuple):
     """Several outputs of one call: a tuple, also readable by name
     (r.result, r.points, ...), with the call's .status."""
     status: Status = Status(0)
-    _fields: Tuple[str, ...] = ()
+    _fields: t.Tuple[str, ...] = ()
 
     def __getattr__(self, name: str) -> Any:
         try:
@@ -186,7 +186,7 @@ def to_scalar(value: Any, ctype: str, what: str) -> Any:
     return to_int(value, ctype, what)
 
 
-def sequence(value: Any, what: str) -> List[Any]:
+def sequence(value: Any, what: str) -> t.List[Any]:
     if isinstance(value, (str, bytes, dict)) or value is None:
         raise TypeError("%s must be a sequence, not %s" % (what, type(value).__name__))
     if _np is not None and isinstance(value, _np.ndarray):
@@ -198,12 +198,17 @@ def sequence(value: Any, what: str) -> List[Any]:
 
 
 # ---- structs ------------------------------------------------------------------------
-KEYWORD_FIELDS = {"lambda": "lambda_", "raise": "raise_"}  # C names that are Python keywords
 DEPRECATED_ALIASES = {"near": "z_near", "far": "z_far"}
 
 
 def python_name(c_name: str) -> str:
+    """C names that are Python keywords (lambda, raise, in) take a trailing underscore."""
     return c_name + "_" if keyword.iskeyword(c_name) else c_name
+
+
+def c_name_of(py_name: str) -> Optional[str]:
+    """The C name behind a keyword-escaped Python name, else None."""
+    return py_name[:-1] if py_name.endswith("_") and keyword.iskeyword(py_name[:-1]) else None
 
 
 class Struct(ctypes.Structure):
@@ -211,7 +216,7 @@ class Struct(ctypes.Structure):
     every options struct), fields by position or keyword, range-checked."""
 
     _c_name = ""
-    _field_types: Dict[str, Tuple[str, Tuple[int, ...]]] = {}
+    _field_types: Dict[str, t.Tuple[str, t.Tuple[int, ...]]] = {}
 
     def __init__(self, *args: Any, **kwargs: Any) -> None:
         super().__init__()
@@ -224,19 +229,19 @@ class Struct(ctypes.Structure):
             if key in DEPRECATED_ALIASES and DEPRECATED_ALIASES[key] in self._field_types:
                 warnings.warn("%s=: use %s=" % (key, DEPRECATED_ALIASES[key]), DeprecationWarning, stacklevel=2)
                 key = DEPRECATED_ALIASES[key]
-            key = {v: k for k, v in KEYWORD_FIELDS.items()}.get(key, key)
+            key = c_name_of(key) or key
             if key not in self._field_types or key.startswith("_"):
                 raise TypeError("%s has no field %r" % (type(self).__name__, key))
             setattr(self, key, value)
 
     @classmethod
-    def public_fields(cls) -> List[str]:
+    def public_fields(cls) -> t.List[str]:
         return [f for f in cls._field_types if not f.startswith("_")]
 
     def __setattr__(self, name: str, value: Any) -> None:
         spec = self._field_types.get(name)
         if spec is None:
-            alias = {v: k for k, v in KEYWORD_FIELDS.items()}.get(name)
+            alias = c_name_of(name)
             if alias is not None:
                 return setattr(self, alias, value)
             return object.__setattr__(self, name, value)
@@ -252,7 +257,7 @@ class Struct(ctypes.Structure):
         return None
 
     def __getattr__(self, name: str) -> Any:
-        alias = {v: k for k, v in KEYWORD_FIELDS.items()}.get(name)
+        alias = c_name_of(name)
         if alias is not None:
             return getattr(self, alias)
         raise AttributeError("%s has no field %r" % (type(self).__name__, name))
@@ -311,7 +316,7 @@ def _convert(value: Any, ctype: str, what: str) -> Any:
     return to_scalar(value, ctype, what)
 
 
-def _fill_array(arr: Any, value: Any, ctype: str, dims: Tuple[int, ...], what: str) -> None:
+def _fill_array(arr: Any, value: Any, ctype: str, dims: t.Tuple[int, ...], what: str) -> None:
     items = sequence(value, what)
     if len(items) != dims[0]:
         raise ValueError("%s needs %d values, got %d" % (what, dims[0], len(items)))
@@ -332,7 +337,7 @@ def _fill_array(arr: Any, value: Any, ctype: str, dims: Tuple[int, ...], what: s
             arr[i] = item
 
 
-def ctype_of(ctype: str, dims: Tuple[int, ...] = ()) -> Any:
+def ctype_of(ctype: str, dims: t.Tuple[int, ...] = ()) -> Any:
     t = STRUCT_CLASSES[ctype] if ctype in STRUCT_CLASSES else _CTYPES[ctype]
     for d in reversed(dims):
         t = t * d
@@ -363,8 +368,8 @@ class _VectorMixin:
         return cls(*[to_float(v, "%s[%d]" % (what, i)) for i, v in enumerate(items)])
 
 
-def _struct_class(c_name: str, fields: List[Tuple[str, str, Tuple[int, ...]]]) -> type:
-    bases: Tuple[type, ...] = (Struct,)
+def _struct_class(c_name: str, fields: t.List[t.Tuple[str, str, t.Tuple[int, ...]]]) -> type:
+    bases: t.Tuple[type, ...] = (Struct,)
     cls_name = "".join(p.capitalize() for p in c_name[len("swarp_"):].split("_"))
     cls_name = {"Aabb": "AABB", "PlanResult": "PlanResult"}.get(cls_name, cls_name)
     if c_name in ("swarp_vec3", "swarp_vec4", "swarp_plane"):
@@ -421,13 +426,13 @@ class _Mat4Mixin:
     def _from_sequence(cls, value: Any, what: str) -> Any:
         return cls.from_rows(value)
 
-    def rows(self) -> List[List[float]]:
+    def rows(self) -> t.List[t.List[float]]:
         return [[self.m[c * 4 + r] for c in range(4)] for r in range(4)]  # type: ignore[attr-defined]
 
     def at(self, r: int, c: int) -> float:
         return self.m[c * 4 + r]  # type: ignore[attr-defined]
 
-    def __getitem__(self, rc: Tuple[int, int]) -> float:
+    def __getitem__(self, rc: t.Tuple[int, int]) -> float:
         r, c = rc
         return self.at(r, c)
 
@@ -518,9 +523,5 @@ def to_output(value: Any, status: int) -> Any:
     return out
 
 
-def is_finite(x: float) -> bool:
-    return math.isfinite(x)
-
-
 __all__ = ["Status", "SwarpError", "STATUS", "Float", "Int", "List", "Tuple", "Result", "Matrix",
-           "matrix", "Struct", "STRUCT_CLASSES", "Vec3", "Vec4", "Mat4", "Plane", "AABB", "Optional"]
+           "matrix", "Struct", "STRUCT_CLASSES", "Vec3", "Vec4", "Mat4", "Plane", "AABB"]

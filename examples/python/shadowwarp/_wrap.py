@@ -29,7 +29,7 @@ from typing import Any, Callable, Dict, List, Optional, Tuple
 from . import _capi
 from . import _loader
 from ._types import (STRUCT_CLASSES, DEPRECATED_ALIASES, Mat4, Result, Status, Struct, SwarpError,
-                     ctype_of, python_name, sequence, to_output, to_scalar, is_integer_type)
+                     ctype_of, python_name, sequence, to_output, to_scalar)
 
 C = _capi.CONSTANTS
 # the largest output a Python caller is given for a size-dependent array:
