@@ -118,6 +118,16 @@ def parse_functions(text, tags, experimental):
     return funcs
 
 
+def parse_docs(raw):
+    """The doc comment (/** ... */) right before each SWARP_API declaration,
+    as plain text: the wrappers' docstrings."""
+    docs = {}
+    for m in re.finditer(r"/\*\*((?:(?!\*/).)*)\*/\s*SWARP_API\b[^;]*?\b(swarp_\w+)\s*\(", raw, re.S):
+        lines = [re.sub(r"^\s*\* ?", "", line).rstrip() for line in m.group(1).strip().splitlines()]
+        docs[m.group(2)] = "\n".join(lines).strip()
+    return docs
+
+
 def generate(header_path):
     with open(header_path, encoding="utf-8") as f:
         raw = f.read()
@@ -134,6 +144,7 @@ def generate(header_path):
         "STRUCTS": structs,
         "STRUCT_TAGS": tags,
         "FUNCTIONS": funcs,
+        "DOCS": parse_docs(raw),
     }
     out = ['"""The C API of include/shadowwarp.h as data (generated; do not edit).',
            "",

@@ -54,7 +54,7 @@ for _name, _code, _msg in _capi.STATUSES:
 # the stable API
 STABLE = sorted(n for n, w in WRAPPERS.items() if not w.experimental)
 for _n in STABLE:
-    globals()[_n[len("swarp_"):]] = WRAPPERS[_n]
+    globals()[_n[len("swarp_"):]] = WRAPPERS[_n].as_function()
 
 
 def version() -> _Tuple[str, int]:

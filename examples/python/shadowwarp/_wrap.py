@@ -215,9 +215,10 @@ class Wrapper:
     def _doc(self) -> str:
         ins = ", ".join(p.py_name for p in self.inputs)
         outs = ", ".join(self._out_name(p) for p in self.outputs) or "status"
-        return ("%s(%s) -> %s\n\nWraps %s of include/shadowwarp.h (see its comment there for the "
-                "meaning, the domain and the statuses).  An error status raises SwarpError; the "
-                "returned value carries the status in .status." % (self.__name__, ins, outs, self.c_name))
+        return ("%s(%s) -> %s\n\nWraps %s of include/shadowwarp.h; an error status raises "
+                "SwarpError, the returned value carries the status in .status.  Array counts and "
+                "capacities are the wrapper's.  The header's comment:\n\n%s"
+                % (self.__name__, ins, outs, self.c_name, _capi.DOCS.get(self.c_name, "")))
 
     def _signature(self) -> inspect.Signature:
         params = []
@@ -245,6 +246,18 @@ class Wrapper:
         if p.name in ("out", "r"):
             return "result"
         return p.name[len("out_"):] if p.name.startswith("out_") else p.name
+
+    def as_function(self) -> Callable[..., Any]:
+        """A plain Python function calling this wrapper, so help() and
+        inspect show its name, signature and documentation."""
+        def call(*args: Any, **kwargs: Any) -> Any:
+            return self(*args, **kwargs)
+        call.__name__ = call.__qualname__ = self.__name__
+        call.__doc__ = self.__doc__
+        call.__signature__ = self.__signature__  # type: ignore[attr-defined]
+        call.__module__ = "shadowwarp.experimental" if self.experimental else "shadowwarp"
+        call.wrapper = self  # type: ignore[attr-defined]
+        return call
 
     def function(self) -> Any:
         if self._fn is None:

@@ -6,4 +6,4 @@ from ._wrap import WRAPPERS
 
 EXPERIMENTAL = sorted(n for n, w in WRAPPERS.items() if w.experimental)
 for _n in EXPERIMENTAL:
-    globals()[_n[len("swarp_"):]] = WRAPPERS[_n]
+    globals()[_n[len("swarp_"):]] = WRAPPERS[_n].as_function()
