@@ -31,7 +31,7 @@ print("world -> light clip matrix (rows):")
 for row in res.matrix:
     print("  " + "  ".join("%10.5f" % v for v in row))
 print("model (overhead light on the view axis): max m_x = %.4g, max m_z = %.4g" % (res.max_mx, res.max_mz))
-m = sw.measure_max(cam, res.view_near, res.view_far, sun, scene, res.matrix, res_px)
+m = res.measured  # swarp_measure_max of the matrix over H = V n S, bisector receivers
 print("measured over V n S: max m_s = %.4g, max m_t = %.4g, max sigma = %.4g at (%.3g, %.3g, %.3g), %d samples"
       % (m.max_m_s, m.max_m_t, m.max_sigma, m.at.x, m.at.y, m.at.z, m.samples))
 
@@ -40,11 +40,16 @@ cr = sw.cascade_setup(cam, sun, scene, {"setup": opts, "split": {"count": 4}})
 print("\ncascade_setup: %s, splits %s" % (cr.status.name,
                                           ", ".join("%.4g" % z for z in cr.result.splits[:cr.result.split_count + 1])))
 for i, sp in enumerate(cr.splits):
-    e = sw.measure_max(cam, sp.z_near, sp.z_far, sun, scene, sp.matrix, res_px)
     print("  split %d [%7.4g, %7.4g]: n' = %8.4g  model max m_x %6.3g m_z %6.3g  measured max sigma %6.3g"
-          % (i, sp.z_near, sp.z_far, sp.n_eye, sp.max_mx, sp.max_mz, e.max_sigma))
+          % (i, sp.z_near, sp.z_far, sp.n_eye, sp.max_mx, sp.max_mz, sp.measured.max_sigma))
+print("  whole cascade: measured max sigma %.4g (%d samples)"
+      % (cr.result.measured.max_sigma, cr.result.measured.samples))
 
-# 3. the measured error at points of your own (e.g. a depth/normal read-back)
+# 3. the same measurement at another resolution, and at points of your own
+# (e.g. a depth/normal read-back)
+m = sw.measure_max(cam, res.view_near, res.view_far, sun, scene, res.matrix,
+                   sw.MeasureRes(screen_width=1920, screen_height=1080, map_width=1024, map_height=1024))
+print("\nwith a 1024^2 map: max sigma = %.4g" % m.max_sigma)
 pts = [(0.0, 0.0, 0.0), (10.0, 0.0, -60.0)]
 for p, e in zip(pts, sw.measure_points(cam, res.matrix, res_px, pts, [(0, 1, 0)] * len(pts))):
     print("\nat %s, normal +y: m_s = %.4g, m_t = %.4g, sigma = %.4g, inside = %s"

@@ -20,6 +20,7 @@ int main(void) {
     S(swarp_cascade_result); S(swarp_lloyd_options); S(swarp_lloyd_report); S(swarp_polyhedron);
     S(swarp_lixel_options); S(swarp_lixel_info); S(swarp_lixel_rect);
     S(swarp_lixel_restrict_options); S(swarp_scene_needs); S(swarp_budget); S(swarp_plan_result);
+    S(swarp_camera_from_info);
     S(swarp_plan_chain); S(swarp_cube_options); S(swarp_cube_face); S(swarp_mindepth_options);
     O(swarp_camera, fovy); O(swarp_light, direction); O(swarp_light, cone_angle);
     O(swarp_setup_options, n_user); O(swarp_setup_options, slideback); O(swarp_setup_options, min_depth);
@@ -27,6 +28,8 @@ int main(void) {
     O(swarp_cascade_options, kernel_world_size); O(swarp_cascade_options, warp_per_split);
     O(swarp_cascade_split, tile); O(swarp_cascade_split, status); O(swarp_cascade_result, atlas);
     O(swarp_measured_error, at); O(swarp_measured_error, samples); O(swarp_texel_error, flags);
+    O(swarp_setup_result, measured); O(swarp_cascade_split, measured); O(swarp_cascade_result, measured);
+    O(swarp_setup_options, skip_measure);
     O(swarp_polyhedron, planes); O(swarp_polyhedron, face_vertices);
     O(swarp_lixel_info, conditioning); O(swarp_scene_needs, soft_width); O(swarp_scene_needs, planes);
     O(swarp_budget, time_budget_ns); O(swarp_plan_result, gamma); O(swarp_plan_result, max_mx);

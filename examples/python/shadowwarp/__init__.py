@@ -11,7 +11,7 @@ Every function of include/shadowwarp.h's stable API is here under its C name
 without the ``swarp_`` prefix (swarp_setup -> setup); the experimental API is
 in shadowwarp.experimental.  Conventions (docs/python.md):
 
-* the library is loaded by its SONAME (libshadowwarp.so.0) on the first
+* the library is loaded by its SONAME (libshadowwarp.so.0.2 for 0.2.x) on the first
   call; load(path) or $SHADOWWARP_LIB choose another file;
 * inputs: structs (Camera, Light, AABB, ...) or plain values (a vector is 3
   numbers, a box (min, max), a matrix 4 rows of 4); array lengths,

@@ -69,6 +69,13 @@ class AABB(Struct):
     max: Vec3
     def __init__(self, *args: Any, min: Any = ..., max: Any = ...) -> None: ...
 
+class CameraFromInfo(Struct):
+    reversed_z: int
+    infinite_far: int
+    off_center_x: float
+    off_center_y: float
+    def __init__(self, *args: Any, reversed_z: Any = ..., infinite_far: Any = ..., off_center_x: Any = ..., off_center_y: Any = ...) -> None: ...
+
 class MeasureRes(Struct):
     screen_width: int
     screen_height: int
@@ -114,7 +121,8 @@ class SetupOptions(Struct):
     pseudo_far: float
     slideback: float
     min_depth: float
-    def __init__(self, *args: Any, technique: Any = ..., param: Any = ..., center: Any = ..., depth_range: Any = ..., map_width: Any = ..., map_height: Any = ..., screen_width: Any = ..., screen_height: Any = ..., pancake: Any = ..., psm_slideback: Any = ..., n_user: Any = ..., pseudo_near: Any = ..., pseudo_far: Any = ..., slideback: Any = ..., min_depth: Any = ...) -> None: ...
+    skip_measure: int
+    def __init__(self, *args: Any, technique: Any = ..., param: Any = ..., center: Any = ..., depth_range: Any = ..., map_width: Any = ..., map_height: Any = ..., screen_width: Any = ..., screen_height: Any = ..., pancake: Any = ..., psm_slideback: Any = ..., n_user: Any = ..., pseudo_near: Any = ..., pseudo_far: Any = ..., slideback: Any = ..., min_depth: Any = ..., skip_measure: Any = ...) -> None: ...
 
 class SetupResult(Struct):
     light_view: Matrix
@@ -130,7 +138,8 @@ class SetupResult(Struct):
     light_near: float
     light_far: float
     point_count: int
-    def __init__(self, *args: Any, light_view: Any = ..., light_proj: Any = ..., matrix: Any = ..., n_eye: Any = ..., n_light: Any = ..., view_near: Any = ..., view_far: Any = ..., gamma: Any = ..., max_mx: Any = ..., max_mz: Any = ..., light_near: Any = ..., light_far: Any = ..., point_count: Any = ...) -> None: ...
+    measured: MeasuredError
+    def __init__(self, *args: Any, light_view: Any = ..., light_proj: Any = ..., matrix: Any = ..., n_eye: Any = ..., n_light: Any = ..., view_near: Any = ..., view_far: Any = ..., gamma: Any = ..., max_mx: Any = ..., max_mz: Any = ..., light_near: Any = ..., light_far: Any = ..., point_count: Any = ..., measured: Any = ...) -> None: ...
 
 class WarpOptions(Struct):
     param: int
@@ -238,7 +247,8 @@ class CascadeSplit(Struct):
     depth_per_world: float
     status: int
     point_count: int
-    def __init__(self, *args: Any, z_near: Any = ..., z_far: Any = ..., matrix: Any = ..., atlas_matrix: Any = ..., tile: Any = ..., n_eye: Any = ..., kernel_scale: Any = ..., max_mx: Any = ..., max_mz: Any = ..., mx_start: Any = ..., mz_start: Any = ..., mx_end: Any = ..., mz_end: Any = ..., texel_size: Any = ..., depth_per_world: Any = ..., status: Any = ..., point_count: Any = ...) -> None: ...
+    measured: MeasuredError
+    def __init__(self, *args: Any, z_near: Any = ..., z_far: Any = ..., matrix: Any = ..., atlas_matrix: Any = ..., tile: Any = ..., n_eye: Any = ..., kernel_scale: Any = ..., max_mx: Any = ..., max_mz: Any = ..., mx_start: Any = ..., mz_start: Any = ..., mx_end: Any = ..., mz_end: Any = ..., texel_size: Any = ..., depth_per_world: Any = ..., status: Any = ..., point_count: Any = ..., measured: Any = ...) -> None: ...
 
 class CascadeResult(Struct):
     split_count: int
@@ -248,7 +258,8 @@ class CascadeResult(Struct):
     max_mx: float
     max_mz: float
     atlas: AtlasInfo
-    def __init__(self, *args: Any, split_count: Any = ..., view_near: Any = ..., view_far: Any = ..., splits: Any = ..., max_mx: Any = ..., max_mz: Any = ..., atlas: Any = ...) -> None: ...
+    measured: MeasuredError
+    def __init__(self, *args: Any, split_count: Any = ..., view_near: Any = ..., view_far: Any = ..., splits: Any = ..., max_mx: Any = ..., max_mz: Any = ..., atlas: Any = ..., measured: Any = ...) -> None: ...
 
 class LloydOptions(Struct):
     max_iterations: int
@@ -400,9 +411,15 @@ Plan = PlanResult
 DEPTH_DEFAULT: int
 DEPTH_NEG_ONE_TO_ONE: int
 DEPTH_ZERO_TO_ONE: int
+DEPTH_REVERSED_ZERO_TO_ONE: int
 LIGHT_DEFAULT: int
 LIGHT_DIRECTIONAL: int
 LIGHT_POINT: int
+MATRIX_DEFAULT: int
+MATRIX_RH: int
+MATRIX_LH: int
+MATRIX_RH_TRANSPOSED: int
+MATRIX_LH_TRANSPOSED: int
 TEXEL_INSIDE: int
 TEXEL_BEHIND_EYE: int
 TEXEL_SINGULAR: int
@@ -464,6 +481,8 @@ VERSION_MAJOR: int
 VERSION_MINOR: int
 VERSION_PATCH: int
 MAT4_MAX_CONDITION: float
+CAMERA_STRAY_NDC: float
+CAMERA_RIGID_TOL: float
 BODY_MAX_POINTS: int
 FOCUS_BLEND_SIN: float
 FOCUS_BLEND_WEIGHT: float
@@ -546,11 +565,16 @@ SWARP_ERR_BOX_INVERTED: Status
 SWARP_ERR_BOX_DEGENERATE: Status
 SWARP_ERR_LIGHT_INSIDE_BODY: Status
 SWARP_ERR_FOLLOW_FRAME: Status
+SWARP_ERR_CAMERA_NOT_PERSPECTIVE: Status
+SWARP_ERR_CAMERA_MIRRORED: Status
+SWARP_ERR_CAMERA_VIEW_NOT_RIGID: Status
+SWARP_ERR_CAMERA_FAR_UNBOUNDED: Status
 SWARP_INFO_LIGHT_PARALLEL: Status
 SWARP_INFO_FLAT_EXTENT: Status
 SWARP_INFO_PSM_INVERSE: Status
 SWARP_INFO_LIGHT_NEAR_CLIPPED: Status
 SWARP_INFO_FOLLOW_LAG: Status
+SWARP_INFO_CAMERA_FAR_FROM_SCENE: Status
 SWARP_ERR_LIXEL_COPLANAR: Status
 SWARP_ERR_LIXEL_PLANE_THROUGH_EYE: Status
 SWARP_ERR_LIXEL_LIGHT_ON_PLANE: Status
@@ -604,6 +628,7 @@ def bias_texel_size(map: Optional[StructLike[BiasMap]], p: Optional[StructLike[V
 def bias_to_light(light: Optional[StructLike[Light]], p: Optional[StructLike[Vec3]]) -> Tuple[float, ...]: ...
 def body_adjusted_range(cam: Optional[StructLike[Camera]], scene: Optional[StructLike[AABB]]) -> Result: ...
 def body_points(cam: Optional[StructLike[Camera]], z_near: float, z_far: float, light: Optional[StructLike[Light]], scene: Optional[StructLike[AABB]]) -> List[Tuple[float, ...]]: ...
+def camera_from_matrices(view: Optional[StructLike[Mat4]], projection: Optional[StructLike[Mat4]], convention: int, depth_range: int, scene: Optional[StructLike[AABB]]) -> Result: ...
 def cascade_blend(splits: Optional[Sequence[float]], view_depth: float, band: float) -> Result: ...
 def cascade_error_curve(cfg: Optional[StructLike[ErrorConfig]], splits: Optional[Sequence[float]], n_primes: Optional[Sequence[float]], samples_per_split: int) -> Result: ...
 def cascade_nopt(splits: Optional[Sequence[float]], pseudo_near: float, pseudo_far: float) -> List[float]: ...

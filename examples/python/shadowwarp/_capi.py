@@ -8,9 +8,11 @@ const, array dims)], experimental).  STRUCTS: (typedef, [(field, type,
 dims)]) in header order."""
 
 CONSTANTS = {'SWARP_VERSION_MAJOR': 0,
- 'SWARP_VERSION_MINOR': 1,
+ 'SWARP_VERSION_MINOR': 2,
  'SWARP_VERSION_PATCH': 0,
  'SWARP_MAT4_MAX_CONDITION': 140737488355328.0,
+ 'SWARP_CAMERA_STRAY_NDC': 1e-06,
+ 'SWARP_CAMERA_RIGID_TOL': 1e-05,
  'SWARP_BODY_MAX_POINTS': 128,
  'SWARP_FOCUS_BLEND_SIN': 0.17364817766693033,
  'SWARP_FOCUS_BLEND_WEIGHT': 0.5,
@@ -71,12 +73,19 @@ CONSTANTS = {'SWARP_VERSION_MAJOR': 0,
 ENUMS = {'swarp_depth_range': {'SWARP_DEPTH_DEFAULT': 0,
                        'SWARP_DEPTH_NEG_ONE_TO_ONE': 1,
                        'SWARP_DEPTH_ZERO_TO_ONE': 2,
+                       'SWARP_DEPTH_REVERSED_ZERO_TO_ONE': 3,
                        'SWARP_DEPTH_RANGE_FORCE_I32': 2147483647},
  'swarp_light_type': {'SWARP_LIGHT_DEFAULT': 0,
                       'SWARP_LIGHT_DIRECTIONAL': 1,
                       'SWARP_LIGHT_POINT': 2,
                       'SWARP_LIGHT_TYPE_FORCE_I32': 2147483647},
  'swarp_status': {},
+ 'swarp_matrix_convention': {'SWARP_MATRIX_DEFAULT': 0,
+                             'SWARP_MATRIX_RH': 1,
+                             'SWARP_MATRIX_LH': 2,
+                             'SWARP_MATRIX_RH_TRANSPOSED': 3,
+                             'SWARP_MATRIX_LH_TRANSPOSED': 4,
+                             'SWARP_MATRIX_CONVENTION_FORCE_I32': 2147483647},
  'swarp_texel_flag': {'SWARP_TEXEL_INSIDE': 1,
                       'SWARP_TEXEL_BEHIND_EYE': 2,
                       'SWARP_TEXEL_SINGULAR': 4,
@@ -190,6 +199,18 @@ STATUSES = [('SWARP_OK', 0, 'ok'),
  ('SWARP_ERR_FOLLOW_FRAME',
   104,
   "the previous result's light frame is not orthonormal or not from this technique"),
+ ('SWARP_ERR_CAMERA_NOT_PERSPECTIVE',
+  105,
+  'the projection is not a perspective one (orthographic, or x, y, z mixed or translated)'),
+ ('SWARP_ERR_CAMERA_MIRRORED',
+  106,
+  'the view matrix mirrors (det < 0) or the projection looks backward for this handedness'),
+ ('SWARP_ERR_CAMERA_VIEW_NOT_RIGID',
+  107,
+  'the view matrix is not a rotation and a translation (scaled, sheared or projective)'),
+ ('SWARP_ERR_CAMERA_FAR_UNBOUNDED',
+  108,
+  "the projection's far plane is at infinity and no scene box bounds the view"),
  ('SWARP_INFO_LIGHT_PARALLEL',
   1100,
   'light nearly parallel to the view: light-space up blended toward camera right'),
@@ -204,6 +225,9 @@ STATUSES = [('SWARP_OK', 0, 'ok'),
   1104,
   'followed light frame still turning toward the aligned one (light near the view axis; LiSPSM '
   'weaker)'),
+ ('SWARP_INFO_CAMERA_FAR_FROM_SCENE',
+  1105,
+  'infinite far plane: z_far is the farthest view depth of the scene box ([RHS] 3.3.1)'),
  ('SWARP_ERR_LIXEL_COPLANAR',
   200,
   'four of the five points are coplanar (or a point is zero): no unique matrix'),
@@ -322,6 +346,11 @@ STRUCTS = [('swarp_vec3', [('x', 'double', ()), ('y', 'double', ()), ('z', 'doub
    ('cone_angle', 'double', ()),
    ('_reserved', 'uint32_t', (4,))]),
  ('swarp_aabb', [('min', 'swarp_vec3', ()), ('max', 'swarp_vec3', ())]),
+ ('swarp_camera_from_info',
+  [('reversed_z', 'uint32_t', ()),
+   ('infinite_far', 'uint32_t', ()),
+   ('off_center_x', 'double', ()),
+   ('off_center_y', 'double', ())]),
  ('swarp_measure_res',
   [('screen_width', 'uint32_t', ()),
    ('screen_height', 'uint32_t', ()),
@@ -363,7 +392,8 @@ STRUCTS = [('swarp_vec3', [('x', 'double', ()), ('y', 'double', ()), ('z', 'doub
    ('pseudo_far', 'double', ()),
    ('slideback', 'double', ()),
    ('min_depth', 'double', ()),
-   ('_reserved', 'uint32_t', (2,))]),
+   ('skip_measure', 'uint32_t', ()),
+   ('_reserved', 'uint32_t', (1,))]),
  ('swarp_setup_result',
   [('light_view', 'swarp_mat4', ()),
    ('light_proj', 'swarp_mat4', ()),
@@ -379,6 +409,7 @@ STRUCTS = [('swarp_vec3', [('x', 'double', ()), ('y', 'double', ()), ('z', 'doub
    ('light_far', 'double', ()),
    ('point_count', 'uint32_t', ()),
    ('_pad', 'uint32_t', ()),
+   ('measured', 'swarp_measured_error', ()),
    ('_reserved', 'uint32_t', (4,))]),
  ('swarp_warp_options',
   [('param', 'swarp_warp_param', ()),
@@ -477,6 +508,7 @@ STRUCTS = [('swarp_vec3', [('x', 'double', ()), ('y', 'double', ()), ('z', 'doub
    ('depth_per_world', 'double', ()),
    ('status', 'swarp_status', ()),
    ('point_count', 'uint32_t', ()),
+   ('measured', 'swarp_measured_error', ()),
    ('_reserved', 'uint32_t', (4,))]),
  ('swarp_cascade_result',
   [('split_count', 'uint32_t', ()),
@@ -487,6 +519,7 @@ STRUCTS = [('swarp_vec3', [('x', 'double', ()), ('y', 'double', ()), ('z', 'doub
    ('max_mx', 'double', ()),
    ('max_mz', 'double', ()),
    ('atlas', 'swarp_atlas_info', ()),
+   ('measured', 'swarp_measured_error', ()),
    ('_reserved', 'uint32_t', (4,))]),
  ('swarp_lloyd_options',
   [('max_iterations', 'uint32_t', ()),
@@ -624,6 +657,7 @@ STRUCT_TAGS = {'swarp_vec3': 'swarp_vec3',
  'swarp_camera': 'swarp_camera',
  'swarp_light': 'swarp_light',
  'swarp_aabb': 'swarp_aabb',
+ 'swarp_camera_from_info': 'swarp_camera_from_info',
  'swarp_measure_res': 'swarp_measure_res',
  'swarp_texel_error': 'swarp_texel_error',
  'swarp_measured_error': 'swarp_measured_error',
@@ -681,6 +715,16 @@ FUNCTIONS = [('swarp_status_string', 'const char *', [('status', 'swarp_status',
   [('m', 'swarp_mat4', 1, True, ()),
    ('p', 'swarp_vec3', 1, True, ()),
    ('out', 'swarp_vec4', 1, False, ())],
+  False),
+ ('swarp_camera_from_matrices',
+  'swarp_status',
+  [('view', 'swarp_mat4', 1, True, ()),
+   ('projection', 'swarp_mat4', 1, True, ()),
+   ('convention', 'swarp_matrix_convention', 0, False, ()),
+   ('depth_range', 'swarp_depth_range', 0, False, ()),
+   ('scene', 'swarp_aabb', 1, True, ()),
+   ('out_cam', 'swarp_camera', 1, False, ()),
+   ('out_info', 'swarp_camera_from_info', 1, False, ())],
   False),
  ('swarp_setup',
   'swarp_status',
@@ -1554,6 +1598,72 @@ DOCS = {'swarp_status_string': '@brief Readable message for a status; never NULL
                       ' SWARP_MAT4_MAX_CONDITION: numerically singular; r untouched), SWARP_OK.',
  'swarp_mat4_transform': '@brief Apply a matrix to a point (w = 1) and return the homogeneous '
                          'result.',
+ 'swarp_camera_from_matrices': "@brief The swarp_camera of an engine's view and projection "
+                               'matrices.\n'
+                               '\n'
+                               ' The projection must be a perspective one: w = -k z_view (k > 0 '
+                               'after the\n'
+                               " convention's handedness), x and y scaled (a flipped axis, like "
+                               "Vulkan's y\n"
+                               ' flip, leaves the frustum unchanged and is accepted) and possibly '
+                               'shifted,\n'
+                               ' z_ndc = -A + B/d at view depth d.  depth_range says which clip '
+                               'depth the\n'
+                               ' graphics API uses ([-1, 1]: SWARP_DEPTH_NEG_ONE_TO_ONE or '
+                               'DEFAULT; [0, 1]:\n'
+                               ' SWARP_DEPTH_ZERO_TO_ONE or SWARP_DEPTH_REVERSED_ZERO_TO_ONE): the '
+                               'matrix\n'
+                               ' alone cannot tell them apart (every forward matrix is valid in '
+                               'both, with\n'
+                               ' other planes).  Whether depth runs forward or reversed is read '
+                               'from the\n'
+                               ' sign of B; z_near and z_far are the depths whose NDC are the ends '
+                               'of the\n'
+                               ' range.  A far end that depth reaches only at infinity (A = -1 '
+                               'forward,\n'
+                               ' A = 0 reversed [0, 1], to SWARP_CAMERA_STRAY_NDC) is an infinite '
+                               'far\n'
+                               ' plane: the view is then bounded by the scene box as [RHS] §3.3.1 '
+                               'bounds\n'
+                               " it, z_far = the largest view depth of the box's corners (H = V ∩ "
+                               'S lies\n'
+                               ' in S), and the status is SWARP_INFO_CAMERA_FAR_FROM_SCENE.  An '
+                               'off-centre\n'
+                               ' frustum (P[0][2], P[1][2] != 0) becomes the smallest symmetric '
+                               'frustum\n'
+                               ' containing it: tan(fovy/2) = (1 + |c_y|) / |s_y|, aspect '
+                               'likewise.\n'
+                               '\n'
+                               ' @param[in] view        world -> view (rigid: a rotation and a '
+                               'translation)\n'
+                               ' @param[in] projection  view -> clip\n'
+                               ' @param[in] convention  storage and handedness of both matrices\n'
+                               " @param[in] depth_range the API's clip depth ([-1, 1] or [0, 1])\n"
+                               ' @param[in] scene       box S of casters and receivers; needed '
+                               'only when\n'
+                               '                        the far plane is infinite (may be NULL '
+                               'otherwise;\n'
+                               '                        checked when given)\n'
+                               ' @param[out] out_cam    eye, dir, up, fovy, aspect, z_near, z_far\n'
+                               ' @param[out] out_info   what was recognised (may be NULL)\n'
+                               ' @return SWARP_OK, SWARP_INFO_CAMERA_FAR_FROM_SCENE; errors leave '
+                               'outputs\n'
+                               '         untouched: SWARP_ERR_NULL_POINTER, '
+                               'SWARP_ERR_UNKNOWN_ENUM,\n'
+                               "         SWARP_ERR_NON_FINITE, SWARP_ERR_SINGULAR (view's 3x3 part "
+                               'or the\n'
+                               "         projection's x, y or depth scale zero), "
+                               'SWARP_ERR_CAMERA_MIRRORED,\n'
+                               '         SWARP_ERR_CAMERA_VIEW_NOT_RIGID, '
+                               'SWARP_ERR_CAMERA_NOT_PERSPECTIVE\n'
+                               '         (orthographic included), SWARP_ERR_NEAR_FAR (near <= 0, '
+                               'or the\n'
+                               '         far plane behind the eye), '
+                               'SWARP_ERR_CAMERA_FAR_UNBOUNDED, the\n'
+                               "         scene box's errors (SWARP_ERR_BOX_INVERTED, ...), and\n"
+                               '         SWARP_ERR_BODY_EMPTY (an infinite view whose scene box '
+                               'lies\n'
+                               '         wholly nearer than z_near).',
  'swarp_setup': '@brief The one call: H = V ∩ S, adjusted near/far [RHS] §3.3.1, B\n'
                 " [RHS] §3.1.1, light view with light-space alignment, the technique's\n"
                 " warp ([RHS] §3.2.1 / [KOZ]), focusing [RHS] (3.1) and the error model's\n"
@@ -1814,11 +1924,13 @@ DOCS = {'swarp_status_string': '@brief Readable message for a status; never NULL
                       ' point to the eye and to the light (the receiver for which projection\n'
                       ' aliasing vanishes, leaving the perspective aliasing of the '
                       'parameterisation).\n'
-                      ' Sampling: a grid x grid NDC lattice at depths geometric in [z_near, '
-                      'z_far],\n'
-                      ' points outside the box S skipped, then refine steps of a deterministic\n'
-                      ' pattern search around the worst sample (halving the step each time it\n'
-                      ' finds no larger sigma).  No allocation; the result is deterministic.\n'
+                      ' Sampling: the vertices of H, a grid x grid NDC lattice at depths '
+                      'geometric\n'
+                      ' in [z_near, z_far] (points outside S skipped), then from the worst vertex\n'
+                      ' and the worst lattice sample refine steps of a deterministic compass\n'
+                      ' search over (NDC x, NDC y, log z), halving the step each time it finds no\n'
+                      ' larger sigma (docs/accuracy.md states its error).  No allocation; the '
+                      'result is deterministic.\n'
                       ' @return SWARP_OK; SWARP_INFO_MEASURE_SINGULAR (max_sigma = +inf);\n'
                       '         SWARP_ERR_BODY_EMPTY (no sample of V lies in S); the errors of\n'
                       '         swarp_measure_points, SWARP_ERR_NEAR_FAR (not 0 < z_near < '

@@ -1,8 +1,8 @@
 """Finding libshadowwarp: by its SONAME through the system loader.
 
 Order: the path given to shadowwarp.load(path); else $SHADOWWARP_LIB (a path,
-used by the build tree's tests); else the SONAME (libshadowwarp.so.0 on
-Linux, which is what the Debian package libshadowwarp0 installs); else
+used by the build tree's tests); else the SONAME (libshadowwarp.so.0.2 on
+Linux for version 0.2.x, what the Debian package libshadowwarp0.2 installs); else
 whatever ctypes.util.find_library('shadowwarp') finds.  Loading happens on
 the first call into the library, so `import shadowwarp` never fails for a
 missing library and load(path) can still choose one.
@@ -16,14 +16,17 @@ from typing import List, Optional
 
 from . import _capi
 
-SONAME_MAJOR = _capi.CONSTANTS["SWARP_VERSION_MAJOR"]
+# The ABI version of the SONAME (meson.build's soversion): the major version,
+# or "0.minor" before 1.0, when every minor release may break the ABI.
+_MAJOR, _MINOR = _capi.CONSTANTS["SWARP_VERSION_MAJOR"], _capi.CONSTANTS["SWARP_VERSION_MINOR"]
+SOVERSION = "0.%d" % _MINOR if _MAJOR == 0 else "%d" % _MAJOR
 
 if sys.platform == "darwin":
-    SONAMES = ["libshadowwarp.%d.dylib" % SONAME_MAJOR]
+    SONAMES = ["libshadowwarp.%s.dylib" % SOVERSION]
 elif sys.platform == "win32":
-    SONAMES = ["shadowwarp-%d.dll" % SONAME_MAJOR, "shadowwarp.dll", "libshadowwarp.dll"]
+    SONAMES = ["shadowwarp-%s.dll" % SOVERSION, "shadowwarp.dll", "libshadowwarp.dll"]
 else:
-    SONAMES = ["libshadowwarp.so.%d" % SONAME_MAJOR]
+    SONAMES = ["libshadowwarp.so.%s" % SOVERSION]
 
 _state = {"lib": None, "path": None}
 _lock = threading.Lock()
@@ -52,8 +55,8 @@ def load(path: Optional[str] = None) -> ctypes.CDLL:
         with _lock:
             _state["lib"], _state["path"] = lib, name
         return lib
-    raise OSError("libshadowwarp not found (%s); install libshadowwarp%d, or pass its path to "
-                  "shadowwarp.load(path) or in $SHADOWWARP_LIB" % ("; ".join(errors), SONAME_MAJOR))
+    raise OSError("libshadowwarp not found (%s); install libshadowwarp%s, or pass its path to "
+                  "shadowwarp.load(path) or in $SHADOWWARP_LIB" % ("; ".join(errors), SOVERSION))
 
 
 def lib() -> ctypes.CDLL:
