@@ -49,6 +49,7 @@ typedef struct demo_measured {
      * coordinates of neighbouring pixels (central differences) */
     double render_m_s, render_m_t, render_sigma; /**< maxima over the pixels */
     swarp_vec3 render_at;       /**< world point of render_sigma */
+    double render_cos_light;    /**< cos psi_l (receiver normal, light) there */
     /* swarp_measure_points at the same pixels' world points and facet
      * normals with the matrix of the map that shaded them */
     double points_m_s, points_m_t, points_sigma; /**< maxima over the pixels */

@@ -229,7 +229,7 @@ static int render_error(const float* tex, int w, int x, int y, swarp_texel_error
 /* The pixel's receiver for the library: world point, facet normal, and
  * whether it faces the light enough to be measured. */
 static int pixel_receiver(const demo_view* v, const float* pos, const float* nrm, int w, int x,
-                          int y, swarp_vec3* P, swarp_vec3* N) {
+                          int y, swarp_vec3* P, swarp_vec3* N, double* cos_light) {
     const float* p = px4(pos, w, x, y);
     const float* n = px4(nrm, w, x, y);
     *P = (swarp_vec3){p[0], p[1], p[2]};
@@ -242,6 +242,7 @@ static int pixel_receiver(const demo_view* v, const float* pos, const float* nrm
     swarp_vec3 e = {v->cam.eye.x - P->x, v->cam.eye.y - P->y, v->cam.eye.z - P->z};
     double se = N->x * e.x + N->y * e.y + N->z * e.z;
     double sl = -(N->x * l->x + N->y * l->y + N->z * l->z);
+    *cos_light = cl;
     return se * sl > 0 && cl >= DEMO_MEASURE_MIN_COS_LIGHT;
 }
 
@@ -273,7 +274,8 @@ int demo_measure_render(const demo_view* v, const demo_shadow* sh, const float* 
             int i = (int)px4(tex, w, x, y)[2];
             if (i < 0 || i >= sh->count) continue;
             swarp_vec3 P, N;
-            if (!pixel_receiver(v, pos, nrm, w, x, y, &P, &N)) continue;
+            double cl;
+            if (!pixel_receiver(v, pos, nrm, w, x, y, &P, &N, &cl)) continue;
             swarp_measure_res mr = {(uint32_t)w, (uint32_t)h, (uint32_t)sh->viewport[i][0],
                                     (uint32_t)sh->viewport[i][1]};
             swarp_texel_error pe, re;
@@ -285,6 +287,7 @@ int demo_measure_render(const demo_view* v, const demo_shadow* sh, const float* 
             }
             if (!(pe.flags & SWARP_TEXEL_INSIDE) || (pe.flags & SWARP_TEXEL_SINGULAR)) continue;
             if (!render_error(tex, w, x, y, &re)) continue;
+            if (re.sigma > m.render_sigma) m.render_cos_light = cl;
             keep_max(&m.render_m_s, &m.render_m_t, &m.render_sigma, &m.render_at, &re, &P);
             keep_max(&m.points_m_s, &m.points_m_t, &m.points_sigma, &m.points_at, &pe, &P);
             dev[m.pixels++] = fabs(re.sigma / pe.sigma - 1.0);

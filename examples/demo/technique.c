@@ -264,8 +264,8 @@ void demo_print_measured(const demo_tech_result* r) {
     printf("  measured error (docs/accuracy.md) over %d receiver pixels (%s):\n", m->pixels,
            r->label);
     printf("    render (texel coordinates read back): max m_s %.4g, m_t %.4g, sigma %.4g at "
-           "(%.1f %.1f %.1f)\n", m->render_m_s, m->render_m_t, m->render_sigma, m->render_at.x,
-           m->render_at.y, m->render_at.z);
+           "(%.1f %.1f %.1f), cos psi_l %.3f\n", m->render_m_s, m->render_m_t, m->render_sigma,
+           m->render_at.x, m->render_at.y, m->render_at.z, m->render_cos_light);
     printf("    swarp_measure_points, same pixels:    max m_s %.4g, m_t %.4g, sigma %.4g at "
            "(%.1f %.1f %.1f)\n", m->points_m_s, m->points_m_t, m->points_sigma, m->points_at.x,
            m->points_at.y, m->points_at.z);
