@@ -1,4 +1,4 @@
-/* swtool bench-report: the accuracy/cost report of issue 8.
+/* swtool bench-report: the accuracy/cost report of every technique.
  *
  * For every configuration (γ = 90, 60, 45, 30, 20, 10, 5, 0 and 150 degrees;
  * far/near = 100, 1000, 1e4; map 1024 and 2048; screen 1024x768) and every
