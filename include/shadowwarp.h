@@ -1062,7 +1062,7 @@ SWARP_API swarp_status swarp_measure_points(const swarp_camera* cam, const swarp
  *  aliasing vanishes, leaving the perspective aliasing of the parameterisation).
  *  Sampling: the vertices of H, a grid x grid NDC lattice at depths geometric
  *  in [z_near, z_far] (points outside S skipped), then from the worst vertex
- *  and the worst lattice sample refine steps of a deterministic compass
+ *  and the four worst local maxima of the lattice refine steps of a deterministic compass
  *  search over (NDC x, NDC y, log z), halving the step each time it finds no
  *  larger sigma (docs/accuracy.md states its error).  No allocation; the result is deterministic.
  *  @return SWARP_OK; SWARP_INFO_MEASURE_SINGULAR (max_sigma = +inf);
