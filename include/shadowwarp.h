@@ -285,7 +285,9 @@ typedef struct swarp_aabb { swarp_vec3 min, max; } swarp_aabb;
     X(SWARP_INFO_LIGHT_NEAR_CLIPPED, 1103,                                              \
       "spot light on or inside B: points nearer than its near plane left out")          \
     X(SWARP_INFO_FOLLOW_LAG, 1104,                                                      \
-      "followed light frame still turning toward the aligned one (light near the view axis; LiSPSM weaker)")
+      "followed light frame still turning toward the aligned one (light near the view axis; LiSPSM weaker)") \
+    X(SWARP_INFO_CASTERS_CLAMPED, 1105,                                                 \
+      "casters over 1e10 times the receivers' size toward the light left out of the depth range (depth clamp)")
 
 /* lixel: 200..299, 1200..1299 */
 #define SWARP_STATUS_LIST_LIXEL(X)                                                  \

@@ -23,8 +23,18 @@
  * flat H's normal grazes its plane: the rounding of unit vectors (a few
  * eps), so B is built in the plane (sw_flat_extend). */
 #define SW_BODY_GRAZING_COS 1e-15
-/* The longest sweep H + T u: finite for |H| below DBL_MAX/2 (see
- * sw_body_from_h_ex). */
+/* The longest sweep relative to H's size: B's vertices stay within 1e10
+ * times H's extent of it, where the clipper (SWARP_POLY_EPS_REL = 1e-12 of
+ * the polyhedron's scale) still resolves H to 1e-2 of its size and the fit
+ * (SW_FIT_FLAT_REL, focus.c) does not call H's lateral extent flat beside
+ * B's length.  Casters farther toward the light are left out of B (the
+ * caller reports SWARP_INFO_CASTERS_CLAMPED: a renderer with depth
+ * clamping draws them at the near plane, where they still shadow every
+ * receiver behind them, as with pancaking). */
+#define SW_SWEEP_REL_MAX 1e10
+/* The longest sweep H + T u: finite for |H| below DBL_MAX/2; a sweep that
+ * stays inside S longer than that leaves the double range (B's vertices
+ * checked: SWARP_ERR_OUT_OF_RANGE). */
 #define SW_SWEEP_T_MAX (0.25 * DBL_MAX)
 
 static int sw_face_is_front(swarp_plane p, swarp_vec3 u) {
@@ -541,22 +551,58 @@ static void sw_sweep_clip_order(swarp_vec3 u, const swarp_aabb* box, uint8_t ord
 }
 
 static swarp_status sw_body_from_h_ex(const swarp_polyhedron* H, const swarp_light* light, const swarp_aabb* box,
-                                      int h_tidy, swarp_polyhedron* B);
+                                      int h_tidy, swarp_polyhedron* B, int* clamped);
+
+/* The sweep length T: every point p of H leaves S along u within
+ * t(p) = min_k (bound_k - p_k) / u_k (bound_k: S's face u points at on
+ * axis k), and t(p) <= (bound_k - h_k) / |u_k| for h_k H's extreme
+ * coordinate away from that face, on each axis: the least of these bounds
+ * (twice, plus the smallest normal as a floor) is a T for which every copy
+ * H + T u lies outside S, so the box clip cuts the sweep exactly where it
+ * leaves S.  It is the length of B along the light, not the diagonal of S:
+ * S's other faces may lie at 1e19 or DBL_MAX (an "unbounded" box) and a
+ * sweep that long would put B's vertices at that scale, where the clipper's
+ * tolerance (SWARP_POLY_EPS_REL of the polyhedron's scale) is larger than
+ * H itself. */
+static double sw_sweep_length(const swarp_polyhedron* H, swarp_vec3 u, const swarp_aabb* box, int* clamped) {
+    double hlo[3] = {INFINITY, INFINITY, INFINITY}, hhi[3] = {-INFINITY, -INFINITY, -INFINITY};
+    for (uint32_t i = 0; i < H->vertex_count; ++i) {
+        const double v[3] = {H->vertices[i].x, H->vertices[i].y, H->vertices[i].z};
+        for (int k = 0; k < 3; ++k) hlo[k] = fmin(hlo[k], v[k]), hhi[k] = fmax(hhi[k], v[k]);
+    }
+    const double uc[3] = {u.x, u.y, u.z}, lo[3] = {box->min.x, box->min.y, box->min.z},
+                 hi[3] = {box->max.x, box->max.y, box->max.z};
+    double T = INFINITY;
+    for (int k = 0; k < 3; ++k) {
+        /* halved terms: a box from -DBL_MAX to DBL_MAX has no overflow */
+        if (uc[k] > 0.0) T = fmin(T, (0.5 * hi[k] - 0.5 * hlo[k]) / (0.5 * uc[k]));
+        else if (uc[k] < 0.0) T = fmin(T, (0.5 * hhi[k] - 0.5 * lo[k]) / (-0.5 * uc[k]));
+    }
+    T = 2.0 * T + DBL_MIN;
+    double ext = 0.0, mag = 0.0;
+    for (int k = 0; k < 3; ++k) ext = fmax(ext, hhi[k] - hlo[k]), mag = fmax(mag, fmax(fabs(hlo[k]), fabs(hhi[k])));
+    /* a point H (extent 0) keeps the scale of its coordinates */
+    const double cap = SW_SWEEP_REL_MAX * fmax(ext, SWARP_POLY_EPS_REL * mag);
+    *clamped = T > cap;
+    return *clamped ? cap : T;
+}
 
 swarp_status sw_body_from_h(const swarp_polyhedron* H, const swarp_light* light, const swarp_aabb* box,
                             swarp_polyhedron* B) {
-    return sw_body_from_h_ex(H, light, box, 0, B);
+    int clamped = 0;
+    return sw_body_from_h_ex(H, light, box, 0, B, &clamped);
 }
 
 /* H built by the clipper (sw_body_h and clips of it): its loops are tidy
  * (no index next to itself, at least 3 entries), see sw_loops_tidy. */
 swarp_status sw_body_from_h_clipped(const swarp_polyhedron* H, const swarp_light* light, const swarp_aabb* box,
-                                    swarp_polyhedron* B) {
-    return sw_body_from_h_ex(H, light, box, 1, B);
+                                    swarp_polyhedron* B, int* clamped) {
+    return sw_body_from_h_ex(H, light, box, 1, B, clamped);
 }
 
 static swarp_status sw_body_from_h_ex(const swarp_polyhedron* H, const swarp_light* light, const swarp_aabb* box,
-                                      int h_tidy, swarp_polyhedron* B) {
+                                      int h_tidy, swarp_polyhedron* B, int* clamped) {
+    *clamped = 0;
     swarp_polyhedron M;
     swarp_status s;
     /* the in-plane construction only when H is flat AND the light lies in
@@ -591,16 +637,7 @@ static swarp_status sw_body_from_h_ex(const swarp_polyhedron* H, const swarp_lig
     } else {
         swarp_vec3 u = {0, 0, 1};
         sw_normalize_fast(sw_scale(light->direction, -1.0), &u);
-        /* T: longer than any path inside S */
-        double diag = sw_len_fast(sw_sub(box->max, box->min));
-        double T = 2.0 * diag + 1e-300;
-        /* a box reaching to ±DBL_MAX (valid input) has diag(S) ~ DBL_MAX:
-         * 2 diag overflows and the extruded copies would be inf (inf
-         * vertices of B with SWARP_OK).  SW_SWEEP_T_MAX = DBL_MAX/4 is as
-         * far as H + T u stays finite for |H| below DBL_MAX/2; the box clip
-         * then cuts the sweep where it leaves S, and a sweep longer than
-         * that inside S leaves the double range (checked below:
-         * SWARP_ERR_OUT_OF_RANGE). */
+        double T = sw_sweep_length(H, u, box, clamped);
         if (!(T <= SW_SWEEP_T_MAX)) T = SW_SWEEP_T_MAX;
         int finalized = 0;
         s = flat ? sw_flat_extend(H, u, T, NULL, &M) : sw_extend(H, u, T, NULL, h_tidy, &M, &finalized);

@@ -27,11 +27,14 @@ _Static_assert(sizeof(swarp_warp_info) == 6 * 8 + 16, "swarp_warp_info size");
  * atan(1e3) ≈ 89.94°; beyond that the light is inside B. */
 #define SW_LIGHT_MAX_TAN 1e3
 
-/* More important informational statuses win. */
+/* More important informational statuses win: first those that say a part
+ * of the promise (every receiver in the map, every caster between it and
+ * the light in the depth range) is bounded rather than exact, then the
+ * technique's own reports. */
 static swarp_status sw_info_merge(swarp_status a, swarp_status b) {
-    static const swarp_status order[] = {SWARP_INFO_PSM_INVERSE, SWARP_INFO_WARP_UNIFORM,
-                                         SWARP_INFO_LIGHT_NEAR_CLIPPED, SWARP_INFO_LIGHT_PARALLEL,
-                                         SWARP_INFO_FLAT_EXTENT};
+    static const swarp_status order[] = {SWARP_INFO_LIGHT_NEAR_CLIPPED, SWARP_INFO_CASTERS_CLAMPED,
+                                         SWARP_INFO_PSM_INVERSE,        SWARP_INFO_WARP_UNIFORM,
+                                         SWARP_INFO_LIGHT_PARALLEL,     SWARP_INFO_FLAT_EXTENT};
     for (size_t i = 0; i < sizeof order / sizeof order[0]; ++i)
         if (a == order[i] || b == order[i]) return order[i];
     return a != SWARP_OK ? a : b;
@@ -598,7 +601,8 @@ static swarp_status sw_setup_range(const swarp_camera* cam, const swarp_light* l
         if (s != SWARP_OK) return s;
         Hp = &Hl;
     }
-    s = sw_body_from_h_clipped(Hp, light, scene, &B); /* H from sw_body_h: the clipper's */
+    int clamped = 0;
+    s = sw_body_from_h_clipped(Hp, light, scene, &B, &clamped); /* H from sw_body_h: the clipper's */
     if (s != SWARP_OK) return s;
     s = sw_check_points_capacity(&B, out_points, capacity, out_count);
     if (s != SWARP_OK) return s;
@@ -616,6 +620,7 @@ static swarp_status sw_setup_range(const swarp_camera* cam, const swarp_light* l
                                         far, o, eye, fw, &res);
     if (swarp_status_is_error(info)) return info;
     if (!sw_fold_result(&res, eye)) return SWARP_ERR_DEGENERATE;
+    if (clamped) info = sw_info_merge(info, SWARP_INFO_CASTERS_CLAMPED);
     *out = res;
     if (out_points)
         for (uint32_t i = 0; i < B.vertex_count; ++i) out_points[i] = sw_add(B.vertices[i], eye);
