@@ -345,6 +345,32 @@ static size_t sw_clip_light_near_body(const sw_light_space* ls, const swarp_poly
     return C.vertex_count;
 }
 
+/* The same for B given as points (swarp_setup_points, the cascades): the
+ * points behind the plane, and on every segment from one in front of it to
+ * one behind it the point on the plane.  B's section by the plane lies in
+ * the hull of those (each vertex of the clipped hull is a kept point or
+ * the crossing of a hull edge, which is such a segment).  0 when they do
+ * not fit SWARP_BODY_MAX_POINTS. */
+static int sw_clip_light_near_points(const sw_light_space* ls, const swarp_vec3* B, size_t nb, double light_near,
+                                     swarp_vec3* Bk, size_t* nk) {
+    double D[SWARP_BODY_MAX_POINTS];
+    size_t k = 0;
+    nb = nb < SWARP_BODY_MAX_POINTS ? nb : SWARP_BODY_MAX_POINTS;
+    for (size_t i = 0; i < nb; ++i) {
+        D[i] = -sw_xform_point(&ls->L, B[i]).z;
+        if (D[i] >= light_near) Bk[k++] = B[i];
+    }
+    for (size_t i = 0; i < nb; ++i)
+        for (size_t j = 0; j < nb && D[i] >= light_near; ++j) {
+            if (D[j] >= light_near) continue;
+            if (k >= SWARP_BODY_MAX_POINTS) return 0;
+            const double t = (D[i] - light_near) / (D[i] - D[j]); /* in [0, 1): D[j] < light_near <= D[i] */
+            Bk[k++] = sw_add(B[i], sw_scale(sw_sub(B[j], B[i]), t));
+        }
+    *nk = k;
+    return 1;
+}
+
 /* The points the map must see: a point light cuts B at its near plane
  * (the apex region; B_poly clipped when given, else the points in front
  * dropped) into Bk, drops the receivers H in front of it (into Hk) and
@@ -361,12 +387,7 @@ static swarp_status sw_cut_light_near(const sw_light_space* ls, const swarp_vec3
     if (ls->point) {
         size_t k = 0;
         if (B_poly) k = sw_clip_light_near_body(ls, B_poly, res->light_near, Bk);
-        else
-            for (size_t i = 0; i < nb && k < SWARP_BODY_MAX_POINTS; ++i) {
-                swarp_vec4 h = sw_xform_point(&ls->L, B[i]);
-                if (-h.z < res->light_near) continue;
-                Bk[k++] = B[i];
-            }
+        else if (!sw_clip_light_near_points(ls, B, nb, res->light_near, Bk, &k)) return SWARP_ERR_CAPACITY;
         *nbk = k;
         /* the receivers for pancaking, with the same cut */
         k = 0;
