@@ -573,7 +573,10 @@ static double sw_sweep_length(const swarp_polyhedron* H, swarp_vec3 u, const swa
     const double uc[3] = {u.x, u.y, u.z}, lo[3] = {box->min.x, box->min.y, box->min.z},
                  hi[3] = {box->max.x, box->max.y, box->max.z};
     double T = INFINITY;
-    for (int k = 0; k < 3; ++k) {
+    int inside = 1; /* the bound needs H ⊂ S (a caller's H may not be: then 2 diag(S)) */
+    for (int k = 0; k < 3; ++k) inside &= hlo[k] >= lo[k] && hhi[k] <= hi[k];
+    if (!inside) T = 0.5 * sw_len_fast(sw_sub(sw_scale(box->max, 0.5), sw_scale(box->min, 0.5))) * 2.0;
+    for (int k = 0; k < 3 && inside; ++k) {
         /* halved terms: a box from -DBL_MAX to DBL_MAX has no overflow */
         if (uc[k] > 0.0) T = fmin(T, (0.5 * hi[k] - 0.5 * hlo[k]) / (0.5 * uc[k]));
         else if (uc[k] < 0.0) T = fmin(T, (0.5 * hhi[k] - 0.5 * lo[k]) / (-0.5 * uc[k]));

@@ -560,6 +560,7 @@ static swarp_status sw_setup_points(const swarp_camera* cam, const swarp_light* 
     memset(&res, 0, sizeof res);
     res.view_near = near;
     res.view_far = far;
+    const size_t nb_body = nb; /* point_count: B's own points, before a near-plane cut */
     if (tech == SWARP_TECHNIQUE_PSM) {
         swarp_polyhedron Bc;
         if (light->type == SWARP_LIGHT_POINT && B_poly) {
@@ -578,7 +579,7 @@ static swarp_status sw_setup_points(const swarp_camera* cam, const swarp_light* 
     if ((s = sw_predict_error(cam, o, near, far, &res)) != SWARP_OK) return s;
     if (!sw_mat_finite(&res.matrix) || !sw_mat_finite(&res.light_proj) || !sw_mat_finite(&res.light_view))
         return SWARP_ERR_DEGENERATE;
-    res.point_count = (uint32_t)nb;
+    res.point_count = (uint32_t)nb_body;
     *out = res;
     return info;
 }
