@@ -17,7 +17,10 @@
  *                 down -z; "view depth" z is the positive distance along the
  *                 view direction.
  * Depth ranges    Clip-space depth is a runtime choice (swarp_depth_range):
- *                 [-1, 1] (OpenGL, the default) or [0, 1] (D3D, Vulkan, Metal).
+ *                 [-1, 1] (OpenGL, the default) or [0, 1] (D3D, Vulkan, Metal),
+ *                 and reversed-Z [1, 0] for the light's map.  An engine's own
+ *                 camera matrices (any of these, infinite far, left-handed)
+ *                 become a swarp_camera with swarp_camera_from_matrices.
  * Units           Lengths in the caller's world units.  Angles in RADIANS in
  *                 the C API (swtool takes degrees on its command line).
  *                 Resolutions in texels / pixels.
@@ -133,7 +136,7 @@
 #include <stdint.h>
 
 #define SWARP_VERSION_MAJOR 0
-#define SWARP_VERSION_MINOR 1
+#define SWARP_VERSION_MINOR 2
 #define SWARP_VERSION_PATCH 0
 #define SWARP_VERSION_NUMBER \
     (SWARP_VERSION_MAJOR * 10000 + SWARP_VERSION_MINOR * 100 + SWARP_VERSION_PATCH)
@@ -177,6 +180,15 @@ typedef enum swarp_depth_range {
     SWARP_DEPTH_DEFAULT = 0,          /**< = SWARP_DEPTH_NEG_ONE_TO_ONE */
     SWARP_DEPTH_NEG_ONE_TO_ONE = 1,   /**< OpenGL: z_ndc in [-1, 1] */
     SWARP_DEPTH_ZERO_TO_ONE = 2,      /**< D3D, Vulkan, Metal: z_ndc in [0, 1] */
+    /** Reversed-Z: z_ndc in [0, 1] with the light's NEAR plane at 1 and its
+     *  far plane at 0 (depth test GREATER, clear to 0).  float32 depth is
+     *  densest near 0, which reversed-Z puts at the far end, where 1/w
+     *  compresses depth most (docs/engines.md has the table).  Accepted by
+     *  swarp_setup, swarp_focus_fit, the stabilisation functions and
+     *  swarp_cube_faces; the atlas, bias and split-selection functions, the
+     *  lixel maps and swarp_poly_from_inverse_matrix return
+     *  SWARP_ERR_UNKNOWN_ENUM for it (swarp_cascade_setup therefore too). */
+    SWARP_DEPTH_REVERSED_ZERO_TO_ONE = 3,
     SWARP_DEPTH_RANGE_FORCE_I32 = 0x7FFFFFFF
 } swarp_depth_range;
 
@@ -276,6 +288,14 @@ typedef struct swarp_aabb { swarp_vec3 min, max; } swarp_aabb;
       "point light inside the body B: one perspective map cannot cover it")             \
     X(SWARP_ERR_FOLLOW_FRAME, 104,                                                      \
       "the previous result's light frame is not orthonormal or not from this technique")  \
+    X(SWARP_ERR_CAMERA_NOT_PERSPECTIVE, 105,                                            \
+      "the projection is not a perspective one (orthographic, or x, y, z mixed or translated)") \
+    X(SWARP_ERR_CAMERA_MIRRORED, 106,                                                   \
+      "the view matrix mirrors (det < 0) or the projection looks backward for this handedness") \
+    X(SWARP_ERR_CAMERA_VIEW_NOT_RIGID, 107,                                             \
+      "the view matrix is not a rotation and a translation (scaled, sheared or projective)") \
+    X(SWARP_ERR_CAMERA_FAR_UNBOUNDED, 108,                                              \
+      "the projection's far plane is at infinity and no scene box bounds the view")      \
     X(SWARP_INFO_LIGHT_PARALLEL, 1100,                                                  \
       "light nearly parallel to the view: light-space up blended toward camera right")  \
     X(SWARP_INFO_FLAT_EXTENT, 1101,                                                     \
@@ -286,7 +306,9 @@ typedef struct swarp_aabb { swarp_vec3 min, max; } swarp_aabb;
       "spot light on or inside B: points nearer than its near plane left out")          \
     X(SWARP_INFO_FOLLOW_LAG, 1104,                                                      \
       "followed light frame still turning toward the aligned one (light near the view axis; LiSPSM weaker)") \
-    X(SWARP_INFO_CASTERS_CLAMPED, 1105,                                                 \
+    X(SWARP_INFO_CAMERA_FAR_FROM_SCENE, 1105,                                           \
+      "infinite far plane: z_far is the farthest view depth of the scene box ([RHS] 3.3.1)") \
+    X(SWARP_INFO_CASTERS_CLAMPED, 1106,                                                 \
       "casters over 1e10 times the receivers' size toward the light left out of the depth range (depth clamp)")
 
 /* lixel: 200..299, 1200..1299 */
@@ -441,6 +463,93 @@ SWARP_API swarp_status swarp_mat4_invert(const swarp_mat4* a, swarp_mat4* r);
 /** @brief Apply a matrix to a point (w = 1) and return the homogeneous result. */
 SWARP_API swarp_status swarp_mat4_transform(const swarp_mat4* m, const swarp_vec3* p, swarp_vec4* out);
 
+/* ------------------------------------------------------------------------ */
+/* A camera from an engine's view and projection matrices                   */
+/* ------------------------------------------------------------------------ */
+
+/** How the 16 numbers of an engine's matrices are laid out and which way its
+ *  view space looks.  The numbers of a row-vector matrix stored row by row
+ *  (p' = p M: DirectXMath, D3DX, Unreal's FMatrix) are the numbers of the
+ *  column-vector matrix M^T stored column by column, so those engines pass
+ *  their matrices as they are with ..._RH or ..._LH; only a column-vector
+ *  matrix written row by row (HLSL row_major constant buffers, Eigen
+ *  RowMajor) needs ..._TRANSPOSED. */
+typedef enum swarp_matrix_convention {
+    SWARP_MATRIX_DEFAULT = 0,           /**< = SWARP_MATRIX_RH */
+    /** Right-handed view space looking down -z, element (r, c) at m[c*4 + r]
+     *  of the column-vector matrix: OpenGL, cglm, glm, Godot, Filament,
+     *  Unity's worldToCameraMatrix/projectionMatrix, DirectXMath ...RH. */
+    SWARP_MATRIX_RH = 1,
+    /** Left-handed view space looking down +z, same storage: DirectXMath
+     *  and D3DX ...LH, Unreal. */
+    SWARP_MATRIX_LH = 2,
+    SWARP_MATRIX_RH_TRANSPOSED = 3,     /**< RH, element (r, c) at m[r*4 + c] */
+    SWARP_MATRIX_LH_TRANSPOSED = 4,     /**< LH, element (r, c) at m[r*4 + c] */
+    SWARP_MATRIX_CONVENTION_FORCE_I32 = 0x7FFFFFFF
+} swarp_matrix_convention;
+
+/** What swarp_camera_from_matrices recognised in the projection. */
+typedef struct swarp_camera_from_info {
+    uint32_t reversed_z;   /**< 1: depth falls from near to far (near at the top of the range) */
+    uint32_t infinite_far; /**< 1: the far plane is at infinity (z_far from the scene box) */
+    double off_center_x;   /**< NDC shift of the frustum's centre (P[0][2]/P[3][2]): 0 for */
+    double off_center_y;   /**<   a symmetric frustum; TAA jitter, VR and tiles shift it */
+} swarp_camera_from_info;
+
+/** Largest stray term swarp_camera_from_matrices ignores: an entry a
+ *  perspective projection has zero (x from y, z from x or y, w from x, y or
+ *  1, a clip-space translation) may move NDC by at most this over the
+ *  frustum.  float32 matrices round their entries at 6e-8 relative; 1e-6 of
+ *  the NDC range is below one texel of a 65536-texel map. */
+#define SWARP_CAMERA_STRAY_NDC 1e-6
+/** Rows of the view matrix's 3x3 part must be orthonormal to this (a
+ *  float32 rotation is to about 1e-7); the camera itself is solved exactly
+ *  (eye = -R^-1 t), so the tolerance only decides what is a rotation. */
+#define SWARP_CAMERA_RIGID_TOL 1e-5
+
+/** @brief The swarp_camera of an engine's view and projection matrices.
+ *
+ *  The projection must be a perspective one: w = -k z_view (k > 0 after the
+ *  convention's handedness), x and y scaled (a flipped axis, like Vulkan's y
+ *  flip, leaves the frustum unchanged and is accepted) and possibly shifted,
+ *  z_ndc = -A + B/d at view depth d.  depth_range says which clip depth the
+ *  graphics API uses ([-1, 1]: SWARP_DEPTH_NEG_ONE_TO_ONE or DEFAULT; [0, 1]:
+ *  SWARP_DEPTH_ZERO_TO_ONE or SWARP_DEPTH_REVERSED_ZERO_TO_ONE): the matrix
+ *  alone cannot tell them apart (every forward matrix is valid in both, with
+ *  other planes).  Whether depth runs forward or reversed is read from the
+ *  sign of B; z_near and z_far are the depths whose NDC are the ends of the
+ *  range.  A far end that depth reaches only at infinity (A = -1 forward,
+ *  A = 0 reversed [0, 1], to SWARP_CAMERA_STRAY_NDC) is an infinite far
+ *  plane: the view is then bounded by the scene box as [RHS] §3.3.1 bounds
+ *  it, z_far = the largest view depth of the box's corners (H = V ∩ S lies
+ *  in S), and the status is SWARP_INFO_CAMERA_FAR_FROM_SCENE.  An off-centre
+ *  frustum (P[0][2], P[1][2] != 0) becomes the smallest symmetric frustum
+ *  containing it: tan(fovy/2) = (1 + |c_y|) / |s_y|, aspect likewise.
+ *
+ *  @param[in] view        world -> view (rigid: a rotation and a translation)
+ *  @param[in] projection  view -> clip
+ *  @param[in] convention  storage and handedness of both matrices
+ *  @param[in] depth_range the API's clip depth ([-1, 1] or [0, 1])
+ *  @param[in] scene       box S of casters and receivers; needed only when
+ *                         the far plane is infinite (may be NULL otherwise;
+ *                         checked when given)
+ *  @param[out] out_cam    eye, dir, up, fovy, aspect, z_near, z_far
+ *  @param[out] out_info   what was recognised (may be NULL)
+ *  @return SWARP_OK, SWARP_INFO_CAMERA_FAR_FROM_SCENE; errors leave outputs
+ *          untouched: SWARP_ERR_NULL_POINTER, SWARP_ERR_UNKNOWN_ENUM,
+ *          SWARP_ERR_NON_FINITE, SWARP_ERR_SINGULAR (view's 3x3 part or the
+ *          projection's x, y or depth scale zero), SWARP_ERR_CAMERA_MIRRORED,
+ *          SWARP_ERR_CAMERA_VIEW_NOT_RIGID, SWARP_ERR_CAMERA_NOT_PERSPECTIVE
+ *          (orthographic included), SWARP_ERR_NEAR_FAR (near <= 0, or the
+ *          far plane behind the eye), SWARP_ERR_CAMERA_FAR_UNBOUNDED, the
+ *          scene box's errors (SWARP_ERR_BOX_INVERTED, ...), and
+ *          SWARP_ERR_BODY_EMPTY (an infinite view whose scene box lies
+ *          wholly nearer than z_near). */
+SWARP_API swarp_status swarp_camera_from_matrices(const swarp_mat4* view, const swarp_mat4* projection,
+                                                  swarp_matrix_convention convention,
+                                                  swarp_depth_range depth_range, const swarp_aabb* scene,
+                                                  swarp_camera* out_cam, swarp_camera_from_info* out_info);
+
 /* ======================================================================== */
 /* 5. One shadow map: swarp_setup and its steps                             */
 /* ======================================================================== */
@@ -497,9 +606,9 @@ typedef struct swarp_measured_error {
 
 /** Sampling of swarp_measure_max; zero means default. */
 typedef struct swarp_measure_options {
-    uint32_t grid;        /**< NDC samples per screen axis (default 9, >= 2) */
-    uint32_t depths;      /**< depth samples, geometric in [z_near, z_far] (default 17, >= 2) */
-    uint32_t refine;      /**< local refinement steps around the worst sample (default 16) */
+    uint32_t grid;        /**< NDC samples per screen axis (default 7, >= 2) */
+    uint32_t depths;      /**< depth samples, geometric in [z_near, z_far] (default 9, >= 2) */
+    uint32_t refine;      /**< compass-search steps from each seed (default 24) */
     uint32_t _reserved;   /**< must be zero */
 } swarp_measure_options;
 
@@ -555,7 +664,9 @@ typedef struct swarp_setup_options {
                                  margin); min_depth >= far, or +INFINITY (nothing seen),
                                  keeps the near.  Ignored by swarp_setup_range/_points
                                  (explicit range).  >= 0 */
-    uint32_t _reserved[2];  /**< must be zero */
+    uint32_t skip_measure;  /**< 1: do not measure the returned matrix (result.measured
+                                 stays zero, samples = 0); 0: measure (the default) */
+    uint32_t _reserved[1];  /**< must be zero */
 } swarp_setup_options;
 
 /** Results of swarp_setup.  matrix = light_proj · light_view maps world
@@ -571,12 +682,17 @@ typedef struct swarp_setup_result {
     double view_near;  /**< the view depth range used (adjusted [RHS] §3.3.1 in swarp_setup) */
     double view_far;
     double gamma;      /**< angle between view direction and light axis, radians */
-    double max_mx;     /**< predicted max m_x over [view_near, view_far], [RHS] (2.3) */
-    double max_mz;     /**< predicted max m_z, [RHS] (2.4) */
+    double max_mx;     /**< Lloyd's model: max m_x over [view_near, view_far], [RHS] (2.3),
+                            for an overhead light on the view axis (exact only there) */
+    double max_mz;     /**< Lloyd's model: max m_z, [RHS] (2.4), same frame */
     double light_near; /**< light depth range covered (world units along the light; PSM: */
     double light_far;  /**<   post-perspective units), informational */
     uint32_t point_count; /**< number of points of B */
     uint32_t _pad;
+    swarp_measured_error measured; /**< the measured error of matrix over H with bisector
+                                        receivers (swarp_measure_max with the options' screen
+                                        and map); zero when skip_measure is set or for
+                                        swarp_setup_points (no scene) */
     uint32_t _reserved[4];
 } swarp_setup_result;
 
@@ -946,10 +1062,11 @@ SWARP_API swarp_status swarp_measure_points(const swarp_camera* cam, const swarp
  *  receivers: N = normalize(e + l), e and l the unit directions from the
  *  point to the eye and to the light (the receiver for which projection
  *  aliasing vanishes, leaving the perspective aliasing of the parameterisation).
- *  Sampling: a grid x grid NDC lattice at depths geometric in [z_near, z_far],
- *  points outside the box S skipped, then refine steps of a deterministic
- *  pattern search around the worst sample (halving the step each time it
- *  finds no larger sigma).  No allocation; the result is deterministic.
+ *  Sampling: the vertices of H, a grid x grid NDC lattice at depths geometric
+ *  in [z_near, z_far] (points outside S skipped), then from the worst vertex
+ *  and the worst lattice sample refine steps of a deterministic compass
+ *  search over (NDC x, NDC y, log z), halving the step each time it finds no
+ *  larger sigma (docs/accuracy.md states its error).  No allocation; the result is deterministic.
  *  @return SWARP_OK; SWARP_INFO_MEASURE_SINGULAR (max_sigma = +inf);
  *          SWARP_ERR_BODY_EMPTY (no sample of V lies in S); the errors of
  *          swarp_measure_points, SWARP_ERR_NEAR_FAR (not 0 < z_near < z_far),
@@ -1534,7 +1651,8 @@ typedef struct swarp_cascade_split {
     swarp_atlas_tile tile;     /**< viewport in texels and clip -> atlas matrix */
     double n_eye;              /**< warp parameter n' used (eye units); +inf uniform */
     double kernel_scale[2];    /**< s_i of [RHS] (3.9) for kernel_world_size */
-    double max_mx, max_mz;     /**< exact maxima over [near, far], [RHS] (2.3)-(2.8) */
+    double max_mx, max_mz;     /**< Lloyd's model's maxima over [z_near, z_far], [RHS]
+                                    (2.3)-(2.8) (overhead light, view axis) */
     double mx_start, mz_start; /**< values at C_i: just after the border into this split */
     double mx_end, mz_end;     /**< values at C_{i+1} with this split's map (just before) */
     double texel_size;         /**< stabilised: world texel size; else 0 */
@@ -1544,6 +1662,8 @@ typedef struct swarp_cascade_split {
                                     (constant over the split for uniform maps) */
     swarp_status status;       /**< this split's own (informational) status */
     uint32_t point_count;      /**< points of B_i */
+    swarp_measured_error measured; /**< the measured error of matrix over the split frustum
+                                        ∩ S (swarp_measure_max); zero with skip_measure */
     uint32_t _reserved[4];
 } swarp_cascade_split;
 
@@ -1553,8 +1673,11 @@ typedef struct swarp_cascade_result {
     uint32_t _pad;
     double view_near, view_far;  /**< adjusted near/far [RHS] §3.3.1 */
     double splits[SWARP_CASCADE_MAX_SPLITS + 1]; /**< C_0 .. C_m */
-    double max_mx, max_mz;       /**< maxima of the whole configuration */
+    double max_mx, max_mz;       /**< Lloyd's model's maxima of the whole configuration */
     swarp_atlas_info atlas;
+    swarp_measured_error measured; /**< the worst split's measured error (max_m_s, max_m_t,
+                                        max_sigma and at of the splits' maxima; samples and
+                                        outside summed) */
     uint32_t _reserved[4];
 } swarp_cascade_result;
 
@@ -2491,7 +2614,8 @@ typedef struct swarp_plan {
     double split_max_mz[SWARP_PLAN_MAX_SPLITS];
     double max_mx, max_mz;            /**< over the whole view */
     double max_error;                 /**< max(max_mx, max_mz), compared with the budget */
-    double error_area;                /**< max_mx * max_mz (texel-area error bound) */
+    double error_area;                /**< max_mx * max_mz (texel-area error bound); DBL_MAX when the
+                                           product exceeds the double range */
     uint32_t lixel_count;             /**< planes with a lixel map */
     uint32_t lixel_planes[SWARP_PLAN_MAX_PLANES]; /**< their indices in needs->planes */
     uint32_t plane_reason[SWARP_PLAN_MAX_PLANES]; /**< SWARP_PLAN_PLANE_* per declared plane */

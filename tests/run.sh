@@ -1,7 +1,9 @@
 #!/bin/sh
 # The whole test suite: installs what is missing, builds with
 # -Wall -Wextra -Werror, runs every Check suite, then the same suite again
-# under AddressSanitizer + UndefinedBehaviorSanitizer.
+# under AddressSanitizer + UndefinedBehaviorSanitizer, then the robustness
+# and packaging steps (valgrind, coverage, consumers, Debian packages, ABI,
+# fuzz).
 #   sh tests/run.sh            everything
 #   SWARP_QUICK=1 sh tests/run.sh   only the plain build
 set -eu
@@ -33,17 +35,17 @@ step() { # step NAME COMMAND...: runs it, remembers a failure
 }
 
 valgrind_step() {
-    # python3 is not our binary; valgrind computes SSE in round-to-nearest only;
+    # python3 is not our binary (the suites python and readme run it); valgrind computes SSE in round-to-nearest only;
     # the demo's llvmpipe JIT takes minutes per frame under memcheck and reports
     # the driver's own uninitialised reads: the demo runs under ASan+UBSan above.
     # tests/valgrind.supp: test bugs only (each reported to its stage).
     # the whole-sphere walk every 20th 0.01° step (as under ASan)
-    SWARP_CONT_STRIDE=20 SWARP_HARD_CASES_SIZE=1000 SWARP_THREADS_CASES=40 meson test -C build-ci --no-suite python --no-suite fenv \
+    SWARP_CONT_STRIDE=20 SWARP_HARD_CASES_SIZE=1000 SWARP_THREADS_CASES=40 meson test -C build-ci --no-suite python --no-suite readme --no-suite fenv \
         --no-suite demo --no-suite gl --print-errorlogs \
         --wrap="valgrind --error-exitcode=1 --leak-check=full --errors-for-leak-kinds=definite,indirect --track-origins=yes -q --suppressions=$PWD/tests/valgrind.supp" \
         --timeout-multiplier=10
 }
-echo "== valgrind memcheck (every test binary except python, fenv and the OSMesa ones (demo, gl))"
+echo "== valgrind memcheck (every test binary except python, readme, fenv and the OSMesa ones (demo, gl))"
 step valgrind valgrind_step
 
 coverage_step() {
@@ -72,6 +74,9 @@ step coverage coverage_step
 
 echo "== consumers (pkg-config, CMake, meson subproject)"
 step consumers sh tests/consumers/run.sh
+
+echo "== Debian packages (build, lintian, install, C and Python consumers, purge)"
+step packages sh tests/packages/run.sh
 
 echo "== ABI (abidiff against tests/abi/shadowwarp.abi)"
 step abi sh tests/abi/check.sh build-ci

@@ -441,7 +441,14 @@ class SetupOptions(ctypes.Structure):
                 ("_pad1", ctypes.c_uint32), ("n_user", ctypes.c_double),
                 ("pseudo_near", ctypes.c_double), ("pseudo_far", ctypes.c_double),
                 ("slideback", ctypes.c_double), ("min_depth", ctypes.c_double),
-                ("_reserved", ctypes.c_uint32 * 2)]
+                ("skip_measure", ctypes.c_uint32), ("_reserved", ctypes.c_uint32 * 1)]
+
+
+class MeasuredError(ctypes.Structure):
+    """swarp_measured_error: the measured error of a matrix over H."""
+    _fields_ = [("max_m_s", ctypes.c_double), ("max_m_t", ctypes.c_double),
+                ("max_sigma", ctypes.c_double), ("at", Vec3), ("samples", ctypes.c_uint32),
+                ("outside", ctypes.c_uint32)]
 
 
 class SetupResult(ctypes.Structure):
@@ -452,7 +459,7 @@ class SetupResult(ctypes.Structure):
                 ("gamma", ctypes.c_double), ("max_mx", ctypes.c_double), ("max_mz", ctypes.c_double),
                 ("light_near", ctypes.c_double), ("light_far", ctypes.c_double),
                 ("point_count", ctypes.c_uint32), ("_pad", ctypes.c_uint32),
-                ("_reserved", ctypes.c_uint32 * 4)]
+                ("measured", MeasuredError), ("_reserved", ctypes.c_uint32 * 4)]
 
 
 def _aabb(box):

@@ -265,10 +265,10 @@ _Static_assert(sizeof(swarp_cascade_options) ==
 
 _Static_assert(sizeof(swarp_cascade_split) ==
                    2 * sizeof(double) + 2 * sizeof(swarp_mat4) + sizeof(swarp_atlas_tile) +
-                       11 * sizeof(double) + 8 + 16,
+                       11 * sizeof(double) + 8 + sizeof(swarp_measured_error) + 16,
                "swarp_cascade_split size");
 _Static_assert(sizeof(swarp_cascade_result) == 8 + (4 + SWARP_CASCADE_MAX_SPLITS + 1) * sizeof(double) +
-                                                   sizeof(swarp_atlas_info) + 16,
+                                                   sizeof(swarp_atlas_info) + sizeof(swarp_measured_error) + 16,
                "swarp_cascade_result size");
 
 /* Largest fraction handed to (4.2) when the pseudo plane lies beyond the
@@ -461,6 +461,7 @@ static swarp_setup_options sw_split_setup_options(const sw_cascade_run* c, uint3
                                                   const swarp_cascade_split* sp, const swarp_cascade_result* res) {
     const swarp_cascade_split* s = &sp[i];
     swarp_setup_options so = c->o.setup;
+    so.skip_measure = 1; /* the cascade measures each split's final matrix itself */
     if (c->o.n_user[i] != 0.0) {
         so.technique = c->o.n_user[i] == INFINITY ? SWARP_TECHNIQUE_UNIFORM : SWARP_TECHNIQUE_LISPSM;
         so.param = SWARP_WARP_PARAM_USER;
@@ -612,6 +613,38 @@ static swarp_status sw_split_report(const sw_cascade_run* c, swarp_cascade_split
     return SWARP_OK;
 }
 
+/* The measured error of split i's final matrix over its frustum ∩ S; the
+ * stabilised matrix takes p - origin, so it is measured as matrix ·
+ * T(-origin).  The unstabilised single map is swarp_setup's, measured there. */
+static void sw_split_measure(const sw_cascade_run* c, swarp_cascade_split* s) {
+    if (c->single && c->smode == SWARP_STABILIZE_NONE) {
+        s->measured = c->sr.measured;
+        return;
+    }
+    swarp_mat4 m = s->matrix;
+    if (c->smode != SWARP_STABILIZE_NONE) {
+        swarp_mat4 t;
+        sw_identity(&t);
+        sw_set(&t, 0, 3, -c->o.stabilize.origin.x);
+        sw_set(&t, 1, 3, -c->o.stabilize.origin.y);
+        sw_set(&t, 2, 3, -c->o.stabilize.origin.z);
+        sw_mul(&s->matrix, &t, &m);
+    }
+    sw_measure_setup(c->cam, s->z_near, s->z_far, c->light, c->scene, &m, &c->o.setup, &s->measured);
+}
+
+/* The whole cascade's measured error: the worst split's maxima, the samples
+ * of all splits. */
+static void sw_cascade_measure_merge(const swarp_cascade_split* s, swarp_measured_error* all) {
+    const swarp_measured_error* m = &s->measured;
+    if (m->samples == 0) return;
+    if (all->samples == 0 || m->max_sigma > all->max_sigma) all->max_sigma = m->max_sigma, all->at = m->at;
+    all->max_m_s = fmax(all->max_m_s, m->max_m_s);
+    all->max_m_t = fmax(all->max_m_t, m->max_m_t);
+    all->samples += m->samples;
+    all->outside += m->outside;
+}
+
 /* Every split: its setup options, light matrix, stabilisation and report;
  * res collects the maxima, *info the first informational status. */
 static swarp_status sw_cascade_splits_compute(sw_cascade_run* c, swarp_status single_st, const swarp_atlas_tile* tiles,
@@ -642,6 +675,8 @@ static swarp_status sw_cascade_splits_compute(sw_cascade_run* c, swarp_status si
         if (c->smode != SWARP_STABILIZE_NONE && (st = sw_split_stabilize(c, s, &sphere_center, info)) != SWARP_OK)
             return st;
         if ((st = sw_split_report(c, s, &tiles[i], sphere_center, &res->atlas)) != SWARP_OK) return st;
+        sw_split_measure(c, s);
+        sw_cascade_measure_merge(s, &res->measured);
         if (s->max_mx > res->max_mx) res->max_mx = s->max_mx;
         if (s->max_mz > res->max_mz) res->max_mz = s->max_mz;
     }

@@ -3,6 +3,7 @@
  * the approximate solution (scale quantised to levels, snapped offset).
  * [RHS] §3.5 after ZZB09. */
 #include "cascade/cascade_internal.h"
+#include "common/depth_range.h"
 
 #include <float.h>
 
@@ -18,7 +19,7 @@ _Static_assert(sizeof(swarp_stabilize_report) == 10 * sizeof(double) + 8 + 16,
  * tan^2(fovy/2)(1 + aspect^2); they are equal at z0 = (n + f)(1 + k^2)/2.
  * The near-minus-far difference grows with z, so for z0 > f the far corner
  * circle alone decides and the centre sits at f. */
-static void sw_min_sphere(const sw_cam_frame* fr, double n, double f, swarp_vec3* c,
+static void sw_min_sphere(const sw_cam_frame* fr, double n, double f, double* z_c,
                           double* r, double* r_centroid) {
     /* k = tan_half sqrt(1 + aspect^2) and f k as hypots: aspect ~ 1e167 or
      * DBL_MAX overflows k^2 although the sphere (radius ~ f k) is
@@ -35,8 +36,7 @@ static void sw_min_sphere(const sw_cam_frame* fr, double n, double f, swarp_vec3
      * equal f and give a radius 0 */
     double d_far = k < 1.0 ? 0.5 * (f - n) - 0.5 * (n + f) * (k * k) : 0.0;
     if (!(d_far > 0.0)) d_far = 0.0;
-    double z0 = f - d_far;
-    *c = sw_add(fr->eye, sw_scale(fr->f, z0));
+    *z_c = f - d_far;
     *r = hypot(d_far, fk);
     /* f > n, so the exact radius is > 0; for n, f a few subnormal ulps
      * apart it is below half the smallest subnormal and rounds to 0: a
@@ -66,9 +66,9 @@ SWARP_API swarp_status swarp_stabilize_sphere(const swarp_camera* cam, double n_
     sw_cam_frame fr;
     swarp_status st = sw_frame_and_range(cam, n_i, f_i, &fr);
     if (st != SWARP_OK) return st;
-    swarp_vec3 c;
-    double r, rc;
-    sw_min_sphere(&fr, n_i, f_i, &c, &r, &rc);
+    double z_c, r, rc;
+    sw_min_sphere(&fr, n_i, f_i, &z_c, &r, &rc);
+    const swarp_vec3 c = sw_add(fr.eye, sw_scale(fr.f, z_c));
     /* finite inputs, sphere beyond DBL_MAX (f tan(fovy/2) aspect, or eye +
      * f dir, too large): not representable */
     if (!sw_finite3(&c) || !sw_finite(r) || !sw_finite(rc)) return SWARP_ERR_OVERFLOW;
@@ -154,7 +154,7 @@ static swarp_status sw_stabilize_options_resolve(const swarp_stabilize_options* 
     if (o->mode != SWARP_STABILIZE_NONE && o->mode != SWARP_STABILIZE_SPHERE &&
         o->mode != SWARP_STABILIZE_LEVELS)
         return SWARP_ERR_UNKNOWN_ENUM;
-    if (!sw_depth_range_ok(o->depth)) return SWARP_ERR_UNKNOWN_ENUM;
+    if (!sw_light_depth_range_ok(o->depth)) return SWARP_ERR_UNKNOWN_ENUM;
     if (o->levels == 0) o->levels = SW_STABILIZE_DEFAULT_LEVELS;
     if (!sw_finite3(&o->origin) || !sw_finite(o->level_max_size)) return SWARP_ERR_NON_FINITE;
     if (o->level_max_size < 0.0) return SWARP_ERR_OUT_OF_RANGE;
@@ -192,10 +192,15 @@ typedef struct sw_stab_map {
 } sw_stab_map;
 
 /* [RHS] §3.5 exact solution: the minimal sphere's bounding square, its size
- * padded for the half-texel offset and rounded to a coarse constant. */
-static void sw_stabilize_sphere_map(const swarp_stabilize_report* rep, swarp_vec3 O, double dres,
-                                    sw_stab_map* s) {
-    const swarp_vec3 c = sw_sub(rep->sphere_center, O);
+ * padded for the half-texel offset and rounded to a coarse constant.  The
+ * centre relative to O is (eye - O) + z_c f, not sphere_center - O: the
+ * world centre eye + z_c f rounds at ulp(|eye|), which for a split small
+ * against |eye| (z_c 1e-10 at |eye| 1e7) loses the offset along the axis
+ * entirely, while eye - O is exact for O near the eye (Sterbenz) and
+ * z_c f keeps full relative precision. */
+static void sw_stabilize_sphere_map(const swarp_stabilize_report* rep, const sw_cam_frame* fr, double z_c,
+                                    swarp_vec3 O, double dres, sw_stab_map* s) {
+    const swarp_vec3 c = sw_add(sw_sub(fr->eye, O), sw_scale(fr->f, z_c));
     s->cx = sw_dot(c, s->u);
     s->cy = sw_dot(c, s->v);
     const double tc = sw_dot(c, s->d);
@@ -289,7 +294,7 @@ static void sw_stabilize_depth(const swarp_aabb* scene, swarp_vec3 O, double tex
 /* clip = A_fit-style scale/translate of light coordinates ([RHS] (3.1)). */
 static void sw_stabilize_matrix(const sw_stab_map* s, double dt, double t_sum, swarp_depth_range depth,
                                 swarp_mat4* m) {
-    const int zero_one = (depth == SWARP_DEPTH_ZERO_TO_ONE);
+    const int zero_one = sw_depth_zero_based(depth);
     const double za = zero_one ? 1.0 / dt : 2.0 / dt;
     const double zb = zero_one ? -s->t_min / dt : -t_sum / dt;
     sw_identity(m);
@@ -301,6 +306,7 @@ static void sw_stabilize_matrix(const sw_stab_map* s, double dt, double t_sum, s
         sw_set(m, r, 2, rows[r].z);
         sw_set(m, r, 3, trans[r]);
     }
+    sw_depth_reverse_if(depth, m);
 }
 
 SWARP_API swarp_status swarp_stabilize_directional(const swarp_camera* cam, double n_i, double f_i,
@@ -322,14 +328,16 @@ SWARP_API swarp_status swarp_stabilize_directional(const swarp_camera* cam, doub
 
     swarp_stabilize_report rep;
     memset(&rep, 0, sizeof rep);
-    sw_min_sphere(&fr, n_i, f_i, &rep.sphere_center, &rep.sphere_radius, &rep.centroid_radius);
+    double z_c;
+    sw_min_sphere(&fr, n_i, f_i, &z_c, &rep.sphere_radius, &rep.centroid_radius);
+    rep.sphere_center = sw_add(fr.eye, sw_scale(fr.f, z_c));
     const double ratio = rep.sphere_radius / rep.centroid_radius;
     rep.area_saved = 1.0 - ratio * ratio;
 
     const double dres = (double)res;
     swarp_status info = SWARP_OK;
     if (o.mode == SWARP_STABILIZE_SPHERE)
-        sw_stabilize_sphere_map(&rep, o.origin, dres, &s);
+        sw_stabilize_sphere_map(&rep, &fr, z_c, o.origin, dres, &s);
     else
         info = sw_stabilize_body_map(body_points, body_count, &o, dres, &rep, &s);
     if (swarp_status_is_error(info)) return info;

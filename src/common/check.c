@@ -6,7 +6,7 @@
  * functions.  Each check returns the first failing status in a fixed order:
  * reserved fields, enums, non-finite values, domains, then geometry (zero
  * vectors, up parallel to dir); the order is that of swarp_setup. */
-#include "common/swarp_internal.h"
+#include "common/depth_range.h"
 
 swarp_status sw_check_depth_range(swarp_depth_range d) {
     if (d != SWARP_DEPTH_DEFAULT && d != SWARP_DEPTH_NEG_ONE_TO_ONE && d != SWARP_DEPTH_ZERO_TO_ONE)
@@ -104,11 +104,12 @@ static swarp_status sw_check_setup_warp(const swarp_setup_options* o) {
 }
 
 swarp_status sw_check_setup_options(const swarp_setup_options* o) {
-    if (!sw_reserved_zero(o->_reserved, 2) || o->_pad0 != 0 || o->_pad1 != 0) return SWARP_ERR_RESERVED_NONZERO;
+    if (!sw_reserved_zero(o->_reserved, 1) || o->_pad0 != 0 || o->_pad1 != 0) return SWARP_ERR_RESERVED_NONZERO;
+    if (o->skip_measure > 1) return SWARP_ERR_OUT_OF_RANGE;
     if (isnan(o->min_depth)) return SWARP_ERR_NON_FINITE;
     if (o->min_depth < 0.0) return SWARP_ERR_OUT_OF_RANGE; /* also -INFINITY; +INFINITY: nothing seen */
     if ((uint32_t)o->technique > (uint32_t)SWARP_TECHNIQUE_PSM) return SWARP_ERR_UNKNOWN_ENUM;
-    if (sw_check_depth_range(o->depth_range) != SWARP_OK) return SWARP_ERR_UNKNOWN_ENUM;
+    if (!sw_light_depth_range_ok(o->depth_range)) return SWARP_ERR_UNKNOWN_ENUM;
     if (o->pancake > 1 || o->psm_slideback > 1) return SWARP_ERR_OUT_OF_RANGE;
     if (!sw_finite(o->slideback)) return SWARP_ERR_NON_FINITE;
     if (o->slideback < 0.0) return SWARP_ERR_OUT_OF_RANGE;

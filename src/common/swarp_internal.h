@@ -251,4 +251,10 @@ void sw_setup_map_size(const swarp_setup_options* o, uint32_t* width, uint32_t* 
 void sw_setup_error_config(const swarp_setup_options* o, double theta, double near, double far,
                            swarp_error_config* cfg);
 
+/* The measured error a setup result carries (src/model/measured_error.c):
+ * zero when o->skip_measure is set or nothing of V ∩ S is sampled. */
+void sw_measure_setup(const swarp_camera* cam, double z_near, double z_far, const swarp_light* light,
+                      const swarp_aabb* scene, const swarp_mat4* matrix, const swarp_setup_options* o,
+                      swarp_measured_error* out);
+
 #endif

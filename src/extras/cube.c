@@ -8,7 +8,7 @@
  * d_i > 0.  Face i's camera sits at P, looks along N_i, has the face square
  * at its far plane d_i and its near plane at Z_1 d_i ("another small cube").
  */
-#include "common/swarp_internal.h"
+#include "common/depth_range.h"
 
 /* Default Z_1 = Z_n/Z_f of the face cameras: a near cube 1/100 the size of
  * the unit cube around the light, as small as 24-bit depth comfortably
@@ -32,6 +32,7 @@ typedef struct sw_cube_setup {
     int inverse;    /* w < 0: inverse-projection variant */
     double z1;      /* Z_1 */
     int zero_to_one;
+    int reversed;   /* reversed-Z: the [0, 1] faces with z/w turned to 1 - z/w */
     double d[6];    /* distance to each face plane; back-facing iff > 0 */
 } sw_cube_setup;
 
@@ -39,7 +40,7 @@ static swarp_status sw_cube_setup_make(const swarp_vec4* L, const swarp_cube_opt
                                        sw_cube_setup* s) {
     if (!L) return SWARP_ERR_NULL_POINTER;
     double z1 = SW_CUBE_DEFAULT_Z1;
-    int zo = 0;
+    int zo = 0, rev = 0;
     if (opt) {
         if (!sw_reserved_zero(opt->_reserved, 5)) return SWARP_ERR_RESERVED_NONZERO;
         if (isnan(opt->z1) || isinf(opt->z1)) return SWARP_ERR_NON_FINITE;
@@ -51,6 +52,7 @@ static swarp_status sw_cube_setup_make(const swarp_vec4* L, const swarp_cube_opt
             case SWARP_DEPTH_DEFAULT:
             case SWARP_DEPTH_NEG_ONE_TO_ONE: zo = 0; break;
             case SWARP_DEPTH_ZERO_TO_ONE: zo = 1; break;
+            case SWARP_DEPTH_REVERSED_ZERO_TO_ONE: zo = 1, rev = 1; break;
             default: return SWARP_ERR_UNKNOWN_ENUM;
         }
     }
@@ -65,6 +67,7 @@ static swarp_status sw_cube_setup_make(const swarp_vec4* L, const swarp_cube_opt
     s->inverse = L->w < 0.0;
     s->z1 = z1;
     s->zero_to_one = zo;
+    s->reversed = rev;
     for (int i = 0; i < 6; ++i) {
         swarp_vec3 N = sw_v3(sw_cube_normal[i][0], sw_cube_normal[i][1], sw_cube_normal[i][2]);
         s->d[i] = 1.0 - sw_dot(s->P, N);
@@ -154,6 +157,7 @@ static void sw_cube_face_make(const sw_cube_setup* s, int i, swarp_cube_face* F)
     const double ab = !s->inverse ? 1.0 : s->zero_to_one ? 0.5 * (1.0 + s->z1) : s->z1;
     sw_set(W, 2, 3, ab * d - alpha);
     sw_set(W, 3, 3, ZP);
+    if (s->reversed) sw_depth_reverse(Pm), sw_depth_reverse(W);
 }
 
 /* [KOZ] §14.2.2 */
@@ -235,6 +239,7 @@ SWARP_API swarp_status swarp_cube_lookup(const swarp_vec4* ps_light, const swarp
         depth = alpha + scalbn(mb / a, eb - k);
         a_full = scalbn(a, k);
     }
+    if (s.reversed) depth = 1.0 - depth;
     if (!sw_finite3(&S) || !sw_finite(depth)) return SWARP_ERR_OVERFLOW;
     if (out_face) *out_face = (uint32_t)face;
     if (out_texcoord) *out_texcoord = S;

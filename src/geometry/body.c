@@ -672,7 +672,7 @@ SWARP_API swarp_status swarp_body_h(const swarp_camera* cam, double near, double
     swarp_polyhedron H;
     s = sw_body_h(cam, near, far, scene, &H);
     if (s != SWARP_OK) return s;
-    memcpy(out_H, &H, sizeof H);
+    sw_poly_publish(&H, out_H);
     return SWARP_OK;
 }
 
@@ -691,7 +691,7 @@ SWARP_API swarp_status swarp_body_from_h(const swarp_polyhedron* H, const swarp_
     swarp_polyhedron B;
     s = sw_body_from_h(H, light, scene, &B);
     if (s != SWARP_OK) return s;
-    memcpy(out_B, &B, sizeof B);
+    sw_poly_publish(&B, out_B);
     return SWARP_OK;
 }
 
@@ -747,6 +747,6 @@ SWARP_API swarp_status swarp_body_receivers(const swarp_polyhedron* H, const swa
         if (s != SWARP_OK) return s;
         if (R.vertex_count == 0) return SWARP_ERR_BODY_EMPTY;
     }
-    sw_poly_copy(&R, out);
+    sw_poly_publish(&R, out);
     return SWARP_OK;
 }

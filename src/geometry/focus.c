@@ -3,6 +3,7 @@
  * focusing matrix A_fit of [RHS] (3.1). */
 #include <float.h>
 
+#include "common/depth_range.h"
 #include "geometry/geometry_internal.h"
 
 /* u·o for a unit u: the terms of an origin near DBL_MAX overflow although
@@ -231,7 +232,7 @@ swarp_status sw_focus_fit(const swarp_mat4* m, const swarp_vec3* pts, size_t n, 
     sw_set(&A, 0, 3, -(hi[0] + lo[0]) / w[0]);
     sw_set(&A, 1, 1, 2.0 / w[1]);
     sw_set(&A, 1, 3, -(hi[1] + lo[1]) / w[1]);
-    if (dr == SWARP_DEPTH_ZERO_TO_ONE) {
+    if (sw_depth_zero_based(dr)) {
         sw_set(&A, 2, 2, 1.0 / w[2]);
         sw_set(&A, 2, 3, -lo[2] / w[2]);
     } else {
@@ -239,6 +240,7 @@ swarp_status sw_focus_fit(const swarp_mat4* m, const swarp_vec3* pts, size_t n, 
         sw_set(&A, 2, 3, -(hi[2] + lo[2]) / w[2]);
     }
     sw_set(&A, 3, 3, 1.0);
+    sw_depth_reverse_if(dr, &A);
     if (!sw_mat_finite(&A)) return SWARP_ERR_DEGENERATE;
     *out = A;
     return st;
@@ -249,7 +251,7 @@ SWARP_API swarp_status swarp_focus_fit(const swarp_mat4* m, const swarp_vec3* po
                                        swarp_depth_range depth_range, swarp_mat4* out_A_fit) {
     if (!m || !points || !out_A_fit) return SWARP_ERR_NULL_POINTER;
     if (count == 0 || (z_points && z_count == 0)) return SWARP_ERR_INVALID_ARGUMENT;
-    if (sw_check_depth_range(depth_range) != SWARP_OK) return SWARP_ERR_UNKNOWN_ENUM;
+    if (!sw_light_depth_range_ok(depth_range)) return SWARP_ERR_UNKNOWN_ENUM;
     if (!sw_mat_finite(m)) return SWARP_ERR_NON_FINITE;
     for (size_t i = 0; i < count; ++i)
         if (!sw_finite3(&points[i])) return SWARP_ERR_NON_FINITE;

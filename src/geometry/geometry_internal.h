@@ -37,6 +37,8 @@ double sw_poly_scale(const swarp_polyhedron* p);
 void sw_poly_finalize(swarp_polyhedron* p, uint32_t first_new, double scale /* 0: compute */);
 /* copy only the used parts */
 void sw_poly_copy(const swarp_polyhedron* in, swarp_polyhedron* out);
+/* out := p with every byte beyond the counts zero (p may equal out) */
+void sw_poly_publish(const swarp_polyhedron* p, swarp_polyhedron* out);
 /* a caller's polyhedron: vertex and face counts within capacity
  * (SWARP_ERR_INVALID_ARGUMENT) ... */
 swarp_status sw_poly_check_counts(const swarp_polyhedron* in);

@@ -271,6 +271,7 @@ SWARP_API swarp_status swarp_poly_from_aabb(const swarp_aabb* box, swarp_polyhed
                      (i & 4) ? box->max.z : box->min.z);
     sw_poly_from_corners(c, out);
     /* exact axis planes for the box (Newell gives them too, up to rounding) */
+    sw_poly_publish(out, out);
     return SWARP_OK;
 }
 
@@ -367,6 +368,7 @@ SWARP_API swarp_status swarp_poly_from_camera_range(const swarp_camera* cam, dou
     /* every input is finite here: a corner that is not (far tan of the
      * half-angles beyond DBL_MAX) is a frustum out of the double range */
     s = sw_poly_from_frustum(cam, near, far, out);
+    if (s == SWARP_OK) sw_poly_publish(out, out);
     return s == SWARP_ERR_NON_FINITE ? SWARP_ERR_OUT_OF_RANGE : s;
 }
 
@@ -393,6 +395,7 @@ SWARP_API swarp_status swarp_poly_from_inverse_matrix(const swarp_mat4* inv, swa
         if (!sw_finite3(&c[i])) return SWARP_ERR_DEGENERATE;
     }
     sw_poly_from_corners(c, out);
+    sw_poly_publish(out, out);
     return SWARP_OK;
 }
 
@@ -406,6 +409,31 @@ void sw_poly_copy(const swarp_polyhedron* in, swarp_polyhedron* out) {
     memcpy(out->planes, in->planes, in->face_count * sizeof(swarp_plane));
     memcpy(out->face_vertex_count, in->face_vertex_count, in->face_count * sizeof(uint32_t));
     memcpy(out->face_vertices, in->face_vertices, in->face_count * sizeof in->face_vertices[0]);
+}
+
+/* Canonical bytes of a finished polyhedron: the counted parts of p moved to
+ * out (p may equal out) and every byte beyond the counts written as zero
+ * (vertices past vertex_count, planes, loop counts and loops past
+ * face_count, and each loop past its own face_vertex_count).  The struct is
+ * then a function of its vertices and faces alone, not of the memory it
+ * was built in (callers hash, cache and send it); the counts are within the
+ * maxima for every polyhedron the library builds or has validated. */
+void sw_poly_publish(const swarp_polyhedron* p, swarp_polyhedron* out) {
+    const uint32_t nv = p->vertex_count, nf = p->face_count;
+    out->vertex_count = nv;
+    out->face_count = nf;
+    memmove(out->vertices, p->vertices, nv * sizeof out->vertices[0]);
+    memset(out->vertices + nv, 0, (SWARP_POLY_MAX_VERTICES - nv) * sizeof out->vertices[0]);
+    memmove(out->planes, p->planes, nf * sizeof out->planes[0]);
+    memset(out->planes + nf, 0, (SWARP_POLY_MAX_FACES - nf) * sizeof out->planes[0]);
+    memmove(out->face_vertex_count, p->face_vertex_count, nf * sizeof out->face_vertex_count[0]);
+    memset(out->face_vertex_count + nf, 0, (SWARP_POLY_MAX_FACES - nf) * sizeof out->face_vertex_count[0]);
+    for (uint32_t f = 0; f < nf; ++f) {
+        const uint32_t k = out->face_vertex_count[f];
+        memmove(out->face_vertices[f], p->face_vertices[f], k);
+        memset(out->face_vertices[f] + k, 0, SWARP_POLY_MAX_FACE_VERTICES - k);
+    }
+    memset(out->face_vertices + nf, 0, (SWARP_POLY_MAX_FACES - nf) * sizeof out->face_vertices[0]);
 }
 
 /* p + t: vertices moved, plane offsets d' = d - n·t */
@@ -509,6 +537,14 @@ static swarp_status sw_clip_plane_unit(swarp_vec3 n_raw, double d_raw, swarp_vec
     if (!(len > 0.0)) return SWARP_ERR_ZERO_VECTOR;
     *n = sw_scale(n_raw, 1.0 / len);
     *d = d_raw / len;
+    /* |d_raw| within a factor len (< 1 by rounding for a unit normal) of
+     * DBL_MAX: the offset overflows although the plane is finite.  Its
+     * distance |d_raw|/len from the origin exceeds DBL_MAX >= |v| >= |n·v|
+     * for every vertex v of Euclidean norm up to DBL_MAX, so every such
+     * vertex lies strictly on the side of the sign of d_raw, as for the
+     * rescaled planes above (an infinite d would instead give distances
+     * inf - inf and an infinite tolerance that keeps everything). */
+    if (!sw_finite(*d)) *trivial = d_raw < 0.0 ? SW_CLIP_KEEPS_ALL : SW_CLIP_CUTS_ALL;
     return SWARP_OK;
 }
 
@@ -932,7 +968,7 @@ SWARP_API swarp_status swarp_poly_clip(const swarp_polyhedron* in, const swarp_p
     swarp_polyhedron t;
     s = sw_poly_clip(in, n, plane->d, &t);
     if (s != SWARP_OK) return s;
-    memcpy(out, &t, sizeof t);
+    sw_poly_publish(&t, out);
     return SWARP_OK;
 }
 
@@ -947,6 +983,6 @@ SWARP_API swarp_status swarp_poly_clip_aabb(const swarp_polyhedron* in, const sw
     swarp_polyhedron t;
     s = sw_poly_clip_box(in, box, &t);
     if (s != SWARP_OK) return s;
-    memcpy(out, &t, sizeof t);
+    sw_poly_publish(&t, out);
     return SWARP_OK;
 }

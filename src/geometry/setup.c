@@ -15,7 +15,7 @@
  * 4 doubles and a 4-word reserved tail, which the ABI fixes */
 _Static_assert(sizeof(swarp_setup_options) == 12 * 4 + 5 * 8 + 8, "swarp_setup_options size");
 _Static_assert(sizeof(swarp_setup_options) == 12 * 4 + 4 * 8 + 16, "swarp_setup_options size kept");
-_Static_assert(sizeof(swarp_setup_result) == 3 * 128 + 9 * 8 + 8 + 16, "swarp_setup_result size");
+_Static_assert(sizeof(swarp_setup_result) == 3 * 128 + 9 * 8 + 8 + sizeof(swarp_measured_error) + 16, "swarp_setup_result size");
 _Static_assert(sizeof(swarp_warp_options) == 8 + 3 * 8 + 16, "swarp_warp_options size");
 _Static_assert(sizeof(swarp_warp_info) == 6 * 8 + 16, "swarp_warp_info size");
 
@@ -689,7 +689,11 @@ static swarp_status sw_setup_range(const swarp_camera* cam, const swarp_light* l
     swarp_status info = sw_setup_points(cam, light, B.vertices, B.vertex_count, &B, Hp->vertices, Hp->vertex_count, near,
                                         far, o, eye, fw, &res);
     if (swarp_status_is_error(info)) return info;
+    /* measured camera-relative (the coordinates B was built in), the
+     * worst point folded back with the matrices */
+    sw_measure_setup(cam, near, far, light, scene, &res.matrix, o, &res.measured);
     if (!sw_fold_result(&res, eye)) return SWARP_ERR_DEGENERATE;
+    if (res.measured.samples) res.measured.at = sw_add(res.measured.at, eye);
     if (clamped) info = sw_info_merge(info, SWARP_INFO_CASTERS_CLAMPED);
     *out = res;
     if (out_points)

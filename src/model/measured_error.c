@@ -23,14 +23,16 @@
  * leaves |x / w| a few units of 1e-16 above 1. */
 #define SW_INSIDE_REL 1e-12
 
-/* Defaults of swarp_measure_max: a 9 x 9 NDC lattice at 17 depths and 16
- * pattern-search steps.  The worst sample of the lattice lies within one
- * cell of the true maximum, and the search then resolves it to 2^-16 of a
- * cell; tests/model/test_measured_error.c states the difference from a 33 x
- * 33 x 65 lattice with the same search. */
-#define SW_MEASURE_GRID 9u
-#define SW_MEASURE_DEPTHS 17u
-#define SW_MEASURE_REFINE 16u
+/* Defaults of swarp_measure_max: the vertices of H, a 7 x 7 NDC lattice at
+ * 9 depths and 24 compass-search steps from the worst vertex and the worst
+ * lattice sample.  The maximum of these projective maps' error over the
+ * convex H lies at or near a vertex or inside one lattice cell of the worst
+ * sample, which the search resolves to a small fraction of a cell;
+ * tests/model/test_measured_error.c states the difference from a 33 x 33 x
+ * 65 lattice with the same search. */
+#define SW_MEASURE_GRID 7u
+#define SW_MEASURE_DEPTHS 9u
+#define SW_MEASURE_REFINE 24u
 
 /* The camera's projection at one point, as the screen sees it. */
 typedef struct sw_screen {
@@ -49,8 +51,8 @@ static void sw_screen_make(const swarp_camera* cam, const swarp_measure_res* res
 /* The receiver's tangent frame (w_x, w_z) of the definition above. */
 static void sw_receiver_tangents(const sw_screen* s, swarp_vec3 n, swarp_vec3* wx, swarp_vec3* wz) {
     swarp_vec3 t = sw_sub(s->r, sw_scale(n, sw_dot(s->r, n)));
-    if (!(sw_len(t) > SW_NORMAL_PARALLEL_R)) t = sw_sub(s->u, sw_scale(n, sw_dot(s->u, n)));
-    sw_normalize(t, wx);
+    if (!(sw_len_fast(t) > SW_NORMAL_PARALLEL_R)) t = sw_sub(s->u, sw_scale(n, sw_dot(s->u, n)));
+    sw_normalize_fast(t, wx);
     *wz = sw_cross(n, *wx);
 }
 
@@ -84,10 +86,17 @@ static void sw_map_jacobian(const swarp_mat4* m, const swarp_measure_res* res, s
 
 /* Largest singular value of the 2x2 matrix [a b; c d]:
  * sigma^2 = (F + sqrt(F^2 - 4 det^2)) / 2, F the squared Frobenius norm,
- * written with hypot so that F^2 - 4 det^2 = ((a-d)^2 + (b+c)^2)((a+d)^2 + (b-c)^2)
+ * written with two lengths so that F^2 - 4 det^2 = ((a-d)^2 + (b+c)^2)((a+d)^2 + (b-c)^2)
  * never cancels below zero. */
+/* hypot(a, b) as one square root where the squares cannot overflow or
+ * underflow (the range of sw_len_fast), hypot outside it. */
+static double sw_hypot_fast(double a, double b) {
+    const double s = a * a + b * b;
+    return s > 1e-290 && s < 1e290 ? sqrt(s) : hypot(a, b);
+}
+
 static double sw_sigma_max(double a, double b, double c, double d) {
-    const double p = hypot(a - d, b + c), q = hypot(a + d, b - c);
+    const double p = sw_hypot_fast(a - d, b + c), q = sw_hypot_fast(a + d, b - c);
     return 0.5 * (p + q);
 }
 
@@ -126,8 +135,8 @@ static void sw_measure_one(const sw_screen* s, const swarp_mat4* m, const swarp_
     const double i10 = -jt[0][1] / det, i11 = jt[0][0] / det;
     const double d00 = js[0][0] * i00 + js[1][0] * i10, d01 = js[0][0] * i01 + js[1][0] * i11;
     const double d10 = js[0][1] * i00 + js[1][1] * i10, d11 = js[0][1] * i01 + js[1][1] * i11;
-    e.m_s = hypot(d00, d10);
-    e.m_t = hypot(d01, d11);
+    e.m_s = sw_hypot_fast(d00, d10);
+    e.m_t = sw_hypot_fast(d01, d11);
     e.sigma = sw_sigma_max(d00, d01, d10, d11);
     *out = e;
 }
@@ -229,13 +238,13 @@ static swarp_vec3 sw_region_point(const sw_region* g, const double u[3]) {
  * the view direction's reverse is used (the receiver faces the eye). */
 static swarp_vec3 sw_bisector(const sw_region* g, swarp_vec3 x) {
     swarp_vec3 e, l, n;
-    if (!sw_normalize(sw_sub(g->s.eye, x), &e)) e = sw_scale(g->s.f, -1.0);
+    if (!sw_normalize_fast(sw_sub(g->s.eye, x), &e)) e = sw_scale(g->s.f, -1.0);
     if (g->light.type == SWARP_LIGHT_POINT) {
-        if (!sw_normalize(sw_sub(g->light.position, x), &l)) l = e;
+        if (!sw_normalize_fast(sw_sub(g->light.position, x), &l)) l = e;
     } else {
         l = sw_scale(g->light.direction, -1.0);
     }
-    if (!sw_normalize(sw_add(e, l), &n)) n = e;
+    if (!sw_normalize_fast(sw_add(e, l), &n)) n = e;
     return n;
 }
 
@@ -272,9 +281,11 @@ static void sw_sample_lattice(const sw_region* g, uint32_t n, uint32_t k, sw_bes
 
 static double sw_clampd(double v, double lo, double hi) { return v < lo ? lo : (v > hi ? hi : v); }
 
-/* Pattern search from a seed: the 26 neighbours at the current step in
- * (NDC x, NDC y, log z), moving to a worse one when found, halving the step
- * when none is.  Deterministic; the lattice spacing is the first step. */
+/* Compass search from a seed: the 6 neighbours along the axes of (NDC x,
+ * NDC y, log z) at the current step, moving to the worst when it is worse,
+ * halving the step when none is.  Deterministic; the lattice spacing is
+ * the first step, so `steps` halvings resolve the maximum to 2^-steps of a
+ * cell along each axis. */
 static void sw_refine(const sw_region* g, uint32_t n, uint32_t k, uint32_t steps,
                       const double seed[3], double seed_sigma, sw_best* b) {
     double h[3] = {2.0 / (n - 1), 2.0 / (n - 1), (g->lz1 - g->lz0) / (k - 1)};
@@ -283,16 +294,13 @@ static void sw_refine(const sw_region* g, uint32_t n, uint32_t k, uint32_t steps
     for (uint32_t it = 0; it < steps && best < INFINITY; ++it) {
         double next[3] = {c[0], c[1], c[2]};
         int moved = 0;
-        for (int dz = -1; dz <= 1; ++dz)
-            for (int dy = -1; dy <= 1; ++dy)
-                for (int dx = -1; dx <= 1; ++dx) {
-                    if (!dx && !dy && !dz) continue;
-                    const double u[3] = {sw_clampd(c[0] + dx * h[0], lo[0], hi[0]),
-                                         sw_clampd(c[1] + dy * h[1], lo[1], hi[1]),
-                                         sw_clampd(c[2] + dz * h[2], lo[2], hi[2])};
-                    const double v = sw_sample(g, u, b);
-                    if (v > best) best = v, next[0] = u[0], next[1] = u[1], next[2] = u[2], moved = 1;
-                }
+        for (int axis = 0; axis < 3; ++axis)
+            for (int sgn = -1; sgn <= 1; sgn += 2) {
+                double u[3] = {c[0], c[1], c[2]};
+                u[axis] = sw_clampd(c[axis] + sgn * h[axis], lo[axis], hi[axis]);
+                const double v = sw_sample(g, u, b);
+                if (v > best) best = v, next[0] = u[0], next[1] = u[1], next[2] = u[2], moved = 1;
+            }
         if (moved) c[0] = next[0], c[1] = next[1], c[2] = next[2];
         else h[0] *= 0.5, h[1] *= 0.5, h[2] *= 0.5;
     }
@@ -382,4 +390,24 @@ SWARP_API swarp_status swarp_measure_max(const swarp_camera* cam, double z_near,
     if (have_vertices && seed_sigma >= 0.0) sw_refine(&g, n, k, steps, seed, seed_sigma, &b);
     *out = b.acc;
     return b.acc.max_sigma == INFINITY ? SWARP_INFO_MEASURE_SINGULAR : SWARP_OK;
+}
+
+/* The measurement the results carry: swarp_measure_max over [z_near, z_far]
+ * ∩ S at the setup options' screen and map (defaults resolved), with the
+ * default sampling.  A region the sampling does not reach (a sliver of H
+ * thinner than the lattice and S's slack), or a matrix singular somewhere
+ * in it, is reported as such rather than as an error of the setup: zero
+ * samples, or max_sigma = +inf. */
+void sw_measure_setup(const swarp_camera* cam, double z_near, double z_far, const swarp_light* light,
+                      const swarp_aabb* scene, const swarp_mat4* matrix, const swarp_setup_options* o,
+                      swarp_measured_error* out) {
+    memset(out, 0, sizeof *out);
+    if (o->skip_measure) return;
+    swarp_measure_res r;
+    sw_setup_map_size(o, &r.map_width, &r.map_height);
+    r.screen_width = o->screen_width ? o->screen_width : SW_DEFAULT_SCREEN_W;
+    r.screen_height = o->screen_height ? o->screen_height : SW_DEFAULT_SCREEN_H;
+    swarp_measured_error m;
+    swarp_status s = swarp_measure_max(cam, z_near, z_far, light, scene, matrix, &r, NULL, &m);
+    if (s == SWARP_OK || s == SWARP_INFO_MEASURE_SINGULAR) *out = m;
 }

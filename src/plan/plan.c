@@ -215,6 +215,26 @@ static void sw_resolve_defaults(const swarp_scene_needs* needs, const swarp_budg
                                                   : SW_DEFAULT_BLUR_FRACTION * in->pass_ns;
 }
 
+/* Relative width a box flat across the view gets (f = n, or narrower than
+ * this): far above the rounding of the depths of its corners, so the box's
+ * own depth extent, which is rounding, does not decide the model. */
+#define SW_FLAT_RANGE_REL 1e-6
+
+/* Widens a range [n, f] narrowed by a flat box to SW_FLAT_RANGE_REL n,
+ * inside the camera's own [near, far] (the documented range, which the
+ * adjustment only narrows).  The camera's range is valid (near < far), and
+ * the error model is finite down to a range one ulp wide, so the result
+ * f > n needs no widening beyond it: a camera range narrower than the
+ * floor is used as it is. */
+static void sw_widen_flat_range(double near, double far, double* n, double* f) {
+    const double grow = 1.0 + SW_FLAT_RANGE_REL;
+    if (*f >= *n * grow) return;
+    *f = fmin(*n * grow, far);
+    /* the box flat at the far plane: the width goes below it instead */
+    if (!(*f > *n)) *n = fmax(*f / grow, near);
+    if (!(*f > *n)) *n = near;
+}
+
 /* [RHS] §3.3.1 adjusted near/far, conservatively: the depth range of the
  * box corners along the view direction clipped to [near, far] (contains
  * the depth range of H = V ∩ S, so nothing visible is lost). */
@@ -231,9 +251,7 @@ static swarp_status sw_adjust_near_far(const swarp_aabb* box, sw_pin* in) {
     if (dmax < in->z_near || dmin > in->z_far) return SWARP_ERR_PLAN_EMPTY_VIEW;
     double n = dmin > in->z_near ? dmin : in->z_near;
     double f = dmax < in->z_far ? dmax : in->z_far;
-    /* a box flat across the view: keep a tiny positive depth range
-     * (1e-6 relative, far above rounding) so every ratio stays finite */
-    if (f < n * (1.0 + 1e-6)) f = n * (1.0 + 1e-6);
+    sw_widen_flat_range(in->z_near, in->z_far, &n, &f);
     if (n != in->z_near || f != in->z_far) in->near_far_adjusted = 1;
     in->z_near = n;
     in->z_far = f;
@@ -639,7 +657,10 @@ static void sw_fill(const sw_pin* in, const sw_filter* flt, const swarp_plan_cha
     p->max_mx = e->mx;
     p->max_mz = e->mz;
     p->max_error = e->err;
-    p->error_area = e->mx * e->mz;
+    /* each factor is finite, their product can exceed DBL_MAX (m_x, m_z
+     * ~ 1e155 for near 1e-300): as a bound it is then written as DBL_MAX,
+     * the header's rule for a finite value beyond the double range */
+    p->error_area = sw_finite(e->mx * e->mz) ? e->mx * e->mz : DBL_MAX;
 
     uint32_t R = 0;
     /* inverse projection: PSM only, light behind the camera [KOZ] */

@@ -281,19 +281,27 @@ static int make_scene(void) {
     return 1;
 }
 
-int main(void) {
-    OSMesaContext ctx = glh_open("splits_glsl");
+/* splits_glsl: shaders/splits.glsl with the driver k_main.  splits_glsl
+ * PATH: PATH is a whole compute shader, the HLSL twins (shaders/splits.hlsl)
+ * with their driver (splits_hlsl.hlsl) translated HLSL -> SPIR-V -> GLSL,
+ * run on the same cases against the same C results. */
+int main(int argc, char** argv) {
+    const int hlsl = argc > 1;
+    const char* path = hlsl ? argv[1] : SPLITS_GLSL_PATH;
+    OSMesaContext ctx = glh_open(hlsl ? "splits_hlsl" : "splits_glsl");
     if (!ctx) return 77;
-    char* lib = glh_read_file(SPLITS_GLSL_PATH);
+    char* lib = glh_read_file(path);
     if (!lib || !make_scene()) {
-        fprintf(stderr, "splits_glsl: cannot read %s or build the cascade\n", SPLITS_GLSL_PATH);
+        fprintf(stderr, "splits_glsl: cannot read %s or build the cascade\n", path);
         free(lib);
         OSMesaDestroyContext(ctx);
         return 1;
     }
-    /* the file plus the driver, as a GLSL 4.50 compute shader */
+    /* the file plus the driver, as a GLSL 4.50 compute shader (or the
+     * translated shader, which has its own #version and driver) */
     const char* parts[3] = {"#version 450 core\n", lib, k_main};
-    GLuint prog = glh_compile("splits_glsl", parts, 3, "splits.glsl + driver");
+    GLuint prog = hlsl ? glh_compile("splits_hlsl", (const char* const[]){lib}, 1, path)
+                       : glh_compile("splits_glsl", parts, 3, "splits.glsl + driver");
     if (!prog) {
         free(lib);
         OSMesaDestroyContext(ctx);

@@ -626,7 +626,7 @@ START_TEST(min_depth_bad_inputs) {
     o.min_depth = -INFINITY;
     ck_assert_int_eq(swarp_setup(&s.cam, &s.light, &s.bound, &o, &r, NULL, 0, &np), SWARP_ERR_OUT_OF_RANGE);
     o.min_depth = 0;
-    o._reserved[1] = 7;
+    o._reserved[0] = 7;
     ck_assert_int_eq(swarp_setup(&s.cam, &s.light, &s.bound, &o, &r, NULL, 0, &np), SWARP_ERR_RESERVED_NONZERO);
     ck_assert(memcmp(&r, &rs, sizeof r) == 0);
     swarp_cascade_options co;

@@ -200,14 +200,15 @@ MUT(b_inverted_z, in->box.min.z = 1.0)
 MUT(b_line, in->box.min.x = in->box.max.x = 1.0; in->box.min.y = in->box.max.y = 1.0)
 MUT(b_point, in->box.min = in->box.max = (swarp_vec3){1.0, 1.0, -5.0})
 /* setup options (the planner has none: N/A there) */
-MUT(o_reserved, in->opt._reserved[1] = 1)
+MUT(o_reserved, in->opt._reserved[0] = 1)
+MUT(o_skip_measure, in->opt.skip_measure = 2)
 MUT(o_pad0, in->opt._pad0 = 1)
 MUT(o_pad1, in->opt._pad1 = 2)
 MUT(o_technique, in->opt.technique = (swarp_technique)4)
 MUT(o_technique_force, in->opt.technique = SWARP_TECHNIQUE_FORCE_I32)
 MUT(o_param, in->opt.param = (swarp_warp_param)6)
 MUT(o_center, in->opt.center = (swarp_warp_center)3)
-MUT(o_depth, in->opt.depth_range = (swarp_depth_range)3)
+MUT(o_depth, in->opt.depth_range = (swarp_depth_range)4)
 MUT(o_pancake, in->opt.pancake = 2)
 MUT(o_psm_slideback, in->opt.psm_slideback = 5)
 MUT(o_slideback_nan, in->opt.slideback = NAN)
@@ -291,14 +292,15 @@ static const struct {
     {"box inverted z", b_inverted_z, SWARP_ERR_BOX_INVERTED, ALL},
     {"box a line", b_line, SWARP_ERR_BOX_DEGENERATE, ALL},
     {"box a point", b_point, SWARP_ERR_BOX_DEGENERATE, ALL},
-    {"options _reserved[1]", o_reserved, SWARP_ERR_RESERVED_NONZERO, NO_PLAN},
+    {"options _reserved[0]", o_reserved, SWARP_ERR_RESERVED_NONZERO, NO_PLAN},
+    {"options skip_measure 2", o_skip_measure, SWARP_ERR_OUT_OF_RANGE, NO_PLAN},
     {"options _pad0", o_pad0, SWARP_ERR_RESERVED_NONZERO, NO_PLAN},
     {"options _pad1", o_pad1, SWARP_ERR_RESERVED_NONZERO, NO_PLAN},
     {"options technique 4", o_technique, SWARP_ERR_UNKNOWN_ENUM, NO_PLAN | NO_STABLE},
     {"options technique FORCE_I32", o_technique_force, SWARP_ERR_UNKNOWN_ENUM, NO_PLAN | NO_STABLE},
     {"options param 6", o_param, SWARP_ERR_UNKNOWN_ENUM, NO_PLAN},
     {"options center 3", o_center, SWARP_ERR_UNKNOWN_ENUM, NO_PLAN},
-    {"options depth_range 3", o_depth, SWARP_ERR_UNKNOWN_ENUM, NO_PLAN},
+    {"options depth_range 4", o_depth, SWARP_ERR_UNKNOWN_ENUM, NO_PLAN},
     {"options pancake 2", o_pancake, SWARP_ERR_OUT_OF_RANGE, NO_PLAN},
     {"options psm_slideback 5", o_psm_slideback, SWARP_ERR_OUT_OF_RANGE, NO_PLAN},
     {"options slideback NaN", o_slideback_nan, SWARP_ERR_NON_FINITE, NO_PLAN},

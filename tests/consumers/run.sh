@@ -26,7 +26,10 @@ test -f "$libdir/cmake/shadowwarp/shadowwarpConfig.cmake"
 test -f "$libdir/cmake/shadowwarp/shadowwarpConfigVersion.cmake"
 soname="$(objdump -p "$libdir/libshadowwarp.so" | awk '/SONAME/{print $2}')"
 major="$(awk '/#define SWARP_VERSION_MAJOR /{print $3}' "$src/include/shadowwarp.h")"
-[ "$soname" = "libshadowwarp.so.$major" ] || { echo "SONAME is '$soname', want libshadowwarp.so.$major"; exit 1; }
+minor="$(awk '/#define SWARP_VERSION_MINOR /{print $3}' "$src/include/shadowwarp.h")"
+# the major; while it is 0, major.minor (every 0.x minor may change layouts)
+if [ "$major" = 0 ]; then sov="0.$minor"; else sov="$major"; fi
+[ "$soname" = "libshadowwarp.so.$sov" ] || { echo "SONAME is '$soname', want libshadowwarp.so.$sov"; exit 1; }
 test -e "$libdir/$soname"
 echo "   installed; SONAME $soname"
 

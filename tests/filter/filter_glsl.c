@@ -365,24 +365,33 @@ static int check_case(int i, const double* in, const float* out) {
     return ok;
 }
 
-int main(void) {
-    OSMesaContext ctx = glh_open("filter_glsl");
+/* filter_glsl: shaders/filtering.glsl with the driver k_main.  filter_glsl
+ * PATH: PATH is a whole compute shader, the HLSL twins
+ * (shaders/filtering.hlsl) with their driver (filter_hlsl.hlsl) translated
+ * HLSL -> SPIR-V -> GLSL, run on the same cases against the same C results
+ * (the sampler part is compiled by glslang itself: test
+ * filter_hlsl_samplers). */
+int main(int argc, char** argv) {
+    const int hlsl = argc > 1;
+    const char* path = hlsl ? argv[1] : FILTER_GLSL_PATH;
+    OSMesaContext ctx = glh_open(hlsl ? "filter_hlsl" : "filter_glsl");
     if (!ctx) return 77;
-    char* lib = glh_read_file(FILTER_GLSL_PATH);
+    char* lib = glh_read_file(path);
     if (!lib) {
-        fprintf(stderr, "filter_glsl: cannot read %s\n", FILTER_GLSL_PATH);
+        fprintf(stderr, "filter_glsl: cannot read %s\n", path);
         return 1;
     }
     int rc = 0;
     /* 1. the whole file, samplers included, must compile */
     const char* with_samplers[3] = {"#version 450 core\n#define FILTER_GLSL_WITH_SAMPLERS\n", lib,
                                     "layout(local_size_x = 1) in;\nvoid main() {}\n"};
-    GLuint p0 = glh_compile("filter_glsl", with_samplers, 3, "filtering.glsl (with samplers)");
+    GLuint p0 = hlsl ? 1 : glh_compile("filter_glsl", with_samplers, 3, "filtering.glsl (with samplers)");
     if (!p0) rc = 1;
-    else p_glDeleteProgram(p0);
+    else if (!hlsl) p_glDeleteProgram(p0);
     /* 2. evaluate the texture-free twins */
     const char* parts[3] = {"#version 450 core\n", lib, k_main};
-    GLuint prog = glh_compile("filter_glsl", parts, 3, "filtering.glsl + driver");
+    GLuint prog = hlsl ? glh_compile("filter_hlsl", (const char* const[]){lib}, 1, path)
+                       : glh_compile("filter_glsl", parts, 3, "filtering.glsl + driver");
     if (!prog) {
         free(lib);
         OSMesaDestroyContext(ctx);

@@ -815,7 +815,7 @@ START_TEST(bad_input_non_finite_and_null) {
     o.technique = (swarp_technique)9;
     ck_assert_int_eq(swarp_setup(&c.cam, &c.light, &c.box, &o, &r, NULL, 0, NULL), SWARP_ERR_UNKNOWN_ENUM);
     memset(&o, 0, sizeof o);
-    o._reserved[1] = 1; /* the last reserved word (min_depth took two) */
+    o._reserved[0] = 1; /* the last reserved word */
     ck_assert_int_eq(swarp_setup(&c.cam, &c.light, &c.box, &o, &r, NULL, 0, NULL), SWARP_ERR_RESERVED_NONZERO);
     memset(&o, 0, sizeof o);
     o.param = SWARP_WARP_PARAM_USER;

@@ -354,6 +354,70 @@ START_TEST(maximum_over_h_bounds_random_points_and_dense_sampling) {
 }
 END_TEST
 
+
+/* The results carry the measurement of their own matrix: swarp_setup's
+ * measured equals swarp_measure_max of the returned matrix over
+ * [view_near, view_far] (measured camera-relative inside, so to rounding);
+ * skip_measure leaves it zero; every cascade split carries its own, the
+ * cascade the worst; a 1-split cascade carries swarp_setup's bit for bit. */
+START_TEST(results_carry_the_measurement_of_their_matrix) {
+    swarp_camera c = level_camera();
+    c.eye = (swarp_vec3){3, 2, -4};
+    c.dir = (swarp_vec3){0.2, -0.25, -1};
+    const swarp_light l = sun(0.3, -1, 0.2);
+    const swarp_aabb box = {{-100, -1, -250}, {100, 15, 60}};
+    swarp_setup_result r;
+    ck_assert(!swarp_status_is_error(setup(&c, &l, &box, SWARP_TECHNIQUE_LISPSM, &r)));
+    swarp_measured_error m;
+    ck_assert_int_eq(swarp_measure_max(&c, r.view_near, r.view_far, &l, &box, &r.matrix, &RES, NULL, &m), SWARP_OK);
+    ck_assert_uint_gt(r.measured.samples, 100);
+    ck_assert_msg(tu_rel(r.measured.max_sigma, m.max_sigma) < 1e-6, "%.17g vs %.17g", r.measured.max_sigma,
+                  m.max_sigma);
+    ck_assert(tu_rel(r.measured.max_m_s, m.max_m_s) < 1e-6 && tu_rel(r.measured.max_m_t, m.max_m_t) < 1e-6);
+    /* the worst point is a point of H: in S and in front of the eye */
+    ck_assert(r.measured.at.y >= box.min.y - 1e-6 && r.measured.at.y <= box.max.y + 1e-6);
+    swarp_setup_options o;
+    memset(&o, 0, sizeof o);
+    o.map_width = o.map_height = MAPRES;
+    o.screen_width = W;
+    o.screen_height = H;
+    o.skip_measure = 1;
+    swarp_setup_result q;
+    ck_assert(!swarp_status_is_error(swarp_setup(&c, &l, &box, &o, &q, NULL, 0, NULL)));
+    static const swarp_measured_error zero;
+    ck_assert(memcmp(&q.measured, &zero, sizeof zero) == 0);
+    ck_assert(memcmp(&q.matrix, &r.matrix, sizeof q.matrix) == 0); /* measuring changes nothing else */
+    /* cascades */
+    swarp_cascade_options co;
+    memset(&co, 0, sizeof co);
+    co.setup.map_width = co.setup.map_height = MAPRES;
+    co.setup.screen_width = W;
+    co.setup.screen_height = H;
+    co.split.count = 4;
+    swarp_cascade_result cr;
+    swarp_cascade_split sp[4];
+    size_t n = 0;
+    ck_assert(!swarp_status_is_error(swarp_cascade_setup(&c, &l, &box, &co, &cr, sp, 4, &n)));
+    ck_assert_uint_eq(n, 4);
+    double worst = 0;
+    uint32_t samples = 0;
+    for (size_t i = 0; i < n; ++i) {
+        swarp_measured_error mi;
+        ck_assert_int_eq(swarp_measure_max(&c, sp[i].z_near, sp[i].z_far, &l, &box, &sp[i].matrix, &RES, NULL, &mi),
+                         SWARP_OK);
+        ck_assert(memcmp(&mi, &sp[i].measured, sizeof mi) == 0);
+        worst = fmax(worst, mi.max_sigma);
+        samples += mi.samples;
+    }
+    ck_assert(cr.measured.max_sigma == worst && cr.measured.samples == samples);
+    /* splits resolve the near field: the cascade's worst is below the single map's */
+    ck_assert(cr.measured.max_sigma < r.measured.max_sigma);
+    co.split.count = 1;
+    ck_assert(!swarp_status_is_error(swarp_cascade_setup(&c, &l, &box, &co, &cr, sp, 4, &n)));
+    ck_assert(memcmp(&sp[0].measured, &r.measured, sizeof r.measured) == 0);
+}
+END_TEST
+
 int main(void) {
     Suite* s = suite_create("measured_error");
     TCase* t = tcase_create("measured");
@@ -364,6 +428,7 @@ int main(void) {
     tcase_add_test(t, singular_map_reports_infinity);
     tcase_add_test(t, bad_input_specific_status_outputs_untouched);
     tcase_add_loop_test(t, maximum_over_h_bounds_random_points_and_dense_sampling, 0, 3);
+    tcase_add_test(t, results_carry_the_measurement_of_their_matrix);
     suite_add_tcase(s, t);
     return tu_run_suite(s) ? 1 : 0;
 }

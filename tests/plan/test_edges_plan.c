@@ -292,6 +292,119 @@ START_TEST(lixel_check_clustered_corners_every_mode) {
 }
 END_TEST
 
+/* ---- the plan's numbers stay finite and inside the documented range ------- */
+
+static swarp_scene_needs needs_at(double near, double far) {
+    swarp_scene_needs n;
+    memset(&n, 0, sizeof n);
+    n.camera.eye = (swarp_vec3){0, 2, 0};
+    n.camera.dir = (swarp_vec3){0, 0, -1};
+    n.camera.up = (swarp_vec3){0, 1, 0};
+    n.camera.fovy = 1.0;
+    n.camera.aspect = 4.0 / 3.0;
+    n.camera.z_near = near;
+    n.camera.z_far = far;
+    n.light.type = SWARP_LIGHT_DIRECTIONAL;
+    n.light.direction = (swarp_vec3){0, 0, 1};
+    return n;
+}
+
+/* every double of a plan a success writes is finite, n' apart (+inf means
+ * uniform, header) */
+static void plan_finite(const swarp_plan_result* p) {
+    const double v[] = {p->gamma, p->z_near, p->z_far, p->max_mx, p->max_mz, p->max_error, p->error_area,
+                        p->lixel_error, p->filter_width, p->filter_exponent_pos, p->filter_exponent_neg,
+                        p->texels, p->cost_ns};
+    for (size_t i = 0; i < sizeof v / sizeof v[0]; ++i) ck_assert_msg(isfinite(v[i]), "field %zu: %g", i, v[i]);
+    for (uint32_t i = 0; i < p->split_count; ++i) {
+        ck_assert(isfinite(p->splits[i]) && isfinite(p->split_max_mx[i]) && isfinite(p->split_max_mz[i]));
+        ck_assert(isfinite(p->n_prime[i]) || p->n_prime[i] == INFINITY);
+    }
+}
+
+/* near 1e-300 (and the smallest subnormal), far 1e4, light along the view,
+ * map_resolution 1 (16), 2 passes: m_x and m_z are finite (about 1e155 and
+ * 1e165) but their product is not; error_area was +inf.  It is the product
+ * where that is representable and DBL_MAX where not (log of the product
+ * above log DBL_MAX: an evaluation that does not overflow). */
+START_TEST(plan_error_area_finite_when_product_overflows) {
+    const double nears[2] = {1e-300, 4.94e-324};
+    const uint32_t res[2] = {1, 16};
+    for (int k = 0; k < 2; ++k) {
+        swarp_scene_needs n = needs_at(nears[k], 1e4);
+        swarp_budget b;
+        memset(&b, 0, sizeof b);
+        b.map_resolution = res[k];
+        b.max_passes = 2;
+        swarp_plan_result p;
+        ck_assert_int_eq(swarp_plan(&n, &b, &p), SWARP_INFO_PLAN_BUDGET_UNMET);
+        plan_finite(&p);
+        ck_assert(log(p.max_mx) + log(p.max_mz) > log(DBL_MAX));
+        ck_assert(p.error_area == DBL_MAX);
+    }
+    /* a representable product is the product itself */
+    swarp_scene_needs n = needs_at(1.0, 100.0);
+    swarp_plan_result p;
+    ck_assert(!swarp_status_is_error(swarp_plan(&n, NULL, &p)));
+    ck_assert(p.error_area == p.max_mx * p.max_mz);
+}
+END_TEST
+
+/* The view depth range a plan reports lies inside the camera's [near, far]
+ * (the adjustment [RHS] §3.3.1 only narrows it), contains the depth range
+ * of the box within the view (computed here from the box corners), is not
+ * empty, and the splits run over it.  A 1-ulp camera range with a box
+ * around the camera was widened to near (1 + 1e-6), past far. */
+static void plan_range_ok(const swarp_scene_needs* n) {
+    swarp_plan_result p;
+    swarp_status st = swarp_plan(n, NULL, &p);
+    ck_assert_msg(!swarp_status_is_error(st), "%s", swarp_status_name(st));
+    plan_finite(&p);
+    ck_assert_msg(p.z_near >= n->camera.z_near && p.z_far <= n->camera.z_far,
+                  "range [%.17g, %.17g] outside the camera's [%.17g, %.17g]", p.z_near, p.z_far,
+                  n->camera.z_near, n->camera.z_far);
+    ck_assert(p.z_far > p.z_near);
+    ck_assert(p.splits[0] == p.z_near && p.splits[p.split_count] == p.z_far);
+    /* depth of the box corners along the view (0, 0, -1) from the eye */
+    long double dmin = INFINITY, dmax = -INFINITY;
+    for (int k = 0; k < 2; ++k) {
+        long double d = -((long double)(k ? n->scene_box.max.z : n->scene_box.min.z) - n->camera.eye.z);
+        dmin = fminl(dmin, d), dmax = fmaxl(dmax, d);
+    }
+    dmin = fmaxl(dmin, n->camera.z_near), dmax = fminl(dmax, n->camera.z_far);
+    ck_assert(p.z_near <= dmin && p.z_far >= dmax);
+}
+
+START_TEST(plan_range_inside_camera_range) {
+    /* a 1-ulp view range, box around the camera */
+    swarp_scene_needs n = needs_at(1.0, nextafter(1.0, 2.0));
+    n.scene_box = (swarp_aabb){{-50, -1, -200}, {50, 10, 50}};
+    plan_range_ok(&n);
+    /* a box flat across the view inside the range: widened, but inside */
+    n = needs_at(1.0, 100.0);
+    n.scene_box = (swarp_aabb){{-50, -1, -5}, {50, 10, -5}};
+    plan_range_ok(&n);
+    /* flat exactly at the far plane: the width goes below it */
+    n.scene_box = (swarp_aabb){{-50, -1, -100}, {50, 10, -100}};
+    plan_range_ok(&n);
+    /* flat at the near plane of a range narrower than the widening */
+    n = needs_at(1.0, 1.0 + 1e-9);
+    n.scene_box = (swarp_aabb){{-50, -1, -1}, {50, 10, -1}};
+    plan_range_ok(&n);
+    /* ranges of 1 .. 10^4 ulps at random scales, box around the camera */
+    uint64_t seed = 20;
+    for (int i = 0; i < 2000; ++i) {
+        double near = exp(tu_uniform(&seed, log(1e-6), log(1e6)));
+        double far = near;
+        int ulps = 1 + (int)tu_uniform(&seed, 0, 1e4);
+        for (int k = 0; k < ulps; ++k) far = nextafter(far, INFINITY);
+        n = needs_at(near, far);
+        n.scene_box = (swarp_aabb){{-50, -1, -1e7}, {50, 10, 1e7}};
+        plan_range_ok(&n);
+    }
+}
+END_TEST
+
 int main(void) {
     Suite* s = suite_create("edges_plan");
     TCase* t = tcase_create("explain");
@@ -305,6 +418,10 @@ int main(void) {
     t = tcase_create("lixel_check_rounding_mode");
     tcase_add_test(t, lixel_check_tiny_near_every_mode);
     tcase_add_test(t, lixel_check_clustered_corners_every_mode);
+    suite_add_tcase(s, t);
+    t = tcase_create("plan_range");
+    tcase_add_test(t, plan_error_area_finite_when_product_overflows);
+    tcase_add_test(t, plan_range_inside_camera_range);
     suite_add_tcase(s, t);
     return tu_run_suite(s) ? 1 : 0;
 }

@@ -63,7 +63,7 @@ static void expect_cube(swr_ctx* c, cube_args* a) {
     if (a->use_o) {
         for (int i = 0; i < 5; ++i)
             if (a->o._reserved[i]) swr_expect(c, SWARP_ERR_RESERVED_NONZERO), ok = 0;
-        if ((int)a->o.depth_range < 0 || (int)a->o.depth_range > 2) swr_expect(c, SWARP_ERR_UNKNOWN_ENUM), ok = 0;
+        if ((int)a->o.depth_range < 0 || (int)a->o.depth_range > 3) swr_expect(c, SWARP_ERR_UNKNOWN_ENUM), ok = 0;
         if (!swr_isfin(a->o.z1)) swr_expect(c, SWARP_ERR_NON_FINITE), ok = 0;
         else if (a->o.z1 != 0 && !(a->o.z1 > 0 && a->o.z1 < 1)) swr_expect(c, SWARP_ERR_OUT_OF_RANGE), ok = 0;
     }
@@ -254,10 +254,12 @@ static void e_cube_lookup(swr_ctx* c) {
          * (inverse: -Z_1, Z_1) in units of d = 1, [-1, 1] or [0, 1]
          * (swarp_cube_lookup's @brief), in long double; within 64 eps of its
          * terms, |beta/a| carrying a's relative condition (above) */
-        const int zo = a.use_o && (int)a.o.depth_range == 2;
+        /* reversed-Z (3): the [0, 1] depth turned over, 1 - (alpha + beta/a) */
+        const int rev = a.use_o && (int)a.o.depth_range == 3;
+        const int zo = a.use_o && ((int)a.o.depth_range == 2 || rev);
         const long double n = a.L.w < 0 ? -(long double)z1 : z1, f = a.L.w < 0 ? (long double)z1 : 1.0L;
         const long double alpha = zo ? f / (f - n) : (f + n) / (f - n), beta = zo ? n * f / (n - f) : 2 * n * f / (n - f);
-        const long double ref = alpha + beta / al;
+        const long double ref = rev ? 1.0L - (alpha + beta / al) : alpha + beta / al;
         SWR_CHECK_ACC(c, fabsl(depth - ref) <= 64 * DBL_EPSILON * (fabsl(alpha) + fabsl(beta / al) * c->cond) + 1e-300L,
                       "depth %.17g, alpha + beta/a = %.17Lg (cond %g, al %Lg)", depth, ref, c->cond, al);
     }

@@ -1297,7 +1297,7 @@ static void e_stabilize_directional(swr_ctx* c) {
     else if (ld_.x == 0 && ld_.y == 0 && ld_.z == 0) swr_expect(c, SWARP_ERR_ZERO_VECTOR);
     if (res < 2) swr_expect(c, SWARP_ERR_RESOLUTION);
     if (use_o) {
-        if (mode < 0 || mode > 3 || (int)o.depth < 0 || (int)o.depth > 2) swr_expect(c, SWARP_ERR_UNKNOWN_ENUM);
+        if (mode < 0 || mode > 3 || (int)o.depth < 0 || (int)o.depth > 3) swr_expect(c, SWARP_ERR_UNKNOWN_ENUM);
         for (int i = 0; i < 4; ++i)
             if (o._reserved[i]) swr_expect(c, SWARP_ERR_RESERVED_NONZERO);
         if (!swr_isfin(o.level_max_size)) swr_domain(c, SWARP_ERR_NON_FINITE);
