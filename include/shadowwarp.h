@@ -307,7 +307,9 @@ typedef struct swarp_aabb { swarp_vec3 min, max; } swarp_aabb;
     X(SWARP_INFO_FOLLOW_LAG, 1104,                                                      \
       "followed light frame still turning toward the aligned one (light near the view axis; LiSPSM weaker)") \
     X(SWARP_INFO_CAMERA_FAR_FROM_SCENE, 1105,                                           \
-      "infinite far plane: z_far is the farthest view depth of the scene box ([RHS] 3.3.1)")
+      "infinite far plane: z_far is the farthest view depth of the scene box ([RHS] 3.3.1)") \
+    X(SWARP_INFO_CASTERS_CLAMPED, 1106,                                                 \
+      "casters over 1e10 times the receivers' size toward the light left out of the depth range (depth clamp)")
 
 /* lixel: 200..299, 1200..1299 */
 #define SWARP_STATUS_LIST_LIXEL(X)                                                  \
