@@ -708,7 +708,11 @@ typedef struct swarp_setup_result {
  *  @param[out] out_count   number of points of B (may be NULL)
  *  @return SWARP_OK or an informational status (SWARP_INFO_WARP_UNIFORM,
  *          SWARP_INFO_PSM_INVERSE, SWARP_INFO_LIGHT_PARALLEL,
- *          SWARP_INFO_LIGHT_NEAR_CLIPPED, SWARP_INFO_FLAT_EXTENT);
+ *          SWARP_INFO_LIGHT_NEAR_CLIPPED (B clipped at a point light's near plane, 1e-4 of
+ *          its farthest depth), SWARP_INFO_CASTERS_CLAMPED (S reaches more than 1e10 times
+ *          H toward the light: casters beyond rely on depth clamping), SWARP_INFO_FLAT_EXTENT);
+ *          SWARP_ERR_DEGENERATE also for PSM when its map would not project along the
+ *          light in double (extreme fovy, aspect or far/near);
  *          SWARP_ERR_BODY_EMPTY (camera looks away from the box),
  *          SWARP_ERR_LIGHT_INSIDE_BODY, SWARP_ERR_BOX_INVERTED,
  *          SWARP_ERR_BOX_DEGENERATE, SWARP_ERR_CAPACITY, and the argument
