@@ -426,7 +426,8 @@ END_TEST
  * more than 15 % below. */
 START_TEST(default_sampling_error_over_random_configurations) {
     uint64_t s = 77;
-    const int count = SW_UNDER_ASAN ? 60 : 300;
+    /* fewer under ASan and valgrind (about 20x and 50x slower) */
+    const int count = SW_UNDER_ASAN || getenv("SWARP_UNDER_VALGRIND") ? 60 : 300;
     int n = 0, within = 0;
     double worst = 1.0;
     for (int i = 0; i < count; ++i) {
@@ -456,7 +457,7 @@ START_TEST(default_sampling_error_over_random_configurations) {
     fprintf(stderr, "default sampling: %d of %d configurations within 3 %% of the dense lattice, worst %.4f\n",
             within, n, worst);
     ck_assert_int_gt(n, count * 9 / 10);
-    ck_assert_msg(within >= 0.99 * n, "%d of %d within 3 %%", within, n);
+    ck_assert_msg(within >= 0.99 * n - 0.5, "%d of %d within 3 %%", within, n);
     ck_assert_msg(worst <= 1.15, "worst dense/default %.4f", worst);
 }
 END_TEST
