@@ -2448,7 +2448,11 @@ SWARP_API swarp_status swarp_lixel_select(const swarp_mat4* GLP, size_t count, c
  * generalised from the overhead light to a light at angle γ to the view in
  * the plane spanned by light and view direction.  It reduces to (2.3)/(2.4)
  * exactly at γ = 90°, and its light-space extent is W_lz of [RHS] (3.5) for
- * γ >= Θ.  Cost model (§3): shadow passes × a per-pass time (caller-measured,
+ * γ >= Θ.  It is a model of the view axis in the overhead-light frame, not
+ * of the matrices: swarp_plan_evaluate also builds the chain's matrices
+ * (swarp_cascade_setup, options as docs/planning.md §5 maps the chain) and
+ * reports their n' and measured error (swarp_measure_max) beside it.
+ * Cost model (§3): shadow passes × a per-pass time (caller-measured,
  * or the default fitted to [RHS] Table 7.1) + prefilter blur passes.
  */
 
@@ -2589,8 +2593,13 @@ typedef enum swarp_plan_filter {
 #define SWARP_PLAN_PLANE_NO_PASS_LEFT   4u /**< the pass limit (or time budget) is used up */
 #define SWARP_PLAN_PLANE_LIXEL_REFUSED  5u /**< swarp_lixel_matrix gave another error (e.g. singular) */
 
-/** The chosen chain.  All errors are Lloyd's m_x, m_z (screen pixels per
- *  texel side); costs per the cost model of docs/planning.md.
+/** The chosen chain.  The model's fields (n_prime, split_max_mx/mz, max_mx,
+ *  max_mz, max_error, error_area) are Lloyd's overhead-light model
+ *  generalised to γ, on the view axis (screen pixels per texel side): they
+ *  equal the matrices' measured m_s, m_t only for an overhead light on the
+ *  view axis.  The built_* fields and measured are what the chain's
+ *  matrices give (swarp_plan_evaluate only).  Costs per the cost model of
+ *  docs/planning.md.
  *  C has one namespace for functions and typedefs, so the type is the struct
  *  tag `struct swarp_plan` (the function is swarp_plan()), with the typedef
  *  swarp_plan_result as a shorter name for the same type. */
@@ -2608,9 +2617,9 @@ typedef struct swarp_plan {
     double splits[SWARP_PLAN_MAX_SPLITS + 1]; /**< C_0 = near .. C_K = far */
     double n_prime[SWARP_PLAN_MAX_SPLITS];    /**< warp parameter per split in light-space
                                                    units; +INFINITY = uniform */
-    double split_max_mx[SWARP_PLAN_MAX_SPLITS];
-    double split_max_mz[SWARP_PLAN_MAX_SPLITS];
-    double max_mx, max_mz;            /**< over the whole view */
+    double split_max_mx[SWARP_PLAN_MAX_SPLITS]; /**< the model's max m_x per split */
+    double split_max_mz[SWARP_PLAN_MAX_SPLITS]; /**< the model's max m_z per split */
+    double max_mx, max_mz;            /**< the model's maxima over the whole view */
     double max_error;                 /**< max(max_mx, max_mz), compared with the budget */
     double error_area;                /**< max_mx * max_mz (texel-area error bound); DBL_MAX when the
                                            product exceeds the double range */
@@ -2631,6 +2640,22 @@ typedef struct swarp_plan {
     uint32_t reasons;                 /**< SWARP_PLAN_WHY_* flags */
     uint32_t candidates;              /**< candidate chains evaluated */
     uint32_t plane_count;             /**< planes declared in the needs (plane_reason valid) */
+    /* The chain's matrices as an engine builds them: swarp_cascade_setup with
+     * the options docs/planning.md §5 maps the chain to (one split: the
+     * cascade is swarp_setup itself).  swarp_plan_evaluate fills them;
+     * swarp_plan leaves built = 0 and them zero (evaluate its chain). */
+    uint32_t built;                   /**< 1: the matrices were built, the fields below hold */
+    swarp_status built_status;        /**< swarp_cascade_setup's status for the chain (an
+                                           error: built = 0, e.g. SWARP_ERR_STABILIZE_LIGHT) */
+    double built_splits[SWARP_PLAN_MAX_SPLITS + 1]; /**< the matrices' C_0 .. C_K
+                                           (swarp_cascade_result.splits) */
+    double built_n_eye[SWARP_PLAN_MAX_SPLITS]; /**< the n' each split's matrix uses, eye
+                                           units, +INFINITY uniform (swarp_cascade_split.n_eye):
+                                           the one n' of the chain */
+    swarp_measured_error split_measured[SWARP_PLAN_MAX_SPLITS]; /**< each split's measured
+                                           error (swarp_cascade_split.measured) */
+    swarp_measured_error measured;    /**< the worst split's (swarp_cascade_result.measured):
+                                           max_m_s, max_m_t, max_sigma, at */
     uint32_t _reserved[4];
 } swarp_plan_result;
 
@@ -2674,8 +2699,16 @@ SWARP_API swarp_status swarp_plan(const swarp_scene_needs* needs, const swarp_bu
 /** @brief Predict one given chain (no choice of warp or splits): the same
  *  error and cost model and the same filter / lixel / clamp decisions as
  *  swarp_plan(), for reports and for callers that force a technique.
- *  meets_budget says whether it meets the budget; the pass limit is not
- *  enforced on the chain (lixel maps still use only passes left).
+ *  meets_budget says whether it meets the budget (by the model); the pass
+ *  limit is not enforced on the chain (lixel maps still use only passes left).
+ *  Then the chain's matrices, built as an engine builds them
+ *  (swarp_cascade_setup with the needs' camera, light and box (an all-zero
+ *  box: the view frustum's bounding box), technique and parameter of the
+ *  warp, split count, scheme and λ, 64-level stabilisation, pancaking for
+ *  depth_clamp, the plan's map_resolution and the screen; docs/planning.md
+ *  §5): built_splits, built_n_eye, split_measured and measured are exactly
+ *  that cascade's.  Cost: one swarp_cascade_setup with its measurement
+ *  (about 60 µs for one map, 30 µs more per split).
  *  @return as swarp_plan (never SWARP_INFO_PLAN_BUDGET_UNMET), plus
  *          SWARP_ERR_SPLIT_COUNT (K > 16, or K > 1 with SCHEME_NONE, or K = 1
  *          with a split scheme) and SWARP_ERR_UNKNOWN_ENUM for the chain. */

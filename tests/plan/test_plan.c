@@ -939,6 +939,15 @@ START_TEST(explain_text_and_capacity) {
     bad.reasons = 0xFFFFFFFFu;
     for (int i = 0; i < 17; ++i) bad.splits[i] = -1.23456789e-300;
     for (int i = 0; i < 16; ++i) bad.n_prime[i] = bad.split_max_mx[i] = bad.split_max_mz[i] = -1.2345e300;
+    /* with the matrices' n' and measured error on every line */
+    bad.built = 1;
+    bad.measured.samples = 1;
+    bad.measured.max_m_s = bad.measured.max_m_t = bad.measured.max_sigma = -1.2345e300;
+    bad.measured.at = (swarp_vec3){-1.2345e300, -1.2345e300, -1.2345e300};
+    for (int i = 0; i < 16; ++i) {
+        bad.built_n_eye[i] = bad.split_measured[i].max_sigma = -1.2345e300;
+        bad.split_measured[i].samples = 1;
+    }
     ck_assert_int_eq(swarp_plan_explain(&bad, NULL, 0, &cnt), SWARP_ERR_CAPACITY);
     ck_assert_uint_le(cnt, SWARP_PLAN_EXPLAIN_MAX);
     ck_assert_str_eq(swarp_plan_warp_name((swarp_plan_warp)99), "?");
