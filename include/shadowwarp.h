@@ -2450,7 +2450,7 @@ SWARP_API swarp_status swarp_lixel_select(const swarp_mat4* GLP, size_t count, c
  * exactly at γ = 90°, and its light-space extent is W_lz of [RHS] (3.5) for
  * γ >= Θ.  It is a model of the view axis in the overhead-light frame, not
  * of the matrices: swarp_plan_evaluate also builds the chain's matrices
- * (swarp_cascade_setup, options as docs/planning.md §5 maps the chain) and
+ * (swarp_cascade_setup, options as docs/planning.md §9 maps the chain) and
  * reports their n' and measured error (swarp_measure_max) beside it.
  * Cost model (§3): shadow passes × a per-pass time (caller-measured,
  * or the default fitted to [RHS] Table 7.1) + prefilter blur passes.
@@ -2641,7 +2641,7 @@ typedef struct swarp_plan {
     uint32_t candidates;              /**< candidate chains evaluated */
     uint32_t plane_count;             /**< planes declared in the needs (plane_reason valid) */
     /* The chain's matrices as an engine builds them: swarp_cascade_setup with
-     * the options docs/planning.md §5 maps the chain to (one split: the
+     * the options docs/planning.md §9 maps the chain to (one split: the
      * cascade is swarp_setup itself).  swarp_plan_evaluate fills them;
      * swarp_plan leaves built = 0 and them zero (evaluate its chain). */
     uint32_t built;                   /**< 1: the matrices were built, the fields below hold */
@@ -2706,12 +2706,14 @@ SWARP_API swarp_status swarp_plan(const swarp_scene_needs* needs, const swarp_bu
  *  box: the view frustum's bounding box), technique and parameter of the
  *  warp, split count, scheme and λ, 64-level stabilisation, pancaking for
  *  depth_clamp, the plan's map_resolution and the screen; docs/planning.md
- *  §5): built_splits, built_n_eye, split_measured and measured are exactly
+ *  §9): built_splits, built_n_eye, split_measured and measured are exactly
  *  that cascade's.  Cost: one swarp_cascade_setup with its measurement
  *  (about 60 µs for one map, 30 µs more per split).
  *  @return as swarp_plan (never SWARP_INFO_PLAN_BUDGET_UNMET), plus
  *          SWARP_ERR_SPLIT_COUNT (K > 16, or K > 1 with SCHEME_NONE, or K = 1
- *          with a split scheme) and SWARP_ERR_UNKNOWN_ENUM for the chain. */
+ *          with a split scheme) and SWARP_ERR_UNKNOWN_ENUM for the chain.  A
+ *          chain no engine can build (a stabilised warp or point light) is
+ *          still predicted: built = 0 and built_status says why. */
 SWARP_API swarp_status swarp_plan_evaluate(const swarp_scene_needs* needs,
                                            const swarp_budget* budget,
                                            const swarp_plan_chain* chain,

@@ -780,7 +780,7 @@ static swarp_aabb sw_view_box(const sw_pin* in) {
     return b;
 }
 
-/* The swarp_setup_options of a warp (docs/planning.md §5): the technique and
+/* The swarp_setup_options of a warp (docs/planning.md §9): the technique and
  * the LiSPSM parameter the planner's model names; PSM keeps Kozlov's inverse
  * projection for a light behind the camera (psm_slideback 0), as the plan's
  * inverse_projection says. */

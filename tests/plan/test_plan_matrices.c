@@ -1,8 +1,8 @@
 #define _POSIX_C_SOURCE 200809L
-/* swarp_plan_evaluate's matrices (src/plan/plan.c, docs/planning.md §5):
+/* swarp_plan_evaluate's matrices (src/plan/plan.c, docs/planning.md §9):
  *
  *  1. the chain's cascade is the one an engine builds: the mapping of
- *     docs/planning.md §5 is written out here, swarp_cascade_setup called
+ *     docs/planning.md §9 is written out here, swarp_cascade_setup called
  *     here, and the plan's split distances, per-split n' and measured error
  *     are that cascade's, bit for bit (one n' for one chain);
  *  2. the measured maximum is a maximum: sigma at its point equals it, and
@@ -59,7 +59,7 @@ static swarp_plan_chain chain_of(swarp_plan_warp w, swarp_plan_scheme s, uint32_
     return c;
 }
 
-/* The engine's side of docs/planning.md §5: the plan's chain as cascade
+/* The engine's side of docs/planning.md §9: the plan's chain as cascade
  * options, written from the documentation's table. */
 static swarp_cascade_options engine_options(const swarp_scene_needs* n, const swarp_plan_result* p) {
     swarp_cascade_options o;
