@@ -2665,6 +2665,9 @@ typedef struct swarp_plan_chain {
     swarp_plan_scheme scheme;   /**< NONE requires split_count 1 (0 means 1) */
     uint32_t split_count;       /**< 0: 1 */
     swarp_plan_stabilize stabilize;
+    uint32_t skip_measure;      /**< 1: build the matrices without measuring them (built_splits
+                                     and built_n_eye only, measured zero: about 15x cheaper);
+                                     0: measure (the default) */
     uint32_t _reserved[4];
 } swarp_plan_chain;
 
@@ -2711,7 +2714,8 @@ SWARP_API swarp_status swarp_plan(const swarp_scene_needs* needs, const swarp_bu
  *  (about 60 µs for one map, 30 µs more per split).
  *  @return as swarp_plan (never SWARP_INFO_PLAN_BUDGET_UNMET), plus
  *          SWARP_ERR_SPLIT_COUNT (K > 16, or K > 1 with SCHEME_NONE, or K = 1
- *          with a split scheme) and SWARP_ERR_UNKNOWN_ENUM for the chain.  A
+ *          with a split scheme), SWARP_ERR_UNKNOWN_ENUM for the chain and
+ *          SWARP_ERR_OUT_OF_RANGE (skip_measure above 1).  A
  *          chain no engine can build (a stabilised warp or point light) is
  *          still predicted: built = 0 and built_status says why. */
 SWARP_API swarp_status swarp_plan_evaluate(const swarp_scene_needs* needs,

@@ -803,9 +803,11 @@ static void sw_warp_setup_options(swarp_plan_warp w, swarp_setup_options* so) {
 /* The cascade options an engine sets for the plan's chain: its warp, split
  * count, scheme with the planner's λ, 64-level stabilisation [RHS] §3.5,
  * pancaking for depth clamping, the tile (map) resolution and the screen. */
-static void sw_chain_options(const sw_pin* in, const swarp_plan_result* p, swarp_cascade_options* o) {
+static void sw_chain_options(const sw_pin* in, const swarp_plan_result* p, uint32_t skip_measure,
+                             swarp_cascade_options* o) {
     memset(o, 0, sizeof *o);
     sw_warp_setup_options(p->warp, &o->setup);
+    o->setup.skip_measure = skip_measure;
     o->setup.map_width = p->map_resolution;
     o->setup.screen_width = (uint32_t)in->res_ix;
     o->setup.screen_height = (uint32_t)in->res_iy;
@@ -819,11 +821,12 @@ static void sw_chain_options(const sw_pin* in, const swarp_plan_result* p, swarp
 }
 
 /* Builds the plan's chain with swarp_cascade_setup and copies its split
- * distances, n' and measured error into the plan (built = 1), or records the
- * cascade's error status (built = 0, the fields stay zero). */
-static void sw_build_chain(const sw_pin* in, swarp_plan_result* p) {
+ * distances, n' and measured error (zero with skip_measure) into the plan
+ * (built = 1), or records the cascade's error status (built = 0, the fields
+ * stay zero). */
+static void sw_build_chain(const sw_pin* in, uint32_t skip_measure, swarp_plan_result* p) {
     swarp_cascade_options o;
-    sw_chain_options(in, p, &o);
+    sw_chain_options(in, p, skip_measure, &o);
     const swarp_aabb box = in->bounded ? in->box : sw_view_box(in);
     swarp_cascade_result r;
     swarp_cascade_split sp[SWARP_PLAN_MAX_SPLITS];
@@ -924,6 +927,7 @@ SWARP_API swarp_status swarp_plan_evaluate(const swarp_scene_needs* needs,
                                            struct swarp_plan* out_plan) {
     if (!out_plan || !chain) return SWARP_ERR_NULL_POINTER;
     if (!sw_reserved_zero(chain->_reserved, 4)) return SWARP_ERR_RESERVED_NONZERO;
+    if (chain->skip_measure > 1) return SWARP_ERR_OUT_OF_RANGE;
     swarp_plan_chain c = *chain;
     if (c.warp == SWARP_PLAN_WARP_DEFAULT) c.warp = SWARP_PLAN_WARP_UNIFORM;
     if ((uint32_t)c.warp > (uint32_t)SWARP_PLAN_WARP_PSM || (uint32_t)c.scheme > (uint32_t)SWARP_PLAN_SCHEME_LOG ||
@@ -948,7 +952,7 @@ SWARP_API swarp_status swarp_plan_evaluate(const swarp_scene_needs* needs,
                    SWARP_PLAN_WHY_NO_WARP_MOVING);
     p.reasons |= SWARP_PLAN_WHY_FORCED;
     p.candidates = 1;
-    sw_build_chain(&in, &p);
+    sw_build_chain(&in, c.skip_measure, &p);
     *out_plan = p;
     return in.point_light ? SWARP_INFO_PLAN_POINT_LIGHT : SWARP_OK;
 }
@@ -1161,7 +1165,7 @@ SWARP_API swarp_status swarp_plan_explain(const struct swarp_plan* plan, char* o
 
 /* The ABI of the planner's structs (plain doubles and 32-bit fields, no
  * padding surprises across compilers and bindings). */
-_Static_assert(sizeof(swarp_plan_chain) == 32, "swarp_plan_chain ABI");
+_Static_assert(sizeof(swarp_plan_chain) == 36, "swarp_plan_chain ABI");
 _Static_assert(sizeof(swarp_budget) == 64, "swarp_budget ABI");
 _Static_assert(sizeof(swarp_scene_needs) == 432, "swarp_scene_needs ABI");
 _Static_assert(sizeof(struct swarp_plan) == 1968, "swarp_plan ABI");

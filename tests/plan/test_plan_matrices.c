@@ -13,7 +13,8 @@
  *     view) the model's split distances and n' are the matrices';
  *  4. swarp_plan does not build (built = 0) and its model values are
  *     swarp_plan_evaluate's for the chosen chain; chains no engine can build
- *     report the cascade's error and keep the model.
+ *     report the cascade's error and keep the model; skip_measure builds
+ *     the same matrices without measuring them.
  */
 #include <check.h>
 #include <math.h>
@@ -147,6 +148,16 @@ START_TEST(evaluate_builds_the_engines_cascade) {
                     if (p.warp == SWARP_PLAN_WARP_UNIFORM) ck_assert(isinf(p.built_n_eye[i]));
                 }
                 ck_assert_int_eq(memcmp(&p.measured, &b.r.measured, sizeof p.measured), 0);
+                /* skip_measure: the same matrices, not measured */
+                swarp_plan_result u;
+                c.skip_measure = 1;
+                ck_assert_int_eq(swarp_plan_evaluate(&n, &bud, &c, &u), SWARP_OK);
+                ck_assert_uint_eq(u.built, 1);
+                ck_assert_int_eq(memcmp(u.built_splits, p.built_splits, sizeof u.built_splits), 0);
+                ck_assert_int_eq(memcmp(u.built_n_eye, p.built_n_eye, sizeof u.built_n_eye), 0);
+                ck_assert_uint_eq(u.measured.samples, 0);
+                ck_assert_double_eq(u.measured.max_sigma, 0.0);
+                for (uint32_t i = 0; i < u.split_count; ++i) ck_assert_uint_eq(u.split_measured[i].samples, 0);
                 ++compared;
             }
     ck_assert_int_eq(compared, 4 * (11 + 3));
