@@ -14,13 +14,13 @@ mkdir -p docs/img docs/plots
 # far 600) at 1024x768, light at gamma to the view, every technique the demo
 # renders and measures (the lixel technique has no view-vector measurement).
 # Set SWARP_NO_DEMO=1 to reuse the last docs/plots/demo-measured.dat.  One line per run:
-#   gamma map technique K setup_us passes texels shadow_ms main_ms meas_mz pred_mz
+#   gamma map technique K setup_us passes texels shadow_ms main_ms meas_sigma pred_sigma
 DEMO="$BUILD/examples/demo/demo"
 DEMO_DAT=docs/plots/demo-measured.dat
 DEMO_ARG=""
 if [ -x "$DEMO" ] && [ "${SWARP_NO_DEMO:-0}" != "1" ]; then
     TMP=$(mktemp -d)
-    echo "# gamma map technique K setup_us passes texels shadow_ms main_ms meas_mz pred_mz" > "$DEMO_DAT"
+    echo "# gamma map technique K setup_us passes texels shadow_ms main_ms meas_sigma pred_sigma" > "$DEMO_DAT"
     for g in 90 60 45 30 150; do
         LD=$(awk -v g="$g" 'BEGIN { r = g * 3.14159265358979 / 180; printf "0,%.9f,%.9f", -sin(r), cos(r) }')
         for map in 1024 2048; do

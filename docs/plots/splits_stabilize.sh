@@ -7,7 +7,7 @@ set -eu
 B=${1:-build}
 D=$(mktemp)
 trap 'rm -f "$D"' EXIT
-"$B/examples/swtool/swtool" stabwalk --steps 300 --res 1024 --speed 0.01 --turn 0.03 > "$D"
+"$B/examples/swtool/swtool" stabwalk --steps 300 --map 1024 --speed 0.01 --turn 0.03 > "$D"
 gnuplot <<GP
 set terminal pngcairo size 1000,760 font "sans,11"
 set output "docs/img/splits_stabilize.png"

@@ -11,6 +11,8 @@
 int demo_check_iou(const demo_options* o);
 int demo_check_measure(const demo_options* o);
 int demo_check_select(const demo_options* o);
+/* check_measured.c: the render's measured error against the library's */
+int demo_check_measured(const demo_options* o);
 /* check_passes.c: renderer paths that must agree or must differ */
 int demo_check_clone(const demo_options* o);
 int demo_check_mindepth(const demo_options* o);

@@ -41,6 +41,32 @@ typedef struct demo_measure_row {
 int demo_measure(const demo_view* v, const demo_shadow* sh, int map_res, const float* tex,
                  const float* pos, demo_measure_row* rows, int cap);
 
+/** The measured error of docs/accuracy.md over the visible pixels of one
+ *  render, maximum against maximum over the same receivers. */
+typedef struct demo_measured {
+    int pixels;                 /**< receiver pixels compared */
+    /* the render: D = (d(s, t)/d(pixel x, y))^-1 from the read-back texel
+     * coordinates of neighbouring pixels (central differences) */
+    double render_m_s, render_m_t, render_sigma; /**< maxima over the pixels */
+    swarp_vec3 render_at;       /**< world point of render_sigma */
+    double render_cos_light;    /**< cos psi_l (receiver normal, light) there */
+    /* swarp_measure_points at the same pixels' world points and facet
+     * normals with the matrix of the map that shaded them */
+    double points_m_s, points_m_t, points_sigma; /**< maxima over the pixels */
+    swarp_vec3 points_at;
+    double pixel_dev_p99;       /**< 99th percentile over the pixels of
+                                     |render sigma / points sigma - 1| */
+    double pixel_dev_max;       /**< its maximum */
+} demo_measured;
+
+/** Measures the render of sh (float targets tex, pos, nrm of
+ *  demo_render_read_aux / _normals): every pixel whose four neighbours lie
+ *  on the same plane and in the same map, faces the light
+ *  (cos psi_l >= DEMO_MEASURE_MIN_COS_LIGHT) and projects into its map.
+ *  0 on success, -1 on a library error. */
+int demo_measure_render(const demo_view* v, const demo_shadow* sh, const float* tex,
+                        const float* pos, const float* nrm, demo_measured* out);
+
 /** The error graph along the view vector (Fig. 5.8): library m_x (orange),
  *  m_z (blue), split markers, measured points.  */
 int demo_error_graph(const demo_view* v, const demo_shadow* sh, int map_res,

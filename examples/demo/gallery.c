@@ -167,6 +167,7 @@ static void entry_report(gallery* g, int t, demo_technique tt, const demo_option
             printf(" shadow pass %d %.2f ms;", k, res->shadow_ms[k]);
         printf(" main pass %.2f ms; %d passes, %.0f texels\n", res->main_ms, res->passes,
                res->texels);
+        demo_print_measured(res);
         demo_print_measure(res);
     }
 }
@@ -226,32 +227,33 @@ static int gallery_entry(gallery* g, int t) {
 }
 
 /* The summary table: per entry the setup time, passes, texels, timings and
- * the worst (largest) measured m_z against the library's m_z there. */
+ * the measured error of docs/accuracy.md, maximum against maximum: the
+ * render's (texel coordinates read back) over its receiver pixels, the
+ * library's swarp_measure_points over the same pixels, and the library's
+ * maximum over H with bisector receivers (the result's `measured`). */
 static void gallery_summary(const gallery* g) {
     const demo_options* o = g->o;
-    printf("\nsummary (%dx%d, map %d^2, camera %s, filter %s; %s)\n", o->w, o->h, o->map,
-           o->camera, demo_filter_name(o->filter), "predicted m from the library's error model");
-    printf("%-14s %9s %6s %10s %9s %9s %10s %10s %9s %9s\n", "technique", "setup_us", "passes",
-           "texels", "shadow_ms", "main_ms", "meas_mz_mx", "pred_mz_mx", "meas/pred", "gl_err");
+    printf("\nsummary (%dx%d, map %d^2, camera %s, filter %s; sigma: screen pixels per texel "
+           "step, docs/accuracy.md)\n", o->w, o->h, o->map, o->camera, demo_filter_name(o->filter));
+    printf("%-14s %9s %6s %10s %9s %9s %9s %9s %9s %9s %9s %6s\n", "technique", "setup_us",
+           "passes", "texels", "shadow_ms", "main_ms", "meas_sig", "pred_sig", "meas/pred",
+           "H_sig", "meas/H", "gl_err");
     for (int i = 0; i < g->n; ++i) {
         const demo_tech_result* r = &g->res[i];
-        double mm = 0, pm = NAN;
-        for (int k = 0; k < r->nrows; ++k)
-            if (r->rows[k].mz > mm) {
-                mm = r->rows[k].mz;
-                pm = r->rows[k].pred_mz;
-            }
-        if (r->nrows > 0)
-            printf("%-14s %9.2f %6d %10.0f %9.2f %9.2f %10.3f %10.3f %9.3f %9d\n", r->label,
-                   r->setup_us, r->passes, r->texels, r->shadow_ms_total, r->main_ms, mm, pm,
-                   mm / pm, r->gl_errors);
-        else
-            printf("%-14s %9.2f %6d %10.0f %9.2f %9.2f %10s %10s %9s %9d\n", r->label,
-                   r->setup_us, r->passes, r->texels, r->shadow_ms_total, r->main_ms, "-", "-",
-                   "-", r->gl_errors);
+        const demo_measured* m = &r->measured;
+        char hs[32] = "-", hr[32] = "-";
+        if (r->sh.have_measured) {
+            snprintf(hs, sizeof hs, "%.4g", r->sh.measured.max_sigma);
+            snprintf(hr, sizeof hr, "%.3f", m->render_sigma / r->sh.measured.max_sigma);
+        }
+        printf("%-14s %9.2f %6d %10.0f %9.2f %9.2f %9.4g %9.4g %9.4f %9s %9s %6d\n", r->label,
+               r->setup_us, r->passes, r->texels, r->shadow_ms_total, r->main_ms, m->render_sigma,
+               m->points_sigma, m->render_sigma / m->points_sigma, hs, hr, r->gl_errors);
     }
-    printf("(meas_mz_mx: the largest measured m_z along the view vector, pred_mz_mx the\n"
-           " library's m_z there, '-' where Lloyd's model does not describe the maps;\n"
+    printf("(meas_sig: the largest sigma measured from the render (texel coordinates of\n"
+           " neighbouring pixels) over the receiver pixels that face the light; pred_sig: the\n"
+           " largest of swarp_measure_points over the same pixels; H_sig: the library's maximum\n"
+           " over H with bisector receivers, '-' where the maps have none (lixel, cube faces);\n"
            " timings: glFinish-bracketed, llvmpipe)\n");
 }
 

@@ -160,6 +160,149 @@ int demo_measure(const demo_view* v, const demo_shadow* sh, int map_res, const f
 }
 
 /* ------------------------------------------------------------------------ */
+/* the measured error of docs/accuracy.md, from the render                  */
+/* ------------------------------------------------------------------------ */
+
+/* Receivers that face the light at least this much (cos psi_l, [RHS] (2.2)).
+ * Below it the projection aliasing 1/cos psi_l grows without bound and the
+ * texel coordinates the render reads back (float, s and t up to the map
+ * size: resolution about 6e-5 texels) change across a pixel by so little
+ * that their differences are rounding; where cos psi_l <= 0 the shader
+ * shades by N.l alone (lit = 0), so the map decides nothing there. */
+#define DEMO_MEASURE_MIN_COS_LIGHT 0.05
+/* Neighbouring pixels lie on the same plane when their facet normals agree
+ * to this cosine (float normals of one triangle agree to about 1e-6; the
+ * scene's distinct planes meet at 10 degrees or more, cos 0.985) ... */
+#define DEMO_MEASURE_SAME_NORMAL 0.9995
+/* ... and the step between them leaves the plane by less than this
+ * fraction of its length (float positions of about 400 m: 3e-5 m apart at
+ * pixel steps of 1 cm or more). */
+#define DEMO_MEASURE_IN_PLANE 0.01
+
+static const float* px4(const float* a, int w, int x, int y) {
+    return a + 4 * ((size_t)y * w + x);
+}
+
+/* Pixel (x, y) and its neighbour (x + dx, y + dy) lie on one plane and in
+ * one map (the integer part of tex.z). */
+static int same_receiver(const float* tex, const float* pos, const float* nrm, int w, int x, int y,
+                         int dx, int dy) {
+    const float* n0 = px4(nrm, w, x, y);
+    const float* n1 = px4(nrm, w, x + dx, y + dy);
+    if (!(n1[3] > 0.5f)) return 0;
+    if ((int)px4(tex, w, x, y)[2] != (int)px4(tex, w, x + dx, y + dy)[2]) return 0;
+    double c = (double)n0[0] * n1[0] + (double)n0[1] * n1[1] + (double)n0[2] * n1[2];
+    if (!(c >= DEMO_MEASURE_SAME_NORMAL)) return 0;
+    const float* p0 = px4(pos, w, x, y);
+    const float* p1 = px4(pos, w, x + dx, y + dy);
+    double d[3] = {(double)p1[0] - p0[0], (double)p1[1] - p0[1], (double)p1[2] - p0[2]};
+    double len = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    double off = fabs(d[0] * n0[0] + d[1] * n0[1] + d[2] * n0[2]);
+    return len > 0 && off <= DEMO_MEASURE_IN_PLANE * len;
+}
+
+/* D = T^-1 with T = d(s, t)/d(pixel x, y) by central differences of the
+ * read-back texel coordinates: m_s = |D e_s| = |(dt/dy, -dt/dx)| / |det T|,
+ * m_t = |D e_t| = |(ds/dy, -ds/dx)| / |det T|, sigma = 1 / sigma_min(T).
+ * The tangent basis of docs/accuracy.md cancels: D is the same map from
+ * texel steps to pixel steps in any basis of the receiver plane.  0 when T
+ * is singular. */
+static int render_error(const float* tex, int w, int x, int y, swarp_texel_error* out) {
+    const float* xp = px4(tex, w, x + 1, y);
+    const float* xm = px4(tex, w, x - 1, y);
+    const float* yp = px4(tex, w, x, y + 1);
+    const float* ym = px4(tex, w, x, y - 1);
+    double sx = 0.5 * ((double)xp[0] - xm[0]), sy = 0.5 * ((double)yp[0] - ym[0]);
+    double tx = 0.5 * ((double)xp[1] - xm[1]), ty = 0.5 * ((double)yp[1] - ym[1]);
+    double det = sx * ty - sy * tx;
+    if (!(fabs(det) > 0)) return 0;
+    out->m_s = hypot(tx, ty) / fabs(det);
+    out->m_t = hypot(sx, sy) / fabs(det);
+    /* singular values of T: sqrt of the eigenvalues of T^T T */
+    double a = sx * sx + tx * tx, b = sx * sy + tx * ty, c = sy * sy + ty * ty;
+    double half = 0.5 * (a + c), disc = sqrt(0.25 * (a - c) * (a - c) + b * b);
+    double lmin = det * det / (half + disc); /* lmin lmax = det^2, no cancellation */
+    out->sigma = 1.0 / sqrt(lmin);
+    return 1;
+}
+
+/* The pixel's receiver for the library: world point, facet normal, and
+ * whether it faces the light enough to be measured. */
+static int pixel_receiver(const demo_view* v, const float* pos, const float* nrm, int w, int x,
+                          int y, swarp_vec3* P, swarp_vec3* N, double* cos_light) {
+    const float* p = px4(pos, w, x, y);
+    const float* n = px4(nrm, w, x, y);
+    *P = (swarp_vec3){p[0], p[1], p[2]};
+    *N = (swarp_vec3){n[0], n[1], n[2]};
+    const swarp_vec3* l = &v->light.direction;
+    double ll = sqrt(l->x * l->x + l->y * l->y + l->z * l->z);
+    double cl = fabs(N->x * l->x + N->y * l->y + N->z * l->z) / ll;
+    /* the facet normal's side is the rasteriser's; the receiver's lit side
+     * faces the eye (the camera sees it) and the light */
+    swarp_vec3 e = {v->cam.eye.x - P->x, v->cam.eye.y - P->y, v->cam.eye.z - P->z};
+    double se = N->x * e.x + N->y * e.y + N->z * e.z;
+    double sl = -(N->x * l->x + N->y * l->y + N->z * l->z);
+    *cos_light = cl;
+    return se * sl > 0 && cl >= DEMO_MEASURE_MIN_COS_LIGHT;
+}
+
+static void keep_max(double* m_s, double* m_t, double* sigma, swarp_vec3* at,
+                     const swarp_texel_error* e, const swarp_vec3* P) {
+    *m_s = fmax(*m_s, e->m_s);
+    *m_t = fmax(*m_t, e->m_t);
+    if (e->sigma > *sigma) {
+        *sigma = e->sigma;
+        *at = *P;
+    }
+}
+
+int demo_measure_render(const demo_view* v, const demo_shadow* sh, const float* tex,
+                        const float* pos, const float* nrm, demo_measured* out) {
+    int w = v->w, h = v->h;
+    demo_measured m;
+    memset(&m, 0, sizeof m);
+    double* dev = malloc(sizeof *dev * (size_t)w * h);
+    if (!dev) return -1;
+    for (int y = 1; y + 1 < h; ++y)
+        for (int x = 1; x + 1 < w; ++x) {
+            if (!(px4(nrm, w, x, y)[3] > 0.5f)) continue;
+            if (!same_receiver(tex, pos, nrm, w, x, y, 1, 0) ||
+                !same_receiver(tex, pos, nrm, w, x, y, -1, 0) ||
+                !same_receiver(tex, pos, nrm, w, x, y, 0, 1) ||
+                !same_receiver(tex, pos, nrm, w, x, y, 0, -1))
+                continue;
+            int i = (int)px4(tex, w, x, y)[2];
+            if (i < 0 || i >= sh->count) continue;
+            swarp_vec3 P, N;
+            double cl;
+            if (!pixel_receiver(v, pos, nrm, w, x, y, &P, &N, &cl)) continue;
+            swarp_measure_res mr = {(uint32_t)w, (uint32_t)h, (uint32_t)sh->viewport[i][0],
+                                    (uint32_t)sh->viewport[i][1]};
+            swarp_texel_error pe, re;
+            swarp_status st = swarp_measure_points(&v->cam, &sh->light[i], &mr, &P, &N, 1, &pe);
+            if (swarp_status_is_error(st)) {
+                fprintf(stderr, "demo: swarp_measure_points: %s\n", swarp_status_string(st));
+                free(dev);
+                return -1;
+            }
+            if (!(pe.flags & SWARP_TEXEL_INSIDE) || (pe.flags & SWARP_TEXEL_SINGULAR)) continue;
+            if (!render_error(tex, w, x, y, &re)) continue;
+            if (re.sigma > m.render_sigma) m.render_cos_light = cl;
+            keep_max(&m.render_m_s, &m.render_m_t, &m.render_sigma, &m.render_at, &re, &P);
+            keep_max(&m.points_m_s, &m.points_m_t, &m.points_sigma, &m.points_at, &pe, &P);
+            dev[m.pixels++] = fabs(re.sigma / pe.sigma - 1.0);
+        }
+    if (m.pixels > 0) {
+        demo_median(dev, m.pixels); /* sorts */
+        m.pixel_dev_p99 = dev[(size_t)(0.99 * (m.pixels - 1))];
+        m.pixel_dev_max = dev[m.pixels - 1];
+    }
+    free(dev);
+    *out = m;
+    return 0;
+}
+
+/* ------------------------------------------------------------------------ */
 /* error graph                                                              */
 /* ------------------------------------------------------------------------ */
 int demo_error_graph(const demo_view* v, const demo_shadow* sh, int map_res,

@@ -156,6 +156,7 @@ static const char* const main_fs =
     "layout(location = 0) out vec4 o_color;\n"
     "layout(location = 1) out vec4 o_tex;\n"
     "layout(location = 2) out vec4 o_pos;\n"
+    "layout(location = 3) out vec4 o_nrm;\n"
     "uniform sampler2DArrayShadow u_shadow;\n"
     "uniform sampler2DArray u_moments;\n"
     "uniform vec2 u_poisson[16];\n"
@@ -301,6 +302,10 @@ static const char* const main_fs =
     /* the map index, and in its fraction the blend weight: i + (1 - w)/2 */
     "  o_tex = vec4(sc0.xy * u_res, float(i) + 0.5 * (1.0 - w), v_depth);\n"
     "  o_pos = vec4(v_p, lit);\n"
+    /* the facet normal of the rasterised triangle: v_p is affine over the
+     * triangle, so its screen derivatives span the triangle's plane (the
+     * interpolated vertex normal v_n is not that plane on curved meshes) */
+    "  o_nrm = vec4(normalize(cross(dFdx(v_p), dFdy(v_p))), 1.0);\n"
     "}\n";
 
 /* The RGBA32F arrays (moments, projective-blur colour) are big (16 bytes a
@@ -369,18 +374,19 @@ int demo_render_init(demo_renderer* r, const demo_scene* s, int w, int h, int ma
     glGenFramebuffers(1, &r->shadow_fbo);
     glGenFramebuffers(1, &r->fbo);
     glBindFramebuffer(GL_FRAMEBUFFER, r->fbo);
-    GLuint* rbs[4] = {&r->rb_color, &r->rb_tex, &r->rb_pos, &r->rb_depth};
-    const GLenum fmts[4] = {GL_RGBA8, GL_RGBA32F, GL_RGBA32F, GL_DEPTH_COMPONENT24};
-    const GLenum atts[4] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2,
-                            GL_DEPTH_ATTACHMENT};
-    for (int i = 0; i < 4; ++i) {
+    GLuint* rbs[5] = {&r->rb_color, &r->rb_tex, &r->rb_pos, &r->rb_nrm, &r->rb_depth};
+    const GLenum fmts[5] = {GL_RGBA8, GL_RGBA32F, GL_RGBA32F, GL_RGBA32F, GL_DEPTH_COMPONENT24};
+    const GLenum atts[5] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2,
+                            GL_COLOR_ATTACHMENT3, GL_DEPTH_ATTACHMENT};
+    for (int i = 0; i < 5; ++i) {
         glGenRenderbuffers(1, rbs[i]);
         glBindRenderbuffer(GL_RENDERBUFFER, *rbs[i]);
         glRenderbufferStorage(GL_RENDERBUFFER, fmts[i], w, h);
         glFramebufferRenderbuffer(GL_FRAMEBUFFER, atts[i], GL_RENDERBUFFER, *rbs[i]);
     }
-    const GLenum bufs[3] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
-    glDrawBuffers(3, bufs);
+    const GLenum bufs[4] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2,
+                            GL_COLOR_ATTACHMENT3};
+    glDrawBuffers(4, bufs);
     if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
         fprintf(stderr, "demo: main framebuffer incomplete\n");
         return -1;
@@ -401,8 +407,8 @@ void demo_render_free(demo_renderer* r) {
     glDeleteTextures(1, &r->shadow_tex);
     glDeleteFramebuffers(1, &r->shadow_fbo);
     glDeleteFramebuffers(1, &r->fbo);
-    GLuint rbs[4] = {r->rb_color, r->rb_tex, r->rb_pos, r->rb_depth};
-    glDeleteRenderbuffers(4, rbs);
+    GLuint rbs[5] = {r->rb_color, r->rb_tex, r->rb_pos, r->rb_nrm, r->rb_depth};
+    glDeleteRenderbuffers(5, rbs);
     glDeleteBuffers(1, &r->vbo);
     glDeleteVertexArrays(1, &r->vao);
     memset(r, 0, sizeof *r);
@@ -558,14 +564,16 @@ int demo_render_main(demo_renderer* r, const demo_shadow* sh, const demo_main_pa
                      double* ms_out) {
     double t0 = demo_now_ms();
     glBindFramebuffer(GL_FRAMEBUFFER, r->fbo);
-    const GLenum bufs[3] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
-    glDrawBuffers(3, bufs);
+    const GLenum bufs[4] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2,
+                            GL_COLOR_ATTACHMENT3};
+    glDrawBuffers(4, bufs);
     glViewport(0, 0, p->vw, p->vh);
     const float sky[4] = {0.62f, 0.75f, 0.92f, 1.0f}, zero[4] = {0, 0, 0, 0};
     const float nopos[4] = {0, 0, 0, -1};
     glClearBufferfv(GL_COLOR, 0, sky);
     glClearBufferfv(GL_COLOR, 1, zero);
     glClearBufferfv(GL_COLOR, 2, nopos);
+    glClearBufferfv(GL_COLOR, 3, zero);
     glClear(GL_DEPTH_BUFFER_BIT);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
@@ -669,5 +677,13 @@ void demo_render_read_aux(demo_renderer* r, float* tex, float* pos) {
         glReadBuffer(GL_COLOR_ATTACHMENT2);
         glReadPixels(0, 0, r->w, r->h, GL_RGBA, GL_FLOAT, pos);
     }
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+void demo_render_read_normals(demo_renderer* r, float* nrm) {
+    glBindFramebuffer(GL_FRAMEBUFFER, r->fbo);
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glReadBuffer(GL_COLOR_ATTACHMENT3);
+    glReadPixels(0, 0, r->w, r->h, GL_RGBA, GL_FLOAT, nrm);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }

@@ -42,12 +42,12 @@ typedef struct demo_renderer {
     float poisson[32];         /**< 16 unit-disk points (swarp_pcf_poisson_disk) */
     float evsm_c;              /**< EVSM exponent (swarp_evsm_max_exponent, fp32) */
     int map_res, layers;
-    GLuint fbo, rb_color, rb_tex, rb_pos, rb_depth;
+    GLuint fbo, rb_color, rb_tex, rb_pos, rb_nrm, rb_depth;
     int w, h;
 } demo_renderer;
 
 /** Uploads the scene, compiles the programs, allocates a w x h main target
- *  (RGBA8 + two RGBA32F + depth) and a map_res^2 x max_layers depth array.
+ *  (RGBA8 + three RGBA32F + depth) and a map_res^2 x max_layers depth array.
  *  0 on success. */
 int demo_render_init(demo_renderer* r, const demo_scene* s, int w, int h, int map_res,
                      int max_layers);
@@ -89,6 +89,9 @@ void demo_render_read_color(demo_renderer* r, int vw, int vh, uint8_t* rgba);
  *  with w the cascade blend weight of that map, eye depth),
  *  pos = (world xyz, lit in [0,1]); bottom row first (GL order). */
 void demo_render_read_aux(demo_renderer* r, float* tex, float* pos);
+/** Read back the facet normals of the drawn triangles: (unit world normal,
+ *  1), (0, 0, 0, 0) where nothing was drawn; bottom row first. */
+void demo_render_read_normals(demo_renderer* r, float* nrm);
 
 double demo_now_ms(void);
 const char* demo_filter_name(demo_filter f);

@@ -177,7 +177,8 @@ static void setup_options(const demo_shadow_request* req, demo_technique t,
 static int conventional_map(const swarp_camera* cam, const swarp_light* light,
                             const swarp_aabb* scene, const demo_shadow_request* req,
                             demo_technique t, swarp_mat4* out_m, double* out_n, double* out_near, double* out_far,
-                            swarp_vec3* body, int* body_count, swarp_status* out_status) {
+                            swarp_vec3* body, int* body_count, swarp_measured_error* out_measured,
+                            swarp_status* out_status) {
     swarp_setup_options opt;
     setup_options(req, t, &opt);
     swarp_setup_result res;
@@ -196,6 +197,7 @@ static int conventional_map(const swarp_camera* cam, const swarp_light* light,
     *out_n = res.n_eye;
     *out_near = res.view_near;
     *out_far = res.view_far;
+    if (out_measured) *out_measured = res.measured;
     return 0;
 }
 
@@ -242,7 +244,7 @@ static int setup_lixel(const swarp_camera* cam, const swarp_light* light, const 
     }
     swarp_status sf;
     if (conventional_map(cam, light, scene, req, DEMO_TECH_UNIFORM, &sh->light[n],
-                         &sh->n_prime[n], &sh->z_near, &sh->z_far, NULL, NULL, &sf))
+                         &sh->n_prime[n], &sh->z_near, &sh->z_far, NULL, NULL, NULL, &sf))
         return -1;
     whole_view_maps(sh, n + 1, DEMO_SELECT_LIXEL, st != SWARP_OK ? st : sf,
                     n == 2 ? "library (swarp_lixel_* + uniform fallback)"
@@ -258,7 +260,7 @@ static int setup_cube(const swarp_camera* cam, const swarp_light* light, const s
     swarp_status st = SWARP_OK;
     double nprime;
     if (conventional_map(cam, light, scene, req, DEMO_TECH_UNIFORM, &sh->light[0],
-                         &nprime, &sh->z_near, &sh->z_far, sh->body, &sh->body_count, &st))
+                         &nprime, &sh->z_near, &sh->z_far, sh->body, &sh->body_count, NULL, &st))
         return -1;
     swarp_camera c2 = *cam;
     c2.z_near = sh->z_near;
@@ -291,6 +293,41 @@ static int setup_cube(const swarp_camera* cam, const swarp_light* light, const s
     }
     whole_view_maps(sh, (int)nf, DEMO_SELECT_CUBE, sc != SWARP_OK ? sc : st,
                     "library (swarp_setup's range + swarp_cube_faces)");
+    return 0;
+}
+
+/* The measured error of the stabilised maps the demo renders: per split
+ * swarp_measure_max over the split frustum ∩ S with that split's matrix,
+ * and the worst split's maxima (as swarp_cascade_result.measured combines
+ * its splits: maxima and the worst point, samples and outside summed). */
+static int measure_stable_maps(const swarp_camera* cam, const swarp_light* light,
+                               const swarp_aabb* scene, const demo_shadow_request* req,
+                               demo_shadow* sh) {
+    swarp_measure_res mr = {(uint32_t)req->screen_w, (uint32_t)req->screen_h,
+                            (uint32_t)req->map_res, (uint32_t)req->map_res};
+    swarp_measured_error all;
+    memset(&all, 0, sizeof all);
+    for (int i = 0; i < sh->count; ++i) {
+        swarp_measured_error m;
+        swarp_status sm = swarp_measure_max(cam, sh->split[i], sh->split[i + 1], light, scene,
+                                            &sh->light[i], &mr, NULL, &m);
+        if (sm == SWARP_ERR_BODY_EMPTY) continue; /* the split sees no part of S */
+        if (swarp_status_is_error(sm)) {
+            fprintf(stderr, "demo: swarp_measure_max (split %d): %s\n", i,
+                    swarp_status_string(sm));
+            return -1;
+        }
+        all.max_m_s = fmax(all.max_m_s, m.max_m_s);
+        all.max_m_t = fmax(all.max_m_t, m.max_m_t);
+        if (m.max_sigma > all.max_sigma || all.samples == 0) {
+            all.max_sigma = m.max_sigma;
+            all.at = m.at;
+        }
+        all.samples += m.samples;
+        all.outside += m.outside;
+    }
+    sh->measured = all;
+    sh->have_measured = all.samples > 0;
     return 0;
 }
 
@@ -339,7 +376,7 @@ static int setup_stable(const swarp_camera* cam, const swarp_light* light,
         sh->n_prime[i] = INFINITY;
         if (si != SWARP_OK && *st == SWARP_OK) *st = si;
     }
-    return 0;
+    return measure_stable_maps(cam, light, scene, req, sh);
 }
 
 /* [RHS] §3.3-3.4 in one library call: adjusted range, split distances,
@@ -376,6 +413,8 @@ static int setup_cascade(const swarp_camera* cam, const swarp_light* light,
         sh->light[i] = cs[i].matrix;
         sh->n_prime[i] = cs[i].n_eye;
     }
+    sh->measured = cr.measured;
+    sh->have_measured = 1;
     if (sc != SWARP_OK) *st = sc;
     return 0;
 }
@@ -433,8 +472,9 @@ int demo_shadow_setup(const swarp_camera* cam, const swarp_light* light,
     } else {
         /* one map over the view's adjusted range [RHS] §3.3.1 */
         if (conventional_map(cam, light, scene, req, t, &sh.light[0], &sh.n_prime[0], &sh.z_near,
-                             &sh.z_far, sh.body, &sh.body_count, &st))
+                             &sh.z_far, sh.body, &sh.body_count, &sh.measured, &st))
             return -1;
+        sh.have_measured = 1;
         sh.split[0] = sh.z_near;
         sh.split[1] = sh.z_far;
     }

@@ -65,7 +65,11 @@ typedef struct demo_shadow {
     double split[DEMO_MAX_SPLITS + 1];      /**< eye-depth split distances C_i */
     double n_prime[DEMO_MAX_SPLITS];        /**< warp n' per map (INFINITY = uniform) */
     double z_near, z_far;                       /**< eye-depth range the maps cover */
-    double predicted_max_mx, predicted_max_mz; /**< NAN when not available */
+    double predicted_max_mx, predicted_max_mz; /**< Lloyd's model; NAN when not available */
+    swarp_measured_error measured;          /**< the library's measured error of the maps
+                                                 over H (per split: split frustum ∩ S) with
+                                                 bisector receivers, the worst map's */
+    int have_measured;                      /**< 0: no such figure (lixel, cube faces) */
     swarp_status status;                    /**< library status of the setup */
     const char* source;                     /**< who computed the matrices */
     swarp_vec3 body[DEMO_MAX_BODY];         /**< points of B from the setup (whole view) */

@@ -116,30 +116,35 @@ static void technique_main_params(const demo_options* o, const demo_view* v,
     p->normal_offset = o->offset;
 }
 
-/* The shaded view, then m_x, m_z measured from the same pass's float
- * targets (texel coordinates and world positions). */
+/* The shaded view, then from the same pass's float targets (texel
+ * coordinates, world positions, facet normals): the measured error of
+ * docs/accuracy.md over every visible receiver, and m_x, m_z along the view
+ * vector for Lloyd's graph. */
 static int technique_shade_and_measure(const demo_options* o, demo_renderer* r,
                                        const demo_view* v, const demo_shadow* sh,
                                        demo_main_params* p, demo_tech_result* res) {
     p->mode = DEMO_MODE_SHADED;
     res->gl_errors += demo_render_main(r, sh, p, &res->main_ms);
     if (demo_read_picture(r, v->w, v->h, &res->shaded)) return -1;
-    float* tex = malloc(sizeof(float) * 4 * (size_t)v->w * v->h);
-    float* pos = malloc(sizeof(float) * 4 * (size_t)v->w * v->h);
-    if (!tex || !pos) {
-        free(tex);
-        free(pos);
-        return -1;
+    size_t n = 4 * (size_t)v->w * v->h;
+    float* tex = malloc(sizeof(float) * n);
+    float* pos = malloc(sizeof(float) * n);
+    float* nrm = malloc(sizeof(float) * n);
+    int rc = tex && pos && nrm ? 0 : -1;
+    if (rc == 0) {
+        demo_render_read_aux(r, tex, pos);
+        demo_render_read_normals(r, nrm);
+        rc = demo_measure_render(v, sh, tex, pos, nrm, &res->measured);
+        /* Lloyd's model along the view vector only where it describes the
+         * configuration (not for lixel or cube-face maps) */
+        res->nrows = sh->model_applies
+                         ? demo_measure(v, sh, o->map, tex, pos, res->rows, DEMO_MEASURE_ROWS)
+                         : 0;
     }
-    demo_render_read_aux(r, tex, pos);
-    /* measured against Lloyd's model only where the model describes the
-     * configuration (not for lixel or cube-face maps) */
-    res->nrows = sh->model_applies
-                     ? demo_measure(v, sh, o->map, tex, pos, res->rows, DEMO_MEASURE_ROWS)
-                     : 0;
     free(tex);
     free(pos);
-    return 0;
+    free(nrm);
+    return rc;
 }
 
 /* The sampling-rate, split-colour and texel-grid views, the light view and
@@ -251,6 +256,25 @@ void demo_tech_result_free(demo_tech_result* r) {
     demo_image_free(&r->splits);
     demo_image_free(&r->grid);
     demo_image_free(&r->light);
+}
+
+void demo_print_measured(const demo_tech_result* r) {
+    const demo_measured* m = &r->measured;
+    const swarp_measured_error* h = &r->sh.measured;
+    printf("  measured error (docs/accuracy.md) over %d receiver pixels (%s):\n", m->pixels,
+           r->label);
+    printf("    render (texel coordinates read back): max m_s %.4g, m_t %.4g, sigma %.4g at "
+           "(%.1f %.1f %.1f), cos psi_l %.3f\n", m->render_m_s, m->render_m_t, m->render_sigma,
+           m->render_at.x, m->render_at.y, m->render_at.z, m->render_cos_light);
+    printf("    swarp_measure_points, same pixels:    max m_s %.4g, m_t %.4g, sigma %.4g at "
+           "(%.1f %.1f %.1f)\n", m->points_m_s, m->points_m_t, m->points_sigma, m->points_at.x,
+           m->points_at.y, m->points_at.z);
+    printf("    per pixel |render/points - 1| of sigma: 99th percentile %.2e, max %.2e\n",
+           m->pixel_dev_p99, m->pixel_dev_max);
+    if (r->sh.have_measured)
+        printf("    result's measured (H, bisector receivers): max m_s %.4g, m_t %.4g, sigma %.4g at "
+               "(%.1f %.1f %.1f), %u samples\n", h->max_m_s, h->max_m_t, h->max_sigma, h->at.x,
+               h->at.y, h->at.z, h->samples);
 }
 
 void demo_print_measure(const demo_tech_result* r) {

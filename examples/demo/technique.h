@@ -17,6 +17,7 @@ typedef struct demo_tech_result {
     double shadow_ms[DEMO_MAX_SPLITS];
     double shadow_ms_total, main_ms;
     double texels;
+    demo_measured measured; /**< the measured error over the render's receivers */
     demo_measure_row rows[DEMO_MEASURE_ROWS];
     int nrows;
     double max_mx, max_mz;
@@ -38,7 +39,10 @@ int demo_run_technique(const demo_options* o, demo_renderer* r, const demo_view*
                        demo_tech_result* res);
 /** Frees the pictures of res. */
 void demo_tech_result_free(demo_tech_result* r);
-/** The measured-vs-predicted table of r on stdout. */
+/** The measured error of r's render against the library's on stdout. */
+void demo_print_measured(const demo_tech_result* r);
+/** Lloyd's model along the view vector against the render, per depth bin,
+ *  on stdout. */
 void demo_print_measure(const demo_tech_result* r);
 /** Reads the w x h colour buffer into a new image. */
 int demo_read_picture(demo_renderer* r, int w, int h, demo_image* im);

@@ -90,15 +90,15 @@ static void walk_corners(const swarp_camera* c, double n, double f, swarp_vec3 o
 /* swtool stabwalk: texel coordinates of a fixed world point while the camera
  * walks and turns slowly, for each stabilisation mode. */
 int cmd_stabwalk(sw_args* a) {
-    static const char* const known[] = {"steps", "res", "near", "far", "speed", "turn", "levels", NULL};
-    if (!cli_check_known(a, known)) return 2;
+    static const char* const known[] = {"steps", "map", "near", "far", "speed", "turn", "levels", NULL};
+    CLI_ACCEPT(a, known);
     unsigned steps, res, levels;
     double n, f, speed, turn;
-    if (!cli_uint(a, "steps", 200, &steps) || !cli_uint(a, "res", 1024, &res) ||
+    if (!cli_uint(a, "steps", 200, &steps) || !cli_map_square(a, 1024, &res) ||
         !cli_uint(a, "levels", 64, &levels) || !cli_double(a, "near", 1, &n) ||
         !cli_double(a, "far", 60, &f) || !cli_double(a, "speed", 0.013, &speed) ||
         !cli_double(a, "turn", 0.02, &turn))
-        return 2;
+        return CLI_EXIT_USAGE;
     const swarp_stabilize_mode modes[3] = {SWARP_STABILIZE_NONE, SWARP_STABILIZE_SPHERE,
                                            SWARP_STABILIZE_LEVELS};
     const char* names[3] = {"none", "sphere", "levels"};
@@ -136,7 +136,16 @@ int cmd_stabwalk(sw_args* a) {
             o.levels = levels;
             swarp_mat4 M;
             swarp_status s = swarp_stabilize_directional(&cam, n, f, &light, body, 8, NULL, res, &o, &M, NULL);
-            if (swarp_status_is_error(s)) return cli_report_status(a, s, "swarp_stabilize_directional");
+            if (swarp_status_is_error(s)) {
+                if (!a->json) return cli_report_status(a, s, "swarp_stabilize_directional");
+                /* the frames so far, then the error: still one complete object */
+                json_close_arr();
+                cli_status_fields(a, s, "swarp_stabilize_directional");
+                json_kv_num("failed_frame", k);
+                json_kv_str("failed_mode", names[m]);
+                json_end();
+                return CLI_EXIT_LIBRARY;
+            }
             swarp_vec4 h;
             swarp_mat4_transform(&M, &P, &h);
             st[m][0] = (h.x / h.w * 0.5 + 0.5) * res;
@@ -154,8 +163,28 @@ int cmd_stabwalk(sw_args* a) {
     }
     if (a->json) {
         json_close_arr();
+        json_kv_status(SWARP_OK);
         json_end();
     }
+    return CLI_EXIT_OK;
+}
+
+static const char* const cascade_model_known[] = {"near", "far", "fovy", "screen", "map", "splits", "scheme",
+                                                  "warp", "stabilize", "curve", "samples", NULL};
+static const char* const cascade_scene_known[] = {
+    "eye", "dir", "up", "fovy", "aspect", "near", "far", "light-dir", "light-pos", "box", "map", "screen",
+    "technique", "depth", "splits", "scheme", "stabilize", "origin", "kernel", "curve", "samples",
+    "min-depth", "warp-per-split", NULL};
+
+static int cascade_scheme(const sw_args* a, swarp_split_options* so) {
+    if (parse_scheme(cli_opt(a, "scheme"), so)) return 1;
+    cli_fail(a, "--scheme", "expects uniform|log|practical[:L]|pseudo:NP,FP[,L], got '%s'", cli_opt(a, "scheme"));
+    return 0;
+}
+
+static int cascade_stabilize(const sw_args* a, swarp_stabilize_mode* mode, uint32_t* levels) {
+    if (parse_stabilize(cli_opt(a, "stabilize"), mode, levels)) return 1;
+    cli_fail(a, "--stabilize", "expects none|sphere|levels[:N] (N in 1..1000000), got '%s'", cli_opt(a, "stabilize"));
     return 0;
 }
 
@@ -163,35 +192,24 @@ int cmd_stabwalk(sw_args* a) {
  * and (with --curve) the whole configuration's error curve.  The error model
  * is Lloyd's overhead-light frame [RHS] (2.3)-(2.8). */
 static int cascade_model(sw_args* a) {
-    static const char* const known[] = {"near", "far", "fovy", "image", "res", "splits", "scheme",
-                                        "warp", "stabilize", "curve", "samples", NULL};
-    if (!cli_check_known(a, known)) return 2;
+    CLI_ACCEPT(a, cascade_model_known);
     double n, f, fovy;
     unsigned K, res, samples, iw, ih;
     if (!cli_double(a, "near", 1.0, &n) || !cli_double(a, "far", 500.0, &f) ||
         !cli_double(a, "fovy", 60.0, &fovy) || !cli_uint(a, "splits", 4, &K) ||
-        !cli_uint(a, "res", 1024, &res) || !cli_uint(a, "samples", 64, &samples) ||
-        !cli_size(a, "image", 1024, 1024, &iw, &ih))
-        return 2;
+        !cli_map_square(a, 1024, &res) || !cli_uint(a, "samples", 64, &samples) ||
+        !cli_size(a, "screen", 1024, 1024, &iw, &ih))
+        return CLI_EXIT_USAGE;
     swarp_split_options so;
     memset(&so, 0, sizeof so);
     so.count = K;
-    if (!parse_scheme(cli_opt(a, "scheme"), &so)) {
-        fprintf(stderr, "swtool cascade: --scheme uniform|log|practical:L|pseudo:NP,FP[,L]\n");
-        return 2;
-    }
     swarp_stabilize_mode smode;
     uint32_t levels;
-    if (!parse_stabilize(cli_opt(a, "stabilize"), &smode, &levels)) {
-        fprintf(stderr, "swtool cascade: --stabilize none|sphere|levels:N\n");
-        return 2;
-    }
+    if (!cascade_scheme(a, &so) || !cascade_stabilize(a, &smode, &levels)) return CLI_EXIT_USAGE;
     const char* warp = cli_opt(a, "warp");
     int lispsm = warp && strcmp(warp, "lispsm") == 0;
-    if (warp && !lispsm && strcmp(warp, "none") != 0) {
-        fprintf(stderr, "swtool cascade: --warp none|lispsm\n");
-        return 2;
-    }
+    if (warp && !lispsm && strcmp(warp, "none") != 0)
+        return cli_fail(a, "--warp", "expects none|lispsm, got '%s'", warp);
     if (lispsm && smode != SWARP_STABILIZE_NONE)
         return cli_report_status(a, SWARP_ERR_STABILIZE_WARPED, "--stabilize with --warp lispsm");
     if (K == 0 || K > SWARP_SPLIT_MAX_COUNT) return cli_report_status(a, SWARP_ERR_SPLIT_COUNT, "--splits");
@@ -230,10 +248,8 @@ static int cascade_model(sw_args* a) {
         cmz[SWARP_SPLIT_MAX_COUNT * 4096];
     size_t ncurve = 0;
     if (curve) {
-        if (samples < 2 || samples > 4096) {
-            fprintf(stderr, "swtool cascade: --samples 2..4096\n");
-            return 2;
-        }
+        if (samples < 2 || samples > 4096)
+            return cli_fail(a, "--samples", "expects 2..4096, got %u", samples);
         st = swarp_cascade_error_curve(&cfg, c, np, K, samples, z, cmx, cmz,
                                        sizeof z / sizeof z[0], &ncurve);
         if (swarp_status_is_error(st)) return cli_report_status(a, st, "swarp_cascade_error_curve");
@@ -310,48 +326,21 @@ static int parse_warp_per_split(const char* s, unsigned K, swarp_cascade_options
 /* The scene form: camera, light and scene box as for `swtool setup`, then
  * swarp_cascade_setup. */
 static int cascade_scene(sw_args* a) {
-    static const char* const known[] = {"eye", "dir", "up", "fovy", "aspect", "near", "far", "light-dir",
-                                        "light-pos", "box", "map", "screen", "technique", "depth",
-                                        "splits", "scheme", "stabilize", "origin", "kernel", "curve",
-                                        "samples", "min-depth", "warp-per-split", NULL};
-    if (!cli_check_known(a, known)) return 2;
-    swarp_camera cam;
-    memset(&cam, 0, sizeof cam);
+    CLI_ACCEPT(a, cascade_scene_known);
+    swarp_camera cam = {{0, 0, 0}, {0, 0, 0}, {0, 1, 0}, 60.0 * SW_DEG, 16.0 / 9.0, 1.0, 100.0, {0}};
     swarp_light light;
     memset(&light, 0, sizeof light);
     swarp_cascade_options o;
     memset(&o, 0, sizeof o);
-    double fovy_deg, boxv[6], kernel;
+    swarp_aabb box;
+    double kernel;
     unsigned map, sw, sh, K, samples;
-    if (!cli_vec3(a, "eye", 1, &cam.eye) || !cli_vec3(a, "dir", 1, &cam.dir)) return 2;
-    cam.up = (swarp_vec3){0, 1, 0};
-    if (!cli_vec3(a, "up", 0, &cam.up) || !cli_double(a, "fovy", 60.0, &fovy_deg) ||
-        !cli_double(a, "aspect", 16.0 / 9.0, &cam.aspect) || !cli_double(a, "near", 1.0, &cam.z_near) ||
-        !cli_double(a, "far", 100.0, &cam.z_far) || !cli_uint(a, "map", 1024, &map) ||
-        !cli_size(a, "screen", 1920, 1080, &sw, &sh) || !cli_uint(a, "splits", 4, &K) ||
-        !cli_double(a, "kernel", 1.0, &kernel) || !cli_uint(a, "samples", 64, &samples) ||
-        !cli_vec3(a, "origin", 0, &o.stabilize.origin) || !cli_double(a, "min-depth", 0.0, &o.setup.min_depth))
-        return 2;
-    cam.fovy = fovy_deg * SW_DEG;
-    const char* ld = cli_opt(a, "light-dir");
-    const char* lp = cli_opt(a, "light-pos");
-    if ((ld != NULL) == (lp != NULL)) {
-        fprintf(stderr, "swtool %s: give exactly one of --light-dir x,y,z and --light-pos x,y,z\n", a->argv[0]);
-        return 2;
-    }
-    if (ld) {
-        light.type = SWARP_LIGHT_DIRECTIONAL;
-        if (!cli_vec3(a, "light-dir", 1, &light.direction)) return 2;
-    } else {
-        light.type = SWARP_LIGHT_POINT;
-        if (!cli_vec3(a, "light-pos", 1, &light.position)) return 2;
-    }
-    const char* bs = cli_opt(a, "box");
-    if (!bs || !cli_parse_list(bs, boxv, 6)) {
-        fprintf(stderr, "swtool %s: --box x0,y0,z0,x1,y1,z1 is required\n", a->argv[0]);
-        return 2;
-    }
-    swarp_aabb box = {{boxv[0], boxv[1], boxv[2]}, {boxv[3], boxv[4], boxv[5]}};
+    if (!cli_camera(a, 1, &cam) || !cli_light(a, 1, &light) || !cli_box(a, 1, &box) ||
+        !cli_map_square(a, 1024, &map) || !cli_size(a, "screen", 1920, 1080, &sw, &sh) ||
+        !cli_uint(a, "splits", 4, &K) || !cli_double(a, "kernel", 1.0, &kernel) ||
+        !cli_uint(a, "samples", 64, &samples) || !cli_vec3(a, "origin", 0, &o.stabilize.origin) ||
+        !cli_double(a, "min-depth", 0.0, &o.setup.min_depth) || !cli_depth(a, &o.setup.depth_range))
+        return CLI_EXIT_USAGE;
     o.setup.map_width = o.setup.map_height = map;
     o.setup.screen_width = sw;
     o.setup.screen_height = sh;
@@ -366,16 +355,10 @@ static int cascade_scene(sw_args* a) {
     } else if (strcmp(tech, "psm") == 0) {
         o.setup.technique = SWARP_TECHNIQUE_PSM;
     } else {
-        fprintf(stderr, "swtool %s: --technique uniform|lispsm|repar|psm, got '%s'\n", a->argv[0], tech);
-        return 2;
+        return cli_fail(a, "--technique", "expects uniform|lispsm|repar|psm (a cascade), got '%s'", tech);
     }
-    const char* depth = cli_opt(a, "depth");
-    o.setup.depth_range = depth && strcmp(depth, "zo") == 0 ? SWARP_DEPTH_ZERO_TO_ONE : SWARP_DEPTH_NEG_ONE_TO_ONE;
     o.split.count = K;
-    if (!parse_scheme(cli_opt(a, "scheme"), &o.split)) {
-        fprintf(stderr, "swtool %s: --scheme uniform|log|practical:L|pseudo:NP,FP[,L]\n", a->argv[0]);
-        return 2;
-    }
+    if (!cascade_scheme(a, &o.split)) return CLI_EXIT_USAGE;
     if (o.split.scheme == SWARP_SCHEME_PSEUDO && o.setup.technique == SWARP_TECHNIQUE_LISPSM &&
         o.setup.param == SWARP_WARP_PARAM_DEFAULT) {
         /* [RHS] §4.2: the pseudo planes also shape the first and last warps */
@@ -384,17 +367,12 @@ static int cascade_scene(sw_args* a) {
         o.setup.pseudo_far = o.split.pseudo_far;
     }
     uint32_t levels;
-    if (!parse_stabilize(cli_opt(a, "stabilize"), &o.stabilize.mode, &levels)) {
-        fprintf(stderr, "swtool %s: --stabilize none|sphere|levels:N\n", a->argv[0]);
-        return 2;
-    }
+    if (!cascade_stabilize(a, &o.stabilize.mode, &levels)) return CLI_EXIT_USAGE;
     o.stabilize.levels = levels;
     o.kernel_world_size = kernel;
-    if (!parse_warp_per_split(cli_opt(a, "warp-per-split"), K, &o)) {
-        fprintf(stderr, "swtool %s: --warp-per-split first[:N0] | N0,N1,... (n' per split, eye units; "
-                        "0 = the technique's, inf = uniform; at most --splits values)\n", a->argv[0]);
-        return 2;
-    }
+    if (!parse_warp_per_split(cli_opt(a, "warp-per-split"), K, &o))
+        return cli_fail(a, "--warp-per-split", "expects first[:N0] or N0,N1,... (n' per split, eye units; 0 = the "
+                        "technique's, inf = uniform; at most --splits values), got '%s'", cli_opt(a, "warp-per-split"));
     swarp_cascade_result r;
     swarp_cascade_split sp[SWARP_CASCADE_MAX_SPLITS];
     size_t n;
@@ -405,10 +383,8 @@ static int cascade_scene(sw_args* a) {
     size_t ncurve = 0;
     const int curve = cli_flag(a, "curve");
     if (curve) {
-        if (samples < 2 || samples > 4096) {
-            fprintf(stderr, "swtool %s: --samples 2..4096\n", a->argv[0]);
-            return 2;
-        }
+        if (samples < 2 || samples > 4096)
+            return cli_fail(a, "--samples", "expects 2..4096, got %u", samples);
         swarp_error_config cfg;
         memset(&cfg, 0, sizeof cfg);
         cfg.z_near = r.view_near;
@@ -431,6 +407,7 @@ static int cascade_scene(sw_args* a) {
         json_kv_arr("splits", r.splits, n + 1);
         json_kv_num("max_mx", r.max_mx);
         json_kv_num("max_mz", r.max_mz);
+        json_kv_measured(&r.measured);
         json_kv_num("atlas_res", r.atlas.atlas_res);
         json_kv_num("l_sc", r.atlas.l_sc);
         json_key("split");
@@ -453,6 +430,7 @@ static int cascade_scene(sw_args* a) {
             json_kv_num("mz_start", sp[i].mz_start);
             json_kv_num("texel_size", sp[i].texel_size);
             json_kv_num("depth_per_world", sp[i].depth_per_world);
+            json_kv_measured(&sp[i].measured);
             json_close_obj();
         }
         json_close_arr();
@@ -472,7 +450,9 @@ static int cascade_scene(sw_args* a) {
     printf("status      %s\n", swarp_status_name(st));
     printf("view range  [%.9g, %.9g] (adjusted, [RHS] 3.3.1), %zu splits\n", r.view_near, r.view_far, n);
     printf("atlas       %gx%g texels, l_sc %g\n", r.atlas.atlas_res, r.atlas.atlas_res, r.atlas.l_sc);
-    printf("whole       max m_x %.6g, max m_z %.6g\n", r.max_mx, r.max_mz);
+    printf("whole       model max m_x %.6g, max m_z %.6g (Lloyd, overhead light on the view axis)\n", r.max_mx,
+           r.max_mz);
+    print_measured("whole ", &r.measured);
     for (size_t i = 0; i < n; ++i) {
         const swarp_cascade_split* q = &sp[i];
         printf("\nsplit %zu     [%.9g, %.9g]  %s\n", i, q->z_near, q->z_far, swarp_status_name(q->status));
@@ -485,10 +465,8 @@ static int cascade_scene(sw_args* a) {
         printf("  max m_z    %.6g  (%.6g just after the border)\n", q->max_mz, q->mz_start);
         if (q->texel_size > 0) printf("  texel      %.9g world units (stabilised)\n", q->texel_size);
         printf("  depth/world %.6g window depth per world unit toward the light\n", q->depth_per_world);
-        printf("  matrix (column-major):\n");
-        for (int row = 0; row < 4; ++row)
-            printf("    %14.8g %14.8g %14.8g %14.8g\n", q->matrix.m[row], q->matrix.m[4 + row],
-                   q->matrix.m[8 + row], q->matrix.m[12 + row]);
+        print_measured("  ", &q->measured);
+        print_matrix_rows("  ", "matrix", &q->matrix);
     }
     return cli_report_status(a, st, "swarp_cascade_setup");
 }
@@ -496,6 +474,7 @@ static int cascade_scene(sw_args* a) {
 /* swtool cascade: the scene form when --eye is given, else the error-model
  * form; `swtool setup --splits K ...` lands here too. */
 int cmd_cascade(sw_args* a) {
+    if (a->help) return cli_usage(a, cascade_model_known, cascade_scene_known);
     if (cli_opt(a, "eye")) return cascade_scene(a);
     return cascade_model(a);
 }

@@ -10,7 +10,8 @@
 
 #define CURVE_MAX_SAMPLES 100000u
 
-/* "uniform" | "log" | "practical:L" -> lambda of [RHS] (3.8) */
+/* "uniform" | "log" | "practical" (L = 0.5) | "practical:L" -> lambda of [RHS] (3.8),
+ * the spelling of `cascade --scheme` */
 static int parse_scheme(const char* s, double* lambda) {
     if (strcmp(s, "uniform") == 0) {
         *lambda = 0.0;
@@ -18,6 +19,10 @@ static int parse_scheme(const char* s, double* lambda) {
     }
     if (strcmp(s, "log") == 0) {
         *lambda = 1.0;
+        return 1;
+    }
+    if (strcmp(s, "practical") == 0) {
+        *lambda = 0.5;
         return 1;
     }
     if (strncmp(s, "practical:", 10) == 0) {
@@ -46,27 +51,21 @@ int cmd_curve(sw_args* a) {
     const char* tname = cli_opt(a, "technique");
     const char* scheme = cli_opt(a, "scheme");
     sw_tech tech = TECH_LISPSM;
-    if (!cli_check_known(a, known) || !cli_double_req(a, "near", &n) || !cli_double_req(a, "far", &f) ||
+    CLI_ACCEPT(a, known);
+    if (!cli_double_req(a, "near", &n) || !cli_double_req(a, "far", &f) ||
         !cli_double_req(a, "fovy", &fovy_deg) || !cli_double(a, "gamma", 90.0, &gamma_deg) ||
         !cli_uint(a, "splits", 1, &m) || !cli_uint(a, "samples", 201, &samples) ||
-        !cli_size(a, "screen", 1024, 768, &sw, &sh) || !cli_size(a, "map", 1024, 1024, &mw, &mh)) {
-        cli_report_status(a, SWARP_ERR_INVALID_ARGUMENT, "arguments");
-        return 2;
-    }
-    if (!tname || !tech_parse(tname, &tech)) {
-        fprintf(stderr, "swtool curve: --technique uniform|psm|lispsm|repar|gmnpr|glpr is required\n");
-        cli_report_status(a, SWARP_ERR_INVALID_ARGUMENT, "--technique");
-        return 2;
-    }
-    if (scheme && !parse_scheme(scheme, &lambda_split)) {
-        fprintf(stderr, "swtool curve: --scheme uniform|log|practical:L, got '%s'\n", scheme);
-        cli_report_status(a, SWARP_ERR_INVALID_ARGUMENT, "--scheme");
-        return 2;
-    }
+        !cli_size(a, "screen", 1024, 768, &sw, &sh) || !cli_map(a, 1024, &mw, &mh))
+        return CLI_EXIT_USAGE;
+    if (!tname) return cli_fail(a, NULL, "--technique uniform|psm|lispsm|repar|gmnpr|glpr is required");
+    if (!tech_parse(tname, &tech))
+        return cli_fail(a, "--technique", "expects uniform|psm|lispsm|repar|gmnpr|glpr, got '%s'", tname);
+    if (scheme && !parse_scheme(scheme, &lambda_split))
+        return cli_fail(a, "--scheme", "expects uniform|log|practical[:L], got '%s'", scheme);
     if (samples < 2 || samples > CURVE_MAX_SAMPLES)
-        return cli_report_status(a, SWARP_ERR_OUT_OF_RANGE, "--samples (2..100000)");
+        return cli_fail(a, "--samples", "expects 2..%u, got %u", CURVE_MAX_SAMPLES, samples);
     if (!(gamma_deg >= 0.0 && gamma_deg <= 180.0))
-        return cli_report_status(a, SWARP_ERR_OUT_OF_RANGE, "--gamma (degrees, 0..180)");
+        return cli_fail(a, "--gamma", "expects degrees in [0, 180], got '%s'", cli_opt(a, "gamma"));
     double theta = 0.5 * fovy_deg * SW_DEG;
     double gamma = (gamma_deg > 90.0 ? 180.0 - gamma_deg : gamma_deg) * SW_DEG;
 

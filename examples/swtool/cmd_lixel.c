@@ -72,52 +72,33 @@ static double ray_hit(const lx_cam* c, unsigned g, unsigned h, const swarp_plane
 int cmd_lixel(sw_args* a) {
     static const char* const known[] = {"eye", "dir", "up", "fovy", "aspect", "near", "far", "screen",
                                         "light-pos", "light-dir", "plane", "twist-line", "scale",
-                                        "extent", "depth01", "plane-depth", NULL};
-    if (!cli_check_known(a, known)) return 2;
-    swarp_vec3 eye = v3(0, 1.7, 5), dir = v3(0, -0.3, -1), up = v3(0, 1, 0), lpos, ldir;
-    double fovy = 60, aspect = 0, near = 0.1, far = 100, scale = 1, extent = 0, plane_depth = 0;
+                                        "extent", "depth", "plane-depth", NULL};
+    CLI_ACCEPT(a, known);
+    /* aspect 0 until given: then the screen's */
+    swarp_camera c = {{0, 1.7, 5}, {0, -0.3, -1}, {0, 1, 0}, 60.0 * SW_DEG, 0.0, 0.1, 100.0, {0}};
+    double scale = 1, extent = 0, plane_depth = 0;
     unsigned g = 1024, h = 768;
-    if (!cli_vec3(a, "eye", 0, &eye) || !cli_vec3(a, "dir", 0, &dir) || !cli_vec3(a, "up", 0, &up) ||
-        !cli_double(a, "fovy", 60, &fovy) || !cli_double(a, "aspect", 0, &aspect) ||
-        !cli_double(a, "near", 0.1, &near) || !cli_double(a, "far", 100, &far) ||
-        !cli_size(a, "screen", 1024, 768, &g, &h) || !cli_double(a, "scale", 1, &scale) ||
-        !cli_double(a, "extent", 0, &extent) || !cli_double(a, "plane-depth", 0, &plane_depth))
-        return 2;
-    if (aspect == 0) aspect = (double)g / h;
-    int has_pos = cli_opt(a, "light-pos") != NULL, has_dir = cli_opt(a, "light-dir") != NULL;
-    if (has_pos == has_dir) {
-        fprintf(stderr, "swtool lixel: give exactly one of --light-pos x,y,z and --light-dir x,y,z\n");
-        return 2;
-    }
     swarp_light light;
     memset(&light, 0, sizeof light);
-    if (has_pos) {
-        if (!cli_vec3(a, "light-pos", 1, &lpos)) return 2;
-        light.type = SWARP_LIGHT_POINT;
-        light.position = lpos;
-    } else {
-        if (!cli_vec3(a, "light-dir", 1, &ldir)) return 2;
-        light.type = SWARP_LIGHT_DIRECTIONAL;
-        light.direction = ldir;
-    }
-    double pl[4] = {0, 1, 0, 0};
-    if (cli_opt(a, "plane") && !cli_parse_list(cli_opt(a, "plane"), pl, 4)) {
-        fprintf(stderr, "swtool lixel: --plane expects a,b,c,d\n");
-        return 2;
-    }
+    double pl[4] = {0, 1, 0, 0}, tl[9];
+    swarp_depth_range dr;
+    if (!cli_camera(a, 0, &c) || !cli_size(a, "screen", 1024, 768, &g, &h) || !cli_double(a, "scale", 1, &scale) ||
+        !cli_double(a, "extent", 0, &extent) || !cli_double(a, "plane-depth", 0, &plane_depth) ||
+        !cli_light(a, 1, &light) || !cli_list(a, "plane", 4, "A,B,C,D", pl) ||
+        !cli_list(a, "twist-line", 9, "AX,AY,AZ,BX,BY,BZ,CX,CY,CZ: two points of the line, then a point on the "
+                  "side kept below it", tl) ||
+        !cli_depth(a, &dr))
+        return CLI_EXIT_USAGE;
+    if (!cli_opt(a, "aspect")) c.aspect = (double)g / h;
+    swarp_vec3 eye = c.eye, dir = c.dir, up = c.up;
+    double fovy = c.fovy / SW_DEG, aspect = c.aspect, near = c.z_near, far = c.z_far;
     swarp_plane P = {pl[0], pl[1], pl[2], pl[3]};
-    double tl[9];
     int has_twist = cli_opt(a, "twist-line") != NULL;
-    if (has_twist && !cli_parse_list(cli_opt(a, "twist-line"), tl, 9)) {
-        fprintf(stderr, "swtool lixel: --twist-line expects ax,ay,az,bx,by,bz,cx,cy,cz (two points of the line, "
-                        "then a point on the side kept below it)\n");
-        return 2;
-    }
     swarp_mat4 Mv;
     lx_cam cam;
     if (!camera_matrix(eye, dir, up, fovy * SW_DEG, aspect, near, far, &Mv, &cam)) {
-        fprintf(stderr, "swtool lixel: degenerate camera (dir, up, fovy, aspect, near/far)\n");
-        return 2;
+        return cli_fail(a, NULL, "the camera is degenerate: need |--dir| > 0, 0 < --fovy < 180, --aspect > 0, "
+                        "0 < --near < --far");
     }
 
     swarp_mat4 Ml;
@@ -155,7 +136,6 @@ int cmd_lixel(sw_args* a) {
     swarp_mat4 A, Mr, GLV, GLP;
     swarp_status rs = swarp_lixel_restrict(&Ml, C, 4, &ro, &R, &A, &Mr);
     if (swarp_status_is_error(rs)) return cli_report_status(a, rs, "swarp_lixel_restrict");
-    swarp_depth_range dr = cli_flag(a, "depth01") ? SWARP_DEPTH_ZERO_TO_ONE : SWARP_DEPTH_NEG_ONE_TO_ONE;
     swarp_status fs = swarp_lixel_factor(&Mr, R.width, R.height, dr, plane_depth, &GLV, &GLP);
     if (swarp_status_is_error(fs)) return cli_report_status(a, fs, "swarp_lixel_factor");
 
@@ -213,7 +193,7 @@ int cmd_lixel(sw_args* a) {
         json_end();
     } else {
         if (shown != SWARP_OK) cli_report_status(a, shown, "note");
-        printf("M_l (rows):\n");
+        printf("M_l (rows of the matrix; the JSON and C arrays are column-major):\n");
         for (int r4 = 0; r4 < 4; ++r4)
             printf("  % .9e % .9e % .9e % .9e\n", Ml.m[r4], Ml.m[4 + r4], Ml.m[8 + r4], Ml.m[12 + r4]);
         printf("rectangle  x %d..%d  y %d..%d  (%u x %u lixels for %u x %u pixels)\n", R.x0, R.x1, R.y0, R.y1,

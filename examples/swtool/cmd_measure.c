@@ -9,19 +9,6 @@
 /* Points held at most: the file is read in blocks of this many. */
 #define MEASURE_BLOCK 256
 
-static int read_camera(sw_args* a, swarp_camera* cam) {
-    memset(cam, 0, sizeof *cam);
-    double fovy_deg = 60.0;
-    if (!cli_vec3(a, "eye", 1, &cam->eye) || !cli_vec3(a, "dir", 1, &cam->dir)) return 0;
-    cam->up = (swarp_vec3){0, 1, 0};
-    if (!cli_vec3(a, "up", 0, &cam->up)) return 0;
-    if (!cli_double(a, "fovy", 60.0, &fovy_deg) || !cli_double(a, "aspect", 16.0 / 9.0, &cam->aspect) ||
-        !cli_double(a, "near", 1.0, &cam->z_near) || !cli_double(a, "far", 100.0, &cam->z_far))
-        return 0;
-    cam->fovy = fovy_deg * SW_DEG;
-    return 1;
-}
-
 /* Reads up to MEASURE_BLOCK lines "x y z nx ny nz"; returns the count, or
  * -1 (with a message naming the line) on a malformed line. */
 static int read_block(FILE* f, const char* path, long* line, swarp_vec3* p, swarp_vec3* n) {
@@ -33,9 +20,14 @@ static int read_block(FILE* f, const char* path, long* line, swarp_vec3* p, swar
         while (*s == ' ' || *s == '\t') ++s;
         if (*s == '\n' || *s == '#' || *s == '\0') continue;
         char tail;
+        if (strchr(s, '\n') == NULL && !feof(f)) {
+            fprintf(stderr, "swtool measure: --points %s:%ld: line longer than %zu bytes\n", path, *line,
+                    sizeof buf - 1);
+            return -1;
+        }
         if (sscanf(s, "%lf %lf %lf %lf %lf %lf %c", &p[k].x, &p[k].y, &p[k].z, &n[k].x, &n[k].y,
                    &n[k].z, &tail) != 6) {
-            fprintf(stderr, "swtool measure: %s:%ld: expected 'x y z nx ny nz'\n", path, *line);
+            fprintf(stderr, "swtool measure: --points %s:%ld: expected 'x y z nx ny nz'\n", path, *line);
             return -1;
         }
         ++k;
@@ -61,7 +53,7 @@ static void print_point(const sw_args* a, const swarp_texel_error* e) {
 }
 
 static swarp_status measure_file(sw_args* a, FILE* f, const char* path, const swarp_camera* cam,
-                                 const swarp_mat4* m, const swarp_measure_res* res, int* bad) {
+                                 const swarp_mat4* m, const swarp_measure_res* res, long* bad_line) {
     swarp_vec3 p[MEASURE_BLOCK], n[MEASURE_BLOCK];
     swarp_texel_error e[MEASURE_BLOCK];
     swarp_status result = SWARP_OK;
@@ -73,35 +65,27 @@ static swarp_status measure_file(sw_args* a, FILE* f, const char* path, const sw
         if (s != SWARP_OK) result = s;
         for (int i = 0; i < k; ++i) print_point(a, &e[i]);
     }
-    *bad = k < 0;
+    *bad_line = k < 0 ? line : 0;
     return result;
 }
 
 int cmd_measure(sw_args* a) {
     static const char* const known[] = {"eye", "dir", "up", "fovy", "aspect", "near", "far",
                                         "matrix", "map", "screen", "points", NULL};
-    if (!cli_check_known(a, known)) return 2;
-    swarp_camera cam;
-    if (!read_camera(a, &cam)) return 2;
+    CLI_ACCEPT(a, known);
+    swarp_camera cam = {{0, 0, 0}, {0, 0, 0}, {0, 1, 0}, 60.0 * SW_DEG, 16.0 / 9.0, 1.0, 100.0, {0}};
     swarp_mat4 m;
-    const char* ms = cli_opt(a, "matrix");
-    if (!ms || !cli_parse_list(ms, m.m, 16)) {
-        fprintf(stderr, "swtool measure: --matrix takes 16 numbers (column-major world -> light clip)\n");
-        return 2;
-    }
-    unsigned map = 2048, sw = 1920, sh = 1080;
-    if (!cli_uint(a, "map", 2048, &map) || !cli_size(a, "screen", 1920, 1080, &sw, &sh)) return 2;
-    const swarp_measure_res res = {sw, sh, map, map};
+    unsigned mw, mh, sw, sh;
+    if (!cli_camera(a, 1, &cam) || !cli_map(a, 2048, &mw, &mh) || !cli_size(a, "screen", 1920, 1080, &sw, &sh))
+        return CLI_EXIT_USAGE;
+    if (!cli_opt(a, "matrix"))
+        return cli_fail(a, NULL, "--matrix is required (16 numbers, column-major world -> light clip)");
+    if (!cli_list(a, "matrix", 16, "column-major world -> light clip", m.m)) return CLI_EXIT_USAGE;
+    const swarp_measure_res res = {sw, sh, mw, mh};
     const char* path = cli_opt(a, "points");
-    if (!path) {
-        fprintf(stderr, "swtool measure: --points FILE is required (lines 'x y z nx ny nz')\n");
-        return 2;
-    }
+    if (!path) return cli_fail(a, NULL, "--points FILE is required (lines 'x y z nx ny nz'; - = stdin)");
     FILE* f = strcmp(path, "-") == 0 ? stdin : fopen(path, "r");
-    if (!f) {
-        fprintf(stderr, "swtool measure: cannot open --points '%s'\n", path);
-        return 2;
-    }
+    if (!f) return cli_fail(a, "--points", "cannot open '%s'", path);
     if (a->json) {
         json_begin();
         json_key("points");
@@ -109,15 +93,24 @@ int cmd_measure(sw_args* a) {
     } else {
         printf("%14s %14s %14s  %s\n", "m_s", "m_t", "sigma", "in map");
     }
-    int bad = 0;
-    swarp_status s = measure_file(a, f, path, &cam, &m, &res, &bad);
+    long bad_line = 0;
+    swarp_status s = measure_file(a, f, path, &cam, &m, &res, &bad_line);
     if (f != stdin) fclose(f);
+    char where[1100];
+    snprintf(where, sizeof where, "--points %s:%ld", path, bad_line);
     if (a->json) {
         json_close_arr();
-        json_kv_status(bad ? SWARP_ERR_INVALID_ARGUMENT : s);
+        if (bad_line) {
+            json_kv_str("status", "SWTOOL_ERR_USAGE");
+            json_kv_str("message", "a line of the points file is not 'x y z nx ny nz'");
+            json_kv_str("option", where);
+        } else {
+            cli_status_fields(a, s, "swarp_measure_points");
+        }
         json_end();
+        if (bad_line) return CLI_EXIT_USAGE;
+        return swarp_status_is_error(s) ? CLI_EXIT_LIBRARY : CLI_EXIT_OK;
     }
-    if (bad) return 2;
-    if (swarp_status_is_error(s) && !a->json) return cli_report_status(a, s, "swarp_measure_points");
-    return swarp_status_is_error(s) ? 1 : 0;
+    if (bad_line) return CLI_EXIT_USAGE;
+    return cli_report_status(a, s, "swarp_measure_points");
 }

@@ -94,14 +94,13 @@ typedef struct item {
 int cmd_params(sw_args* a) {
     static const char* const known[] = {"near", "far", "fovy", "gamma", "np", "fp", NULL};
     double n, f, fovy_deg, gamma_deg, n_p = 0.0, f_p = 0.0;
-    if (!cli_check_known(a, known) || !cli_double_req(a, "near", &n) || !cli_double_req(a, "far", &f) ||
+    CLI_ACCEPT(a, known);
+    if (!cli_double_req(a, "near", &n) || !cli_double_req(a, "far", &f) ||
         !cli_double_req(a, "fovy", &fovy_deg) || !cli_double_req(a, "gamma", &gamma_deg) ||
-        !cli_double(a, "np", 0.0, &n_p) || !cli_double(a, "fp", 0.0, &f_p)) {
-        cli_report_status(a, SWARP_ERR_INVALID_ARGUMENT, "arguments");
-        return 2;
-    }
+        !cli_double(a, "np", 0.0, &n_p) || !cli_double(a, "fp", 0.0, &f_p))
+        return CLI_EXIT_USAGE;
     if (!(gamma_deg >= 0.0 && gamma_deg <= 180.0))
-        return cli_report_status(a, SWARP_ERR_OUT_OF_RANGE, "--gamma (degrees, 0..180)");
+        return cli_fail(a, "--gamma", "expects degrees in [0, 180], got '%s'", cli_opt(a, "gamma"));
     double theta = 0.5 * fovy_deg * SW_DEG;
     /* the light/view angle matters only up to its supplement */
     double gamma = (gamma_deg > 90.0 ? 180.0 - gamma_deg : gamma_deg) * SW_DEG;

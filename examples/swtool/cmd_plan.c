@@ -10,28 +10,27 @@
 static const char* const plan_known[] = {
     "gamma", "eye", "dir", "up", "light-dir", "light-pos", "fovy", "aspect", "near", "far",
     "screen", "moves", "soft", "bleed", "clamp", "plane", "plane2", "plane3", "plane4",
-    "box-min", "box-max", "max-error", "map", "atlas", "max-passes", "time-ms", "pass-ms",
+    "box", "max-error", "map", "atlas", "max-passes", "time-ms", "pass-ms",
     "blur-ms", "force", "splits", "scheme", NULL};
 
-static int parse_bleed(const char* s, swarp_plan_bleed* out) {
+static int parse_bleed(const sw_args* a, const char* s, swarp_plan_bleed* out) {
     static const char* names[] = {"none", "low", "high", "extreme"};
     for (int i = 0; i < 4; ++i)
         if (strcmp(s, names[i]) == 0) {
             *out = (swarp_plan_bleed)(SWARP_PLAN_BLEED_NONE + i);
             return 1;
         }
-    fprintf(stderr, "swtool plan: --bleed expects none|low|high|extreme, got '%s'\n", s);
+    cli_fail(a, "--bleed", "expects none|low|high|extreme, got '%s'", s);
     return 0;
 }
 
-static int parse_warp(const char* s, swarp_plan_warp* out) {
+static int parse_warp(const sw_args* a, const char* s, swarp_plan_warp* out) {
     for (int w = SWARP_PLAN_WARP_UNIFORM; w <= SWARP_PLAN_WARP_PSM; ++w)
         if (strcmp(s, swarp_plan_warp_name((swarp_plan_warp)w)) == 0) {
             *out = (swarp_plan_warp)w;
             return 1;
         }
-    fprintf(stderr, "swtool plan: --force expects uniform|lispsm-nopt|lispsm-nrepar|"
-                    "lispsm-gmnpr|lispsm-pseudo|psm, got '%s'\n", s);
+    cli_fail(a, "--force", "expects uniform|lispsm-nopt|lispsm-nrepar|lispsm-gmnpr|lispsm-pseudo|psm, got '%s'", s);
     return 0;
 }
 
@@ -39,31 +38,18 @@ static int parse_warp(const char* s, swarp_plan_warp* out) {
 static int plan_inputs(const sw_args* a, swarp_scene_needs* n, swarp_budget* b) {
     memset(n, 0, sizeof *n);
     memset(b, 0, sizeof *b);
-    double fovy, gamma;
-    if (!cli_double(a, "fovy", 60.0, &fovy) || !cli_double(a, "aspect", 4.0 / 3.0, &n->camera.aspect) ||
-        !cli_double(a, "near", 1.0, &n->camera.z_near) || !cli_double(a, "far", 100.0, &n->camera.z_far) ||
-        !cli_double(a, "gamma", 90.0, &gamma))
-        return 0;
-    n->camera.fovy = fovy * SW_DEG;
+    double gamma;
     /* the camera of the --gamma convenience: 2 above the ground looking
      * along -z; the light at gamma to the view in the view/up plane */
-    n->camera.eye = (swarp_vec3){0.0, 2.0, 0.0};
-    n->camera.dir = (swarp_vec3){0.0, 0.0, -1.0};
-    n->camera.up = (swarp_vec3){0.0, 1.0, 0.0};
-    if (!cli_vec3(a, "eye", 0, &n->camera.eye) || !cli_vec3(a, "dir", 0, &n->camera.dir) ||
-        !cli_vec3(a, "up", 0, &n->camera.up))
-        return 0;
+    n->camera = (swarp_camera){{0.0, 2.0, 0.0}, {0.0, 0.0, -1.0}, {0.0, 1.0, 0.0}, 60.0 * SW_DEG, 4.0 / 3.0, 1.0,
+                               100.0, {0}};
+    if (!cli_camera(a, 0, &n->camera) || !cli_double(a, "gamma", 90.0, &gamma)) return 0;
     n->light.type = SWARP_LIGHT_DIRECTIONAL;
     n->light.direction = (swarp_vec3){0.0, -sin(gamma * SW_DEG), cos(gamma * SW_DEG)};
-    if (cli_opt(a, "light-dir") && cli_opt(a, "light-pos")) {
-        fprintf(stderr, "swtool plan: give --light-dir or --light-pos, not both\n");
+    if (!cli_light(a, 0, &n->light)) return 0;
+    if (cli_opt(a, "gamma") && (cli_opt(a, "light-dir") || cli_opt(a, "light-pos"))) {
+        cli_fail(a, "--gamma", "places the light itself: give --gamma or a --light-dir/--light-pos, not both");
         return 0;
-    }
-    if (!cli_vec3(a, "light-dir", 0, &n->light.direction)) return 0;
-    if (cli_opt(a, "light-pos")) {
-        n->light.type = SWARP_LIGHT_POINT;
-        n->light.direction = (swarp_vec3){0.0, 0.0, 0.0};
-        if (!cli_vec3(a, "light-pos", 1, &n->light.position)) return 0;
     }
     unsigned sw, sh;
     if (!cli_size(a, "screen", 1024, 768, &sw, &sh)) return 0;
@@ -76,25 +62,19 @@ static int plan_inputs(const sw_args* a, swarp_scene_needs* n, swarp_budget* b) 
         if (!cli_double(a, "soft", 0.0, &n->soft_width)) return 0;
     }
     const char* bl = cli_opt(a, "bleed");
-    if (bl && !parse_bleed(bl, &n->bleed_risk)) return 0;
+    if (bl && !parse_bleed(a, bl, &n->bleed_risk)) return 0;
     static const char* plane_opts[4] = {"plane", "plane2", "plane3", "plane4"};
     for (int i = 0; i < 4; ++i) {
         const char* s = cli_opt(a, plane_opts[i]);
         if (!s) continue;
         double v[4];
-        if (!cli_parse_list(s, v, 4)) {
-            fprintf(stderr, "swtool plan: --%s expects a,b,c,d, got '%s'\n", plane_opts[i], s);
-            return 0;
-        }
+        if (!cli_list(a, plane_opts[i], 4, "A,B,C,D", v)) return 0;
         n->planes[n->plane_count++] = (swarp_plane){v[0], v[1], v[2], v[3]};
     }
-    if (cli_opt(a, "box-min") || cli_opt(a, "box-max")) {
-        if (!cli_vec3(a, "box-min", 1, &n->scene_box.min) || !cli_vec3(a, "box-max", 1, &n->scene_box.max))
-            return 0;
-    }
+    if (!cli_box(a, 0, &n->scene_box)) return 0;
     unsigned map, atlas, passes;
     double tms, pms, bms;
-    if (!cli_double(a, "max-error", 1.0, &b->max_error) || !cli_uint(a, "map", 2048, &map) ||
+    if (!cli_double(a, "max-error", 1.0, &b->max_error) || !cli_map_square(a, 2048, &map) ||
         !cli_uint(a, "atlas", 8192, &atlas) || !cli_uint(a, "max-passes", 16, &passes) ||
         !cli_double(a, "time-ms", 0.0, &tms) || !cli_double(a, "pass-ms", 0.0, &pms) ||
         !cli_double(a, "blur-ms", 0.0, &bms))
@@ -153,26 +133,27 @@ static void print_json(const struct swarp_plan* p, swarp_status s, const char* t
 }
 
 int cmd_plan(sw_args* a) {
-    if (!cli_check_known(a, plan_known)) return 2;
+    CLI_ACCEPT(a, plan_known);
     swarp_scene_needs n;
     swarp_budget b;
-    if (!plan_inputs(a, &n, &b)) return 2;
+    if (!plan_inputs(a, &n, &b)) return CLI_EXIT_USAGE;
     struct swarp_plan p;
     swarp_status s;
     const char* force = cli_opt(a, "force");
+    if (!force && (cli_opt(a, "splits") || cli_opt(a, "scheme")))
+        return cli_fail(a, cli_opt(a, "splits") ? "--splits" : "--scheme",
+                        "describes the chain of --force; the planner chooses its own");
     if (force) {
         swarp_plan_chain c;
         memset(&c, 0, sizeof c);
         unsigned K;
-        if (!parse_warp(force, &c.warp) || !cli_uint(a, "splits", 1, &K)) return 2;
+        if (!parse_warp(a, force, &c.warp) || !cli_uint(a, "splits", 1, &K)) return CLI_EXIT_USAGE;
         c.split_count = K;
         const char* sch = cli_opt(a, "scheme");
         c.scheme = K > 1 ? SWARP_PLAN_SCHEME_LOG : SWARP_PLAN_SCHEME_NONE;
         if (sch && strcmp(sch, "practical") == 0) c.scheme = SWARP_PLAN_SCHEME_PRACTICAL;
-        else if (sch && strcmp(sch, "log") != 0) {
-            fprintf(stderr, "swtool plan: --scheme expects log|practical\n");
-            return 2;
-        }
+        else if (sch && strcmp(sch, "log") != 0)
+            return cli_fail(a, "--scheme", "expects log|practical, got '%s'", sch);
         s = swarp_plan_evaluate(&n, &b, &c, &p);
     } else {
         s = swarp_plan(&n, &b, &p);

@@ -28,18 +28,17 @@ int cmd_report(sw_args* a) {
     unsigned sw, sh, mw, mh;
     double gammas[REPORT_MAX_GAMMAS] = {90, 60, 45, 30, 20, 10, 5};
     int ng = 7;
-    if (!cli_check_known(a, known) || !cli_double(a, "near", 1.0, &n) || !cli_double(a, "far", 100.0, &f) ||
+    CLI_ACCEPT(a, known);
+    if (!cli_double(a, "near", 1.0, &n) || !cli_double(a, "far", 100.0, &f) ||
         !cli_double(a, "fovy", 60.0, &fovy_deg) || !cli_size(a, "screen", 1024, 768, &sw, &sh) ||
-        !cli_size(a, "map", 1024, 1024, &mw, &mh)) {
-        cli_report_status(a, SWARP_ERR_INVALID_ARGUMENT, "arguments");
-        return 2;
-    }
+        !cli_map(a, 1024, &mw, &mh))
+        return CLI_EXIT_USAGE;
     const char* gl = cli_opt(a, "gammas");
-    if (gl && !parse_gammas(gl, gammas, &ng)) {
-        fprintf(stderr, "swtool report: --gammas expects up to %d comma-separated degrees\n", REPORT_MAX_GAMMAS);
-        cli_report_status(a, SWARP_ERR_INVALID_ARGUMENT, "--gammas");
-        return 2;
-    }
+    if (gl && !parse_gammas(gl, gammas, &ng))
+        return cli_fail(a, "--gammas", "expects 1..%d comma-separated degrees, got '%s'", REPORT_MAX_GAMMAS, gl);
+    for (int g = 0; g < ng; ++g)
+        if (!(gammas[g] >= 0.0 && gammas[g] <= 180.0))
+            return cli_fail(a, "--gammas", "expects degrees in [0, 180], got %g", gammas[g]);
     double theta = 0.5 * fovy_deg * SW_DEG;
     swarp_error_config cfg = {n, f, theta, sw, sh, mw, mh, {0}};
 
@@ -52,8 +51,6 @@ int cmd_report(sw_args* a) {
     row rows[REPORT_MAX_GAMMAS * TECH_COUNT];
     int nr = 0;
     for (int g = 0; g < ng; ++g) {
-        if (!(gammas[g] >= 0.0 && gammas[g] <= 180.0))
-            return cli_report_status(a, SWARP_ERR_OUT_OF_RANGE, "--gammas (degrees, 0..180)");
         double gamma = (gammas[g] > 90.0 ? 180.0 - gammas[g] : gammas[g]) * SW_DEG;
         for (int t = 0; t < TECH_COUNT; ++t) {
             row* r = &rows[nr++];

@@ -1,5 +1,6 @@
 /* swtool: the command-line face of libshadowwarp.  Every subcommand takes
- * --json and then prints exactly one JSON object (docs/swtool.md). */
+ * --json and then prints exactly one JSON object, whatever happens
+ * (docs/swtool.md; the conventions are in cli.h). */
 #include <stdio.h>
 #include <string.h>
 
@@ -24,11 +25,11 @@ static const sw_cmd commands[] = {
     {"lixel", cmd_lixel, "plane-stabilised light matrix M_l for --eye --dir --plane --light-pos|--light-dir"},
 
     /* stage: splits */
-    {"cascade", cmd_cascade, "splits, per-split warp, error maxima, atlas [--splits --scheme --stabilize --curve]"},
-    {"stabwalk", cmd_stabwalk, "texel coordinates of a fixed point while the camera moves [--res --steps]"},
+    {"cascade", cmd_cascade, "splits, per-split warp, error maxima, atlas; with --eye the scene form (swarp_cascade_setup)"},
+    {"stabwalk", cmd_stabwalk, "texel coordinates of a fixed point while the camera moves [--map --steps]"},
 
     /* stage: plan */
-    {"plan", cmd_plan, "the planner: --gamma/--eye/--dir.. --max-error --map --max-passes [--force W]"},
+    {"plan", cmd_plan, "the planner: --gamma or --eye/--dir/--light-dir, --max-error, --map, --max-passes [--force W]"},
     {"bench-report", cmd_bench_report, "accuracy/cost report: tables and Pareto data [--out-dir D]"},
 
     /* stage: extras */
@@ -38,24 +39,75 @@ static const sw_cmd commands[] = {
 };
 
 static void usage(FILE* f) {
-    fprintf(f, "usage: swtool <command> [options] [--json]\n\ncommands:\n");
+    fprintf(f, "usage: swtool COMMAND [OPTION...] [--json]\n"
+               "       swtool help [COMMAND] | swtool COMMAND --help | swtool --version\n\ncommands:\n");
     for (size_t i = 0; i < sizeof commands / sizeof commands[0]; ++i)
         fprintf(f, "  %-12s %s\n", commands[i].name, commands[i].help);
-    fprintf(f, "\nlibshadowwarp %s; docs/swtool.md documents every command.\n", swarp_version_string());
+    fprintf(f, "\nOptions are --opt VALUE or --opt=VALUE, each at most once; with --json every outcome is one\n"
+               "JSON object with \"status\".  Exit status: 0 success, 1 library error, 2 command-line mistake.\n"
+               "libshadowwarp %s; docs/swtool.md and swtool(1) document every command.\n",
+            swarp_version_string());
+}
+
+static const sw_cmd* find_command(const char* name) {
+    for (size_t i = 0; i < sizeof commands / sizeof commands[0]; ++i)
+        if (strcmp(name, commands[i].name) == 0) return &commands[i];
+    return NULL;
+}
+
+static int has_json(int argc, char** argv) {
+    for (int i = 1; i < argc; ++i)
+        if (strcmp(argv[i], "--json") == 0) return 1;
+    return 0;
+}
+
+/* A mistake before any command runs (no command, an unknown one): the same
+ * one JSON object as every other command-line mistake under --json. */
+static int top_level_mistake(int argc, char** argv, const char* msg, const char* what) {
+    fprintf(stderr, "swtool: %s%s%s\n\n", msg, what ? " " : "", what ? what : "");
+    usage(stderr);
+    if (has_json(argc, argv)) {
+        char text[256];
+        snprintf(text, sizeof text, "%s%s%s", msg, what ? " " : "", what ? what : "");
+        json_begin();
+        json_kv_str("status", "SWTOOL_ERR_USAGE");
+        json_kv_str("message", text);
+        json_end();
+    }
+    return CLI_EXIT_USAGE;
+}
+
+static int run_command(const sw_cmd* c, int argc, char** argv, int help) {
+    static sw_args a; /* static: CLI_MAX_GIVEN entries, once per process */
+    memset(&a, 0, sizeof a);
+    a.argc = argc;
+    a.argv = argv;
+    a.summary = c->help;
+    int rc = cli_parse(&a);
+    if (rc != CLI_GO) return rc;
+    if (help) a.help = 1;
+    return c->fn(&a);
 }
 
 int main(int argc, char** argv) {
-    if (argc < 2 || strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0) {
-        usage(argc < 2 ? stderr : stdout);
-        return argc < 2 ? 2 : 0;
+    if (argc < 2) return top_level_mistake(argc, argv, "a command is required", NULL);
+    const char* first = argv[1];
+    if (strcmp(first, "--help") == 0 || strcmp(first, "-h") == 0 ||
+        (strcmp(first, "help") == 0 && argc == 2)) {
+        usage(stdout);
+        return CLI_EXIT_OK;
     }
-    for (size_t i = 0; i < sizeof commands / sizeof commands[0]; ++i)
-        if (strcmp(argv[1], commands[i].name) == 0) {
-            sw_args a = {argc - 1, argv + 1, 0};
-            a.json = cli_flag(&a, "json");
-            return commands[i].fn(&a);
-        }
-    fprintf(stderr, "swtool: unknown command '%s'\n\n", argv[1]);
-    usage(stderr);
-    return 2;
+    if (strcmp(first, "--version") == 0) {
+        if (argc > 2) return top_level_mistake(argc, argv, "--version takes no arguments, got", argv[2]);
+        printf("swtool (libshadowwarp) %s\n", swarp_version_string());
+        return CLI_EXIT_OK;
+    }
+    if (strcmp(first, "help") == 0) {
+        const sw_cmd* c = find_command(argv[2]);
+        if (!c) return top_level_mistake(argc, argv, "help: unknown command", argv[2]);
+        return run_command(c, argc - 2, argv + 2, 1);
+    }
+    const sw_cmd* c = find_command(first);
+    if (!c) return top_level_mistake(argc, argv, "unknown command", first);
+    return run_command(c, argc - 1, argv + 1, 0);
 }

@@ -210,8 +210,13 @@ START_TEST(det_control_fails) {
     /* all of the struct but the 8 count bytes and one vertex */
     ck_assert_uint_eq(v.bad, sizeof(swarp_polyhedron) - 8 - sizeof(swarp_vec3));
     ck_assert_uint_eq(v.first_bad, 8 + sizeof(swarp_vec3));
-    v = det_run(c_control_stale);
-    ck_assert_uint_gt(v.bad, 0);
+    /* ASan gives locals frames of its own (redzones, the fake stack), which
+     * the fill of the stack below the call does not reach: a stale local is
+     * not observable there, so this control runs in the other builds */
+    if (!SW_UNDER_ASAN) {
+        v = det_run(c_control_stale);
+        ck_assert_uint_gt(v.bad, 0);
+    }
 }
 END_TEST
 
