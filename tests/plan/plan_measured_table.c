@@ -13,6 +13,7 @@
 #include <time.h>
 
 #include "shadowwarp.h"
+#include "plan_helpers.h"
 
 #define PI 3.14159265358979323846
 
@@ -27,13 +28,8 @@ static double cpu_seconds(void) {
 static swarp_scene_needs grid_scene(double gamma_deg, double fn) {
     swarp_scene_needs n;
     memset(&n, 0, sizeof n);
-    n.camera.eye = (swarp_vec3){0.0, 2.0, 0.0};
-    n.camera.dir = (swarp_vec3){0.0, 0.0, -1.0};
-    n.camera.up = (swarp_vec3){0.0, 1.0, 0.0};
-    n.camera.fovy = 60.0 * PI / 180.0;
+    n.camera = plan_test_camera(fn);
     n.camera.aspect = 16.0 / 9.0;
-    n.camera.z_near = 1.0;
-    n.camera.z_far = fn;
     const double g = gamma_deg * PI / 180.0;
     n.light.type = SWARP_LIGHT_DIRECTIONAL;
     n.light.direction = (swarp_vec3){0.3 * cos(g), -sin(g), cos(g)};

@@ -20,6 +20,7 @@
 
 #include "shadowwarp.h"
 #include "test_util.h"
+#include "plan_helpers.h"
 
 #define PI 3.14159265358979323846
 #define DEG (PI / 180.0)
@@ -39,13 +40,7 @@ static double rng_log(double a, double b) { return exp(rng_range(log(a), log(b))
 static swarp_scene_needs scene(double gamma_deg, double fn) {
     swarp_scene_needs n;
     memset(&n, 0, sizeof n);
-    n.camera.eye = (swarp_vec3){0.0, 2.0, 0.0};
-    n.camera.dir = (swarp_vec3){0.0, 0.0, -1.0};
-    n.camera.up = (swarp_vec3){0.0, 1.0, 0.0};
-    n.camera.fovy = 60.0 * DEG;
-    n.camera.aspect = 4.0 / 3.0;
-    n.camera.z_near = 1.0;
-    n.camera.z_far = fn;
+    n.camera = plan_test_camera(fn);
     double g = gamma_deg * DEG;
     n.light.type = SWARP_LIGHT_DIRECTIONAL;
     n.light.direction = (swarp_vec3){0.0, -sin(g), cos(g)};
@@ -57,15 +52,6 @@ static swarp_budget budget_of(double max_error) {
     memset(&b, 0, sizeof b);
     b.max_error = max_error;
     return b;
-}
-
-static swarp_plan_chain chain_of(swarp_plan_warp w, swarp_plan_scheme s, uint32_t K) {
-    swarp_plan_chain c;
-    memset(&c, 0, sizeof c);
-    c.warp = w;
-    c.scheme = s;
-    c.split_count = K;
-    return c;
 }
 
 /* ---- 1. the error model ----------------------------------------------------- */
