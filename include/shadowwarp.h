@@ -2646,7 +2646,8 @@ typedef struct swarp_plan {
      * swarp_plan leaves built = 0 and them zero (evaluate its chain). */
     uint32_t built;                   /**< 1: the matrices were built, the fields below hold */
     swarp_status built_status;        /**< swarp_cascade_setup's status for the chain (an
-                                           error: built = 0, e.g. SWARP_ERR_STABILIZE_LIGHT) */
+                                           error: built = 0, e.g. SWARP_ERR_STABILIZE_LIGHT;
+                                           SWARP_OK with built = 0: not asked for) */
     double built_splits[SWARP_PLAN_MAX_SPLITS + 1]; /**< the matrices' C_0 .. C_K
                                            (swarp_cascade_result.splits) */
     double built_n_eye[SWARP_PLAN_MAX_SPLITS]; /**< the n' each split's matrix uses, eye
@@ -2659,15 +2660,24 @@ typedef struct swarp_plan {
     uint32_t _reserved[4];
 } swarp_plan_result;
 
+/** What swarp_plan_evaluate builds besides the model's prediction. */
+typedef enum swarp_plan_matrices {
+    SWARP_PLAN_MATRICES_MEASURED = 0,   /**< the chain's matrices and their measured error
+                                             (the default; 0.2-0.55 ms) */
+    SWARP_PLAN_MATRICES_UNMEASURED = 1, /**< the matrices only: built_splits, built_n_eye;
+                                             measured zero (4-38 µs) */
+    SWARP_PLAN_MATRICES_NONE = 2,       /**< the model only (built = 0, built_status
+                                             SWARP_OK; a few µs) */
+    SWARP_PLAN_MATRICES_FORCE_I32 = 0x7FFFFFFF
+} swarp_plan_matrices;
+
 /** A chain to evaluate as it is (swarp_plan_evaluate). */
 typedef struct swarp_plan_chain {
     swarp_plan_warp warp;
     swarp_plan_scheme scheme;   /**< NONE requires split_count 1 (0 means 1) */
     uint32_t split_count;       /**< 0: 1 */
     swarp_plan_stabilize stabilize;
-    uint32_t skip_measure;      /**< 1: build the matrices without measuring them (built_splits
-                                     and built_n_eye only, measured zero: about 15x cheaper);
-                                     0: measure (the default) */
+    swarp_plan_matrices matrices; /**< what swarp_plan_evaluate builds besides the model */
     uint32_t _reserved[4];
 } swarp_plan_chain;
 
@@ -2714,8 +2724,8 @@ SWARP_API swarp_status swarp_plan(const swarp_scene_needs* needs, const swarp_bu
  *  (about 60 µs for one map, 30 µs more per split).
  *  @return as swarp_plan (never SWARP_INFO_PLAN_BUDGET_UNMET), plus
  *          SWARP_ERR_SPLIT_COUNT (K > 16, or K > 1 with SCHEME_NONE, or K = 1
- *          with a split scheme), SWARP_ERR_UNKNOWN_ENUM for the chain and
- *          SWARP_ERR_OUT_OF_RANGE (skip_measure above 1).  A
+ *          with a split scheme) and SWARP_ERR_UNKNOWN_ENUM for the chain
+ *          (also its matrices).  A
  *          chain no engine can build (a stabilised warp or point light) is
  *          still predicted: built = 0 and built_status says why. */
 SWARP_API swarp_status swarp_plan_evaluate(const swarp_scene_needs* needs,

@@ -821,7 +821,7 @@ static void sw_chain_options(const sw_pin* in, const swarp_plan_result* p, uint3
 }
 
 /* Builds the plan's chain with swarp_cascade_setup and copies its split
- * distances, n' and measured error (zero with skip_measure) into the plan
+ * distances, n' and measured error (zero when not measured) into the plan
  * (built = 1), or records the cascade's error status (built = 0, the fields
  * stay zero). */
 static void sw_build_chain(const sw_pin* in, uint32_t skip_measure, swarp_plan_result* p) {
@@ -927,11 +927,11 @@ SWARP_API swarp_status swarp_plan_evaluate(const swarp_scene_needs* needs,
                                            struct swarp_plan* out_plan) {
     if (!out_plan || !chain) return SWARP_ERR_NULL_POINTER;
     if (!sw_reserved_zero(chain->_reserved, 4)) return SWARP_ERR_RESERVED_NONZERO;
-    if (chain->skip_measure > 1) return SWARP_ERR_OUT_OF_RANGE;
     swarp_plan_chain c = *chain;
     if (c.warp == SWARP_PLAN_WARP_DEFAULT) c.warp = SWARP_PLAN_WARP_UNIFORM;
     if ((uint32_t)c.warp > (uint32_t)SWARP_PLAN_WARP_PSM || (uint32_t)c.scheme > (uint32_t)SWARP_PLAN_SCHEME_LOG ||
-        (uint32_t)c.stabilize > (uint32_t)SWARP_PLAN_STABILIZE_APPROX64)
+        (uint32_t)c.stabilize > (uint32_t)SWARP_PLAN_STABILIZE_APPROX64 ||
+        (uint32_t)c.matrices > (uint32_t)SWARP_PLAN_MATRICES_NONE)
         return SWARP_ERR_UNKNOWN_ENUM;
     if (c.split_count == 0) c.split_count = 1;
     if (c.scheme == SWARP_PLAN_SCHEME_DEFAULT) c.scheme = SWARP_PLAN_SCHEME_NONE;
@@ -952,7 +952,8 @@ SWARP_API swarp_status swarp_plan_evaluate(const swarp_scene_needs* needs,
                    SWARP_PLAN_WHY_NO_WARP_MOVING);
     p.reasons |= SWARP_PLAN_WHY_FORCED;
     p.candidates = 1;
-    sw_build_chain(&in, c.skip_measure, &p);
+    if (c.matrices != SWARP_PLAN_MATRICES_NONE)
+        sw_build_chain(&in, c.matrices == SWARP_PLAN_MATRICES_UNMEASURED, &p);
     *out_plan = p;
     return in.point_light ? SWARP_INFO_PLAN_POINT_LIGHT : SWARP_OK;
 }

@@ -686,7 +686,7 @@ START_TEST(optimal_against_brute_force) {
             if (chains[k].K > max_passes) continue;
             if (n.camera_moves && chains[k].warp != SWARP_PLAN_WARP_UNIFORM) continue;
             swarp_plan_chain c = chain_of(chains[k].warp, chains[k].scheme, chains[k].K);
-            c.skip_measure = 1; /* the model decides; the matrices' measurement is not needed */
+            c.matrices = SWARP_PLAN_MATRICES_NONE; /* the model decides the choice */
             swarp_plan_result q;
             ck_assert(!swarp_status_is_error(swarp_plan_evaluate(&n, &b, &c, &q)));
             /* the overall maxima are the largest split maxima */
@@ -877,8 +877,8 @@ START_TEST(bad_chain_and_null) {
     c._reserved[1] = 1;
     ck_assert_int_eq(swarp_plan_evaluate(&n, &b, &c, &p), SWARP_ERR_RESERVED_NONZERO);
     c._reserved[1] = 0;
-    c.skip_measure = 2;
-    ck_assert_int_eq(swarp_plan_evaluate(&n, &b, &c, &p), SWARP_ERR_OUT_OF_RANGE);
+    c.matrices = (swarp_plan_matrices)3;
+    ck_assert_int_eq(swarp_plan_evaluate(&n, &b, &c, &p), SWARP_ERR_UNKNOWN_ENUM);
     ck_assert_int_eq(memcmp(&p, &sentinel, sizeof p), 0);
 }
 END_TEST

@@ -13,8 +13,8 @@
  *     view) the model's split distances and n' are the matrices';
  *  4. swarp_plan does not build (built = 0) and its model values are
  *     swarp_plan_evaluate's for the chosen chain; chains no engine can build
- *     report the cascade's error and keep the model; skip_measure builds
- *     the same matrices without measuring them.
+ *     report the cascade's error and keep the model; UNMEASURED builds the
+ *     same matrices without measuring them, NONE gives the model alone.
  */
 #include <check.h>
 #include <math.h>
@@ -134,9 +134,10 @@ START_TEST(evaluate_builds_the_engines_cascade) {
                     if (p.warp == SWARP_PLAN_WARP_UNIFORM) ck_assert(isinf(p.built_n_eye[i]));
                 }
                 ck_assert_int_eq(memcmp(&p.measured, &b.r.measured, sizeof p.measured), 0);
-                /* skip_measure: the same matrices, not measured */
-                swarp_plan_result u;
-                c.skip_measure = 1;
+                /* UNMEASURED: the same matrices, not measured; NONE: the model
+                 * alone, the same model values */
+                swarp_plan_result u, m;
+                c.matrices = SWARP_PLAN_MATRICES_UNMEASURED;
                 ck_assert_int_eq(swarp_plan_evaluate(&n, &bud, &c, &u), SWARP_OK);
                 ck_assert_uint_eq(u.built, 1);
                 ck_assert_int_eq(memcmp(u.built_splits, p.built_splits, sizeof u.built_splits), 0);
@@ -144,6 +145,14 @@ START_TEST(evaluate_builds_the_engines_cascade) {
                 ck_assert_uint_eq(u.measured.samples, 0);
                 ck_assert_double_eq(u.measured.max_sigma, 0.0);
                 for (uint32_t i = 0; i < u.split_count; ++i) ck_assert_uint_eq(u.split_measured[i].samples, 0);
+                c.matrices = SWARP_PLAN_MATRICES_NONE;
+                ck_assert_int_eq(swarp_plan_evaluate(&n, &bud, &c, &m), SWARP_OK);
+                ck_assert_uint_eq(m.built, 0);
+                ck_assert_int_eq(m.built_status, SWARP_OK);
+                ck_assert_uint_eq(m.measured.samples, 0);
+                ck_assert_int_eq(memcmp(m.n_prime, p.n_prime, sizeof m.n_prime), 0);
+                ck_assert_int_eq(memcmp(m.split_max_mx, p.split_max_mx, sizeof m.split_max_mx), 0);
+                ck_assert_int_eq(memcmp(m.split_max_mz, p.split_max_mz, sizeof m.split_max_mz), 0);
                 ++compared;
             }
     ck_assert_int_eq(compared, 4 * (11 + 3));
