@@ -389,8 +389,8 @@ class PlanChain(Struct):
     scheme: int
     split_count: int
     stabilize: int
-    skip_measure: int
-    def __init__(self, *args: Any, warp: Any = ..., scheme: Any = ..., split_count: Any = ..., stabilize: Any = ..., skip_measure: Any = ...) -> None: ...
+    matrices: int
+    def __init__(self, *args: Any, warp: Any = ..., scheme: Any = ..., split_count: Any = ..., stabilize: Any = ..., matrices: Any = ...) -> None: ...
 
 class CubeOptions(Struct):
     z1: float
@@ -484,6 +484,9 @@ PLAN_FILTER_VSM: int
 PLAN_FILTER_MSM: int
 PLAN_FILTER_EVSM: int
 PLAN_FILTER_LVSM: int
+PLAN_MATRICES_MEASURED: int
+PLAN_MATRICES_UNMEASURED: int
+PLAN_MATRICES_NONE: int
 VERSION_MAJOR: int
 VERSION_MINOR: int
 VERSION_PATCH: int

@@ -155,7 +155,11 @@ ENUMS = {'swarp_depth_range': {'SWARP_DEPTH_DEFAULT': 0,
                        'SWARP_PLAN_FILTER_MSM': 4,
                        'SWARP_PLAN_FILTER_EVSM': 5,
                        'SWARP_PLAN_FILTER_LVSM': 6,
-                       'SWARP_PLAN_FILTER_FORCE_I32': 2147483647}}
+                       'SWARP_PLAN_FILTER_FORCE_I32': 2147483647},
+ 'swarp_plan_matrices': {'SWARP_PLAN_MATRICES_MEASURED': 0,
+                         'SWARP_PLAN_MATRICES_UNMEASURED': 1,
+                         'SWARP_PLAN_MATRICES_NONE': 2,
+                         'SWARP_PLAN_MATRICES_FORCE_I32': 2147483647}}
 
 STATUSES = [('SWARP_OK', 0, 'ok'),
  ('SWARP_ERR_NULL_POINTER', 1, 'a required pointer argument is NULL'),
@@ -639,7 +643,7 @@ STRUCTS = [('swarp_vec3', [('x', 'double', ()), ('y', 'double', ()), ('z', 'doub
    ('scheme', 'swarp_plan_scheme', ()),
    ('split_count', 'uint32_t', ()),
    ('stabilize', 'swarp_plan_stabilize', ()),
-   ('skip_measure', 'uint32_t', ()),
+   ('matrices', 'swarp_plan_matrices', ()),
    ('_reserved', 'uint32_t', (4,))]),
  ('swarp_cube_options',
   [('z1', 'double', ()),
@@ -2878,8 +2882,8 @@ DOCS = {'swarp_status_string': '@brief Readable message for a status; never NULL
                         ' @return as swarp_plan (never SWARP_INFO_PLAN_BUDGET_UNMET), plus\n'
                         '         SWARP_ERR_SPLIT_COUNT (K > 16, or K > 1 with SCHEME_NONE, or K = '
                         '1\n'
-                        '         with a split scheme), SWARP_ERR_UNKNOWN_ENUM for the chain and\n'
-                        '         SWARP_ERR_OUT_OF_RANGE (skip_measure above 1).  A\n'
+                        '         with a split scheme) and SWARP_ERR_UNKNOWN_ENUM for the chain\n'
+                        '         (also its matrices).  A\n'
                         '         chain no engine can build (a stabilised warp or point light) is\n'
                         '         still predicted: built = 0 and built_status says why.',
  'swarp_plan_explain': '@brief Readable text of a plan: the chain, the predicted error and cost,\n'
