@@ -2593,13 +2593,14 @@ typedef enum swarp_plan_filter {
 #define SWARP_PLAN_PLANE_NO_PASS_LEFT   4u /**< the pass limit (or time budget) is used up */
 #define SWARP_PLAN_PLANE_LIXEL_REFUSED  5u /**< swarp_lixel_matrix gave another error (e.g. singular) */
 
-/** The chosen chain.  The model's fields (n_prime, split_max_mx/mz, max_mx,
- *  max_mz, max_error, error_area) are Lloyd's overhead-light model
+/** The chosen chain.  The model's fields (splits, n_prime, split_max_mx/mz,
+ *  max_mx, max_mz, max_error, error_area) are Lloyd's overhead-light model
  *  generalised to γ, on the view axis (screen pixels per texel side): they
- *  equal the matrices' measured m_s, m_t only for an overhead light on the
- *  view axis.  The built_* fields and measured are what the chain's
- *  matrices give (swarp_plan_evaluate only).  Costs per the cost model of
- *  docs/planning.md.
+ *  equal the matrices' m_s, m_t only on the view axis under an overhead
+ *  light (the measured maxima are over all of H, off-axis corners included:
+ *  docs/planning.md §9 compares them).  The built_* fields and measured are
+ *  what the chain's matrices give (swarp_plan_evaluate only).  Costs per
+ *  the cost model of docs/planning.md.
  *  C has one namespace for functions and typedefs, so the type is the struct
  *  tag `struct swarp_plan` (the function is swarp_plan()), with the typedef
  *  swarp_plan_result as a shorter name for the same type. */
