@@ -307,7 +307,9 @@ typedef struct swarp_aabb { swarp_vec3 min, max; } swarp_aabb;
     X(SWARP_INFO_FOLLOW_LAG, 1104,                                                      \
       "followed light frame still turning toward the aligned one (light near the view axis; LiSPSM weaker)") \
     X(SWARP_INFO_CAMERA_FAR_FROM_SCENE, 1105,                                           \
-      "infinite far plane: z_far is the farthest view depth of the scene box ([RHS] 3.3.1)")
+      "infinite far plane: z_far is the farthest view depth of the scene box ([RHS] 3.3.1)") \
+    X(SWARP_INFO_CASTERS_CLAMPED, 1106,                                                 \
+      "casters over 1e10 times the receivers' size toward the light left out of the depth range (depth clamp)")
 
 /* lixel: 200..299, 1200..1299 */
 #define SWARP_STATUS_LIST_LIXEL(X)                                                  \
@@ -1062,7 +1064,7 @@ SWARP_API swarp_status swarp_measure_points(const swarp_camera* cam, const swarp
  *  aliasing vanishes, leaving the perspective aliasing of the parameterisation).
  *  Sampling: the vertices of H, a grid x grid NDC lattice at depths geometric
  *  in [z_near, z_far] (points outside S skipped), then from the worst vertex
- *  and the worst lattice sample refine steps of a deterministic compass
+ *  and the four worst local maxima of the lattice refine steps of a deterministic compass
  *  search over (NDC x, NDC y, log z), halving the step each time it finds no
  *  larger sigma (docs/accuracy.md states its error).  No allocation; the result is deterministic.
  *  @return SWARP_OK; SWARP_INFO_MEASURE_SINGULAR (max_sigma = +inf);

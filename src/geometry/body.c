@@ -23,8 +23,26 @@
  * flat H's normal grazes its plane: the rounding of unit vectors (a few
  * eps), so B is built in the plane (sw_flat_extend). */
 #define SW_BODY_GRAZING_COS 1e-15
-/* The longest sweep H + T u: finite for |H| below DBL_MAX/2 (see
- * sw_body_from_h_ex). */
+/* The longest sweep relative to H's size: B's vertices stay within 1e10
+ * times H's extent of it, where the clipper (SWARP_POLY_EPS_REL = 1e-12 of
+ * the polyhedron's scale) still resolves H to 1e-2 of its size and the fit
+ * (SW_FIT_FLAT_REL, focus.c) does not call H's lateral extent flat beside
+ * B's length.  Casters farther toward the light are left out of B (the
+ * caller reports SWARP_INFO_CASTERS_CLAMPED: a renderer with depth
+ * clamping draws them at the near plane, where they still shadow every
+ * receiver behind them, as with pancaking). */
+#define SW_SWEEP_REL_MAX 1e10
+/* The longest sweep kept at 2 diag(S), relative to H's size: the swept
+ * copies within 1e6 times H's size, where the clipper's tolerance is 1e-6
+ * of H's size at most (the fit's own accuracy, SW_REL_RESOLVE in setup.c);
+ * ordinary scenes (S up to 1e5 times the receivers) keep that sweep. */
+#define SW_SWEEP_DIAG_REL 1e6
+/* How far past S's face the exit bound takes the copies, relative to H's
+ * coordinates: 1e3 times the clipper's tolerance SWARP_POLY_EPS_REL. */
+#define SW_SWEEP_MARGIN_REL 1e-9
+/* The longest sweep H + T u: finite for |H| below DBL_MAX/2; a sweep that
+ * stays inside S longer than that leaves the double range (B's vertices
+ * checked: SWARP_ERR_OUT_OF_RANGE). */
 #define SW_SWEEP_T_MAX (0.25 * DBL_MAX)
 
 static int sw_face_is_front(swarp_plane p, swarp_vec3 u) {
@@ -541,22 +559,73 @@ static void sw_sweep_clip_order(swarp_vec3 u, const swarp_aabb* box, uint8_t ord
 }
 
 static swarp_status sw_body_from_h_ex(const swarp_polyhedron* H, const swarp_light* light, const swarp_aabb* box,
-                                      int h_tidy, swarp_polyhedron* B);
+                                      int h_tidy, swarp_polyhedron* B, int* clamped);
+
+/* The sweep length T.  Every copy H + T u must lie outside S, so that the
+ * box clip cuts the sweep exactly where it leaves S (S is convex: a ray
+ * that left S stays out, so any longer T gives the same B).  2 diag(S) is
+ * such a T for every H that meets S.  It is kept while it is at most
+ * SW_SWEEP_DIAG_REL times H's size; a longer one would put the swept copies
+ * at the scale of S's far faces (1e19 or DBL_MAX for an "unbounded" box),
+ * where the clipper's tolerance (SWARP_POLY_EPS_REL of the polyhedron's
+ * scale) is larger than H itself.  Then, for H inside S, the exit bound:
+ * a point p of H leaves S along u by t(p) = min_k (bound_k - p_k) / u_k
+ * (bound_k: the face u points at on axis k) and t(p) <= (bound_k - h_k) /
+ * |u_k| for h_k H's extreme coordinate away from that face, on each axis;
+ * twice the least of these (with a margin past the face), and at least SW_SWEEP_DIAG_REL times H's size
+ * (the copies as far out as the kept 2 diag(S) would put them), capped at
+ * SW_SWEEP_REL_MAX times H's size (*clamped). */
+static double sw_sweep_length(const swarp_polyhedron* H, swarp_vec3 u, const swarp_aabb* box, int* clamped) {
+    *clamped = 0;
+    const double diag = 2.0 * sw_len_fast(sw_sub(box->max, box->min)) + 1e-300; /* inf past DBL_MAX/2 */
+    double hlo[3] = {INFINITY, INFINITY, INFINITY}, hhi[3] = {-INFINITY, -INFINITY, -INFINITY};
+    for (uint32_t i = 0; i < H->vertex_count; ++i) {
+        const double v[3] = {H->vertices[i].x, H->vertices[i].y, H->vertices[i].z};
+        for (int k = 0; k < 3; ++k) hlo[k] = fmin(hlo[k], v[k]), hhi[k] = fmax(hhi[k], v[k]);
+    }
+    const double uc[3] = {u.x, u.y, u.z}, lo[3] = {box->min.x, box->min.y, box->min.z},
+                 hi[3] = {box->max.x, box->max.y, box->max.z};
+    int inside = 1; /* the bound needs H ⊂ S (a caller's H may not be) */
+    double ext = 0.0, mag = 0.0;
+    for (int k = 0; k < 3; ++k) {
+        inside &= hlo[k] >= lo[k] && hhi[k] <= hi[k];
+        ext = fmax(ext, hhi[k] - hlo[k]), mag = fmax(mag, fmax(fabs(hlo[k]), fabs(hhi[k])));
+    }
+    /* a point H (extent 0) keeps the scale of its coordinates */
+    const double size = fmax(fmax(ext, SWARP_POLY_EPS_REL * mag), DBL_MIN);
+    if (!inside || diag <= SW_SWEEP_DIAG_REL * size) return diag;
+    /* past the face by more than the clipper resolves at H's coordinates:
+     * an exit through a face u barely points at (|u_k| ~ 1e-9) is not taken
+     * for one that the clip would see as still inside S */
+    const double m = 0.5 * SW_SWEEP_MARGIN_REL * fmax(mag, ext);
+    double T = INFINITY;
+    for (int k = 0; k < 3; ++k) {
+        /* halved terms: a box from -DBL_MAX to DBL_MAX has no overflow */
+        if (uc[k] > 0.0) T = fmin(T, (0.5 * hi[k] - 0.5 * hlo[k] + m) / (0.5 * uc[k]));
+        else if (uc[k] < 0.0) T = fmin(T, (0.5 * hhi[k] - 0.5 * lo[k] + m) / (-0.5 * uc[k]));
+    }
+    T = fmax(2.0 * T, SW_SWEEP_DIAG_REL * size);
+    const double cap = SW_SWEEP_REL_MAX * size;
+    *clamped = T > cap;
+    return *clamped ? cap : T;
+}
 
 swarp_status sw_body_from_h(const swarp_polyhedron* H, const swarp_light* light, const swarp_aabb* box,
                             swarp_polyhedron* B) {
-    return sw_body_from_h_ex(H, light, box, 0, B);
+    int clamped = 0;
+    return sw_body_from_h_ex(H, light, box, 0, B, &clamped);
 }
 
 /* H built by the clipper (sw_body_h and clips of it): its loops are tidy
  * (no index next to itself, at least 3 entries), see sw_loops_tidy. */
 swarp_status sw_body_from_h_clipped(const swarp_polyhedron* H, const swarp_light* light, const swarp_aabb* box,
-                                    swarp_polyhedron* B) {
-    return sw_body_from_h_ex(H, light, box, 1, B);
+                                    swarp_polyhedron* B, int* clamped) {
+    return sw_body_from_h_ex(H, light, box, 1, B, clamped);
 }
 
 static swarp_status sw_body_from_h_ex(const swarp_polyhedron* H, const swarp_light* light, const swarp_aabb* box,
-                                      int h_tidy, swarp_polyhedron* B) {
+                                      int h_tidy, swarp_polyhedron* B, int* clamped) {
+    *clamped = 0;
     swarp_polyhedron M;
     swarp_status s;
     /* the in-plane construction only when H is flat AND the light lies in
@@ -591,23 +660,14 @@ static swarp_status sw_body_from_h_ex(const swarp_polyhedron* H, const swarp_lig
     } else {
         swarp_vec3 u = {0, 0, 1};
         sw_normalize_fast(sw_scale(light->direction, -1.0), &u);
-        /* T: longer than any path inside S */
-        double diag = sw_len_fast(sw_sub(box->max, box->min));
-        double T = 2.0 * diag + 1e-300;
-        /* a box reaching to ±DBL_MAX (valid input) has diag(S) ~ DBL_MAX:
-         * 2 diag overflows and the extruded copies would be inf (inf
-         * vertices of B with SWARP_OK).  SW_SWEEP_T_MAX = DBL_MAX/4 is as
-         * far as H + T u stays finite for |H| below DBL_MAX/2; the box clip
-         * then cuts the sweep where it leaves S, and a sweep longer than
-         * that inside S leaves the double range (checked below:
-         * SWARP_ERR_OUT_OF_RANGE). */
+        double T = sw_sweep_length(H, u, box, clamped);
         if (!(T <= SW_SWEEP_T_MAX)) T = SW_SWEEP_T_MAX;
         int finalized = 0;
         s = flat ? sw_flat_extend(H, u, T, NULL, &M) : sw_extend(H, u, T, NULL, h_tidy, &M, &finalized);
         if (s != SWARP_OK) return s;
-        /* the translated copies are T > diag(S) away from H and as far apart
-         * as H's vertices: nothing to merge, only faces to tidy (sw_extend
-         * has done that for a tidy H) */
+        /* the translated copies are T > diag(S) or 1e6 times H's size away
+         * from H and as far apart as H's vertices: nothing to merge, only
+         * faces to tidy (sw_extend has done that for a tidy H) */
         if (!finalized) sw_poly_finalize(&M, M.vertex_count, 0.0);
         uint8_t order[6];
         sw_sweep_clip_order(u, box, order);

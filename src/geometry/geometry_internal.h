@@ -53,9 +53,11 @@ swarp_status sw_body_h(const swarp_camera* cam, double near, double far, const s
                        swarp_polyhedron* H);
 swarp_status sw_body_from_h(const swarp_polyhedron* H, const swarp_light* light,
                             const swarp_aabb* box, swarp_polyhedron* B);
-/* the same for an H the clipper built (its face loops are tidy) */
+/* the same for an H the clipper built (its face loops are tidy); *clamped:
+ * casters beyond SW_SWEEP_REL_MAX times H's size toward a directional
+ * light were left out of B (SWARP_INFO_CASTERS_CLAMPED) */
 swarp_status sw_body_from_h_clipped(const swarp_polyhedron* H, const swarp_light* light, const swarp_aabb* box,
-                                    swarp_polyhedron* B);
+                                    swarp_polyhedron* B, int* clamped);
 /* H = V ∩ S with the eye at the origin (H_rel camera-relative) and its view
  * depth range: the adjusted near/far of swarp_setup (body.c) */
 swarp_status sw_body_h_eye(const swarp_camera* cam, double near, double far, const swarp_aabb* box,

@@ -409,6 +409,35 @@ static void sw_psm_result(const swarp_camera* cam, const swarp_light* light, swa
     res->light_far = hi;
 }
 
+/* The map's defining property, checked on the receivers: a receiver h and
+ * the point toward the light from it (by B's extent for a directional
+ * light, half-way for a point light) must land on the same map point to
+ * SW_PSM_RAY_TOL.  Exact in PPS for every frustum, it fails in double where
+ * the light sits at 1/τ ~ 1e10 in PPS (fovy or aspect 1e-9, far within
+ * 1e-9 of near): the orthographic limit of the rows is off by τ times the
+ * casters' PPS distance (unbounded toward the eye plane), the general rows
+ * by eps/τ, and the map spreads one light ray over the whole map. */
+#define SW_PSM_RAY_TOL 2e-6
+static int sw_psm_projects_along_light(const swarp_mat4* m, const swarp_light* light, const swarp_vec3* H, size_t nh,
+                                       const swarp_vec3* B, size_t nb) {
+    double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+    for (size_t i = 0; i < nb; ++i) {
+        const double c[3] = {B[i].x, B[i].y, B[i].z};
+        for (int k = 0; k < 3; ++k) lo[k] = fmin(lo[k], c[k]), hi[k] = fmax(hi[k], c[k]);
+    }
+    const double ext = fmax(hi[0] - lo[0], fmax(hi[1] - lo[1], hi[2] - lo[2]));
+    swarp_vec3 d = {0, 0, 0};
+    if (light->type != SWARP_LIGHT_POINT) sw_normalize_fast(light->direction, &d);
+    for (size_t i = 0; i < nh; ++i) {
+        swarp_vec3 q = light->type == SWARP_LIGHT_POINT ? sw_scale(sw_add(H[i], light->position), 0.5)
+                                                        : sw_sub(H[i], sw_scale(d, ext));
+        swarp_vec4 a = sw_xform_point(m, H[i]), b = sw_xform_point(m, q);
+        if (!(a.w != 0.0 && b.w != 0.0)) return 0;
+        if (!(fabs(a.x / a.w - b.x / b.w) <= SW_PSM_RAY_TOL && fabs(a.y / a.w - b.y / b.w) <= SW_PSM_RAY_TOL)) return 0;
+    }
+    return 1;
+}
+
 swarp_status sw_psm_setup(const swarp_camera* cam, const swarp_light* light, const swarp_vec3* B, size_t nb,
                           const swarp_polyhedron* B_poly, const swarp_vec3* H, size_t nh, double near, double far,
                           const swarp_setup_options* o, const sw_follow* fw, swarp_setup_result* res) {
@@ -459,5 +488,6 @@ swarp_status sw_psm_setup(const swarp_camera* cam, const swarp_light* light, con
     if (swarp_status_is_error(s)) return s;
     if (s != SWARP_OK && info == SWARP_OK) info = s;
     sw_psm_result(cam, light, f, &A, &Q, &QM, &Vc, &Pc, near + delta, zp, nz, res);
+    if (!sw_psm_projects_along_light(&res->matrix, light, H, nh, B, nb)) return SWARP_ERR_DEGENERATE;
     return info;
 }

@@ -27,11 +27,14 @@ _Static_assert(sizeof(swarp_warp_info) == 6 * 8 + 16, "swarp_warp_info size");
  * atan(1e3) ≈ 89.94°; beyond that the light is inside B. */
 #define SW_LIGHT_MAX_TAN 1e3
 
-/* More important informational statuses win. */
+/* More important informational statuses win: first those that say a part
+ * of the promise (every receiver in the map, every caster between it and
+ * the light in the depth range) is bounded rather than exact, then the
+ * technique's own reports. */
 static swarp_status sw_info_merge(swarp_status a, swarp_status b) {
-    static const swarp_status order[] = {SWARP_INFO_PSM_INVERSE, SWARP_INFO_WARP_UNIFORM,
-                                         SWARP_INFO_LIGHT_NEAR_CLIPPED, SWARP_INFO_LIGHT_PARALLEL,
-                                         SWARP_INFO_FLAT_EXTENT};
+    static const swarp_status order[] = {SWARP_INFO_LIGHT_NEAR_CLIPPED, SWARP_INFO_CASTERS_CLAMPED,
+                                         SWARP_INFO_PSM_INVERSE,        SWARP_INFO_WARP_UNIFORM,
+                                         SWARP_INFO_LIGHT_PARALLEL,     SWARP_INFO_FLAT_EXTENT};
     for (size_t i = 0; i < sizeof order / sizeof order[0]; ++i)
         if (a == order[i] || b == order[i]) return order[i];
     return a != SWARP_OK ? a : b;
@@ -326,24 +329,65 @@ static swarp_status sw_light_space_of(const swarp_camera* cam, const swarp_light
     return SWARP_OK;
 }
 
-/* The points the map must see: a point light drops those in front of its
- * near plane (the apex region) from B (into Bk) and from the receivers H
- * (into Hk) and narrows light_near to the depth actually covered; a
- * directional light uses B and H as they are. */
-static swarp_status sw_cut_light_near(const sw_light_space* ls, const swarp_vec3* B, size_t nb, const swarp_vec3* H,
-                                      size_t nh, swarp_vec3* Bk, swarp_vec3* Hk, const swarp_vec3** Bp, size_t* nbk,
-                                      const swarp_vec3** Hp, size_t* nhk, swarp_setup_result* res) {
+/* B cut by the light's near plane D >= light_near (D = -z of the light
+ * view L): the polyhedron clipped, so that B keeps every point between the
+ * near plane and its far side (the near-plane section becomes its face).
+ * Dropping the vertices in front of the plane instead would leave out all
+ * of B between the plane and the nearest kept vertex: a spot 0.5 from the
+ * eye lost the casters from 0.01 to 4.3 units. */
+static size_t sw_clip_light_near_body(const sw_light_space* ls, const swarp_polyhedron* B_poly, double light_near,
+                                      swarp_vec3* Bk) {
+    swarp_polyhedron C;
+    const swarp_vec3 n = sw_v3(sw_at(&ls->L, 2, 0), sw_at(&ls->L, 2, 1), sw_at(&ls->L, 2, 2));
+    /* keeps n·p + d <= 0, i.e. -D + light_near <= 0 */
+    if (sw_poly_clip(B_poly, n, sw_at(&ls->L, 2, 3) + light_near, &C) != SWARP_OK) return 0;
+    for (uint32_t i = 0; i < C.vertex_count; ++i) Bk[i] = C.vertices[i];
+    return C.vertex_count;
+}
+
+/* The same for B given as points (swarp_setup_points, the cascades): the
+ * points behind the plane, and on every segment from one in front of it to
+ * one behind it the point on the plane.  B's section by the plane lies in
+ * the hull of those (each vertex of the clipped hull is a kept point or
+ * the crossing of a hull edge, which is such a segment).  0 when they do
+ * not fit SWARP_BODY_MAX_POINTS. */
+static int sw_clip_light_near_points(const sw_light_space* ls, const swarp_vec3* B, size_t nb, double light_near,
+                                     swarp_vec3* Bk, size_t* nk) {
+    double D[SWARP_BODY_MAX_POINTS];
+    size_t k = 0;
+    nb = nb < SWARP_BODY_MAX_POINTS ? nb : SWARP_BODY_MAX_POINTS;
+    for (size_t i = 0; i < nb; ++i) {
+        D[i] = -sw_xform_point(&ls->L, B[i]).z;
+        if (D[i] >= light_near) Bk[k++] = B[i];
+    }
+    for (size_t i = 0; i < nb; ++i)
+        for (size_t j = 0; j < nb && D[i] >= light_near; ++j) {
+            if (D[j] >= light_near) continue;
+            if (k >= SWARP_BODY_MAX_POINTS) return 0;
+            const double t = (D[i] - light_near) / (D[i] - D[j]); /* in [0, 1): D[j] < light_near <= D[i] */
+            Bk[k++] = sw_add(B[i], sw_scale(sw_sub(B[j], B[i]), t));
+        }
+    *nk = k;
+    return 1;
+}
+
+/* The points the map must see: a point light cuts B at its near plane
+ * (the apex region; B_poly clipped when given, else the points in front
+ * dropped) into Bk, drops the receivers H in front of it (into Hk) and
+ * narrows light_near to the depth actually covered; a directional light
+ * uses B and H as they are. */
+static swarp_status sw_cut_light_near(const sw_light_space* ls, const swarp_vec3* B, size_t nb,
+                                      const swarp_polyhedron* B_poly, const swarp_vec3* H, size_t nh, swarp_vec3* Bk,
+                                      swarp_vec3* Hk, const swarp_vec3** Bp, size_t* nbk, const swarp_vec3** Hp,
+                                      size_t* nhk, swarp_setup_result* res) {
     *Bp = B;
     *Hp = H;
     *nbk = nb < SWARP_BODY_MAX_POINTS ? nb : SWARP_BODY_MAX_POINTS;
     *nhk = !H ? 0 : nh < SWARP_BODY_MAX_POINTS ? nh : SWARP_BODY_MAX_POINTS;
     if (ls->point) {
         size_t k = 0;
-        for (size_t i = 0; i < nb && k < SWARP_BODY_MAX_POINTS; ++i) {
-            swarp_vec4 h = sw_xform_point(&ls->L, B[i]);
-            if (-h.z < res->light_near) continue;
-            Bk[k++] = B[i];
-        }
+        if (B_poly) k = sw_clip_light_near_body(ls, B_poly, res->light_near, Bk);
+        else if (!sw_clip_light_near_points(ls, B, nb, res->light_near, Bk, &k)) return SWARP_ERR_CAPACITY;
         *nbk = k;
         /* the receivers for pancaking, with the same cut */
         k = 0;
@@ -425,7 +469,8 @@ static void sw_light_depth_range(const swarp_mat4* L, const swarp_vec3* zs, size
 /* Uniform and LiSPSM maps: light space, the cut at a point light's near
  * plane, the warp, focusing, then the report (n', γ, light depth range). */
 static swarp_status sw_setup_lispsm(swarp_technique tech, const swarp_camera* cam, const swarp_light* light,
-                                    const swarp_vec3* B, size_t nb, const swarp_vec3* H, size_t nh, double near,
+                                    const swarp_vec3* B, size_t nb, const swarp_polyhedron* B_poly,
+                                    const swarp_vec3* H, size_t nh, double near,
                                     double far, const swarp_setup_options* o, swarp_vec3 eye, const sw_follow* fw,
                                     swarp_vec3 v, const swarp_vec3* ep, swarp_setup_result* res, swarp_status* info) {
     sw_light_space ls;
@@ -435,7 +480,7 @@ static swarp_status sw_setup_lispsm(swarp_technique tech, const swarp_camera* ca
     swarp_vec3 Hk[SWARP_BODY_MAX_POINTS];
     const swarp_vec3 *Bp, *Hp;
     size_t nbk, nhk;
-    s = sw_cut_light_near(&ls, B, nb, H, nh, Bk, Hk, &Bp, &nbk, &Hp, &nhk, res);
+    s = sw_cut_light_near(&ls, B, nb, B_poly, H, nh, Bk, Hk, &Bp, &nbk, &Hp, &nhk, res);
     if (s != SWARP_OK) return s;
     swarp_mat4 P;
     swarp_warp_info wi;
@@ -455,6 +500,27 @@ static swarp_status sw_setup_lispsm(swarp_technique tech, const swarp_camera* ca
     }
     if (!ls.point) sw_light_depth_range(&ls.L, zp ? zp : Bp, zp ? nhk : nbk, res);
     return SWARP_OK;
+}
+
+/* PSM with a point light: the same light as the uniform and LiSPSM maps
+ * see it (sw_point_light_view): refused when it lies inside B, and B cut
+ * at its near plane (SWARP_INFO_LIGHT_NEAR_CLIPPED for a spot on or in B).
+ * In post-perspective space a caster at the light has w = 0 in the light
+ * camera and its depth z/w is unbounded: the depth range cannot cover B
+ * up to the light, only up to the near plane. */
+static swarp_status sw_psm_point_body(const swarp_camera* cam, const swarp_light* light, const swarp_vec3* B,
+                                      size_t nb, const swarp_polyhedron* B_poly, swarp_polyhedron* Bc,
+                                      swarp_status* info) {
+    sw_light_space ls;
+    swarp_setup_result tmp;
+    swarp_status st = SWARP_OK;
+    swarp_status s = sw_point_light_view(cam, light, B, nb, NULL, &ls, &tmp, &st);
+    if (s != SWARP_OK) return s;
+    if (st == SWARP_INFO_LIGHT_NEAR_CLIPPED) *info = sw_info_merge(*info, st);
+    const swarp_vec3 n = sw_v3(sw_at(&ls.L, 2, 0), sw_at(&ls.L, 2, 1), sw_at(&ls.L, 2, 2));
+    s = sw_poly_clip(B_poly, n, sw_at(&ls.L, 2, 3) + tmp.light_near, Bc);
+    if (s != SWARP_OK) return s;
+    return Bc->vertex_count > 0 ? SWARP_OK : SWARP_ERR_BODY_EMPTY;
 }
 
 /* The error model [RHS] (2.3)-(2.8) for n' in eye units over [near, far]. */
@@ -494,19 +560,26 @@ static swarp_status sw_setup_points(const swarp_camera* cam, const swarp_light* 
     memset(&res, 0, sizeof res);
     res.view_near = near;
     res.view_far = far;
+    const size_t nb_body = nb; /* point_count: B's own points, before a near-plane cut */
     if (tech == SWARP_TECHNIQUE_PSM) {
+        swarp_polyhedron Bc;
+        if (light->type == SWARP_LIGHT_POINT && B_poly) {
+            s = sw_psm_point_body(cam, light, B, nb, B_poly, &Bc, &info);
+            if (s != SWARP_OK) return s;
+            B = Bc.vertices, nb = Bc.vertex_count, B_poly = &Bc;
+        }
         s = sw_psm_setup(cam, light, B, nb, B_poly, H, nh, near, far, o, fw, &res);
         if (swarp_status_is_error(s)) return s;
         if (!sw_rel_resolves(B, nb)) return SWARP_ERR_DEGENERATE;
         info = sw_info_merge(info, s);
     } else {
-        s = sw_setup_lispsm(tech, cam, light, B, nb, H, nh, near, far, o, eye, fw, v, ep, &res, &info);
+        s = sw_setup_lispsm(tech, cam, light, B, nb, B_poly, H, nh, near, far, o, eye, fw, v, ep, &res, &info);
         if (s != SWARP_OK) return s;
     }
     if ((s = sw_predict_error(cam, o, near, far, &res)) != SWARP_OK) return s;
     if (!sw_mat_finite(&res.matrix) || !sw_mat_finite(&res.light_proj) || !sw_mat_finite(&res.light_view))
         return SWARP_ERR_DEGENERATE;
-    res.point_count = (uint32_t)nb;
+    res.point_count = (uint32_t)nb_body;
     *out = res;
     return info;
 }
@@ -598,7 +671,8 @@ static swarp_status sw_setup_range(const swarp_camera* cam, const swarp_light* l
         if (s != SWARP_OK) return s;
         Hp = &Hl;
     }
-    s = sw_body_from_h_clipped(Hp, light, scene, &B); /* H from sw_body_h: the clipper's */
+    int clamped = 0;
+    s = sw_body_from_h_clipped(Hp, light, scene, &B, &clamped); /* H from sw_body_h: the clipper's */
     if (s != SWARP_OK) return s;
     s = sw_check_points_capacity(&B, out_points, capacity, out_count);
     if (s != SWARP_OK) return s;
@@ -620,11 +694,26 @@ static swarp_status sw_setup_range(const swarp_camera* cam, const swarp_light* l
     sw_measure_setup(cam, near, far, light, scene, &res.matrix, o, &res.measured);
     if (!sw_fold_result(&res, eye)) return SWARP_ERR_DEGENERATE;
     if (res.measured.samples) res.measured.at = sw_add(res.measured.at, eye);
+    if (clamped) info = sw_info_merge(info, SWARP_INFO_CASTERS_CLAMPED);
     *out = res;
     if (out_points)
         for (uint32_t i = 0; i < B.vertex_count; ++i) out_points[i] = sw_add(B.vertices[i], eye);
     if (out_count) *out_count = B.vertex_count;
     return info;
+}
+
+/* H lies in one depth plane (a box face on a view plane, or a view range
+ * one ulp wide): the range gets a sliver of 1e-9 of its depth, taken from
+ * the side where it stays inside the camera's [near, far] (V ∩ S over the
+ * widened range is still H); a camera range narrower than the sliver is
+ * used whole.  Widening past the camera's far would report a view range the
+ * caller never asked for. */
+#define SW_SLIVER_REL 1e-9
+static void sw_keep_sliver(double cam_near, double cam_far, double* zn, double* zf) {
+    const double pad = fmax(SW_SLIVER_REL * *zn, 1e-300);
+    if (*zn - pad >= cam_near) *zn -= pad;
+    else if (*zf + pad <= cam_far) *zf += pad;
+    else *zn = cam_near, *zf = cam_far;
 }
 
 /* swarp_setup, with the previous light frame to follow (NULL: stateless) */
@@ -656,11 +745,7 @@ static swarp_status sw_setup_main(const swarp_camera* cam, const swarp_light* li
     if (s != SWARP_OK) return s;
     zn = fmin(fmax(zn, cam_near), cam->z_far);
     zf = fmin(fmax(zf, zn), cam->z_far);
-    if (!(zf > zn)) { /* H lies in one depth plane (box face on a view plane): keep a sliver */
-        double pad = fmax(1e-9 * zn, 1e-300);
-        if (zn - pad > cam_near) zn -= pad;
-        else zf += pad;
-    }
+    if (!(zf > zn)) sw_keep_sliver(cam_near, cam->z_far, &zn, &zf);
     return sw_setup_range(&rc, &rl, &rs, zn, zf, &H, &o, cam->eye, fw, out, out_points, capacity, out_count);
 }
 

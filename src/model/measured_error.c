@@ -24,8 +24,8 @@
 #define SW_INSIDE_REL 1e-12
 
 /* Defaults of swarp_measure_max: the vertices of H, a 7 x 7 NDC lattice at
- * 9 depths and 24 compass-search steps from the worst vertex and the worst
- * lattice sample.  The maximum of these projective maps' error over the
+ * 9 depths and 24 compass-search steps from the worst vertex and the four
+ * worst local maxima of the lattice.  The maximum of these projective maps' error over the
  * convex H lies at or near a vertex or inside one lattice cell of the worst
  * sample, which the search resolves to a small fraction of a cell;
  * tests/model/test_measured_error.c states the difference from a 33 x 33 x
@@ -267,16 +267,79 @@ static double sw_sample(const sw_region* g, const double u[3], sw_best* b) {
     return e.sigma;
 }
 
-static void sw_sample_lattice(const sw_region* g, uint32_t n, uint32_t k, sw_best* b) {
-    for (uint32_t iz = 0; iz < k; ++iz) {
-        for (uint32_t iy = 0; iy < n; ++iy) {
-            for (uint32_t ix = 0; ix < n; ++ix) {
-                double u[3] = {-1.0 + 2.0 * ix / (n - 1), -1.0 + 2.0 * iy / (n - 1),
-                               g->lz0 + (g->lz1 - g->lz0) * iz / (k - 1)};
-                sw_sample(g, u, b);
-            }
-        }
+/* Lattices up to this many points keep every sample's sigma on the stack
+ * (32 KiB) to find their local maxima; larger ones seed from the worst
+ * sample alone (they are dense enough for one seed). */
+#define SW_SEED_LATTICE_MAX 4096u
+/* Local maxima of the lattice refined besides the worst vertex: the error
+ * of a projective map over H can have a few separate peaks (a near corner,
+ * a far corner on a box face), each needing its own search. */
+#define SW_SEEDS 4
+
+typedef struct sw_seeds {
+    double u[SW_SEEDS][3];
+    double sigma[SW_SEEDS];
+    int count;
+} sw_seeds;
+
+static void sw_seed_add(sw_seeds* s, const double u[3], double sigma) {
+    int i = s->count < SW_SEEDS ? s->count++ : SW_SEEDS - 1;
+    if (i == SW_SEEDS - 1 && s->count == SW_SEEDS && !(sigma > s->sigma[i])) return;
+    for (; i > 0 && sigma > s->sigma[i - 1]; --i) {
+        s->sigma[i] = s->sigma[i - 1];
+        s->u[i][0] = s->u[i - 1][0], s->u[i][1] = s->u[i - 1][1], s->u[i][2] = s->u[i - 1][2];
     }
+    s->sigma[i] = sigma;
+    s->u[i][0] = u[0], s->u[i][1] = u[1], s->u[i][2] = u[2];
+}
+
+static void sw_lattice_u(const sw_region* g, uint32_t n, uint32_t k, uint32_t ix, uint32_t iy, uint32_t iz,
+                         double u[3]) {
+    u[0] = -1.0 + 2.0 * ix / (n - 1);
+    u[1] = -1.0 + 2.0 * iy / (n - 1);
+    u[2] = g->lz0 + (g->lz1 - g->lz0) * iz / (k - 1);
+}
+
+/* 1 when sample (ix, iy, iz) is at least its 6 lattice neighbours (points
+ * outside S hold -1) */
+static int sw_lattice_peak(const double* v, uint32_t n, uint32_t k, uint32_t ix, uint32_t iy, uint32_t iz) {
+    const double c = v[(iz * n + iy) * n + ix];
+    if (!(c >= 0.0)) return 0;
+    if (ix > 0 && v[(iz * n + iy) * n + ix - 1] > c) return 0;
+    if (ix + 1 < n && v[(iz * n + iy) * n + ix + 1] > c) return 0;
+    if (iy > 0 && v[(iz * n + iy - 1) * n + ix] > c) return 0;
+    if (iy + 1 < n && v[(iz * n + iy + 1) * n + ix] > c) return 0;
+    if (iz > 0 && v[((iz - 1) * n + iy) * n + ix] > c) return 0;
+    if (iz + 1 < k && v[((iz + 1) * n + iy) * n + ix] > c) return 0;
+    return 1;
+}
+
+/* The n x n x k lattice; its local maxima (the worst SW_SEEDS) into seeds. */
+static void sw_sample_lattice(const sw_region* g, uint32_t n, uint32_t k, sw_best* b, sw_seeds* seeds) {
+    double v[SW_SEED_LATTICE_MAX];
+    const int keep = (size_t)n * n * k <= SW_SEED_LATTICE_MAX;
+    double best_u[3] = {0.0, 0.0, 0.0}, best = -1.0;
+    for (uint32_t iz = 0; iz < k; ++iz)
+        for (uint32_t iy = 0; iy < n; ++iy)
+            for (uint32_t ix = 0; ix < n; ++ix) {
+                double u[3];
+                sw_lattice_u(g, n, k, ix, iy, iz, u);
+                const double sigma = sw_sample(g, u, b);
+                if (keep) v[(iz * n + iy) * n + ix] = sigma;
+                if (sigma > best) best = sigma, best_u[0] = u[0], best_u[1] = u[1], best_u[2] = u[2];
+            }
+    if (!keep) {
+        if (best >= 0.0) sw_seed_add(seeds, best_u, best);
+        return;
+    }
+    for (uint32_t iz = 0; iz < k; ++iz)
+        for (uint32_t iy = 0; iy < n; ++iy)
+            for (uint32_t ix = 0; ix < n; ++ix)
+                if (sw_lattice_peak(v, n, k, ix, iy, iz)) {
+                    double u[3];
+                    sw_lattice_u(g, n, k, ix, iy, iz, u);
+                    sw_seed_add(seeds, u, v[(iz * n + iy) * n + ix]);
+                }
 }
 
 static double sw_clampd(double v, double lo, double hi) { return v < lo ? lo : (v > hi ? hi : v); }
@@ -382,11 +445,11 @@ SWARP_API swarp_status swarp_measure_max(const swarp_camera* cam, double z_near,
     memset(&b, 0, sizeof b);
     double seed[3], seed_sigma;
     const int have_vertices = sw_sample_vertices(&g, cam, z_near, z_far, seed, &seed_sigma, &b);
-    sw_sample_lattice(&g, n, k, &b);
+    sw_seeds seeds;
+    memset(&seeds, 0, sizeof seeds);
+    sw_sample_lattice(&g, n, k, &b, &seeds);
     if (b.acc.samples == 0) return SWARP_ERR_BODY_EMPTY;
-    const double lattice_seed[3] = {b.u[0], b.u[1], b.u[2]};
-    const double lattice_sigma = b.acc.max_sigma;
-    sw_refine(&g, n, k, steps, lattice_seed, lattice_sigma, &b);
+    for (int i = 0; i < seeds.count; ++i) sw_refine(&g, n, k, steps, seeds.u[i], seeds.sigma[i], &b);
     if (have_vertices && seed_sigma >= 0.0) sw_refine(&g, n, k, steps, seed, seed_sigma, &b);
     *out = b.acc;
     return b.acc.max_sigma == INFINITY ? SWARP_INFO_MEASURE_SINGULAR : SWARP_OK;

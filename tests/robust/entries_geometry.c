@@ -445,7 +445,9 @@ static void check_setup_result(swr_ctx* c, const scene_args* s, swarp_status st,
         for (int k = 0; k < 2; ++k) {
             double n = n2[k];
             SWR_CHECK(c, n == n && n != -INFINITY, "%s = %g", k ? "n_light" : "n_eye", n);
-            SWR_CHECK(c, n != INFINITY || uniform || st == SWARP_INFO_WARP_UNIFORM,
+            /* the statuses that bound the coverage outrank WARP_UNIFORM */
+            SWR_CHECK(c, n != INFINITY || uniform || st == SWARP_INFO_WARP_UNIFORM || st == SWARP_INFO_LIGHT_NEAR_CLIPPED ||
+                             st == SWARP_INFO_CASTERS_CLAMPED,
                       "%s = +inf with %s (only SWARP_INFO_WARP_UNIFORM may give +inf)", k ? "n_light" : "n_eye",
                       swarp_status_name(st));
             double e = n == INFINITY ? 0.0 : (r->view_far - r->view_near) / n;

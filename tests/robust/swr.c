@@ -341,7 +341,10 @@ void swr_rec(swr_ctx* c, const char* what, double v) {
 void swr_rec_inf(swr_ctx* c, const char* what, double v) {
     if (c->n_rec < SWR_MAX_REC) c->rec[c->n_rec++] = v;
     if (v != v || v == -INFINITY) swr_fail(c, "%s = %g after %s", what, v, swarp_status_name(c->status));
-    if (v == INFINITY && c->status != SWARP_INFO_WARP_UNIFORM)
+    /* the statuses that bound the coverage outrank WARP_UNIFORM (the one
+     * status reported, src/geometry/setup.c sw_info_merge) */
+    if (v == INFINITY && c->status != SWARP_INFO_WARP_UNIFORM && c->status != SWARP_INFO_LIGHT_NEAR_CLIPPED &&
+        c->status != SWARP_INFO_CASTERS_CLAMPED)
         swr_fail(c, "%s = +inf with %s (only SWARP_INFO_WARP_UNIFORM may give +inf)", what,
                  swarp_status_name(c->status));
 }

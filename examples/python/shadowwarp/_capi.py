@@ -232,6 +232,10 @@ STATUSES = [('SWARP_OK', 0, 'ok'),
  ('SWARP_INFO_CAMERA_FAR_FROM_SCENE',
   1105,
   'infinite far plane: z_far is the farthest view depth of the scene box ([RHS] 3.3.1)'),
+ ('SWARP_INFO_CASTERS_CLAMPED',
+  1106,
+  "casters over 1e10 times the receivers' size toward the light left out of the depth range (depth "
+  'clamp)'),
  ('SWARP_ERR_LIXEL_COPLANAR',
   200,
   'four of the five points are coplanar (or a point is zero): no unique matrix'),
@@ -1938,7 +1942,8 @@ DOCS = {'swarp_status_string': '@brief Readable message for a status; never NULL
                       ' Sampling: the vertices of H, a grid x grid NDC lattice at depths '
                       'geometric\n'
                       ' in [z_near, z_far] (points outside S skipped), then from the worst vertex\n'
-                      ' and the worst lattice sample refine steps of a deterministic compass\n'
+                      ' and the four worst local maxima of the lattice refine steps of a '
+                      'deterministic compass\n'
                       ' search over (NDC x, NDC y, log z), halving the step each time it finds no\n'
                       ' larger sigma (docs/accuracy.md states its error).  No allocation; the '
                       'result is deterministic.\n'

@@ -1,0 +1,171 @@
+/* Coverage sweep: a success status means the map covers.  Its own seeded
+ * generator over the input space the header declares valid (ordinary
+ * scenes and the extreme classes: fovy and aspect at their limits, far
+ * within 1e-9 of near, boxes with a face at 1e13..DBL_MAX, point and spot
+ * lights near or at the eye, eyes 1e5..1e6 from the origin) calls
+ * swarp_setup, swarp_setup_range and swarp_cascade_setup with every
+ * technique; every non-error result is checked by coverage_check.h against
+ * V ∩ S found by brute force in long double (not through the library's
+ * clipper).  Prints each violation with its inputs in %a; exit 1 on any.
+ *
+ *   coverage [COUNT [SEED]]     COUNT scenes (default 300), SEED (default 1)
+ *
+ * Also checks swarp_setup's view range lies in the camera's [near, far]. */
+#include <float.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "coverage_check.h"
+#include "shadowwarp.h"
+
+typedef struct cv_case {
+    swarp_camera cam;
+    swarp_light light;
+    swarp_aabb box;
+    swarp_setup_options o;
+} cv_case;
+
+static double cv_u(uint64_t* s, double a, double b) { return a + (b - a) * (double)cc_unif(s); }
+static double cv_log(uint64_t* s, double a, double b) { return a * pow(b / a, (double)cc_unif(s)); }
+static swarp_vec3 cv_dir(uint64_t* s) {
+    swarp_vec3 d;
+    do d = (swarp_vec3){cv_u(s, -1, 1), cv_u(s, -1, 1), cv_u(s, -1, 1)};
+    while (d.x * d.x + d.y * d.y + d.z * d.z < 1e-2);
+    return d;
+}
+
+/* the camera: ordinary, or one of the extreme classes */
+static void cv_camera(uint64_t* s, swarp_camera* c) {
+    memset(c, 0, sizeof *c);
+    const unsigned k = (unsigned)(cc_next(s) % 8);
+    const double off = k == 7 ? cv_log(s, 1e5, 1e6) : 0.0;
+    c->eye = (swarp_vec3){cv_u(s, -20, 20) + off, cv_u(s, 0, 20), cv_u(s, -20, 20) - off};
+    c->dir = cv_dir(s);
+    c->up = (swarp_vec3){0, 1, 0};
+    if (fabs(c->dir.y) > 0.99 * sqrt(c->dir.x * c->dir.x + c->dir.y * c->dir.y + c->dir.z * c->dir.z))
+        c->up = (swarp_vec3){1, 0, 0};
+    c->fovy = cv_u(s, 0.3, 2.0);
+    c->aspect = cv_u(s, 0.5, 2.5);
+    c->z_near = cv_log(s, 1e-2, 2);
+    c->z_far = c->z_near * cv_log(s, 10, 1e4);
+    if (k == 1) c->fovy = cv_log(s, 1e-9, 1e-3);
+    if (k == 2) c->aspect = cc_next(s) & 1 ? cv_log(s, 1e-9, 1e-3) : cv_log(s, 1e3, 1e6);
+    if (k == 3) c->z_far = c->z_near * (1 + cv_log(s, 1e-9, 1e-4));
+    if (k == 4) c->fovy = cv_u(s, 2.5, 3.1);
+}
+
+/* the box around the camera's region; sometimes one face "unbounded" */
+static void cv_box(uint64_t* s, const swarp_camera* c, swarp_aabb* b) {
+    const double r = cv_log(s, 5, 300);
+    const swarp_vec3 e = c->eye;
+    b->min = (swarp_vec3){e.x - r * cv_u(s, 0.2, 1.5), -cv_u(s, 0.5, 5), e.z - r * cv_u(s, 0.2, 1.5)};
+    b->max = (swarp_vec3){e.x + r * cv_u(s, 0.2, 1.5), cv_u(s, 1, 30), e.z + r * cv_u(s, 0.2, 1.5)};
+    if (cc_next(s) % 5 == 0) {
+        static const double big[] = {1e12, 1e13, 1e19, FLT_MAX, DBL_MAX};
+        double* f = (cc_next(s) & 1) ? &b->max.x : &b->min.x;
+        const int axis = (int)(cc_next(s) % 3);
+        f[axis] = (f == &b->max.x ? 1 : -1) * big[cc_next(s) % 5];
+    }
+}
+
+static void cv_light(uint64_t* s, const swarp_camera* c, const swarp_aabb* b, swarp_light* l) {
+    memset(l, 0, sizeof *l);
+    const unsigned k = (unsigned)(cc_next(s) % 6);
+    l->direction = cv_dir(s);
+    if (k < 3) {
+        l->type = SWARP_LIGHT_DIRECTIONAL;
+        if (l->direction.y > 0) l->direction.y = -l->direction.y;
+        return;
+    }
+    l->type = SWARP_LIGHT_POINT;
+    const double h = fmin(b->max.y, 1e3);
+    l->position = (swarp_vec3){c->eye.x + cv_u(s, -50, 50), h + cv_log(s, 1, 500), c->eye.z + cv_u(s, -50, 50)};
+    if (k == 4) { /* near or at the eye */
+        const double r = cc_next(s) & 1 ? 0.0 : cv_log(s, 1e-3, 1);
+        l->position = (swarp_vec3){c->eye.x + r * cv_u(s, -1, 1), c->eye.y + r * cv_u(s, -1, 1),
+                                   c->eye.z + r * cv_u(s, -1, 1)};
+        l->direction = c->dir;
+    }
+    if (k >= 4) l->cone_angle = cv_u(s, 0.2, 1.4);
+}
+
+static void cv_print_case(const char* fn, const cv_case* k, swarp_status st, const cc_result* r) {
+    const swarp_camera* c = &k->cam;
+    printf("FAIL %s %s tech %d depth %d pancake %u: ", fn, swarp_status_name(st), (int)k->o.technique,
+           (int)k->o.depth_range, k->o.pancake);
+    if (r) cc_print(stdout, r);
+    printf("\n  eye %a %a %a dir %a %a %a up %a %a %a fovy %a aspect %a near %a far %a\n", c->eye.x, c->eye.y,
+           c->eye.z, c->dir.x, c->dir.y, c->dir.z, c->up.x, c->up.y, c->up.z, c->fovy, c->aspect, c->z_near,
+           c->z_far);
+    printf("  light type %d dir %a %a %a pos %a %a %a cone %a\n  box %a %a %a  %a %a %a\n", (int)k->light.type,
+           k->light.direction.x, k->light.direction.y, k->light.direction.z, k->light.position.x,
+           k->light.position.y, k->light.position.z, k->light.cone_angle, k->box.min.x, k->box.min.y, k->box.min.z,
+           k->box.max.x, k->box.max.y, k->box.max.z);
+}
+
+typedef struct cv_stats { long calls, checked, failed; } cv_stats;
+
+/* one checked map: the promise over V ∩ S for [zn, zf] */
+static void cv_check_map(const cv_case* k, const char* fn, double zn, double zf, const swarp_mat4* m,
+                         swarp_status st, uint64_t seed, cv_stats* S) {
+    if (swarp_status_is_error(st)) return;
+    S->checked++;
+    const swarp_depth_range dr = k->o.depth_range;
+    cc_result r = cc_check(&k->cam, zn, zf, &k->light, &k->box, m, dr, (int)k->o.pancake, st, 7, 9, 60, seed);
+    if (!cc_ok(&r)) {
+        S->failed++;
+        cv_print_case(fn, k, st, &r);
+    }
+}
+
+static void cv_run(const cv_case* k, uint64_t seed, cv_stats* S) {
+    swarp_setup_result res;
+    swarp_status st = swarp_setup(&k->cam, &k->light, &k->box, &k->o, &res, NULL, 0, NULL);
+    S->calls++;
+    cv_check_map(k, "swarp_setup", k->cam.z_near, k->cam.z_far, &res.matrix, st, seed, S);
+    if (!swarp_status_is_error(st) && !(res.view_near >= k->cam.z_near && res.view_far <= k->cam.z_far)) {
+        S->failed++;
+        printf("view range [%a, %a] outside the camera's\n", res.view_near, res.view_far);
+        cv_print_case("swarp_setup", k, st, NULL);
+    }
+    /* an explicit sub-range */
+    const double zn = k->cam.z_near * cv_log(&seed, 1, 3), zf = fmin(k->cam.z_far, zn * cv_log(&seed, 1.5, 50));
+    if (zf > zn) {
+        st = swarp_setup_range(&k->cam, &k->light, &k->box, zn, zf, &k->o, &res, NULL, 0, NULL);
+        S->calls++;
+        cv_check_map(k, "swarp_setup_range", zn, zf, &res.matrix, st, seed, S);
+    }
+    swarp_cascade_options co;
+    memset(&co, 0, sizeof co);
+    co.setup = k->o;
+    co.split.count = 1 + (uint32_t)(seed % 4);
+    swarp_cascade_result cr;
+    swarp_cascade_split sp[SWARP_CASCADE_MAX_SPLITS];
+    size_t n = 0;
+    st = swarp_cascade_setup(&k->cam, &k->light, &k->box, &co, &cr, sp, SWARP_CASCADE_MAX_SPLITS, &n);
+    S->calls++;
+    if (!swarp_status_is_error(st))
+        for (size_t i = 0; i < n; ++i)
+            cv_check_map(k, "swarp_cascade_setup", sp[i].z_near, sp[i].z_far, &sp[i].matrix, sp[i].status, seed, S);
+}
+
+int main(int argc, char** argv) {
+    const long count = argc > 1 ? atol(argv[1]) : 300;
+    uint64_t s = argc > 2 ? strtoull(argv[2], NULL, 0) : 1;
+    cv_stats S = {0, 0, 0};
+    for (long i = 0; i < count; ++i) {
+        cv_case k;
+        cv_camera(&s, &k.cam);
+        cv_box(&s, &k.cam, &k.box);
+        cv_light(&s, &k.cam, &k.box, &k.light);
+        memset(&k.o, 0, sizeof k.o);
+        k.o.technique = (swarp_technique)(1 + cc_next(&s) % 3);
+        k.o.depth_range = cc_next(&s) & 1 ? SWARP_DEPTH_ZERO_TO_ONE : SWARP_DEPTH_NEG_ONE_TO_ONE;
+        k.o.pancake = cc_next(&s) % 4 == 0;
+        cv_run(&k, cc_next(&s), &S);
+    }
+    printf("coverage: %ld scenes, %ld calls, %ld maps checked, %ld violations\n", count, S.calls, S.checked,
+           S.failed);
+    return S.failed ? 1 : 0;
+}
