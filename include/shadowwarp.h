@@ -2454,7 +2454,11 @@ SWARP_API swarp_status swarp_lixel_select(const swarp_mat4* GLP, size_t count, c
  * generalised from the overhead light to a light at angle γ to the view in
  * the plane spanned by light and view direction.  It reduces to (2.3)/(2.4)
  * exactly at γ = 90°, and its light-space extent is W_lz of [RHS] (3.5) for
- * γ >= Θ.  Cost model (§3): shadow passes × a per-pass time (caller-measured,
+ * γ >= Θ.  It is a model of the view axis in the overhead-light frame, not
+ * of the matrices: swarp_plan_evaluate also builds the chain's matrices
+ * (swarp_cascade_setup, options as docs/planning.md §9 maps the chain) and
+ * reports their n' and measured error (swarp_measure_max) beside it.
+ * Cost model (§3): shadow passes × a per-pass time (caller-measured,
  * or the default fitted to [RHS] Table 7.1) + prefilter blur passes.
  */
 
@@ -2595,8 +2599,14 @@ typedef enum swarp_plan_filter {
 #define SWARP_PLAN_PLANE_NO_PASS_LEFT   4u /**< the pass limit (or time budget) is used up */
 #define SWARP_PLAN_PLANE_LIXEL_REFUSED  5u /**< swarp_lixel_matrix gave another error (e.g. singular) */
 
-/** The chosen chain.  All errors are Lloyd's m_x, m_z (screen pixels per
- *  texel side); costs per the cost model of docs/planning.md.
+/** The chosen chain.  The model's fields (splits, n_prime, split_max_mx/mz,
+ *  max_mx, max_mz, max_error, error_area) are Lloyd's overhead-light model
+ *  generalised to γ, on the view axis (screen pixels per texel side): they
+ *  equal the matrices' m_s, m_t only on the view axis under an overhead
+ *  light (the measured maxima are over all of H, off-axis corners included:
+ *  docs/planning.md §9 compares them).  The built_* fields and measured are
+ *  what the chain's matrices give (swarp_plan_evaluate only).  Costs per
+ *  the cost model of docs/planning.md.
  *  C has one namespace for functions and typedefs, so the type is the struct
  *  tag `struct swarp_plan` (the function is swarp_plan()), with the typedef
  *  swarp_plan_result as a shorter name for the same type. */
@@ -2614,9 +2624,9 @@ typedef struct swarp_plan {
     double splits[SWARP_PLAN_MAX_SPLITS + 1]; /**< C_0 = near .. C_K = far */
     double n_prime[SWARP_PLAN_MAX_SPLITS];    /**< warp parameter per split in light-space
                                                    units; +INFINITY = uniform */
-    double split_max_mx[SWARP_PLAN_MAX_SPLITS];
-    double split_max_mz[SWARP_PLAN_MAX_SPLITS];
-    double max_mx, max_mz;            /**< over the whole view */
+    double split_max_mx[SWARP_PLAN_MAX_SPLITS]; /**< the model's max m_x per split */
+    double split_max_mz[SWARP_PLAN_MAX_SPLITS]; /**< the model's max m_z per split */
+    double max_mx, max_mz;            /**< the model's maxima over the whole view */
     double max_error;                 /**< max(max_mx, max_mz), compared with the budget */
     double error_area;                /**< max_mx * max_mz (texel-area error bound); DBL_MAX when the
                                            product exceeds the double range */
@@ -2637,8 +2647,36 @@ typedef struct swarp_plan {
     uint32_t reasons;                 /**< SWARP_PLAN_WHY_* flags */
     uint32_t candidates;              /**< candidate chains evaluated */
     uint32_t plane_count;             /**< planes declared in the needs (plane_reason valid) */
+    /* The chain's matrices as an engine builds them: swarp_cascade_setup with
+     * the options docs/planning.md §9 maps the chain to (one split: the
+     * cascade is swarp_setup itself).  swarp_plan_evaluate fills them;
+     * swarp_plan leaves built = 0 and them zero (evaluate its chain). */
+    uint32_t built;                   /**< 1: the matrices were built, the fields below hold */
+    swarp_status built_status;        /**< swarp_cascade_setup's status for the chain (an
+                                           error: built = 0, e.g. SWARP_ERR_STABILIZE_LIGHT;
+                                           SWARP_OK with built = 0: not asked for) */
+    double built_splits[SWARP_PLAN_MAX_SPLITS + 1]; /**< the matrices' C_0 .. C_K
+                                           (swarp_cascade_result.splits) */
+    double built_n_eye[SWARP_PLAN_MAX_SPLITS]; /**< the n' each split's matrix uses, eye
+                                           units, +INFINITY uniform (swarp_cascade_split.n_eye):
+                                           the one n' of the chain */
+    swarp_measured_error split_measured[SWARP_PLAN_MAX_SPLITS]; /**< each split's measured
+                                           error (swarp_cascade_split.measured) */
+    swarp_measured_error measured;    /**< the worst split's (swarp_cascade_result.measured):
+                                           max_m_s, max_m_t, max_sigma, at */
     uint32_t _reserved[4];
 } swarp_plan_result;
+
+/** What swarp_plan_evaluate builds besides the model's prediction. */
+typedef enum swarp_plan_matrices {
+    SWARP_PLAN_MATRICES_MEASURED = 0,   /**< the chain's matrices and their measured error
+                                             (the default; 0.2-0.55 ms) */
+    SWARP_PLAN_MATRICES_UNMEASURED = 1, /**< the matrices only: built_splits, built_n_eye;
+                                             measured zero (4-38 µs) */
+    SWARP_PLAN_MATRICES_NONE = 2,       /**< the model only (built = 0, built_status
+                                             SWARP_OK; a few µs) */
+    SWARP_PLAN_MATRICES_FORCE_I32 = 0x7FFFFFFF
+} swarp_plan_matrices;
 
 /** A chain to evaluate as it is (swarp_plan_evaluate). */
 typedef struct swarp_plan_chain {
@@ -2646,6 +2684,7 @@ typedef struct swarp_plan_chain {
     swarp_plan_scheme scheme;   /**< NONE requires split_count 1 (0 means 1) */
     uint32_t split_count;       /**< 0: 1 */
     swarp_plan_stabilize stabilize;
+    swarp_plan_matrices matrices; /**< what swarp_plan_evaluate builds besides the model */
     uint32_t _reserved[4];
 } swarp_plan_chain;
 
@@ -2680,11 +2719,22 @@ SWARP_API swarp_status swarp_plan(const swarp_scene_needs* needs, const swarp_bu
 /** @brief Predict one given chain (no choice of warp or splits): the same
  *  error and cost model and the same filter / lixel / clamp decisions as
  *  swarp_plan(), for reports and for callers that force a technique.
- *  meets_budget says whether it meets the budget; the pass limit is not
- *  enforced on the chain (lixel maps still use only passes left).
+ *  meets_budget says whether it meets the budget (by the model); the pass
+ *  limit is not enforced on the chain (lixel maps still use only passes left).
+ *  Then the chain's matrices, built as an engine builds them
+ *  (swarp_cascade_setup with the needs' camera, light and box (an all-zero
+ *  box: the view frustum's bounding box), technique and parameter of the
+ *  warp, split count, scheme and λ, 64-level stabilisation, pancaking for
+ *  depth_clamp, the plan's map_resolution and the screen; docs/planning.md
+ *  §9): built_splits, built_n_eye, split_measured and measured are exactly
+ *  that cascade's.  Cost: one swarp_cascade_setup with its measurement
+ *  (about 60 µs for one map, 30 µs more per split).
  *  @return as swarp_plan (never SWARP_INFO_PLAN_BUDGET_UNMET), plus
  *          SWARP_ERR_SPLIT_COUNT (K > 16, or K > 1 with SCHEME_NONE, or K = 1
- *          with a split scheme) and SWARP_ERR_UNKNOWN_ENUM for the chain. */
+ *          with a split scheme) and SWARP_ERR_UNKNOWN_ENUM for the chain
+ *          (also its matrices).  A
+ *          chain no engine can build (a stabilised warp or point light) is
+ *          still predicted: built = 0 and built_status says why. */
 SWARP_API swarp_status swarp_plan_evaluate(const swarp_scene_needs* needs,
                                            const swarp_budget* budget,
                                            const swarp_plan_chain* chain,

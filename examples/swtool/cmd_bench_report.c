@@ -225,6 +225,7 @@ static int br_measure(const br_tech* t, double gamma_deg, double fn, unsigned ma
     c.scheme = t->scheme;
     c.split_count = t->K;
     c.stabilize = t->stab;
+    c.matrices = SWARP_PLAN_MATRICES_NONE; /* the row times the model's prediction */
     struct swarp_plan p;
     swarp_status s = t->planner ? swarp_plan(&n, &b, &p) : swarp_plan_evaluate(&n, &b, &c, &p);
     memset(r, 0, sizeof *r);

@@ -59,6 +59,10 @@
 /* ---- resolved inputs ------------------------------------------------------ */
 
 typedef struct sw_pin {
+    swarp_camera cam;           /* the camera as given (or the default) */
+    swarp_light light;          /* the light as given (or the default) */
+    swarp_aabb box;             /* the scene box (bounded only) */
+    int bounded;                /* the needs give a scene box */
     swarp_vec3 eye, view, up;   /* view and up unit length */
     double theta;               /* Θ = fovy / 2 */
     double aspect;
@@ -104,6 +108,7 @@ static swarp_status sw_resolve_camera(const swarp_camera* c, sw_pin* in) {
     in->aspect = c->aspect;
     in->z_near = c->z_near;
     in->z_far = c->z_far;
+    in->cam = *c;
     return SWARP_OK;
 }
 
@@ -121,6 +126,7 @@ static swarp_status sw_resolve_light(const swarp_light* l, sw_pin* in) {
         in->point_light = 0;
         in->to_light = sw_scale(d, -1.0);
     }
+    in->light = *l;
     return SWARP_OK;
 }
 
@@ -137,12 +143,23 @@ static swarp_status sw_resolve_view(const swarp_scene_needs* needs, sw_pin* in) 
         in->aspect = 4.0 / 3.0;
         in->z_near = 1.0;
         in->z_far = 100.0;
+        memset(&in->cam, 0, sizeof in->cam);
+        in->cam.eye = in->eye;
+        in->cam.dir = in->view;
+        in->cam.up = in->up;
+        in->cam.fovy = 2.0 * in->theta;
+        in->cam.aspect = in->aspect;
+        in->cam.z_near = in->z_near;
+        in->cam.z_far = in->z_far;
     } else if ((s = sw_resolve_camera(&needs->camera, in)) != SWARP_OK) {
         return s;
     }
     if (sw_all_zero(&needs->light, sizeof needs->light)) {
         in->point_light = 0;
         in->to_light = sw_v3(0.0, 1.0, 0.0);
+        memset(&in->light, 0, sizeof in->light);
+        in->light.type = SWARP_LIGHT_DIRECTIONAL;
+        in->light.direction = sw_v3(0.0, -1.0, 0.0);
     } else if ((s = sw_resolve_light(&needs->light, in)) != SWARP_OK) {
         return s;
     }
@@ -297,8 +314,9 @@ static swarp_status sw_resolve(const swarp_scene_needs* needs, const swarp_budge
     if ((s = sw_check_needs(needs)) != SWARP_OK) return s;
     if ((s = sw_check_budget(budget)) != SWARP_OK) return s;
     sw_resolve_defaults(needs, budget, in);
-    if (!sw_all_zero(&needs->scene_box, sizeof needs->scene_box) &&
-        (s = sw_adjust_near_far(&needs->scene_box, in)) != SWARP_OK)
+    in->bounded = !sw_all_zero(&needs->scene_box, sizeof needs->scene_box);
+    in->box = needs->scene_box;
+    if (in->bounded && (s = sw_adjust_near_far(&needs->scene_box, in)) != SWARP_OK)
         return s;
     return sw_resolve_gamma(in);
 }
@@ -600,6 +618,21 @@ static uint32_t sw_lixel_accepts(const sw_pin* in, const swarp_plane* pl) {
     }
 }
 
+/* The eight corners of the view frustum over the planned range [z_near, z_far]. */
+static void sw_view_corners(const sw_pin* in, swarp_vec3 out[8]) {
+    swarp_vec3 right = sw_v3(1.0, 0.0, 0.0);
+    (void)sw_normalize(sw_cross(in->view, in->up), &right); /* checked non-parallel */
+    swarp_vec3 up = sw_cross(right, in->view);
+    double ty = tan(in->theta), tx = ty * in->aspect;
+    double ds[2] = {in->z_near, in->z_far};
+    for (int k = 0; k < 8; ++k) {
+        double z = ds[k >> 2];
+        swarp_vec3 p = sw_add(in->eye, sw_scale(in->view, z));
+        p = sw_add(p, sw_scale(right, ((k & 1) ? 1.0 : -1.0) * z * tx));
+        out[k] = sw_add(p, sw_scale(up, ((k & 2) ? 1.0 : -1.0) * z * ty));
+    }
+}
+
 static uint32_t sw_plane_check(const sw_pin* in, const swarp_plane* pl) {
     swarp_vec3 nrm = sw_v3(pl->a, pl->b, pl->c);
     double len = sw_len(nrm);
@@ -619,18 +652,10 @@ static uint32_t sw_plane_check(const sw_pin* in, const swarp_plane* pl) {
         return SWARP_PLAN_PLANE_LIGHT_GRAZING;
     }
     /* frustum corners: some must lie behind the plane */
-    swarp_vec3 right = sw_v3(1.0, 0.0, 0.0);
-    (void)sw_normalize(sw_cross(in->view, in->up), &right); /* checked non-parallel */
-    swarp_vec3 up = sw_cross(right, in->view);
-    double ty = tan(in->theta), tx = ty * in->aspect;
-    double ds[2] = {in->z_near, in->z_far};
-    for (int k = 0; k < 8; ++k) {
-        double z = ds[k >> 2];
-        swarp_vec3 p = sw_add(in->eye, sw_scale(in->view, z));
-        p = sw_add(p, sw_scale(right, ((k & 1) ? 1.0 : -1.0) * z * tx));
-        p = sw_add(p, sw_scale(up, ((k & 2) ? 1.0 : -1.0) * z * ty));
-        if (sw_dot(nrm, p) + d <= 0.0) return sw_lixel_accepts(in, pl);
-    }
+    swarp_vec3 corners[8];
+    sw_view_corners(in, corners);
+    for (int k = 0; k < 8; ++k)
+        if (sw_dot(nrm, corners[k]) + d <= 0.0) return sw_lixel_accepts(in, pl);
     return SWARP_PLAN_PLANE_NOT_VISIBLE;
 }
 
@@ -732,6 +757,92 @@ static void sw_fill(const sw_pin* in, const sw_filter* flt, const swarp_plan_cha
     p->reasons = R;
 }
 
+/* ---- the chain's matrices (swarp_plan_evaluate) --------------------------- */
+
+/* An unbounded scene as an engine gives it to swarp_setup: the bounding box
+ * of the view frustum V, grown by this fraction of its size on every side so
+ * that V's corners lie strictly inside and H = V ∩ S is V itself (a corner
+ * on a face could be clipped away by rounding).  The light's focus grows by
+ * at most this fraction, below a texel of a 65536-texel map (1.5e-5). */
+#define SW_VIEW_BOX_GROW 1e-6
+
+static swarp_aabb sw_view_box(const sw_pin* in) {
+    swarp_vec3 c[8];
+    sw_view_corners(in, c);
+    swarp_aabb b = {c[0], c[0]};
+    for (int k = 1; k < 8; ++k) {
+        b.min = sw_v3(fmin(b.min.x, c[k].x), fmin(b.min.y, c[k].y), fmin(b.min.z, c[k].z));
+        b.max = sw_v3(fmax(b.max.x, c[k].x), fmax(b.max.y, c[k].y), fmax(b.max.z, c[k].z));
+    }
+    swarp_vec3 g = sw_scale(sw_sub(b.max, b.min), SW_VIEW_BOX_GROW);
+    b.min = sw_sub(b.min, g);
+    b.max = sw_add(b.max, g);
+    return b;
+}
+
+/* The swarp_setup_options of a warp (docs/planning.md §9): the technique and
+ * the LiSPSM parameter the planner's model names; PSM keeps Kozlov's inverse
+ * projection for a light behind the camera (psm_slideback 0), as the plan's
+ * inverse_projection says. */
+static void sw_warp_setup_options(swarp_plan_warp w, swarp_setup_options* so) {
+    so->technique = SWARP_TECHNIQUE_LISPSM;
+    switch (w) {
+    case SWARP_PLAN_WARP_LISPSM_NOPT: so->param = SWARP_WARP_PARAM_NOPT; break;
+    case SWARP_PLAN_WARP_LISPSM_NREPAR: so->param = SWARP_WARP_PARAM_NREPAR; break;
+    case SWARP_PLAN_WARP_LISPSM_GMNPR: so->param = SWARP_WARP_PARAM_GMNPR; break;
+    case SWARP_PLAN_WARP_LISPSM_PSEUDO:
+        so->param = SWARP_WARP_PARAM_PSEUDO;
+        so->pseudo_near = SW_PSEUDO_NP;
+        so->pseudo_far = SW_PSEUDO_FP;
+        break;
+    case SWARP_PLAN_WARP_PSM: so->technique = SWARP_TECHNIQUE_PSM; break;
+    default: so->technique = SWARP_TECHNIQUE_UNIFORM; break;
+    }
+}
+
+/* The cascade options an engine sets for the plan's chain: its warp, split
+ * count, scheme with the planner's λ, 64-level stabilisation [RHS] §3.5,
+ * pancaking for depth clamping, the tile (map) resolution and the screen. */
+static void sw_chain_options(const sw_pin* in, const swarp_plan_result* p, uint32_t skip_measure,
+                             swarp_cascade_options* o) {
+    memset(o, 0, sizeof *o);
+    sw_warp_setup_options(p->warp, &o->setup);
+    o->setup.skip_measure = skip_measure;
+    o->setup.map_width = p->map_resolution;
+    o->setup.screen_width = (uint32_t)in->res_ix;
+    o->setup.screen_height = (uint32_t)in->res_iy;
+    o->setup.pancake = p->depth_clamp;
+    o->split.count = p->split_count;
+    o->split.scheme = p->scheme == SWARP_PLAN_SCHEME_LOG ? SWARP_SCHEME_LOG : SWARP_SCHEME_PRACTICAL;
+    o->split.lambda = SW_DEFAULT_PSSM_LAMBDA;
+    o->stabilize.mode = p->stabilize == SWARP_PLAN_STABILIZE_APPROX64 ? SWARP_STABILIZE_LEVELS
+                                                                       : SWARP_STABILIZE_NONE;
+    o->warp_per_split = SWARP_CASCADE_WARP_EACH;
+}
+
+/* Builds the plan's chain with swarp_cascade_setup and copies its split
+ * distances, n' and measured error (zero when not measured) into the plan
+ * (built = 1), or records the cascade's error status (built = 0, the fields
+ * stay zero). */
+static void sw_build_chain(const sw_pin* in, uint32_t skip_measure, swarp_plan_result* p) {
+    swarp_cascade_options o;
+    sw_chain_options(in, p, skip_measure, &o);
+    const swarp_aabb box = in->bounded ? in->box : sw_view_box(in);
+    swarp_cascade_result r;
+    swarp_cascade_split sp[SWARP_PLAN_MAX_SPLITS];
+    size_t count = 0;
+    swarp_status s = swarp_cascade_setup(&in->cam, &in->light, &box, &o, &r, sp, SWARP_PLAN_MAX_SPLITS, &count);
+    p->built_status = s;
+    if (swarp_status_is_error(s) || count != p->split_count) return;
+    for (uint32_t i = 0; i <= p->split_count; ++i) p->built_splits[i] = r.splits[i];
+    for (uint32_t i = 0; i < p->split_count; ++i) {
+        p->built_n_eye[i] = sp[i].n_eye;
+        p->split_measured[i] = sp[i].measured;
+    }
+    p->measured = r.measured;
+    p->built = 1;
+}
+
 static int sw_better_error(const sw_eval* a, const sw_eval* b) {
     /* a strictly more accurate than b (beyond the tie tolerance) */
     return a->err < b->err * (1.0 - SW_ERR_TIE_REL);
@@ -819,7 +930,8 @@ SWARP_API swarp_status swarp_plan_evaluate(const swarp_scene_needs* needs,
     swarp_plan_chain c = *chain;
     if (c.warp == SWARP_PLAN_WARP_DEFAULT) c.warp = SWARP_PLAN_WARP_UNIFORM;
     if ((uint32_t)c.warp > (uint32_t)SWARP_PLAN_WARP_PSM || (uint32_t)c.scheme > (uint32_t)SWARP_PLAN_SCHEME_LOG ||
-        (uint32_t)c.stabilize > (uint32_t)SWARP_PLAN_STABILIZE_APPROX64)
+        (uint32_t)c.stabilize > (uint32_t)SWARP_PLAN_STABILIZE_APPROX64 ||
+        (uint32_t)c.matrices > (uint32_t)SWARP_PLAN_MATRICES_NONE)
         return SWARP_ERR_UNKNOWN_ENUM;
     if (c.split_count == 0) c.split_count = 1;
     if (c.scheme == SWARP_PLAN_SCHEME_DEFAULT) c.scheme = SWARP_PLAN_SCHEME_NONE;
@@ -840,6 +952,8 @@ SWARP_API swarp_status swarp_plan_evaluate(const swarp_scene_needs* needs,
                    SWARP_PLAN_WHY_NO_WARP_MOVING);
     p.reasons |= SWARP_PLAN_WHY_FORCED;
     p.candidates = 1;
+    if (c.matrices != SWARP_PLAN_MATRICES_NONE)
+        sw_build_chain(&in, c.matrices == SWARP_PLAN_MATRICES_UNMEASURED, &p);
     *out_plan = p;
     return in.point_light ? SWARP_INFO_PLAN_POINT_LIGHT : SWARP_OK;
 }
@@ -969,6 +1083,15 @@ static void sw_explain(const swarp_plan_result* p, sw_text* t) {
     sw_puts(t, " (pixels per texel), area ");
     sw_putd(t, p->error_area);
     sw_puts(t, p->meets_budget ? ": meets the budget\n" : ": does NOT meet the budget\n");
+    if (p->built && p->measured.samples > 0) {
+        sw_putdd(t, "measured on the matrices: max m_s ", p->measured.max_m_s, ", m_t ", p->measured.max_m_t);
+        sw_puts(t, ", sigma ");
+        sw_putd(t, p->measured.max_sigma);
+        sw_putdd(t, " at (", p->measured.at.x, ", ", p->measured.at.y);
+        sw_puts(t, ", ");
+        sw_putd(t, p->measured.at.z);
+        sw_puts(t, ")\n");
+    }
     for (uint32_t i = 0; i < p->split_count && p->split_count > 1; ++i) {
         sw_puts(t, "  split ");
         sw_putu(t, i);
@@ -976,6 +1099,12 @@ static void sw_explain(const swarp_plan_result* p, sw_text* t) {
         sw_puts(t, "]: n' ");
         sw_putd(t, p->n_prime[i]);
         sw_putdd(t, ", m_x ", p->split_max_mx[i], ", m_z ", p->split_max_mz[i]);
+        if (p->built && p->split_measured[i].samples > 0) {
+            sw_puts(t, "; matrix n' ");
+            sw_putd(t, p->built_n_eye[i]);
+            sw_puts(t, ", sigma ");
+            sw_putd(t, p->split_measured[i].max_sigma);
+        }
         sw_puts(t, "\n");
     }
     sw_puts(t, "cost: ");
@@ -1037,9 +1166,10 @@ SWARP_API swarp_status swarp_plan_explain(const struct swarp_plan* plan, char* o
 
 /* The ABI of the planner's structs (plain doubles and 32-bit fields, no
  * padding surprises across compilers and bindings). */
-_Static_assert(sizeof(swarp_plan_chain) == 32, "swarp_plan_chain ABI");
+_Static_assert(sizeof(swarp_plan_chain) == 36, "swarp_plan_chain ABI");
 _Static_assert(sizeof(swarp_budget) == 64, "swarp_budget ABI");
 _Static_assert(sizeof(swarp_scene_needs) == 432, "swarp_scene_needs ABI");
-_Static_assert(sizeof(struct swarp_plan) == 744, "swarp_plan ABI");
+_Static_assert(sizeof(struct swarp_plan) == 1968, "swarp_plan ABI");
+_Static_assert(offsetof(struct swarp_plan, built_splits) == 736, "swarp_plan ABI");
 _Static_assert(offsetof(struct swarp_plan, reasons) == 716, "swarp_plan ABI");
 _Static_assert(offsetof(swarp_scene_needs, planes) == 288, "swarp_scene_needs ABI");

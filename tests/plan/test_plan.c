@@ -20,6 +20,7 @@
 
 #include "shadowwarp.h"
 #include "test_util.h"
+#include "plan_helpers.h"
 
 #define PI 3.14159265358979323846
 #define DEG (PI / 180.0)
@@ -39,13 +40,7 @@ static double rng_log(double a, double b) { return exp(rng_range(log(a), log(b))
 static swarp_scene_needs scene(double gamma_deg, double fn) {
     swarp_scene_needs n;
     memset(&n, 0, sizeof n);
-    n.camera.eye = (swarp_vec3){0.0, 2.0, 0.0};
-    n.camera.dir = (swarp_vec3){0.0, 0.0, -1.0};
-    n.camera.up = (swarp_vec3){0.0, 1.0, 0.0};
-    n.camera.fovy = 60.0 * DEG;
-    n.camera.aspect = 4.0 / 3.0;
-    n.camera.z_near = 1.0;
-    n.camera.z_far = fn;
+    n.camera = plan_test_camera(fn);
     double g = gamma_deg * DEG;
     n.light.type = SWARP_LIGHT_DIRECTIONAL;
     n.light.direction = (swarp_vec3){0.0, -sin(g), cos(g)};
@@ -57,15 +52,6 @@ static swarp_budget budget_of(double max_error) {
     memset(&b, 0, sizeof b);
     b.max_error = max_error;
     return b;
-}
-
-static swarp_plan_chain chain_of(swarp_plan_warp w, swarp_plan_scheme s, uint32_t K) {
-    swarp_plan_chain c;
-    memset(&c, 0, sizeof c);
-    c.warp = w;
-    c.scheme = s;
-    c.split_count = K;
-    return c;
 }
 
 /* ---- 1. the error model ----------------------------------------------------- */
@@ -700,6 +686,7 @@ START_TEST(optimal_against_brute_force) {
             if (chains[k].K > max_passes) continue;
             if (n.camera_moves && chains[k].warp != SWARP_PLAN_WARP_UNIFORM) continue;
             swarp_plan_chain c = chain_of(chains[k].warp, chains[k].scheme, chains[k].K);
+            c.matrices = SWARP_PLAN_MATRICES_NONE; /* the model decides the choice */
             swarp_plan_result q;
             ck_assert(!swarp_status_is_error(swarp_plan_evaluate(&n, &b, &c, &q)));
             /* the overall maxima are the largest split maxima */
@@ -889,6 +876,9 @@ START_TEST(bad_chain_and_null) {
     c = chain_of(SWARP_PLAN_WARP_UNIFORM, SWARP_PLAN_SCHEME_NONE, 1);
     c._reserved[1] = 1;
     ck_assert_int_eq(swarp_plan_evaluate(&n, &b, &c, &p), SWARP_ERR_RESERVED_NONZERO);
+    c._reserved[1] = 0;
+    c.matrices = (swarp_plan_matrices)3;
+    ck_assert_int_eq(swarp_plan_evaluate(&n, &b, &c, &p), SWARP_ERR_UNKNOWN_ENUM);
     ck_assert_int_eq(memcmp(&p, &sentinel, sizeof p), 0);
 }
 END_TEST
@@ -939,6 +929,15 @@ START_TEST(explain_text_and_capacity) {
     bad.reasons = 0xFFFFFFFFu;
     for (int i = 0; i < 17; ++i) bad.splits[i] = -1.23456789e-300;
     for (int i = 0; i < 16; ++i) bad.n_prime[i] = bad.split_max_mx[i] = bad.split_max_mz[i] = -1.2345e300;
+    /* with the matrices' n' and measured error on every line */
+    bad.built = 1;
+    bad.measured.samples = 1;
+    bad.measured.max_m_s = bad.measured.max_m_t = bad.measured.max_sigma = -1.2345e300;
+    bad.measured.at = (swarp_vec3){-1.2345e300, -1.2345e300, -1.2345e300};
+    for (int i = 0; i < 16; ++i) {
+        bad.built_n_eye[i] = bad.split_measured[i].max_sigma = -1.2345e300;
+        bad.split_measured[i].samples = 1;
+    }
     ck_assert_int_eq(swarp_plan_explain(&bad, NULL, 0, &cnt), SWARP_ERR_CAPACITY);
     ck_assert_uint_le(cnt, SWARP_PLAN_EXPLAIN_MAX);
     ck_assert_str_eq(swarp_plan_warp_name((swarp_plan_warp)99), "?");

@@ -191,6 +191,7 @@ static int plan_on_budget_edge(const swarp_scene_needs* n, const swarp_budget* b
             ch.warp = K == 1 ? single[v] : split[v % 3];
             ch.scheme = K == 1 ? SWARP_PLAN_SCHEME_NONE : v < 3 ? SWARP_PLAN_SCHEME_PRACTICAL : SWARP_PLAN_SCHEME_LOG;
             if (moves && ch.warp != SWARP_PLAN_WARP_UNIFORM) continue;
+            ch.matrices = SWARP_PLAN_MATRICES_NONE; /* the model's error decides the edge */
             swarp_plan_result e;
             if (swarp_status_is_error(swarp_plan_evaluate(n, b, &ch, &e))) continue;
             if (fabs(e.max_error - budget) <= delta) return 1;

@@ -376,14 +376,21 @@ class PlanResult(Struct):
     reasons: int
     candidates: int
     plane_count: int
-    def __init__(self, *args: Any, warp: Any = ..., scheme: Any = ..., split_count: Any = ..., map_resolution: Any = ..., atlas_tiles: Any = ..., stabilize: Any = ..., inverse_projection: Any = ..., depth_clamp: Any = ..., gamma: Any = ..., z_near: Any = ..., z_far: Any = ..., splits: Any = ..., n_prime: Any = ..., split_max_mx: Any = ..., split_max_mz: Any = ..., max_mx: Any = ..., max_mz: Any = ..., max_error: Any = ..., error_area: Any = ..., lixel_count: Any = ..., lixel_planes: Any = ..., plane_reason: Any = ..., lixel_error: Any = ..., filter: Any = ..., filter_layers: Any = ..., filter_width: Any = ..., filter_exponent_pos: Any = ..., filter_exponent_neg: Any = ..., shadow_passes: Any = ..., blur_passes: Any = ..., texels: Any = ..., cost_ns: Any = ..., meets_budget: Any = ..., reasons: Any = ..., candidates: Any = ..., plane_count: Any = ...) -> None: ...
+    built: int
+    built_status: int
+    built_splits: Sequence[float]
+    built_n_eye: Sequence[float]
+    split_measured: Sequence[MeasuredError]
+    measured: MeasuredError
+    def __init__(self, *args: Any, warp: Any = ..., scheme: Any = ..., split_count: Any = ..., map_resolution: Any = ..., atlas_tiles: Any = ..., stabilize: Any = ..., inverse_projection: Any = ..., depth_clamp: Any = ..., gamma: Any = ..., z_near: Any = ..., z_far: Any = ..., splits: Any = ..., n_prime: Any = ..., split_max_mx: Any = ..., split_max_mz: Any = ..., max_mx: Any = ..., max_mz: Any = ..., max_error: Any = ..., error_area: Any = ..., lixel_count: Any = ..., lixel_planes: Any = ..., plane_reason: Any = ..., lixel_error: Any = ..., filter: Any = ..., filter_layers: Any = ..., filter_width: Any = ..., filter_exponent_pos: Any = ..., filter_exponent_neg: Any = ..., shadow_passes: Any = ..., blur_passes: Any = ..., texels: Any = ..., cost_ns: Any = ..., meets_budget: Any = ..., reasons: Any = ..., candidates: Any = ..., plane_count: Any = ..., built: Any = ..., built_status: Any = ..., built_splits: Any = ..., built_n_eye: Any = ..., split_measured: Any = ..., measured: Any = ...) -> None: ...
 
 class PlanChain(Struct):
     warp: int
     scheme: int
     split_count: int
     stabilize: int
-    def __init__(self, *args: Any, warp: Any = ..., scheme: Any = ..., split_count: Any = ..., stabilize: Any = ...) -> None: ...
+    matrices: int
+    def __init__(self, *args: Any, warp: Any = ..., scheme: Any = ..., split_count: Any = ..., stabilize: Any = ..., matrices: Any = ...) -> None: ...
 
 class CubeOptions(Struct):
     z1: float
@@ -477,6 +484,9 @@ PLAN_FILTER_VSM: int
 PLAN_FILTER_MSM: int
 PLAN_FILTER_EVSM: int
 PLAN_FILTER_LVSM: int
+PLAN_MATRICES_MEASURED: int
+PLAN_MATRICES_UNMEASURED: int
+PLAN_MATRICES_NONE: int
 VERSION_MAJOR: int
 VERSION_MINOR: int
 VERSION_PATCH: int

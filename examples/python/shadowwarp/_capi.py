@@ -155,7 +155,11 @@ ENUMS = {'swarp_depth_range': {'SWARP_DEPTH_DEFAULT': 0,
                        'SWARP_PLAN_FILTER_MSM': 4,
                        'SWARP_PLAN_FILTER_EVSM': 5,
                        'SWARP_PLAN_FILTER_LVSM': 6,
-                       'SWARP_PLAN_FILTER_FORCE_I32': 2147483647}}
+                       'SWARP_PLAN_FILTER_FORCE_I32': 2147483647},
+ 'swarp_plan_matrices': {'SWARP_PLAN_MATRICES_MEASURED': 0,
+                         'SWARP_PLAN_MATRICES_UNMEASURED': 1,
+                         'SWARP_PLAN_MATRICES_NONE': 2,
+                         'SWARP_PLAN_MATRICES_FORCE_I32': 2147483647}}
 
 STATUSES = [('SWARP_OK', 0, 'ok'),
  ('SWARP_ERR_NULL_POINTER', 1, 'a required pointer argument is NULL'),
@@ -631,12 +635,19 @@ STRUCTS = [('swarp_vec3', [('x', 'double', ()), ('y', 'double', ()), ('z', 'doub
    ('reasons', 'uint32_t', ()),
    ('candidates', 'uint32_t', ()),
    ('plane_count', 'uint32_t', ()),
+   ('built', 'uint32_t', ()),
+   ('built_status', 'swarp_status', ()),
+   ('built_splits', 'double', (17,)),
+   ('built_n_eye', 'double', (16,)),
+   ('split_measured', 'swarp_measured_error', (16,)),
+   ('measured', 'swarp_measured_error', ()),
    ('_reserved', 'uint32_t', (4,))]),
  ('swarp_plan_chain',
   [('warp', 'swarp_plan_warp', ()),
    ('scheme', 'swarp_plan_scheme', ()),
    ('split_count', 'uint32_t', ()),
    ('stabilize', 'swarp_plan_stabilize', ()),
+   ('matrices', 'swarp_plan_matrices', ()),
    ('_reserved', 'uint32_t', (4,))]),
  ('swarp_cube_options',
   [('z1', 'double', ()),
@@ -2870,12 +2881,24 @@ DOCS = {'swarp_status_string': '@brief Readable message for a status; never NULL
  'swarp_plan_evaluate': '@brief Predict one given chain (no choice of warp or splits): the same\n'
                         ' error and cost model and the same filter / lixel / clamp decisions as\n'
                         ' swarp_plan(), for reports and for callers that force a technique.\n'
-                        ' meets_budget says whether it meets the budget; the pass limit is not\n'
-                        ' enforced on the chain (lixel maps still use only passes left).\n'
+                        ' meets_budget says whether it meets the budget (by the model); the pass\n'
+                        ' limit is not enforced on the chain (lixel maps still use only passes '
+                        'left).\n'
+                        " Then the chain's matrices, built as an engine builds them\n"
+                        " (swarp_cascade_setup with the needs' camera, light and box (an all-zero\n"
+                        " box: the view frustum's bounding box), technique and parameter of the\n"
+                        ' warp, split count, scheme and λ, 64-level stabilisation, pancaking for\n'
+                        " depth_clamp, the plan's map_resolution and the screen; docs/planning.md\n"
+                        ' §9): built_splits, built_n_eye, split_measured and measured are exactly\n'
+                        " that cascade's.  Cost: one swarp_cascade_setup with its measurement\n"
+                        ' (about 60 µs for one map, 30 µs more per split).\n'
                         ' @return as swarp_plan (never SWARP_INFO_PLAN_BUDGET_UNMET), plus\n'
                         '         SWARP_ERR_SPLIT_COUNT (K > 16, or K > 1 with SCHEME_NONE, or K = '
                         '1\n'
-                        '         with a split scheme) and SWARP_ERR_UNKNOWN_ENUM for the chain.',
+                        '         with a split scheme) and SWARP_ERR_UNKNOWN_ENUM for the chain\n'
+                        '         (also its matrices).  A\n'
+                        '         chain no engine can build (a stabilised warp or point light) is\n'
+                        '         still predicted: built = 0 and built_status says why.',
  'swarp_plan_explain': '@brief Readable text of a plan: the chain, the predicted error and cost,\n'
                        ' and one line per reason flag and per left-out plane.  '
                        'Locale-independent.\n'
