@@ -21,9 +21,9 @@ mkdir -p "$out"
 CC_FUZZ="${CC_FUZZ:-clang}"
 # shellcheck disable=SC2046
 "$CC_FUZZ" -std=c11 -g -O1 -fno-omit-frame-pointer -fsanitize=fuzzer,address,undefined \
-    -fno-sanitize-recover=undefined -DSWARP_STATIC -DSWARP_EXPERIMENTAL_API -Iinclude -Isrc \
+    -fno-sanitize-recover=undefined -DSWARP_STATIC -DSWARP_EXPERIMENTAL_API -Iinclude -Isrc -Itests -Itests/support \
     $(find src -name "*.c" | sort) tests/robust/swr.c tests/robust/entries*.c tests/fuzz/fuzz_target.c -lm -o "$out/fuzz_target"
-"$CC_FUZZ" -std=c11 -O1 -DSWARP_STATIC -DSWARP_EXPERIMENTAL_API -Iinclude -Isrc $(find src -name "*.c" | sort) tests/robust/swr.c tests/robust/entries*.c tests/robust/hard_cases.c -lm \
+"$CC_FUZZ" -std=c11 -O1 -DSWARP_STATIC -DSWARP_EXPERIMENTAL_API -Iinclude -Isrc -Itests -Itests/support $(find src -name "*.c" | sort) tests/robust/swr.c tests/robust/entries*.c tests/robust/hard_cases.c -lm \
     -o "$out/hard_cases_list"
 targets="$("$out/hard_cases_list" --list | awk '$3 == "available" {print $1}')"
 n="$(echo "$targets" | wc -w)"
