@@ -54,8 +54,8 @@ coverage_step() {
         -Dc_args=-fprofile-update=atomic >/dev/null
     ninja -C build-cov >/dev/null
     find build-cov -name '*.gcda' -delete
-    meson test -C build-cov --no-suite python --no-suite demo --no-suite gl >/dev/null ||
-        meson test -C build-cov --no-suite python --no-suite demo --no-suite gl --print-errorlogs || return 1
+    meson test -C build-cov --no-suite python --no-suite demo --no-suite gl --no-suite report >/dev/null ||
+        meson test -C build-cov --no-suite python --no-suite demo --no-suite gl --no-suite report --print-errorlogs || return 1
     gcovr -r . --filter 'src/' --exclude-unreachable-branches --exclude-throw-branches build-cov | tail -n 60
     gcovr -r . --filter 'src/' --exclude-unreachable-branches --exclude-throw-branches --print-summary \
         -o build-cov/coverage-summary.txt build-cov
