@@ -288,11 +288,7 @@ static void sw_kernel_scale(const swarp_mat4* M, swarp_vec3 c, double r_l, doubl
             const double hk = k == 0 ? h.x : h.y;
             g[j] = (row_k - hk / h.w * row_w) / h.w;
         }
-        /* sqrt of the sum of squares (hypot is slow); exact enough and safe
-         * for |g| up to ~1e150, beyond which the overflow-proof length is used */
-        const double s2 = g[0] * g[0] + g[1] * g[1] + g[2] * g[2];
-        const double len = (s2 > 1e-290 && s2 < 1e290) ? sqrt(s2) : sw_len(sw_v3(g[0], g[1], g[2]));
-        out[k] = r_l * l_sc * len;
+        out[k] = r_l * l_sc * sw_len_fast(sw_v3(g[0], g[1], g[2]));
     }
 }
 

@@ -65,20 +65,11 @@ static void sw_screen_jacobian(const sw_screen* s, swarp_vec3 d, double z, swarp
     col[1] = s->sy * (sw_dot(w, s->u) * z - sw_dot(d, s->u) * dz) / (z * z);
 }
 
-static swarp_vec4 sw_apply(const swarp_mat4* m, swarp_vec3 p, double w) {
-    swarp_vec4 c;
-    c.x = sw_at(m, 0, 0) * p.x + sw_at(m, 0, 1) * p.y + sw_at(m, 0, 2) * p.z + sw_at(m, 0, 3) * w;
-    c.y = sw_at(m, 1, 0) * p.x + sw_at(m, 1, 1) * p.y + sw_at(m, 1, 2) * p.z + sw_at(m, 1, 3) * w;
-    c.z = sw_at(m, 2, 0) * p.x + sw_at(m, 2, 1) * p.y + sw_at(m, 2, 2) * p.z + sw_at(m, 2, 3) * w;
-    c.w = sw_at(m, 3, 0) * p.x + sw_at(m, 3, 1) * p.y + sw_at(m, 3, 2) * p.z + sw_at(m, 3, 3) * w;
-    return c;
-}
-
 /* d(texel s, t)/d(w) of clip (x/w, y/w), c the point's clip coordinates:
  * d(x/w) = (dx w - x dw)/w^2, with (dx, dy, dw) = M (w, 0). */
 static void sw_map_jacobian(const swarp_mat4* m, const swarp_measure_res* res, swarp_vec4 c,
                             swarp_vec3 w, double col[2]) {
-    const swarp_vec4 dc = sw_apply(m, w, 0.0);
+    const swarp_vec4 dc = sw_xform4(m, (swarp_vec4){w.x, w.y, w.z, 0.0});
     const double w2 = c.w * c.w;
     col[0] = 0.5 * (double)res->map_width * (dc.x * c.w - c.x * dc.w) / w2;
     col[1] = 0.5 * (double)res->map_height * (dc.y * c.w - c.y * dc.w) / w2;
@@ -88,15 +79,8 @@ static void sw_map_jacobian(const swarp_mat4* m, const swarp_measure_res* res, s
  * sigma^2 = (F + sqrt(F^2 - 4 det^2)) / 2, F the squared Frobenius norm,
  * written with two lengths so that F^2 - 4 det^2 = ((a-d)^2 + (b+c)^2)((a+d)^2 + (b-c)^2)
  * never cancels below zero. */
-/* hypot(a, b) as one square root where the squares cannot overflow or
- * underflow (the range of sw_len_fast), hypot outside it. */
-static double sw_hypot_fast(double a, double b) {
-    const double s = a * a + b * b;
-    return s > 1e-290 && s < 1e290 ? sqrt(s) : hypot(a, b);
-}
-
 static double sw_sigma_max(double a, double b, double c, double d) {
-    const double p = sw_hypot_fast(a - d, b + c), q = sw_hypot_fast(a + d, b - c);
+    const double p = sw_len_fast(sw_v3(a - d, b + c, 0.0)), q = sw_len_fast(sw_v3(a + d, b - c, 0.0));
     return 0.5 * (p + q);
 }
 
@@ -105,7 +89,7 @@ static void sw_measure_one(const sw_screen* s, const swarp_mat4* m, const swarp_
     swarp_texel_error e = {0.0, 0.0, 0.0, 0u, 0u};
     const swarp_vec3 d = sw_sub(x, s->eye);
     const double z = sw_dot(d, s->f);
-    const swarp_vec4 c = sw_apply(m, x, 1.0);
+    const swarp_vec4 c = sw_xform_point(m, x);
     const double edge = c.w * (1.0 + SW_INSIDE_REL);
     if (c.w > 0.0 && fabs(c.x) <= edge && fabs(c.y) <= edge) e.flags |= SWARP_TEXEL_INSIDE;
     if (!(z > 0.0)) {
@@ -135,8 +119,8 @@ static void sw_measure_one(const sw_screen* s, const swarp_mat4* m, const swarp_
     const double i10 = -jt[0][1] / det, i11 = jt[0][0] / det;
     const double d00 = js[0][0] * i00 + js[1][0] * i10, d01 = js[0][0] * i01 + js[1][0] * i11;
     const double d10 = js[0][1] * i00 + js[1][1] * i10, d11 = js[0][1] * i01 + js[1][1] * i11;
-    e.m_s = sw_hypot_fast(d00, d10);
-    e.m_t = sw_hypot_fast(d01, d11);
+    e.m_s = sw_len_fast(sw_v3(d00, d10, 0.0));
+    e.m_t = sw_len_fast(sw_v3(d01, d11, 0.0));
     e.sigma = sw_sigma_max(d00, d01, d10, d11);
     *out = e;
 }
@@ -150,18 +134,12 @@ static swarp_status sw_check_measure_res(const swarp_measure_res* res, swarp_mea
     return SWARP_OK;
 }
 
-static int sw_mat4_finite(const swarp_mat4* m) {
-    for (int i = 0; i < 16; ++i)
-        if (!sw_finite(m->m[i])) return 0;
-    return 1;
-}
-
 static swarp_status sw_check_measure_inputs(const swarp_camera* cam, const swarp_mat4* matrix,
                                             const swarp_measure_res* res, swarp_measure_res* r) {
     if (!cam || !matrix) return SWARP_ERR_NULL_POINTER;
     swarp_status st = sw_check_camera_shape(cam);
     if (st != SWARP_OK) return st;
-    if (!sw_mat4_finite(matrix)) return SWARP_ERR_NON_FINITE;
+    if (!sw_mat_finite(matrix)) return SWARP_ERR_NON_FINITE;
     return sw_check_measure_res(res, r);
 }
 
