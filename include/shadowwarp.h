@@ -48,12 +48,13 @@
  * ABI             Plain structs of doubles and 32-bit enums; no unions,
  *                 bitfields, bool or alignment attributes.  Every enum has a
  *                 _FORCE_I32 sentinel.
- * Stability       Sections 1-8 below are the stable API.  Section 9 is
- *                 experimental: it is declared only when the caller defines
- *                 SWARP_EXPERIMENTAL_API before including this header, and its
- *                 functions and structs may still change in a minor release.
- *                 The library always exports both parts; the statuses of both
- *                 are in the one status list.
+ * Stability       Sections 1-7 below and the status list (section 9) are
+ *                 the stable API.  Section 8 is experimental: it is declared
+ *                 only when the caller defines SWARP_EXPERIMENTAL_API before
+ *                 including this header, and its functions and structs may
+ *                 still change in a minor release.  The library always
+ *                 exports both parts; the statuses of both are in the one
+ *                 status list.
  * Papers          Comments cite the papers by tag and equation, e.g.
  *                 [RHS] (3.4):  [RHS] Stingl, "Robust Hard Shadows";
  *                 [GMNPR] Zhang et al., "Generalized Minimum-Norm Perspective
@@ -99,7 +100,7 @@
  *      // across borders (swarp_cascade_blend) and biases with
  *      // sp[i].depth_per_world or swarp_bias_normal_offset.  The GLSL twins of
  *      // these functions are in shaders/splits.glsl, those of the filters of
- *      // section 8 in shaders/filtering.glsl.
+ *      // section 7 in shaders/filtering.glsl.
  *
  * 3. The plan (experimental; when the scene, the budget or the hardware
  *    changes, not per frame):
@@ -119,14 +120,15 @@
  *
  * CONTENTS
  * --------
- *   1. Boundary types               6. Error: measured, and Lloyd's m_x, m_z
- *   2. Camera, light, scene box     7. Cascades: split schemes, atlas,
- *   3. Status codes                    stabilisation, bias, the one call
- *   4. Matrix helpers, version      8. Filtering: VSM, LVSM, EVSM, MSM, PCF
- *   5. One shadow map: swarp_setup  9. Experimental (SWARP_EXPERIMENTAL_API):
- *      and its steps; closed-form       polyhedra and bodies, light frames
- *      warp parameters                  that follow, lixel maps, planner,
- *                                       cube maps, min-depth near plane
+ *   1. Boundary types, swarp_status  6. Cascades: split schemes, atlas,
+ *   2. Camera, light, scene box         stabilisation, bias, the one call
+ *   3. Status messages, matrix       7. Filtering: VSM, LVSM, EVSM, MSM, PCF
+ *      helpers, version              8. Experimental (SWARP_EXPERIMENTAL_API):
+ *   4. One shadow map: swarp_setup      polyhedra and bodies, light frames
+ *      and its steps; closed-form       that follow, lixel maps, planner,
+ *      warp parameters                  cube maps, min-depth near plane
+ *   5. Error: measured, and Lloyd's  9. Status codes: every swarp_status
+ *      m_x, m_z                         value with its message
  */
 
 #ifndef SHADOWWARP_H
@@ -174,6 +176,15 @@ typedef struct swarp_vec4 { double x, y, z, w; } swarp_vec4;
 typedef struct swarp_mat4 { double m[16]; } swarp_mat4;
 /** Plane a*x + b*y + c*z + d = 0; (a, b, c) is the normal (any length > 0). */
 typedef struct swarp_plane { double a, b, c, d; } swarp_plane;
+
+/** The status every function returns: 0 (SWARP_OK), an error (1..999) or an
+ *  informational result (1000..1999).  Its values are the enumerators of
+ *  enum swarp_status_code, listed with their messages in the last section
+ *  of this header (9).  It is a 32-bit integer rather than the enum itself
+ *  so that the list can close the header (C needs an enum complete before
+ *  a prototype may return it) and so that its size is fixed whatever the
+ *  compiler's enum options (-fshort-enums). */
+typedef int32_t swarp_status;
 
 /** Clip-space depth convention of a projection matrix. */
 typedef enum swarp_depth_range {
@@ -238,184 +249,8 @@ typedef struct swarp_light {
 typedef struct swarp_aabb { swarp_vec3 min, max; } swarp_aabb;
 
 /* ======================================================================== */
-/* 3. Status codes                                                          */
+/* 3. Status messages, matrix helpers and version                          */
 /* ======================================================================== */
-/*
- * The status every function returns.  It stands here, before the first
- * function, because C and C++ need an enum complete before a prototype
- * returns it.  One X-macro list per stage, X(NAME, NUMBER, "message").
- * Errors 1..999, informational 1000..1999.  Ranges per stage: core 1..99,
- * geometry 100..199, lixel 200..299, filter 300..399, cascades (splits,
- * atlas, stabilisation, bias) 400..499, plan 500..599, extras (cube maps,
- * min depth) 600..699; informational likewise 1000 + ...  Numbers are part
- * of the ABI: never renumber, never reuse.
- */
-#define SWARP_STATUS_LIST_CORE(X)                                                   \
-    X(SWARP_OK, 0, "ok")                                                            \
-    X(SWARP_ERR_NULL_POINTER, 1, "a required pointer argument is NULL")             \
-    X(SWARP_ERR_NON_FINITE, 2, "an input value is NaN or infinite")                 \
-    X(SWARP_ERR_INVALID_ARGUMENT, 3, "an argument is invalid")                      \
-    X(SWARP_ERR_OUT_OF_RANGE, 4, "a value lies outside its documented domain")      \
-    X(SWARP_ERR_NEAR_FAR, 5, "near must be > 0 and far must be > near")             \
-    X(SWARP_ERR_FOV, 6, "field of view (or half angle) outside its open interval")  \
-    X(SWARP_ERR_RESOLUTION, 7, "a resolution is zero, negative or not finite")      \
-    X(SWARP_ERR_CAPACITY, 8, "output capacity too small; needed count written")     \
-    X(SWARP_ERR_ZERO_VECTOR, 9, "a direction vector has zero length")               \
-    X(SWARP_ERR_RESERVED_NONZERO, 10, "a _reserved field is not zero")              \
-    X(SWARP_ERR_DEGENERATE, 11, "degenerate configuration")                         \
-    X(SWARP_ERR_SPLIT_COUNT, 12, "split count m is 0 (or above SWARP_SPLIT_MAX_COUNT for a split scheme)") \
-    X(SWARP_ERR_UNKNOWN_ENUM, 13, "an enum value is not one of the documented ones")\
-    X(SWARP_ERR_NOT_INCREASING, 14, "split distances must be strictly increasing")  \
-    X(SWARP_ERR_SINGULAR, 15, "a matrix is singular or too ill-conditioned")        \
-    X(SWARP_ERR_OVERFLOW, 16, "the result does not fit a finite double (inputs too extreme)") \
-    X(SWARP_INFO_WARP_UNIFORM, 1000,                                                \
-      "warp faded to uniform (duelling frusta: light parallel to the view)")        \
-    X(SWARP_INFO_GMNPR_ADJUSTED, 1001,                                              \
-      "theta < phi: lambda_GMNPR uses the adjusted branch lambda_2* of eq. (7)")    \
-    X(SWARP_INFO_GLPR_NO_SOLUTION, 1002,                                            \
-      "GLPR has no positive lambda here (theta <= phi); lambda_GMNPR was written") \
-    X(SWARP_INFO_MEASURE_SINGULAR, 1003,                                            \
-      "the map is singular at a measured point: its error is +inf there")
-
-/* geometry: 100..199, 1100..1199 */
-#define SWARP_STATUS_LIST_GEOMETRY(X)                                                   \
-    X(SWARP_ERR_BODY_EMPTY, 100,                                                        \
-      "the view frustum misses the scene box (H = V intersect S is empty)")              \
-    X(SWARP_ERR_BOX_INVERTED, 101, "scene box min exceeds max on some axis")            \
-    X(SWARP_ERR_BOX_DEGENERATE, 102,                                                    \
-      "scene box has zero extent along two or more axes")                               \
-    X(SWARP_ERR_LIGHT_INSIDE_BODY, 103,                                                 \
-      "point light inside the body B: one perspective map cannot cover it")             \
-    X(SWARP_ERR_FOLLOW_FRAME, 104,                                                      \
-      "the previous result's light frame is not orthonormal or not from this technique")  \
-    X(SWARP_ERR_CAMERA_NOT_PERSPECTIVE, 105,                                            \
-      "the projection is not a perspective one (orthographic, or x, y, z mixed or translated)") \
-    X(SWARP_ERR_CAMERA_MIRRORED, 106,                                                   \
-      "the view matrix mirrors (det < 0) or the projection looks backward for this handedness") \
-    X(SWARP_ERR_CAMERA_VIEW_NOT_RIGID, 107,                                             \
-      "the view matrix is not a rotation and a translation (scaled, sheared or projective)") \
-    X(SWARP_ERR_CAMERA_FAR_UNBOUNDED, 108,                                              \
-      "the projection's far plane is at infinity and no scene box bounds the view")      \
-    X(SWARP_INFO_LIGHT_PARALLEL, 1100,                                                  \
-      "light nearly parallel to the view: light-space up blended toward camera right")  \
-    X(SWARP_INFO_FLAT_EXTENT, 1101,                                                     \
-      "an extent of the focused body is zero; its width was padded")                    \
-    X(SWARP_INFO_PSM_INVERSE, 1102,                                                     \
-      "light behind the camera: PSM uses the inverse projection (near < 0 < far)")      \
-    X(SWARP_INFO_LIGHT_NEAR_CLIPPED, 1103,                                              \
-      "spot light on or inside B: points nearer than its near plane left out")          \
-    X(SWARP_INFO_FOLLOW_LAG, 1104,                                                      \
-      "followed light frame still turning toward the aligned one (light near the view axis; LiSPSM weaker)") \
-    X(SWARP_INFO_CAMERA_FAR_FROM_SCENE, 1105,                                           \
-      "infinite far plane: z_far is the farthest view depth of the scene box ([RHS] 3.3.1)") \
-    X(SWARP_INFO_CASTERS_CLAMPED, 1106,                                                 \
-      "casters over 1e10 times the receivers' size toward the light left out of the depth range (depth clamp)")
-
-/* lixel: 200..299, 1200..1299 */
-#define SWARP_STATUS_LIST_LIXEL(X)                                                  \
-    X(SWARP_ERR_LIXEL_COPLANAR, 200,                                                \
-      "four of the five points are coplanar (or a point is zero): no unique matrix")\
-    X(SWARP_ERR_LIXEL_PLANE_THROUGH_EYE, 201,                                       \
-      "the plane of interest passes through the viewer's eye")                      \
-    X(SWARP_ERR_LIXEL_LIGHT_ON_PLANE, 202, "the point light lies on the plane of interest") \
-    X(SWARP_ERR_LIXEL_LIGHT_PARALLEL_PLANE, 203,                                    \
-      "the directional light is parallel to the plane of interest")                 \
-    X(SWARP_ERR_LIXEL_PLANE_NOT_VISIBLE, 204,                                       \
-      "no corner ray of the viewer hits the plane of interest in front of the eye") \
-    X(SWARP_ERR_LIXEL_RAY_OUTSIDE, 205,                                             \
-      "a ray of C is outside the light frustum of M_l (q <= 0)")                    \
-    X(SWARP_ERR_LIXEL_RECT_TOO_LARGE, 206,                                          \
-      "the light-image rectangle exceeds the allowed size (C approaches the line pi)") \
-    X(SWARP_ERR_LIXEL_TWIST_LINE, 207,                                              \
-      "the twist line projects to a point in the light image")                      \
-    X(SWARP_ERR_LIXEL_EMPTY, 208,                                                   \
-      "no ray of C hits the plane inside the viewer's frustum")                     \
-    X(SWARP_INFO_LIXEL_ILL_CONDITIONED, 1200,                                       \
-      "the five-point configuration is ill-conditioned; the matrix may be inaccurate") \
-    X(SWARP_INFO_LIXEL_QUAD_ACROSS_INFINITY, 1201,                                  \
-      "the quad Q straddles infinity (horizon visible); exact on the visible part") \
-    X(SWARP_INFO_LIXEL_PLANE_PARALLEL_VIEW, 1202,                                   \
-      "the plane of interest is parallel to the view direction (horizon through the centre)") \
-    X(SWARP_INFO_LIXEL_LIGHT_BEHIND_PLANE, 1203,                                    \
-      "light and viewer are on opposite sides of the plane of interest")
-
-/* filter: 300..399, 1300..1399 */
-#define SWARP_STATUS_LIST_FILTER(X)                                                      \
-    X(SWARP_ERR_FILTER_LAYER_COUNT, 300,                                                 \
-      "LVSM layer count must be in 1..SWARP_LVSM_MAX_LAYERS")                            \
-    X(SWARP_ERR_FILTER_OVERLAP, 301,                                                     \
-      "LVSM overlap delta must be >= 0 and smaller than the thinnest layer")             \
-    X(SWARP_ERR_FILTER_BAND, 302,                                                        \
-      "LVSM transition band must lie in [0, delta] and below half the thinnest layer")   \
-    X(SWARP_ERR_FILTER_NO_SAMPLES, 303, "Lloyd relaxation needs at least one sample")    \
-    X(SWARP_ERR_FILTER_BLOCKER, 304,                                                     \
-      "PCSS blocker depth must be > 0 and not beyond the receiver")                      \
-    X(SWARP_ERR_FILTER_EXPONENT, 305,                                                    \
-      "EVSM exponent must be > 0 and keep e^(2c) finite in double")                      \
-    X(SWARP_INFO_FILTER_NOT_CONVERGED, 1300,                                             \
-      "Lloyd relaxation reached its iteration bound before converging; splits written")  \
-    X(SWARP_INFO_FILTER_NO_WEIGHT, 1301,                                                 \
-      "all Lloyd sample weights are zero: splits written unchanged")                     \
-    X(SWARP_INFO_FILTER_MSM_DEGENERATE, 1302,                                            \
-      "moment matrix singular (at most two distinct depths): exact discrete form used")  \
-    X(SWARP_INFO_FILTER_DEPTH_CLAMPED, 1303,                                             \
-      "depth outside [s_0, s_N]: the first or last layer was used")
-
-/* cascades: 400..499, 1400..1499 */
-#define SWARP_STATUS_LIST_SPLITS(X)                                                  \
-    X(SWARP_ERR_ATLAS_SPLITS, 400, "atlas layouts hold 1..16 splits")                 \
-    X(SWARP_ERR_STABILIZE_WARPED, 401,                                               \
-      "stabilisation is defined for uniform light-space aligned maps; a warp was requested") \
-    X(SWARP_ERR_STABILIZE_LIGHT, 402, "stabilisation needs a directional light")      \
-    X(SWARP_ERR_BEHIND_PROJECTION, 403,                                              \
-      "the point maps to w <= 0 (behind the centre of projection of the light matrix)") \
-    X(SWARP_ERR_SPLIT_EMPTY, 404, "a split frustum does not intersect the scene")    \
-    X(SWARP_INFO_LEVEL_ABOVE_RANGE, 1400,                                            \
-      "the body is larger than the reference size: quantised level above the level count") \
-    X(SWARP_INFO_OUTSIDE_SPLITS, 1401,                                               \
-      "the point lies in no split map; the split nearest in eye depth was chosen")   \
-    X(SWARP_INFO_BACKFACING, 1402,                                                   \
-      "the normal faces away from the light; N.L clamped to 0")                      \
-    X(SWARP_INFO_SPLIT_NO_SCENE, 1403,                                               \
-      "a stabilised split misses the scene box; its map covers the split frustum")
-
-/* plan: 500..599, 1500..1599 */
-#define SWARP_STATUS_LIST_PLAN(X)                                                   \
-    X(SWARP_ERR_PLAN_TOO_MANY_PLANES, 500,                                          \
-      "plane_count exceeds SWARP_PLAN_MAX_PLANES")                                  \
-    X(SWARP_ERR_PLAN_EMPTY_VIEW, 501,                                               \
-      "the scene box lies entirely outside the view depth range: nothing to shadow")\
-    X(SWARP_INFO_PLAN_BUDGET_UNMET, 1500,                                           \
-      "no chain meets the budget; the plan is the most accurate within the pass limit") \
-    X(SWARP_INFO_PLAN_POINT_LIGHT, 1501,                                            \
-      "point light planned as a directional light toward the view frustum's centre")
-
-/* extras: 600..699, 1600..1699 */
-#define SWARP_STATUS_LIST_EXTRAS(X)                                                 \
-    X(SWARP_ERR_CUBE_LIGHT_AT_INFINITY, 600,                                        \
-      "light at infinity in post-projective space (w = 0): no cube map, use one orthographic map") \
-    X(SWARP_ERR_CUBE_POINT_UNCOVERED, 601,                                          \
-      "the point is in no cube-map face frustum (it coincides with the light or lies behind it)") \
-    X(SWARP_INFO_CUBE_NEAR_CLIPPED, 1601,                                           \
-      "the point lies inside the faces' near cube (a < Z_1): the face camera clips it") \
-    X(SWARP_INFO_MINDEPTH_EMPTY, 1600,                                              \
-      "the depth buffer holds nothing nearer than far: near plane left unchanged")
-
-#define SWARP_STATUS_LIST(X)          \
-    SWARP_STATUS_LIST_CORE(X)         \
-    SWARP_STATUS_LIST_GEOMETRY(X)     \
-    SWARP_STATUS_LIST_LIXEL(X)        \
-    SWARP_STATUS_LIST_FILTER(X)       \
-    SWARP_STATUS_LIST_SPLITS(X)       \
-    SWARP_STATUS_LIST_PLAN(X)         \
-    SWARP_STATUS_LIST_EXTRAS(X)
-
-#define SWARP_STATUS_ENUM_ENTRY_(name, value, message) name = value,
-typedef enum swarp_status {
-    SWARP_STATUS_LIST(SWARP_STATUS_ENUM_ENTRY_)
-    SWARP_STATUS_FORCE_I32 = 0x7FFFFFFF
-} swarp_status;
-#undef SWARP_STATUS_ENUM_ENTRY_
 
 /** @brief Readable message for a status; never NULL ("unknown status" for
  *  numbers not in the list).  The string is static. */
@@ -425,10 +260,6 @@ SWARP_API const char* swarp_status_name(swarp_status status);
 /** @brief 1 if status is an error (1..999 or unknown), 0 for SWARP_OK and
  *  informational results (1000..1999). */
 SWARP_API int swarp_status_is_error(swarp_status status);
-
-/* ======================================================================== */
-/* 4. Matrix helpers and version                                            */
-/* ======================================================================== */
 
 /** @brief SWARP_VERSION_NUMBER of the library actually linked. */
 SWARP_API int swarp_version_number(void);
@@ -551,11 +382,11 @@ SWARP_API swarp_status swarp_camera_from_matrices(const swarp_mat4* view, const 
                                                   swarp_camera* out_cam, swarp_camera_from_info* out_info);
 
 /* ======================================================================== */
-/* 5. One shadow map: swarp_setup and its steps                             */
+/* 4. One shadow map: swarp_setup and its steps                             */
 /* ======================================================================== */
 
 /* ------------------------------------------------------------------------ */
-/* The measured error: what the results report (functions in section 6)   */
+/* The measured error: what the results report (functions in section 5)   */
 /* ------------------------------------------------------------------------ */
 
 /** Screen and map resolutions the measured error refers to; each > 0
@@ -1037,7 +868,7 @@ SWARP_API swarp_status swarp_gmnpr_lambda_glpr(double theta, double phi, double 
                                                double* out_lambda);
 
 /* ======================================================================== */
-/* 6. Error: the measured error of a matrix, and Lloyd's model              */
+/* 5. Error: the measured error of a matrix, and Lloyd's model              */
 /* ======================================================================== */
 
 /** @brief The measured error of matrix at caller-given receiver points and
@@ -1158,7 +989,7 @@ SWARP_API swarp_status swarp_error_split_max(const swarp_error_config* cfg,
                                              double* out_max_mx, double* out_max_mz);
 
 /* ======================================================================== */
-/* 7. Cascades: split schemes, atlas, stabilisation, bias, the one call     */
+/* 6. Cascades: split schemes, atlas, stabilisation, bias, the one call     */
 /* ======================================================================== */
 /* ---- split schemes ------------------------------------------------------- */
 /** Largest split count m the schemes accept; they write m + 1 values, so an
@@ -1720,7 +1551,7 @@ SWARP_API swarp_status swarp_cascade_setup(const swarp_camera* cam, const swarp_
                                            size_t* out_count);
 
 /* ======================================================================== */
-/* 8. Filtering: VSM, layered VSM, EVSM, MSM, PCF and PCSS                  */
+/* 7. Filtering: VSM, layered VSM, EVSM, MSM, PCF and PCSS                  */
 /* ======================================================================== */
 /*
  * Filtered shadows: the maths an engine mirrors in its shaders (GLSL twins in
@@ -2031,7 +1862,7 @@ SWARP_API swarp_status swarp_pcss_filter_width(double w_penumbra, double n_light
                                                double* out_w_filter);
 
 /* ======================================================================== */
-/* 9. Experimental API (define SWARP_EXPERIMENTAL_API to use it)            */
+/* 8. Experimental API (define SWARP_EXPERIMENTAL_API to use it)            */
 /* ======================================================================== */
 /*
  * Not yet promised: the declarations below may change in a minor release.
@@ -2914,6 +2745,187 @@ SWARP_API swarp_status swarp_mindepth_near(double n, double f, double min_depth,
 
 #endif /* SWARP_EXPERIMENTAL_API */
 
+/* ======================================================================== */
+/* 9. Status codes (stable)                                                 */
+/* ======================================================================== */
+/*
+ * The values of swarp_status (section 1).  One X-macro list per stage,
+ * X(NAME, NUMBER, "message"): swarp_status_string() returns the message,
+ * swarp_status_name() the name.  Errors 1..999, informational 1000..1999.
+ * Ranges per stage: core 1..99, geometry 100..199, lixel 200..299, filter
+ * 300..399, cascades (splits, atlas, stabilisation, bias) 400..499, plan
+ * 500..599, extras (cube maps, min depth) 600..699; informational likewise
+ * 1000 + ...  Numbers are part of the ABI: never renumber, never reuse.
+ * The list is stable API and is declared whether or not
+ * SWARP_EXPERIMENTAL_API is defined (the statuses of the experimental
+ * functions are in it too).
+ */
+#define SWARP_STATUS_LIST_CORE(X)                                                   \
+    X(SWARP_OK, 0, "ok")                                                            \
+    X(SWARP_ERR_NULL_POINTER, 1, "a required pointer argument is NULL")             \
+    X(SWARP_ERR_NON_FINITE, 2, "an input value is NaN or infinite")                 \
+    X(SWARP_ERR_INVALID_ARGUMENT, 3, "an argument is invalid")                      \
+    X(SWARP_ERR_OUT_OF_RANGE, 4, "a value lies outside its documented domain")      \
+    X(SWARP_ERR_NEAR_FAR, 5, "near must be > 0 and far must be > near")             \
+    X(SWARP_ERR_FOV, 6, "field of view (or half angle) outside its open interval")  \
+    X(SWARP_ERR_RESOLUTION, 7, "a resolution is zero, negative or not finite")      \
+    X(SWARP_ERR_CAPACITY, 8, "output capacity too small; needed count written")     \
+    X(SWARP_ERR_ZERO_VECTOR, 9, "a direction vector has zero length")               \
+    X(SWARP_ERR_RESERVED_NONZERO, 10, "a _reserved field is not zero")              \
+    X(SWARP_ERR_DEGENERATE, 11, "degenerate configuration")                         \
+    X(SWARP_ERR_SPLIT_COUNT, 12, "split count m is 0 (or above SWARP_SPLIT_MAX_COUNT for a split scheme)") \
+    X(SWARP_ERR_UNKNOWN_ENUM, 13, "an enum value is not one of the documented ones")\
+    X(SWARP_ERR_NOT_INCREASING, 14, "split distances must be strictly increasing")  \
+    X(SWARP_ERR_SINGULAR, 15, "a matrix is singular or too ill-conditioned")        \
+    X(SWARP_ERR_OVERFLOW, 16, "the result does not fit a finite double (inputs too extreme)") \
+    X(SWARP_INFO_WARP_UNIFORM, 1000,                                                \
+      "warp faded to uniform (duelling frusta: light parallel to the view)")        \
+    X(SWARP_INFO_GMNPR_ADJUSTED, 1001,                                              \
+      "theta < phi: lambda_GMNPR uses the adjusted branch lambda_2* of eq. (7)")    \
+    X(SWARP_INFO_GLPR_NO_SOLUTION, 1002,                                            \
+      "GLPR has no positive lambda here (theta <= phi); lambda_GMNPR was written") \
+    X(SWARP_INFO_MEASURE_SINGULAR, 1003,                                            \
+      "the map is singular at a measured point: its error is +inf there")
+
+/* geometry: 100..199, 1100..1199 */
+#define SWARP_STATUS_LIST_GEOMETRY(X)                                                   \
+    X(SWARP_ERR_BODY_EMPTY, 100,                                                        \
+      "the view frustum misses the scene box (H = V intersect S is empty)")              \
+    X(SWARP_ERR_BOX_INVERTED, 101, "scene box min exceeds max on some axis")            \
+    X(SWARP_ERR_BOX_DEGENERATE, 102,                                                    \
+      "scene box has zero extent along two or more axes")                               \
+    X(SWARP_ERR_LIGHT_INSIDE_BODY, 103,                                                 \
+      "point light inside the body B: one perspective map cannot cover it")             \
+    X(SWARP_ERR_FOLLOW_FRAME, 104,                                                      \
+      "the previous result's light frame is not orthonormal or not from this technique")  \
+    X(SWARP_ERR_CAMERA_NOT_PERSPECTIVE, 105,                                            \
+      "the projection is not a perspective one (orthographic, or x, y, z mixed or translated)") \
+    X(SWARP_ERR_CAMERA_MIRRORED, 106,                                                   \
+      "the view matrix mirrors (det < 0) or the projection looks backward for this handedness") \
+    X(SWARP_ERR_CAMERA_VIEW_NOT_RIGID, 107,                                             \
+      "the view matrix is not a rotation and a translation (scaled, sheared or projective)") \
+    X(SWARP_ERR_CAMERA_FAR_UNBOUNDED, 108,                                              \
+      "the projection's far plane is at infinity and no scene box bounds the view")      \
+    X(SWARP_INFO_LIGHT_PARALLEL, 1100,                                                  \
+      "light nearly parallel to the view: light-space up blended toward camera right")  \
+    X(SWARP_INFO_FLAT_EXTENT, 1101,                                                     \
+      "an extent of the focused body is zero; its width was padded")                    \
+    X(SWARP_INFO_PSM_INVERSE, 1102,                                                     \
+      "light behind the camera: PSM uses the inverse projection (near < 0 < far)")      \
+    X(SWARP_INFO_LIGHT_NEAR_CLIPPED, 1103,                                              \
+      "spot light on or inside B: points nearer than its near plane left out")          \
+    X(SWARP_INFO_FOLLOW_LAG, 1104,                                                      \
+      "followed light frame still turning toward the aligned one (light near the view axis; LiSPSM weaker)") \
+    X(SWARP_INFO_CAMERA_FAR_FROM_SCENE, 1105,                                           \
+      "infinite far plane: z_far is the farthest view depth of the scene box ([RHS] 3.3.1)") \
+    X(SWARP_INFO_CASTERS_CLAMPED, 1106,                                                 \
+      "casters over 1e10 times the receivers' size toward the light left out of the depth range (depth clamp)")
+
+/* lixel: 200..299, 1200..1299 */
+#define SWARP_STATUS_LIST_LIXEL(X)                                                  \
+    X(SWARP_ERR_LIXEL_COPLANAR, 200,                                                \
+      "four of the five points are coplanar (or a point is zero): no unique matrix")\
+    X(SWARP_ERR_LIXEL_PLANE_THROUGH_EYE, 201,                                       \
+      "the plane of interest passes through the viewer's eye")                      \
+    X(SWARP_ERR_LIXEL_LIGHT_ON_PLANE, 202, "the point light lies on the plane of interest") \
+    X(SWARP_ERR_LIXEL_LIGHT_PARALLEL_PLANE, 203,                                    \
+      "the directional light is parallel to the plane of interest")                 \
+    X(SWARP_ERR_LIXEL_PLANE_NOT_VISIBLE, 204,                                       \
+      "no corner ray of the viewer hits the plane of interest in front of the eye") \
+    X(SWARP_ERR_LIXEL_RAY_OUTSIDE, 205,                                             \
+      "a ray of C is outside the light frustum of M_l (q <= 0)")                    \
+    X(SWARP_ERR_LIXEL_RECT_TOO_LARGE, 206,                                          \
+      "the light-image rectangle exceeds the allowed size (C approaches the line pi)") \
+    X(SWARP_ERR_LIXEL_TWIST_LINE, 207,                                              \
+      "the twist line projects to a point in the light image")                      \
+    X(SWARP_ERR_LIXEL_EMPTY, 208,                                                   \
+      "no ray of C hits the plane inside the viewer's frustum")                     \
+    X(SWARP_INFO_LIXEL_ILL_CONDITIONED, 1200,                                       \
+      "the five-point configuration is ill-conditioned; the matrix may be inaccurate") \
+    X(SWARP_INFO_LIXEL_QUAD_ACROSS_INFINITY, 1201,                                  \
+      "the quad Q straddles infinity (horizon visible); exact on the visible part") \
+    X(SWARP_INFO_LIXEL_PLANE_PARALLEL_VIEW, 1202,                                   \
+      "the plane of interest is parallel to the view direction (horizon through the centre)") \
+    X(SWARP_INFO_LIXEL_LIGHT_BEHIND_PLANE, 1203,                                    \
+      "light and viewer are on opposite sides of the plane of interest")
+
+/* filter: 300..399, 1300..1399 */
+#define SWARP_STATUS_LIST_FILTER(X)                                                      \
+    X(SWARP_ERR_FILTER_LAYER_COUNT, 300,                                                 \
+      "LVSM layer count must be in 1..SWARP_LVSM_MAX_LAYERS")                            \
+    X(SWARP_ERR_FILTER_OVERLAP, 301,                                                     \
+      "LVSM overlap delta must be >= 0 and smaller than the thinnest layer")             \
+    X(SWARP_ERR_FILTER_BAND, 302,                                                        \
+      "LVSM transition band must lie in [0, delta] and below half the thinnest layer")   \
+    X(SWARP_ERR_FILTER_NO_SAMPLES, 303, "Lloyd relaxation needs at least one sample")    \
+    X(SWARP_ERR_FILTER_BLOCKER, 304,                                                     \
+      "PCSS blocker depth must be > 0 and not beyond the receiver")                      \
+    X(SWARP_ERR_FILTER_EXPONENT, 305,                                                    \
+      "EVSM exponent must be > 0 and keep e^(2c) finite in double")                      \
+    X(SWARP_INFO_FILTER_NOT_CONVERGED, 1300,                                             \
+      "Lloyd relaxation reached its iteration bound before converging; splits written")  \
+    X(SWARP_INFO_FILTER_NO_WEIGHT, 1301,                                                 \
+      "all Lloyd sample weights are zero: splits written unchanged")                     \
+    X(SWARP_INFO_FILTER_MSM_DEGENERATE, 1302,                                            \
+      "moment matrix singular (at most two distinct depths): exact discrete form used")  \
+    X(SWARP_INFO_FILTER_DEPTH_CLAMPED, 1303,                                             \
+      "depth outside [s_0, s_N]: the first or last layer was used")
+
+/* cascades: 400..499, 1400..1499 */
+#define SWARP_STATUS_LIST_SPLITS(X)                                                  \
+    X(SWARP_ERR_ATLAS_SPLITS, 400, "atlas layouts hold 1..16 splits")                 \
+    X(SWARP_ERR_STABILIZE_WARPED, 401,                                               \
+      "stabilisation is defined for uniform light-space aligned maps; a warp was requested") \
+    X(SWARP_ERR_STABILIZE_LIGHT, 402, "stabilisation needs a directional light")      \
+    X(SWARP_ERR_BEHIND_PROJECTION, 403,                                              \
+      "the point maps to w <= 0 (behind the centre of projection of the light matrix)") \
+    X(SWARP_ERR_SPLIT_EMPTY, 404, "a split frustum does not intersect the scene")    \
+    X(SWARP_INFO_LEVEL_ABOVE_RANGE, 1400,                                            \
+      "the body is larger than the reference size: quantised level above the level count") \
+    X(SWARP_INFO_OUTSIDE_SPLITS, 1401,                                               \
+      "the point lies in no split map; the split nearest in eye depth was chosen")   \
+    X(SWARP_INFO_BACKFACING, 1402,                                                   \
+      "the normal faces away from the light; N.L clamped to 0")                      \
+    X(SWARP_INFO_SPLIT_NO_SCENE, 1403,                                               \
+      "a stabilised split misses the scene box; its map covers the split frustum")
+
+/* plan: 500..599, 1500..1599 */
+#define SWARP_STATUS_LIST_PLAN(X)                                                   \
+    X(SWARP_ERR_PLAN_TOO_MANY_PLANES, 500,                                          \
+      "plane_count exceeds SWARP_PLAN_MAX_PLANES")                                  \
+    X(SWARP_ERR_PLAN_EMPTY_VIEW, 501,                                               \
+      "the scene box lies entirely outside the view depth range: nothing to shadow")\
+    X(SWARP_INFO_PLAN_BUDGET_UNMET, 1500,                                           \
+      "no chain meets the budget; the plan is the most accurate within the pass limit") \
+    X(SWARP_INFO_PLAN_POINT_LIGHT, 1501,                                            \
+      "point light planned as a directional light toward the view frustum's centre")
+
+/* extras: 600..699, 1600..1699 */
+#define SWARP_STATUS_LIST_EXTRAS(X)                                                 \
+    X(SWARP_ERR_CUBE_LIGHT_AT_INFINITY, 600,                                        \
+      "light at infinity in post-projective space (w = 0): no cube map, use one orthographic map") \
+    X(SWARP_ERR_CUBE_POINT_UNCOVERED, 601,                                          \
+      "the point is in no cube-map face frustum (it coincides with the light or lies behind it)") \
+    X(SWARP_INFO_CUBE_NEAR_CLIPPED, 1601,                                           \
+      "the point lies inside the faces' near cube (a < Z_1): the face camera clips it") \
+    X(SWARP_INFO_MINDEPTH_EMPTY, 1600,                                              \
+      "the depth buffer holds nothing nearer than far: near plane left unchanged")
+
+#define SWARP_STATUS_LIST(X)          \
+    SWARP_STATUS_LIST_CORE(X)         \
+    SWARP_STATUS_LIST_GEOMETRY(X)     \
+    SWARP_STATUS_LIST_LIXEL(X)        \
+    SWARP_STATUS_LIST_FILTER(X)       \
+    SWARP_STATUS_LIST_SPLITS(X)       \
+    SWARP_STATUS_LIST_PLAN(X)         \
+    SWARP_STATUS_LIST_EXTRAS(X)
+
+#define SWARP_STATUS_ENUM_ENTRY_(name, value, message) name = value,
+enum swarp_status_code {
+    SWARP_STATUS_LIST(SWARP_STATUS_ENUM_ENTRY_)
+    SWARP_STATUS_FORCE_I32 = 0x7FFFFFFF
+};
+#undef SWARP_STATUS_ENUM_ENTRY_
 
 #ifdef __cplusplus
 } /* extern "C" */

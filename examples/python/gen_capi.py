@@ -75,6 +75,12 @@ def parse_enums(text, constants):
     return enums
 
 
+def parse_scalar_typedefs(text):
+    """typedef int32_t swarp_status; and the like: name -> base type."""
+    return {m.group(2): m.group(1) for m in
+            re.finditer(r"typedef\s+((?:u?int\d+_t)|double|float|int)\s+(swarp_\w+)\s*;", text)}
+
+
 def parse_structs(text, constants):
     structs, tags = [], {}
     for m in re.finditer(r"typedef\s+struct\s*(\w*)\s*\{(.*?)\}\s*(\w+)\s*;", text, re.S):
@@ -140,6 +146,7 @@ def generate(header_path):
     data = {
         "CONSTANTS": constants,
         "ENUMS": enums,
+        "SCALAR_TYPEDEFS": parse_scalar_typedefs(text),
         "STATUSES": parse_statuses(raw),
         "STRUCTS": structs,
         "STRUCT_TAGS": tags,

@@ -79,7 +79,6 @@ ENUMS = {'swarp_depth_range': {'SWARP_DEPTH_DEFAULT': 0,
                       'SWARP_LIGHT_DIRECTIONAL': 1,
                       'SWARP_LIGHT_POINT': 2,
                       'SWARP_LIGHT_TYPE_FORCE_I32': 2147483647},
- 'swarp_status': {},
  'swarp_matrix_convention': {'SWARP_MATRIX_DEFAULT': 0,
                              'SWARP_MATRIX_RH': 1,
                              'SWARP_MATRIX_LH': 2,
@@ -160,6 +159,8 @@ ENUMS = {'swarp_depth_range': {'SWARP_DEPTH_DEFAULT': 0,
                          'SWARP_PLAN_MATRICES_UNMEASURED': 1,
                          'SWARP_PLAN_MATRICES_NONE': 2,
                          'SWARP_PLAN_MATRICES_FORCE_I32': 2147483647}}
+
+SCALAR_TYPEDEFS = {'swarp_status': 'int32_t'}
 
 STATUSES = [('SWARP_OK', 0, 'ok'),
  ('SWARP_ERR_NULL_POINTER', 1, 'a required pointer argument is NULL'),

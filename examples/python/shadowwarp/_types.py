@@ -152,6 +152,9 @@ _CTYPES = {"double": ctypes.c_double, "float": ctypes.c_float, "uint8_t": ctypes
 for _enum in _capi.ENUMS:  # C enums are int; every enum of the header forces 32 bits
     _INT_RANGES[_enum] = _INT_RANGES["int32_t"]
     _CTYPES[_enum] = ctypes.c_int32
+for _name, _base in _capi.SCALAR_TYPEDEFS.items():  # swarp_status is an int32_t
+    _INT_RANGES[_name] = _INT_RANGES[_base]
+    _CTYPES[_name] = _CTYPES[_base]
 
 
 def is_integer_type(ctype: str) -> bool:

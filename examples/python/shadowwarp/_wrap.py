@@ -106,7 +106,7 @@ REVIEWED_PLAIN_ARRAYS = {
     "swarp_cascade_select_best", "swarp_lixel_restrict", "swarp_lixel_select",
 }
 
-_SCALARS = ("double", "float", "uint8_t", "uint32_t", "int32_t", "uint64_t", "int", "size_t") + tuple(_capi.ENUMS)
+_SCALARS = ("double", "float", "uint8_t", "uint32_t", "int32_t", "uint64_t", "int", "size_t") + tuple(_capi.ENUMS) + tuple(_capi.SCALAR_TYPEDEFS)
 
 
 class Param:
