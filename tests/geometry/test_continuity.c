@@ -416,6 +416,9 @@ START_TEST(null_previous_is_setup_bitwise) {
         o.skip_measure = 1; /* the matrices' continuity, not their measurement */
         o.technique = all_techs[i % 3];
         o.param = (swarp_warp_param)(i / 3 % 4);
+        /* the measured search (the default) picks among discrete candidates:
+         * continuous only piecewise (docs/parameters.md); n_opt is walked */
+        if (o.param == SWARP_WARP_PARAM_DEFAULT) o.param = SWARP_WARP_PARAM_NOPT;
         swarp_setup_result a, b;
         swarp_vec3 pa[SWARP_BODY_MAX_POINTS], pb[SWARP_BODY_MAX_POINTS];
         size_t na = 7, nb = 7;
