@@ -73,7 +73,7 @@
  *      swarp_camera cam = {0};   // eye, dir, up, fovy (full, radians), aspect, near, far
  *      swarp_light light = {0};  // type 0 = directional; direction = where light travels
  *      swarp_aabb scene = {0};   // box S around every caster and receiver
- *      swarp_setup_options opt = {0};   // zero = LiSPSM n_opt, 2048 x 2048 map, depth [-1, 1]
+ *      swarp_setup_options opt = {0};   // zero = LiSPSM (measured n'), 2048 x 2048 map, depth [-1, 1]
  *      swarp_setup_result r;
  *      swarp_status s = swarp_setup(&cam, &light, &scene, &opt, &r, NULL, 0, NULL);
  *      if (swarp_status_is_error(s))      // r untouched: keep the last frame's matrix
@@ -484,7 +484,7 @@ typedef enum swarp_technique {
 /** Options of swarp_setup; a zeroed struct is a valid request. */
 typedef struct swarp_setup_options {
     swarp_technique technique;
-    swarp_warp_param param;        /**< LiSPSM parameter (default n_opt) */
+    swarp_warp_param param;        /**< LiSPSM parameter (default: measured, SWARP_WARP_PARAM_MEASURED) */
     swarp_warp_center center;      /**< LiSPSM projection centre (default [RHS] §4.1) */
     swarp_depth_range depth_range; /**< default [-1, 1] */
     uint32_t map_width, map_height;       /**< texels; 0: 2048 (height 0: = width) */
