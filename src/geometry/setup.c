@@ -671,6 +671,12 @@ static swarp_status sw_check_points_capacity(const swarp_polyhedron* B, const sw
  * return the best evaluated, never worse than the start. */
 #define SW_SEARCH_T_MAX 0.9
 #define SW_SEARCH_STEPS 10
+/* A candidate replaces the best so far only when its sigma is lower by
+ * more than this fraction: sigma carries rounding of about 1e-13 relative
+ * (its sampling is fixed, the matrices differ by rounding only between
+ * rounding modes), so near-ties between very different matrices keep the
+ * earlier one under every rounding mode instead of flipping. */
+#define SW_SEARCH_GAIN_REL 1e-6
 /* the cheap set's capacity: two points per vertex of H plus the centroid */
 #define SW_SEARCH_SET_MAX (2 * SWARP_BODY_MAX_POINTS + 1)
 
@@ -713,7 +719,7 @@ static double sw_search_try(sw_search* q, double t) {
     swarp_setup_result r;
     swarp_status info;
     const double sigma = sw_search_eval(q, t, &r, &info);
-    if (sigma < q->best_sigma) q->best = r, q->best_info = info, q->best_t = t, q->best_sigma = sigma;
+    if (sigma < q->best_sigma * (1.0 - SW_SEARCH_GAIN_REL)) q->best = r, q->best_info = info, q->best_t = t, q->best_sigma = sigma;
     return sigma;
 }
 
@@ -758,7 +764,8 @@ static void sw_search_verify(sw_search* q, const swarp_setup_result* start, swar
         sw_measure_setup(in->cam, in->near, in->far, in->light, in->scene, &cand[i].matrix, &q->o,
                          &cand[i].measured);
         if (i > 0 && cand[i].measured.samples &&
-            (!cand[pick].measured.samples || cand[i].measured.max_sigma < cand[pick].measured.max_sigma))
+            (!cand[pick].measured.samples ||
+             cand[i].measured.max_sigma < cand[pick].measured.max_sigma * (1.0 - SW_SEARCH_GAIN_REL)))
             pick = i;
     }
     *out = cand[pick];
