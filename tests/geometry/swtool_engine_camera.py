@@ -168,6 +168,16 @@ check(len(splits) == 3 and all(s['depth_per_world'] < 0 for s in splits),
       'cascade --depth rev: depth_per_world negative in every split')
 check(abs(c.get('camera_far', 0) - want) <= 1e-9 * want, 'cascade reversed infinite: far %r' % c.get('camera_far'))
 
+# the text output says the same
+rc, out, err = run(['setup'] + SCENE + ['--reps', '1', '--view', arg(V), '--proj', arg(proj('rev_inf')),
+                                        '--proj-depth', 'zo'])
+check(rc == 0 and 'from --view/--proj' in out and 'reversed-Z' in out, 'text: the camera line: %r' % out[:300])
+far_line = [l for l in out.splitlines() if l.startswith('camera far')]
+check(len(far_line) == 1 and 'bounded by the scene box' in far_line[0] and
+      abs(float(far_line[0].split()[2]) - want) <= 1e-8 * want, 'text: camera far line %r' % far_line)
+rc, out, err = run(['cascade'] + OPTS + SCENE + ['--splits', '2', '--far', '80'])
+check(rc == 0 and 'camera far  80 (given)' in out, 'text: cascade camera far line')
+
 # mistakes (exit 2, the option named) and a library error (exit 1)
 mistakes = [
     (['--view', arg(V)], '--proj'),
