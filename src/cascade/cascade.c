@@ -85,7 +85,9 @@ SWARP_API swarp_status swarp_cascade_blend(const double* splits, size_t m, doubl
 static int sw_covers(const swarp_bias_map* map, swarp_vec3 p) {
     swarp_vec4 h = sw_xform_point(&map->world_to_clip, p);
     if (!(h.w > 0.0)) return 0;
-    const double zlo = map->depth == SWARP_DEPTH_ZERO_TO_ONE ? 0.0 : -h.w;
+    /* [0, 1] and reversed-Z both keep clip z in [0, w] */
+    const int zero_based = map->depth == SWARP_DEPTH_ZERO_TO_ONE || map->depth == SWARP_DEPTH_REVERSED_ZERO_TO_ONE;
+    const double zlo = zero_based ? 0.0 : -h.w;
     return fabs(h.x) <= h.w && fabs(h.y) <= h.w && h.z >= zlo && h.z <= h.w;
 }
 
