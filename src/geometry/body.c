@@ -568,10 +568,13 @@ static swarp_status sw_body_from_h_ex(const swarp_polyhedron* H, const swarp_lig
  * SW_SWEEP_DIAG_REL times H's size; a longer one would put the swept copies
  * at the scale of S's far faces (1e19 or DBL_MAX for an "unbounded" box),
  * where the clipper's tolerance (SWARP_POLY_EPS_REL of the polyhedron's
- * scale) is larger than H itself.  Then, for H inside S, the exit bound:
- * a point p of H leaves S along u by t(p) = min_k (bound_k - p_k) / u_k
- * (bound_k: the face u points at on axis k) and t(p) <= (bound_k - h_k) /
- * |u_k| for h_k H's extreme coordinate away from that face, on each axis;
+ * scale) is larger than H itself.  Then the exit bound: on any axis k that
+ * u points along, T_k = (bound_k - h_k) / |u_k| (bound_k: the face u points
+ * at, h_k H's extreme coordinate away from it) takes every point of H past
+ * that face, and since its coordinate k keeps moving away the ray never
+ * re-enters S beyond T_k; this holds for every H, also one a rounding
+ * outside S (H built camera-relative and translated back by the eye, as
+ * the cascades do: its vertices on S's faces land an ulp either side);
  * twice the least of these (with a margin past the face), and at least SW_SWEEP_DIAG_REL times H's size
  * (the copies as far out as the kept 2 diag(S) would put them), capped at
  * SW_SWEEP_REL_MAX times H's size (*clamped). */
@@ -585,15 +588,11 @@ static double sw_sweep_length(const swarp_polyhedron* H, swarp_vec3 u, const swa
     }
     const double uc[3] = {u.x, u.y, u.z}, lo[3] = {box->min.x, box->min.y, box->min.z},
                  hi[3] = {box->max.x, box->max.y, box->max.z};
-    int inside = 1; /* the bound needs H ⊂ S (a caller's H may not be) */
     double ext = 0.0, mag = 0.0;
-    for (int k = 0; k < 3; ++k) {
-        inside &= hlo[k] >= lo[k] && hhi[k] <= hi[k];
-        ext = fmax(ext, hhi[k] - hlo[k]), mag = fmax(mag, fmax(fabs(hlo[k]), fabs(hhi[k])));
-    }
+    for (int k = 0; k < 3; ++k) ext = fmax(ext, hhi[k] - hlo[k]), mag = fmax(mag, fmax(fabs(hlo[k]), fabs(hhi[k])));
     /* a point H (extent 0) keeps the scale of its coordinates */
     const double size = fmax(fmax(ext, SWARP_POLY_EPS_REL * mag), DBL_MIN);
-    if (!inside || diag <= SW_SWEEP_DIAG_REL * size) return diag;
+    if (diag <= SW_SWEEP_DIAG_REL * size) return diag;
     /* past the face by more than the clipper resolves at H's coordinates:
      * an exit through a face u barely points at (|u_k| ~ 1e-9) is not taken
      * for one that the clip would see as still inside S */
