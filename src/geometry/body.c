@@ -449,11 +449,53 @@ static int sw_frustum_is_wide(const swarp_camera* cam) {
     return ty > SW_WIDE_TAN || ty * cam->aspect > SW_WIDE_TAN;
 }
 
-/* H = S clipped by the 6 planes of V: coordinates of the box's size. */
-static swarp_status sw_body_h_wide(const swarp_camera* cam, double near, double far, const swarp_aabb* box,
+/* How far the box that bounds V is opened beyond V's corners, relative to
+ * their magnitude: 1e7 times the corners' rounding (a few eps), so the
+ * rounding of the corners never cuts a sliver of V that its planes keep,
+ * and still far below the map's resolution. */
+#define SW_WIDE_BOUND_MARGIN_REL 1e-9
+
+/* S ∩ (the bounding box of V's corners): the same V ∩ S (V lies in its
+ * corners' box), but at V's scale when S is far larger (a face at 1e19 or
+ * DBL_MAX, an "unbounded" sentinel), where the clipper's tolerance (1e-12
+ * of the polyhedron's scale) would be far larger than V.  *empty: the two
+ * boxes do not meet.  Corners beyond the double range keep S as it is. */
+static void sw_box_within_frustum(const swarp_camera* cam, double near, double far, const swarp_aabb* box,
+                                  swarp_aabb* out, int* empty) {
+    *out = *box;
+    *empty = 0;
+    swarp_polyhedron V;
+    if (sw_poly_from_frustum(cam, near, far, &V) != SWARP_OK) return;
+    double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY}, mag = 0.0;
+    for (uint32_t i = 0; i < V.vertex_count; ++i) {
+        const double c[3] = {V.vertices[i].x, V.vertices[i].y, V.vertices[i].z};
+        for (int k = 0; k < 3; ++k) lo[k] = fmin(lo[k], c[k]), hi[k] = fmax(hi[k], c[k]), mag = fmax(mag, fabs(c[k]));
+    }
+    const double m = SW_WIDE_BOUND_MARGIN_REL * mag;
+    if (!sw_finite(mag + m)) return;
+    double* bl = &out->min.x;
+    double* bh = &out->max.x;
+    for (int k = 0; k < 3; ++k) {
+        bl[k] = fmax(bl[k], lo[k] - m);
+        bh[k] = fmin(bh[k], hi[k] + m);
+        if (!(bl[k] <= bh[k])) *empty = 1;
+    }
+}
+
+/* H = S clipped by the 6 planes of V: coordinates of the box's size, S
+ * first cut to V's bounding box (sw_box_within_frustum). */
+static swarp_status sw_body_h_wide(const swarp_camera* cam, double near, double far, const swarp_aabb* box_in,
                                    swarp_polyhedron* H) {
     swarp_plane pl[6];
     sw_frustum_planes(cam, near, far, pl);
+    swarp_aabb bounded;
+    int empty = 0;
+    sw_box_within_frustum(cam, near, far, box_in, &bounded, &empty);
+    if (empty) {
+        H->vertex_count = 0; /* sw_body_h: SWARP_ERR_BODY_EMPTY, H not published */
+        return SWARP_OK;
+    }
+    const swarp_aabb* box = &bounded;
     swarp_status s = swarp_poly_from_aabb(box, H);
     if (s != SWARP_OK) return s;
     for (int k = 0; k < 6 && H->vertex_count > 0; ++k) {
