@@ -273,6 +273,54 @@ static void cv_pin_stabilized_clamped(long* fails) {
         }
 }
 
+/* Two scenes of the sweep (seed 7) that returned success without covering
+ * before their fix, replayed with every entry point and technique:
+ * a cascade over a box with min.x = -FLT_MAX (the split's H, built
+ * camera-relative and translated back, sat an ulp outside S, the sweep
+ * fell back to 2 diag(S) = 7e38 and lost B's swept part: casters 0.2..0.3
+ * depth windows out, SWARP_OK), and a frustum of aspect 5.7e4 in a box
+ * with max.z = DBL_MAX (H clipped at DBL_MAX's scale: receivers 125 map
+ * widths out, SWARP_INFO_FLAT_EXTENT). */
+static void cv_pin_replayed_scenes(long* fails) {
+    cv_case k[2];
+    memset(k, 0, sizeof k);
+    k[0].cam = (swarp_camera){{0x1.3e41a526bbad8p+2, 0x1.39d84a2dba63ep+4, 0x1.c6743fec50108p+3},
+                              {0x1.9852cc59943ccp-1, 0x1.736a770effd8p-3, -0x1.1bc268991af6p-3},
+                              {0, 1, 0},
+                              0x1.dcec17f764a76p+0,
+                              0x1.34960f1dedd29p+1,
+                              0x1.2d29c41c58567p-4,
+                              0x1.f23e5129af2dap+8,
+                              {0}};
+    k[0].light.type = SWARP_LIGHT_DIRECTIONAL;
+    k[0].light.direction = (swarp_vec3){-0x1.02d5d43af6134p-2, -0x1.cafaf5f624096p-1, 0x1.404c06a3742p-4};
+    k[0].box = (swarp_aabb){{-0x1.fffffep+127, -0x1.f55cb45860535p-1, -0x1.2fc30878fb484p+6},
+                            {0x1.8abaa5ecb1781p+7, 0x1.d3c84ce1a01eep+1, 0x1.a19e146f9666bp+5}};
+    k[1].cam = (swarp_camera){{0x1.b074634a61004p+3, 0x1.9cae86f7044efp+3, -0x1.13edd590f16e8p+4},
+                              {0x1.7dc335e84b43p-4, 0x1.d280921171ebp-4, 0x1.6ab9f2ec3d478p-3},
+                              {0, 1, 0},
+                              0x1.9961599115a3dp+0,
+                              0x1.bc20d3d52b549p+15,
+                              0x1.095b63c2ece45p-1,
+                              0x1.8c19e7f3d92a2p+11,
+                              {0}};
+    k[1].light.type = SWARP_LIGHT_DIRECTIONAL;
+    k[1].light.direction = (swarp_vec3){0x1.6ffb18e800ae8p-1, -0x1.95937d2bc7ecep-1, 0x1.2655e164bf4cp-3};
+    k[1].box = (swarp_aabb){{-0x1.17d2541844b44p+3, -0x1.12d50fc6eb118p+1, -0x1.944155966c4a4p+4},
+                            {0x1.5d2cabc3b3b8cp+5, 0x1.3565fb858ae71p+3, 0x1.fffffffffffffp+1023}};
+    for (int i = 0; i < 2; ++i)
+        for (int t = 1; t <= 3; ++t)
+            for (int dr = 1; dr <= 2; ++dr) {
+                k[i].index = -1 - i;
+                k[i].o.technique = (swarp_technique)t;
+                k[i].o.depth_range = (swarp_depth_range)dr;
+                cv_stats S = {0, 0, 0};
+                cv_run(&k[i], 12345, &S);
+                if (S.failed) cv_pin_fail(fails, "replayed_scene_success_means_covered", "not covered", SWARP_OK);
+                if (S.checked == 0) cv_pin_fail(fails, "replayed_scene_success_means_covered", "all refused", SWARP_OK);
+            }
+}
+
 int main(int argc, char** argv) {
     const long count = argc > 1 ? atol(argv[1]) : 300;
     uint64_t s = argc > 2 ? strtoull(argv[2], NULL, 0) : 1;
@@ -295,6 +343,7 @@ int main(int argc, char** argv) {
     if (only < 0) {
         cv_pin_psm_extreme_frusta(&pinned);
         cv_pin_stabilized_clamped(&pinned);
+        cv_pin_replayed_scenes(&pinned);
     }
     printf("coverage: %ld scenes, %ld calls, %ld maps checked, %ld violations; pinned inputs: %ld failures\n", count,
            S.calls, S.checked, S.failed, pinned);
