@@ -227,13 +227,14 @@ static void cv_pin_psm_extreme_frusta(long* fails) {
     }
 }
 
-/* Stabilised cascades over a box "unbounded" toward the light (max.y =
- * 1e19, FLT_MAX, DBL_MAX, light straight down): the depth window stops
- * 1e10 times the map's size toward the light and every split says so
- * (SWARP_INFO_CASTERS_CLAMPED; before: SWARP_OK with a window 1e19 wide,
- * or SWARP_ERR_OVERFLOW for DBL_MAX); the receivers and the casters up to
- * the window are covered (the pancaking rule beyond).  With the bounded
- * box (max.y = 10) no split is clamped. */
+/* Cascades over a box "unbounded" toward the light (max.y = 1e19, FLT_MAX,
+ * DBL_MAX, light straight down): stabilised (SPHERE, LEVELS), the depth
+ * window stops 1e10 times the map's size toward the light, unstabilised
+ * (NONE) each split's B stops 1e10 times its H's size, and every split says
+ * so (SWARP_INFO_CASTERS_CLAMPED; before: SWARP_OK, stabilised with a
+ * window 1e19 wide); the receivers and the casters up to there are covered
+ * (the pancaking rule beyond).  With the bounded box (max.y = 10) no split
+ * is clamped. */
 static void cv_pin_stabilized_clamped(long* fails) {
     static const double top[] = {10, 1e19, FLT_MAX, DBL_MAX};
     swarp_light D;
@@ -242,7 +243,7 @@ static void cv_pin_stabilized_clamped(long* fails) {
     D.direction = (swarp_vec3){0, -1, 0};
     const swarp_camera c = cv_pin_camera();
     for (size_t b = 0; b < sizeof top / sizeof top[0]; ++b)
-        for (int mode = SWARP_STABILIZE_SPHERE; mode <= SWARP_STABILIZE_LEVELS; ++mode) {
+        for (int mode = SWARP_STABILIZE_NONE; mode <= SWARP_STABILIZE_LEVELS; ++mode) {
             swarp_aabb S = {{-50, -1, -200}, {50, 10, 50}};
             S.max.y = top[b];
             swarp_cascade_options co;
