@@ -1182,7 +1182,10 @@ SWARP_API swarp_status swarp_stabilize_light_view(const swarp_vec3* light_dir, s
  *  @param res        map resolution in texels (>= 2)
  *  @param opt        options (may be NULL = defaults)
  *  @param[out] out_matrix  the light matrix; @param[out] out_report may be NULL
- *  @return SWARP_OK, SWARP_INFO_LEVEL_ABOVE_RANGE, SWARP_ERR_NULL_POINTER,
+ *  @return SWARP_OK, SWARP_INFO_LEVEL_ABOVE_RANGE, SWARP_INFO_CASTERS_CLAMPED
+ *          (the scene box reaches more than 1e10 times the map's size toward
+ *          the light: the depth window stops there and casters beyond rely on
+ *          depth clamping; outranks LEVEL_ABOVE_RANGE), SWARP_ERR_NULL_POINTER,
  *          SWARP_ERR_NON_FINITE, SWARP_ERR_NEAR_FAR, SWARP_ERR_FOV,
  *          SWARP_ERR_ZERO_VECTOR, SWARP_ERR_RESOLUTION, SWARP_ERR_UNKNOWN_ENUM,
  *          SWARP_ERR_RESERVED_NONZERO, SWARP_ERR_OUT_OF_RANGE,

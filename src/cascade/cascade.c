@@ -518,7 +518,8 @@ static swarp_status sw_split_body_matrix(sw_cascade_run* c, const swarp_cascade_
         return SWARP_INFO_SPLIT_NO_SCENE;
     }
     if (hp->vertex_count == 0) return SWARP_ERR_SPLIT_EMPTY;
-    st = sw_body_from_h(hp, c->light, c->scene, &c->Bi);
+    int clamped = 0; /* H_i is a clip of the clipper's H: tidy loops */
+    st = sw_body_from_h_clipped(hp, c->light, c->scene, &c->Bi, &clamped);
     if (st == SWARP_ERR_BODY_EMPTY) return SWARP_ERR_SPLIT_EMPTY;
     if (st != SWARP_OK) return st;
     if (c->light->type == SWARP_LIGHT_POINT && c->light->cone_angle > 0.0) {
@@ -531,6 +532,9 @@ static swarp_status sw_split_body_matrix(sw_cascade_run* c, const swarp_cascade_
     st = swarp_setup_points(c->cam, c->light, c->Bi.vertices, c->Bi.vertex_count, hp->vertices, hp->vertex_count,
                             s->z_near, s->z_far, so, &c->sr);
     if (swarp_status_is_error(st)) return st;
+    /* casters past SW_SWEEP_REL_MAX times H_i's size are not in B_i: the
+     * depth range holds them only through the renderer's clamp */
+    if (clamped) st = SWARP_INFO_CASTERS_CLAMPED;
     c->pts = c->Bi.vertices;
     c->npts = c->Bi.vertex_count;
     return st;

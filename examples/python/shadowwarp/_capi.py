@@ -2118,6 +2118,12 @@ DOCS = {'swarp_status_string': '@brief Readable message for a status; never NULL
                                 ' @param[out] out_matrix  the light matrix; @param[out] out_report '
                                 'may be NULL\n'
                                 ' @return SWARP_OK, SWARP_INFO_LEVEL_ABOVE_RANGE, '
+                                'SWARP_INFO_CASTERS_CLAMPED\n'
+                                "         (the scene box reaches more than 1e10 times the map's "
+                                'size toward\n'
+                                '         the light: the depth window stops there and casters '
+                                'beyond rely on\n'
+                                '         depth clamping; outranks LEVEL_ABOVE_RANGE), '
                                 'SWARP_ERR_NULL_POINTER,\n'
                                 '         SWARP_ERR_NON_FINITE, SWARP_ERR_NEAR_FAR, '
                                 'SWARP_ERR_FOV,\n'
