@@ -62,6 +62,10 @@ const double FARS[] = {200, 1000};
 const double GAMMAS_DEG[] = {90, 60, 45, 30, 20, 5, 0, 150};
 /* view-axis samples: 4 per octave of a 0.5..200 m range, and more */
 const unsigned AXIS_SAMPLES = 256;
+/* |e + l|^2 below which the bisector of the unit directions to the eye and
+ * to the light is taken as undefined: they are antiparallel to within 1e-6
+ * rad, where rounding (1e-16) of the sum would decide its direction */
+const double BISECTOR_MIN_SQ = 1e-12;
 /* ground lattice: one sample per 8 x 8 screen pixels */
 const unsigned GROUND_COLS = 128, GROUND_ROWS = 96;
 
@@ -115,9 +119,12 @@ Receivers makeReceivers(const swarp_camera& cam, swarp_vec3 to_light, double adj
     for (unsigned i = 0; i < AXIS_SAMPLES; ++i) {
         double t = adj_near * std::pow(adj_far / adj_near, double(i) / (AXIS_SAMPLES - 1));
         swarp_vec3 p = add(cam.eye, scale(cam.dir, t));
-        /* bisector of the directions to the eye and to the light */
+        /* bisector of the directions to the eye and to the light; with the
+         * light straight into the eye they cancel and the receiver is taken
+         * facing up, like the ground */
+        swarp_vec3 b = add(unit(sub(cam.eye, p)), to_light);
         r.axis_p.push_back(p);
-        r.axis_n.push_back(unit(add(unit(sub(cam.eye, p)), to_light)));
+        r.axis_n.push_back(dot(b, b) > BISECTOR_MIN_SQ ? unit(b) : swarp_vec3{0, 1, 0});
     }
     double ty = std::tan(cam.fovy / 2), tx = ty * cam.aspect;
     for (unsigned row = 0; row < GROUND_ROWS; ++row)
@@ -497,12 +504,23 @@ Row evaluate(Scene& sc, double z_far, double gamma_deg, const Ogre::ShadowCamera
     return row;
 }
 
-/* the worst of the three sets; +inf for a map that is unusable */
-double worst(const Sigma& s)
+/* the worst of the three sets; +inf for a map that is unusable.  Sets in
+ * which both sides of a comparison are infinite (ground receivers grazed by
+ * a light exactly parallel to them: no map samples them) are left out of
+ * both, so the verdict rests on the sets some map can resolve. */
+double worst(const Sigma& s, const Sigma& other)
 {
-    if (s.state != 0 || std::isnan(s.axis) || std::isnan(s.frustum) || std::isnan(s.ground))
+    if (s.state != 0)
         return INFINITY;
-    return std::fmax(s.axis, std::fmax(s.frustum, s.ground));
+    double v[3] = {s.axis, s.frustum, s.ground}, o[3] = {other.axis, other.frustum, other.ground};
+    double w = 0;
+    for (int i = 0; i < 3; ++i) {
+        if (std::isnan(v[i]))
+            return INFINITY;
+        if (!(std::isinf(v[i]) && (other.state != 0 || std::isinf(o[i]))))
+            w = std::fmax(w, v[i]);
+    }
+    return w;
 }
 
 std::string num(double v, unsigned out)
@@ -533,7 +551,7 @@ std::string cell(const Sigma& s)
 std::string verdict(double mine, double theirs)
 {
     char b[96];
-    std::snprintf(b, sizeof b, "%s (%.3g vs %.3g)", mine <= theirs ? "yes" : "**no**", mine, theirs);
+    std::snprintf(b, sizeof b, "%s (%.5g vs %.5g)", mine <= theirs ? "yes" : "**no**", mine, theirs);
     return b;
 }
 
@@ -559,9 +577,12 @@ void printTable(const std::vector<Row>& rows, const char* commit)
         std::printf("| %g | %g° (%.1f°) |", r.far, r.gamma_deg, r.gamma_lib_deg);
         for (int c = 0; c < COLUMNS; ++c)
             std::printf(" %s |", cell(r.s[c]).c_str());
-        double best = std::fmin(worst(r.s[OGRE_LISPSM]), worst(r.s[OSG_LISPSM]));
-        std::printf(" %s | %s |\n", verdict(worst(r.s[LIB_DEFAULT]), best).c_str(),
-                    verdict(worst(r.s[LIB_CASCADE]), worst(r.s[OGRE_PSSM])).c_str());
+        const Sigma& mine = r.s[LIB_DEFAULT];
+        double ogre = worst(r.s[OGRE_LISPSM], mine), osg = worst(r.s[OSG_LISPSM], mine);
+        const Sigma& best = ogre <= osg ? r.s[OGRE_LISPSM] : r.s[OSG_LISPSM];
+        std::printf(" %s | %s |\n", verdict(worst(mine, best), std::fmin(ogre, osg)).c_str(),
+                    verdict(worst(r.s[LIB_CASCADE], r.s[OGRE_PSSM]),
+                            worst(r.s[OGRE_PSSM], r.s[LIB_CASCADE])).c_str());
     }
 #ifndef SWARP_HAVE_OSG
     std::printf("\nOSG column: OpenSceneGraph 3.6 (pkg-config openscenegraph-osgShadow) was not found "
