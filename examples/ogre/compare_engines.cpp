@@ -671,7 +671,13 @@ void checkGroundSigma(const std::string& name, const swarp_camera& cam, const Ma
         double lib = pointsSigma(cam, maps, p, n, &out);
         if (out)
             continue;
-        double fd = groundSigmaFD(cam, maps.m[0], r.ground_p[k]);
+        /* the split by its own range: the first map whose [z_i, z_i+1]
+         * holds the point's depth along the view direction */
+        double depth = -sub(r.ground_p[k], cam.eye).z;
+        unsigned i = 0;
+        while (i + 1 < maps.count && !(maps.z[i] <= depth && depth <= maps.z[i + 1]))
+            ++i;
+        double fd = groundSigmaFD(cam, maps.m[i], r.ground_p[k]);
         ++checked;
         if (!(std::fabs(lib - fd) <= CHECK_FD_REL * fd)) {
             expect(false, name + ": ground sigma " + std::to_string(lib) + " = finite differences " +
@@ -717,6 +723,7 @@ int runChecks()
 {
     Scene sc;
     auto focused = std::make_shared<Ogre::FocusedShadowCameraSetup>();
+    auto pssm = std::make_shared<Ogre::PSSMShadowCameraSetup>();
     Frame f = {sc.sm, sc.cam, sc.vp, sc.light};
     for (double g : {60.0, 30.0, 150.0, 20.0, 5.0}) {
         swarp_camera cam = makeCamera(200);
@@ -739,6 +746,11 @@ int runChecks()
         checkGroundSigma(std::string("OGRE focused") + tag, cam, ogreMaps(f, focused, 1, whole), rec);
         checkGroundSigma(std::string("swarp default") + tag, cam,
                          libSingle(cam, light, libOptions(), adj_near, adj_far), rec);
+        checkGroundSigma(std::string("swarp cascade") + tag, cam, libCascade(cam, light), rec);
+        pssm->calculateSplitPoints(SPLITS, Ogre::Real(Z_NEAR), 200);
+        const Ogre::PSSMShadowCameraSetup::SplitPointList& op = pssm->getSplitPoints();
+        checkGroundSigma(std::string("OGRE PSSM(4)") + tag, cam,
+                         ogreMaps(f, pssm, SPLITS, std::vector<double>(op.begin(), op.end())), rec);
     }
 #ifndef SWARP_HAVE_OSG
     std::printf("OSG checks skipped: OpenSceneGraph 3.6 not found at build time\n");
