@@ -55,7 +55,7 @@ using swarp_ogre_test::SizedTarget;
 namespace {
 
 const double PI = 3.14159265358979323846;
-const double EYE_Y = 2, FOVY_DEG = 60, Z_NEAR = 0.5;
+const double EYE_Y = 2, EYE_Z = 0, FOVY_DEG = 60, Z_NEAR = 0.5;
 const unsigned SCREEN_W = 1024, SCREEN_H = 768, MAP = 1024, SPLITS = 4;
 const swarp_aabb BOX = {{-100, -30, -100}, {100, 0, 100}};
 const double FARS[] = {200, 1000};
@@ -86,7 +86,7 @@ struct Sigma {
 swarp_camera makeCamera(double z_far)
 {
     swarp_camera c = swarp_camera();
-    c.eye = {0, EYE_Y, 0};
+    c.eye = {0, EYE_Y, EYE_Z};
     c.dir = {0, 0, -1};
     c.up = {0, 1, 0};
     c.fovy = FOVY_DEG * PI / 180;
@@ -418,7 +418,7 @@ struct Scene {
         cam = sm->createCamera("main");
         Ogre::SceneNode* camNode = sm->getRootSceneNode()->createChildSceneNode();
         camNode->attachObject(cam);
-        camNode->setPosition(0, Ogre::Real(EYE_Y), 0);
+        camNode->setPosition(0, Ogre::Real(EYE_Y), Ogre::Real(EYE_Z));
         cam->setFOVy(Ogre::Degree(Ogre::Real(FOVY_DEG)));
         cam->setAspectRatio(Ogre::Real(double(SCREEN_W) / SCREEN_H));
         cam->setNearClipDistance(Ogre::Real(Z_NEAR));
