@@ -327,6 +327,7 @@ typedef struct sw_cascade_run {
     size_t npts;
     int measured_splits;      /* SWARP_SCHEME_MEASURED: the split positions searched */
     int search;               /* a candidate of that search: the cheap measurement */
+    int measured_stabilized;  /* MEASURED asked for with stabilisation */
 } sw_cascade_run;
 
 /* The cascade's own options (the setup's are checked with the camera):
@@ -371,8 +372,9 @@ static swarp_status sw_check_cascade_options(const swarp_cascade_options* opts, 
      * positions would move every border each frame */
     c->search = 0;
     c->measured_splits = 0;
-    if (o->split.scheme == SWARP_SCHEME_MEASURED && c->smode != SWARP_STABILIZE_NONE)
-        return SWARP_ERR_INVALID_ARGUMENT;
+    /* MEASURED with stabilisation: SWARP_ERR_INVALID_ARGUMENT after every
+     * other check (sw_cascade_split_range) */
+    c->measured_stabilized = o->split.scheme == SWARP_SCHEME_MEASURED && c->smode != SWARP_STABILIZE_NONE;
     if ((o->split.scheme == SWARP_SCHEME_DEFAULT || o->split.scheme == SWARP_SCHEME_MEASURED) &&
         c->smode == SWARP_STABILIZE_NONE && c->K > 1)
         c->measured_splits = 1;
@@ -462,6 +464,7 @@ static swarp_status sw_cascade_split_range(sw_cascade_run* c, swarp_cascade_resu
     size_t cnt;
     st = swarp_cascade_splits(n_adj, f_adj, &so, res->splits, SWARP_CASCADE_MAX_SPLITS + 1, &cnt);
     if (swarp_status_is_error(st)) return st;
+    if (c->measured_stabilized) return SWARP_ERR_INVALID_ARGUMENT; /* the ranges must not move with the view */
     res->view_near = n_adj;
     res->view_far = f_adj;
     return SWARP_OK;
