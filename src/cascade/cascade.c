@@ -650,7 +650,7 @@ static void sw_split_measure_cheap(const sw_cascade_run* c, swarp_cascade_split*
     memset(&s->measured, 0, sizeof s->measured);
     if (swarp_status_is_error(swarp_measure_max(c->cam, s->z_near, s->z_far, c->light, c->scene, m, &mr, &mo,
                                                 &s->measured)))
-        s->measured.max_sigma = INFINITY; /* a candidate that cannot be measured is never chosen */
+        s->measured.max_sigma = INFINITY; /* counted as a singular split */
 }
 
 /* The measured error of split i's final matrix over its frustum ∩ S; the
@@ -742,41 +742,72 @@ static swarp_status sw_cascade_splits_compute(sw_cascade_run* c, swarp_status si
  * measured as every cascade is.  Deterministic: a fixed sequence of λ. */
 #define SW_SPLIT_SEARCH_STEPS 6
 #define SW_SPLIT_LAMBDA_OGRE 0.95
+/* Two candidates whose estimates differ by less than this fraction are a
+ * tie, decided by their order: a cascade's measured σ carries the rounding
+ * of the matrices and of the compass search's path (far below 1e-9 in
+ * round-to-nearest, but a directed rounding mode can move a search step),
+ * and a choice decided by that rounding would make the splits depend on
+ * the caller's rounding mode.  1e-6 is far above that and far below any
+ * gain worth a different split. */
+#define SW_SPLIT_TIE_REL 1e-6
 
-/* the worst split's estimated σ of the practical scheme with lambda on
- * [view_near, view_far]; +inf when a split cannot be set up */
-static double sw_split_candidate(sw_cascade_run* c, const swarp_atlas_tile* tiles, const swarp_cascade_result* res,
-                                 double lambda) {
+/* A candidate's estimate: how many splits the cheap sampling finds
+ * singular (σ = +inf at some sample: a texel-singular point, which a
+ * directed rounding mode can produce on H_i's boundary where the full
+ * sampling stays finite) and the worst finite split σ.  Fewer singular
+ * splits win, then the smaller worst σ. */
+typedef struct sw_split_score {
+    uint32_t singular;
+    double worst;
+} sw_split_score;
+
+/* a clearly better than b (not a tie) */
+static int sw_split_better(sw_split_score a, sw_split_score b) {
+    if (a.singular != b.singular) return a.singular < b.singular;
+    return a.worst < b.worst * (1.0 - SW_SPLIT_TIE_REL);
+}
+
+/* the estimate of the practical scheme with lambda on [view_near,
+ * view_far]; every split singular when a split cannot be set up */
+static sw_split_score sw_split_candidate(sw_cascade_run* c, const swarp_atlas_tile* tiles,
+                                         const swarp_cascade_result* res, double lambda) {
+    sw_split_score sc = {SWARP_CASCADE_MAX_SPLITS + 1, INFINITY};
     swarp_cascade_result r = *res;
     swarp_cascade_split sp[SWARP_CASCADE_MAX_SPLITS];
     memset(sp, 0, c->K * sizeof sp[0]);
     size_t cnt;
     if (swarp_split_practical(res->view_near, res->view_far, lambda, c->K, r.splits, SWARP_CASCADE_MAX_SPLITS + 1,
                               &cnt) != SWARP_OK)
-        return INFINITY;
+        return sc;
     memset(&r.measured, 0, sizeof r.measured);
     swarp_status info = SWARP_OK;
     c->search = 1;
     swarp_status st = sw_cascade_splits_compute(c, SWARP_OK, tiles, &r, sp, &info);
     c->search = 0;
-    if (st != SWARP_OK) return INFINITY;
-    double worst = 0.0;
-    for (uint32_t i = 0; i < c->K; ++i) worst = fmax(worst, sp[i].measured.max_sigma);
-    return worst;
+    if (st != SWARP_OK) return sc;
+    sc.singular = 0;
+    sc.worst = 0.0;
+    for (uint32_t i = 0; i < c->K; ++i) {
+        const double w = sp[i].measured.max_sigma;
+        if (w < INFINITY) sc.worst = fmax(sc.worst, w);
+        else sc.singular++;
+    }
+    return sc;
 }
 
 /* res->splits of the λ the search chooses (res->splits on entry: λ = 0.5) */
 static void sw_split_place_measured(sw_cascade_run* c, const swarp_atlas_tile* tiles, swarp_cascade_result* res) {
     const double phi = 0.5 * (sqrt(5.0) - 1.0); /* golden section */
-    double best_l = SW_DEFAULT_PSSM_LAMBDA, best = sw_split_candidate(c, tiles, res, best_l);
-    double e = sw_split_candidate(c, tiles, res, SW_SPLIT_LAMBDA_OGRE);
-    if (e < best) best = e, best_l = SW_SPLIT_LAMBDA_OGRE;
+    double best_l = SW_DEFAULT_PSSM_LAMBDA;
+    sw_split_score best = sw_split_candidate(c, tiles, res, best_l);
+    sw_split_score e = sw_split_candidate(c, tiles, res, SW_SPLIT_LAMBDA_OGRE);
+    if (sw_split_better(e, best)) best = e, best_l = SW_SPLIT_LAMBDA_OGRE;
     e = sw_split_candidate(c, tiles, res, 1.0); /* the log scheme (3.7): the bracket's end */
-    if (e < best) best = e, best_l = 1.0;
+    if (sw_split_better(e, best)) best = e, best_l = 1.0;
     double a = 0.0, b = 1.0, x1 = b - phi * (b - a), x2 = a + phi * (b - a);
-    double f1 = sw_split_candidate(c, tiles, res, x1), f2 = sw_split_candidate(c, tiles, res, x2);
+    sw_split_score f1 = sw_split_candidate(c, tiles, res, x1), f2 = sw_split_candidate(c, tiles, res, x2);
     for (int k = 2; k < SW_SPLIT_SEARCH_STEPS; ++k) {
-        if (f1 <= f2) {
+        if (!sw_split_better(f2, f1)) {
             b = x2, x2 = x1, f2 = f1, x1 = b - phi * (b - a);
             f1 = sw_split_candidate(c, tiles, res, x1);
         } else {
@@ -784,10 +815,10 @@ static void sw_split_place_measured(sw_cascade_run* c, const swarp_atlas_tile* t
             f2 = sw_split_candidate(c, tiles, res, x2);
         }
     }
-    if (f1 < best) best = f1, best_l = x1;
-    if (f2 < best) best = f2, best_l = x2;
+    if (sw_split_better(f1, best)) best = f1, best_l = x1;
+    if (sw_split_better(f2, best)) best = f2, best_l = x2;
+    if (best.singular > SWARP_CASCADE_MAX_SPLITS) return; /* nothing could be set up: keep λ = 0.5 */
     size_t cnt;
-    if (!(best < INFINITY)) return; /* nothing measurable: keep λ = 0.5 */
     double tmp[SWARP_CASCADE_MAX_SPLITS + 1];
     if (swarp_split_practical(res->view_near, res->view_far, best_l, c->K, tmp, SWARP_CASCADE_MAX_SPLITS + 1, &cnt) ==
         SWARP_OK)
