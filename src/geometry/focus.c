@@ -202,6 +202,11 @@ static void sw_min_area_up(swarp_vec3 a, swarp_vec3 v_perp, swarp_vec3 ref, cons
     *up = un;
 }
 
+/* The fraction of the blend zone (in sin γ, at its outer edge) over which
+ * the rectangle's up eases into v_perp: 20 % (sin γ from 0.8 sin 10° to
+ * sin 10°, γ from 7.99° to 10°) keeps most of the zone for the rectangle. */
+#define SW_MIN_AREA_EASE 0.2
+
 /* The light view; with B (nb points), near parallel light its rotation
  * about the axis is the minimum-area rule above, else the aligned up. */
 swarp_status sw_light_view_body(const swarp_camera* cam, swarp_vec3 origin, swarp_vec3 forward, const swarp_vec3* B,
@@ -219,6 +224,18 @@ swarp_status sw_light_view_body(const swarp_camera* cam, swarp_vec3 origin, swar
         ru = sw_sub(ru, sw_scale(a, sw_dot(ru, a)));
         const swarp_vec3 ref = sw_add(v_perp, sw_scale(ru, SWARP_FOCUS_BLEND_WEIGHT * t * t));
         sw_min_area_up(a, v_perp, ref, B, nb, &up);
+        /* toward the zone's edge the rectangle's up turns to v_perp's
+         * (the up outside the zone), so that a light leaving the zone
+         * does not jump: linear in sin γ over the last SW_MIN_AREA_EASE
+         * of the zone, where v_perp is at least 0.8 sin 10° long and
+         * within 45° of the rectangle's up (the side nearest ±v_perp,
+         * signed toward ref ≈ v_perp there), so the sum never vanishes */
+        const double s_g = sw_len_fast(v_perp), e0 = (1.0 - SW_MIN_AREA_EASE) * SWARP_FOCUS_BLEND_SIN;
+        swarp_vec3 va, ue;
+        if (s_g > e0 && sw_normalize_fast(v_perp, &va)) {
+            const double w = (s_g - e0) / (SWARP_FOCUS_BLEND_SIN - e0);
+            if (sw_normalize_fast(sw_add(sw_scale(up, 1.0 - w), sw_scale(va, w)), &ue)) up = ue;
+        }
     }
     swarp_mat4 m;
     sw_look_at(origin, a, up, &m);
