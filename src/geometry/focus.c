@@ -178,9 +178,9 @@ static int sw_min_area_side(double (*h)[2], size_t k, double e_out[2]) {
  * docs/geometry.md; swarp_setup_follow keeps the frame coherent).  Leaves
  * *up as it is when B projects to fewer than three non-collinear points
  * (no area to minimise). */
-static void sw_min_area_up(swarp_vec3 a, swarp_vec3 v_perp, swarp_vec3 ref, const swarp_vec3* B, size_t nb,
-                           swarp_vec3* up) {
-    if (!B || nb < 3 || nb > SW_HULL_MAX) return;
+static int sw_min_area_up(swarp_vec3 a, swarp_vec3 v_perp, swarp_vec3 ref, const swarp_vec3* B, size_t nb,
+                          swarp_vec3* up) {
+    if (!B || nb < 3 || nb > SW_HULL_MAX) return 0;
     const swarp_vec3 u0 = *up, x0 = sw_cross(a, u0); /* light-plane frame: x0 right, u0 up */
     double p[SW_HULL_MAX][2], h[SW_HULL_MAX + 1][2];
     for (size_t i = 0; i < nb; ++i) p[i][0] = sw_dot(B[i], x0), p[i][1] = sw_dot(B[i], u0);
@@ -190,7 +190,7 @@ static void sw_min_area_up(swarp_vec3 a, swarp_vec3 v_perp, swarp_vec3 ref, cons
     for (size_t i = 0; i < nb; ++i) p[i][0] -= c0, p[i][1] -= c1;
     const size_t k = sw_hull_2d(p, nb, h);
     double e[2];
-    if (k < 3 || !sw_min_area_side(h, k, e)) return;
+    if (k < 3 || !sw_min_area_side(h, k, e)) return 0;
     /* v_perp in the 2-D frame; the side e⊥ = (-e_1, e_0) */
     const double v0 = sw_dot(v_perp, x0), v1 = sw_dot(v_perp, u0);
     double ax0 = e[0], ax1 = e[1];
@@ -198,8 +198,9 @@ static void sw_min_area_up(swarp_vec3 a, swarp_vec3 v_perp, swarp_vec3 ref, cons
     if (ax0 * sw_dot(ref, x0) + ax1 * sw_dot(ref, u0) < 0.0) ax0 = -ax0, ax1 = -ax1;
     swarp_vec3 u = sw_add(sw_scale(x0, ax0), sw_scale(u0, ax1));
     swarp_vec3 un;
-    if (!sw_normalize_fast(sw_sub(u, sw_scale(a, sw_dot(u, a))), &un)) return;
+    if (!sw_normalize_fast(sw_sub(u, sw_scale(a, sw_dot(u, a))), &un)) return 0;
     *up = un;
+    return 1;
 }
 
 /* The fraction of the blend zone (in sin γ, at its outer edge) over which
@@ -223,7 +224,7 @@ swarp_status sw_light_view_body(const swarp_camera* cam, swarp_vec3 origin, swar
         swarp_vec3 ru = sw_add(r, cu);
         ru = sw_sub(ru, sw_scale(a, sw_dot(ru, a)));
         const swarp_vec3 ref = sw_add(v_perp, sw_scale(ru, SWARP_FOCUS_BLEND_WEIGHT * t * t));
-        sw_min_area_up(a, v_perp, ref, B, nb, &up);
+        const int turned = sw_min_area_up(a, v_perp, ref, B, nb, &up);
         /* toward the zone's edge the rectangle's up turns to v_perp's
          * (the up outside the zone), so that a light leaving the zone
          * does not jump: linear in sin γ over the last SW_MIN_AREA_EASE
@@ -232,7 +233,7 @@ swarp_status sw_light_view_body(const swarp_camera* cam, swarp_vec3 origin, swar
          * signed toward ref ≈ v_perp there), so the sum never vanishes */
         const double s_g = sw_len_fast(v_perp), e0 = (1.0 - SW_MIN_AREA_EASE) * SWARP_FOCUS_BLEND_SIN;
         swarp_vec3 va, ue;
-        if (s_g > e0 && sw_normalize_fast(v_perp, &va)) {
+        if (turned && s_g > e0 && sw_normalize_fast(v_perp, &va)) {
             const double w = (s_g - e0) / (SWARP_FOCUS_BLEND_SIN - e0);
             if (sw_normalize_fast(sw_add(sw_scale(up, 1.0 - w), sw_scale(va, w)), &ue)) up = ue;
         }
