@@ -1382,15 +1382,22 @@ SWARP_API swarp_status swarp_cascade_blend(const double* splits, size_t m, doubl
 /* ---- cascades: split distances and the configuration's error curve ----- */
 
 typedef enum swarp_split_scheme {
-    SWARP_SCHEME_DEFAULT = 0,   /**< = PRACTICAL with lambda 0.5 (PSSM, ZSXL06) */
+    SWARP_SCHEME_DEFAULT = 0,   /**< swarp_cascade_setup unstabilised: = MEASURED;
+                                     stabilised, and swarp_cascade_splits (no scene):
+                                     PRACTICAL with lambda 0.5 (PSSM, ZSXL06) */
     SWARP_SCHEME_UNIFORM = 1,   /**< [RHS] (3.6) */
     SWARP_SCHEME_LOG = 2,       /**< [RHS] (3.7) */
     SWARP_SCHEME_PRACTICAL = 3, /**< [RHS] (3.8), lambda as given (0 = uniform) */
     SWARP_SCHEME_PSEUDO = 4,    /**< [RHS] (4.1): practical over [n_p, f_p] */
+    SWARP_SCHEME_MEASURED = 5,  /**< swarp_cascade_setup only: the practical lambda in
+                                     [0, 1] whose splits' worst measured sigma is least
+                                     (golden-section search, 6 steps, plus lambda 0.5,
+                                     0.95 and 1, on a cheap sampling; the choice measured in
+                                     full); lambda ignored.  docs/splits.md */
     SWARP_SCHEME_FORCE_I32 = 0x7FFFFFFF
 } swarp_split_scheme;
 
-/** How to split [n, f].  Zero means default (4 splits, PSSM lambda 0.5). */
+/** How to split [n, f].  Zero means default (4 splits, SWARP_SCHEME_DEFAULT). */
 typedef struct swarp_split_options {
     uint32_t count;            /**< m, 1..SWARP_SPLIT_MAX_COUNT; 0 = 4 */
     swarp_split_scheme scheme;
@@ -1411,7 +1418,9 @@ typedef struct swarp_split_options {
  *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
  *          SWARP_ERR_NEAR_FAR, SWARP_ERR_SPLIT_COUNT, SWARP_ERR_OUT_OF_RANGE,
  *          SWARP_ERR_UNKNOWN_ENUM, SWARP_ERR_RESERVED_NONZERO,
- *          SWARP_ERR_CAPACITY. */
+ *          SWARP_ERR_CAPACITY, SWARP_ERR_INVALID_ARGUMENT (SWARP_SCHEME_MEASURED:
+ *          it needs the camera, light and scene of swarp_cascade_setup).
+ *          SWARP_SCHEME_DEFAULT here is PRACTICAL with lambda 0.5. */
 SWARP_API swarp_status swarp_cascade_splits(double n, double f, const swarp_split_options* opt,
                                             double* out, size_t capacity, size_t* out_count);
 
@@ -1547,11 +1556,17 @@ typedef struct swarp_cascade_result {
  *  @param[out] out_count   split count (also with SWARP_ERR_CAPACITY)
  *  o.warp_per_split FROM_FIRST: [RHS] §3.4 arbitrary warping, see
  *  swarp_cascade_warp.  o.setup.min_depth: [RHS] §4.3 measured min depth, as
- *  in swarp_setup (not for stabilised cascades).
+ *  in swarp_setup (not for stabilised cascades).  o.split.scheme DEFAULT
+ *  (unstabilised) or MEASURED: the split positions are the practical
+ *  scheme's on the adjusted range (after min_depth) with the λ whose worst
+ *  split measures least (SWARP_SCHEME_MEASURED, docs/splits.md); MEASURED
+ *  with stabilisation is SWARP_ERR_INVALID_ARGUMENT (its ranges must not
+ *  move with the view), DEFAULT with stabilisation is PRACTICAL λ = 0.5.
  *  @return SWARP_OK or the first informational status of a split
  *          (SWARP_INFO_SPLIT_NO_SCENE: LEVELS, a split of the constant
  *          range misses the scene box and its map covers the split frustum);
  *          SWARP_ERR_STABILIZE_WARPED, SWARP_ERR_STABILIZE_LIGHT,
+ *          SWARP_ERR_INVALID_ARGUMENT (MEASURED stabilised),
  *          SWARP_ERR_SPLIT_COUNT (count > 16), SWARP_ERR_SPLIT_EMPTY,
  *          SWARP_ERR_CAPACITY, and the errors of swarp_setup,
  *          swarp_cascade_splits and swarp_stabilize_directional (with

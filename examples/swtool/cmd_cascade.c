@@ -41,6 +41,10 @@ static int parse_scheme(const char* s, swarp_split_options* o) {
         o->scheme = SWARP_SCHEME_LOG;
         return 1;
     }
+    if (strcmp(s, "measured") == 0) { /* scene mode: the splits by measurement */
+        o->scheme = SWARP_SCHEME_MEASURED;
+        return 1;
+    }
     if (strcmp(s, "practical") == 0 || strcmp(s, "pssm") == 0) {
         o->scheme = SWARP_SCHEME_PRACTICAL;
         o->lambda = 0.5;
@@ -178,7 +182,7 @@ static const char* const cascade_scene_known[] = {
 
 static int cascade_scheme(const sw_args* a, swarp_split_options* so) {
     if (parse_scheme(cli_opt(a, "scheme"), so)) return 1;
-    cli_fail(a, "--scheme", "expects uniform|log|practical[:L]|pseudo:NP,FP[,L], got '%s'", cli_opt(a, "scheme"));
+    cli_fail(a, "--scheme", "expects uniform|log|measured|practical[:L]|pseudo:NP,FP[,L], got '%s'", cli_opt(a, "scheme"));
     return 0;
 }
 

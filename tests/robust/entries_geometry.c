@@ -1963,7 +1963,7 @@ static void e_cascade_setup(swr_ctx* c) {
             if (o._reserved[i]) swr_expect(c, SWARP_ERR_RESERVED_NONZERO);
         for (int i = 0; i < 4; ++i)
             if (o.split._reserved[i]) swr_expect(c, SWARP_ERR_RESERVED_NONZERO);
-        if ((int)o.warp_per_split < 0 || (int)o.warp_per_split > 2 || (int)o.split.scheme < 0 || (int)o.split.scheme > 4 ||
+        if ((int)o.warp_per_split < 0 || (int)o.warp_per_split > 2 || (int)o.split.scheme < 0 || (int)o.split.scheme > 5 ||
             (int)o.stabilize.mode < 0 || (int)o.stabilize.mode > 3)
             swr_expect(c, SWARP_ERR_UNKNOWN_ENUM);
         if (o.split.count > SWARP_CASCADE_MAX_SPLITS) swr_expect(c, SWARP_ERR_SPLIT_COUNT);
@@ -1975,6 +1975,8 @@ static void e_cascade_setup(swr_ctx* c) {
          * stabilised sphere or matrix beyond DBL_MAX (far 1e306, aspect
          * DBL_MAX) */
         if ((int)o.stabilize.mode != 0) swr_domain(c, SWARP_ERR_OVERFLOW);
+        /* SWARP_SCHEME_MEASURED with stabilisation (ranges that must not move) */
+        if ((int)o.split.scheme == 5 && (int)o.stabilize.mode != 0) swr_domain(c, SWARP_ERR_INVALID_ARGUMENT);
     }
     if (K <= SWARP_CASCADE_MAX_SPLITS && cap < K) swr_expect(c, SWARP_ERR_CAPACITY);
     if (!psp && cap == 0) swr_domain(c, SWARP_ERR_CAPACITY);

@@ -365,7 +365,9 @@ static void e_cascade_splits(swr_ctx* c) {
     if (swr_isfin(n) && swr_isfin(f) && !(n > 0 && f > n)) swr_expect(c, SWARP_ERR_NEAR_FAR);
     uint32_t m = use && o.count ? o.count : 4;
     if (use) {
-        if ((int)o.scheme < 0 || (int)o.scheme > 4) swr_expect(c, SWARP_ERR_UNKNOWN_ENUM);
+        if ((int)o.scheme < 0 || (int)o.scheme > 5) swr_expect(c, SWARP_ERR_UNKNOWN_ENUM);
+        /* SWARP_SCHEME_MEASURED needs the scene of swarp_cascade_setup */
+        if ((int)o.scheme == 5) swr_expect(c, SWARP_ERR_INVALID_ARGUMENT);
         if (o.count > SWARP_SPLIT_MAX_COUNT) swr_expect(c, SWARP_ERR_SPLIT_COUNT);
         for (int i = 0; i < 4; ++i)
             if (o._reserved[i]) swr_expect(c, SWARP_ERR_RESERVED_NONZERO);

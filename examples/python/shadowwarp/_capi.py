@@ -115,6 +115,7 @@ ENUMS = {'swarp_depth_range': {'SWARP_DEPTH_DEFAULT': 0,
                         'SWARP_SCHEME_LOG': 2,
                         'SWARP_SCHEME_PRACTICAL': 3,
                         'SWARP_SCHEME_PSEUDO': 4,
+                        'SWARP_SCHEME_MEASURED': 5,
                         'SWARP_SCHEME_FORCE_I32': 2147483647},
  'swarp_cascade_warp': {'SWARP_CASCADE_WARP_DEFAULT': 0,
                         'SWARP_CASCADE_WARP_EACH': 1,
@@ -2321,7 +2322,10 @@ DOCS = {'swarp_status_string': '@brief Readable message for a status; never NULL
                          '         SWARP_ERR_NEAR_FAR, SWARP_ERR_SPLIT_COUNT, '
                          'SWARP_ERR_OUT_OF_RANGE,\n'
                          '         SWARP_ERR_UNKNOWN_ENUM, SWARP_ERR_RESERVED_NONZERO,\n'
-                         '         SWARP_ERR_CAPACITY.',
+                         '         SWARP_ERR_CAPACITY, SWARP_ERR_INVALID_ARGUMENT '
+                         '(SWARP_SCHEME_MEASURED:\n'
+                         '         it needs the camera, light and scene of swarp_cascade_setup).\n'
+                         '         SWARP_SCHEME_DEFAULT here is PRACTICAL with lambda 0.5.',
  'swarp_cascade_nopt': "@brief Warp parameter n' of each split for LiSPSM with an overhead light\n"
                        " in the error model's frame: n_opt of [RHS] (3.2) with d = C_{i+1} - C_i,\n"
                        ' z_0 = C_i, z_1 = C_{i+1}; the first split uses the pseudo-near fraction\n'
@@ -2364,12 +2368,18 @@ DOCS = {'swarp_status_string': '@brief Readable message for a status; never NULL
                         ' o.warp_per_split FROM_FIRST: [RHS] §3.4 arbitrary warping, see\n'
                         ' swarp_cascade_warp.  o.setup.min_depth: [RHS] §4.3 measured min depth, '
                         'as\n'
-                        ' in swarp_setup (not for stabilised cascades).\n'
+                        ' in swarp_setup (not for stabilised cascades).  o.split.scheme DEFAULT\n'
+                        ' (unstabilised) or MEASURED: the split positions are the practical\n'
+                        " scheme's on the adjusted range (after min_depth) with the λ whose worst\n"
+                        ' split measures least (SWARP_SCHEME_MEASURED, docs/splits.md); MEASURED\n'
+                        ' with stabilisation is SWARP_ERR_INVALID_ARGUMENT (its ranges must not\n'
+                        ' move with the view), DEFAULT with stabilisation is PRACTICAL λ = 0.5.\n'
                         ' @return SWARP_OK or the first informational status of a split\n'
                         '         (SWARP_INFO_SPLIT_NO_SCENE: LEVELS, a split of the constant\n'
                         '         range misses the scene box and its map covers the split '
                         'frustum);\n'
                         '         SWARP_ERR_STABILIZE_WARPED, SWARP_ERR_STABILIZE_LIGHT,\n'
+                        '         SWARP_ERR_INVALID_ARGUMENT (MEASURED stabilised),\n'
                         '         SWARP_ERR_SPLIT_COUNT (count > 16), SWARP_ERR_SPLIT_EMPTY,\n'
                         '         SWARP_ERR_CAPACITY, and the errors of swarp_setup,\n'
                         '         swarp_cascade_splits and swarp_stabilize_directional (with\n'
