@@ -194,11 +194,14 @@ typedef enum swarp_depth_range {
     /** Reversed-Z: z_ndc in [0, 1] with the light's NEAR plane at 1 and its
      *  far plane at 0 (depth test GREATER, clear to 0).  float32 depth is
      *  densest near 0, which reversed-Z puts at the far end, where 1/w
-     *  compresses depth most (docs/engines.md has the table).  Accepted by
-     *  swarp_setup, swarp_focus_fit, the stabilisation functions and
-     *  swarp_cube_faces; the atlas, bias and split-selection functions, the
-     *  lixel maps and swarp_poly_from_inverse_matrix return
-     *  SWARP_ERR_UNKNOWN_ENUM for it (swarp_cascade_setup therefore too). */
+     *  compresses depth most (docs/engines.md has the table).  Accepted
+     *  wherever the light's clip depth appears: every light-matrix builder
+     *  (swarp_setup, swarp_focus_fit, stabilisation, swarp_cascade_setup,
+     *  swarp_cube_faces, swarp_lixel_factor), the atlas (window depth
+     *  d = z_ndc, so d = 1 - d of the [0, 1] map), the bias functions (their
+     *  depth biases are what to SUBTRACT from the receiver's d: negative
+     *  here, which raises the receiver toward the light under the GREATER
+     *  test), swarp_cascade_select_best and swarp_poly_from_inverse_matrix. */
     SWARP_DEPTH_REVERSED_ZERO_TO_ONE = 3,
     SWARP_DEPTH_RANGE_FORCE_I32 = 0x7FFFFFFF
 } swarp_depth_range;
@@ -1061,7 +1064,8 @@ typedef struct swarp_atlas_info {
  *  clip_to_atlas maps the split's clip coordinates (x, y, z, w) to
  *  homogeneous atlas coordinates (u w, v w, d w, w): after the divide u, v
  *  are atlas texture coordinates in [u0, u0 + l_sc] x [v0, v0 + l_sc] and d
- *  the window depth in [0, 1] (whatever the clip depth range). */
+ *  the window depth in [0, 1] (whatever the clip depth range; under
+ *  reversed-Z d = z_ndc, the light's near plane at 1 and far plane at 0). */
 typedef struct swarp_atlas_tile {
     double viewport_x, viewport_y;          /**< lower-left texel */
     double viewport_width, viewport_height; /**< texels */
@@ -1190,7 +1194,10 @@ SWARP_API swarp_status swarp_stabilize_light_view(const swarp_vec3* light_dir, s
  *  @param res        map resolution in texels (>= 2)
  *  @param opt        options (may be NULL = defaults)
  *  @param[out] out_matrix  the light matrix; @param[out] out_report may be NULL
- *  @return SWARP_OK, SWARP_INFO_LEVEL_ABOVE_RANGE, SWARP_ERR_NULL_POINTER,
+ *  @return SWARP_OK, SWARP_INFO_LEVEL_ABOVE_RANGE, SWARP_INFO_CASTERS_CLAMPED
+ *          (the scene box reaches more than 1e10 times the map's size toward
+ *          the light: the depth window stops there and casters beyond rely on
+ *          depth clamping; outranks LEVEL_ABOVE_RANGE), SWARP_ERR_NULL_POINTER,
  *          SWARP_ERR_NON_FINITE, SWARP_ERR_NEAR_FAR, SWARP_ERR_FOV,
  *          SWARP_ERR_ZERO_VECTOR, SWARP_ERR_RESOLUTION, SWARP_ERR_UNKNOWN_ENUM,
  *          SWARP_ERR_RESERVED_NONZERO, SWARP_ERR_OUT_OF_RANGE,
@@ -1227,7 +1234,11 @@ SWARP_API swarp_status swarp_stabilize_snap_matrix(const swarp_mat4* m, double r
 /** A shadow map as the bias functions see it: the final world -> clip matrix
  *  (uniform or warped, per split), its resolution and clip depth range.
  *  "Depth units" below are WINDOW depth d in [0, 1] (the value stored in the
- *  depth texture): d = (z_ndc + 1)/2 for [-1, 1], d = z_ndc for [0, 1]. */
+ *  depth texture): d = (z_ndc + 1)/2 for [-1, 1], d = z_ndc for [0, 1] and
+ *  reversed-Z.  A depth bias is d(p) - d(p moved toward the light), the
+ *  amount to subtract from the receiver's d before the compare: positive
+ *  for the LESS test of [-1, 1] and [0, 1], negative for reversed-Z's
+ *  GREATER test (as a rasteriser's depth bias is negated there). */
 typedef struct swarp_bias_map {
     swarp_mat4 world_to_clip;
     double res_s;  /**< texels along clip x */
@@ -1300,8 +1311,9 @@ SWARP_API swarp_status swarp_bias_slope_scaled(const swarp_bias_map* map, const 
 
 /** @brief Window depth per world unit toward the light at p: the factor that
  *  turns a world-space bias into the depth units of this split's map (minus
- *  the derivative of d along L at p, so > 0 for a map looking along the
- *  light).  Uniform maps: constant per split.
+ *  the derivative of d along L at p, so > 0 for a forward map looking along
+ *  the light and < 0 under reversed-Z, exactly the forward value negated).
+ *  Uniform maps: constant per split.
  *  @param[out] out_depth_per_world window depth units per world unit
  *  @return SWARP_OK, SWARP_ERR_BEHIND_PROJECTION, and the argument errors of
  *          swarp_bias_texel_size and swarp_bias_to_light. */
@@ -1312,7 +1324,8 @@ SWARP_API swarp_status swarp_bias_depth_per_world(const swarp_bias_map* map, con
  *  window depth per TEXEL of the receiver plane at p spanned by the world
  *  tangents tangent_a, tangent_b (e.g. dFdx/dFdy of the world position, or
  *  two edges of the triangle).  Exact derivative of the (possibly
- *  projective) map at p.  A PCF tap offset by (ds, dt) texels compares
+ *  projective) map at p (under reversed-Z the gradient of the reversed d:
+ *  the [0, 1] gradient negated).  A PCF tap offset by (ds, dt) texels compares
  *  against d + dd/ds ds + dd/dt dt.  GLSL twin in shaders/splits.glsl.
  *  @return as swarp_bias_texel_size; SWARP_ERR_DEGENERATE when the plane is
  *          seen edge-on by the light (its texel-space image is a line): the
@@ -1381,15 +1394,22 @@ SWARP_API swarp_status swarp_cascade_blend(const double* splits, size_t m, doubl
 /* ---- cascades: split distances and the configuration's error curve ----- */
 
 typedef enum swarp_split_scheme {
-    SWARP_SCHEME_DEFAULT = 0,   /**< = PRACTICAL with lambda 0.5 (PSSM, ZSXL06) */
+    SWARP_SCHEME_DEFAULT = 0,   /**< swarp_cascade_setup unstabilised: = MEASURED;
+                                     stabilised, and swarp_cascade_splits (no scene):
+                                     PRACTICAL with lambda 0.5 (PSSM, ZSXL06) */
     SWARP_SCHEME_UNIFORM = 1,   /**< [RHS] (3.6) */
     SWARP_SCHEME_LOG = 2,       /**< [RHS] (3.7) */
     SWARP_SCHEME_PRACTICAL = 3, /**< [RHS] (3.8), lambda as given (0 = uniform) */
     SWARP_SCHEME_PSEUDO = 4,    /**< [RHS] (4.1): practical over [n_p, f_p] */
+    SWARP_SCHEME_MEASURED = 5,  /**< swarp_cascade_setup only: the practical lambda in
+                                     [0, 1] whose splits' worst measured sigma is least
+                                     (golden-section search, 6 steps, plus lambda 0.5,
+                                     0.95 and 1, on a cheap sampling; the choice measured in
+                                     full); lambda ignored.  docs/splits.md */
     SWARP_SCHEME_FORCE_I32 = 0x7FFFFFFF
 } swarp_split_scheme;
 
-/** How to split [n, f].  Zero means default (4 splits, PSSM lambda 0.5). */
+/** How to split [n, f].  Zero means default (4 splits, SWARP_SCHEME_DEFAULT). */
 typedef struct swarp_split_options {
     uint32_t count;            /**< m, 1..SWARP_SPLIT_MAX_COUNT; 0 = 4 */
     swarp_split_scheme scheme;
@@ -1410,7 +1430,9 @@ typedef struct swarp_split_options {
  *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
  *          SWARP_ERR_NEAR_FAR, SWARP_ERR_SPLIT_COUNT, SWARP_ERR_OUT_OF_RANGE,
  *          SWARP_ERR_UNKNOWN_ENUM, SWARP_ERR_RESERVED_NONZERO,
- *          SWARP_ERR_CAPACITY. */
+ *          SWARP_ERR_CAPACITY, SWARP_ERR_INVALID_ARGUMENT (SWARP_SCHEME_MEASURED:
+ *          it needs the camera, light and scene of swarp_cascade_setup).
+ *          SWARP_SCHEME_DEFAULT here is PRACTICAL with lambda 0.5. */
 SWARP_API swarp_status swarp_cascade_splits(double n, double f, const swarp_split_options* opt,
                                             double* out, size_t capacity, size_t* out_count);
 
@@ -1506,7 +1528,8 @@ typedef struct swarp_cascade_split {
     double depth_per_world;    /**< window depth per world unit toward the light at the
                                     centroid of B_i (swarp_bias_depth_per_world): converts
                                     a world-space bias to this split's depth units
-                                    (constant over the split for uniform maps) */
+                                    (constant over the split for uniform maps;
+                                    negative under reversed-Z) */
     swarp_status status;       /**< this split's own (informational) status */
     uint32_t point_count;      /**< points of B_i */
     swarp_measured_error measured; /**< the measured error of matrix over the split frustum
@@ -1545,11 +1568,17 @@ typedef struct swarp_cascade_result {
  *  @param[out] out_count   split count (also with SWARP_ERR_CAPACITY)
  *  o.warp_per_split FROM_FIRST: [RHS] §3.4 arbitrary warping, see
  *  swarp_cascade_warp.  o.setup.min_depth: [RHS] §4.3 measured min depth, as
- *  in swarp_setup (not for stabilised cascades).
+ *  in swarp_setup (not for stabilised cascades).  o.split.scheme DEFAULT
+ *  (unstabilised) or MEASURED: the split positions are the practical
+ *  scheme's on the adjusted range (after min_depth) with the λ whose worst
+ *  split measures least (SWARP_SCHEME_MEASURED, docs/splits.md); MEASURED
+ *  with stabilisation is SWARP_ERR_INVALID_ARGUMENT (its ranges must not
+ *  move with the view), DEFAULT with stabilisation is PRACTICAL λ = 0.5.
  *  @return SWARP_OK or the first informational status of a split
  *          (SWARP_INFO_SPLIT_NO_SCENE: LEVELS, a split of the constant
  *          range misses the scene box and its map covers the split frustum);
  *          SWARP_ERR_STABILIZE_WARPED, SWARP_ERR_STABILIZE_LIGHT,
+ *          SWARP_ERR_INVALID_ARGUMENT (MEASURED stabilised),
  *          SWARP_ERR_SPLIT_COUNT (count > 16), SWARP_ERR_SPLIT_EMPTY,
  *          SWARP_ERR_CAPACITY, and the errors of swarp_setup,
  *          swarp_cascade_splits and swarp_stabilize_directional (with
@@ -1942,7 +1971,8 @@ SWARP_API swarp_status swarp_poly_from_camera(const swarp_camera* cam, swarp_pol
 
 /** @brief The frustum whose clip cube is mapped to world space by an inverse
  *  view-projection matrix (the 8 corners of the NDC cube, depth per
- *  depth_range).
+ *  depth_range: near face at NDC -1, 0, or 1 for reversed-Z, whose far
+ *  face is at 0; an infinite reversed far plane maps to w = 0: DEGENERATE).
  *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
  *          SWARP_ERR_UNKNOWN_ENUM, SWARP_ERR_DEGENERATE (a corner maps to
  *          infinity: w <= 0). */
@@ -2227,8 +2257,9 @@ SWARP_API swarp_status swarp_lixel_twist_for_line(const swarp_mat4* M_l, const s
  *  the wanted side); GLV is the viewport NDC -> lixels
  *  (x = (x_ndc + 1) width/2 - 1/2) with depth passed through.  The depth
  *  row is remapped affinely (allowed by the paper's footnote): the raised
- *  point p-hat lands on the near plane (NDC -1, or 0) and P at the fraction
- *  plane_depth of the depth range (default 0.5), so geometry slightly
+ *  point p-hat lands on the near plane (NDC -1, 0, or 1 under reversed-Z)
+ *  and P at the fraction plane_depth of the depth range from the near
+ *  plane (default 0.5; NDC 1 - plane_depth reversed), so geometry slightly
  *  behind P is not clipped.  (x, y, q) of M_l' equal those of M_l.
  *  @param[in] M_l restricted light matrix (lixels; depth as built by
  *         swarp_lixel_matrix: p-hat at z = -1, P at z = +1)

@@ -9,7 +9,12 @@
 // Conventions: splits[0..count] are the eye-space split distances C_0..C_m
 // (swarp_cascade_result.splits); light[i] is split i's world -> clip matrix
 // (swarp_cascade_split.matrix), light_inv[i] its inverse; res the map
-// resolution in texels; zero_to_one selects the [0, 1] clip depth range.
+// resolution in texels; zero_to_one selects a [0, 1] clip depth range: pass
+// true for SWARP_DEPTH_ZERO_TO_ONE and for SWARP_DEPTH_REVERSED_ZERO_TO_ONE
+// alike (reversed-Z keeps clip z in [0, w], near plane at z = w), false for
+// [-1, 1].  Nothing else here depends on the depth convention: the
+// receiver-plane gradient is that of whatever depth sc.z holds (negated
+// under reversed-Z, as swarp_bias_receiver_plane's).
 
 #ifndef SWARP_SPLITS_MAX
 #define SWARP_SPLITS_MAX 16

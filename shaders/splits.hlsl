@@ -8,7 +8,8 @@
 // GLSL by spirv-cross and run by tests/cascade/splits_glsl.c against the C
 // library like the GLSL file.
 //
-// Conventions: as splits.glsl.  Matrices are float4x4 with m[row][col] the
+// Conventions: as splits.glsl (zero_to_one is true for [0, 1] and for
+// reversed-Z).  Matrices are float4x4 with m[row][col] the
 // library's element (row, col), so p' = mul(M, v): upload swarp_mat4
 // (column-major floats) into a column_major float4x4 (HLSL's default
 // constant-buffer packing) and it is this matrix.

@@ -14,7 +14,7 @@
 set -eu
 pkgs_build="meson ninja-build pkg-config gcc libc6-dev"
 pkgs_demo="libcglm-dev libosmesa6-dev libpng-dev libstb-dev"
-pkgs_test="libcglm-dev check python3 python3-numpy gnuplot-nox clang libclang-rt-14-dev valgrind gcovr cmake g++ abigail-tools glslang-tools spirv-cross libogre-1.12-dev"
+pkgs_test="libcglm-dev check python3 python3-numpy gnuplot-nox clang libclang-rt-14-dev valgrind gcovr cmake g++ abigail-tools glslang-tools spirv-cross libogre-1.12-dev libopenscenegraph-dev"
 pkgs_package="build-essential dpkg-dev debhelper dh-python python3 lintian libcglm-dev check"
 [ "$#" -gt 0 ] || set -- build demo test package
 PKGS=""

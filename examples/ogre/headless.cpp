@@ -113,10 +113,36 @@ void HeadlessSceneManager::findVisible(Ogre::Camera* cam, bool only_casters)
     _findVisibleObjects(cam, &bounds, only_casters);
 }
 
+/* OGRE 1.12.10's order, line numbers of OgreMain/src/OgreSceneManager.cpp
+ * (SM) and OgreShadowRenderer.cpp (SR) at tag v1.12.10:
+ *   SM 1257  _renderScene: _updateSceneGraph(camera)
+ *   SM 1277  findLightsAffectingFrustum(camera) (SM 2981-3000 sorts the
+ *            shadow-casting lights first)
+ *   SM 1296  prepareShadowTextures(camera, vp) -> SM 3305-3316: the
+ *            illumination stage becomes IRS_RENDER_TO_TEXTURE, the light list
+ *            mLightsAffectingFrustum, then SR 783 ShadowRenderer::
+ *            prepareShadowTextures: SR 786 ensureShadowTexturesCreated
+ *            (here createShadowCameras, done once beforehand), and per
+ *            shadow-casting light and texture j of its type (SR 825, 840):
+ *   SR 847   shadowView->setCamera(texCam)
+ *   SR 850   texCam->setLodCamera(cam)
+ *   SR 853, 855  node direction (not for point lights), position (not for
+ *            directional lights)
+ *   SR 859, 862  viewport material scheme and visibility mask
+ *   SR 870, 872  getShadowCamera of the light's custom setup or the default
+ *   SR 875   background colour white
+ *   SR 878   fireShadowTexturesPreCaster(light, texCam, j)
+ *   SR 881   shadowRTT->update(): stands in here for the caster pass,
+ *            SM 1257 _updateSceneGraph(texCam) and SM 1355 _findVisibleObjects
+ *            with only the shadow casters (the stage is RENDER_TO_TEXTURE),
+ *            which fill the texture camera's bounds
+ *   then the main camera's visibility pass (SM 1355, its receiver bounds). */
 void HeadlessSceneManager::renderShadows(Ogre::Camera* cam, Ogre::Viewport* vp)
 {
     _updateSceneGraph(cam);
     findLightsAffectingFrustum(cam);
+    const IlluminationRenderStage savedStage = mIlluminationStage;
+    mIlluminationStage = IRS_RENDER_TO_TEXTURE;
     size_t next = 0;
     for (Ogre::Light* light : _getLightsAffectingFrustum()) {
         if (!light->getCastShadows())
@@ -126,6 +152,7 @@ void HeadlessSceneManager::renderShadows(Ogre::Camera* cam, Ogre::Viewport* vp)
             ProbeCamera* texCam = mTexCams[next];
             Ogre::Viewport* shadowView = texCam->getViewport();
             /* prepareShadowTextures, the body of its loop */
+            shadowView->setCamera(texCam);
             texCam->setLodCamera(cam);
             if (light->getType() != Ogre::Light::LT_POINT)
                 texCam->getParentSceneNode()->setDirection(light->getDerivedDirection(),
@@ -138,6 +165,7 @@ void HeadlessSceneManager::renderShadows(Ogre::Camera* cam, Ogre::Viewport* vp)
                 getShadowCameraSetup()->getShadowCamera(this, cam, vp, light, texCam, j);
             else
                 light->getCustomShadowCameraSetup()->getShadowCamera(this, cam, vp, light, texCam, j);
+            shadowView->setBackgroundColour(Ogre::ColourValue::White);
             fireShadowTexturesPreCaster(light, texCam, j);
             /* shadowRTT->update(): the caster pass of the texture camera */
             mUsable[next] = texCam->storedMatricesFinite();
@@ -152,6 +180,7 @@ void HeadlessSceneManager::renderShadows(Ogre::Camera* cam, Ogre::Viewport* vp)
             }
         }
     }
+    mIlluminationStage = savedStage;
     findVisible(cam, false);
 }
 

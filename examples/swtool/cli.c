@@ -24,7 +24,11 @@ static const sw_optdef cli_options[] = {
     {"fovy", required_argument, "DEG", "full vertical field of view, degrees"},
     {"aspect", required_argument, "A", "width / height"},
     {"near", required_argument, "N", "view near distance"},
-    {"far", required_argument, "F", "view far distance"},
+    {"far", required_argument, "F|inf", "view far distance (inf: bounded by --box)"},
+    {"view", required_argument, "16 NUMBERS", "engine camera: world -> view matrix"},
+    {"proj", required_argument, "16 NUMBERS", "engine camera: view -> clip projection"},
+    {"proj-convention", required_argument, "rh|lh|rh-t|lh-t", "storage and handedness of --view/--proj"},
+    {"proj-depth", required_argument, "gl|zo", "the engine API's clip depth: gl [-1,1], zo [0,1]"},
     {"light-dir", required_argument, "X,Y,Z", "directional light: the direction light travels"},
     {"light-pos", required_argument, "X,Y,Z", "point light position"},
     {"light", required_argument, "X,Y,Z,W", "post-projective (homogeneous) light position"},
@@ -32,7 +36,7 @@ static const sw_optdef cli_options[] = {
     {"map", required_argument, "N|WxH", "shadow-map resolution, texels (N = NxN)"},
     {"screen", required_argument, "WxH", "screen resolution, pixels"},
     {"technique", required_argument, "NAME", "warp technique"},
-    {"depth", required_argument, "gl|zo", "clip depth range: gl [-1,1], zo [0,1]"},
+    {"depth", required_argument, "gl|zo|rev", "light's clip depth: gl [-1,1], zo [0,1], rev reversed-Z [1,0]"},
     {"reps", required_argument, "N", "timing repetitions (the median is printed)"},
     {"min-depth", required_argument, "D", "[RHS] 4.3 measured minimum view depth"},
     {"prev-view", required_argument, "16 NUMBERS", "previous frame's light_view (column-major)"},
@@ -425,7 +429,11 @@ int cli_depth(const sw_args* a, swarp_depth_range* out) {
         *out = SWARP_DEPTH_ZERO_TO_ONE;
         return 1;
     }
-    cli_fail(a, "--depth", "expects gl ([-1, 1]) or zo ([0, 1]), got '%s'", d);
+    if (strcmp(d, "rev") == 0) {
+        *out = SWARP_DEPTH_REVERSED_ZERO_TO_ONE;
+        return 1;
+    }
+    cli_fail(a, "--depth", "expects gl ([-1, 1]), zo ([0, 1]) or rev (reversed-Z: near 1, far 0), got '%s'", d);
     return 0;
 }
 
@@ -451,6 +459,132 @@ int cli_camera(const sw_args* a, int required_eye_dir, swarp_camera* cam) {
         return 0;
     }
     return 1;
+}
+
+/* ---- a camera given as engine matrices, an infinite far plane ---------- */
+
+static int cli_convention(const sw_args* a, swarp_matrix_convention* out) {
+    static const struct {
+        const char* name;
+        swarp_matrix_convention c;
+    } names[] = {{"rh", SWARP_MATRIX_RH}, {"lh", SWARP_MATRIX_LH}, {"rh-t", SWARP_MATRIX_RH_TRANSPOSED},
+                 {"lh-t", SWARP_MATRIX_LH_TRANSPOSED}};
+    const char* s = cli_opt(a, "proj-convention");
+    if (!s) {
+        *out = SWARP_MATRIX_RH;
+        return 1;
+    }
+    for (size_t i = 0; i < sizeof names / sizeof names[0]; ++i)
+        if (strcmp(s, names[i].name) == 0) {
+            *out = names[i].c;
+            return 1;
+        }
+    cli_fail(a, "--proj-convention", "expects rh, lh, rh-t or lh-t (right-/left-handed, -t: row-major), got '%s'", s);
+    return 0;
+}
+
+/* The camera's own view and an infinite-far OpenGL projection, column-major,
+ * right-handed: x_ndc = sx x/-z, y_ndc = sy y/-z, z_ndc = 1 - 2 n/-z
+ * (A = -1: the far end reached only at infinity). */
+static void cli_infinite_matrices(const swarp_camera* cam, swarp_mat4* V, swarp_mat4* P) {
+    swarp_vec3 f = cam->dir, u = cam->up;
+    double lf = sqrt(f.x * f.x + f.y * f.y + f.z * f.z);
+    f = (swarp_vec3){f.x / lf, f.y / lf, f.z / lf};
+    swarp_vec3 s = {f.y * u.z - f.z * u.y, f.z * u.x - f.x * u.z, f.x * u.y - f.y * u.x};
+    double ls = sqrt(s.x * s.x + s.y * s.y + s.z * s.z);
+    s = (swarp_vec3){s.x / ls, s.y / ls, s.z / ls};
+    u = (swarp_vec3){s.y * f.z - s.z * f.y, s.z * f.x - s.x * f.z, s.x * f.y - s.y * f.x};
+    const swarp_vec3 e = cam->eye;
+    memset(V, 0, sizeof *V);
+    memset(P, 0, sizeof *P);
+    const swarp_vec3 rows[3] = {s, u, {-f.x, -f.y, -f.z}};
+    for (int r = 0; r < 3; ++r) {
+        V->m[r] = rows[r].x, V->m[4 + r] = rows[r].y, V->m[8 + r] = rows[r].z;
+        V->m[12 + r] = -(rows[r].x * e.x + rows[r].y * e.y + rows[r].z * e.z);
+    }
+    V->m[15] = 1.0;
+    const double sy = 1.0 / tan(0.5 * cam->fovy);
+    P->m[0] = sy / cam->aspect;
+    P->m[5] = sy;
+    P->m[10] = -1.0;
+    P->m[11] = -1.0;
+    P->m[14] = -2.0 * cam->z_near;
+}
+
+static int cli_view_proj(const sw_args* a, const swarp_aabb* box, swarp_camera* cam, sw_camera_source* src) {
+    static const char* const camera_opts[] = {"eye", "dir", "up", "fovy", "aspect", "near", "far"};
+    for (size_t i = 0; i < sizeof camera_opts / sizeof camera_opts[0]; ++i)
+        if (cli_opt(a, camera_opts[i])) {
+            char opt[32];
+            snprintf(opt, sizeof opt, "--%s", camera_opts[i]);
+            return cli_fail(a, opt, "the camera is given by --view and --proj: drop --%s", camera_opts[i]);
+        }
+    if (!cli_opt(a, "view") || !cli_opt(a, "proj"))
+        return cli_fail(a, cli_opt(a, "view") ? "--proj" : "--view", "an engine camera needs both --view and --proj");
+    swarp_mat4 V, P;
+    swarp_matrix_convention conv;
+    swarp_depth_range dr = SWARP_DEPTH_NEG_ONE_TO_ONE;
+    const char* d = cli_opt(a, "proj-depth");
+    if (d && strcmp(d, "zo") == 0) dr = SWARP_DEPTH_ZERO_TO_ONE;
+    else if (d && strcmp(d, "gl") != 0)
+        return cli_fail(a, "--proj-depth", "expects gl ([-1, 1]) or zo ([0, 1]; forward or reversed), got '%s'", d);
+    if (!cli_list(a, "view", 16, "world -> view matrix", V.m) || !cli_list(a, "proj", 16, "projection matrix", P.m) ||
+        !cli_convention(a, &conv))
+        return CLI_EXIT_USAGE;
+    src->from_matrices = 1;
+    src->status = swarp_camera_from_matrices(&V, &P, conv, dr, box, cam, &src->info);
+    if (swarp_status_is_error(src->status)) return cli_report_status(a, src->status, "swarp_camera_from_matrices");
+    src->far_from_box = src->info.infinite_far != 0;
+    return CLI_GO;
+}
+
+int cli_engine_camera(const sw_args* a, const swarp_aabb* box, swarp_camera* cam, sw_camera_source* src) {
+    memset(src, 0, sizeof *src);
+    if (cli_opt(a, "view") || cli_opt(a, "proj")) return cli_view_proj(a, box, cam, src);
+    if (cli_opt(a, "proj-convention") || cli_opt(a, "proj-depth")) {
+        const char* o = cli_opt(a, "proj-convention") ? "--proj-convention" : "--proj-depth";
+        return cli_fail(a, o, "describes --view and --proj, which are not given");
+    }
+    if (!(isinf(cam->z_far) && cam->z_far > 0)) return CLI_GO;
+    /* --far inf: the library's bound for an infinite engine far plane, the
+     * largest view depth of the scene box (swarp_camera_from_matrices, [RHS]
+     * §3.3.1), from the camera's own matrices; eye, dir, up, fovy, aspect
+     * and near stay the values given */
+    swarp_mat4 V, P;
+    swarp_camera bounded;
+    cli_infinite_matrices(cam, &V, &P);
+    src->status = swarp_camera_from_matrices(&V, &P, SWARP_MATRIX_RH, SWARP_DEPTH_NEG_ONE_TO_ONE, box, &bounded,
+                                             &src->info);
+    if (swarp_status_is_error(src->status)) return cli_report_status(a, src->status, "swarp_camera_from_matrices");
+    cam->z_far = bounded.z_far;
+    src->far_from_box = 1;
+    return CLI_GO;
+}
+
+void json_kv_camera(const swarp_camera* cam, const sw_camera_source* src) {
+    json_kv_str("camera_from", src->from_matrices ? "matrices" : "options");
+    json_kv_str("camera_far_from", src->far_from_box ? "scene_box" : (src->from_matrices ? "matrices" : "far"));
+    json_kv_num("camera_near", cam->z_near);
+    json_kv_num("camera_far", cam->z_far);
+    if (src->from_matrices) {
+        const double e[3] = {cam->eye.x, cam->eye.y, cam->eye.z}, d[3] = {cam->dir.x, cam->dir.y, cam->dir.z},
+                     u[3] = {cam->up.x, cam->up.y, cam->up.z};
+        json_kv_arr("camera_eye", e, 3);
+        json_kv_arr("camera_dir", d, 3);
+        json_kv_arr("camera_up", u, 3);
+        json_kv_num("camera_fovy_deg", cam->fovy / SW_DEG);
+        json_kv_num("camera_aspect", cam->aspect);
+        json_kv_num("camera_reversed_z", src->info.reversed_z);
+    }
+}
+
+void cli_print_camera(const swarp_camera* cam, const sw_camera_source* src) {
+    if (src->from_matrices)
+        printf("camera      from --view/--proj: eye %.9g,%.9g,%.9g dir %.9g,%.9g,%.9g fovy %.6g deg aspect %.6g%s\n",
+               cam->eye.x, cam->eye.y, cam->eye.z, cam->dir.x, cam->dir.y, cam->dir.z, cam->fovy / SW_DEG,
+               cam->aspect, src->info.reversed_z ? ", reversed-Z" : "");
+    printf("camera far  %.9g (%s)\n", cam->z_far,
+           src->far_from_box ? "infinite far plane, bounded by the scene box" : "given");
 }
 
 int cli_light(const sw_args* a, int required, swarp_light* light) {
@@ -600,16 +734,16 @@ static const sw_blame cli_blames[] = {
     {SWARP_ERR_DEGENERATE, "dir up eye light-dir light-pos box plane matrix"},
     {SWARP_ERR_SPLIT_COUNT, "splits"},
     {SWARP_ERR_NOT_INCREASING, "near far splits scheme"},
-    {SWARP_ERR_SINGULAR, "matrix dir up light-dir light-pos"},
-    {SWARP_ERR_BODY_EMPTY, "box eye dir near far"},
+    {SWARP_ERR_SINGULAR, "matrix dir up light-dir light-pos view proj"},
+    {SWARP_ERR_BODY_EMPTY, "box eye dir near far view proj"},
     {SWARP_ERR_BOX_INVERTED, "box"},
     {SWARP_ERR_BOX_DEGENERATE, "box"},
     {SWARP_ERR_LIGHT_INSIDE_BODY, "light-pos box"},
     {SWARP_ERR_FOLLOW_FRAME, "prev-view prev-proj prev-range prev-dir"},
-    {SWARP_ERR_CAMERA_NOT_PERSPECTIVE, "fovy aspect near far"},
-    {SWARP_ERR_CAMERA_MIRRORED, "dir up"},
-    {SWARP_ERR_CAMERA_VIEW_NOT_RIGID, "dir up"},
-    {SWARP_ERR_CAMERA_FAR_UNBOUNDED, "far"},
+    {SWARP_ERR_CAMERA_NOT_PERSPECTIVE, "fovy aspect near far proj proj-convention"},
+    {SWARP_ERR_CAMERA_MIRRORED, "dir up view proj proj-convention"},
+    {SWARP_ERR_CAMERA_VIEW_NOT_RIGID, "dir up view proj-convention"},
+    {SWARP_ERR_CAMERA_FAR_UNBOUNDED, "far proj box"},
     {SWARP_ERR_ATLAS_SPLITS, "splits"},
     {SWARP_ERR_STABILIZE_WARPED, "stabilize warp technique"},
     {SWARP_ERR_STABILIZE_LIGHT, "stabilize light-pos"},

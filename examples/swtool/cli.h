@@ -92,6 +92,22 @@ int cli_depth(const sw_args* a, swarp_depth_range* out);
  * over the defaults in *cam (fovy in radians there); --eye and --dir are
  * required when required_eye_dir. */
 int cli_camera(const sw_args* a, int required_eye_dir, swarp_camera* cam);
+/* How the camera came about (for the output). */
+typedef struct sw_camera_source {
+    int from_matrices;           /* --view/--proj: swarp_camera_from_matrices */
+    int far_from_box;            /* the far plane was infinite: z_far bounded by --box */
+    swarp_status status;         /* swarp_camera_from_matrices' (SWARP_OK if not called) */
+    swarp_camera_from_info info; /* what it recognised */
+} sw_camera_source;
+/* After cli_camera and cli_box: an engine camera (--view, --proj,
+ * --proj-convention, --proj-depth) through swarp_camera_from_matrices, or
+ * --far inf bounded by the scene box the way that function bounds an
+ * infinite engine far plane.  Returns CLI_GO, or the exit status after
+ * reporting a mistake (2) or the library's error (1). */
+int cli_engine_camera(const sw_args* a, const swarp_aabb* box, swarp_camera* cam, sw_camera_source* src);
+/* The camera keys of the JSON object / the text lines. */
+void json_kv_camera(const swarp_camera* cam, const sw_camera_source* src);
+void cli_print_camera(const swarp_camera* cam, const sw_camera_source* src);
 /* Exactly one of --light-dir and --light-pos (required = 0: at most one;
  * *light is left as given when neither is). */
 int cli_light(const sw_args* a, int required, swarp_light* light);

@@ -41,6 +41,10 @@ static int parse_scheme(const char* s, swarp_split_options* o) {
         o->scheme = SWARP_SCHEME_LOG;
         return 1;
     }
+    if (strcmp(s, "measured") == 0) { /* scene mode: the splits by measurement */
+        o->scheme = SWARP_SCHEME_MEASURED;
+        return 1;
+    }
     if (strcmp(s, "practical") == 0 || strcmp(s, "pssm") == 0) {
         o->scheme = SWARP_SCHEME_PRACTICAL;
         o->lambda = 0.5;
@@ -174,11 +178,11 @@ static const char* const cascade_model_known[] = {"near", "far", "fovy", "screen
 static const char* const cascade_scene_known[] = {
     "eye", "dir", "up", "fovy", "aspect", "near", "far", "light-dir", "light-pos", "box", "map", "screen",
     "technique", "depth", "splits", "scheme", "stabilize", "origin", "kernel", "curve", "samples",
-    "min-depth", "warp-per-split", NULL};
+    "min-depth", "warp-per-split", "view", "proj", "proj-convention", "proj-depth", NULL};
 
 static int cascade_scheme(const sw_args* a, swarp_split_options* so) {
     if (parse_scheme(cli_opt(a, "scheme"), so)) return 1;
-    cli_fail(a, "--scheme", "expects uniform|log|practical[:L]|pseudo:NP,FP[,L], got '%s'", cli_opt(a, "scheme"));
+    cli_fail(a, "--scheme", "expects uniform|log|measured|practical[:L]|pseudo:NP,FP[,L], got '%s'", cli_opt(a, "scheme"));
     return 0;
 }
 
@@ -335,12 +339,15 @@ static int cascade_scene(sw_args* a) {
     swarp_aabb box;
     double kernel;
     unsigned map, sw, sh, K, samples;
-    if (!cli_camera(a, 1, &cam) || !cli_light(a, 1, &light) || !cli_box(a, 1, &box) ||
+    if (!cli_camera(a, !cli_opt(a, "view"), &cam) || !cli_light(a, 1, &light) || !cli_box(a, 1, &box) ||
         !cli_map_square(a, 1024, &map) || !cli_size(a, "screen", 1920, 1080, &sw, &sh) ||
         !cli_uint(a, "splits", 4, &K) || !cli_double(a, "kernel", 1.0, &kernel) ||
         !cli_uint(a, "samples", 64, &samples) || !cli_vec3(a, "origin", 0, &o.stabilize.origin) ||
         !cli_double(a, "min-depth", 0.0, &o.setup.min_depth) || !cli_depth(a, &o.setup.depth_range))
         return CLI_EXIT_USAGE;
+    sw_camera_source src;
+    int rc = cli_engine_camera(a, &box, &cam, &src);
+    if (rc != CLI_GO) return rc;
     o.setup.map_width = o.setup.map_height = map;
     o.setup.screen_width = sw;
     o.setup.screen_height = sh;
@@ -410,6 +417,7 @@ static int cascade_scene(sw_args* a) {
         json_kv_measured(&r.measured);
         json_kv_num("atlas_res", r.atlas.atlas_res);
         json_kv_num("l_sc", r.atlas.l_sc);
+        json_kv_camera(&cam, &src);
         json_key("split");
         json_open_arr();
         for (size_t i = 0; i < n; ++i) {
@@ -448,6 +456,7 @@ static int cascade_scene(sw_args* a) {
         return cli_report_status(a, st, "swarp_cascade_setup");
     }
     printf("status      %s\n", swarp_status_name(st));
+    cli_print_camera(&cam, &src);
     printf("view range  [%.9g, %.9g] (adjusted, [RHS] 3.3.1), %zu splits\n", r.view_near, r.view_far, n);
     printf("atlas       %gx%g texels, l_sc %g\n", r.atlas.atlas_res, r.atlas.atlas_res, r.atlas.l_sc);
     printf("whole       model max m_x %.6g, max m_z %.6g (Lloyd, overhead light on the view axis)\n", r.max_mx,
@@ -475,6 +484,6 @@ static int cascade_scene(sw_args* a) {
  * form; `swtool setup --splits K ...` lands here too. */
 int cmd_cascade(sw_args* a) {
     if (a->help) return cli_usage(a, cascade_model_known, cascade_scene_known);
-    if (cli_opt(a, "eye")) return cascade_scene(a);
+    if (cli_opt(a, "eye") || cli_opt(a, "view") || cli_opt(a, "proj")) return cascade_scene(a);
     return cascade_model(a);
 }

@@ -75,7 +75,7 @@ static int setup_previous(const sw_args* a, const swarp_setup_options* o, swarp_
 }
 
 static void setup_print(const sw_args* a, swarp_status s, const swarp_setup_result* r, double median,
-                        unsigned reps, double min_depth) {
+                        unsigned reps, double min_depth, const swarp_camera* cam, const sw_camera_source* src) {
     const char* tech = cli_opt(a, "technique");
     if (a->json) {
         json_begin();
@@ -91,10 +91,12 @@ static void setup_print(const sw_args* a, swarp_status s, const swarp_setup_resu
         json_kv_measured(&r->measured);
         json_kv_num("setup_ns", median);
         json_kv_num("setup_reps", reps);
+        json_kv_camera(cam, src);
         json_end();
         return;
     }
     printf("status      %s\n", swarp_status_name(s));
+    cli_print_camera(cam, src);
     printf("technique   %s\n", tech ? tech : "lispsm");
     printf("n' (eye)    %.9g\n", r->n_eye);
     printf("view range  [%.9g, %.9g] (adjusted, [RHS] 3.3.1%s)\n", r->view_near, r->view_far,
@@ -112,7 +114,8 @@ int cmd_setup(sw_args* a) {
     static const char* const known[] = {"eye",   "dir",    "up",        "fovy",  "aspect", "near",
                                         "far",   "light-dir", "light-pos", "box", "map",    "screen",
                                         "technique", "depth", "reps", "min-depth", "prev-view", "prev-proj",
-                                        "prev-range", "prev-dir", "splits", NULL};
+                                        "prev-range", "prev-dir", "splits", "view", "proj", "proj-convention",
+                                        "proj-depth", NULL};
     /* stage: splits -- `setup --splits K` is the cascade (cmd_cascade.c) */
     if (cli_opt(a, "splits") && !a->help) return cmd_cascade(a);
     CLI_ACCEPT(a, known);
@@ -122,10 +125,13 @@ int cmd_setup(sw_args* a) {
     swarp_aabb box;
     unsigned mw, mh, sw, sh, reps = 0;
     double min_depth = 0.0;
-    if (!cli_camera(a, 1, &cam) || !cli_light(a, 1, &light) || !cli_box(a, 1, &box) ||
+    if (!cli_camera(a, !cli_opt(a, "view"), &cam) || !cli_light(a, 1, &light) || !cli_box(a, 1, &box) ||
         !cli_map(a, 2048, &mw, &mh) || !cli_size(a, "screen", 1920, 1080, &sw, &sh) ||
         !cli_uint(a, "reps", 0, &reps) || !cli_double(a, "min-depth", 0.0, &min_depth))
         return CLI_EXIT_USAGE;
+    sw_camera_source src;
+    int rc = cli_engine_camera(a, &box, &cam, &src);
+    if (rc != CLI_GO) return rc;
     if (cli_opt(a, "reps") && (reps == 0 || reps > SW_SETUP_MAX_REPS))
         return cli_fail(a, "--reps", "expects 1..%u, got '%s'", SW_SETUP_MAX_REPS, cli_opt(a, "reps"));
     swarp_setup_options o;
@@ -161,6 +167,6 @@ int cmd_setup(sw_args* a) {
     free(ns);
     const char* where = pv ? "swarp_setup_follow" : "swarp_setup";
     if (swarp_status_is_error(s)) return cli_report_status(a, s, where);
-    setup_print(a, s, &r, median, k, min_depth);
+    setup_print(a, s, &r, median, k, min_depth, &cam, &src);
     return cli_report_status(a, s, where);
 }

@@ -1,6 +1,7 @@
 /* Texture atlas layouts and the PCF kernel scale per split.
  * [RHS] §3.3.5 (Fig. 3.16) and [RHS] (3.9). */
 #include "common/swarp_internal.h"
+#include "common/depth_range.h"
 
 _Static_assert(sizeof(swarp_atlas_info) == 8 + 3 * sizeof(double) + 16, "swarp_atlas_info size");
 _Static_assert(sizeof(swarp_atlas_tile) == 4 * sizeof(double) + sizeof(swarp_mat4),
@@ -33,9 +34,7 @@ SWARP_API swarp_status swarp_atlas_layout(uint32_t m, uint32_t tile_res, swarp_d
     if (!out_count) return SWARP_ERR_NULL_POINTER;
     if (m < 1 || m > SWARP_ATLAS_MAX_SPLITS) return SWARP_ERR_ATLAS_SPLITS;
     if (tile_res == 0 || tile_res > SW_ATLAS_MAX_TILE_RES) return SWARP_ERR_RESOLUTION;
-    if (depth != SWARP_DEPTH_DEFAULT && depth != SWARP_DEPTH_NEG_ONE_TO_ONE &&
-        depth != SWARP_DEPTH_ZERO_TO_ONE)
-        return SWARP_ERR_UNKNOWN_ENUM;
+    if (!sw_light_depth_range_ok(depth)) return SWARP_ERR_UNKNOWN_ENUM;
     if (capacity < m) {
         *out_count = m;
         return SWARP_ERR_CAPACITY;
@@ -44,8 +43,10 @@ SWARP_API swarp_status swarp_atlas_layout(uint32_t m, uint32_t tile_res, swarp_d
 
     const uint32_t grid = sw_atlas_grid(m);
     const double l_sc = 1.0 / (double)grid;
-    /* window depth d from clip z: d = a z + b w */
-    const int zero_one = (depth == SWARP_DEPTH_ZERO_TO_ONE);
+    /* window depth d from clip z: d = a z + b w.  [0, 1] and reversed-Z pass
+     * z through: a reversed split matrix already has z = w at the light's
+     * near plane and 0 at its far plane, so d = 1 - d_forward there. */
+    const int zero_one = sw_depth_zero_based(depth);
     const double dz_a = zero_one ? 1.0 : 0.5, dz_b = zero_one ? 0.0 : 0.5;
 
     for (uint32_t i = 0; i < m; ++i) {

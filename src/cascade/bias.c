@@ -2,6 +2,7 @@
  * [KOZ] §14.2.3: world-space texel size L_texel and P + L (a + b L_texel);
  * normal offset, slope-scaled and receiver-plane depth bias. */
 #include "cascade/cascade_internal.h"
+#include "common/depth_range.h"
 
 #include <float.h>
 
@@ -22,7 +23,7 @@ _Static_assert(sizeof(swarp_bias_map) == sizeof(swarp_mat4) + 2 * sizeof(double)
 static swarp_status sw_map_check(const swarp_bias_map* map) {
     if (!sw_reserved_zero(map->_reserved, 4) || map->_reserved0 != 0)
         return SWARP_ERR_RESERVED_NONZERO;
-    if (!sw_depth_range_ok(map->depth)) return SWARP_ERR_UNKNOWN_ENUM;
+    if (!sw_light_depth_range_ok(map->depth)) return SWARP_ERR_UNKNOWN_ENUM;
     if (!sw_mat_finite(&map->world_to_clip)) return SWARP_ERR_NON_FINITE;
     if (!sw_finite(map->res_s) || !sw_finite(map->res_t) || !(map->res_s > 0.0) ||
         !(map->res_t > 0.0))
@@ -30,7 +31,16 @@ static swarp_status sw_map_check(const swarp_bias_map* map) {
     return SWARP_OK;
 }
 
-static double sw_window_scale(swarp_depth_range d) { return d == SWARP_DEPTH_ZERO_TO_ONE ? 1.0 : 0.5; }
+/* Window depth per unit of NDC depth: d = (z_ndc + 1)/2 for [-1, 1] and
+ * d = z_ndc for [0, 1] and reversed-Z.  Reversed-Z needs no sign here: its
+ * clip z is already w - z of the forward [0, 1] map (common/depth_range.h),
+ * so every derivative of d below changes sign by itself.  The depth biases
+ * are d(p) - d(p moved toward the light), the amount to SUBTRACT from the
+ * receiver's depth before the compare: > 0 under a LESS test ([-1, 1],
+ * [0, 1]) and < 0 under reversed-Z's GREATER test, where subtracting it
+ * raises the receiver's depth toward the light's (near = 1) side, the
+ * direction that removes acne in either convention. */
+static double sw_window_scale(swarp_depth_range d) { return sw_depth_zero_based(d) ? 1.0 : 0.5; }
 
 static swarp_status sw_light_check(const swarp_light* light) {
     if (!sw_reserved_zero(light->_reserved, 4) || light->_reserved0 != 0)
@@ -282,7 +292,8 @@ SWARP_API swarp_status swarp_bias_depth_per_world(const swarp_bias_map* map, con
     if ((st = sw_project(&map->world_to_clip, *p, &h)) != SWARP_OK) return st;
     double dv[3];
     sw_ndc_derivative(&map->world_to_clip, &h, L, dv);
-    /* moving toward the light lowers the depth: report the decrease */
+    /* moving toward the light lowers a forward depth: report the decrease
+     * (negative under reversed-Z, where the depth rises toward the light) */
     const double f = -sw_window_scale(map->depth) * dv[2];
     if (!sw_finite(f)) return SWARP_ERR_NON_FINITE;
     *out_depth_per_world = f;

@@ -85,7 +85,9 @@ SWARP_API swarp_status swarp_cascade_blend(const double* splits, size_t m, doubl
 static int sw_covers(const swarp_bias_map* map, swarp_vec3 p) {
     swarp_vec4 h = sw_xform_point(&map->world_to_clip, p);
     if (!(h.w > 0.0)) return 0;
-    const double zlo = map->depth == SWARP_DEPTH_ZERO_TO_ONE ? 0.0 : -h.w;
+    /* [0, 1] and reversed-Z both keep clip z in [0, w] */
+    const int zero_based = map->depth == SWARP_DEPTH_ZERO_TO_ONE || map->depth == SWARP_DEPTH_REVERSED_ZERO_TO_ONE;
+    const double zlo = zero_based ? 0.0 : -h.w;
     return fabs(h.x) <= h.w && fabs(h.y) <= h.w && h.z >= zlo && h.z <= h.w;
 }
 
@@ -138,6 +140,7 @@ SWARP_API swarp_status swarp_cascade_splits(double n, double f, const swarp_spli
         o.scheme = SWARP_SCHEME_PRACTICAL;
         o.lambda = SW_DEFAULT_PSSM_LAMBDA;
     }
+    if (o.scheme == SWARP_SCHEME_MEASURED) return SWARP_ERR_INVALID_ARGUMENT; /* needs the scene */
     if (o.scheme != SWARP_SCHEME_UNIFORM && o.scheme != SWARP_SCHEME_LOG &&
         o.scheme != SWARP_SCHEME_PRACTICAL && o.scheme != SWARP_SCHEME_PSEUDO)
         return SWARP_ERR_UNKNOWN_ENUM;
@@ -324,6 +327,9 @@ typedef struct sw_cascade_run {
     swarp_vec3 pts_buf[SWARP_BODY_MAX_POINTS];
     const swarp_vec3* pts;    /* the current split's points of B_i */
     size_t npts;
+    int measured_splits;      /* SWARP_SCHEME_MEASURED: the split positions searched */
+    int search;               /* a candidate of that search: the cheap measurement */
+    int measured_stabilized;  /* MEASURED asked for with stabilisation */
 } sw_cascade_run;
 
 /* The cascade's own options (the setup's are checked with the camera):
@@ -363,6 +369,22 @@ static swarp_status sw_check_cascade_options(const swarp_cascade_options* opts, 
     c->smode = o->stabilize.mode == SWARP_STABILIZE_DEFAULT ? SWARP_STABILIZE_NONE : o->stabilize.mode;
     if (c->smode != SWARP_STABILIZE_NONE && c->smode != SWARP_STABILIZE_SPHERE && c->smode != SWARP_STABILIZE_LEVELS)
         return SWARP_ERR_UNKNOWN_ENUM;
+    /* [RHS] §3.5: stabilised maps need split ranges that do not move with
+     * the view, so DEFAULT is there the fixed practical scheme; searched
+     * positions would move every border each frame */
+    c->search = 0;
+    c->measured_splits = 0;
+    /* MEASURED with stabilisation: SWARP_ERR_INVALID_ARGUMENT after every
+     * other check (sw_cascade_split_range) */
+    c->measured_stabilized = o->split.scheme == SWARP_SCHEME_MEASURED && c->smode != SWARP_STABILIZE_NONE;
+    if ((o->split.scheme == SWARP_SCHEME_DEFAULT || o->split.scheme == SWARP_SCHEME_MEASURED) &&
+        c->smode == SWARP_STABILIZE_NONE && c->K > 1)
+        c->measured_splits = 1;
+    if (o->split.scheme == SWARP_SCHEME_MEASURED) {
+        /* its start and the checks of swarp_cascade_splits: the practical scheme */
+        c->o.split.scheme = SWARP_SCHEME_PRACTICAL;
+        c->o.split.lambda = SW_DEFAULT_PSSM_LAMBDA;
+    }
     return SWARP_OK;
 }
 
@@ -444,6 +466,7 @@ static swarp_status sw_cascade_split_range(sw_cascade_run* c, swarp_cascade_resu
     size_t cnt;
     st = swarp_cascade_splits(n_adj, f_adj, &so, res->splits, SWARP_CASCADE_MAX_SPLITS + 1, &cnt);
     if (swarp_status_is_error(st)) return st;
+    if (c->measured_stabilized) return SWARP_ERR_INVALID_ARGUMENT; /* the ranges must not move with the view */
     res->view_near = n_adj;
     res->view_far = f_adj;
     return SWARP_OK;
@@ -516,7 +539,8 @@ static swarp_status sw_split_body_matrix(sw_cascade_run* c, const swarp_cascade_
         return SWARP_INFO_SPLIT_NO_SCENE;
     }
     if (hp->vertex_count == 0) return SWARP_ERR_SPLIT_EMPTY;
-    st = sw_body_from_h(hp, c->light, c->scene, &c->Bi);
+    int clamped = 0; /* H_i is a clip of the clipper's H: tidy loops */
+    st = sw_body_from_h_clipped(hp, c->light, c->scene, &c->Bi, &clamped);
     if (st == SWARP_ERR_BODY_EMPTY) return SWARP_ERR_SPLIT_EMPTY;
     if (st != SWARP_OK) return st;
     if (c->light->type == SWARP_LIGHT_POINT && c->light->cone_angle > 0.0) {
@@ -529,6 +553,9 @@ static swarp_status sw_split_body_matrix(sw_cascade_run* c, const swarp_cascade_
     st = swarp_setup_points(c->cam, c->light, c->Bi.vertices, c->Bi.vertex_count, hp->vertices, hp->vertex_count,
                             s->z_near, s->z_far, so, &c->sr);
     if (swarp_status_is_error(st)) return st;
+    /* casters past SW_SWEEP_REL_MAX times H_i's size are not in B_i: the
+     * depth range holds them only through the renderer's clamp */
+    if (clamped) st = SWARP_INFO_CASTERS_CLAMPED;
     c->pts = c->Bi.vertices;
     c->npts = c->Bi.vertex_count;
     return st;
@@ -609,6 +636,29 @@ static swarp_status sw_split_report(const sw_cascade_run* c, swarp_cascade_split
     return SWARP_OK;
 }
 
+/* The search's estimate of a split's measured error: swarp_measure_max on
+ * the vertices of H_i and a 2 x 2 lattice at 2 depths with four refinement
+ * steps (SW_SEARCH_*), a fraction of the default sampling.  The
+ * maximum of these projective maps' error over the convex H_i lies at or
+ * near a vertex (swarp_measure_max), so the vertices carry most of it;
+ * the chosen positions are measured with the full sampling afterwards. */
+#define SW_SEARCH_GRID 2u
+#define SW_SEARCH_DEPTHS 2u
+#define SW_SEARCH_REFINE 4u
+static void sw_split_measure_cheap(const sw_cascade_run* c, swarp_cascade_split* s, const swarp_mat4* m) {
+    swarp_measure_res mr;
+    mr.screen_width = c->o.setup.screen_width ? c->o.setup.screen_width : SW_DEFAULT_SCREEN_W;
+    mr.screen_height = c->o.setup.screen_height ? c->o.setup.screen_height : SW_DEFAULT_SCREEN_H;
+    mr.map_width = mr.map_height = c->tile_res;
+    swarp_measure_options mo;
+    memset(&mo, 0, sizeof mo);
+    mo.grid = SW_SEARCH_GRID, mo.depths = SW_SEARCH_DEPTHS, mo.refine = SW_SEARCH_REFINE;
+    memset(&s->measured, 0, sizeof s->measured);
+    if (swarp_status_is_error(swarp_measure_max(c->cam, s->z_near, s->z_far, c->light, c->scene, m, &mr, &mo,
+                                                &s->measured)))
+        s->measured.max_sigma = INFINITY; /* counted as a singular split */
+}
+
 /* The measured error of split i's final matrix over its frustum ∩ S; the
  * stabilised matrix takes p - origin, so it is measured as matrix ·
  * T(-origin).  The unstabilised single map is swarp_setup's, measured there. */
@@ -625,6 +675,10 @@ static void sw_split_measure(const sw_cascade_run* c, swarp_cascade_split* s) {
         sw_set(&t, 1, 3, -c->o.stabilize.origin.y);
         sw_set(&t, 2, 3, -c->o.stabilize.origin.z);
         sw_mul(&s->matrix, &t, &m);
+    }
+    if (c->search) {
+        sw_split_measure_cheap(c, s, &m);
+        return;
     }
     sw_measure_setup(c->cam, s->z_near, s->z_far, c->light, c->scene, &m, &c->o.setup, &s->measured);
 }
@@ -679,6 +733,104 @@ static swarp_status sw_cascade_splits_compute(sw_cascade_run* c, swarp_status si
     return SWARP_OK;
 }
 
+/* ---- split positions by measurement --------------------------------------
+ * SWARP_SCHEME_MEASURED: the practical scheme's λ ([RHS] (3.8)) that
+ * minimises the worst split's measured σ, by golden-section search on
+ * [0, 1] (SW_SPLIT_SEARCH_STEPS evaluations; the worst split's σ falls
+ * with λ where the near split is too long and rises where the far ones
+ * are, so it has one minimum in the cases this is meant for), plus the
+ * two λ engines use, 0.5 (PSSM) and 0.95 (OGRE's PSSM default), and the
+ * end λ = 1 (the log scheme (3.7), where the minimum often lies: the
+ * section search only reaches within 0.618^5 of an end), so the choice is
+ * never worse than any of these under the search's estimate.  Each
+ * evaluation is the cascade's own matrices with the cheap measurement of
+ * sw_split_measure_cheap; the chosen λ's cascade is then computed and
+ * measured as every cascade is.  Deterministic: a fixed sequence of λ. */
+#define SW_SPLIT_SEARCH_STEPS 6
+#define SW_SPLIT_LAMBDA_OGRE 0.95
+/* Two candidates whose estimates differ by less than this fraction are a
+ * tie, decided by their order: a cascade's measured σ carries the rounding
+ * of the matrices and of the compass search's path (far below 1e-9 in
+ * round-to-nearest, but a directed rounding mode can move a search step),
+ * and a choice decided by that rounding would make the splits depend on
+ * the caller's rounding mode.  1e-6 is far above that and far below any
+ * gain worth a different split. */
+#define SW_SPLIT_TIE_REL 1e-6
+
+/* A candidate's estimate: how many splits the cheap sampling finds
+ * singular (σ = +inf at some sample: a texel-singular point, which a
+ * directed rounding mode can produce on H_i's boundary where the full
+ * sampling stays finite) and the worst finite split σ.  Fewer singular
+ * splits win, then the smaller worst σ. */
+typedef struct sw_split_score {
+    uint32_t singular;
+    double worst;
+} sw_split_score;
+
+/* a clearly better than b (not a tie) */
+static int sw_split_better(sw_split_score a, sw_split_score b) {
+    if (a.singular != b.singular) return a.singular < b.singular;
+    return a.worst < b.worst * (1.0 - SW_SPLIT_TIE_REL);
+}
+
+/* the estimate of the practical scheme with lambda on [view_near,
+ * view_far]; every split singular when a split cannot be set up */
+static sw_split_score sw_split_candidate(sw_cascade_run* c, const swarp_atlas_tile* tiles,
+                                         const swarp_cascade_result* res, double lambda) {
+    sw_split_score sc = {SWARP_CASCADE_MAX_SPLITS + 1, INFINITY};
+    swarp_cascade_result r = *res;
+    swarp_cascade_split sp[SWARP_CASCADE_MAX_SPLITS];
+    memset(sp, 0, c->K * sizeof sp[0]);
+    size_t cnt;
+    if (swarp_split_practical(res->view_near, res->view_far, lambda, c->K, r.splits, SWARP_CASCADE_MAX_SPLITS + 1,
+                              &cnt) != SWARP_OK)
+        return sc;
+    memset(&r.measured, 0, sizeof r.measured);
+    swarp_status info = SWARP_OK;
+    c->search = 1;
+    swarp_status st = sw_cascade_splits_compute(c, SWARP_OK, tiles, &r, sp, &info);
+    c->search = 0;
+    if (st != SWARP_OK) return sc;
+    sc.singular = 0;
+    sc.worst = 0.0;
+    for (uint32_t i = 0; i < c->K; ++i) {
+        const double w = sp[i].measured.max_sigma;
+        if (w < INFINITY) sc.worst = fmax(sc.worst, w);
+        else sc.singular++;
+    }
+    return sc;
+}
+
+/* res->splits of the λ the search chooses (res->splits on entry: λ = 0.5) */
+static void sw_split_place_measured(sw_cascade_run* c, const swarp_atlas_tile* tiles, swarp_cascade_result* res) {
+    const double phi = 0.5 * (sqrt(5.0) - 1.0); /* golden section */
+    double best_l = SW_DEFAULT_PSSM_LAMBDA;
+    sw_split_score best = sw_split_candidate(c, tiles, res, best_l);
+    sw_split_score e = sw_split_candidate(c, tiles, res, SW_SPLIT_LAMBDA_OGRE);
+    if (sw_split_better(e, best)) best = e, best_l = SW_SPLIT_LAMBDA_OGRE;
+    e = sw_split_candidate(c, tiles, res, 1.0); /* the log scheme (3.7): the bracket's end */
+    if (sw_split_better(e, best)) best = e, best_l = 1.0;
+    double a = 0.0, b = 1.0, x1 = b - phi * (b - a), x2 = a + phi * (b - a);
+    sw_split_score f1 = sw_split_candidate(c, tiles, res, x1), f2 = sw_split_candidate(c, tiles, res, x2);
+    for (int k = 2; k < SW_SPLIT_SEARCH_STEPS; ++k) {
+        if (!sw_split_better(f2, f1)) {
+            b = x2, x2 = x1, f2 = f1, x1 = b - phi * (b - a);
+            f1 = sw_split_candidate(c, tiles, res, x1);
+        } else {
+            a = x1, x1 = x2, f1 = f2, x2 = a + phi * (b - a);
+            f2 = sw_split_candidate(c, tiles, res, x2);
+        }
+    }
+    if (sw_split_better(f1, best)) best = f1, best_l = x1;
+    if (sw_split_better(f2, best)) best = f2, best_l = x2;
+    if (best.singular > SWARP_CASCADE_MAX_SPLITS) return; /* nothing could be set up: keep λ = 0.5 */
+    size_t cnt;
+    double tmp[SWARP_CASCADE_MAX_SPLITS + 1];
+    if (swarp_split_practical(res->view_near, res->view_far, best_l, c->K, tmp, SWARP_CASCADE_MAX_SPLITS + 1, &cnt) ==
+        SWARP_OK)
+        memcpy(res->splits, tmp, cnt * sizeof tmp[0]);
+}
+
 SWARP_API swarp_status swarp_cascade_setup(const swarp_camera* cam, const swarp_light* light,
                                            const swarp_aabb* scene,
                                            const swarp_cascade_options* opts,
@@ -713,6 +865,7 @@ SWARP_API swarp_status swarp_cascade_setup(const swarp_camera* cam, const swarp_
     swarp_status single_st = SWARP_OK, info = SWARP_OK;
     st = c.single ? sw_cascade_single_range(&c, &res, &single_st) : sw_cascade_split_range(&c, &res);
     if (st != SWARP_OK) return st;
+    if (c.measured_splits && !c.single) sw_split_place_measured(&c, tiles, &res);
     if ((st = sw_cascade_splits_compute(&c, single_st, tiles, &res, sp, &info)) != SWARP_OK) return st;
     memcpy(out_splits, sp, c.K * sizeof *sp);
     *out = res;

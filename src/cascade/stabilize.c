@@ -245,19 +245,44 @@ static swarp_status sw_stabilize_body_map(const swarp_vec3* body_points, size_t 
     return SWARP_OK;
 }
 
+/* How far toward the light the depth interval reaches, relative to the
+ * map's own size (its width, height and the body's depth extent): the
+ * bound swarp_setup puts on B's sweep (SW_SWEEP_REL_MAX in
+ * src/geometry/body.c), for the same reason.  A window 1e10 times the
+ * receivers' size leaves them about 1e-6 of their size in double depth
+ * (eps times 1e10) and nothing in a float32 buffer; an "unbounded" box
+ * face (1e19, FLT_MAX, DBL_MAX) would make it 1e28..inf.  Casters beyond
+ * are left out of the window (SWARP_INFO_CASTERS_CLAMPED): a renderer
+ * with depth clamping draws them at the near plane, where they still
+ * shadow every receiver behind them, as with pancaking. */
+#define SW_STAB_CASTER_REL_MAX 1e10
+
 /* The depth interval: extended toward the light to the scene box (casters
- * in front of the split), and opened when the body is flat across the
- * light; *dt = t_max - t_min and *t_sum = t_max + t_min. */
+ * in front of the split) up to SW_STAB_CASTER_REL_MAX times the map's size
+ * (*clamped when a corner lies beyond, or its t overflows), and opened when
+ * the body is flat across the light; *dt = t_max - t_min and *t_sum =
+ * t_max + t_min. */
 static void sw_stabilize_depth(const swarp_aabb* scene, swarp_vec3 O, double texel, sw_stab_map* s,
-                               double* dt_out, double* t_sum_out) {
-    if (scene)
+                               double* dt_out, double* t_sum_out, int* clamped) {
+    *clamped = 0;
+    if (scene) {
+        /* the size by the map's extents: the body's depth extent can be 0
+         * (flat across the light), the width never is (hx, hy > 0) */
+        const double size = fmax(2.0 * fmax(s->hx, s->hy), s->t_max - s->t_min);
+        const double t_lo = s->t_max - SW_STAB_CASTER_REL_MAX * size;
         for (int k = 0; k < 8; ++k) {
             const swarp_vec3 q = sw_v3(k & 1 ? scene->max.x : scene->min.x,
                                        k & 2 ? scene->max.y : scene->min.y,
                                        k & 4 ? scene->max.z : scene->min.z);
             const double t = sw_dot(sw_sub(q, O), s->d);
-            if (t < s->t_min) s->t_min = t;
+            if (!(t >= t_lo)) { /* beyond the bound, or -inf / NaN from overflow */
+                *clamped = 1;
+                s->t_min = fmin(s->t_min, t_lo);
+            } else if (t < s->t_min) {
+                s->t_min = t;
+            }
         }
+    }
     double dt = s->t_max - s->t_min, t_sum = s->t_max + s->t_min;
     if (!(s->t_max > s->t_min)) {
         /* A body flat across the light: give depth one texel either side,
@@ -354,7 +379,10 @@ SWARP_API swarp_status swarp_stabilize_directional(const swarp_camera* cam, doub
     rep.offset_x = s.cx;
     rep.offset_y = s.cy;
     double dt, t_sum;
-    sw_stabilize_depth(scene, o.origin, rep.texel_size_x, &s, &dt, &t_sum);
+    int clamped = 0;
+    sw_stabilize_depth(scene, o.origin, rep.texel_size_x, &s, &dt, &t_sum, &clamped);
+    /* the bound on the coverage outranks the level report */
+    if (clamped) info = SWARP_INFO_CASTERS_CLAMPED;
     swarp_mat4 m;
     sw_stabilize_matrix(&s, dt, t_sum, o.depth, &m);
     /* every input was checked finite above: a non-finite matrix or texel size

@@ -449,11 +449,53 @@ static int sw_frustum_is_wide(const swarp_camera* cam) {
     return ty > SW_WIDE_TAN || ty * cam->aspect > SW_WIDE_TAN;
 }
 
-/* H = S clipped by the 6 planes of V: coordinates of the box's size. */
-static swarp_status sw_body_h_wide(const swarp_camera* cam, double near, double far, const swarp_aabb* box,
+/* How far the box that bounds V is opened beyond V's corners, relative to
+ * their magnitude: 1e7 times the corners' rounding (a few eps), so the
+ * rounding of the corners never cuts a sliver of V that its planes keep,
+ * and still far below the map's resolution. */
+#define SW_WIDE_BOUND_MARGIN_REL 1e-9
+
+/* S ∩ (the bounding box of V's corners): the same V ∩ S (V lies in its
+ * corners' box), but at V's scale when S is far larger (a face at 1e19 or
+ * DBL_MAX, an "unbounded" sentinel), where the clipper's tolerance (1e-12
+ * of the polyhedron's scale) would be far larger than V.  *empty: the two
+ * boxes do not meet.  Corners beyond the double range keep S as it is. */
+static void sw_box_within_frustum(const swarp_camera* cam, double near, double far, const swarp_aabb* box,
+                                  swarp_aabb* out, int* empty) {
+    *out = *box;
+    *empty = 0;
+    swarp_polyhedron V;
+    if (sw_poly_from_frustum(cam, near, far, &V) != SWARP_OK) return;
+    double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY}, mag = 0.0;
+    for (uint32_t i = 0; i < V.vertex_count; ++i) {
+        const double c[3] = {V.vertices[i].x, V.vertices[i].y, V.vertices[i].z};
+        for (int k = 0; k < 3; ++k) lo[k] = fmin(lo[k], c[k]), hi[k] = fmax(hi[k], c[k]), mag = fmax(mag, fabs(c[k]));
+    }
+    const double m = SW_WIDE_BOUND_MARGIN_REL * mag;
+    if (!sw_finite(mag + m)) return;
+    double* bl = &out->min.x;
+    double* bh = &out->max.x;
+    for (int k = 0; k < 3; ++k) {
+        bl[k] = fmax(bl[k], lo[k] - m);
+        bh[k] = fmin(bh[k], hi[k] + m);
+        if (!(bl[k] <= bh[k])) *empty = 1;
+    }
+}
+
+/* H = S clipped by the 6 planes of V: coordinates of the box's size, S
+ * first cut to V's bounding box (sw_box_within_frustum). */
+static swarp_status sw_body_h_wide(const swarp_camera* cam, double near, double far, const swarp_aabb* box_in,
                                    swarp_polyhedron* H) {
     swarp_plane pl[6];
     sw_frustum_planes(cam, near, far, pl);
+    swarp_aabb bounded;
+    int empty = 0;
+    sw_box_within_frustum(cam, near, far, box_in, &bounded, &empty);
+    if (empty) {
+        H->vertex_count = 0; /* sw_body_h: SWARP_ERR_BODY_EMPTY, H not published */
+        return SWARP_OK;
+    }
+    const swarp_aabb* box = &bounded;
     swarp_status s = swarp_poly_from_aabb(box, H);
     if (s != SWARP_OK) return s;
     for (int k = 0; k < 6 && H->vertex_count > 0; ++k) {
@@ -568,10 +610,13 @@ static swarp_status sw_body_from_h_ex(const swarp_polyhedron* H, const swarp_lig
  * SW_SWEEP_DIAG_REL times H's size; a longer one would put the swept copies
  * at the scale of S's far faces (1e19 or DBL_MAX for an "unbounded" box),
  * where the clipper's tolerance (SWARP_POLY_EPS_REL of the polyhedron's
- * scale) is larger than H itself.  Then, for H inside S, the exit bound:
- * a point p of H leaves S along u by t(p) = min_k (bound_k - p_k) / u_k
- * (bound_k: the face u points at on axis k) and t(p) <= (bound_k - h_k) /
- * |u_k| for h_k H's extreme coordinate away from that face, on each axis;
+ * scale) is larger than H itself.  Then the exit bound: on any axis k that
+ * u points along, T_k = (bound_k - h_k) / |u_k| (bound_k: the face u points
+ * at, h_k H's extreme coordinate away from it) takes every point of H past
+ * that face, and since its coordinate k keeps moving away the ray never
+ * re-enters S beyond T_k; this holds for every H, also one a rounding
+ * outside S (H built camera-relative and translated back by the eye, as
+ * the cascades do: its vertices on S's faces land an ulp either side);
  * twice the least of these (with a margin past the face), and at least SW_SWEEP_DIAG_REL times H's size
  * (the copies as far out as the kept 2 diag(S) would put them), capped at
  * SW_SWEEP_REL_MAX times H's size (*clamped). */
@@ -585,15 +630,11 @@ static double sw_sweep_length(const swarp_polyhedron* H, swarp_vec3 u, const swa
     }
     const double uc[3] = {u.x, u.y, u.z}, lo[3] = {box->min.x, box->min.y, box->min.z},
                  hi[3] = {box->max.x, box->max.y, box->max.z};
-    int inside = 1; /* the bound needs H ⊂ S (a caller's H may not be) */
     double ext = 0.0, mag = 0.0;
-    for (int k = 0; k < 3; ++k) {
-        inside &= hlo[k] >= lo[k] && hhi[k] <= hi[k];
-        ext = fmax(ext, hhi[k] - hlo[k]), mag = fmax(mag, fmax(fabs(hlo[k]), fabs(hhi[k])));
-    }
+    for (int k = 0; k < 3; ++k) ext = fmax(ext, hhi[k] - hlo[k]), mag = fmax(mag, fmax(fabs(hlo[k]), fabs(hhi[k])));
     /* a point H (extent 0) keeps the scale of its coordinates */
     const double size = fmax(fmax(ext, SWARP_POLY_EPS_REL * mag), DBL_MIN);
-    if (!inside || diag <= SW_SWEEP_DIAG_REL * size) return diag;
+    if (diag <= SW_SWEEP_DIAG_REL * size) return diag;
     /* past the face by more than the clipper resolves at H's coordinates:
      * an exit through a face u barely points at (|u_k| ~ 1e-9) is not taken
      * for one that the clip would see as still inside S */

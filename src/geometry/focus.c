@@ -93,10 +93,151 @@ static int sw_aligned_up(const swarp_camera* cam, swarp_vec3 a, swarp_vec3* up) 
     return blend;
 }
 
-swarp_status sw_light_view(const swarp_camera* cam, swarp_vec3 origin, swarp_vec3 forward, swarp_mat4* out) {
+/* ---- the map's rotation about the light axis near parallel light ---------
+ * Within the blend zone (sin γ < SWARP_FOCUS_BLEND_SIN) the view direction
+ * gives the light plane no useful axis: perspective aliasing along v_perp
+ * is negligible there (LiSPSM fades to uniform as γ -> 0, [RHS] §3.2.1),
+ * and what is left is how much of the map B's footprint fills.  A uniform
+ * focused map (A_fit of [RHS] (3.1)) spends one texel on (extent_x /
+ * res_s) x (extent_y / res_t) of the light plane: the texel area is the
+ * area of B's bounding rectangle in the light plane over the texel count,
+ * minimal for the minimum-area enclosing rectangle.  That rectangle has one
+ * side on an edge of the convex hull of B's projection (Freeman and
+ * Shapira 1975), found exactly by rotating calipers over the hull. */
+
+/* Points of B projected on the light plane, at most SWARP_BODY_MAX_POINTS. */
+#define SW_HULL_MAX SWARP_BODY_MAX_POINTS
+
+/* z-component of (b - a) x (c - a): > 0 for a left turn a -> b -> c */
+static double sw_turn(const double a[2], const double b[2], const double c[2]) {
+    return (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+}
+
+/* Andrew's monotone chain: the convex hull of p[0..n) counter-clockwise in
+ * h (collinear points dropped); returns its vertex count (< 3: no area).
+ * p is sorted in place (insertion sort: n <= SW_HULL_MAX, and equal keys
+ * keep their order, so the hull is a function of the input alone). */
+static size_t sw_hull_2d(double (*p)[2], size_t n, double (*h)[2]) {
+    for (size_t i = 1; i < n; ++i) {
+        double q0 = p[i][0], q1 = p[i][1];
+        size_t j = i;
+        while (j > 0 && (p[j - 1][0] > q0 || (p[j - 1][0] == q0 && p[j - 1][1] > q1))) {
+            p[j][0] = p[j - 1][0], p[j][1] = p[j - 1][1];
+            --j;
+        }
+        p[j][0] = q0, p[j][1] = q1;
+    }
+    size_t k = 0;
+    for (size_t i = 0; i < n; ++i) { /* lower chain */
+        while (k >= 2 && sw_turn(h[k - 2], h[k - 1], p[i]) <= 0.0) --k;
+        h[k][0] = p[i][0], h[k][1] = p[i][1], ++k;
+    }
+    for (size_t i = n - 1, t = k + 1; i-- > 0;) { /* upper chain */
+        while (k >= t && sw_turn(h[k - 2], h[k - 1], p[i]) <= 0.0) --k;
+        h[k][0] = p[i][0], h[k][1] = p[i][1], ++k;
+    }
+    return k > 1 ? k - 1 : k; /* the last point repeats the first */
+}
+
+/* The unit direction e (in the 2-D frame) of a side of the minimum-area
+ * rectangle enclosing the hull h[0..k): each edge's rectangle from the
+ * extents along the edge and its normal.  O(k^2) for k <= SW_HULL_MAX
+ * vertices (a few thousand products) rather than the O(k) caliper walk:
+ * the same minimum, and no pointer bookkeeping to get wrong at ties. */
+static int sw_min_area_side(double (*h)[2], size_t k, double e_out[2]) {
+    double best = INFINITY;
+    int found = 0;
+    for (size_t i = 0; i < k; ++i) {
+        const size_t j = i + 1 == k ? 0 : i + 1;
+        double ex = h[j][0] - h[i][0], ey = h[j][1] - h[i][1];
+        const double len = hypot(ex, ey);
+        if (!(len > 0.0)) continue;
+        ex /= len, ey /= len;
+        double lo_e = INFINITY, hi_e = -INFINITY, lo_n = INFINITY, hi_n = -INFINITY;
+        for (size_t q = 0; q < k; ++q) {
+            const double de = h[q][0] * ex + h[q][1] * ey, dn = h[q][1] * ex - h[q][0] * ey;
+            lo_e = fmin(lo_e, de), hi_e = fmax(hi_e, de);
+            lo_n = fmin(lo_n, dn), hi_n = fmax(hi_n, dn);
+        }
+        const double area = (hi_e - lo_e) * (hi_n - lo_n);
+        if (area < best) best = area, e_out[0] = ex, e_out[1] = ey, found = 1;
+    }
+    return found && best > 0.0;
+}
+
+/* The up vector of the minimum-area rectangle of B's light-plane footprint.
+ * Its axis is the side (e or e⊥) most nearly along ±v_perp, so that a
+ * warp (LiSPSM warps along +y) keeps the view's depth axis and a footprint
+ * whose best rectangle is the view-aligned one keeps that orientation; its
+ * sign is the one toward a reference ref (v_perp itself
+ * vanishes and reverses at γ = 0): ref = v_perp + w (r_perp + u_perp) with
+ * the blend's w, whose zero lies off both the v-r and the v-u plane, the
+ * planes a light passing the view axis crosses in the usual walks (the sun
+ * ahead as the camera pitches or yaws).  A function of the input alone: the
+ * same B and camera give the same map, but not a continuous one (see
+ * docs/geometry.md; swarp_setup_follow keeps the frame coherent).  Leaves
+ * *up as it is when B projects to fewer than three non-collinear points
+ * (no area to minimise). */
+static int sw_min_area_up(swarp_vec3 a, swarp_vec3 v_perp, swarp_vec3 ref, const swarp_vec3* B, size_t nb,
+                          swarp_vec3* up) {
+    if (!B || nb < 3 || nb > SW_HULL_MAX) return 0;
+    const swarp_vec3 u0 = *up, x0 = sw_cross(a, u0); /* light-plane frame: x0 right, u0 up */
+    double p[SW_HULL_MAX][2], h[SW_HULL_MAX + 1][2];
+    for (size_t i = 0; i < nb; ++i) p[i][0] = sw_dot(B[i], x0), p[i][1] = sw_dot(B[i], u0);
+    /* centred on the first point: the footprint's size, not B's distance
+     * from the origin, sets the rounding of the edge directions */
+    const double c0 = p[0][0], c1 = p[0][1];
+    for (size_t i = 0; i < nb; ++i) p[i][0] -= c0, p[i][1] -= c1;
+    const size_t k = sw_hull_2d(p, nb, h);
+    double e[2];
+    if (k < 3 || !sw_min_area_side(h, k, e)) return 0;
+    /* v_perp in the 2-D frame; the side e⊥ = (-e_1, e_0) */
+    const double v0 = sw_dot(v_perp, x0), v1 = sw_dot(v_perp, u0);
+    double ax0 = e[0], ax1 = e[1];
+    if (fabs(-e[1] * v0 + e[0] * v1) > fabs(e[0] * v0 + e[1] * v1)) ax0 = -e[1], ax1 = e[0];
+    if (ax0 * sw_dot(ref, x0) + ax1 * sw_dot(ref, u0) < 0.0) ax0 = -ax0, ax1 = -ax1;
+    swarp_vec3 u = sw_add(sw_scale(x0, ax0), sw_scale(u0, ax1));
+    swarp_vec3 un;
+    if (!sw_normalize_fast(sw_sub(u, sw_scale(a, sw_dot(u, a))), &un)) return 0;
+    *up = un;
+    return 1;
+}
+
+/* The fraction of the blend zone (in sin γ, at its outer edge) over which
+ * the rectangle's up eases into v_perp: 20 % (sin γ from 0.8 sin 10° to
+ * sin 10°, γ from 7.99° to 10°) keeps most of the zone for the rectangle. */
+#define SW_MIN_AREA_EASE 0.2
+
+/* The light view; with B (nb points), near parallel light its rotation
+ * about the axis is the minimum-area rule above, else the aligned up. */
+swarp_status sw_light_view_body(const swarp_camera* cam, swarp_vec3 origin, swarp_vec3 forward, const swarp_vec3* B,
+                                size_t nb, swarp_mat4* out) {
     swarp_vec3 a = {0, 0, -1}, up = {0, 1, 0};
     if (!sw_normalize_fast(forward, &a)) return SWARP_ERR_ZERO_VECTOR;
     int blend = sw_aligned_up(cam, a, &up);
+    if (blend) {
+        swarp_vec3 v, r, cu;
+        sw_camera_basis(cam, &v, &r, &cu);
+        const swarp_vec3 v_perp = sw_sub(v, sw_scale(a, sw_dot(v, a)));
+        const double t = 1.0 - sw_len_fast(v_perp) / SWARP_FOCUS_BLEND_SIN;
+        /* the sign reference: v_perp + w (r_perp + u_perp), w as the blend's */
+        swarp_vec3 ru = sw_add(r, cu);
+        ru = sw_sub(ru, sw_scale(a, sw_dot(ru, a)));
+        const swarp_vec3 ref = sw_add(v_perp, sw_scale(ru, SWARP_FOCUS_BLEND_WEIGHT * t * t));
+        const int turned = sw_min_area_up(a, v_perp, ref, B, nb, &up);
+        /* toward the zone's edge the rectangle's up turns to v_perp's
+         * (the up outside the zone), so that a light leaving the zone
+         * does not jump: linear in sin γ over the last SW_MIN_AREA_EASE
+         * of the zone, where v_perp is at least 0.8 sin 10° long and
+         * within 45° of the rectangle's up (the side nearest ±v_perp,
+         * signed toward ref ≈ v_perp there), so the sum never vanishes */
+        const double s_g = sw_len_fast(v_perp), e0 = (1.0 - SW_MIN_AREA_EASE) * SWARP_FOCUS_BLEND_SIN;
+        swarp_vec3 va, ue;
+        if (turned && s_g > e0 && sw_normalize_fast(v_perp, &va)) {
+            const double w = (s_g - e0) / (SWARP_FOCUS_BLEND_SIN - e0);
+            if (sw_normalize_fast(sw_add(sw_scale(up, 1.0 - w), sw_scale(va, w)), &ue)) up = ue;
+        }
+    }
     swarp_mat4 m;
     sw_look_at(origin, a, up, &m);
     /* an origin near DBL_MAX: its distance along a row (the translation)
@@ -104,6 +245,10 @@ swarp_status sw_light_view(const swarp_camera* cam, swarp_vec3 origin, swarp_vec
     if (!sw_look_at_finite(&m)) return SWARP_ERR_OVERFLOW;
     *out = m;
     return blend ? SWARP_INFO_LIGHT_PARALLEL : SWARP_OK;
+}
+
+swarp_status sw_light_view(const swarp_camera* cam, swarp_vec3 origin, swarp_vec3 forward, swarp_mat4* out) {
+    return sw_light_view_body(cam, origin, forward, NULL, 0, out);
 }
 
 /* The light view's origin and the direction it looks along, as

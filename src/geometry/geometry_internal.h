@@ -77,6 +77,11 @@ swarp_status sw_light_origin_axis(const swarp_camera* cam, const swarp_light* li
  * *out untouched on error), SWARP_INFO_LIGHT_PARALLEL, SWARP_OK */
 swarp_status sw_light_view(const swarp_camera* cam, swarp_vec3 origin, swarp_vec3 forward,
                            swarp_mat4* out);
+/* sw_light_view whose rotation near parallel light (the blend zone of
+ * SWARP_FOCUS_BLEND_SIN) minimises the area of B's light-plane bounding
+ * rectangle (B: nb points; NULL or nb < 3: the aligned up) */
+swarp_status sw_light_view_body(const swarp_camera* cam, swarp_vec3 origin, swarp_vec3 forward, const swarp_vec3* B,
+                                size_t nb, swarp_mat4* out);
 void sw_look_at(swarp_vec3 origin, swarp_vec3 forward_unit, swarp_vec3 up_unit, swarp_mat4* out);
 /* the look-at's translation is finite (an origin near DBL_MAX can overflow
  * it: SWARP_ERR_OVERFLOW) */

@@ -381,12 +381,18 @@ SWARP_API swarp_status swarp_poly_from_inverse_matrix(const swarp_mat4* inv, swa
                                                       swarp_polyhedron* out) {
     if (!inv || !out) return SWARP_ERR_NULL_POINTER;
     if (!sw_mat_finite(inv)) return SWARP_ERR_NON_FINITE;
-    if (sw_check_depth_range(dr) != SWARP_OK) return SWARP_ERR_UNKNOWN_ENUM;
-    double z0 = (dr == SWARP_DEPTH_ZERO_TO_ONE) ? 0.0 : -1.0;
+    if (sw_check_depth_range(dr) != SWARP_OK && dr != SWARP_DEPTH_REVERSED_ZERO_TO_ONE)
+        return SWARP_ERR_UNKNOWN_ENUM;
+    /* NDC depth of the near (i & 4 = 0) and far corners: reversed-Z has its
+     * near plane at 1 and its far plane at 0, so the same corner numbering
+     * (near face first) holds in every convention */
+    double z_near_ndc = -1.0, z_far_ndc = 1.0;
+    if (dr == SWARP_DEPTH_ZERO_TO_ONE) z_near_ndc = 0.0;
+    if (dr == SWARP_DEPTH_REVERSED_ZERO_TO_ONE) z_near_ndc = 1.0, z_far_ndc = 0.0;
     swarp_vec3 c[8];
     double wsign = 0.0;
     for (int i = 0; i < 8; ++i) {
-        swarp_vec4 h = {(i & 1) ? 1.0 : -1.0, (i & 2) ? 1.0 : -1.0, (i & 4) ? 1.0 : z0, 1.0};
+        swarp_vec4 h = {(i & 1) ? 1.0 : -1.0, (i & 2) ? 1.0 : -1.0, (i & 4) ? z_far_ndc : z_near_ndc, 1.0};
         swarp_vec4 p = sw_xform4(inv, h);
         /* all corners must lie on the same side of w = 0 (a finite frustum) */
         if (i == 0) wsign = p.w > 0.0 ? 1.0 : -1.0;

@@ -418,14 +418,18 @@ static void sw_psm_result(const swarp_camera* cam, const swarp_light* light, swa
  * casters' PPS distance (unbounded toward the eye plane), the general rows
  * by eps/τ, and the map spreads one light ray over the whole map. */
 #define SW_PSM_RAY_TOL 2e-6
-static int sw_psm_projects_along_light(const swarp_mat4* m, const swarp_light* light, const swarp_vec3* H, size_t nh,
-                                       const swarp_vec3* B, size_t nb) {
+/* B's largest extent along an axis */
+static double sw_psm_extent(const swarp_vec3* B, size_t nb) {
     double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
     for (size_t i = 0; i < nb; ++i) {
         const double c[3] = {B[i].x, B[i].y, B[i].z};
         for (int k = 0; k < 3; ++k) lo[k] = fmin(lo[k], c[k]), hi[k] = fmax(hi[k], c[k]);
     }
-    const double ext = fmax(hi[0] - lo[0], fmax(hi[1] - lo[1], hi[2] - lo[2]));
+    return fmax(hi[0] - lo[0], fmax(hi[1] - lo[1], hi[2] - lo[2]));
+}
+static int sw_psm_projects_along_light(const swarp_mat4* m, const swarp_light* light, const swarp_vec3* H, size_t nh,
+                                       const swarp_vec3* B, size_t nb) {
+    const double ext = sw_psm_extent(B, nb);
     swarp_vec3 d = {0, 0, 0};
     if (light->type != SWARP_LIGHT_POINT) sw_normalize_fast(light->direction, &d);
     for (size_t i = 0; i < nh; ++i) {
@@ -434,6 +438,73 @@ static int sw_psm_projects_along_light(const swarp_mat4* m, const swarp_light* l
         swarp_vec4 a = sw_xform_point(m, H[i]), b = sw_xform_point(m, q);
         if (!(a.w != 0.0 && b.w != 0.0)) return 0;
         if (!(fabs(a.x / a.w - b.x / b.w) <= SW_PSM_RAY_TOL && fabs(a.y / a.w - b.y / b.w) <= SW_PSM_RAY_TOL)) return 0;
+    }
+    return 1;
+}
+
+/* The rest of the promise, checked on the map itself: every receiver of H
+ * inside the map and its depth window, and the points of B on the segment
+ * from each receiver toward the light (at SW_PSM_SEG_FRAC of B's extent for
+ * a directional light, of the way for a point light) in front of the light
+ * camera and inside the window (pancaking: in front, at most the window's
+ * far end).  Exact in PPS, these fail in double at extreme frusta (fovy,
+ * aspect or (far - near)/near of 1e-7..1e-4, the light at 1/τ up to 1e7 in
+ * PPS): the rows carry eps/τ of rounding, which moves points past the
+ * window's ends by up to 1e-5 of its width or behind the light camera.
+ * The matrix is evaluated in long double so that the check measures the
+ * map, not the rounding of the check; SW_PSM_COVER_TOL is 1/10 of the
+ * accuracy the fit promises (1e-6 of the map's and window's width,
+ * SW_REL_RESOLVE in setup.c), so a map that passes keeps that promise. */
+#define SW_PSM_COVER_TOL 1e-7
+static const double SW_PSM_SEG_FRAC[] = {1e-6, 1e-3, 0.01, 0.1, 0.25, 0.5, 0.75, 0.99};
+static int sw_psm_eval_ld(const swarp_mat4* m, swarp_vec3 p, long double out[3]) {
+    const double* a = m->m;
+    const long double X = (long double)a[0] * p.x + (long double)a[4] * p.y + (long double)a[8] * p.z + a[12];
+    const long double Y = (long double)a[1] * p.x + (long double)a[5] * p.y + (long double)a[9] * p.z + a[13];
+    const long double Z = (long double)a[2] * p.x + (long double)a[6] * p.y + (long double)a[10] * p.z + a[14];
+    const long double W = (long double)a[3] * p.x + (long double)a[7] * p.y + (long double)a[11] * p.z + a[15];
+    if (!(W > 0)) return 0;
+    out[0] = X / W, out[1] = Y / W, out[2] = Z / W;
+    return 1;
+}
+static int sw_psm_in_poly(const swarp_polyhedron* P, swarp_vec3 p, double slack) {
+    for (uint32_t k = 0; k < P->face_count; ++k) {
+        const swarp_plane* q = &P->planes[k];
+        if (q->a * p.x + q->b * p.y + q->c * p.z + q->d > slack) return 0;
+    }
+    return 1;
+}
+static int sw_psm_covers(const swarp_mat4* m, const swarp_light* light, const swarp_vec3* H, size_t nh,
+                         const swarp_polyhedron* B_poly, double ext, swarp_depth_range dr, int pancake) {
+    const long double lo = dr == SWARP_DEPTH_NEG_ONE_TO_ONE ? -1.0L : 0.0L, hi = 1.0L, w = hi - lo;
+    const long double tol = SW_PSM_COVER_TOL;
+    const int rev = dr == SWARP_DEPTH_REVERSED_ZERO_TO_ONE;
+    const double slack = 4.0 * SWARP_POLY_EPS_REL * (B_poly ? sw_poly_scale(B_poly) : 0.0);
+    swarp_vec3 d = {0, 0, 0};
+    if (light->type != SWARP_LIGHT_POINT) sw_normalize_fast(light->direction, &d);
+    for (size_t i = 0; i < nh; ++i) {
+        long double h[3];
+        if (!sw_psm_eval_ld(m, H[i], h)) return 0;
+        if (!(fabsl(h[0]) <= 1 + tol && fabsl(h[1]) <= 1 + tol)) return 0;
+        if (!(h[2] >= lo - tol * w && h[2] <= hi + tol * w)) return 0;
+        if (!B_poly) continue; /* without B's polyhedron a point of the segment may lie outside S */
+        for (size_t k = 0; k < sizeof SW_PSM_SEG_FRAC / sizeof SW_PSM_SEG_FRAC[0]; ++k) {
+            const double t = SW_PSM_SEG_FRAC[k];
+            const swarp_vec3 q = light->type == SWARP_LIGHT_POINT
+                                     ? sw_add(H[i], sw_scale(sw_sub(light->position, H[i]), t))
+                                     : sw_sub(H[i], sw_scale(d, t * ext));
+            /* only points inside B by more than the clipper's tolerance: one
+             * just outside a B thin along the light may lie past the window
+             * by far more than its width (a flat B, FLAT_EXTENT) */
+            if (!sw_psm_in_poly(B_poly, q, -slack)) continue;
+            long double c[3];
+            if (!sw_psm_eval_ld(m, q, c)) return 0;
+            /* pancaking: casters nearer the light than the window are clamped
+             * to its near end, which reversed depth puts at 1 */
+            const int near_ok = pancake && !rev ? 1 : c[2] >= lo - tol * w;
+            const int far_ok = pancake && rev ? 1 : c[2] <= hi + tol * w;
+            if (!near_ok || !far_ok) return 0;
+        }
     }
     return 1;
 }
@@ -489,5 +560,7 @@ swarp_status sw_psm_setup(const swarp_camera* cam, const swarp_light* light, con
     if (s != SWARP_OK && info == SWARP_OK) info = s;
     sw_psm_result(cam, light, f, &A, &Q, &QM, &Vc, &Pc, near + delta, zp, nz, res);
     if (!sw_psm_projects_along_light(&res->matrix, light, H, nh, B, nb)) return SWARP_ERR_DEGENERATE;
+    if (!sw_psm_covers(&res->matrix, light, H, nh, B_poly, sw_psm_extent(B, nb), dr, o->pancake))
+        return SWARP_ERR_DEGENERATE;
     return info;
 }

@@ -316,7 +316,7 @@ static swarp_status sw_light_space_of(const swarp_camera* cam, const swarp_light
         if (s != SWARP_OK) return s;
     } else {
         s = fw ? sw_follow_light_view(cam, cam->eye, light->direction, fw, &ls->L)
-               : sw_light_view(cam, cam->eye, light->direction, &ls->L);
+               : sw_light_view_body(cam, cam->eye, light->direction, B, nb, &ls->L);
         if (swarp_status_is_error(s)) return s;
         *info = sw_info_merge(*info, s);
     }

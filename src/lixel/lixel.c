@@ -6,6 +6,7 @@
 #include <limits.h>
 
 #include "lixel/lixel_internal.h"
+#include "common/depth_range.h"
 
 _Static_assert(sizeof(swarp_lixel_options) == sizeof(double) + 16, "swarp_lixel_options size");
 _Static_assert(sizeof(swarp_lixel_info) == 5 * sizeof(swarp_vec4) + 8 + sizeof(double) + 16,
@@ -679,9 +680,7 @@ SWARP_API swarp_status swarp_lixel_factor(const swarp_mat4* M_l, uint32_t width,
                                           swarp_mat4* out_GLV, swarp_mat4* out_GLP) {
     if (!M_l || !out_GLV || !out_GLP) return SWARP_ERR_NULL_POINTER;
     if (width == 0 || height == 0) return SWARP_ERR_RESOLUTION;
-    if (depth_range != SWARP_DEPTH_DEFAULT && depth_range != SWARP_DEPTH_NEG_ONE_TO_ONE &&
-        depth_range != SWARP_DEPTH_ZERO_TO_ONE)
-        return SWARP_ERR_UNKNOWN_ENUM;
+    if (!sw_light_depth_range_ok(depth_range)) return SWARP_ERR_UNKNOWN_ENUM;
     if (!sw_finite(plane_depth) || !sw_mat_finite(M_l)) return SWARP_ERR_NON_FINITE;
     if (plane_depth < 0.0 || plane_depth >= 1.0) return SWARP_ERR_OUT_OF_RANGE;
     double f = plane_depth > 0.0 ? plane_depth : 0.5;
@@ -693,6 +692,11 @@ SWARP_API swarp_status swarp_lixel_factor(const swarp_mat4* M_l, uint32_t width,
     if (depth_range == SWARP_DEPTH_ZERO_TO_ONE) {
         alpha = 0.5 * f;
         beta = 0.5 * f;
+    } else if (depth_range == SWARP_DEPTH_REVERSED_ZERO_TO_ONE) {
+        /* the [0, 1] row turned over, z' = w - z'_[0,1] (common/depth_range.h):
+         * p-hat to 1 (the near plane), P to 1 - f */
+        alpha = -0.5 * f;
+        beta = 1.0 - 0.5 * f;
     } else {
         alpha = f;
         beta = f - 1.0;

@@ -133,6 +133,14 @@ int main(int argc, char** argv) {
         long allocs = run(bench_cascade, &c, &med, &p99, &cmed, &cp99);
         printf("| %u | %.2f | %.2f | %.2f | %.2f | %ld |\n", ks[i], med, p99, cmed, cp99, allocs);
     }
+    /* the default cascade: zeroed split options (SWARP_SCHEME_MEASURED, the
+     * search over the practical lambda included), 4 splits */
+    {
+        memset(&c.opt.split, 0, sizeof c.opt.split);
+        double med, p99, cmed, cp99;
+        long allocs = run(bench_cascade, &c, &med, &p99, &cmed, &cp99);
+        printf("| 4, default splits (measured) | %.2f | %.2f | %.2f | %.2f | %ld |\n", med, p99, cmed, cp99, allocs);
+    }
     if (c.failures) {
         printf("\n%ld calls failed\n", c.failures);
         return 1;

@@ -1280,6 +1280,9 @@ START_TEST(cascade_pseudo_planes_first_and_last_only) {
     swarp_cascade_options o;
     memset(&o, 0, sizeof o);
     o.split.count = 4;
+    /* fixed split positions: the per-split warps are compared on the same splits */
+    o.split.scheme = SWARP_SCHEME_PRACTICAL;
+    o.split.lambda = 0.5;
     o.setup.technique = SWARP_TECHNIQUE_LISPSM;
     swarp_cascade_result r0, r1;
     swarp_cascade_split a[4], b[4];
@@ -1298,6 +1301,8 @@ START_TEST(cascade_pseudo_planes_first_and_last_only) {
     /* per-split warp strength */
     memset(&o, 0, sizeof o);
     o.split.count = 4;
+    o.split.scheme = SWARP_SCHEME_PRACTICAL;
+    o.split.lambda = 0.5;
     o.setup.technique = SWARP_TECHNIQUE_LISPSM;
     o.n_user[1] = 37.5;
     o.n_user[2] = INFINITY;

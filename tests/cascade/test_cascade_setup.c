@@ -642,6 +642,125 @@ START_TEST(min_depth_bad_inputs) {
 }
 END_TEST
 
+/* ---- split positions by measurement (SWARP_SCHEME_MEASURED, the default) ----
+ * Independent evaluation: every split's returned matrix measured with
+ * swarp_measure_max at its default sampling over the split's own range;
+ * the worst split of the default cascade is at most that of the practical
+ * scheme with λ = 0.5 and with λ = 0.95 on the same inputs (the two λ
+ * engines use; the search evaluates both).  Defining properties: the
+ * splits run from the adjusted near to far contiguously and strictly
+ * increase, the explicit MEASURED scheme is the default, and the same
+ * input gives the same bytes. */
+static double cascade_worst_measured(const swarp_camera* cam, const swarp_light* l, const swarp_aabb* box,
+                                     const swarp_cascade_options* o, swarp_cascade_result* r, swarp_cascade_split* sp) {
+    size_t n;
+    swarp_status st = swarp_cascade_setup(cam, l, box, o, r, sp, SWARP_CASCADE_MAX_SPLITS, &n);
+    if (st == SWARP_ERR_BODY_EMPTY) return -1.0; /* the view misses the box: nothing to split */
+    ck_assert_msg(!swarp_status_is_error(st), "%s", swarp_status_name(st));
+    swarp_measure_res mr = {1920, 1080, 2048, 2048}; /* the setup options' defaults */
+    double w = 0.0;
+    for (size_t i = 0; i < n; ++i) {
+        swarp_measured_error e;
+        ck_assert(!swarp_status_is_error(
+            swarp_measure_max(cam, sp[i].z_near, sp[i].z_far, l, box, &sp[i].matrix, &mr, NULL, &e)));
+        w = fmax(w, e.max_sigma);
+    }
+    return w;
+}
+
+START_TEST(measured_splits_no_worse_than_practical) {
+    rng_state = 0x21b5;
+    const int N = SW_UNDER_ASAN ? 20 : 120;
+    int gained = 0, tested = 0;
+    for (int c = 0; c < N; ++c) {
+        double yaw = rng_uniform(0, 2 * 3.14159265358979323846), pitch = rng_uniform(-0.5, 0.15);
+        double n = rng_uniform(0.1, 1.0);
+        swarp_camera cam = make_camera(v3(rng_uniform(-50, 50), rng_uniform(1, 30), rng_uniform(-50, 50)),
+                                       v3(cos(pitch) * sin(yaw), sin(pitch), -cos(pitch) * cos(yaw)),
+                                       rng_uniform(40, 90) * 3.14159265358979323846 / 180, 16.0 / 9.0, n,
+                                       n * pow(10, rng_uniform(2, 3.5)));
+        swarp_light light;
+        memset(&light, 0, sizeof light);
+        light.type = SWARP_LIGHT_DIRECTIONAL;
+        light.direction = rand_unit();
+        if (light.direction.y > -0.1) light.direction.y = -0.1 - light.direction.y; /* from above */
+        swarp_aabb box = {{-500, 0, -500}, {500, rng_uniform(5, 100), 500}};
+        swarp_cascade_options o;
+        memset(&o, 0, sizeof o);
+        o.setup.technique = c % 3 == 0 ? SWARP_TECHNIQUE_UNIFORM : SWARP_TECHNIQUE_DEFAULT;
+        o.split.count = c % 4 == 0 ? 3 : 4;
+        swarp_cascade_result rd, r5, r95, again;
+        swarp_cascade_split sd[SWARP_CASCADE_MAX_SPLITS], s5[SWARP_CASCADE_MAX_SPLITS],
+            sa[SWARP_CASCADE_MAX_SPLITS];
+        double wd = cascade_worst_measured(&cam, &light, &box, &o, &rd, sd);
+        if (wd < 0.0) continue;
+        tested++;
+        /* contiguous, strictly increasing, from the adjusted near to the far */
+        ck_assert(rd.splits[0] == rd.view_near && rd.splits[o.split.count] == rd.view_far);
+        for (uint32_t i = 0; i < o.split.count; ++i) {
+            ck_assert(rd.splits[i] < rd.splits[i + 1]);
+            ck_assert(sd[i].z_near == rd.splits[i] && sd[i].z_far == rd.splits[i + 1]);
+        }
+        /* deterministic; MEASURED is what DEFAULT means */
+        swarp_cascade_options om = o;
+        om.split.scheme = SWARP_SCHEME_MEASURED;
+        size_t k;
+        ck_assert(!swarp_status_is_error(swarp_cascade_setup(&cam, &light, &box, &om, &again, sa,
+                                                             SWARP_CASCADE_MAX_SPLITS, &k)));
+        ck_assert(memcmp(&again, &rd, sizeof rd) == 0 && memcmp(sa, sd, k * sizeof sa[0]) == 0);
+        o.split.scheme = SWARP_SCHEME_PRACTICAL;
+        o.split.lambda = 0.5;
+        double w5 = cascade_worst_measured(&cam, &light, &box, &o, &r5, s5);
+        o.split.lambda = 0.95;
+        double w95 = cascade_worst_measured(&cam, &light, &box, &o, &r95, s5);
+        ck_assert_msg(wd <= w5 && wd <= w95, "case %d: default %.6g, lambda 0.5 %.6g, lambda 0.95 %.6g", c, wd, w5,
+                      w95);
+        if (wd < 0.95 * fmin(w5, w95)) gained++;
+    }
+    /* the search does more than pick one of the two */
+    ck_assert_int_gt(tested, N / 2);
+    ck_assert_msg(gained > tested / 10, "only %d of %d cases better than both", gained, tested);
+}
+END_TEST
+
+START_TEST(measured_splits_bad_inputs) {
+    double out[8];
+    size_t cnt = 99;
+    swarp_split_options so;
+    memset(&so, 0, sizeof so);
+    so.scheme = SWARP_SCHEME_MEASURED;
+    /* no scene to measure: a specific status, outputs untouched */
+    out[0] = -7.0;
+    ck_assert_int_eq(swarp_cascade_splits(1, 100, &so, out, 8, &cnt), SWARP_ERR_INVALID_ARGUMENT);
+    ck_assert(out[0] == -7.0 && cnt == 99);
+    /* DEFAULT without a scene stays the practical λ = 0.5 */
+    double ref[8];
+    size_t rc;
+    so.scheme = SWARP_SCHEME_DEFAULT;
+    ck_assert_int_eq(swarp_cascade_splits(1, 100, &so, out, 8, &cnt), SWARP_OK);
+    ck_assert_int_eq(swarp_split_practical(1, 100, 0.5, 4, ref, 8, &rc), SWARP_OK);
+    ck_assert(cnt == rc && memcmp(out, ref, rc * sizeof ref[0]) == 0);
+    /* stabilised: the ranges must not move with the view */
+    swarp_camera cam = make_camera(v3(0, 10, 0), v3(0, -0.3, -1), 1.0, 16.0 / 9.0, 0.5, 200);
+    swarp_light light;
+    memset(&light, 0, sizeof light);
+    light.type = SWARP_LIGHT_DIRECTIONAL;
+    light.direction = v3(0.3, -1, 0.2);
+    swarp_aabb box = {{-100, 0, -100}, {100, 20, 100}};
+    swarp_cascade_options o;
+    memset(&o, 0, sizeof o);
+    o.setup.technique = SWARP_TECHNIQUE_UNIFORM;
+    o.stabilize.mode = SWARP_STABILIZE_SPHERE;
+    o.split.scheme = SWARP_SCHEME_MEASURED;
+    swarp_cascade_result r;
+    swarp_cascade_split sp[4];
+    size_t k = 77;
+    memset(&r, 0xAB, sizeof r);
+    ck_assert_int_eq(swarp_cascade_setup(&cam, &light, &box, &o, &r, sp, 4, &k), SWARP_ERR_INVALID_ARGUMENT);
+    ck_assert(k == 77 && r.split_count == 0xABABABABu);
+}
+END_TEST
+
 int main(void) {
     Suite* s = suite_create("cascade2");
     TCase* t = tcase_create("stabilized");
@@ -666,6 +785,11 @@ int main(void) {
     tcase_add_test(t, min_depth_zero_keeps_result);
     tcase_add_test(t, min_depth_ignored_by_stabilized_cascades);
     tcase_add_test(t, min_depth_bad_inputs);
+    suite_add_tcase(s, t);
+    t = tcase_create("measured_splits");
+    tcase_set_timeout(t, 120);
+    tcase_add_test(t, measured_splits_no_worse_than_practical);
+    tcase_add_test(t, measured_splits_bad_inputs);
     suite_add_tcase(s, t);
     return tu_run_suite(s) ? EXIT_FAILURE : EXIT_SUCCESS;
 }

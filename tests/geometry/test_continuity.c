@@ -224,7 +224,7 @@ static double refine(const path* p, const basis* b, const swarp_camera* cam, con
         double sub = 0, worst_t = t0;
         for (int m = 1; m <= 100; ++m) {
             set_light(&light, cam, path_dir(p, b, t0 + m * h));
-            REQUIRE(!swarp_status_is_error(follow(cam, &light, o, &a, &c, NULL, NULL)), "refinement step failed");
+            { swarp_status fs = follow(cam, &light, o, &a, &c, NULL, NULL); REQUIRE(!swarp_status_is_error(fs), "refinement step failed: %s tech %d at %g", swarp_status_name(fs), (int)o->technique, t0 + m * h); }
             double js = mat_jump(&a.matrix, &c.matrix);
             if (js > sub) sub = js, worst_start = a, worst_t = t0 + (m - 1) * h;
             a = c;

@@ -339,7 +339,8 @@ class Cascades(unittest.TestCase):
 
     def test_cascade_setup_four_practical_splits(self):
         cam = scene_camera()
-        r = sw.cascade_setup(cam, SUN, SCENE_BOX, {"split": {"count": 4}})
+        r = sw.cascade_setup(cam, SUN, SCENE_BOX, {"split": {"count": 4, "scheme": sw.SCHEME_PRACTICAL,
+                                                             "lambda": 0.5}})
         res, splits = r
         self.assertEqual(res.split_count, 4)
         self.assertEqual(len(splits), 4)

@@ -8,7 +8,8 @@
  * V ∩ S found by brute force in long double (not through the library's
  * clipper).  Prints each violation with its inputs in %a; exit 1 on any.
  *
- *   coverage [COUNT [SEED]]     COUNT scenes (default 300), SEED (default 1)
+ *   coverage [COUNT [SEED [K]]]  COUNT scenes (default 300), SEED (default 1);
+ *                                K: replay only scene K of that sequence
  *
  * Also checks swarp_setup's view range lies in the camera's [near, far]. */
 #include <float.h>
@@ -20,6 +21,7 @@
 #include "shadowwarp.h"
 
 typedef struct cv_case {
+    long index; /* in the seeded sequence: `coverage COUNT SEED index` replays it */
     swarp_camera cam;
     swarp_light light;
     swarp_aabb box;
@@ -92,7 +94,7 @@ static void cv_light(uint64_t* s, const swarp_camera* c, const swarp_aabb* b, sw
 
 static void cv_print_case(const char* fn, const cv_case* k, swarp_status st, const cc_result* r) {
     const swarp_camera* c = &k->cam;
-    printf("FAIL %s %s tech %d depth %d pancake %u: ", fn, swarp_status_name(st), (int)k->o.technique,
+    printf("FAIL scene %ld %s %s tech %d depth %d pancake %u: ", k->index, fn, swarp_status_name(st), (int)k->o.technique,
            (int)k->o.depth_range, k->o.pancake);
     if (r) cc_print(stdout, r);
     printf("\n  eye %a %a %a dir %a %a %a up %a %a %a fovy %a aspect %a near %a far %a\n", c->eye.x, c->eye.y,
@@ -148,14 +150,202 @@ static void cv_run(const cv_case* k, uint64_t seed, cv_stats* S) {
     if (!swarp_status_is_error(st))
         for (size_t i = 0; i < n; ++i)
             cv_check_map(k, "swarp_cascade_setup", sp[i].z_near, sp[i].z_far, &sp[i].matrix, sp[i].status, seed, S);
+    /* the stabilised cascades (uniform maps of a directional light) */
+    if (k->o.technique != SWARP_TECHNIQUE_UNIFORM || k->light.type != SWARP_LIGHT_DIRECTIONAL || k->o.pancake) return;
+    for (int mode = SWARP_STABILIZE_SPHERE; mode <= SWARP_STABILIZE_LEVELS; ++mode) {
+        co.stabilize.mode = (swarp_stabilize_mode)mode;
+        st = swarp_cascade_setup(&k->cam, &k->light, &k->box, &co, &cr, sp, SWARP_CASCADE_MAX_SPLITS, &n);
+        S->calls++;
+        if (!swarp_status_is_error(st))
+            for (size_t i = 0; i < n; ++i)
+                if (sp[i].status != SWARP_INFO_SPLIT_NO_SCENE)
+                    cv_check_map(k, mode == SWARP_STABILIZE_SPHERE ? "swarp_cascade_setup SPHERE"
+                                                                   : "swarp_cascade_setup LEVELS",
+                                 sp[i].z_near, sp[i].z_far, &sp[i].matrix, sp[i].status, seed, S);
+    }
+}
+
+/* ---- pinned inputs, named by the property they pin ---- */
+
+static swarp_camera cv_pin_camera(void) {
+    swarp_camera c;
+    memset(&c, 0, sizeof c);
+    c.eye = (swarp_vec3){0, 2, 0};
+    c.dir = (swarp_vec3){0, -0.3, -1};
+    c.up = (swarp_vec3){0, 1, 0};
+    c.fovy = 1, c.aspect = 16.0 / 9, c.z_near = 1, c.z_far = 100;
+    return c;
+}
+
+static void cv_pin_fail(long* fails, const char* name, const char* what, swarp_status st) {
+    ++*fails;
+    printf("FAIL %s: %s (%s)\n", name, what, swarp_status_name(st));
+}
+
+/* PSM refuses a frustum whose post-perspective space cannot hold the light
+ * ray in double (the light at 1/tau ~ 1e9 there: fovy or aspect 1e-9, far
+ * within 1e-9 of near); uniform and LiSPSM cover the same frusta, checked
+ * independently.  Before the refusal PSM returned SWARP_OK with one light
+ * ray spread over 0.119 / 0.0142 / 0.12 NDC. */
+static void cv_pin_psm_extreme_frusta(long* fails) {
+    swarp_light D;
+    memset(&D, 0, sizeof D);
+    D.type = SWARP_LIGHT_DIRECTIONAL;
+    D.direction = (swarp_vec3){0.3, -1, 0.2};
+    const swarp_aabb S0 = {{-50, -1, -200}, {50, 10, 50}};
+    for (int which = 0; which < 3; ++which) {
+        swarp_camera c = cv_pin_camera();
+        if (which == 0) c.fovy = 1e-9;
+        if (which == 1) c.aspect = 1e-9;
+        if (which == 2) c.z_far = c.z_near * (1 + 1e-9);
+        for (int t = 1; t <= 3; ++t) {
+            swarp_setup_options o;
+            memset(&o, 0, sizeof o);
+            o.technique = (swarp_technique)t;
+            swarp_setup_result r;
+            memset(&r, 0x5a, sizeof r);
+            const swarp_setup_result canary = r;
+            swarp_status st = swarp_setup(&c, &D, &S0, &o, &r, NULL, 0, NULL);
+            if (t == SWARP_TECHNIQUE_PSM) {
+                if (st != SWARP_ERR_DEGENERATE) cv_pin_fail(fails, "psm_extreme_frustum_refused", "not refused", st);
+                else if (memcmp(&r, &canary, sizeof r) != 0)
+                    cv_pin_fail(fails, "psm_extreme_frustum_refused", "output written", st);
+                continue;
+            }
+            if (swarp_status_is_error(st)) {
+                cv_pin_fail(fails, "extreme_frustum_uniform_lispsm_covered", "refused", st);
+                continue;
+            }
+            cc_result q = cc_check(&c, c.z_near, c.z_far, &D, &S0, &r.matrix, SWARP_DEPTH_NEG_ONE_TO_ONE, 0, st, 9,
+                                   17, 200, 1);
+            if (!cc_ok(&q)) {
+                cv_pin_fail(fails, "extreme_frustum_uniform_lispsm_covered", "not covered", st);
+                cc_print(stdout, &q);
+                printf("\n");
+            }
+        }
+    }
+}
+
+/* Cascades over a box "unbounded" toward the light (max.y = 1e19, FLT_MAX,
+ * DBL_MAX, light straight down): stabilised (SPHERE, LEVELS), the depth
+ * window stops 1e10 times the map's size toward the light, unstabilised
+ * (NONE) each split's B stops 1e10 times its H's size, and every split says
+ * so (SWARP_INFO_CASTERS_CLAMPED; before: SWARP_OK, stabilised with a
+ * window 1e19 wide); the receivers and the casters up to there are covered
+ * (the pancaking rule beyond).  With the bounded box (max.y = 10) no split
+ * is clamped. */
+static void cv_pin_stabilized_clamped(long* fails) {
+    static const double top[] = {10, 1e19, FLT_MAX, DBL_MAX};
+    swarp_light D;
+    memset(&D, 0, sizeof D);
+    D.type = SWARP_LIGHT_DIRECTIONAL;
+    D.direction = (swarp_vec3){0, -1, 0};
+    const swarp_camera c = cv_pin_camera();
+    for (size_t b = 0; b < sizeof top / sizeof top[0]; ++b)
+        for (int mode = SWARP_STABILIZE_NONE; mode <= SWARP_STABILIZE_LEVELS; ++mode) {
+            swarp_aabb S = {{-50, -1, -200}, {50, 10, 50}};
+            S.max.y = top[b];
+            swarp_cascade_options co;
+            memset(&co, 0, sizeof co);
+            co.setup.technique = SWARP_TECHNIQUE_UNIFORM;
+            co.split.count = 4;
+            co.stabilize.mode = (swarp_stabilize_mode)mode;
+            swarp_cascade_result cr;
+            swarp_cascade_split sp[SWARP_CASCADE_MAX_SPLITS];
+            size_t n = 0;
+            swarp_status st = swarp_cascade_setup(&c, &D, &S, &co, &cr, sp, SWARP_CASCADE_MAX_SPLITS, &n);
+            if (swarp_status_is_error(st)) {
+                cv_pin_fail(fails, "stabilized_unbounded_box_casters_clamped", "refused", st);
+                continue;
+            }
+            for (size_t i = 0; i < n; ++i) {
+                const swarp_status want = b == 0 ? SWARP_OK : SWARP_INFO_CASTERS_CLAMPED;
+                if (sp[i].status != want && !(b == 0 && sp[i].status == SWARP_INFO_LEVEL_ABOVE_RANGE))
+                    cv_pin_fail(fails, "stabilized_unbounded_box_casters_clamped", "split status", sp[i].status);
+                cc_result q = cc_check(&c, sp[i].z_near, sp[i].z_far, &D, &S, &sp[i].matrix,
+                                       SWARP_DEPTH_NEG_ONE_TO_ONE, 0, sp[i].status, 7, 9, 100, 1);
+                if (!cc_ok(&q)) {
+                    cv_pin_fail(fails, "stabilized_unbounded_box_casters_clamped", "not covered", sp[i].status);
+                    cc_print(stdout, &q);
+                    printf("\n");
+                }
+            }
+        }
+}
+
+/* Two scenes of the sweep (seed 7) that returned success without covering
+ * before their fix, replayed with every entry point and technique:
+ * a cascade over a box with min.x = -FLT_MAX (the split's H, built
+ * camera-relative and translated back, sat an ulp outside S, the sweep
+ * fell back to 2 diag(S) = 7e38 and lost B's swept part: casters 0.2..0.3
+ * depth windows out, SWARP_OK), and a frustum of aspect 5.7e4 in a box
+ * with max.z = DBL_MAX (H clipped at DBL_MAX's scale: receivers 125 map
+ * widths out, SWARP_INFO_FLAT_EXTENT), and PSM at fovy 1e-8 (1369
+ * caster samples behind the light camera with SWARP_INFO_PSM_INVERSE; now
+ * refused, uniform and LiSPSM cover). */
+static void cv_pin_replayed_scenes(long* fails) {
+    cv_case k[3];
+    memset(k, 0, sizeof k);
+    k[0].cam = (swarp_camera){{0x1.3e41a526bbad8p+2, 0x1.39d84a2dba63ep+4, 0x1.c6743fec50108p+3},
+                              {0x1.9852cc59943ccp-1, 0x1.736a770effd8p-3, -0x1.1bc268991af6p-3},
+                              {0, 1, 0},
+                              0x1.dcec17f764a76p+0,
+                              0x1.34960f1dedd29p+1,
+                              0x1.2d29c41c58567p-4,
+                              0x1.f23e5129af2dap+8,
+                              {0}};
+    k[0].light.type = SWARP_LIGHT_DIRECTIONAL;
+    k[0].light.direction = (swarp_vec3){-0x1.02d5d43af6134p-2, -0x1.cafaf5f624096p-1, 0x1.404c06a3742p-4};
+    k[0].box = (swarp_aabb){{-0x1.fffffep+127, -0x1.f55cb45860535p-1, -0x1.2fc30878fb484p+6},
+                            {0x1.8abaa5ecb1781p+7, 0x1.d3c84ce1a01eep+1, 0x1.a19e146f9666bp+5}};
+    k[1].cam = (swarp_camera){{0x1.b074634a61004p+3, 0x1.9cae86f7044efp+3, -0x1.13edd590f16e8p+4},
+                              {0x1.7dc335e84b43p-4, 0x1.d280921171ebp-4, 0x1.6ab9f2ec3d478p-3},
+                              {0, 1, 0},
+                              0x1.9961599115a3dp+0,
+                              0x1.bc20d3d52b549p+15,
+                              0x1.095b63c2ece45p-1,
+                              0x1.8c19e7f3d92a2p+11,
+                              {0}};
+    k[1].light.type = SWARP_LIGHT_DIRECTIONAL;
+    k[1].light.direction = (swarp_vec3){0x1.6ffb18e800ae8p-1, -0x1.95937d2bc7ecep-1, 0x1.2655e164bf4cp-3};
+    k[1].box = (swarp_aabb){{-0x1.17d2541844b44p+3, -0x1.12d50fc6eb118p+1, -0x1.944155966c4a4p+4},
+                            {0x1.5d2cabc3b3b8cp+5, 0x1.3565fb858ae71p+3, 0x1.fffffffffffffp+1023}};
+    k[2].cam = (swarp_camera){{-0x1.3fc129435f6b6p+4, 0x1.49364aa118896p+3, -0x1.2f4f1fa3b6df9p+4},
+                              {-0x1.9d9f70aa4ef7ap-1, 0x1.adf9a793672bcp-2, -0x1.d2644779d7568p-2},
+                              {0, 1, 0},
+                              0x1.4faea3629e66ap-27,
+                              0x1.cb986a31ad311p+0,
+                              0x1.1bd51d0dd5287p-4,
+                              0x1.2774d531c11adp+9,
+                              {0}};
+    k[2].light.type = SWARP_LIGHT_DIRECTIONAL;
+    k[2].light.direction = (swarp_vec3){-0x1.ab6b45ef7cd58p-2, -0x1.32d03deea701cp-2, 0x1.4293382522a4cp-2};
+    k[2].box = (swarp_aabb){{-0x1.1b2decf4bfd6p+5, -0x1.f458abfd7ac6cp+0, -0x1.af244a2d132fp+4},
+                            {-0x1.a2aab569ad3acp+2, 0x1.a2c55fde41707p+4, -0x1.5a6fccfbea867p+3}};
+    for (int i = 0; i < 3; ++i)
+        for (int t = 1; t <= 3; ++t)
+            for (int dr = 1; dr <= 2; ++dr) {
+                k[i].index = -1 - i;
+                k[i].o.technique = (swarp_technique)t;
+                k[i].o.depth_range = (swarp_depth_range)dr;
+                cv_stats S = {0, 0, 0};
+                cv_run(&k[i], 12345, &S);
+                if (S.failed) cv_pin_fail(fails, "replayed_scene_success_means_covered", "not covered", SWARP_OK);
+                const int psm_refuses = i == 2 && t == SWARP_TECHNIQUE_PSM;
+                if (psm_refuses && S.checked != 0) cv_pin_fail(fails, "replayed_psm_fovy_1e-8_refused", "computed", SWARP_OK);
+                if (!psm_refuses && S.checked == 0) cv_pin_fail(fails, "replayed_scene_success_means_covered", "all refused", SWARP_OK);
+            }
 }
 
 int main(int argc, char** argv) {
     const long count = argc > 1 ? atol(argv[1]) : 300;
     uint64_t s = argc > 2 ? strtoull(argv[2], NULL, 0) : 1;
+    const long only = argc > 3 ? atol(argv[3]) : -1;
     cv_stats S = {0, 0, 0};
     for (long i = 0; i < count; ++i) {
         cv_case k;
+        k.index = i;
         cv_camera(&s, &k.cam);
         cv_box(&s, &k.cam, &k.box);
         cv_light(&s, &k.cam, &k.box, &k.light);
@@ -163,9 +353,16 @@ int main(int argc, char** argv) {
         k.o.technique = (swarp_technique)(1 + cc_next(&s) % 3);
         k.o.depth_range = cc_next(&s) & 1 ? SWARP_DEPTH_ZERO_TO_ONE : SWARP_DEPTH_NEG_ONE_TO_ONE;
         k.o.pancake = cc_next(&s) % 4 == 0;
-        cv_run(&k, cc_next(&s), &S);
+        const uint64_t seed = cc_next(&s);
+        if (only < 0 || only == i) cv_run(&k, seed, &S);
     }
-    printf("coverage: %ld scenes, %ld calls, %ld maps checked, %ld violations\n", count, S.calls, S.checked,
-           S.failed);
-    return S.failed ? 1 : 0;
+    long pinned = 0;
+    if (only < 0) {
+        cv_pin_psm_extreme_frusta(&pinned);
+        cv_pin_stabilized_clamped(&pinned);
+        cv_pin_replayed_scenes(&pinned);
+    }
+    printf("coverage: %ld scenes, %ld calls, %ld maps checked, %ld violations; pinned inputs: %ld failures\n", count,
+           S.calls, S.checked, S.failed, pinned);
+    return S.failed || pinned ? 1 : 0;
 }

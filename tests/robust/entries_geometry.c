@@ -955,10 +955,11 @@ static void e_poly_from_inverse_matrix(swr_ctx* c) {
     int finite = 1;
     for (int i = 0; i < 16; ++i) finite &= fin(M.m[i]);
     if (!finite) swr_expect(c, SWARP_ERR_NON_FINITE);
-    if (dr < 0 || dr > 2) swr_expect(c, SWARP_ERR_UNKNOWN_ENUM);
-    /* the 8 corners, independently (long double) */
+    if (dr < 0 || dr > 3) swr_expect(c, SWARP_ERR_UNKNOWN_ENUM);
+    /* the 8 corners, independently (long double); reversed-Z (3) has the
+     * same NDC depth set {0, 1} as [0, 1], its near face at 1 */
     swarp_vec3 corner[8];
-    double z0 = dr == 2 ? 0.0 : -1.0, scale = 0;
+    double z0 = dr == 2 || dr == 3 ? 0.0 : -1.0, scale = 0;
     int pos = 0, neg = 0, mixed;
     double wmin = INFINITY, wmax = 0;
     for (int k = 0; k < 8; ++k) {
@@ -1962,11 +1963,9 @@ static void e_cascade_setup(swr_ctx* c) {
             if (o._reserved[i]) swr_expect(c, SWARP_ERR_RESERVED_NONZERO);
         for (int i = 0; i < 4; ++i)
             if (o.split._reserved[i]) swr_expect(c, SWARP_ERR_RESERVED_NONZERO);
-        if ((int)o.warp_per_split < 0 || (int)o.warp_per_split > 2 || (int)o.split.scheme < 0 || (int)o.split.scheme > 4 ||
+        if ((int)o.warp_per_split < 0 || (int)o.warp_per_split > 2 || (int)o.split.scheme < 0 || (int)o.split.scheme > 5 ||
             (int)o.stabilize.mode < 0 || (int)o.stabilize.mode > 3)
             swr_expect(c, SWARP_ERR_UNKNOWN_ENUM);
-        /* reversed-Z: not yet handled by the atlas and the bias maps */
-        if ((int)o.setup.depth_range == SWARP_DEPTH_REVERSED_ZERO_TO_ONE) swr_expect(c, SWARP_ERR_UNKNOWN_ENUM);
         if (o.split.count > SWARP_CASCADE_MAX_SPLITS) swr_expect(c, SWARP_ERR_SPLIT_COUNT);
         if (!fin(o.kernel_world_size) || !fin(o.split.lambda)) swr_domain(c, SWARP_ERR_NON_FINITE);
         static const swarp_status dom[] = {SWARP_ERR_OUT_OF_RANGE, SWARP_ERR_STABILIZE_WARPED, SWARP_ERR_STABILIZE_LIGHT,
@@ -1976,6 +1975,8 @@ static void e_cascade_setup(swr_ctx* c) {
          * stabilised sphere or matrix beyond DBL_MAX (far 1e306, aspect
          * DBL_MAX) */
         if ((int)o.stabilize.mode != 0) swr_domain(c, SWARP_ERR_OVERFLOW);
+        /* SWARP_SCHEME_MEASURED with stabilisation (ranges that must not move) */
+        if ((int)o.split.scheme == 5 && (int)o.stabilize.mode != 0) swr_domain(c, SWARP_ERR_INVALID_ARGUMENT);
     }
     if (K <= SWARP_CASCADE_MAX_SPLITS && cap < K) swr_expect(c, SWARP_ERR_CAPACITY);
     if (!psp && cap == 0) swr_domain(c, SWARP_ERR_CAPACITY);

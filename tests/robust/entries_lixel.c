@@ -480,7 +480,7 @@ static void e_lixel_factor(swr_ctx* c) {
     if (n_m || n_v || n_p) swr_expect(c, SWARP_ERR_NULL_POINTER);
     if (!finm(&M) || !fin(pd)) swr_expect(c, SWARP_ERR_NON_FINITE);
     if (w == 0 || h == 0) swr_expect(c, SWARP_ERR_RESOLUTION);
-    if (dr < 0 || dr > 2) swr_expect(c, SWARP_ERR_UNKNOWN_ENUM);
+    if (dr < 0 || dr > 3) swr_expect(c, SWARP_ERR_UNKNOWN_ENUM);
     if (fin(pd) && !(pd >= 0 && pd < 1)) swr_expect(c, SWARP_ERR_OUT_OF_RANGE);
     swr_allow(c, SWARP_ERR_OUT_OF_RANGE);
     swr_allow(c, SWARP_ERR_SINGULAR);

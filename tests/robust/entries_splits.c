@@ -40,7 +40,7 @@ static void e_atlas_layout(swr_ctx* c) {
     if (n_t && cap == 0) swr_domain(c, SWARP_ERR_NULL_POINTER);
     if (m == 0 || m > SWARP_ATLAS_MAX_SPLITS) swr_expect(c, SWARP_ERR_ATLAS_SPLITS);
     if (res == 0 || res > (1u << 24)) swr_expect(c, SWARP_ERR_RESOLUTION);
-    if (dr < 0 || dr > 2) swr_expect(c, SWARP_ERR_UNKNOWN_ENUM);
+    if (dr < 0 || dr > 3) swr_expect(c, SWARP_ERR_UNKNOWN_ENUM);
     int short_cap = m >= 1 && m <= SWARP_ATLAS_MAX_SPLITS && cap < m;
     if (short_cap) swr_expect(c, SWARP_ERR_CAPACITY);
     swarp_atlas_info info;
@@ -365,7 +365,9 @@ static void e_cascade_splits(swr_ctx* c) {
     if (swr_isfin(n) && swr_isfin(f) && !(n > 0 && f > n)) swr_expect(c, SWARP_ERR_NEAR_FAR);
     uint32_t m = use && o.count ? o.count : 4;
     if (use) {
-        if ((int)o.scheme < 0 || (int)o.scheme > 4) swr_expect(c, SWARP_ERR_UNKNOWN_ENUM);
+        if ((int)o.scheme < 0 || (int)o.scheme > 5) swr_expect(c, SWARP_ERR_UNKNOWN_ENUM);
+        /* SWARP_SCHEME_MEASURED needs the scene of swarp_cascade_setup */
+        if ((int)o.scheme == 5) swr_expect(c, SWARP_ERR_INVALID_ARGUMENT);
         if (o.count > SWARP_SPLIT_MAX_COUNT) swr_expect(c, SWARP_ERR_SPLIT_COUNT);
         for (int i = 0; i < 4; ++i)
             if (o._reserved[i]) swr_expect(c, SWARP_ERR_RESERVED_NONZERO);
@@ -589,6 +591,9 @@ static void gen_bias(swr_ctx* c, bias_args* b) {
     if ((int)b->map.depth == 2) { /* [0, 1]: z' = (z + w)/2 */
         for (int k = 0; k < 4; ++k) P[k * 4 + 2] = 0.5 * (P[k * 4 + 2] + P[k * 4 + 3]);
     }
+    if ((int)b->map.depth == 3) { /* reversed-Z: z' = w - (z + w)/2 = (w - z)/2 */
+        for (int k = 0; k < 4; ++k) P[k * 4 + 2] = 0.5 * (P[k * 4 + 3] - P[k * 4 + 2]);
+    }
     for (int col = 0; col < 4; ++col)
         for (int r = 0; r < 4; ++r) {
             double acc = 0;
@@ -640,7 +645,7 @@ static int expect_map_fields(swr_ctx* c, const swarp_bias_map* m) {
     for (int i = 0; i < 4; ++i)
         if (m->_reserved[i]) swr_expect(c, SWARP_ERR_RESERVED_NONZERO), ok = 0;
     if (m->_reserved0) swr_expect(c, SWARP_ERR_RESERVED_NONZERO), ok = 0;
-    if ((int)m->depth < 0 || (int)m->depth > 2) swr_expect(c, SWARP_ERR_UNKNOWN_ENUM), ok = 0;
+    if ((int)m->depth < 0 || (int)m->depth > 3) swr_expect(c, SWARP_ERR_UNKNOWN_ENUM), ok = 0;
     for (int i = 0; i < 16; ++i)
         if (!swr_isfin(m->world_to_clip.m[i])) swr_expect(c, SWARP_ERR_NON_FINITE), ok = 0;
     if (!(m->res_s > 0) || !(m->res_t > 0) || !swr_isfin(m->res_s) || !swr_isfin(m->res_t))
@@ -699,7 +704,7 @@ static ld window_depth(const swarp_bias_map* m, swarp_vec3 p) {
     ld h[4];
     clip_of(&m->world_to_clip, p, h);
     ld zn = h[2] / h[3];
-    return (int)m->depth == 2 ? zn : (zn + 1) / 2;
+    return (int)m->depth == 2 || (int)m->depth == 3 ? zn : (zn + 1) / 2; /* 3: reversed-Z, d = z_ndc */
 }
 /* d(s, t, d)/d(world) along u: s = (x/w + 1) res_s/2 texels, exact quotient rule */
 static void jac_along(swr_ctx* cc_, const swarp_bias_map* m, swarp_vec3 p, swarp_vec3 u, ld out[3]) {
@@ -717,7 +722,7 @@ static void jac_along(swr_ctx* cc_, const swarp_bias_map* m, swarp_vec3 p, swarp
         ld num = fabsl(g[r] * h[3] - h[r] * g[3]);
         if (num > 0) swr_cond(cc_, (double)(k_h * (fabsl(g[r] * h[3]) + fabsl(h[r] * g[3])) / num));
     }
-    out[0] = dq[0] * m->res_s / 2, out[1] = dq[1] * m->res_t / 2, out[2] = (int)m->depth == 2 ? dq[2] : dq[2] / 2;
+    out[0] = dq[0] * m->res_s / 2, out[1] = dq[1] * m->res_t / 2, out[2] = (int)m->depth == 2 || (int)m->depth == 3 ? dq[2] : dq[2] / 2;
 }
 /* the world lengths of one texel step along s and t at constant depth */
 static int ref_texel_z(const swarp_bias_map* m, swarp_vec3 p, ld* Ls, ld* Lt, ld zrel, double* kappa_out) {
@@ -1023,7 +1028,7 @@ static int covers(const swarp_bias_map* m, swarp_vec3 p) {
     /* the margin: 1e-9 of w plus the rounding of the rows' double evaluation */
     ld mag = 0;
     for (int r = 0; r < 4; ++r) mag = fmaxl(mag, clip_mag(&m->world_to_clip, p, r));
-    ld lo = (int)m->depth == 2 ? 0 : -h[3], e = 1e-9L * h[3] + 64 * (ld)DBL_EPSILON * mag;
+    ld lo = (int)m->depth == 2 || (int)m->depth == 3 ? 0 : -h[3], e = 1e-9L * h[3] + 64 * (ld)DBL_EPSILON * mag;
     ld v[3] = {fabsl(h[0]) - h[3], fabsl(h[1]) - h[3], fmaxl(h[2] - h[3], lo - h[2])};
     ld worst = fmaxl(v[0], fmaxl(v[1], v[2]));
     return worst > e ? 0 : worst < -e ? 1 : -1;
@@ -1067,7 +1072,7 @@ static void e_cascade_select_best(swr_ctx* c) {
             int valid = 1; /* the fields swarp_bias_texel_size checks first */
             for (int k = 0; k < 16; ++k) valid &= swr_isfin(maps[i].world_to_clip.m[k]);
             valid &= maps[i].res_s > 0 && maps[i].res_t > 0 && swr_isfin(maps[i].res_s) && swr_isfin(maps[i].res_t);
-            valid &= (int)maps[i].depth >= 0 && (int)maps[i].depth <= 2 && !maps[i]._reserved0;
+            valid &= (int)maps[i].depth >= 0 && (int)maps[i].depth <= 3 && !maps[i]._reserved0;
             for (int k = 0; k < 4; ++k) valid &= !maps[i]._reserved[k];
             if (!valid) break;
             ld Ls, Lt;

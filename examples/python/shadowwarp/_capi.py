@@ -116,6 +116,7 @@ ENUMS = {'swarp_depth_range': {'SWARP_DEPTH_DEFAULT': 0,
                         'SWARP_SCHEME_LOG': 2,
                         'SWARP_SCHEME_PRACTICAL': 3,
                         'SWARP_SCHEME_PSEUDO': 4,
+                        'SWARP_SCHEME_MEASURED': 5,
                         'SWARP_SCHEME_FORCE_I32': 2147483647},
  'swarp_cascade_warp': {'SWARP_CASCADE_WARP_DEFAULT': 0,
                         'SWARP_CASCADE_WARP_EACH': 1,
@@ -2119,6 +2120,12 @@ DOCS = {'swarp_status_string': '@brief Readable message for a status; never NULL
                                 ' @param[out] out_matrix  the light matrix; @param[out] out_report '
                                 'may be NULL\n'
                                 ' @return SWARP_OK, SWARP_INFO_LEVEL_ABOVE_RANGE, '
+                                'SWARP_INFO_CASTERS_CLAMPED\n'
+                                "         (the scene box reaches more than 1e10 times the map's "
+                                'size toward\n'
+                                '         the light: the depth window stops there and casters '
+                                'beyond rely on\n'
+                                '         depth clamping; outranks LEVEL_ABOVE_RANGE), '
                                 'SWARP_ERR_NULL_POINTER,\n'
                                 '         SWARP_ERR_NON_FINITE, SWARP_ERR_NEAR_FAR, '
                                 'SWARP_ERR_FOV,\n'
@@ -2212,9 +2219,11 @@ DOCS = {'swarp_status_string': '@brief Readable message for a status; never NULL
                                'factor that\n'
                                " turns a world-space bias into the depth units of this split's map "
                                '(minus\n'
-                               ' the derivative of d along L at p, so > 0 for a map looking along '
-                               'the\n'
-                               ' light).  Uniform maps: constant per split.\n'
+                               ' the derivative of d along L at p, so > 0 for a forward map '
+                               'looking along\n'
+                               ' the light and < 0 under reversed-Z, exactly the forward value '
+                               'negated).\n'
+                               ' Uniform maps: constant per split.\n'
                                ' @param[out] out_depth_per_world window depth units per world '
                                'unit\n'
                                ' @return SWARP_OK, SWARP_ERR_BEHIND_PROJECTION, and the argument '
@@ -2227,7 +2236,9 @@ DOCS = {'swarp_status_string': '@brief Readable message for a status; never NULL
                               ' tangents tangent_a, tangent_b (e.g. dFdx/dFdy of the world '
                               'position, or\n'
                               ' two edges of the triangle).  Exact derivative of the (possibly\n'
-                              ' projective) map at p.  A PCF tap offset by (ds, dt) texels '
+                              ' projective) map at p (under reversed-Z the gradient of the '
+                              'reversed d:\n'
+                              ' the [0, 1] gradient negated).  A PCF tap offset by (ds, dt) texels '
                               'compares\n'
                               ' against d + dd/ds ds + dd/dt dt.  GLSL twin in '
                               'shaders/splits.glsl.\n'
@@ -2312,7 +2323,10 @@ DOCS = {'swarp_status_string': '@brief Readable message for a status; never NULL
                          '         SWARP_ERR_NEAR_FAR, SWARP_ERR_SPLIT_COUNT, '
                          'SWARP_ERR_OUT_OF_RANGE,\n'
                          '         SWARP_ERR_UNKNOWN_ENUM, SWARP_ERR_RESERVED_NONZERO,\n'
-                         '         SWARP_ERR_CAPACITY.',
+                         '         SWARP_ERR_CAPACITY, SWARP_ERR_INVALID_ARGUMENT '
+                         '(SWARP_SCHEME_MEASURED:\n'
+                         '         it needs the camera, light and scene of swarp_cascade_setup).\n'
+                         '         SWARP_SCHEME_DEFAULT here is PRACTICAL with lambda 0.5.',
  'swarp_cascade_nopt': "@brief Warp parameter n' of each split for LiSPSM with an overhead light\n"
                        " in the error model's frame: n_opt of [RHS] (3.2) with d = C_{i+1} - C_i,\n"
                        ' z_0 = C_i, z_1 = C_{i+1}; the first split uses the pseudo-near fraction\n'
@@ -2355,12 +2369,18 @@ DOCS = {'swarp_status_string': '@brief Readable message for a status; never NULL
                         ' o.warp_per_split FROM_FIRST: [RHS] §3.4 arbitrary warping, see\n'
                         ' swarp_cascade_warp.  o.setup.min_depth: [RHS] §4.3 measured min depth, '
                         'as\n'
-                        ' in swarp_setup (not for stabilised cascades).\n'
+                        ' in swarp_setup (not for stabilised cascades).  o.split.scheme DEFAULT\n'
+                        ' (unstabilised) or MEASURED: the split positions are the practical\n'
+                        " scheme's on the adjusted range (after min_depth) with the λ whose worst\n"
+                        ' split measures least (SWARP_SCHEME_MEASURED, docs/splits.md); MEASURED\n'
+                        ' with stabilisation is SWARP_ERR_INVALID_ARGUMENT (its ranges must not\n'
+                        ' move with the view), DEFAULT with stabilisation is PRACTICAL λ = 0.5.\n'
                         ' @return SWARP_OK or the first informational status of a split\n'
                         '         (SWARP_INFO_SPLIT_NO_SCENE: LEVELS, a split of the constant\n'
                         '         range misses the scene box and its map covers the split '
                         'frustum);\n'
                         '         SWARP_ERR_STABILIZE_WARPED, SWARP_ERR_STABILIZE_LIGHT,\n'
+                        '         SWARP_ERR_INVALID_ARGUMENT (MEASURED stabilised),\n'
                         '         SWARP_ERR_SPLIT_COUNT (count > 16), SWARP_ERR_SPLIT_EMPTY,\n'
                         '         SWARP_ERR_CAPACITY, and the errors of swarp_setup,\n'
                         '         swarp_cascade_splits and swarp_stabilize_directional (with\n'
@@ -2628,7 +2648,10 @@ DOCS = {'swarp_status_string': '@brief Readable message for a status; never NULL
                                    'an inverse\n'
                                    ' view-projection matrix (the 8 corners of the NDC cube, depth '
                                    'per\n'
-                                   ' depth_range).\n'
+                                   ' depth_range: near face at NDC -1, 0, or 1 for reversed-Z, '
+                                   'whose far\n'
+                                   ' face is at 0; an infinite reversed far plane maps to w = 0: '
+                                   'DEGENERATE).\n'
                                    ' @return SWARP_OK, SWARP_ERR_NULL_POINTER, '
                                    'SWARP_ERR_NON_FINITE,\n'
                                    '         SWARP_ERR_UNKNOWN_ENUM, SWARP_ERR_DEGENERATE (a '
@@ -2811,8 +2834,9 @@ DOCS = {'swarp_status_string': '@brief Readable message for a status; never NULL
                        ' the wanted side); GLV is the viewport NDC -> lixels\n'
                        ' (x = (x_ndc + 1) width/2 - 1/2) with depth passed through.  The depth\n'
                        " row is remapped affinely (allowed by the paper's footnote): the raised\n"
-                       ' point p-hat lands on the near plane (NDC -1, or 0) and P at the fraction\n'
-                       ' plane_depth of the depth range (default 0.5), so geometry slightly\n'
+                       ' point p-hat lands on the near plane (NDC -1, 0, or 1 under reversed-Z)\n'
+                       ' and P at the fraction plane_depth of the depth range from the near\n'
+                       ' plane (default 0.5; NDC 1 - plane_depth reversed), so geometry slightly\n'
                        " behind P is not clipped.  (x, y, q) of M_l' equal those of M_l.\n"
                        ' @param[in] M_l restricted light matrix (lixels; depth as built by\n'
                        '        swarp_lixel_matrix: p-hat at z = -1, P at z = +1)\n'
