@@ -742,34 +742,17 @@ static void sw_search_golden(sw_search* q) {
     }
 }
 
-/* With the measurement on, the search's choice is checked against the
- * start and uniform with the full swarp_measure_max (the cheap set can
- * miss a peak inside H): the one with the smallest measured max sigma is
- * returned, ties to the start, then to uniform. */
-static void sw_search_verify(sw_search* q, const swarp_setup_result* start, swarp_status start_info,
-                             swarp_setup_result* out, swarp_status* info) {
+/* With the measurement on, the search's choice gets the full
+ * swarp_measure_max as its report.  The choice itself stays the cheap
+ * set's: its points are fixed by H, so under every rounding mode the same
+ * candidate wins, while the full measurement of a region that is flat (a
+ * box face in one plane) rejects or keeps lattice points on a rounding and
+ * would pick between candidates by that rounding. */
+static void sw_search_report(sw_search* q, swarp_setup_result* out, swarp_status* info) {
     const sw_search_in* in = q->in;
-    swarp_setup_result cand[3];
-    swarp_status cinfo[3];
-    int nc = 0;
-    cand[nc] = *start, cinfo[nc++] = start_info;
-    if (q->best_t == 0.0) {
-        cand[nc] = q->best, cinfo[nc++] = q->best_info;
-    } else {
-        if (sw_search_eval(q, 0.0, &cand[nc], &cinfo[nc]) < INFINITY) ++nc;
-        if (q->best_t != 0.5) cand[nc] = q->best, cinfo[nc++] = q->best_info;
-    }
-    int pick = 0;
-    for (int i = 0; i < nc; ++i) {
-        sw_measure_setup(in->cam, in->near, in->far, in->light, in->scene, &cand[i].matrix, &q->o,
-                         &cand[i].measured);
-        if (i > 0 && cand[i].measured.samples &&
-            (!cand[pick].measured.samples ||
-             cand[i].measured.max_sigma < cand[pick].measured.max_sigma * (1.0 - SW_SEARCH_GAIN_REL)))
-            pick = i;
-    }
-    *out = cand[pick];
-    *info = cinfo[pick];
+    *out = q->best;
+    *info = q->best_info;
+    sw_measure_setup(in->cam, in->near, in->far, in->light, in->scene, &out->matrix, &q->o, &out->measured);
 }
 
 static swarp_status sw_setup_measured(const sw_search_in* in, const swarp_setup_options* o,
@@ -805,7 +788,7 @@ static swarp_status sw_setup_measured(const sw_search_in* in, const swarp_setup_
     }
     q.o.skip_measure = 0;
     swarp_status info;
-    sw_search_verify(&q, &start, start_info, out, &info);
+    sw_search_report(&q, out, &info);
     return info;
 }
 
