@@ -73,7 +73,7 @@
  *      swarp_camera cam = {0};   // eye, dir, up, fovy (full, radians), aspect, near, far
  *      swarp_light light = {0};  // type 0 = directional; direction = where light travels
  *      swarp_aabb scene = {0};   // box S around every caster and receiver
- *      swarp_setup_options opt = {0};   // zero = LiSPSM n_opt, 2048 x 2048 map, depth [-1, 1]
+ *      swarp_setup_options opt = {0};   // zero = LiSPSM (measured n'), 2048 x 2048 map, depth [-1, 1]
  *      swarp_setup_result r;
  *      swarp_status s = swarp_setup(&cam, &light, &scene, &opt, &r, NULL, 0, NULL);
  *      if (swarp_status_is_error(s))      // r untouched: keep the last frame's matrix
@@ -448,12 +448,24 @@ typedef struct swarp_measure_options {
 
 
 typedef enum swarp_warp_param {
-    SWARP_WARP_PARAM_DEFAULT = 0,   /**< = SWARP_WARP_PARAM_NOPT */
+    SWARP_WARP_PARAM_DEFAULT = 0,   /**< = SWARP_WARP_PARAM_MEASURED */
     SWARP_WARP_PARAM_NOPT = 1,      /**< n_opt [RHS] (3.2), z_0, z_1 from B */
     SWARP_WARP_PARAM_NREPAR = 2,    /**< n_repar(η(γ, Θ)) [RHS] (3.3)-(3.4) */
     SWARP_WARP_PARAM_GMNPR = 3,     /**< λ_GMNPR [GMNPR] (8) times d */
     SWARP_WARP_PARAM_PSEUDO = 4,    /**< pseudo-near/far n_opt [RHS] (4.2) */
     SWARP_WARP_PARAM_USER = 5,      /**< caller's n' (eye units) */
+    SWARP_WARP_PARAM_MEASURED = 6,  /**< the n' (n_opt's neighbourhood up to n' = +inf,
+                                         uniform) whose matrix has the smallest measured
+                                         max sigma over H (swarp_setup, swarp_setup_range,
+                                         every cascade split): a bounded golden-section
+                                         search in t = n_opt / (n_opt + n') in [0, 1] on H's
+                                         vertices and interior points, started at n_opt;
+                                         the chosen matrix is never worse than n_opt's nor
+                                         than uniform on that set, and with the measurement
+                                         on (not skip_measure) also on the full
+                                         swarp_measure_max.  Where no region is known
+                                         (swarp_setup_points, swarp_warp_lispsm) it is
+                                         n_opt.  docs/parameters.md */
     SWARP_WARP_PARAM_FORCE_I32 = 0x7FFFFFFF
 } swarp_warp_param;
 
@@ -475,7 +487,7 @@ typedef enum swarp_technique {
 /** Options of swarp_setup; a zeroed struct is a valid request. */
 typedef struct swarp_setup_options {
     swarp_technique technique;
-    swarp_warp_param param;        /**< LiSPSM parameter (default n_opt) */
+    swarp_warp_param param;        /**< LiSPSM parameter (default: measured, SWARP_WARP_PARAM_MEASURED) */
     swarp_warp_center center;      /**< LiSPSM projection centre (default [RHS] §4.1) */
     swarp_depth_range depth_range; /**< default [-1, 1] */
     uint32_t map_width, map_height;       /**< texels; 0: 2048 (height 0: = width) */

@@ -87,7 +87,7 @@ swarp_warp_options sw_setup_warp_options(const swarp_setup_options* o) {
  * them (a uniform or PSM map ignores n_user and the pseudo fractions). */
 static swarp_status sw_check_setup_warp(const swarp_setup_options* o) {
     const swarp_warp_options w = sw_setup_warp_options(o);
-    if ((uint32_t)w.param > (uint32_t)SWARP_WARP_PARAM_USER) return SWARP_ERR_UNKNOWN_ENUM;
+    if ((uint32_t)w.param > (uint32_t)SWARP_WARP_PARAM_MEASURED) return SWARP_ERR_UNKNOWN_ENUM;
     if ((uint32_t)w.center > (uint32_t)SWARP_WARP_CENTER_NEAREST_VERTEX) return SWARP_ERR_UNKNOWN_ENUM;
     if (o->technique != SWARP_TECHNIQUE_LISPSM && o->technique != SWARP_TECHNIQUE_DEFAULT) return SWARP_OK;
     if (w.param == SWARP_WARP_PARAM_USER) {

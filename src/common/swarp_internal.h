@@ -256,5 +256,11 @@ void sw_setup_error_config(const swarp_setup_options* o, double theta, double ne
 void sw_measure_setup(const swarp_camera* cam, double z_near, double z_far, const swarp_light* light,
                       const swarp_aabb* scene, const swarp_mat4* matrix, const swarp_setup_options* o,
                       swarp_measured_error* out);
+/* The fixed point set of the measured warp search (H's vertices, interior
+ * points) with bisector receivers, and the max sigma of a matrix on it. */
+size_t sw_measure_set_make(const swarp_camera* cam, const swarp_light* light, const swarp_vec3* h,
+                           size_t nh, swarp_vec3* pts, swarp_vec3* normals, size_t cap);
+double sw_measure_set_sigma(const swarp_camera* cam, const swarp_mat4* matrix, const swarp_setup_options* o,
+                            const swarp_vec3* pts, const swarp_vec3* normals, size_t n);
 
 #endif

@@ -50,7 +50,7 @@ static void sw_warp_matrix(double eps, double ymin, double d, double cx, double 
 
 static swarp_status sw_check_warp_options(const swarp_warp_options* o) {
     if (!sw_reserved_zero(o->_reserved, 4)) return SWARP_ERR_RESERVED_NONZERO;
-    if ((uint32_t)o->param > (uint32_t)SWARP_WARP_PARAM_USER) return SWARP_ERR_UNKNOWN_ENUM;
+    if ((uint32_t)o->param > (uint32_t)SWARP_WARP_PARAM_MEASURED) return SWARP_ERR_UNKNOWN_ENUM;
     if ((uint32_t)o->center > (uint32_t)SWARP_WARP_CENTER_NEAREST_VERTEX) return SWARP_ERR_UNKNOWN_ENUM;
     if (o->param == SWARP_WARP_PARAM_USER) {
         if (isnan(o->n_user)) return SWARP_ERR_NON_FINITE;
@@ -88,6 +88,7 @@ static swarp_status sw_warp_n(const swarp_warp_options* o, double d, double z0, 
     double n = INFINITY;
     switch (o->param) {
         case SWARP_WARP_PARAM_DEFAULT:
+        case SWARP_WARP_PARAM_MEASURED: /* no region here: the search's start, n_opt */
         case SWARP_WARP_PARAM_NOPT:
             if (!sw_z_grows(z0, z1, zerr)) break;
             s = swarp_warp_nopt(d, z0, z1, &n); /* [RHS] (3.2) */

@@ -656,6 +656,142 @@ static swarp_status sw_check_points_capacity(const swarp_polyhedron* B, const sw
     return SWARP_OK;
 }
 
+/* The measured warp search (SWARP_WARP_PARAM_MEASURED).  The warp
+ * strength is searched in t = n_opt / (n_opt + n'), which maps n' in
+ * (0, +inf] monotonically onto [0, 1): t = 0 is the uniform map, t = 1/2
+ * is n_opt [RHS] (3.2).  Over t the error of the warped map changes
+ * smoothly (P's entries are rational in n'), and on ordinary scenes has one
+ * minimum between the over-warped end (far receivers starve) and the
+ * uniform end (near receivers starve); golden-section search finds it
+ * without derivatives in a fixed number of setups.  SW_SEARCH_T_MAX keeps
+ * n' >= n_opt / 9: stronger warps put the near plane at the light's
+ * projection centre and only lose.  SW_SEARCH_STEPS golden steps shrink the
+ * bracket to 0.9 * 0.618^10 = 0.007 in t (n' within 3 % around n_opt);
+ * every matrix evaluated is a candidate, so non-unimodal errors still
+ * return the best evaluated, never worse than the start. */
+#define SW_SEARCH_T_MAX 0.9
+#define SW_SEARCH_STEPS 10
+/* A candidate replaces the best so far only when its sigma is lower by
+ * more than this fraction: sigma carries rounding of about 1e-13 relative
+ * (its sampling is fixed, the matrices differ by rounding only between
+ * rounding modes), so near-ties between very different matrices keep the
+ * earlier one under every rounding mode instead of flipping. */
+#define SW_SEARCH_GAIN_REL 1e-6
+/* the cheap set's capacity: two points per vertex of H plus the centroid */
+#define SW_SEARCH_SET_MAX (2 * SWARP_BODY_MAX_POINTS + 1)
+
+typedef struct sw_search_in {
+    const swarp_camera* cam;
+    const swarp_light* light;
+    const swarp_aabb* scene;
+    const swarp_polyhedron* B;
+    const swarp_polyhedron* H;
+    double near, far;
+    swarp_vec3 eye;
+    const sw_follow* fw;
+} sw_search_in;
+
+typedef struct sw_search {
+    const sw_search_in* in;
+    swarp_setup_options o; /* param USER, n_user set per candidate */
+    double n0;             /* n_opt (eye units), the start */
+    swarp_vec3 pts[SW_SEARCH_SET_MAX], nrm[SW_SEARCH_SET_MAX];
+    size_t npts;
+    swarp_setup_result best;
+    swarp_status best_info;
+    double best_t, best_sigma;
+} sw_search;
+
+static double sw_search_n(const sw_search* q, double t) { return t > 0.0 ? q->n0 * (1.0 - t) / t : INFINITY; }
+
+/* the setup at t; its cheap-set sigma (+inf for a failed setup) */
+static double sw_search_eval(sw_search* q, double t, swarp_setup_result* r, swarp_status* info) {
+    const sw_search_in* in = q->in;
+    q->o.n_user = sw_search_n(q, t);
+    *info = sw_setup_points(in->cam, in->light, in->B->vertices, in->B->vertex_count, in->B, in->H->vertices,
+                            in->H->vertex_count, in->near, in->far, &q->o, in->eye, in->fw, r);
+    if (swarp_status_is_error(*info)) return INFINITY;
+    return sw_measure_set_sigma(in->cam, &r->matrix, &q->o, q->pts, q->nrm, q->npts);
+}
+
+/* evaluates t and keeps it when strictly better than the best so far */
+static double sw_search_try(sw_search* q, double t) {
+    swarp_setup_result r;
+    swarp_status info;
+    const double sigma = sw_search_eval(q, t, &r, &info);
+    if (sigma < q->best_sigma * (1.0 - SW_SEARCH_GAIN_REL)) q->best = r, q->best_info = info, q->best_t = t, q->best_sigma = sigma;
+    return sigma;
+}
+
+/* golden-section search of the cheap-set sigma over t in [0, SW_SEARCH_T_MAX] */
+static void sw_search_golden(sw_search* q) {
+    const double g = 0.5 * (sqrt(5.0) - 1.0);
+    double a = 0.0, b = SW_SEARCH_T_MAX;
+    double c = b - g * (b - a), d = a + g * (b - a);
+    double fc = sw_search_try(q, c), fd = sw_search_try(q, d);
+    for (int i = 0; i < SW_SEARCH_STEPS; ++i) {
+        if (fc <= fd) {
+            b = d, d = c, fd = fc;
+            c = b - g * (b - a);
+            fc = sw_search_try(q, c);
+        } else {
+            a = c, c = d, fc = fd;
+            d = a + g * (b - a);
+            fd = sw_search_try(q, d);
+        }
+    }
+}
+
+/* With the measurement on, the search's choice gets the full
+ * swarp_measure_max as its report.  The choice itself stays the cheap
+ * set's: its points are fixed by H, so under every rounding mode the same
+ * candidate wins, while the full measurement of a region that is flat (a
+ * box face in one plane) rejects or keeps lattice points on a rounding and
+ * would pick between candidates by that rounding. */
+static void sw_search_report(sw_search* q, swarp_setup_result* out, swarp_status* info) {
+    const sw_search_in* in = q->in;
+    *out = q->best;
+    *info = q->best_info;
+    sw_measure_setup(in->cam, in->near, in->far, in->light, in->scene, &out->matrix, &q->o, &out->measured);
+}
+
+static swarp_status sw_setup_measured(const sw_search_in* in, const swarp_setup_options* o,
+                                      swarp_setup_result* out) {
+    sw_search q;
+    q.in = in;
+    q.o = *o;
+    q.o.param = SWARP_WARP_PARAM_NOPT;
+    q.o.skip_measure = 1;
+    swarp_setup_result start;
+    swarp_status start_info = sw_setup_points(in->cam, in->light, in->B->vertices, in->B->vertex_count, in->B,
+                                              in->H->vertices, in->H->vertex_count, in->near, in->far, &q.o,
+                                              in->eye, in->fw, &start);
+    if (swarp_status_is_error(start_info)) return start_info;
+    q.n0 = start.n_eye;
+    if (!(q.n0 < INFINITY) || !(q.n0 > 0.0)) { /* n_opt is uniform already: nothing to search */
+        start.measured.samples = 0;
+        sw_measure_setup(in->cam, in->near, in->far, in->light, in->scene, &start.matrix, o, &start.measured);
+        *out = start;
+        return start_info;
+    }
+    q.o.param = SWARP_WARP_PARAM_USER;
+    q.npts = sw_measure_set_make(in->cam, in->light, in->H->vertices, in->H->vertex_count, q.pts, q.nrm,
+                                 SW_SEARCH_SET_MAX);
+    q.best = start, q.best_info = start_info, q.best_t = 0.5;
+    q.best_sigma = sw_measure_set_sigma(in->cam, &start.matrix, &q.o, q.pts, q.nrm, q.npts);
+    sw_search_try(&q, 0.0); /* uniform, the bracket's end the golden points never reach */
+    sw_search_golden(&q);
+    if (o->skip_measure) {
+        *out = q.best;
+        memset(&out->measured, 0, sizeof out->measured);
+        return q.best_info;
+    }
+    q.o.skip_measure = 0;
+    swarp_status info;
+    sw_search_report(&q, out, &info);
+    return info;
+}
+
 /* cam, light, scene: camera-relative (eye at the origin); eye: the world
  * eye, folded back into the results */
 static swarp_status sw_setup_range(const swarp_camera* cam, const swarp_light* light, const swarp_aabb* scene,
@@ -686,12 +822,20 @@ static swarp_status sw_setup_range(const swarp_camera* cam, const swarp_light* l
         Hp = &HL;
     }
     swarp_setup_result res;
-    swarp_status info = sw_setup_points(cam, light, B.vertices, B.vertex_count, &B, Hp->vertices, Hp->vertex_count, near,
-                                        far, o, eye, fw, &res);
-    if (swarp_status_is_error(info)) return info;
-    /* measured camera-relative (the coordinates B was built in), the
-     * worst point folded back with the matrices */
-    sw_measure_setup(cam, near, far, light, scene, &res.matrix, o, &res.measured);
+    const sw_search_in in = {cam, light, scene, &B, Hp, near, far, eye, fw};
+    swarp_status info;
+    if (sw_resolve_technique(o->technique) == SWARP_TECHNIQUE_LISPSM &&
+        (o->param == SWARP_WARP_PARAM_DEFAULT || o->param == SWARP_WARP_PARAM_MEASURED)) {
+        info = sw_setup_measured(&in, o, &res);
+        if (swarp_status_is_error(info)) return info;
+    } else {
+        info = sw_setup_points(cam, light, B.vertices, B.vertex_count, &B, Hp->vertices, Hp->vertex_count, near,
+                               far, o, eye, fw, &res);
+        if (swarp_status_is_error(info)) return info;
+        /* measured camera-relative (the coordinates B was built in), the
+         * worst point folded back with the matrices */
+        sw_measure_setup(cam, near, far, light, scene, &res.matrix, o, &res.measured);
+    }
     if (!sw_fold_result(&res, eye)) return SWARP_ERR_DEGENERATE;
     if (res.measured.samples) res.measured.at = sw_add(res.measured.at, eye);
     if (clamped) info = sw_info_merge(info, SWARP_INFO_CASTERS_CLAMPED);

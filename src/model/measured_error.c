@@ -452,3 +452,48 @@ void sw_measure_setup(const swarp_camera* cam, double z_near, double z_far, cons
     swarp_status s = swarp_measure_max(cam, z_near, z_far, light, scene, matrix, &r, NULL, &m);
     if (s == SWARP_OK || s == SWARP_INFO_MEASURE_SINGULAR) *out = m;
 }
+
+/* The cheap set of the warp search: H's vertices, its vertex centroid and
+ * the midpoints between the centroid and each vertex, with their bisector
+ * receivers.  The receivers depend on the eye, the light and the point
+ * only, never on the matrix, so they are built once for all the matrices
+ * a search compares.  Returns the number of points written (<= cap). */
+size_t sw_measure_set_make(const swarp_camera* cam, const swarp_light* light, const swarp_vec3* h,
+                           size_t nh, swarp_vec3* pts, swarp_vec3* normals, size_t cap) {
+    sw_region g;
+    memset(&g, 0, sizeof g);
+    sw_camera_basis(cam, &g.s.f, &g.s.r, &g.s.u);
+    g.s.eye = cam->eye;
+    g.light = *light;
+    if (light->type != SWARP_LIGHT_POINT) sw_normalize(light->direction, &g.light.direction);
+    swarp_vec3 ctr = {0.0, 0.0, 0.0};
+    for (size_t i = 0; i < nh; ++i) ctr = sw_add(ctr, h[i]);
+    if (nh) ctr = sw_scale(ctr, 1.0 / (double)nh);
+    size_t n = 0;
+    for (size_t i = 0; i < nh && n + 2 <= cap; ++i) {
+        pts[n++] = h[i];
+        pts[n++] = sw_scale(sw_add(h[i], ctr), 0.5);
+    }
+    if (nh && n < cap) pts[n++] = ctr;
+    for (size_t i = 0; i < n; ++i) normals[i] = sw_bisector(&g, pts[i]);
+    return n;
+}
+
+/* max sigma of matrix over the cheap set (points behind the eye are not
+ * receivers and are skipped); +inf where the map is singular. */
+double sw_measure_set_sigma(const swarp_camera* cam, const swarp_mat4* matrix, const swarp_setup_options* o,
+                            const swarp_vec3* pts, const swarp_vec3* normals, size_t n) {
+    swarp_measure_res r;
+    sw_setup_map_size(o, &r.map_width, &r.map_height);
+    r.screen_width = o->screen_width ? o->screen_width : SW_DEFAULT_SCREEN_W;
+    r.screen_height = o->screen_height ? o->screen_height : SW_DEFAULT_SCREEN_H;
+    sw_screen s;
+    sw_screen_make(cam, &r, &s);
+    double worst = 0.0;
+    for (size_t i = 0; i < n; ++i) {
+        swarp_texel_error e;
+        sw_measure_one(&s, matrix, &r, pts[i], normals[i], &e);
+        if (!(e.flags & SWARP_TEXEL_BEHIND_EYE) && e.sigma > worst) worst = e.sigma;
+    }
+    return worst;
+}

@@ -206,7 +206,7 @@ MUT(o_pad0, in->opt._pad0 = 1)
 MUT(o_pad1, in->opt._pad1 = 2)
 MUT(o_technique, in->opt.technique = (swarp_technique)4)
 MUT(o_technique_force, in->opt.technique = SWARP_TECHNIQUE_FORCE_I32)
-MUT(o_param, in->opt.param = (swarp_warp_param)6)
+MUT(o_param, in->opt.param = (swarp_warp_param)7)
 MUT(o_center, in->opt.center = (swarp_warp_center)3)
 MUT(o_depth, in->opt.depth_range = (swarp_depth_range)4)
 MUT(o_pancake, in->opt.pancake = 2)
@@ -298,7 +298,7 @@ static const struct {
     {"options _pad1", o_pad1, SWARP_ERR_RESERVED_NONZERO, NO_PLAN},
     {"options technique 4", o_technique, SWARP_ERR_UNKNOWN_ENUM, NO_PLAN | NO_STABLE},
     {"options technique FORCE_I32", o_technique_force, SWARP_ERR_UNKNOWN_ENUM, NO_PLAN | NO_STABLE},
-    {"options param 6", o_param, SWARP_ERR_UNKNOWN_ENUM, NO_PLAN},
+    {"options param 7", o_param, SWARP_ERR_UNKNOWN_ENUM, NO_PLAN},
     {"options center 3", o_center, SWARP_ERR_UNKNOWN_ENUM, NO_PLAN},
     {"options depth_range 4", o_depth, SWARP_ERR_UNKNOWN_ENUM, NO_PLAN},
     {"options pancake 2", o_pancake, SWARP_ERR_OUT_OF_RANGE, NO_PLAN},

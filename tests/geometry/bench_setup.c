@@ -80,6 +80,7 @@ int main(int argc, char** argv) {
         swarp_technique t;
         swarp_warp_param p;
     } techs[] = {{"uniform", SWARP_TECHNIQUE_UNIFORM, SWARP_WARP_PARAM_DEFAULT},
+                 {"lispsm (default: measured)", SWARP_TECHNIQUE_LISPSM, SWARP_WARP_PARAM_MEASURED},
                  {"lispsm (n_opt)", SWARP_TECHNIQUE_LISPSM, SWARP_WARP_PARAM_NOPT},
                  {"lispsm (n_repar)", SWARP_TECHNIQUE_LISPSM, SWARP_WARP_PARAM_NREPAR},
                  {"lispsm (gmnpr)", SWARP_TECHNIQUE_LISPSM, SWARP_WARP_PARAM_GMNPR},

@@ -410,6 +410,7 @@ START_TEST(model_agreement_overhead) {
         swarp_setup_options o;
         memset(&o, 0, sizeof o);
         o.technique = techs[t];
+        o.param = SWARP_WARP_PARAM_NOPT; /* the closed form the model describes */
         o.map_width = o.map_height = (uint32_t)res;
         o.screen_width = (uint32_t)sw;
         o.screen_height = (uint32_t)sh;
@@ -499,6 +500,7 @@ START_TEST(continuity_light_rotation) {
         swarp_setup_options o;
         memset(&o, 0, sizeof o);
         o.technique = techs[t];
+        o.param = SWARP_WARP_PARAM_NOPT; /* the measured default is piecewise continuous only */
         swarp_setup_result prev, cur;
         double worst = 0, worst_deg = 0, worst_refined = 0;
         int have_prev = 0, parallel_seen = 0, uniform_seen = 0, refined = 0, prev_k = 0, prev_zone = 0,
@@ -860,6 +862,7 @@ START_TEST(hard_light_parallel_antiparallel) {
     swarp_setup_options o;
     memset(&o, 0, sizeof o);
     o.technique = SWARP_TECHNIQUE_LISPSM;
+    o.param = SWARP_WARP_PARAM_NOPT; /* n_opt grows monotonically toward parallel light */
     swarp_setup_result r;
     swarp_status s = swarp_setup(&c.cam, &c.light, &c.box, &o, &r, NULL, 0, NULL);
     ck_assert_int_eq(s, SWARP_INFO_WARP_UNIFORM); /* the warp faded */

@@ -192,6 +192,7 @@ START_TEST(model_equals_geometry_setup_at_overhead_light) {
                 swarp_setup_options o;
                 memset(&o, 0, sizeof o);
                 o.technique = techs[wi];
+                o.param = SWARP_WARP_PARAM_NOPT; /* the planner's model is n_opt's */
                 o.map_width = 2048;
                 o.screen_width = 1024;
                 o.screen_height = 768;

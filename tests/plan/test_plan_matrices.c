@@ -56,6 +56,7 @@ static swarp_cascade_options engine_options(const swarp_scene_needs* n, const sw
     case SWARP_PLAN_WARP_PSM: o.setup.technique = SWARP_TECHNIQUE_PSM; break;
     default: o.setup.technique = SWARP_TECHNIQUE_LISPSM; break;
     }
+    if (p->warp == SWARP_PLAN_WARP_LISPSM_NOPT) o.setup.param = SWARP_WARP_PARAM_NOPT;
     if (p->warp == SWARP_PLAN_WARP_LISPSM_NREPAR) o.setup.param = SWARP_WARP_PARAM_NREPAR;
     if (p->warp == SWARP_PLAN_WARP_LISPSM_GMNPR) o.setup.param = SWARP_WARP_PARAM_GMNPR;
     if (p->warp == SWARP_PLAN_WARP_LISPSM_PSEUDO) {

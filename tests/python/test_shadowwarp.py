@@ -456,13 +456,23 @@ class MeasuredInResults(unittest.TestCase):
             "screen_width": 1280, "screen_height": 720}
     RES = dict(screen_width=1280, screen_height=720, map_width=1024, map_height=1024)
 
-    def test_setup_result_measured_is_measure_max(self):
+    def test_default_measured_is_its_matrix_measure_max(self):
+        # the default (measured warp) measures camera-relative: the same
+        # maximum up to the rounding of coordinates of size |eye|
         cam = scene_camera()
         res = sw.setup(cam, SUN, SCENE_BOX, self.OPTS).result
         m = sw.measure_max(cam, res.view_near, res.view_far, SUN, SCENE_BOX, res.matrix, self.RES)
         self.assertGreater(res.measured.samples, 0)
+        self.assertLessEqual(abs(res.measured.max_sigma - m.max_sigma), 1e-9 * m.max_sigma)
+
+    def test_setup_result_measured_is_measure_max(self):
+        cam = scene_camera()
+        nopt = dict(self.OPTS, param=sw.WARP_PARAM_NOPT)  # a closed form: search-free
+        res = sw.setup(cam, SUN, SCENE_BOX, nopt).result
+        m = sw.measure_max(cam, res.view_near, res.view_far, SUN, SCENE_BOX, res.matrix, self.RES)
+        self.assertGreater(res.measured.samples, 0)
         self.assertEqual(bytes(res.measured), bytes(m))
-        off = sw.setup(cam, SUN, SCENE_BOX, dict(self.OPTS, skip_measure=1)).result
+        off = sw.setup(cam, SUN, SCENE_BOX, dict(nopt, skip_measure=1)).result
         self.assertEqual(off.measured.samples, 0)
         self.assertEqual(rows(off.matrix), rows(res.matrix))  # the measurement changes no matrix
 

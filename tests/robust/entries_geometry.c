@@ -262,7 +262,7 @@ static void expect_parts(swr_ctx* c, const scene_args* s, int uses_cam_range, in
     }
     if ((parts & X_OPT) && s->use_opt) {
         const swarp_setup_options* o = &s->opt;
-        if ((int)o->technique < 0 || (int)o->technique > 3 || (int)o->param < 0 || (int)o->param > 5 ||
+        if ((int)o->technique < 0 || (int)o->technique > 3 || (int)o->param < 0 || (int)o->param > 6 ||
             (int)o->center < 0 || (int)o->center > 2 || (int)o->depth_range < 0 || (int)o->depth_range > 3)
             swr_expect(c, SWARP_ERR_UNKNOWN_ENUM);
         if (o->_reserved[0]) swr_expect(c, SWARP_ERR_RESERVED_NONZERO);
@@ -1608,7 +1608,7 @@ static void e_warp_lispsm(swr_ctx* c) {
     for (size_t i = 0; i < n; ++i) FIN(c, pts[i].z);
     if (n == 0) swr_expect(c, SWARP_ERR_INVALID_ARGUMENT), swr_domain(c, SWARP_ERR_NULL_POINTER);
     if (use_o) {
-        if ((int)o.param < 0 || (int)o.param > 5 || (int)o.center < 0 || (int)o.center > 2) swr_expect(c, SWARP_ERR_UNKNOWN_ENUM);
+        if ((int)o.param < 0 || (int)o.param > 6 || (int)o.center < 0 || (int)o.center > 2) swr_expect(c, SWARP_ERR_UNKNOWN_ENUM);
         for (int i = 0; i < 4; ++i)
             if (o._reserved[i]) swr_expect(c, SWARP_ERR_RESERVED_NONZERO);
         if ((int)o.param == 5 && !(o.n_user > 0)) swr_expect(c, SWARP_ERR_OUT_OF_RANGE), swr_domain(c, SWARP_ERR_NON_FINITE);
