@@ -372,8 +372,8 @@ static int sw_clip_light_near_points(const sw_light_space* ls, const swarp_vec3*
 }
 
 /* The points the map must see: a point light cuts B at its near plane
- * (the apex region; B_poly clipped when given, else the points in front
- * dropped) into Bk, drops the receivers H in front of it (into Hk) and
+ * (the apex region; B_poly clipped when given, else the point set) into
+ * Bk, the receivers H the same way (into Hk) and
  * narrows light_near to the depth actually covered; a directional light
  * uses B and H as they are. */
 static swarp_status sw_cut_light_near(const sw_light_space* ls, const swarp_vec3* B, size_t nb,
@@ -389,16 +389,15 @@ static swarp_status sw_cut_light_near(const sw_light_space* ls, const swarp_vec3
         if (B_poly) k = sw_clip_light_near_body(ls, B_poly, res->light_near, Bk);
         else if (!sw_clip_light_near_points(ls, B, nb, res->light_near, Bk, &k)) return SWARP_ERR_CAPACITY;
         *nbk = k;
-        /* the receivers for pancaking, with the same cut */
-        k = 0;
-        for (size_t i = 0; H && i < nh && k < SWARP_BODY_MAX_POINTS; ++i) {
-            swarp_vec4 h = sw_xform_point(&ls->L, H[i]);
-            if (-h.z < res->light_near) continue;
-            Hk[k++] = H[i];
-        }
-        *nhk = k;
         *Bp = Bk;
+        /* the receivers for pancaking, cut the same way: their section by
+         * the plane bounds the depth of the receivers just behind it (only
+         * dropping the vertices in front left those out of the depth
+         * window).  When the crossings do not fit, B's cut, a superset. */
+        k = 0;
         *Hp = Hk;
+        if (H && !sw_clip_light_near_points(ls, H, nh, res->light_near, Hk, &k)) *Hp = Bk, k = *nbk;
+        *nhk = k;
     }
     if (*nbk == 0) return SWARP_ERR_BODY_EMPTY;
     if (ls->point) {

@@ -338,6 +338,71 @@ static void cv_pin_replayed_scenes(long* fails) {
             }
 }
 
+/* Pancaking with a spot light near the eye: the receivers H are cut at the
+ * light's near plane like B, so the depth window starts at their section
+ * by the plane.  Three scenes of the sweep (seed 7; a spot 0.43..0.76 from
+ * the eye along the view axis, one of them 5.2e5 from the origin) whose
+ * receivers just behind the plane were 1.3..31 depth windows in front of
+ * the window when H's vertices in front of the plane were only dropped
+ * (SWARP_INFO_LIGHT_NEAR_CLIPPED, uniform and LiSPSM); each is checked
+ * with both techniques and both depth ranges. */
+static void cv_pin_spot_pancake_receivers(long* fails) {
+    swarp_camera c[3];
+    swarp_light l[3];
+    swarp_aabb b[3];
+    memset(c, 0, sizeof c);
+    memset(l, 0, sizeof l);
+    c[0] = (swarp_camera){{0x1.f2ee0e3ded528p+1, 0x1.50881f9d3749ep+3, 0x1.82e4630993ac8p+3},
+                          {0x1.801b343693a18p-1, -0x1.ad1c11efcdd6ep-1, -0x1.3631b28249a3p-4},
+                          {0, 1, 0}, 0x1.f5719d2d6b6eap+0, 0x1.1282b46c75954p+1, 0x1.e77b962b82c75p-6,
+                          0x1.2565ce2054218p+8, {0}};
+    l[0].position = (swarp_vec3){0x1.00db2b047760bp+2, 0x1.3fd2edc49ee5bp+3, 0x1.86eec50541ea1p+3};
+    l[0].cone_angle = 0x1.af5cbabea2926p-2;
+    b[0] = (swarp_aabb){{-0x1.daf285078fe66p+5, -0x1.1f1368480b79p+2, -0x1.6a37255f9896cp+2},
+                        {0x1.2a68f54f8cf5ep+5, 0x1.934ca9c0a7feep+4, 0x1.8a42761f7fb42p+4}};
+    c[1] = (swarp_camera){{0x1.7cf245d70bb5p+3, 0x1.1e45b8c933816p+4, -0x1.3ff35140896bp+2},
+                          {0x1.a9f620adb0b14p-2, -0x1.fce7fe997df04p-2, 0x1.67d10fe92519cp-1},
+                          {0, 1, 0}, 0x1.d804f93b869a4p+0, 0x1.e13dfdd9ffce7p+0, 0x1.42d3cdfed459cp-6,
+                          0x1.a4ab0c78d7592p+3, {0}};
+    l[1].position = (swarp_vec3){0x1.76fc8073c04a5p+3, 0x1.1820dbaab5723p+4, -0x1.176c46cbc1ca8p+2};
+    l[1].cone_angle = 0x1.1e7802dd609cep+0;
+    b[1] = (swarp_aabb){{-0x1.3b20456fcab71p+6, -0x1.991fea1d35eabp+1, -0x1.0edac30c170eep+7},
+                        {0x1.df01611be19dfp+7, 0x1.dc7598dd110dcp+4, 0x1.6f8a9564c19c9p+6}};
+    c[2] = (swarp_camera){{0x1.fc81c7bf0c68p+18, 0x1.cec0682beef48p+3, -0x1.fc819f5f279c3p+18},
+                          {0x1.da604e03c3c9ep-1, -0x1.c09850cc4bafp-3, 0x1.8a8ca6df40858p-3},
+                          {0, 1, 0}, 0x1.10a364133432cp+0, 0x1.3f9bb299a21ecp+1, 0x1.57c17f60681fbp-4,
+                          0x1.fbbd8c3197807p+5, {0}};
+    l[2].position = (swarp_vec3){0x1.fc81e0ed7dc22p+18, 0x1.cfcb67df2e22cp+3, -0x1.fc81aa6428237p+18};
+    l[2].cone_angle = 0x1.603cb332ecb7cp-2;
+    b[2] = (swarp_aabb){{0x1.fc7d726f33e86p+18, -0x1.2b1fe85d4bcbcp+2, -0x1.fc8a2e5ccbc1ep+18},
+                        {0x1.fc8811adcb8d9p+18, 0x1.337e416b76a9ap+4, -0x1.fc7eba54a1bc2p+18}};
+    for (int i = 0; i < 3; ++i) {
+        l[i].type = SWARP_LIGHT_POINT;
+        l[i].direction = c[i].dir; /* the spot looks along the view */
+        for (int t = SWARP_TECHNIQUE_UNIFORM; t <= SWARP_TECHNIQUE_LISPSM; ++t)
+            for (int dr = 1; dr <= 2; ++dr) {
+                swarp_setup_options o;
+                memset(&o, 0, sizeof o);
+                o.technique = (swarp_technique)t;
+                o.depth_range = (swarp_depth_range)dr;
+                o.pancake = 1;
+                swarp_setup_result r;
+                swarp_status st = swarp_setup(&c[i], &l[i], &b[i], &o, &r, NULL, 0, NULL);
+                if (st != SWARP_INFO_LIGHT_NEAR_CLIPPED) {
+                    cv_pin_fail(fails, "spot_pancake_receivers_in_depth_range", "status", st);
+                    continue;
+                }
+                cc_result q = cc_check(&c[i], c[i].z_near, c[i].z_far, &l[i], &b[i], &r.matrix,
+                                       (swarp_depth_range)dr, 1, st, 9, 17, 400, 1);
+                if (!cc_ok(&q)) {
+                    cv_pin_fail(fails, "spot_pancake_receivers_in_depth_range", "not covered", st);
+                    cc_print(stdout, &q);
+                    printf("\n");
+                }
+            }
+    }
+}
+
 int main(int argc, char** argv) {
     const long count = argc > 1 ? atol(argv[1]) : 300;
     uint64_t s = argc > 2 ? strtoull(argv[2], NULL, 0) : 1;
@@ -361,6 +426,7 @@ int main(int argc, char** argv) {
         cv_pin_psm_extreme_frusta(&pinned);
         cv_pin_stabilized_clamped(&pinned);
         cv_pin_replayed_scenes(&pinned);
+        cv_pin_spot_pancake_receivers(&pinned);
     }
     printf("coverage: %ld scenes, %ld calls, %ld maps checked, %ld violations; pinned inputs: %ld failures\n", count,
            S.calls, S.checked, S.failed, pinned);
