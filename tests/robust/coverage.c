@@ -403,6 +403,72 @@ static void cv_pin_spot_pancake_receivers(long* fails) {
     }
 }
 
+/* PSM refuses a frustum thinner than 1e-4 (tan of either half-angle, or
+ * (far - near)/near): its post-perspective space rounds like eps/t^2 there.
+ * Two scenes of the sweep (seed 7) that PSM mapped with SWARP_OK before:
+ * fovy 4.4e-5 under a box with max.z = DBL_MAX (casters 4.4e-5 depth
+ * windows out) and far = near (1 + 1.4e-7) with pancaking (2.4e-6 out);
+ * both now SWARP_ERR_DEGENERATE with the output untouched.  At twice the
+ * threshold (the pinned camera with tan(fovy/2) = 2e-4, aspect 1, or
+ * far = near (1 + 2e-4)) PSM still maps and covers. */
+static void cv_pin_psm_thin_frustum(long* fails) {
+    cv_case k[2];
+    memset(k, 0, sizeof k);
+    k[0].cam = (swarp_camera){{-0x1.dc69f8a158c8p-3, 0x1.7d414f0a9c1bap+3, -0x1.7e0387813b7aap+3},
+                              {0x1.71627d61168d4p-1, 0x1.06305b458aa1p-2, 0x1.e4a503bad2cdep-1},
+                              {0, 1, 0}, 0x1.7574797b75b1fp-15, 0x1.a437ba6cb17d2p-1, 0x1.aa05c84f602d3p-7,
+                              0x1.288f01cd85293p+4, {0}};
+    k[0].light.direction = (swarp_vec3){-0x1.f733d7dd6ae28p-1, -0x1.6619cc9bf0f8p-2, -0x1.af5bfc3d15298p-3};
+    k[0].box = (swarp_aabb){{-0x1.6818747c4c6ebp+4, -0x1.0c2a536590106p-1, -0x1.16f0d6bdcc0e9p+4},
+                            {0x1.c10c146c5f379p+3, 0x1.5fd350257c6bdp+4, 0x1.fffffffffffffp+1023}};
+    k[0].o.depth_range = SWARP_DEPTH_ZERO_TO_ONE;
+    k[1].cam = (swarp_camera){{-0x1.7e1cab7a0037p+1, 0x1.a6bf3cd2312a6p+1, -0x1.360c8189fd1c2p+4},
+                              {-0x1.d3820aa52d0fp-1, 0x1.8f2a889b8fb3p-1, -0x1.c51092e0852p-9},
+                              {0, 1, 0}, 0x1.36d34f01ddf08p+0, 0x1.1bf552fcf4ffdp+1, 0x1.429524b595908p-6,
+                              0x1.429524e4fe2e2p-6, {0}};
+    k[1].light.direction = (swarp_vec3){-0x1.05bb53c1a39dp-2, -0x1.8a38546dec758p-2, 0x1.3abc2b11fdc2ep-1};
+    k[1].box = (swarp_aabb){{-0x1.000aab2b4c7c4p+6, -0x1.f6d83b7a47807p+1, -0x1.88b7dae74c4d8p+6},
+                            {0x1.7038494445991p+4, 0x1.ede2640be26e3p+2, -0x1.759467133361p+2}};
+    k[1].o.depth_range = SWARP_DEPTH_ZERO_TO_ONE;
+    k[1].o.pancake = 1;
+    for (int i = 0; i < 2; ++i) {
+        k[i].light.type = SWARP_LIGHT_DIRECTIONAL;
+        k[i].o.technique = SWARP_TECHNIQUE_PSM;
+        swarp_setup_result r;
+        memset(&r, 0x5a, sizeof r);
+        const swarp_setup_result canary = r;
+        swarp_status st = swarp_setup(&k[i].cam, &k[i].light, &k[i].box, &k[i].o, &r, NULL, 0, NULL);
+        if (st != SWARP_ERR_DEGENERATE) cv_pin_fail(fails, "psm_thin_frustum_refused", "not refused", st);
+        else if (memcmp(&r, &canary, sizeof r) != 0) cv_pin_fail(fails, "psm_thin_frustum_refused", "output written", st);
+    }
+    swarp_light D;
+    memset(&D, 0, sizeof D);
+    D.type = SWARP_LIGHT_DIRECTIONAL;
+    D.direction = (swarp_vec3){0.3, -1, 0.2};
+    const swarp_aabb S0 = {{-50, -1, -200}, {50, 10, 50}};
+    for (int which = 0; which < 2; ++which) {
+        swarp_camera c = cv_pin_camera();
+        if (which == 0) c.fovy = 2 * atan(2e-4), c.aspect = 1;
+        if (which == 1) c.z_far = c.z_near * (1 + 2e-4);
+        swarp_setup_options o;
+        memset(&o, 0, sizeof o);
+        o.technique = SWARP_TECHNIQUE_PSM;
+        swarp_setup_result r;
+        swarp_status st = swarp_setup(&c, &D, &S0, &o, &r, NULL, 0, NULL);
+        if (swarp_status_is_error(st)) {
+            cv_pin_fail(fails, "psm_above_thin_threshold_covered", "refused", st);
+            continue;
+        }
+        cc_result q = cc_check(&c, c.z_near, c.z_far, &D, &S0, &r.matrix, SWARP_DEPTH_NEG_ONE_TO_ONE, 0, st, 9, 17,
+                               400, 1);
+        if (!cc_ok(&q)) {
+            cv_pin_fail(fails, "psm_above_thin_threshold_covered", "not covered", st);
+            cc_print(stdout, &q);
+            printf("\n");
+        }
+    }
+}
+
 int main(int argc, char** argv) {
     const long count = argc > 1 ? atol(argv[1]) : 300;
     uint64_t s = argc > 2 ? strtoull(argv[2], NULL, 0) : 1;
@@ -427,6 +493,7 @@ int main(int argc, char** argv) {
         cv_pin_stabilized_clamped(&pinned);
         cv_pin_replayed_scenes(&pinned);
         cv_pin_spot_pancake_receivers(&pinned);
+        cv_pin_psm_thin_frustum(&pinned);
     }
     printf("coverage: %ld scenes, %ld calls, %ld maps checked, %ld violations; pinned inputs: %ld failures\n", count,
            S.calls, S.checked, S.failed, pinned);
