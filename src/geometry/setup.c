@@ -373,13 +373,13 @@ static int sw_clip_light_near_points(const sw_light_space* ls, const swarp_vec3*
 
 /* The points the map must see: a point light cuts B at its near plane
  * (the apex region; B_poly clipped when given, else the point set) into
- * Bk, the receivers H the same way (into Hk) and
+ * Bk, replaces the receivers H by Bk when the plane cuts them and
  * narrows light_near to the depth actually covered; a directional light
  * uses B and H as they are. */
 static swarp_status sw_cut_light_near(const sw_light_space* ls, const swarp_vec3* B, size_t nb,
                                       const swarp_polyhedron* B_poly, const swarp_vec3* H, size_t nh, swarp_vec3* Bk,
-                                      swarp_vec3* Hk, const swarp_vec3** Bp, size_t* nbk, const swarp_vec3** Hp,
-                                      size_t* nhk, swarp_setup_result* res) {
+                                      const swarp_vec3** Bp, size_t* nbk, const swarp_vec3** Hp, size_t* nhk,
+                                      swarp_setup_result* res) {
     *Bp = B;
     *Hp = H;
     *nbk = nb < SWARP_BODY_MAX_POINTS ? nb : SWARP_BODY_MAX_POINTS;
@@ -390,14 +390,15 @@ static swarp_status sw_cut_light_near(const sw_light_space* ls, const swarp_vec3
         else if (!sw_clip_light_near_points(ls, B, nb, res->light_near, Bk, &k)) return SWARP_ERR_CAPACITY;
         *nbk = k;
         *Bp = Bk;
-        /* the receivers for pancaking, cut the same way: their section by
-         * the plane bounds the depth of the receivers just behind it (only
-         * dropping the vertices in front left those out of the depth
-         * window).  When the crossings do not fit, B's cut, a superset. */
-        k = 0;
-        *Hp = Hk;
-        if (H && !sw_clip_light_near_points(ls, H, nh, res->light_near, Hk, &k)) *Hp = Bk, k = *nbk;
-        *nhk = k;
+        /* the receivers for pancaking: H when it lies behind the plane;
+         * when the plane cuts H, B's cut, which holds H's cut (the
+         * receivers just behind the plane are in the depth window; H's own
+         * crossings of the plane need not lie in front of a LiSPSM warp
+         * fitted to B's, and the remaining vertices alone leave them out) */
+        int cut = 0;
+        for (size_t i = 0; H && i < *nhk; ++i) cut |= -sw_xform_point(&ls->L, H[i]).z < res->light_near;
+        *Hp = cut ? Bk : H;
+        *nhk = cut ? *nbk : *nhk;
     }
     if (*nbk == 0) return SWARP_ERR_BODY_EMPTY;
     if (ls->point) {
@@ -476,10 +477,9 @@ static swarp_status sw_setup_lispsm(swarp_technique tech, const swarp_camera* ca
     swarp_status s = sw_light_space_of(cam, light, B, nb, fw, &ls, res, info);
     if (s != SWARP_OK) return s;
     swarp_vec3 Bk[SWARP_BODY_MAX_POINTS + 1];
-    swarp_vec3 Hk[SWARP_BODY_MAX_POINTS];
     const swarp_vec3 *Bp, *Hp;
     size_t nbk, nhk;
-    s = sw_cut_light_near(&ls, B, nb, B_poly, H, nh, Bk, Hk, &Bp, &nbk, &Hp, &nhk, res);
+    s = sw_cut_light_near(&ls, B, nb, B_poly, H, nh, Bk, &Bp, &nbk, &Hp, &nhk, res);
     if (s != SWARP_OK) return s;
     swarp_mat4 P;
     swarp_warp_info wi;
