@@ -338,6 +338,35 @@ static void cv_pin_replayed_scenes(long* fails) {
             }
 }
 
+/* one pinned spot scene with pancaking: uniform and LiSPSM, both depth
+ * ranges, SWARP_INFO_LIGHT_NEAR_CLIPPED and covered (the spot looks along
+ * the view) */
+static void cv_pin_spot_pancake(long* fails, const char* name, const swarp_camera* c, swarp_light* l,
+                                const swarp_aabb* b) {
+    l->type = SWARP_LIGHT_POINT;
+    l->direction = c->dir;
+    for (int t = SWARP_TECHNIQUE_UNIFORM; t <= SWARP_TECHNIQUE_LISPSM; ++t)
+        for (int dr = 1; dr <= 2; ++dr) {
+            swarp_setup_options o;
+            memset(&o, 0, sizeof o);
+            o.technique = (swarp_technique)t;
+            o.depth_range = (swarp_depth_range)dr;
+            o.pancake = 1;
+            swarp_setup_result r;
+            swarp_status st = swarp_setup(c, l, b, &o, &r, NULL, 0, NULL);
+            if (st != SWARP_INFO_LIGHT_NEAR_CLIPPED) {
+                cv_pin_fail(fails, name, "status", st);
+                continue;
+            }
+            cc_result q = cc_check(c, c->z_near, c->z_far, l, b, &r.matrix, (swarp_depth_range)dr, 1, st, 9, 17, 400, 1);
+            if (!cc_ok(&q)) {
+                cv_pin_fail(fails, name, "not covered", st);
+                cc_print(stdout, &q);
+                printf("\n");
+            }
+        }
+}
+
 /* Pancaking with a spot light near the eye: the receivers H are cut at the
  * light's near plane like B, so the depth window starts at their section
  * by the plane.  Three scenes of the sweep (seed 7; a spot 0.43..0.76 from
@@ -376,30 +405,38 @@ static void cv_pin_spot_pancake_receivers(long* fails) {
     l[2].cone_angle = 0x1.603cb332ecb7cp-2;
     b[2] = (swarp_aabb){{0x1.fc7d726f33e86p+18, -0x1.2b1fe85d4bcbcp+2, -0x1.fc8a2e5ccbc1ep+18},
                         {0x1.fc8811adcb8d9p+18, 0x1.337e416b76a9ap+4, -0x1.fc7eba54a1bc2p+18}};
-    for (int i = 0; i < 3; ++i) {
-        l[i].type = SWARP_LIGHT_POINT;
-        l[i].direction = c[i].dir; /* the spot looks along the view */
-        for (int t = SWARP_TECHNIQUE_UNIFORM; t <= SWARP_TECHNIQUE_LISPSM; ++t)
-            for (int dr = 1; dr <= 2; ++dr) {
-                swarp_setup_options o;
-                memset(&o, 0, sizeof o);
-                o.technique = (swarp_technique)t;
-                o.depth_range = (swarp_depth_range)dr;
-                o.pancake = 1;
-                swarp_setup_result r;
-                swarp_status st = swarp_setup(&c[i], &l[i], &b[i], &o, &r, NULL, 0, NULL);
-                if (st != SWARP_INFO_LIGHT_NEAR_CLIPPED) {
-                    cv_pin_fail(fails, "spot_pancake_receivers_in_depth_range", "status", st);
-                    continue;
-                }
-                cc_result q = cc_check(&c[i], c[i].z_near, c[i].z_far, &l[i], &b[i], &r.matrix,
-                                       (swarp_depth_range)dr, 1, st, 9, 17, 400, 1);
-                if (!cc_ok(&q)) {
-                    cv_pin_fail(fails, "spot_pancake_receivers_in_depth_range", "not covered", st);
-                    cc_print(stdout, &q);
-                    printf("\n");
-                }
-            }
+    for (int i = 0; i < 3; ++i) cv_pin_spot_pancake(fails, "spot_pancake_receivers_in_depth_range", &c[i], &l[i], &b[i]);
+}
+
+/* Pancaking with a spot at the eye and far within 2.1e-9 of near: the
+ * receivers' depth range along the axis (1.9e-11, 2.7e-11) is far below what
+ * the world matrix resolves (1e6 times 192 eps of the coordinates' ~20), so
+ * the window is B's cut.  Two scenes of the sweep (seed 7; one under a box
+ * with max.z = 1e19) whose receivers were up to 7.5e-5 and 1.8e-5 of the
+ * window outside it when it was H's range alone. */
+static void cv_pin_spot_at_eye_thin_pancake(long* fails) {
+    swarp_camera c[2];
+    swarp_light l[2];
+    swarp_aabb b[2];
+    memset(c, 0, sizeof c);
+    memset(l, 0, sizeof l);
+    c[0] = (swarp_camera){{-0x1.1f2398fd1363cp+4, 0x1.c8c332a31a209p+3, 0x1.8120f8b0b0528p+1},
+                          {0x1.67e5e560d838p-1, -0x1.a5adcdc29eee8p-1, -0x1.903c72a59fd9p-3},
+                          {0, 1, 0}, 0x1.933ab9dc40415p-1, 0x1.cc31c975b823p+0, 0x1.5ade6c59c1b95p-7,
+                          0x1.5ade6c63f4807p-7, {0}};
+    l[0].cone_angle = 0x1.8c65d6f566cc6p-1;
+    b[0] = (swarp_aabb){{-0x1.9bff52dc28d71p+5, -0x1.378d9083b374bp+2, -0x1.6a379ee9d60dep+5},
+                        {0x1.3983b9bdd3dfep+5, 0x1.c39ddcb030af9p+4, 0x1.04ecf6d775074p+4}};
+    c[1] = (swarp_camera){{-0x1.70d876f23d06p+2, 0x1.2d4931273657cp+4, -0x1.b463e8aa73964p+2},
+                          {0x1.18ae73af29f16p-1, 0x1.c33338ad82008p-2, -0x1.069b5b59afed6p-1},
+                          {0, 1, 0}, 0x1.3c3968837a013p+0, 0x1.7c0cc78121947p+0, 0x1.b57ebc12795dap-7,
+                          0x1.b57ebc2175b6bp-7, {0}};
+    l[1].cone_angle = 0x1.09a3fe838afdep-2;
+    b[1] = (swarp_aabb){{-0x1.cfad3b4ae2a75p+6, -0x1.c452c33bd4494p+1, -0x1.68a32523bf432p+5},
+                        {0x1.d1172838629b3p+7, 0x1.a656beacd7b0ap+4, 0x1.158e460913dp+63}};
+    for (int i = 0; i < 2; ++i) {
+        l[i].position = c[i].eye;
+        cv_pin_spot_pancake(fails, "spot_at_eye_thin_pancake_in_depth_range", &c[i], &l[i], &b[i]);
     }
 }
 
@@ -493,6 +530,7 @@ int main(int argc, char** argv) {
         cv_pin_stabilized_clamped(&pinned);
         cv_pin_replayed_scenes(&pinned);
         cv_pin_spot_pancake_receivers(&pinned);
+        cv_pin_spot_at_eye_thin_pancake(&pinned);
         cv_pin_psm_thin_frustum(&pinned);
     }
     printf("coverage: %ld scenes, %ld calls, %ld maps checked, %ld violations; pinned inputs: %ld failures\n", count,
