@@ -558,7 +558,8 @@ typedef struct swarp_setup_result {
  *          its farthest depth), SWARP_INFO_CASTERS_CLAMPED (S reaches more than 1e10 times
  *          H toward the light: casters beyond rely on depth clamping), SWARP_INFO_FLAT_EXTENT);
  *          SWARP_ERR_DEGENERATE also for PSM when its map would not project along the
- *          light in double (extreme fovy, aspect or far/near);
+ *          light in double, and for PSM on a frustum thinner than 1e-4 (tan(fovy/2),
+ *          tan(fovy/2)*aspect or (far - near)/near below it: PPS rounds like eps/t^2);
  *          SWARP_ERR_BODY_EMPTY (camera looks away from the box),
  *          SWARP_ERR_LIGHT_INSIDE_BODY, SWARP_ERR_BOX_INVERTED,
  *          SWARP_ERR_BOX_DEGENERATE, SWARP_ERR_CAPACITY, and the argument

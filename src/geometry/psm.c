@@ -41,6 +41,17 @@
  * §14.2.2, Q -> 1) legitimately needs almost 90°: only the truly
  * impossible 90° and beyond is refused. */
 #define SW_PSM_MIN_COS 1e-12
+/* The thinnest frustum PSM maps: tan of the half-angles (vertical and
+ * horizontal) and the depth ratio (far - near)/near of the view range at
+ * least this (a slide-back is the caller's choice; sw_psm_covers checks
+ * what it gives).  PPS scales the frustum's thin direction by 1/t,
+ * so the light lands ~1/t from the unit cube and the light camera's rows
+ * cancel terms ~1/t apart to give O(1) map coordinates: the rounding grows
+ * like eps/t^2.  Over the coverage sweep (robust_coverage 20000 7) every
+ * PSM map out of coverage had t <= 1.8e-5 (up to 4e-5 depth windows out
+ * or points behind the light camera); 1e-4 keeps a factor 5 from there.
+ * Uniform and LiSPSM maps do not go through PPS and stay available. */
+#define SW_PSM_FRUSTUM_MIN 1e-4
 
 /* ---- smallest enclosing cone (spherical cap) ------------------------------
  * Welzl's move-to-front scheme on unit vectors, as Gärtner's smallest
@@ -518,6 +529,9 @@ swarp_status sw_psm_setup(const swarp_camera* cam, const swarp_light* light, con
     swarp_vec3 f, r, u;
     sw_camera_basis(cam, &f, &r, &u);
     const double delta = sw_psm_slideback(cam, f, B, nb, near, o);
+    const double ty = tan(0.5 * cam->fovy);
+    if (!(fmin(ty, ty * cam->aspect) >= SW_PSM_FRUSTUM_MIN && (far - near) >= SW_PSM_FRUSTUM_MIN * near))
+        return SWARP_ERR_DEGENERATE;
     swarp_mat4 Mc, Vc, Pc;
     sw_camera_matrix(cam, near, far, delta, &Mc, &Vc, &Pc);
     swarp_vec3 qn;

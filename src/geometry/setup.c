@@ -23,6 +23,12 @@ _Static_assert(sizeof(swarp_warp_info) == 6 * 8 + 16, "swarp_warp_info size");
  * farthest one are cut off by the light's near plane (a perspective map
  * cannot reach its own apex). */
 #define SW_LIGHT_NEAR_MIN_REL 1e-4
+/* Point lights with pancaking: the receivers' depth range (along the axis)
+ * must exceed this times the rounding of a depth in the world matrix (192
+ * eps of the world coordinates' magnitude, as D's floor in
+ * sw_point_light_view), so that the window holds to the fit's 1e-6 of its
+ * width; a thinner one is B's cut instead. */
+#define SW_PANCAKE_RESOLVE 1e6
 /* Point lights: a single perspective map covers half-angles up to
  * atan(1e3) ≈ 89.94°; beyond that the light is inside B. */
 #define SW_LIGHT_MAX_TAN 1e3
@@ -372,14 +378,14 @@ static int sw_clip_light_near_points(const sw_light_space* ls, const swarp_vec3*
 }
 
 /* The points the map must see: a point light cuts B at its near plane
- * (the apex region; B_poly clipped when given, else the points in front
- * dropped) into Bk, drops the receivers H in front of it (into Hk) and
+ * (the apex region; B_poly clipped when given, else the point set) into
+ * Bk, replaces the receivers H by Bk when the plane cuts them and
  * narrows light_near to the depth actually covered; a directional light
  * uses B and H as they are. */
 static swarp_status sw_cut_light_near(const sw_light_space* ls, const swarp_vec3* B, size_t nb,
                                       const swarp_polyhedron* B_poly, const swarp_vec3* H, size_t nh, swarp_vec3* Bk,
-                                      swarp_vec3* Hk, const swarp_vec3** Bp, size_t* nbk, const swarp_vec3** Hp,
-                                      size_t* nhk, swarp_setup_result* res) {
+                                      const swarp_vec3** Bp, size_t* nbk, const swarp_vec3** Hp, size_t* nhk,
+                                      swarp_vec3 eye, swarp_setup_result* res) {
     *Bp = B;
     *Hp = H;
     *nbk = nb < SWARP_BODY_MAX_POINTS ? nb : SWARP_BODY_MAX_POINTS;
@@ -389,16 +395,25 @@ static swarp_status sw_cut_light_near(const sw_light_space* ls, const swarp_vec3
         if (B_poly) k = sw_clip_light_near_body(ls, B_poly, res->light_near, Bk);
         else if (!sw_clip_light_near_points(ls, B, nb, res->light_near, Bk, &k)) return SWARP_ERR_CAPACITY;
         *nbk = k;
-        /* the receivers for pancaking, with the same cut */
-        k = 0;
-        for (size_t i = 0; H && i < nh && k < SWARP_BODY_MAX_POINTS; ++i) {
-            swarp_vec4 h = sw_xform_point(&ls->L, H[i]);
-            if (-h.z < res->light_near) continue;
-            Hk[k++] = H[i];
-        }
-        *nhk = k;
         *Bp = Bk;
-        *Hp = Hk;
+        /* the receivers for pancaking: H when it lies behind the plane;
+         * when the plane cuts H, B's cut, which holds H's cut (the
+         * receivers just behind the plane are in the depth window; H's own
+         * crossings of the plane need not lie in front of a LiSPSM warp
+         * fitted to B's, and the remaining vertices alone leave them out) */
+        int cut = 0;
+        double hlo = INFINITY, hhi = -INFINITY, mag = fmax(fabs(eye.x), fmax(fabs(eye.y), fabs(eye.z)));
+        for (size_t i = 0; H && i < *nhk; ++i) {
+            const double D = -sw_xform_point(&ls->L, H[i]).z;
+            cut |= D < res->light_near;
+            hlo = fmin(hlo, D), hhi = fmax(hhi, D);
+            mag = fmax(mag, fmax(fabs(eye.x + H[i].x), fmax(fabs(eye.y + H[i].y), fabs(eye.z + H[i].z))));
+        }
+        /* and when H's depth range is too thin for the world matrix to
+         * hold it to the fit's 1e-6 (a spot at the eye, far ~ near) */
+        cut |= *nhk > 0 && hhi - hlo < SW_PANCAKE_RESOLVE * 192.0 * DBL_EPSILON * mag;
+        *Hp = cut ? Bk : H;
+        *nhk = cut ? *nbk : *nhk;
     }
     if (*nbk == 0) return SWARP_ERR_BODY_EMPTY;
     if (ls->point) {
@@ -477,10 +492,9 @@ static swarp_status sw_setup_lispsm(swarp_technique tech, const swarp_camera* ca
     swarp_status s = sw_light_space_of(cam, light, B, nb, fw, &ls, res, info);
     if (s != SWARP_OK) return s;
     swarp_vec3 Bk[SWARP_BODY_MAX_POINTS + 1];
-    swarp_vec3 Hk[SWARP_BODY_MAX_POINTS];
     const swarp_vec3 *Bp, *Hp;
     size_t nbk, nhk;
-    s = sw_cut_light_near(&ls, B, nb, B_poly, H, nh, Bk, Hk, &Bp, &nbk, &Hp, &nhk, res);
+    s = sw_cut_light_near(&ls, B, nb, B_poly, H, nh, Bk, &Bp, &nbk, &Hp, &nhk, eye, res);
     if (s != SWARP_OK) return s;
     swarp_mat4 P;
     swarp_warp_info wi;

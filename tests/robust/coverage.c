@@ -338,6 +338,174 @@ static void cv_pin_replayed_scenes(long* fails) {
             }
 }
 
+/* one pinned spot scene with pancaking: uniform and LiSPSM, both depth
+ * ranges, SWARP_INFO_LIGHT_NEAR_CLIPPED and covered (the spot looks along
+ * the view) */
+static void cv_pin_spot_pancake(long* fails, const char* name, const swarp_camera* c, swarp_light* l,
+                                const swarp_aabb* b) {
+    l->type = SWARP_LIGHT_POINT;
+    l->direction = c->dir;
+    for (int t = SWARP_TECHNIQUE_UNIFORM; t <= SWARP_TECHNIQUE_LISPSM; ++t)
+        for (int dr = 1; dr <= 2; ++dr) {
+            swarp_setup_options o;
+            memset(&o, 0, sizeof o);
+            o.technique = (swarp_technique)t;
+            o.depth_range = (swarp_depth_range)dr;
+            o.pancake = 1;
+            swarp_setup_result r;
+            swarp_status st = swarp_setup(c, l, b, &o, &r, NULL, 0, NULL);
+            if (st != SWARP_INFO_LIGHT_NEAR_CLIPPED) {
+                cv_pin_fail(fails, name, "status", st);
+                continue;
+            }
+            cc_result q = cc_check(c, c->z_near, c->z_far, l, b, &r.matrix, (swarp_depth_range)dr, 1, st, 9, 17, 400, 1);
+            if (!cc_ok(&q)) {
+                cv_pin_fail(fails, name, "not covered", st);
+                cc_print(stdout, &q);
+                printf("\n");
+            }
+        }
+}
+
+/* Pancaking with a spot light near the eye: the receivers H are cut at the
+ * light's near plane like B, so the depth window starts at their section
+ * by the plane.  Three scenes of the sweep (seed 7; a spot 0.43..0.76 from
+ * the eye along the view axis, one of them 5.2e5 from the origin) whose
+ * receivers just behind the plane were 1.3..31 depth windows in front of
+ * the window when H's vertices in front of the plane were only dropped
+ * (SWARP_INFO_LIGHT_NEAR_CLIPPED, uniform and LiSPSM); each is checked
+ * with both techniques and both depth ranges. */
+static void cv_pin_spot_pancake_receivers(long* fails) {
+    swarp_camera c[3];
+    swarp_light l[3];
+    swarp_aabb b[3];
+    memset(c, 0, sizeof c);
+    memset(l, 0, sizeof l);
+    c[0] = (swarp_camera){{0x1.f2ee0e3ded528p+1, 0x1.50881f9d3749ep+3, 0x1.82e4630993ac8p+3},
+                          {0x1.801b343693a18p-1, -0x1.ad1c11efcdd6ep-1, -0x1.3631b28249a3p-4},
+                          {0, 1, 0}, 0x1.f5719d2d6b6eap+0, 0x1.1282b46c75954p+1, 0x1.e77b962b82c75p-6,
+                          0x1.2565ce2054218p+8, {0}};
+    l[0].position = (swarp_vec3){0x1.00db2b047760bp+2, 0x1.3fd2edc49ee5bp+3, 0x1.86eec50541ea1p+3};
+    l[0].cone_angle = 0x1.af5cbabea2926p-2;
+    b[0] = (swarp_aabb){{-0x1.daf285078fe66p+5, -0x1.1f1368480b79p+2, -0x1.6a37255f9896cp+2},
+                        {0x1.2a68f54f8cf5ep+5, 0x1.934ca9c0a7feep+4, 0x1.8a42761f7fb42p+4}};
+    c[1] = (swarp_camera){{0x1.7cf245d70bb5p+3, 0x1.1e45b8c933816p+4, -0x1.3ff35140896bp+2},
+                          {0x1.a9f620adb0b14p-2, -0x1.fce7fe997df04p-2, 0x1.67d10fe92519cp-1},
+                          {0, 1, 0}, 0x1.d804f93b869a4p+0, 0x1.e13dfdd9ffce7p+0, 0x1.42d3cdfed459cp-6,
+                          0x1.a4ab0c78d7592p+3, {0}};
+    l[1].position = (swarp_vec3){0x1.76fc8073c04a5p+3, 0x1.1820dbaab5723p+4, -0x1.176c46cbc1ca8p+2};
+    l[1].cone_angle = 0x1.1e7802dd609cep+0;
+    b[1] = (swarp_aabb){{-0x1.3b20456fcab71p+6, -0x1.991fea1d35eabp+1, -0x1.0edac30c170eep+7},
+                        {0x1.df01611be19dfp+7, 0x1.dc7598dd110dcp+4, 0x1.6f8a9564c19c9p+6}};
+    c[2] = (swarp_camera){{0x1.fc81c7bf0c68p+18, 0x1.cec0682beef48p+3, -0x1.fc819f5f279c3p+18},
+                          {0x1.da604e03c3c9ep-1, -0x1.c09850cc4bafp-3, 0x1.8a8ca6df40858p-3},
+                          {0, 1, 0}, 0x1.10a364133432cp+0, 0x1.3f9bb299a21ecp+1, 0x1.57c17f60681fbp-4,
+                          0x1.fbbd8c3197807p+5, {0}};
+    l[2].position = (swarp_vec3){0x1.fc81e0ed7dc22p+18, 0x1.cfcb67df2e22cp+3, -0x1.fc81aa6428237p+18};
+    l[2].cone_angle = 0x1.603cb332ecb7cp-2;
+    b[2] = (swarp_aabb){{0x1.fc7d726f33e86p+18, -0x1.2b1fe85d4bcbcp+2, -0x1.fc8a2e5ccbc1ep+18},
+                        {0x1.fc8811adcb8d9p+18, 0x1.337e416b76a9ap+4, -0x1.fc7eba54a1bc2p+18}};
+    for (int i = 0; i < 3; ++i) cv_pin_spot_pancake(fails, "spot_pancake_receivers_in_depth_range", &c[i], &l[i], &b[i]);
+}
+
+/* Pancaking with a spot at the eye and far within 2.1e-9 of near: the
+ * receivers' depth range along the axis (1.9e-11, 2.7e-11) is far below what
+ * the world matrix resolves (1e6 times 192 eps of the coordinates' ~20), so
+ * the window is B's cut.  Two scenes of the sweep (seed 7; one under a box
+ * with max.z = 1e19) whose receivers were up to 7.5e-5 and 1.8e-5 of the
+ * window outside it when it was H's range alone. */
+static void cv_pin_spot_at_eye_thin_pancake(long* fails) {
+    swarp_camera c[2];
+    swarp_light l[2];
+    swarp_aabb b[2];
+    memset(c, 0, sizeof c);
+    memset(l, 0, sizeof l);
+    c[0] = (swarp_camera){{-0x1.1f2398fd1363cp+4, 0x1.c8c332a31a209p+3, 0x1.8120f8b0b0528p+1},
+                          {0x1.67e5e560d838p-1, -0x1.a5adcdc29eee8p-1, -0x1.903c72a59fd9p-3},
+                          {0, 1, 0}, 0x1.933ab9dc40415p-1, 0x1.cc31c975b823p+0, 0x1.5ade6c59c1b95p-7,
+                          0x1.5ade6c63f4807p-7, {0}};
+    l[0].cone_angle = 0x1.8c65d6f566cc6p-1;
+    b[0] = (swarp_aabb){{-0x1.9bff52dc28d71p+5, -0x1.378d9083b374bp+2, -0x1.6a379ee9d60dep+5},
+                        {0x1.3983b9bdd3dfep+5, 0x1.c39ddcb030af9p+4, 0x1.04ecf6d775074p+4}};
+    c[1] = (swarp_camera){{-0x1.70d876f23d06p+2, 0x1.2d4931273657cp+4, -0x1.b463e8aa73964p+2},
+                          {0x1.18ae73af29f16p-1, 0x1.c33338ad82008p-2, -0x1.069b5b59afed6p-1},
+                          {0, 1, 0}, 0x1.3c3968837a013p+0, 0x1.7c0cc78121947p+0, 0x1.b57ebc12795dap-7,
+                          0x1.b57ebc2175b6bp-7, {0}};
+    l[1].cone_angle = 0x1.09a3fe838afdep-2;
+    b[1] = (swarp_aabb){{-0x1.cfad3b4ae2a75p+6, -0x1.c452c33bd4494p+1, -0x1.68a32523bf432p+5},
+                        {0x1.d1172838629b3p+7, 0x1.a656beacd7b0ap+4, 0x1.158e460913dp+63}};
+    for (int i = 0; i < 2; ++i) {
+        l[i].position = c[i].eye;
+        cv_pin_spot_pancake(fails, "spot_at_eye_thin_pancake_in_depth_range", &c[i], &l[i], &b[i]);
+    }
+}
+
+/* PSM refuses a frustum thinner than 1e-4 (tan of either half-angle, or
+ * (far - near)/near): its post-perspective space rounds like eps/t^2 there.
+ * Two scenes of the sweep (seed 7) that PSM mapped with SWARP_OK before:
+ * fovy 4.4e-5 under a box with max.z = DBL_MAX (casters 4.4e-5 depth
+ * windows out) and far = near (1 + 1.4e-7) with pancaking (2.4e-6 out);
+ * both now SWARP_ERR_DEGENERATE with the output untouched.  At twice the
+ * threshold (the pinned camera with tan(fovy/2) = 2e-4, aspect 1, or
+ * far = near (1 + 2e-4)) PSM still maps and covers. */
+static void cv_pin_psm_thin_frustum(long* fails) {
+    cv_case k[2];
+    memset(k, 0, sizeof k);
+    k[0].cam = (swarp_camera){{-0x1.dc69f8a158c8p-3, 0x1.7d414f0a9c1bap+3, -0x1.7e0387813b7aap+3},
+                              {0x1.71627d61168d4p-1, 0x1.06305b458aa1p-2, 0x1.e4a503bad2cdep-1},
+                              {0, 1, 0}, 0x1.7574797b75b1fp-15, 0x1.a437ba6cb17d2p-1, 0x1.aa05c84f602d3p-7,
+                              0x1.288f01cd85293p+4, {0}};
+    k[0].light.direction = (swarp_vec3){-0x1.f733d7dd6ae28p-1, -0x1.6619cc9bf0f8p-2, -0x1.af5bfc3d15298p-3};
+    k[0].box = (swarp_aabb){{-0x1.6818747c4c6ebp+4, -0x1.0c2a536590106p-1, -0x1.16f0d6bdcc0e9p+4},
+                            {0x1.c10c146c5f379p+3, 0x1.5fd350257c6bdp+4, 0x1.fffffffffffffp+1023}};
+    k[0].o.depth_range = SWARP_DEPTH_ZERO_TO_ONE;
+    k[1].cam = (swarp_camera){{-0x1.7e1cab7a0037p+1, 0x1.a6bf3cd2312a6p+1, -0x1.360c8189fd1c2p+4},
+                              {-0x1.d3820aa52d0fp-1, 0x1.8f2a889b8fb3p-1, -0x1.c51092e0852p-9},
+                              {0, 1, 0}, 0x1.36d34f01ddf08p+0, 0x1.1bf552fcf4ffdp+1, 0x1.429524b595908p-6,
+                              0x1.429524e4fe2e2p-6, {0}};
+    k[1].light.direction = (swarp_vec3){-0x1.05bb53c1a39dp-2, -0x1.8a38546dec758p-2, 0x1.3abc2b11fdc2ep-1};
+    k[1].box = (swarp_aabb){{-0x1.000aab2b4c7c4p+6, -0x1.f6d83b7a47807p+1, -0x1.88b7dae74c4d8p+6},
+                            {0x1.7038494445991p+4, 0x1.ede2640be26e3p+2, -0x1.759467133361p+2}};
+    k[1].o.depth_range = SWARP_DEPTH_ZERO_TO_ONE;
+    k[1].o.pancake = 1;
+    for (int i = 0; i < 2; ++i) {
+        k[i].light.type = SWARP_LIGHT_DIRECTIONAL;
+        k[i].o.technique = SWARP_TECHNIQUE_PSM;
+        swarp_setup_result r;
+        memset(&r, 0x5a, sizeof r);
+        const swarp_setup_result canary = r;
+        swarp_status st = swarp_setup(&k[i].cam, &k[i].light, &k[i].box, &k[i].o, &r, NULL, 0, NULL);
+        if (st != SWARP_ERR_DEGENERATE) cv_pin_fail(fails, "psm_thin_frustum_refused", "not refused", st);
+        else if (memcmp(&r, &canary, sizeof r) != 0) cv_pin_fail(fails, "psm_thin_frustum_refused", "output written", st);
+    }
+    swarp_light D;
+    memset(&D, 0, sizeof D);
+    D.type = SWARP_LIGHT_DIRECTIONAL;
+    D.direction = (swarp_vec3){0.3, -1, 0.2};
+    const swarp_aabb S0 = {{-50, -1, -200}, {50, 10, 50}};
+    for (int which = 0; which < 2; ++which) {
+        swarp_camera c = cv_pin_camera();
+        if (which == 0) c.fovy = 2 * atan(2e-4), c.aspect = 1;
+        if (which == 1) c.z_far = c.z_near * (1 + 2e-4);
+        swarp_setup_options o;
+        memset(&o, 0, sizeof o);
+        o.technique = SWARP_TECHNIQUE_PSM;
+        swarp_setup_result r;
+        swarp_status st = swarp_setup(&c, &D, &S0, &o, &r, NULL, 0, NULL);
+        if (swarp_status_is_error(st)) {
+            cv_pin_fail(fails, "psm_above_thin_threshold_covered", "refused", st);
+            continue;
+        }
+        cc_result q = cc_check(&c, c.z_near, c.z_far, &D, &S0, &r.matrix, SWARP_DEPTH_NEG_ONE_TO_ONE, 0, st, 9, 17,
+                               400, 1);
+        if (!cc_ok(&q)) {
+            cv_pin_fail(fails, "psm_above_thin_threshold_covered", "not covered", st);
+            cc_print(stdout, &q);
+            printf("\n");
+        }
+    }
+}
+
 int main(int argc, char** argv) {
     const long count = argc > 1 ? atol(argv[1]) : 300;
     uint64_t s = argc > 2 ? strtoull(argv[2], NULL, 0) : 1;
@@ -361,6 +529,9 @@ int main(int argc, char** argv) {
         cv_pin_psm_extreme_frusta(&pinned);
         cv_pin_stabilized_clamped(&pinned);
         cv_pin_replayed_scenes(&pinned);
+        cv_pin_spot_pancake_receivers(&pinned);
+        cv_pin_spot_at_eye_thin_pancake(&pinned);
+        cv_pin_psm_thin_frustum(&pinned);
     }
     printf("coverage: %ld scenes, %ld calls, %ld maps checked, %ld violations; pinned inputs: %ld failures\n", count,
            S.calls, S.checked, S.failed, pinned);

@@ -21,14 +21,15 @@
  * along the light as clamped to the near plane);
  * a spot light reporting SWARP_INFO_LIGHT_NEAR_CLIPPED may leave out the
  * points nearer its apex, along its axis, than SW_LIGHT_NEAR_MIN_REL (1e-4)
- * of the farthest corner of S (docs/geometry.md: the region within 1e-4 of
- * its farthest depth).
+ * of B's farthest depth (docs/geometry.md), bounded here from above by the
+ * farthest corner of S or of V, whichever is nearer.
  *
  * The matrix is evaluated in long double at the long double points, so the
  * check measures the map, not the rounding of the check. */
 #ifndef COVERAGE_CHECK_H
 #define COVERAGE_CHECK_H
 
+#include <float.h>
 #include <math.h>
 #include <stddef.h>
 #include <stdint.h>
@@ -43,9 +44,12 @@
 #define CC_TOL_DEPTH 1e-6
 /* 2e-6 NDC: 1e-6 of the map's width, 1/500 of a texel of a 2048 map. */
 #define CC_TOL_RAY 2e-6
-/* the region a LIGHT_NEAR_CLIPPED spot may leave out, relative to S's
- * farthest corner along the axis (the library's SW_LIGHT_NEAR_MIN_REL) */
+/* the region a LIGHT_NEAR_CLIPPED spot may leave out, relative to B's
+ * farthest depth along the axis (the library's SW_LIGHT_NEAR_MIN_REL), and
+ * never less than 192 eps of the coordinates' magnitude (its floor: the
+ * rounding of D = a·p - a·l) */
 #define CC_NEAR_CLIP_REL 1e-4
+#define CC_NEAR_CLIP_EPS (192 * (cc_real)DBL_EPSILON)
 
 typedef long double cc_real;
 typedef struct cc_v3 { cc_real x, y, z; } cc_v3;
@@ -137,7 +141,8 @@ static inline int cc_eval(const swarp_mat4* m, cc_v3 p, cc_real out[3]) {
  * how far the light is (INFINITY: directional) */
 typedef struct cc_light { int point, spot; cc_v3 l, d, axis; cc_real cos_cone, clip_d; } cc_light;
 
-static inline cc_light cc_light_of(const swarp_light* L, const swarp_aabb* S, int near_clipped) {
+static inline cc_light cc_light_of(const swarp_light* L, const swarp_aabb* S, const cc_frustum* F, cc_real zn,
+                                   cc_real zf, int near_clipped) {
     cc_light c;
     c.point = L->type == SWARP_LIGHT_POINT;
     c.spot = c.point && L->cone_angle > 0;
@@ -147,12 +152,19 @@ static inline cc_light cc_light_of(const swarp_light* L, const swarp_aabb* S, in
     c.cos_cone = c.spot ? cosl(L->cone_angle) : -2;
     c.clip_d = 0;
     if (c.spot && near_clipped) {
-        cc_real dmax = 0;
+        /* B's farthest depth along the axis is at most that of V ∩ S (B
+         * adds only the part toward the light), so at most the smaller of
+         * the farthest corners of S and of V */
+        cc_real dS = 0, dV = 0, mag = fmaxl(fabsl(c.l.x), fmaxl(fabsl(c.l.y), fabsl(c.l.z)));
         for (int i = 0; i < 8; ++i) {
             cc_v3 k = cc_v((i & 1) ? S->max.x : S->min.x, (i & 2) ? S->max.y : S->min.y, (i & 4) ? S->max.z : S->min.z);
-            dmax = fmaxl(dmax, cc_dot(cc_sub(k, c.l), c.axis));
+            dS = fmaxl(dS, cc_dot(cc_sub(k, c.l), c.axis));
+            cc_v3 v = cc_frustum_point(F, (i & 1) ? 1 : -1, (i & 2) ? 1 : -1, (i & 4) ? zf : zn);
+            dV = fmaxl(dV, cc_dot(cc_sub(v, c.l), c.axis));
+            mag = fmaxl(mag, fmaxl(fabsl(v.x), fmaxl(fabsl(v.y), fabsl(v.z))));
         }
-        c.clip_d = CC_NEAR_CLIP_REL * dmax;
+        /* B lies in the hull of V and the light: its magnitude is at most mag */
+        c.clip_d = fmaxl(CC_NEAR_CLIP_REL * fminl(dS, dV), CC_NEAR_CLIP_EPS * mag);
     }
     return c;
 }
@@ -241,7 +253,7 @@ static inline cc_result cc_check(const swarp_camera* cam, double zn, double zf, 
                                  swarp_status status, int lat, int nd, int nr, uint64_t seed) {
     cc_result r = {0, -INFINITY, -INFINITY, 0.0, 0, {0, 0, 0}};
     const cc_frustum F = cc_frustum_of(cam);
-    const cc_light L = cc_light_of(light, S, status == SWARP_INFO_LIGHT_NEAR_CLIPPED);
+    const cc_light L = cc_light_of(light, S, &F, zn, zf, status == SWARP_INFO_LIGHT_NEAR_CLIPPED);
     cc_map M = {m, dr == SWARP_DEPTH_ZERO_TO_ONE ? 0.0 : -1.0, 1.0, pancake || status == SWARP_INFO_CASTERS_CLAMPED,
                 light->type != SWARP_LIGHT_POINT};
     /* the frustum's lateral grid at nd depths, linear and geometric */
