@@ -2385,8 +2385,13 @@ typedef struct swarp_budget {
     double pass_cost_ns;      /**< one shadow pass at map_resolution, measured by the
                                    caller; 0: 1.39e6 (fit to [RHS] Table 7.1) */
     double blur_pass_cost_ns; /**< one separable prefilter blur pass over one map;
-                                   0: pass_cost_ns / 4 (assumption, docs/planning.md) */
-    uint32_t _reserved[4];
+                                   0: a quarter of one shadow pass (assumption, docs/planning.md) */
+    double pass_overhead_ns;  /**< calibrated cost model: one shadow pass of an r x r map
+                                   costs pass_overhead_ns + r² texel_cost_ns (fit them to
+                                   measured passes with swarp_plan_cost_fit); both 0: the
+                                   per-pass constant pass_cost_ns; >= 0, <= SWARP_PLAN_MAX_COST_NS */
+    double texel_cost_ns;     /**< the per-texel term of that model, ns per texel, >= 0,
+                                   <= SWARP_PLAN_MAX_COST_NS / 65536² */
 } swarp_budget;
 
 typedef enum swarp_plan_warp {
@@ -2452,6 +2457,7 @@ typedef enum swarp_plan_filter {
 #define SWARP_PLAN_WHY_POINT_AS_DIRECTIONAL (1u << 21) /**< point light modelled as directional */
 #define SWARP_PLAN_WHY_PASS_LIMITED       (1u << 22) /**< the pass limit excluded chains */
 #define SWARP_PLAN_WHY_FORCED             (1u << 23) /**< chain given by the caller (swarp_plan_evaluate) */
+#define SWARP_PLAN_WHY_RANKED_MEASURED    (1u << 24) /**< candidates ranked by the measured error of their built matrices */
 
 /* Per-plane outcome (swarp_plan.plane_reason[i]). */
 #define SWARP_PLAN_PLANE_USED           0u /**< a lixel map covers the plane */
@@ -2460,6 +2466,15 @@ typedef enum swarp_plan_filter {
 #define SWARP_PLAN_PLANE_NOT_VISIBLE    3u /**< the plane misses the view frustum */
 #define SWARP_PLAN_PLANE_NO_PASS_LEFT   4u /**< the pass limit (or time budget) is used up */
 #define SWARP_PLAN_PLANE_LIXEL_REFUSED  5u /**< swarp_lixel_matrix gave another error (e.g. singular) */
+
+/** The cost model a plan's cost_ns comes from (swarp_plan.cost_model). */
+typedef enum swarp_plan_cost_model {
+    SWARP_PLAN_COST_UNCALIBRATED = 0, /**< default per-pass time 1.39 ms fitted to [RHS]
+                                           Table 7.1, the same for every map size */
+    SWARP_PLAN_COST_PER_PASS = 1,     /**< the caller's pass_cost_ns, the same for every map size */
+    SWARP_PLAN_COST_LINEAR = 2,       /**< the caller's pass_overhead_ns + texels x texel_cost_ns */
+    SWARP_PLAN_COST_FORCE_I32 = 0x7FFFFFFF
+} swarp_plan_cost_model;
 
 /** The chosen chain.  The model's fields (splits, n_prime, split_max_mx/mz,
  *  max_mx, max_mz, max_error, error_area) are Lloyd's overhead-light model
@@ -2526,7 +2541,9 @@ typedef struct swarp_plan {
                                            error (swarp_cascade_split.measured) */
     swarp_measured_error measured;    /**< the worst split's (swarp_cascade_result.measured):
                                            max_m_s, max_m_t, max_sigma, at */
-    uint32_t _reserved[4];
+    swarp_plan_cost_model cost_model; /**< which cost model gave cost_ns (UNCALIBRATED:
+                                           the default constant, not measured on this machine) */
+    uint32_t _reserved[3];
 } swarp_plan_result;
 
 /** What swarp_plan_evaluate builds besides the model's prediction. */
@@ -2601,6 +2618,26 @@ SWARP_API swarp_status swarp_plan_evaluate(const swarp_scene_needs* needs,
                                            const swarp_budget* budget,
                                            const swarp_plan_chain* chain,
                                            struct swarp_plan* out_plan);
+
+/** @brief Least-squares fit of the planner's cost model to measured shadow
+ *  passes: pass_ns[i] ≈ overhead + texels[i] x per_texel over the count
+ *  pairs (texels of the pass's map, its measured time in ns), both terms
+ *  >= 0 (a negative least-squares term is set to 0 and the other refitted:
+ *  a line through the origin, or the mean time).  Put the results into
+ *  swarp_budget.pass_overhead_ns and texel_cost_ns.  No allocation.
+ *  @param[in]  texels  texels of each measured pass (> 0, finite), count entries
+ *  @param[in]  pass_ns measured time of each pass, ns (>= 0, finite)
+ *  @param[in]  count   pairs, >= 2
+ *  @param[out] out_overhead_ns, out_texel_cost_ns the fitted terms
+ *  @param[out] out_rms_ns  root-mean-square residual of the fit, ns (may be NULL)
+ *  @return SWARP_OK; SWARP_ERR_NULL_POINTER; SWARP_ERR_NON_FINITE;
+ *          SWARP_ERR_OUT_OF_RANGE (count < 2, texels <= 0, pass_ns < 0, or a
+ *          fitted term above the limits swarp_plan accepts);
+ *          SWARP_ERR_DEGENERATE (all texel counts equal: the two terms cannot
+ *          be told apart).  Outputs untouched on error. */
+SWARP_API swarp_status swarp_plan_cost_fit(const double* texels, const double* pass_ns, size_t count,
+                                           double* out_overhead_ns, double* out_texel_cost_ns,
+                                           double* out_rms_ns);
 
 /** @brief Readable text of a plan: the chain, the predicted error and cost,
  *  and one line per reason flag and per left-out plane.  Locale-independent.

@@ -771,7 +771,9 @@ MUT(m_aspect, n->camera.aspect = -1.0)
 MUT(m_cam_reserved, n->camera._reserved[2] = 1)
 MUT(m_needs_reserved, n->_reserved[0] = 1)
 MUT(m_needs_pad, n->_pad0 = 1)
-MUT(m_budget_reserved, b->_reserved[3] = 1)
+MUT(m_budget_overhead_neg, b->pass_overhead_ns = -1.0)
+MUT(m_budget_texel_nan, b->texel_cost_ns = NAN)
+MUT(m_budget_texel_big, b->texel_cost_ns = 1e6)
 MUT(m_budget_pad, b->_pad0 = 1)
 MUT(m_light_reserved0, n->light._reserved0 = 1)
 MUT(m_light_type, n->light.type = (swarp_light_type)7)
@@ -812,7 +814,9 @@ static const struct {
     {m_cam_reserved, SWARP_ERR_RESERVED_NONZERO},
     {m_needs_reserved, SWARP_ERR_RESERVED_NONZERO},
     {m_needs_pad, SWARP_ERR_RESERVED_NONZERO},
-    {m_budget_reserved, SWARP_ERR_RESERVED_NONZERO},
+    {m_budget_overhead_neg, SWARP_ERR_OUT_OF_RANGE},
+    {m_budget_texel_nan, SWARP_ERR_NON_FINITE},
+    {m_budget_texel_big, SWARP_ERR_OUT_OF_RANGE},
     {m_budget_pad, SWARP_ERR_RESERVED_NONZERO},
     {m_light_reserved0, SWARP_ERR_RESERVED_NONZERO},
     {m_light_type, SWARP_ERR_UNKNOWN_ENUM},
