@@ -2320,8 +2320,13 @@ SWARP_API swarp_status swarp_lixel_select(const swarp_mat4* GLP, size_t count, c
  * of the matrices: swarp_plan_evaluate also builds the chain's matrices
  * (swarp_cascade_setup, options as docs/planning.md §9 maps the chain) and
  * reports their n' and measured error (swarp_measure_max) beside it.
- * Cost model (§3): shadow passes × a per-pass time (caller-measured,
- * or the default fitted to [RHS] Table 7.1) + prefilter blur passes.
+ * Cost model (§3): per shadow pass overhead + texels × per-texel time
+ * (calibrated: swarp_plan_cost_fit on measured passes), else a per-pass
+ * constant (the caller's, or the uncalibrated default fitted to [RHS]
+ * Table 7.1), + prefilter blur passes.
+ * Selection (§4): by default the model proposes and the matrices decide:
+ * the proposed chain is built and measured, and the model is re-calibrated
+ * by that chain's measured/model ratio until the measurement meets the budget.
  */
 
 /** Most shadow-map splits the planner considers (PSSM K = 1..16, [RHS] §3.3.5). */
@@ -2329,7 +2334,7 @@ SWARP_API swarp_status swarp_lixel_select(const swarp_mat4* GLP, size_t count, c
 /** Most planes of interest a swarp_scene_needs can declare. */
 #define SWARP_PLAN_MAX_PLANES 4
 /** Worst case of swarp_plan_explain()'s text, bytes including the NUL. */
-#define SWARP_PLAN_EXPLAIN_MAX 4096
+#define SWARP_PLAN_EXPLAIN_MAX 4608
 
 /** Light-bleeding risk of prefiltered (moment) shadow maps, [VSM] §3.4: how
  *  much occluders overlap at large depth ratios Δx/Δy (eq. (3.4)). */
@@ -2341,6 +2346,16 @@ typedef enum swarp_plan_bleed {
     SWARP_PLAN_BLEED_EXTREME = 4,  /**< many overlaps at extreme ratios ([VSM] Fig. 4.3) */
     SWARP_PLAN_BLEED_FORCE_I32 = 0x7FFFFFFF
 } swarp_plan_bleed;
+
+/** How swarp_plan judges whether a chain meets the error budget. */
+typedef enum swarp_plan_by {
+    SWARP_PLAN_BY_MEASURED = 0, /**< default: the model proposes, the chain's matrices are built
+                                     and measured (max m_s, m_t over H), and the model is
+                                     re-calibrated by measured/model until the measurement meets
+                                     the budget (docs/planning.md §4; about 1-6 ms) */
+    SWARP_PLAN_BY_MODEL = 1,    /**< the model alone (a few µs): docs/planning.md's table */
+    SWARP_PLAN_BY_FORCE_I32 = 0x7FFFFFFF
+} swarp_plan_by;
 
 /** What the scene calls for.  Zero means default for every field: a zeroed
  *  struct is the default scene (camera at (0,2,0) looking down -z, fovy 60°,
@@ -2363,7 +2378,8 @@ typedef struct swarp_scene_needs {
     uint32_t plane_count;     /**< planes of interest in planes[], <= SWARP_PLAN_MAX_PLANES */
     uint32_t _pad0;           /**< must be zero */
     swarp_plane planes[SWARP_PLAN_MAX_PLANES]; /**< candidate lixel planes [LIXEL] */
-    uint32_t _reserved[4];
+    swarp_plan_by plan_by;    /**< how swarp_plan judges the error of candidates */
+    uint32_t _reserved[3];
 } swarp_scene_needs;
 
 /** Largest time_budget_ns, pass_cost_ns and blur_pass_cost_ns swarp_plan()
@@ -2526,8 +2542,9 @@ typedef struct swarp_plan {
     uint32_t plane_count;             /**< planes declared in the needs (plane_reason valid) */
     /* The chain's matrices as an engine builds them: swarp_cascade_setup with
      * the options docs/planning.md §9 maps the chain to (one split: the
-     * cascade is swarp_setup itself).  swarp_plan_evaluate fills them;
-     * swarp_plan leaves built = 0 and them zero (evaluate its chain). */
+     * cascade is swarp_setup itself).  swarp_plan_evaluate fills them, and
+     * so does swarp_plan for the chain it chose (SWARP_PLAN_BY_MEASURED, a
+     * buildable chain): they are what an engine renders for this plan. */
     uint32_t built;                   /**< 1: the matrices were built, the fields below hold */
     swarp_status built_status;        /**< swarp_cascade_setup's status for the chain (an
                                            error: built = 0, e.g. SWARP_ERR_STABILIZE_LIGHT;
@@ -2572,11 +2589,19 @@ typedef struct swarp_plan_chain {
  *  PSM (+ inverse projection when the light is behind) as one map; PSSM with
  *  K = 2..16 splits (practical λ = 0.5 or logarithmic) unwarped, with n_opt
  *  or with n_repar per split.  A moving camera admits only unwarped chains
- *  (stabilised, [RHS] §3.5).  Chosen: the fewest passes whose predicted
- *  max(m_x, m_z) <= budget->max_error (and cost <= time budget); ties go to
- *  the lower error, then to the earlier (simpler) candidate.  If none meets
- *  it: the most accurate chain within the pass limit and
- *  SWARP_INFO_PLAN_BUDGET_UNMET.  Then the filter (soft shadows only), depth
+ *  (stabilised, [RHS] §3.5).  The model's rule: the fewest passes whose
+ *  predicted max(m_x, m_z) <= the budget (and cost <= time budget); ties go
+ *  to the lower error, then to the earlier (simpler) candidate.  With
+ *  needs->plan_by = SWARP_PLAN_BY_MEASURED (the default) that rule proposes a
+ *  chain, its matrices are built (as swarp_plan_evaluate) and measured; while
+ *  the measured max(m_s, m_t) exceeds budget->max_error the rule is applied
+ *  again against max_error × model/measured of the last chain (at least 3 %
+ *  tighter each round, at most 8 rounds): meets_budget then means the
+ *  MEASURED error meets it, and the built_* fields hold the chosen chain's
+ *  matrices.  Chains that cannot be built (point light) fall back to the
+ *  model.  SWARP_PLAN_BY_MODEL: the rule alone.  If none meets the budget:
+ *  the most accurate chain found (measured, or by the model within the pass
+ *  limit) and SWARP_INFO_PLAN_BUDGET_UNMET.  Then the filter (soft shadows only), depth
  *  clamping and lixel maps for declared lixel-friendly planes (passes left).
  *  Error model [RHS] (2.3)-(2.8), generalised to any γ (docs/planning.md).
  *  @param[in]  needs   scene; NULL or zeroed fields mean the defaults

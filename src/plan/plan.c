@@ -82,6 +82,7 @@ typedef struct sw_pin {
     double soft_width;
     swarp_plan_bleed bleed;
     int allow_clamp;
+    int by_model;               /* SWARP_PLAN_BY_MODEL: no matrices built */
     uint32_t plane_count;
     swarp_plane planes[SWARP_PLAN_MAX_PLANES];
     /* budget */
@@ -184,7 +185,8 @@ static swarp_status sw_check_needs(const swarp_scene_needs* needs) {
     if (needs->camera_moves > 1 || needs->soft_shadows > 1 || needs->allow_depth_clamp > 1)
         return SWARP_ERR_OUT_OF_RANGE;
     if (needs->soft_width != 0.0 && !(needs->soft_width >= 1.0)) return SWARP_ERR_OUT_OF_RANGE;
-    if ((uint32_t)needs->bleed_risk > (uint32_t)SWARP_PLAN_BLEED_EXTREME)
+    if ((uint32_t)needs->bleed_risk > (uint32_t)SWARP_PLAN_BLEED_EXTREME ||
+        (uint32_t)needs->plan_by > (uint32_t)SWARP_PLAN_BY_MODEL)
         return SWARP_ERR_UNKNOWN_ENUM;
     if (needs->plane_count > SWARP_PLAN_MAX_PLANES) return SWARP_ERR_PLAN_TOO_MANY_PLANES;
     for (uint32_t i = 0; i < needs->plane_count; ++i) {
@@ -229,6 +231,7 @@ static void sw_resolve_defaults(const swarp_scene_needs* needs, const swarp_budg
     in->bleed = needs->bleed_risk == SWARP_PLAN_BLEED_DEFAULT ? SWARP_PLAN_BLEED_NONE
                                                                : needs->bleed_risk;
     in->allow_clamp = (int)needs->allow_depth_clamp;
+    in->by_model = needs->plan_by == SWARP_PLAN_BY_MODEL;
     in->plane_count = needs->plane_count;
     for (uint32_t i = 0; i < needs->plane_count; ++i) in->planes[i] = needs->planes[i];
 
@@ -336,7 +339,7 @@ static swarp_status sw_resolve(const swarp_scene_needs* needs, const swarp_budge
     if (!budget) budget = &zero_budget;
     memset(in, 0, sizeof *in);
 
-    if (!sw_reserved_zero(needs->_reserved, 4) || needs->_pad0 != 0 || budget->_pad0 != 0)
+    if (!sw_reserved_zero(needs->_reserved, 3) || needs->_pad0 != 0 || budget->_pad0 != 0)
         return SWARP_ERR_RESERVED_NONZERO;
     swarp_status s;
     if ((s = sw_resolve_view(needs, in)) != SWARP_OK) return s;
@@ -967,7 +970,7 @@ static int sw_calib_round(const sw_pin* in, const sw_filter* flt, double eff, sw
     *e = S.have_best ? S.best : S.fallback;
     *c = S.have_best ? S.best_c : S.fb_c;
     sw_fill(in, flt, c, e, bp);
-    sw_build_chain(in, 0, bp);
+    if (!in->by_model) sw_build_chain(in, 0, bp);
     return 1;
 }
 
@@ -987,7 +990,7 @@ static void sw_calibrated_search(const sw_pin* in, const sw_filter* flt, sw_cali
         int model_met = 0;
         if (!sw_calib_round(in, flt, eff, C, &e, &c, &bp, &model_met)) break;
         ++C->rounds;
-        if (!bp.built || bp.measured.samples == 0) {
+        if (in->by_model || !bp.built || bp.measured.samples == 0) {
             /* not buildable (a point light, a stabilised warp): the model is
              * all there is for this chain */
             if (!C->have) {

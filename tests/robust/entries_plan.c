@@ -68,7 +68,12 @@ static void gen_needs(swr_ctx* c, swarp_scene_needs* n, swarp_budget* b) {
         n->planes[i].b = 1;
         n->planes[i].d = swr_num_in(c, -1, 1, NULL, 0);
     }
-    n->_reserved[swr_u8(c) % 4] = swr_reserved(c);
+    {
+        /* the fourth reserved word became plan_by: a draw for it lands in
+         * the last reserved word (the stream of draws is unchanged) */
+        uint32_t k = swr_u8(c) % 4;
+        n->_reserved[k < 3 ? k : 2] = swr_reserved(c);
+    }
     static const double brk_e[] = {1e-9, 1.0, 100.0};
     b->max_error = swr_one_in(c, 3) ? 0 : swr_num_in(c, 1e-9, 100, brk_e, 3);
     b->map_resolution = swr_one_in(c, 2) ? 0 : 64u << (swr_u8(c) % 8);
@@ -103,7 +108,7 @@ static void expect_needs(swr_ctx* c, const swarp_scene_needs* n, const swarp_bud
     if (!fin(n->soft_width) || !fin(n->scene_box.max.x) || !fin(b->max_error) || !fin(b->time_budget_ns) ||
         !fin(b->pass_cost_ns))
         swr_expect(c, SWARP_ERR_NON_FINITE);
-    for (int i = 0; i < 4; ++i)
+    for (int i = 0; i < 3; ++i)
         if (n->_reserved[i]) swr_expect(c, SWARP_ERR_RESERVED_NONZERO);
     if ((int)n->light.type < 0 || (int)n->light.type > 2 || (int)n->bleed_risk < 0 || (int)n->bleed_risk > 4)
         swr_expect(c, SWARP_ERR_UNKNOWN_ENUM);
