@@ -74,6 +74,11 @@ static void gen_needs(swr_ctx* c, swarp_scene_needs* n, swarp_budget* b) {
         uint32_t k = swr_u8(c) % 4;
         n->_reserved[k < 3 ? k : 2] = swr_reserved(c);
     }
+    /* the sweeps compare across rounding modes and against a snapshot: they
+     * run the model's rule, whose every decision is rounding-independent
+     * (the measured search compares measurements with the budget, a
+     * threshold rounding can decide; tests/plan covers that path) */
+    n->plan_by = SWARP_PLAN_BY_MODEL;
     static const double brk_e[] = {1e-9, 1.0, 100.0};
     b->max_error = swr_one_in(c, 3) ? 0 : swr_num_in(c, 1e-9, 100, brk_e, 3);
     b->map_resolution = swr_one_in(c, 2) ? 0 : 64u << (swr_u8(c) % 8);
@@ -155,7 +160,11 @@ static void check_plan(swr_ctx* c, swarp_status st, const swarp_budget* b, const
     SWR_CHECK(c, p->shadow_passes == K + p->lixel_count, "passes %u, K + lixel %u", p->shadow_passes, K + p->lixel_count);
     SWR_CHECK(c, p->gamma >= 0 && p->gamma <= 3.14159265358979324, "gamma %g", p->gamma);
     double budget = b && b->max_error > 0 ? b->max_error : 1.0;
-    if (p->meets_budget) SWR_CHECK(c, p->max_error <= budget, "meets_budget with error %g > %g", p->max_error, budget);
+    /* the error the plan was judged by: measured when it says so, else the model's */
+    const int by_measure = !evaluate && (p->reasons & SWARP_PLAN_WHY_RANKED_MEASURED);
+    const double judged = by_measure ? fmax(p->measured.max_m_s, p->measured.max_m_t) : p->max_error;
+    if (by_measure) SWR_CHECK(c, p->built == 1, "ranked by measurement but built %u", p->built);
+    if (p->meets_budget) SWR_CHECK(c, judged <= budget, "meets_budget with error %g > %g", judged, budget);
     if (!evaluate) SWR_CHECK(c, (st == SWARP_INFO_PLAN_BUDGET_UNMET) == !p->meets_budget || st == SWARP_INFO_PLAN_POINT_LIGHT,
                              "%s with meets_budget %u", swarp_status_name(st), p->meets_budget);
 }
