@@ -2333,8 +2333,13 @@ SWARP_API swarp_status swarp_lixel_select(const swarp_mat4* GLP, size_t count, c
  * of the matrices: swarp_plan_evaluate also builds the chain's matrices
  * (swarp_cascade_setup, options as docs/planning.md §9 maps the chain) and
  * reports their n' and measured error (swarp_measure_max) beside it.
- * Cost model (§3): shadow passes × a per-pass time (caller-measured,
- * or the default fitted to [RHS] Table 7.1) + prefilter blur passes.
+ * Cost model (§3): per shadow pass overhead + texels × per-texel time
+ * (calibrated: swarp_plan_cost_fit on measured passes), else a per-pass
+ * constant (the caller's, or the uncalibrated default fitted to [RHS]
+ * Table 7.1), + prefilter blur passes.
+ * Selection (§4): by default the model proposes and the matrices decide:
+ * the proposed chain is built and measured, and the model is re-calibrated
+ * by that chain's measured/model ratio until the measurement meets the budget.
  */
 
 /** Most shadow-map splits the planner considers (PSSM K = 1..16, [RHS] §3.3.5). */
@@ -2342,7 +2347,7 @@ SWARP_API swarp_status swarp_lixel_select(const swarp_mat4* GLP, size_t count, c
 /** Most planes of interest a swarp_scene_needs can declare. */
 #define SWARP_PLAN_MAX_PLANES 4
 /** Worst case of swarp_plan_explain()'s text, bytes including the NUL. */
-#define SWARP_PLAN_EXPLAIN_MAX 4096
+#define SWARP_PLAN_EXPLAIN_MAX 4608
 
 /** Light-bleeding risk of prefiltered (moment) shadow maps, [VSM] §3.4: how
  *  much occluders overlap at large depth ratios Δx/Δy (eq. (3.4)). */
@@ -2354,6 +2359,16 @@ typedef enum swarp_plan_bleed {
     SWARP_PLAN_BLEED_EXTREME = 4,  /**< many overlaps at extreme ratios ([VSM] Fig. 4.3) */
     SWARP_PLAN_BLEED_FORCE_I32 = 0x7FFFFFFF
 } swarp_plan_bleed;
+
+/** How swarp_plan judges whether a chain meets the error budget. */
+typedef enum swarp_plan_by {
+    SWARP_PLAN_BY_MEASURED = 0, /**< default: the model proposes, the chain's matrices are built
+                                     and measured (max m_s, m_t over H), and the model is
+                                     re-calibrated by measured/model until the measurement meets
+                                     the budget (docs/planning.md §4; about 1-6 ms) */
+    SWARP_PLAN_BY_MODEL = 1,    /**< the model alone (a few µs): docs/planning.md's table */
+    SWARP_PLAN_BY_FORCE_I32 = 0x7FFFFFFF
+} swarp_plan_by;
 
 /** What the scene calls for.  Zero means default for every field: a zeroed
  *  struct is the default scene (camera at (0,2,0) looking down -z, fovy 60°,
@@ -2376,7 +2391,8 @@ typedef struct swarp_scene_needs {
     uint32_t plane_count;     /**< planes of interest in planes[], <= SWARP_PLAN_MAX_PLANES */
     uint32_t _pad0;           /**< must be zero */
     swarp_plane planes[SWARP_PLAN_MAX_PLANES]; /**< candidate lixel planes [LIXEL] */
-    uint32_t _reserved[4];
+    swarp_plan_by plan_by;    /**< how swarp_plan judges the error of candidates */
+    uint32_t _reserved[3];
 } swarp_scene_needs;
 
 /** Largest time_budget_ns, pass_cost_ns and blur_pass_cost_ns swarp_plan()
@@ -2398,8 +2414,13 @@ typedef struct swarp_budget {
     double pass_cost_ns;      /**< one shadow pass at map_resolution, measured by the
                                    caller; 0: 1.39e6 (fit to [RHS] Table 7.1) */
     double blur_pass_cost_ns; /**< one separable prefilter blur pass over one map;
-                                   0: pass_cost_ns / 4 (assumption, docs/planning.md) */
-    uint32_t _reserved[4];
+                                   0: a quarter of one shadow pass (assumption, docs/planning.md) */
+    double pass_overhead_ns;  /**< calibrated cost model: one shadow pass of an r x r map
+                                   costs pass_overhead_ns + r² texel_cost_ns (fit them to
+                                   measured passes with swarp_plan_cost_fit); both 0: the
+                                   per-pass constant pass_cost_ns; >= 0, <= SWARP_PLAN_MAX_COST_NS */
+    double texel_cost_ns;     /**< the per-texel term of that model, ns per texel, >= 0,
+                                   <= SWARP_PLAN_MAX_COST_NS / 65536² */
 } swarp_budget;
 
 typedef enum swarp_plan_warp {
@@ -2465,6 +2486,7 @@ typedef enum swarp_plan_filter {
 #define SWARP_PLAN_WHY_POINT_AS_DIRECTIONAL (1u << 21) /**< point light modelled as directional */
 #define SWARP_PLAN_WHY_PASS_LIMITED       (1u << 22) /**< the pass limit excluded chains */
 #define SWARP_PLAN_WHY_FORCED             (1u << 23) /**< chain given by the caller (swarp_plan_evaluate) */
+#define SWARP_PLAN_WHY_RANKED_MEASURED    (1u << 24) /**< candidates ranked by the measured error of their built matrices */
 
 /* Per-plane outcome (swarp_plan.plane_reason[i]). */
 #define SWARP_PLAN_PLANE_USED           0u /**< a lixel map covers the plane */
@@ -2473,6 +2495,15 @@ typedef enum swarp_plan_filter {
 #define SWARP_PLAN_PLANE_NOT_VISIBLE    3u /**< the plane misses the view frustum */
 #define SWARP_PLAN_PLANE_NO_PASS_LEFT   4u /**< the pass limit (or time budget) is used up */
 #define SWARP_PLAN_PLANE_LIXEL_REFUSED  5u /**< swarp_lixel_matrix gave another error (e.g. singular) */
+
+/** The cost model a plan's cost_ns comes from (swarp_plan.cost_model). */
+typedef enum swarp_plan_cost_model {
+    SWARP_PLAN_COST_UNCALIBRATED = 0, /**< default per-pass time 1.39 ms fitted to [RHS]
+                                           Table 7.1, the same for every map size */
+    SWARP_PLAN_COST_PER_PASS = 1,     /**< the caller's pass_cost_ns, the same for every map size */
+    SWARP_PLAN_COST_LINEAR = 2,       /**< the caller's pass_overhead_ns + texels x texel_cost_ns */
+    SWARP_PLAN_COST_FORCE_I32 = 0x7FFFFFFF
+} swarp_plan_cost_model;
 
 /** The chosen chain.  The model's fields (splits, n_prime, split_max_mx/mz,
  *  max_mx, max_mz, max_error, error_area) are Lloyd's overhead-light model
@@ -2524,8 +2555,9 @@ typedef struct swarp_plan {
     uint32_t plane_count;             /**< planes declared in the needs (plane_reason valid) */
     /* The chain's matrices as an engine builds them: swarp_cascade_setup with
      * the options docs/planning.md §9 maps the chain to (one split: the
-     * cascade is swarp_setup itself).  swarp_plan_evaluate fills them;
-     * swarp_plan leaves built = 0 and them zero (evaluate its chain). */
+     * cascade is swarp_setup itself).  swarp_plan_evaluate fills them, and
+     * so does swarp_plan for the chain it chose (SWARP_PLAN_BY_MEASURED, a
+     * buildable chain): they are what an engine renders for this plan. */
     uint32_t built;                   /**< 1: the matrices were built, the fields below hold */
     swarp_status built_status;        /**< swarp_cascade_setup's status for the chain (an
                                            error: built = 0, e.g. SWARP_ERR_STABILIZE_LIGHT;
@@ -2539,7 +2571,9 @@ typedef struct swarp_plan {
                                            error (swarp_cascade_split.measured) */
     swarp_measured_error measured;    /**< the worst split's (swarp_cascade_result.measured):
                                            max_m_s, max_m_t, max_sigma, at */
-    uint32_t _reserved[4];
+    swarp_plan_cost_model cost_model; /**< which cost model gave cost_ns (UNCALIBRATED:
+                                           the default constant, not measured on this machine) */
+    uint32_t _reserved[3];
 } swarp_plan_result;
 
 /** What swarp_plan_evaluate builds besides the model's prediction. */
@@ -2568,11 +2602,19 @@ typedef struct swarp_plan_chain {
  *  PSM (+ inverse projection when the light is behind) as one map; PSSM with
  *  K = 2..16 splits (practical λ = 0.5 or logarithmic) unwarped, with n_opt
  *  or with n_repar per split.  A moving camera admits only unwarped chains
- *  (stabilised, [RHS] §3.5).  Chosen: the fewest passes whose predicted
- *  max(m_x, m_z) <= budget->max_error (and cost <= time budget); ties go to
- *  the lower error, then to the earlier (simpler) candidate.  If none meets
- *  it: the most accurate chain within the pass limit and
- *  SWARP_INFO_PLAN_BUDGET_UNMET.  Then the filter (soft shadows only), depth
+ *  (stabilised, [RHS] §3.5).  The model's rule: the fewest passes whose
+ *  predicted max(m_x, m_z) <= the budget (and cost <= time budget); ties go
+ *  to the lower error, then to the earlier (simpler) candidate.  With
+ *  needs->plan_by = SWARP_PLAN_BY_MEASURED (the default) that rule proposes a
+ *  chain, its matrices are built (as swarp_plan_evaluate) and measured; while
+ *  the measured max(m_s, m_t) exceeds budget->max_error the rule is applied
+ *  again against max_error × model/measured of the last chain (at least 3 %
+ *  tighter each round, at most 8 rounds): meets_budget then means the
+ *  MEASURED error meets it, and the built_* fields hold the chosen chain's
+ *  matrices.  Chains that cannot be built (point light) fall back to the
+ *  model.  SWARP_PLAN_BY_MODEL: the rule alone.  If none meets the budget:
+ *  the most accurate chain found (measured, or by the model within the pass
+ *  limit) and SWARP_INFO_PLAN_BUDGET_UNMET.  Then the filter (soft shadows only), depth
  *  clamping and lixel maps for declared lixel-friendly planes (passes left).
  *  Error model [RHS] (2.3)-(2.8), generalised to any γ (docs/planning.md).
  *  @param[in]  needs   scene; NULL or zeroed fields mean the defaults
@@ -2614,6 +2656,26 @@ SWARP_API swarp_status swarp_plan_evaluate(const swarp_scene_needs* needs,
                                            const swarp_budget* budget,
                                            const swarp_plan_chain* chain,
                                            struct swarp_plan* out_plan);
+
+/** @brief Least-squares fit of the planner's cost model to measured shadow
+ *  passes: pass_ns[i] ≈ overhead + texels[i] x per_texel over the count
+ *  pairs (texels of the pass's map, its measured time in ns), both terms
+ *  >= 0 (a negative least-squares term is set to 0 and the other refitted:
+ *  a line through the origin, or the mean time).  Put the results into
+ *  swarp_budget.pass_overhead_ns and texel_cost_ns.  No allocation.
+ *  @param[in]  texels  texels of each measured pass (> 0, finite), count entries
+ *  @param[in]  pass_ns measured time of each pass, ns (>= 0, finite)
+ *  @param[in]  count   pairs, >= 2
+ *  @param[out] out_overhead_ns, out_texel_cost_ns the fitted terms
+ *  @param[out] out_rms_ns  root-mean-square residual of the fit, ns (may be NULL)
+ *  @return SWARP_OK; SWARP_ERR_NULL_POINTER; SWARP_ERR_NON_FINITE;
+ *          SWARP_ERR_OUT_OF_RANGE (count < 2, texels <= 0, pass_ns < 0, or a
+ *          fitted term above the limits swarp_plan accepts);
+ *          SWARP_ERR_DEGENERATE (all texel counts equal: the two terms cannot
+ *          be told apart).  Outputs untouched on error. */
+SWARP_API swarp_status swarp_plan_cost_fit(const double* texels, const double* pass_ns, size_t count,
+                                           double* out_overhead_ns, double* out_texel_cost_ns,
+                                           double* out_rms_ns);
 
 /** @brief Readable text of a plan: the chain, the predicted error and cost,
  *  and one line per reason flag and per left-out plane.  Locale-independent.

@@ -67,6 +67,7 @@ typedef struct gallery {
     demo_renderer r;
     demo_plan plan;
     int have_plan;
+    double planned_near;       /**< near plane of the planned view (min-depth), 0: the camera's */
     demo_tech_result res[DEMO_TECH_COUNT + 1];
     int n;
     int rc;
@@ -114,7 +115,19 @@ static void gallery_close(gallery* g) {
 /* The plan of the view, printed (the gallery's first entry renders it). */
 static void gallery_plan(gallery* g) {
     if (g->single && g->o->technique != DEMO_TECH_PLANNED) return;
-    if (plan_view(g->o, &g->v, &g->scene.box, &g->plan) != 0) {
+    /* the near plane from the GPU min-depth reduction ([RHS] §4.3): no
+     * split then starts in front of the nearest visible surface */
+    demo_view pv = g->v;
+    demo_mindepth_result md;
+    if (demo_mindepth(&g->r, &g->v, &md) == 0 && md.adjusted_near > pv.cam.z_near &&
+        md.adjusted_near < pv.cam.z_far) {
+        printf("near plane from the min-depth reduction ([RHS] 4.3): %.4g (camera %.4g, nearest depth %.4g)\n",
+               md.adjusted_near, pv.cam.z_near, md.gpu_min);
+        pv.cam.z_near = md.adjusted_near;
+        demo_view_update(&pv);
+        g->planned_near = md.adjusted_near;
+    }
+    if (plan_view(g->o, &pv, &g->scene.box, &g->plan) != 0) {
         g->rc = 1;
         return;
     }
@@ -200,6 +213,10 @@ static int gallery_entry(gallery* g, int t) {
         if (demo_camera_preset("room", o->w, o->h, &lv.cam)) return 2;
         demo_view_update(&lv);
     }
+    if (t == DEMO_TECH_PLANNED && g->planned_near > 0.0) {
+        lv.cam.z_near = g->planned_near; /* the view the plan was made for */
+        demo_view_update(&lv);
+    }
     demo_tech_result* res = &g->res[g->n];
     int e = demo_run_technique(&q, &g->r, &lv, &g->scene.box, tt, splits, 1, res);
     if (e == -2 && !g->single) {
@@ -257,6 +274,49 @@ static void gallery_summary(const gallery* g) {
            " timings: glFinish-bracketed, llvmpipe)\n");
 }
 
+/* The planner fed with what the gallery measured: the cost model fitted to
+ * the shadow passes of every entry but the planned one (so the prediction
+ * is not fitted to the time it predicts; alone, --technique planned, it
+ * fits its own passes), the view re-planned with it, and its predicted
+ * shadow time against the planned entry's measured one. */
+static void gallery_calibrate(const gallery* g) {
+    if (!g->have_plan) return;
+    double tx[(DEMO_TECH_COUNT + 1) * DEMO_MAX_SPLITS], ns[(DEMO_TECH_COUNT + 1) * DEMO_MAX_SPLITS];
+    size_t n = 0;
+    const demo_tech_result* planned = NULL;
+    for (int pass = 0; pass < 2 && n == 0; ++pass)
+        for (int i = 0; i < g->n; ++i) {
+            const demo_tech_result* r = &g->res[i];
+            int is_planned = strcmp(r->label, "planned") == 0;
+            if (is_planned) planned = r;
+            if ((is_planned && pass == 0) || r->passes < 2) continue;
+            for (int k = 0; k < r->passes - 1 && n < sizeof tx / sizeof tx[0]; ++k) {
+                tx[n] = r->texels / (double)(r->passes - 1);
+                ns[n++] = r->shadow_ms[k] * 1e6;
+            }
+        }
+    if (!planned || n < 2) return;
+    demo_plan cal;
+    printf("\nplanner fed with the measured passes%s:\n  ", g->n > 1 ? " of the other entries" : " (its own)");
+    if (demo_plan_calibrate(&g->plan, tx, ns, n, &cal, stdout) != 0) return;
+    const struct swarp_plan* p0 = &g->plan.plan;
+    const struct swarp_plan* p1 = &cal.plan;
+    printf("  re-planned: %s, %u split(s) (was %s, %u); measured error %.3g (budget %.3g), %s\n",
+           swarp_plan_warp_name(p1->warp), p1->split_count, swarp_plan_warp_name(p0->warp), p0->split_count,
+           fmax(p1->measured.max_m_s, p1->measured.max_m_t), g->plan.budget.max_error > 0.0 ? g->plan.budget.max_error : 1.0,
+           p1->meets_budget ? "meets the budget" : "does NOT meet the budget");
+    printf("  shadow time of the rendered plan (%u passes): predicted %.2f ms uncalibrated, %.2f ms "
+           "calibrated; measured %.2f ms (calibrated/measured %.2f)\n",
+           p0->shadow_passes, p0->cost_ns * 1e-6,
+           p1->split_count == p0->split_count ? p1->cost_ns * 1e-6 : NAN, planned->shadow_ms_total,
+           p1->split_count == p0->split_count ? p1->cost_ns * 1e-6 / planned->shadow_ms_total : NAN);
+    for (uint32_t i = 0; i < p0->split_count && p0->built; ++i)
+        printf("  split %u [%.4g, %.4g]: n' %.4g, measured sigma %.3g over %u samples%s\n", i,
+               p0->built_splits[i], p0->built_splits[i + 1], p0->built_n_eye[i], p0->split_measured[i].max_sigma,
+               p0->split_measured[i].samples,
+               p0->split_measured[i].samples == 0 ? " (no receiver of the scene box in this split)" : "");
+}
+
 int demo_run_gallery(const demo_options* o, int single, demo_gallery_report* rep) {
     gallery g;
     memset(&g, 0, sizeof g);
@@ -279,6 +339,7 @@ int demo_run_gallery(const demo_options* o, int single, demo_gallery_report* rep
     }
     if (g.n > 0 && !single && make_sheet(o, g.res, g.n)) g.rc = 1;
     if (g.n > 0) gallery_summary(&g);
+    if (g.n > 0) gallery_calibrate(&g);
     gallery_close(&g);
     return g.rc;
 }

@@ -40,6 +40,9 @@ static void plan_request(const swarp_camera* cam, const swarp_light* light, cons
     budget->max_passes = (uint32_t)max_passes;
 }
 
+static int plan_and_map(const swarp_scene_needs* needs_in, const swarp_budget* budget_in, demo_filter wanted,
+                        demo_plan* out);
+
 int demo_plan_make(const swarp_camera* cam, const swarp_light* light, const swarp_aabb* box,
                    int screen_w, int screen_h, int map_res, int max_passes, int camera_moves,
                    demo_filter wanted, const swarp_plane* planes, int plane_count,
@@ -48,9 +51,44 @@ int demo_plan_make(const swarp_camera* cam, const swarp_light* light, const swar
     swarp_budget budget;
     plan_request(cam, light, box, screen_w, screen_h, map_res, max_passes, camera_moves, wanted,
                  planes, plane_count, &needs, &budget);
+    return plan_and_map(&needs, &budget, wanted, out);
+}
+
+int demo_plan_calibrate(const demo_plan* p, const double* texels, const double* pass_ns, size_t count,
+                        demo_plan* out, FILE* f) {
+    swarp_budget b = p->budget;
+    double a = 0.0, t = 0.0, rms = 0.0;
+    swarp_status s = swarp_plan_cost_fit(texels, pass_ns, count, &a, &t, &rms);
+    if (s == SWARP_OK) {
+        b.pass_overhead_ns = a;
+        b.texel_cost_ns = t;
+        fprintf(f, "cost model fitted to %zu measured shadow passes: %.3f ms + %.4g ns per texel "
+                   "(rms %.3f ms)\n", count, a * 1e-6, t, rms * 1e-6);
+    } else if (s == SWARP_ERR_DEGENERATE) {
+        double sum = 0.0;
+        for (size_t i = 0; i < count; ++i) sum += pass_ns[i];
+        b.pass_cost_ns = sum / (double)count;
+        fprintf(f, "cost model from %zu measured shadow passes, all at %.0f texels: %.3f ms per pass "
+                   "(the per-texel term needs passes at two map sizes)\n", count, texels[0],
+                b.pass_cost_ns * 1e-6);
+    } else {
+        fprintf(stderr, "demo: swarp_plan_cost_fit: %s\n", swarp_status_string(s));
+        return -1;
+    }
+    demo_filter wanted = p->needs.soft_shadows ? (p->filter == DEMO_FILTER_NONE ? DEMO_FILTER_PCF3 : p->filter)
+                                               : DEMO_FILTER_NONE;
+    return plan_and_map(&p->needs, &b, wanted, out);
+}
+
+static int plan_and_map(const swarp_scene_needs* needs_in, const swarp_budget* budget_in, demo_filter wanted,
+                        demo_plan* out) {
+    swarp_scene_needs needs = *needs_in;
+    swarp_budget budget = *budget_in;
 
     demo_plan p;
     memset(&p, 0, sizeof p);
+    p.needs = needs;
+    p.budget = budget;
     p.status = swarp_plan(&needs, &budget, &p.plan);
     if (swarp_status_is_error(p.status)) {
         fprintf(stderr, "demo: swarp_plan: %s\n", swarp_status_string(p.status));

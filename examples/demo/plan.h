@@ -21,6 +21,8 @@ typedef struct demo_plan {
     demo_filter filter;
     int exact;               /**< 1: the demo renders exactly the planned chain */
     char note[256];          /**< where the demo's machinery differs from the plan */
+    swarp_scene_needs needs; /**< what was asked (for re-planning with measured costs) */
+    swarp_budget budget;
 } demo_plan;
 
 /** Plans the shadows of one view: camera, light, scene box, the screen and
@@ -32,6 +34,14 @@ int demo_plan_make(const swarp_camera* cam, const swarp_light* light, const swar
                    int screen_w, int screen_h, int map_res, int max_passes, int camera_moves,
                    demo_filter wanted, const swarp_plane* planes, int plane_count,
                    demo_plan* out);
+
+/** Re-plans p's request with the cost model calibrated from measured
+ *  shadow passes (texels[i], pass_ns[i], count of them): the
+ *  overhead + per-texel fit of swarp_plan_cost_fit, or, when every pass had
+ *  the same map size (the fit cannot tell the terms apart), their mean as
+ *  the per-pass cost.  Prints the fit.  0, or -1 with a message. */
+int demo_plan_calibrate(const demo_plan* p, const double* texels, const double* pass_ns, size_t count,
+                        demo_plan* out, FILE* f);
 
 /** Prints the plan, its reasons (swarp_plan_explain) and how the demo maps
  *  it onto its techniques. */

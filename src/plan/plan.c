@@ -56,6 +56,10 @@
 #define SW_MAX_RES 65536u
 #define SW_MAX_PASSES 32u
 
+/* Largest texel_cost_ns: a pass of the largest map (65536² texels) then
+ * stays within SWARP_PLAN_MAX_COST_NS, so every predicted cost is finite. */
+#define SW_MAX_TEXEL_NS (SWARP_PLAN_MAX_COST_NS / (65536.0 * 65536.0))
+
 /* ---- resolved inputs ------------------------------------------------------ */
 
 typedef struct sw_pin {
@@ -78,12 +82,15 @@ typedef struct sw_pin {
     double soft_width;
     swarp_plan_bleed bleed;
     int allow_clamp;
+    int by_model;               /* SWARP_PLAN_BY_MODEL: no matrices built */
     uint32_t plane_count;
     swarp_plane planes[SWARP_PLAN_MAX_PLANES];
     /* budget */
     double max_error;
     uint32_t map_res, atlas_limit, max_passes;
     double time_budget, pass_ns, blur_ns;
+    double overhead_ns, texel_ns;   /* calibrated model (cost_model LINEAR) */
+    swarp_plan_cost_model cost_model;
 } sw_pin;
 
 static int sw_all_zero(const void* p, size_t n) {
@@ -178,7 +185,8 @@ static swarp_status sw_check_needs(const swarp_scene_needs* needs) {
     if (needs->camera_moves > 1 || needs->soft_shadows > 1 || needs->allow_depth_clamp > 1)
         return SWARP_ERR_OUT_OF_RANGE;
     if (needs->soft_width != 0.0 && !(needs->soft_width >= 1.0)) return SWARP_ERR_OUT_OF_RANGE;
-    if ((uint32_t)needs->bleed_risk > (uint32_t)SWARP_PLAN_BLEED_EXTREME)
+    if ((uint32_t)needs->bleed_risk > (uint32_t)SWARP_PLAN_BLEED_EXTREME ||
+        (uint32_t)needs->plan_by > (uint32_t)SWARP_PLAN_BY_MODEL)
         return SWARP_ERR_UNKNOWN_ENUM;
     if (needs->plane_count > SWARP_PLAN_MAX_PLANES) return SWARP_ERR_PLAN_TOO_MANY_PLANES;
     for (uint32_t i = 0; i < needs->plane_count; ++i) {
@@ -194,8 +202,12 @@ static swarp_status sw_check_needs(const swarp_scene_needs* needs) {
 
 static swarp_status sw_check_budget(const swarp_budget* budget) {
     if (!sw_finite(budget->max_error) || !sw_finite(budget->time_budget_ns) ||
-        !sw_finite(budget->pass_cost_ns) || !sw_finite(budget->blur_pass_cost_ns))
+        !sw_finite(budget->pass_cost_ns) || !sw_finite(budget->blur_pass_cost_ns) ||
+        !sw_finite(budget->pass_overhead_ns) || !sw_finite(budget->texel_cost_ns))
         return SWARP_ERR_NON_FINITE;
+    if (budget->pass_overhead_ns < 0.0 || budget->texel_cost_ns < 0.0 ||
+        budget->pass_overhead_ns > SWARP_PLAN_MAX_COST_NS || budget->texel_cost_ns > SW_MAX_TEXEL_NS)
+        return SWARP_ERR_OUT_OF_RANGE;
     if (budget->max_error < 0.0 || budget->time_budget_ns < 0.0 || budget->pass_cost_ns < 0.0 ||
         budget->blur_pass_cost_ns < 0.0 || budget->max_passes > SW_MAX_PASSES)
         return SWARP_ERR_OUT_OF_RANGE;
@@ -219,6 +231,7 @@ static void sw_resolve_defaults(const swarp_scene_needs* needs, const swarp_budg
     in->bleed = needs->bleed_risk == SWARP_PLAN_BLEED_DEFAULT ? SWARP_PLAN_BLEED_NONE
                                                                : needs->bleed_risk;
     in->allow_clamp = (int)needs->allow_depth_clamp;
+    in->by_model = needs->plan_by == SWARP_PLAN_BY_MODEL;
     in->plane_count = needs->plane_count;
     for (uint32_t i = 0; i < needs->plane_count; ++i) in->planes[i] = needs->planes[i];
 
@@ -228,8 +241,28 @@ static void sw_resolve_defaults(const swarp_scene_needs* needs, const swarp_budg
     in->max_passes = budget->max_passes ? budget->max_passes : 16u;
     in->time_budget = budget->time_budget_ns;
     in->pass_ns = budget->pass_cost_ns > 0.0 ? budget->pass_cost_ns : SW_DEFAULT_PASS_NS;
-    in->blur_ns = budget->blur_pass_cost_ns > 0.0 ? budget->blur_pass_cost_ns
-                                                  : SW_DEFAULT_BLUR_FRACTION * in->pass_ns;
+    in->blur_ns = budget->blur_pass_cost_ns; /* 0: a fraction of the pass (sw_blur_ns) */
+    in->overhead_ns = budget->pass_overhead_ns;
+    in->texel_ns = budget->texel_cost_ns;
+    if (in->overhead_ns > 0.0 || in->texel_ns > 0.0)
+        in->cost_model = SWARP_PLAN_COST_LINEAR;
+    else
+        in->cost_model = budget->pass_cost_ns > 0.0 ? SWARP_PLAN_COST_PER_PASS : SWARP_PLAN_COST_UNCALIBRATED;
+}
+
+/* One shadow pass of an r x r map (docs/planning.md §3): the calibrated
+ * model overhead + r² per-texel when the caller gave it, else the per-pass
+ * constant.  Both terms are bounded (sw_check_budget), so the sum is finite. */
+static double sw_pass_ns(const sw_pin* in, uint32_t r) {
+    if (in->cost_model == SWARP_PLAN_COST_LINEAR)
+        return in->overhead_ns + (double)r * (double)r * in->texel_ns;
+    return in->pass_ns;
+}
+
+/* One separable blur pass over an r x r map: the caller's, else a quarter
+ * of the shadow pass at that resolution (SW_DEFAULT_BLUR_FRACTION). */
+static double sw_blur_ns(const sw_pin* in, uint32_t r) {
+    return in->blur_ns > 0.0 ? in->blur_ns : SW_DEFAULT_BLUR_FRACTION * sw_pass_ns(in, r);
 }
 
 /* Relative width a box flat across the view gets (f = n, or narrower than
@@ -306,8 +339,7 @@ static swarp_status sw_resolve(const swarp_scene_needs* needs, const swarp_budge
     if (!budget) budget = &zero_budget;
     memset(in, 0, sizeof *in);
 
-    if (!sw_reserved_zero(needs->_reserved, 4) || needs->_pad0 != 0 ||
-        !sw_reserved_zero(budget->_reserved, 4) || budget->_pad0 != 0)
+    if (!sw_reserved_zero(needs->_reserved, 3) || needs->_pad0 != 0 || budget->_pad0 != 0)
         return SWARP_ERR_RESERVED_NONZERO;
     swarp_status s;
     if ((s = sw_resolve_view(needs, in)) != SWARP_OK) return s;
@@ -487,6 +519,7 @@ typedef struct sw_eval {
     double n_prime[SWARP_PLAN_MAX_SPLITS];
     double smx[SWARP_PLAN_MAX_SPLITS], smz[SWARP_PLAN_MAX_SPLITS];
     double mx, mz, err, cost;
+    double rank;   /* the error candidates are ranked by: the model's err, or measured */
     swarp_plan_stabilize stab;
     int ok;
 } sw_eval;
@@ -540,7 +573,8 @@ static void sw_evaluate(const sw_pin* in, const sw_filter* flt, const swarp_plan
         if (e->smz[i] > e->mz) e->mz = e->smz[i];
     }
     e->err = e->mx > e->mz ? e->mx : e->mz;
-    e->cost = (double)K * in->pass_ns + (double)(K * flt->blur_per_map) * in->blur_ns;
+    e->rank = e->err; /* swarp_plan replaces it by the measured error */
+    e->cost = (double)K * sw_pass_ns(in, r) + (double)(K * flt->blur_per_map) * sw_blur_ns(in, r);
     e->ok = 1;
 }
 
@@ -722,13 +756,14 @@ static void sw_fill(const sw_pin* in, const sw_filter* flt, const swarp_plan_cha
     p->blur_passes = e->K * flt->blur_per_map;
     p->texels = (double)e->K * (double)e->r * (double)e->r;
     p->cost_ns = e->cost;
-    p->meets_budget = e->err <= in->max_error &&
+    p->cost_model = in->cost_model;
+    p->meets_budget = e->rank <= in->max_error &&
                       (in->time_budget <= 0.0 || e->cost <= in->time_budget);
 
     /* lixel maps with the passes (and time) left over */
     p->plane_count = in->plane_count;
     if (in->plane_count == 0) R |= SWARP_PLAN_WHY_NO_LIXEL_NONE;
-    double lixel_cost = in->pass_ns + (double)flt->blur_per_map * in->blur_ns;
+    double lixel_cost = sw_pass_ns(in, in->map_res) + (double)flt->blur_per_map * sw_blur_ns(in, in->map_res);
     for (uint32_t i = 0; i < in->plane_count; ++i) {
         uint32_t why = sw_plane_check(in, &in->planes[i]);
         if (why == SWARP_PLAN_PLANE_USED) {
@@ -845,7 +880,150 @@ static void sw_build_chain(const sw_pin* in, uint32_t skip_measure, swarp_plan_r
 
 static int sw_better_error(const sw_eval* a, const sw_eval* b) {
     /* a strictly more accurate than b (beyond the tie tolerance) */
-    return a->err < b->err * (1.0 - SW_ERR_TIE_REL);
+    return a->rank < b->rank * (1.0 - SW_ERR_TIE_REL);
+}
+
+/* The error the budget is compared with for a built chain: the measured
+ * max(m_s, m_t) over H, the generalisation of the budget's max(m_x, m_z)
+ * (swarp_budget.max_error) to the matrices' own axes. */
+static double sw_measured_rank(const swarp_measured_error* m) {
+    return m->max_m_s > m->max_m_t ? m->max_m_s : m->max_m_t;
+}
+
+/* What one search over the candidates found. */
+typedef struct sw_search {
+    sw_eval best, fallback;
+    swarp_plan_chain best_c, fb_c;
+    int have_best, have_fb, time_limited, pass_limited;
+    uint32_t evaluated;
+} sw_search;
+
+/* Selection by the model (docs/planning.md §4) against the error budget
+ * max_error: the cheapest chain that meets it, ties to the lower error, then
+ * the earlier candidate; and the most accurate chain within the pass limit
+ * as the fallback. */
+static void sw_run_search(const sw_pin* in, const sw_filter* flt, double max_error, sw_search* S) {
+    memset(S, 0, sizeof *S);
+    sw_eval cur;
+    for (uint32_t i = 0; i < SW_CANDIDATES; ++i) {
+        swarp_plan_chain c = sw_candidate(i);
+        /* candidates come in order of K and the cost grows strictly with K
+         * (pass cost > 0): once a chain meets the budget, no later K can be
+         * cheaper, so the search stops there (the usual case stays cheap) */
+        if (S->have_best && c.split_count > S->best.K) break;
+        /* a moving camera needs stabilisation, which warps do not admit
+         * [RHS] §3.5 */
+        if (in->moves && c.warp != SWARP_PLAN_WARP_UNIFORM) continue;
+        sw_evaluate(in, flt, &c, &cur);
+        ++S->evaluated;
+        if (!cur.ok) continue;
+        int err_ok = cur.err <= max_error;
+        if (c.split_count > in->max_passes) {
+            if (err_ok) S->pass_limited = 1;
+            continue;
+        }
+        int time_ok = in->time_budget <= 0.0 || cur.cost <= in->time_budget;
+        if (err_ok && !time_ok) S->time_limited = 1;
+        if (!S->have_fb || sw_better_error(&cur, &S->fallback) ||
+            (!sw_better_error(&S->fallback, &cur) && cur.cost < S->fallback.cost)) {
+            S->fallback = cur;
+            S->fb_c = c;
+            S->have_fb = 1;
+        }
+        if (err_ok && time_ok &&
+            (!S->have_best || cur.cost < S->best.cost ||
+             (cur.cost == S->best.cost && sw_better_error(&cur, &S->best)))) {
+            S->best = cur;
+            S->best_c = c;
+            S->have_best = 1;
+        }
+    }
+}
+
+/* Rounds of the calibrated search (swarp_plan): each builds and measures
+ * one chain (0.2-1 ms).  The effective budget shrinks every round by at
+ * least the factor SW_CALIB_MIN_STEP, so each round asks the model for a
+ * more accurate chain than the last; the cap bounds the planning time. */
+#define SW_CALIB_ROUNDS 8
+#define SW_CALIB_MIN_STEP 0.97
+
+/* The chain the calibrated search settled on and what its rounds saw. */
+typedef struct sw_calib {
+    swarp_plan_chain c;
+    sw_eval e;
+    swarp_plan_result built;  /* its matrices and measured error */
+    int have, meets, time_limited, pass_limited;
+    uint32_t evaluated, rounds;
+} sw_calib;
+
+/* One round: the model's choice against the effective budget eff, built and
+ * measured.  Returns 1 and fills *e, *c, *bp when a chain was found. */
+static int sw_calib_round(const sw_pin* in, const sw_filter* flt, double eff, sw_calib* C,
+                          sw_eval* e, swarp_plan_chain* c, swarp_plan_result* bp, int* model_met) {
+    sw_search S;
+    sw_run_search(in, flt, eff, &S);
+    C->evaluated += S.evaluated;
+    C->time_limited |= S.time_limited;
+    C->pass_limited |= S.pass_limited;
+    if (!S.have_fb) return 0;
+    *model_met = S.have_best;
+    *e = S.have_best ? S.best : S.fallback;
+    *c = S.have_best ? S.best_c : S.fb_c;
+    sw_fill(in, flt, c, e, bp);
+    if (!in->by_model) sw_build_chain(in, 0, bp);
+    return 1;
+}
+
+/* The search with a model calibrated against measurement: the model
+ * chooses against an effective budget, the chain's matrices are built and
+ * measured (max(m_s, m_t) over H), and while the measurement misses the
+ * budget the effective budget is scaled by that chain's model/measured
+ * ratio and the model chooses again.  Keeps the first chain whose measured
+ * error meets the budget, else the most accurate one measured. */
+static void sw_calibrated_search(const sw_pin* in, const sw_filter* flt, sw_calib* C) {
+    memset(C, 0, sizeof *C);
+    double eff = in->max_error, best_meas = INFINITY;
+    sw_eval e;
+    swarp_plan_chain c;
+    swarp_plan_result bp;
+    for (uint32_t round = 0; round < SW_CALIB_ROUNDS; ++round) {
+        int model_met = 0;
+        if (!sw_calib_round(in, flt, eff, C, &e, &c, &bp, &model_met)) break;
+        ++C->rounds;
+        if (in->by_model || !bp.built || bp.measured.samples == 0) {
+            /* not buildable (a point light, a stabilised warp): the model is
+             * all there is for this chain */
+            if (!C->have) {
+                C->c = c; C->e = e; C->built = bp; C->have = 1; C->meets = model_met;
+            }
+            break;
+        }
+        double meas = sw_measured_rank(&bp.measured);
+        if (!(meas >= 0.0)) break; /* NaN: not expected */
+        e.rank = meas;
+        if (!C->have || meas < best_meas) {
+            C->c = c; C->e = e; C->built = bp; C->have = 1; C->meets = 0;
+            best_meas = meas;
+        }
+        if (meas <= in->max_error) {
+            C->c = c; C->e = e; C->built = bp;
+            C->meets = in->time_budget <= 0.0 || e.cost <= in->time_budget;
+            break;
+        }
+        /* the model's fallback is already its most accurate chain */
+        if (!model_met || !sw_finite(meas)) break;
+        eff = fmin(in->max_error * (e.err / meas), eff * SW_CALIB_MIN_STEP);
+    }
+}
+
+/* The built fields of plan b (the chosen chain's matrices) into p. */
+static void sw_copy_built(const swarp_plan_result* b, swarp_plan_result* p) {
+    p->built = b->built;
+    p->built_status = b->built_status;
+    memcpy(p->built_splits, b->built_splits, sizeof p->built_splits);
+    memcpy(p->built_n_eye, b->built_n_eye, sizeof p->built_n_eye);
+    memcpy(p->split_measured, b->split_measured, sizeof p->split_measured);
+    p->measured = b->measured;
 }
 
 SWARP_API swarp_status swarp_plan(const swarp_scene_needs* needs, const swarp_budget* budget,
@@ -855,68 +1033,26 @@ SWARP_API swarp_status swarp_plan(const swarp_scene_needs* needs, const swarp_bu
     swarp_status s = sw_resolve(needs, budget, &in);
     if (s != SWARP_OK) return s;
     sw_filter flt = sw_choose_filter(&in);
-
-    sw_eval best, fallback, cur;
-    swarp_plan_chain best_c, fb_c;
-    memset(&best_c, 0, sizeof best_c);
-    memset(&fb_c, 0, sizeof fb_c);
-    int have_best = 0, have_fb = 0, time_limited = 0, pass_limited = 0;
-    uint32_t evaluated = 0;
-    for (uint32_t i = 0; i < SW_CANDIDATES; ++i) {
-        swarp_plan_chain c = sw_candidate(i);
-        /* candidates come in order of K and the cost grows strictly with K
-         * (pass cost > 0): once a chain meets the budget, no later K can be
-         * cheaper, so the search stops there (the usual case stays cheap) */
-        if (have_best && c.split_count > best.K) break;
-        /* a moving camera needs stabilisation, which warps do not admit
-         * [RHS] §3.5 */
-        if (in.moves && c.warp != SWARP_PLAN_WARP_UNIFORM) continue;
-        sw_evaluate(&in, &flt, &c, &cur);
-        ++evaluated;
-        if (!cur.ok) continue;
-        int err_ok = cur.err <= in.max_error;
-        if (c.split_count > in.max_passes) {
-            if (err_ok) pass_limited = 1;
-            continue;
-        }
-        int time_ok = in.time_budget <= 0.0 || cur.cost <= in.time_budget;
-        if (err_ok && !time_ok) time_limited = 1;
-        /* most accurate within the pass limit: lower error, then cheaper,
-         * then earlier */
-        if (!have_fb || sw_better_error(&cur, &fallback) ||
-            (!sw_better_error(&fallback, &cur) && cur.cost < fallback.cost)) {
-            fallback = cur;
-            fb_c = c;
-            have_fb = 1;
-        }
-        if (err_ok && time_ok) {
-            /* cheapest, then more accurate, then earlier */
-            if (!have_best || cur.cost < best.cost ||
-                (cur.cost == best.cost && sw_better_error(&cur, &best))) {
-                best = cur;
-                best_c = c;
-                have_best = 1;
-            }
-        }
-    }
-    if (!have_fb) return SWARP_ERR_DEGENERATE; /* no candidate computable: not expected */
+    sw_calib C;
+    sw_calibrated_search(&in, &flt, &C);
+    if (!C.have) return SWARP_ERR_DEGENERATE; /* no candidate computable: not expected */
 
     swarp_plan_result p;
     swarp_status st;
-    if (have_best) {
-        sw_fill(&in, &flt, &best_c, &best, &p);
-        p.reasons |= best.K == 1 ? SWARP_PLAN_WHY_ONE_MAP_MEETS : SWARP_PLAN_WHY_SPLITS_NEEDED;
-        if (time_limited) p.reasons |= SWARP_PLAN_WHY_TIME_LIMITED;
+    sw_fill(&in, &flt, &C.c, &C.e, &p);
+    sw_copy_built(&C.built, &p);
+    if (p.built) p.reasons |= SWARP_PLAN_WHY_RANKED_MEASURED;
+    if (C.meets) {
+        p.reasons |= C.e.K == 1 ? SWARP_PLAN_WHY_ONE_MAP_MEETS : SWARP_PLAN_WHY_SPLITS_NEEDED;
         st = in.point_light ? SWARP_INFO_PLAN_POINT_LIGHT : SWARP_OK;
     } else {
-        sw_fill(&in, &flt, &fb_c, &fallback, &p);
         p.meets_budget = 0;
         p.reasons |= SWARP_PLAN_WHY_BUDGET_UNMET;
-        if (time_limited) p.reasons |= SWARP_PLAN_WHY_TIME_LIMITED;
-        if (pass_limited) p.reasons |= SWARP_PLAN_WHY_PASS_LIMITED;
+        if (C.pass_limited) p.reasons |= SWARP_PLAN_WHY_PASS_LIMITED;
         st = SWARP_INFO_PLAN_BUDGET_UNMET;
     }
-    p.candidates = evaluated;
+    if (C.time_limited) p.reasons |= SWARP_PLAN_WHY_TIME_LIMITED;
+    p.candidates = C.evaluated;
     *out_plan = p;
     return st;
 }
@@ -956,6 +1092,59 @@ SWARP_API swarp_status swarp_plan_evaluate(const swarp_scene_needs* needs,
         sw_build_chain(&in, c.matrices == SWARP_PLAN_MATRICES_UNMEASURED, &p);
     *out_plan = p;
     return in.point_light ? SWARP_INFO_PLAN_POINT_LIGHT : SWARP_OK;
+}
+
+/* ---- the cost model's calibration ------------------------------------------ */
+
+SWARP_API swarp_status swarp_plan_cost_fit(const double* texels, const double* pass_ns, size_t count,
+                                           double* out_overhead_ns, double* out_texel_cost_ns,
+                                           double* out_rms_ns) {
+    if (!texels || !pass_ns || !out_overhead_ns || !out_texel_cost_ns) return SWARP_ERR_NULL_POINTER;
+    if (count < 2) return SWARP_ERR_OUT_OF_RANGE;
+    double mx = 0.0, my = 0.0;
+    for (size_t i = 0; i < count; ++i) {
+        if (!sw_finite(texels[i]) || !sw_finite(pass_ns[i])) return SWARP_ERR_NON_FINITE;
+        if (!(texels[i] > 0.0) || pass_ns[i] < 0.0) return SWARP_ERR_OUT_OF_RANGE;
+        mx += texels[i];
+        my += pass_ns[i];
+    }
+    mx /= (double)count;
+    my /= (double)count;
+    /* the normal equations about the means (centred: no cancellation of
+     * Σx² against n x̄² at 1e7-texel maps) */
+    double sxx = 0.0, sxy = 0.0, sx2 = 0.0, sxy0 = 0.0;
+    for (size_t i = 0; i < count; ++i) {
+        double dx = texels[i] - mx;
+        sxx += dx * dx;
+        sxy += dx * (pass_ns[i] - my);
+        sx2 += texels[i] * texels[i];
+        sxy0 += texels[i] * pass_ns[i];
+    }
+    if (!(sxx > 0.0)) return SWARP_ERR_DEGENERATE;
+    double b = sxy / sxx, a = my - b * mx;
+    /* the least-squares optimum under a, b >= 0 lies on the boundary when
+     * the free optimum leaves the quadrant: the problem is convex, so the
+     * better of the two one-term fits (a = 0: the line through the origin;
+     * b = 0: the mean) is the constrained optimum */
+    if (b < 0.0) {
+        b = 0.0;
+        a = my;
+    } else if (a < 0.0) {
+        a = 0.0;
+        b = sxy0 / sx2;
+    }
+    if (a > SWARP_PLAN_MAX_COST_NS || b > SW_MAX_TEXEL_NS) return SWARP_ERR_OUT_OF_RANGE;
+    if (out_rms_ns) {
+        double ss = 0.0;
+        for (size_t i = 0; i < count; ++i) {
+            double r = pass_ns[i] - (a + b * texels[i]);
+            ss += r * r;
+        }
+        *out_rms_ns = sqrt(ss / (double)count);
+    }
+    *out_overhead_ns = a;
+    *out_texel_cost_ns = b;
+    return SWARP_OK;
 }
 
 /* ---- names and text --------------------------------------------------------- */
@@ -1023,6 +1212,7 @@ static const struct { uint32_t bit; const char* text; } sw_why_text[] = {
     {SWARP_PLAN_WHY_POINT_AS_DIRECTIONAL, "point light planned as directional toward the view frustum's centre"},
     {SWARP_PLAN_WHY_PASS_LIMITED, "more passes than the limit would have met the error budget"},
     {SWARP_PLAN_WHY_FORCED, "chain given by the caller (evaluated, not chosen)"},
+    {SWARP_PLAN_WHY_RANKED_MEASURED, "candidates judged by the measured error of their built matrices (max m_s, m_t over the view)"},
 };
 
 static const char* sw_plane_text(uint32_t why) {
@@ -1115,7 +1305,12 @@ static void sw_explain(const swarp_plan_result* p, sw_text* t) {
     sw_putd(t, p->texels);
     sw_puts(t, " texels, ");
     sw_putd(t, p->cost_ns * 1e-6);
-    sw_puts(t, " ms predicted\n");
+    sw_puts(t, " ms predicted");
+    switch (p->cost_model) {
+    case SWARP_PLAN_COST_LINEAR: sw_puts(t, " (cost model calibrated: overhead + per-texel)\n"); break;
+    case SWARP_PLAN_COST_PER_PASS: sw_puts(t, " (cost model: the caller's per-pass time)\n"); break;
+    default: sw_puts(t, " (cost model uncalibrated: 1.39 ms per pass from [RHS] Table 7.1)\n"); break;
+    }
     for (size_t i = 0; i < sizeof sw_why_text / sizeof sw_why_text[0]; ++i)
         if (p->reasons & sw_why_text[i].bit) {
             sw_puts(t, "why: ");
@@ -1148,7 +1343,8 @@ SWARP_API swarp_status swarp_plan_explain(const struct swarp_plan* plan, char* o
         (uint32_t)plan->filter > (uint32_t)SWARP_PLAN_FILTER_LVSM ||
         (uint32_t)plan->stabilize > (uint32_t)SWARP_PLAN_STABILIZE_APPROX64 ||
         plan->split_count > SWARP_PLAN_MAX_SPLITS || plan->lixel_count > SWARP_PLAN_MAX_PLANES ||
-        plan->plane_count > SWARP_PLAN_MAX_PLANES)
+        plan->plane_count > SWARP_PLAN_MAX_PLANES ||
+        (uint32_t)plan->cost_model > (uint32_t)SWARP_PLAN_COST_LINEAR)
         return SWARP_ERR_UNKNOWN_ENUM;
     sw_text t = {NULL, 0, 0};
     sw_explain(plan, &t);

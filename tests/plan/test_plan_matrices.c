@@ -293,28 +293,70 @@ END_TEST
 
 /* ---- 4. swarp_plan, and chains no engine can build ---------------------------- */
 
-START_TEST(plan_does_not_build_and_evaluate_keeps_its_model) {
+/* The worst measured max(m_s, m_t) over the splits of a cascade the test
+ * builds itself, each split's matrix measured by swarp_measure_max over its
+ * own depth range (the independent evaluation of the plan's claim). */
+static double independent_measured(const swarp_scene_needs* n, const swarp_plan_result* p, built* b) {
+    engine_build(n, p, b);
+    ck_assert(!swarp_status_is_error(b->status));
+    ck_assert_uint_eq(b->count, p->split_count);
+    swarp_measure_res res = {.map_width = p->map_resolution, .map_height = p->map_resolution,
+                             .screen_width = n->screen_width ? n->screen_width : 1024,
+                             .screen_height = n->screen_height ? n->screen_height : 768};
+    double worst = 0.0;
+    for (size_t i = 0; i < b->count; ++i) {
+        swarp_measured_error m;
+        swarp_status s = swarp_measure_max(&n->camera, b->r.splits[i], b->r.splits[i + 1], &n->light, &n->scene_box,
+                                           &b->sp[i].matrix, &res, NULL, &m);
+        if (s == SWARP_ERR_BODY_EMPTY) continue; /* the split sees no part of the box */
+        ck_assert(!swarp_status_is_error(s));
+        worst = fmax(worst, fmax(m.max_m_s, m.max_m_t));
+    }
+    return worst;
+}
+
+START_TEST(plan_builds_its_chain_and_meets_the_measured_budget) {
     static const double gammas[] = {90.0, 40.0, 10.0, 150.0};
+    static const double budgets[] = {0.5, 2.0, 6.0};
+    int met = 0;
     for (int gi = 0; gi < 4; ++gi)
-        for (int moves = 0; moves < 2; ++moves) {
-            swarp_scene_needs n = scene(gammas[gi], 500.0, 1);
-            n.camera_moves = (uint32_t)moves;
-            swarp_budget bud;
-            memset(&bud, 0, sizeof bud);
-            bud.max_error = 2.0;
-            swarp_plan_result p, q;
-            ck_assert(!swarp_status_is_error(swarp_plan(&n, &bud, &p)));
-            ck_assert_uint_eq(p.built, 0);
-            ck_assert_uint_eq(p.measured.samples, 0);
-            swarp_plan_chain c = chain_of(p.warp, p.scheme, p.split_count);
-            c.stabilize = p.stabilize;
-            ck_assert(!swarp_status_is_error(swarp_plan_evaluate(&n, &bud, &c, &q)));
-            ck_assert_uint_eq(q.built, 1);
-            ck_assert_int_eq(memcmp(p.splits, q.splits, sizeof p.splits), 0);
-            ck_assert_int_eq(memcmp(p.n_prime, q.n_prime, sizeof p.n_prime), 0);
-            ck_assert_double_eq(p.max_error, q.max_error);
-            ck_assert_uint_eq(p.meets_budget, q.meets_budget);
-        }
+        for (int bi = 0; bi < 3; ++bi)
+            for (int moves = 0; moves < 2; ++moves) {
+                swarp_scene_needs n = scene(gammas[gi], 500.0, 1);
+                n.camera_moves = (uint32_t)moves;
+                swarp_budget bud;
+                memset(&bud, 0, sizeof bud);
+                bud.max_error = budgets[bi];
+                swarp_plan_result p, q;
+                swarp_status s = swarp_plan(&n, &bud, &p);
+                ck_assert(!swarp_status_is_error(s));
+                /* the plan carries the matrices of its chain: the same as
+                 * swarp_plan_evaluate of that chain (one n', one prediction) */
+                ck_assert_uint_eq(p.built, 1);
+                ck_assert(p.reasons & SWARP_PLAN_WHY_RANKED_MEASURED);
+                swarp_plan_chain c = chain_of(p.warp, p.scheme, p.split_count);
+                c.stabilize = p.stabilize;
+                ck_assert(!swarp_status_is_error(swarp_plan_evaluate(&n, &bud, &c, &q)));
+                ck_assert_uint_eq(q.built, 1);
+                ck_assert_int_eq(memcmp(p.splits, q.splits, sizeof p.splits), 0);
+                ck_assert_int_eq(memcmp(p.built_splits, q.built_splits, sizeof p.built_splits), 0);
+                ck_assert_int_eq(memcmp(p.built_n_eye, q.built_n_eye, sizeof p.built_n_eye), 0);
+                ck_assert_double_eq(p.measured.max_sigma, q.measured.max_sigma);
+                ck_assert_double_eq(p.max_error, q.max_error);
+                /* the claim, checked on a cascade built and measured here */
+                built b;
+                double meas = independent_measured(&n, &p, &b);
+                ck_assert_double_eq_tol(meas, fmax(p.measured.max_m_s, p.measured.max_m_t), 1e-9 * meas);
+                if (p.meets_budget) {
+                    ++met;
+                    ck_assert_int_eq(s, SWARP_OK);
+                    ck_assert_msg(meas <= budgets[bi], "gamma %g budget %g: measured %g", gammas[gi], budgets[bi], meas);
+                } else {
+                    ck_assert_int_eq(s, SWARP_INFO_PLAN_BUDGET_UNMET);
+                    ck_assert_msg(meas > budgets[bi] || p.split_count == 16, "unmet but measured %g", meas);
+                }
+            }
+    ck_assert_int_gt(met, 6);
 }
 END_TEST
 
@@ -353,7 +395,7 @@ static Suite* plan_matrices_suite(void) {
     tcase_add_test(tc, unbounded_scene_builds_over_the_view_frustum);
     tcase_add_test(tc, measured_maximum_bounds_random_receivers);
     tcase_add_test(tc, model_n_prime_is_the_matrices_at_overhead_light);
-    tcase_add_test(tc, plan_does_not_build_and_evaluate_keeps_its_model);
+    tcase_add_test(tc, plan_builds_its_chain_and_meets_the_measured_budget);
     tcase_add_test(tc, unbuildable_chain_reports_the_cascade_error);
     suite_add_tcase(s, tc);
     return s;

@@ -327,7 +327,8 @@ class SceneNeeds(Struct):
     allow_depth_clamp: int
     plane_count: int
     planes: Sequence[Plane]
-    def __init__(self, *args: Any, camera: Any = ..., light: Any = ..., scene_box: Any = ..., screen_width: Any = ..., screen_height: Any = ..., camera_moves: Any = ..., soft_shadows: Any = ..., soft_width: Any = ..., bleed_risk: Any = ..., allow_depth_clamp: Any = ..., plane_count: Any = ..., planes: Any = ...) -> None: ...
+    plan_by: int
+    def __init__(self, *args: Any, camera: Any = ..., light: Any = ..., scene_box: Any = ..., screen_width: Any = ..., screen_height: Any = ..., camera_moves: Any = ..., soft_shadows: Any = ..., soft_width: Any = ..., bleed_risk: Any = ..., allow_depth_clamp: Any = ..., plane_count: Any = ..., planes: Any = ..., plan_by: Any = ...) -> None: ...
 
 class Budget(Struct):
     max_error: float
@@ -337,7 +338,9 @@ class Budget(Struct):
     time_budget_ns: float
     pass_cost_ns: float
     blur_pass_cost_ns: float
-    def __init__(self, *args: Any, max_error: Any = ..., map_resolution: Any = ..., atlas_limit: Any = ..., max_passes: Any = ..., time_budget_ns: Any = ..., pass_cost_ns: Any = ..., blur_pass_cost_ns: Any = ...) -> None: ...
+    pass_overhead_ns: float
+    texel_cost_ns: float
+    def __init__(self, *args: Any, max_error: Any = ..., map_resolution: Any = ..., atlas_limit: Any = ..., max_passes: Any = ..., time_budget_ns: Any = ..., pass_cost_ns: Any = ..., blur_pass_cost_ns: Any = ..., pass_overhead_ns: Any = ..., texel_cost_ns: Any = ...) -> None: ...
 
 class PlanResult(Struct):
     warp: int
@@ -382,7 +385,8 @@ class PlanResult(Struct):
     built_n_eye: Sequence[float]
     split_measured: Sequence[MeasuredError]
     measured: MeasuredError
-    def __init__(self, *args: Any, warp: Any = ..., scheme: Any = ..., split_count: Any = ..., map_resolution: Any = ..., atlas_tiles: Any = ..., stabilize: Any = ..., inverse_projection: Any = ..., depth_clamp: Any = ..., gamma: Any = ..., z_near: Any = ..., z_far: Any = ..., splits: Any = ..., n_prime: Any = ..., split_max_mx: Any = ..., split_max_mz: Any = ..., max_mx: Any = ..., max_mz: Any = ..., max_error: Any = ..., error_area: Any = ..., lixel_count: Any = ..., lixel_planes: Any = ..., plane_reason: Any = ..., lixel_error: Any = ..., filter: Any = ..., filter_layers: Any = ..., filter_width: Any = ..., filter_exponent_pos: Any = ..., filter_exponent_neg: Any = ..., shadow_passes: Any = ..., blur_passes: Any = ..., texels: Any = ..., cost_ns: Any = ..., meets_budget: Any = ..., reasons: Any = ..., candidates: Any = ..., plane_count: Any = ..., built: Any = ..., built_status: Any = ..., built_splits: Any = ..., built_n_eye: Any = ..., split_measured: Any = ..., measured: Any = ...) -> None: ...
+    cost_model: int
+    def __init__(self, *args: Any, warp: Any = ..., scheme: Any = ..., split_count: Any = ..., map_resolution: Any = ..., atlas_tiles: Any = ..., stabilize: Any = ..., inverse_projection: Any = ..., depth_clamp: Any = ..., gamma: Any = ..., z_near: Any = ..., z_far: Any = ..., splits: Any = ..., n_prime: Any = ..., split_max_mx: Any = ..., split_max_mz: Any = ..., max_mx: Any = ..., max_mz: Any = ..., max_error: Any = ..., error_area: Any = ..., lixel_count: Any = ..., lixel_planes: Any = ..., plane_reason: Any = ..., lixel_error: Any = ..., filter: Any = ..., filter_layers: Any = ..., filter_width: Any = ..., filter_exponent_pos: Any = ..., filter_exponent_neg: Any = ..., shadow_passes: Any = ..., blur_passes: Any = ..., texels: Any = ..., cost_ns: Any = ..., meets_budget: Any = ..., reasons: Any = ..., candidates: Any = ..., plane_count: Any = ..., built: Any = ..., built_status: Any = ..., built_splits: Any = ..., built_n_eye: Any = ..., split_measured: Any = ..., measured: Any = ..., cost_model: Any = ...) -> None: ...
 
 class PlanChain(Struct):
     warp: int
@@ -465,6 +469,8 @@ PLAN_BLEED_NONE: int
 PLAN_BLEED_LOW: int
 PLAN_BLEED_HIGH: int
 PLAN_BLEED_EXTREME: int
+PLAN_BY_MEASURED: int
+PLAN_BY_MODEL: int
 PLAN_WARP_DEFAULT: int
 PLAN_WARP_UNIFORM: int
 PLAN_WARP_LISPSM_NOPT: int
@@ -486,6 +492,9 @@ PLAN_FILTER_VSM: int
 PLAN_FILTER_MSM: int
 PLAN_FILTER_EVSM: int
 PLAN_FILTER_LVSM: int
+PLAN_COST_UNCALIBRATED: int
+PLAN_COST_PER_PASS: int
+PLAN_COST_LINEAR: int
 PLAN_MATRICES_MEASURED: int
 PLAN_MATRICES_UNMEASURED: int
 PLAN_MATRICES_NONE: int
@@ -538,6 +547,7 @@ PLAN_WHY_NEAR_FAR_ADJUSTED: int
 PLAN_WHY_POINT_AS_DIRECTIONAL: int
 PLAN_WHY_PASS_LIMITED: int
 PLAN_WHY_FORCED: int
+PLAN_WHY_RANKED_MEASURED: int
 PLAN_PLANE_USED: int
 PLAN_PLANE_CAMERA_ON_PLANE: int
 PLAN_PLANE_LIGHT_GRAZING: int

@@ -30,7 +30,7 @@ CONSTANTS = {'SWARP_VERSION_MAJOR': 0,
  'SWARP_LIXEL_DEFAULT_MAX_SIZE': 16384,
  'SWARP_PLAN_MAX_SPLITS': 16,
  'SWARP_PLAN_MAX_PLANES': 4,
- 'SWARP_PLAN_EXPLAIN_MAX': 4096,
+ 'SWARP_PLAN_EXPLAIN_MAX': 4608,
  'SWARP_PLAN_MAX_COST_NS': 1000000000000000.0,
  'SWARP_PLAN_WHY_ONE_MAP_MEETS': 1,
  'SWARP_PLAN_WHY_SPLITS_NEEDED': 2,
@@ -56,6 +56,7 @@ CONSTANTS = {'SWARP_VERSION_MAJOR': 0,
  'SWARP_PLAN_WHY_POINT_AS_DIRECTIONAL': 2097152,
  'SWARP_PLAN_WHY_PASS_LIMITED': 4194304,
  'SWARP_PLAN_WHY_FORCED': 8388608,
+ 'SWARP_PLAN_WHY_RANKED_MEASURED': 16777216,
  'SWARP_PLAN_PLANE_USED': 0,
  'SWARP_PLAN_PLANE_CAMERA_ON_PLANE': 1,
  'SWARP_PLAN_PLANE_LIGHT_GRAZING': 2,
@@ -132,6 +133,9 @@ ENUMS = {'swarp_depth_range': {'SWARP_DEPTH_DEFAULT': 0,
                       'SWARP_PLAN_BLEED_HIGH': 3,
                       'SWARP_PLAN_BLEED_EXTREME': 4,
                       'SWARP_PLAN_BLEED_FORCE_I32': 2147483647},
+ 'swarp_plan_by': {'SWARP_PLAN_BY_MEASURED': 0,
+                   'SWARP_PLAN_BY_MODEL': 1,
+                   'SWARP_PLAN_BY_FORCE_I32': 2147483647},
  'swarp_plan_warp': {'SWARP_PLAN_WARP_DEFAULT': 0,
                      'SWARP_PLAN_WARP_UNIFORM': 1,
                      'SWARP_PLAN_WARP_LISPSM_NOPT': 2,
@@ -157,6 +161,10 @@ ENUMS = {'swarp_depth_range': {'SWARP_DEPTH_DEFAULT': 0,
                        'SWARP_PLAN_FILTER_EVSM': 5,
                        'SWARP_PLAN_FILTER_LVSM': 6,
                        'SWARP_PLAN_FILTER_FORCE_I32': 2147483647},
+ 'swarp_plan_cost_model': {'SWARP_PLAN_COST_UNCALIBRATED': 0,
+                           'SWARP_PLAN_COST_PER_PASS': 1,
+                           'SWARP_PLAN_COST_LINEAR': 2,
+                           'SWARP_PLAN_COST_FORCE_I32': 2147483647},
  'swarp_plan_matrices': {'SWARP_PLAN_MATRICES_MEASURED': 0,
                          'SWARP_PLAN_MATRICES_UNMEASURED': 1,
                          'SWARP_PLAN_MATRICES_NONE': 2,
@@ -590,7 +598,8 @@ STRUCTS = [('swarp_vec3', [('x', 'double', ()), ('y', 'double', ()), ('z', 'doub
    ('plane_count', 'uint32_t', ()),
    ('_pad0', 'uint32_t', ()),
    ('planes', 'swarp_plane', (4,)),
-   ('_reserved', 'uint32_t', (4,))]),
+   ('plan_by', 'swarp_plan_by', ()),
+   ('_reserved', 'uint32_t', (3,))]),
  ('swarp_budget',
   [('max_error', 'double', ()),
    ('map_resolution', 'uint32_t', ()),
@@ -600,7 +609,8 @@ STRUCTS = [('swarp_vec3', [('x', 'double', ()), ('y', 'double', ()), ('z', 'doub
    ('time_budget_ns', 'double', ()),
    ('pass_cost_ns', 'double', ()),
    ('blur_pass_cost_ns', 'double', ()),
-   ('_reserved', 'uint32_t', (4,))]),
+   ('pass_overhead_ns', 'double', ()),
+   ('texel_cost_ns', 'double', ())]),
  ('swarp_plan_result',
   [('warp', 'swarp_plan_warp', ()),
    ('scheme', 'swarp_plan_scheme', ()),
@@ -644,7 +654,8 @@ STRUCTS = [('swarp_vec3', [('x', 'double', ()), ('y', 'double', ()), ('z', 'doub
    ('built_n_eye', 'double', (16,)),
    ('split_measured', 'swarp_measured_error', (16,)),
    ('measured', 'swarp_measured_error', ()),
-   ('_reserved', 'uint32_t', (4,))]),
+   ('cost_model', 'swarp_plan_cost_model', ()),
+   ('_reserved', 'uint32_t', (3,))]),
  ('swarp_plan_chain',
   [('warp', 'swarp_plan_warp', ()),
    ('scheme', 'swarp_plan_scheme', ()),
@@ -1539,6 +1550,15 @@ FUNCTIONS = [('swarp_status_string', 'const char *', [('status', 'swarp_status',
    ('budget', 'swarp_budget', 1, True, ()),
    ('chain', 'swarp_plan_chain', 1, True, ()),
    ('out_plan', 'swarp_plan_result', 1, False, ())],
+  True),
+ ('swarp_plan_cost_fit',
+  'swarp_status',
+  [('texels', 'double', 1, True, ()),
+   ('pass_ns', 'double', 1, True, ()),
+   ('count', 'size_t', 0, False, ()),
+   ('out_overhead_ns', 'double', 1, False, ()),
+   ('out_texel_cost_ns', 'double', 1, False, ()),
+   ('out_rms_ns', 'double', 1, False, ())],
   True),
  ('swarp_plan_explain',
   'swarp_status',
@@ -2886,11 +2906,20 @@ DOCS = {'swarp_status_string': '@brief Readable message for a status; never NULL
                ' PSM (+ inverse projection when the light is behind) as one map; PSSM with\n'
                ' K = 2..16 splits (practical λ = 0.5 or logarithmic) unwarped, with n_opt\n'
                ' or with n_repar per split.  A moving camera admits only unwarped chains\n'
-               ' (stabilised, [RHS] §3.5).  Chosen: the fewest passes whose predicted\n'
-               ' max(m_x, m_z) <= budget->max_error (and cost <= time budget); ties go to\n'
-               ' the lower error, then to the earlier (simpler) candidate.  If none meets\n'
-               ' it: the most accurate chain within the pass limit and\n'
-               ' SWARP_INFO_PLAN_BUDGET_UNMET.  Then the filter (soft shadows only), depth\n'
+               " (stabilised, [RHS] §3.5).  The model's rule: the fewest passes whose\n"
+               ' predicted max(m_x, m_z) <= the budget (and cost <= time budget); ties go\n'
+               ' to the lower error, then to the earlier (simpler) candidate.  With\n'
+               ' needs->plan_by = SWARP_PLAN_BY_MEASURED (the default) that rule proposes a\n'
+               ' chain, its matrices are built (as swarp_plan_evaluate) and measured; while\n'
+               ' the measured max(m_s, m_t) exceeds budget->max_error the rule is applied\n'
+               ' again against max_error × model/measured of the last chain (at least 3 %\n'
+               ' tighter each round, at most 8 rounds): meets_budget then means the\n'
+               " MEASURED error meets it, and the built_* fields hold the chosen chain's\n"
+               ' matrices.  Chains that cannot be built (point light) fall back to the\n'
+               ' model.  SWARP_PLAN_BY_MODEL: the rule alone.  If none meets the budget:\n'
+               ' the most accurate chain found (measured, or by the model within the pass\n'
+               ' limit) and SWARP_INFO_PLAN_BUDGET_UNMET.  Then the filter (soft shadows only), '
+               'depth\n'
                ' clamping and lixel maps for declared lixel-friendly planes (passes left).\n'
                ' Error model [RHS] (2.3)-(2.8), generalised to any γ (docs/planning.md).\n'
                ' @param[in]  needs   scene; NULL or zeroed fields mean the defaults\n'
@@ -2928,6 +2957,26 @@ DOCS = {'swarp_status_string': '@brief Readable message for a status; never NULL
                         '         (also its matrices).  A\n'
                         '         chain no engine can build (a stabilised warp or point light) is\n'
                         '         still predicted: built = 0 and built_status says why.',
+ 'swarp_plan_cost_fit': "@brief Least-squares fit of the planner's cost model to measured shadow\n"
+                        ' passes: pass_ns[i] ≈ overhead + texels[i] x per_texel over the count\n'
+                        " pairs (texels of the pass's map, its measured time in ns), both terms\n"
+                        ' >= 0 (a negative least-squares term is set to 0 and the other refitted:\n'
+                        ' a line through the origin, or the mean time).  Put the results into\n'
+                        ' swarp_budget.pass_overhead_ns and texel_cost_ns.  No allocation.\n'
+                        ' @param[in]  texels  texels of each measured pass (> 0, finite), count '
+                        'entries\n'
+                        ' @param[in]  pass_ns measured time of each pass, ns (>= 0, finite)\n'
+                        ' @param[in]  count   pairs, >= 2\n'
+                        ' @param[out] out_overhead_ns, out_texel_cost_ns the fitted terms\n'
+                        ' @param[out] out_rms_ns  root-mean-square residual of the fit, ns (may be '
+                        'NULL)\n'
+                        ' @return SWARP_OK; SWARP_ERR_NULL_POINTER; SWARP_ERR_NON_FINITE;\n'
+                        '         SWARP_ERR_OUT_OF_RANGE (count < 2, texels <= 0, pass_ns < 0, or '
+                        'a\n'
+                        '         fitted term above the limits swarp_plan accepts);\n'
+                        '         SWARP_ERR_DEGENERATE (all texel counts equal: the two terms '
+                        'cannot\n'
+                        '         be told apart).  Outputs untouched on error.',
  'swarp_plan_explain': '@brief Readable text of a plan: the chain, the predicted error and cost,\n'
                        ' and one line per reason flag and per left-out plane.  '
                        'Locale-independent.\n'

@@ -71,6 +71,7 @@ SPECS: Dict[str, Dict[str, Any]] = {
         "derive": {"m": "len(n_primes)"},
         "cap": {"capacity": "max(1, min(m * samples_per_split, CURVE_CAPACITY_MAX))"}},
     "swarp_cascade_setup": {"cap": {"capacity": "SWARP_CASCADE_MAX_SPLITS"}},
+    "swarp_plan_cost_fit": {"len": {"texels": "count", "pass_ns": "count"}, "derive": {"count": "len(texels)"}},
     "swarp_lvsm_layer_interval": {"len": {"splits": "n_layers + 1"}, "derive": {"n_layers": "len(splits) - 1"}},
     "swarp_lvsm_layer_find": {"len": {"splits": "n_layers + 1"}, "derive": {"n_layers": "len(splits) - 1"}},
     "swarp_lvsm_transition": {"len": {"splits": "n_layers + 1"}, "derive": {"n_layers": "len(splits) - 1"}},
