@@ -39,13 +39,16 @@ valgrind_step() {
     # the demo's llvmpipe JIT takes minutes per frame under memcheck and reports
     # the driver's own uninitialised reads: the demo runs under ASan+UBSan above.
     # tests/valgrind.supp: test bugs only (each reported to its stage).
+    # suite coverage: its brute-force checker and the PSM cover check work in
+    # long double, which valgrind computes in double precision (the checker's
+    # 1e-7 bounds then fail on valgrind's arithmetic, not the library's).
     # the whole-sphere walk every 20th 0.01° step (as under ASan)
     SWARP_UNDER_VALGRIND=1 SWARP_CONT_STRIDE=20 SWARP_HARD_CASES_SIZE=1000 SWARP_THREADS_CASES=40 meson test -C build-ci --no-suite python --no-suite readme --no-suite fenv --no-suite report \
-        --no-suite demo --no-suite gl --print-errorlogs \
+        --no-suite coverage --no-suite demo --no-suite gl --print-errorlogs \
         --wrap="valgrind --error-exitcode=1 --leak-check=full --errors-for-leak-kinds=definite,indirect --track-origins=yes -q --suppressions=$PWD/tests/valgrind.supp" \
         --timeout-multiplier=10
 }
-echo "== valgrind memcheck (every test binary except python, readme, fenv, the bench report and the OSMesa ones (demo, gl))"
+echo "== valgrind memcheck (every test binary except python, readme, fenv, the bench report, the long-double coverage checks and the OSMesa ones (demo, gl))"
 step valgrind valgrind_step
 
 coverage_step() {
