@@ -418,13 +418,25 @@ START_TEST(flat_box_sampled_on_its_plane_rounding_stable) {
             m.max_sigma, m.samples, brute, hits);
     ck_assert_msg(brute <= 1.03 * m.max_sigma && m.max_sigma <= 1.03 * brute, "default %g brute %g",
                   m.max_sigma, brute);
+    /* the lattice and the vertices with one search step: which points count
+     * (the compass search's later path may differ where neighbours tie to
+     * an ulp, its maximum does not) */
+    const swarp_measure_options one_step = {0, 0, 1, 0};
+    swarp_measured_error lattice;
+    ck_assert_int_eq(swarp_measure_max(&c, r.view_near, r.view_far, &l, &box, &r.matrix, &RES, &one_step, &lattice), SWARP_OK);
+    ck_assert_int_gt(lattice.samples, 200); /* 19 x 19 rays, about 3/4 of them meet the polygon */
     for (size_t i = 0; i < sizeof modes / sizeof modes[0]; ++i) {
         swarp_measured_error mm;
+        swarp_measured_error lm;
         fesetround(modes[i]);
         const swarp_status st = swarp_measure_max(&c, r.view_near, r.view_far, &l, &box, &r.matrix, &RES, NULL, &mm);
+        const swarp_status lst = swarp_measure_max(&c, r.view_near, r.view_far, &l, &box, &r.matrix, &RES, &one_step, &lm);
         fesetround(FE_TONEAREST);
         ck_assert_int_eq(st, SWARP_OK);
-        ck_assert_int_eq(mm.samples, m.samples);
+        ck_assert_int_eq(lst, SWARP_OK);
+        /* every lattice point and vertex kept in one mode is kept in all */
+        ck_assert_int_eq(lm.samples, lattice.samples);
+        ck_assert(fabs(mm.at.x - m.at.x) <= 1e-9 * 300 && fabs(mm.at.z - m.at.z) <= 1e-9 * 300 && mm.at.y == 0.0);
         ck_assert_msg(fabs(mm.max_sigma - m.max_sigma) <= 1e-6 * m.max_sigma, "mode %zu: %.17g vs %.17g", i,
                       mm.max_sigma, m.max_sigma);
     }
