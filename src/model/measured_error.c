@@ -411,6 +411,22 @@ static int sw_sample_vertices(const sw_region* g, const swarp_camera* cam, doubl
     return h.vertex_count > 0;
 }
 
+/* The near face of H (planar depth z_near) on a finer NDC lattice of
+ * (n - 1) * 4 / 3 + 1 points per axis (9 x 9 at n = 7): the screen's 1/z
+ * puts the largest sigma of a warped map on or near that face, where a
+ * LiSPSM peak can be narrower than the solid lattice's cells; its worst
+ * sample is refined as a seed of its own. */
+static void sw_sample_near_face(const sw_region* g, uint32_t n, double seed[3], double* seed_sigma,
+                                sw_best* b) {
+    const uint32_t m = (n - 1) * 4 / 3 + 1;
+    for (uint32_t iy = 0; iy < m; ++iy)
+        for (uint32_t ix = 0; ix < m; ++ix) {
+            const double u[3] = {-1.0 + 2.0 * ix / (m - 1), -1.0 + 2.0 * iy / (m - 1), g->lz0};
+            const double v = sw_sample(g, u, b);
+            if (v > *seed_sigma) *seed_sigma = v, seed[0] = u[0], seed[1] = u[1], seed[2] = u[2];
+        }
+}
+
 static swarp_status sw_check_measure_max(const swarp_camera* cam, double z_near, double z_far,
                                          const swarp_light* light, const swarp_aabb* scene,
                                          const swarp_measure_options* o) {
@@ -494,8 +510,11 @@ SWARP_API swarp_status swarp_measure_max(const swarp_camera* cam, double z_near,
     /* a flat S: a 2-D lattice on its plane (sw_region_point) */
     const uint32_t ln = g.flat < 0 ? n : sw_flat_grid(n, k), lk = g.flat < 0 ? k : 1u;
     sw_sample_lattice(&g, ln, lk, &b, &seeds);
+    double face_seed[3], face_sigma = -1.0;
+    if (g.flat < 0) sw_sample_near_face(&g, n, face_seed, &face_sigma, &b);
     if (b.acc.samples == 0) return SWARP_ERR_BODY_EMPTY;
     for (int i = 0; i < seeds.count; ++i) sw_refine(&g, ln, lk, steps, seeds.u[i], seeds.sigma[i], &b);
+    if (face_sigma >= 0.0) sw_refine(&g, ln, lk, steps, face_seed, face_sigma, &b);
     if (have_vertices && seed_sigma >= 0.0) sw_refine(&g, ln, lk, steps, seed, seed_sigma, &b);
     *out = b.acc;
     return b.acc.max_sigma == INFINITY ? SWARP_INFO_MEASURE_SINGULAR : SWARP_OK;
