@@ -914,10 +914,12 @@ SWARP_API swarp_status swarp_measure_points(const swarp_camera* cam, const swarp
  *  point to the eye and to the light (the receiver for which projection
  *  aliasing vanishes, leaving the perspective aliasing of the parameterisation).
  *  Sampling: the vertices of H, a grid x grid NDC lattice at depths geometric
- *  in [z_near, z_far] (points outside S skipped), then from the worst vertex
- *  and the four worst local maxima of the lattice refine steps of a deterministic compass
+ *  in [z_near, z_far] (points outside S skipped) and a finer lattice on the
+ *  near face, then from the worst vertex, the four worst local maxima of the
+ *  lattice and the worst near-face point refine steps of a deterministic compass
  *  search over (NDC x, NDC y, log z), halving the step each time it finds no
- *  larger sigma (docs/accuracy.md states its error).  No allocation; the result is deterministic.
+ *  larger sigma; a flat S (H a polygon) is sampled on its plane (docs/accuracy.md
+ *  states the sampling and its error).  No allocation; the result is deterministic.
  *  @return SWARP_OK; SWARP_INFO_MEASURE_SINGULAR (max_sigma = +inf);
  *          SWARP_ERR_BODY_EMPTY (no sample of V lies in S); the errors of
  *          swarp_measure_points, SWARP_ERR_NEAR_FAR (not 0 < z_near < z_far),
