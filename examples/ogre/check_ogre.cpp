@@ -14,6 +14,7 @@
  * bisector receivers, docs/accuracy.md) of OGRE's built-in setups and of the
  * adapter side by side, at the same map and screen resolution. */
 #include "headless.h"
+#include "ogre_scene.h"
 #include "swarp_ogre.h"
 
 #include <OgreShadowCameraSetupFocused.h>
@@ -32,6 +33,8 @@
 using swarp_ogre_test::HeadlessRoot;
 using swarp_ogre_test::HeadlessSceneManager;
 using swarp_ogre_test::SizedTarget;
+
+using namespace swarp_ogre_test;
 
 namespace {
 
@@ -71,23 +74,6 @@ struct Light {
     Ogre::Vector3 expect;         /* the exact direction, when exact */
 };
 
-swarp_mat4 fromOgre(const Ogre::Matrix4& m)
-{
-    swarp_mat4 r;
-    for (int row = 0; row < 4; ++row)
-        for (int col = 0; col < 4; ++col)
-            r.m[col * 4 + row] = m[row][col];
-    return r;
-}
-
-bool finite(const Ogre::Matrix4& m)
-{
-    for (int i = 0; i < 16; ++i)
-        if (!std::isfinite(m[i / 4][i % 4]))
-            return false;
-    return true;
-}
-
 /* every element of got within gamma_7 sum_k |P_ik||V_kj| of want */
 bool matchesProduct(const Ogre::Matrix4& P, const Ogre::Matrix4& V, const Ogre::Matrix4& got,
                     const swarp_mat4& want, double* worst)
@@ -107,17 +93,6 @@ bool matchesProduct(const Ogre::Matrix4& P, const Ogre::Matrix4& V, const Ogre::
                 *worst = err / bound;
         }
     return ok;
-}
-
-/* the texture camera's world -> light clip matrix, as OGRE forms it (float);
- * NaN when the setup left it non-finite (asking OGRE's frustum would abort) */
-Ogre::Matrix4 viewProj(const HeadlessSceneManager* sm, size_t i)
-{
-    const Ogre::Camera* texCam = sm->shadowCamera(i);
-    if (!sm->shadowCameraUsable(i))
-        return Ogre::Matrix4(NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN,
-                             NAN, NAN);
-    return texCam->getProjectionMatrix() * Ogre::Matrix4(texCam->getViewMatrix());
 }
 
 /* OpenGL's lookAt and perspective for the library camera, by hand */
@@ -165,9 +140,9 @@ double measure(const swarp_camera& cam, const swarp_light& light, const Ogre::Ma
     z1 = std::fmin(z1, adj_far);
     if (!(z0 < z1))
         return -1;
-    if (!finite(m))
+    if (!matFinite(m))
         return NAN;
-    swarp_mat4 mm = fromOgre(m);
+    swarp_mat4 mm = matFromOgre(m);
     swarp_measure_res res = resolution();
     swarp_measured_error e;
     swarp_status st = swarp_measure_max(&cam, z0, z1, &light, &SCENE, &mm, &res, nullptr, &e);
@@ -238,8 +213,8 @@ OgreRun runOgre(Frame& f, const Ogre::ShadowCameraSetupPtr& setup, size_t textur
         dup2(devnull, 2);
         run(f, setup, textures);
         for (size_t i = 0; i < textures; ++i) {
-            Ogre::Matrix4 m = viewProj(f.sm, i);
-            if (!finite(m))
+            Ogre::Matrix4 m = shadowViewProj(f.sm, i);
+            if (!matFinite(m))
                 r.finite = 0;
             double s = measure(cam, light, m, ranges[i], ranges[i + 1], adj_near, adj_far, &r.outside);
             r.sigma = (std::isnan(s) || std::isnan(r.sigma)) ? NAN : std::fmax(r.sigma, s);
@@ -266,21 +241,6 @@ std::string cell(const OgreRun& r)
     return r.aborted ? "aborts" : cell(r.sigma, r.outside);
 }
 
-void addBox(Ogre::SceneManager* sm, const char* name, const swarp_aabb& b)
-{
-    Ogre::ManualObject* mo = sm->createManualObject(name);
-    mo->begin("BaseWhite", Ogre::RenderOperation::OT_TRIANGLE_LIST);
-    for (int i = 0; i < 8; ++i)
-        mo->position(Ogre::Real((i & 1) ? b.max.x : b.min.x), Ogre::Real((i & 2) ? b.max.y : b.min.y),
-                     Ogre::Real((i & 4) ? b.max.z : b.min.z));
-    static const int faces[12][3] = {{0, 2, 1}, {1, 2, 3}, {4, 5, 6}, {5, 7, 6}, {0, 1, 4}, {1, 5, 4},
-                                     {2, 6, 3}, {3, 6, 7}, {0, 4, 2}, {2, 4, 6}, {1, 3, 5}, {3, 7, 5}};
-    for (const auto& t : faces)
-        mo->triangle(t[0], t[1], t[2]);
-    mo->end();
-    sm->getRootSceneNode()->attachObject(mo);
-}
-
 } // namespace
 
 int main()
@@ -290,8 +250,8 @@ int main()
     sm->setShadowTechnique(Ogre::SHADOWTYPE_TEXTURE_MODULATIVE);
     sm->setShadowFarDistance(Ogre::Real(Z_FAR));
     sm->createShadowCameras(SPLITS, MAP);
-    addBox(sm, "ground", GROUND);
-    addBox(sm, "tower", TOWER);
+    addBoxObject(sm, "ground", GROUND);
+    addBoxObject(sm, "tower", TOWER);
 
     Ogre::Camera* cam = sm->createCamera("main");
     Ogre::SceneNode* camNode = sm->getRootSceneNode()->createChildSceneNode();
@@ -318,7 +278,7 @@ int main()
         Ogre::Matrix4 ogre = cam->getProjectionMatrix() * Ogre::Matrix4(cam->getViewMatrix());
         double worst;
         check(matchesProduct(cam->getProjectionMatrix(), Ogre::Matrix4(cam->getViewMatrix()), ogre,
-                             fromOgre(handViewProj(adapter_cam)), &worst),
+                             matFromOgre(handViewProj(adapter_cam)), &worst),
               "OGRE's camera = lookAt/perspective of the library camera");
         /* == on the fields: -0 == 0 (OGRE's derived direction has signed zeros) */
         auto same = [](const swarp_vec3& a, const swarp_vec3& b) {
@@ -401,9 +361,9 @@ int main()
         run(frame, single, 1);
         check(single->lastStatus() == st, tag + ": the adapter's status is the library's");
         swarp_ogre_test::ProbeCamera* tc = sm->shadowCamera(0);
-        Ogre::Matrix4 got = viewProj(sm, 0);
+        Ogre::Matrix4 got = shadowViewProj(sm, 0);
         double worst;
-        check(finite(got), tag + ": adapter matrix finite");
+        check(matFinite(got), tag + ": adapter matrix finite");
         check(matchesProduct(tc->getProjectionMatrix(), Ogre::Matrix4(tc->getViewMatrix()), got,
                              want.matrix, &worst),
               tag + ": texture camera = library matrix (float rounding)");
@@ -425,8 +385,8 @@ int main()
         double s_cascade = -1;
         for (unsigned i = 0; i < SPLITS && i < count; ++i) {
             swarp_ogre_test::ProbeCamera* sc = sm->shadowCamera(i);
-            Ogre::Matrix4 g = viewProj(sm, i);
-            check(finite(g), tag + ": adapter split matrix finite");
+            Ogre::Matrix4 g = shadowViewProj(sm, i);
+            check(matFinite(g), tag + ": adapter split matrix finite");
             check(matchesProduct(sc->getProjectionMatrix(), Ogre::Matrix4(sc->getViewMatrix()), g,
                                  csplits[i].matrix, &worst),
                   tag + ": split " + std::to_string(i) + " texture camera = library matrix");

@@ -713,7 +713,7 @@ typedef struct sw_search {
     size_t npts;
     swarp_setup_result best;
     swarp_status best_info;
-    double best_t, best_sigma;
+    double best_sigma;
 } sw_search;
 
 static double sw_search_n(const sw_search* q, double t) { return t > 0.0 ? q->n0 * (1.0 - t) / t : INFINITY; }
@@ -733,7 +733,7 @@ static double sw_search_try(sw_search* q, double t) {
     swarp_setup_result r;
     swarp_status info;
     const double sigma = sw_search_eval(q, t, &r, &info);
-    if (sigma < q->best_sigma * (1.0 - SW_SEARCH_GAIN_REL)) q->best = r, q->best_info = info, q->best_t = t, q->best_sigma = sigma;
+    if (sigma < q->best_sigma * (1.0 - SW_SEARCH_GAIN_REL)) q->best = r, q->best_info = info, q->best_sigma = sigma;
     return sigma;
 }
 
@@ -791,7 +791,7 @@ static swarp_status sw_setup_measured(const sw_search_in* in, const swarp_setup_
     q.o.param = SWARP_WARP_PARAM_USER;
     q.npts = sw_measure_set_make(in->cam, in->light, in->H->vertices, in->H->vertex_count, q.pts, q.nrm,
                                  SW_SEARCH_SET_MAX);
-    q.best = start, q.best_info = start_info, q.best_t = 0.5;
+    q.best = start, q.best_info = start_info;
     q.best_sigma = sw_measure_set_sigma(in->cam, &start.matrix, &q.o, q.pts, q.nrm, q.npts);
     sw_search_try(&q, 0.0); /* uniform, the bracket's end the golden points never reach */
     sw_search_golden(&q);
