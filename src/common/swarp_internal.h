@@ -256,11 +256,19 @@ void sw_setup_error_config(const swarp_setup_options* o, double theta, double ne
 void sw_measure_setup(const swarp_camera* cam, double z_near, double z_far, const swarp_light* light,
                       const swarp_aabb* scene, const swarp_mat4* matrix, const swarp_setup_options* o,
                       swarp_measured_error* out);
-/* The fixed point set of the measured warp search (H's vertices, interior
- * points) with bisector receivers, and the max sigma of a matrix on it. */
-size_t sw_measure_set_make(const swarp_camera* cam, const swarp_light* light, const swarp_vec3* h,
-                           size_t nh, swarp_vec3* pts, swarp_vec3* normals, size_t cap);
-double sw_measure_set_sigma(const swarp_camera* cam, const swarp_mat4* matrix, const swarp_setup_options* o,
-                            const swarp_vec3* pts, const swarp_vec3* normals, size_t n);
+/* A receiver of the measured warp search's fixed point set: the point,
+ * the tangents (w_x, w_z) of its bisector receiver and J_scr there
+ * (js[column][row], columns along w_x and w_z): what of D does not depend
+ * on the matrix. */
+typedef struct sw_receiver {
+    swarp_vec3 x, wx, wz;
+    double js[2][2];
+} sw_receiver;
+/* The fixed point set (H's vertices, interior points) as receivers, and
+ * the max sigma of a matrix on it. */
+size_t sw_measure_set_make(const swarp_camera* cam, const swarp_light* light, const swarp_setup_options* o,
+                           const swarp_vec3* h, size_t nh, sw_receiver* out, size_t cap);
+double sw_measure_set_sigma(const swarp_mat4* matrix, const swarp_setup_options* o, const sw_receiver* rc,
+                            size_t n);
 
 #endif

@@ -709,8 +709,8 @@ typedef struct sw_search {
     const sw_search_in* in;
     swarp_setup_options o; /* param USER, n_user set per candidate */
     double n0;             /* n_opt (eye units), the start */
-    swarp_vec3 pts[SW_SEARCH_SET_MAX], nrm[SW_SEARCH_SET_MAX];
-    size_t npts;
+    sw_receiver rc[SW_SEARCH_SET_MAX];
+    size_t nrc;
     swarp_setup_result best;
     swarp_status best_info;
     double best_sigma;
@@ -725,7 +725,7 @@ static double sw_search_eval(sw_search* q, double t, swarp_setup_result* r, swar
     *info = sw_setup_points(in->cam, in->light, in->B->vertices, in->B->vertex_count, in->B, in->H->vertices,
                             in->H->vertex_count, in->near, in->far, &q->o, in->eye, in->fw, r);
     if (swarp_status_is_error(*info)) return INFINITY;
-    return sw_measure_set_sigma(in->cam, &r->matrix, &q->o, q->pts, q->nrm, q->npts);
+    return sw_measure_set_sigma(&r->matrix, &q->o, q->rc, q->nrc);
 }
 
 /* evaluates t and keeps it when strictly better than the best so far */
@@ -789,10 +789,10 @@ static swarp_status sw_setup_measured(const sw_search_in* in, const swarp_setup_
         return start_info;
     }
     q.o.param = SWARP_WARP_PARAM_USER;
-    q.npts = sw_measure_set_make(in->cam, in->light, in->H->vertices, in->H->vertex_count, q.pts, q.nrm,
-                                 SW_SEARCH_SET_MAX);
+    q.nrc = sw_measure_set_make(in->cam, in->light, &q.o, in->H->vertices, in->H->vertex_count, q.rc,
+                                SW_SEARCH_SET_MAX);
     q.best = start, q.best_info = start_info;
-    q.best_sigma = sw_measure_set_sigma(in->cam, &start.matrix, &q.o, q.pts, q.nrm, q.npts);
+    q.best_sigma = sw_measure_set_sigma(&start.matrix, &q.o, q.rc, q.nrc);
     sw_search_try(&q, 0.0); /* uniform, the bracket's end the golden points never reach */
     sw_search_golden(&q);
     if (o->skip_measure) {

@@ -24,14 +24,15 @@
 #define SW_INSIDE_REL 1e-12
 
 /* Defaults of swarp_measure_max: the vertices of H, a 7 x 7 NDC lattice at
- * 9 depths and 24 compass-search steps from the worst vertex and the four
- * worst local maxima of the lattice.  The maximum of these projective maps' error over the
- * convex H lies at or near a vertex or inside one lattice cell of the worst
- * sample, which the search resolves to a small fraction of a cell;
- * tests/model/test_measured_error.c states the difference from a 33 x 33 x
- * 65 lattice with the same search. */
+ * 5 depths and 24 compass-search steps from the worst vertex, the worst
+ * near-face point and the two worst local maxima of the lattice.  The
+ * maximum of these projective maps' error over the convex H lies at or near
+ * a vertex, on the near face (the screen's 1/z), or inside one lattice cell
+ * of the worst sample, which the search resolves to a small fraction of a
+ * cell; tests/model/test_measured_error.c states the difference from a 33 x
+ * 33 x 65 lattice with the same search (within 3 %, in practice equal). */
 #define SW_MEASURE_GRID 7u
-#define SW_MEASURE_DEPTHS 9u
+#define SW_MEASURE_DEPTHS 5u
 #define SW_MEASURE_REFINE 24u
 
 /* The camera's projection at one point, as the screen sees it. */
@@ -84,11 +85,42 @@ static double sw_sigma_max(double a, double b, double c, double d) {
     return 0.5 * (p + q);
 }
 
+/* What of D does not depend on the matrix: the receiver's tangents and
+ * J_scr at x (d = x - eye, z its planar depth > 0). */
+static void sw_receiver_screen(const sw_screen* s, swarp_vec3 d, double z, swarp_vec3 n_unit,
+                               sw_receiver* rc) {
+    sw_receiver_tangents(s, n_unit, &rc->wx, &rc->wz);
+    sw_screen_jacobian(s, d, z, rc->wx, rc->js[0]);
+    sw_screen_jacobian(s, d, z, rc->wz, rc->js[1]);
+}
+
+/* D = J_scr J_tex^-1 (d[row][column], columns along the texel steps s, t)
+ * at the receiver rc, whose clip coordinates under m are c.  Returns 0
+ * where J_tex is singular (d untouched). */
+static int sw_receiver_d(const swarp_mat4* m, const swarp_measure_res* res, const sw_receiver* rc,
+                         swarp_vec4 c, double d[2][2]) {
+    double jt[2][2]; /* [column][row]: column 0 along w_x, 1 along w_z */
+    sw_map_jacobian(m, res, c, rc->wx, jt[0]);
+    sw_map_jacobian(m, res, c, rc->wz, jt[1]);
+    const double det = jt[0][0] * jt[1][1] - jt[1][0] * jt[0][1];
+    const double fro = jt[0][0] * jt[0][0] + jt[0][1] * jt[0][1] + jt[1][0] * jt[1][0] +
+                       jt[1][1] * jt[1][1];
+    if (!(c.w > 0.0) || !(fabs(det) > SW_JTEX_SINGULAR_REL * 0.5 * fro) || !sw_finite(det)) return 0;
+    /* J_tex^-1 = [jt11 -jt10; -jt01 jt00] / det (rows s, t of the texel
+     * step; columns w_x, w_z), D = J_scr J_tex^-1 */
+    const double i00 = jt[1][1] / det, i01 = -jt[1][0] / det;
+    const double i10 = -jt[0][1] / det, i11 = jt[0][0] / det;
+    const double (*js)[2] = rc->js;
+    d[0][0] = js[0][0] * i00 + js[1][0] * i10, d[0][1] = js[0][0] * i01 + js[1][0] * i11;
+    d[1][0] = js[0][1] * i00 + js[1][1] * i10, d[1][1] = js[0][1] * i01 + js[1][1] * i11;
+    return 1;
+}
+
 static void sw_measure_one(const sw_screen* s, const swarp_mat4* m, const swarp_measure_res* res,
                            swarp_vec3 x, swarp_vec3 n_unit, swarp_texel_error* out) {
     swarp_texel_error e = {0.0, 0.0, 0.0, 0u, 0u};
-    const swarp_vec3 d = sw_sub(x, s->eye);
-    const double z = sw_dot(d, s->f);
+    const swarp_vec3 dx = sw_sub(x, s->eye);
+    const double z = sw_dot(dx, s->f);
     const swarp_vec4 c = sw_xform_point(m, x);
     const double edge = c.w * (1.0 + SW_INSIDE_REL);
     if (c.w > 0.0 && fabs(c.x) <= edge && fabs(c.y) <= edge) e.flags |= SWARP_TEXEL_INSIDE;
@@ -97,31 +129,18 @@ static void sw_measure_one(const sw_screen* s, const swarp_mat4* m, const swarp_
         *out = e;
         return;
     }
-    swarp_vec3 wx, wz;
-    sw_receiver_tangents(s, n_unit, &wx, &wz);
-    double js[2][2], jt[2][2]; /* [column][row]: column 0 along w_x, 1 along w_z */
-    sw_screen_jacobian(s, d, z, wx, js[0]);
-    sw_screen_jacobian(s, d, z, wz, js[1]);
-    sw_map_jacobian(m, res, c, wx, jt[0]);
-    sw_map_jacobian(m, res, c, wz, jt[1]);
-    const double det = jt[0][0] * jt[1][1] - jt[1][0] * jt[0][1];
-    const double fro = jt[0][0] * jt[0][0] + jt[0][1] * jt[0][1] + jt[1][0] * jt[1][0] +
-                       jt[1][1] * jt[1][1];
-    if (!(c.w > 0.0) || !(fabs(det) > SW_JTEX_SINGULAR_REL * 0.5 * fro) || !sw_finite(det)) {
+    sw_receiver rc;
+    sw_receiver_screen(s, dx, z, n_unit, &rc);
+    double d[2][2];
+    if (!sw_receiver_d(m, res, &rc, c, d)) {
         e.m_s = e.m_t = e.sigma = INFINITY;
         e.flags |= SWARP_TEXEL_SINGULAR;
         *out = e;
         return;
     }
-    /* J_tex^-1 = [jt11 -jt10; -jt01 jt00] / det (rows s, t of the texel
-     * step; columns w_x, w_z), D = J_scr J_tex^-1 */
-    const double i00 = jt[1][1] / det, i01 = -jt[1][0] / det;
-    const double i10 = -jt[0][1] / det, i11 = jt[0][0] / det;
-    const double d00 = js[0][0] * i00 + js[1][0] * i10, d01 = js[0][0] * i01 + js[1][0] * i11;
-    const double d10 = js[0][1] * i00 + js[1][1] * i10, d11 = js[0][1] * i01 + js[1][1] * i11;
-    e.m_s = sw_len_fast(sw_v3(d00, d10, 0.0));
-    e.m_t = sw_len_fast(sw_v3(d01, d11, 0.0));
-    e.sigma = sw_sigma_max(d00, d01, d10, d11);
+    e.m_s = sw_len_fast(sw_v3(d[0][0], d[1][0], 0.0));
+    e.m_t = sw_len_fast(sw_v3(d[0][1], d[1][1], 0.0));
+    e.sigma = sw_sigma_max(d[0][0], d[0][1], d[1][0], d[1][1]);
     *out = e;
 }
 
@@ -269,10 +288,13 @@ static double sw_sample(const sw_region* g, const double u[3], sw_best* b) {
  * (32 KiB) to find their local maxima; larger ones seed from the worst
  * sample alone (they are dense enough for one seed). */
 #define SW_SEED_LATTICE_MAX 4096u
-/* Local maxima of the lattice refined besides the worst vertex: the error
- * of a projective map over H can have a few separate peaks (a near corner,
- * a far corner on a box face), each needing its own search. */
-#define SW_SEEDS 4
+/* Local maxima of the lattice refined besides the worst vertex and the
+ * worst near-face point: the error of a projective map over H can have a
+ * few separate peaks (a near corner, a far corner on a box face), each
+ * needing its own search; beyond the second the lattice's local maxima are
+ * the shoulders of those peaks (over the test's 300 random configurations a
+ * third and fourth seed never raise the maximum). */
+#define SW_SEEDS 2
 
 typedef struct sw_seeds {
     double u[SW_SEEDS][3];
@@ -346,10 +368,12 @@ static double sw_clampd(double v, double lo, double hi) { return v < lo ? lo : (
  * lattice cell: sigma of these maps changes by at most about twice its own
  * value per unit of log z or NDC (the 1/z of the screen and the
  * perspective of the warp), and a cell is at most 2 / (n - 1) NDC and
- * log(f / n) / (k - 1) in log z (<= 1.2 at far/near 10^4, k = 9), so
- * stopping at 2^-14 of a cell leaves the maximum within about 1.5e-4 of
- * the search's limit, far below the sampling's stated 3 %. */
-#define SW_REFINE_RES (1.0 / 16384.0)
+ * log(f / n) / (k - 1) in log z (<= 2.3 at far/near 10^4, k = 5), so
+ * stopping at 2^-10 of a cell leaves the maximum within about 0.45 % of
+ * the search's limit even where sigma is steepest (at a smooth interior
+ * peak the loss is quadratic in the step, far less), below the sampling's
+ * stated 3 %. */
+#define SW_REFINE_RES (1.0 / 1024.0)
 
 /* Compass search from a seed: the neighbours along the axes of (NDC x,
  * NDC y, log z) at the current step, moving to the worst when it is worse,
@@ -452,13 +476,17 @@ static swarp_status sw_check_measure_max(const swarp_camera* cam, double z_near,
  * depth range (far below the sampling's stated error). */
 #define SW_FLAT_REL 1e-9
 
-/* The flat lattice: (n - 1) * SW_FLAT_GRID_MUL + 1 points along each NDC
- * axis, for a flat S spends on its plane about the samples the n x n x k
- * lattice spends in a solid one (k = 9: 19^2 = 361 against 441). */
+/* The flat lattice: (n - 1) * m + 1 points along each NDC axis, m the
+ * largest integer with m^2 <= k but at least SW_FLAT_GRID_MUL: a flat S
+ * gets on its plane at least the samples a 9-depth solid lattice would
+ * spend (19^2 = 361 at n = 7 against 441), as a polygon has no depth to
+ * spread the lattice over and its peaks are the solid region's peaks on
+ * one plane. */
+#define SW_FLAT_GRID_MUL 3u
 static uint32_t sw_flat_grid(uint32_t n, uint32_t k) {
     uint32_t m = 1;
     while ((m + 1) * (m + 1) <= k) ++m;
-    return (n - 1) * m + 1;
+    return (n - 1) * (m > SW_FLAT_GRID_MUL ? m : SW_FLAT_GRID_MUL) + 1;
 }
 
 static void sw_region_make(const swarp_camera* cam, double z_near, double z_far,
@@ -520,6 +548,13 @@ SWARP_API swarp_status swarp_measure_max(const swarp_camera* cam, double z_near,
     return b.acc.max_sigma == INFINITY ? SWARP_INFO_MEASURE_SINGULAR : SWARP_OK;
 }
 
+/* a setup's screen and map, defaults resolved */
+static void sw_measure_res_of(const swarp_setup_options* o, swarp_measure_res* r) {
+    sw_setup_map_size(o, &r->map_width, &r->map_height);
+    r->screen_width = o->screen_width ? o->screen_width : SW_DEFAULT_SCREEN_W;
+    r->screen_height = o->screen_height ? o->screen_height : SW_DEFAULT_SCREEN_H;
+}
+
 /* The measurement the results carry: swarp_measure_max over [z_near, z_far]
  * ∩ S at the setup options' screen and map (defaults resolved), with the
  * default sampling.  A region the sampling does not reach (a sliver of H
@@ -532,9 +567,7 @@ void sw_measure_setup(const swarp_camera* cam, double z_near, double z_far, cons
     memset(out, 0, sizeof *out);
     if (o->skip_measure) return;
     swarp_measure_res r;
-    sw_setup_map_size(o, &r.map_width, &r.map_height);
-    r.screen_width = o->screen_width ? o->screen_width : SW_DEFAULT_SCREEN_W;
-    r.screen_height = o->screen_height ? o->screen_height : SW_DEFAULT_SCREEN_H;
+    sw_measure_res_of(o, &r);
     swarp_measured_error m;
     swarp_status s = swarp_measure_max(cam, z_near, z_far, light, scene, matrix, &r, NULL, &m);
     if (s == SWARP_OK || s == SWARP_INFO_MEASURE_SINGULAR) *out = m;
@@ -542,45 +575,50 @@ void sw_measure_setup(const swarp_camera* cam, double z_near, double z_far, cons
 
 /* The cheap set of the warp search: H's vertices, its vertex centroid and
  * the midpoints between the centroid and each vertex, with their bisector
- * receivers.  The receivers depend on the eye, the light and the point
- * only, never on the matrix, so they are built once for all the matrices
- * a search compares.  Returns the number of points written (<= cap). */
-size_t sw_measure_set_make(const swarp_camera* cam, const swarp_light* light, const swarp_vec3* h,
-                           size_t nh, swarp_vec3* pts, swarp_vec3* normals, size_t cap) {
+ * receivers; points behind the eye are not receivers and are left out.
+ * The receivers and J_scr depend on the eye, the light and the point only,
+ * never on the matrix, so they are built once for all the matrices a
+ * search compares, and each matrix costs only its J_tex.  Returns the
+ * number of receivers written (<= cap). */
+size_t sw_measure_set_make(const swarp_camera* cam, const swarp_light* light, const swarp_setup_options* o,
+                           const swarp_vec3* h, size_t nh, sw_receiver* out, size_t cap) {
     sw_region g;
     memset(&g, 0, sizeof g);
-    sw_camera_basis(cam, &g.s.f, &g.s.r, &g.s.u);
-    g.s.eye = cam->eye;
+    swarp_measure_res r;
+    sw_measure_res_of(o, &r);
+    sw_screen_make(cam, &r, &g.s);
     g.light = *light;
     if (light->type != SWARP_LIGHT_POINT) sw_normalize(light->direction, &g.light.direction);
     swarp_vec3 ctr = {0.0, 0.0, 0.0};
     for (size_t i = 0; i < nh; ++i) ctr = sw_add(ctr, h[i]);
     if (nh) ctr = sw_scale(ctr, 1.0 / (double)nh);
     size_t n = 0;
-    for (size_t i = 0; i < nh && n + 2 <= cap; ++i) {
-        pts[n++] = h[i];
-        pts[n++] = sw_scale(sw_add(h[i], ctr), 0.5);
+    for (size_t i = 0; nh && i <= nh && n < cap; ++i) {
+        const swarp_vec3 cand[2] = {i < nh ? h[i] : ctr, i < nh ? sw_scale(sw_add(h[i], ctr), 0.5) : ctr};
+        for (int k = 0; k < (i < nh ? 2 : 1) && n < cap; ++k) {
+            const swarp_vec3 d = sw_sub(cand[k], g.s.eye);
+            const double z = sw_dot(d, g.s.f);
+            if (!(z > 0.0)) continue;
+            out[n].x = cand[k];
+            sw_receiver_screen(&g.s, d, z, sw_bisector(&g, cand[k]), &out[n]);
+            ++n;
+        }
     }
-    if (nh && n < cap) pts[n++] = ctr;
-    for (size_t i = 0; i < n; ++i) normals[i] = sw_bisector(&g, pts[i]);
     return n;
 }
 
-/* max sigma of matrix over the cheap set (points behind the eye are not
- * receivers and are skipped); +inf where the map is singular. */
-double sw_measure_set_sigma(const swarp_camera* cam, const swarp_mat4* matrix, const swarp_setup_options* o,
-                            const swarp_vec3* pts, const swarp_vec3* normals, size_t n) {
+/* max sigma of matrix over the cheap set; +inf where the map is singular. */
+double sw_measure_set_sigma(const swarp_mat4* matrix, const swarp_setup_options* o, const sw_receiver* rc,
+                            size_t n) {
     swarp_measure_res r;
-    sw_setup_map_size(o, &r.map_width, &r.map_height);
-    r.screen_width = o->screen_width ? o->screen_width : SW_DEFAULT_SCREEN_W;
-    r.screen_height = o->screen_height ? o->screen_height : SW_DEFAULT_SCREEN_H;
-    sw_screen s;
-    sw_screen_make(cam, &r, &s);
+    sw_measure_res_of(o, &r);
     double worst = 0.0;
     for (size_t i = 0; i < n; ++i) {
-        swarp_texel_error e;
-        sw_measure_one(&s, matrix, &r, pts[i], normals[i], &e);
-        if (!(e.flags & SWARP_TEXEL_BEHIND_EYE) && e.sigma > worst) worst = e.sigma;
+        double d[2][2];
+        const swarp_vec4 c = sw_xform_point(matrix, rc[i].x);
+        if (!sw_receiver_d(matrix, &r, &rc[i], c, d)) return INFINITY;
+        const double sigma = sw_sigma_max(d[0][0], d[0][1], d[1][0], d[1][1]);
+        if (sigma > worst) worst = sigma;
     }
     return worst;
 }

@@ -53,11 +53,14 @@ static int cmp(const void* a, const void* b) {
 #define NCONF 64
 #define REPS 20000
 
-/* `bench_setup --calls N [point]`: only N untimed calls, LiSPSM n_opt, for
- * instruction and cycle counts (perf stat, callgrind): subtract N = 0. */
+/* `bench_setup --calls N [point|directional] [default]`: only N untimed
+ * calls, LiSPSM n_opt without measurement (with `default`: the default
+ * measured warp and its measurement), for instruction and cycle counts
+ * (perf stat, perf record, callgrind): subtract N = 0. */
 int main(int argc, char** argv) {
     long calls = argc >= 3 && strcmp(argv[1], "--calls") == 0 ? atol(argv[2]) : -1;
     int calls_point = argc >= 4 && strcmp(argv[3], "point") == 0;
+    int calls_default = argc >= 5 && strcmp(argv[4], "default") == 0;
     /* a walkthrough-like set: camera inside a terrain box, looking around */
     swarp_camera cams[NCONF];
     swarp_vec3 dirs[NCONF];
@@ -89,7 +92,8 @@ int main(int argc, char** argv) {
         swarp_setup_options o;
         memset(&o, 0, sizeof o);
         o.technique = SWARP_TECHNIQUE_LISPSM;
-        o.param = SWARP_WARP_PARAM_NOPT;
+        o.param = calls_default ? SWARP_WARP_PARAM_DEFAULT : SWARP_WARP_PARAM_NOPT;
+        o.skip_measure = calls_default ? 0u : 1u;
         swarp_light light;
         memset(&light, 0, sizeof light);
         light.type = calls_point ? SWARP_LIGHT_POINT : SWARP_LIGHT_DIRECTIONAL;
