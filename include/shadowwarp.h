@@ -915,7 +915,7 @@ SWARP_API swarp_status swarp_measure_points(const swarp_camera* cam, const swarp
  *  aliasing vanishes, leaving the perspective aliasing of the parameterisation).
  *  Sampling: the vertices of H, a grid x grid NDC lattice at depths geometric
  *  in [z_near, z_far] (points outside S skipped) and a finer lattice on the
- *  near face, then from the worst vertex, the four worst local maxima of the
+ *  near face, then from the worst vertex, the two worst local maxima of the
  *  lattice and the worst near-face point refine steps of a deterministic compass
  *  search over (NDC x, NDC y, log z), halving the step each time it finds no
  *  larger sigma; a flat S (H a polygon) is sampled on its plane (docs/accuracy.md

@@ -735,14 +735,17 @@ static swarp_status sw_cascade_splits_compute(sw_cascade_run* c, swarp_status si
 
 /* ---- split positions by measurement --------------------------------------
  * SWARP_SCHEME_MEASURED: the practical scheme's λ ([RHS] (3.8)) that
- * minimises the worst split's measured σ, by golden-section search on
- * [0, 1] (SW_SPLIT_SEARCH_STEPS evaluations; the worst split's σ falls
- * with λ where the near split is too long and rises where the far ones
- * are, so it has one minimum in the cases this is meant for), plus the
- * two λ engines use, 0.5 (PSSM) and 0.95 (OGRE's PSSM default), and the
- * end λ = 1 (the log scheme (3.7), where the minimum often lies: the
- * section search only reaches within 0.618^5 of an end), so the choice is
- * never worse than any of these under the search's estimate.  Each
+ * minimises the worst split's measured σ.  The worst split's σ falls with
+ * λ where the near split is too long and rises where the far ones are, so
+ * it has one minimum in the cases this is meant for.  First the two λ
+ * engines use, 0.5 (PSSM) and 0.95 (OGRE's PSSM default), and the end
+ * λ = 1 (the log scheme (3.7)); when λ = 1 is the best of the three and
+ * no worse than 0.95, the one minimum lies in [0.95, 1] and λ = 1 is kept
+ * (on ordinary scenes the nearest split is the worst and log makes it
+ * smallest: this is the common case, three evaluations).  Otherwise a
+ * golden-section search on [0, 1] (SW_SPLIT_SEARCH_STEPS evaluations)
+ * looks for the interior minimum; the choice is never worse than any λ
+ * evaluated, under the search's estimate.  Each
  * evaluation is the cascade's own matrices with the cheap measurement of
  * sw_split_measure_cheap; the chosen λ's cascade is then computed and
  * measured as every cascade is.  Deterministic: a fixed sequence of λ. */
@@ -801,6 +804,15 @@ static sw_split_score sw_split_candidate(sw_cascade_run* c, const swarp_atlas_ti
     return sc;
 }
 
+/* res->splits of the practical scheme with lambda */
+static void sw_split_apply(swarp_cascade_result* res, double lambda, uint32_t K) {
+    size_t cnt;
+    double tmp[SWARP_CASCADE_MAX_SPLITS + 1];
+    if (swarp_split_practical(res->view_near, res->view_far, lambda, K, tmp, SWARP_CASCADE_MAX_SPLITS + 1, &cnt) ==
+        SWARP_OK)
+        memcpy(res->splits, tmp, cnt * sizeof tmp[0]);
+}
+
 /* res->splits of the λ the search chooses (res->splits on entry: λ = 0.5) */
 static void sw_split_place_measured(sw_cascade_run* c, const swarp_atlas_tile* tiles, swarp_cascade_result* res) {
     const double phi = 0.5 * (sqrt(5.0) - 1.0); /* golden section */
@@ -808,8 +820,13 @@ static void sw_split_place_measured(sw_cascade_run* c, const swarp_atlas_tile* t
     sw_split_score best = sw_split_candidate(c, tiles, res, best_l);
     sw_split_score e = sw_split_candidate(c, tiles, res, SW_SPLIT_LAMBDA_OGRE);
     if (sw_split_better(e, best)) best = e, best_l = SW_SPLIT_LAMBDA_OGRE;
+    const sw_split_score f95 = e;
     e = sw_split_candidate(c, tiles, res, 1.0); /* the log scheme (3.7): the bracket's end */
     if (sw_split_better(e, best)) best = e, best_l = 1.0;
+    if (best_l == 1.0 && !sw_split_better(f95, e)) {
+        sw_split_apply(res, best_l, c->K);
+        return;
+    }
     double a = 0.0, b = 1.0, x1 = b - phi * (b - a), x2 = a + phi * (b - a);
     sw_split_score f1 = sw_split_candidate(c, tiles, res, x1), f2 = sw_split_candidate(c, tiles, res, x2);
     for (int k = 2; k < SW_SPLIT_SEARCH_STEPS; ++k) {
@@ -824,11 +841,7 @@ static void sw_split_place_measured(sw_cascade_run* c, const swarp_atlas_tile* t
     if (sw_split_better(f1, best)) best = f1, best_l = x1;
     if (sw_split_better(f2, best)) best = f2, best_l = x2;
     if (best.singular > SWARP_CASCADE_MAX_SPLITS) return; /* nothing could be set up: keep λ = 0.5 */
-    size_t cnt;
-    double tmp[SWARP_CASCADE_MAX_SPLITS + 1];
-    if (swarp_split_practical(res->view_near, res->view_far, best_l, c->K, tmp, SWARP_CASCADE_MAX_SPLITS + 1, &cnt) ==
-        SWARP_OK)
-        memcpy(res->splits, tmp, cnt * sizeof tmp[0]);
+    sw_split_apply(res, best_l, c->K);
 }
 
 SWARP_API swarp_status swarp_cascade_setup(const swarp_camera* cam, const swarp_light* light,

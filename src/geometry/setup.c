@@ -551,9 +551,9 @@ static swarp_status sw_predict_error(const swarp_camera* cam, const swarp_setup_
 }
 
 /* The light matrix for the points B of the body (B_poly: B as a polyhedron,
- * for PSM; may be NULL) and the receivers H (may be NULL), then the
+ * for PSM; may be NULL) and the receivers H (may be NULL), without the
  * predicted error.  *out written only on success. */
-static swarp_status sw_setup_points(const swarp_camera* cam, const swarp_light* light, const swarp_vec3* B,
+static swarp_status sw_setup_matrix(const swarp_camera* cam, const swarp_light* light, const swarp_vec3* B,
                                     size_t nb, const swarp_polyhedron* B_poly, const swarp_vec3* H, size_t nh,
                                     double near, double far, const swarp_setup_options* o, swarp_vec3 eye,
                                     const sw_follow* fw, swarp_setup_result* out) {
@@ -590,10 +590,23 @@ static swarp_status sw_setup_points(const swarp_camera* cam, const swarp_light* 
         s = sw_setup_lispsm(tech, cam, light, B, nb, B_poly, H, nh, near, far, o, eye, fw, v, ep, &res, &info);
         if (s != SWARP_OK) return s;
     }
-    if ((s = sw_predict_error(cam, o, near, far, &res)) != SWARP_OK) return s;
     if (!sw_mat_finite(&res.matrix) || !sw_mat_finite(&res.light_proj) || !sw_mat_finite(&res.light_view))
         return SWARP_ERR_DEGENERATE;
     res.point_count = (uint32_t)nb_body;
+    *out = res;
+    return info;
+}
+
+/* sw_setup_matrix and the predicted error of its n'. */
+static swarp_status sw_setup_points(const swarp_camera* cam, const swarp_light* light, const swarp_vec3* B,
+                                    size_t nb, const swarp_polyhedron* B_poly, const swarp_vec3* H, size_t nh,
+                                    double near, double far, const swarp_setup_options* o, swarp_vec3 eye,
+                                    const sw_follow* fw, swarp_setup_result* out) {
+    swarp_setup_result res;
+    const swarp_status info = sw_setup_matrix(cam, light, B, nb, B_poly, H, nh, near, far, o, eye, fw, &res);
+    if (swarp_status_is_error(info)) return info;
+    const swarp_status s = sw_predict_error(cam, o, near, far, &res);
+    if (s != SWARP_OK) return s;
     *out = res;
     return info;
 }
@@ -718,11 +731,12 @@ typedef struct sw_search {
 
 static double sw_search_n(const sw_search* q, double t) { return t > 0.0 ? q->n0 * (1.0 - t) / t : INFINITY; }
 
-/* the setup at t; its cheap-set sigma (+inf for a failed setup) */
+/* the matrix at t (its predicted error is left to the chosen one); its
+ * cheap-set sigma (+inf for a failed setup) */
 static double sw_search_eval(sw_search* q, double t, swarp_setup_result* r, swarp_status* info) {
     const sw_search_in* in = q->in;
     q->o.n_user = sw_search_n(q, t);
-    *info = sw_setup_points(in->cam, in->light, in->B->vertices, in->B->vertex_count, in->B, in->H->vertices,
+    *info = sw_setup_matrix(in->cam, in->light, in->B->vertices, in->B->vertex_count, in->B, in->H->vertices,
                             in->H->vertex_count, in->near, in->far, &q->o, in->eye, in->fw, r);
     if (swarp_status_is_error(*info)) return INFINITY;
     return sw_measure_set_sigma(&r->matrix, &q->o, q->rc, q->nrc);
@@ -795,6 +809,10 @@ static swarp_status sw_setup_measured(const sw_search_in* in, const swarp_setup_
     q.best_sigma = sw_measure_set_sigma(&start.matrix, &q.o, q.rc, q.nrc);
     sw_search_try(&q, 0.0); /* uniform, the bracket's end the golden points never reach */
     sw_search_golden(&q);
+    /* the chosen matrix's predicted error; a candidate whose n' the model
+     * cannot evaluate gives way to the start, which it has */
+    if (sw_predict_error(in->cam, &q.o, in->near, in->far, &q.best) != SWARP_OK)
+        q.best = start, q.best_info = start_info;
     if (o->skip_measure) {
         *out = q.best;
         memset(&out->measured, 0, sizeof out->measured);
