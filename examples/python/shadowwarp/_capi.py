@@ -1976,7 +1976,7 @@ DOCS = {'swarp_status_string': '@brief Readable message for a status; never NULL
                       ' Sampling: the vertices of H, a grid x grid NDC lattice at depths '
                       'geometric\n'
                       ' in [z_near, z_far] (points outside S skipped) and a finer lattice on the\n'
-                      ' near face, then from the worst vertex, the four worst local maxima of the\n'
+                      ' near face, then from the worst vertex, the two worst local maxima of the\n'
                       ' lattice and the worst near-face point refine steps of a deterministic '
                       'compass\n'
                       ' search over (NDC x, NDC y, log z), halving the step each time it finds no\n'
