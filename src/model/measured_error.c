@@ -391,8 +391,10 @@ static double sw_clampd(double v, double lo, double hi) { return v < lo ? lo : (
  * the step when none is.  Deterministic; the lattice spacing is the first
  * step, so each halving resolves the maximum to half as much of a cell
  * along each axis.  After a move the neighbour back along the axis of the
- * move is the previous centre, already sampled and lower: it is not
- * sampled again. */
+ * move is the previous centre, already sampled and lower, and a neighbour
+ * clamped onto the centre (a peak on H's boundary, the common case: the
+ * near face, an edge of the view) is the centre itself: neither is sampled
+ * again. */
 typedef struct sw_compass {
     double c[3], h[3], h0, best;
     uint32_t it;               /* iterations taken (at most `steps` in all) */
@@ -424,6 +426,7 @@ static void sw_compass_run(const sw_region* g, uint32_t steps, double res, sw_co
                 double u[3] = {q->c[0], q->c[1], q->c[2]};
                 const double t = q->c[axis] + sgn * q->h[axis];
                 u[axis] = sw_clampd(t, lo[axis], hi[axis]);
+                if (u[axis] == q->c[axis]) continue; /* clamped onto the centre: the same point */
                 const double v = sw_sample(g, u, b);
                 if (v > q->best) {
                     q->best = v, next[0] = u[0], next[1] = u[1], next[2] = u[2], moved = 1;
@@ -449,6 +452,20 @@ static void sw_refine_seeds(const sw_region* g, sw_compass* q, int nq, uint32_t 
     if (worst >= 0) sw_compass_run(g, steps, SW_REFINE_RES, &q[worst], b);
 }
 
+/* H's vertices on V's faces (the side planes at NDC +-1, the near and far
+ * planes) lie there exactly; rebuilt from world coordinates their
+ * (NDC, log z) carry rounding of a few ulps, which would put a vertex just
+ * inside in one rounding mode and on the face in another (and the search
+ * from it would sample a different set of neighbours).  Coordinates within
+ * this fraction of the range of an end are that end: a move of at most
+ * 1e-9 of the range, far below the sampling's stated error. */
+#define SW_FACE_SNAP_REL 1e-9
+
+static double sw_snap_clamp(double v, double lo, double hi) {
+    const double tol = SW_FACE_SNAP_REL * (hi - lo);
+    return v <= lo + tol ? lo : (v >= hi - tol ? hi : v);
+}
+
 /* The vertices of H: where the maximum of a projective map's error over a
  * convex region usually lies (at a corner of V cut by S); each is a
  * sample and the worst a seed.  Returns 0 when H is empty. */
@@ -462,9 +479,9 @@ static int sw_sample_vertices(const sw_region* g, const swarp_camera* cam, doubl
         const swarp_vec3 d = sw_sub(h.vertices[i], g->s.eye);
         const double z = sw_dot(d, g->s.f);
         if (!(z > 0.0)) continue;
-        const double u[3] = {sw_clampd(sw_dot(d, g->s.r) / (z * g->t_x), -1.0, 1.0),
-                             sw_clampd(sw_dot(d, g->s.u) / (z * g->t_y), -1.0, 1.0),
-                             sw_clampd(log(z), g->lz0, g->lz1)};
+        const double u[3] = {sw_snap_clamp(sw_dot(d, g->s.r) / (z * g->t_x), -1.0, 1.0),
+                             sw_snap_clamp(sw_dot(d, g->s.u) / (z * g->t_y), -1.0, 1.0),
+                             sw_snap_clamp(log(z), g->lz0, g->lz1)};
         const double sigma = sw_sample(g, u, b);
         if (sigma > *seed_sigma) *seed_sigma = sigma, seed[0] = u[0], seed[1] = u[1], seed[2] = u[2];
     }
