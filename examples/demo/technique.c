@@ -105,6 +105,8 @@ static void technique_request(const demo_options* o, const demo_view* v, demo_te
     req->map_res = o->map;
     req->screen_w = v->w;
     req->screen_h = v->h;
+    req->nprime_measured = o->nprime_measured;
+    req->basis_aligned = o->basis_aligned;
 }
 
 /* The command line's main-pass parameters for view v and its sh.count maps
