@@ -13,7 +13,7 @@ set -eu
 B=${1:-build}
 T=$(mktemp -d)
 trap 'rm -rf "$T"' EXIT
-printf '| γ | map | n'"'"' (eye units) | measured max σ |\n|---|---|---|---|\n'
+printf '| γ | map | n'"'"' (eye units) | max σ over the picture'"'"'s lit receiver pixels | max σ over H (the library'"'"'s measurement) |\n|---|---|---|---|---|\n'
 for g in 5 150; do
     for k in before nopt after; do
         case $k in
@@ -25,8 +25,9 @@ for g in 5 150; do
         "$B/examples/demo/demo" --technique lispsm --camera default --light-gamma "$g" $a \
             --size 480x270 --map 1024 --out "$T/$g$k" >"$T/$g$k.txt"
         cp "$T/$g$k/lispsm_sampling.png" "docs/img/before_after_g${g}_$k.png"
-        s=$(sed -n "s/.*result's measured (H, bisector receivers): .*sigma \([^ ]*\) at.*/\1/p" "$T/$g$k.txt")
-        n=$(sed -n "s/.*n' = \([^ ,]*\).*/\1/p" "$T/$g$k.txt" | head -1)
-        printf '| %s° | %s | %s | %s |\n' "$g" "$k" "${n:-?}" "$s"
+        # the summary row: meas_sig (the render's pixels) and H_sig (the library's over H)
+        n=$(sed -n "s/^    n' \([^ ]*\) (eye units.*/\1/p" "$T/$g$k.txt")
+        awk -v g="$g" -v k="$k" -v n="$n" '$1 == "lispsm" && NF >= 12 && $2 ~ /^[0-9.]+$/ {
+            printf "| %s° | %s | %s | %s | %s |\n", g, k, n, $7, $10 }' "$T/$g$k.txt"
     done
 done

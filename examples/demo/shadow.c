@@ -550,7 +550,9 @@ int demo_shadow_setup(const swarp_camera* cam, const swarp_light* light,
     }
     predict_max_error(cam, req, &sh);
     sh.status = st;
-    sh.source = matrix_source(t);
+    sh.source = req->basis_aligned && sh.count == 1
+                    ? "library (swarp_focus_light_view, swarp_warp_lispsm, swarp_focus_fit)"
+                    : matrix_source(t);
     *out = sh;
     return 0;
 }
