@@ -6,9 +6,9 @@
  * result's view range ∩ S with bisector receivers, so the columns compare
  * like with like.  Prints the table of docs/before-after.md and the cases
  * where the default is worse than uniform (the property the default
- * promises, docs/parameters.md).  Not a test: it takes a few seconds.
+ * promises, docs/parameters.md).  Not a test: it takes about 20 s.
  *
- *   build/tests/geometry/warp_measured_table [count]      (default 1000)
+ *   build/tests/geometry/warp_measured_table [count]      (default 10000)
  *
  * Deterministic: a fixed splitmix64 seed, no clock, no environment. */
 #include <math.h>
@@ -27,10 +27,10 @@
 #define MAX_CASES 100000
 #define MAX_SHOWN 10
 
-enum { T_DEFAULT, T_NOPT, T_NREPAR, T_GMNPR, T_PSEUDO, T_UNIFORM, T_COUNT };
+enum { T_DEFAULT, T_NOPT, T_NREPAR, T_GMNPR, T_PSEUDO, T_NINF, T_UNIFORM, T_COUNT };
 static const char* const names[T_COUNT] = {"default (measured n')", "n_opt",  "n_repar",
                                            "λ_GMNPR",              "pseudo-near n_opt (n_p = 0.05)",
-                                           "uniform"};
+                                           "n' = +inf (LiSPSM's uniform limit)", "uniform"};
 
 static uint64_t rng_state = 0x5eed5eed2026ull;
 static double rnd(double lo, double hi) { /* splitmix64 */
@@ -79,9 +79,11 @@ static void options_for(int t, swarp_setup_options* o) {
      * relies on it for its promise on the full measurement) */
     const swarp_warp_param p[T_COUNT] = {SWARP_WARP_PARAM_DEFAULT, SWARP_WARP_PARAM_NOPT,
                                          SWARP_WARP_PARAM_NREPAR,  SWARP_WARP_PARAM_GMNPR,
-                                         SWARP_WARP_PARAM_PSEUDO,  SWARP_WARP_PARAM_DEFAULT};
+                                         SWARP_WARP_PARAM_PSEUDO,  SWARP_WARP_PARAM_USER,
+                                         SWARP_WARP_PARAM_DEFAULT};
     o->param = p[t];
     if (t == T_PSEUDO) o->pseudo_near = 0.05;
+    if (t == T_NINF) o->n_user = INFINITY;
 }
 
 /* max σ of technique t's matrix, or NAN when the setup or the measurement
@@ -116,12 +118,13 @@ static double quantile(const double* v, int n, double q) {
 static double sig[T_COUNT][MAX_CASES], sorted[MAX_CASES];
 
 int main(int argc, char** argv) {
-    const int count = argc > 1 ? atoi(argv[1]) : 1000;
+    const int count = argc > 1 ? atoi(argv[1]) : 10000;
     if (count < 1 || count > MAX_CASES) {
         fprintf(stderr, "usage: warp_measured_table [count 1..%d]\n", MAX_CASES);
         return 2;
     }
-    int n = 0, skipped = 0, shown = 0, worse[T_COUNT] = {0};
+    int n = 0, skipped = 0, shown = 0, worse[T_COUNT] = {0}, worse_nopt = 0, worse_ninf = 0, shown_nopt = 0;
+    double ratio_nopt = 0, ratio_uniform = 0; /* the largest default / other */
     for (int i = 0; i < count; ++i) {
         swarp_camera c;
         swarp_light l;
@@ -138,6 +141,15 @@ int main(int argc, char** argv) {
             sig[t][n] = v[t];
             if (v[t] > v[T_UNIFORM] * (1.0 + WORSE_REL)) ++worse[t];
         }
+        worse_nopt += v[T_DEFAULT] > v[T_NOPT] * (1.0 + WORSE_REL);
+        ratio_nopt = fmax(ratio_nopt, v[T_DEFAULT] / v[T_NOPT]);
+        ratio_uniform = fmax(ratio_uniform, v[T_DEFAULT] / v[T_UNIFORM]);
+        if (v[T_DEFAULT] > v[T_NOPT] * (1.0 + WORSE_REL) && shown_nopt++ < MAX_SHOWN)
+            printf("default worse than n_opt: case %d (eye %s the box), gamma %.2f deg, far/near %.0f: sigma %.6g "
+                   "(n' %.4g), n_opt %.6g (n' %.4g), ratio %.6f\n",
+                   i, i % 2 == 0 ? "inside" : "outside", gamma * 180.0 / PI, c.z_far / c.z_near, v[T_DEFAULT],
+                   n_eye[T_DEFAULT], v[T_NOPT], n_eye[T_NOPT], v[T_DEFAULT] / v[T_NOPT]);
+        worse_ninf += v[T_DEFAULT] > v[T_NINF] * (1.0 + WORSE_REL);
         if (v[T_DEFAULT] > v[T_UNIFORM] * (1.0 + WORSE_REL) && shown++ < MAX_SHOWN)
             printf("default worse than uniform: case %d (eye %s the box), gamma %.2f deg, far/near %.0f: "
                    "sigma %.6g (n' %.4g, the setup's own measurement %.6g), uniform %.6g (setup's %.6g), "
@@ -160,5 +172,8 @@ int main(int argc, char** argv) {
         printf("| %s | %.4g | %.4g | %.4g | %s |\n", names[t], quantile(sorted, n, 0.5), quantile(sorted, n, 0.9),
                sorted[n - 1], frac);
     }
-    return worse[T_DEFAULT] ? 3 : 0;
+    printf("\nthe default worse than n_opt in %d (at most by the factor %.6f), than n' = +inf in %d, than "
+           "uniform in %d (at most by the factor %.6f) of %d\n",
+           worse_nopt, ratio_nopt, worse_ninf, worse[T_DEFAULT], ratio_uniform, n);
+    return worse[T_DEFAULT] || worse_nopt || worse_ninf ? 3 : 0;
 }
