@@ -11,7 +11,7 @@
 static void usage(void) {
     printf(
         "usage: demo-check --test NAME [options]\n"
-        "  --test images|iou|measure|measured|select|clone|mindepth|flicker|planned|blur\n"
+        "  --test images|iou|measure|measured|select|clone|mindepth|flicker|planned|blur|options\n"
         "                          headless checks (exit 0 pass, 1 fail, 77 skip)\n"
         "  --test bench-clone      time K + 1 passes against geometry cloning (1 + 1), K = 4, 8, 16\n"
         "                          (median of --frames, default 15; --bench-out FILE: rows as TSV)\n"
@@ -30,7 +30,8 @@ static check_fn check_in_context(const char* name) {
                   {"measured", demo_check_measured},
                   {"select", demo_check_select},   {"clone", demo_check_clone},
                   {"mindepth", demo_check_mindepth}, {"flicker", demo_check_flicker},
-                  {"blur", demo_check_blur},       {"bench-clone", demo_bench_clone}};
+                  {"blur", demo_check_blur},
+                  {"options", demo_check_options},       {"bench-clone", demo_bench_clone}};
     for (size_t i = 0; i < sizeof checks / sizeof checks[0]; ++i)
         if (!strcmp(name, checks[i].name)) return checks[i].fn;
     return NULL;

@@ -21,6 +21,8 @@ int demo_check_flicker(const demo_options* o);
 /* check_gallery.c: the program's own outputs */
 int demo_check_images(const demo_options* o);
 int demo_check_planned(const demo_options* o);
+/* check_options.c: --light-gamma, --nprime and --basis against the library */
+int demo_check_options(const demo_options* o);
 /* bench_clone.c: timings, not a pass/fail check (meson benchmark) */
 int demo_bench_clone(const demo_options* o);
 

@@ -19,6 +19,15 @@ void demo_options_usage(void) {
         "                          (default pcf3; projblur: [KOZ] 14.3.2 on the ground)\n"
         "  --light-angle E[,A]     sun elevation E and azimuth A in degrees (default 35,115)\n"
         "  --light-dir X,Y,Z       direction the light travels (instead of --light-angle)\n"
+        "  --light-gamma G         the light travels at G degrees (0 < G < 180) to the view\n"
+        "                          direction, turned from it toward the ground (the sun behind\n"
+        "                          the camera for small G, ahead of it for G > 90)\n"
+        "  --nprime closed|measured  LiSPSM n': the technique's closed form (default: lispsm\n"
+        "                          n_opt, repar n_repar, gmnpr, pseudo) or the library's default,\n"
+        "                          chosen by the measured error (SWARP_WARP_PARAM_MEASURED)\n"
+        "  --basis library|aligned light-space basis of uniform/lispsm: swarp_setup's (default;\n"
+        "                          the minimum-area rotation near parallel light) or the\n"
+        "                          view-aligned one of swarp_focus_light_view\n"
         "  --camera P|FILE         default | measure | street | high | room, or a path file of\n"
         "                          \"ex ey ez dx dy dz\" lines (one per frame)\n"
         "  --frames N              fly N frames along the boulevard (prints progress)\n"
@@ -102,6 +111,16 @@ static int parse_shadow_option(const char* a, const char* val, demo_options* o) 
         if (!strcmp(val, "depth")) o->select = DEMO_SELECT_DEPTH;
         else if (!strcmp(val, "best")) o->select = DEMO_SELECT_BEST;
         else BAD("demo: --select depth|best\n");
+    } else if (!strcmp(a, "--nprime")) {
+        NEED();
+        if (!strcmp(val, "closed")) o->nprime_measured = 0;
+        else if (!strcmp(val, "measured")) o->nprime_measured = 1;
+        else BAD("demo: --nprime closed|measured\n");
+    } else if (!strcmp(a, "--basis")) {
+        NEED();
+        if (!strcmp(val, "library")) o->basis_aligned = 0;
+        else if (!strcmp(val, "aligned")) o->basis_aligned = 1;
+        else BAD("demo: --basis library|aligned\n");
     } else if (!strcmp(a, "--pseudo")) {
         NEED();
         if (sscanf(val, "%lf,%lf", &o->pseudo_near, &o->pseudo_far) != 2 ||
@@ -152,6 +171,12 @@ static int parse_view_option(const char* a, const char* val, demo_options* o) {
             BAD("demo: --light-dir X,Y,Z (not zero)\n");
         o->light_dir = d;
         o->have_light_dir = 1;
+    } else if (!strcmp(a, "--light-gamma")) {
+        NEED();
+        o->light_gamma = atof(val);
+        if (!(o->light_gamma > 0 && o->light_gamma < 180))
+            BAD("demo: --light-gamma G with 0 < G < 180 degrees\n");
+        o->have_light_gamma = 1;
     } else if (!strcmp(a, "--camera")) {
         NEED();
         o->camera = val;

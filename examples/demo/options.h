@@ -43,6 +43,10 @@ typedef struct demo_options {
     const char* bench_out;      /**< demo-check --bench-out: bench-clone's rows as TSV */
     int sheets_only;            /**< --sheets: only the comparison sheets (sheets.c) */
     int no_sheets;              /**< --no-sheets: the gallery without them */
+    int have_light_gamma;       /**< --light-gamma: the sun placed relative to the camera */
+    double light_gamma;         /**< degrees between the view direction and the light's */
+    int nprime_measured;        /**< --nprime measured: the library's default n' */
+    int basis_aligned;          /**< --basis aligned: the view-aligned light basis */
 } demo_options;
 
 /* options.c */

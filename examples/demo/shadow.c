@@ -169,7 +169,65 @@ static void setup_options(const demo_shadow_request* req, demo_technique t,
     default:
         break;
     }
+    if (req->nprime_measured && opt.technique == SWARP_TECHNIQUE_LISPSM) {
+        opt.param = SWARP_WARP_PARAM_DEFAULT; /* = SWARP_WARP_PARAM_MEASURED */
+        opt.pseudo_near = opt.pseudo_far = 0.0;
+    }
     *out = opt;
+}
+
+/* The map of swarp_setup's pipeline with the view-aligned light basis of
+ * swarp_focus_light_view ([RHS] §3.2.1, blended toward the camera's right
+ * vector near parallel light) instead of the setup's minimum-area rotation
+ * there: the adjusted range [RHS] §3.3.1, B, the light view, the LiSPSM
+ * warp with the options' closed-form n' (none for uniform), the focus
+ * [RHS] (3.1), and swarp_measure_max over the range ∩ S with the map and
+ * screen the setup would measure with.  The measured n' needs the setup's
+ * region and is not offered here. */
+static int aligned_map(const swarp_camera* cam, const swarp_light* light, const swarp_aabb* scene,
+                       const swarp_setup_options* opt, swarp_mat4* out_m, double* out_n,
+                       double* out_near, double* out_far, swarp_vec3* body, int* body_count,
+                       swarp_measured_error* out_measured, swarp_status* out_status) {
+    swarp_vec3 B[SWARP_BODY_MAX_POINTS];
+    size_t nb = 0;
+    double zn, zf;
+    swarp_mat4 L, P, PL, A, M;
+    swarp_warp_info info;
+    memset(&info, 0, sizeof info);
+    info.n_eye = INFINITY;
+    swarp_status st = swarp_body_adjusted_range(cam, scene, &zn, &zf);
+    if (!swarp_status_is_error(st)) st = swarp_body_points(cam, zn, zf, light, scene, B, SWARP_BODY_MAX_POINTS, &nb);
+    if (!swarp_status_is_error(st)) st = swarp_focus_light_view(cam, light, NULL, &L);
+    *out_status = st;
+    if (!swarp_status_is_error(st) && opt->technique == SWARP_TECHNIQUE_LISPSM) {
+        swarp_warp_options w;
+        memset(&w, 0, sizeof w);
+        w.param = opt->param;
+        w.pseudo_near = opt->pseudo_near;
+        w.pseudo_far = opt->pseudo_far;
+        st = swarp_warp_lispsm(&L, cam, zn, zf, B, nb, NULL, &w, &P, &info);
+        if (!swarp_status_is_error(st)) st = swarp_mat4_mul(&P, &L, &PL);
+    } else {
+        PL = L;
+    }
+    if (!swarp_status_is_error(st)) st = swarp_focus_fit(&PL, B, nb, NULL, 0, opt->depth_range, &A);
+    if (!swarp_status_is_error(st)) st = swarp_mat4_mul(&A, &PL, &M);
+    swarp_measure_res res = {opt->screen_width, opt->screen_height, opt->map_width, opt->map_height};
+    if (!swarp_status_is_error(st))
+        st = swarp_measure_max(cam, zn, zf, light, scene, &M, &res, NULL, out_measured);
+    if (swarp_status_is_error(st)) {
+        fprintf(stderr, "demo: the aligned-basis map: %s\n", swarp_status_string(st));
+        *out_status = st;
+        if (body_count) *body_count = 0;
+        return -1;
+    }
+    if (body) memcpy(body, B, nb * sizeof *B);
+    if (body_count) *body_count = body ? (int)nb : 0;
+    *out_m = M;
+    *out_n = info.n_eye;
+    *out_near = zn;
+    *out_far = zf;
+    return 0;
 }
 
 /* One map over the view's adjusted range ([RHS] §3.3.1): the library's
@@ -181,6 +239,18 @@ static int conventional_map(const swarp_camera* cam, const swarp_light* light,
                             swarp_status* out_status) {
     swarp_setup_options opt;
     setup_options(req, t, &opt);
+    if (req->basis_aligned) {
+        if (opt.technique == SWARP_TECHNIQUE_PSM || req->nprime_measured) {
+            fprintf(stderr, "demo: --basis aligned takes uniform or a closed-form LiSPSM\n");
+            return -1;
+        }
+        swarp_measured_error m;
+        if (aligned_map(cam, light, scene, &opt, out_m, out_n, out_near, out_far, body, body_count, &m,
+                        out_status))
+            return -1;
+        if (out_measured) *out_measured = m;
+        return 0;
+    }
     swarp_setup_result res;
     size_t nb = 0;
     _Static_assert(DEMO_MAX_BODY >= SWARP_BODY_MAX_POINTS, "room for every point of B");
@@ -480,7 +550,9 @@ int demo_shadow_setup(const swarp_camera* cam, const swarp_light* light,
     }
     predict_max_error(cam, req, &sh);
     sh.status = st;
-    sh.source = matrix_source(t);
+    sh.source = req->basis_aligned && sh.count == 1
+                    ? "library (swarp_focus_light_view, swarp_warp_lispsm, swarp_focus_fit)"
+                    : matrix_source(t);
     *out = sh;
     return 0;
 }

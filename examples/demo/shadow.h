@@ -52,6 +52,10 @@ typedef struct demo_shadow_request {
     int map_res;          /**< texels per side of each map */
     demo_select select;   /**< DEPTH or BEST for the PSSM techniques */
     int screen_w, screen_h;
+    int nprime_measured;  /**< LiSPSM: the library's default n' (measured) instead of the
+                               technique's closed form */
+    int basis_aligned;    /**< uniform / lispsm one map: the view-aligned light basis of
+                               swarp_focus_light_view, the matrix built from the steps */
 } demo_shadow_request;
 
 

@@ -105,6 +105,8 @@ static void technique_request(const demo_options* o, const demo_view* v, demo_te
     req->map_res = o->map;
     req->screen_w = v->w;
     req->screen_h = v->h;
+    req->nprime_measured = o->nprime_measured;
+    req->basis_aligned = o->basis_aligned;
 }
 
 /* The command line's main-pass parameters for view v and its sh.count maps
@@ -275,6 +277,8 @@ void demo_print_measured(const demo_tech_result* r) {
         printf("    result's measured (H, bisector receivers): max m_s %.4g, m_t %.4g, sigma %.4g at "
                "(%.1f %.1f %.1f), %u samples\n", h->max_m_s, h->max_m_t, h->max_sigma, h->at.x,
                h->at.y, h->at.z, h->samples);
+    if (r->sh.have_measured && r->sh.count == 1)
+        printf("    n' %.4g (eye units; inf: uniform)\n", r->sh.n_prime[0]);
 }
 
 void demo_print_measure(const demo_tech_result* r) {

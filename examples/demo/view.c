@@ -69,12 +69,40 @@ void demo_options_light(const demo_options* o, swarp_light* l) {
     }
 }
 
+/* --light-gamma: the light's direction at gamma to the view direction v,
+ * in the plane of v and the world's down vector (y up), turned from v
+ * toward the ground: l = cos(gamma) v + sin(gamma) d_perp with d_perp the
+ * unit part of (0, -1, 0) normal to v, so the angle of l to v is gamma
+ * exactly and the light always reaches the ground from above for a camera
+ * not looking below the horizon.  A camera looking straight up or down has
+ * no such plane; its up vector's opposite takes the place of the down. */
+static void light_from_gamma(double gamma_deg, const swarp_camera* cam, swarp_light* l) {
+    double vl = sqrt(cam->dir.x * cam->dir.x + cam->dir.y * cam->dir.y + cam->dir.z * cam->dir.z);
+    swarp_vec3 v = {cam->dir.x / vl, cam->dir.y / vl, cam->dir.z / vl};
+    swarp_vec3 d = {0, -1, 0};
+    if (fabs(v.y) > 0.999) d = (swarp_vec3){-cam->up.x, -cam->up.y, -cam->up.z};
+    double dv = d.x * v.x + d.y * v.y + d.z * v.z;
+    swarp_vec3 p = {d.x - dv * v.x, d.y - dv * v.y, d.z - dv * v.z};
+    double pl = sqrt(p.x * p.x + p.y * p.y + p.z * p.z);
+    double c = cos(gamma_deg * DEMO_DEG), s = sin(gamma_deg * DEMO_DEG);
+    memset(l, 0, sizeof *l);
+    l->type = SWARP_LIGHT_DIRECTIONAL;
+    l->direction = (swarp_vec3){c * v.x + s * p.x / pl, c * v.y + s * p.y / pl, c * v.z + s * p.z / pl};
+}
+
+/* The sun of the command line for camera cam: --light-gamma relative to it,
+ * else --light-angle / --light-dir. */
+static void options_light_for(const demo_options* o, const swarp_camera* cam, swarp_light* l) {
+    if (o->have_light_gamma) light_from_gamma(o->light_gamma, cam, l);
+    else demo_options_light(o, l);
+}
+
 /* View v of the command line: --camera (or the explicit eye/dir) at --size
  * with the --light-angle / --light-dir sun.  Non-zero: a bad camera. */
 int demo_options_view(const demo_options* o, demo_view* v) {
     demo_sized_view(o, v);
     if (demo_options_camera(o, &v->cam)) return -1;
-    demo_options_light(o, &v->light);
+    options_light_for(o, &v->cam, &v->light);
     return 0;
 }
 
@@ -82,7 +110,7 @@ int demo_options_view(const demo_options* o, demo_view* v) {
 int demo_preset_view(const demo_options* o, const char* camera, demo_view* v) {
     demo_sized_view(o, v);
     if (demo_camera_preset(camera, v->w, v->h, &v->cam)) return -1;
-    demo_options_light(o, &v->light);
+    options_light_for(o, &v->cam, &v->light);
     demo_view_update(v);
     return 0;
 }
