@@ -265,10 +265,10 @@ typedef struct sw_receiver {
     double js[2][2];
 } sw_receiver;
 /* The fixed point set (H's vertices, interior points) as receivers, and
- * the max sigma of a matrix on it. */
+ * the max sigma of a matrix on it (and the mean). */
 size_t sw_measure_set_make(const swarp_camera* cam, const swarp_light* light, const swarp_setup_options* o,
                            const swarp_vec3* h, size_t nh, sw_receiver* out, size_t cap);
 double sw_measure_set_sigma(const swarp_mat4* matrix, const swarp_setup_options* o, const sw_receiver* rc,
-                            size_t n);
+                            size_t n, double* mean);
 
 #endif

@@ -695,15 +695,26 @@ static swarp_status sw_check_points_capacity(const swarp_polyhedron* B, const sw
  * projection centre and only lose.  SW_SEARCH_STEPS golden steps shrink the
  * bracket to 0.9 * 0.618^10 = 0.007 in t (n' within 3 % around n_opt);
  * every matrix evaluated is a candidate, so non-unimodal errors still
- * return the best evaluated, never worse than the start. */
+ * return the best evaluated.  With the measurement on, the choice is then
+ * checked against the start (n_opt) and the uniform map by the full
+ * measurement (sw_search_guard): never worse than either. */
 #define SW_SEARCH_T_MAX 0.9
 #define SW_SEARCH_STEPS 10
-/* A candidate replaces the best so far only when its sigma is lower by
- * more than this fraction: sigma carries rounding of about 1e-13 relative
- * (its sampling is fixed, the matrices differ by rounding only between
- * rounding modes), so near-ties between very different matrices keep the
- * earlier one under every rounding mode instead of flipping. */
-#define SW_SEARCH_GAIN_REL 1e-6
+/* Maxima within this fraction of each other are a tie.  Where the
+ * maximum hardly depends on n' (it sits on H's near face beside the eye,
+ * which no warp resolves better: the light behind the camera) the search
+ * would otherwise follow changes of a few 1e-4 of the maximum to an n' that
+ * starves the rest of the view; among the tied candidates the one with the
+ * smallest mean sigma over the fixed point set is chosen, the map that
+ * serves the other receivers best.  1e-3 is far below the measurement's
+ * stated 3 % and far above the rounding of sigma (about 1e-13 relative),
+ * so a tie is decided the same way under every rounding mode. */
+#define SW_SEARCH_TIE_REL 1e-3
+/* Means within this fraction are equal and the first evaluated wins: the
+ * mean carries rounding of about 1e-13 relative, so near-equal means of
+ * different matrices are decided by their order under every rounding mode
+ * instead of by the rounding. */
+#define SW_SEARCH_MEAN_REL 1e-6
 /* the cheap set's capacity: two points per vertex of H plus the centroid */
 #define SW_SEARCH_SET_MAX (2 * SWARP_BODY_MAX_POINTS + 1)
 
@@ -718,69 +729,140 @@ typedef struct sw_search_in {
     const sw_follow* fw;
 } sw_search_in;
 
+/* one evaluated matrix: the result, its status, its largest sigma and
+ * mean sigma over the fixed point set (+inf for a failed setup) */
+typedef struct sw_candidate {
+    swarp_setup_result r;
+    swarp_status info;
+    double cheap_max, cheap_mean;
+} sw_candidate;
+
+/* every t evaluated, with its fixed-set maximum and mean */
+#define SW_SEARCH_EVALS (SW_SEARCH_STEPS + 4)
 typedef struct sw_search {
     const sw_search_in* in;
     swarp_setup_options o; /* param USER, n_user set per candidate */
     double n0;             /* n_opt (eye units), the start */
     sw_receiver rc[SW_SEARCH_SET_MAX];
     size_t nrc;
-    swarp_setup_result best;
-    swarp_status best_info;
-    double best_sigma;
+    sw_candidate start, uniform;
+    double t[SW_SEARCH_EVALS], max[SW_SEARCH_EVALS], mean[SW_SEARCH_EVALS];
+    int evals;
 } sw_search;
 
 static double sw_search_n(const sw_search* q, double t) { return t > 0.0 ? q->n0 * (1.0 - t) / t : INFINITY; }
 
-/* the matrix at t (its predicted error is left to the chosen one); its
- * cheap-set sigma (+inf for a failed setup) */
-static double sw_search_eval(sw_search* q, double t, swarp_setup_result* r, swarp_status* info) {
+static void sw_search_score(const sw_search* q, sw_candidate* c) {
+    c->cheap_max = c->cheap_mean = INFINITY;
+    if (swarp_status_is_error(c->info)) return;
+    c->cheap_max = sw_measure_set_sigma(&c->r.matrix, &q->o, q->rc, q->nrc, &c->cheap_mean);
+}
+
+/* the matrix at t (its predicted error is left to the chosen one) */
+static void sw_search_eval(sw_search* q, double t, sw_candidate* c) {
     const sw_search_in* in = q->in;
     q->o.n_user = sw_search_n(q, t);
-    *info = sw_setup_matrix(in->cam, in->light, in->B->vertices, in->B->vertex_count, in->B, in->H->vertices,
-                            in->H->vertex_count, in->near, in->far, &q->o, in->eye, in->fw, r);
-    if (swarp_status_is_error(*info)) return INFINITY;
-    return sw_measure_set_sigma(&r->matrix, &q->o, q->rc, q->nrc);
+    c->info = sw_setup_matrix(in->cam, in->light, in->B->vertices, in->B->vertex_count, in->B, in->H->vertices,
+                              in->H->vertex_count, in->near, in->far, &q->o, in->eye, in->fw, &c->r);
+    sw_search_score(q, c);
 }
 
-/* evaluates t and keeps it when strictly better than the best so far */
-static double sw_search_try(sw_search* q, double t) {
-    swarp_setup_result r;
-    swarp_status info;
-    const double sigma = sw_search_eval(q, t, &r, &info);
-    if (sigma < q->best_sigma * (1.0 - SW_SEARCH_GAIN_REL)) q->best = r, q->best_info = info, q->best_sigma = sigma;
-    return sigma;
+static void sw_search_record(sw_search* q, double t, const sw_candidate* c) {
+    if (q->evals >= SW_SEARCH_EVALS) return;
+    q->t[q->evals] = t, q->max[q->evals] = c->cheap_max, q->mean[q->evals] = c->cheap_mean;
+    q->evals++;
 }
 
-/* golden-section search of the cheap-set sigma over t in [0, SW_SEARCH_T_MAX] */
+/* 1 when evaluation i is better than j.  An evaluation whose maximum is
+ * within the tie SW_SEARCH_TIE_REL of the lowest maximum evaluated so far
+ * is eligible; of two eligible ones the smaller mean (beyond
+ * SW_SEARCH_MEAN_REL) is better, an eligible one beats one that is not,
+ * and otherwise the smaller maximum is better.  The tie is measured from
+ * the one lowest maximum, not pairwise, so a chain of ties cannot drift
+ * away from the minimum; on a plateau of the maximum (equal to its
+ * rounding) the section search follows the mean instead of the rounding. */
+static int sw_search_better(const sw_search* q, int i, int j) {
+    double lo = INFINITY;
+    for (int k = 0; k < q->evals; ++k) lo = fmin(lo, q->max[k]);
+    const double cap = lo * (1.0 + SW_SEARCH_TIE_REL);
+    const int ei = q->max[i] <= cap, ej = q->max[j] <= cap;
+    if (ei && ej) return q->mean[i] < q->mean[j] * (1.0 - SW_SEARCH_MEAN_REL);
+    if (ei != ej) return ei;
+    return q->max[i] < q->max[j];
+}
+
+/* evaluates t and records it; returns its index */
+static int sw_search_try(sw_search* q, double t) {
+    sw_candidate c;
+    sw_search_eval(q, t, &c);
+    sw_search_record(q, t, &c);
+    return q->evals - 1;
+}
+
+/* golden-section search over t in [0, SW_SEARCH_T_MAX] by sw_search_better */
 static void sw_search_golden(sw_search* q) {
     const double g = 0.5 * (sqrt(5.0) - 1.0);
     double a = 0.0, b = SW_SEARCH_T_MAX;
     double c = b - g * (b - a), d = a + g * (b - a);
-    double fc = sw_search_try(q, c), fd = sw_search_try(q, d);
+    int ic = sw_search_try(q, c), id = sw_search_try(q, d);
     for (int i = 0; i < SW_SEARCH_STEPS; ++i) {
-        if (fc <= fd) {
-            b = d, d = c, fd = fc;
+        if (!sw_search_better(q, id, ic)) {
+            b = d, d = c, id = ic;
             c = b - g * (b - a);
-            fc = sw_search_try(q, c);
+            ic = sw_search_try(q, c);
         } else {
-            a = c, c = d, fc = fd;
+            a = c, c = d, ic = id;
             d = a + g * (b - a);
-            fd = sw_search_try(q, d);
+            id = sw_search_try(q, d);
         }
     }
 }
 
-/* With the measurement on, the search's choice gets the full
- * swarp_measure_max as its report.  The choice itself stays the cheap
- * set's: its points are fixed by H, so under every rounding mode the same
- * candidate wins, while the full measurement of a region that is flat (a
- * box face in one plane) rejects or keeps lattice points on a rounding and
- * would pick between candidates by that rounding. */
-static void sw_search_report(sw_search* q, swarp_setup_result* out, swarp_status* info) {
+/* The choice among the evaluated t: the best by sw_search_better, the
+ * first evaluated of equals.  Returns its index. */
+static int sw_search_choose(const sw_search* q) {
+    int pick = 0;
+    for (int i = 1; i < q->evals; ++i)
+        if (sw_search_better(q, i, pick)) pick = i;
+    return pick;
+}
+
+/* The full measurement of the choice, checked against the start and the
+ * uniform map.  The fixed point set lies in H, so a reference's full
+ * maximum is at least its fixed-set maximum: when the choice's full
+ * maximum is no larger than that, the reference cannot be better and is
+ * not measured (the common case); otherwise it is, and replaces the choice
+ * when lower by more than the tie SW_SEARCH_TIE_REL.  The choice's
+ * predicted error is computed last, for the matrix returned (a matrix
+ * whose n' the model cannot evaluate gives way to the start, which has it). */
+static void sw_search_guard(sw_search* q, sw_candidate* chosen, int measure, swarp_setup_result* out,
+                            swarp_status* info) {
     const sw_search_in* in = q->in;
-    *out = q->best;
-    *info = q->best_info;
-    sw_measure_setup(in->cam, in->near, in->far, in->light, in->scene, &out->matrix, &q->o, &out->measured);
+    sw_candidate* refs[2] = {&q->start, &q->uniform};
+    if (measure) {
+        sw_measure_setup(in->cam, in->near, in->far, in->light, in->scene, &chosen->r.matrix, &q->o,
+                         &chosen->r.measured);
+        for (int i = 0; i < 2; ++i) {
+            sw_candidate* ref = refs[i];
+            if (swarp_status_is_error(ref->info) || ref->r.n_eye == chosen->r.n_eye ||
+                !(chosen->r.measured.max_sigma > ref->cheap_max))
+                continue;
+            sw_measure_setup(in->cam, in->near, in->far, in->light, in->scene, &ref->r.matrix, &q->o,
+                             &ref->r.measured);
+            if (ref->r.measured.samples &&
+                ref->r.measured.max_sigma < chosen->r.measured.max_sigma * (1.0 - SW_SEARCH_TIE_REL))
+                *chosen = *ref;
+        }
+    }
+    if (sw_predict_error(in->cam, &q->o, in->near, in->far, &chosen->r) != SWARP_OK) {
+        *chosen = q->start;
+        if (measure)
+            sw_measure_setup(in->cam, in->near, in->far, in->light, in->scene, &chosen->r.matrix, &q->o,
+                             &chosen->r.measured);
+    }
+    *out = chosen->r;
+    if (!measure) memset(&out->measured, 0, sizeof out->measured);
+    *info = chosen->info;
 }
 
 static swarp_status sw_setup_measured(const sw_search_in* in, const swarp_setup_options* o,
@@ -790,37 +872,34 @@ static swarp_status sw_setup_measured(const sw_search_in* in, const swarp_setup_
     q.o = *o;
     q.o.param = SWARP_WARP_PARAM_NOPT;
     q.o.skip_measure = 1;
-    swarp_setup_result start;
-    swarp_status start_info = sw_setup_points(in->cam, in->light, in->B->vertices, in->B->vertex_count, in->B,
-                                              in->H->vertices, in->H->vertex_count, in->near, in->far, &q.o,
-                                              in->eye, in->fw, &start);
-    if (swarp_status_is_error(start_info)) return start_info;
-    q.n0 = start.n_eye;
+    q.evals = 0;
+    sw_candidate* st = &q.start;
+    st->info = sw_setup_points(in->cam, in->light, in->B->vertices, in->B->vertex_count, in->B, in->H->vertices,
+                               in->H->vertex_count, in->near, in->far, &q.o, in->eye, in->fw, &st->r);
+    if (swarp_status_is_error(st->info)) return st->info;
+    q.n0 = st->r.n_eye;
     if (!(q.n0 < INFINITY) || !(q.n0 > 0.0)) { /* n_opt is uniform already: nothing to search */
-        start.measured.samples = 0;
-        sw_measure_setup(in->cam, in->near, in->far, in->light, in->scene, &start.matrix, o, &start.measured);
-        *out = start;
-        return start_info;
+        st->r.measured.samples = 0;
+        sw_measure_setup(in->cam, in->near, in->far, in->light, in->scene, &st->r.matrix, o, &st->r.measured);
+        *out = st->r;
+        return st->info;
     }
     q.o.param = SWARP_WARP_PARAM_USER;
+    q.o.skip_measure = 0;
     q.nrc = sw_measure_set_make(in->cam, in->light, &q.o, in->H->vertices, in->H->vertex_count, q.rc,
                                 SW_SEARCH_SET_MAX);
-    q.best = start, q.best_info = start_info;
-    q.best_sigma = sw_measure_set_sigma(&start.matrix, &q.o, q.rc, q.nrc);
-    sw_search_try(&q, 0.0); /* uniform, the bracket's end the golden points never reach */
+    sw_search_score(&q, st);
+    sw_search_record(&q, 0.5, st); /* n_opt: t = 1/2 */
+    sw_search_eval(&q, 0.0, &q.uniform); /* uniform, the bracket's end the golden points never reach */
+    sw_search_record(&q, 0.0, &q.uniform);
     sw_search_golden(&q);
-    /* the chosen matrix's predicted error; a candidate whose n' the model
-     * cannot evaluate gives way to the start, which it has */
-    if (sw_predict_error(in->cam, &q.o, in->near, in->far, &q.best) != SWARP_OK)
-        q.best = start, q.best_info = start_info;
-    if (o->skip_measure) {
-        *out = q.best;
-        memset(&out->measured, 0, sizeof out->measured);
-        return q.best_info;
-    }
-    q.o.skip_measure = 0;
+    const int pick = sw_search_choose(&q);
+    sw_candidate chosen;
+    if (q.t[pick] == 0.5) chosen = q.start;
+    else if (q.t[pick] == 0.0) chosen = q.uniform;
+    else sw_search_eval(&q, q.t[pick], &chosen);
     swarp_status info;
-    sw_search_report(&q, out, &info);
+    sw_search_guard(&q, &chosen, !o->skip_measure, out, &info);
     return info;
 }
 

@@ -663,18 +663,22 @@ size_t sw_measure_set_make(const swarp_camera* cam, const swarp_light* light, co
     return n;
 }
 
-/* max sigma of matrix over the cheap set; +inf where the map is singular. */
+/* max sigma of matrix over the cheap set, and their mean into *mean; +inf
+ * (both) where the map is singular. */
 double sw_measure_set_sigma(const swarp_mat4* matrix, const swarp_setup_options* o, const sw_receiver* rc,
-                            size_t n) {
+                            size_t n, double* mean) {
     swarp_measure_res r;
     sw_measure_res_of(o, &r);
-    double worst = 0.0;
+    double worst = 0.0, sum = 0.0;
+    *mean = INFINITY;
     for (size_t i = 0; i < n; ++i) {
         double d[2][2];
         const swarp_vec4 c = sw_xform_point(matrix, rc[i].x);
         if (!sw_receiver_d(matrix, &r, &rc[i], c, d)) return INFINITY;
         const double sigma = sw_sigma_max(d[0][0], d[0][1], d[1][0], d[1][1]);
         if (sigma > worst) worst = sigma;
+        sum += sigma;
     }
+    *mean = n ? sum / (double)n : 0.0;
     return worst;
 }

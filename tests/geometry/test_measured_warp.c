@@ -2,7 +2,8 @@
  * configurations of this file's own generator, the default's matrix,
  * measured independently with the public swarp_measure_max over the
  * result's view range ∩ S, is never worse than n_opt's matrix nor than the
- * uniform map in the same light frame (n' = +inf), its reported
+ * uniform map in the same light frame (n' = +inf) beyond the search's
+ * documented tie of 1e-3, its reported
  * measurement is that of its own matrix, and when it returns the uniform
  * map it says so with SWARP_INFO_WARP_UNIFORM. */
 #include <math.h>
@@ -16,6 +17,11 @@
 /* swarp_setup measures camera-relative, this test in world coordinates:
  * the same maximum up to the rounding of coordinates of size |eye| */
 #define FRAME_REL 1e-9
+/* the search's documented tie (docs/parameters.md): maxima within 1e-3 of
+ * the lowest are equal and the smaller mean over the fixed point set wins,
+ * so the default promises to be no worse than n_opt or uniform by more
+ * than that fraction */
+#define TIE_REL 1e-3
 
 static int failures, checked, uniform_wins, improved;
 
@@ -71,7 +77,7 @@ static void check(int i, const swarp_camera* c, const swarp_light* l, const swar
     const double d = measured(c, l, s, &rd), n = measured(c, l, s, &rn), u = measured(c, l, s, &ru);
     if (isnan(d) || isnan(n) || isnan(u)) return;
     ++checked;
-    int ok = d <= n * (1.0 + FRAME_REL) && d <= u * (1.0 + FRAME_REL);
+    int ok = d <= n * (1.0 + TIE_REL + FRAME_REL) && d <= u * (1.0 + TIE_REL + FRAME_REL);
     ok = ok && fabs(rd.measured.max_sigma - d) <= FRAME_REL * d;   /* the returned matrix's */
     ok = ok && (isinf(rd.n_eye) ? sd == SWARP_INFO_WARP_UNIFORM : 1);
     if (isinf(rd.n_eye) && !isinf(rn.n_eye)) ++uniform_wins;

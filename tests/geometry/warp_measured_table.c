@@ -20,10 +20,14 @@
 #include "shadowwarp.h"
 
 #define PI 3.14159265358979323846
-/* "worse than uniform" means more than rounding worse: the measurement of
- * two matrices that agree (the default may return the uniform map itself)
- * differs by the rounding of the search, far below this relative margin */
+/* "worse than" means worse by more than the search's documented tie: the
+ * default treats maxima within 1e-3 of each other as equal and picks the
+ * smaller mean among them (docs/parameters.md), so it promises to be no
+ * worse than n_opt or uniform by more than that fraction.  The table's
+ * last column counts any excess over rounding (1e-9), the exit status
+ * only excesses beyond the tie. */
 #define WORSE_REL 1e-9
+#define TIE_REL 1e-3
 #define MAX_CASES 100000
 #define MAX_SHOWN 10
 
@@ -123,7 +127,7 @@ int main(int argc, char** argv) {
         fprintf(stderr, "usage: warp_measured_table [count 1..%d]\n", MAX_CASES);
         return 2;
     }
-    int n = 0, skipped = 0, shown = 0, worse[T_COUNT] = {0}, worse_nopt = 0, worse_ninf = 0, shown_nopt = 0;
+    int n = 0, skipped = 0, shown = 0, within_tie = 0, worse[T_COUNT] = {0}, worse_nopt = 0, worse_ninf = 0, shown_nopt = 0;
     double ratio_nopt = 0, ratio_uniform = 0; /* the largest default / other */
     for (int i = 0; i < count; ++i) {
         swarp_camera c;
@@ -139,18 +143,20 @@ int main(int argc, char** argv) {
         }
         for (int t = 0; t < T_COUNT; ++t) {
             sig[t][n] = v[t];
-            if (v[t] > v[T_UNIFORM] * (1.0 + WORSE_REL)) ++worse[t];
+            if (v[t] > v[T_UNIFORM] * (1.0 + (t == T_DEFAULT ? TIE_REL : WORSE_REL))) ++worse[t];
         }
-        worse_nopt += v[T_DEFAULT] > v[T_NOPT] * (1.0 + WORSE_REL);
+        worse_nopt += v[T_DEFAULT] > v[T_NOPT] * (1.0 + TIE_REL);
+        within_tie += v[T_DEFAULT] > fmin(v[T_NOPT], v[T_UNIFORM]) * (1.0 + WORSE_REL) &&
+                      v[T_DEFAULT] <= fmin(v[T_NOPT], v[T_UNIFORM]) * (1.0 + TIE_REL);
         ratio_nopt = fmax(ratio_nopt, v[T_DEFAULT] / v[T_NOPT]);
         ratio_uniform = fmax(ratio_uniform, v[T_DEFAULT] / v[T_UNIFORM]);
-        if (v[T_DEFAULT] > v[T_NOPT] * (1.0 + WORSE_REL) && shown_nopt++ < MAX_SHOWN)
+        if (v[T_DEFAULT] > v[T_NOPT] * (1.0 + TIE_REL) && shown_nopt++ < MAX_SHOWN)
             printf("default worse than n_opt: case %d (eye %s the box), gamma %.2f deg, far/near %.0f: sigma %.6g "
                    "(n' %.4g), n_opt %.6g (n' %.4g), ratio %.6f\n",
                    i, i % 2 == 0 ? "inside" : "outside", gamma * 180.0 / PI, c.z_far / c.z_near, v[T_DEFAULT],
                    n_eye[T_DEFAULT], v[T_NOPT], n_eye[T_NOPT], v[T_DEFAULT] / v[T_NOPT]);
-        worse_ninf += v[T_DEFAULT] > v[T_NINF] * (1.0 + WORSE_REL);
-        if (v[T_DEFAULT] > v[T_UNIFORM] * (1.0 + WORSE_REL) && shown++ < MAX_SHOWN)
+        worse_ninf += v[T_DEFAULT] > v[T_NINF] * (1.0 + TIE_REL);
+        if (v[T_DEFAULT] > v[T_UNIFORM] * (1.0 + TIE_REL) && shown++ < MAX_SHOWN)
             printf("default worse than uniform: case %d (eye %s the box), gamma %.2f deg, far/near %.0f: "
                    "sigma %.6g (n' %.4g, the setup's own measurement %.6g), uniform %.6g (setup's %.6g), "
                    "n_opt %.6g (n' %.4g)\n",
@@ -172,8 +178,9 @@ int main(int argc, char** argv) {
         printf("| %s | %.4g | %.4g | %.4g | %s |\n", names[t], quantile(sorted, n, 0.5), quantile(sorted, n, 0.9),
                sorted[n - 1], frac);
     }
-    printf("\nthe default worse than n_opt in %d (at most by the factor %.6f), than n' = +inf in %d, than "
-           "uniform in %d (at most by the factor %.6f) of %d\n",
-           worse_nopt, ratio_nopt, worse_ninf, worse[T_DEFAULT], ratio_uniform, n);
+    printf("\n(the default's row counts excesses beyond its tie of %g; the other rows any beyond rounding)\n"
+           "the default worse than n_opt by more than the tie in %d (at most by the factor %.6f), than "
+           "n' = +inf in %d, than uniform in %d (at most by the factor %.6f) of %d; within the tie in %d\n",
+           TIE_REL, worse_nopt, ratio_nopt, worse_ninf, worse[T_DEFAULT], ratio_uniform, n, within_tie);
     return worse[T_DEFAULT] || worse_nopt || worse_ninf ? 3 : 0;
 }
