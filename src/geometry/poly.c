@@ -283,20 +283,20 @@ SWARP_API swarp_status swarp_poly_from_aabb(const swarp_aabb* box, swarp_polyhed
  * that clip V cut it into vertices that stay apart too. */
 #define SW_FRUSTUM_MIN_HALF_EPS 2.0
 
-/* The corners; each face's half-widths are at least h_min (0: the exact
- * frustum), see sw_poly_from_frustum. */
+/* The corners; each face's half-widths along r and u are at least hx_min
+ * and hy_min (0: the exact frustum), see sw_poly_from_frustum. */
 static void sw_frustum_corners_b(const swarp_camera* cam, swarp_vec3 f, swarp_vec3 r, swarp_vec3 u, double tx,
-                                 double ty, double near, double far, double h_min, swarp_vec3 c[8]) {
+                                 double ty, double near, double far, double hx_min, double hy_min, swarp_vec3 c[8]) {
     for (int i = 0; i < 8; ++i) {
         double z = (i & 4) ? far : near;
         double sx = (i & 1) ? 1.0 : -1.0, sy = (i & 2) ? 1.0 : -1.0;
         /* eye + z (f + sx tx r + sy ty u): corners relative to the eye
-         * first; a face held at h_min: eye + z f + sx hx r + sy hy u */
-        if (z * tx >= h_min && z * ty >= h_min) {
+         * first; a face held at the minima: eye + z f + sx hx r + sy hy u */
+        if (z * tx >= hx_min && z * ty >= hy_min) {
             swarp_vec3 d = sw_add(f, sw_add(sw_scale(r, sx * tx), sw_scale(u, sy * ty)));
             c[i] = sw_add(cam->eye, sw_scale(d, z));
         } else {
-            const double hx = sw_max(z * tx, h_min), hy = sw_max(z * ty, h_min);
+            const double hx = sw_max(z * tx, hx_min), hy = sw_max(z * ty, hy_min);
             swarp_vec3 d = sw_add(sw_scale(f, z), sw_add(sw_scale(r, sx * hx), sw_scale(u, sy * hy)));
             c[i] = sw_add(cam->eye, d);
         }
@@ -338,7 +338,7 @@ swarp_status sw_poly_from_frustum(const swarp_camera* cam, double near, double f
      * (SW_FRUSTUM_MAX_TAN) */
     double ty = fmin(tan(0.5 * cam->fovy), SW_FRUSTUM_MAX_TAN), tx = fmin(ty * cam->aspect, SW_FRUSTUM_MAX_TAN);
     swarp_vec3 c[8];
-    sw_frustum_corners_b(cam, f, r, u, tx, ty, near, far, 0.0, c);
+    sw_frustum_corners_b(cam, f, r, u, tx, ty, near, far, 0.0, 0.0, c);
     double scale = SW_POLY_SCALE_MIN;
     for (int i = 0; i < 8; ++i) {
         if (!sw_finite3(&c[i])) return SWARP_ERR_NON_FINITE;
@@ -351,9 +351,14 @@ swarp_status sw_poly_from_frustum(const swarp_camera* cam, double near, double f
      * which is most of the needle's width near the eye (V 0.3 % too thin at
      * 600 near depths).  Its faces are held at SW_FRUSTUM_MIN_HALF_EPS eps
      * from the axis instead: a superset of V by at most that much, whose
-     * corners the clipper keeps apart. */
+     * corners the clipper keeps apart.  A direction in which even the far
+     * face is below that (aspect 1e-87) stays flat: welded, V is a polygon
+     * whose lateral extent is within eps of the true one (the fit calls
+     * it flat, SWARP_INFO_FLAT_EXTENT). */
+    const double h_min = SW_FRUSTUM_MIN_HALF_EPS * eps;
     if (!(2.0 * near * sw_min(tx, ty) > 2.0 * eps)) {
-        sw_frustum_corners_b(cam, f, r, u, tx, ty, near, far, SW_FRUSTUM_MIN_HALF_EPS * eps, c);
+        const double hx_min = far * tx > h_min ? h_min : 0.0, hy_min = far * ty > h_min ? h_min : 0.0;
+        sw_frustum_corners_b(cam, f, r, u, tx, ty, near, far, hx_min, hy_min, c);
         for (int i = 0; i < 8; ++i)
             if (!sw_finite3(&c[i])) return SWARP_ERR_NON_FINITE;
     }
