@@ -1960,7 +1960,10 @@ SWARP_API swarp_status swarp_poly_from_aabb(const swarp_aabb* box, swarp_polyhed
 
 /** @brief The camera's view frustum V between view depths near and far
  *  (world units along cam->dir; cam->z_near/far are ignored, so a split
- *  frustum [RHS] §3.3 is the same call).
+ *  frustum [RHS] §3.3 is the same call).  A face narrower than the
+ *  clipper's tolerance (SWARP_POLY_EPS_REL of the corners' scale; the near
+ *  face of a needle frustum) is held at 2 tolerances from the axis: a
+ *  superset of V by at most that, never a welded (thinner) one.
  *  @return SWARP_OK, SWARP_ERR_NULL_POINTER, SWARP_ERR_NON_FINITE,
  *          SWARP_ERR_FOV, SWARP_ERR_NEAR_FAR, SWARP_ERR_ZERO_VECTOR,
  *          SWARP_ERR_DEGENERATE (up parallel to dir),

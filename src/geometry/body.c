@@ -617,9 +617,13 @@ static swarp_status sw_body_from_h_ex(const swarp_polyhedron* H, const swarp_lig
  * re-enters S beyond T_k; this holds for every H, also one a rounding
  * outside S (H built camera-relative and translated back by the eye, as
  * the cascades do: its vertices on S's faces land an ulp either side);
- * twice the least of these (with a margin past the face), and at least SW_SWEEP_DIAG_REL times H's size
- * (the copies as far out as the kept 2 diag(S) would put them), capped at
- * SW_SWEEP_REL_MAX times H's size (*clamped). */
+ * twice the least of these (with a margin past the face), and at least H's
+ * size (no copy a sliver beside H), capped at SW_SWEEP_REL_MAX times H's
+ * size (*clamped).  No longer than that: the copies set the scale of the
+ * swept polyhedron, and so the clipper's tolerance when S's faces cut it;
+ * copies 1e6 times H's size out (2.9e6 for a needle H 2.9 long and 4e-5
+ * wide whose rays leave S 70 away) weld the sides of the needle's sweep at
+ * 2.9e-6 and lose the exit points of its silhouette's rays. */
 static double sw_sweep_length(const swarp_polyhedron* H, swarp_vec3 u, const swarp_aabb* box, int* clamped) {
     *clamped = 0;
     const double diag = 2.0 * sw_len_fast(sw_sub(box->max, box->min)) + 1e-300; /* inf past DBL_MAX/2 */
@@ -645,7 +649,7 @@ static double sw_sweep_length(const swarp_polyhedron* H, swarp_vec3 u, const swa
         if (uc[k] > 0.0) T = fmin(T, (0.5 * hi[k] - 0.5 * hlo[k] + m) / (0.5 * uc[k]));
         else if (uc[k] < 0.0) T = fmin(T, (0.5 * hhi[k] - 0.5 * lo[k] + m) / (-0.5 * uc[k]));
     }
-    T = fmax(2.0 * T, SW_SWEEP_DIAG_REL * size);
+    T = fmax(2.0 * T, size);
     const double cap = SW_SWEEP_REL_MAX * size;
     *clamped = T > cap;
     return *clamped ? cap : T;

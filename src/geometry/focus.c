@@ -320,8 +320,38 @@ static int sw_extent(const swarp_mat4* m, const swarp_vec3* pts, size_t n, doubl
     return ok;
 }
 
+/* The world matrix m' = A m T(-eye) of a camera-relative m is rounded
+ * where the eye is folded in (its last column: sums of products of size
+ * |m_rj| |eye_j|) and in the products before: the same as moving the point
+ * by a few eps (|eye_j| + |p_j|) along each axis j.  SW_WORLD_ROUND_EPS
+ * eps: the fold's three products and two sums, the products A m and
+ * (A P) L (three sums each), and the coordinates' own rounding. */
+#define SW_WORLD_ROUND_EPS 16.0
+
+void sw_world_rounding_pad(const swarp_mat4* m, const swarp_vec3* pts, size_t n, swarp_vec3 eye, double pad[3]) {
+    pad[0] = pad[1] = pad[2] = 0.0;
+    const double ae[3] = {fabs(eye.x), fabs(eye.y), fabs(eye.z)};
+    for (size_t i = 0; i < n; ++i) {
+        const swarp_vec4 h = sw_xform_point(m, pts[i]);
+        const double c[3] = {h.x / h.w, h.y / h.w, h.z / h.w}, p[3] = {pts[i].x, pts[i].y, pts[i].z};
+        for (int k = 0; k < 3; ++k) {
+            /* first order: d(X/W)/dp_j = (m_kj - (X/W) m_3j) / W */
+            double s = 0.0;
+            for (int j = 0; j < 3; ++j)
+                s += fabs(sw_at(m, k, j) - c[k] * sw_at(m, 3, j)) * (ae[j] + fabs(p[j]));
+            s *= SW_WORLD_ROUND_EPS * DBL_EPSILON / fabs(h.w);
+            pad[k] = s > pad[k] ? s : pad[k];
+        }
+    }
+}
+
+/* A pad below this fraction of the extent is left out: 1/1000 of the 1e-6
+ * of the map the fit promises (SW_REL_RESOLVE), it cannot uncover a point,
+ * and ordinary maps (pads of 1e-15) keep their bits. */
+#define SW_FIT_PAD_MIN_REL 1e-9
+
 swarp_status sw_focus_fit(const swarp_mat4* m, const swarp_vec3* pts, size_t n, const swarp_vec3* zpts,
-                          size_t zn, swarp_depth_range dr, swarp_mat4* out) {
+                          size_t zn, swarp_depth_range dr, const double pad[3], swarp_mat4* out) {
     double lo[3], hi[3], zlo[3], zhi[3];
     if (!sw_extent(m, pts, n, lo, hi)) return SWARP_ERR_DEGENERATE;
     if (zpts) {
@@ -370,6 +400,14 @@ swarp_status sw_focus_fit(const swarp_mat4* m, const swarp_vec3* pts, size_t n, 
             st = SWARP_INFO_FLAT_EXTENT;
         }
     }
+    /* the points may lie up to pad beyond their extent in the world matrix
+     * (its rounding): the map covers that much more */
+    for (int k = 0; k < 3 && pad; ++k)
+        if (pad[k] > SW_FIT_PAD_MIN_REL * w[k]) {
+            lo[k] -= pad[k];
+            hi[k] += pad[k];
+            w[k] = hi[k] - lo[k];
+        }
     swarp_mat4 A;
     memset(&A, 0, sizeof A);
     /* [RHS] (3.1) */
@@ -403,5 +441,5 @@ SWARP_API swarp_status swarp_focus_fit(const swarp_mat4* m, const swarp_vec3* po
     if (z_points)
         for (size_t i = 0; i < z_count; ++i)
             if (!sw_finite3(&z_points[i])) return SWARP_ERR_NON_FINITE;
-    return sw_focus_fit(m, points, count, z_points, z_count, depth_range, out_A_fit);
+    return sw_focus_fit(m, points, count, z_points, z_count, depth_range, NULL, out_A_fit);
 }

@@ -89,10 +89,16 @@ int sw_look_at_finite(const swarp_mat4* m);
 /* the inverse of a rigid look-at (transpose, -R^T t), and the rigidity test */
 void sw_rigid_inverse(const swarp_mat4* L, swarp_mat4* out);
 int sw_is_rigid(const swarp_mat4* m);
-/* fit without checks; returns status (OK, INFO_FLAT_EXTENT, ERR_DEGENERATE) */
+/* fit without checks; returns status (OK, INFO_FLAT_EXTENT, ERR_DEGENERATE);
+ * pad (may be NULL): how far each of x/w, y/w, z/w may lie beyond the
+ * points' extent (sw_world_rounding_pad) */
 swarp_status sw_focus_fit(const swarp_mat4* m, const swarp_vec3* pts, size_t n,
                           const swarp_vec3* zpts, size_t zn, swarp_depth_range dr,
-                          swarp_mat4* out);
+                          const double pad[3], swarp_mat4* out);
+/* The rounding a world-space matrix m' = A m T(-eye) adds, at the
+ * camera-relative points pts, in the coordinates x/w, y/w, z/w of m (the
+ * fit A is affine in them): pad[k] (largest over the points) */
+void sw_world_rounding_pad(const swarp_mat4* m, const swarp_vec3* pts, size_t n, swarp_vec3 eye, double pad[3]);
 
 /* LiSPSM warp for points already validated; M maps world to the light space
  * the warp works in (affine light view, or the post-perspective space of a

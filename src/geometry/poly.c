@@ -277,15 +277,29 @@ SWARP_API swarp_status swarp_poly_from_aabb(const swarp_aabb* box, swarp_polyhed
 
 /* Largest tangent of a frustum half-angle used (90° - 1e-12 rad). */
 #define SW_FRUSTUM_MAX_TAN 1e12
+/* Smallest half-width of a frustum face, in weld tolerances (eps =
+ * SWARP_POLY_EPS_REL times the corners' scale): a face side of 4 eps is
+ * twice the 2 eps below which the corners would merge, so the box planes
+ * that clip V cut it into vertices that stay apart too. */
+#define SW_FRUSTUM_MIN_HALF_EPS 2.0
 
+/* The corners; each face's half-widths along r and u are at least hx_min
+ * and hy_min (0: the exact frustum), see sw_poly_from_frustum. */
 static void sw_frustum_corners_b(const swarp_camera* cam, swarp_vec3 f, swarp_vec3 r, swarp_vec3 u, double tx,
-                                 double ty, double near, double far, swarp_vec3 c[8]) {
+                                 double ty, double near, double far, double hx_min, double hy_min, swarp_vec3 c[8]) {
     for (int i = 0; i < 8; ++i) {
         double z = (i & 4) ? far : near;
         double sx = (i & 1) ? 1.0 : -1.0, sy = (i & 2) ? 1.0 : -1.0;
-        /* eye + z (f + sx tx r + sy ty u): corners relative to the eye first */
-        swarp_vec3 d = sw_add(f, sw_add(sw_scale(r, sx * tx), sw_scale(u, sy * ty)));
-        c[i] = sw_add(cam->eye, sw_scale(d, z));
+        /* eye + z (f + sx tx r + sy ty u): corners relative to the eye
+         * first; a face held at the minima: eye + z f + sx hx r + sy hy u */
+        if (z * tx >= hx_min && z * ty >= hy_min) {
+            swarp_vec3 d = sw_add(f, sw_add(sw_scale(r, sx * tx), sw_scale(u, sy * ty)));
+            c[i] = sw_add(cam->eye, sw_scale(d, z));
+        } else {
+            const double hx = sw_max(z * tx, hx_min), hy = sw_max(z * ty, hy_min);
+            swarp_vec3 d = sw_add(sw_scale(f, z), sw_add(sw_scale(r, sx * hx), sw_scale(u, sy * hy)));
+            c[i] = sw_add(cam->eye, d);
+        }
     }
 }
 
@@ -324,19 +338,39 @@ swarp_status sw_poly_from_frustum(const swarp_camera* cam, double near, double f
      * (SW_FRUSTUM_MAX_TAN) */
     double ty = fmin(tan(0.5 * cam->fovy), SW_FRUSTUM_MAX_TAN), tx = fmin(ty * cam->aspect, SW_FRUSTUM_MAX_TAN);
     swarp_vec3 c[8];
-    sw_frustum_corners_b(cam, f, r, u, tx, ty, near, far, c);
+    sw_frustum_corners_b(cam, f, r, u, tx, ty, near, far, 0.0, 0.0, c);
     double scale = SW_POLY_SCALE_MIN;
     for (int i = 0; i < 8; ++i) {
         if (!sw_finite3(&c[i])) return SWARP_ERR_NON_FINITE;
         scale = sw_max(scale, sw_max(fabs(c[i].x), sw_max(fabs(c[i].y), fabs(c[i].z))));
     }
+    const double eps = SWARP_POLY_EPS_REL * scale;
+    /* A needle frustum (tan 1e-9, far 1e3 near 1e-2) has a near quad far
+     * below the weld tolerance eps of its far corners: welded into one
+     * corner, its side edges would lean inward by up to the quad's width,
+     * which is most of the needle's width near the eye (V 0.3 % too thin at
+     * 600 near depths).  Its faces are held at SW_FRUSTUM_MIN_HALF_EPS eps
+     * from the axis instead: a superset of V by at most that much, whose
+     * corners the clipper keeps apart.  A direction in which even the far
+     * face is below that (aspect 1e-87) stays flat: welded, V is a polygon
+     * whose lateral extent is within eps of the true one (the fit calls
+     * it flat, SWARP_INFO_FLAT_EXTENT). */
+    const double h_min = SW_FRUSTUM_MIN_HALF_EPS * eps;
+    if (!(2.0 * near * sw_min(tx, ty) > 2.0 * eps)) {
+        const double hx_min = far * tx > h_min ? h_min : 0.0, hy_min = far * ty > h_min ? h_min : 0.0;
+        sw_frustum_corners_b(cam, f, r, u, tx, ty, near, far, hx_min, hy_min, c);
+        for (int i = 0; i < 8; ++i)
+            if (!sw_finite3(&c[i])) return SWARP_ERR_NON_FINITE;
+    }
     /* The corners are at least min(2 near tx, 2 near ty, far - near) apart
      * (the near quad's sides; near and far corners differ by far - near
      * along f); above 2 eps (the merge test is eps per coordinate, sqrt(3)
      * eps in distance) nothing merges, and the planes come from the basis
-     * directly instead of Newell's normals of the corners. */
+     * directly instead of Newell's normals of the corners.  A frustum
+     * thinner than that along f welds its near and far faces into one
+     * quad (flat, its lateral extent kept). */
     const double sep = sw_min(2.0 * near * sw_min(tx, ty), far - near);
-    if (!(sep > 2.0 * SWARP_POLY_EPS_REL * scale)) {
+    if (!(sep > 2.0 * eps)) {
         sw_poly_from_corners(c, out);
         return SWARP_OK;
     }

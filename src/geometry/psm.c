@@ -565,11 +565,11 @@ swarp_status sw_psm_setup(const swarp_camera* cam, const swarp_light* light, con
         if (!sw_psm_in_front(&QM, wab, H[i])) return SWARP_ERR_LIGHT_INSIDE_BODY;
     /* x, y over the receivers H ([KOZ] §14.2.2), then depth over the casters */
     swarp_mat4 A;
-    s = sw_focus_fit(&QM, H, nh, NULL, 0, dr, &A);
+    s = sw_focus_fit(&QM, H, nh, NULL, 0, dr, NULL, &A);
     if (swarp_status_is_error(s)) return s;
     swarp_vec3 zp[SWARP_BODY_MAX_POINTS + SWARP_POLY_MAX_VERTICES];
     const size_t nz = sw_psm_casters(B, nb, B_poly, H, nh, &A, &QM, wab, o->pancake, zp);
-    s = sw_focus_fit(&QM, H, nh, zp, nz, dr, &A);
+    s = sw_focus_fit(&QM, H, nh, zp, nz, dr, NULL, &A);
     if (swarp_status_is_error(s)) return s;
     if (s != SWARP_OK && info == SWARP_OK) info = s;
     sw_psm_result(cam, light, f, &A, &Q, &QM, &Vc, &Pc, near + delta, zp, nz, res);

@@ -454,7 +454,15 @@ static swarp_status sw_focus_step(const sw_light_space* ls, const swarp_mat4* P,
         sw_mul(P, &ls->M, &PM);
     else
         sw_mul_affine_b(P, &ls->M, &PM); /* M = L, a look-at */
-    swarp_status s = sw_focus_fit(&PM, Bp, nbk, zp, nhk, dr, &A);
+    /* the world matrix's rounding (the eye folded in, sw_fold_result):
+     * x, y over B, depth over the points that set it */
+    double pad[3], zpad[3];
+    sw_world_rounding_pad(&PM, Bp, nbk, eye, pad);
+    if (zp) {
+        sw_world_rounding_pad(&PM, zp, nhk, eye, zpad);
+        pad[2] = zpad[2];
+    }
+    swarp_status s = sw_focus_fit(&PM, Bp, nbk, zp, nhk, dr, pad, &A);
     if (swarp_status_is_error(s)) return s;
     *info = sw_info_merge(*info, s);
     swarp_mat4 proj = *P; /* P P0, P0 = I for a directional light */

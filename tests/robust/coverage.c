@@ -506,6 +506,84 @@ static void cv_pin_psm_thin_frustum(long* fails) {
     }
 }
 
+/* Needle frusta (tan of a half-angle 1e-9 .. 3e-5) of the sweep (seed 7)
+ * that returned success without covering, replayed with every entry point
+ * (the scene's own technique and options), one per cause:
+ *   near_face_kept: V's near quad, below the clipper's weld tolerance of
+ *     its far corners, was welded into one corner, so V's side edges leaned
+ *     inward (scene 84, LiSPSM, omni light, box min.y = -FLT_MAX: receivers
+ *     1.35e-4 map widths out, SWARP_OK; scene 17412, uniform, a spot at the
+ *     eye, box max.x = FLT_MAX: receivers 2.1e-3 out and casters 19 depth
+ *     windows out, SWARP_INFO_LIGHT_PARALLEL);
+ *   world_rounding: a map 2.4e-11 wide at coordinates of 20, finer than
+ *     the world matrix's rounding once the eye is folded in (scene 12451,
+ *     LiSPSM, a spot at the eye: receivers 5.5e-6 out,
+ *     SWARP_INFO_LIGHT_NEAR_CLIPPED);
+ *   sweep_to_unbounded_face: the sweep toward the light reached 1e6 times
+ *     H's size past a box face at DBL_MAX, where the clipper welded the
+ *     needle's silhouette rays (scene 2302, LiSPSM, directional: casters
+ *     8.7e-6 depth windows out, SWARP_OK). */
+static void cv_pin_needle_frusta(long* fails) {
+    static const char* const name[4] = {"needle_frustum_near_face_kept_covered", "needle_frustum_near_face_kept_covered",
+                                        "needle_map_world_rounding_covered", "needle_sweep_to_unbounded_face_covered"};
+    cv_case k[4];
+    memset(k, 0, sizeof k);
+    k[0].cam = (swarp_camera){{-0x1.14d71672f4cb6p+4, 0x1.d223a795730a8p+2, -0x1.359817f8dc7d8p+4},
+                              {-0x1.031a1967d556p-1, -0x1.e14a70bd869cp-6, -0x1.1f0c0346db53p-3},
+                              {0, 1, 0}, 0x1.7680755f42385p-30, 0x1.51fd3364ae8d7p+0, 0x1.90f3f525ab4b6p-2,
+                              0x1.1946b8a6b0938p+11, {0}};
+    k[0].light.type = SWARP_LIGHT_POINT;
+    k[0].light.direction = (swarp_vec3){-0x1.249a77540b23p-2, -0x1.069407a67936p-3, 0x1.423e229d441d8p-1};
+    k[0].light.position = (swarp_vec3){-0x1.bc4c971a42601p+5, 0x1.478a13259755p+8, -0x1.6533d42c704efp+5};
+    k[0].box = (swarp_aabb){{-0x1.203fc8a3b8ddcp+6, -0x1.fffffep+127, -0x1.082f88c79f53cp+6},
+                            {0x1.40d322eb1ad2ep+6, 0x1.b9cecc37291ccp+3, 0x1.1320699eba6e7p+6}};
+    k[0].o.technique = SWARP_TECHNIQUE_LISPSM;
+    k[0].o.depth_range = SWARP_DEPTH_ZERO_TO_ONE;
+    k[1].cam = (swarp_camera){{-0x1.338a11394f544p+2, 0x1.8dde6337c278ap+3, 0x1.fd2554cfe414p+1},
+                              {0x1.ad091837bed46p-1, -0x1.7d2a77165a1fep-1, -0x1.24c944570d068p-3},
+                              {0, 1, 0}, 0x1.aecb644c4ef0ep-30, 0x1.3c4cc83fe6252p-1, 0x1.081063228cbe8p-5,
+                              0x1.3095a45b6890fp+6, {0}};
+    k[1].light.type = SWARP_LIGHT_POINT;
+    k[1].light.direction = k[1].cam.dir;
+    k[1].light.position = k[1].cam.eye;
+    k[1].light.cone_angle = 0x1.e8604a86920e4p-1;
+    k[1].box = (swarp_aabb){{-0x1.8f9415c6c763bp+3, -0x1.1315fedf2f1cep+1, -0x1.bbf298e3fdfb8p+2},
+                            {0x1.fffffep+127, 0x1.5480e5602c98dp+4, 0x1.26cde32808f9ap+4}};
+    k[1].o.technique = SWARP_TECHNIQUE_UNIFORM;
+    k[1].o.depth_range = SWARP_DEPTH_ZERO_TO_ONE;
+    k[2].cam = (swarp_camera){{-0x1.baf1d09654782p+3, 0x1.152e075ce26ddp+2, 0x1.6bcc4d12e3648p+3},
+                              {-0x1.047852ccc1a6p-1, 0x1.7edced72c431cp-1, -0x1.5cf45f34dfc04p-1},
+                              {0, 1, 0}, 0x1.d118291c5e358p-30, 0x1.ac1cf86d9e29ep+0, 0x1.1a221ed9658b3p-6,
+                              0x1.ce459868e1b6cp-1, {0}};
+    k[2].light.type = SWARP_LIGHT_POINT;
+    k[2].light.direction = k[2].cam.dir;
+    k[2].light.position = k[2].cam.eye;
+    k[2].light.cone_angle = 0x1.61b80a34b8d1ep-2;
+    k[2].box = (swarp_aabb){{-0x1.339b26b604f26p+5, -0x1.62d8590b8336fp+0, -0x1.ba25e0b43d812p+4},
+                            {0x1.271b5670515b4p+3, 0x1.9c95f450fc8f4p+3, 0x1.6d2505d741c88p+4}};
+    k[2].o.technique = SWARP_TECHNIQUE_LISPSM;
+    k[2].o.depth_range = SWARP_DEPTH_NEG_ONE_TO_ONE;
+    k[3].cam = (swarp_camera){{-0x1.0e98576e10019p+4, 0x1.e63344d7cbb74p+2, 0x1.0e154cf8b7368p+4},
+                              {-0x1.9d3582cc0ce4p-6, 0x1.5e6d70dff5938p-1, 0x1.597309244dfe4p-2},
+                              {0, 1, 0}, 0x1.cee661241cacbp-16, 0x1.42b274d529724p-1, 0x1.4a521abcaf1c3p-4,
+                              0x1.76ba4eecdaf61p+1, {0}};
+    k[3].light.type = SWARP_LIGHT_DIRECTIONAL;
+    k[3].light.direction = (swarp_vec3){0x1.6b12be69d5df8p-3, -0x1.f486729515c26p-1, -0x1.5e4ac76a8a2d8p-2};
+    k[3].box = (swarp_aabb){{-0x1.0f02b48cdabb1p+6, -0x1.11fa1365488f6p+2, 0x1.d23eb70b583dp+0},
+                            {0x1.0b3728fc85ea8p+2, 0x1.fffffffffffffp+1023, 0x1.4de3e5f393bc2p+5}};
+    k[3].o.technique = SWARP_TECHNIQUE_LISPSM;
+    k[3].o.depth_range = SWARP_DEPTH_NEG_ONE_TO_ONE;
+    for (int i = 0; i < 4; ++i) {
+        k[i].index = -10 - i;
+        swarp_setup_result r;
+        const swarp_status st = swarp_setup(&k[i].cam, &k[i].light, &k[i].box, &k[i].o, &r, NULL, 0, NULL);
+        if (swarp_status_is_error(st)) cv_pin_fail(fails, name[i], "refused", st);
+        cv_stats S = {0, 0, 0};
+        cv_run(&k[i], 12345, &S);
+        if (S.failed) cv_pin_fail(fails, name[i], "not covered", st);
+    }
+}
+
 int main(int argc, char** argv) {
     const long count = argc > 1 ? atol(argv[1]) : 300;
     uint64_t s = argc > 2 ? strtoull(argv[2], NULL, 0) : 1;
@@ -532,6 +610,7 @@ int main(int argc, char** argv) {
         cv_pin_spot_pancake_receivers(&pinned);
         cv_pin_spot_at_eye_thin_pancake(&pinned);
         cv_pin_psm_thin_frustum(&pinned);
+        cv_pin_needle_frusta(&pinned);
     }
     printf("coverage: %ld scenes, %ld calls, %ld maps checked, %ld violations; pinned inputs: %ld failures\n", count,
            S.calls, S.checked, S.failed, pinned);
