@@ -45,9 +45,9 @@ static int make_sheet(const demo_options* o, demo_tech_result* all, int n_all) {
  * the room corner's floor (y = 0.3) is then the whole ground, which the
  * planner rightly gives a lixel map -- but the demo's lixel maps cover only
  * the room's rectangles and its shader cannot pick between lixel maps and a
- * cascade, so it could not render that plan (docs/demo.md).  Budget: 1
- * pixel per texel (the planner's default), --map, at most DEMO_MAX_SPLITS
- * passes. */
+ * cascade, so it could not render that plan (docs/demo.md).  Budget: 2
+ * pixels per texel (DEMO_PLAN_MAX_ERROR, plan.c), --map, at most
+ * DEMO_MAX_SPLITS passes. */
 static int plan_view(const demo_options* o, const demo_view* v, const swarp_aabb* box,
                      demo_plan* out) {
     int moves = o->frames > 0 || o->path_count > 1;

@@ -42,6 +42,7 @@ typedef struct demo_renderer {
     float poisson[32];         /**< 16 unit-disk points (swarp_pcf_poisson_disk) */
     float evsm_c;              /**< EVSM exponent (swarp_evsm_max_exponent, fp32) */
     int map_res, layers;
+    unsigned warmed;           /**< shadow programs drawn once untimed (bit per program) */
     GLuint fbo, rb_color, rb_tex, rb_pos, rb_nrm, rb_depth;
     int w, h;
 } demo_renderer;
