@@ -835,12 +835,26 @@ static int sw_search_choose(const sw_search* q) {
     return pick;
 }
 
+/* A lower bound of a reference's maximum over H: its fixed-set maximum
+ * and its sigma at the choice's worst point (every point of H bounds the
+ * maximum from below). */
+static double sw_search_lower_bound(const sw_search* q, const sw_candidate* ref, const sw_candidate* chosen) {
+    double lb = ref->cheap_max;
+    if (!chosen->r.measured.samples) return lb;
+    sw_receiver at[3];
+    const size_t n = sw_measure_set_make(q->in->cam, q->in->light, &q->o, &chosen->r.measured.at, 1, at, 3);
+    double mean;
+    const double s = sw_measure_set_sigma(&ref->r.matrix, &q->o, at, n, &mean);
+    return s > lb ? s : lb;
+}
+
 /* The full measurement of the choice, checked against the start and the
- * uniform map.  The fixed point set lies in H, so a reference's full
- * maximum is at least its fixed-set maximum: when the choice's full
- * maximum is no larger than that, the reference cannot be better and is
- * not measured (the common case); otherwise it is, and replaces the choice
- * when lower by more than the tie SW_SEARCH_TIE_REL.  The choice's
+ * uniform map.  The fixed point set and the choice's worst point lie in
+ * H, so a reference's maximum is at least its sigma there: when that is
+ * within the tie SW_SEARCH_TIE_REL of the choice's full maximum, the
+ * reference cannot be better beyond the tie and is not measured (the
+ * common case); otherwise it is, and replaces the choice when lower by
+ * more than the tie.  The choice's
  * predicted error is computed last, for the matrix returned (a matrix
  * whose n' the model cannot evaluate gives way to the start, which has it). */
 static void sw_search_guard(sw_search* q, sw_candidate* chosen, int measure, swarp_setup_result* out,
@@ -853,7 +867,7 @@ static void sw_search_guard(sw_search* q, sw_candidate* chosen, int measure, swa
         for (int i = 0; i < 2; ++i) {
             sw_candidate* ref = refs[i];
             if (swarp_status_is_error(ref->info) || ref->r.n_eye == chosen->r.n_eye ||
-                !(chosen->r.measured.max_sigma > ref->cheap_max))
+                !(chosen->r.measured.max_sigma * (1.0 - SW_SEARCH_TIE_REL) > sw_search_lower_bound(q, ref, chosen)))
                 continue;
             sw_measure_setup(in->cam, in->near, in->far, in->light, in->scene, &ref->r.matrix, &q->o,
                              &ref->r.measured);
