@@ -58,8 +58,22 @@ int demo_check_images(const demo_options* o) {
     return fails ? 1 : 0;
 }
 
+/* The planned entry's maps are the plan's chain, bit for bit: the split
+ * distances and each split's n' equal swarp_plan's built_splits and
+ * built_n_eye, and the measured maximum the demo reports (H_sig) is the
+ * plan's own measured maximum (one chain, one n', one figure). */
+static int planned_is_the_plan(const demo_shadow* sh, const struct swarp_plan* pl) {
+    if (!pl->built || sh->count != (int)pl->split_count || !sh->have_measured) return 0;
+    for (int i = 0; i <= sh->count; ++i)
+        if (memcmp(&sh->split[i], &pl->built_splits[i], sizeof(double)) != 0) return 0;
+    for (int i = 0; i < sh->count; ++i)
+        if (memcmp(&sh->n_prime[i], &pl->built_n_eye[i], sizeof(double)) != 0) return 0;
+    return memcmp(&sh->measured.max_sigma, &pl->measured.max_sigma, sizeof(double)) == 0;
+}
+
 /* --technique planned renders exactly the passes the plan asks
- * for, and the printed plan carries one "why:" line per reason flag. */
+ * for, with the plan's splits, n' and measured error, and the printed
+ * plan carries one "why:" line per reason flag. */
 int demo_check_planned(const demo_options* o) {
     demo_options q = *o;
     q.technique = DEMO_TECH_PLANNED;
@@ -84,8 +98,11 @@ int demo_check_planned(const demo_options* o) {
     for (uint32_t b = pl->reasons; b; b &= b - 1) ++flags;
     /* every plan says why it took (or left out) the splits, the
      * stabilisation and the filter at least */
+    const int same = planned_is_the_plan(&rep.planned, pl);
     int ok = rep.planned_passes == (int)pl->shadow_passes && rep.plan.exact && whys == flags &&
-             flags >= 3 && strstr(text, "cost: ") != NULL && rep.min_nonblank >= 0.01;
+             flags >= 3 && strstr(text, "cost: ") != NULL && rep.min_nonblank >= 0.01 && same;
+    printf("planned: splits, n' and measured sigma %s the plan's built chain (sigma %.17g vs %.17g)\n",
+           same ? "equal" : "DIFFER from", rep.planned.measured.max_sigma, pl->measured.max_sigma);
     printf("planned: %d shadow passes rendered, plan %u; %d reason lines printed, %d reason flags; "
            "mapped exactly: %s %s\n",
            rep.planned_passes, pl->shadow_passes, whys, flags, rep.plan.exact ? "yes" : "no",

@@ -172,7 +172,7 @@ static void entry_report(gallery* g, int t, demo_technique tt, const demo_option
                res->passes - 1, demo_technique_name(tt), demo_filter_name(q->filter),
                res->sh.z_near, res->sh.z_far, plan->plan.shadow_passes, plan->plan.z_near,
                plan->plan.z_far);
-        if (g->rep) g->rep->planned_passes = res->passes - 1;
+        if (g->rep) g->rep->planned_passes = res->passes - 1, g->rep->planned = res->sh;
     }
     if (g->single) {
         printf("  timing: setup %.2f us (median of 101 calls);", res->setup_us);

@@ -13,6 +13,7 @@ typedef struct demo_gallery_report {
     int have_plan;                /**< plan is valid */
     demo_plan plan;               /**< the plan of the view */
     int planned_passes;           /**< shadow passes the planned entry rendered (-1: none) */
+    demo_shadow planned;          /**< the maps the planned entry rendered (planned_passes >= 0) */
 } demo_gallery_report;
 
 /* gallery.c */
